@@ -1,0 +1,265 @@
+//! Learning and validation data: simulated runs, their noisy measurements, and the windows
+//! `(Z(k), r(k))` the maps are fitted and judged on.
+//!
+//! A run of `n` samples has states `x(0) … x(n-1)`; its windows end at `k = N-1 … n-1`, so it holds
+//! `n - N + 1` of them (paper eq. `defdenE`: `n_E = n_g (N_s - N + 1)`). The regressor is, newest first
+//! and all outputs of one instant together, `Z(k) = (y(k), …, y(k-N+1), u(k), …, u(k-N+1))`.
+//! Noise is added to the outputs only; targets are noise-free functions of the current state.
+
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rand_distr::{Distribution, Normal};
+
+use crate::simulate::{BlowUp, Integrator};
+use crate::spec::{Axis, Design, InputProfile, SpecError};
+
+/// One simulated run.
+#[derive(Clone, Debug)]
+pub struct Run {
+    /// `x(k)`, one vector per sample.
+    pub states: Vec<Vec<f64>>,
+    /// `u(k)`, one vector per sample (empty vectors when the model has no input).
+    pub inputs: Vec<Vec<f64>>,
+    /// `y(k)` with noise, one vector per sample.
+    pub measurements: Vec<Vec<f64>>,
+    /// `r(k)` per target, noise-free, one vector per sample.
+    pub targets: Vec<Vec<f64>>,
+}
+
+/// A set of runs and the horizon that cuts them into windows.
+#[derive(Clone, Debug)]
+pub struct DataSet {
+    /// The runs.
+    pub runs: Vec<Run>,
+    /// `N`.
+    pub horizon: usize,
+}
+
+/// One window: run `run`, ending at sample `end`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Window {
+    /// Index of the run.
+    pub run: usize,
+    /// Sample at which the window ends (the "current" instant `k`).
+    pub end: usize,
+}
+
+impl DataSet {
+    /// Every window, run by run, in time order.
+    pub fn windows(&self) -> impl Iterator<Item = Window> + '_ {
+        self.runs.iter().enumerate().flat_map(move |(run, r)| {
+            (self.horizon.saturating_sub(1)..r.states.len()).map(move |end| Window { run, end })
+        })
+    }
+
+    /// `n_E`, the number of windows.
+    pub fn window_count(&self) -> usize {
+        self.runs.iter().map(|r| (r.states.len() + 1).saturating_sub(self.horizon)).sum()
+    }
+
+    /// `n_z = N (n_y + n_u)`.
+    pub fn regressor_len(&self) -> usize {
+        self.runs.first().map_or(0, |r| self.horizon * (r.measurements[0].len() + r.inputs[0].len()))
+    }
+
+    /// Writes `Z(k)` of `window` into `z` (cleared first).
+    pub fn regressor(&self, window: Window, z: &mut Vec<f64>) {
+        let run = &self.runs[window.run];
+        let lags = (0..self.horizon).map(|lag| window.end - lag);
+        z.clear();
+        for k in lags.clone() {
+            z.extend_from_slice(&run.measurements[k]);
+        }
+        for k in lags {
+            z.extend_from_slice(&run.inputs[k]);
+        }
+    }
+
+    /// `r(k)` of target `target` at the end of `window`.
+    pub fn target(&self, window: Window, target: usize) -> f64 {
+        self.runs[window.run].targets[window.end][target]
+    }
+}
+
+/// The learning set: one run per point of the grid (the Cartesian product of the axes, the first
+/// state varying slowest), each with its own input profile and noise.
+pub fn learning_set(design: &Design) -> Result<DataSet, SpecError> {
+    let mut rng = ChaCha8Rng::seed_from_u64(design.learning.seed);
+    let grids: Vec<Vec<f64>> = design.learning.axes.iter().map(Axis::grid).collect();
+    let mut runs = Vec::new();
+    for x0 in cartesian(&grids) {
+        runs.push(simulate_run(design, &x0, design.learning.samples, &mut rng, "learning")?);
+    }
+    Ok(DataSet { runs, horizon: design.map.horizon })
+}
+
+/// The validation set: `trajectories` runs from states drawn uniformly in the box, with their own
+/// inputs and noise (a different seed from the learning set's).
+pub fn validation_set(design: &Design) -> Result<DataSet, SpecError> {
+    let mut rng = ChaCha8Rng::seed_from_u64(design.validation.seed);
+    let mut runs = Vec::new();
+    for _ in 0..design.validation.trajectories {
+        let x0: Vec<f64> = design
+            .learning
+            .axes
+            .iter()
+            .map(|axis| match *axis {
+                Axis::Range { min, max, .. } => rng.random_range(min..=max),
+                Axis::Fixed(value) => value,
+            })
+            .collect();
+        runs.push(simulate_run(design, &x0, design.validation.samples, &mut rng, "validation")?);
+    }
+    Ok(DataSet { runs, horizon: design.map.horizon })
+}
+
+/// Simulates one run of `samples` samples from `x0`: draws its inputs, integrates, evaluates targets
+/// and adds output noise, all from `rng` in that order.
+pub fn simulate_run(design: &Design, x0: &[f64], samples: usize, rng: &mut ChaCha8Rng, set: &str) -> Result<Run, SpecError> {
+    let model = &design.model;
+    let inputs = input_sequence(&design.learning.inputs, samples, rng);
+    let states = Integrator::new(model, design.tau, design.substeps)
+        .run(x0, &inputs)
+        .map_err(|e| blow_up_error(design, x0, set, e))?;
+    let noise: Vec<Normal<f64>> = model
+        .outputs
+        .iter()
+        .map(|o| Normal::new(0.0, o.noise_variance.sqrt()).expect("variance validated finite and ≥ 0"))
+        .collect();
+    let mut environment = Vec::new();
+    let mut measurements = Vec::with_capacity(samples);
+    let mut targets = Vec::with_capacity(samples);
+    for (k, (x, u)) in states.iter().zip(&inputs).enumerate() {
+        let mut y = vec![0.0; model.outputs.len()];
+        model.outputs(x, u, &mut environment, &mut y);
+        let r: Vec<f64> = design.targets.iter().map(|t| t.expr.eval(&environment)).collect();
+        if let Some(i) = y.iter().position(|v| !v.is_finite()) {
+            return Err(design.error(
+                format!("model.outputs[{i}].expr"),
+                format!("output `{}` is {} at sample {k} of a {set} run from x0 = {x0:?} (x = {x:?})", model.outputs[i].name, y[i]),
+                "make the output expression finite over the state box, or shrink `learning.grid`",
+            ));
+        }
+        if let Some(i) = r.iter().position(|v| !v.is_finite()) {
+            return Err(design.error(
+                format!("targets[{i}].expr"),
+                format!("target `{}` is {} at sample {k} of a {set} run from x0 = {x0:?} (x = {x:?})", design.targets[i].name, r[i]),
+                "make the target expression finite over the state box, or shrink `learning.grid`",
+            ));
+        }
+        for (value, distribution) in y.iter_mut().zip(&noise) {
+            *value += distribution.sample(rng);
+        }
+        measurements.push(y);
+        targets.push(r);
+    }
+    Ok(Run { states, inputs, measurements, targets })
+}
+
+fn blow_up_error(design: &Design, x0: &[f64], set: &str, e: BlowUp) -> SpecError {
+    design.error(
+        "model.derivatives",
+        format!("a {set} run from x0 = {x0:?} blew up: {e}"),
+        "check the derivative expressions, shrink the state box (`learning.grid`), or lower `sampling.tau` / raise `sampling.substeps`",
+    )
+}
+
+/// Piecewise-constant inputs, one vector per sample.
+fn input_sequence(profiles: &[InputProfile], samples: usize, rng: &mut ChaCha8Rng) -> Vec<Vec<f64>> {
+    let mut current = vec![0.0; profiles.len()];
+    (0..samples)
+        .map(|k| {
+            for (value, p) in current.iter_mut().zip(profiles) {
+                if k % p.hold == 0 {
+                    *value = if p.min < p.max { rng.random_range(p.min..=p.max) } else { p.min };
+                }
+            }
+            current.clone()
+        })
+        .collect()
+}
+
+/// The Cartesian product of the grids, the first varying slowest.
+fn cartesian(grids: &[Vec<f64>]) -> Vec<Vec<f64>> {
+    grids.iter().fold(vec![Vec::new()], |points, grid| {
+        points
+            .iter()
+            .flat_map(|p| grid.iter().map(move |&v| p.iter().copied().chain([v]).collect()))
+            .collect()
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::path::Path;
+
+    /// A clock: ẋ = 1, y = x, so Z(k) = (k τ, (k-1) τ, …) exactly when the noise is off.
+    const CLOCK: &str = r#"
+        name = "clock"
+        [model]
+        states = ["x"]
+        inputs = ["u"]
+        derivatives.x = "1"
+        outputs = [{ name = "y", expr = "x", noise_variance = 0.0 }]
+        [sampling]
+        tau = 0.5
+        [learning]
+        samples = 6
+        seed = 3
+        grid.x = { min = 0.0, max = 10.0, points = 3 }
+        inputs.u = { min = -1.0, max = 1.0, hold = 2 }
+        [validation]
+        trajectories = 2
+        samples = 5
+        seed = 4
+        [map]
+        horizon = 3
+        nm = 2
+        beta = 1.0
+        epsilon = 0.01
+        [[targets]]
+        name = "x"
+        expr = "x"
+    "#;
+
+    #[test]
+    fn windows_and_regressors_follow_the_convention() {
+        let design = crate::spec::parse(Path::new("clock.toml"), CLOCK).unwrap();
+        let data = learning_set(&design).unwrap();
+        assert_eq!(data.runs.len(), 3);
+        assert_eq!(data.window_count(), 3 * (6 - 3 + 1));
+        assert_eq!(data.windows().count(), data.window_count());
+        assert_eq!(data.regressor_len(), 3 * 2);
+        let first = data.windows().next().unwrap();
+        assert_eq!(first, Window { run: 0, end: 2 });
+        let w = Window { run: 1, end: 4 }; // x0 = 5, so x(k) = 5 + 0.5 k
+        let mut z = Vec::new();
+        data.regressor(w, &mut z);
+        let u = &data.runs[1].inputs;
+        assert_eq!(z, vec![7.0, 6.5, 6.0, u[4][0], u[3][0], u[2][0]]);
+        assert_eq!(data.target(w, 0), 7.0);
+        // Inputs are held two samples and stay in range.
+        assert_eq!(u[2], u[3]);
+        assert!(u.iter().all(|v| (-1.0..=1.0).contains(&v[0])));
+    }
+
+    #[test]
+    fn data_are_deterministic_for_a_seed_and_fresh_for_another() {
+        let design = crate::spec::parse(Path::new("clock.toml"), CLOCK).unwrap();
+        let a = validation_set(&design).unwrap();
+        let b = validation_set(&design).unwrap();
+        assert_eq!(a.runs[1].states, b.runs[1].states);
+        assert_eq!(a.runs[1].inputs, b.runs[1].inputs);
+        let learning = learning_set(&design).unwrap();
+        assert_ne!(a.runs[0].inputs, learning.runs[0].inputs);
+    }
+
+    #[test]
+    fn cartesian_product_has_every_point_once() {
+        let points = cartesian(&[vec![1.0, 2.0], vec![10.0, 20.0, 30.0]]);
+        assert_eq!(points.len(), 6);
+        assert_eq!(points[0], vec![1.0, 10.0]);
+        assert_eq!(points[5], vec![2.0, 30.0]);
+    }
+}

@@ -1,0 +1,334 @@
+//! Identification of `r ≈ Γ⁻¹(Lᵀ Z)` by constrained least squares (paper eq. `defdeLSopt`):
+//!
+//! ```text
+//! minimise (1/n_E) Σ_E (B(η(r)) μ - Lᵀ Z)²   over (μ, L)
+//! subject to B'(η_q) μ ≥ ε on a grid η_q of [0, 1]            (Γ strictly increasing)
+//!            and, with the `paper` normalisation, [∫₀¹ B] μ = (r_min + r_max)/2.
+//! ```
+//!
+//! Two normalisations fix the scale the paper leaves free:
+//! * `paper`: basis `{1, B(·; b_j)}`, no constant in `Z`, the equality above.
+//! * `intercept`: a constant 1 appended to `Z`. It and the constant basis function are then the same
+//!   degree of freedom, so the constant function is dropped, and the equality (which only pinned `μ₀`)
+//!   with it. The problem is homogeneous: the scale of `(μ, L)` is set by `ε`, the fitted `F` does not
+//!   depend on `ε`, and since `η` does not change when `r` is shifted, neither does `F - r`.
+//!
+//! # Solving it robustly
+//!
+//! The Hessian in `(μ, L)` has condition numbers up to 1e19: nearly collinear basis columns, outputs
+//! of different scales. Handing it to a solver as it is invites "insufficient progress" far from the
+//! optimum. Instead:
+//! 1. One pass over the windows accumulates the triangular factor `R` of the column-scaled data
+//!    `[Z̃ | 1 | B | r]` ([`StreamingQr`]): memory independent of `n_E`, condition not squared.
+//! 2. For fixed `μ` the best `L` is least squares, so `L` is eliminated: with `R` partitioned by the
+//!    `L`-columns and the `μ`-columns, the objective is `‖R_μμ μ‖² / n_E` and `L = R_LL⁻¹ R_Lμ μ`.
+//! 3. `μ` is whitened through the SVD `R_μμ / √n_E = U S Vᵀ`: `μ = V Σ⁻¹ x` with `σ_i = max(s_i,
+//!    10⁻⁷ s_max)`, so Clarabel sees a diagonal Hessian with entries in `[0, 2]` and unit-norm
+//!    constraint rows.
+//! 4. Monotonicity is imposed on a grid clustered at both ends (Chebyshev–Lobatto), checked after the
+//!    solve on a much finer grid; points where `Γ' < ε` are added and the QP solved again (a few
+//!    rounds); a map that is still not strictly increasing is refused.
+//!
+//! The linear floor `r ≈ Lᵀ Z + c` comes from the same `R` (its leading block and the `r` column).
+
+use firmware::basis;
+use nalgebra::{DMatrix, DVector};
+use serde::Serialize;
+
+use crate::data::DataSet;
+use crate::maps::{FittedMap, LinearMap};
+use crate::qp::{self, Problem, QpError};
+use crate::spec::{MapSettings, Normalisation};
+use crate::streaming_qr::StreamingQr;
+
+/// Relative floor of the whitening scales `σ_i` (step 3 above).
+const WHITENING_FLOOR: f64 = 1e-7;
+/// At most this many re-solves with points added to the monotonicity grid.
+const REFINEMENT_ROUNDS: usize = 6;
+/// A constraint whose slack is below this fraction of `ε` counts as active.
+const ACTIVE_TOLERANCE: f64 = 1e-4;
+/// `Γ` has collapsed to a straight line when at least this fraction of the constraints is active.
+const COLLAPSE_FRACTION: f64 = 0.9;
+
+/// Why a map could not be fitted.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum FitError {
+    /// The target takes a single value on the learning data, so `η` is undefined.
+    #[error("the target is constant ({value}) on the learning windows")]
+    ConstantTarget {
+        /// Its value.
+        value: f64,
+    },
+    /// A regressor column is (numerically) a combination of the others.
+    #[error("regressor column {column} is a linear combination of the others (no noise and too long a horizon?)")]
+    DependentRegressor {
+        /// The column index in `Z` (`n_z` is the intercept).
+        column: usize,
+    },
+    /// The learning data contain a non-finite value.
+    #[error("the learning data contain a non-finite value")]
+    NonFinite,
+    /// Clarabel found no solution.
+    #[error(transparent)]
+    Qp(#[from] QpError),
+    /// After refinement `Γ` is still not strictly increasing somewhere.
+    #[error("Γ is not strictly increasing: Γ'({eta}) = {slope}")]
+    NotMonotone {
+        /// Where.
+        eta: f64,
+        /// The slope there.
+        slope: f64,
+    },
+}
+
+/// How the QP went, for the report.
+#[derive(Clone, Debug, Serialize)]
+pub struct Diagnostics {
+    /// Clarabel's status of the last solve.
+    pub status: String,
+    /// Interior-point iterations, summed over refinement rounds.
+    pub iterations: u32,
+    /// Clarabel's solve time, summed over rounds, in seconds.
+    pub solve_time_s: f64,
+    /// Monotonicity constraints in the last solve (grid plus refinement points).
+    pub constraints: usize,
+    /// Of those, how many are active (`Γ'(η_q) = ε`).
+    pub active_constraints: usize,
+    /// Whether `Γ` collapsed to a straight line (at least 90 % of the constraints active).
+    pub collapsed: bool,
+    /// `max |Γ(η) - chord(η)| / (Γ(1) - Γ(0))` on the fine grid: 0 for a straight line.
+    pub nonlinearity: f64,
+    /// Re-solves with points added to the grid.
+    pub refinement_rounds: usize,
+    /// `min Γ' / ε` on the fine check grid (`≥ 1` means the grid constraint held everywhere).
+    pub min_slope_over_epsilon: f64,
+    /// `s_max / s_min` of `R_μμ`: the square root of the reduced Hessian's condition number.
+    pub reduced_condition: f64,
+    /// Objective `(1/n_E) Σ (Γ(r) - Lᵀ Z)²` at the solution, in units of `ε²`.
+    pub objective_over_epsilon_squared: f64,
+}
+
+/// What the KKT check of a fit needs, in the internal scale (`ε_internal`).
+#[derive(Clone, Debug)]
+pub struct Certificate {
+    /// `ε` the QP was solved with (1 for `intercept`, whose solution is then scaled by `ε`).
+    pub epsilon: f64,
+    /// `μ` at that scale, the constant coefficient first with the `paper` normalisation.
+    pub mu: Vec<f64>,
+    /// Whether `mu[0]` is the constant basis coefficient.
+    pub with_constant: bool,
+    /// The `η` of every monotonicity constraint.
+    pub grid: Vec<f64>,
+    /// Their multipliers (in `μ` space): `∇f(μ) = Σ λ_q B'(η_q) + ν ∫B`.
+    pub lambda: Vec<f64>,
+    /// Multiplier of the `paper` equality.
+    pub nu: Option<f64>,
+}
+
+/// A fitted target: the map, the linear floor on the same data, and how the solve went.
+#[derive(Clone, Debug)]
+pub struct Fit {
+    /// The map `Γ⁻¹(Lᵀ Z)`.
+    pub map: FittedMap,
+    /// The linear least-squares floor.
+    pub linear: LinearMap,
+    /// QP diagnostics.
+    pub diagnostics: Diagnostics,
+    /// Optimality data for checking.
+    pub certificate: Certificate,
+}
+
+/// Chebyshev–Lobatto points on `[0, 1]`: clustered at both ends, where the steepest basis functions
+/// bend (a uniform grid lets `Γ` turn non-monotone between points once `β ≥ 2`).
+pub fn monotonicity_grid(points: usize) -> Vec<f64> {
+    (0..points).map(|q| 0.5 * (1.0 - (std::f64::consts::PI * q as f64 / (points - 1) as f64).cos())).collect()
+}
+
+/// The grid `Γ` is checked on after the solve: 20 001 uniform points, 4 001 Chebyshev points and
+/// geometric sequences down to 1e-15 from both ends.
+pub fn check_grid() -> Vec<f64> {
+    let mut grid: Vec<f64> = (0..=20_000).map(|i| i as f64 / 20_000.0).collect();
+    grid.extend(monotonicity_grid(4001));
+    for k in 8..=120 {
+        let d = 10f64.powf(-(k as f64) / 8.0);
+        grid.extend([d, 1.0 - d]);
+    }
+    grid.sort_by(f64::total_cmp);
+    grid.dedup();
+    grid
+}
+
+/// Strict monotonicity of `Γ` on [`check_grid`]: `Γ' > 0` at every point and `Γ` increasing from
+/// each point to the next. Returns the smallest slope.
+pub fn check_strictly_increasing(gamma: &firmware::Gamma<'_, f64>) -> Result<f64, FitError> {
+    let grid = check_grid();
+    let mut min_slope = f64::INFINITY;
+    let mut previous = f64::NEG_INFINITY;
+    for &eta in &grid {
+        let (value, slope) = (gamma.value(eta), gamma.slope(eta));
+        if !(slope > 0.0) || !(value > previous) {
+            return Err(FitError::NotMonotone { eta, slope });
+        }
+        min_slope = min_slope.min(slope);
+        previous = value;
+    }
+    Ok(min_slope)
+}
+
+/// Fits target `target` of `data` with `settings`.
+pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSettings) -> Result<Fit, FitError> {
+    let n_z = data.regressor_len();
+    let curvatures: Vec<f64> = basis::paper_curvatures(settings.nm, settings.beta).collect();
+    let m = curvatures.len();
+
+    // Pass 1: target range and column scales.
+    let (mut r_min, mut r_max) = (f64::INFINITY, f64::NEG_INFINITY);
+    let mut sum_squares = vec![0.0; n_z];
+    let mut z = Vec::with_capacity(n_z);
+    let mut n_e = 0usize;
+    for window in data.windows() {
+        let r = data.target(window, target);
+        data.regressor(window, &mut z);
+        if !r.is_finite() || z.iter().any(|v| !v.is_finite()) {
+            return Err(FitError::NonFinite);
+        }
+        r_min = r_min.min(r);
+        r_max = r_max.max(r);
+        for (s, v) in sum_squares.iter_mut().zip(&z) {
+            *s += v * v;
+        }
+        n_e += 1;
+    }
+    if !(r_max - r_min > 1e-12 * r_max.abs().max(r_min.abs()).max(1e-300)) {
+        return Err(FitError::ConstantTarget { value: r_min });
+    }
+    let scales: Vec<f64> = sum_squares.iter().map(|s| if *s > 0.0 { (s / n_e as f64).sqrt() } else { 1.0 }).collect();
+
+    // Pass 2: R of [Z̃ | 1 | B(η; b_j) | r].
+    let columns = n_z + 1 + m + 1;
+    let mut qr = StreamingQr::new(columns);
+    let mut row = vec![0.0; columns];
+    for window in data.windows() {
+        let r = data.target(window, target);
+        data.regressor(window, &mut z);
+        let eta = (r - r_min) / (r_max - r_min);
+        for (c, (v, s)) in z.iter().zip(&scales).enumerate() {
+            row[c] = v / s;
+        }
+        row[n_z] = 1.0;
+        for (j, &b) in curvatures.iter().enumerate() {
+            row[n_z + 1 + j] = basis::value(b, eta);
+        }
+        row[columns - 1] = r;
+        qr.push(&row);
+    }
+    let r_factor = qr.finish();
+
+    // The linear floor: least squares of r on [Z̃ | 1].
+    let lead = n_z + 1;
+    let coefficients = solve_upper(&r_factor.view((0, 0), (lead, lead)).into_owned(), &r_factor.view((0, columns - 1), (lead, 1)).column(0).into_owned())?;
+    let linear = LinearMap { gains: (0..n_z).map(|c| coefficients[c] / scales[c]).collect(), intercept: coefficients[n_z] };
+
+    // Partition: L-columns and μ-columns.
+    let with_constant = settings.normalisation == Normalisation::Paper;
+    let (l_count, mu_start) = if with_constant { (n_z, n_z) } else { (n_z + 1, n_z + 1) };
+    let mu_count = columns - 1 - mu_start;
+    let r_ll = r_factor.view((0, 0), (l_count, l_count)).into_owned();
+    let r_lmu = r_factor.view((0, mu_start), (l_count, mu_count)).into_owned();
+    let r_mumu = r_factor.view((mu_start, mu_start), (mu_count, mu_count)).into_owned() / (n_e as f64).sqrt();
+    // Slope and integral of each μ-column (the constant has slope 0 and integral 1).
+    let slope_row = |eta: f64| -> Vec<f64> {
+        with_constant.then_some(0.0).into_iter().chain(curvatures.iter().map(|&b| basis::slope(b, eta))).collect()
+    };
+    let integral_row: Vec<f64> = with_constant.then_some(1.0).into_iter().chain(curvatures.iter().map(|&b| basis::integral(b))).collect();
+
+    // Whitening.
+    let svd = r_mumu.clone().svd(false, true);
+    let v = svd.v_t.as_ref().expect("V requested").transpose();
+    let s_max = svd.singular_values.max();
+    let s_min = svd.singular_values.min();
+    let sigma: Vec<f64> = svd.singular_values.iter().map(|&s| s.max(WHITENING_FLOOR * s_max)).collect();
+    let transform = &v * DMatrix::from_diagonal(&DVector::from_iterator(mu_count, sigma.iter().map(|s| 1.0 / s)));
+    let hessian = DMatrix::from_diagonal(&DVector::from_iterator(mu_count, svd.singular_values.iter().zip(&sigma).map(|(s, g)| 2.0 * (s / g).powi(2))));
+
+    // Solve, refining the monotonicity grid where the fine check finds Γ' < ε.
+    let epsilon = if with_constant { settings.epsilon } else { 1.0 };
+    let mut grid = monotonicity_grid(settings.monotonicity_grid);
+    let check = check_grid();
+    let (mut iterations, mut solve_time, mut rounds) = (0, 0.0, 0);
+    let (solution, row_norms, equality_norm, mu) = loop {
+        let rows: Vec<DVector<f64>> = grid.iter().map(|&eta| transform.tr_mul(&DVector::from_vec(slope_row(eta)))).collect();
+        let row_norms: Vec<f64> = rows.iter().map(|r| r.norm()).collect();
+        let g_matrix = DMatrix::from_fn(rows.len(), mu_count, |i, j| rows[i][j] / row_norms[i]);
+        let g = row_norms.iter().map(|n| epsilon / n).collect();
+        let (e_matrix, e, equality_norm) = if with_constant {
+            let row = transform.tr_mul(&DVector::from_column_slice(&integral_row));
+            let norm = row.norm();
+            (DMatrix::from_row_slice(1, mu_count, (row / norm).as_slice()), vec![0.5 * (r_min + r_max) / norm], norm)
+        } else {
+            (DMatrix::zeros(0, mu_count), vec![], 1.0)
+        };
+        let problem = Problem { p: hessian.clone(), q: vec![0.0; mu_count], e_matrix, e, g_matrix, g };
+        let solution = qp::solve(&problem)?;
+        iterations += solution.iterations;
+        solve_time += solution.solve_time;
+        let mu = &transform * DVector::from_column_slice(&solution.x);
+        let slope_at = |eta: f64| slope_row(eta).iter().zip(mu.iter()).map(|(d, m)| d * m).sum::<f64>();
+        let mut violations: Vec<(f64, f64)> =
+            check.iter().map(|&eta| (eta, slope_at(eta))).filter(|&(_, s)| s < epsilon * (1.0 - 1e-3)).collect();
+        if violations.is_empty() || rounds == REFINEMENT_ROUNDS {
+            break (solution, row_norms, equality_norm, mu);
+        }
+        violations.sort_by(|a, b| a.1.total_cmp(&b.1));
+        grid.extend(violations.iter().take(50).map(|v| v.0));
+        rounds += 1;
+    };
+    let slope_at = |eta: f64| slope_row(eta).iter().zip(mu.iter()).map(|(d, m)| d * m).sum::<f64>();
+    let active_constraints = grid.iter().filter(|&&eta| slope_at(eta) - epsilon <= ACTIVE_TOLERANCE * epsilon).count();
+    let objective: f64 = (&r_mumu * &mu).norm_squared();
+    let certificate = Certificate {
+        epsilon,
+        mu: mu.iter().copied().collect(),
+        with_constant,
+        lambda: solution.lambda.iter().zip(&row_norms).map(|(l, n)| l / n).collect(),
+        nu: with_constant.then(|| solution.nu[0] / equality_norm),
+        grid: grid.clone(),
+    };
+
+    // Recover L, undo the internal scale of ε and the column scaling of Z.
+    let l_scaled = solve_upper(&r_ll, &(&r_lmu * &mu))?;
+    let factor = settings.epsilon / epsilon;
+    let gains = (0..n_z).map(|c| factor * l_scaled[c] / scales[c]).collect();
+    let intercept = if with_constant { 0.0 } else { factor * l_scaled[n_z] };
+    let mu_constant = if with_constant { factor * mu[0] } else { 0.0 };
+    let mu_basis = mu.iter().skip(usize::from(with_constant)).map(|m| factor * m).collect();
+    let map = FittedMap::new(target_name.to_owned(), settings.normalisation, gains, intercept, mu_constant, mu_basis, curvatures, (r_min, r_max));
+
+    let gamma = map.gamma();
+    let min_slope = check_strictly_increasing(&gamma)?;
+    let (g0, g1) = (gamma.value(0.0), gamma.value(1.0));
+    let nonlinearity = check.iter().map(|&eta| (gamma.value(eta) - g0 - eta * (g1 - g0)).abs()).fold(0.0, f64::max) / (g1 - g0);
+    let diagnostics = Diagnostics {
+        status: solution.status.clone(),
+        iterations,
+        solve_time_s: solve_time,
+        constraints: grid.len(),
+        active_constraints,
+        collapsed: active_constraints as f64 >= COLLAPSE_FRACTION * grid.len() as f64,
+        nonlinearity,
+        refinement_rounds: rounds,
+        min_slope_over_epsilon: min_slope / settings.epsilon,
+        reduced_condition: s_max / s_min,
+        objective_over_epsilon_squared: objective / (epsilon * epsilon),
+    };
+    Ok(Fit { map, linear, diagnostics, certificate })
+}
+
+/// Solves `R x = b` for upper-triangular `R`, refusing a (numerically) singular one.
+fn solve_upper(r: &DMatrix<f64>, b: &DVector<f64>) -> Result<DVector<f64>, FitError> {
+    let largest = r.diagonal().amax();
+    if let Some(column) = r.diagonal().iter().position(|d| !(d.abs() > 1e-12 * largest)) {
+        return Err(FitError::DependentRegressor { column });
+    }
+    r.solve_upper_triangular(b).ok_or(FitError::DependentRegressor { column: 0 })
+}

@@ -1,0 +1,100 @@
+//! One design end to end: learning and validation data, a fit per target, its evaluation.
+
+use indicatif::ProgressBar;
+
+use crate::data::{self, DataSet};
+use crate::evaluate::{evaluate, Evaluation};
+use crate::identify::{self, Fit, FitError};
+use crate::qp::QpError;
+use crate::spec::{Design, SpecError};
+
+/// A fitted and judged target.
+#[derive(Clone, Debug)]
+pub struct TargetResult {
+    /// Index in `design.targets`.
+    pub index: usize,
+    /// The fit.
+    pub fit: Fit,
+    /// Accuracy on the learning windows (noisy regressors, as fitted).
+    pub learning: Evaluation,
+    /// Accuracy on the validation windows.
+    pub validation: Evaluation,
+}
+
+/// Everything a design produced.
+#[derive(Clone, Debug)]
+pub struct DesignResult {
+    /// The learning set.
+    pub learning: DataSet,
+    /// The validation set.
+    pub validation: DataSet,
+    /// One result per target, in spec order.
+    pub targets: Vec<TargetResult>,
+}
+
+/// Steps [`run`] reports to its progress bar.
+pub fn steps(design: &Design) -> u64 {
+    2 + design.targets.len() as u64
+}
+
+/// Simulates, fits and evaluates every target of `design`.
+pub fn run(design: &Design, progress: &ProgressBar) -> Result<DesignResult, SpecError> {
+    progress.set_message(format!("{}: simulating learning runs", design.name));
+    let learning = data::learning_set(design)?;
+    progress.inc(1);
+    progress.set_message(format!("{}: simulating validation runs", design.name));
+    let validation = data::validation_set(design)?;
+    progress.inc(1);
+    let mut targets = Vec::new();
+    for (index, target) in design.targets.iter().enumerate() {
+        progress.set_message(format!("{}: fitting {}", design.name, target.name));
+        let fit = identify::fit(&learning, index, &target.name, &design.map).map_err(|e| explain(design, index, e))?;
+        let result = TargetResult {
+            index,
+            learning: evaluate(&learning, index, &fit),
+            validation: evaluate(&validation, index, &fit),
+            fit,
+        };
+        targets.push(result);
+        progress.inc(1);
+    }
+    Ok(DesignResult { learning, validation, targets })
+}
+
+/// Turns a fit failure into a message about the spec field to change.
+fn explain(design: &Design, index: usize, error: FitError) -> SpecError {
+    let name = &design.targets[index].name;
+    let problem = format!("fitting target `{name}`: {error}");
+    match error {
+        FitError::ConstantTarget { .. } => design.error(
+            format!("targets[{index}].expr"),
+            problem,
+            "a target must vary over the learning data: widen `learning.grid` or estimate another quantity",
+        ),
+        FitError::DependentRegressor { .. } => design.error(
+            "map.horizon",
+            problem,
+            "lower `map.horizon`, or give the outputs measurement noise (`model.outputs[].noise_variance` > 0) as the real sensor has",
+        ),
+        FitError::NonFinite => design.error(
+            format!("targets[{index}].expr"),
+            problem,
+            "make the model and target finite over the whole state box",
+        ),
+        FitError::Qp(QpError::Infeasible(_) | QpError::Unbounded(_)) => design.error(
+            "map",
+            problem,
+            "the QP is feasible and bounded by construction (η alone meets every constraint), so this is numerical: lower `map.beta` or `map.nm`, or bring `map.epsilon` closer to the target's range",
+        ),
+        FitError::Qp(_) => design.error(
+            "map.beta",
+            problem,
+            "the solver lost accuracy on a nearly degenerate basis: lower `map.beta` or `map.nm`",
+        ),
+        FitError::NotMonotone { .. } => design.error(
+            "map.monotonicity_grid",
+            problem,
+            "raise `map.monotonicity_grid` (e.g. to 801), or lower `map.beta` so that the basis bends less sharply",
+        ),
+    }
+}
