@@ -23,8 +23,8 @@
 //! 2. For fixed `μ` the best `L` is least squares, so `L` is eliminated: with `R` partitioned by the
 //!    `L`-columns and the `μ`-columns, the objective is `‖R_μμ μ‖² / n_E` and `L = R_LL⁻¹ R_Lμ μ`.
 //! 3. `μ` is whitened through the SVD `R_μμ / √n_E = U S Vᵀ`: `μ = V Σ⁻¹ x` with `σ_i = max(s_i,
-//!    10⁻⁷ s_max)`, so Clarabel sees a diagonal Hessian with entries in `[0, 2]` and unit-norm
-//!    constraint rows.
+//!    10⁻³ s_max)`, so Clarabel sees a diagonal Hessian with entries in `[0, 2]` (2 where the data
+//!    determine `μ`) and unit-norm constraint rows.
 //! 4. Monotonicity is imposed on a grid clustered at both ends (Chebyshev–Lobatto), checked after the
 //!    solve on a much finer grid; points where `Γ' < ε` are added and the QP solved again (a few
 //!    rounds); a map that is still not strictly increasing is refused.
@@ -41,8 +41,12 @@ use crate::qp::{self, Problem, QpError};
 use crate::spec::{MapSettings, Normalisation};
 use crate::streaming_qr::StreamingQr;
 
-/// Relative floor of the whitening scales `σ_i` (step 3 above).
-const WHITENING_FLOOR: f64 = 1e-7;
+/// Relative floor of the whitening scales `σ_i` (step 3 above). Directions of `μ` the data barely
+/// see (`s_i` below the floor) keep a Hessian entry `(s_i/σ_i)² < 1` instead of blowing their
+/// constraint columns up by `1/s_i`: with a floor of 1e-7 Clarabel met the normalised constraint rows
+/// to its tolerance while `Γ'(0)` was off by 10⁶ ε at β = 5 (curvatures up to e^20); 1e-3 solves
+/// β up to 7 on Example 1 in at most two refinement rounds, with the same intercept-map estimates.
+const WHITENING_FLOOR: f64 = 1e-3;
 /// At most this many re-solves with points added to the monotonicity grid.
 const REFINEMENT_ROUNDS: usize = 6;
 /// A constraint whose slack is below this fraction of `ε` counts as active.
@@ -108,11 +112,13 @@ pub struct Diagnostics {
     pub objective_over_epsilon_squared: f64,
 }
 
-/// What the KKT check of a fit needs, in the internal scale (`ε_internal`).
+/// What the KKT check of a fit needs, at the internal scale the QP was solved in.
 #[derive(Clone, Debug)]
 pub struct Certificate {
-    /// `ε` the QP was solved with (1 for `intercept`, whose solution is then scaled by `ε`).
+    /// `ε` the QP was solved with: the spec's `ε` over the internal scale (1 for `intercept`).
     pub epsilon: f64,
+    /// Right-hand side of the `paper` equality at the internal scale.
+    pub mean: f64,
     /// `μ` at that scale, the constant coefficient first with the `paper` normalisation.
     pub mu: Vec<f64>,
     /// Whether `mu[0]` is the constant basis coefficient.
@@ -158,18 +164,25 @@ pub fn check_grid() -> Vec<f64> {
     grid
 }
 
-/// Strict monotonicity of `Γ` on [`check_grid`]: `Γ' > 0` at every point and `Γ` increasing from
-/// each point to the next. Returns the smallest slope.
+/// Strict monotonicity of `Γ`: `Γ' > 0` at every point of [`check_grid`], and `Γ` increasing from
+/// each point to the next of a uniform grid of step 5e-5 (values of points closer than that may tie
+/// in floating point). Returns the smallest slope.
 pub fn check_strictly_increasing(gamma: &firmware::Gamma<'_, f64>) -> Result<f64, FitError> {
-    let grid = check_grid();
     let mut min_slope = f64::INFINITY;
-    let mut previous = f64::NEG_INFINITY;
-    for &eta in &grid {
-        let (value, slope) = (gamma.value(eta), gamma.slope(eta));
-        if !(slope > 0.0) || !(value > previous) {
+    for eta in check_grid() {
+        let slope = gamma.slope(eta);
+        if !(slope > 0.0) {
             return Err(FitError::NotMonotone { eta, slope });
         }
         min_slope = min_slope.min(slope);
+    }
+    let mut previous = f64::NEG_INFINITY;
+    for i in 0..=20_000 {
+        let eta = i as f64 / 20_000.0;
+        let value = gamma.value(eta);
+        if !(value > previous) {
+            return Err(FitError::NotMonotone { eta, slope: gamma.slope(eta) });
+        }
         previous = value;
     }
     Ok(min_slope)
@@ -252,7 +265,12 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
     let hessian = DMatrix::from_diagonal(&DVector::from_iterator(mu_count, svd.singular_values.iter().zip(&sigma).map(|(s, g)| 2.0 * (s / g).powi(2))));
 
     // Solve, refining the monotonicity grid where the fine check finds Γ' < ε.
-    let epsilon = if with_constant { settings.epsilon } else { 1.0 };
+    // The QP is solved at unit scale: Clarabel's tolerances are partly absolute, and with ε = 0.01 a
+    // whole objective of 3e-7 would sit near them. `(μ, L)` scale with `scale`: exactly for `intercept`
+    // (homogeneous), and for `paper` because ε and the equality's right-hand side are both divided by it.
+    let mean = 0.5 * (r_min + r_max);
+    let scale = if with_constant { settings.epsilon.max(mean.abs()) } else { settings.epsilon };
+    let epsilon = settings.epsilon / scale;
     let mut grid = monotonicity_grid(settings.monotonicity_grid);
     let check = check_grid();
     let (mut iterations, mut solve_time, mut rounds) = (0, 0.0, 0);
@@ -264,7 +282,7 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
         let (e_matrix, e, equality_norm) = if with_constant {
             let row = transform.tr_mul(&DVector::from_column_slice(&integral_row));
             let norm = row.norm();
-            (DMatrix::from_row_slice(1, mu_count, (row / norm).as_slice()), vec![0.5 * (r_min + r_max) / norm], norm)
+            (DMatrix::from_row_slice(1, mu_count, (row / norm).as_slice()), vec![mean / scale / norm], norm)
         } else {
             (DMatrix::zeros(0, mu_count), vec![], 1.0)
         };
@@ -288,6 +306,7 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
     let objective: f64 = (&r_mumu * &mu).norm_squared();
     let certificate = Certificate {
         epsilon,
+        mean: mean / scale,
         mu: mu.iter().copied().collect(),
         with_constant,
         lambda: solution.lambda.iter().zip(&row_norms).map(|(l, n)| l / n).collect(),
@@ -297,11 +316,10 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
 
     // Recover L, undo the internal scale of ε and the column scaling of Z.
     let l_scaled = solve_upper(&r_ll, &(&r_lmu * &mu))?;
-    let factor = settings.epsilon / epsilon;
-    let gains = (0..n_z).map(|c| factor * l_scaled[c] / scales[c]).collect();
-    let intercept = if with_constant { 0.0 } else { factor * l_scaled[n_z] };
-    let mu_constant = if with_constant { factor * mu[0] } else { 0.0 };
-    let mu_basis = mu.iter().skip(usize::from(with_constant)).map(|m| factor * m).collect();
+    let gains = (0..n_z).map(|c| scale * l_scaled[c] / scales[c]).collect();
+    let intercept = if with_constant { 0.0 } else { scale * l_scaled[n_z] };
+    let mu_constant = if with_constant { scale * mu[0] } else { 0.0 };
+    let mu_basis = mu.iter().skip(usize::from(with_constant)).map(|m| scale * m).collect();
     let map = FittedMap::new(target_name.to_owned(), settings.normalisation, gains, intercept, mu_constant, mu_basis, curvatures, (r_min, r_max));
 
     let gamma = map.gamma();
