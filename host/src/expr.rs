@@ -18,6 +18,14 @@ pub enum ExprError {
         /// What the parser said.
         message: String,
     },
+    /// A unary minus applied to a power, which `exmex` reads against mathematical convention.
+    #[error("`{text}`: `-{operand}^…` is read by exmex as `(-{operand})^…`, not `-({operand}^…)`")]
+    AmbiguousMinus {
+        /// The expression text.
+        text: String,
+        /// The operand the minus applies to.
+        operand: String,
+    },
     /// The expression names a variable that is not in scope.
     #[error("`{text}` uses `{name}`, which is not defined here (known: {known})")]
     UnknownVariable {
@@ -42,6 +50,7 @@ pub struct Expression {
 impl Expression {
     /// Parses `text` and binds each of its variables to its index in `scope`.
     pub fn compile(text: &str, scope: &[&str]) -> Result<Self, ExprError> {
+        reject_minus_before_power(text)?;
         let flat = FlatEx::<f64>::parse(text)
             .map_err(|e| ExprError::Syntax { text: text.to_owned(), message: e.to_string() })?;
         let slots = flat
@@ -84,6 +93,98 @@ impl Expression {
     }
 }
 
+#[derive(Clone, Copy, PartialEq, Debug)]
+enum Token<'a> {
+    Operand(&'a str),
+    Operator(char),
+    Open,
+    Close,
+    Comma,
+}
+
+/// Splits an expression into operands (names, numbers), operators and parentheses.
+fn tokens(text: &str) -> Vec<Token<'_>> {
+    let bytes = text.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < bytes.len() {
+        let c = bytes[i] as char;
+        let start = i;
+        i += 1;
+        match c {
+            c if c.is_whitespace() => {}
+            '(' => out.push(Token::Open),
+            ')' => out.push(Token::Close),
+            ',' => out.push(Token::Comma),
+            c if c.is_ascii_alphabetic() || c == '_' => {
+                while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
+                    i += 1;
+                }
+                out.push(Token::Operand(&text[start..i]));
+            }
+            c if c.is_ascii_digit() || c == '.' => {
+                while i < bytes.len() {
+                    let d = bytes[i];
+                    let exponent_sign = (d == b'-' || d == b'+') && matches!(bytes[i - 1], b'e' | b'E');
+                    if d.is_ascii_digit() || d == b'.' || d == b'e' || d == b'E' || exponent_sign {
+                        i += 1;
+                    } else {
+                        break;
+                    }
+                }
+                out.push(Token::Operand(&text[start..i]));
+            }
+            c => out.push(Token::Operator(c)),
+        }
+    }
+    out
+}
+
+/// Refuses `-x^2`, `-(a+b)^2`, `-sin(x)^2`: exmex binds a unary minus tighter than `^`, so these
+/// would silently mean `(-x)^2`. `-(x^2)` and `0 - x^2` say what is meant.
+fn reject_minus_before_power(text: &str) -> Result<(), ExprError> {
+    let tokens = tokens(text);
+    for (i, token) in tokens.iter().enumerate() {
+        let unary = *token == Token::Operator('-')
+            && match i.checked_sub(1).map(|p| tokens[p]) {
+                None | Some(Token::Open | Token::Comma) => true,
+                Some(Token::Operator(op)) => op != '^',
+                _ => false,
+            };
+        if !unary {
+            continue;
+        }
+        // The operand: a name or number, a call `f(…)`, or a group `(…)`.
+        let mut j = i + 1;
+        let first = j;
+        if let Some(Token::Operand(_)) = tokens.get(j) {
+            j += 1;
+        }
+        if tokens.get(j) == Some(&Token::Open) && (j == first || matches!(tokens.get(first), Some(Token::Operand(_)))) {
+            let mut depth = 0;
+            while let Some(t) = tokens.get(j) {
+                match t {
+                    Token::Open => depth += 1,
+                    Token::Close => depth -= 1,
+                    _ => {}
+                }
+                j += 1;
+                if depth == 0 {
+                    break;
+                }
+            }
+        }
+        if j > first && tokens.get(j) == Some(&Token::Operator('^')) {
+            let operand = match tokens[first] {
+                Token::Operand(name) => name.to_owned(),
+                _ => "(…)".to_owned(),
+            };
+            return Err(ExprError::AmbiguousMinus { text: text.to_owned(), operand });
+        }
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -101,6 +202,18 @@ mod tests {
             Err(ExprError::UnknownVariable { name, .. }) if name == "x3"
         ));
         assert!(matches!(Expression::compile("x1 + * (", &["x1"]), Err(ExprError::Syntax { .. })));
+    }
+
+    #[test]
+    fn minus_before_a_power_is_refused_where_exmex_would_misread_it() {
+        for text in ["-x^2", "1 + -x^2", "2*-x^2", "-(x+1)^2", "-sin(x)^2", "(-x^3)"] {
+            assert!(matches!(Expression::compile(text, &["x"]), Err(ExprError::AmbiguousMinus { .. })), "{text}");
+        }
+        // What exmex reads as meant, checked by value at x = 3.
+        for (text, value) in [("-(x^2)", -9.0), ("0 - x^2", -9.0), ("1 - x^2", -8.0), ("x^-2", 1.0 / 9.0), ("-x", -3.0), ("0.2*x^2", 1.8), ("-x*2", -6.0)] {
+            let e = Expression::compile(text, &["x"]).unwrap();
+            assert!((e.eval(&[3.0]) - value).abs() < 1e-12, "{text}: {}", e.eval(&[3.0]));
+        }
     }
 
     #[test]

@@ -122,7 +122,7 @@ mod tests {
     #[test]
     fn nonlinear_decay_matches_the_closed_form() {
         // ẋ = -x², x(0) = 1  ⇒  x(t) = 1/(1 + t).
-        let m = model(&["-x1^2"]);
+        let m = model(&["-(x1^2)"]);
         let states = Integrator::new(&m, 0.2, 20).run(&[1.0], &vec![vec![]; 50]).unwrap();
         for (k, x) in states.iter().enumerate() {
             let t = k as f64 * 0.2;
