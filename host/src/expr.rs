@@ -38,6 +38,17 @@ pub enum ExprError {
     },
 }
 
+impl ExprError {
+    /// What to change in the expression.
+    pub fn fix(&self) -> String {
+        match self {
+            ExprError::Syntax { .. } => "write it in exmex syntax: + - * / ^, parentheses, exp, ln, sqrt, sin, cos, abs, … (decimal numbers, no 1e-3 notation: use a parameter)".into(),
+            ExprError::AmbiguousMinus { operand, .. } => format!("write `-({operand}^…)` or `0 - {operand}^…` if that is meant, `(-{operand})^…` otherwise"),
+            ExprError::UnknownVariable { name, .. } => format!("declare `{name}`, or use only the states, inputs, parameters and earlier definitions in scope"),
+        }
+    }
+}
+
 /// A compiled expression.
 #[derive(Clone, Debug)]
 pub struct Expression {

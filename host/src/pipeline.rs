@@ -62,7 +62,7 @@ pub fn run(design: &Design, progress: &ProgressBar) -> Result<DesignResult, Spec
 }
 
 /// Turns a fit failure into a message about the spec field to change.
-fn explain(design: &Design, index: usize, error: FitError) -> SpecError {
+pub fn explain(design: &Design, index: usize, error: FitError) -> SpecError {
     let name = &design.targets[index].name;
     let problem = format!("fitting target `{name}`: {error}");
     match error {

@@ -416,7 +416,7 @@ impl Validator {
             derivatives: &derivatives,
             outputs: &outputs,
         })
-        .map_err(|e| self.err(e.field, e.error.to_string(), "use only parameters, states, inputs and earlier definitions, with exmex syntax (+ - * / ^, exp, ln, sqrt, sin, …)"))
+        .map_err(|e| self.err(e.field, e.error.to_string(), e.error.fix()))
     }
 
     fn map(&self, raw: &RawMap) -> Result<MapSettings, SpecError> {
@@ -530,7 +530,7 @@ impl Validator {
                 return Err(self.err(format!("targets[{i}].name"), format!("target `{}` is declared twice", t.name), "give each target its own name"));
             }
             let expr = Expression::compile(&t.expr, &scope)
-                .map_err(|e| self.err(format!("targets[{i}].expr"), e.to_string(), "write the target as an expression of states, parameters and definitions"))?;
+                .map_err(|e| self.err(format!("targets[{i}].expr"), e.to_string(), e.fix()))?;
             targets.push(Target { name: t.name.clone(), expr });
         }
         Ok(targets)

@@ -1,1 +1,26 @@
-//! Shared helpers of the integration tests.
+//! Shared helpers of the integration tests: the shipped specs and designs built from them.
+
+use std::path::{Path, PathBuf};
+
+use host::pipeline::{self, DesignResult};
+use host::spec::{self, Design};
+
+/// The folder of the specs shipped with the host.
+pub fn specs_folder() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("host").join("specs")
+}
+
+/// The text of a shipped spec.
+pub fn spec_text(name: &str) -> String {
+    std::fs::read_to_string(specs_folder().join(format!("{name}.toml"))).expect("shipped spec")
+}
+
+/// Parses spec text as if it were the file `name.toml`.
+pub fn design(name: &str, text: &str) -> Design {
+    spec::parse(Path::new(&format!("{name}.toml")), text).expect("valid spec")
+}
+
+/// Builds a design (data, fits, evaluation) without progress output.
+pub fn build(design: &Design) -> DesignResult {
+    pipeline::run(design, &indicatif::ProgressBar::hidden()).expect("the design builds")
+}

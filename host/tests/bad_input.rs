@@ -1,0 +1,169 @@
+//! Every kind of bad input ends in a message naming the file, the field and the fix, and the command
+//! line exits non-zero without a panic and without touching what an earlier run wrote.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use host::identify::FitError;
+use host::qp::{self, Problem};
+use host::spec::{self, SpecError};
+use nalgebra::DMatrix;
+
+const EXAMPLE: &str = include_str!("../specs/vanderpol.toml");
+
+/// The shipped Example 1 with one edit, which must be present.
+fn edited(from: &str, to: &str) -> String {
+    assert!(EXAMPLE.contains(from), "the example no longer contains {from:?}");
+    EXAMPLE.replacen(from, to, 1)
+}
+
+fn parse_error(text: &str) -> SpecError {
+    spec::parse(Path::new("bad.toml"), text).expect_err("the spec should be refused")
+}
+
+/// Asserts the message names the file, the field and gives a fix mentioning `fix_mentions`.
+fn assert_names(error: &SpecError, field: &str, fix_mentions: &str) {
+    let message = error.to_string();
+    assert!(message.starts_with("bad.toml: "), "{message}");
+    assert!(error.field.contains(field), "field {:?} should name {field:?}: {message}", error.field);
+    assert!(message.contains("fix: ") && error.fix.contains(fix_mentions), "{message}");
+}
+
+#[test]
+fn toml_syntax_error_names_the_line() {
+    let e = parse_error(&edited("tau = 0.1", "tau = = 0.1"));
+    let line = 1 + EXAMPLE[..EXAMPLE.find("tau = 0.1").unwrap()].matches('\n').count();
+    assert_names(&e, &format!("line {line}"), "TOML");
+}
+
+#[test]
+fn misspelt_field_is_refused() {
+    let e = parse_error(&edited("tau = 0.1", "taux = 0.1"));
+    assert!(e.problem.contains("taux"), "{e}");
+}
+
+#[test]
+fn expression_syntax_error() {
+    let e = parse_error(&edited("x1 = \"-x2\"", "x1 = \"-x2 * (\""));
+    assert_names(&e, "model.derivatives.x1", "exmex syntax");
+}
+
+#[test]
+fn minus_before_power_is_refused() {
+    let e = parse_error(&edited("expr = \"x1 + x2\"", "expr = \"x1 + -x2^2\""));
+    assert_names(&e, "model.outputs[0].expr", "-(x2^");
+}
+
+#[test]
+fn unknown_variable_in_an_expression() {
+    let e = parse_error(&edited("expr = \"x1 + x2\"", "expr = \"x1 + x3\""));
+    assert_names(&e, "model.outputs[0].expr", "states");
+    assert!(e.problem.contains("x3"), "{e}");
+}
+
+#[test]
+fn unknown_variable_in_a_target() {
+    let e = parse_error(&edited("expr = \"x2\"", "expr = \"speed\""));
+    assert_names(&e, "targets[1].expr", "states");
+}
+
+#[test]
+fn non_positive_sample_time() {
+    for tau in ["0.0", "-0.1"] {
+        let e = parse_error(&edited("tau = 0.1", &format!("tau = {tau}")));
+        assert_names(&e, "sampling.tau", "positive");
+    }
+}
+
+#[test]
+fn horizon_not_below_run_length() {
+    let e = parse_error(&edited("horizon = 10", "horizon = 100"));
+    assert_names(&e, "map.horizon", "learning.samples");
+}
+
+#[test]
+fn empty_box() {
+    let e = parse_error(&edited("min = -2.0, max = 2.0", "min = 2.0, max = 2.0"));
+    assert_names(&e, "learning.grid.x1", "value");
+}
+
+#[test]
+fn inverted_box() {
+    let e = parse_error(&edited("min = -5.0, max = 5.0", "min = 5.0, max = -5.0"));
+    assert_names(&e, "learning.grid.x2", "swap");
+}
+
+#[test]
+fn zero_grid() {
+    let e = parse_error(&edited("max = 2.0, points = 4", "max = 2.0, points = 0"));
+    assert_names(&e, "learning.grid.x1.points", "2 or more");
+}
+
+#[test]
+fn negative_variance() {
+    let e = parse_error(&edited("noise_variance = 0.2", "noise_variance = -0.2"));
+    assert_names(&e, "model.outputs[0].noise_variance", "variance");
+}
+
+#[test]
+fn trajectory_that_blows_up() {
+    // ẋ2 = +x1²·x2 (instead of 1 - x1²) escapes to infinity in finite time from the box.
+    let text = edited("x2 = \"4*x1 + (1 - x1^2)*x2\"", "x2 = \"4*x1 + x1^2*x2^3\"");
+    let design = spec::parse(Path::new("bad.toml"), &text).unwrap();
+    let e = host::data::learning_set(&design).expect_err("must blow up");
+    assert_names(&e, "model.derivatives", "sampling.tau");
+    assert!(e.problem.contains("non-finite"), "{e}");
+}
+
+#[test]
+fn infeasible_qp() {
+    // The identification QP is feasible by construction (η alone meets every constraint), so an
+    // infeasible answer can only come from the solver; this is the message such a failure gets.
+    let problem = Problem {
+        p: DMatrix::identity(1, 1),
+        q: vec![0.0],
+        e_matrix: DMatrix::zeros(0, 1),
+        e: vec![],
+        g_matrix: DMatrix::from_row_slice(2, 1, &[1.0, -1.0]),
+        g: vec![1.0, 0.0],
+    };
+    let error = qp::solve(&problem).unwrap_err();
+    let design = spec::parse(Path::new("bad.toml"), EXAMPLE).unwrap();
+    let e = host::pipeline::explain(&design, 0, FitError::Qp(error));
+    assert_names(&e, "map", "map.beta");
+    assert!(e.problem.contains("infeasible") && e.problem.contains("`x1`"), "{e}");
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("host-bad-input-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn command_line_exits_non_zero_without_panic_and_keeps_earlier_reports() {
+    let dir = scratch("cli");
+    let reports = dir.join("reports");
+    let earlier = reports.join("vanderpol").join("report.json");
+    std::fs::create_dir_all(earlier.parent().unwrap()).unwrap();
+    std::fs::write(&earlier, "earlier run").unwrap();
+    let spec_path = dir.join("broken.toml");
+    std::fs::write(&spec_path, edited("tau = 0.1", "tau = -1")).unwrap();
+    let output = Command::new(env!("CARGO_BIN_EXE_host"))
+        .args(["gen", "--spec"])
+        .arg(&spec_path)
+        .arg("--reports")
+        .arg(&reports)
+        .env("RUST_BACKTRACE", "1")
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(!output.status.success());
+    assert!(stderr.contains("broken.toml") && stderr.contains("sampling.tau") && stderr.contains("fix:"), "{stderr}");
+    assert!(!stderr.contains("panicked") && !stderr.contains("backtrace"), "{stderr}");
+    assert_eq!(std::fs::read_to_string(&earlier).unwrap(), "earlier run");
+    let missing = Command::new(env!("CARGO_BIN_EXE_host")).args(["gen", "--spec", "no/such/spec.toml"]).output().unwrap();
+    assert!(!missing.status.success());
+    assert!(String::from_utf8_lossy(&missing.stderr).contains("no/such/spec.toml"));
+}

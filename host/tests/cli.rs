@@ -1,0 +1,35 @@
+//! `host gen` end to end: the report files and the summary a user sees.
+
+use std::process::Command;
+
+#[test]
+fn gen_writes_the_report_and_prints_a_summary() {
+    let reports = std::env::temp_dir().join(format!("host-cli-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&reports);
+    let spec = concat!(env!("CARGO_MANIFEST_DIR"), "/specs/vanderpol.toml");
+    let output = Command::new(env!("CARGO_BIN_EXE_host")).args(["gen", "--spec", spec, "--reports"]).arg(&reports).output().unwrap();
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    assert!(stdout.contains("n_E = 1456") && stdout.contains("| x1 |") && stdout.contains("| x2 |"), "{stdout}");
+
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(reports.join("vanderpol/report.json")).unwrap()).unwrap();
+    assert_eq!(json["learning"]["windows"], 1456);
+    for target in json["targets"].as_array().unwrap() {
+        for key in ["rmse_learning", "rmse_validation", "max_error_validation"] {
+            assert!(target[key].as_f64().unwrap() > 0.0, "{key}");
+            assert!(target["linear"][key].as_f64().unwrap() > 0.0, "linear {key}");
+        }
+        // The empirical ε_x bounds the RMSE.
+        assert!(target["max_error_validation"].as_f64() >= target["rmse_validation"].as_f64());
+        let qp = &target["qp"];
+        assert!(qp["status"] == "Solved" || qp["status"] == "AlmostSolved");
+        assert!(qp["iterations"].as_u64().unwrap() > 0 && qp["solve_time_s"].as_f64().unwrap() > 0.0);
+        assert!(qp["active_constraints"].as_u64().unwrap() <= qp["constraints"].as_u64().unwrap());
+        assert!(qp["collapsed"].is_boolean());
+    }
+    let markdown = std::fs::read_to_string(reports.join("vanderpol/report.md")).unwrap();
+    assert!(markdown.contains("| x1 |") && markdown.contains("n_E = 1456"));
+    // No temporary file is left behind.
+    let leftovers: Vec<_> = std::fs::read_dir(reports.join("vanderpol")).unwrap().filter_map(|e| e.ok()).filter(|e| e.file_name().to_string_lossy().contains(".tmp")).collect();
+    assert!(leftovers.is_empty());
+}
