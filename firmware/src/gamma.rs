@@ -170,7 +170,11 @@ mod tests {
         let b = curvatures();
         let mu = [0.3, -0.1, 0.7, 0.2, 1.0, -0.05, 0.4, 0.01];
         let w: [f64; 8] = core::array::from_fn(|j| weight(mu[j], b[j]));
-        let gamma = Gamma { offset: 1.0, weights: &w, curvatures: &b };
+        let gamma = Gamma {
+            offset: 1.0,
+            weights: &w,
+            curvatures: &b,
+        };
         for k in 1..100 {
             let eta = k as f64 / 100.0;
             let h = 1e-7;
@@ -183,7 +187,11 @@ mod tests {
     fn saturates_visibly_outside_the_range() {
         let b = [0.0, 3.0];
         let w = [1.0, 4.0];
-        let gamma = Gamma { offset: -1.0, weights: &w, curvatures: &b };
+        let gamma = Gamma {
+            offset: -1.0,
+            weights: &w,
+            curvatures: &b,
+        };
         // Γ(0) = -1, Γ(1) = -1 + 1 + 4/4 = 1.
         assert_eq!(gamma.upper(), 1.0);
         let below = gamma.inverse(-1.5);

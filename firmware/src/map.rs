@@ -37,7 +37,10 @@ impl<T: Scalar> TargetMap<'_, T> {
     /// `r = r_min + r_span · Γ⁻¹(v)` for a projection `v` already computed.
     pub fn estimate_from_projection(&self, v: T) -> Estimate<T> {
         let inverse = self.gamma.inverse(v);
-        Estimate { value: self.r_min + self.r_span * inverse.eta, saturation: inverse.saturation }
+        Estimate {
+            value: self.r_min + self.r_span * inverse.eta,
+            saturation: inverse.saturation,
+        }
     }
 
     /// `F(Z) = r_min + r_span · Γ⁻¹(Lᵀ Z)`.
@@ -55,11 +58,26 @@ mod tests {
         // Γ(η) = 2 + 4η  ⇒  η = (Lᵀ Z - 2) / 4, r = -1 + 3 η.
         let gains = [1.0f64, -0.5];
         let (w, b) = ([4.0], [0.0]);
-        let map = TargetMap { gains: &gains, gamma: Gamma { offset: 2.0, weights: &w, curvatures: &b }, r_min: -1.0, r_span: 3.0 };
+        let map = TargetMap {
+            gains: &gains,
+            gamma: Gamma {
+                offset: 2.0,
+                weights: &w,
+                curvatures: &b,
+            },
+            r_min: -1.0,
+            r_span: 3.0,
+        };
         let z = [4.0, 2.0]; // v = 3 ⇒ η = 0.25 ⇒ r = -0.25
         let estimate = map.estimate(&z);
         assert!((estimate.value + 0.25).abs() < 1e-14);
         assert_eq!(estimate.saturation, Saturation::Inside);
-        assert_eq!(map.estimate(&[100.0, 0.0]), Estimate { value: 2.0, saturation: Saturation::High });
+        assert_eq!(
+            map.estimate(&[100.0, 0.0]),
+            Estimate {
+                value: 2.0,
+                saturation: Saturation::High
+            }
+        );
     }
 }

@@ -54,12 +54,17 @@ impl DataSet {
 
     /// `n_E`, the number of windows.
     pub fn window_count(&self) -> usize {
-        self.runs.iter().map(|r| (r.states.len() + 1).saturating_sub(self.horizon)).sum()
+        self.runs
+            .iter()
+            .map(|r| (r.states.len() + 1).saturating_sub(self.horizon))
+            .sum()
     }
 
     /// `n_z = N (n_y + n_u)`.
     pub fn regressor_len(&self) -> usize {
-        self.runs.first().map_or(0, |r| self.horizon * (r.measurements[0].len() + r.inputs[0].len()))
+        self.runs
+            .first()
+            .map_or(0, |r| self.horizon * (r.measurements[0].len() + r.inputs[0].len()))
     }
 
     /// Writes `Z(k)` of `window` into `z` (cleared first).
@@ -88,9 +93,18 @@ pub fn learning_set(design: &Design) -> Result<DataSet, SpecError> {
     let grids: Vec<Vec<f64>> = design.learning.axes.iter().map(Axis::grid).collect();
     let mut runs = Vec::new();
     for x0 in cartesian(&grids) {
-        runs.push(simulate_run(design, &x0, design.learning.samples, &mut rng, "learning")?);
+        runs.push(simulate_run(
+            design,
+            &x0,
+            design.learning.samples,
+            &mut rng,
+            "learning",
+        )?);
     }
-    Ok(DataSet { runs, horizon: design.map.horizon })
+    Ok(DataSet {
+        runs,
+        horizon: design.map.horizon,
+    })
 }
 
 /// The validation set: `trajectories` runs from states drawn uniformly in the box, with their own
@@ -108,14 +122,29 @@ pub fn validation_set(design: &Design) -> Result<DataSet, SpecError> {
                 Axis::Fixed(value) => value,
             })
             .collect();
-        runs.push(simulate_run(design, &x0, design.validation.samples, &mut rng, "validation")?);
+        runs.push(simulate_run(
+            design,
+            &x0,
+            design.validation.samples,
+            &mut rng,
+            "validation",
+        )?);
     }
-    Ok(DataSet { runs, horizon: design.map.horizon })
+    Ok(DataSet {
+        runs,
+        horizon: design.map.horizon,
+    })
 }
 
 /// Simulates one run of `samples` samples from `x0`: draws its inputs, integrates, evaluates targets
 /// and adds output noise, all from `rng` in that order.
-pub fn simulate_run(design: &Design, x0: &[f64], samples: usize, rng: &mut ChaCha8Rng, set: &str) -> Result<Run, SpecError> {
+pub fn simulate_run(
+    design: &Design,
+    x0: &[f64],
+    samples: usize,
+    rng: &mut ChaCha8Rng,
+    set: &str,
+) -> Result<Run, SpecError> {
     let model = &design.model;
     let inputs = input_sequence(&design.learning.inputs, samples, rng);
     let states = Integrator::new(model, design.tau, design.substeps)
@@ -136,14 +165,20 @@ pub fn simulate_run(design: &Design, x0: &[f64], samples: usize, rng: &mut ChaCh
         if let Some(i) = y.iter().position(|v| !v.is_finite()) {
             return Err(design.error(
                 format!("model.outputs[{i}].expr"),
-                format!("output `{}` is {} at sample {k} of a {set} run from x0 = {x0:?} (x = {x:?})", model.outputs[i].name, y[i]),
+                format!(
+                    "output `{}` is {} at sample {k} of a {set} run from x0 = {x0:?} (x = {x:?})",
+                    model.outputs[i].name, y[i]
+                ),
                 "make the output expression finite over the state box, or shrink `learning.grid`",
             ));
         }
         if let Some(i) = r.iter().position(|v| !v.is_finite()) {
             return Err(design.error(
                 format!("targets[{i}].expr"),
-                format!("target `{}` is {} at sample {k} of a {set} run from x0 = {x0:?} (x = {x:?})", design.targets[i].name, r[i]),
+                format!(
+                    "target `{}` is {} at sample {k} of a {set} run from x0 = {x0:?} (x = {x:?})",
+                    design.targets[i].name, r[i]
+                ),
                 "make the target expression finite over the state box, or shrink `learning.grid`",
             ));
         }
@@ -153,7 +188,12 @@ pub fn simulate_run(design: &Design, x0: &[f64], samples: usize, rng: &mut ChaCh
         measurements.push(y);
         targets.push(r);
     }
-    Ok(Run { states, inputs, measurements, targets })
+    Ok(Run {
+        states,
+        inputs,
+        measurements,
+        targets,
+    })
 }
 
 fn blow_up_error(design: &Design, x0: &[f64], set: &str, e: BlowUp) -> SpecError {
@@ -171,7 +211,11 @@ fn input_sequence(profiles: &[InputProfile], samples: usize, rng: &mut ChaCha8Rn
         .map(|k| {
             for (value, p) in current.iter_mut().zip(profiles) {
                 if k % p.hold == 0 {
-                    *value = if p.min < p.max { rng.random_range(p.min..=p.max) } else { p.min };
+                    *value = if p.min < p.max {
+                        rng.random_range(p.min..=p.max)
+                    } else {
+                        p.min
+                    };
                 }
             }
             current.clone()

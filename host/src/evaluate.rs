@@ -41,7 +41,12 @@ pub fn evaluate(data: &DataSet, target: usize, fit: &Fit) -> Evaluation {
         saturated += usize::from(estimate.saturation.is_saturated());
     }
     let windows = map.count;
-    Evaluation { map: map.accuracy(), linear: linear.accuracy(), saturated_fraction: saturated as f64 / windows.max(1) as f64, windows }
+    Evaluation {
+        map: map.accuracy(),
+        linear: linear.accuracy(),
+        saturated_fraction: saturated as f64 / windows.max(1) as f64,
+        windows,
+    }
 }
 
 #[derive(Default)]
@@ -59,6 +64,9 @@ impl Sums {
     }
 
     fn accuracy(&self) -> Accuracy {
-        Accuracy { rmse: (self.squares / self.count.max(1) as f64).sqrt(), max_error: self.max }
+        Accuracy {
+            rmse: (self.squares / self.count.max(1) as f64).sqrt(),
+            max_error: self.max,
+        }
     }
 }

@@ -62,20 +62,29 @@ impl Expression {
     /// Parses `text` and binds each of its variables to its index in `scope`.
     pub fn compile(text: &str, scope: &[&str]) -> Result<Self, ExprError> {
         reject_minus_before_power(text)?;
-        let flat = FlatEx::<f64>::parse(text)
-            .map_err(|e| ExprError::Syntax { text: text.to_owned(), message: e.to_string() })?;
+        let flat = FlatEx::<f64>::parse(text).map_err(|e| ExprError::Syntax {
+            text: text.to_owned(),
+            message: e.to_string(),
+        })?;
         let slots = flat
             .var_names()
             .iter()
             .map(|name| {
-                scope.iter().position(|s| s == name).ok_or_else(|| ExprError::UnknownVariable {
-                    text: text.to_owned(),
-                    name: name.clone(),
-                    known: scope.join(", "),
-                })
+                scope
+                    .iter()
+                    .position(|s| s == name)
+                    .ok_or_else(|| ExprError::UnknownVariable {
+                        text: text.to_owned(),
+                        name: name.clone(),
+                        known: scope.join(", "),
+                    })
             })
             .collect::<Result<_, _>>()?;
-        Ok(Expression { text: text.to_owned(), flat, slots })
+        Ok(Expression {
+            text: text.to_owned(),
+            flat,
+            slots,
+        })
     }
 
     /// The source text.
@@ -190,7 +199,10 @@ fn reject_minus_before_power(text: &str) -> Result<(), ExprError> {
                 Token::Operand(name) => name.to_owned(),
                 _ => "(…)".to_owned(),
             };
-            return Err(ExprError::AmbiguousMinus { text: text.to_owned(), operand });
+            return Err(ExprError::AmbiguousMinus {
+                text: text.to_owned(),
+                operand,
+            });
         }
     }
     Ok(())
@@ -212,16 +224,30 @@ mod tests {
             Expression::compile("x1 + x3", &["x1", "x2"]),
             Err(ExprError::UnknownVariable { name, .. }) if name == "x3"
         ));
-        assert!(matches!(Expression::compile("x1 + * (", &["x1"]), Err(ExprError::Syntax { .. })));
+        assert!(matches!(
+            Expression::compile("x1 + * (", &["x1"]),
+            Err(ExprError::Syntax { .. })
+        ));
     }
 
     #[test]
     fn minus_before_a_power_is_refused_where_exmex_would_misread_it() {
         for text in ["-x^2", "1 + -x^2", "2*-x^2", "-(x+1)^2", "-sin(x)^2", "(-x^3)"] {
-            assert!(matches!(Expression::compile(text, &["x"]), Err(ExprError::AmbiguousMinus { .. })), "{text}");
+            assert!(
+                matches!(Expression::compile(text, &["x"]), Err(ExprError::AmbiguousMinus { .. })),
+                "{text}"
+            );
         }
         // What exmex reads as meant, checked by value at x = 3.
-        for (text, value) in [("-(x^2)", -9.0), ("0 - x^2", -9.0), ("1 - x^2", -8.0), ("x^-2", 1.0 / 9.0), ("-x", -3.0), ("0.2*x^2", 1.8), ("-x*2", -6.0)] {
+        for (text, value) in [
+            ("-(x^2)", -9.0),
+            ("0 - x^2", -9.0),
+            ("1 - x^2", -8.0),
+            ("x^-2", 1.0 / 9.0),
+            ("-x", -3.0),
+            ("0.2*x^2", 1.8),
+            ("-x*2", -6.0),
+        ] {
             let e = Expression::compile(text, &["x"]).unwrap();
             assert!((e.eval(&[3.0]) - value).abs() < 1e-12, "{text}: {}", e.eval(&[3.0]));
         }

@@ -31,6 +31,9 @@
 //!
 //! The linear floor `r ≈ Lᵀ Z + c` comes from the same `R` (its leading block and the `r` column).
 
+// `!(x > y)` is deliberate throughout: a NaN must fail every check.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use firmware::basis;
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
@@ -147,7 +150,9 @@ pub struct Fit {
 /// Chebyshev–Lobatto points on `[0, 1]`: clustered at both ends, where the steepest basis functions
 /// bend (a uniform grid lets `Γ` turn non-monotone between points once `β ≥ 2`).
 pub fn monotonicity_grid(points: usize) -> Vec<f64> {
-    (0..points).map(|q| 0.5 * (1.0 - (std::f64::consts::PI * q as f64 / (points - 1) as f64).cos())).collect()
+    (0..points)
+        .map(|q| 0.5 * (1.0 - (std::f64::consts::PI * q as f64 / (points - 1) as f64).cos()))
+        .collect()
 }
 
 /// The grid `Γ` is checked on after the solve: 20 001 uniform points, 4 001 Chebyshev points and
@@ -181,7 +186,10 @@ pub fn check_strictly_increasing(gamma: &firmware::Gamma<'_, f64>) -> Result<f64
         let eta = i as f64 / 20_000.0;
         let value = gamma.value(eta);
         if !(value > previous) {
-            return Err(FitError::NotMonotone { eta, slope: gamma.slope(eta) });
+            return Err(FitError::NotMonotone {
+                eta,
+                slope: gamma.slope(eta),
+            });
         }
         previous = value;
     }
@@ -215,7 +223,10 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
     if !(r_max - r_min > 1e-12 * r_max.abs().max(r_min.abs()).max(1e-300)) {
         return Err(FitError::ConstantTarget { value: r_min });
     }
-    let scales: Vec<f64> = sum_squares.iter().map(|s| if *s > 0.0 { (s / n_e as f64).sqrt() } else { 1.0 }).collect();
+    let scales: Vec<f64> = sum_squares
+        .iter()
+        .map(|s| if *s > 0.0 { (s / n_e as f64).sqrt() } else { 1.0 })
+        .collect();
 
     // Pass 2: R of [Z̃ | 1 | B(η; b_j) | r].
     let columns = n_z + 1 + m + 1;
@@ -239,8 +250,14 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
 
     // The linear floor: least squares of r on [Z̃ | 1].
     let lead = n_z + 1;
-    let coefficients = solve_upper(&r_factor.view((0, 0), (lead, lead)).into_owned(), &r_factor.view((0, columns - 1), (lead, 1)).column(0).into_owned())?;
-    let linear = LinearMap { gains: (0..n_z).map(|c| coefficients[c] / scales[c]).collect(), intercept: coefficients[n_z] };
+    let coefficients = solve_upper(
+        &r_factor.view((0, 0), (lead, lead)).into_owned(),
+        &r_factor.view((0, columns - 1), (lead, 1)).column(0).into_owned(),
+    )?;
+    let linear = LinearMap {
+        gains: (0..n_z).map(|c| coefficients[c] / scales[c]).collect(),
+        intercept: coefficients[n_z],
+    };
 
     // Partition: L-columns and μ-columns.
     let with_constant = settings.normalisation == Normalisation::Paper;
@@ -251,49 +268,88 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
     let r_mumu = r_factor.view((mu_start, mu_start), (mu_count, mu_count)).into_owned() / (n_e as f64).sqrt();
     // Slope and integral of each μ-column (the constant has slope 0 and integral 1).
     let slope_row = |eta: f64| -> Vec<f64> {
-        with_constant.then_some(0.0).into_iter().chain(curvatures.iter().map(|&b| basis::slope(b, eta))).collect()
+        with_constant
+            .then_some(0.0)
+            .into_iter()
+            .chain(curvatures.iter().map(|&b| basis::slope(b, eta)))
+            .collect()
     };
-    let integral_row: Vec<f64> = with_constant.then_some(1.0).into_iter().chain(curvatures.iter().map(|&b| basis::integral(b))).collect();
+    let integral_row: Vec<f64> = with_constant
+        .then_some(1.0)
+        .into_iter()
+        .chain(curvatures.iter().map(|&b| basis::integral(b)))
+        .collect();
 
     // Whitening.
     let svd = r_mumu.clone().svd(false, true);
     let v = svd.v_t.as_ref().expect("V requested").transpose();
     let s_max = svd.singular_values.max();
     let s_min = svd.singular_values.min();
-    let sigma: Vec<f64> = svd.singular_values.iter().map(|&s| s.max(WHITENING_FLOOR * s_max)).collect();
+    let sigma: Vec<f64> = svd
+        .singular_values
+        .iter()
+        .map(|&s| s.max(WHITENING_FLOOR * s_max))
+        .collect();
     let transform = &v * DMatrix::from_diagonal(&DVector::from_iterator(mu_count, sigma.iter().map(|s| 1.0 / s)));
-    let hessian = DMatrix::from_diagonal(&DVector::from_iterator(mu_count, svd.singular_values.iter().zip(&sigma).map(|(s, g)| 2.0 * (s / g).powi(2))));
+    let hessian = DMatrix::from_diagonal(&DVector::from_iterator(
+        mu_count,
+        svd.singular_values
+            .iter()
+            .zip(&sigma)
+            .map(|(s, g)| 2.0 * (s / g).powi(2)),
+    ));
 
     // Solve, refining the monotonicity grid where the fine check finds Γ' < ε.
     // The QP is solved at unit scale: Clarabel's tolerances are partly absolute, and with ε = 0.01 a
     // whole objective of 3e-7 would sit near them. `(μ, L)` scale with `scale`: exactly for `intercept`
     // (homogeneous), and for `paper` because ε and the equality's right-hand side are both divided by it.
     let mean = 0.5 * (r_min + r_max);
-    let scale = if with_constant { settings.epsilon.max(mean.abs()) } else { settings.epsilon };
+    let scale = if with_constant {
+        settings.epsilon.max(mean.abs())
+    } else {
+        settings.epsilon
+    };
     let epsilon = settings.epsilon / scale;
     let mut grid = monotonicity_grid(settings.monotonicity_grid);
     let check = check_grid();
     let (mut iterations, mut solve_time, mut rounds) = (0, 0.0, 0);
     let (solution, row_norms, equality_norm, mu) = loop {
-        let rows: Vec<DVector<f64>> = grid.iter().map(|&eta| transform.tr_mul(&DVector::from_vec(slope_row(eta)))).collect();
+        let rows: Vec<DVector<f64>> = grid
+            .iter()
+            .map(|&eta| transform.tr_mul(&DVector::from_vec(slope_row(eta))))
+            .collect();
         let row_norms: Vec<f64> = rows.iter().map(|r| r.norm()).collect();
         let g_matrix = DMatrix::from_fn(rows.len(), mu_count, |i, j| rows[i][j] / row_norms[i]);
         let g = row_norms.iter().map(|n| epsilon / n).collect();
         let (e_matrix, e, equality_norm) = if with_constant {
             let row = transform.tr_mul(&DVector::from_column_slice(&integral_row));
             let norm = row.norm();
-            (DMatrix::from_row_slice(1, mu_count, (row / norm).as_slice()), vec![mean / scale / norm], norm)
+            (
+                DMatrix::from_row_slice(1, mu_count, (row / norm).as_slice()),
+                vec![mean / scale / norm],
+                norm,
+            )
         } else {
             (DMatrix::zeros(0, mu_count), vec![], 1.0)
         };
-        let problem = Problem { p: hessian.clone(), q: vec![0.0; mu_count], e_matrix, e, g_matrix, g };
+        let problem = Problem {
+            p: hessian.clone(),
+            q: vec![0.0; mu_count],
+            e_matrix,
+            e,
+            g_matrix,
+            g,
+        };
         let solution = qp::solve(&problem)?;
         iterations += solution.iterations;
         solve_time += solution.solve_time;
         let mu = &transform * DVector::from_column_slice(&solution.x);
         let slope_at = |eta: f64| slope_row(eta).iter().zip(mu.iter()).map(|(d, m)| d * m).sum::<f64>();
-        let mut violations: Vec<(f64, f64)> =
-            check.iter().map(|&eta| (eta, slope_at(eta))).filter(|&(_, s)| s < epsilon * (1.0 - 1e-3)).collect();
+        let mut violations: Vec<(f64, f64)> = check
+            .iter()
+            .map(|&eta| (eta, slope_at(eta)))
+            .filter(|&(_, s)| s < epsilon * (1.0 - 1e-3))
+            .collect();
         if violations.is_empty() || rounds == REFINEMENT_ROUNDS {
             break (solution, row_norms, equality_norm, mu);
         }
@@ -302,7 +358,10 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
         rounds += 1;
     };
     let slope_at = |eta: f64| slope_row(eta).iter().zip(mu.iter()).map(|(d, m)| d * m).sum::<f64>();
-    let active_constraints = grid.iter().filter(|&&eta| slope_at(eta) - epsilon <= ACTIVE_TOLERANCE * epsilon).count();
+    let active_constraints = grid
+        .iter()
+        .filter(|&&eta| slope_at(eta) - epsilon <= ACTIVE_TOLERANCE * epsilon)
+        .count();
     let objective: f64 = (&r_mumu * &mu).norm_squared();
     let certificate = Certificate {
         epsilon,
@@ -320,12 +379,25 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
     let intercept = if with_constant { 0.0 } else { scale * l_scaled[n_z] };
     let mu_constant = if with_constant { scale * mu[0] } else { 0.0 };
     let mu_basis = mu.iter().skip(usize::from(with_constant)).map(|m| scale * m).collect();
-    let map = FittedMap::new(target_name.to_owned(), settings.normalisation, gains, intercept, mu_constant, mu_basis, curvatures, (r_min, r_max));
+    let map = FittedMap::new(
+        target_name.to_owned(),
+        settings.normalisation,
+        gains,
+        intercept,
+        mu_constant,
+        mu_basis,
+        curvatures,
+        (r_min, r_max),
+    );
 
     let gamma = map.gamma();
     let min_slope = check_strictly_increasing(&gamma)?;
     let (g0, g1) = (gamma.value(0.0), gamma.value(1.0));
-    let nonlinearity = check.iter().map(|&eta| (gamma.value(eta) - g0 - eta * (g1 - g0)).abs()).fold(0.0, f64::max) / (g1 - g0);
+    let nonlinearity = check
+        .iter()
+        .map(|&eta| (gamma.value(eta) - g0 - eta * (g1 - g0)).abs())
+        .fold(0.0, f64::max)
+        / (g1 - g0);
     let diagnostics = Diagnostics {
         status: solution.status.clone(),
         iterations,
@@ -339,7 +411,12 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
         reduced_condition: s_max / s_min,
         objective_over_epsilon_squared: objective / (epsilon * epsilon),
     };
-    Ok(Fit { map, linear, diagnostics, certificate })
+    Ok(Fit {
+        map,
+        linear,
+        diagnostics,
+        certificate,
+    })
 }
 
 /// Solves `R x = b` for upper-triangular `R`, refusing a (numerically) singular one.
@@ -348,7 +425,8 @@ fn solve_upper(r: &DMatrix<f64>, b: &DVector<f64>) -> Result<DVector<f64>, FitEr
     if let Some(column) = r.diagonal().iter().position(|d| !(d.abs() > 1e-12 * largest)) {
         return Err(FitError::DependentRegressor { column });
     }
-    r.solve_upper_triangular(b).ok_or(FitError::DependentRegressor { column: 0 })
+    r.solve_upper_triangular(b)
+        .ok_or(FitError::DependentRegressor { column: 0 })
 }
 
 #[cfg(test)]
@@ -367,19 +445,37 @@ mod tests {
             measurements: samples.iter().map(|s| s.0.clone()).collect(),
             targets: samples.iter().map(|s| vec![s.1]).collect(),
         };
-        DataSet { runs: vec![run], horizon: 1 }
+        DataSet {
+            runs: vec![run],
+            horizon: 1,
+        }
     }
 
     fn settings(normalisation: Normalisation, nm: usize, beta: f64, epsilon: f64) -> MapSettings {
-        MapSettings { horizon: 1, nm, beta, epsilon, normalisation, monotonicity_grid: 201 }
+        MapSettings {
+            horizon: 1,
+            nm,
+            beta,
+            epsilon,
+            normalisation,
+            monotonicity_grid: 201,
+        }
     }
 
     /// Regressors and targets of a known map r = 3 + 2 Γ⁻¹(Lᵀ Z), Γ from the same basis family.
-    fn synthetic(seed: u64, count: usize) -> (Vec<(Vec<f64>, f64)>, Vec<f64>, Vec<f64>) {
+    fn synthetic(seed: u64, count: usize) -> Vec<(Vec<f64>, f64)> {
         let curvatures: Vec<f64> = basis::paper_curvatures(3, 1.0).collect();
         let mu = [0.2, 1.5, 0.1, 0.8];
-        let weights: Vec<f64> = mu.iter().zip(&curvatures).map(|(&m, &b)| firmware::gamma::weight(m, b)).collect();
-        let gamma = firmware::Gamma { offset: 0.0, weights: &weights, curvatures: &curvatures };
+        let weights: Vec<f64> = mu
+            .iter()
+            .zip(&curvatures)
+            .map(|(&m, &b)| firmware::gamma::weight(m, b))
+            .collect();
+        let gamma = firmware::Gamma {
+            offset: 0.0,
+            weights: &weights,
+            curvatures: &curvatures,
+        };
         let gains = [0.7, -0.4, 0.25];
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let mut samples = Vec::new();
@@ -397,32 +493,56 @@ mod tests {
                 samples.push((z, 3.0 + 2.0 * inverse.eta));
             }
         }
-        (samples, gains.to_vec(), mu.to_vec())
+        samples
     }
 
     #[test]
     fn recovers_a_map_of_its_own_class() {
-        let (learning, _, _) = synthetic(1, 600);
-        let fit = fit(&pairs(&learning), 0, "r", &settings(Normalisation::Intercept, 3, 1.0, 0.01)).unwrap();
-        let (fresh, _, _) = synthetic(2, 300);
+        let learning = synthetic(1, 600);
+        let fit = fit(
+            &pairs(&learning),
+            0,
+            "r",
+            &settings(Normalisation::Intercept, 3, 1.0, 0.01),
+        )
+        .unwrap();
+        let fresh = synthetic(2, 300);
         for (z, r) in fresh.iter().skip(2) {
             let estimate = fit.map.estimate(z);
-            assert!((estimate.value - r).abs() < 1e-5, "estimate {} vs truth {r}", estimate.value);
+            assert!(
+                (estimate.value - r).abs() < 1e-5,
+                "estimate {} vs truth {r}",
+                estimate.value
+            );
         }
         // The linear floor cannot: Γ is far from a line.
-        let worst_linear = fresh.iter().map(|(z, r)| (fit.linear.estimate(z) - r).abs()).fold(0.0, f64::max);
+        let worst_linear = fresh
+            .iter()
+            .map(|(z, r)| (fit.linear.estimate(z) - r).abs())
+            .fold(0.0, f64::max);
         assert!(worst_linear > 1e-2, "{worst_linear}");
     }
 
     #[test]
     fn linear_floor_matches_an_independent_least_squares_solve() {
-        let (samples, _, _) = synthetic(3, 400);
-        let fit = fit(&pairs(&samples), 0, "r", &settings(Normalisation::Intercept, 3, 1.0, 0.01)).unwrap();
+        let samples = synthetic(3, 400);
+        let fit = fit(
+            &pairs(&samples),
+            0,
+            "r",
+            &settings(Normalisation::Intercept, 3, 1.0, 0.01),
+        )
+        .unwrap();
         let a = DMatrix::from_fn(samples.len(), 4, |i, j| if j < 3 { samples[i].0[j] } else { 1.0 });
         let b = DVector::from_iterator(samples.len(), samples.iter().map(|s| s.1));
         let x = a.clone().svd(true, true).solve(&b, 1e-14).unwrap();
         for j in 0..3 {
-            assert!((fit.linear.gains[j] - x[j]).abs() < 1e-10 * x.amax(), "{} vs {}", fit.linear.gains[j], x[j]);
+            assert!(
+                (fit.linear.gains[j] - x[j]).abs() < 1e-10 * x.amax(),
+                "{} vs {}",
+                fit.linear.gains[j],
+                x[j]
+            );
         }
         assert!((fit.linear.intercept - x[3]).abs() < 1e-10 * x.amax());
     }
@@ -451,7 +571,12 @@ mod tests {
                 z_matrix[(i, n_z)] = 1.0;
             }
             let eta = (data.target(w, 0) - r_min) / (r_max - r_min);
-            let values: Vec<f64> = c.with_constant.then_some(1.0).into_iter().chain(curvatures.iter().map(|&b| basis::value(b, eta))).collect();
+            let values: Vec<f64> = c
+                .with_constant
+                .then_some(1.0)
+                .into_iter()
+                .chain(curvatures.iter().map(|&b| basis::value(b, eta)))
+                .collect();
             for j in 0..m {
                 b_matrix[(i, j)] = values[j];
             }
@@ -460,26 +585,44 @@ mod tests {
         let mu = DVector::from_column_slice(&c.mu);
         let gradient = 2.0 / n_e as f64 * projected.transpose() * (&projected * &mu);
         let slope_row = |eta: f64| -> DVector<f64> {
-            DVector::from_iterator(m, c.with_constant.then_some(0.0).into_iter().chain(curvatures.iter().map(|&b| basis::slope(b, eta))))
+            DVector::from_iterator(
+                m,
+                c.with_constant
+                    .then_some(0.0)
+                    .into_iter()
+                    .chain(curvatures.iter().map(|&b| basis::slope(b, eta))),
+            )
         };
         let mut multiplier_term = DVector::zeros(m);
         let mut complementarity: f64 = 0.0;
         for (&eta, &lambda) in c.grid.iter().zip(&c.lambda) {
             let row = slope_row(eta);
             let slack = row.dot(&mu) - c.epsilon;
-            assert!(slack >= -1e-6 * c.epsilon, "constraint at η = {eta} violated: slack {slack}");
+            assert!(
+                slack >= -1e-6 * c.epsilon,
+                "constraint at η = {eta} violated: slack {slack}"
+            );
             assert!(lambda >= -1e-9, "negative multiplier {lambda}");
             complementarity = complementarity.max((lambda * slack).abs());
             multiplier_term += lambda * row;
         }
         if c.with_constant {
-            let integral = DVector::from_iterator(m, std::iter::once(1.0).chain(curvatures.iter().map(|&b| basis::integral(b))));
-            assert!((integral.dot(&mu) - c.mean).abs() < 1e-8 * (1.0 + c.mean.abs()), "equality violated");
+            let integral = DVector::from_iterator(
+                m,
+                std::iter::once(1.0).chain(curvatures.iter().map(|&b| basis::integral(b))),
+            );
+            assert!(
+                (integral.dot(&mu) - c.mean).abs() < 1e-8 * (1.0 + c.mean.abs()),
+                "equality violated"
+            );
             multiplier_term += c.nu.unwrap() * integral;
         }
         let residual = (&gradient - &multiplier_term).norm();
         let scale = gradient.norm().max(multiplier_term.norm());
-        assert!(residual <= 1e-5 * scale, "stationarity residual {residual} vs gradient {scale}");
+        assert!(
+            residual <= 1e-5 * scale,
+            "stationarity residual {residual} vs gradient {scale}"
+        );
         assert!(complementarity <= 1e-6 * scale, "complementarity {complementarity}");
     }
 
@@ -539,15 +682,33 @@ mod tests {
     fn a_decreasing_gamma_is_refused() {
         // Γ(η) = 2η - 3B(η; 3) has Γ'(0) = 2 - 12 < 0.
         let (w, b) = ([2.0, -12.0], [0.0, 3.0]);
-        let gamma = firmware::Gamma { offset: 0.0, weights: &w, curvatures: &b };
-        assert!(matches!(check_strictly_increasing(&gamma), Err(FitError::NotMonotone { .. })));
+        let gamma = firmware::Gamma {
+            offset: 0.0,
+            weights: &w,
+            curvatures: &b,
+        };
+        assert!(matches!(
+            check_strictly_increasing(&gamma),
+            Err(FitError::NotMonotone { .. })
+        ));
         // A dip that only a fine grid sees: slope negative on a sliver near η = 1 (b close to -1).
         let (w, b) = ([1.0, -1e-9], [0.0, 1e-5 - 1.0]);
-        let gamma = firmware::Gamma { offset: 0.0, weights: &w, curvatures: &b };
+        let gamma = firmware::Gamma {
+            offset: 0.0,
+            weights: &w,
+            curvatures: &b,
+        };
         assert!(gamma.slope(0.5) > 0.0);
-        assert!(matches!(check_strictly_increasing(&gamma), Err(FitError::NotMonotone { .. })));
+        assert!(matches!(
+            check_strictly_increasing(&gamma),
+            Err(FitError::NotMonotone { .. })
+        ));
         let (w, b) = ([1.0, 2.0], [0.0, 3.0]);
-        let gamma = firmware::Gamma { offset: 0.0, weights: &w, curvatures: &b };
+        let gamma = firmware::Gamma {
+            offset: 0.0,
+            weights: &w,
+            curvatures: &b,
+        };
         assert!(check_strictly_increasing(&gamma).is_ok());
     }
 
@@ -555,7 +716,13 @@ mod tests {
     fn constant_target_is_an_error() {
         let samples: Vec<(Vec<f64>, f64)> = (0..50).map(|i| (vec![i as f64, 1.0 / (1.0 + i as f64)], 2.0)).collect();
         assert_eq!(
-            fit(&pairs(&samples), 0, "r", &settings(Normalisation::Intercept, 3, 1.0, 0.01)).unwrap_err(),
+            fit(
+                &pairs(&samples),
+                0,
+                "r",
+                &settings(Normalisation::Intercept, 3, 1.0, 0.01)
+            )
+            .unwrap_err(),
             FitError::ConstantTarget { value: 2.0 }
         );
     }

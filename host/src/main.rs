@@ -31,7 +31,10 @@ enum Command {
 }
 
 fn workspace_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("host/ lives in the workspace").to_owned()
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("host/ lives in the workspace")
+        .to_owned()
 }
 
 fn default_report_folder() -> PathBuf {
@@ -75,7 +78,10 @@ fn gen(specs: Vec<PathBuf>, reports: &Path) -> ExitCode {
         }
     }
     if failures > 0 {
-        eprintln!("{failures} of {} design(s) failed; nothing was written for them", specs.len());
+        eprintln!(
+            "{failures} of {} design(s) failed; nothing was written for them",
+            specs.len()
+        );
         ExitCode::FAILURE
     } else {
         ExitCode::SUCCESS
@@ -95,7 +101,8 @@ fn gen_one(path: &Path, reports: &Path) -> Result<(), String> {
     progress.finish_and_clear();
     let report = report::report(&design, &result);
     let folder = reports.join(&design.name);
-    let written = report::write(&report, &folder).map_err(|e| format!("{}: cannot write the report: {e}", folder.display()))?;
+    let written =
+        report::write(&report, &folder).map_err(|e| format!("{}: cannot write the report: {e}", folder.display()))?;
     println!(
         "{} — {}\n  n_E = {} learning windows, {} validation windows, N = {}, n_m = {}, β = {}, normalisation {:?}\n",
         design.name,

@@ -46,18 +46,43 @@ impl FittedMap {
         curvatures: Vec<f64>,
         (r_min, r_max): (f64, f64),
     ) -> Self {
-        let weights = mu.iter().zip(&curvatures).map(|(&m, &b)| firmware::gamma::weight(m, b)).collect();
-        FittedMap { target, normalisation, gains, intercept, mu_constant, mu, curvatures, weights, offset: mu_constant - intercept, r_min, r_max }
+        let weights = mu
+            .iter()
+            .zip(&curvatures)
+            .map(|(&m, &b)| firmware::gamma::weight(m, b))
+            .collect();
+        FittedMap {
+            target,
+            normalisation,
+            gains,
+            intercept,
+            mu_constant,
+            mu,
+            curvatures,
+            weights,
+            offset: mu_constant - intercept,
+            r_min,
+            r_max,
+        }
     }
 
     /// `Γ` in the firmware's form (`Γ(η) - c`, so that it is compared with `Lᵀ Z` alone).
     pub fn gamma(&self) -> Gamma<'_, f64> {
-        Gamma { offset: self.offset, weights: &self.weights, curvatures: &self.curvatures }
+        Gamma {
+            offset: self.offset,
+            weights: &self.weights,
+            curvatures: &self.curvatures,
+        }
     }
 
     /// The firmware's view of this map, in `f64`.
     pub fn as_firmware(&self) -> TargetMap<'_, f64> {
-        TargetMap { gains: &self.gains, gamma: self.gamma(), r_min: self.r_min, r_span: self.r_max - self.r_min }
+        TargetMap {
+            gains: &self.gains,
+            gamma: self.gamma(),
+            r_min: self.r_min,
+            r_span: self.r_max - self.r_min,
+        }
     }
 
     /// The library estimate `F(Z)`.

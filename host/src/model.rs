@@ -73,9 +73,14 @@ impl Model {
         scope.extend(text.inputs.iter().map(String::as_str));
         let mut definitions = Vec::new();
         for (i, (name, expr)) in text.definitions.iter().enumerate() {
-            let expr = Expression::compile(expr, &scope)
-                .map_err(|error| ModelError { field: format!("model.definitions[{i}].expr"), error })?;
-            definitions.push(Definition { name: name.clone(), expr });
+            let expr = Expression::compile(expr, &scope).map_err(|error| ModelError {
+                field: format!("model.definitions[{i}].expr"),
+                error,
+            })?;
+            definitions.push(Definition {
+                name: name.clone(),
+                expr,
+            });
             scope.push(name);
         }
         let derivatives = text
@@ -83,8 +88,10 @@ impl Model {
             .iter()
             .zip(text.derivatives)
             .map(|(state, expr)| {
-                Expression::compile(expr, &scope)
-                    .map_err(|error| ModelError { field: format!("model.derivatives.{state}"), error })
+                Expression::compile(expr, &scope).map_err(|error| ModelError {
+                    field: format!("model.derivatives.{state}"),
+                    error,
+                })
             })
             .collect::<Result<_, _>>()?;
         let outputs = text
@@ -92,9 +99,15 @@ impl Model {
             .iter()
             .enumerate()
             .map(|(i, (name, expr, noise_variance))| {
-                let expr = Expression::compile(expr, &scope)
-                    .map_err(|error| ModelError { field: format!("model.outputs[{i}].expr"), error })?;
-                Ok(Output { name: name.clone(), expr, noise_variance: *noise_variance })
+                let expr = Expression::compile(expr, &scope).map_err(|error| ModelError {
+                    field: format!("model.outputs[{i}].expr"),
+                    error,
+                })?;
+                Ok(Output {
+                    name: name.clone(),
+                    expr,
+                    noise_variance: *noise_variance,
+                })
             })
             .collect::<Result<_, _>>()?;
         Ok(Model {

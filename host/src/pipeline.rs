@@ -58,7 +58,11 @@ pub fn run(design: &Design, progress: &ProgressBar) -> Result<DesignResult, Spec
         targets.push(result);
         progress.inc(1);
     }
-    Ok(DesignResult { learning, validation, targets })
+    Ok(DesignResult {
+        learning,
+        validation,
+        targets,
+    })
 }
 
 /// Turns a fit failure into a message about the spec field to change.

@@ -98,8 +98,15 @@ pub fn solve(problem: &Problem) -> Result<Solution, QpError> {
         .max_iter(500)
         .build()
         .map_err(|e| QpError::Setup(format!("{e:?}")))?;
-    let mut solver = DefaultSolver::new(&csc(&problem.p, true), &problem.q, &csc(&a, false), &b, &cones, settings)
-        .map_err(|e| QpError::Setup(format!("{e:?}")))?;
+    let mut solver = DefaultSolver::new(
+        &csc(&problem.p, true),
+        &problem.q,
+        &csc(&a, false),
+        &b,
+        &cones,
+        settings,
+    )
+    .map_err(|e| QpError::Setup(format!("{e:?}")))?;
     solver.solve();
     let s = &solver.solution;
     let status = format!("{:?}", s.status);

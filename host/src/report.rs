@@ -86,7 +86,11 @@ pub struct LinearReport {
 
 /// Assembles the report of a run.
 pub fn report<'a>(design: &'a Design, result: &'a DesignResult) -> Report<'a> {
-    let summary = |set: &crate::data::DataSet, seed| SetSummary { runs: set.runs.len(), windows: set.window_count(), seed };
+    let summary = |set: &crate::data::DataSet, seed| SetSummary {
+        runs: set.runs.len(),
+        windows: set.window_count(),
+        seed,
+    };
     Report {
         design: &design.name,
         description: &design.description,
@@ -160,8 +164,18 @@ pub fn markdown(report: &Report<'_>) -> String {
         s,
         "Spec `{}`. τ = {}, N = {}, n_m = {}, β = {}, ε = {}, normalisation `{:?}`, n_z = {}. \
          Learning: {} runs, n_E = {} windows. Validation: {} fresh runs, {} windows.\n",
-        report.spec, report.tau, m.horizon, m.nm, m.beta, m.epsilon, m.normalisation, report.regressor_len,
-        report.learning.runs, report.learning.windows, report.validation.runs, report.validation.windows
+        report.spec,
+        report.tau,
+        m.horizon,
+        m.nm,
+        m.beta,
+        m.epsilon,
+        m.normalisation,
+        report.regressor_len,
+        report.learning.runs,
+        report.learning.windows,
+        report.validation.runs,
+        report.validation.windows
     );
     s.push_str(&table(report));
     s.push_str(
@@ -189,7 +203,9 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let mut temporary = path.as_os_str().to_owned();
     temporary.push(format!(".tmp{}", std::process::id()));
     let temporary = PathBuf::from(temporary);
-    std::fs::write(&temporary, bytes).and_then(|()| std::fs::rename(&temporary, path)).inspect_err(|_| {
-        let _ = std::fs::remove_file(&temporary);
-    })
+    std::fs::write(&temporary, bytes)
+        .and_then(|()| std::fs::rename(&temporary, path))
+        .inspect_err(|_| {
+            let _ = std::fs::remove_file(&temporary);
+        })
 }

@@ -69,7 +69,11 @@ impl<'a> Integrator<'a> {
         let mut states = Vec::with_capacity(inputs.len());
         for (k, u) in inputs.iter().enumerate() {
             if x.iter().any(|v| !v.is_finite()) {
-                return Err(BlowUp { sample: k, time: k as f64 * self.step * self.substeps as f64, state: x });
+                return Err(BlowUp {
+                    sample: k,
+                    time: k as f64 * self.step * self.substeps as f64,
+                    state: x,
+                });
             }
             states.push(x.clone());
             if k + 1 < inputs.len() {
@@ -107,7 +111,10 @@ mod tests {
         let states = integrator.run(&[1.0, 0.0], &vec![vec![]; 101]).unwrap();
         for (k, x) in states.iter().enumerate() {
             let t = k as f64 * 0.1;
-            assert!((x[0] - t.cos()).abs() < 1e-9 && (x[1] + t.sin()).abs() < 1e-9, "t={t}: {x:?}");
+            assert!(
+                (x[0] - t.cos()).abs() < 1e-9 && (x[1] + t.sin()).abs() < 1e-9,
+                "t={t}: {x:?}"
+            );
         }
         // Halving the step divides the error at t = 10 by about 2⁴.
         let error = |substeps| {
@@ -134,7 +141,9 @@ mod tests {
     fn finite_time_blow_up_is_reported_with_its_sample() {
         // ẋ = x², x(0) = 1 ⇒ x(t) = 1/(1 - t): infinite at t = 1.
         let m = model(&["x1^2"]);
-        let err = Integrator::new(&m, 0.1, 10).run(&[1.0], &vec![vec![]; 100]).unwrap_err();
+        let err = Integrator::new(&m, 0.1, 10)
+            .run(&[1.0], &vec![vec![]; 100])
+            .unwrap_err();
         assert!((9..=40).contains(&err.sample), "{err}");
     }
 }

@@ -58,9 +58,9 @@ impl Axis {
     /// The grid values.
     pub fn grid(&self) -> Vec<f64> {
         match *self {
-            Axis::Range { min, max, points } => {
-                (0..points).map(|i| min + (max - min) * i as f64 / (points - 1) as f64).collect()
-            }
+            Axis::Range { min, max, points } => (0..points)
+                .map(|i| min + (max - min) * i as f64 / (points - 1) as f64)
+                .collect(),
             Axis::Fixed(value) => vec![value],
         }
     }
@@ -155,7 +155,12 @@ pub struct Design {
 impl Design {
     /// An error about `field` of this design's spec.
     pub fn error(&self, field: impl Into<String>, problem: impl Into<String>, fix: impl Into<String>) -> SpecError {
-        SpecError { file: self.file.display().to_string(), field: field.into(), problem: problem.into(), fix: fix.into() }
+        SpecError {
+            file: self.file.display().to_string(),
+            field: field.into(),
+            problem: problem.into(),
+            fix: fix.into(),
+        }
     }
 }
 
@@ -294,7 +299,11 @@ pub fn parse(path: &Path, text: &str) -> Result<Design, SpecError> {
         problem: e.message().trim().to_owned(),
         fix: "correct the TOML at that line; see host/specs/vanderpol.toml for a complete example".into(),
     })?;
-    Validator { file, path: path.to_owned() }.design(raw)
+    Validator {
+        file,
+        path: path.to_owned(),
+    }
+    .design(raw)
 }
 
 struct Validator {
@@ -304,7 +313,12 @@ struct Validator {
 
 impl Validator {
     fn err(&self, field: impl Into<String>, problem: impl Into<String>, fix: impl Into<String>) -> SpecError {
-        SpecError { file: self.file.clone(), field: field.into(), problem: problem.into(), fix: fix.into() }
+        SpecError {
+            file: self.file.clone(),
+            field: field.into(),
+            problem: problem.into(),
+            fix: fix.into(),
+        }
     }
 
     fn identifier(&self, field: &str, name: &str) -> Result<(), SpecError> {
@@ -314,7 +328,11 @@ impl Validator {
         if valid {
             Ok(())
         } else {
-            Err(self.err(field, format!("`{name}` is not a valid name"), "use letters, digits and `_`, starting with a letter"))
+            Err(self.err(
+                field,
+                format!("`{name}` is not a valid name"),
+                "use letters, digits and `_`, starting with a letter",
+            ))
         }
     }
 
@@ -322,20 +340,35 @@ impl Validator {
         if value.is_finite() && value > 0.0 {
             Ok(value)
         } else {
-            Err(self.err(field, format!("{what} must be a finite number > 0, got {value}"), format!("set `{field}` to a positive value")))
+            Err(self.err(
+                field,
+                format!("{what} must be a finite number > 0, got {value}"),
+                format!("set `{field}` to a positive value"),
+            ))
         }
     }
 
     fn design(&self, raw: RawSpec) -> Result<Design, SpecError> {
         let name_ok = raw.name.chars().next().is_some_and(|c| c.is_ascii_lowercase())
-            && raw.name.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
+            && raw
+                .name
+                .chars()
+                .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
         if !name_ok {
-            return Err(self.err("name", format!("`{}` is not a lower-case identifier", raw.name), "use lower-case letters, digits and `_`, starting with a letter (it names generated files)"));
+            return Err(self.err(
+                "name",
+                format!("`{}` is not a lower-case identifier", raw.name),
+                "use lower-case letters, digits and `_`, starting with a letter (it names generated files)",
+            ));
         }
         let model = self.model(&raw.model)?;
         let tau = self.positive("sampling.tau", raw.sampling.tau, "the sample period τ")?;
         if raw.sampling.substeps == 0 {
-            return Err(self.err("sampling.substeps", "RK4 needs at least one step per sample", "set `sampling.substeps` to 1 or more (10 is usual)"));
+            return Err(self.err(
+                "sampling.substeps",
+                "RK4 needs at least one step per sample",
+                "set `sampling.substeps` to 1 or more (10 is usual)",
+            ));
         }
         let map = self.map(&raw.map)?;
         let learning = self.learning(&raw.learning, &model, map.horizon)?;
@@ -357,16 +390,28 @@ impl Validator {
 
     fn model(&self, raw: &RawModel) -> Result<Model, SpecError> {
         if raw.states.is_empty() {
-            return Err(self.err("model.states", "the model has no state", "list the state names, e.g. `states = [\"x1\", \"x2\"]`"));
+            return Err(self.err(
+                "model.states",
+                "the model has no state",
+                "list the state names, e.g. `states = [\"x1\", \"x2\"]`",
+            ));
         }
         if raw.outputs.is_empty() {
-            return Err(self.err("model.outputs", "the model has no measured output", "add a `[[model.outputs]]` table with `name`, `expr` and `noise_variance`"));
+            return Err(self.err(
+                "model.outputs",
+                "the model has no measured output",
+                "add a `[[model.outputs]]` table with `name`, `expr` and `noise_variance`",
+            ));
         }
         let mut seen: Vec<(String, String)> = Vec::new();
         let mut declare = |field: String, name: &str| -> Result<(), SpecError> {
             self.identifier(&field, name)?;
             if let Some((_, first)) = seen.iter().find(|(n, _)| *n == name) {
-                return Err(self.err(field, format!("`{name}` is already declared at `{first}`"), "give every state, input, parameter, definition and output its own name"));
+                return Err(self.err(
+                    field,
+                    format!("`{name}` is already declared at `{first}`"),
+                    "give every state, input, parameter, definition and output its own name",
+                ));
             }
             seen.push((name.to_owned(), field));
             Ok(())
@@ -380,7 +425,11 @@ impl Validator {
         for (name, value) in &raw.parameters {
             declare(format!("model.parameters.{name}"), name)?;
             if !value.is_finite() {
-                return Err(self.err(format!("model.parameters.{name}"), format!("value {value} is not finite"), "give a finite number"));
+                return Err(self.err(
+                    format!("model.parameters.{name}"),
+                    format!("value {value} is not finite"),
+                    "give a finite number",
+                ));
             }
         }
         for (i, d) in raw.definitions.iter().enumerate() {
@@ -390,24 +439,47 @@ impl Validator {
             declare(format!("model.outputs[{i}].name"), &o.name)?;
             let field = format!("model.outputs[{i}].noise_variance");
             if !(o.noise_variance.is_finite() && o.noise_variance >= 0.0) {
-                return Err(self.err(field, format!("a variance must be finite and ≥ 0, got {}", o.noise_variance), "give the variance of the measurement noise (0 for none)"));
+                return Err(self.err(
+                    field,
+                    format!("a variance must be finite and ≥ 0, got {}", o.noise_variance),
+                    "give the variance of the measurement noise (0 for none)",
+                ));
             }
         }
         for key in raw.derivatives.keys() {
             if !raw.states.contains(key) {
-                return Err(self.err(format!("model.derivatives.{key}"), format!("`{key}` is not a state"), format!("give one derivative per state of `model.states` ({})", raw.states.join(", "))));
+                return Err(self.err(
+                    format!("model.derivatives.{key}"),
+                    format!("`{key}` is not a state"),
+                    format!(
+                        "give one derivative per state of `model.states` ({})",
+                        raw.states.join(", ")
+                    ),
+                ));
             }
         }
         let mut derivatives = Vec::new();
         for state in &raw.states {
             let text = raw.derivatives.get(state).ok_or_else(|| {
-                self.err(format!("model.derivatives.{state}"), format!("no derivative for state `{state}`"), format!("add `{state} = \"…\"` (dx/dt) under `[model.derivatives]`"))
+                self.err(
+                    format!("model.derivatives.{state}"),
+                    format!("no derivative for state `{state}`"),
+                    format!("add `{state} = \"…\"` (dx/dt) under `[model.derivatives]`"),
+                )
             })?;
             derivatives.push(text.clone());
         }
         let parameters: Vec<(String, f64)> = raw.parameters.iter().map(|(k, v)| (k.clone(), *v)).collect();
-        let definitions: Vec<(String, String)> = raw.definitions.iter().map(|d| (d.name.clone(), d.expr.clone())).collect();
-        let outputs: Vec<(String, String, f64)> = raw.outputs.iter().map(|o| (o.name.clone(), o.expr.clone(), o.noise_variance)).collect();
+        let definitions: Vec<(String, String)> = raw
+            .definitions
+            .iter()
+            .map(|d| (d.name.clone(), d.expr.clone()))
+            .collect();
+        let outputs: Vec<(String, String, f64)> = raw
+            .outputs
+            .iter()
+            .map(|o| (o.name.clone(), o.expr.clone(), o.noise_variance))
+            .collect();
         Model::compile(&ModelText {
             states: &raw.states,
             inputs: &raw.inputs,
@@ -421,29 +493,66 @@ impl Validator {
 
     fn map(&self, raw: &RawMap) -> Result<MapSettings, SpecError> {
         if raw.horizon == 0 {
-            return Err(self.err("map.horizon", "the horizon N must be at least 1", "set `map.horizon` to the number of past measurements to use (the paper uses 10 and 3)"));
+            return Err(self.err(
+                "map.horizon",
+                "the horizon N must be at least 1",
+                "set `map.horizon` to the number of past measurements to use (the paper uses 10 and 3)",
+            ));
         }
         if raw.nm == 0 {
             return Err(self.err("map.nm", "n_m must be at least 1", "set `map.nm` (the paper uses 5)"));
         }
         let beta = self.positive("map.beta", raw.beta, "β")?;
         if beta * (raw.nm as f64 - 1.0) > 30.0 {
-            return Err(self.err("map.beta", format!("β·(n_m - 1) = {} makes basis curvatures up to e^{:.0}: the basis degenerates to steps", beta * (raw.nm as f64 - 1.0), beta * (raw.nm as f64 - 1.0)), "keep β·(n_m - 1) ≤ 30 (β of 0.5 to 3 is usual)"));
+            return Err(self.err(
+                "map.beta",
+                format!(
+                    "β·(n_m - 1) = {} makes basis curvatures up to e^{:.0}: the basis degenerates to steps",
+                    beta * (raw.nm as f64 - 1.0),
+                    beta * (raw.nm as f64 - 1.0)
+                ),
+                "keep β·(n_m - 1) ≤ 30 (β of 0.5 to 3 is usual)",
+            ));
         }
         let epsilon = self.positive("map.epsilon", raw.epsilon, "ε")?;
         if raw.monotonicity_grid < 3 {
-            return Err(self.err("map.monotonicity_grid", format!("{} points cannot constrain the slope of Γ on [0, 1]", raw.monotonicity_grid), "use 201 or more points"));
+            return Err(self.err(
+                "map.monotonicity_grid",
+                format!(
+                    "{} points cannot constrain the slope of Γ on [0, 1]",
+                    raw.monotonicity_grid
+                ),
+                "use 201 or more points",
+            ));
         }
-        Ok(MapSettings { horizon: raw.horizon, nm: raw.nm, beta, epsilon, normalisation: raw.normalisation, monotonicity_grid: raw.monotonicity_grid })
+        Ok(MapSettings {
+            horizon: raw.horizon,
+            nm: raw.nm,
+            beta,
+            epsilon,
+            normalisation: raw.normalisation,
+            monotonicity_grid: raw.monotonicity_grid,
+        })
     }
 
     fn learning(&self, raw: &RawLearning, model: &Model, horizon: usize) -> Result<Learning, SpecError> {
         if raw.samples <= horizon {
-            return Err(self.err("map.horizon", format!("N = {horizon} leaves no window in runs of N_s = {} samples (N must be < N_s)", raw.samples), "lower `map.horizon` or raise `learning.samples`"));
+            return Err(self.err(
+                "map.horizon",
+                format!(
+                    "N = {horizon} leaves no window in runs of N_s = {} samples (N must be < N_s)",
+                    raw.samples
+                ),
+                "lower `map.horizon` or raise `learning.samples`",
+            ));
         }
         for key in raw.grid.keys() {
             if !model.states.contains(key) {
-                return Err(self.err(format!("learning.grid.{key}"), format!("`{key}` is not a state"), format!("give one axis per state ({})", model.states.join(", "))));
+                return Err(self.err(
+                    format!("learning.grid.{key}"),
+                    format!("`{key}` is not a state"),
+                    format!("give one axis per state ({})", model.states.join(", ")),
+                ));
             }
         }
         let axes = model
@@ -459,7 +568,11 @@ impl Validator {
             .collect::<Result<Vec<_>, _>>()?;
         for key in raw.inputs.keys() {
             if !model.inputs.contains(key) {
-                return Err(self.err(format!("learning.inputs.{key}"), format!("`{key}` is not an input"), "give one profile per input of `model.inputs`"));
+                return Err(self.err(
+                    format!("learning.inputs.{key}"),
+                    format!("`{key}` is not an input"),
+                    "give one profile per input of `model.inputs`",
+                ));
             }
         }
         let inputs = model
@@ -468,70 +581,142 @@ impl Validator {
             .map(|input| {
                 let field = format!("learning.inputs.{input}");
                 let p = raw.inputs.get(input).ok_or_else(|| {
-                    self.err(&field, format!("no profile for input `{input}`"), format!("add `inputs.{input} = {{ min = …, max = …, hold = … }}` under `[learning]`"))
+                    self.err(
+                        &field,
+                        format!("no profile for input `{input}`"),
+                        format!("add `inputs.{input} = {{ min = …, max = …, hold = … }}` under `[learning]`"),
+                    )
                 })?;
                 if !(p.min.is_finite() && p.max.is_finite() && p.min <= p.max) {
-                    return Err(self.err(format!("{field}.min"), format!("the range [{}, {}] is not a finite interval", p.min, p.max), "give finite bounds with min ≤ max"));
+                    return Err(self.err(
+                        format!("{field}.min"),
+                        format!("the range [{}, {}] is not a finite interval", p.min, p.max),
+                        "give finite bounds with min ≤ max",
+                    ));
                 }
                 if p.hold == 0 {
-                    return Err(self.err(format!("{field}.hold"), "an input value must be held at least one sample", "set `hold` to 1 or more samples"));
+                    return Err(self.err(
+                        format!("{field}.hold"),
+                        "an input value must be held at least one sample",
+                        "set `hold` to 1 or more samples",
+                    ));
                 }
-                Ok(InputProfile { min: p.min, max: p.max, hold: p.hold })
+                Ok(InputProfile {
+                    min: p.min,
+                    max: p.max,
+                    hold: p.hold,
+                })
             })
             .collect::<Result<Vec<_>, _>>()?;
-        Ok(Learning { samples: raw.samples, seed: raw.seed, axes, inputs })
+        Ok(Learning {
+            samples: raw.samples,
+            seed: raw.seed,
+            axes,
+            inputs,
+        })
     }
 
     fn axis(&self, field: &str, raw: &RawAxis) -> Result<Axis, SpecError> {
         match (raw.min, raw.max, raw.points, raw.value) {
             (None, None, None, Some(value)) if value.is_finite() => Ok(Axis::Fixed(value)),
-            (None, None, None, Some(value)) => Err(self.err(format!("{field}.value"), format!("{value} is not finite"), "give a finite value")),
+            (None, None, None, Some(value)) => Err(self.err(
+                format!("{field}.value"),
+                format!("{value} is not finite"),
+                "give a finite value",
+            )),
             (Some(min), Some(max), Some(points), None) => {
                 if !(min.is_finite() && max.is_finite()) {
-                    return Err(self.err(format!("{field}.min"), format!("the bounds [{min}, {max}] are not finite"), "give finite bounds"));
+                    return Err(self.err(
+                        format!("{field}.min"),
+                        format!("the bounds [{min}, {max}] are not finite"),
+                        "give finite bounds",
+                    ));
                 }
                 if min > max {
-                    return Err(self.err(format!("{field}.max"), format!("the box is inverted: min = {min} > max = {max}"), "swap `min` and `max`"));
+                    return Err(self.err(
+                        format!("{field}.max"),
+                        format!("the box is inverted: min = {min} > max = {max}"),
+                        "swap `min` and `max`",
+                    ));
                 }
                 if min == max {
-                    return Err(self.err(format!("{field}.max"), format!("the box is empty: min = max = {min}"), "widen the interval, or hold the state fixed with `{ value = … }`"));
+                    return Err(self.err(
+                        format!("{field}.max"),
+                        format!("the box is empty: min = max = {min}"),
+                        "widen the interval, or hold the state fixed with `{ value = … }`",
+                    ));
                 }
                 if points == 0 {
-                    return Err(self.err(format!("{field}.points"), "a grid of 0 points has no initial state", "set `points` to 2 or more"));
+                    return Err(self.err(
+                        format!("{field}.points"),
+                        "a grid of 0 points has no initial state",
+                        "set `points` to 2 or more",
+                    ));
                 }
                 if points == 1 {
-                    return Err(self.err(format!("{field}.points"), "one point cannot span [min, max]", "set `points` to 2 or more, or hold the state fixed with `{ value = … }`"));
+                    return Err(self.err(
+                        format!("{field}.points"),
+                        "one point cannot span [min, max]",
+                        "set `points` to 2 or more, or hold the state fixed with `{ value = … }`",
+                    ));
                 }
                 Ok(Axis::Range { min, max, points })
             }
-            _ => Err(self.err(field, "an axis is either `{ min, max, points }` or `{ value }`", format!("write `{field} = {{ min = …, max = …, points = … }}` or `{{ value = … }}`"))),
+            _ => Err(self.err(
+                field,
+                "an axis is either `{ min, max, points }` or `{ value }`",
+                format!("write `{field} = {{ min = …, max = …, points = … }}` or `{{ value = … }}`"),
+            )),
         }
     }
 
     fn validation(&self, raw: &RawValidation, horizon: usize) -> Result<Validation, SpecError> {
         if raw.trajectories == 0 {
-            return Err(self.err("validation.trajectories", "no validation run: accuracy could not be reported", "set `validation.trajectories` to 1 or more (50 or more is sensible)"));
+            return Err(self.err(
+                "validation.trajectories",
+                "no validation run: accuracy could not be reported",
+                "set `validation.trajectories` to 1 or more (50 or more is sensible)",
+            ));
         }
         if raw.samples < horizon {
-            return Err(self.err("validation.samples", format!("runs of {} samples hold no window of N = {horizon}", raw.samples), "set `validation.samples` ≥ `map.horizon`"));
+            return Err(self.err(
+                "validation.samples",
+                format!("runs of {} samples hold no window of N = {horizon}", raw.samples),
+                "set `validation.samples` ≥ `map.horizon`",
+            ));
         }
-        Ok(Validation { trajectories: raw.trajectories, samples: raw.samples, seed: raw.seed })
+        Ok(Validation {
+            trajectories: raw.trajectories,
+            samples: raw.samples,
+            seed: raw.seed,
+        })
     }
 
     fn targets(&self, raw: &[RawNamedExpr], model: &Model) -> Result<Vec<Target>, SpecError> {
         if raw.is_empty() {
-            return Err(self.err("targets", "nothing to estimate", "add a `[[targets]]` table with `name` and `expr` (e.g. a state name)"));
+            return Err(self.err(
+                "targets",
+                "nothing to estimate",
+                "add a `[[targets]]` table with `name` and `expr` (e.g. a state name)",
+            ));
         }
         let scope = model.scope();
         let mut targets: Vec<Target> = Vec::new();
         for (i, t) in raw.iter().enumerate() {
             self.identifier(&format!("targets[{i}].name"), &t.name)?;
             if targets.iter().any(|other| other.name == t.name) {
-                return Err(self.err(format!("targets[{i}].name"), format!("target `{}` is declared twice", t.name), "give each target its own name"));
+                return Err(self.err(
+                    format!("targets[{i}].name"),
+                    format!("target `{}` is declared twice", t.name),
+                    "give each target its own name",
+                ));
             }
             let expr = Expression::compile(&t.expr, &scope)
                 .map_err(|e| self.err(format!("targets[{i}].expr"), e.to_string(), e.fix()))?;
-            targets.push(Target { name: t.name.clone(), expr });
+            targets.push(Target {
+                name: t.name.clone(),
+                expr,
+            });
         }
         Ok(targets)
     }

@@ -20,7 +20,12 @@ pub struct StreamingQr {
 impl StreamingQr {
     /// An empty accumulator for rows of `columns` entries.
     pub fn new(columns: usize) -> Self {
-        StreamingQr { columns, r: DMatrix::zeros(0, columns), pending: Vec::with_capacity(BLOCK * columns), rows: 0 }
+        StreamingQr {
+            columns,
+            r: DMatrix::zeros(0, columns),
+            pending: Vec::with_capacity(BLOCK * columns),
+            rows: 0,
+        }
     }
 
     /// Appends one row.
@@ -67,7 +72,9 @@ mod tests {
     #[test]
     fn gram_of_r_equals_gram_of_the_data() {
         let (rows, columns) = (1300, 5);
-        let data = DMatrix::from_fn(rows, columns, |i, j| ((i * 7 + j * 13) % 17) as f64 - 8.0 + (i as f64 * 0.01 * j as f64).sin());
+        let data = DMatrix::from_fn(rows, columns, |i, j| {
+            ((i * 7 + j * 13) % 17) as f64 - 8.0 + (i as f64 * 0.01 * j as f64).sin()
+        });
         let mut qr = StreamingQr::new(columns);
         for i in 0..rows {
             qr.push(data.row(i).transpose().as_slice());
@@ -75,7 +82,10 @@ mod tests {
         assert_eq!(qr.rows(), rows);
         let r = qr.finish();
         let difference = (r.transpose() * &r - data.transpose() * &data).abs().max();
-        assert!(difference < 1e-9 * (data.transpose() * &data).abs().max(), "{difference}");
+        assert!(
+            difference < 1e-9 * (data.transpose() * &data).abs().max(),
+            "{difference}"
+        );
         for i in 0..columns {
             for j in 0..i {
                 assert_eq!(r[(i, j)], 0.0);

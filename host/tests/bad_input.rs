@@ -25,8 +25,15 @@ fn parse_error(text: &str) -> SpecError {
 fn assert_names(error: &SpecError, field: &str, fix_mentions: &str) {
     let message = error.to_string();
     assert!(message.starts_with("bad.toml: "), "{message}");
-    assert!(error.field.contains(field), "field {:?} should name {field:?}: {message}", error.field);
-    assert!(message.contains("fix: ") && error.fix.contains(fix_mentions), "{message}");
+    assert!(
+        error.field.contains(field),
+        "field {:?} should name {field:?}: {message}",
+        error.field
+    );
+    assert!(
+        message.contains("fix: ") && error.fix.contains(fix_mentions),
+        "{message}"
+    );
 }
 
 #[test]
@@ -160,10 +167,19 @@ fn command_line_exits_non_zero_without_panic_and_keeps_earlier_reports() {
         .unwrap();
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(!output.status.success());
-    assert!(stderr.contains("broken.toml") && stderr.contains("sampling.tau") && stderr.contains("fix:"), "{stderr}");
-    assert!(!stderr.contains("panicked") && !stderr.contains("backtrace"), "{stderr}");
+    assert!(
+        stderr.contains("broken.toml") && stderr.contains("sampling.tau") && stderr.contains("fix:"),
+        "{stderr}"
+    );
+    assert!(
+        !stderr.contains("panicked") && !stderr.contains("backtrace"),
+        "{stderr}"
+    );
     assert_eq!(std::fs::read_to_string(&earlier).unwrap(), "earlier run");
-    let missing = Command::new(env!("CARGO_BIN_EXE_host")).args(["gen", "--spec", "no/such/spec.toml"]).output().unwrap();
+    let missing = Command::new(env!("CARGO_BIN_EXE_host"))
+        .args(["gen", "--spec", "no/such/spec.toml"])
+        .output()
+        .unwrap();
     assert!(!missing.status.success());
     assert!(String::from_utf8_lossy(&missing.stderr).contains("no/such/spec.toml"));
 }

@@ -7,12 +7,20 @@ fn gen_writes_the_report_and_prints_a_summary() {
     let reports = std::env::temp_dir().join(format!("host-cli-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&reports);
     let spec = concat!(env!("CARGO_MANIFEST_DIR"), "/specs/vanderpol.toml");
-    let output = Command::new(env!("CARGO_BIN_EXE_host")).args(["gen", "--spec", spec, "--reports"]).arg(&reports).output().unwrap();
+    let output = Command::new(env!("CARGO_BIN_EXE_host"))
+        .args(["gen", "--spec", spec, "--reports"])
+        .arg(&reports)
+        .output()
+        .unwrap();
     let stdout = String::from_utf8_lossy(&output.stdout);
     assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
-    assert!(stdout.contains("n_E = 1456") && stdout.contains("| x1 |") && stdout.contains("| x2 |"), "{stdout}");
+    assert!(
+        stdout.contains("n_E = 1456") && stdout.contains("| x1 |") && stdout.contains("| x2 |"),
+        "{stdout}"
+    );
 
-    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(reports.join("vanderpol/report.json")).unwrap()).unwrap();
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(reports.join("vanderpol/report.json")).unwrap()).unwrap();
     assert_eq!(json["learning"]["windows"], 1456);
     for target in json["targets"].as_array().unwrap() {
         for key in ["rmse_learning", "rmse_validation", "max_error_validation"] {
@@ -30,6 +38,10 @@ fn gen_writes_the_report_and_prints_a_summary() {
     let markdown = std::fs::read_to_string(reports.join("vanderpol/report.md")).unwrap();
     assert!(markdown.contains("| x1 |") && markdown.contains("n_E = 1456"));
     // No temporary file is left behind.
-    let leftovers: Vec<_> = std::fs::read_dir(reports.join("vanderpol")).unwrap().filter_map(|e| e.ok()).filter(|e| e.file_name().to_string_lossy().contains(".tmp")).collect();
+    let leftovers: Vec<_> = std::fs::read_dir(reports.join("vanderpol"))
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().contains(".tmp"))
+        .collect();
     assert!(leftovers.is_empty());
 }

@@ -7,7 +7,10 @@ use host::spec::{self, Design};
 
 /// The folder of the specs shipped with the host.
 pub fn specs_folder() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("host").join("specs")
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("..")
+        .join("host")
+        .join("specs")
 }
 
 /// The text of a shipped spec.

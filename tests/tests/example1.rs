@@ -21,7 +21,12 @@ fn intercept_maps_meet_the_accuracy_targets() {
         let v = &t.validation;
         let name = &d.targets[t.index].name;
         assert!(v.map.rmse <= bound, "{name}: validation RMSE {} > {bound}", v.map.rmse);
-        assert!(v.map.rmse <= 1.02 * v.linear.rmse, "{name}: {} is more than 2 % above the linear floor {}", v.map.rmse, v.linear.rmse);
+        assert!(
+            v.map.rmse <= 1.02 * v.linear.rmse,
+            "{name}: {} is more than 2 % above the linear floor {}",
+            v.map.rmse,
+            v.linear.rmse
+        );
     }
 }
 
@@ -35,7 +40,12 @@ fn shifting_the_target_by_ten_leaves_intercept_estimates_unchanged() {
     for w in result.validation.windows() {
         result.validation.regressor(w, &mut z);
         let (a, b) = (plain.estimate(&z), shifted.estimate(&z));
-        assert!((b.value - 10.0 - a.value).abs() < 1e-9, "{} vs {}", b.value - 10.0, a.value);
+        assert!(
+            (b.value - 10.0 - a.value).abs() < 1e-9,
+            "{} vs {}",
+            b.value - 10.0,
+            a.value
+        );
         assert_eq!(a.saturation, b.saturation);
     }
 }
@@ -50,7 +60,10 @@ fn paper_normalisation_makes_x2_linear_least_squares_without_intercept() {
     let result = build(&d);
     let x2 = &result.targets[1];
     assert!(x2.fit.diagnostics.collapsed, "{:?}", x2.fit.diagnostics);
-    assert!(!result.targets[0].fit.diagnostics.collapsed, "x1 is genuinely nonlinear");
+    assert!(
+        !result.targets[0].fit.diagnostics.collapsed,
+        "x1 is genuinely nonlinear"
+    );
     let learning = &result.learning;
     let windows: Vec<_> = learning.windows().collect();
     let mut z = Vec::new();
@@ -67,7 +80,11 @@ fn paper_normalisation_makes_x2_linear_least_squares_without_intercept() {
         let estimate = x2.fit.map.estimate(&z);
         if !estimate.saturation.is_saturated() {
             let least_squares: f64 = gains.iter().zip(&z).map(|(g, z)| g * z).sum();
-            assert!((estimate.value - least_squares).abs() < 1e-4, "{} vs {least_squares}", estimate.value);
+            assert!(
+                (estimate.value - least_squares).abs() < 1e-4,
+                "{} vs {least_squares}",
+                estimate.value
+            );
             compared += 1;
         }
     }
