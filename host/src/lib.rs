@@ -13,6 +13,7 @@ pub mod expr;
 pub mod identify;
 pub mod maps;
 pub mod model;
+pub mod monotonicity;
 pub mod pipeline;
 pub mod qp;
 pub mod report;
