@@ -30,8 +30,10 @@
 pub mod basis;
 pub mod gamma;
 pub mod map;
+pub mod observer;
 pub mod scalar;
 
 pub use gamma::{Gamma, Inverse, Saturation};
 pub use map::{Estimate, TargetMap};
+pub use observer::{Observer, RejectedSample, Sample};
 pub use scalar::Scalar;
