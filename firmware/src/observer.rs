@@ -158,7 +158,7 @@ mod tests {
     fn saturation_is_reported() {
         let mut observer: Observer<'_, f64, 3, 2, 1, 1> = Observer::new(&MAPS);
         for _ in 0..3 {
-            observer.push([-1e6, 0.0], [0.0]).unwrap(); // Lᵀ Z = -0.375e6 · -1 > Γ(1)
+            observer.push([-1e6, 0.0], [0.0]).unwrap(); // Lᵀ Z = (0.5 + 0.125 - 1) · -1e6 > Γ(1)
         }
         let estimate = observer.estimate().unwrap()[0];
         assert_eq!(

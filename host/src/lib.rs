@@ -8,14 +8,17 @@
 #![warn(missing_docs)]
 
 pub mod data;
+pub mod emit;
 pub mod evaluate;
 pub mod expr;
 pub mod identify;
 pub mod maps;
 pub mod model;
 pub mod monotonicity;
+pub mod output;
 pub mod pipeline;
 pub mod qp;
+pub mod recording;
 pub mod report;
 pub mod simulate;
 pub mod spec;

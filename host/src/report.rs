@@ -9,6 +9,7 @@ use serde::Serialize;
 use crate::evaluate::Evaluation;
 use crate::identify::Diagnostics;
 use crate::maps::FittedMap;
+use crate::output::write_atomically;
 use crate::pipeline::DesignResult;
 use crate::spec::{Design, MapSettings};
 
@@ -195,17 +196,4 @@ pub fn write(report: &Report<'_>, folder: &Path) -> std::io::Result<Vec<PathBuf>
     write_atomically(&paths[0], json.as_bytes())?;
     write_atomically(&paths[1], markdown(report).as_bytes())?;
     Ok(paths)
-}
-
-/// Writes `bytes` to a temporary file beside `path`, then renames it over `path`: a reader never sees
-/// a half-written file, and a failure leaves the previous one in place.
-pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let mut temporary = path.as_os_str().to_owned();
-    temporary.push(format!(".tmp{}", std::process::id()));
-    let temporary = PathBuf::from(temporary);
-    std::fs::write(&temporary, bytes)
-        .and_then(|()| std::fs::rename(&temporary, path))
-        .inspect_err(|_| {
-            let _ = std::fs::remove_file(&temporary);
-        })
 }

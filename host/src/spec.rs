@@ -7,6 +7,7 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
+use sha2::Digest;
 
 use crate::expr::Expression;
 use crate::model::{Model, ModelText};
@@ -118,6 +119,18 @@ pub struct MapSettings {
     pub monotonicity_grid: usize,
 }
 
+/// A recorded-style estimation run: one trajectory from a given state with fresh noise (the paper's
+/// Fig. 2, right, for Example 1).
+#[derive(Clone, Debug)]
+pub struct Scenario {
+    /// Initial state, in state order.
+    pub x0: Vec<f64>,
+    /// Samples.
+    pub samples: usize,
+    /// Seed of its inputs and noise.
+    pub seed: u64,
+}
+
 /// A quantity to estimate, `r = g(x)`.
 #[derive(Clone, Debug)]
 pub struct Target {
@@ -150,6 +163,10 @@ pub struct Design {
     pub map: MapSettings,
     /// The quantities to estimate.
     pub targets: Vec<Target>,
+    /// The estimation scenario, if the spec has one.
+    pub scenario: Option<Scenario>,
+    /// SHA-256 of the spec text, in hex (provenance of generated files).
+    pub spec_sha256: String,
 }
 
 impl Design {
@@ -163,6 +180,15 @@ impl Design {
         }
     }
 }
+
+/// Names that cannot be a Rust module (the design name becomes one in `generated/`).
+const RUST_KEYWORDS: &[&str] = &[
+    "as", "async", "await", "break", "const", "continue", "crate", "dyn", "else", "enum", "extern", "false", "fn",
+    "for", "gen", "if", "impl", "in", "let", "loop", "match", "mod", "move", "mut", "pub", "ref", "return", "self",
+    "static", "struct", "super", "trait", "true", "type", "unsafe", "use", "where", "while", "abstract", "become",
+    "box", "do", "final", "macro", "override", "priv", "try", "typeof", "unsized", "virtual", "yield", "firmware",
+    "core", "std",
+];
 
 // ---------------------------------------------------------------------------------------------------
 // The file as written.
@@ -179,6 +205,15 @@ struct RawSpec {
     validation: RawValidation,
     map: RawMap,
     targets: Vec<RawNamedExpr>,
+    scenario: Option<RawScenario>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawScenario {
+    x0: BTreeMap<String, f64>,
+    samples: usize,
+    seed: u64,
 }
 
 #[derive(Deserialize)]
@@ -299,11 +334,16 @@ pub fn parse(path: &Path, text: &str) -> Result<Design, SpecError> {
         problem: e.message().trim().to_owned(),
         fix: "correct the TOML at that line; see host/specs/vanderpol.toml for a complete example".into(),
     })?;
-    Validator {
+    let mut design = Validator {
         file,
         path: path.to_owned(),
     }
-    .design(raw)
+    .design(raw)?;
+    design.spec_sha256 = sha2::Sha256::digest(text.as_bytes())
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect();
+    Ok(design)
 }
 
 struct Validator {
@@ -353,12 +393,13 @@ impl Validator {
             && raw
                 .name
                 .chars()
-                .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
+                .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
+            && !RUST_KEYWORDS.contains(&raw.name.as_str());
         if !name_ok {
             return Err(self.err(
                 "name",
-                format!("`{}` is not a lower-case identifier", raw.name),
-                "use lower-case letters, digits and `_`, starting with a letter (it names generated files)",
+                format!("`{}` is not a lower-case identifier, or is reserved", raw.name),
+                "use lower-case letters, digits and `_`, starting with a letter, not a Rust keyword (it names a module in generated/)",
             ));
         }
         let model = self.model(&raw.model)?;
@@ -374,6 +415,11 @@ impl Validator {
         let learning = self.learning(&raw.learning, &model, map.horizon)?;
         let validation = self.validation(&raw.validation, map.horizon)?;
         let targets = self.targets(&raw.targets, &model)?;
+        let scenario = raw
+            .scenario
+            .as_ref()
+            .map(|s| self.scenario(s, &model, map.horizon))
+            .transpose()?;
         Ok(Design {
             file: self.path.clone(),
             name: raw.name,
@@ -385,6 +431,49 @@ impl Validator {
             validation,
             map,
             targets,
+            scenario,
+            spec_sha256: String::new(),
+        })
+    }
+
+    fn scenario(&self, raw: &RawScenario, model: &Model, horizon: usize) -> Result<Scenario, SpecError> {
+        for key in raw.x0.keys() {
+            if !model.states.contains(key) {
+                return Err(self.err(
+                    format!("scenario.x0.{key}"),
+                    format!("`{key}` is not a state"),
+                    "give one initial value per state",
+                ));
+            }
+        }
+        let x0 = model
+            .states
+            .iter()
+            .map(|state| match raw.x0.get(state) {
+                Some(v) if v.is_finite() => Ok(*v),
+                Some(v) => Err(self.err(
+                    format!("scenario.x0.{state}"),
+                    format!("{v} is not finite"),
+                    "give a finite initial value",
+                )),
+                None => Err(self.err(
+                    format!("scenario.x0.{state}"),
+                    format!("no initial value for `{state}`"),
+                    format!("add `{state} = …` to `scenario.x0`"),
+                )),
+            })
+            .collect::<Result<_, _>>()?;
+        if raw.samples < horizon {
+            return Err(self.err(
+                "scenario.samples",
+                format!("{} samples hold no window of N = {horizon}", raw.samples),
+                "set `scenario.samples` ≥ `map.horizon`",
+            ));
+        }
+        Ok(Scenario {
+            x0,
+            samples: raw.samples,
+            seed: raw.seed,
         })
     }
 

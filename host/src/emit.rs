@@ -1,0 +1,227 @@
+//! Emission of the fitted maps as Rust source (askama templates in `host/templates/`).
+//!
+//! Each design becomes `generated/src/<design>.rs`: a provenance header, constant `f32` tables and a
+//! `const fn` constructor; `generated/src/lib.rs` declares every design file present. Every literal is
+//! printed so that it parses back to the same `f32` bits, non-finite values are refused, and nothing in
+//! the output depends on the machine, the time or the way `gen` was invoked: regeneration is byte for
+//! byte.
+
+use std::path::Path;
+
+use askama::Template;
+
+use crate::pipeline::DesignResult;
+use crate::spec::Design;
+
+/// Why a design cannot be emitted.
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum EmitError {
+    /// A coefficient is NaN, infinite, or beyond the range of `f32`.
+    #[error("{what} = {value} cannot be stored as a finite f32")]
+    NotFinite {
+        /// Which coefficient.
+        what: String,
+        /// Its value.
+        value: f64,
+    },
+    /// Two targets would get the same Rust constant name.
+    #[error("targets `{first}` and `{second}` both become the constant `{constant}`")]
+    NameClash {
+        /// One target.
+        first: String,
+        /// The other.
+        second: String,
+        /// The constant both map to.
+        constant: String,
+    },
+    /// The template failed to render.
+    #[error("template: {0}")]
+    Template(String),
+}
+
+/// The `f32` nearest `value`, printed so that it parses back to the same bits.
+pub fn f32_literal(what: &str, value: f64) -> Result<String, EmitError> {
+    let single = value as f32;
+    if !single.is_finite() {
+        return Err(EmitError::NotFinite {
+            what: what.to_owned(),
+            value,
+        });
+    }
+    // `{:?}` prints the shortest decimal that round-trips, always with a `.` or an exponent.
+    Ok(format!("{single:?}"))
+}
+
+/// Literals of `values`, one per line (as rustfmt lays them out), indented by `indent` spaces.
+fn literal_block(what: &str, values: &[f64], indent: usize) -> Result<String, EmitError> {
+    let literals = values
+        .iter()
+        .enumerate()
+        .map(|(i, &v)| f32_literal(&format!("{what}[{i}]"), v))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(literals
+        .iter()
+        .map(|l| format!("{}{l},", " ".repeat(indent)))
+        .collect::<Vec<_>>()
+        .join("\n"))
+}
+
+struct TargetTables {
+    name: String,
+    const_name: String,
+    expr: String,
+    rmse: String,
+    max_error: String,
+    linear_rmse: String,
+    gains: String,
+    offset: String,
+    weights: String,
+    r_min: String,
+    r_span: String,
+}
+
+#[derive(Template)]
+#[template(path = "design.rs", escape = "none")]
+struct DesignFile {
+    name: String,
+    description: String,
+    command: String,
+    version: &'static str,
+    spec_path: String,
+    spec_hash: String,
+    tau: String,
+    horizon: usize,
+    nm: usize,
+    beta: f64,
+    normalisation: String,
+    outputs: Vec<String>,
+    inputs: Vec<String>,
+    output_list: String,
+    input_list: String,
+    curvature_count: usize,
+    curvatures: String,
+    targets: Vec<TargetTables>,
+}
+
+#[derive(Template)]
+#[template(path = "lib.rs", escape = "none")]
+struct LibFile<'a> {
+    version: &'static str,
+    designs: &'a [String],
+}
+
+/// The spec path as it should appear in generated files: relative to the workspace when inside it,
+/// so that the text does not depend on where the checkout lives.
+pub fn portable_spec_path(spec: &Path, workspace: &Path) -> String {
+    let absolute = |p: &Path| p.canonicalize().unwrap_or_else(|_| p.to_owned());
+    let spec = absolute(spec);
+    spec.strip_prefix(absolute(workspace))
+        .map(|p| p.to_string_lossy().replace('\\', "/"))
+        .unwrap_or_else(|_| {
+            spec.file_name()
+                .map(|n| n.to_string_lossy().into_owned())
+                .unwrap_or_default()
+        })
+}
+
+/// The text of `generated/src/<design>.rs`.
+pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> Result<String, EmitError> {
+    let list = |names: &[String]| {
+        if names.is_empty() {
+            "none".to_owned()
+        } else {
+            names.join(", ")
+        }
+    };
+    let outputs: Vec<String> = design.model.outputs.iter().map(|o| o.name.clone()).collect();
+    let mut targets: Vec<TargetTables> = Vec::new();
+    for t in &result.targets {
+        let target = &design.targets[t.index];
+        let map = &t.fit.map;
+        let const_name = format!("MAP_{}", target.name.to_uppercase());
+        if let Some(other) = targets.iter().find(|o| o.const_name == const_name) {
+            return Err(EmitError::NameClash {
+                first: other.name.clone(),
+                second: target.name.clone(),
+                constant: const_name,
+            });
+        }
+        let what = |field: &str| format!("target `{}` {field}", target.name);
+        targets.push(TargetTables {
+            name: target.name.clone(),
+            const_name,
+            expr: target.expr.text().to_owned(),
+            rmse: format!("{:.4}", t.validation.map.rmse),
+            max_error: format!("{:.4}", t.validation.map.max_error),
+            linear_rmse: format!("{:.4}", t.validation.linear.rmse),
+            gains: literal_block(&what("gains"), &map.gains, 8)?,
+            offset: f32_literal(&what("offset"), map.offset)?,
+            weights: literal_block(&what("weights"), &map.weights, 12)?,
+            r_min: f32_literal(&what("r_min"), map.r_min)?,
+            r_span: f32_literal(&what("r_span"), map.r_max - map.r_min)?,
+        });
+    }
+    let curvatures = result
+        .targets
+        .first()
+        .map(|t| t.fit.map.curvatures.clone())
+        .unwrap_or_default();
+    let file = DesignFile {
+        name: design.name.clone(),
+        description: design.description.clone(),
+        command: format!("cargo run -p host -- gen --spec {spec_path}"),
+        version: env!("CARGO_PKG_VERSION"),
+        spec_path: spec_path.to_owned(),
+        spec_hash: design.spec_sha256.clone(),
+        tau: f32_literal("sampling.tau", design.tau)?,
+        horizon: design.map.horizon,
+        nm: design.map.nm,
+        beta: design.map.beta,
+        normalisation: format!("{:?}", design.map.normalisation).to_lowercase(),
+        output_list: list(&outputs),
+        input_list: list(&design.model.inputs),
+        outputs,
+        inputs: design.model.inputs.clone(),
+        curvature_count: curvatures.len(),
+        curvatures: literal_block("curvatures", &curvatures, 4)?,
+        targets,
+    };
+    file.render()
+        .map(|text| text + "\n")
+        .map_err(|e| EmitError::Template(e.to_string()))
+}
+
+/// The text of `generated/src/lib.rs` declaring `designs` (sorted by the caller).
+pub fn lib_file(designs: &[String]) -> Result<String, EmitError> {
+    LibFile {
+        version: env!("CARGO_PKG_VERSION"),
+        designs,
+    }
+    .render()
+    .map(|text| text + "\n")
+    .map_err(|e| EmitError::Template(e.to_string()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #[test]
+        fn literals_round_trip_to_the_same_f32_bits(bits in any::<u32>()) {
+            let value = f32::from_bits(bits);
+            prop_assume!(value.is_finite());
+            let literal = f32_literal("x", value as f64).unwrap();
+            prop_assert_eq!(literal.parse::<f32>().unwrap().to_bits(), bits, "{}", literal);
+            prop_assert!(literal.contains('.') || literal.contains('e'), "{} is not a float literal", literal);
+        }
+    }
+
+    #[test]
+    fn non_finite_and_out_of_range_values_are_refused() {
+        for value in [f64::NAN, f64::INFINITY, -f64::INFINITY, 1e39] {
+            assert!(matches!(f32_literal("x", value), Err(EmitError::NotFinite { .. })));
+        }
+    }
+}

@@ -1,0 +1,193 @@
+//! Recorded measurements as CSV: writing simulated runs, and estimating over a recorded file with
+//! the library maps (the firmware's code in `f64`).
+//!
+//! An input file has a header; the columns named after the design's outputs and inputs are read, any
+//! other column is ignored, one row per sample in time order. An optional column `run` splits the file
+//! into independent runs: the observer restarts whenever its value changes. The output has one row per
+//! input row and one column per target, empty while no estimate exists (fewer than N samples in the
+//! run, or a sample with a NaN/infinite value was refused), plus `saturated` (1 when any target was
+//! clamped to its learning range, 0 otherwise).
+
+use std::collections::VecDeque;
+use std::path::Path;
+
+use crate::data::Run;
+use crate::maps::FittedMap;
+use crate::spec::Design;
+
+/// Why a recorded file could not be processed. Nothing is written when this happens.
+#[derive(Debug, thiserror::Error)]
+pub enum RecordingError {
+    /// The file cannot be read or parsed as CSV.
+    #[error("{file}: {message}")]
+    Csv {
+        /// The file.
+        file: String,
+        /// What went wrong.
+        message: String,
+    },
+    /// A column the design needs is missing from the header.
+    #[error("{file}: no column `{column}` in the header (found: {found}); the design `{design}` reads {needed}")]
+    MissingColumn {
+        /// The file.
+        file: String,
+        /// The missing column.
+        column: String,
+        /// The header.
+        found: String,
+        /// The design.
+        design: String,
+        /// The columns it needs.
+        needed: String,
+    },
+    /// A cell is not a number.
+    #[error("{file}: line {line}, column `{column}`: `{cell}` is not a number")]
+    NotANumber {
+        /// The file.
+        file: String,
+        /// Line number (1 is the header).
+        line: u64,
+        /// Column name.
+        column: String,
+        /// The cell.
+        cell: String,
+    },
+}
+
+/// One sample of a recorded file.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    /// Value of the `run` column ("" when there is none).
+    pub run: String,
+    /// Outputs, in the design's order.
+    pub y: Vec<f64>,
+    /// Inputs, in the design's order.
+    pub u: Vec<f64>,
+}
+
+/// Reads the columns `design` needs from `path`.
+pub fn read(design: &Design, path: &Path) -> Result<Vec<Row>, RecordingError> {
+    let file = path.display().to_string();
+    let csv_error = |e: csv::Error| RecordingError::Csv {
+        file: file.clone(),
+        message: e.to_string(),
+    };
+    let mut reader = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .from_path(path)
+        .map_err(csv_error)?;
+    let header: Vec<String> = reader.headers().map_err(csv_error)?.iter().map(str::to_owned).collect();
+    let outputs: Vec<&str> = design.model.outputs.iter().map(|o| o.name.as_str()).collect();
+    let inputs: Vec<&str> = design.model.inputs.iter().map(String::as_str).collect();
+    let column = |name: &str| {
+        header
+            .iter()
+            .position(|h| h == name)
+            .ok_or_else(|| RecordingError::MissingColumn {
+                file: file.clone(),
+                column: name.to_owned(),
+                found: header.join(", "),
+                design: design.name.clone(),
+                needed: outputs.iter().chain(&inputs).copied().collect::<Vec<_>>().join(", "),
+            })
+    };
+    let output_columns = outputs.iter().map(|n| column(n)).collect::<Result<Vec<_>, _>>()?;
+    let input_columns = inputs.iter().map(|n| column(n)).collect::<Result<Vec<_>, _>>()?;
+    let run_column = header.iter().position(|h| h == "run");
+    let mut rows = Vec::new();
+    for record in reader.records() {
+        let record = record.map_err(csv_error)?;
+        let line = record.position().map_or(0, |p| p.line());
+        let number = |c: usize| -> Result<f64, RecordingError> {
+            let cell = record.get(c).unwrap_or("");
+            cell.parse::<f64>().map_err(|_| RecordingError::NotANumber {
+                file: file.clone(),
+                line,
+                column: header[c].clone(),
+                cell: cell.to_owned(),
+            })
+        };
+        rows.push(Row {
+            run: run_column.and_then(|c| record.get(c)).unwrap_or("").to_owned(),
+            y: output_columns.iter().map(|&c| number(c)).collect::<Result<_, _>>()?,
+            u: input_columns.iter().map(|&c| number(c)).collect::<Result<_, _>>()?,
+        });
+    }
+    Ok(rows)
+}
+
+/// One estimate row: per target `Some((value, saturated))`, or `None` where there is no estimate.
+pub type EstimateRow = Vec<Option<(f64, bool)>>;
+
+/// Runs the library maps over `rows` with the observer's semantics: a window of the last N accepted
+/// samples, restarted at each new `run`, a non-finite sample refused (no estimate on its row).
+pub fn estimate(maps: &[FittedMap], horizon: usize, rows: &[Row]) -> Vec<EstimateRow> {
+    let mut window: VecDeque<&Row> = VecDeque::with_capacity(horizon);
+    let mut z = Vec::new();
+    let mut previous_run: Option<&str> = None;
+    rows.iter()
+        .map(|row| {
+            if previous_run != Some(row.run.as_str()) {
+                window.clear();
+                previous_run = Some(&row.run);
+            }
+            if row.y.iter().chain(&row.u).any(|v| !v.is_finite()) {
+                return vec![None; maps.len()];
+            }
+            if window.len() == horizon {
+                window.pop_back();
+            }
+            window.push_front(row);
+            if window.len() < horizon {
+                return vec![None; maps.len()];
+            }
+            z.clear();
+            z.extend(window.iter().flat_map(|r| r.y.iter().copied()));
+            z.extend(window.iter().flat_map(|r| r.u.iter().copied()));
+            maps.iter()
+                .map(|m| {
+                    let e = m.estimate(&z);
+                    Some((e.value, e.saturation.is_saturated()))
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// CSV text of the estimates: one column per target, then `saturated`.
+pub fn estimates_csv(target_names: &[&str], estimates: &[EstimateRow]) -> String {
+    let mut text = target_names.join(",") + ",saturated\n";
+    for row in estimates {
+        let cells: Vec<String> = row
+            .iter()
+            .map(|e| e.map(|(v, _)| format!("{v}")).unwrap_or_default())
+            .collect();
+        let saturated = if row.iter().all(Option::is_none) {
+            String::new()
+        } else {
+            u8::from(row.iter().any(|e| e.is_some_and(|(_, s)| s))).to_string()
+        };
+        text += &format!("{},{saturated}\n", cells.join(","));
+    }
+    text
+}
+
+/// CSV text of a simulated run: `time`, the states (true values), the outputs (with noise) and inputs.
+pub fn run_csv(design: &Design, run: &Run) -> String {
+    let names: Vec<&str> = std::iter::once("time")
+        .chain(design.model.states.iter().map(String::as_str))
+        .chain(design.model.outputs.iter().map(|o| o.name.as_str()))
+        .chain(design.model.inputs.iter().map(String::as_str))
+        .collect();
+    let mut text = names.join(",") + "\n";
+    for (k, ((x, y), u)) in run.states.iter().zip(&run.measurements).zip(&run.inputs).enumerate() {
+        let values: Vec<String> = std::iter::once(k as f64 * design.tau)
+            .chain(x.iter().copied())
+            .chain(y.iter().copied())
+            .chain(u.iter().copied())
+            .map(|v| format!("{v}"))
+            .collect();
+        text += &(values.join(",") + "\n");
+    }
+    text
+}
