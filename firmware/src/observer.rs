@@ -20,7 +20,27 @@ pub struct RejectedSample;
 /// Observer of `NT` targets from the last `N` samples of `NY` outputs and `NU` inputs.
 ///
 /// Memory is fixed at compile time (the ring buffer holds `N` samples); [`Observer::estimate`] runs
-/// the same instructions for every sample once the buffer is full.
+/// the same instructions for every sample once the buffer is full. Generated designs provide the
+/// tables and a constructor; by hand it looks like this:
+///
+/// ```
+/// use firmware::{Gamma, Observer, TargetMap};
+///
+/// // r = Γ⁻¹(0.5 y(k) + 0.5 y(k-1)) with Γ(η) = η on [0, 1], r ∈ [0, 10].
+/// static MAPS: [TargetMap<'static, f32>; 1] = [TargetMap {
+///     gains: &[0.5, 0.5],
+///     gamma: Gamma { offset: 0.0, weights: &[1.0], curvatures: &[0.0] },
+///     r_min: 0.0,
+///     r_span: 10.0,
+/// }];
+/// let mut observer: Observer<'_, f32, 2, 1, 0, 1> = Observer::new(&MAPS);
+/// observer.push([0.2], []).unwrap();
+/// assert!(observer.estimate().is_none()); // fewer than N = 2 samples
+/// observer.push([0.4], []).unwrap();
+/// assert!(observer.push([f32::NAN], []).is_err()); // refused, the window is unchanged
+/// let [r] = observer.estimate().unwrap();
+/// assert!((r.value - 3.0).abs() < 1e-5 && !r.saturation.is_saturated());
+/// ```
 pub struct Observer<'a, T, const N: usize, const NY: usize, const NU: usize, const NT: usize> {
     maps: &'a [TargetMap<'a, T>; NT],
     window: HistoryBuf<Sample<T, NY, NU>, N>,

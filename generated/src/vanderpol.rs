@@ -7,10 +7,11 @@
 //! Horizon N = 10 samples of τ = 0.1; outputs: y; inputs: none.
 //! Normalisation `intercept`, n_m = 5, β = 0.5.
 //!
-//! ```ignore
+//! ```
 //! let mut observer = generated::vanderpol::observer();
-//! observer.push(y, u)?;                       // every sample; a NaN or infinite sample is refused
-//! if let Some(estimates) = observer.estimate() { /* one per target, in TARGET_NAMES order */ }
+//! let (y, u) = ([0.0; generated::vanderpol::OUTPUTS], [0.0; generated::vanderpol::INPUTS]);
+//! observer.push(y, u).unwrap(); // every sample; a NaN or infinite one is refused
+//! assert!(observer.estimate().is_none()); // until HORIZON samples have arrived
 //! ```
 
 use firmware::{Gamma, TargetMap};

@@ -7,10 +7,11 @@
 //! Horizon N = {{ horizon }} samples of τ = {{ tau }}; outputs: {{ output_list }}; inputs: {{ input_list }}.
 //! Normalisation `{{ normalisation }}`, n_m = {{ nm }}, β = {{ beta }}.
 //!
-//! ```ignore
+//! ```
 //! let mut observer = generated::{{ name }}::observer();
-//! observer.push(y, u)?;                       // every sample; a NaN or infinite sample is refused
-//! if let Some(estimates) = observer.estimate() { /* one per target, in TARGET_NAMES order */ }
+//! let (y, u) = ([0.0; generated::{{ name }}::OUTPUTS], [0.0; generated::{{ name }}::INPUTS]);
+//! observer.push(y, u).unwrap(); // every sample; a NaN or infinite one is refused
+//! assert!(observer.estimate().is_none()); // until HORIZON samples have arrived
 //! ```
 
 use firmware::{Gamma, TargetMap};

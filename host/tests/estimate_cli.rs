@@ -1,0 +1,181 @@
+//! `host simulate` and `host estimate`: the paper's scenario from the command line, runs, refused
+//! samples, and clear errors that write nothing.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn host(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_host")).args(args).output().unwrap()
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("host-estimate-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+fn rows(text: &str) -> Vec<Vec<String>> {
+    text.lines()
+        .map(|l| l.split(',').map(str::to_owned).collect())
+        .collect()
+}
+
+#[test]
+fn paper_scenario_round_trip_matches_the_library() {
+    let dir = scratch("scenario");
+    let (run, estimates) = (dir.join("run.csv"), dir.join("estimates.csv"));
+    let out = host(&["simulate", "--design", "vanderpol", "--output", s(&run)]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let recorded = rows(&std::fs::read_to_string(&run).unwrap());
+    assert_eq!(recorded[0], ["time", "x1", "x2", "y"]);
+    assert_eq!(recorded.len(), 1 + 101);
+    assert_eq!((recorded[1][1].as_str(), recorded[1][2].as_str()), ("2", "0.5"));
+
+    let out = host(&[
+        "estimate",
+        "--design",
+        "vanderpol",
+        "--input",
+        s(&run),
+        "--output",
+        s(&estimates),
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let table = rows(&std::fs::read_to_string(&estimates).unwrap());
+    assert_eq!(table[0], ["x1", "x2", "saturated"]);
+    assert_eq!(table.len(), recorded.len());
+    // No estimate before N = 10 samples (the first correction at t = 0.9 s, as in the paper).
+    for row in &table[1..10] {
+        assert!(row.iter().all(String::is_empty), "{row:?}");
+    }
+    // From then on, the library estimate on the same window, to the last bit.
+    let design = host::spec::load(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/vanderpol.toml"))).unwrap();
+    let result = host::pipeline::run(&design, &indicatif::ProgressBar::hidden()).unwrap();
+    let y: Vec<f64> = recorded[1..].iter().map(|r| r[3].parse().unwrap()).collect();
+    let mut errors = [0.0f64; 2];
+    for k in 9..y.len() {
+        let z: Vec<f64> = (0..10).map(|lag| y[k - lag]).collect();
+        for t in 0..2 {
+            let expected = result.targets[t].fit.map.estimate(&z).value;
+            assert_eq!(table[1 + k][t].parse::<f64>().unwrap(), expected, "row {k} target {t}");
+            let truth: f64 = recorded[1 + k][1 + t].parse().unwrap();
+            errors[t] = errors[t].max((expected - truth).abs());
+        }
+    }
+    // The scenario starts inside the box: the estimates track the truth within the validation ε_x.
+    for (t, error) in errors.iter().enumerate() {
+        let bound = result.targets[t].validation.map.max_error;
+        assert!(*error <= bound * 1.5, "target {t}: {error} vs ε_x {bound}");
+    }
+}
+
+#[test]
+fn runs_restart_the_observer_and_refused_samples_leave_no_trace() {
+    let dir = scratch("runs");
+    let (input, output) = (dir.join("in.csv"), dir.join("out.csv"));
+    // Two runs of 12 samples, an extra ignored column, and a NaN in the second run at row 16.
+    let mut text = String::from("note,run,y\n");
+    for k in 0..24 {
+        let y = if k == 16 {
+            "NaN".to_owned()
+        } else {
+            format!("{}", (k as f64 * 0.37).sin() * 3.0)
+        };
+        text += &format!("n{k},{},{y}\n", if k < 12 { "a" } else { "b" });
+    }
+    std::fs::write(&input, &text).unwrap();
+    let out = host(&[
+        "estimate",
+        "--design",
+        "vanderpol",
+        "--input",
+        s(&input),
+        "--output",
+        s(&output),
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let table = rows(&std::fs::read_to_string(&output).unwrap());
+    let has_estimate: Vec<bool> = table[1..].iter().map(|r| !r[0].is_empty()).collect();
+    // Run b accepts rows 12-15 and 17-23: its 10th accepted sample is row 22.
+    let expected: Vec<bool> = (0..24).map(|k| matches!(k, 9..=11) || (k >= 22)).collect();
+    assert_eq!(
+        has_estimate, expected,
+        "estimates from the 10th accepted sample of each run"
+    );
+    // The refused row leaves no trace: the same file without it gives the same last estimates.
+    let without: String = text
+        .lines()
+        .enumerate()
+        .filter(|(i, _)| *i != 1 + 16)
+        .map(|(_, l)| format!("{l}\n"))
+        .collect();
+    let (input2, output2) = (dir.join("in2.csv"), dir.join("out2.csv"));
+    std::fs::write(&input2, without).unwrap();
+    assert!(host(&[
+        "estimate",
+        "--design",
+        "vanderpol",
+        "--input",
+        s(&input2),
+        "--output",
+        s(&output2)
+    ])
+    .status
+    .success());
+    let table2 = rows(&std::fs::read_to_string(&output2).unwrap());
+    assert_eq!(table[table.len() - 2..], table2[table2.len() - 2..]);
+}
+
+#[test]
+fn bad_recordings_are_refused_with_line_and_column_and_nothing_is_written() {
+    let dir = scratch("bad");
+    let output = dir.join("out.csv");
+    let cases = [
+        ("missing.csv", "time,z\n0,1\n", vec!["no column `y`", "missing.csv"]),
+        (
+            "text.csv",
+            "time,y\n0,1\n0.1,abc\n",
+            vec!["line 3", "column `y`", "`abc`"],
+        ),
+        ("empty.csv", "time,y\n0,1\n0.1,\n", vec!["line 3", "column `y`"]),
+    ];
+    for (name, text, expected) in cases {
+        let input = dir.join(name);
+        std::fs::write(&input, text).unwrap();
+        let out = host(&[
+            "estimate",
+            "--design",
+            "vanderpol",
+            "--input",
+            s(&input),
+            "--output",
+            s(&output),
+        ]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success());
+        for e in expected {
+            assert!(stderr.contains(e), "{name}: {stderr}");
+        }
+        assert!(!output.exists(), "{name}: an output was written");
+    }
+    let out = host(&[
+        "estimate",
+        "--design",
+        "nosuch",
+        "--input",
+        "x.csv",
+        "--output",
+        s(&output),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        !out.status.success() && stderr.contains("unknown design `nosuch`") && stderr.contains("vanderpol"),
+        "{stderr}"
+    );
+    assert!(!output.exists());
+}
