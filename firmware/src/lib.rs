@@ -28,11 +28,13 @@
 #![warn(missing_docs)]
 
 pub mod basis;
+pub mod family;
 pub mod gamma;
 pub mod map;
 pub mod observer;
 pub mod scalar;
 
+pub use family::{FamilyObserver, Member};
 pub use gamma::{Gamma, Inverse, Saturation};
 pub use map::{Estimate, TargetMap};
 pub use observer::{Observer, RejectedSample, Sample};

@@ -3,7 +3,7 @@
 //! One module per design spec; each holds constant tables, an `Observer` type and `observer()`.
 //!
 //! ```
-//! use generated::vanderpol as design;
+//! use generated::ecoli_x0_0p5 as design;
 //!
 //! let mut observer = design::observer(); // fixed memory: the last HORIZON samples
 //! for k in 0..20 {
@@ -23,13 +23,55 @@
 
 pub use firmware;
 
+pub mod ecoli_x0_0p5;
+pub mod ecoli_x0_2;
 pub mod vanderpol;
+
+/// Family `ecoli`: one design per value of output `X_meas` at the start of a batch
+/// (`ecoli_x0_0p5` at 0.5, `ecoli_x0_2` at 2.0). Its observer
+/// uses the member whose value is nearest the batch's first accepted measurement of that output.
+pub mod ecoli {
+    use super::ecoli_x0_0p5 as first;
+
+    /// The members, by increasing value.
+    pub static MEMBERS: [firmware::Member<'static, f32, { first::TARGETS }>; 2] = [
+        firmware::Member {
+            value: 0.5,
+            maps: &super::ecoli_x0_0p5::MAPS,
+        },
+        firmware::Member {
+            value: 2.0,
+            maps: &super::ecoli_x0_2::MAPS,
+        },
+    ];
+
+    /// Index of the output that selects the member.
+    pub const SELECTING_OUTPUT: usize = 0;
+
+    /// The family's observer.
+    pub type Observer = firmware::FamilyObserver<
+        'static,
+        f32,
+        { first::HORIZON },
+        { first::OUTPUTS },
+        { first::INPUTS },
+        { first::TARGETS },
+        2,
+    >;
+
+    /// A fresh family observer; call `reset` at the start of each batch.
+    pub const fn observer() -> Observer {
+        firmware::FamilyObserver::new(&MEMBERS, SELECTING_OUTPUT)
+    }
+}
 
 /// Invokes `$callback!(design)` for every design module, for code that treats them all alike
 /// (the generated-vs-library tests, the on-target runner).
 #[macro_export]
 macro_rules! for_each_design {
     ($callback:ident) => {
+        $callback!(ecoli_x0_0p5);
+        $callback!(ecoli_x0_2);
         $callback!(vanderpol);
     };
 }

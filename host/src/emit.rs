@@ -108,6 +108,82 @@ struct DesignFile {
 struct LibFile<'a> {
     version: &'static str,
     designs: &'a [String],
+    families: &'a [FamilyModule],
+}
+
+/// A family module of `lib.rs`: its members, sorted by their value of the selecting output.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FamilyModule {
+    /// Module name.
+    pub name: String,
+    /// Index of the selecting output.
+    pub output: usize,
+    /// Its name.
+    pub output_name: String,
+    /// `(design module, value literal)`, by increasing value.
+    pub members: Vec<(String, String)>,
+}
+
+/// The family modules of the designs whose files are `present`: members of one family must share
+/// the horizon, the outputs, the inputs and the targets (one observer type serves them all).
+pub fn families(designs: &[Design], present: &[String]) -> Result<Vec<FamilyModule>, String> {
+    let mut modules: Vec<(FamilyModule, &Design, Vec<(f64, String)>)> = Vec::new();
+    for design in designs.iter().filter(|d| present.contains(&d.name)) {
+        let Some(family) = &design.family else { continue };
+        let value = f32_literal("family.value", family.value).map_err(|e| format!("{}: {e}", design.file.display()))?;
+        match modules.iter_mut().find(|(m, _, _)| m.name == family.name) {
+            Some((module, first, members)) => {
+                let outputs = |d: &Design| d.model.outputs.iter().map(|o| o.name.clone()).collect::<Vec<_>>();
+                let targets = |d: &Design| d.targets.iter().map(|t| t.name.clone()).collect::<Vec<_>>();
+                let same = first.map.horizon == design.map.horizon
+                    && outputs(first) == outputs(design)
+                    && first.model.inputs == design.model.inputs
+                    && targets(first) == targets(design)
+                    && module.output == family.output;
+                if !same {
+                    return Err(format!(
+                        "{}: `family`: design `{}` cannot join family `{}` of `{}`: members must share the horizon, outputs, inputs, targets and selecting output",
+                        design.file.display(), design.name, family.name, first.name
+                    ));
+                }
+                members.push((family.value, design.name.clone()));
+                module.members.push((design.name.clone(), value));
+            }
+            None => {
+                let module = FamilyModule {
+                    name: family.name.clone(),
+                    output: family.output,
+                    output_name: design.model.outputs[family.output].name.clone(),
+                    members: vec![(design.name.clone(), value)],
+                };
+                modules.push((module, design, vec![(family.value, design.name.clone())]));
+            }
+        }
+    }
+    let mut out: Vec<FamilyModule> = modules
+        .into_iter()
+        .map(|(mut module, _, mut values)| {
+            values.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let literal = |name: &String| {
+                module
+                    .members
+                    .iter()
+                    .find(|(n, _)| n == name)
+                    .map(|(_, v)| v.clone())
+                    .unwrap_or_default()
+            };
+            module.members = values.iter().map(|(_, name)| (name.clone(), literal(name))).collect();
+            module
+        })
+        .collect();
+    out.sort_by(|a, b| a.name.cmp(&b.name));
+    if let Some(clash) = out.iter().find(|f| present.contains(&f.name)) {
+        return Err(format!(
+            "family `{}` has the name of a design: rename one of them",
+            clash.name
+        ));
+    }
+    Ok(out)
 }
 
 /// The spec path as it should appear in generated files: relative to the workspace when inside it,
@@ -191,11 +267,12 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
         .map_err(|e| EmitError::Template(e.to_string()))
 }
 
-/// The text of `generated/src/lib.rs` declaring `designs` (sorted by the caller).
-pub fn lib_file(designs: &[String]) -> Result<String, EmitError> {
+/// The text of `generated/src/lib.rs` declaring `designs` (sorted by the caller) and `families`.
+pub fn lib_file(designs: &[String], families: &[FamilyModule]) -> Result<String, EmitError> {
     LibFile {
         version: env!("CARGO_PKG_VERSION"),
         designs,
+        families,
     }
     .render()
     .map(|text| text + "\n")

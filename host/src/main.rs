@@ -150,6 +150,8 @@ fn progress_bar(design: &spec::Design) -> ProgressBar {
 
 fn gen(specs: Vec<PathBuf>, reports: &Path, generated: &Path) -> Result<(), String> {
     let specs = if specs.is_empty() { shipped_specs()? } else { specs };
+    let sources = generated.join("src");
+    std::fs::create_dir_all(&sources).map_err(|e| format!("cannot create {}: {e}", sources.display()))?;
     let mut failures = 0;
     for path in &specs {
         if let Err(message) = gen_one(path, reports, generated) {
@@ -158,7 +160,6 @@ fn gen(specs: Vec<PathBuf>, reports: &Path, generated: &Path) -> Result<(), Stri
         }
     }
     // lib.rs declares every design file present, old ones included: nothing written before is lost.
-    let sources = generated.join("src");
     let mut designs: Vec<String> = std::fs::read_dir(&sources)
         .map_err(|e| format!("cannot list {}: {e}", sources.display()))?
         .filter_map(|e| e.ok()?.file_name().into_string().ok())
@@ -166,7 +167,17 @@ fn gen(specs: Vec<PathBuf>, reports: &Path, generated: &Path) -> Result<(), Stri
         .filter(|f| f != "lib")
         .collect();
     designs.sort();
-    let lib = emit::lib_file(&designs).map_err(|e| e.to_string())?;
+    // Families are known from the specs: the shipped ones and those given here (which take precedence).
+    let mut known: Vec<spec::Design> = Vec::new();
+    for path in specs.iter().chain(&shipped_specs()?) {
+        if let Ok(design) = spec::load(path) {
+            if !known.iter().any(|d| d.name == design.name) {
+                known.push(design);
+            }
+        }
+    }
+    let families = emit::families(&known, &designs)?;
+    let lib = emit::lib_file(&designs, &families).map_err(|e| e.to_string())?;
     output::write_if_changed(&sources.join("lib.rs"), &lib).map_err(|e| format!("{}: {e}", sources.display()))?;
     if failures > 0 {
         return Err(format!(

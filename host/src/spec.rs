@@ -131,6 +131,19 @@ pub struct Scenario {
     pub seed: u64,
 }
 
+/// Membership of a family of designs that differ by the value of one measured output at the start of
+/// a batch (the paper's Example 2: one design per initial biomass). The firmware picks the member whose
+/// `value` is nearest to that output's first measurement.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Family {
+    /// The family's name (a lower-case identifier: it names a module in `generated/`).
+    pub name: String,
+    /// Index of the output that selects the member.
+    pub output: usize,
+    /// This member's value of that output.
+    pub value: f64,
+}
+
 /// A quantity to estimate, `r = g(x)`.
 #[derive(Clone, Debug)]
 pub struct Target {
@@ -165,6 +178,8 @@ pub struct Design {
     pub targets: Vec<Target>,
     /// The estimation scenario, if the spec has one.
     pub scenario: Option<Scenario>,
+    /// The family this design belongs to, if any.
+    pub family: Option<Family>,
     /// SHA-256 of the spec text, in hex (provenance of generated files).
     pub spec_sha256: String,
 }
@@ -179,6 +194,15 @@ impl Design {
             fix: fix.into(),
         }
     }
+}
+
+/// A lower-case identifier that is not a Rust keyword: usable as a module name in `generated/`.
+fn is_module_name(name: &str) -> bool {
+    name.chars().next().is_some_and(|c| c.is_ascii_lowercase())
+        && name
+            .chars()
+            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
+        && !RUST_KEYWORDS.contains(&name)
 }
 
 /// Names that cannot be a Rust module (the design name becomes one in `generated/`).
@@ -206,6 +230,15 @@ struct RawSpec {
     map: RawMap,
     targets: Vec<RawNamedExpr>,
     scenario: Option<RawScenario>,
+    family: Option<RawFamily>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawFamily {
+    name: String,
+    output: String,
+    value: f64,
 }
 
 #[derive(Deserialize)]
@@ -389,12 +422,7 @@ impl Validator {
     }
 
     fn design(&self, raw: RawSpec) -> Result<Design, SpecError> {
-        let name_ok = raw.name.chars().next().is_some_and(|c| c.is_ascii_lowercase())
-            && raw
-                .name
-                .chars()
-                .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
-            && !RUST_KEYWORDS.contains(&raw.name.as_str());
+        let name_ok = is_module_name(&raw.name);
         if !name_ok {
             return Err(self.err(
                 "name",
@@ -415,6 +443,11 @@ impl Validator {
         let learning = self.learning(&raw.learning, &model, map.horizon)?;
         let validation = self.validation(&raw.validation, map.horizon)?;
         let targets = self.targets(&raw.targets, &model)?;
+        let family = raw
+            .family
+            .as_ref()
+            .map(|f| self.family(f, &model, &raw.name))
+            .transpose()?;
         let scenario = raw
             .scenario
             .as_ref()
@@ -432,7 +465,38 @@ impl Validator {
             map,
             targets,
             scenario,
+            family,
             spec_sha256: String::new(),
+        })
+    }
+
+    fn family(&self, raw: &RawFamily, model: &Model, design: &str) -> Result<Family, SpecError> {
+        if !is_module_name(&raw.name) || raw.name == design {
+            return Err(self.err(
+                "family.name",
+                format!("`{}` cannot name the family's module", raw.name),
+                "use a lower-case identifier that is not a Rust keyword and differs from every design name",
+            ));
+        }
+        let output = model.outputs.iter().position(|o| o.name == raw.output).ok_or_else(|| {
+            let names: Vec<&str> = model.outputs.iter().map(|o| o.name.as_str()).collect();
+            self.err(
+                "family.output",
+                format!("`{}` is not an output", raw.output),
+                format!("name one of the outputs: {}", names.join(", ")),
+            )
+        })?;
+        if !raw.value.is_finite() {
+            return Err(self.err(
+                "family.value",
+                format!("{} is not finite", raw.value),
+                "give this member's value of the output",
+            ));
+        }
+        Ok(Family {
+            name: raw.name.clone(),
+            output,
+            value: raw.value,
         })
     }
 

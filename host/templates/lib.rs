@@ -28,6 +28,46 @@ pub use firmware;
 pub mod {{ name }};
 {%- endfor %}
 
+{%- for f in families %}
+{%- let first = f.members[0].0.clone() %}
+
+/// Family `{{ f.name }}`: one design per value of output `{{ f.output_name }}` at the start of a batch
+/// ({% for m in f.members %}`{{ m.0 }}` at {{ m.1 }}{% if !loop.last %}, {% endif %}{% endfor %}). Its observer
+/// uses the member whose value is nearest the batch's first accepted measurement of that output.
+pub mod {{ f.name }} {
+    use super::{{ first }} as first;
+
+    /// The members, by increasing value.
+    pub static MEMBERS: [firmware::Member<'static, f32, { first::TARGETS }>; {{ f.members.len() }}] = [
+{%- for m in f.members %}
+        firmware::Member {
+            value: {{ m.1 }},
+            maps: &super::{{ m.0 }}::MAPS,
+        },
+{%- endfor %}
+    ];
+
+    /// Index of the output that selects the member.
+    pub const SELECTING_OUTPUT: usize = {{ f.output }};
+
+    /// The family's observer.
+    pub type Observer = firmware::FamilyObserver<
+        'static,
+        f32,
+        { first::HORIZON },
+        { first::OUTPUTS },
+        { first::INPUTS },
+        { first::TARGETS },
+        {{ f.members.len() }},
+    >;
+
+    /// A fresh family observer; call `reset` at the start of each batch.
+    pub const fn observer() -> Observer {
+        firmware::FamilyObserver::new(&MEMBERS, SELECTING_OUTPUT)
+    }
+}
+{%- endfor %}
+
 /// Invokes `$callback!(design)` for every design module, for code that treats them all alike
 /// (the generated-vs-library tests, the on-target runner).
 #[macro_export]
