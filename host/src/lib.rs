@@ -17,6 +17,7 @@ pub mod model;
 pub mod monotonicity;
 pub mod output;
 pub mod pipeline;
+pub mod plots;
 pub mod qp;
 pub mod recording;
 pub mod report;

@@ -8,7 +8,7 @@ use clap::{Args, Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use rand::SeedableRng;
 
-use host::{data, emit, output, pipeline, recording, report, spec};
+use host::{data, emit, output, pipeline, plots, recording, report, spec};
 
 /// Off-line moving-horizon observer design: simulate, fit r = Γ⁻¹(Lᵀ Z), validate, report, emit Rust.
 #[derive(Parser)]
@@ -199,6 +199,7 @@ fn gen_one(path: &Path, reports: &Path, generated: &Path) -> Result<(), String> 
     let folder = reports.join(&design.name);
     let written =
         report::write(&report, &folder).map_err(|e| format!("{}: cannot write the report: {e}", folder.display()))?;
+    let figures = plots::draw(&design, &result, &folder).map_err(|e| format!("cannot draw the figures: {e}"))?;
     let target = generated.join("src").join(format!("{}.rs", design.name));
     let changed = output::write_if_changed(&target, &source).map_err(|e| format!("{}: {e}", target.display()))?;
     println!(
@@ -214,8 +215,10 @@ fn gen_one(path: &Path, reports: &Path, generated: &Path) -> Result<(), String> 
     );
     print!("{}", report::table(&report));
     println!(
-        "\n  report: {}\n  observer: {} ({})\n",
+        "\n  report: {}\n  figures: {} files in {}\n  observer: {} ({})\n",
         written[1].display(),
+        figures.len(),
+        folder.display(),
         target.display(),
         if changed { "updated" } else { "unchanged" }
     );

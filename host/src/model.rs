@@ -20,6 +20,8 @@ pub struct Output {
     pub expr: Expression,
     /// Variance of the white Gaussian noise added to it.
     pub noise_variance: f64,
+    /// Its unit, for plots and reports ("" when dimensionless).
+    pub unit: String,
 }
 
 /// The continuous-time model. Expressions read one environment
@@ -61,8 +63,8 @@ pub struct ModelText<'a> {
     pub definitions: &'a [(String, String)],
     /// `dx/dt` text per state, in state order.
     pub derivatives: &'a [String],
-    /// `(name, expression, noise variance)` per output.
-    pub outputs: &'a [(String, String, f64)],
+    /// `(name, expression, noise variance, unit)` per output.
+    pub outputs: &'a [(String, String, f64, String)],
 }
 
 impl Model {
@@ -98,7 +100,7 @@ impl Model {
             .outputs
             .iter()
             .enumerate()
-            .map(|(i, (name, expr, noise_variance))| {
+            .map(|(i, (name, expr, noise_variance, unit))| {
                 let expr = Expression::compile(expr, &scope).map_err(|error| ModelError {
                     field: format!("model.outputs[{i}].expr"),
                     error,
@@ -107,6 +109,7 @@ impl Model {
                     name: name.clone(),
                     expr,
                     noise_variance: *noise_variance,
+                    unit: unit.clone(),
                 })
             })
             .collect::<Result<_, _>>()?;

@@ -183,7 +183,10 @@ pub fn markdown(report: &Report<'_>) -> String {
         "\n*ratio*: validation RMSE of the map over that of the plain linear least-squares map `Lᵀ Z + c` on the same data \
          (below 1: the nonlinear map beats the floor). *max error validation* is the paper's empirical ε_x. \
          *saturated*: windows where Γ⁻¹ clamped the estimate to the learning range. *collapsed*: Γ is a straight \
-         line (≥ 90 % of the monotonicity constraints active). Full figures and the fitted coefficients: `report.json`.\n",
+         line (≥ 90 % of the monotonicity constraints active). Full figures and the fitted coefficients: `report.json`.\n\n\
+         Figures (PNG and SVG): `measurements` (the scenario's measured outputs and their noise, paper Fig. 1/5), \
+         `identification` (identified against true on the learning windows, and dΓ/dr, Fig. 2 left/Fig. 3), \
+         `estimation` (the observer along the scenario, Fig. 2 right/Fig. 4).\n",
     );
     s
 }

@@ -98,7 +98,7 @@ mod tests {
             parameters: &[],
             definitions: &[],
             derivatives: &derivatives,
-            outputs: &[("y".into(), "x1".into(), 0.0)],
+            outputs: &[("y".into(), "x1".into(), 0.0, String::new())],
         })
         .unwrap()
     }

@@ -149,6 +149,8 @@ pub struct Family {
 pub struct Target {
     /// Its name.
     pub name: String,
+    /// Its unit, for plots and reports ("" when dimensionless).
+    pub unit: String,
     /// `g`, over the model's scope.
     pub expr: Expression,
 }
@@ -166,6 +168,8 @@ pub struct Design {
     pub model: Model,
     /// Sample period `τ`.
     pub tau: f64,
+    /// Unit of time (of `τ`), for plots and reports.
+    pub time_unit: String,
     /// RK4 steps per sample period.
     pub substeps: usize,
     /// The learning set.
@@ -268,6 +272,8 @@ struct RawModel {
 struct RawNamedExpr {
     name: String,
     expr: String,
+    #[serde(default)]
+    unit: String,
 }
 
 #[derive(Deserialize)]
@@ -276,14 +282,22 @@ struct RawOutput {
     name: String,
     expr: String,
     noise_variance: f64,
+    #[serde(default)]
+    unit: String,
 }
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawSampling {
     tau: f64,
+    #[serde(default = "default_time_unit")]
+    time_unit: String,
     #[serde(default = "default_substeps")]
     substeps: usize,
+}
+
+fn default_time_unit() -> String {
+    "s".into()
 }
 
 fn default_substeps() -> usize {
@@ -459,6 +473,7 @@ impl Validator {
             description: raw.description,
             model,
             tau,
+            time_unit: raw.sampling.time_unit.clone(),
             substeps: raw.sampling.substeps,
             learning,
             validation,
@@ -628,10 +643,10 @@ impl Validator {
             .iter()
             .map(|d| (d.name.clone(), d.expr.clone()))
             .collect();
-        let outputs: Vec<(String, String, f64)> = raw
+        let outputs: Vec<(String, String, f64, String)> = raw
             .outputs
             .iter()
-            .map(|o| (o.name.clone(), o.expr.clone(), o.noise_variance))
+            .map(|o| (o.name.clone(), o.expr.clone(), o.noise_variance, o.unit.clone()))
             .collect();
         Model::compile(&ModelText {
             states: &raw.states,
@@ -868,6 +883,7 @@ impl Validator {
                 .map_err(|e| self.err(format!("targets[{i}].expr"), e.to_string(), e.fix()))?;
             targets.push(Target {
                 name: t.name.clone(),
+                unit: t.unit.clone(),
                 expr,
             });
         }

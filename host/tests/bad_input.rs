@@ -162,6 +162,8 @@ fn command_line_exits_non_zero_without_panic_and_keeps_earlier_reports() {
         .arg(&spec_path)
         .arg("--reports")
         .arg(&reports)
+        .arg("--generated")
+        .arg(dir.join("generated"))
         .env("RUST_BACKTRACE", "1")
         .output()
         .unwrap();

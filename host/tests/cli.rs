@@ -10,6 +10,8 @@ fn gen_writes_the_report_and_prints_a_summary() {
     let output = Command::new(env!("CARGO_BIN_EXE_host"))
         .args(["gen", "--spec", spec, "--reports"])
         .arg(&reports)
+        .arg("--generated")
+        .arg(reports.join("generated"))
         .output()
         .unwrap();
     let stdout = String::from_utf8_lossy(&output.stdout);
@@ -35,7 +37,28 @@ fn gen_writes_the_report_and_prints_a_summary() {
         assert!(qp["active_constraints"].as_u64().unwrap() <= qp["constraints"].as_u64().unwrap());
         assert!(qp["collapsed"].is_boolean());
     }
+    // The paper's figures, as PNG and SVG, titled with the design and labelled with names and units.
+    for figure in ["measurements", "identification", "estimation"] {
+        let png = std::fs::read(reports.join(format!("vanderpol/{figure}.png"))).unwrap();
+        assert!(
+            png.starts_with(b"\x89PNG\r\n\x1a\n") && png.len() > 10_000,
+            "{figure}.png"
+        );
+        let svg = std::fs::read_to_string(reports.join(format!("vanderpol/{figure}.svg"))).unwrap();
+        assert!(
+            svg.contains("<svg") && svg.contains("vanderpol:") && svg.contains("x1"),
+            "{figure}.svg"
+        );
+    }
+    let svg = std::fs::read_to_string(reports.join("vanderpol/measurements.svg")).unwrap();
+    assert!(svg.contains("time [s]") && svg.contains("noise variance 0.2"));
     let markdown = std::fs::read_to_string(reports.join("vanderpol/report.md")).unwrap();
+    // The observer is emitted where it was asked for, with a lib.rs declaring it.
+    let emitted = std::fs::read_to_string(reports.join("generated/src/vanderpol.rs")).unwrap();
+    assert!(emitted.contains("pub const MAP_X1: TargetMap<'static, f32>"));
+    assert!(std::fs::read_to_string(reports.join("generated/src/lib.rs"))
+        .unwrap()
+        .contains("pub mod vanderpol;"));
     assert!(markdown.contains("| x1 |") && markdown.contains("n_E = 1456"));
     // No temporary file is left behind.
     let leftovers: Vec<_> = std::fs::read_dir(reports.join("vanderpol"))
