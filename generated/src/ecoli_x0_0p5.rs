@@ -115,3 +115,56 @@ pub type Observer = firmware::Observer<'static, f32, HORIZON, OUTPUTS, INPUTS, T
 pub const fn observer() -> Observer {
     firmware::Observer::new(&MAPS)
 }
+
+/// Length of the recorded sequence.
+pub const RECORDED_LEN: usize = 40;
+
+/// A recorded measurement sequence for tests and examples: the spec's scenario as measured, outputs
+/// per sample, with the first output of samples 13 and 26 replaced by NaN and +∞, which
+/// the observer must refuse without disturbing later estimates.
+#[rustfmt::skip]
+pub static RECORDED_Y: [[f32; OUTPUTS]; RECORDED_LEN] = [
+    [0.37658376, 16.154654],
+    [0.37775463, 22.902784],
+    [0.96814555, 31.717264],
+    [0.22636451, 31.587463],
+    [0.6925254, 28.586182],
+    [0.44593865, 35.74584],
+    [0.29382837, 38.214996],
+    [0.60949767, 29.328823],
+    [0.76124406, 43.423798],
+    [0.92819667, 42.442142],
+    [0.8829845, 40.336086],
+    [0.70924306, 53.303123],
+    [0.8557356, 51.566063],
+    [f32::NAN, 52.394047],
+    [0.91066164, 59.703453],
+    [0.90330505, 65.173134],
+    [0.76617664, 73.31009],
+    [0.8200834, 71.97153],
+    [0.85298824, 80.05255],
+    [0.75963175, 85.18815],
+    [0.9480243, 90.40428],
+    [0.4234616, 90.82417],
+    [1.5386744, 102.34552],
+    [1.7817969, 110.25211],
+    [1.1387086, 115.47698],
+    [1.4201397, 124.791016],
+    [f32::INFINITY, 140.19864],
+    [0.81045675, 140.50327],
+    [1.23047, 152.93304],
+    [1.2337528, 162.49043],
+    [1.6166624, 175.341],
+    [1.5653749, 179.76448],
+    [1.7922543, 194.53264],
+    [1.2752243, 201.15483],
+    [1.4665395, 212.07208],
+    [1.8631636, 243.43564],
+    [1.8887589, 243.43134],
+    [1.6030257, 264.19815],
+    [2.092444, 268.6263],
+    [2.1883585, 285.53195],
+];
+
+/// The inputs of the recorded sequence, per sample.
+pub static RECORDED_U: [[f32; INPUTS]; RECORDED_LEN] = [[]; RECORDED_LEN];

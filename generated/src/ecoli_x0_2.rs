@@ -115,3 +115,56 @@ pub type Observer = firmware::Observer<'static, f32, HORIZON, OUTPUTS, INPUTS, T
 pub const fn observer() -> Observer {
     firmware::Observer::new(&MAPS)
 }
+
+/// Length of the recorded sequence.
+pub const RECORDED_LEN: usize = 40;
+
+/// A recorded measurement sequence for tests and examples: the spec's scenario as measured, outputs
+/// per sample, with the first output of samples 13 and 26 replaced by NaN and +∞, which
+/// the observer must refuse without disturbing later estimates.
+#[rustfmt::skip]
+pub static RECORDED_Y: [[f32; OUTPUTS]; RECORDED_LEN] = [
+    [2.0539687, 94.85927],
+    [1.639534, 119.73378],
+    [2.5249238, 121.11807],
+    [1.7473223, 144.67665],
+    [2.0909364, 166.70752],
+    [1.9221622, 182.18889],
+    [1.8701221, 205.30905],
+    [2.5497372, 231.84146],
+    [2.2552361, 252.46541],
+    [2.5970564, 281.52188],
+    [2.8457515, 306.66763],
+    [3.2669592, 329.61475],
+    [3.3197963, 369.6287],
+    [f32::NAN, 409.5264],
+    [3.4819872, 437.0556],
+    [3.3169062, 478.04407],
+    [3.7241085, 510.2142],
+    [3.6599066, 542.18243],
+    [3.1624029, 559.1089],
+    [3.5010433, 572.7143],
+    [3.5707223, 536.43097],
+    [3.9408906, 425.85553],
+    [4.240629, 135.79227],
+    [4.375226, -2.0792453],
+    [3.7861173, 3.3431914],
+    [3.7709923, 1.0254762],
+    [f32::INFINITY, -2.5909278],
+    [3.8132896, 4.2998943],
+    [3.628325, 6.141297],
+    [4.399709, 0.11153215],
+    [3.3667657, 3.0137427],
+    [4.226666, -3.6676495],
+    [3.7820473, -2.258145],
+    [3.1948311, -4.171996],
+    [3.4872537, -3.3525798],
+    [3.5523257, -3.8670273],
+    [3.9063027, 2.5576308],
+    [3.1930807, -3.705246],
+    [3.8369095, -3.1907303],
+    [3.6960254, -0.18398552],
+];
+
+/// The inputs of the recorded sequence, per sample.
+pub static RECORDED_U: [[f32; INPUTS]; RECORDED_LEN] = [[]; RECORDED_LEN];

@@ -101,6 +101,44 @@ struct DesignFile {
     curvature_count: usize,
     curvatures: String,
     targets: Vec<TargetTables>,
+    recorded_len: usize,
+    recorded_y: String,
+    recorded_u: String,
+    refused: Vec<usize>,
+}
+
+/// Samples of the recorded sequence where a value is replaced by NaN, then by +∞, so that every
+/// consumer of it (the on-target program, tests) checks that such samples are refused harmlessly.
+pub fn refused_samples(len: usize) -> Vec<usize> {
+    if len >= 3 {
+        vec![len / 3, 2 * len / 3]
+    } else {
+        vec![]
+    }
+}
+
+/// Rows `[v, …],` of a recorded sequence, one sample per line, with the refused samples' first value
+/// replaced by `f32::NAN` or `f32::INFINITY`.
+fn recorded_rows(what: &str, rows: &[Vec<f64>], corrupt: bool) -> Result<String, EmitError> {
+    let refused = refused_samples(rows.len());
+    let mut text = Vec::new();
+    for (k, row) in rows.iter().enumerate() {
+        let mut cells = row
+            .iter()
+            .enumerate()
+            .map(|(i, &v)| f32_literal(&format!("{what}[{k}][{i}]"), v))
+            .collect::<Result<Vec<_>, _>>()?;
+        if let (true, Some(position), Some(first)) = (corrupt, refused.iter().position(|&r| r == k), cells.first_mut())
+        {
+            *first = if position == 0 {
+                "f32::NAN".into()
+            } else {
+                "f32::INFINITY".into()
+            };
+        }
+        text.push(format!("    [{}],", cells.join(", ")));
+    }
+    Ok(text.join("\n"))
 }
 
 #[derive(Template)]
@@ -261,6 +299,14 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
         curvature_count: curvatures.len(),
         curvatures: literal_block("curvatures", &curvatures, 4)?,
         targets,
+        recorded_len: result.scenario.measurements.len(),
+        recorded_y: recorded_rows(
+            "recorded y",
+            &result.scenario.measurements,
+            !design.model.outputs.is_empty(),
+        )?,
+        recorded_u: recorded_rows("recorded u", &result.scenario.inputs, false)?,
+        refused: refused_samples(result.scenario.measurements.len()),
     };
     file.render()
         .map(|text| text + "\n")

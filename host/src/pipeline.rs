@@ -2,7 +2,7 @@
 
 use indicatif::ProgressBar;
 
-use crate::data::{self, DataSet};
+use crate::data::{self, DataSet, Run};
 use crate::evaluate::{evaluate, Evaluation};
 use crate::identify::{self, Fit, FitError};
 use crate::qp::QpError;
@@ -30,6 +30,8 @@ pub struct DesignResult {
     pub validation: DataSet,
     /// One result per target, in spec order.
     pub targets: Vec<TargetResult>,
+    /// The estimation run: the spec's `[scenario]`, else the first validation run.
+    pub scenario: Run,
 }
 
 /// Steps [`run`] reports to its progress bar.
@@ -58,10 +60,18 @@ pub fn run(design: &Design, progress: &ProgressBar) -> Result<DesignResult, Spec
         targets.push(result);
         progress.inc(1);
     }
+    let scenario = match &design.scenario {
+        Some(s) => {
+            let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(s.seed);
+            data::simulate_run(design, &s.x0, s.samples, &mut rng, "scenario")?
+        }
+        None => validation.runs[0].clone(),
+    };
     Ok(DesignResult {
         learning,
         validation,
         targets,
+        scenario,
     })
 }
 

@@ -174,27 +174,11 @@ const TRUE_COLOR: RGBColor = RGBColor(31, 119, 180);
 const ESTIMATE_COLOR: RGBColor = RGBColor(214, 39, 40);
 const NOISE_COLOR: RGBColor = RGBColor(90, 90, 90);
 
-/// The run the estimation figures use: the spec's scenario, else the first validation run.
-pub fn scenario_run(design: &Design, result: &DesignResult) -> Result<Run, String> {
-    match &design.scenario {
-        Some(s) => {
-            let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(s.seed);
-            crate::data::simulate_run(design, &s.x0, s.samples, &mut rng, "scenario").map_err(|e| e.to_string())
-        }
-        None => result
-            .validation
-            .runs
-            .first()
-            .cloned()
-            .ok_or_else(|| "no validation run".to_owned()),
-    }
-}
-
 /// Draws the three figures of `design` into `folder`; returns the files written.
 pub fn draw(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec<PathBuf>, String> {
     register_font();
     std::fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
-    let run = scenario_run(design, result)?;
+    let run = &result.scenario;
     let time_label = with_unit("time", &design.time_unit);
     let times: Vec<f64> = (0..run.states.len()).map(|k| k as f64 * design.tau).collect();
     let mut files = Vec::new();

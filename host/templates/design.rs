@@ -68,3 +68,24 @@ pub type Observer = firmware::Observer<'static, f32, HORIZON, OUTPUTS, INPUTS, T
 pub const fn observer() -> Observer {
     firmware::Observer::new(&MAPS)
 }
+
+/// Length of the recorded sequence.
+pub const RECORDED_LEN: usize = {{ recorded_len }};
+
+/// A recorded measurement sequence for tests and examples: the spec's scenario as measured, outputs
+/// per sample, with the first output of samples {% for k in refused %}{{ k }}{% if !loop.last %} and {% endif %}{% endfor %} replaced by NaN and +∞, which
+/// the observer must refuse without disturbing later estimates.
+#[rustfmt::skip]
+pub static RECORDED_Y: [[f32; OUTPUTS]; RECORDED_LEN] = [
+{{ recorded_y }}
+];
+
+/// The inputs of the recorded sequence, per sample.
+{%- if inputs.is_empty() %}
+pub static RECORDED_U: [[f32; INPUTS]; RECORDED_LEN] = [[]; RECORDED_LEN];
+{%- else %}
+#[rustfmt::skip]
+pub static RECORDED_U: [[f32; INPUTS]; RECORDED_LEN] = [
+{{ recorded_u }}
+];
+{%- endif %}
