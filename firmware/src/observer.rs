@@ -1,6 +1,6 @@
 //! The run-time observer: the last `N` samples in a ring buffer, one estimate per target.
 
-use heapless::HistoryBuf;
+use heapless::Deque;
 
 use crate::{Estimate, Scalar, TargetMap};
 
@@ -43,7 +43,9 @@ pub struct RejectedSample;
 /// ```
 pub struct Observer<'a, T, const N: usize, const NY: usize, const NU: usize, const NT: usize> {
     maps: &'a [TargetMap<'a, T>; NT],
-    window: HistoryBuf<Sample<T, NY, NU>, N>,
+    /// The last `N` accepted samples, oldest first. (A `Deque` rather than a `HistoryBuf`: its
+    /// accesses are unchecked inside heapless, so no bounds-check panic path reaches the firmware.)
+    window: Deque<Sample<T, NY, NU>, N>,
 }
 
 impl<'a, T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: usize> Observer<'a, T, N, NY, NU, NT> {
@@ -52,7 +54,7 @@ impl<'a, T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: 
     pub const fn new(maps: &'a [TargetMap<'a, T>; NT]) -> Self {
         Observer {
             maps,
-            window: HistoryBuf::new(),
+            window: Deque::new(),
         }
     }
 
@@ -60,7 +62,11 @@ impl<'a, T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: 
     /// and nothing stored changes.
     pub fn push(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
         if y.iter().chain(u.iter()).all(|v| v.is_finite()) {
-            self.window.write(Sample { y, u });
+            if self.window.is_full() {
+                self.window.pop_front();
+            }
+            // Cannot fail: there is room now (and N = 0 is refused by heapless at compile time).
+            let _ = self.window.push_back(Sample { y, u });
             Ok(())
         } else {
             Err(RejectedSample)
@@ -90,18 +96,12 @@ impl<'a, T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: 
     fn project(&self, map: &TargetMap<'_, T>) -> T {
         let (output_gains, input_gains) = map.gains.split_at_checked(N * NY).unwrap_or((map.gains, &[]));
         let mut sum = T::zero();
-        for (gains, sample) in output_gains
-            .chunks_exact(NY.max(1))
-            .zip(self.window.oldest_ordered().rev())
-        {
+        for (gains, sample) in output_gains.chunks_exact(NY.max(1)).zip(self.window.iter().rev()) {
             for (&g, &y) in gains.iter().zip(&sample.y) {
                 sum += g * y;
             }
         }
-        for (gains, sample) in input_gains
-            .chunks_exact(NU.max(1))
-            .zip(self.window.oldest_ordered().rev())
-        {
+        for (gains, sample) in input_gains.chunks_exact(NU.max(1)).zip(self.window.iter().rev()) {
             for (&g, &u) in gains.iter().zip(&sample.u) {
                 sum += g * u;
             }

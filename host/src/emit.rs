@@ -165,77 +165,48 @@ pub struct FamilyModule {
 /// The family modules of the designs whose files are `present`: members of one family must share
 /// the horizon, the outputs, the inputs and the targets (one observer type serves them all).
 pub fn families(designs: &[Design], present: &[String]) -> Result<Vec<FamilyModule>, String> {
-    let mut modules: Vec<(FamilyModule, &Design, Vec<(f64, String)>)> = Vec::new();
-    for design in designs.iter().filter(|d| present.contains(&d.name)) {
-        let Some(family) = &design.family else { continue };
-        let value = f32_literal("family.value", family.value).map_err(|e| format!("{}: {e}", design.file.display()))?;
-        match modules.iter_mut().find(|(m, _, _)| m.name == family.name) {
-            Some((module, first, members)) => {
-                let outputs = |d: &Design| d.model.outputs.iter().map(|o| o.name.clone()).collect::<Vec<_>>();
-                let targets = |d: &Design| d.targets.iter().map(|t| t.name.clone()).collect::<Vec<_>>();
-                let same = first.map.horizon == design.map.horizon
-                    && outputs(first) == outputs(design)
-                    && first.model.inputs == design.model.inputs
-                    && targets(first) == targets(design)
-                    && module.output == family.output;
-                if !same {
-                    return Err(format!(
-                        "{}: `family`: design `{}` cannot join family `{}` of `{}`: members must share the horizon, outputs, inputs, targets and selecting output",
-                        design.file.display(), design.name, family.name, first.name
-                    ));
-                }
-                members.push((family.value, design.name.clone()));
-                module.members.push((design.name.clone(), value));
-            }
-            None => {
-                let module = FamilyModule {
-                    name: family.name.clone(),
-                    output: family.output,
-                    output_name: design.model.outputs[family.output].name.clone(),
-                    members: vec![(design.name.clone(), value)],
-                };
-                modules.push((module, design, vec![(family.value, design.name.clone())]));
-            }
-        }
-    }
-    let mut out: Vec<FamilyModule> = modules
-        .into_iter()
-        .map(|(mut module, _, mut values)| {
-            values.sort_by(|a, b| a.0.total_cmp(&b.0));
-            let literal = |name: &String| {
-                module
-                    .members
-                    .iter()
-                    .find(|(n, _)| n == name)
-                    .map(|(_, v)| v.clone())
-                    .unwrap_or_default()
-            };
-            module.members = values.iter().map(|(_, name)| (name.clone(), literal(name))).collect();
-            module
-        })
+    let mut members: Vec<(&Design, &crate::spec::Family)> = designs
+        .iter()
+        .filter(|d| present.contains(&d.name))
+        .filter_map(|d| d.family.as_ref().map(|f| (d, f)))
         .collect();
-    out.sort_by(|a, b| a.name.cmp(&b.name));
-    if let Some(clash) = out.iter().find(|f| present.contains(&f.name)) {
-        return Err(format!(
-            "family `{}` has the name of a design: rename one of them",
-            clash.name
-        ));
+    members.sort_by(|a, b| a.1.name.cmp(&b.1.name).then(a.1.value.total_cmp(&b.1.value)));
+    let outputs = |d: &Design| d.model.outputs.iter().map(|o| o.name.clone()).collect::<Vec<_>>();
+    let targets = |d: &Design| d.targets.iter().map(|t| t.name.clone()).collect::<Vec<_>>();
+    let mut modules = Vec::new();
+    for group in members.chunk_by(|a, b| a.1.name == b.1.name) {
+        let (first, family) = group[0];
+        let mut module = FamilyModule {
+            name: family.name.clone(),
+            output: family.output,
+            output_name: first.model.outputs[family.output].name.clone(),
+            members: Vec::new(),
+        };
+        for &(design, member) in group {
+            let same = first.map.horizon == design.map.horizon
+                && outputs(first) == outputs(design)
+                && first.model.inputs == design.model.inputs
+                && targets(first) == targets(design)
+                && member.output == family.output;
+            if !same {
+                return Err(format!(
+                    "{}: `family`: design `{}` cannot join family `{}` of `{}`: members must share the horizon, outputs, inputs, targets and selecting output",
+                    design.file.display(), design.name, family.name, first.name
+                ));
+            }
+            let value =
+                f32_literal("family.value", member.value).map_err(|e| format!("{}: {e}", design.file.display()))?;
+            module.members.push((design.name.clone(), value));
+        }
+        if present.contains(&module.name) {
+            return Err(format!(
+                "family `{}` has the name of a design: rename one of them",
+                module.name
+            ));
+        }
+        modules.push(module);
     }
-    Ok(out)
-}
-
-/// The spec path as it should appear in generated files: relative to the workspace when inside it,
-/// so that the text does not depend on where the checkout lives.
-pub fn portable_spec_path(spec: &Path, workspace: &Path) -> String {
-    let absolute = |p: &Path| p.canonicalize().unwrap_or_else(|_| p.to_owned());
-    let spec = absolute(spec);
-    spec.strip_prefix(absolute(workspace))
-        .map(|p| p.to_string_lossy().replace('\\', "/"))
-        .unwrap_or_else(|_| {
-            spec.file_name()
-                .map(|n| n.to_string_lossy().into_owned())
-                .unwrap_or_default()
-        })
+    Ok(modules)
 }
 
 /// The text of `generated/src/<design>.rs`.

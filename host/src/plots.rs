@@ -15,7 +15,7 @@ use std::sync::Once;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use crate::data::{DataSet, Run, Window};
+use crate::data::{DataSet, Window};
 use crate::pipeline::DesignResult;
 use crate::recording;
 use crate::spec::Design;

@@ -1,5 +1,8 @@
 //! Shared helpers of the integration tests: the shipped specs and designs built from them.
 
+pub mod on_target;
+pub mod tolerance;
+
 use std::path::{Path, PathBuf};
 
 use host::pipeline::{self, DesignResult};

@@ -1,0 +1,31 @@
+//! Puts memory.x where the linker finds it, passes cortex-m-rt's linker script to this program's
+//! binaries only (not through global rustflags), and writes the size probe's design selection.
+
+use std::path::PathBuf;
+
+fn main() {
+    let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));
+    std::fs::copy("memory.x", out.join("memory.x")).expect("copy memory.x");
+    println!("cargo:rustc-link-search={}", out.display());
+    println!("cargo:rustc-link-arg-bins=-Tlink.x");
+    println!("cargo:rerun-if-changed=memory.x");
+
+    // The size probe links one design (or none, for the baseline) chosen by PROBE_DESIGN.
+    println!("cargo:rerun-if-env-changed=PROBE_DESIGN");
+    let design = std::env::var("PROBE_DESIGN").unwrap_or_default();
+    let valid = design
+        .chars()
+        .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
+    assert!(valid, "PROBE_DESIGN must be a design module name, got {design:?}");
+    let probe = if design == "__reachable_panic" {
+        // Proves the check can fail: an index the compiler cannot bound.
+        "/// Indexes out of bounds (for the check's own test).\nfn probe() -> ! {\n    let table = core::hint::black_box([0u8; 4]);\n    loop {\n        core::hint::black_box(table[core::hint::black_box(7usize)]);\n    }\n}\n".to_owned()
+    } else if design.is_empty() {
+        "/// The baseline: the same loop with no observer.\nfn probe() -> ! {\n    loop {\n        core::hint::black_box(core::hint::black_box(0.0f32));\n    }\n}\n".to_owned()
+    } else {
+        format!(
+            "/// Pushes samples into `{design}`'s observer and estimates, forever.\nfn probe() -> ! {{\n    use generated::{design} as d;\n    let mut observer = d::observer();\n    loop {{\n        let y = core::hint::black_box([0.0f32; d::OUTPUTS]);\n        let u = core::hint::black_box([0.0f32; d::INPUTS]);\n        let _ = core::hint::black_box(observer.push(y, u));\n        core::hint::black_box(observer.estimate());\n        if core::hint::black_box(false) {{\n            observer.reset();\n        }}\n    }}\n}}\n"
+        )
+    };
+    std::fs::write(out.join("probe_design.rs"), probe).expect("write probe_design.rs");
+}

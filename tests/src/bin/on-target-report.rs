@@ -1,0 +1,63 @@
+//! Measures every generated observer on the emulated Cortex-M4F and rewrites the table in the
+//! README between `<!-- on-target:begin -->` and `<!-- on-target:end -->`:
+//!
+//! ```sh
+//! cargo run -p integration-tests --bin on-target-report
+//! ```
+
+use std::process::ExitCode;
+
+use integration_tests::on_target;
+use integration_tests::workspace_root;
+
+fn main() -> ExitCode {
+    match run() {
+        Ok(table) => {
+            print!("{table}");
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn run() -> Result<String, String> {
+    let measured = on_target::measure().map_err(|e| e.to_string())?;
+    let mut table = String::from(
+        "| design | targets | N | instructions per push + estimate (min / median / max) | flash bytes | RAM bytes | max \\|target − host\\| |\n|---|---|---|---|---|---|---|\n",
+    );
+    for (name, design) in &measured {
+        let spec = integration_tests::shipped_specs()
+            .into_iter()
+            .find_map(|p| host::spec::load(&p).ok().filter(|d| &d.name == name))
+            .ok_or_else(|| format!("no shipped spec for {name}"))?;
+        let largest = on_target::compare_with_library(name, design)?;
+        let steady: Vec<u64> = design
+            .instructions
+            .iter()
+            .zip(&design.samples)
+            .filter(|(_, s)| s.accepted && s.estimates.is_some())
+            .map(|(n, _)| *n)
+            .collect();
+        let (min, median, max) = on_target::spread(&steady);
+        let targets: Vec<&str> = spec.targets.iter().map(|t| t.name.as_str()).collect();
+        table += &format!(
+            "| `{name}` | {} | {} | {min} / {median} / {max} | {} | {} | {largest:.1e} |\n",
+            targets.join(", "),
+            spec.map.horizon,
+            design.flash_bytes,
+            design.observer_bytes + design.static_ram_bytes as usize,
+        );
+    }
+    let readme_path = workspace_root().join("README.md");
+    let readme = std::fs::read_to_string(&readme_path).map_err(|e| e.to_string())?;
+    let (begin, end) = ("<!-- on-target:begin -->\n", "<!-- on-target:end -->");
+    let (Some(start), Some(stop)) = (readme.find(begin), readme.find(end)) else {
+        return Err("README.md has no on-target markers".into());
+    };
+    let updated = format!("{}{begin}{table}{}", &readme[..start], &readme[stop..]);
+    host::output::write_if_changed(&readme_path, &updated).map_err(|e| e.to_string())?;
+    Ok(table)
+}

@@ -1,0 +1,412 @@
+//! Running the generated observers on the emulated Cortex-M4F (QEMU `mps2-an386`) and measuring them:
+//! estimates over semihosting, instructions per `push` + `estimate` from an execution trace, flash
+//! and RAM from the ELF, and the no-panic proof (see `tests/on-target/`).
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use crate::workspace_root;
+
+/// Why the on-target measurements could not be made.
+#[derive(Debug)]
+pub enum Unavailable {
+    /// A tool is missing: its name and the Debian package that provides it.
+    Missing {
+        /// The command.
+        tool: &'static str,
+        /// The package to install.
+        package: &'static str,
+    },
+    /// Something failed that should not have.
+    Failed(String),
+}
+
+impl std::fmt::Display for Unavailable {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Unavailable::Missing { tool, package } => {
+                write!(
+                    f,
+                    "`{tool}` is not installed (Debian package `{package}`: apt-get install {package})"
+                )
+            }
+            Unavailable::Failed(message) => f.write_str(message),
+        }
+    }
+}
+
+fn failed(message: impl Into<String>) -> Unavailable {
+    Unavailable::Failed(message.into())
+}
+
+fn require(tool: &'static str, package: &'static str) -> Result<(), Unavailable> {
+    match Command::new(tool)
+        .arg("--version")
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .status()
+    {
+        Ok(status) if status.success() => Ok(()),
+        _ => Err(Unavailable::Missing { tool, package }),
+    }
+}
+
+/// One sample as the target reported it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TargetSample {
+    /// Whether `push` accepted the sample.
+    pub accepted: bool,
+    /// `(value bits, saturation flag 'L'|'I'|'H')` per target, when an estimate existed.
+    pub estimates: Option<Vec<(u32, char)>>,
+}
+
+/// Everything measured for one design.
+#[derive(Clone, Debug, Default)]
+pub struct DesignMeasurement {
+    /// Samples in the recorded sequence order.
+    pub samples: Vec<TargetSample>,
+    /// Instructions executed by `push` + `estimate` per sample (markers included).
+    pub instructions: Vec<u64>,
+    /// `size_of` the observer on the target, in bytes.
+    pub observer_bytes: usize,
+    /// Flash (text + data) added by the design's observer over the baseline probe, in bytes.
+    pub flash_bytes: u64,
+    /// Static RAM (data + bss) added over the baseline probe, in bytes.
+    pub static_ram_bytes: u64,
+}
+
+/// Builds `bin` of the on-target program in release, with `PROBE_DESIGN` set, into `target_dir`.
+fn build(bin: &str, probe_design: &str, target_dir: &Path) -> Result<PathBuf, String> {
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let output = Command::new(cargo)
+        .current_dir(workspace_root())
+        .args(["build", "--release", "--manifest-path", "tests/on-target/Cargo.toml"])
+        .args(["--target", "thumbv7em-none-eabihf", "--bin", bin, "--target-dir"])
+        .arg(target_dir)
+        .env("PROBE_DESIGN", probe_design)
+        .output()
+        .map_err(|e| format!("cannot run cargo: {e}"))?;
+    if !output.status.success() {
+        return Err(String::from_utf8_lossy(&output.stderr).into_owned());
+    }
+    Ok(target_dir.join("thumbv7em-none-eabihf/release").join(bin))
+}
+
+/// Address of a symbol in an ELF (`arm-none-eabi-nm`).
+fn symbol(elf: &Path, name: &str) -> Result<u64, Unavailable> {
+    let output = Command::new("arm-none-eabi-nm")
+        .arg(elf)
+        .output()
+        .map_err(|e| failed(e.to_string()))?;
+    String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .find_map(|l| {
+            let mut parts = l.split_whitespace();
+            let address = parts.next()?;
+            (parts.nth(1)? == name).then(|| u64::from_str_radix(address, 16).ok())?
+        })
+        .ok_or_else(|| failed(format!("no symbol {name} in {}", elf.display())))
+}
+
+/// `(text, data, bss)` of an ELF (`arm-none-eabi-size`, Berkeley format: text includes rodata).
+pub fn sizes(elf: &Path) -> Result<(u64, u64, u64), Unavailable> {
+    let output = Command::new("arm-none-eabi-size")
+        .arg(elf)
+        .output()
+        .map_err(|e| failed(e.to_string()))?;
+    let text = String::from_utf8_lossy(&output.stdout);
+    let numbers: Vec<u64> = text
+        .lines()
+        .nth(1)
+        .unwrap_or("")
+        .split_whitespace()
+        .take(3)
+        .filter_map(|n| n.parse().ok())
+        .collect();
+    match numbers[..] {
+        [text, data, bss] => Ok((text, data, bss)),
+        _ => Err(failed(format!("cannot read the sizes of {}: {text}", elf.display()))),
+    }
+}
+
+/// The QEMU option that makes every translation block one instruction (renamed in QEMU 8.1).
+fn one_instruction_per_block() -> Result<Vec<&'static str>, Unavailable> {
+    let output = Command::new("qemu-system-arm")
+        .arg("--version")
+        .output()
+        .map_err(|e| failed(e.to_string()))?;
+    let text = String::from_utf8_lossy(&output.stdout);
+    let version: Vec<u32> = text
+        .split_whitespace()
+        .nth(3)
+        .unwrap_or("0")
+        .split(|c: char| !c.is_ascii_digit())
+        .filter_map(|n| n.parse().ok())
+        .collect();
+    Ok(if version.as_slice() >= [8, 1].as_slice() {
+        vec!["-accel", "tcg,one-insn-per-tb=on"]
+    } else {
+        vec!["-singlestep"]
+    })
+}
+
+/// Runs `elf` under QEMU with semihosting and an execution trace in `trace`; returns what it printed.
+/// Output goes to a file, not a pipe (QEMU can hang when a pipe closes early), and a run that does not
+/// finish within `timeout` is killed.
+fn run_qemu(elf: &Path, trace: &Path, timeout: Duration) -> Result<String, Unavailable> {
+    let output_file = trace.with_extension("out");
+    let stdout = std::fs::File::create(&output_file).map_err(|e| failed(e.to_string()))?;
+    let mut child = Command::new("qemu-system-arm")
+        .args([
+            "-machine",
+            "mps2-an386",
+            "-cpu",
+            "cortex-m4",
+            "-nographic",
+            "-monitor",
+            "none",
+            "-serial",
+            "none",
+        ])
+        .args(["-semihosting-config", "enable=on,target=native"])
+        .args(one_instruction_per_block()?)
+        .args(["-d", "exec,nochain", "-D"])
+        .arg(trace)
+        .arg("-kernel")
+        .arg(elf)
+        .stdin(Stdio::null())
+        .stdout(stdout)
+        .stderr(Stdio::null())
+        .spawn()
+        .map_err(|e| failed(format!("cannot start qemu-system-arm: {e}")))?;
+    let started = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().map_err(|e| failed(e.to_string()))? {
+            break status;
+        }
+        if started.elapsed() > timeout {
+            let _ = child.kill();
+            let _ = child.wait();
+            return Err(failed(format!("QEMU did not finish within {timeout:?}")));
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let text = std::fs::read_to_string(&output_file).map_err(|e| failed(e.to_string()))?;
+    if !status.success() || !text.contains("DONE") {
+        return Err(failed(format!("the on-target program failed ({status}):\n{text}")));
+    }
+    Ok(text)
+}
+
+/// Instructions executed from each entry of `start` to the following entry of `end`, from a QEMU
+/// `-d exec` trace with one instruction per block (each `Trace` line is one executed instruction).
+fn count_between(trace: &Path, start: u64, end: u64) -> Result<Vec<u64>, Unavailable> {
+    use std::io::BufRead;
+    let file = std::fs::File::open(trace).map_err(|e| failed(e.to_string()))?;
+    let (mut counts, mut current) = (Vec::new(), None);
+    for line in std::io::BufReader::new(file).lines() {
+        let line = line.map_err(|e| failed(e.to_string()))?;
+        let Some(fields) = line.strip_prefix("Trace ").and_then(|l| l.split('[').nth(1)) else {
+            continue;
+        };
+        let Some(pc) = fields.split('/').nth(1).and_then(|pc| u64::from_str_radix(pc, 16).ok()) else {
+            continue;
+        };
+        if pc == start {
+            current = Some(0);
+        } else if pc == end {
+            if let Some(n) = current.take() {
+                counts.push(n);
+            }
+        } else if let Some(n) = current.as_mut() {
+            *n += 1;
+        }
+    }
+    Ok(counts)
+}
+
+/// Parses the program's `E …` and `S …` lines.
+fn parse(text: &str) -> Result<BTreeMap<String, DesignMeasurement>, Unavailable> {
+    let mut designs: BTreeMap<String, DesignMeasurement> = BTreeMap::new();
+    for line in text.lines() {
+        let fields: Vec<&str> = line.split_whitespace().collect();
+        match fields.as_slice() {
+            ["E", name, _k, accepted, rest @ ..] => {
+                let estimates = (!rest.is_empty()).then(|| {
+                    rest.chunks(2)
+                        .map(|c| {
+                            (
+                                u32::from_str_radix(c[0], 16).unwrap_or(0),
+                                c.get(1).and_then(|f| f.chars().next()).unwrap_or('?'),
+                            )
+                        })
+                        .collect()
+                });
+                designs.entry(name.to_string()).or_default().samples.push(TargetSample {
+                    accepted: *accepted == "1",
+                    estimates,
+                });
+            }
+            ["S", name, bytes] => {
+                designs.entry(name.to_string()).or_default().observer_bytes = bytes.parse().unwrap_or(0)
+            }
+            _ => {}
+        }
+    }
+    if designs.is_empty() {
+        return Err(failed(format!("no estimate in the output:\n{text}")));
+    }
+    Ok(designs)
+}
+
+/// Builds and runs the on-target program and the size probes; returns the measurements per design.
+/// `Err(Unavailable::Missing)` when QEMU or the size tool is not installed.
+pub fn measure() -> Result<BTreeMap<String, DesignMeasurement>, Unavailable> {
+    require("qemu-system-arm", "qemu-system-arm")?;
+    require("arm-none-eabi-size", "binutils-arm-none-eabi")?;
+    let root = workspace_root().join("target");
+    let elf = build("on-target", "", &root.join("on-target")).map_err(failed)?;
+    let trace = root.join("on-target").join("trace.log");
+    let text = run_qemu(&elf, &trace, Duration::from_secs(300))?;
+    let mut designs = parse(&text)?;
+    let counts = count_between(&trace, symbol(&elf, "measure_start")?, symbol(&elf, "measure_end")?)?;
+    let _ = std::fs::remove_file(&trace);
+    let mut counts = counts.into_iter();
+    for design in designs.values_mut() {
+        design.instructions = counts.by_ref().take(design.samples.len()).collect();
+    }
+
+    let probes = root.join("on-target-probe");
+    let baseline = sizes(&build("probe", "", &probes).map_err(|e| failed(format!("baseline probe: {e}")))?)?;
+    for (name, design) in designs.iter_mut() {
+        let probe = build("probe", name, &probes)
+            .map_err(|e| failed(format!("probe of {name} (a panic path would show here): {e}")))?;
+        let (text, data, bss) = sizes(&probe)?;
+        design.flash_bytes = (text + data).saturating_sub(baseline.0 + baseline.1);
+        design.static_ram_bytes = (data + bss).saturating_sub(baseline.1 + baseline.2);
+    }
+    Ok(designs)
+}
+
+/// Builds the probe that indexes out of bounds: it must fail to link, naming the missing symbol.
+pub fn panic_check_catches_a_reachable_panic() -> Result<bool, Unavailable> {
+    match build(
+        "probe",
+        "__reachable_panic",
+        &workspace_root().join("target").join("on-target-probe"),
+    ) {
+        Ok(_) => Ok(false),
+        Err(stderr) => Ok(stderr.contains("observer_code_can_panic")),
+    }
+}
+
+/// `(min, median, max)`.
+pub fn spread(values: &[u64]) -> (u64, u64, u64) {
+    let mut sorted = values.to_vec();
+    sorted.sort_unstable();
+    if sorted.is_empty() {
+        return (0, 0, 0);
+    }
+    (sorted[0], sorted[sorted.len() / 2], sorted[sorted.len() - 1])
+}
+
+/// The recorded sequence of a design as the generated file holds it, rebuilt on the host in f64
+/// (the scenario's measurements rounded to f32, with the same refused samples).
+fn recorded_rows(result: &host::pipeline::DesignResult) -> Vec<host::recording::Row> {
+    let scenario = &result.scenario;
+    let refused = host::emit::refused_samples(scenario.measurements.len());
+    scenario
+        .measurements
+        .iter()
+        .zip(&scenario.inputs)
+        .enumerate()
+        .map(|(k, (y, u))| {
+            let mut y: Vec<f64> = y.iter().map(|&v| f64::from(v as f32)).collect();
+            match (refused.iter().position(|&r| r == k), y.first_mut()) {
+                (Some(0), Some(first)) => *first = f64::NAN,
+                (Some(_), Some(first)) => *first = f64::INFINITY,
+                _ => {}
+            }
+            host::recording::Row {
+                run: String::new(),
+                y,
+                u: u.iter().map(|&v| f64::from(v as f32)).collect(),
+            }
+        })
+        .collect()
+}
+
+/// Compares the target's estimates of design `name` with the host's f64 library estimates on the
+/// same recorded sequence, within [`crate::tolerance::tolerance`]; returns the largest `|target - host|`.
+pub fn compare_with_library(name: &str, measured: &DesignMeasurement) -> Result<f64, String> {
+    let path = crate::shipped_specs()
+        .into_iter()
+        .find(|p| host::spec::load(p).is_ok_and(|d| d.name == name))
+        .ok_or_else(|| format!("no shipped spec for {name}"))?;
+    let design = host::spec::load(&path).map_err(|e| e.to_string())?;
+    let result = crate::build(&design);
+    let rows = recorded_rows(&result);
+    if rows.len() != measured.samples.len() {
+        return Err(format!(
+            "{name}: {} samples on the target, {} recorded",
+            measured.samples.len(),
+            rows.len()
+        ));
+    }
+    let horizon = design.map.horizon;
+    let mut accepted: Vec<&host::recording::Row> = Vec::new();
+    let mut largest: f64 = 0.0;
+    for (k, (row, sample)) in rows.iter().zip(&measured.samples).enumerate() {
+        let finite = row.y.iter().chain(&row.u).all(|v| v.is_finite());
+        if finite != sample.accepted {
+            return Err(format!(
+                "{name} sample {k}: accepted {} on the target, finite = {finite}",
+                sample.accepted
+            ));
+        }
+        if finite {
+            accepted.push(row);
+        }
+        let window: Vec<&&host::recording::Row> = accepted.iter().rev().take(horizon).collect();
+        let Some(estimates) = &sample.estimates else {
+            if window.len() == horizon {
+                return Err(format!(
+                    "{name} sample {k}: no estimate on the target after {horizon} samples"
+                ));
+            }
+            continue;
+        };
+        let mut z: Vec<f64> = window.iter().flat_map(|r| r.y.iter().copied()).collect();
+        z.extend(window.iter().flat_map(|r| r.u.iter().copied()));
+        for (t, ((bits, flag), fitted)) in estimates
+            .iter()
+            .zip(result.targets.iter().map(|t| &t.fit.map))
+            .enumerate()
+        {
+            let library = fitted.estimate(&z);
+            let value = f64::from(f32::from_bits(*bits));
+            let (tolerance, decidable) = crate::tolerance::tolerance(fitted, &z);
+            let difference = (value - library.value).abs();
+            if difference > tolerance {
+                return Err(format!(
+                    "{name} sample {k} target {t}: target {value} vs host {} (> {tolerance:e})",
+                    library.value
+                ));
+            }
+            let library_flag = match library.saturation {
+                firmware::Saturation::Low => 'L',
+                firmware::Saturation::Inside => 'I',
+                firmware::Saturation::High => 'H',
+            };
+            if decidable && *flag != library_flag {
+                return Err(format!(
+                    "{name} sample {k} target {t}: saturation {flag} on the target, {library_flag} on the host"
+                ));
+            }
+            largest = largest.max(difference);
+        }
+    }
+    Ok(largest)
+}
