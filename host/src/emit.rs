@@ -209,6 +209,20 @@ pub fn families(designs: &[Design], present: &[String]) -> Result<Vec<FamilyModu
     Ok(modules)
 }
 
+/// The spec path as it should appear in generated files: relative to the workspace when inside it,
+/// so that the text does not depend on where the checkout lives.
+pub fn portable_spec_path(spec: &Path, workspace: &Path) -> String {
+    let absolute = |p: &Path| p.canonicalize().unwrap_or_else(|_| p.to_owned());
+    let spec = absolute(spec);
+    spec.strip_prefix(absolute(workspace))
+        .map(|p| p.to_string_lossy().replace('\\', "/"))
+        .unwrap_or_else(|_| {
+            spec.file_name()
+                .map(|n| n.to_string_lossy().into_owned())
+                .unwrap_or_default()
+        })
+}
+
 /// The text of `generated/src/<design>.rs`.
 pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> Result<String, EmitError> {
     let list = |names: &[String]| {
