@@ -52,6 +52,12 @@ pub fn f32_literal(what: &str, value: f64) -> Result<String, EmitError> {
     Ok(format!("{single:?}"))
 }
 
+/// `text` made safe for a `//!` or `///` comment: control characters (a newline would end the
+/// comment and let the rest be read as code) become spaces.
+fn comment_text(text: &str) -> String {
+    text.chars().map(|c| if c.is_control() { ' ' } else { c }).collect()
+}
+
 /// Literals of `values`, one per line (as rustfmt lays them out), indented by `indent` spaces.
 fn literal_block(what: &str, values: &[f64], indent: usize) -> Result<String, EmitError> {
     let literals = values
@@ -88,6 +94,7 @@ struct DesignFile {
     command: String,
     version: &'static str,
     spec_path: String,
+    spec_path_literal: String,
     spec_hash: String,
     tau: String,
     horizon: usize,
@@ -249,7 +256,7 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
         targets.push(TargetTables {
             name: target.name.clone(),
             const_name,
-            expr: target.expr.text().to_owned(),
+            expr: comment_text(target.expr.text()),
             rmse: format!("{:.4}", t.validation.map.rmse),
             max_error: format!("{:.4}", t.validation.map.max_error),
             linear_rmse: format!("{:.4}", t.validation.linear.rmse),
@@ -267,10 +274,11 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
         .unwrap_or_default();
     let file = DesignFile {
         name: design.name.clone(),
-        description: design.description.clone(),
-        command: format!("cargo run -p host -- gen --spec {spec_path}"),
+        description: comment_text(&design.description),
+        command: comment_text(&format!("cargo run -p host -- gen --spec {spec_path}")),
         version: env!("CARGO_PKG_VERSION"),
-        spec_path: spec_path.to_owned(),
+        spec_path: comment_text(spec_path),
+        spec_path_literal: format!("{spec_path:?}"),
         spec_hash: design.spec_sha256.clone(),
         tau: f32_literal("sampling.tau", design.tau)?,
         horizon: design.map.horizon,
@@ -324,6 +332,12 @@ mod tests {
             prop_assert_eq!(literal.parse::<f32>().unwrap().to_bits(), bits, "{}", literal);
             prop_assert!(literal.contains('.') || literal.contains('e'), "{} is not a float literal", literal);
         }
+    }
+
+    #[test]
+    fn comment_text_cannot_end_a_comment() {
+        let text = comment_text("line\npub fn injected() {}\r\n");
+        assert!(!text.contains('\n') && !text.contains('\r'));
     }
 
     #[test]

@@ -19,7 +19,7 @@ use firmware::{Gamma, TargetMap};
 /// The design's name.
 pub const NAME: &str = "{{ name }}";
 /// The spec it was generated from, relative to the workspace.
-pub const SPEC: &str = "{{ spec_path }}";
+pub const SPEC: &str = {{ spec_path_literal }};
 /// Sample period τ.
 pub const SAMPLE_PERIOD: f32 = {{ tau }};
 /// Horizon N: samples in the regressor.
