@@ -77,6 +77,19 @@ pub struct DesignMeasurement {
     pub static_ram_bytes: u64,
 }
 
+impl DesignMeasurement {
+    /// Instruction counts of the samples that were accepted and gave an estimate (the steady state:
+    /// a full window, the same path every sample).
+    pub fn steady_instructions(&self) -> Vec<u64> {
+        self.instructions
+            .iter()
+            .zip(&self.samples)
+            .filter(|(_, s)| s.accepted && s.estimates.is_some())
+            .map(|(n, _)| *n)
+            .collect()
+    }
+}
+
 /// Builds `bin` of the on-target program in release, with `PROBE_DESIGN` set, into `target_dir`.
 fn build(bin: &str, probe_design: &str, target_dir: &Path) -> Result<PathBuf, String> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());

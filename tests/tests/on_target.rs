@@ -72,13 +72,7 @@ fn generated_observers_on_the_emulated_cortex_m4f() {
     generated::for_each_design!(same_as_host_f32);
     for (name, design) in &measured {
         let largest = on_target::compare_with_library(name, design).unwrap_or_else(|e| panic!("{e}"));
-        let steady: Vec<u64> = design
-            .instructions
-            .iter()
-            .zip(&design.samples)
-            .filter(|(_, s)| s.accepted && s.estimates.is_some())
-            .map(|(n, _)| *n)
-            .collect();
+        let steady = design.steady_instructions();
         let (min, median, max) = on_target::spread(&steady);
         assert_eq!(
             design.instructions.len(),

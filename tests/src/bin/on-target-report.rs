@@ -34,13 +34,7 @@ fn run() -> Result<String, String> {
             .find_map(|p| host::spec::load(&p).ok().filter(|d| &d.name == name))
             .ok_or_else(|| format!("no shipped spec for {name}"))?;
         let largest = on_target::compare_with_library(name, design)?;
-        let steady: Vec<u64> = design
-            .instructions
-            .iter()
-            .zip(&design.samples)
-            .filter(|(_, s)| s.accepted && s.estimates.is_some())
-            .map(|(n, _)| *n)
-            .collect();
+        let steady = design.steady_instructions();
         let (min, median, max) = on_target::spread(&steady);
         let targets: Vec<&str> = spec.targets.iter().map(|t| t.name.as_str()).collect();
         table += &format!(
