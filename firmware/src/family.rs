@@ -82,13 +82,13 @@ mod tests {
     use crate::Gamma;
 
     static W: [f64; 1] = [1.0];
-    static B: [f64; 1] = [0.0];
+    static B: [f64; 1] = [1.0];
     static LOW: [TargetMap<'static, f64>; 1] = [TargetMap {
         gains: &[1.0, 0.0],
         gamma: Gamma {
             offset: 0.0,
             weights: &W,
-            curvatures: &B,
+            odds_ratios: &B,
         },
         r_min: 0.0,
         r_span: 1.0,
@@ -98,7 +98,7 @@ mod tests {
         gamma: Gamma {
             offset: 0.0,
             weights: &W,
-            curvatures: &B,
+            odds_ratios: &B,
         },
         r_min: 10.0,
         r_span: 1.0,

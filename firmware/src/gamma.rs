@@ -2,18 +2,18 @@
 
 use crate::{basis, Scalar};
 
-/// `Γ(η) = offset + Σ_j μ_j B(η; b_j) = offset + η Σ_j w_j / (1 + b_j η)`, with `w_j = μ_j (1 + b_j)`.
+/// `Γ(η) = offset + Σ_j μ_j B(η; c_j) = offset + η Σ_j w_j / ((1 - η) + c_j η)`, with `w_j = μ_j c_j`.
 ///
 /// The slices are borrowed so that the same code serves `const` tables on the target and fitted
-/// vectors on the host. `weights` and `curvatures` have one entry per basis function.
+/// vectors on the host. `weights` and `odds_ratios` have one entry per basis function.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Gamma<'a, T> {
     /// `Γ(0)`: the constant basis coefficient minus any intercept of `Lᵀ Z`.
     pub offset: T,
-    /// `w_j = μ_j (1 + b_j)`.
+    /// `w_j = μ_j c_j`.
     pub weights: &'a [T],
-    /// `b_j`, each `> -1`.
-    pub curvatures: &'a [T],
+    /// `c_j > 0`, the odds ratios of the basis functions ([`basis`]).
+    pub odds_ratios: &'a [T],
 }
 
 /// Which side, if any, `Γ⁻¹` clamped to.
@@ -48,17 +48,18 @@ impl<T: Scalar> Gamma<'_, T> {
     #[inline]
     pub fn value(&self, eta: T) -> T {
         let mut sum = T::zero();
-        for (&w, &b) in self.weights.iter().zip(self.curvatures) {
-            sum += w / (T::one() + b * eta);
+        for (&w, &c) in self.weights.iter().zip(self.odds_ratios) {
+            sum += w / basis::denominator(c, eta);
         }
         self.offset + eta * sum
     }
 
-    /// `Γ'(η) = Σ_j w_j / (1 + b_j η)²`.
+    /// `Γ'(η) = Σ_j w_j / ((1 - η) + c_j η)²`.
     pub fn slope(&self, eta: T) -> T {
         let mut sum = T::zero();
-        for (&w, &b) in self.weights.iter().zip(self.curvatures) {
-            sum += w / (T::one() + b * eta) * (T::one() / (T::one() + b * eta));
+        for (&w, &c) in self.weights.iter().zip(self.odds_ratios) {
+            let d = basis::denominator(c, eta);
+            sum += w / d / d;
         }
         sum
     }
@@ -104,16 +105,16 @@ impl<T: Scalar> Gamma<'_, T> {
     }
 }
 
-/// `w_j = μ_j (1 + b_j)`: the weights [`Gamma`] stores, from the coefficients `μ_j` of `B(·; b_j)`.
-pub fn weight<T: Scalar>(mu: T, curvature: T) -> T {
-    mu * (T::one() + curvature)
+/// `w_j = μ_j c_j`: the weights [`Gamma`] stores, from the coefficients `μ_j` of `B(·; c_j)`.
+pub fn weight<T: Scalar>(mu: T, odds_ratio: T) -> T {
+    mu * odds_ratio
 }
 
-/// `Γ(η)` written as the sum `offset + Σ μ_j B(η; b_j)` of [`basis::value`], the reference form.
-pub fn value_from_coefficients<T: Scalar>(offset: T, mu: &[T], curvatures: &[T], eta: T) -> T {
+/// `Γ(η)` written as the sum `offset + Σ μ_j B(η; c_j)` of [`basis::value`], the reference form.
+pub fn value_from_coefficients<T: Scalar>(offset: T, mu: &[T], odds_ratios: &[T], eta: T) -> T {
     let mut sum = offset;
-    for (&m, &b) in mu.iter().zip(curvatures) {
-        sum += m * basis::value(b, eta);
+    for (&m, &c) in mu.iter().zip(odds_ratios) {
+        sum += m * basis::value(c, eta);
     }
     sum
 }
@@ -123,20 +124,20 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
 
-    fn curvatures() -> [f64; 8] {
-        let mut b = [0.0; 8];
-        for (slot, value) in b.iter_mut().zip(basis::paper_curvatures(5, 2.0)) {
+    fn odds_ratios() -> [f64; 8] {
+        let mut c = [0.0; 8];
+        for (slot, value) in c.iter_mut().zip(basis::paper_odds_ratios(5, 2.0)) {
             *slot = value;
         }
-        b
+        c
     }
 
     proptest! {
         #[test]
         fn folded_weights_give_the_same_gamma(mu in proptest::array::uniform8(-3.0f64..3.0), offset in -5.0f64..5.0, eta in 0.0f64..=1.0) {
-            let b = curvatures();
+            let b = odds_ratios();
             let w: [f64; 8] = core::array::from_fn(|j| weight(mu[j], b[j]));
-            let gamma = Gamma { offset, weights: &w, curvatures: &b };
+            let gamma = Gamma { offset, weights: &w, odds_ratios: &b };
             let reference = value_from_coefficients(offset, &mu, &b, eta);
             prop_assert!((gamma.value(eta) - reference).abs() <= 1e-12 * (1.0 + reference.abs()) * 3000.0);
         }
@@ -144,9 +145,9 @@ mod tests {
         #[test]
         fn inverse_undoes_gamma(mu in proptest::array::uniform8(0.01f64..3.0), offset in -5.0f64..5.0, eta in 0.0f64..=1.0) {
             // Non-negative μ make Γ strictly increasing: every basis slope is positive.
-            let b = curvatures();
+            let b = odds_ratios();
             let w: [f64; 8] = core::array::from_fn(|j| weight(mu[j], b[j]));
-            let gamma = Gamma { offset, weights: &w, curvatures: &b };
+            let gamma = Gamma { offset, weights: &w, odds_ratios: &b };
             let inverse = gamma.inverse(gamma.value(eta));
             prop_assert_eq!(inverse.saturation, Saturation::Inside);
             // Bisection resolves η to 2^-52; rounding of Γ near η adds |δΓ| / Γ'(η) with Γ' ≥ min μ.
@@ -156,9 +157,9 @@ mod tests {
 
         #[test]
         fn inverse_in_f32_is_within_f32_resolution(mu in proptest::array::uniform8(0.05f32..3.0), eta in 0.0f32..=1.0) {
-            let b: [f32; 8] = core::array::from_fn(|j| curvatures()[j] as f32);
+            let b: [f32; 8] = core::array::from_fn(|j| odds_ratios()[j] as f32);
             let w: [f32; 8] = core::array::from_fn(|j| weight(mu[j], b[j]));
-            let gamma = Gamma { offset: 0.5f32, weights: &w, curvatures: &b };
+            let gamma = Gamma { offset: 0.5f32, weights: &w, odds_ratios: &b };
             let inverse = gamma.inverse(gamma.value(eta));
             let tolerance = 1e-6 + 64.0 * f32::EPSILON * (0.5 + mu.iter().sum::<f32>()) / gamma.slope(eta);
             prop_assert!((inverse.eta - eta).abs() <= tolerance, "{} vs {eta}", inverse.eta);
@@ -167,13 +168,13 @@ mod tests {
 
     #[test]
     fn slope_is_the_derivative_of_value() {
-        let b = curvatures();
+        let b = odds_ratios();
         let mu = [0.3, -0.1, 0.7, 0.2, 1.0, -0.05, 0.4, 0.01];
         let w: [f64; 8] = core::array::from_fn(|j| weight(mu[j], b[j]));
         let gamma = Gamma {
             offset: 1.0,
             weights: &w,
-            curvatures: &b,
+            odds_ratios: &b,
         };
         for k in 1..100 {
             let eta = k as f64 / 100.0;
@@ -185,14 +186,14 @@ mod tests {
 
     #[test]
     fn saturates_visibly_outside_the_range() {
-        let b = [0.0, 3.0];
+        let b = [1.0, 4.0];
         let w = [1.0, 4.0];
         let gamma = Gamma {
             offset: -1.0,
             weights: &w,
-            curvatures: &b,
+            odds_ratios: &b,
         };
-        // Γ(0) = -1, Γ(1) = -1 + 1 + 4/4 = 1.
+        // Γ(0) = -1, Γ(1) = -1 + 1/1 + 4/4 = 1.
         assert_eq!(gamma.upper(), 1.0);
         let below = gamma.inverse(-1.5);
         assert_eq!((below.eta, below.saturation), (0.0, Saturation::Low));

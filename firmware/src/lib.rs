@@ -15,10 +15,10 @@
 //!
 //! * `η(r) = (r - r_min) / (r_max - r_min)` normalises the target to `[0, 1]` over the learning data.
 //! * Every non-constant basis function of the paper is a member of one family ([`basis`]):
-//!   `B(η; b) = (1 + b) η / (1 + b η)`, `b > -1`, with `B(0) = 0`, `B(1) = 1`, `B' > 0`.
-//!   The paper's `B1_i` is `b = α_i = e^{β(1-i)} - 1` (convex) and its `B2_i` is `b = e^{β(i-1)} - 1`
-//!   (concave); `B1_1 = B2_1 = η` is `b = 0`.
-//! * `Γ(η) = offset + Σ_j μ_j B(η; b_j) = offset + η Σ_j w_j / (1 + b_j η)` with `w_j = μ_j (1 + b_j)`
+//!   `B(η; c) = c η / ((1 - η) + c η)`, odds ratio `c > 0`, with `B(0) = 0`, `B(1) = 1`, `B' > 0`.
+//!   The paper's `B1_i` is `c = e^{β(1-i)}` (convex) and its `B2_i` is `c = e^{β(i-1)}` (concave);
+//!   `B1_1 = B2_1 = η` is `c = 1`.
+//! * `Γ(η) = offset + Σ_j μ_j B(η; c_j) = offset + η Σ_j w_j / ((1 - η) + c_j η)` with `w_j = μ_j c_j`
 //!   ([`Gamma`]); the offset holds the constant basis coefficient minus any intercept of `Lᵀ Z`.
 //! * The estimate solves `Γ(η) = Lᵀ Z` for `η ∈ [0, 1]` by bisection with a fixed number of steps
 //!   ([`Scalar::BISECTION_STEPS`]), and saturates, visibly, at `r_min` or `r_max` when `Lᵀ Z` lies

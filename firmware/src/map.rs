@@ -57,13 +57,13 @@ mod tests {
     fn linear_gamma_gives_a_rescaled_linear_map() {
         // Γ(η) = 2 + 4η  ⇒  η = (Lᵀ Z - 2) / 4, r = -1 + 3 η.
         let gains = [1.0f64, -0.5];
-        let (w, b) = ([4.0], [0.0]);
+        let (w, c) = ([4.0], [1.0]);
         let map = TargetMap {
             gains: &gains,
             gamma: Gamma {
                 offset: 2.0,
                 weights: &w,
-                curvatures: &b,
+                odds_ratios: &c,
             },
             r_min: -1.0,
             r_span: 3.0,

@@ -29,7 +29,7 @@ pub struct RejectedSample;
 /// // r = Γ⁻¹(0.5 y(k) + 0.5 y(k-1)) with Γ(η) = η on [0, 1], r ∈ [0, 10].
 /// static MAPS: [TargetMap<'static, f32>; 1] = [TargetMap {
 ///     gains: &[0.5, 0.5],
-///     gamma: Gamma { offset: 0.0, weights: &[1.0], curvatures: &[0.0] },
+///     gamma: Gamma { offset: 0.0, weights: &[1.0], odds_ratios: &[1.0] },
 ///     r_min: 0.0,
 ///     r_span: 10.0,
 /// }];
@@ -115,16 +115,16 @@ mod tests {
     use super::*;
     use crate::{Gamma, Saturation};
 
-    // Γ(η) = 1 + 2η + 3 B(η; 4), two outputs and one input over a horizon of 3.
+    // Γ(η) = 1 + 2η + 3 B(η; c = 5), two outputs and one input over a horizon of 3.
     const WEIGHTS: [f64; 2] = [2.0, 15.0];
-    const CURVATURES: [f64; 2] = [0.0, 4.0];
+    const ODDS_RATIOS: [f64; 2] = [1.0, 5.0];
     const GAINS: [f64; 9] = [0.5, -0.25, 0.125, 1.0, -1.0, 0.75, 0.3, -0.2, 0.1];
     static MAPS: [TargetMap<'static, f64>; 1] = [TargetMap {
         gains: &GAINS,
         gamma: Gamma {
             offset: 1.0,
             weights: &WEIGHTS,
-            curvatures: &CURVATURES,
+            odds_ratios: &ODDS_RATIOS,
         },
         r_min: -2.0,
         r_span: 4.0,
@@ -194,13 +194,13 @@ mod tests {
     fn works_in_f32_without_inputs() {
         static GAINS32: [f32; 2] = [1.0, 1.0];
         static W: [f32; 1] = [1.0];
-        static B: [f32; 1] = [0.0];
+        static B: [f32; 1] = [1.0];
         static MAPS32: [TargetMap<'static, f32>; 1] = [TargetMap {
             gains: &GAINS32,
             gamma: Gamma {
                 offset: 0.0,
                 weights: &W,
-                curvatures: &B,
+                odds_ratios: &B,
             },
             r_min: 0.0,
             r_span: 1.0,

@@ -37,16 +37,16 @@ pub const INPUT_NAMES: [&str; INPUTS] = [];
 /// Target names, in estimate order.
 pub const TARGET_NAMES: [&str; TARGETS] = ["P", "muX"];
 
-/// Curvatures `b_j` of the basis `B(η; b) = (1 + b) η / (1 + b η)`, shared by every target.
-const CURVATURES: [f32; 8] = [
-    0.0,
-    -0.63212055,
-    -0.86466473,
-    -0.95021296,
-    1.7182819,
-    6.389056,
-    19.085537,
-    53.59815,
+/// Odds ratios `c_j` of the basis `B(η; c) = c η / ((1 - η) + c η)`, shared by every target.
+const ODDS_RATIOS: [f32; 8] = [
+    1.0,
+    0.36787945,
+    0.13533528,
+    0.049787067,
+    2.7182817,
+    7.389056,
+    20.085537,
+    54.59815,
 ];
 
 /// `P = P`: validation RMSE 0.0542, max error 0.2707 (linear floor RMSE 0.0546).
@@ -71,7 +71,7 @@ pub const MAP_P: TargetMap<'static, f32> = TargetMap {
             0.00029846383,
             -0.00011823049,
         ],
-        curvatures: &CURVATURES,
+        odds_ratios: &ODDS_RATIOS,
     },
     r_min: 0.0,
     r_span: 0.4457929,
@@ -91,15 +91,15 @@ pub const MAP_MUX: TargetMap<'static, f32> = TargetMap {
         offset: -0.00022176476,
         weights: &[
             0.010000002,
-            -2.274326e-9,
-            1.0015225e-9,
-            8.408624e-11,
-            -7.282167e-10,
-            9.542971e-10,
-            -1.9078674e-9,
-            2.2346927e-9,
+            -2.2743258e-9,
+            1.0015224e-9,
+            8.408623e-11,
+            -7.282166e-10,
+            9.54297e-10,
+            -1.9078672e-9,
+            2.2346924e-9,
         ],
-        curvatures: &CURVATURES,
+        odds_ratios: &ODDS_RATIOS,
     },
     r_min: 0.0,
     r_span: 0.43531778,

@@ -37,16 +37,16 @@ pub const INPUT_NAMES: [&str; INPUTS] = [];
 /// Target names, in estimate order.
 pub const TARGET_NAMES: [&str; TARGETS] = ["P", "muX"];
 
-/// Curvatures `b_j` of the basis `B(η; b) = (1 + b) η / (1 + b η)`, shared by every target.
-const CURVATURES: [f32; 8] = [
-    0.0,
-    -0.63212055,
-    -0.86466473,
-    -0.95021296,
-    1.7182819,
-    6.389056,
-    19.085537,
-    53.59815,
+/// Odds ratios `c_j` of the basis `B(η; c) = c η / ((1 - η) + c η)`, shared by every target.
+const ODDS_RATIOS: [f32; 8] = [
+    1.0,
+    0.36787945,
+    0.13533528,
+    0.049787067,
+    2.7182817,
+    7.389056,
+    20.085537,
+    54.59815,
 ];
 
 /// `P = P`: validation RMSE 0.0811, max error 0.2249 (linear floor RMSE 0.0811).
@@ -71,7 +71,7 @@ pub const MAP_P: TargetMap<'static, f32> = TargetMap {
             4.089665e-9,
             6.45834e-9,
         ],
-        curvatures: &CURVATURES,
+        odds_ratios: &ODDS_RATIOS,
     },
     r_min: 0.0,
     r_span: 0.7078263,
@@ -99,7 +99,7 @@ pub const MAP_MUX: TargetMap<'static, f32> = TargetMap {
             -0.001355106,
             0.000588536,
         ],
-        curvatures: &CURVATURES,
+        odds_ratios: &ODDS_RATIOS,
     },
     r_min: 0.0,
     r_span: 0.9086774,

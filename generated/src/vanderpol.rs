@@ -37,16 +37,9 @@ pub const INPUT_NAMES: [&str; INPUTS] = [];
 /// Target names, in estimate order.
 pub const TARGET_NAMES: [&str; TARGETS] = ["x1", "x2"];
 
-/// Curvatures `b_j` of the basis `B(η; b) = (1 + b) η / (1 + b η)`, shared by every target.
-const CURVATURES: [f32; 8] = [
-    0.0,
-    -0.39346933,
-    -0.63212055,
-    -0.77686983,
-    0.6487213,
-    1.7182819,
-    3.481689,
-    6.389056,
+/// Odds ratios `c_j` of the basis `B(η; c) = c η / ((1 - η) + c η)`, shared by every target.
+const ODDS_RATIOS: [f32; 8] = [
+    1.0, 0.60653067, 0.36787945, 0.22313017, 1.6487212, 2.7182817, 4.481689, 7.389056,
 ];
 
 /// `x1 = x1`: validation RMSE 0.2424, max error 1.4808 (linear floor RMSE 0.2636).
@@ -75,7 +68,7 @@ pub const MAP_X1: TargetMap<'static, f32> = TargetMap {
             0.5507883,
             -0.08822006,
         ],
-        curvatures: &CURVATURES,
+        odds_ratios: &ODDS_RATIOS,
     },
     r_min: -2.411638,
     r_span: 4.823276,
@@ -107,7 +100,7 @@ pub const MAP_X2: TargetMap<'static, f32> = TargetMap {
             -1.8668089e-6,
             6.616262e-7,
         ],
-        curvatures: &CURVATURES,
+        odds_ratios: &ODDS_RATIOS,
     },
     r_min: -4.6765766,
     r_span: 9.353153,

@@ -1,7 +1,9 @@
 //! Emission of the fitted maps as Rust source (askama templates in `host/templates/`).
 //!
 //! Each design becomes `generated/src/<design>.rs`: a provenance header, constant `f32` tables and a
-//! `const fn` constructor; `generated/src/lib.rs` declares every design file present. Every literal is
+//! `const fn` constructor, written only once the f32 tables have been checked against the f64 map on
+//! every validation window and the scenario ([`crate::precision`]); `generated/src/lib.rs` declares
+//! every design file present. Every literal is
 //! printed so that it parses back to the same `f32` bits, non-finite values are refused, and nothing in
 //! the output depends on the machine, the time or the way `gen` was invoked: regeneration is byte for
 //! byte.
@@ -10,6 +12,7 @@ use std::path::Path;
 
 use askama::Template;
 
+use crate::data::DataSet;
 use crate::pipeline::DesignResult;
 use crate::spec::Design;
 
@@ -33,6 +36,14 @@ pub enum EmitError {
         second: String,
         /// The constant both map to.
         constant: String,
+    },
+    /// Rounded to f32, the tables do not reproduce the f64 map (see [`crate::precision`]).
+    #[error("target `{target}`: {mismatch}; lower `map.beta` or `map.nm`")]
+    NotReproducibleInF32 {
+        /// The target.
+        target: String,
+        /// Where it failed.
+        mismatch: crate::precision::F32Mismatch,
     },
     /// The template failed to render.
     #[error("template: {0}")]
@@ -105,8 +116,8 @@ struct DesignFile {
     inputs: Vec<String>,
     output_list: String,
     input_list: String,
-    curvature_count: usize,
-    curvatures: String,
+    odds_ratio_count: usize,
+    odds_ratios: String,
     targets: Vec<TargetTables>,
     recorded_len: usize,
     recorded_y: String,
@@ -252,6 +263,18 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
                 constant: const_name,
             });
         }
+        for data in [
+            &result.validation,
+            &DataSet {
+                runs: vec![result.scenario.clone()],
+                horizon: design.map.horizon,
+            },
+        ] {
+            crate::precision::check_f32(map, data).map_err(|mismatch| EmitError::NotReproducibleInF32 {
+                target: target.name.clone(),
+                mismatch,
+            })?;
+        }
         let what = |field: &str| format!("target `{}` {field}", target.name);
         targets.push(TargetTables {
             name: target.name.clone(),
@@ -267,10 +290,10 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
             r_span: f32_literal(&what("r_span"), map.r_max - map.r_min)?,
         });
     }
-    let curvatures = result
+    let odds_ratios = result
         .targets
         .first()
-        .map(|t| t.fit.map.curvatures.clone())
+        .map(|t| t.fit.map.odds_ratios.clone())
         .unwrap_or_default();
     let file = DesignFile {
         name: design.name.clone(),
@@ -289,8 +312,8 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
         input_list: list(&design.model.inputs),
         outputs,
         inputs: design.model.inputs.clone(),
-        curvature_count: curvatures.len(),
-        curvatures: literal_block("curvatures", &curvatures, 4)?,
+        odds_ratio_count: odds_ratios.len(),
+        odds_ratios: literal_block("odds_ratios", &odds_ratios, 4)?,
         targets,
         recorded_len: result.scenario.measurements.len(),
         recorded_y: recorded_rows(

@@ -7,7 +7,7 @@
 //! ```
 //!
 //! Two normalisations fix the scale the paper leaves free:
-//! * `paper`: basis `{1, B(·; b_j)}`, no constant in `Z`, the equality above.
+//! * `paper`: basis `{1, B(·; c_j)}`, no constant in `Z`, the equality above.
 //! * `intercept`: a constant 1 appended to `Z`. It and the constant basis function are then the same
 //!   degree of freedom, so the constant function is dropped, and the equality (which only pinned `μ₀`)
 //!   with it. The problem is homogeneous: the scale of `(μ, L)` is set by `ε`, the fitted `F` does not
@@ -48,7 +48,7 @@ use crate::streaming_qr::StreamingQr;
 /// Relative floor of the whitening scales `σ_i` (step 3 above). Directions of `μ` the data barely
 /// see (`s_i` below the floor) keep a Hessian entry `(s_i/σ_i)² < 1` instead of blowing their
 /// constraint columns up by `1/s_i`: with a floor of 1e-7 Clarabel met the normalised constraint rows
-/// to its tolerance while `Γ'(0)` was off by 10⁶ ε at β = 5 (curvatures up to e^20); 1e-3 solves
+/// to its tolerance while `Γ'(0)` was off by 10⁶ ε at β = 5 (odds ratios from e^-15 to e^20); 1e-3 solves
 /// β up to 7 on Example 1 in at most two refinement rounds, with the same intercept-map estimates.
 const WHITENING_FLOOR: f64 = 1e-3;
 /// At most this many re-solves with points added to the monotonicity grid.
@@ -150,14 +150,14 @@ pub struct Fit {
 
 /// Fits target `target` of `data` with `settings`.
 pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSettings) -> Result<Fit, FitError> {
-    let curvatures: Vec<f64> = basis::paper_curvatures(settings.nm, settings.beta).collect();
+    let odds_ratios: Vec<f64> = basis::paper_odds_ratios(settings.nm, settings.beta).collect();
     let range = TargetRange::gather(data, target)?;
-    let r_factor = accumulate(data, target, &range, &curvatures);
+    let r_factor = accumulate(data, target, &range, &odds_ratios);
     let linear = linear_floor(&r_factor, &range)?;
     let with_constant = settings.normalisation == Normalisation::Paper;
     let reduced = Reduced::new(&r_factor, range.scales.len(), with_constant, range.windows);
     let columns = Columns {
-        curvatures: &curvatures,
+        odds_ratios: &odds_ratios,
         with_constant,
     };
 
@@ -189,7 +189,7 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
         intercept,
         mu_constant,
         mu_basis,
-        curvatures.clone(),
+        odds_ratios.clone(),
         (range.min, range.max),
     );
 
@@ -282,10 +282,10 @@ impl TargetRange {
     }
 }
 
-/// `R` of `[Z̃ | 1 | B(η; b_j) | r]` over every learning window (pass 2).
-fn accumulate(data: &DataSet, target: usize, range: &TargetRange, curvatures: &[f64]) -> DMatrix<f64> {
+/// `R` of `[Z̃ | 1 | B(η; c_j) | r]` over every learning window (pass 2).
+fn accumulate(data: &DataSet, target: usize, range: &TargetRange, odds_ratios: &[f64]) -> DMatrix<f64> {
     let n_z = range.scales.len();
-    let columns = n_z + 1 + curvatures.len() + 1;
+    let columns = n_z + 1 + odds_ratios.len() + 1;
     let mut qr = StreamingQr::new(columns);
     let mut row = vec![0.0; columns];
     let mut z = Vec::with_capacity(n_z);
@@ -297,7 +297,7 @@ fn accumulate(data: &DataSet, target: usize, range: &TargetRange, curvatures: &[
             row[c] = v / s;
         }
         row[n_z] = 1.0;
-        for (j, &b) in curvatures.iter().enumerate() {
+        for (j, &b) in odds_ratios.iter().enumerate() {
             row[n_z + 1 + j] = basis::value(b, eta);
         }
         row[columns - 1] = r;
@@ -322,7 +322,7 @@ fn linear_floor(r_factor: &DMatrix<f64>, range: &TargetRange) -> Result<LinearMa
 
 /// The `μ`-columns of a normalisation: the basis functions, after the constant with `paper`.
 struct Columns<'a> {
-    curvatures: &'a [f64],
+    odds_ratios: &'a [f64],
     with_constant: bool,
 }
 
@@ -331,10 +331,10 @@ impl Columns<'_> {
     fn slopes(&self, eta: f64) -> DVector<f64> {
         let constant = self.with_constant.then_some(0.0);
         DVector::from_iterator(
-            self.curvatures.len() + usize::from(self.with_constant),
+            self.odds_ratios.len() + usize::from(self.with_constant),
             constant
                 .into_iter()
-                .chain(self.curvatures.iter().map(|&b| basis::slope(b, eta))),
+                .chain(self.odds_ratios.iter().map(|&b| basis::slope(b, eta))),
         )
     }
 
@@ -342,10 +342,10 @@ impl Columns<'_> {
     fn integrals(&self) -> DVector<f64> {
         let constant = self.with_constant.then_some(1.0);
         DVector::from_iterator(
-            self.curvatures.len() + usize::from(self.with_constant),
+            self.odds_ratios.len() + usize::from(self.with_constant),
             constant
                 .into_iter()
-                .chain(self.curvatures.iter().map(|&b| basis::integral(b))),
+                .chain(self.odds_ratios.iter().map(|&b| basis::integral(b))),
         )
     }
 
@@ -510,17 +510,17 @@ mod tests {
 
     /// Regressors and targets of a known map r = 3 + 2 Γ⁻¹(Lᵀ Z), Γ from the same basis family.
     fn synthetic(seed: u64, count: usize) -> Vec<(Vec<f64>, f64)> {
-        let curvatures: Vec<f64> = basis::paper_curvatures(3, 1.0).collect();
+        let odds_ratios: Vec<f64> = basis::paper_odds_ratios(3, 1.0).collect();
         let mu = [0.2, 1.5, 0.1, 0.8];
         let weights: Vec<f64> = mu
             .iter()
-            .zip(&curvatures)
+            .zip(&odds_ratios)
             .map(|(&m, &b)| firmware::gamma::weight(m, b))
             .collect();
         let gamma = firmware::Gamma {
             offset: 0.0,
             weights: &weights,
-            curvatures: &curvatures,
+            odds_ratios: &odds_ratios,
         };
         let gains = [0.7, -0.4, 0.25];
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
@@ -602,7 +602,7 @@ mod tests {
         let n_e = windows.len();
         let n_z = data.regressor_len();
         let (r_min, r_max) = (fit.map.r_min, fit.map.r_max);
-        let curvatures = &fit.map.curvatures;
+        let odds_ratios = &fit.map.odds_ratios;
         let m = c.mu.len();
         let l_count = if c.with_constant { n_z } else { n_z + 1 };
         let mut z_matrix = DMatrix::zeros(n_e, l_count);
@@ -621,7 +621,7 @@ mod tests {
                 .with_constant
                 .then_some(1.0)
                 .into_iter()
-                .chain(curvatures.iter().map(|&b| basis::value(b, eta)))
+                .chain(odds_ratios.iter().map(|&b| basis::value(b, eta)))
                 .collect();
             for j in 0..m {
                 b_matrix[(i, j)] = values[j];
@@ -636,7 +636,7 @@ mod tests {
                 c.with_constant
                     .then_some(0.0)
                     .into_iter()
-                    .chain(curvatures.iter().map(|&b| basis::slope(b, eta))),
+                    .chain(odds_ratios.iter().map(|&b| basis::slope(b, eta))),
             )
         };
         let mut multiplier_term = DVector::zeros(m);
@@ -655,7 +655,7 @@ mod tests {
         if c.with_constant {
             let integral = DVector::from_iterator(
                 m,
-                std::iter::once(1.0).chain(curvatures.iter().map(|&b| basis::integral(b))),
+                std::iter::once(1.0).chain(odds_ratios.iter().map(|&b| basis::integral(b))),
             );
             assert!(
                 (integral.dot(&mu) - c.mean).abs() < 1e-8 * (1.0 + c.mean.abs()),

@@ -18,6 +18,7 @@ pub mod monotonicity;
 pub mod output;
 pub mod pipeline;
 pub mod plots;
+pub mod precision;
 pub mod qp;
 pub mod recording;
 pub mod report;

@@ -19,11 +19,11 @@ pub struct FittedMap {
     pub intercept: f64,
     /// Coefficient `μ₀` of the constant basis function (0 with `intercept`).
     pub mu_constant: f64,
-    /// Coefficients `μ_j` of `B(·; b_j)`.
+    /// Coefficients `μ_j` of `B(·; c_j)`.
     pub mu: Vec<f64>,
-    /// Curvatures `b_j`.
-    pub curvatures: Vec<f64>,
-    /// `w_j = μ_j (1 + b_j)`, what the firmware evaluates.
+    /// Odds ratios `c_j` of the basis functions.
+    pub odds_ratios: Vec<f64>,
+    /// `w_j = μ_j c_j`, what the firmware evaluates.
     pub weights: Vec<f64>,
     /// `Γ(0)` of the firmware form, `μ₀ - c`.
     pub offset: f64,
@@ -43,12 +43,12 @@ impl FittedMap {
         intercept: f64,
         mu_constant: f64,
         mu: Vec<f64>,
-        curvatures: Vec<f64>,
+        odds_ratios: Vec<f64>,
         (r_min, r_max): (f64, f64),
     ) -> Self {
         let weights = mu
             .iter()
-            .zip(&curvatures)
+            .zip(&odds_ratios)
             .map(|(&m, &b)| firmware::gamma::weight(m, b))
             .collect();
         FittedMap {
@@ -58,7 +58,7 @@ impl FittedMap {
             intercept,
             mu_constant,
             mu,
-            curvatures,
+            odds_ratios,
             weights,
             offset: mu_constant - intercept,
             r_min,
@@ -71,7 +71,7 @@ impl FittedMap {
         Gamma {
             offset: self.offset,
             weights: &self.weights,
-            curvatures: &self.curvatures,
+            odds_ratios: &self.odds_ratios,
         }
     }
 

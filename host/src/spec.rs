@@ -675,7 +675,7 @@ impl Validator {
             return Err(self.err(
                 "map.beta",
                 format!(
-                    "β·(n_m - 1) = {} makes basis curvatures up to e^{:.0}: the basis degenerates to steps",
+                    "β·(n_m - 1) = {} makes basis odds ratios reach e^{:.0}: the basis degenerates to steps",
                     beta * (raw.nm as f64 - 1.0),
                     beta * (raw.nm as f64 - 1.0)
                 ),

@@ -37,9 +37,9 @@ pub const INPUT_NAMES: [&str; INPUTS] = [{% for i in inputs %}"{{ i }}"{% if !lo
 /// Target names, in estimate order.
 pub const TARGET_NAMES: [&str; TARGETS] = [{% for t in targets %}"{{ t.name }}"{% if !loop.last %}, {% endif %}{% endfor %}];
 
-/// Curvatures `b_j` of the basis `B(η; b) = (1 + b) η / (1 + b η)`, shared by every target.
-const CURVATURES: [f32; {{ curvature_count }}] = [
-{{ curvatures }}
+/// Odds ratios `c_j` of the basis `B(η; c) = c η / ((1 - η) + c η)`, shared by every target.
+const ODDS_RATIOS: [f32; {{ odds_ratio_count }}] = [
+{{ odds_ratios }}
 ];
 {% for t in targets %}
 /// `{{ t.name }} = {{ t.expr }}`: validation RMSE {{ t.rmse }}, max error {{ t.max_error }} (linear floor RMSE {{ t.linear_rmse }}).
@@ -52,7 +52,7 @@ pub const {{ t.const_name }}: TargetMap<'static, f32> = TargetMap {
         weights: &[
 {{ t.weights }}
         ],
-        curvatures: &CURVATURES,
+        odds_ratios: &ODDS_RATIOS,
     },
     r_min: {{ t.r_min }},
     r_span: {{ t.r_span }},
