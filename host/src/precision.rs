@@ -13,9 +13,9 @@
 //! So `|r_f32 - r_f64| ≤ r_span (2⁻²⁴ + 2 (δv + δΓ)/Γ'(η)) + 4 u (|r_min| + r_span)`. Saturation flags
 //! must agree except where `v` lies within `δv + δΓ` of `Γ(0)` or `Γ(1)`, where either answer is right.
 
-use crate::data::DataSet;
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(x <= y)` is deliberate: a NaN must fail the check.
 
+use crate::data::DataSet;
 use crate::maps::FittedMap;
 
 /// The f32 unit roundoff `2⁻²⁴`.
