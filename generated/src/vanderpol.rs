@@ -39,7 +39,14 @@ pub const TARGET_NAMES: [&str; TARGETS] = ["x1", "x2"];
 
 /// Odds ratios `c_j` of the basis `B(η; c) = c η / ((1 - η) + c η)`, shared by every target.
 const ODDS_RATIOS: [f32; 8] = [
-    1.0, 0.60653067, 0.36787945, 0.22313017, 1.6487212, 2.7182817, 4.481689, 7.389056,
+    1.0,
+    0.60653067,
+    0.36787945,
+    0.22313017,
+    1.6487212,
+    2.7182817,
+    4.481689,
+    7.389056,
 ];
 
 /// `x1 = x1`: validation RMSE 0.2424, max error 1.4808 (linear floor RMSE 0.2636).

@@ -24,7 +24,10 @@
 #![no_std]
 
 pub use firmware;
-{% for name in designs %}
+
+// Emitted files keep the layout `gen` gives them (regeneration is compared byte for byte).
+{%- for name in designs %}
+#[rustfmt::skip]
 pub mod {{ name }};
 {%- endfor %}
 
