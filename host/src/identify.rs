@@ -68,7 +68,7 @@ pub enum FitError {
         value: f64,
     },
     /// A regressor column is (numerically) a combination of the others.
-    #[error("regressor column {column} is a linear combination of the others (no noise and too long a horizon?)")]
+    #[error("regressor column {column} is a linear combination of the others")]
     DependentRegressor {
         /// The column index in `Z` (`n_z` is the intercept).
         column: usize,

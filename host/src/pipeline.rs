@@ -85,11 +85,10 @@ pub fn explain(design: &Design, index: usize, error: FitError) -> SpecError {
             problem,
             "a target must vary over the learning data: widen `learning.grid` or estimate another quantity",
         ),
-        FitError::DependentRegressor { .. } => design.error(
-            "map.horizon",
-            problem,
-            "lower `map.horizon`, or give the outputs measurement noise (`model.outputs[].noise_variance` > 0) as the real sensor has",
-        ),
+        FitError::DependentRegressor { column } => {
+            let (field, fix) = regressor_column_source(design, column);
+            design.error(field, problem, fix)
+        }
         FitError::NonFinite => design.error(
             format!("targets[{index}].expr"),
             problem,
@@ -110,5 +109,36 @@ pub fn explain(design: &Design, index: usize, error: FitError) -> SpecError {
             problem,
             "raise `map.monotonicity_grid` (e.g. to 801), or lower `map.beta` so that the basis bends less sharply",
         ),
+    }
+}
+
+/// The spec field behind column `column` of the regressor (with the intercept as column `n_z`), and
+/// what to change when that column is a combination of the others.
+fn regressor_column_source(design: &Design, column: usize) -> (String, String) {
+    let (n_y, n_u, horizon) = (
+        design.model.outputs.len(),
+        design.model.inputs.len(),
+        design.map.horizon,
+    );
+    if column < horizon * n_y {
+        let output = &design.model.outputs[column % n_y].name;
+        (
+            format!("model.outputs[{}]", column % n_y),
+            format!(
+                "output `{output}` at lag {} repeats the others: give it measurement noise (`noise_variance` > 0) as the real sensor has, make it depend on the state, or lower `map.horizon`",
+                column / n_y
+            ),
+        )
+    } else if column < horizon * (n_y + n_u) {
+        let input = &design.model.inputs[(column - horizon * n_y) % n_u];
+        (
+            format!("learning.inputs.{input}"),
+            format!("input `{input}` does not vary enough to be told from the others: give it a range (min < max) and a shorter `hold`"),
+        )
+    } else {
+        (
+            "map.normalisation".to_owned(),
+            "the intercept is a combination of the regressor: use `normalisation = \"paper\"`".to_owned(),
+        )
     }
 }

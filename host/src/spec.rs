@@ -209,6 +209,9 @@ fn is_module_name(name: &str) -> bool {
         && !RUST_KEYWORDS.contains(&name)
 }
 
+/// Names that would collide with the columns `time`, `run` and `saturated` of recorded CSV files.
+const RESERVED_NAMES: &[&str] = &["time", "run", "saturated"];
+
 /// Names that cannot be a Rust module (the design name becomes one in `generated/`).
 const RUST_KEYWORDS: &[&str] = &[
     "as", "async", "await", "break", "const", "continue", "crate", "dyn", "else", "enum", "extern", "false", "fn",
@@ -412,6 +415,13 @@ impl Validator {
         let mut chars = name.chars();
         let valid = matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_')
             && chars.all(|c| c.is_ascii_alphanumeric() || c == '_');
+        if RESERVED_NAMES.contains(&name) {
+            return Err(self.err(
+                field,
+                format!("`{name}` is reserved: it names a column of the CSV files `simulate` and `estimate` use"),
+                format!("rename it (reserved: {})", RESERVED_NAMES.join(", ")),
+            ));
+        }
         if valid {
             Ok(())
         } else {
@@ -755,7 +765,7 @@ impl Validator {
                         format!("add `inputs.{input} = {{ min = …, max = …, hold = … }}` under `[learning]`"),
                     )
                 })?;
-                if !(p.min.is_finite() && p.max.is_finite() && p.min <= p.max) {
+                if !(p.min.is_finite() && p.max.is_finite() && p.min <= p.max && (p.max - p.min).is_finite()) {
                     return Err(self.err(
                         format!("{field}.min"),
                         format!("the range [{}, {}] is not a finite interval", p.min, p.max),
@@ -793,7 +803,7 @@ impl Validator {
                 "give a finite value",
             )),
             (Some(min), Some(max), Some(points), None) => {
-                if !(min.is_finite() && max.is_finite()) {
+                if !(min.is_finite() && max.is_finite() && (max - min).is_finite()) {
                     return Err(self.err(
                         format!("{field}.min"),
                         format!("the bounds [{min}, {max}] are not finite"),

@@ -185,3 +185,34 @@ fn command_line_exits_non_zero_without_panic_and_keeps_earlier_reports() {
     assert!(!missing.status.success());
     assert!(String::from_utf8_lossy(&missing.stderr).contains("no/such/spec.toml"));
 }
+
+#[test]
+fn bounds_whose_span_overflows() {
+    let e = parse_error(&edited("min = -5.0, max = 5.0", "min = -1e308, max = 1e308"));
+    assert_names(&e, "learning.grid.x2", "finite");
+}
+
+#[test]
+fn names_reserved_for_csv_columns() {
+    let e = parse_error(&edited("name = \"y\"", "name = \"time\""));
+    assert_names(&e, "model.outputs[0].name", "reserved");
+    let e = parse_error(&edited("name = \"x2\"", "name = \"run\""));
+    assert_names(&e, "targets[1].name", "reserved");
+}
+
+#[test]
+fn constant_input_is_blamed_on_its_profile() {
+    // A model with an input held constant: its regressor columns repeat the intercept.
+    let text = edited(
+        "states = [\"x1\", \"x2\"]",
+        "states = [\"x1\", \"x2\"]\ninputs = [\"u\"]",
+    )
+    .replacen(
+        "grid.x2 = { min = -5.0, max = 5.0, points = 4 }",
+        "grid.x2 = { min = -5.0, max = 5.0, points = 4 }\ninputs.u = { min = 0.3, max = 0.3, hold = 1 }",
+        1,
+    );
+    let design = spec::parse(Path::new("bad.toml"), &text).unwrap();
+    let e = host::pipeline::run(&design, &indicatif::ProgressBar::hidden()).expect_err("must be refused");
+    assert_names(&e, "learning.inputs.u", "min < max");
+}
