@@ -37,8 +37,11 @@ pub mod vanderpol;
 pub mod ecoli {
     use super::ecoli_x0_0p5 as first;
 
+    /// Horizon, outputs, inputs and targets, shared by every member.
+    pub use first::{HORIZON, INPUTS, OUTPUTS, TARGETS};
+
     /// The members, by increasing value.
-    pub static MEMBERS: [firmware::Member<'static, f32, { first::TARGETS }>; 2] = [
+    pub static MEMBERS: [firmware::Member<'static, f32, TARGETS>; 2] = [
         firmware::Member {
             value: 0.5,
             maps: &super::ecoli_x0_0p5::MAPS,
@@ -56,10 +59,10 @@ pub mod ecoli {
     pub type Observer = firmware::FamilyObserver<
         'static,
         f32,
-        { first::HORIZON },
-        { first::OUTPUTS },
-        { first::INPUTS },
-        { first::TARGETS },
+        HORIZON,
+        OUTPUTS,
+        INPUTS,
+        TARGETS,
         2,
     >;
 
@@ -68,6 +71,9 @@ pub mod ecoli {
         firmware::FamilyObserver::new(&MEMBERS, SELECTING_OUTPUT)
     }
 }
+
+/// The family modules, for code that treats them all alike (the on-target size probes).
+pub const FAMILIES: [&str; 1] = ["ecoli"];
 
 /// Invokes `$callback!(design)` for every design module, for code that treats them all alike
 /// (the generated-vs-library tests, the on-target runner).

@@ -40,8 +40,11 @@ pub mod {{ name }};
 pub mod {{ f.name }} {
     use super::{{ first }} as first;
 
+    /// Horizon, outputs, inputs and targets, shared by every member.
+    pub use first::{HORIZON, INPUTS, OUTPUTS, TARGETS};
+
     /// The members, by increasing value.
-    pub static MEMBERS: [firmware::Member<'static, f32, { first::TARGETS }>; {{ f.members.len() }}] = [
+    pub static MEMBERS: [firmware::Member<'static, f32, TARGETS>; {{ f.members.len() }}] = [
 {%- for m in f.members %}
         firmware::Member {
             value: {{ m.1 }},
@@ -57,10 +60,10 @@ pub mod {{ f.name }} {
     pub type Observer = firmware::FamilyObserver<
         'static,
         f32,
-        { first::HORIZON },
-        { first::OUTPUTS },
-        { first::INPUTS },
-        { first::TARGETS },
+        HORIZON,
+        OUTPUTS,
+        INPUTS,
+        TARGETS,
         {{ f.members.len() }},
     >;
 
@@ -70,6 +73,9 @@ pub mod {{ f.name }} {
     }
 }
 {%- endfor %}
+
+/// The family modules, for code that treats them all alike (the on-target size probes).
+pub const FAMILIES: [&str; {{ families.len() }}] = [{% for f in families %}"{{ f.name }}"{% if !loop.last %}, {% endif %}{% endfor %}];
 
 /// Invokes `$callback!(design)` for every design module, for code that treats them all alike
 /// (the generated-vs-library tests, the on-target runner).

@@ -274,9 +274,19 @@ fn parse(text: &str) -> Result<BTreeMap<String, DesignMeasurement>, Unavailable>
     Ok(designs)
 }
 
-/// Builds and runs the on-target program and the size probes; returns the measurements per design.
+/// Everything measured on the target.
+#[derive(Clone, Debug, Default)]
+pub struct Measurements {
+    /// Per design.
+    pub designs: BTreeMap<String, DesignMeasurement>,
+    /// Flash added by each family observer (all its members' tables and the selection) over the
+    /// baseline probe, in bytes; its probe links, so it has no reachable panic either.
+    pub family_flash_bytes: BTreeMap<String, u64>,
+}
+
+/// Builds and runs the on-target program and the size probes; returns the measurements.
 /// `Err(Unavailable::Missing)` when QEMU or the size tool is not installed.
-pub fn measure() -> Result<BTreeMap<String, DesignMeasurement>, Unavailable> {
+pub fn measure() -> Result<Measurements, Unavailable> {
     require("qemu-system-arm", "qemu-system-arm")?;
     require("arm-none-eabi-size", "binutils-arm-none-eabi")?;
     let root = workspace_root().join("target");
@@ -300,7 +310,16 @@ pub fn measure() -> Result<BTreeMap<String, DesignMeasurement>, Unavailable> {
         design.flash_bytes = (text + data).saturating_sub(baseline.0 + baseline.1);
         design.static_ram_bytes = (data + bss).saturating_sub(baseline.1 + baseline.2);
     }
-    Ok(designs)
+    let mut family_flash_bytes = BTreeMap::new();
+    for family in generated::FAMILIES {
+        let probe = build("probe", family, &probes).map_err(|e| failed(format!("probe of family {family}: {e}")))?;
+        let (text, data, _) = sizes(&probe)?;
+        family_flash_bytes.insert(family.to_owned(), (text + data).saturating_sub(baseline.0 + baseline.1));
+    }
+    Ok(Measurements {
+        designs,
+        family_flash_bytes,
+    })
 }
 
 /// Builds the probe that indexes out of bounds: it must fail to link, naming the missing symbol.

@@ -4,9 +4,9 @@
 
 use std::collections::BTreeMap;
 
-use integration_tests::on_target::{self, DesignMeasurement, Unavailable};
+use integration_tests::on_target::{self, DesignMeasurement, Measurements, Unavailable};
 
-fn measurements() -> Option<BTreeMap<String, DesignMeasurement>> {
+fn measurements() -> Option<Measurements> {
     match on_target::measure() {
         Ok(measurements) => Some(measurements),
         Err(missing @ Unavailable::Missing { .. }) if std::env::var_os("CI").is_none() => {
@@ -65,7 +65,8 @@ thread_local! {
 
 #[test]
 fn generated_observers_on_the_emulated_cortex_m4f() {
-    let Some(measured) = measurements() else { return };
+    let Some(all) = measurements() else { return };
+    let measured = all.designs;
     MEASURED.with(|m| *m.borrow_mut() = Some(measured.clone()));
     // Bit for bit with the host running the same firmware code in f32 (IEEE-754 single precision,
     // round to nearest, no fused multiply-add on either side).
@@ -84,6 +85,11 @@ fn generated_observers_on_the_emulated_cortex_m4f() {
             "{name}: instruction counts {:?}",
             design.instructions
         );
+        // The same instruction path every sample: only the bisection's branch outcomes differ.
+        assert!(
+            max - min <= median / 50,
+            "{name}: instruction counts vary from {min} to {max}"
+        );
         assert!(
             design.flash_bytes > 0 && design.observer_bytes > 0,
             "{name}: {design:?}"
@@ -93,6 +99,11 @@ fn generated_observers_on_the_emulated_cortex_m4f() {
              static RAM {} B, max |target - host f64| = {largest:e}",
             design.flash_bytes, design.observer_bytes, design.static_ram_bytes
         );
+    }
+    for family in generated::FAMILIES {
+        let flash = all.family_flash_bytes[family];
+        assert!(flash > 0, "family {family}");
+        println!("family {family}: flash {flash} B, its probe links: no reachable panic");
     }
     assert!(
         on_target::panic_check_catches_a_reachable_panic().unwrap(),

@@ -24,11 +24,12 @@ fn main() -> ExitCode {
 }
 
 fn run() -> Result<String, String> {
-    let measured = on_target::measure().map_err(|e| e.to_string())?;
+    let all = on_target::measure().map_err(|e| e.to_string())?;
+    let measured = &all.designs;
     let mut table = String::from(
         "| design | targets | N | instructions per push + estimate (min / median / max) | flash bytes | RAM bytes | max \\|target − host\\| |\n|---|---|---|---|---|---|---|\n",
     );
-    for (name, design) in &measured {
+    for (name, design) in measured {
         let spec = integration_tests::shipped_specs()
             .into_iter()
             .find_map(|p| host::spec::load(&p).ok().filter(|d| &d.name == name))
@@ -44,6 +45,9 @@ fn run() -> Result<String, String> {
             design.flash_bytes,
             design.observer_bytes + design.static_ram_bytes as usize,
         );
+    }
+    for (family, flash) in &all.family_flash_bytes {
+        table += &format!("| family `{family}` | (its members') | | (its members') | {flash} | | |\n");
     }
     let readme_path = workspace_root().join("README.md");
     let readme = std::fs::read_to_string(&readme_path).map_err(|e| e.to_string())?;
