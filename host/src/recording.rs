@@ -119,11 +119,11 @@ pub fn read(design: &Design, path: &Path) -> Result<Vec<Row>, RecordingError> {
 /// One estimate row: per target `Some((value, saturated))`, or `None` where there is no estimate.
 pub type EstimateRow = Vec<Option<(f64, bool)>>;
 
-/// Runs the library maps over `rows` with the observer's semantics: a window of the last N accepted
-/// samples, restarted at each new `run`, a non-finite sample refused (no estimate on its row).
-pub fn estimate(maps: &[FittedMap], horizon: usize, rows: &[Row]) -> Vec<EstimateRow> {
+/// The regressor `Z` for every row, with the observer's semantics: a window of the last N accepted
+/// samples, restarted at each new `run`; `None` while fewer than N samples of the run were accepted,
+/// and on a row whose NaN/infinite sample was refused.
+pub fn regressors(horizon: usize, rows: &[Row]) -> Vec<Option<Vec<f64>>> {
     let mut window: VecDeque<&Row> = VecDeque::with_capacity(horizon);
-    let mut z = Vec::new();
     let mut previous_run: Option<&str> = None;
     rows.iter()
         .map(|row| {
@@ -132,24 +132,36 @@ pub fn estimate(maps: &[FittedMap], horizon: usize, rows: &[Row]) -> Vec<Estimat
                 previous_run = Some(&row.run);
             }
             if row.y.iter().chain(&row.u).any(|v| !v.is_finite()) {
-                return vec![None; maps.len()];
+                return None;
             }
             if window.len() == horizon {
                 window.pop_back();
             }
             window.push_front(row);
-            if window.len() < horizon {
-                return vec![None; maps.len()];
-            }
-            z.clear();
-            z.extend(window.iter().flat_map(|r| r.y.iter().copied()));
-            z.extend(window.iter().flat_map(|r| r.u.iter().copied()));
-            maps.iter()
+            (window.len() == horizon).then(|| {
+                // Newest first, all outputs of one instant together, then all inputs.
+                let mut z: Vec<f64> = window.iter().flat_map(|r| r.y.iter().copied()).collect();
+                z.extend(window.iter().flat_map(|r| r.u.iter().copied()));
+                z
+            })
+        })
+        .collect()
+}
+
+/// Runs the library maps over `rows` ([`regressors`]): per row, per target, the estimate and whether
+/// it saturated.
+pub fn estimate(maps: &[FittedMap], horizon: usize, rows: &[Row]) -> Vec<EstimateRow> {
+    regressors(horizon, rows)
+        .into_iter()
+        .map(|z| match z {
+            Some(z) => maps
+                .iter()
                 .map(|m| {
                     let e = m.estimate(&z);
                     Some((e.value, e.saturation.is_saturated()))
                 })
-                .collect()
+                .collect(),
+            None => vec![None; maps.len()],
         })
         .collect()
 }
@@ -190,4 +202,59 @@ pub fn run_csv(design: &Design, run: &Run) -> String {
         text += &(values.join(",") + "\n");
     }
     text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::data::{DataSet, Run, Window};
+
+    /// Rows of two runs with two outputs and one input, every value distinct.
+    fn rows() -> Vec<Row> {
+        (0..14)
+            .map(|k| Row {
+                run: if k < 6 { "a".into() } else { "b".into() },
+                y: vec![k as f64, 100.0 + k as f64],
+                u: vec![1000.0 + k as f64],
+            })
+            .collect()
+    }
+
+    #[test]
+    fn regressors_match_the_learning_data_construction() {
+        // The same samples as runs of a DataSet, whose regressor code is independent of this one.
+        let rows = rows();
+        let as_run = |rows: &[Row]| Run {
+            states: vec![vec![]; rows.len()],
+            inputs: rows.iter().map(|r| r.u.clone()).collect(),
+            measurements: rows.iter().map(|r| r.y.clone()).collect(),
+            targets: vec![vec![]; rows.len()],
+        };
+        let data = DataSet {
+            runs: vec![as_run(&rows[..6]), as_run(&rows[6..])],
+            horizon: 3,
+        };
+        let computed = regressors(3, &rows);
+        let mut z = Vec::new();
+        for (k, got) in computed.iter().enumerate() {
+            let (run, end) = if k < 6 { (0, k) } else { (1, k - 6) };
+            if end + 1 < 3 {
+                assert!(got.is_none(), "row {k}");
+                continue;
+            }
+            data.regressor(Window { run, end }, &mut z);
+            assert_eq!(got.as_deref(), Some(&z[..]), "row {k}");
+        }
+    }
+
+    #[test]
+    fn a_refused_row_is_skipped_not_counted() {
+        let mut rows = rows();
+        rows[9].u[0] = f64::NAN;
+        let computed = regressors(3, &rows);
+        assert!(computed[9].is_none());
+        // Row 10's window is rows 10, 8, 7 (row 9 refused, run b starts at row 6).
+        let expected: Vec<f64> = vec![10.0, 110.0, 8.0, 108.0, 7.0, 107.0, 1010.0, 1008.0, 1007.0];
+        assert_eq!(computed[10].as_deref(), Some(&expected[..]));
+    }
 }

@@ -388,9 +388,9 @@ pub fn compare_with_library(name: &str, measured: &DesignMeasurement) -> Result<
         ));
     }
     let horizon = design.map.horizon;
-    let mut accepted: Vec<&host::recording::Row> = Vec::new();
+    let regressors = host::recording::regressors(horizon, &rows);
     let mut largest: f64 = 0.0;
-    for (k, (row, sample)) in rows.iter().zip(&measured.samples).enumerate() {
+    for (k, ((row, sample), z)) in rows.iter().zip(&measured.samples).zip(&regressors).enumerate() {
         let finite = row.y.iter().chain(&row.u).all(|v| v.is_finite());
         if finite != sample.accepted {
             return Err(format!(
@@ -398,28 +398,22 @@ pub fn compare_with_library(name: &str, measured: &DesignMeasurement) -> Result<
                 sample.accepted
             ));
         }
-        if finite {
-            accepted.push(row);
-        }
-        let window: Vec<&&host::recording::Row> = accepted.iter().rev().take(horizon).collect();
-        let Some(estimates) = &sample.estimates else {
-            if window.len() == horizon {
+        let (Some(estimates), Some(z)) = (&sample.estimates, z) else {
+            if z.is_some() {
                 return Err(format!(
                     "{name} sample {k}: no estimate on the target after {horizon} samples"
                 ));
             }
             continue;
         };
-        let mut z: Vec<f64> = window.iter().flat_map(|r| r.y.iter().copied()).collect();
-        z.extend(window.iter().flat_map(|r| r.u.iter().copied()));
         for (t, ((bits, flag), fitted)) in estimates
             .iter()
             .zip(result.targets.iter().map(|t| &t.fit.map))
             .enumerate()
         {
-            let library = fitted.estimate(&z);
+            let library = fitted.estimate(z);
             let value = f64::from(f32::from_bits(*bits));
-            let (tolerance, decidable) = crate::tolerance::tolerance(fitted, &z);
+            let (tolerance, decidable) = crate::tolerance::tolerance(fitted, z);
             let difference = (value - library.value).abs();
             if difference > tolerance {
                 return Err(format!(

@@ -11,5 +11,16 @@ fn readme_spec_parses_and_builds() {
     assert_eq!(d.model.inputs, ["u"]);
     let result = build(&d);
     let t = &result.targets[0];
-    assert!(t.validation.map.rmse.is_finite() && t.validation.map.rmse < t.fit.map.r_max - t.fit.map.r_min);
+    // The outflow sqrt(|h|) is far from linear in the measured level: the map must beat the linear
+    // floor clearly, and stay well inside the target's range.
+    assert!(
+        t.validation.map.rmse < 0.5 * t.validation.linear.rmse,
+        "{:?}",
+        t.validation
+    );
+    assert!(
+        t.validation.map.rmse < 0.1 * (t.fit.map.r_max - t.fit.map.r_min),
+        "{:?}",
+        t.validation
+    );
 }
