@@ -34,6 +34,7 @@ pub mod vanderpol;
 /// Family `ecoli`: one design per value of output `X_meas` at the start of a batch
 /// (`ecoli_x0_0p5` at 0.5, `ecoli_x0_2` at 2.0). Its observer
 /// uses the member whose value is nearest the batch's first accepted measurement of that output.
+#[rustfmt::skip]
 pub mod ecoli {
     use super::ecoli_x0_0p5 as first;
 
@@ -73,6 +74,7 @@ pub mod ecoli {
 }
 
 /// The family modules, for code that treats them all alike (the on-target size probes).
+#[rustfmt::skip]
 pub const FAMILIES: [&str; 1] = ["ecoli"];
 
 /// Invokes `$callback!(design)` for every design module, for code that treats them all alike

@@ -37,6 +37,7 @@ pub mod {{ name }};
 /// Family `{{ f.name }}`: one design per value of output `{{ f.output_name }}` at the start of a batch
 /// ({% for m in f.members %}`{{ m.0 }}` at {{ m.1 }}{% if !loop.last %}, {% endif %}{% endfor %}). Its observer
 /// uses the member whose value is nearest the batch's first accepted measurement of that output.
+#[rustfmt::skip]
 pub mod {{ f.name }} {
     use super::{{ first }} as first;
 
@@ -75,6 +76,7 @@ pub mod {{ f.name }} {
 {%- endfor %}
 
 /// The family modules, for code that treats them all alike (the on-target size probes).
+#[rustfmt::skip]
 pub const FAMILIES: [&str; {{ families.len() }}] = [{% for f in families %}"{{ f.name }}"{% if !loop.last %}, {% endif %}{% endfor %}];
 
 /// Invokes `$callback!(design)` for every design module, for code that treats them all alike
