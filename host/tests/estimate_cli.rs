@@ -8,6 +8,19 @@ fn host(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_host")).args(args).output().unwrap()
 }
 
+/// `host estimate --design vanderpol --input IN --output OUT`.
+fn estimate_vanderpol(input: &Path, output: &Path) -> Output {
+    host(&[
+        "estimate",
+        "--design",
+        "vanderpol",
+        "--input",
+        s(input),
+        "--output",
+        s(output),
+    ])
+}
+
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("host-estimate-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
@@ -36,15 +49,7 @@ fn paper_scenario_round_trip_matches_the_library() {
     assert_eq!(recorded.len(), 1 + 101);
     assert_eq!((recorded[1][1].as_str(), recorded[1][2].as_str()), ("2", "0.5"));
 
-    let out = host(&[
-        "estimate",
-        "--design",
-        "vanderpol",
-        "--input",
-        s(&run),
-        "--output",
-        s(&estimates),
-    ]);
+    let out = estimate_vanderpol(&run, &estimates);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let table = rows(&std::fs::read_to_string(&estimates).unwrap());
     assert_eq!(table[0], ["x1", "x2", "saturated"]);
@@ -89,15 +94,7 @@ fn runs_restart_the_observer_and_refused_samples_leave_no_trace() {
         text += &format!("n{k},{},{y}\n", if k < 12 { "a" } else { "b" });
     }
     std::fs::write(&input, &text).unwrap();
-    let out = host(&[
-        "estimate",
-        "--design",
-        "vanderpol",
-        "--input",
-        s(&input),
-        "--output",
-        s(&output),
-    ]);
+    let out = estimate_vanderpol(&input, &output);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let table = rows(&std::fs::read_to_string(&output).unwrap());
     let has_estimate: Vec<bool> = table[1..].iter().map(|r| !r[0].is_empty()).collect();
@@ -116,17 +113,7 @@ fn runs_restart_the_observer_and_refused_samples_leave_no_trace() {
         .collect();
     let (input2, output2) = (dir.join("in2.csv"), dir.join("out2.csv"));
     std::fs::write(&input2, without).unwrap();
-    assert!(host(&[
-        "estimate",
-        "--design",
-        "vanderpol",
-        "--input",
-        s(&input2),
-        "--output",
-        s(&output2)
-    ])
-    .status
-    .success());
+    assert!(estimate_vanderpol(&input2, &output2).status.success());
     let table2 = rows(&std::fs::read_to_string(&output2).unwrap());
     assert_eq!(table[table.len() - 2..], table2[table2.len() - 2..]);
 }
@@ -147,15 +134,7 @@ fn bad_recordings_are_refused_with_line_and_column_and_nothing_is_written() {
     for (name, text, expected) in cases {
         let input = dir.join(name);
         std::fs::write(&input, text).unwrap();
-        let out = host(&[
-            "estimate",
-            "--design",
-            "vanderpol",
-            "--input",
-            s(&input),
-            "--output",
-            s(&output),
-        ]);
+        let out = estimate_vanderpol(&input, &output);
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert!(!out.status.success());
         for e in expected {
