@@ -3,44 +3,48 @@
 //! sample of each batch, the member whose value is nearest that sample's output, and keeps it until
 //! [`FamilyObserver::reset`].
 
-use crate::{Estimate, Observer, RejectedSample, Scalar, TargetMap};
+use crate::observer::all_finite;
+use crate::window::{Sample, Window};
+use crate::{Estimate, RejectedSample, Scalar};
 
-/// One member: the maps of a design and its value of the selecting output.
+/// One member: its value of the selecting output and its estimate (a design's [`crate::Design::estimate`]).
 #[derive(Clone, Copy, Debug)]
-pub struct Member<'a, T, const NT: usize> {
+pub struct Member<T, const N: usize, const NY: usize, const NU: usize, const NT: usize> {
     /// The member's value of the selecting output (e.g. its initial biomass).
     pub value: T,
-    /// Its maps.
-    pub maps: &'a [TargetMap<'a, T>; NT],
+    /// Its estimate from a full window, oldest first.
+    pub estimate: fn(&[Sample<T, NY, NU>; N]) -> [Estimate<T>; NT],
 }
 
 /// An observer over a family of `K` designs sharing `N`, `NY`, `NU` and `NT`.
 pub struct FamilyObserver<'a, T, const N: usize, const NY: usize, const NU: usize, const NT: usize, const K: usize> {
-    members: &'a [Member<'a, T, NT>; K],
+    members: &'a [Member<T, N, NY, NU, NT>; K],
     output: usize,
-    chosen: Option<(usize, Observer<'a, T, N, NY, NU, NT>)>,
+    window: Window<T, N, NY, NU>,
+    chosen: Option<usize>,
 }
 
 impl<'a, T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: usize, const K: usize>
     FamilyObserver<'a, T, N, NY, NU, NT, K>
 {
     /// A family observer choosing by output `output` (an index into `y`).
-    pub const fn new(members: &'a [Member<'a, T, NT>; K], output: usize) -> Self {
+    pub const fn new(members: &'a [Member<T, N, NY, NU, NT>; K], output: usize) -> Self {
         FamilyObserver {
             members,
             output,
+            window: Window::new(),
             chosen: None,
         }
     }
 
     /// Appends a sample; the first accepted sample of a batch chooses the member. A sample with a NaN
-    /// or infinite value is refused and nothing changes.
+    /// or infinite value is refused and nothing changes; so is every sample of an empty family.
     pub fn push(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
-        if !y.iter().chain(u.iter()).all(|v| v.is_finite()) {
+        if !all_finite(&y, &u) {
             return Err(RejectedSample);
         }
         if self.chosen.is_none() {
-            let selector = y.get(self.output).copied().unwrap_or_else(T::zero);
+            let selector = y.get(self.output).copied().unwrap_or(T::ZERO);
             let mut best: Option<(usize, T)> = None;
             for (index, member) in self.members.iter().enumerate() {
                 let distance = (member.value - selector).abs();
@@ -48,66 +52,70 @@ impl<'a, T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: 
                     best = Some((index, distance));
                 }
             }
-            if let Some((index, _)) = best {
-                if let Some(member) = self.members.get(index) {
-                    self.chosen = Some((index, Observer::new(member.maps)));
-                }
-            }
+            self.chosen = Some(best.ok_or(RejectedSample)?.0);
         }
-        match &mut self.chosen {
-            Some((_, observer)) => observer.push(y, u),
-            None => Err(RejectedSample), // an empty family has nothing to estimate with
-        }
+        self.window.push(Sample { y, u });
+        Ok(())
     }
 
     /// Starts a new batch: forgets the samples and the chosen member.
     pub fn reset(&mut self) {
         self.chosen = None;
+        self.window.clear();
     }
 
     /// Index of the member in use, once the batch's first sample has arrived.
     pub fn chosen(&self) -> Option<usize> {
-        self.chosen.as_ref().map(|(index, _)| *index)
+        self.chosen
     }
 
     /// The chosen member's estimates, or `None` before `N` samples of the batch have arrived.
     pub fn estimate(&self) -> Option<[Estimate<T>; NT]> {
-        self.chosen.as_ref()?.1.estimate()
+        let member = self.members.get(self.chosen?)?;
+        self.window.samples().map(member.estimate)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Gamma;
+    use crate::{Design, InverseTable, TargetMap};
 
-    static W: [f64; 1] = [1.0];
-    static B: [f64; 1] = [1.0];
-    static LOW: [TargetMap<'static, f64>; 1] = [TargetMap {
-        gains: &[1.0, 0.0],
-        gamma: Gamma {
+    // Both members estimate y(k) itself (t = y(k), one segment), LOW on [0, 1], HIGH on [10, 11].
+    struct Low;
+    impl Design<f64, 2, 1, 0, 1> for Low {
+        const MAPS: [TargetMap<'static, f64>; 1] = [TargetMap {
+            gains: &[1.0, 0.0],
             offset: 0.0,
-            weights: &W,
-            odds_ratios: &B,
-        },
-        r_min: 0.0,
-        r_span: 1.0,
-    }];
-    static HIGH: [TargetMap<'static, f64>; 1] = [TargetMap {
-        gains: &[1.0, 0.0],
-        gamma: Gamma {
+            inverse: InverseTable {
+                segments: &[[0.0, 1.0]],
+                t_max: 1.0,
+                r_min: 0.0,
+                r_max: 1.0,
+            },
+        }];
+    }
+    struct High;
+    impl Design<f64, 2, 1, 0, 1> for High {
+        const MAPS: [TargetMap<'static, f64>; 1] = [TargetMap {
+            gains: &[1.0, 0.0],
             offset: 0.0,
-            weights: &W,
-            odds_ratios: &B,
+            inverse: InverseTable {
+                segments: &[[10.0, 1.0]],
+                t_max: 1.0,
+                r_min: 10.0,
+                r_max: 11.0,
+            },
+        }];
+    }
+    static MEMBERS: [Member<f64, 2, 1, 0, 1>; 2] = [
+        Member {
+            value: 0.5,
+            estimate: <Low as Design<f64, 2, 1, 0, 1>>::estimate,
         },
-        r_min: 10.0,
-        r_span: 1.0,
-    }];
-    static MEMBERS: [Member<'static, f64, 1>; 2] = [
-        Member { value: 0.5, maps: &LOW },
         Member {
             value: 2.0,
-            maps: &HIGH,
+            estimate: <High as Design<f64, 2, 1, 0, 1>>::estimate,
         },
     ];
 
@@ -119,10 +127,18 @@ mod tests {
         observer.push([1.9], []).unwrap(); // later samples do not change the choice
         assert_eq!(observer.chosen(), Some(0));
         let [e] = observer.estimate().unwrap();
-        assert_eq!(e.value, 1.0); // LOW clamps v = 1.9 to r_max = 1; HIGH would give 11
+        assert_eq!(e.value, 1.0); // LOW clamps t = 1.9 to r_max = 1; HIGH would give 11
         observer.reset();
         assert!(observer.estimate().is_none());
         observer.push([1.6], []).unwrap();
         assert_eq!(observer.chosen(), Some(1));
+    }
+
+    #[test]
+    fn an_empty_family_refuses_every_sample() {
+        static NONE: [Member<f64, 2, 1, 0, 1>; 0] = [];
+        let mut observer: FamilyObserver<'_, f64, 2, 1, 0, 1, 0> = FamilyObserver::new(&NONE, 0);
+        assert_eq!(observer.push([1.0], []), Err(RejectedSample));
+        assert!(observer.estimate().is_none());
     }
 }

@@ -1,4 +1,5 @@
-//! The monotone map `Γ : [0, 1] → ℝ` and its inverse.
+//! The monotone map `Γ : [0, 1] → ℝ` and its exact inverse by bisection: the host's reference, which
+//! the certified table the chip runs ([`crate::InverseTable`]) is proven against.
 
 use crate::{basis, Scalar};
 

@@ -7,7 +7,7 @@
 //! r = F(Z) = Γ⁻¹(Lᵀ Z),     Z(k) = (y(k), …, y(k-N+1), u(k), …, u(k-N+1))   (newest first)
 //! ```
 //!
-//! where `Γ` is strictly increasing. This crate evaluates such a map; it is `#![no_std]`, allocates
+//! where `Γ` is strictly increasing. This crate evaluates such maps; it is `#![no_std]`, allocates
 //! nothing, and is generic over the scalar ([`Scalar`]: `f32` on the target, `f64` on the host, which
 //! evaluates its own fitted maps through this very code: one implementation, two precisions).
 //!
@@ -20,9 +20,20 @@
 //!   `B1_1 = B2_1 = η` is `c = 1`.
 //! * `Γ(η) = offset + Σ_j μ_j B(η; c_j) = offset + η Σ_j w_j / ((1 - η) + c_j η)` with `w_j = μ_j c_j`
 //!   ([`Gamma`]); the offset holds the constant basis coefficient minus any intercept of `Lᵀ Z`.
-//! * The estimate solves `Γ(η) = Lᵀ Z` for `η ∈ [0, 1]` by bisection with a fixed number of steps
-//!   ([`Scalar::BISECTION_STEPS`]), and saturates, visibly, at `r_min` or `r_max` when `Lᵀ Z` lies
-//!   outside `[Γ(0), Γ(1)]` ([`Saturation`]).
+//!
+//! # What the chip computes
+//!
+//! The exact inverse of `Γ` (bisection, [`Gamma::inverse`]) is the host's reference. The chip runs a
+//! certified table instead ([`InverseTable`]): with `K` segments uniform in `v = Lᵀ Z`,
+//!
+//! ```text
+//! t = offset' + Σ_i g_i z_i        (g = L K / (Γ(1) - Γ(0)),  offset' = -Γ(0) K / (Γ(1) - Γ(0)))
+//! r = a_k + b_k t,  k = ⌊t⌋        (saturated, visibly, to r_min / r_max outside [0, K])
+//! ```
+//!
+//! a dot product, a float-to-int conversion and a multiply-add: no division and no loop. Generated
+//! designs ([`Design`]) write the dot products out as straight-line code; the [`Observer`] keeps the
+//! last `N` samples in a window that is always contiguous ([`window`]).
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -30,12 +41,16 @@
 pub mod basis;
 pub mod family;
 pub mod gamma;
+pub mod inverse;
 pub mod map;
 pub mod observer;
 pub mod scalar;
+pub mod window;
 
 pub use family::{FamilyObserver, Member};
 pub use gamma::{Gamma, Inverse, Saturation};
+pub use inverse::InverseTable;
 pub use map::{Estimate, TargetMap};
-pub use observer::{Observer, RejectedSample, Sample};
+pub use observer::{estimate_by_loops, Design, Observer, RejectedSample};
 pub use scalar::Scalar;
+pub use window::{Sample, Window};

@@ -1,18 +1,20 @@
-//! One fitted map `r = Γ⁻¹(Lᵀ Z)`, rescaled from `η` to the target's units.
+//! One target's map `r = Γ⁻¹(Lᵀ Z)` as the chip evaluates it: a projection onto the table
+//! coordinate `t`, then the tabulated inverse ([`InverseTable`]).
 
-use crate::{Gamma, Saturation, Scalar};
+use crate::{InverseTable, Saturation, Scalar};
 
-/// The map for one target: `r = r_min + r_span · Γ⁻¹(Lᵀ Z)`.
+/// The map for one target: `t = offset + Σ_i gains_i z_i`, `r = table(t)`.
+///
+/// The gains are the fitted `L` scaled by `K / (Γ(1) - Γ(0))` and the offset holds `-Γ(0)` at the same
+/// scale, so that `t ∈ [0, K]` exactly when `Lᵀ Z ∈ [Γ(0), Γ(1)]`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TargetMap<'a, T> {
-    /// `L`, one gain per regressor entry, in regressor order (newest sample first).
+    /// One gain per regressor entry, in regressor order (newest sample first).
     pub gains: &'a [T],
-    /// The monotone map `Γ`.
-    pub gamma: Gamma<'a, T>,
-    /// Smallest target value on the learning data.
-    pub r_min: T,
-    /// `r_max - r_min` over the learning data (positive).
-    pub r_span: T,
+    /// The constant the projection starts from.
+    pub offset: T,
+    /// `Γ⁻¹` in the coordinate `t`, in the target's units.
+    pub inverse: InverseTable<'a, T>,
 }
 
 /// An estimate of one target.
@@ -20,32 +22,24 @@ pub struct TargetMap<'a, T> {
 pub struct Estimate<T> {
     /// The estimated value, in the target's units.
     pub value: T,
-    /// Whether `Γ⁻¹` clamped the estimate to an end of the learning range.
+    /// Whether the estimate was clamped to an end of the learning range.
     pub saturation: Saturation,
 }
 
 impl<T: Scalar> TargetMap<'_, T> {
-    /// `v = Lᵀ Z`. Entries beyond the shorter of `gains` and `regressor` are ignored.
+    /// `t = offset + Σ_i gains_i z_i`, summed in that order. Entries beyond the shorter of `gains` and
+    /// `regressor` are ignored.
     pub fn project(&self, regressor: &[T]) -> T {
-        let mut sum = T::zero();
+        let mut sum = self.offset;
         for (&g, &z) in self.gains.iter().zip(regressor) {
             sum += g * z;
         }
         sum
     }
 
-    /// `r = r_min + r_span · Γ⁻¹(v)` for a projection `v` already computed.
-    pub fn estimate_from_projection(&self, v: T) -> Estimate<T> {
-        let inverse = self.gamma.inverse(v);
-        Estimate {
-            value: self.r_min + self.r_span * inverse.eta,
-            saturation: inverse.saturation,
-        }
-    }
-
-    /// `F(Z) = r_min + r_span · Γ⁻¹(Lᵀ Z)`.
+    /// `F(Z)`: the tabulated inverse of the projection.
     pub fn estimate(&self, regressor: &[T]) -> Estimate<T> {
-        self.estimate_from_projection(self.project(regressor))
+        self.inverse.evaluate(self.project(regressor))
     }
 }
 
@@ -54,22 +48,21 @@ mod tests {
     use super::*;
 
     #[test]
-    fn linear_gamma_gives_a_rescaled_linear_map() {
-        // Γ(η) = 2 + 4η  ⇒  η = (Lᵀ Z - 2) / 4, r = -1 + 3 η.
-        let gains = [1.0f64, -0.5];
-        let (w, c) = ([4.0], [1.0]);
+    fn a_linear_map_is_exact_with_one_segment() {
+        // v = z0 - 0.5 z1 on Γ(η) = 2 + 4η (so Γ⁻¹ is linear: one segment), r = -1 + 3η.
+        // t = (v - 2)/4, r = -1 + 3t.
+        let gains = [0.25f64, -0.125];
         let map = TargetMap {
             gains: &gains,
-            gamma: Gamma {
-                offset: 2.0,
-                weights: &w,
-                odds_ratios: &c,
+            offset: -0.5,
+            inverse: InverseTable {
+                segments: &[[-1.0, 3.0]],
+                t_max: 1.0,
+                r_min: -1.0,
+                r_max: 2.0,
             },
-            r_min: -1.0,
-            r_span: 3.0,
         };
-        let z = [4.0, 2.0]; // v = 3 ⇒ η = 0.25 ⇒ r = -0.25
-        let estimate = map.estimate(&z);
+        let estimate = map.estimate(&[4.0, 2.0]); // v = 3 ⇒ η = 0.25 ⇒ r = -0.25
         assert!((estimate.value + 0.25).abs() < 1e-14);
         assert_eq!(estimate.saturation, Saturation::Inside);
         assert_eq!(

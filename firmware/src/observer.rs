@@ -1,39 +1,88 @@
-//! The run-time observer: the last `N` samples in a ring buffer, one estimate per target.
+//! The run-time observer: the last `N` samples and one estimate per target.
 
-use heapless::Deque;
+use core::marker::PhantomData;
 
+use crate::window::{Sample, Window};
 use crate::{Estimate, Scalar, TargetMap};
-
-/// One sampling instant: the measured outputs and the applied inputs.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Sample<T, const NY: usize, const NU: usize> {
-    /// `y(k)`.
-    pub y: [T; NY],
-    /// `u(k)`.
-    pub u: [T; NU],
-}
 
 /// A sample was refused because one of its values is NaN or infinite; the observer is unchanged.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct RejectedSample;
 
-/// Observer of `NT` targets from the last `N` samples of `NY` outputs and `NU` inputs.
+impl core::fmt::Display for RejectedSample {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str("sample refused: a value is NaN or infinite (the observer is unchanged)")
+    }
+}
+
+impl core::error::Error for RejectedSample {}
+
+/// A design: `NT` maps of the last `N` samples of `NY` outputs and `NU` inputs.
 ///
-/// Memory is fixed at compile time (the ring buffer holds `N` samples); [`Observer::estimate`] runs
-/// the same instructions for every sample once the buffer is full. Generated designs provide the
-/// tables and a constructor; by hand it looks like this:
+/// Generated designs implement it for a unit type, override [`Design::estimate`] with the same sums
+/// written out as straight-line code, and export `type Observer = firmware::Observer<…, Design, …>`.
+pub trait Design<T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: usize> {
+    /// Every target's map, in estimate order. Gains are laid out as the regressor
+    /// `Z = (y(k), …, y(k-N+1), u(k), …, u(k-N+1))`: `N·NY` output gains, then `N·NU` input gains.
+    const MAPS: [TargetMap<'static, T>; NT];
+
+    /// One estimate per target from the last `N` samples, oldest first. The default loops over the
+    /// gains ([`estimate_by_loops`]); an override must give the same bits.
+    #[inline(always)]
+    fn estimate(window: &[Sample<T, NY, NU>; N]) -> [Estimate<T>; NT] {
+        estimate_by_loops(&Self::MAPS, window)
+    }
+}
+
+/// Every map's estimate from a window (oldest first), summing `offset + Σ g_i z_i` in regressor order
+/// (all outputs newest first, then all inputs), so that it rounds exactly as [`TargetMap::project`]
+/// on the same regressor.
+pub fn estimate_by_loops<T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: usize>(
+    maps: &[TargetMap<'_, T>; NT],
+    window: &[Sample<T, NY, NU>; N],
+) -> [Estimate<T>; NT] {
+    maps.each_ref().map(|map| {
+        let (output_gains, input_gains) = map.gains.split_at_checked(N * NY).unwrap_or((map.gains, &[]));
+        let mut sum = map.offset;
+        for (gains, sample) in output_gains.chunks_exact(NY.max(1)).zip(window.iter().rev()) {
+            for (&g, &y) in gains.iter().zip(&sample.y) {
+                sum += g * y;
+            }
+        }
+        for (gains, sample) in input_gains.chunks_exact(NU.max(1)).zip(window.iter().rev()) {
+            for (&g, &u) in gains.iter().zip(&sample.u) {
+                sum += g * u;
+            }
+        }
+        map.inverse.evaluate(sum)
+    })
+}
+
+/// `true` when every value is finite.
+#[inline(always)]
+pub(crate) fn all_finite<T: Scalar, const NY: usize, const NU: usize>(y: &[T; NY], u: &[T; NU]) -> bool {
+    y.iter().chain(u.iter()).all(|v| v.is_finite())
+}
+
+/// Observer of design `D`: `NT` targets from the last `N` samples of `NY` outputs and `NU` inputs.
+///
+/// Memory is fixed at compile time (the window of `N` samples, stored twice); once the window is
+/// full, [`Observer::estimate`] runs the same instructions for every sample. Generated designs
+/// provide `D` and a constructor; by hand it looks like this:
 ///
 /// ```
-/// use firmware::{Gamma, Observer, TargetMap};
+/// use firmware::{Design, InverseTable, Observer, TargetMap};
 ///
-/// // r = Γ⁻¹(0.5 y(k) + 0.5 y(k-1)) with Γ(η) = η on [0, 1], r ∈ [0, 10].
-/// static MAPS: [TargetMap<'static, f32>; 1] = [TargetMap {
-///     gains: &[0.5, 0.5],
-///     gamma: Gamma { offset: 0.0, weights: &[1.0], odds_ratios: &[1.0] },
-///     r_min: 0.0,
-///     r_span: 10.0,
-/// }];
-/// let mut observer: Observer<'_, f32, 2, 1, 0, 1> = Observer::new(&MAPS);
+/// // r = 10 (0.5 y(k) + 0.5 y(k-1)) on [0, 10]: Γ(η) = η, one segment (t = v, r = 10 t).
+/// struct Mean;
+/// impl Design<f32, 2, 1, 0, 1> for Mean {
+///     const MAPS: [TargetMap<'static, f32>; 1] = [TargetMap {
+///         gains: &[0.5, 0.5],
+///         offset: 0.0,
+///         inverse: InverseTable { segments: &[[0.0, 10.0]], t_max: 1.0, r_min: 0.0, r_max: 10.0 },
+///     }];
+/// }
+/// let mut observer: Observer<f32, Mean, 2, 1, 0, 1> = Observer::new();
 /// observer.push([0.2], []).unwrap();
 /// assert!(observer.estimate().is_none()); // fewer than N = 2 samples
 /// observer.push([0.4], []).unwrap();
@@ -41,32 +90,28 @@ pub struct RejectedSample;
 /// let [r] = observer.estimate().unwrap();
 /// assert!((r.value - 3.0).abs() < 1e-5 && !r.saturation.is_saturated());
 /// ```
-pub struct Observer<'a, T, const N: usize, const NY: usize, const NU: usize, const NT: usize> {
-    maps: &'a [TargetMap<'a, T>; NT],
-    /// The last `N` accepted samples, oldest first. (A `Deque` rather than a `HistoryBuf`: its
-    /// accesses are unchecked inside heapless, so no bounds-check panic path reaches the firmware.)
-    window: Deque<Sample<T, NY, NU>, N>,
+pub struct Observer<T, D, const N: usize, const NY: usize, const NU: usize, const NT: usize> {
+    window: Window<T, N, NY, NU>,
+    design: PhantomData<fn() -> D>,
 }
 
-impl<'a, T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: usize> Observer<'a, T, N, NY, NU, NT> {
-    /// An observer with an empty window. Each map's gains are laid out as the regressor
-    /// `Z = (y(k), …, y(k-N+1), u(k), …, u(k-N+1))`: `N·NY` output gains, then `N·NU` input gains.
-    pub const fn new(maps: &'a [TargetMap<'a, T>; NT]) -> Self {
+impl<T: Scalar, D: Design<T, N, NY, NU, NT>, const N: usize, const NY: usize, const NU: usize, const NT: usize>
+    Observer<T, D, N, NY, NU, NT>
+{
+    /// An observer with an empty window.
+    pub const fn new() -> Self {
         Observer {
-            maps,
-            window: Deque::new(),
+            window: Window::new(),
+            design: PhantomData,
         }
     }
 
     /// Appends the sample of the current instant. A sample with a NaN or infinite value is refused
     /// and nothing stored changes.
+    #[inline]
     pub fn push(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
-        if y.iter().chain(u.iter()).all(|v| v.is_finite()) {
-            if self.window.is_full() {
-                self.window.pop_front();
-            }
-            // Cannot fail: there is room now (and N = 0 is refused by heapless at compile time).
-            let _ = self.window.push_back(Sample { y, u });
+        if all_finite(&y, &u) {
+            self.window.push(Sample { y, u });
             Ok(())
         } else {
             Err(RejectedSample)
@@ -84,51 +129,50 @@ impl<'a, T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: 
     }
 
     /// One estimate per target from the last `N` samples, or `None` before `N` samples have arrived.
+    #[inline]
     pub fn estimate(&self) -> Option<[Estimate<T>; NT]> {
-        if !self.window.is_full() {
-            return None;
-        }
-        Some(self.maps.map(|map| map.estimate_from_projection(self.project(&map))))
+        self.window.samples().map(D::estimate)
     }
+}
 
-    /// `Lᵀ Z` over the window, summed in regressor order (all outputs newest first, then all inputs),
-    /// so that it rounds exactly as [`TargetMap::project`] on the same regressor.
-    fn project(&self, map: &TargetMap<'_, T>) -> T {
-        let (output_gains, input_gains) = map.gains.split_at_checked(N * NY).unwrap_or((map.gains, &[]));
-        let mut sum = T::zero();
-        for (gains, sample) in output_gains.chunks_exact(NY.max(1)).zip(self.window.iter().rev()) {
-            for (&g, &y) in gains.iter().zip(&sample.y) {
-                sum += g * y;
-            }
-        }
-        for (gains, sample) in input_gains.chunks_exact(NU.max(1)).zip(self.window.iter().rev()) {
-            for (&g, &u) in gains.iter().zip(&sample.u) {
-                sum += g * u;
-            }
-        }
-        sum
+impl<T: Scalar, D: Design<T, N, NY, NU, NT>, const N: usize, const NY: usize, const NU: usize, const NT: usize> Default
+    for Observer<T, D, N, NY, NU, NT>
+{
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T: core::fmt::Debug, D, const N: usize, const NY: usize, const NU: usize, const NT: usize> core::fmt::Debug
+    for Observer<T, D, N, NY, NU, NT>
+{
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Observer").field("window", &self.window).finish()
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Gamma, Saturation};
+    use crate::{InverseTable, Saturation};
 
-    // Γ(η) = 1 + 2η + 3 B(η; c = 5), two outputs and one input over a horizon of 3.
-    const WEIGHTS: [f64; 2] = [2.0, 15.0];
-    const ODDS_RATIOS: [f64; 2] = [1.0, 5.0];
-    const GAINS: [f64; 9] = [0.5, -0.25, 0.125, 1.0, -1.0, 0.75, 0.3, -0.2, 0.1];
-    static MAPS: [TargetMap<'static, f64>; 1] = [TargetMap {
-        gains: &GAINS,
-        gamma: Gamma {
+    // Two outputs and one input over a horizon of 3; t = offset + Lᵀ Z, r = 2 t² on [0, 2] in two
+    // segments through t = 0, 1, 2 (chords of 2t²: r = 2t on [0, 1], r = -4 + 6t on [1, 2]).
+    const GAINS: [f64; 9] = [0.05, -0.025, 0.0125, 0.1, -0.1, 0.075, 0.03, -0.02, 0.01];
+    struct Test;
+    impl Design<f64, 3, 2, 1, 1> for Test {
+        const MAPS: [TargetMap<'static, f64>; 1] = [TargetMap {
+            gains: &GAINS,
             offset: 1.0,
-            weights: &WEIGHTS,
-            odds_ratios: &ODDS_RATIOS,
-        },
-        r_min: -2.0,
-        r_span: 4.0,
-    }];
+            inverse: InverseTable {
+                segments: &[[0.0, 2.0], [-4.0, 6.0]],
+                t_max: 2.0,
+                r_min: 0.0,
+                r_max: 8.0,
+            },
+        }];
+    }
+    type TestObserver = Observer<f64, Test, 3, 2, 1, 1>;
 
     fn sample(k: usize) -> ([f64; 2], [f64; 1]) {
         let t = k as f64;
@@ -137,7 +181,7 @@ mod tests {
 
     #[test]
     fn estimates_equal_the_regressor_path_bit_for_bit() {
-        let mut observer: Observer<'_, f64, 3, 2, 1, 1> = Observer::new(&MAPS);
+        let mut observer = TestObserver::new();
         for k in 0..20 {
             let (y, u) = sample(k);
             observer.push(y, u).unwrap();
@@ -153,14 +197,14 @@ mod tests {
                 z[2 * lag + 1] = y[1];
                 z[6 + lag] = u[0];
             }
-            let expected = MAPS[0].estimate(&z);
+            let expected = Test::MAPS[0].estimate(&z);
             assert_eq!(observer.estimate().unwrap()[0], expected, "k = {k}");
         }
     }
 
     #[test]
     fn non_finite_samples_are_refused_and_change_nothing() {
-        let mut observer: Observer<'_, f64, 3, 2, 1, 1> = Observer::new(&MAPS);
+        let mut observer = TestObserver::new();
         for k in 0..3 {
             let (y, u) = sample(k);
             observer.push(y, u).unwrap();
@@ -176,39 +220,33 @@ mod tests {
 
     #[test]
     fn saturation_is_reported() {
-        let mut observer: Observer<'_, f64, 3, 2, 1, 1> = Observer::new(&MAPS);
+        let mut observer = TestObserver::new();
         for _ in 0..3 {
-            observer.push([-1e6, 0.0], [0.0]).unwrap(); // Lᵀ Z = (0.5 + 0.125 - 1) · -1e6 > Γ(1)
+            // The y0 gains sum to 0.05 + 0.0125 - 0.1 = -0.0375: t = 1 - 37 500 < 0.
+            observer.push([1e6, 0.0], [0.0]).unwrap();
         }
-        let estimate = observer.estimate().unwrap()[0];
         assert_eq!(
-            estimate,
+            observer.estimate().unwrap()[0],
             Estimate {
-                value: 2.0,
+                value: 0.0,
+                saturation: Saturation::Low
+            }
+        );
+        for _ in 0..3 {
+            observer.push([-1e6, 0.0], [0.0]).unwrap();
+        }
+        assert_eq!(
+            observer.estimate().unwrap()[0],
+            Estimate {
+                value: 8.0,
                 saturation: Saturation::High
             }
         );
     }
 
     #[test]
-    fn works_in_f32_without_inputs() {
-        static GAINS32: [f32; 2] = [1.0, 1.0];
-        static W: [f32; 1] = [1.0];
-        static B: [f32; 1] = [1.0];
-        static MAPS32: [TargetMap<'static, f32>; 1] = [TargetMap {
-            gains: &GAINS32,
-            gamma: Gamma {
-                offset: 0.0,
-                weights: &W,
-                odds_ratios: &B,
-            },
-            r_min: 0.0,
-            r_span: 1.0,
-        }];
-        let mut observer: Observer<'_, f32, 2, 1, 0, 1> = Observer::new(&MAPS32);
-        observer.push([0.25], []).unwrap();
-        observer.push([0.5], []).unwrap();
-        let estimate = observer.estimate().unwrap()[0];
-        assert!((estimate.value - 0.75).abs() < 1e-6 && estimate.saturation == Saturation::Inside);
+    fn rejected_sample_says_what_happened() {
+        let text = std::format!("{RejectedSample}");
+        assert!(text.contains("NaN or infinite"), "{text}");
     }
 }

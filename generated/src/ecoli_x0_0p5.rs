@@ -7,6 +7,11 @@
 //! Horizon N = 3 samples of τ = 0.2; outputs: X_meas, L; inputs: none.
 //! Normalisation `intercept`, n_m = 5, β = 1.
 //!
+//! Each target is `r = table(t)`, `t = offset + Σ_i g_i z_i` over the regressor
+//! `z = (y(k), …, y(k-N+1), u(k), …, u(k-N+1))`: the fitted `Γ⁻¹(Lᵀ z)` with `Γ⁻¹` replaced by a
+//! piecewise-linear table whose distance to it is proven (see each map). [`Design`] writes the dot
+//! products out as straight-line code.
+//!
 //! ```
 //! let mut observer = generated::ecoli_x0_0p5::observer();
 //! let (y, u) = ([0.0; generated::ecoli_x0_0p5::OUTPUTS], [0.0; generated::ecoli_x0_0p5::INPUTS]);
@@ -14,7 +19,7 @@
 //! assert!(observer.estimate().is_none()); // until HORIZON samples have arrived
 //! ```
 
-use firmware::{Gamma, TargetMap};
+use firmware::{Estimate, InverseTable, Sample, TargetMap};
 
 /// The design's name.
 pub const NAME: &str = "ecoli_x0_0p5";
@@ -30,6 +35,8 @@ pub const OUTPUTS: usize = 2;
 pub const INPUTS: usize = 0;
 /// Estimated targets.
 pub const TARGETS: usize = 2;
+/// Entries of the regressor `z`: `HORIZON · (OUTPUTS + INPUTS)`.
+pub const REGRESSOR_LEN: usize = 6;
 /// Output names, in `push` order.
 pub const OUTPUT_NAMES: [&str; OUTPUTS] = ["X_meas", "L"];
 /// Input names, in `push` order.
@@ -37,83 +44,205 @@ pub const INPUT_NAMES: [&str; INPUTS] = [];
 /// Target names, in estimate order.
 pub const TARGET_NAMES: [&str; TARGETS] = ["P", "muX"];
 
-/// Odds ratios `c_j` of the basis `B(η; c) = c η / ((1 - η) + c η)`, shared by every target.
-const ODDS_RATIOS: [f32; 8] = [
-    1.0,
-    0.36787945,
-    0.13533528,
-    0.049787067,
-    2.7182817,
-    7.389056,
-    20.085537,
-    54.59815,
+const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
+
+/// Gains `g_i` of `P`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`.
+const GAINS_P: [f32; REGRESSOR_LEN] = [
+    -4.039889,
+    -0.34156004,
+    -4.308531,
+    0.077934295,
+    -3.0881793,
+    0.50124514,
+];
+
+/// The 88 segments `(a_k, b_k)` of `P = a_k + b_k t` on `t ∈ [k, k + 1]`.
+#[rustfmt::skip]
+const SEGMENTS_P: [[f32; 2]; 88] = [
+    [0.0, 0.006248085],
+    [-2.2744691e-6, 0.006250359],
+    [-8.913187e-6, 0.006253679],
+    [-1.2436404e-5, 0.006254853],
+    [-1.2694873e-5, 0.0062549175],
+    [-1.10100245e-5, 0.006254581],
+    [-8.62894e-6, 0.006254184],
+    [-6.419705e-6, 0.0062538683],
+    [-4.890204e-6, 0.006253677],
+    [-4.273855e-6, 0.0062536085],
+    [-4.613077e-6, 0.0062536425],
+    [-5.825301e-6, 0.006253753],
+    [-7.751546e-6, 0.006253913],
+    [-1.019106e-5, 0.0062541007],
+    [-1.2925674e-5, 0.0062542963],
+    [-1.5736801e-5, 0.0062544835],
+    [-1.8417295e-5, 0.006254651],
+    [-2.0779711e-5, 0.0062547904],
+    [-2.266211e-5, 0.0062548947],
+    [-2.3932156e-5, 0.0062549617],
+    [-2.4490024e-5, 0.0062549897],
+    [-2.4270526e-5, 0.006254979],
+    [-2.3244625e-5, 0.0062549324],
+    [-2.1420527e-5, 0.006254853],
+    [-1.8844366e-5, 0.0062547456],
+    [-1.5600515e-5, 0.006254616],
+    [-1.1811434e-5, 0.0062544704],
+    [-7.636928e-6, 0.006254316],
+    [-3.272621e-6, 0.00625416],
+    [1.0526552e-6, 0.006254011],
+    [5.0809344e-6, 0.0062538763],
+    [8.531201e-6, 0.006253765],
+    [1.1108181e-5, 0.0062536844],
+    [1.2514787e-5, 0.006253642],
+    [1.2469467e-5, 0.0062536434],
+    [1.0730102e-5, 0.006253693],
+    [7.12666e-6, 0.006253793],
+    [1.605526e-6, 0.0062539424],
+    [-5.7106054e-6, 0.0062541347],
+    [-1.4442076e-5, 0.0062543587],
+    [-2.3843897e-5, 0.006254594],
+    [-3.266038e-5, 0.0062548085],
+    [-3.8930237e-5, 0.006254958],
+    [-3.9725383e-5, 0.0062549766],
+    [-3.0800864e-5, 0.0062547736],
+    [-6.1255687e-6, 0.0062542255],
+    [4.2746982e-5, 0.006253163],
+    [0.00012752203, 0.0062513594],
+    [0.0002642931, 0.00624851],
+    [0.00047505187, 0.0062442087],
+    [0.0007896987, 0.0062379157],
+    [0.0012487032, 0.0062289154],
+    [0.0019065897, 0.006216264],
+    [0.0028364283, 0.0061987196],
+    [0.004135479, 0.006174663],
+    [0.0059319967, 0.0061419993],
+    [0.008392889, 0.006098055],
+    [0.011731282, 0.0060394863],
+    [0.016211927, 0.005962234],
+    [0.022150729, 0.005861576],
+    [0.029902654, 0.0057323775],
+    [0.03983098, 0.005569618],
+    [0.052252375, 0.005369273],
+    [0.06735947, 0.005129478],
+    [0.08513654, 0.004851711],
+    [0.10529912, 0.0045415177],
+    [0.1272922, 0.004208289],
+    [0.15036273, 0.0038639528],
+    [0.173687, 0.003520949],
+    [0.19650573, 0.0031902427],
+    [0.21822134, 0.0028800196],
+    [0.23843737, 0.002595287],
+    [0.2569477, 0.0023381992],
+    [0.2736975, 0.00210875],
+    [0.28873637, 0.0019055217],
+    [0.30217662, 0.0017263184],
+    [0.3141616, 0.0015686213],
+    [0.3248444, 0.0014298838],
+    [0.33437476, 0.0013076994],
+    [0.34289217, 0.0011998842],
+    [0.35052243, 0.001104506],
+    [0.35737696, 0.001019882],
+    [0.36355323, 0.0009445618],
+    [0.36913577, 0.00087730214],
+    [0.37419772, 0.000817041],
+    [0.3788021, 0.00076287193],
+    [0.3830032, 0.00071402156],
+    [0.38684797, 0.00066982885],
 ];
 
 /// `P = P`: validation RMSE 0.0542, max error 0.2707 (linear floor RMSE 0.0546).
+///
+/// `Γ⁻¹` is a table of 88 segments (89 knots uniform in `Lᵀ z`). Proven on the
+/// host from bounds of `Γ'` and `Γ''`: |table − Γ⁻¹| ≤ 4.41e-5 over the whole range
+/// [0.0, 0.4457929] (exact arithmetic); largest error on 10⁶ dense points: 4.32e-5.
 pub const MAP_P: TargetMap<'static, f32> = TargetMap {
-    gains: &[
-        -0.0005668432,
-        -4.7924827e-5,
-        -0.0006045368,
-        1.0935083e-5,
-        -0.00043330732,
-        7.03305e-5,
-    ],
-    gamma: Gamma {
-        offset: -0.0037536717,
-        weights: &[
-            0.009448532,
-            0.00069835986,
-            -0.0006836103,
-            0.00029501755,
-            0.00045231928,
-            -0.00039085117,
-            0.00029846383,
-            -0.00011823049,
-        ],
-        odds_ratios: &ODDS_RATIOS,
+    gains: &GAINS_P,
+    offset: 26.752401,
+    inverse: InverseTable {
+        segments: &SEGMENTS_P,
+        t_max: 88.0,
+        r_min: 0.0,
+        r_max: 0.4457929,
     },
-    r_min: 0.0,
-    r_span: 0.4457929,
 };
+
+const _: () = assert!(SEGMENTS_P.len() == 88 && MAP_P.inverse.t_max == 88 as f32);
+
+/// Gains `g_i` of `muX`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`.
+const GAINS_MUX: [f32; REGRESSOR_LEN] = [
+    0.06840128,
+    0.0055591087,
+    0.070145,
+    0.0003677032,
+    0.053549178,
+    -0.0047274753,
+];
+
+/// The 1 segments `(a_k, b_k)` of `muX = a_k + b_k t` on `t ∈ [k, k + 1]`.
+#[rustfmt::skip]
+const SEGMENTS_MUX: [[f32; 2]; 1] = [
+    [0.0, 0.43531778],
+];
 
 /// `muX = mu*X`: validation RMSE 0.0429, max error 0.2003 (linear floor RMSE 0.0431).
+///
+/// `Γ⁻¹` is a table of 1 segments (2 knots uniform in `Lᵀ z`). Proven on the
+/// host from bounds of `Γ'` and `Γ''`: |table − Γ⁻¹| ≤ 1.12e-5 over the whole range
+/// [0.0, 0.43531778] (exact arithmetic); largest error on 10⁶ dense points: 1.37e-7.
 pub const MAP_MUX: TargetMap<'static, f32> = TargetMap {
-    gains: &[
-        0.00068401307,
-        5.559111e-5,
-        0.00070145034,
-        3.6770339e-6,
-        0.000535492,
-        -4.7274774e-5,
-    ],
-    gamma: Gamma {
-        offset: -0.00022176476,
-        weights: &[
-            0.010000002,
-            -2.2743258e-9,
-            1.0015224e-9,
-            8.408623e-11,
-            -7.282166e-10,
-            9.54297e-10,
-            -1.9078672e-9,
-            2.2346924e-9,
-        ],
-        odds_ratios: &ODDS_RATIOS,
+    gains: &GAINS_MUX,
+    offset: 0.022176465,
+    inverse: InverseTable {
+        segments: &SEGMENTS_MUX,
+        t_max: 1.0,
+        r_min: 0.0,
+        r_max: 0.43531778,
     },
-    r_min: 0.0,
-    r_span: 0.43531778,
 };
 
+const _: () = assert!(SEGMENTS_MUX.len() == 1 && MAP_MUX.inverse.t_max == 1 as f32);
+
 /// Every target's map, in [`TARGET_NAMES`] order.
-pub static MAPS: [TargetMap<'static, f32>; TARGETS] = [MAP_P, MAP_MUX];
+pub static MAPS: [TargetMap<'static, f32>; TARGETS] = <Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::MAPS;
+
+/// This design for [`firmware::Observer`]: its estimate is the dot products written out (the compiler
+/// does not unroll loops when optimising for size), in the order of [`firmware::estimate_by_loops`],
+/// so that both give the same bits.
+pub struct Design;
+
+impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
+    const MAPS: [TargetMap<'static, f32>; TARGETS] = [MAP_P, MAP_MUX];
+
+    #[inline(always)]
+    fn estimate(w: &[Sample<f32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<f32>; TARGETS] {
+        [
+            MAP_P.inverse.evaluate(
+                MAP_P.offset
+                    + GAINS_P[0] * w[2].y[0]
+                    + GAINS_P[1] * w[2].y[1]
+                    + GAINS_P[2] * w[1].y[0]
+                    + GAINS_P[3] * w[1].y[1]
+                    + GAINS_P[4] * w[0].y[0]
+                    + GAINS_P[5] * w[0].y[1],
+            ),
+            MAP_MUX.inverse.evaluate(
+                MAP_MUX.offset
+                    + GAINS_MUX[0] * w[2].y[0]
+                    + GAINS_MUX[1] * w[2].y[1]
+                    + GAINS_MUX[2] * w[1].y[0]
+                    + GAINS_MUX[3] * w[1].y[1]
+                    + GAINS_MUX[4] * w[0].y[0]
+                    + GAINS_MUX[5] * w[0].y[1],
+            ),
+        ]
+    }
+}
 
 /// The observer of this design.
-pub type Observer = firmware::Observer<'static, f32, HORIZON, OUTPUTS, INPUTS, TARGETS>;
+pub type Observer = firmware::Observer<f32, Design, HORIZON, OUTPUTS, INPUTS, TARGETS>;
 
 /// A fresh observer, holding no sample yet.
 pub const fn observer() -> Observer {
-    firmware::Observer::new(&MAPS)
+    firmware::Observer::new()
 }
 
 /// Length of the recorded sequence.

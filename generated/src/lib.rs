@@ -42,14 +42,14 @@ pub mod ecoli {
     pub use first::{HORIZON, INPUTS, OUTPUTS, TARGETS};
 
     /// The members, by increasing value.
-    pub static MEMBERS: [firmware::Member<'static, f32, TARGETS>; 2] = [
+    pub static MEMBERS: [firmware::Member<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>; 2] = [
         firmware::Member {
             value: 0.5,
-            maps: &super::ecoli_x0_0p5::MAPS,
+            estimate: <super::ecoli_x0_0p5::Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::estimate,
         },
         firmware::Member {
             value: 2.0,
-            maps: &super::ecoli_x0_2::MAPS,
+            estimate: <super::ecoli_x0_2::Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::estimate,
         },
     ];
 

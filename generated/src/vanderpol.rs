@@ -7,6 +7,11 @@
 //! Horizon N = 10 samples of τ = 0.1; outputs: y; inputs: none.
 //! Normalisation `intercept`, n_m = 5, β = 0.5.
 //!
+//! Each target is `r = table(t)`, `t = offset + Σ_i g_i z_i` over the regressor
+//! `z = (y(k), …, y(k-N+1), u(k), …, u(k-N+1))`: the fitted `Γ⁻¹(Lᵀ z)` with `Γ⁻¹` replaced by a
+//! piecewise-linear table whose distance to it is proven (see each map). [`Design`] writes the dot
+//! products out as straight-line code.
+//!
 //! ```
 //! let mut observer = generated::vanderpol::observer();
 //! let (y, u) = ([0.0; generated::vanderpol::OUTPUTS], [0.0; generated::vanderpol::INPUTS]);
@@ -14,7 +19,7 @@
 //! assert!(observer.estimate().is_none()); // until HORIZON samples have arrived
 //! ```
 
-use firmware::{Gamma, TargetMap};
+use firmware::{Estimate, InverseTable, Sample, TargetMap};
 
 /// The design's name.
 pub const NAME: &str = "vanderpol";
@@ -30,6 +35,8 @@ pub const OUTPUTS: usize = 1;
 pub const INPUTS: usize = 0;
 /// Estimated targets.
 pub const TARGETS: usize = 2;
+/// Entries of the regressor `z`: `HORIZON · (OUTPUTS + INPUTS)`.
+pub const REGRESSOR_LEN: usize = 10;
 /// Output names, in `push` order.
 pub const OUTPUT_NAMES: [&str; OUTPUTS] = ["y"];
 /// Input names, in `push` order.
@@ -37,91 +44,225 @@ pub const INPUT_NAMES: [&str; INPUTS] = [];
 /// Target names, in estimate order.
 pub const TARGET_NAMES: [&str; TARGETS] = ["x1", "x2"];
 
-/// Odds ratios `c_j` of the basis `B(η; c) = c η / ((1 - η) + c η)`, shared by every target.
-const ODDS_RATIOS: [f32; 8] = [
-    1.0,
-    0.60653067,
-    0.36787945,
-    0.22313017,
-    1.6487212,
-    2.7182817,
-    4.481689,
-    7.389056,
+const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
+
+/// Gains `g_i` of `x1`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`.
+const GAINS_X1: [f32; REGRESSOR_LEN] = [
+    4.0281353,
+    0.68335295,
+    -0.87648195,
+    -1.1985004,
+    -1.0801039,
+    -0.37953317,
+    0.18793039,
+    0.40863973,
+    -0.61078054,
+    -3.5780258,
+];
+
+/// The 92 segments `(a_k, b_k)` of `x1 = a_k + b_k t` on `t ∈ [k, k + 1]`.
+#[rustfmt::skip]
+const SEGMENTS_X1: [[f32; 2]; 92] = [
+    [-2.411638, 0.016688406],
+    [-2.4123118, 0.017362183],
+    [-2.4137836, 0.018097974],
+    [-2.416198, 0.01890284],
+    [-2.4197261, 0.019784853],
+    [-2.4245682, 0.02075325],
+    [-2.43096, 0.021818569],
+    [-2.4391797, 0.022992795],
+    [-2.449553, 0.024289466],
+    [-2.4624615, 0.025723737],
+    [-2.4783473, 0.027312338],
+    [-2.4977186, 0.029073356],
+    [-2.5211465, 0.031025676],
+    [-2.5492566, 0.033187997],
+    [-2.582704, 0.035577103],
+    [-2.6221254, 0.038205184],
+    [-2.6680577, 0.041075956],
+    [-2.7208185, 0.04417954],
+    [-2.7803438, 0.047486488],
+    [-2.846002, 0.050942194],
+    [-2.9164362, 0.0544639],
+    [-2.989502, 0.05794323],
+    [-3.062393, 0.061256446],
+    [-3.1319852, 0.064282194],
+    [-3.195344, 0.06692214],
+    [-3.25023, 0.06911759],
+    [-3.2954264, 0.07085591],
+    [-3.330788, 0.07216559],
+    [-3.3570473, 0.073103435],
+    [-3.3754973, 0.07373964],
+    [-3.3876696, 0.074145384],
+    [-3.3950882, 0.0743847],
+    [-3.3991182, 0.074510634],
+    [-3.4008937, 0.074564435],
+    [-3.401302, 0.074576445],
+    [-3.4009998, 0.07456781],
+    [-3.4004433, 0.07455236],
+    [-3.3999245, 0.07453833],
+    [-3.3996034, 0.07452988],
+    [-3.3995404, 0.07452827],
+    [-3.399724, 0.07453285],
+    [-3.4000928, 0.074541844],
+    [-3.4005578, 0.07455292],
+    [-3.40102, 0.074563675],
+    [-3.4013858, 0.07457198],
+    [-3.4015796, 0.07457629],
+    [-3.4015548, 0.07457575],
+    [-3.4013004, 0.074570335],
+    [-3.4008453, 0.07456086],
+    [-3.4002578, 0.07454886],
+    [-3.3996408, 0.074536525],
+    [-3.3991213, 0.07452634],
+    [-3.3988338, 0.07452081],
+    [-3.3988945, 0.07452195],
+    [-3.3993657, 0.07453068],
+    [-3.4002063, 0.074545965],
+    [-3.4012053, 0.0745638],
+    [-3.4018912, 0.07457584],
+    [-3.401417, 0.07456766],
+    [-3.398413, 0.07451674],
+    [-3.3908165, 0.074390136],
+    [-3.3756938, 0.074142225],
+    [-3.349103, 0.07371334],
+    [-3.3060749, 0.07303036],
+    [-3.2408423, 0.0720111],
+    [-3.1474435, 0.070574194],
+    [-3.0207608, 0.06865476],
+    [-2.8578565, 0.06622335],
+    [-2.6591892, 0.06330177],
+    [-2.429154, 0.059967928],
+    [-2.1755621, 0.056345187],
+    [-1.9081869, 0.05257934],
+    [-1.6369499, 0.04881216],
+    [-1.3704251, 0.045161135],
+    [-1.115029, 0.041709837],
+    [-0.874887, 0.038507942],
+    [-0.65214163, 0.03557708],
+    [-0.44744086, 0.032918632],
+    [-0.26042584, 0.030521002],
+    [-0.09013152, 0.028365377],
+    [0.06472154, 0.026429715],
+    [0.20553209, 0.024691314],
+    [0.33369735, 0.023128321],
+    [0.45054427, 0.021720527],
+    [0.55729496, 0.020449685],
+    [0.6550534, 0.019299587],
+    [0.7448044, 0.018255971],
+    [0.82741964, 0.01730637],
+    [0.90366733, 0.016439918],
+    [0.97422236, 0.015647165],
+    [1.0396773, 0.014919889],
+    [1.1005523, 0.014250932],
 ];
 
 /// `x1 = x1`: validation RMSE 0.2424, max error 1.4808 (linear floor RMSE 0.2636).
+///
+/// `Γ⁻¹` is a table of 92 segments (93 knots uniform in `Lᵀ z`). Proven on the
+/// host from bounds of `Γ'` and `Γ''`: |table − Γ⁻¹| ≤ 4.78e-4 over the whole range
+/// [-2.411638, 2.411638] (exact arithmetic); largest error on 10⁶ dense points: 4.74e-4.
 pub const MAP_X1: TargetMap<'static, f32> = TargetMap {
-    gains: &[
-        0.0006228242,
-        0.00010565899,
-        -0.0001355203,
-        -0.0001853103,
-        -0.00016700401,
-        -5.868284e-5,
-        2.905751e-5,
-        6.318325e-5,
-        -9.443796e-5,
-        -0.0005532289,
-    ],
-    gamma: Gamma {
-        offset: -0.0070464294,
-        weights: &[
-            -0.6187594,
-            0.3126111,
-            -0.1057445,
-            0.01821529,
-            0.92608064,
-            -0.9494161,
-            0.5507883,
-            -0.08822006,
-        ],
-        odds_ratios: &ODDS_RATIOS,
+    gains: &GAINS_X1,
+    offset: 45.57301,
+    inverse: InverseTable {
+        segments: &SEGMENTS_X1,
+        t_max: 92.0,
+        r_min: -2.411638,
+        r_max: 2.411638,
     },
-    r_min: -2.411638,
-    r_span: 4.823276,
 };
+
+const _: () = assert!(SEGMENTS_X1.len() == 92 && MAP_X1.inverse.t_max == 92 as f32);
+
+/// Gains `g_i` of `x2`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`.
+const GAINS_X2: [f32; REGRESSOR_LEN] = [
+    0.03496939,
+    0.032472618,
+    0.020010445,
+    0.008153512,
+    -0.00033767632,
+    -0.0037675358,
+    -0.0035363836,
+    0.0008704437,
+    0.009133846,
+    0.021195892,
+];
+
+/// The 1 segments `(a_k, b_k)` of `x2 = a_k + b_k t` on `t ∈ [k, k + 1]`.
+#[rustfmt::skip]
+const SEGMENTS_X2: [[f32; 2]; 1] = [
+    [-4.6765766, 9.353153],
+];
 
 /// `x2 = x2`: validation RMSE 0.2870, max error 0.9645 (linear floor RMSE 0.2872).
+///
+/// `Γ⁻¹` is a table of 1 segments (2 knots uniform in `Lᵀ z`). Proven on the
+/// host from bounds of `Γ'` and `Γ''`: |table − Γ⁻¹| ≤ 9.02e-4 over the whole range
+/// [-4.6765766, 4.6765766] (exact arithmetic); largest error on 10⁶ dense points: 5.23e-7.
 pub const MAP_X2: TargetMap<'static, f32> = TargetMap {
-    gains: &[
-        0.000349694,
-        0.0003247263,
-        0.0002001045,
-        8.1535145e-5,
-        -3.3767642e-6,
-        -3.767537e-5,
-        -3.5363846e-5,
-        8.70444e-6,
-        9.133849e-5,
-        0.00021195898,
-    ],
-    gamma: Gamma {
-        offset: -0.0049988492,
-        weights: &[
-            0.010000925,
-            -2.2501986e-7,
-            1.3310462e-8,
-            3.3600551e-9,
-            -1.9607817e-6,
-            2.4867722e-6,
-            -1.8668089e-6,
-            6.616262e-7,
-        ],
-        odds_ratios: &ODDS_RATIOS,
+    gains: &GAINS_X2,
+    offset: 0.49988478,
+    inverse: InverseTable {
+        segments: &SEGMENTS_X2,
+        t_max: 1.0,
+        r_min: -4.6765766,
+        r_max: 4.6765766,
     },
-    r_min: -4.6765766,
-    r_span: 9.353153,
 };
 
+const _: () = assert!(SEGMENTS_X2.len() == 1 && MAP_X2.inverse.t_max == 1 as f32);
+
 /// Every target's map, in [`TARGET_NAMES`] order.
-pub static MAPS: [TargetMap<'static, f32>; TARGETS] = [MAP_X1, MAP_X2];
+pub static MAPS: [TargetMap<'static, f32>; TARGETS] = <Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::MAPS;
+
+/// This design for [`firmware::Observer`]: its estimate is the dot products written out (the compiler
+/// does not unroll loops when optimising for size), in the order of [`firmware::estimate_by_loops`],
+/// so that both give the same bits.
+pub struct Design;
+
+impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
+    const MAPS: [TargetMap<'static, f32>; TARGETS] = [MAP_X1, MAP_X2];
+
+    #[inline(always)]
+    fn estimate(w: &[Sample<f32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<f32>; TARGETS] {
+        [
+            MAP_X1.inverse.evaluate(
+                MAP_X1.offset
+                    + GAINS_X1[0] * w[9].y[0]
+                    + GAINS_X1[1] * w[8].y[0]
+                    + GAINS_X1[2] * w[7].y[0]
+                    + GAINS_X1[3] * w[6].y[0]
+                    + GAINS_X1[4] * w[5].y[0]
+                    + GAINS_X1[5] * w[4].y[0]
+                    + GAINS_X1[6] * w[3].y[0]
+                    + GAINS_X1[7] * w[2].y[0]
+                    + GAINS_X1[8] * w[1].y[0]
+                    + GAINS_X1[9] * w[0].y[0],
+            ),
+            MAP_X2.inverse.evaluate(
+                MAP_X2.offset
+                    + GAINS_X2[0] * w[9].y[0]
+                    + GAINS_X2[1] * w[8].y[0]
+                    + GAINS_X2[2] * w[7].y[0]
+                    + GAINS_X2[3] * w[6].y[0]
+                    + GAINS_X2[4] * w[5].y[0]
+                    + GAINS_X2[5] * w[4].y[0]
+                    + GAINS_X2[6] * w[3].y[0]
+                    + GAINS_X2[7] * w[2].y[0]
+                    + GAINS_X2[8] * w[1].y[0]
+                    + GAINS_X2[9] * w[0].y[0],
+            ),
+        ]
+    }
+}
 
 /// The observer of this design.
-pub type Observer = firmware::Observer<'static, f32, HORIZON, OUTPUTS, INPUTS, TARGETS>;
+pub type Observer = firmware::Observer<f32, Design, HORIZON, OUTPUTS, INPUTS, TARGETS>;
 
 /// A fresh observer, holding no sample yet.
 pub const fn observer() -> Observer {
-    firmware::Observer::new(&MAPS)
+    firmware::Observer::new()
 }
 
 /// Length of the recorded sequence.

@@ -86,15 +86,40 @@ fn literal_block(what: &str, values: &[f64], indent: usize) -> Result<String, Em
 struct TargetTables {
     name: String,
     const_name: String,
+    upper: String,
     expr: String,
     rmse: String,
     max_error: String,
     linear_rmse: String,
     gains: String,
     offset: String,
-    weights: String,
+    segments: String,
+    segment_count: usize,
+    knot_count: usize,
+    t_max: String,
     r_min: String,
-    r_span: String,
+    r_max: String,
+    proven_bound: String,
+    sampled_error: String,
+    dot: String,
+}
+
+/// `+ GAINS_<upper>[i] * w[…].y[…]` for every regressor entry, in regressor order, one per line: the
+/// window `w` is oldest first, so lag `l` is `w[N - 1 - l]`.
+fn dot_lines(upper: &str, horizon: usize, outputs: usize, inputs: usize) -> String {
+    let mut lines = Vec::new();
+    for (count, field) in [(outputs, "y"), (inputs, "u")] {
+        for lag in 0..horizon {
+            for m in 0..count {
+                let i = lines.len();
+                lines.push(format!(
+                    "                    + GAINS_{upper}[{i}] * w[{}].{field}[{m}]",
+                    horizon - 1 - lag
+                ));
+            }
+        }
+    }
+    lines.join("\n")
 }
 
 #[derive(Template)]
@@ -116,8 +141,7 @@ struct DesignFile {
     inputs: Vec<String>,
     output_list: String,
     input_list: String,
-    odds_ratio_count: usize,
-    odds_ratios: String,
+    regressor_len: usize,
     targets: Vec<TargetTables>,
     recorded_len: usize,
     recorded_y: String,
@@ -276,25 +300,41 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
             })?;
         }
         let what = |field: &str| format!("target `{}` {field}", target.name);
+        let table = &map.table;
+        let upper = target.name.to_uppercase();
+        let segments = table
+            .segments
+            .iter()
+            .enumerate()
+            .map(|(k, [a, b])| {
+                Ok(format!(
+                    "    [{}, {}],",
+                    f32_literal(&what(&format!("segments[{k}].a")), *a)?,
+                    f32_literal(&what(&format!("segments[{k}].b")), *b)?
+                ))
+            })
+            .collect::<Result<Vec<_>, EmitError>>()?;
         targets.push(TargetTables {
             name: target.name.clone(),
             const_name,
+            dot: dot_lines(&upper, design.map.horizon, outputs.len(), design.model.inputs.len()),
+            upper,
             expr: comment_text(target.expr.text()),
             rmse: format!("{:.4}", t.validation.map.rmse),
             max_error: format!("{:.4}", t.validation.map.max_error),
             linear_rmse: format!("{:.4}", t.validation.linear.rmse),
-            gains: literal_block(&what("gains"), &map.gains, 8)?,
-            offset: f32_literal(&what("offset"), map.offset)?,
-            weights: literal_block(&what("weights"), &map.weights, 12)?,
-            r_min: f32_literal(&what("r_min"), map.r_min)?,
-            r_span: f32_literal(&what("r_span"), map.r_max - map.r_min)?,
+            gains: literal_block(&what("gains"), &table.gains, 4)?,
+            offset: f32_literal(&what("offset"), table.offset)?,
+            segments: segments.join("\n"),
+            segment_count: table.segments.len(),
+            knot_count: table.segments.len() + 1,
+            t_max: f32_literal(&what("t_max"), table.segments.len() as f64)?,
+            r_min: f32_literal(&what("r_min"), table.r_min)?,
+            r_max: f32_literal(&what("r_max"), table.r_max)?,
+            proven_bound: format!("{:.2e}", table.proven_bound),
+            sampled_error: format!("{:.2e}", table.sampled_error),
         });
     }
-    let odds_ratios = result
-        .targets
-        .first()
-        .map(|t| t.fit.map.odds_ratios.clone())
-        .unwrap_or_default();
     let file = DesignFile {
         name: design.name.clone(),
         description: comment_text(&design.description),
@@ -312,8 +352,7 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
         input_list: list(&design.model.inputs),
         outputs,
         inputs: design.model.inputs.clone(),
-        odds_ratio_count: odds_ratios.len(),
-        odds_ratios: literal_block("odds_ratios", &odds_ratios, 4)?,
+        regressor_len: design.map.horizon * (design.model.outputs.len() + design.model.inputs.len()),
         targets,
         recorded_len: result.scenario.measurements.len(),
         recorded_y: recorded_rows(

@@ -35,6 +35,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use firmware::basis;
+use firmware::gamma::weight as basis_weight;
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
@@ -79,6 +80,9 @@ pub enum FitError {
     /// Clarabel found no solution.
     #[error(transparent)]
     Qp(#[from] QpError),
+    /// The table of `Γ⁻¹` could not be certified.
+    #[error("the inverse table: {0}")]
+    Table(#[from] crate::inverse_table::TableError),
     /// After refinement `Γ` is still not strictly increasing somewhere.
     #[error("Γ is not strictly increasing: Γ'({eta}) = {slope}")]
     NotMonotone {
@@ -181,7 +185,17 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
     let gains = (0..n_z).map(|c| scale * l_scaled[c] / range.scales[c]).collect();
     let intercept = if with_constant { 0.0 } else { scale * l_scaled[n_z] };
     let mu_constant = if with_constant { scale * mu[0] } else { 0.0 };
-    let mu_basis = mu.iter().skip(usize::from(with_constant)).map(|m| scale * m).collect();
+    let mu_basis: Vec<f64> = mu.iter().skip(usize::from(with_constant)).map(|m| scale * m).collect();
+    let weights: Vec<f64> = mu_basis
+        .iter()
+        .zip(&odds_ratios)
+        .map(|(&m, &c)| basis_weight(m, c))
+        .collect();
+    let min_slope = check_strictly_increasing(&firmware::Gamma {
+        offset: mu_constant - intercept,
+        weights: &weights,
+        odds_ratios: &odds_ratios,
+    })?;
     let map = FittedMap::new(
         target_name.to_owned(),
         settings.normalisation,
@@ -191,10 +205,8 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
         mu_basis,
         odds_ratios.clone(),
         (range.min, range.max),
-    );
-
+    )?;
     let gamma = map.gamma();
-    let min_slope = check_strictly_increasing(&gamma)?;
     let (g0, g1) = (gamma.value(0.0), gamma.value(1.0));
     let nonlinearity = check_grid()
         .iter()

@@ -12,6 +12,7 @@ pub mod emit;
 pub mod evaluate;
 pub mod expr;
 pub mod identify;
+pub mod inverse_table;
 pub mod maps;
 pub mod model;
 pub mod monotonicity;

@@ -1,9 +1,11 @@
 //! Fitted maps as the host holds them (owned, `f64`, serialisable), evaluated through the firmware's
-//! code so that the host's "library estimate" is the very computation the target runs.
+//! code so that the host's "library estimate" is the very computation the target runs: the certified
+//! table ([`InverseTable`]). The exact `Γ` and its bisection stay beside it as the reference.
 
-use firmware::{Estimate, Gamma, TargetMap};
+use firmware::{Estimate, Gamma, Saturation, TargetMap};
 use serde::Serialize;
 
+use crate::inverse_table::{InverseTable, TableError, RELATIVE_TOLERANCE};
 use crate::spec::Normalisation;
 
 /// `r = r_min + (r_max - r_min) Γ⁻¹(Lᵀ Z)` for one target.
@@ -31,10 +33,13 @@ pub struct FittedMap {
     pub r_min: f64,
     /// Largest target value on the learning windows.
     pub r_max: f64,
+    /// The certified table of `Γ⁻¹` and the scaled gains: what the library estimate and the chip use.
+    pub table: InverseTable,
 }
 
 impl FittedMap {
-    /// Assembles a map from the fitted coefficients (the derived fields are computed here).
+    /// Assembles a map from the fitted coefficients (the derived fields are computed here) and
+    /// certifies its table; fails when `Γ` cannot be proven increasing or needs too many segments.
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         target: String,
@@ -45,13 +50,20 @@ impl FittedMap {
         mu: Vec<f64>,
         odds_ratios: Vec<f64>,
         (r_min, r_max): (f64, f64),
-    ) -> Self {
-        let weights = mu
+    ) -> Result<Self, TableError> {
+        let weights: Vec<f64> = mu
             .iter()
             .zip(&odds_ratios)
             .map(|(&m, &b)| firmware::gamma::weight(m, b))
             .collect();
-        FittedMap {
+        let offset = mu_constant - intercept;
+        let exact = Gamma {
+            offset,
+            weights: &weights,
+            odds_ratios: &odds_ratios,
+        };
+        let table = InverseTable::certify(&exact, &gains, (r_min, r_max), RELATIVE_TOLERANCE)?;
+        Ok(FittedMap {
             target,
             normalisation,
             gains,
@@ -60,10 +72,11 @@ impl FittedMap {
             mu,
             odds_ratios,
             weights,
-            offset: mu_constant - intercept,
+            offset,
             r_min,
             r_max,
-        }
+            table,
+        })
     }
 
     /// `Γ` in the firmware's form (`Γ(η) - c`, so that it is compared with `Lᵀ Z` alone).
@@ -75,19 +88,34 @@ impl FittedMap {
         }
     }
 
-    /// The firmware's view of this map, in `f64`.
+    /// The firmware's view of this map, in `f64`: the scaled gains and the table.
     pub fn as_firmware(&self) -> TargetMap<'_, f64> {
         TargetMap {
-            gains: &self.gains,
-            gamma: self.gamma(),
-            r_min: self.r_min,
-            r_span: self.r_max - self.r_min,
+            gains: &self.table.gains,
+            offset: self.table.offset,
+            inverse: self.table.as_firmware(),
         }
     }
 
-    /// The library estimate `F(Z)`.
+    /// The library estimate `F(Z)`: the certified table, as on the chip.
     pub fn estimate(&self, regressor: &[f64]) -> Estimate<f64> {
         self.as_firmware().estimate(regressor)
+    }
+
+    /// `r_min + (r_max - r_min) Γ⁻¹(Lᵀ Z)` by the exact bisection: the reference the table is proven
+    /// against (within `table.proven_bound`).
+    pub fn exact_estimate(&self, regressor: &[f64]) -> Estimate<f64> {
+        let v: f64 = self.gains.iter().zip(regressor).map(|(g, z)| g * z).sum();
+        let inverse = self.gamma().inverse(v);
+        let value = match inverse.saturation {
+            Saturation::Inside => self.r_min + (self.r_max - self.r_min) * inverse.eta,
+            Saturation::Low => self.r_min,
+            Saturation::High => self.r_max,
+        };
+        Estimate {
+            value,
+            saturation: inverse.saturation,
+        }
     }
 }
 

@@ -104,7 +104,12 @@ pub fn explain(design: &Design, index: usize, error: FitError) -> SpecError {
             problem,
             "the solver lost accuracy on a nearly degenerate basis: lower `map.beta` or `map.nm`",
         ),
-        FitError::NotMonotone { .. } => design.error(
+        FitError::Table(crate::inverse_table::TableError::TooManySegments { .. }) => design.error(
+            "map.beta",
+            problem,
+            "Γ is too flat somewhere for a table of Γ⁻¹ with uniform knots: lower `map.beta` (or `map.nm`) so that the basis bends less sharply",
+        ),
+        FitError::Table(_) | FitError::NotMonotone { .. } => design.error(
             "map.monotonicity_grid",
             problem,
             "raise `map.monotonicity_grid` (e.g. to 801), or lower `map.beta` so that the basis bends less sharply",

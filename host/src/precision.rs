@@ -1,17 +1,19 @@
 //! How far an f32 evaluation of a map (generated tables, firmware code) may be from its f64 library
-//! evaluation on the same regressor.
+//! evaluation (the same table, the same code) on the same regressor.
 //!
-//! With `u = 2⁻²⁴` (f32 unit roundoff) and, per window, the library's `v = Lᵀ Z`, `η`, `Γ'(η)`:
-//! * `Lᵀ Z` in f32 from rounded gains and rounded samples: `δv ≤ (n_z + 3) u Σ|L_i z_i|`;
-//! * `Γ(η) = offset + Σ μ_j B(η; c_j)` in f32 from rounded `w_j`, `c_j`: each term is at most `|μ_j|`,
-//!   and a relative change `u` of `c_j` changes it by at most `u B |μ_j| ≤ u |μ_j|` (the odds-ratio form
-//!   of the basis keeps this bounded for every `c_j`), so `δΓ ≤ (m + 6) u (|offset| + Σ |μ_j|)`;
-//! * the f32 root then moves by at most `(δv + δΓ) / Γ'(η)` (doubled, for the variation of `Γ'` over
-//!   that interval), and bisection stops within `2⁻²⁴`;
-//! * `r = r_min + r_span η` in f32 adds `4 u (|r_min| + r_span)`.
+//! With `u = 2⁻²⁴` (f32 unit roundoff), `n_z` regressor entries and, per window, the library's
+//! `t = offset + Σ g_i z_i` and segment `k = ⌊t⌋`:
+//! * `t` in f32 from rounded gains, offset and samples: each product is off by at most `3u` of itself
+//!   (three roundings) and the `n_z` additions add `n_z u` of the running sums, so
+//!   `δt ≤ (n_z + 4) u (|offset| + Σ |g_i z_i|)`;
+//! * `r = a_k + b_k t`: `t` off by `δt` moves `r` by `|b| δt`, and where `t` is within `δt` of a knot the
+//!   f32 side may take the neighbouring segment, which the continuity of the table keeps within another
+//!   `|b| δt`; with `b` the largest slope of segments `k - 1 … k + 1`, `2 |b| δt`;
+//! * rounding `a_k`, `b_k`, the product and the sum adds at most `4 u (|a| + |b| (|t| + 1))`, and the
+//!   saturated values `r_min`, `r_max` are off by at most `u` of themselves.
 //!
-//! So `|r_f32 - r_f64| ≤ r_span (2⁻²⁴ + 2 (δv + δΓ)/Γ'(η)) + 4 u (|r_min| + r_span)`. Saturation flags
-//! must agree except where `v` lies within `δv + δΓ` of `Γ(0)` or `Γ(1)`, where either answer is right.
+//! So `|r_f32 - r_f64| ≤ 2 |b| δt + 4 u (|a| + |b| (|t| + 1) + |r_min| + |r_max|)`. Saturation flags
+//! must agree except where `t` lies within `δt` of `0` or `K`, where either answer is right.
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(x <= y)` is deliberate: a NaN must fail the check.
 
@@ -23,43 +25,44 @@ pub const U: f64 = 1.0 / 16_777_216.0;
 
 /// The bound above, and whether the saturation flag is decidable, for one window `z`.
 pub fn tolerance(map: &FittedMap, z: &[f64]) -> (f64, bool) {
-    let firmware_map = map.as_firmware();
-    let v = firmware_map.project(z);
-    let eta = firmware_map.gamma.inverse(v).eta;
-    let sum_abs: f64 = map.gains.iter().zip(z).map(|(g, z)| (g * z).abs()).sum();
-    let dv = (z.len() as f64 + 3.0) * U * sum_abs;
-    let terms: f64 = map.mu.iter().map(|mu| mu.abs()).sum();
-    let dgamma = (map.mu.len() as f64 + 6.0) * U * (map.offset.abs() + terms);
-    let span = map.r_max - map.r_min;
-    let slope = map.gamma().slope(eta);
-    let tolerance = span * (U + 2.0 * (dv + dgamma) / slope) + 4.0 * U * (map.r_min.abs() + span);
-    let gamma = map.gamma();
-    let margin = dv + dgamma;
-    let decidable = (v - gamma.value(0.0)).abs() > margin && (v - gamma.upper()).abs() > margin;
+    let table = &map.table;
+    let t = map.as_firmware().project(z);
+    let terms: f64 = table.offset.abs() + table.gains.iter().zip(z).map(|(g, z)| (g * z).abs()).sum::<f64>();
+    let dt = (z.len() as f64 + 4.0) * U * terms;
+    let last = table.segments.len() - 1;
+    let k = (t.max(0.0) as usize).min(last);
+    let (mut a, mut b) = (0.0f64, 0.0f64);
+    for segment in &table.segments[k.saturating_sub(1)..=(k + 1).min(last)] {
+        a = a.max(segment[0].abs());
+        b = b.max(segment[1].abs());
+    }
+    let t_inside = t.clamp(0.0, table.segments.len() as f64);
+    let tolerance = 2.0 * b * dt + 4.0 * U * (a + b * (t_inside + 1.0) + table.r_min.abs() + table.r_max.abs());
+    let decidable = t.abs() > dt && (t - table.segments.len() as f64).abs() > dt;
     (tolerance, decidable)
 }
 
 /// The f32 tables of a map, exactly as `emit` prints them (every literal round-trips to these bits).
 pub struct F32Tables {
     gains: Vec<f32>,
-    weights: Vec<f32>,
-    odds_ratios: Vec<f32>,
     offset: f32,
+    segments: Vec<[f32; 2]>,
+    t_max: f32,
     r_min: f32,
-    r_span: f32,
+    r_max: f32,
 }
 
 impl F32Tables {
-    /// Rounds a fitted map to f32.
+    /// Rounds a fitted map's table to f32.
     pub fn new(map: &FittedMap) -> Self {
-        let round = |v: &[f64]| v.iter().map(|&x| x as f32).collect();
+        let table = &map.table;
         F32Tables {
-            gains: round(&map.gains),
-            weights: round(&map.weights),
-            odds_ratios: round(&map.odds_ratios),
-            offset: map.offset as f32,
-            r_min: map.r_min as f32,
-            r_span: (map.r_max - map.r_min) as f32,
+            gains: table.gains.iter().map(|&g| g as f32).collect(),
+            offset: table.offset as f32,
+            segments: table.segments.iter().map(|[a, b]| [*a as f32, *b as f32]).collect(),
+            t_max: table.segments.len() as f32,
+            r_min: table.r_min as f32,
+            r_max: table.r_max as f32,
         }
     }
 
@@ -67,13 +70,13 @@ impl F32Tables {
     pub fn as_firmware(&self) -> firmware::TargetMap<'_, f32> {
         firmware::TargetMap {
             gains: &self.gains,
-            gamma: firmware::Gamma {
-                offset: self.offset,
-                weights: &self.weights,
-                odds_ratios: &self.odds_ratios,
+            offset: self.offset,
+            inverse: firmware::InverseTable {
+                segments: &self.segments,
+                t_max: self.t_max,
+                r_min: self.r_min,
+                r_max: self.r_max,
             },
-            r_min: self.r_min,
-            r_span: self.r_span,
         }
     }
 }

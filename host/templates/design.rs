@@ -7,6 +7,11 @@
 //! Horizon N = {{ horizon }} samples of τ = {{ tau }}; outputs: {{ output_list }}; inputs: {{ input_list }}.
 //! Normalisation `{{ normalisation }}`, n_m = {{ nm }}, β = {{ beta }}.
 //!
+//! Each target is `r = table(t)`, `t = offset + Σ_i g_i z_i` over the regressor
+//! `z = (y(k), …, y(k-N+1), u(k), …, u(k-N+1))`: the fitted `Γ⁻¹(Lᵀ z)` with `Γ⁻¹` replaced by a
+//! piecewise-linear table whose distance to it is proven (see each map). [`Design`] writes the dot
+//! products out as straight-line code.
+//!
 //! ```
 //! let mut observer = generated::{{ name }}::observer();
 //! let (y, u) = ([0.0; generated::{{ name }}::OUTPUTS], [0.0; generated::{{ name }}::INPUTS]);
@@ -14,7 +19,7 @@
 //! assert!(observer.estimate().is_none()); // until HORIZON samples have arrived
 //! ```
 
-use firmware::{Gamma, TargetMap};
+use firmware::{Estimate, InverseTable, Sample, TargetMap};
 
 /// The design's name.
 pub const NAME: &str = "{{ name }}";
@@ -30,6 +35,8 @@ pub const OUTPUTS: usize = {{ outputs.len() }};
 pub const INPUTS: usize = {{ inputs.len() }};
 /// Estimated targets.
 pub const TARGETS: usize = {{ targets.len() }};
+/// Entries of the regressor `z`: `HORIZON · (OUTPUTS + INPUTS)`.
+pub const REGRESSOR_LEN: usize = {{ regressor_len }};
 /// Output names, in `push` order.
 pub const OUTPUT_NAMES: [&str; OUTPUTS] = [{% for o in outputs %}"{{ o }}"{% if !loop.last %}, {% endif %}{% endfor %}];
 /// Input names, in `push` order.
@@ -37,36 +44,67 @@ pub const INPUT_NAMES: [&str; INPUTS] = [{% for i in inputs %}"{{ i }}"{% if !lo
 /// Target names, in estimate order.
 pub const TARGET_NAMES: [&str; TARGETS] = [{% for t in targets %}"{{ t.name }}"{% if !loop.last %}, {% endif %}{% endfor %}];
 
-/// Odds ratios `c_j` of the basis `B(η; c) = c η / ((1 - η) + c η)`, shared by every target.
-const ODDS_RATIOS: [f32; {{ odds_ratio_count }}] = [
-{{ odds_ratios }}
-];
+const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 {% for t in targets %}
-/// `{{ t.name }} = {{ t.expr }}`: validation RMSE {{ t.rmse }}, max error {{ t.max_error }} (linear floor RMSE {{ t.linear_rmse }}).
-pub const {{ t.const_name }}: TargetMap<'static, f32> = TargetMap {
-    gains: &[
+/// Gains `g_i` of `{{ t.name }}`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`.
+const GAINS_{{ t.upper }}: [f32; REGRESSOR_LEN] = [
 {{ t.gains }}
-    ],
-    gamma: Gamma {
-        offset: {{ t.offset }},
-        weights: &[
-{{ t.weights }}
-        ],
-        odds_ratios: &ODDS_RATIOS,
+];
+
+/// The {{ t.segment_count }} segments `(a_k, b_k)` of `{{ t.name }} = a_k + b_k t` on `t ∈ [k, k + 1]`.
+#[rustfmt::skip]
+const SEGMENTS_{{ t.upper }}: [[f32; 2]; {{ t.segment_count }}] = [
+{{ t.segments }}
+];
+
+/// `{{ t.name }} = {{ t.expr }}`: validation RMSE {{ t.rmse }}, max error {{ t.max_error }} (linear floor RMSE {{ t.linear_rmse }}).
+///
+/// `Γ⁻¹` is a table of {{ t.segment_count }} segments ({{ t.knot_count }} knots uniform in `Lᵀ z`). Proven on the
+/// host from bounds of `Γ'` and `Γ''`: |table − Γ⁻¹| ≤ {{ t.proven_bound }} over the whole range
+/// [{{ t.r_min }}, {{ t.r_max }}] (exact arithmetic); largest error on 10⁶ dense points: {{ t.sampled_error }}.
+pub const {{ t.const_name }}: TargetMap<'static, f32> = TargetMap {
+    gains: &GAINS_{{ t.upper }},
+    offset: {{ t.offset }},
+    inverse: InverseTable {
+        segments: &SEGMENTS_{{ t.upper }},
+        t_max: {{ t.t_max }},
+        r_min: {{ t.r_min }},
+        r_max: {{ t.r_max }},
     },
-    r_min: {{ t.r_min }},
-    r_span: {{ t.r_span }},
 };
+
+const _: () = assert!(SEGMENTS_{{ t.upper }}.len() == {{ t.segment_count }} && {{ t.const_name }}.inverse.t_max == {{ t.segment_count }} as f32);
 {% endfor %}
 /// Every target's map, in [`TARGET_NAMES`] order.
-pub static MAPS: [TargetMap<'static, f32>; TARGETS] = [{% for t in targets %}{{ t.const_name }}{% if !loop.last %}, {% endif %}{% endfor %}];
+pub static MAPS: [TargetMap<'static, f32>; TARGETS] = <Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::MAPS;
+
+/// This design for [`firmware::Observer`]: its estimate is the dot products written out (the compiler
+/// does not unroll loops when optimising for size), in the order of [`firmware::estimate_by_loops`],
+/// so that both give the same bits.
+pub struct Design;
+
+impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
+    const MAPS: [TargetMap<'static, f32>; TARGETS] = [{% for t in targets %}{{ t.const_name }}{% if !loop.last %}, {% endif %}{% endfor %}];
+
+    #[inline(always)]
+    fn estimate(w: &[Sample<f32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<f32>; TARGETS] {
+        [
+{%- for t in targets %}
+            {{ t.const_name }}.inverse.evaluate(
+                {{ t.const_name }}.offset
+{{ t.dot }},
+            ),
+{%- endfor %}
+        ]
+    }
+}
 
 /// The observer of this design.
-pub type Observer = firmware::Observer<'static, f32, HORIZON, OUTPUTS, INPUTS, TARGETS>;
+pub type Observer = firmware::Observer<f32, Design, HORIZON, OUTPUTS, INPUTS, TARGETS>;
 
 /// A fresh observer, holding no sample yet.
 pub const fn observer() -> Observer {
-    firmware::Observer::new(&MAPS)
+    firmware::Observer::new()
 }
 
 /// Length of the recorded sequence.

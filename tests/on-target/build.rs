@@ -10,13 +10,19 @@ fn main() {
     println!("cargo:rustc-link-arg-bins=-Tlink.x");
     println!("cargo:rerun-if-changed=memory.x");
 
+    // The runner links the one design named by ON_TARGET_DESIGN.
+    println!("cargo:rerun-if-env-changed=ON_TARGET_DESIGN");
+    let runner = module_name("ON_TARGET_DESIGN");
+    let runner = if runner.is_empty() {
+        "compile_error!(\"set ON_TARGET_DESIGN to the generated design module to run\");\nmod d { pub type Observer = (); pub const TARGETS: usize = 0; pub const OUTPUTS: usize = 0; pub const INPUTS: usize = 0; pub const RECORDED_LEN: usize = 0; }\n".to_owned()
+    } else {
+        format!("use generated::{runner} as d;\n")
+    };
+    std::fs::write(out.join("design.rs"), runner).expect("write design.rs");
+
     // The size probe links one design (or none, for the baseline) chosen by PROBE_DESIGN.
     println!("cargo:rerun-if-env-changed=PROBE_DESIGN");
-    let design = std::env::var("PROBE_DESIGN").unwrap_or_default();
-    let valid = design
-        .chars()
-        .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
-    assert!(valid, "PROBE_DESIGN must be a design module name, got {design:?}");
+    let design = module_name("PROBE_DESIGN");
     let probe = if design == "__reachable_panic" {
         // Proves the check can fail: an index the compiler cannot bound.
         "/// Indexes out of bounds (for the check's own test).\nfn probe() -> ! {\n    let table = core::hint::black_box([0u8; 4]);\n    loop {\n        core::hint::black_box(table[core::hint::black_box(7usize)]);\n    }\n}\n".to_owned()
@@ -28,4 +34,12 @@ fn main() {
         )
     };
     std::fs::write(out.join("probe_design.rs"), probe).expect("write probe_design.rs");
+}
+
+/// The value of `variable`, which must be empty or a module name.
+fn module_name(variable: &str) -> String {
+    let name = std::env::var(variable).unwrap_or_default();
+    let valid = name.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
+    assert!(valid, "{variable} must be a design module name, got {name:?}");
+    name
 }

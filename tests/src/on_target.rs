@@ -69,6 +69,10 @@ pub struct DesignMeasurement {
     pub samples: Vec<TargetSample>,
     /// Instructions executed by `push` + `estimate` per sample (markers included).
     pub instructions: Vec<u64>,
+    /// `VDIV` and `VSQRT` instructions executed per sample.
+    pub divisions: Vec<u64>,
+    /// Deepest stack use of `push` + `estimate` (the call to them included), in bytes.
+    pub stack_bytes: usize,
     /// `size_of` the observer on the target, in bytes.
     pub observer_bytes: usize,
     /// Flash (text + data) added by the design's observer over the baseline probe, in bytes.
@@ -88,17 +92,26 @@ impl DesignMeasurement {
             .map(|(n, _)| *n)
             .collect()
     }
+
+    /// Instructions of the sample that gave the first estimate (the window just became full).
+    pub fn first_estimate_instructions(&self) -> Option<u64> {
+        self.samples
+            .iter()
+            .position(|s| s.estimates.is_some())
+            .and_then(|k| self.instructions.get(k).copied())
+    }
 }
 
-/// Builds `bin` of the on-target program in release, with `PROBE_DESIGN` set, into `target_dir`.
-fn build(bin: &str, probe_design: &str, target_dir: &Path) -> Result<PathBuf, String> {
+/// Builds `bin` of the on-target program in release, linking design `design` (the runner's
+/// `ON_TARGET_DESIGN`, the probe's `PROBE_DESIGN`), into `target_dir`.
+fn build(bin: &str, design: &str, target_dir: &Path) -> Result<PathBuf, String> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let output = Command::new(cargo)
         .current_dir(workspace_root())
         .args(["build", "--release", "--manifest-path", "tests/on-target/Cargo.toml"])
         .args(["--target", "thumbv7em-none-eabihf", "--bin", bin, "--target-dir"])
         .arg(target_dir)
-        .env("PROBE_DESIGN", probe_design)
+        .env(if bin == "probe" { "PROBE_DESIGN" } else { "ON_TARGET_DESIGN" }, design)
         .output()
         .map_err(|e| format!("cannot run cargo: {e}"))?;
     if !output.status.success() {
@@ -213,9 +226,36 @@ fn run_qemu(elf: &Path, trace: &Path, timeout: Duration) -> Result<String, Unava
     Ok(text)
 }
 
-/// Instructions executed from each entry of `start` to the following entry of `end`, from a QEMU
-/// `-d exec` trace with one instruction per block (each `Trace` line is one executed instruction).
-fn count_between(trace: &Path, start: u64, end: u64) -> Result<Vec<u64>, Unavailable> {
+/// Addresses of the division and square-root instructions (`VDIV`, `VSQRT`) in an ELF, from
+/// `arm-none-eabi-objdump -d`.
+fn division_addresses(elf: &Path) -> Result<std::collections::BTreeSet<u64>, Unavailable> {
+    let output = Command::new("arm-none-eabi-objdump")
+        .arg("-d")
+        .arg(elf)
+        .output()
+        .map_err(|e| failed(format!("arm-none-eabi-objdump: {e}")))?;
+    let text = String::from_utf8_lossy(&output.stdout);
+    Ok(text
+        .lines()
+        .filter_map(|line| {
+            // "     1a4:\teec0 7a80 \tvdiv.f32\ts15, s1, s0"
+            let (address, rest) = line.trim_start().split_once(':')?;
+            let mnemonic = rest.split('\t').nth(2)?.trim();
+            (mnemonic.starts_with("vdiv") || mnemonic.starts_with("vsqrt"))
+                .then(|| u64::from_str_radix(address.trim(), 16).ok())?
+        })
+        .collect())
+}
+
+/// Instructions, and of them divisions, executed from each entry of `start` to the following entry
+/// of `end`, from a QEMU `-d exec` trace with one instruction per block (each `Trace` line is one
+/// executed instruction).
+fn count_between(
+    trace: &Path,
+    start: u64,
+    end: u64,
+    divisions: &std::collections::BTreeSet<u64>,
+) -> Result<Vec<(u64, u64)>, Unavailable> {
     use std::io::BufRead;
     let file = std::fs::File::open(trace).map_err(|e| failed(e.to_string()))?;
     let (mut counts, mut current) = (Vec::new(), None);
@@ -228,25 +268,26 @@ fn count_between(trace: &Path, start: u64, end: u64) -> Result<Vec<u64>, Unavail
             continue;
         };
         if pc == start {
-            current = Some(0);
+            current = Some((0, 0));
         } else if pc == end {
             if let Some(n) = current.take() {
                 counts.push(n);
             }
-        } else if let Some(n) = current.as_mut() {
+        } else if let Some((n, d)) = current.as_mut() {
             *n += 1;
+            *d += u64::from(divisions.contains(&pc));
         }
     }
     Ok(counts)
 }
 
-/// Parses the program's `E …` and `S …` lines.
-fn parse(text: &str) -> Result<BTreeMap<String, DesignMeasurement>, Unavailable> {
-    let mut designs: BTreeMap<String, DesignMeasurement> = BTreeMap::new();
+/// Parses the program's `E …`, `S …` and `STACK …` lines.
+fn parse(text: &str) -> Result<DesignMeasurement, Unavailable> {
+    let mut design = DesignMeasurement::default();
     for line in text.lines() {
         let fields: Vec<&str> = line.split_whitespace().collect();
         match fields.as_slice() {
-            ["E", name, _k, accepted, rest @ ..] => {
+            ["E", _k, accepted, rest @ ..] => {
                 let estimates = (!rest.is_empty()).then(|| {
                     rest.chunks(2)
                         .map(|c| {
@@ -257,21 +298,32 @@ fn parse(text: &str) -> Result<BTreeMap<String, DesignMeasurement>, Unavailable>
                         })
                         .collect()
                 });
-                designs.entry(name.to_string()).or_default().samples.push(TargetSample {
+                design.samples.push(TargetSample {
                     accepted: *accepted == "1",
                     estimates,
                 });
             }
-            ["S", name, bytes] => {
-                designs.entry(name.to_string()).or_default().observer_bytes = bytes.parse().unwrap_or(0)
-            }
+            ["S", bytes] => design.observer_bytes = bytes.parse().unwrap_or(0),
+            ["STACK", bytes] => design.stack_bytes = bytes.parse().unwrap_or(0),
             _ => {}
         }
     }
-    if designs.is_empty() {
+    if design.samples.is_empty() {
         return Err(failed(format!("no estimate in the output:\n{text}")));
     }
-    Ok(designs)
+    Ok(design)
+}
+
+/// The generated design modules.
+pub fn design_names() -> Vec<&'static str> {
+    let mut names = Vec::new();
+    macro_rules! push_name {
+        ($name:ident) => {
+            names.push(stringify!($name));
+        };
+    }
+    generated::for_each_design!(push_name);
+    names
 }
 
 /// Everything measured on the target.
@@ -284,21 +336,35 @@ pub struct Measurements {
     pub family_flash_bytes: BTreeMap<String, u64>,
 }
 
-/// Builds and runs the on-target program and the size probes; returns the measurements.
-/// `Err(Unavailable::Missing)` when QEMU or the size tool is not installed.
+/// Builds and runs, per design, the on-target program linking that design alone, and the size
+/// probes; returns the measurements. `Err(Unavailable::Missing)` when QEMU or binutils are missing.
 pub fn measure() -> Result<Measurements, Unavailable> {
     require("qemu-system-arm", "qemu-system-arm")?;
     require("arm-none-eabi-size", "binutils-arm-none-eabi")?;
+    require("arm-none-eabi-objdump", "binutils-arm-none-eabi")?;
     let root = workspace_root().join("target");
-    let elf = build("on-target", "", &root.join("on-target")).map_err(failed)?;
-    let trace = root.join("on-target").join("trace.log");
-    let text = run_qemu(&elf, &trace, Duration::from_secs(300))?;
-    let mut designs = parse(&text)?;
-    let counts = count_between(&trace, symbol(&elf, "measure_start")?, symbol(&elf, "measure_end")?)?;
-    let _ = std::fs::remove_file(&trace);
-    let mut counts = counts.into_iter();
-    for design in designs.values_mut() {
-        design.instructions = counts.by_ref().take(design.samples.len()).collect();
+    let mut designs = BTreeMap::new();
+    for name in design_names() {
+        let elf = build("on-target", name, &root.join("on-target")).map_err(failed)?;
+        let trace = root.join("on-target").join(format!("{name}.trace"));
+        let text = run_qemu(&elf, &trace, Duration::from_secs(300))?;
+        let mut design = parse(&text)?;
+        let counts = count_between(
+            &trace,
+            symbol(&elf, "measure_start")?,
+            symbol(&elf, "measure_end")?,
+            &division_addresses(&elf)?,
+        )?;
+        let _ = std::fs::remove_file(&trace);
+        if counts.len() != design.samples.len() {
+            return Err(failed(format!(
+                "{name}: {} measured calls for {} samples",
+                counts.len(),
+                design.samples.len()
+            )));
+        }
+        (design.instructions, design.divisions) = counts.into_iter().unzip();
+        designs.insert(name.to_owned(), design);
     }
 
     let probes = root.join("on-target-probe");

@@ -27,27 +27,35 @@ fn run() -> Result<String, String> {
     let all = on_target::measure().map_err(|e| e.to_string())?;
     let measured = &all.designs;
     let mut table = String::from(
-        "| design | targets | N | instructions per push + estimate (min / median / max) | flash bytes | RAM bytes | max \\|target − host\\| |\n|---|---|---|---|---|---|---|\n",
+        "| design | targets | N | segments per target | instructions per push + estimate (min / median / max) | first estimate | dot-product floor | VDIV + VSQRT per sample | stack bytes | flash bytes | RAM bytes | max \\|target − host\\| |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for (name, design) in measured {
         let spec = integration_tests::shipped_specs()
             .into_iter()
             .find_map(|p| host::spec::load(&p).ok().filter(|d| &d.name == name))
             .ok_or_else(|| format!("no shipped spec for {name}"))?;
+        let result = integration_tests::build(&spec);
         let largest = on_target::compare_with_library(name, design)?;
         let steady = design.steady_instructions();
         let (min, median, max) = on_target::spread(&steady);
         let targets: Vec<&str> = spec.targets.iter().map(|t| t.name.as_str()).collect();
+        let segments: Vec<String> = result.targets.iter().map(|t| t.fit.map.table.segments.len().to_string()).collect();
+        let n_z = spec.map.horizon * (spec.model.outputs.len() + spec.model.inputs.len());
         table += &format!(
-            "| `{name}` | {} | {} | {min} / {median} / {max} | {} | {} | {largest:.1e} |\n",
+            "| `{name}` | {} | {} | {} | {min} / {median} / {max} | {} | {} | {} | {} | {} | {} | {largest:.1e} |\n",
             targets.join(", "),
             spec.map.horizon,
+            segments.join(", "),
+            design.first_estimate_instructions().unwrap_or(0),
+            2 * n_z * targets.len(),
+            design.divisions.iter().max().unwrap_or(&0),
+            design.stack_bytes,
             design.flash_bytes,
             design.observer_bytes + design.static_ram_bytes as usize,
         );
     }
     for (family, flash) in &all.family_flash_bytes {
-        table += &format!("| family `{family}` | (its members') | | (its members') | {flash} | | |\n");
+        table += &format!("| family `{family}` | (its members') | | | | | | | | {flash} | | |\n");
     }
     let readme_path = workspace_root().join("README.md");
     let readme = std::fs::read_to_string(&readme_path).map_err(|e| e.to_string())?;

@@ -1,0 +1,104 @@
+//! The last `N` samples, always readable as one contiguous array, oldest first.
+//!
+//! Every sample is stored twice, at slot `s` of two consecutive copies of an `N`-slot buffer, so the
+//! window `[next, next + N)` of the flattened `2N` slots is the last `N` samples in order wherever
+//! the write position `next` is. A push is two stores per value and an index update; nothing is
+//! shifted, and the dot products read the window at fixed offsets.
+
+use crate::Scalar;
+
+/// One sampling instant: the measured outputs and the applied inputs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sample<T, const NY: usize, const NU: usize> {
+    /// `y(k)`.
+    pub y: [T; NY],
+    /// `u(k)`.
+    pub u: [T; NU],
+}
+
+/// The last `N` samples.
+#[derive(Clone, Debug)]
+pub struct Window<T, const N: usize, const NY: usize, const NU: usize> {
+    copies: [[Sample<T, NY, NU>; N]; 2],
+    /// Slot of the next write, which is also the oldest sample of the window.
+    next: usize,
+    /// Samples stored since the last reset, up to `N`.
+    filled: usize,
+}
+
+impl<T: Scalar, const N: usize, const NY: usize, const NU: usize> Window<T, N, NY, NU> {
+    /// An empty window.
+    pub const fn new() -> Self {
+        let zero = Sample {
+            y: [T::ZERO; NY],
+            u: [T::ZERO; NU],
+        };
+        Window {
+            copies: [[zero; N]; 2],
+            next: 0,
+            filled: 0,
+        }
+    }
+
+    /// Stores `sample` as the newest, dropping the oldest once `N` are held.
+    #[inline(always)]
+    pub fn push(&mut self, sample: Sample<T, NY, NU>) {
+        let slot = self.next;
+        for copy in &mut self.copies {
+            // `next < N` always holds; `get_mut` keeps a panic path out of the firmware regardless.
+            if let Some(s) = copy.get_mut(slot) {
+                *s = sample;
+            }
+        }
+        self.next = if slot + 1 >= N { 0 } else { slot + 1 };
+        self.filled = if self.filled >= N { N } else { self.filled + 1 };
+    }
+
+    /// Forgets every sample.
+    pub fn clear(&mut self) {
+        self.next = 0;
+        self.filled = 0;
+    }
+
+    /// `true` once `N` samples are held.
+    pub fn is_full(&self) -> bool {
+        self.filled >= N
+    }
+
+    /// The last `N` samples, oldest first, or `None` before `N` have arrived.
+    #[inline(always)]
+    pub fn samples(&self) -> Option<&[Sample<T, NY, NU>; N]> {
+        if !self.is_full() {
+            return None;
+        }
+        let flat = self.copies.as_flattened();
+        flat.get(self.next..self.next + N)?.try_into().ok()
+    }
+}
+
+impl<T: Scalar, const N: usize, const NY: usize, const NU: usize> Default for Window<T, N, NY, NU> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn holds_the_last_n_samples_oldest_first_at_every_write_position() {
+        let mut window: Window<f64, 3, 1, 1> = Window::new();
+        for k in 0..10 {
+            window.push(Sample {
+                y: [k as f64],
+                u: [-(k as f64)],
+            });
+            let expected: Option<Vec<f64>> = (k >= 2).then(|| (k - 2..=k).map(|j| j as f64).collect());
+            let got = window.samples().map(|s| s.iter().map(|s| s.y[0]).collect::<Vec<_>>());
+            assert_eq!(got, expected, "k = {k}");
+        }
+        window.clear();
+        assert!(window.samples().is_none() && !window.is_full());
+    }
+}
