@@ -39,23 +39,21 @@ impl<T: Scalar> InverseTable<'_, T> {
         // `get` cannot fail for a non-empty table; an empty one (never emitted) gives r_min.
         let [a, b] = self.segments.get(k).copied().unwrap_or([self.r_min, T::ZERO]);
         let inside = a + b * t;
-        if !(t >= T::ZERO) {
-            Estimate {
-                value: self.r_min,
-                saturation: Saturation::Low,
-            }
-        } else if t > self.t_max {
-            Estimate {
-                value: self.r_max,
-                saturation: Saturation::High,
-            }
-        } else {
-            Estimate {
-                value: inside,
-                saturation: Saturation::Inside,
-            }
+        let (low, high) = (!(t >= T::ZERO), t > self.t_max);
+        // Selects rather than branches: the same instructions whatever t is.
+        let edge = select(low, self.r_min, self.r_max);
+        let edge_flag = select(low, Saturation::Low, Saturation::High);
+        Estimate {
+            value: select(low | high, edge, inside),
+            saturation: select(low | high, edge_flag, Saturation::Inside),
         }
     }
+}
+
+/// `if condition { a } else { b }`, asking for a conditional move rather than a branch.
+#[inline(always)]
+fn select<V>(condition: bool, a: V, b: V) -> V {
+    core::hint::select_unpredictable(condition, a, b)
 }
 
 #[cfg(test)]

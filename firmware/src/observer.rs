@@ -32,6 +32,13 @@ pub trait Design<T: Scalar, const N: usize, const NY: usize, const NU: usize, co
     fn estimate(window: &[Sample<T, NY, NU>; N]) -> [Estimate<T>; NT] {
         estimate_by_loops(&Self::MAPS, window)
     }
+
+    /// Whether a sample may enter the window: every value finite. The default loops; an override
+    /// must give the same answer.
+    #[inline(always)]
+    fn accepts(y: &[T; NY], u: &[T; NU]) -> bool {
+        all_finite(y, u)
+    }
 }
 
 /// Every map's estimate from a window (oldest first), summing `offset + Σ g_i z_i` in regressor order
@@ -58,10 +65,17 @@ pub fn estimate_by_loops<T: Scalar, const N: usize, const NY: usize, const NU: u
     })
 }
 
-/// `true` when every value is finite.
+/// `true` when every value is finite. Without early exit, so that the compiler can flatten it.
 #[inline(always)]
 pub(crate) fn all_finite<T: Scalar, const NY: usize, const NU: usize>(y: &[T; NY], u: &[T; NU]) -> bool {
-    y.iter().chain(u.iter()).all(|v| v.is_finite())
+    let mut finite = true;
+    for v in y {
+        finite &= v.is_finite();
+    }
+    for v in u {
+        finite &= v.is_finite();
+    }
+    finite
 }
 
 /// Observer of design `D`: `NT` targets from the last `N` samples of `NY` outputs and `NU` inputs.
@@ -110,7 +124,7 @@ impl<T: Scalar, D: Design<T, N, NY, NU, NT>, const N: usize, const NY: usize, co
     /// and nothing stored changes.
     #[inline]
     pub fn push(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
-        if all_finite(&y, &u) {
+        if D::accepts(&y, &u) {
             self.window.push(Sample { y, u });
             Ok(())
         } else {

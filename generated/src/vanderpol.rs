@@ -216,13 +216,19 @@ const _: () = assert!(SEGMENTS_X2.len() == 1 && MAP_X2.inverse.t_max == 1 as f32
 /// Every target's map, in [`TARGET_NAMES`] order.
 pub static MAPS: [TargetMap<'static, f32>; TARGETS] = <Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::MAPS;
 
-/// This design for [`firmware::Observer`]: its estimate is the dot products written out (the compiler
-/// does not unroll loops when optimising for size), in the order of [`firmware::estimate_by_loops`],
-/// so that both give the same bits.
+/// This design for [`firmware::Observer`]: its finite check and its dot products are written out (the
+/// compiler does not unroll loops when optimising for size), the sums in the order of
+/// [`firmware::estimate_by_loops`], so that both give the same bits.
 pub struct Design;
 
 impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
     const MAPS: [TargetMap<'static, f32>; TARGETS] = [MAP_X1, MAP_X2];
+
+    #[inline(always)]
+    fn accepts(y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> bool {
+        let _ = u;
+        y[0].is_finite()
+    }
 
     #[inline(always)]
     fn estimate(w: &[Sample<f32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<f32>; TARGETS] {

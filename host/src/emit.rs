@@ -104,6 +104,26 @@ struct TargetTables {
     dot: String,
 }
 
+/// `y[0].is_finite() & … & u[…].is_finite()`: every value, no early exit (`true` for none).
+fn finite_check(outputs: usize, inputs: usize) -> String {
+    let terms: Vec<String> = (0..outputs)
+        .map(|i| format!("y[{i}].is_finite()"))
+        .chain((0..inputs).map(|i| format!("u[{i}].is_finite()")))
+        .collect();
+    // Name what the check does not read, so that the emitted code has no unused-variable warning.
+    let unused = match (outputs, inputs) {
+        (0, 0) => "let _ = (y, u);\n        ",
+        (_, 0) => "let _ = u;\n        ",
+        (0, _) => "let _ = y;\n        ",
+        _ => "",
+    };
+    if terms.is_empty() {
+        format!("{unused}true")
+    } else {
+        format!("{unused}{}", terms.join(" & "))
+    }
+}
+
 /// `+ GAINS_<upper>[i] * w[…].y[…]` for every regressor entry, in regressor order, one per line: the
 /// window `w` is oldest first, so lag `l` is `w[N - 1 - l]`.
 fn dot_lines(upper: &str, horizon: usize, outputs: usize, inputs: usize) -> String {
@@ -142,6 +162,7 @@ struct DesignFile {
     output_list: String,
     input_list: String,
     regressor_len: usize,
+    finite_check: String,
     targets: Vec<TargetTables>,
     recorded_len: usize,
     recorded_y: String,
@@ -353,6 +374,7 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
         outputs,
         inputs: design.model.inputs.clone(),
         regressor_len: design.map.horizon * (design.model.outputs.len() + design.model.inputs.len()),
+        finite_check: finite_check(design.model.outputs.len(), design.model.inputs.len()),
         targets,
         recorded_len: result.scenario.measurements.len(),
         recorded_y: recorded_rows(

@@ -78,13 +78,18 @@ const _: () = assert!(SEGMENTS_{{ t.upper }}.len() == {{ t.segment_count }} && {
 /// Every target's map, in [`TARGET_NAMES`] order.
 pub static MAPS: [TargetMap<'static, f32>; TARGETS] = <Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::MAPS;
 
-/// This design for [`firmware::Observer`]: its estimate is the dot products written out (the compiler
-/// does not unroll loops when optimising for size), in the order of [`firmware::estimate_by_loops`],
-/// so that both give the same bits.
+/// This design for [`firmware::Observer`]: its finite check and its dot products are written out (the
+/// compiler does not unroll loops when optimising for size), the sums in the order of
+/// [`firmware::estimate_by_loops`], so that both give the same bits.
 pub struct Design;
 
 impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
     const MAPS: [TargetMap<'static, f32>; TARGETS] = [{% for t in targets %}{{ t.const_name }}{% if !loop.last %}, {% endif %}{% endfor %}];
+
+    #[inline(always)]
+    fn accepts(y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> bool {
+        {{ finite_check }}
+    }
 
     #[inline(always)]
     fn estimate(w: &[Sample<f32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<f32>; TARGETS] {

@@ -47,12 +47,13 @@ const PAINT: u32 = 0xA5A5_5A5A;
 
 type Estimates = Option<[Estimate<f32>; d::TARGETS]>;
 
-/// One sample: what a user's firmware does every period.
+/// One sample: what a user's firmware does every period. Not inlined, and its results are returned
+/// and printed, so nothing of `push` and `estimate` can be optimised away.
 #[inline(never)]
 fn step(observer: &mut d::Observer, y: &[f32; d::OUTPUTS], u: &[f32; d::INPUTS]) -> (bool, Estimates) {
     measure_start();
-    let accepted = core::hint::black_box(observer.push(*y, *u)).is_ok();
-    let estimates = core::hint::black_box(observer.estimate());
+    let accepted = observer.push(*y, *u).is_ok();
+    let estimates = observer.estimate();
     measure_end();
     (accepted, estimates)
 }
