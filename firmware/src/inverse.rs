@@ -71,7 +71,15 @@ mod tests {
 
     #[test]
     fn interpolates_the_chords_and_hits_the_knots() {
-        for (t, r) in [(0.0, 0.0), (1.0, 1.0), (2.0, 4.0), (3.0, 9.0), (0.5, 0.5), (1.5, 2.5), (2.25, 5.25)] {
+        for (t, r) in [
+            (0.0, 0.0),
+            (1.0, 1.0),
+            (2.0, 4.0),
+            (3.0, 9.0),
+            (0.5, 0.5),
+            (1.5, 2.5),
+            (2.25, 5.25),
+        ] {
             let e = SQUARE.evaluate(t);
             assert_eq!((e.value, e.saturation), (r, Saturation::Inside), "t = {t}");
         }
@@ -87,7 +95,14 @@ mod tests {
             (f64::INFINITY, 9.0, Saturation::High),
             (f64::MAX, 9.0, Saturation::High),
         ] {
-            assert_eq!(SQUARE.evaluate(t), Estimate { value: r, saturation: s }, "t = {t}");
+            assert_eq!(
+                SQUARE.evaluate(t),
+                Estimate {
+                    value: r,
+                    saturation: s
+                },
+                "t = {t}"
+            );
         }
     }
 

@@ -44,11 +44,11 @@ impl<T: Scalar, const N: usize, const NY: usize, const NU: usize> Window<T, N, N
     #[inline(always)]
     pub fn push(&mut self, sample: Sample<T, NY, NU>) {
         let slot = self.next;
-        for copy in &mut self.copies {
-            // `next < N` always holds; `get_mut` keeps a panic path out of the firmware regardless.
-            if let Some(s) = copy.get_mut(slot) {
-                *s = sample;
-            }
+        let [first, second] = &mut self.copies;
+        // `next < N` always holds; `get_mut` keeps a panic path out of the firmware regardless.
+        if let (Some(a), Some(b)) = (first.get_mut(slot), second.get_mut(slot)) {
+            *a = sample;
+            *b = sample;
         }
         self.next = if slot + 1 >= N { 0 } else { slot + 1 };
         self.filled = if self.filled >= N { N } else { self.filled + 1 };

@@ -45,6 +45,12 @@ pub enum EmitError {
         /// Where it failed.
         mismatch: crate::precision::F32Mismatch,
     },
+    /// The map has no table the chip could evaluate.
+    #[error("target `{target}`: Γ is so flat somewhere that a table of Γ⁻¹ with knots uniform in Lᵀ Z would need more than {max} segments; lower `map.beta` (or `map.nm`), or use `normalisation = \"intercept\"`", max = crate::inverse_table::MAX_SEGMENTS)]
+    NoTable {
+        /// The target.
+        target: String,
+    },
     /// The template failed to render.
     #[error("template: {0}")]
     Template(String),
@@ -308,6 +314,11 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
                 constant: const_name,
             });
         }
+        let (Some(table), Some(f32_tables)) = (map.table.as_ref(), crate::precision::F32Tables::new(map)) else {
+            return Err(EmitError::NoTable {
+                target: target.name.clone(),
+            });
+        };
         for data in [
             &result.validation,
             &DataSet {
@@ -315,13 +326,14 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
                 horizon: design.map.horizon,
             },
         ] {
-            crate::precision::check_f32(map, data).map_err(|mismatch| EmitError::NotReproducibleInF32 {
-                target: target.name.clone(),
-                mismatch,
+            crate::precision::check_f32(map, &f32_tables, data).map_err(|mismatch| {
+                EmitError::NotReproducibleInF32 {
+                    target: target.name.clone(),
+                    mismatch,
+                }
             })?;
         }
         let what = |field: &str| format!("target `{}` {field}", target.name);
-        let table = &map.table;
         let upper = target.name.to_uppercase();
         let segments = table
             .segments

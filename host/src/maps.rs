@@ -34,12 +34,15 @@ pub struct FittedMap {
     /// Largest target value on the learning windows.
     pub r_max: f64,
     /// The certified table of `Γ⁻¹` and the scaled gains: what the library estimate and the chip use.
-    pub table: InverseTable,
+    /// `None` when a table with knots uniform in `Lᵀ Z` would need more than
+    /// [`crate::inverse_table::MAX_SEGMENTS`] segments (a very flat stretch of `Γ`): such a map is
+    /// estimated by the exact bisection on the host and refused at emission.
+    pub table: Option<InverseTable>,
 }
 
 impl FittedMap {
     /// Assembles a map from the fitted coefficients (the derived fields are computed here) and
-    /// certifies its table; fails when `Γ` cannot be proven increasing or needs too many segments.
+    /// certifies its table; fails when `Γ` cannot be proven increasing.
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         target: String,
@@ -62,7 +65,11 @@ impl FittedMap {
             weights: &weights,
             odds_ratios: &odds_ratios,
         };
-        let table = InverseTable::certify(&exact, &gains, (r_min, r_max), RELATIVE_TOLERANCE)?;
+        let table = match InverseTable::certify(&exact, &gains, (r_min, r_max), RELATIVE_TOLERANCE) {
+            Ok(table) => Some(table),
+            Err(TableError::TooManySegments { .. }) => None,
+            Err(e) => return Err(e),
+        };
         Ok(FittedMap {
             target,
             normalisation,
@@ -88,18 +95,23 @@ impl FittedMap {
         }
     }
 
-    /// The firmware's view of this map, in `f64`: the scaled gains and the table.
-    pub fn as_firmware(&self) -> TargetMap<'_, f64> {
-        TargetMap {
-            gains: &self.table.gains,
-            offset: self.table.offset,
-            inverse: self.table.as_firmware(),
-        }
+    /// The firmware's view of this map, in `f64`: the scaled gains and the table (if it has one).
+    pub fn as_firmware(&self) -> Option<TargetMap<'_, f64>> {
+        let table = self.table.as_ref()?;
+        Some(TargetMap {
+            gains: &table.gains,
+            offset: table.offset,
+            inverse: table.as_firmware(),
+        })
     }
 
-    /// The library estimate `F(Z)`: the certified table, as on the chip.
+    /// The library estimate `F(Z)`: the certified table, as on the chip; the exact bisection for a
+    /// map without a table (which is never emitted).
     pub fn estimate(&self, regressor: &[f64]) -> Estimate<f64> {
-        self.as_firmware().estimate(regressor)
+        match self.as_firmware() {
+            Some(map) => map.estimate(regressor),
+            None => self.exact_estimate(regressor),
+        }
     }
 
     /// `r_min + (r_max - r_min) Γ⁻¹(Lᵀ Z)` by the exact bisection: the reference the table is proven

@@ -23,10 +23,11 @@ use crate::maps::FittedMap;
 /// The f32 unit roundoff `2⁻²⁴`.
 pub const U: f64 = 1.0 / 16_777_216.0;
 
-/// The bound above, and whether the saturation flag is decidable, for one window `z`.
-pub fn tolerance(map: &FittedMap, z: &[f64]) -> (f64, bool) {
-    let table = &map.table;
-    let t = map.as_firmware().project(z);
+/// The bound above, and whether the saturation flag is decidable, for one window `z`; `None` for a
+/// map without a table (which is never emitted).
+pub fn tolerance(map: &FittedMap, z: &[f64]) -> Option<(f64, bool)> {
+    let table = map.table.as_ref()?;
+    let t = map.as_firmware()?.project(z);
     let terms: f64 = table.offset.abs() + table.gains.iter().zip(z).map(|(g, z)| (g * z).abs()).sum::<f64>();
     let dt = (z.len() as f64 + 4.0) * U * terms;
     let last = table.segments.len() - 1;
@@ -39,7 +40,7 @@ pub fn tolerance(map: &FittedMap, z: &[f64]) -> (f64, bool) {
     let t_inside = t.clamp(0.0, table.segments.len() as f64);
     let tolerance = 2.0 * b * dt + 4.0 * U * (a + b * (t_inside + 1.0) + table.r_min.abs() + table.r_max.abs());
     let decidable = t.abs() > dt && (t - table.segments.len() as f64).abs() > dt;
-    (tolerance, decidable)
+    Some((tolerance, decidable))
 }
 
 /// The f32 tables of a map, exactly as `emit` prints them (every literal round-trips to these bits).
@@ -53,17 +54,17 @@ pub struct F32Tables {
 }
 
 impl F32Tables {
-    /// Rounds a fitted map's table to f32.
-    pub fn new(map: &FittedMap) -> Self {
-        let table = &map.table;
-        F32Tables {
+    /// Rounds a fitted map's table to f32 (`None` for a map without a table).
+    pub fn new(map: &FittedMap) -> Option<Self> {
+        let table = map.table.as_ref()?;
+        Some(F32Tables {
             gains: table.gains.iter().map(|&g| g as f32).collect(),
             offset: table.offset as f32,
             segments: table.segments.iter().map(|[a, b]| [*a as f32, *b as f32]).collect(),
             t_max: table.segments.len() as f32,
             r_min: table.r_min as f32,
             r_max: table.r_max as f32,
-        }
+        })
     }
 
     /// The firmware's view of the tables.
@@ -93,11 +94,10 @@ pub struct F32Mismatch {
     pub tolerance: f64,
 }
 
-/// Evaluates `map` in f32 (rounded tables, firmware code) and in f64 on every window of `data`;
+/// Evaluates `map` in f32 (its rounded `tables`, firmware code) and in f64 on every window of `data`;
 /// returns the largest `|difference| / tolerance`, or the first window beyond the bound, or whose
 /// decidable saturation flag differs.
-pub fn check_f32(map: &FittedMap, data: &DataSet) -> Result<f64, F32Mismatch> {
-    let tables = F32Tables::new(map);
+pub fn check_f32(map: &FittedMap, tables: &F32Tables, data: &DataSet) -> Result<f64, F32Mismatch> {
     let single = tables.as_firmware();
     let (mut z, mut z32) = (Vec::new(), Vec::new());
     let mut worst: f64 = 0.0;
@@ -106,7 +106,7 @@ pub fn check_f32(map: &FittedMap, data: &DataSet) -> Result<f64, F32Mismatch> {
         z32.clear();
         z32.extend(z.iter().map(|&v| v as f32));
         let (exact, rounded) = (map.estimate(&z), single.estimate(&z32));
-        let (tolerance, decidable) = tolerance(map, &z);
+        let (tolerance, decidable) = tolerance(map, &z).unwrap_or((0.0, true));
         let difference = (f64::from(rounded.value) - exact.value).abs();
         let flags_differ = decidable && exact.saturation != rounded.saturation;
         if !(difference <= tolerance) || flags_differ {

@@ -133,13 +133,13 @@ pub fn table(report: &Report<'_>) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "| target | RMSE learning | RMSE validation | max error validation | linear RMSE validation | ratio | saturated | QP status | iterations | active / constraints | collapsed |"
+        "| target | RMSE learning | RMSE validation | max error validation | linear RMSE validation | ratio | saturated | QP status | iterations | active / constraints | collapsed | Γ⁻¹ segments | proven table error |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     for t in &report.targets {
         let _ = writeln!(
             s,
-            "| {} | {:.4} | {:.4} | {:.4} | {:.4} | {:.3} | {:.1} % | {} | {} | {} / {} | {} |",
+            "| {} | {:.4} | {:.4} | {:.4} | {:.4} | {:.3} | {:.1} % | {} | {} | {} / {} | {} | {} | {} |",
             t.name,
             t.rmse_learning,
             t.rmse_validation,
@@ -151,7 +151,15 @@ pub fn table(report: &Report<'_>) -> String {
             t.qp.iterations,
             t.qp.active_constraints,
             t.qp.constraints,
-            if t.qp.collapsed { "yes" } else { "no" }
+            if t.qp.collapsed { "yes" } else { "no" },
+            t.fitted
+                .table
+                .as_ref()
+                .map_or("none (not emittable)".to_owned(), |t| t.segments.len().to_string()),
+            t.fitted
+                .table
+                .as_ref()
+                .map_or("—".to_owned(), |t| format!("{:.1e}", t.proven_bound))
         );
     }
     s
@@ -183,7 +191,9 @@ pub fn markdown(report: &Report<'_>) -> String {
         "\n*ratio*: validation RMSE of the map over that of the plain linear least-squares map `Lᵀ Z + c` on the same data \
          (below 1: the nonlinear map beats the floor). *max error validation* is the paper's empirical ε_x. \
          *saturated*: windows where Γ⁻¹ clamped the estimate to the learning range. *collapsed*: Γ is a straight \
-         line (≥ 90 % of the monotonicity constraints active). Full figures and the fitted coefficients: `report.json`.\n\n\
+         line (≥ 90 % of the monotonicity constraints active). *Γ⁻¹ segments*: the table the chip evaluates instead of \
+         inverting Γ; *proven table error*: its proven largest distance to the exact Γ⁻¹ (target units, at most 1e-4 of \
+         the learning range); every estimate in this report uses that table, as the chip does. Full figures and the fitted coefficients: `report.json`.\n\n\
          Figures (PNG and SVG): `measurements` (the scenario's measured outputs and their noise, paper Fig. 1/5), \
          `identification` (identified against true on the learning windows, and dΓ/dr, Fig. 2 left/Fig. 3), \
          `estimation` (the observer along the scenario, Fig. 2 right/Fig. 4).\n",

@@ -111,7 +111,14 @@ fn build(bin: &str, design: &str, target_dir: &Path) -> Result<PathBuf, String> 
         .args(["build", "--release", "--manifest-path", "tests/on-target/Cargo.toml"])
         .args(["--target", "thumbv7em-none-eabihf", "--bin", bin, "--target-dir"])
         .arg(target_dir)
-        .env(if bin == "probe" { "PROBE_DESIGN" } else { "ON_TARGET_DESIGN" }, design)
+        .env(
+            if bin == "probe" {
+                "PROBE_DESIGN"
+            } else {
+                "ON_TARGET_DESIGN"
+            },
+            design,
+        )
         .output()
         .map_err(|e| format!("cannot run cargo: {e}"))?;
     if !output.status.success() {
@@ -479,7 +486,8 @@ pub fn compare_with_library(name: &str, measured: &DesignMeasurement) -> Result<
         {
             let library = fitted.estimate(z);
             let value = f64::from(f32::from_bits(*bits));
-            let (tolerance, decidable) = crate::tolerance::tolerance(fitted, z);
+            let (tolerance, decidable) =
+                crate::tolerance::tolerance(fitted, z).ok_or_else(|| format!("{name}: target {t} has no table"))?;
             let difference = (value - library.value).abs();
             if difference > tolerance {
                 return Err(format!(

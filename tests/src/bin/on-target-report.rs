@@ -39,7 +39,11 @@ fn run() -> Result<String, String> {
         let steady = design.steady_instructions();
         let (min, median, max) = on_target::spread(&steady);
         let targets: Vec<&str> = spec.targets.iter().map(|t| t.name.as_str()).collect();
-        let segments: Vec<String> = result.targets.iter().map(|t| t.fit.map.table.segments.len().to_string()).collect();
+        let segments: Vec<String> = result
+            .targets
+            .iter()
+            .map(|t| t.fit.map.table.as_ref().map_or(0, |t| t.segments.len()).to_string())
+            .collect();
         let n_z = spec.map.horizon * (spec.model.outputs.len() + spec.model.inputs.len());
         table += &format!(
             "| `{name}` | {} | {} | {} | {min} / {median} / {max} | {} | {} | {} | {} | {} | {} | {largest:.1e} |\n",

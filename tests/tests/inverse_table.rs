@@ -1,0 +1,77 @@
+//! The certified tables of `Γ⁻¹` against the exact inverse (f64 bisection), on every shipped design:
+//! the proven bound holds on a million points per target, and the check bites on a table with too few
+//! segments.
+
+use host::inverse_table::{InverseTable, RELATIVE_TOLERANCE};
+use host::maps::FittedMap;
+use integration_tests::{build, shipped_specs};
+
+const POINTS: usize = 1_000_000;
+
+/// The largest `|table(v) - r(Γ⁻¹(v))|` over `POINTS + 1` values of `v` uniform in `[Γ(0), Γ(1)]`,
+/// the exact side by the f64 bisection, the table side by the firmware code the chip runs.
+fn dense_error(map: &FittedMap, table: &InverseTable) -> f64 {
+    let gamma = map.gamma();
+    let (v0, v1) = (gamma.value(0.0), gamma.value(1.0));
+    let scale = table.segments.len() as f64 / (v1 - v0);
+    let evaluator = table.as_firmware();
+    let span = map.r_max - map.r_min;
+    (0..=POINTS)
+        .map(|i| {
+            let v = v0 + (v1 - v0) * i as f64 / POINTS as f64;
+            let exact = map.r_min + span * gamma.inverse(v).eta;
+            (evaluator.evaluate((v - v0) * scale).value - exact).abs()
+        })
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn proven_bounds_hold_on_a_million_points_and_the_check_bites() {
+    for path in shipped_specs() {
+        let design = host::spec::load(&path).unwrap();
+        let result = build(&design);
+        for t in &result.targets {
+            let map = &t.fit.map;
+            let table = map.table.as_ref().expect("every shipped target has a table");
+            let span = map.r_max - map.r_min;
+            let name = format!("{} {}", design.name, map.target);
+            // The bisection resolves η to 2^-52 and f64 rounding of a + b t adds a few ulp.
+            let rounding = 1e-12 * (span + map.r_min.abs());
+            let error = dense_error(map, table);
+            assert!(
+                error <= table.proven_bound + rounding,
+                "{name}: dense error {error:e} above the proven bound {:e}",
+                table.proven_bound
+            );
+            assert!(table.proven_bound <= RELATIVE_TOLERANCE * span, "{name}");
+            println!(
+                "{name}: {} segments, proven {:.3e}, dense {:.3e} ({:.0} % of the bound)",
+                table.segments.len(),
+                table.proven_bound,
+                error,
+                100.0 * error / table.proven_bound.max(f64::MIN_POSITIVE)
+            );
+            // A table with a third of the segments: its own proven bound still holds, and the same
+            // check against the tolerance fails (a curved Γ only: a straight one is exact at any count).
+            if table.segments.len() >= 6 {
+                let small = InverseTable::with_segments(
+                    &map.gamma(),
+                    &map.gains,
+                    (map.r_min, map.r_max),
+                    table.segments.len() / 3,
+                )
+                .unwrap();
+                let small_error = dense_error(map, &small);
+                assert!(
+                    small_error <= small.proven_bound + rounding,
+                    "{name}: under-sized table"
+                );
+                assert!(
+                    small_error > RELATIVE_TOLERANCE * span,
+                    "{name}: a table of {} segments passed the tolerance ({small_error:e}): the check cannot fail",
+                    small.segments.len()
+                );
+            }
+        }
+    }
+}
