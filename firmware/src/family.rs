@@ -79,7 +79,7 @@ impl<'a, T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Design, InverseTable, TargetMap};
+    use crate::{Design, InverseTable, Knots, TargetMap};
 
     // Both members estimate y(k) itself (t = y(k), one segment), LOW on [0, 1], HIGH on [10, 11].
     struct Low;
@@ -88,6 +88,7 @@ mod tests {
             gains: &[1.0, 0.0],
             offset: 0.0,
             inverse: InverseTable {
+                knots: Knots::Uniform,
                 segments: &[[0.0, 1.0]],
                 t_max: 1.0,
                 r_min: 0.0,
@@ -101,6 +102,7 @@ mod tests {
             gains: &[1.0, 0.0],
             offset: 0.0,
             inverse: InverseTable {
+                knots: Knots::Uniform,
                 segments: &[[10.0, 1.0]],
                 t_max: 1.0,
                 r_min: 10.0,

@@ -31,8 +31,11 @@
 //! r = a_k + b_k t,  k = ⌊t⌋        (saturated, visibly, to r_min / r_max outside [0, K])
 //! ```
 //!
-//! a dot product, a float-to-int conversion and a multiply-add: no division and no loop. Generated
-//! designs ([`Design`]) write the dot products out as straight-line code; the [`Observer`] keeps the
+//! a dot product, a float-to-int conversion and a multiply-add: no division and no loop. Where `Γ` is so
+//! flat somewhere that uniform knots would be needed by the thousand, the host places the knots by the
+//! curvature of `Γ⁻¹` instead ([`Knots::Searched`]) and the segment is found by a binary search of
+//! fixed length (`⌈log₂ K⌉` selects, the same steps whatever `t` is). Generated designs ([`Design`])
+//! write the dot products (and the search steps) out as straight-line code; the [`Observer`] keeps the
 //! last `N` samples in a window that is always contiguous ([`window`]).
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
@@ -49,7 +52,7 @@ pub mod window;
 
 pub use family::{FamilyObserver, Member};
 pub use gamma::{Gamma, Inverse, Saturation};
-pub use inverse::InverseTable;
+pub use inverse::{search_halves, search_step, InverseTable, Knots};
 pub use map::{Estimate, TargetMap};
 pub use observer::{estimate_by_loops, Design, Observer, RejectedSample};
 pub use scalar::Scalar;

@@ -46,6 +46,7 @@ impl<T: Scalar> TargetMap<'_, T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::Knots;
 
     #[test]
     fn a_linear_map_is_exact_with_one_segment() {
@@ -56,6 +57,7 @@ mod tests {
             gains: &gains,
             offset: -0.5,
             inverse: InverseTable {
+                knots: Knots::Uniform,
                 segments: &[[-1.0, 3.0]],
                 t_max: 1.0,
                 r_min: -1.0,

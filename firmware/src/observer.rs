@@ -85,7 +85,7 @@ pub(crate) fn all_finite<T: Scalar, const NY: usize, const NU: usize>(y: &[T; NY
 /// provide `D` and a constructor; by hand it looks like this:
 ///
 /// ```
-/// use firmware::{Design, InverseTable, Observer, TargetMap};
+/// use firmware::{Design, InverseTable, Knots, Observer, TargetMap};
 ///
 /// // r = 10 (0.5 y(k) + 0.5 y(k-1)) on [0, 10]: Γ(η) = η, one segment (t = v, r = 10 t).
 /// struct Mean;
@@ -93,7 +93,7 @@ pub(crate) fn all_finite<T: Scalar, const NY: usize, const NU: usize>(y: &[T; NY
 ///     const MAPS: [TargetMap<'static, f32>; 1] = [TargetMap {
 ///         gains: &[0.5, 0.5],
 ///         offset: 0.0,
-///         inverse: InverseTable { segments: &[[0.0, 10.0]], t_max: 1.0, r_min: 0.0, r_max: 10.0 },
+///         inverse: InverseTable { knots: Knots::Uniform, segments: &[[0.0, 10.0]], t_max: 1.0, r_min: 0.0, r_max: 10.0 },
 ///     }];
 /// }
 /// let mut observer: Observer<f32, Mean, 2, 1, 0, 1> = Observer::new();
@@ -168,7 +168,7 @@ impl<T: core::fmt::Debug, D, const N: usize, const NY: usize, const NU: usize, c
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{InverseTable, Saturation};
+    use crate::{InverseTable, Knots, Saturation};
 
     // Two outputs and one input over a horizon of 3; t = offset + Lᵀ Z, r = 2 t² on [0, 2] in two
     // segments through t = 0, 1, 2 (chords of 2t²: r = 2t on [0, 1], r = -4 + 6t on [1, 2]).
@@ -179,6 +179,7 @@ mod tests {
             gains: &GAINS,
             offset: 1.0,
             inverse: InverseTable {
+                knots: Knots::Uniform,
                 segments: &[[0.0, 2.0], [-4.0, 6.0]],
                 t_max: 2.0,
                 r_min: 0.0,

@@ -9,8 +9,8 @@
 //!
 //! Each target is `r = table(t)`, `t = offset + Σ_i g_i z_i` over the regressor
 //! `z = (y(k), …, y(k-N+1), u(k), …, u(k-N+1))`: the fitted `Γ⁻¹(Lᵀ z)` with `Γ⁻¹` replaced by a
-//! piecewise-linear table whose distance to it is proven (see each map). [`Design`] writes the dot
-//! products out as straight-line code.
+//! piecewise-linear table whose distance to it is proven (see each map and [`firmware::Knots`]).
+//! [`Design`] writes the dot products out as straight-line code.
 //!
 //! ```
 //! let mut observer = generated::ecoli_x0_0p5::observer();
@@ -19,7 +19,7 @@
 //! assert!(observer.estimate().is_none()); // until HORIZON samples have arrived
 //! ```
 
-use firmware::{Estimate, InverseTable, Sample, TargetMap};
+use firmware::{Estimate, InverseTable, Knots, Sample, TargetMap};
 
 /// The design's name.
 pub const NAME: &str = "ecoli_x0_0p5";
@@ -158,6 +158,7 @@ pub const MAP_P: TargetMap<'static, f32> = TargetMap {
     gains: &GAINS_P,
     offset: 26.752401,
     inverse: InverseTable {
+        knots: Knots::Uniform,
         segments: &SEGMENTS_P,
         t_max: 88.0,
         r_min: 0.0,
@@ -165,7 +166,7 @@ pub const MAP_P: TargetMap<'static, f32> = TargetMap {
     },
 };
 
-const _: () = assert!(SEGMENTS_P.len() == 88 && MAP_P.inverse.t_max == 88 as f32);
+const _: () = assert!(SEGMENTS_P.len() == 88 && MAP_P.inverse.t_max == SEGMENTS_P.len() as f32);
 
 /// Gains `g_i` of `muX`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`.
 const GAINS_MUX: [f32; REGRESSOR_LEN] = [
@@ -192,6 +193,7 @@ pub const MAP_MUX: TargetMap<'static, f32> = TargetMap {
     gains: &GAINS_MUX,
     offset: 0.022176465,
     inverse: InverseTable {
+        knots: Knots::Uniform,
         segments: &SEGMENTS_MUX,
         t_max: 1.0,
         r_min: 0.0,
@@ -199,7 +201,7 @@ pub const MAP_MUX: TargetMap<'static, f32> = TargetMap {
     },
 };
 
-const _: () = assert!(SEGMENTS_MUX.len() == 1 && MAP_MUX.inverse.t_max == 1 as f32);
+const _: () = assert!(SEGMENTS_MUX.len() == 1 && MAP_MUX.inverse.t_max == SEGMENTS_MUX.len() as f32);
 
 /// Every target's map, in [`TARGET_NAMES`] order.
 pub static MAPS: [TargetMap<'static, f32>; TARGETS] = <Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::MAPS;

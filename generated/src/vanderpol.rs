@@ -9,8 +9,8 @@
 //!
 //! Each target is `r = table(t)`, `t = offset + Σ_i g_i z_i` over the regressor
 //! `z = (y(k), …, y(k-N+1), u(k), …, u(k-N+1))`: the fitted `Γ⁻¹(Lᵀ z)` with `Γ⁻¹` replaced by a
-//! piecewise-linear table whose distance to it is proven (see each map). [`Design`] writes the dot
-//! products out as straight-line code.
+//! piecewise-linear table whose distance to it is proven (see each map and [`firmware::Knots`]).
+//! [`Design`] writes the dot products out as straight-line code.
 //!
 //! ```
 //! let mut observer = generated::vanderpol::observer();
@@ -19,7 +19,7 @@
 //! assert!(observer.estimate().is_none()); // until HORIZON samples have arrived
 //! ```
 
-use firmware::{Estimate, InverseTable, Sample, TargetMap};
+use firmware::{Estimate, InverseTable, Knots, Sample, TargetMap};
 
 /// The design's name.
 pub const NAME: &str = "vanderpol";
@@ -166,6 +166,7 @@ pub const MAP_X1: TargetMap<'static, f32> = TargetMap {
     gains: &GAINS_X1,
     offset: 45.57301,
     inverse: InverseTable {
+        knots: Knots::Uniform,
         segments: &SEGMENTS_X1,
         t_max: 92.0,
         r_min: -2.411638,
@@ -173,7 +174,7 @@ pub const MAP_X1: TargetMap<'static, f32> = TargetMap {
     },
 };
 
-const _: () = assert!(SEGMENTS_X1.len() == 92 && MAP_X1.inverse.t_max == 92 as f32);
+const _: () = assert!(SEGMENTS_X1.len() == 92 && MAP_X1.inverse.t_max == SEGMENTS_X1.len() as f32);
 
 /// Gains `g_i` of `x2`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`.
 const GAINS_X2: [f32; REGRESSOR_LEN] = [
@@ -204,6 +205,7 @@ pub const MAP_X2: TargetMap<'static, f32> = TargetMap {
     gains: &GAINS_X2,
     offset: 0.49988478,
     inverse: InverseTable {
+        knots: Knots::Uniform,
         segments: &SEGMENTS_X2,
         t_max: 1.0,
         r_min: -4.6765766,
@@ -211,7 +213,7 @@ pub const MAP_X2: TargetMap<'static, f32> = TargetMap {
     },
 };
 
-const _: () = assert!(SEGMENTS_X2.len() == 1 && MAP_X2.inverse.t_max == 1 as f32);
+const _: () = assert!(SEGMENTS_X2.len() == 1 && MAP_X2.inverse.t_max == SEGMENTS_X2.len() as f32);
 
 /// Every target's map, in [`TARGET_NAMES`] order.
 pub static MAPS: [TargetMap<'static, f32>; TARGETS] = <Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::MAPS;

@@ -46,7 +46,7 @@ pub enum EmitError {
         mismatch: crate::precision::F32Mismatch,
     },
     /// The map has no table the chip could evaluate.
-    #[error("target `{target}`: Γ is so flat somewhere that a table of Γ⁻¹ with knots uniform in Lᵀ Z would need more than {max} segments; lower `map.beta` (or `map.nm`), or use `normalisation = \"intercept\"`", max = crate::inverse_table::MAX_SEGMENTS)]
+    #[error("target `{target}`: Γ is so flat somewhere that a certified table of Γ⁻¹ would need more than {max} segments; lower `map.beta` (or `map.nm`), or use `normalisation = \"intercept\"`", max = crate::inverse_table::MAX_SEGMENTS)]
     NoTable {
         /// The target.
         target: String,
@@ -102,6 +102,10 @@ struct TargetTables {
     segments: String,
     segment_count: usize,
     knot_count: usize,
+    /// The left knots `t_k` of a searched table (`None`: uniform knots).
+    starts: Option<String>,
+    /// The search's steps, written out (searched tables only).
+    search_steps: Option<String>,
     t_max: String,
     r_min: String,
     r_max: String,
@@ -146,6 +150,15 @@ fn dot_lines(upper: &str, horizon: usize, outputs: usize, inputs: usize) -> Stri
         }
     }
     lines.join("\n")
+}
+
+/// `let k = firmware::search_step(&STARTS_<upper>, t, k, half);` for every step of the search over
+/// `len` knots ([`firmware::search_halves`]).
+fn search_steps(upper: &str, len: usize) -> String {
+    firmware::search_halves(len)
+        .map(|half| format!("                let k = firmware::search_step(&STARTS_{upper}, t, k, {half});"))
+        .collect::<Vec<_>>()
+        .join("\n")
 }
 
 #[derive(Template)]
@@ -314,7 +327,7 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
                 constant: const_name,
             });
         }
-        let (Some(table), Some(f32_tables)) = (map.table.as_ref(), crate::precision::F32Tables::new(map)) else {
+        let Some(table) = map.table.as_ref() else {
             return Err(EmitError::NoTable {
                 target: target.name.clone(),
             });
@@ -326,11 +339,9 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
                 horizon: design.map.horizon,
             },
         ] {
-            crate::precision::check_f32(map, &f32_tables, data).map_err(|mismatch| {
-                EmitError::NotReproducibleInF32 {
-                    target: target.name.clone(),
-                    mismatch,
-                }
+            crate::precision::check_f32(table, data).map_err(|mismatch| EmitError::NotReproducibleInF32 {
+                target: target.name.clone(),
+                mismatch,
             })?;
         }
         let what = |field: &str| format!("target `{}` {field}", target.name);
@@ -351,6 +362,7 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
             name: target.name.clone(),
             const_name,
             dot: dot_lines(&upper, design.map.horizon, outputs.len(), design.model.inputs.len()),
+            search_steps: table.starts.as_ref().map(|starts| search_steps(&upper, starts.len())),
             upper,
             expr: comment_text(target.expr.text()),
             rmse: format!("{:.4}", t.validation.map.rmse),
@@ -361,7 +373,11 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
             segments: segments.join("\n"),
             segment_count: table.segments.len(),
             knot_count: table.segments.len() + 1,
-            t_max: f32_literal(&what("t_max"), table.segments.len() as f64)?,
+            starts: match &table.starts {
+                None => None,
+                Some(starts) => Some(literal_block(&what("starts"), starts, 4)?),
+            },
+            t_max: f32_literal(&what("t_max"), table.t_max())?,
             r_min: f32_literal(&what("r_min"), table.r_min)?,
             r_max: f32_literal(&what("r_max"), table.r_max)?,
             proven_bound: format!("{:.2e}", table.proven_bound),

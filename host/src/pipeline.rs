@@ -107,7 +107,7 @@ pub fn explain(design: &Design, index: usize, error: FitError) -> SpecError {
         FitError::Table(crate::inverse_table::TableError::TooManySegments { .. }) => design.error(
             "map.beta",
             problem,
-            "Γ is too flat somewhere for a table of Γ⁻¹ with uniform knots: lower `map.beta` (or `map.nm`) so that the basis bends less sharply",
+            "Γ is too flat somewhere for a certified table of Γ⁻¹: lower `map.beta` (or `map.nm`) so that the basis bends less sharply, or use `normalisation = \"intercept\"`",
         ),
         FitError::Table(_) | FitError::NotMonotone { .. } => design.error(
             "map.monotonicity_grid",

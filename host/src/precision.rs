@@ -2,51 +2,73 @@
 //! evaluation (the same table, the same code) on the same regressor.
 //!
 //! With `u = 2⁻²⁴` (f32 unit roundoff), `n_z` regressor entries and, per window, the library's
-//! `t = offset + Σ g_i z_i` and segment `k = ⌊t⌋`:
+//! `t = offset + Σ g_i z_i`, its segment `k` and the segment's origin `s` (`0` for uniform knots, the
+//! left knot `t_k` for searched ones, see [`firmware::Knots`]):
 //! * `t` in f32 from rounded gains, offset and samples: each product is off by at most `3u` of itself
 //!   (three roundings) and the `n_z` additions add `n_z u` of the running sums, so
-//!   `δt ≤ (n_z + 4) u (|offset| + Σ |g_i z_i|)`;
-//! * `r = a_k + b_k t`: `t` off by `δt` moves `r` by `|b| δt`, and where `t` is within `δt` of a knot the
-//!   f32 side may take the neighbouring segment, which the continuity of the table keeps within another
-//!   `|b| δt`; with `b` the largest slope of segments `k - 1 … k + 1`, `2 |b| δt`;
-//! * rounding `a_k`, `b_k`, the product and the sum adds at most `4 u (|a| + |b| (|t| + 1))`, and the
-//!   saturated values `r_min`, `r_max` are off by at most `u` of themselves.
+//!   `δt ≤ (n_z + 4) u (|offset| + Σ |g_i z_i|)`; a searched knot is rounded by at most `u |t_k|`, so
+//!   `t - s` is off by at most `δt + u |s|` before its own rounding;
+//! * `r = a_k + b_k (t - s)`: that moves `r` by `|b| (δt + u |s|)`, and where `t` is that close to a
+//!   knot the f32 side may take the neighbouring segment, which the continuity of the table keeps
+//!   within as much again; with `b` the largest slope of segments `k - 1 … k + 1`, `2 |b| (δt + u |s|)`;
+//! * rounding `a_k`, `b_k`, the difference, the product and the sum adds at most
+//!   `4 u (|a| + |b| (|t - s| + 1))`, and the saturated values `r_min`, `r_max` are off by at most `u`
+//!   of themselves.
 //!
-//! So `|r_f32 - r_f64| ≤ 2 |b| δt + 4 u (|a| + |b| (|t| + 1) + |r_min| + |r_max|)`. Saturation flags
-//! must agree except where `t` lies within `δt` of `0` or `K`, where either answer is right.
+//! So `|r_f32 - r_f64| ≤ 2 |b| (δt + u |s|) + 4 u (|a| + |b| (|t - s| + 1) + |r_min| + |r_max|)`.
+//! Saturation flags must agree except where `t` lies within `δt` of `0` or `t_max`, where either answer
+//! is right.
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(x <= y)` is deliberate: a NaN must fail the check.
 
+use firmware::{Knots, TargetMap};
+
 use crate::data::DataSet;
-use crate::maps::FittedMap;
+use crate::inverse_table::InverseTable;
 
 /// The f32 unit roundoff `2⁻²⁴`.
 pub const U: f64 = 1.0 / 16_777_216.0;
 
-/// The bound above, and whether the saturation flag is decidable, for one window `z`; `None` for a
-/// map without a table (which is never emitted).
-pub fn tolerance(map: &FittedMap, z: &[f64]) -> Option<(f64, bool)> {
-    let table = map.table.as_ref()?;
-    let t = map.as_firmware()?.project(z);
+/// The bound above, and whether the saturation flag is decidable, for one window `z`.
+pub fn tolerance(table: &InverseTable, z: &[f64]) -> (f64, bool) {
+    let t = f64_map(table).project(z);
     let terms: f64 = table.offset.abs() + table.gains.iter().zip(z).map(|(g, z)| (g * z).abs()).sum::<f64>();
     let dt = (z.len() as f64 + 4.0) * U * terms;
     let last = table.segments.len() - 1;
-    let k = (t.max(0.0) as usize).min(last);
+    let k = match &table.starts {
+        None => (t.max(0.0) as usize).min(last),
+        Some(starts) => starts.partition_point(|&s| s <= t).saturating_sub(1),
+    };
+    let origin = match table.starts {
+        None => 0.0,
+        Some(_) => table.start(k),
+    };
     let (mut a, mut b) = (0.0f64, 0.0f64);
     for segment in &table.segments[k.saturating_sub(1)..=(k + 1).min(last)] {
         a = a.max(segment[0].abs());
         b = b.max(segment[1].abs());
     }
-    let t_inside = t.clamp(0.0, table.segments.len() as f64);
-    let tolerance = 2.0 * b * dt + 4.0 * U * (a + b * (t_inside + 1.0) + table.r_min.abs() + table.r_max.abs());
-    let decidable = t.abs() > dt && (t - table.segments.len() as f64).abs() > dt;
-    Some((tolerance, decidable))
+    let t_inside = t.clamp(0.0, table.t_max());
+    let tolerance = 2.0 * b * (dt + U * origin.abs())
+        + 4.0 * U * (a + b * ((t_inside - origin).abs() + 1.0) + table.r_min.abs() + table.r_max.abs());
+    let decidable = t.abs() > dt && (t - table.t_max()).abs() > dt;
+    (tolerance, decidable)
+}
+
+/// The table's map in f64: what the library estimate runs.
+fn f64_map(table: &InverseTable) -> TargetMap<'_, f64> {
+    TargetMap {
+        gains: &table.gains,
+        offset: table.offset,
+        inverse: table.as_firmware(),
+    }
 }
 
 /// The f32 tables of a map, exactly as `emit` prints them (every literal round-trips to these bits).
 pub struct F32Tables {
     gains: Vec<f32>,
     offset: f32,
+    starts: Option<Vec<f32>>,
     segments: Vec<[f32; 2]>,
     t_max: f32,
     r_min: f32,
@@ -54,25 +76,30 @@ pub struct F32Tables {
 }
 
 impl F32Tables {
-    /// Rounds a fitted map's table to f32 (`None` for a map without a table).
-    pub fn new(map: &FittedMap) -> Option<Self> {
-        let table = map.table.as_ref()?;
-        Some(F32Tables {
-            gains: table.gains.iter().map(|&g| g as f32).collect(),
+    /// Rounds a table to f32.
+    pub fn new(table: &InverseTable) -> Self {
+        let round = |values: &[f64]| values.iter().map(|&v| v as f32).collect::<Vec<f32>>();
+        F32Tables {
+            gains: round(&table.gains),
             offset: table.offset as f32,
+            starts: table.starts.as_deref().map(round),
             segments: table.segments.iter().map(|[a, b]| [*a as f32, *b as f32]).collect(),
-            t_max: table.segments.len() as f32,
+            t_max: table.t_max() as f32,
             r_min: table.r_min as f32,
             r_max: table.r_max as f32,
-        })
+        }
     }
 
     /// The firmware's view of the tables.
-    pub fn as_firmware(&self) -> firmware::TargetMap<'_, f32> {
-        firmware::TargetMap {
+    pub fn as_firmware(&self) -> TargetMap<'_, f32> {
+        TargetMap {
             gains: &self.gains,
             offset: self.offset,
             inverse: firmware::InverseTable {
+                knots: match &self.starts {
+                    None => Knots::Uniform,
+                    Some(starts) => Knots::Searched(starts),
+                },
                 segments: &self.segments,
                 t_max: self.t_max,
                 r_min: self.r_min,
@@ -94,19 +121,20 @@ pub struct F32Mismatch {
     pub tolerance: f64,
 }
 
-/// Evaluates `map` in f32 (its rounded `tables`, firmware code) and in f64 on every window of `data`;
-/// returns the largest `|difference| / tolerance`, or the first window beyond the bound, or whose
-/// decidable saturation flag differs.
-pub fn check_f32(map: &FittedMap, tables: &F32Tables, data: &DataSet) -> Result<f64, F32Mismatch> {
-    let single = tables.as_firmware();
+/// Evaluates `table` in f32 (rounded to [`F32Tables`], firmware code) and in f64 on every window of
+/// `data`; returns the largest `|difference| / tolerance`, or the first window beyond the bound, or
+/// whose decidable saturation flag differs.
+pub fn check_f32(table: &InverseTable, data: &DataSet) -> Result<f64, F32Mismatch> {
+    let rounded_tables = F32Tables::new(table);
+    let (single, double) = (rounded_tables.as_firmware(), f64_map(table));
     let (mut z, mut z32) = (Vec::new(), Vec::new());
     let mut worst: f64 = 0.0;
     for window in data.windows() {
         data.regressor(window, &mut z);
         z32.clear();
         z32.extend(z.iter().map(|&v| v as f32));
-        let (exact, rounded) = (map.estimate(&z), single.estimate(&z32));
-        let (tolerance, decidable) = tolerance(map, &z).unwrap_or((0.0, true));
+        let (exact, rounded) = (double.estimate(&z), single.estimate(&z32));
+        let (tolerance, decidable) = tolerance(table, &z);
         let difference = (f64::from(rounded.value) - exact.value).abs();
         let flags_differ = decidable && exact.saturation != rounded.saturation;
         if !(difference <= tolerance) || flags_differ {

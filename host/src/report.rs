@@ -155,7 +155,11 @@ pub fn table(report: &Report<'_>) -> String {
             t.fitted
                 .table
                 .as_ref()
-                .map_or("none (not emittable)".to_owned(), |t| t.segments.len().to_string()),
+                .map_or("none (not emittable)".to_owned(), |t| format!(
+                    "{} {}",
+                    t.segments.len(),
+                    t.knots_kind()
+                )),
             t.fitted
                 .table
                 .as_ref()

@@ -9,8 +9,8 @@
 //!
 //! Each target is `r = table(t)`, `t = offset + Σ_i g_i z_i` over the regressor
 //! `z = (y(k), …, y(k-N+1), u(k), …, u(k-N+1))`: the fitted `Γ⁻¹(Lᵀ z)` with `Γ⁻¹` replaced by a
-//! piecewise-linear table whose distance to it is proven (see each map). [`Design`] writes the dot
-//! products out as straight-line code.
+//! piecewise-linear table whose distance to it is proven (see each map and [`firmware::Knots`]).
+//! [`Design`] writes the dot products out as straight-line code.
 //!
 //! ```
 //! let mut observer = generated::{{ name }}::observer();
@@ -19,7 +19,7 @@
 //! assert!(observer.estimate().is_none()); // until HORIZON samples have arrived
 //! ```
 
-use firmware::{Estimate, InverseTable, Sample, TargetMap};
+use firmware::{Estimate, InverseTable, Knots, Sample, TargetMap};
 
 /// The design's name.
 pub const NAME: &str = "{{ name }}";
@@ -51,7 +51,7 @@ const GAINS_{{ t.upper }}: [f32; REGRESSOR_LEN] = [
 {{ t.gains }}
 ];
 
-/// The {{ t.segment_count }} segments `(a_k, b_k)` of `{{ t.name }} = a_k + b_k t` on `t ∈ [k, k + 1]`.
+{% match t.starts %}{% when None %}/// The {{ t.segment_count }} segments `(a_k, b_k)` of `{{ t.name }} = a_k + b_k t` on `t ∈ [k, k + 1]`.
 #[rustfmt::skip]
 const SEGMENTS_{{ t.upper }}: [[f32; 2]; {{ t.segment_count }}] = [
 {{ t.segments }}
@@ -66,6 +66,7 @@ pub const {{ t.const_name }}: TargetMap<'static, f32> = TargetMap {
     gains: &GAINS_{{ t.upper }},
     offset: {{ t.offset }},
     inverse: InverseTable {
+        knots: Knots::Uniform,
         segments: &SEGMENTS_{{ t.upper }},
         t_max: {{ t.t_max }},
         r_min: {{ t.r_min }},
@@ -73,7 +74,39 @@ pub const {{ t.const_name }}: TargetMap<'static, f32> = TargetMap {
     },
 };
 
-const _: () = assert!(SEGMENTS_{{ t.upper }}.len() == {{ t.segment_count }} && {{ t.const_name }}.inverse.t_max == {{ t.segment_count }} as f32);
+const _: () = assert!(SEGMENTS_{{ t.upper }}.len() == {{ t.segment_count }} && {{ t.const_name }}.inverse.t_max == SEGMENTS_{{ t.upper }}.len() as f32);
+{%- when Some with (starts) %}/// The left knots `t_k` of the {{ t.segment_count }} segments of `{{ t.name }}`, increasing from 0 (the last segment ends at 1).
+#[rustfmt::skip]
+const STARTS_{{ t.upper }}: [f32; {{ t.segment_count }}] = [
+{{ starts }}
+];
+
+/// The {{ t.segment_count }} segments `(a_k, b_k)` of `{{ t.name }} = a_k + b_k (t - t_k)` on `[t_k, t_{k+1}]`.
+#[rustfmt::skip]
+const SEGMENTS_{{ t.upper }}: [[f32; 2]; {{ t.segment_count }}] = [
+{{ t.segments }}
+];
+
+/// `{{ t.name }} = {{ t.expr }}`: validation RMSE {{ t.rmse }}, max error {{ t.max_error }} (linear floor RMSE {{ t.linear_rmse }}).
+///
+/// `Γ⁻¹` is a table of {{ t.segment_count }} segments ({{ t.knot_count }} knots placed by the curvature of `Γ⁻¹`,
+/// found by a binary search of fixed length). Proven on the host from bounds of `Γ'` and `Γ''`:
+/// |table − Γ⁻¹| ≤ {{ t.proven_bound }} over the whole range [{{ t.r_min }}, {{ t.r_max }}] (exact arithmetic);
+/// largest error on 10⁶ dense points: {{ t.sampled_error }}.
+pub const {{ t.const_name }}: TargetMap<'static, f32> = TargetMap {
+    gains: &GAINS_{{ t.upper }},
+    offset: {{ t.offset }},
+    inverse: InverseTable {
+        knots: Knots::Searched(&STARTS_{{ t.upper }}),
+        segments: &SEGMENTS_{{ t.upper }},
+        t_max: {{ t.t_max }},
+        r_min: {{ t.r_min }},
+        r_max: {{ t.r_max }},
+    },
+};
+
+const _: () = assert!(STARTS_{{ t.upper }}.len() == SEGMENTS_{{ t.upper }}.len() && STARTS_{{ t.upper }}[0] == 0.0 && {{ t.const_name }}.inverse.t_max == 1.0);
+{%- endmatch %}
 {% endfor %}
 /// Every target's map, in [`TARGET_NAMES`] order.
 pub static MAPS: [TargetMap<'static, f32>; TARGETS] = <Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::MAPS;
@@ -95,10 +128,22 @@ impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
     fn estimate(w: &[Sample<f32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<f32>; TARGETS] {
         [
 {%- for t in targets %}
+{%- match t.search_steps %}
+{%- when None %}
             {{ t.const_name }}.inverse.evaluate(
                 {{ t.const_name }}.offset
 {{ t.dot }},
             ),
+{%- when Some with (steps) %}
+            {
+                let t = {{ t.const_name }}.offset
+{{ t.dot }};
+                // The binary search over the {{ t.segment_count }} knots, step by step (fixed steps, selects).
+                let k = 0;
+{{ steps }}
+                {{ t.const_name }}.inverse.evaluate_segment(t, k)
+            },
+{%- endmatch %}
 {%- endfor %}
         ]
     }

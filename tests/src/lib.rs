@@ -5,8 +5,14 @@ pub mod tolerance;
 
 use std::path::{Path, PathBuf};
 
+use host::inverse_table::InverseTable;
+use host::maps::FittedMap;
 use host::pipeline::{self, DesignResult};
 use host::spec::{self, Design};
+
+/// The spec of the test fixture whose tables have searched knots, relative to the workspace; its
+/// generated file sits beside it (`.rs`).
+pub const SEARCHED_FIXTURE_SPEC: &str = "tests/fixtures/vanderpol_beta7.toml";
 
 /// The folder of the specs shipped with the host.
 pub fn specs_folder() -> PathBuf {
@@ -45,6 +51,23 @@ pub fn shipped_specs() -> Vec<PathBuf> {
 /// Loads a spec given relative to the workspace (as generated files record it).
 pub fn load_relative(spec: &str) -> Design {
     spec::load(&workspace_root().join(spec)).expect("valid spec")
+}
+
+/// The largest `|table(v) - r(Γ⁻¹(v))|` of `map` over `points + 1` values of `v` uniform in
+/// `[Γ(0), Γ(1)]`, the exact side by the f64 bisection, the table side by the firmware code the chip runs.
+pub fn dense_error(map: &FittedMap, table: &InverseTable, points: usize) -> f64 {
+    let gamma = map.gamma();
+    let (v0, v1) = (gamma.value(0.0), gamma.value(1.0));
+    let scale = table.t_max() / (v1 - v0);
+    let evaluator = table.as_firmware();
+    let span = map.r_max - map.r_min;
+    (0..=points)
+        .map(|i| {
+            let v = v0 + (v1 - v0) * i as f64 / points as f64;
+            let exact = map.r_min + span * gamma.inverse(v).eta;
+            (evaluator.evaluate((v - v0) * scale).value - exact).abs()
+        })
+        .fold(0.0, f64::max)
 }
 
 /// Builds a design (data, fits, evaluation) without progress output.

@@ -486,8 +486,11 @@ pub fn compare_with_library(name: &str, measured: &DesignMeasurement) -> Result<
         {
             let library = fitted.estimate(z);
             let value = f64::from(f32::from_bits(*bits));
-            let (tolerance, decidable) =
-                crate::tolerance::tolerance(fitted, z).ok_or_else(|| format!("{name}: target {t} has no table"))?;
+            let table = fitted
+                .table
+                .as_ref()
+                .ok_or_else(|| format!("{name}: target {t} has no table"))?;
+            let (tolerance, decidable) = crate::tolerance::tolerance(table, z);
             let difference = (value - library.value).abs();
             if difference > tolerance {
                 return Err(format!(

@@ -16,8 +16,11 @@ struct Comparison {
 }
 
 macro_rules! compare_design {
-    ($name:ident) => {{
-        use generated::$name as tables;
+    ($name:ident) => {
+        compare_design!(generated::$name)
+    };
+    ($path:path) => {{
+        use $path as tables;
         let design = load_relative(tables::SPEC);
         assert_eq!(design.name, tables::NAME);
         let result = build(&design);
@@ -40,7 +43,7 @@ macro_rules! compare_design {
                     data.regressor(Window { run: r, end: k }, &mut z);
                     for (t, (estimate, map)) in estimates.iter().zip(&maps).enumerate() {
                         let library = map.estimate(&z);
-                        let (tolerance, decidable) = tolerance(map, &z).expect("an emitted map has a table");
+                        let (tolerance, decidable) = tolerance(map.table.as_ref().expect("an emitted map has a table"), &z);
                         let difference = (f64::from(estimate.value) - library.value).abs();
                         assert!(
                             difference <= tolerance,
@@ -69,4 +72,15 @@ macro_rules! compare_design {
 #[test]
 fn generated_observers_agree_with_the_library() {
     generated::for_each_design!(compare_design);
+}
+
+/// The fixture whose tables have searched knots (see `integration_tests::SEARCHED_FIXTURE_SPEC`).
+#[rustfmt::skip]
+#[path = "../fixtures/vanderpol_beta7.rs"]
+#[allow(dead_code)]
+mod vanderpol_beta7;
+
+#[test]
+fn searched_knot_tables_agree_with_the_library() {
+    compare_design!(crate::vanderpol_beta7);
 }

@@ -3,27 +3,9 @@
 //! segments.
 
 use host::inverse_table::{InverseTable, RELATIVE_TOLERANCE};
-use host::maps::FittedMap;
-use integration_tests::{build, shipped_specs};
+use integration_tests::{build, dense_error, shipped_specs};
 
 const POINTS: usize = 1_000_000;
-
-/// The largest `|table(v) - r(Γ⁻¹(v))|` over `POINTS + 1` values of `v` uniform in `[Γ(0), Γ(1)]`,
-/// the exact side by the f64 bisection, the table side by the firmware code the chip runs.
-fn dense_error(map: &FittedMap, table: &InverseTable) -> f64 {
-    let gamma = map.gamma();
-    let (v0, v1) = (gamma.value(0.0), gamma.value(1.0));
-    let scale = table.segments.len() as f64 / (v1 - v0);
-    let evaluator = table.as_firmware();
-    let span = map.r_max - map.r_min;
-    (0..=POINTS)
-        .map(|i| {
-            let v = v0 + (v1 - v0) * i as f64 / POINTS as f64;
-            let exact = map.r_min + span * gamma.inverse(v).eta;
-            (evaluator.evaluate((v - v0) * scale).value - exact).abs()
-        })
-        .fold(0.0, f64::max)
-}
 
 #[test]
 fn proven_bounds_hold_on_a_million_points_and_the_check_bites() {
@@ -37,7 +19,7 @@ fn proven_bounds_hold_on_a_million_points_and_the_check_bites() {
             let name = format!("{} {}", design.name, map.target);
             // The bisection resolves η to 2^-52 and f64 rounding of a + b t adds a few ulp.
             let rounding = 1e-12 * (span + map.r_min.abs());
-            let error = dense_error(map, table);
+            let error = dense_error(map, table, POINTS);
             assert!(
                 error <= table.proven_bound + rounding,
                 "{name}: dense error {error:e} above the proven bound {:e}",
@@ -61,7 +43,7 @@ fn proven_bounds_hold_on_a_million_points_and_the_check_bites() {
                     table.segments.len() / 3,
                 )
                 .unwrap();
-                let small_error = dense_error(map, &small);
+                let small_error = dense_error(map, &small, POINTS);
                 assert!(
                     small_error <= small.proven_bound + rounding,
                     "{name}: under-sized table"

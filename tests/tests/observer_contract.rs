@@ -22,9 +22,12 @@ fn hostile_f32() -> impl Strategy<Value = f32> {
 
 macro_rules! contract {
     ($name:ident) => {
+        contract!($name, generated::$name);
+    };
+    ($name:ident, $path:path) => {
         mod $name {
             use super::*;
-            use generated::$name as d;
+            use $path as d;
 
             proptest! {
                 #![proptest_config(ProptestConfig::with_cases(256))]
@@ -100,3 +103,10 @@ macro_rules! contract {
 }
 
 generated::for_each_design!(contract);
+
+/// The fixture whose tables have searched knots (see `integration_tests::SEARCHED_FIXTURE_SPEC`).
+#[rustfmt::skip]
+#[path = "../fixtures/vanderpol_beta7.rs"]
+#[allow(dead_code)]
+mod vanderpol_beta7_tables;
+contract!(vanderpol_beta7, crate::vanderpol_beta7_tables);

@@ -42,7 +42,12 @@ fn run() -> Result<String, String> {
         let segments: Vec<String> = result
             .targets
             .iter()
-            .map(|t| t.fit.map.table.as_ref().map_or(0, |t| t.segments.len()).to_string())
+            .map(|t| {
+                t.fit.map.table.as_ref().map_or("none".to_owned(), |t| match t.starts {
+                    None => t.segments.len().to_string(),
+                    Some(_) => format!("{} searched", t.segments.len()),
+                })
+            })
             .collect();
         let n_z = spec.map.horizon * (spec.model.outputs.len() + spec.model.inputs.len());
         table += &format!(
