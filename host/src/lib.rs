@@ -9,20 +9,8 @@
 
 pub mod data;
 pub mod emit;
-pub mod evaluate;
-pub mod expr;
-pub mod identify;
-pub mod inverse_table;
-pub mod maps;
-pub mod model;
-pub mod monotonicity;
+pub mod fit;
+pub mod generate;
 pub mod output;
-pub mod pipeline;
-pub mod plots;
-pub mod precision;
-pub mod qp;
-pub mod recording;
 pub mod report;
-pub mod simulate;
 pub mod spec;
-pub mod streaming_qr;

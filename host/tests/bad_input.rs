@@ -4,8 +4,8 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use host::identify::FitError;
-use host::qp::{self, Problem};
+use host::fit::identify::FitError;
+use host::fit::qp::{self, Problem};
 use host::spec::{self, SpecError};
 use nalgebra::DMatrix;
 
@@ -136,7 +136,7 @@ fn infeasible_qp() {
     };
     let error = qp::solve(&problem).unwrap_err();
     let design = spec::parse(Path::new("bad.toml"), EXAMPLE).unwrap();
-    let e = host::pipeline::explain(&design, 0, FitError::Qp(error));
+    let e = host::fit::explain(&design, 0, FitError::Qp(error));
     assert_names(&e, "map", "map.beta");
     assert!(e.problem.contains("infeasible") && e.problem.contains("`x1`"), "{e}");
 }
@@ -213,6 +213,6 @@ fn constant_input_is_blamed_on_its_profile() {
         1,
     );
     let design = spec::parse(Path::new("bad.toml"), &text).unwrap();
-    let e = host::pipeline::run(&design, &indicatif::ProgressBar::hidden()).expect_err("must be refused");
+    let e = host::fit::run(&design, &indicatif::ProgressBar::hidden()).expect_err("must be refused");
     assert_names(&e, "learning.inputs.u", "min < max");
 }

@@ -60,7 +60,7 @@ fn paper_scenario_round_trip_matches_the_library() {
     }
     // From then on, the library estimate on the same window, to the last bit.
     let design = host::spec::load(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/vanderpol.toml"))).unwrap();
-    let result = host::pipeline::run(&design, &indicatif::ProgressBar::hidden()).unwrap();
+    let result = host::fit::run(&design, &indicatif::ProgressBar::hidden()).unwrap();
     let y: Vec<f64> = recorded[1..].iter().map(|r| r[3].parse().unwrap()).collect();
     let mut errors = [0.0f64; 2];
     for k in 9..y.len() {

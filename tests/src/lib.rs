@@ -3,11 +3,13 @@
 pub mod on_target;
 pub mod tolerance;
 
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex, OnceLock};
 
-use host::inverse_table::InverseTable;
-use host::maps::FittedMap;
-use host::pipeline::{self, DesignResult};
+use host::fit::inverse_table::InverseTable;
+use host::fit::maps::FittedMap;
+use host::fit::{self, DesignResult};
 use host::spec::{self, Design};
 
 /// The spec of the test fixture whose tables have searched knots, relative to the workspace; its
@@ -34,18 +36,12 @@ pub fn design(name: &str, text: &str) -> Design {
 
 /// The workspace root.
 pub fn workspace_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+    host::generate::workspace_root()
 }
 
-/// Every shipped spec file, sorted.
+/// Every shipped spec file, sorted (what `gen` runs by default).
 pub fn shipped_specs() -> Vec<PathBuf> {
-    let mut specs: Vec<PathBuf> = std::fs::read_dir(specs_folder())
-        .expect("host/specs")
-        .map(|e| e.expect("entry").path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-        .collect();
-    specs.sort();
-    specs
+    host::generate::shipped_specs().expect("host/specs")
 }
 
 /// Loads a spec given relative to the workspace (as generated files record it).
@@ -70,7 +66,23 @@ pub fn dense_error(map: &FittedMap, table: &InverseTable, points: usize) -> f64 
         .fold(0.0, f64::max)
 }
 
-/// Builds a design (data, fits, evaluation) without progress output.
-pub fn build(design: &Design) -> DesignResult {
-    pipeline::run(design, &indicatif::ProgressBar::hidden()).expect("the design builds")
+/// Builds a design (data, fits, evaluation) without progress output, once per spec text and test
+/// binary: the fit is deterministic, and most tests read the same few designs.
+pub fn build(design: &Design) -> Arc<DesignResult> {
+    type Cell = Arc<OnceLock<Arc<DesignResult>>>;
+    static BUILDS: OnceLock<Mutex<HashMap<String, Cell>>> = OnceLock::new();
+    let key = format!("{} {}", design.name, design.spec_sha256);
+    let cell: Cell = {
+        let mut builds = BUILDS
+            .get_or_init(Default::default)
+            .lock()
+            .expect("no test panicked holding it");
+        builds.entry(key).or_default().clone()
+    };
+    cell.get_or_init(|| Arc::new(build_fresh(design))).clone()
+}
+
+/// Builds a design without the cache (to show that a build is deterministic).
+pub fn build_fresh(design: &Design) -> DesignResult {
+    fit::run(design, &indicatif::ProgressBar::hidden()).expect("the design builds")
 }

@@ -1,7 +1,7 @@
 //! Paper Example 1 (Van der Pol) end to end: the paper's set-up, the accuracy the product promises,
 //! and the properties of the two normalisations.
 
-use host::inverse_table::{InverseTable, RELATIVE_TOLERANCE};
+use host::fit::inverse_table::{InverseTable, RELATIVE_TOLERANCE};
 use integration_tests::{build, dense_error, design, load_relative, spec_text, SEARCHED_FIXTURE_SPEC};
 use nalgebra::{DMatrix, DVector};
 
@@ -125,7 +125,7 @@ fn steep_bases_keep_gamma_exact_and_get_a_certified_searched_table() {
             map.target,
             table.proven_bound
         );
-        let worst = host::precision::check_f32(table, &result.validation).unwrap();
+        let worst = host::emit::precision::check_f32(table, &result.validation).unwrap();
         assert!(worst <= 1.0, "{worst}");
         // A table placed for a 30× looser tolerance keeps its own bound but fails ours: the check bites
         // (on a target whose error is near the tolerance; x2's Γ is almost straight, its bound loose).

@@ -5,7 +5,7 @@
 //! The tolerance is derived in `integration_tests::tolerance`.
 
 use host::data::{DataSet, Window};
-use host::maps::FittedMap;
+use host::fit::maps::FittedMap;
 use integration_tests::tolerance::tolerance;
 use integration_tests::{build, load_relative};
 

@@ -2,7 +2,7 @@
 //! the proven bound holds on a million points per target, and the check bites on a table with too few
 //! segments.
 
-use host::inverse_table::{InverseTable, RELATIVE_TOLERANCE};
+use host::fit::inverse_table::{InverseTable, RELATIVE_TOLERANCE};
 use integration_tests::{build, dense_error, shipped_specs};
 
 const POINTS: usize = 1_000_000;

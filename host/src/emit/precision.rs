@@ -24,7 +24,7 @@
 use firmware::{Knots, TargetMap};
 
 use crate::data::DataSet;
-use crate::inverse_table::InverseTable;
+use crate::fit::inverse_table::InverseTable;
 
 /// The f32 unit roundoff `2⁻²⁴`.
 pub const U: f64 = 1.0 / 16_777_216.0;

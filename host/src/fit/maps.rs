@@ -5,7 +5,7 @@
 use firmware::{Estimate, Gamma, Saturation, TargetMap};
 use serde::Serialize;
 
-use crate::inverse_table::{InverseTable, TableError, RELATIVE_TOLERANCE};
+use crate::fit::inverse_table::{InverseTable, TableError, RELATIVE_TOLERANCE};
 use crate::spec::Normalisation;
 
 /// `r = r_min + (r_max - r_min) Γ⁻¹(Lᵀ Z)` for one target.
@@ -35,7 +35,7 @@ pub struct FittedMap {
     pub r_max: f64,
     /// The certified table of `Γ⁻¹` and the scaled gains: what the library estimate and the chip use.
     /// `None` when a table with knots uniform in `Lᵀ Z` would need more than
-    /// [`crate::inverse_table::MAX_SEGMENTS`] segments (a very flat stretch of `Γ`): such a map is
+    /// [`crate::fit::inverse_table::MAX_SEGMENTS`] segments (a very flat stretch of `Γ`): such a map is
     /// estimated by the exact bisection on the host and refused at emission.
     pub table: Option<InverseTable>,
 }

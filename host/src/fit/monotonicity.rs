@@ -2,7 +2,7 @@
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(x > y)` is deliberate: a NaN must fail the check.
 
-use crate::identify::FitError;
+use crate::fit::identify::FitError;
 
 /// Chebyshev–Lobatto points on `[0, 1]`: clustered at both ends, where the steepest basis functions
 /// bend (a uniform grid lets `Γ` turn non-monotone between points once `β ≥ 2`).

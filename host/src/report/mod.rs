@@ -1,16 +1,18 @@
 //! The report of a design: `report.json` (everything, machine-readable), `report.md` (one table a
 //! person reads) and the one-screen summary `gen` prints.
 
+pub mod plots;
+
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
-use crate::evaluate::Evaluation;
-use crate::identify::Diagnostics;
-use crate::maps::FittedMap;
+use crate::fit::evaluate::Evaluation;
+use crate::fit::identify::Diagnostics;
+use crate::fit::maps::FittedMap;
+use crate::fit::DesignResult;
 use crate::output::write_atomically;
-use crate::pipeline::DesignResult;
 use crate::spec::{Design, MapSettings};
 
 /// `report.json`.

@@ -6,11 +6,14 @@
 //! and all outputs of one instant together, `Z(k) = (y(k), …, y(k-N+1), u(k), …, u(k-N+1))`.
 //! Noise is added to the outputs only; targets are noise-free functions of the current state.
 
+pub mod recording;
+pub mod simulate;
+
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, Normal};
 
-use crate::simulate::{BlowUp, Integrator};
+use crate::data::simulate::{BlowUp, Integrator};
 use crate::spec::{Axis, Design, InputProfile, SpecError};
 
 /// One simulated run.

@@ -3,7 +3,7 @@
 use serde::Serialize;
 
 use crate::data::DataSet;
-use crate::identify::Fit;
+use crate::fit::identify::Fit;
 
 /// Errors of one estimator over every window of a data set.
 #[derive(Clone, Copy, Debug, Serialize)]

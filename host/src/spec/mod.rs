@@ -3,14 +3,17 @@
 //! [`load`] parses it (serde, unknown fields rejected) and validates every field into a [`Design`];
 //! any problem becomes a [`SpecError`] naming the file, the field and what to change.
 
+pub mod expr;
+pub mod model;
+
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
 use sha2::Digest;
 
-use crate::expr::Expression;
-use crate::model::{Model, ModelText};
+use crate::spec::expr::Expression;
+use crate::spec::model::{Model, ModelText};
 
 /// A problem tied to one field of one spec file (also used for problems found while running it).
 #[derive(Debug, thiserror::Error, PartialEq)]

@@ -1,6 +1,6 @@
 //! Discretisation of `ẋ = f(x, u)` by classical RK4, the input held constant over each sample period.
 
-use crate::model::Model;
+use crate::spec::model::Model;
 
 /// The first non-finite state of a simulated run.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -87,7 +87,7 @@ impl<'a> Integrator<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::ModelText;
+    use crate::spec::model::ModelText;
 
     fn model(derivatives: &[&str]) -> Model {
         let states: Vec<String> = (1..=derivatives.len()).map(|i| format!("x{i}")).collect();

@@ -30,7 +30,7 @@
 //! The certificate of a table is, per segment, `h_k²/8 · sup|Γ''|/Γ'³` plus the error of its knots
 //! (bisection to `2⁻⁵²` and the rounding of `Γ` there, over the lower bound of `Γ'`), in exact
 //! arithmetic; its maximum, times `r_max - r_min`, is the `proven_bound`. The f32 evaluation on the
-//! chip adds rounding, bounded separately ([`crate::precision`]).
+//! chip adds rounding, bounded separately ([`crate::emit::precision`]).
 //!
 //! # What is sampled
 //!

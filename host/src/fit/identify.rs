@@ -40,11 +40,11 @@ use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
 use crate::data::DataSet;
-use crate::maps::{FittedMap, LinearMap};
-use crate::monotonicity::{check_grid, check_strictly_increasing, monotonicity_grid};
-use crate::qp::{self, Problem, QpError};
+use crate::fit::maps::{FittedMap, LinearMap};
+use crate::fit::monotonicity::{check_grid, check_strictly_increasing, monotonicity_grid};
+use crate::fit::qp::{self, Problem, QpError};
+use crate::fit::streaming_qr::StreamingQr;
 use crate::spec::{MapSettings, Normalisation};
-use crate::streaming_qr::StreamingQr;
 
 /// Relative floor of the whitening scales `σ_i` (step 3 above). Directions of `μ` the data barely
 /// see (`s_i` below the floor) keep a Hessian entry `(s_i/σ_i)² < 1` instead of blowing their
@@ -82,7 +82,7 @@ pub enum FitError {
     Qp(#[from] QpError),
     /// The table of `Γ⁻¹` could not be certified.
     #[error("the inverse table: {0}")]
-    Table(#[from] crate::inverse_table::TableError),
+    Table(#[from] crate::fit::inverse_table::TableError),
     /// After refinement `Γ` is still not strictly increasing somewhere.
     #[error("Γ is not strictly increasing: Γ'({eta}) = {slope}")]
     NotMonotone {

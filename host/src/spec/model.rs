@@ -1,6 +1,6 @@
 //! A plant model `ẋ = f(x, u)`, `y = h(x, u)` made of compiled expressions.
 
-use crate::expr::{ExprError, Expression};
+use crate::spec::expr::{ExprError, Expression};
 
 /// A helper definition (`mu = mu_m*S/(k_s + S)`), usable by every later expression.
 #[derive(Clone, Debug)]

@@ -1,12 +1,20 @@
 //! One design end to end: learning and validation data, a fit per target, its evaluation.
 
+pub mod evaluate;
+pub mod identify;
+pub mod inverse_table;
+pub mod maps;
+pub mod monotonicity;
+pub mod qp;
+pub mod streaming_qr;
+
 use indicatif::ProgressBar;
 
 use crate::data::{self, DataSet, Run};
-use crate::evaluate::{evaluate, Evaluation};
-use crate::identify::{self, Fit, FitError};
-use crate::qp::QpError;
 use crate::spec::{Design, SpecError};
+use evaluate::{evaluate, Evaluation};
+use identify::{Fit, FitError};
+use qp::QpError;
 
 /// A fitted and judged target.
 #[derive(Clone, Debug)]
@@ -104,7 +112,7 @@ pub fn explain(design: &Design, index: usize, error: FitError) -> SpecError {
             problem,
             "the solver lost accuracy on a nearly degenerate basis: lower `map.beta` or `map.nm`",
         ),
-        FitError::Table(crate::inverse_table::TableError::TooManySegments { .. }) => design.error(
+        FitError::Table(crate::fit::inverse_table::TableError::TooManySegments { .. }) => design.error(
             "map.beta",
             problem,
             "Γ is too flat somewhere for a certified table of Γ⁻¹: lower `map.beta` (or `map.nm`) so that the basis bends less sharply, or use `normalisation = \"intercept\"`",

@@ -2,22 +2,27 @@
 //!
 //! Each design becomes `generated/src/<design>.rs`: a provenance header, constant `f32` tables and a
 //! `const fn` constructor, written only once the f32 tables have been checked against the f64 map on
-//! every validation window and the scenario ([`crate::precision`]); `generated/src/lib.rs` declares
+//! every validation window and the scenario ([`crate::emit::precision`]); `generated/src/lib.rs` declares
 //! every design file present. Every literal is
 //! printed so that it parses back to the same `f32` bits, non-finite values are refused, and nothing in
 //! the output depends on the machine, the time or the way `gen` was invoked: regeneration is byte for
 //! byte.
+
+pub mod families;
+pub mod precision;
+
+pub use families::{families, FamilyError, FamilyModule};
 
 use std::path::Path;
 
 use askama::Template;
 
 use crate::data::DataSet;
-use crate::pipeline::DesignResult;
+use crate::fit::DesignResult;
 use crate::spec::Design;
 
 /// Why a design cannot be emitted.
-#[derive(Debug, thiserror::Error, PartialEq)]
+#[derive(Debug, thiserror::Error)]
 pub enum EmitError {
     /// A coefficient is NaN, infinite, or beyond the range of `f32`.
     #[error("{what} = {value} cannot be stored as a finite f32")]
@@ -37,23 +42,23 @@ pub enum EmitError {
         /// The constant both map to.
         constant: String,
     },
-    /// Rounded to f32, the tables do not reproduce the f64 map (see [`crate::precision`]).
+    /// Rounded to f32, the tables do not reproduce the f64 map (see [`crate::emit::precision`]).
     #[error("target `{target}`: {mismatch}; lower `map.beta` or `map.nm`")]
     NotReproducibleInF32 {
         /// The target.
         target: String,
         /// Where it failed.
-        mismatch: crate::precision::F32Mismatch,
+        mismatch: crate::emit::precision::F32Mismatch,
     },
     /// The map has no table the chip could evaluate.
-    #[error("target `{target}`: Γ is so flat somewhere that a certified table of Γ⁻¹ would need more than {max} segments; lower `map.beta` (or `map.nm`), or use `normalisation = \"intercept\"`", max = crate::inverse_table::MAX_SEGMENTS)]
+    #[error("target `{target}`: Γ is so flat somewhere that a certified table of Γ⁻¹ would need more than {max} segments; lower `map.beta` (or `map.nm`), or use `normalisation = \"intercept\"`", max = crate::fit::inverse_table::MAX_SEGMENTS)]
     NoTable {
         /// The target.
         target: String,
     },
     /// The template failed to render.
     #[error("template: {0}")]
-    Template(String),
+    Template(#[from] askama::Error),
 }
 
 /// The `f32` nearest `value`, printed so that it parses back to the same bits.
@@ -231,66 +236,6 @@ struct LibFile<'a> {
     families: &'a [FamilyModule],
 }
 
-/// A family module of `lib.rs`: its members, sorted by their value of the selecting output.
-#[derive(Clone, Debug, PartialEq)]
-pub struct FamilyModule {
-    /// Module name.
-    pub name: String,
-    /// Index of the selecting output.
-    pub output: usize,
-    /// Its name.
-    pub output_name: String,
-    /// `(design module, value literal)`, by increasing value.
-    pub members: Vec<(String, String)>,
-}
-
-/// The family modules of the designs whose files are `present`: members of one family must share
-/// the horizon, the outputs, the inputs and the targets (one observer type serves them all).
-pub fn families(designs: &[Design], present: &[String]) -> Result<Vec<FamilyModule>, String> {
-    let mut members: Vec<(&Design, &crate::spec::Family)> = designs
-        .iter()
-        .filter(|d| present.contains(&d.name))
-        .filter_map(|d| d.family.as_ref().map(|f| (d, f)))
-        .collect();
-    members.sort_by(|a, b| a.1.name.cmp(&b.1.name).then(a.1.value.total_cmp(&b.1.value)));
-    let outputs = |d: &Design| d.model.outputs.iter().map(|o| o.name.clone()).collect::<Vec<_>>();
-    let targets = |d: &Design| d.targets.iter().map(|t| t.name.clone()).collect::<Vec<_>>();
-    let mut modules = Vec::new();
-    for group in members.chunk_by(|a, b| a.1.name == b.1.name) {
-        let (first, family) = group[0];
-        let mut module = FamilyModule {
-            name: family.name.clone(),
-            output: family.output,
-            output_name: first.model.outputs[family.output].name.clone(),
-            members: Vec::new(),
-        };
-        for &(design, member) in group {
-            let same = first.map.horizon == design.map.horizon
-                && outputs(first) == outputs(design)
-                && first.model.inputs == design.model.inputs
-                && targets(first) == targets(design)
-                && member.output == family.output;
-            if !same {
-                return Err(format!(
-                    "{}: `family`: design `{}` cannot join family `{}` of `{}`: members must share the horizon, outputs, inputs, targets and selecting output",
-                    design.file.display(), design.name, family.name, first.name
-                ));
-            }
-            let value =
-                f32_literal("family.value", member.value).map_err(|e| format!("{}: {e}", design.file.display()))?;
-            module.members.push((design.name.clone(), value));
-        }
-        if present.contains(&module.name) {
-            return Err(format!(
-                "family `{}` has the name of a design: rename one of them",
-                module.name
-            ));
-        }
-        modules.push(module);
-    }
-    Ok(modules)
-}
-
 /// The spec path as it should appear in generated files: relative to the workspace when inside it,
 /// so that the text does not depend on where the checkout lives.
 pub fn portable_spec_path(spec: &Path, workspace: &Path) -> String {
@@ -339,7 +284,7 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
                 horizon: design.map.horizon,
             },
         ] {
-            crate::precision::check_f32(table, data).map_err(|mismatch| EmitError::NotReproducibleInF32 {
+            crate::emit::precision::check_f32(table, data).map_err(|mismatch| EmitError::NotReproducibleInF32 {
                 target: target.name.clone(),
                 mismatch,
             })?;
@@ -413,9 +358,7 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
         recorded_u: recorded_rows("recorded u", &result.scenario.inputs, false)?,
         refused: refused_samples(result.scenario.measurements.len()),
     };
-    file.render()
-        .map(|text| text + "\n")
-        .map_err(|e| EmitError::Template(e.to_string()))
+    file.render().map(|text| text + "\n").map_err(EmitError::from)
 }
 
 /// The text of `generated/src/lib.rs` declaring `designs` (sorted by the caller) and `families`.
@@ -427,7 +370,7 @@ pub fn lib_file(designs: &[String], families: &[FamilyModule]) -> Result<String,
     }
     .render()
     .map(|text| text + "\n")
-    .map_err(|e| EmitError::Template(e.to_string()))
+    .map_err(EmitError::from)
 }
 
 #[cfg(test)]

@@ -15,17 +15,38 @@ use std::sync::Once;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use crate::data::recording;
 use crate::data::{DataSet, Window};
-use crate::pipeline::DesignResult;
-use crate::recording;
+use crate::fit::DesignResult;
 use crate::spec::Design;
+
+/// Why a figure could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum PlotError {
+    /// plotters failed to draw (its errors are generic over the backend; their text is kept).
+    #[error("{}: cannot draw: {message}", file.display())]
+    Draw {
+        /// The figure.
+        file: PathBuf,
+        /// plotters' message.
+        message: String,
+    },
+    /// The file or its folder could not be written.
+    #[error("{}: {source}", path.display())]
+    Io {
+        /// The file or folder.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+}
 
 const FONT: &str = "sans-serif";
 static REGISTER_FONT: Once = Once::new();
 
 fn register_font() {
     REGISTER_FONT.call_once(|| {
-        let bytes: &'static [u8] = include_bytes!("../assets/DejaVuSans.ttf");
+        let bytes: &'static [u8] = include_bytes!("../../assets/DejaVuSans.ttf");
         // The font is bundled and valid; a failure here would only lose the text of the plots.
         let _ = plotters::style::register_font(FONT, FontStyle::Normal, bytes);
     });
@@ -143,30 +164,46 @@ fn write_figure(
     rows: usize,
     columns: usize,
     panels: &[Panel],
-) -> Result<Vec<PathBuf>, String> {
+) -> Result<Vec<PathBuf>, PlotError> {
     let size = (560 * columns as u32, 380 * rows as u32);
     let png = folder.join(format!("{stem}.png"));
     let temporary = folder.join(format!(".{stem}.tmp{}.png", std::process::id()));
-    draw_grid(
+    let drawn = draw_grid(
         BitMapBackend::new(&temporary, size).into_drawing_area(),
         rows,
         columns,
         panels,
-    )
-    .and_then(|()| std::fs::rename(&temporary, &png).map_err(|e| e.to_string()))
-    .inspect_err(|_| {
+    );
+    let written = match drawn {
+        Ok(()) => std::fs::rename(&temporary, &png).map_err(|source| PlotError::Io {
+            path: png.clone(),
+            source,
+        }),
+        Err(message) => Err(PlotError::Draw {
+            file: png.clone(),
+            message,
+        }),
+    };
+    if written.is_err() {
         let _ = std::fs::remove_file(&temporary);
-    })
-    .map_err(|e| format!("{}: {e}", png.display()))?;
+    }
+    written?;
+    let svg = folder.join(format!("{stem}.svg"));
     let mut svg_text = String::new();
     draw_grid(
         SVGBackend::with_string(&mut svg_text, size).into_drawing_area(),
         rows,
         columns,
         panels,
-    )?;
-    let svg = folder.join(format!("{stem}.svg"));
-    crate::output::write_atomically(&svg, svg_text.as_bytes()).map_err(|e| format!("{}: {e}", svg.display()))?;
+    )
+    .map_err(|message| PlotError::Draw {
+        file: svg.clone(),
+        message,
+    })?;
+    crate::output::write_atomically(&svg, svg_text.as_bytes()).map_err(|source| PlotError::Io {
+        path: svg.clone(),
+        source,
+    })?;
     Ok(vec![png, svg])
 }
 
@@ -175,9 +212,12 @@ const ESTIMATE_COLOR: RGBColor = RGBColor(214, 39, 40);
 const NOISE_COLOR: RGBColor = RGBColor(90, 90, 90);
 
 /// Draws the three figures of `design` into `folder`; returns the files written.
-pub fn draw(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec<PathBuf>, String> {
+pub fn draw(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec<PathBuf>, PlotError> {
     register_font();
-    std::fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
+    std::fs::create_dir_all(folder).map_err(|source| PlotError::Io {
+        path: folder.to_owned(),
+        source,
+    })?;
     let run = &result.scenario;
     let time_label = with_unit("time", &design.time_unit);
     let times: Vec<f64> = (0..run.states.len()).map(|k| k as f64 * design.tau).collect();

@@ -12,7 +12,7 @@ use std::collections::VecDeque;
 use std::path::Path;
 
 use crate::data::Run;
-use crate::maps::FittedMap;
+use crate::fit::maps::FittedMap;
 use crate::spec::Design;
 
 /// Why a recorded file could not be processed. Nothing is written when this happens.
