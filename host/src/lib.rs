@@ -12,5 +12,6 @@ pub mod emit;
 pub mod fit;
 pub mod generate;
 pub mod output;
+pub mod recording;
 pub mod report;
 pub mod spec;

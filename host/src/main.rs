@@ -9,7 +9,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rand::SeedableRng;
 
 use anyhow::Context;
-use host::data::recording;
+use host::recording;
 use host::{data, fit, generate, output, spec};
 
 /// Off-line moving-horizon observer design: simulate, fit r = Γ⁻¹(Lᵀ Z), validate, report, emit Rust.

@@ -419,7 +419,7 @@ pub fn spread(values: &[u64]) -> (u64, u64, u64) {
 
 /// The recorded sequence of a design as the generated file holds it, rebuilt on the host in f64
 /// (the scenario's measurements rounded to f32, with the same refused samples).
-fn recorded_rows(result: &host::fit::DesignResult) -> Vec<host::data::recording::Row> {
+fn recorded_rows(result: &host::fit::DesignResult) -> Vec<host::recording::Row> {
     let scenario = &result.scenario;
     let refused = host::emit::refused_samples(scenario.measurements.len());
     scenario
@@ -434,7 +434,7 @@ fn recorded_rows(result: &host::fit::DesignResult) -> Vec<host::data::recording:
                 (Some(_), Some(first)) => *first = f64::INFINITY,
                 _ => {}
             }
-            host::data::recording::Row {
+            host::recording::Row {
                 run: String::new(),
                 y,
                 u: u.iter().map(|&v| f64::from(v as f32)).collect(),
@@ -461,7 +461,7 @@ pub fn compare_with_library(name: &str, measured: &DesignMeasurement) -> Result<
         ));
     }
     let horizon = design.map.horizon;
-    let regressors = host::data::recording::regressors(horizon, &rows);
+    let regressors = host::recording::regressors(horizon, &rows);
     let mut largest: f64 = 0.0;
     for (k, ((row, sample), z)) in rows.iter().zip(&measured.samples).zip(&regressors).enumerate() {
         let finite = row.y.iter().chain(&row.u).all(|v| v.is_finite());

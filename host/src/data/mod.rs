@@ -6,7 +6,6 @@
 //! and all outputs of one instant together, `Z(k) = (y(k), …, y(k-N+1), u(k), …, u(k-N+1))`.
 //! Noise is added to the outputs only; targets are noise-free functions of the current state.
 
-pub mod recording;
 pub mod simulate;
 
 use rand::{RngExt, SeedableRng};

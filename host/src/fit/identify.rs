@@ -41,7 +41,7 @@ use serde::Serialize;
 
 use crate::data::DataSet;
 use crate::fit::maps::{FittedMap, LinearMap};
-use crate::fit::monotonicity::{check_grid, check_strictly_increasing, monotonicity_grid};
+use crate::fit::monotonicity::{check_grid, check_strictly_increasing, monotonicity_grid, NotMonotone};
 use crate::fit::qp::{self, Problem, QpError};
 use crate::fit::streaming_qr::StreamingQr;
 use crate::spec::{MapSettings, Normalisation};
@@ -84,13 +84,8 @@ pub enum FitError {
     #[error("the inverse table: {0}")]
     Table(#[from] crate::fit::inverse_table::TableError),
     /// After refinement `Γ` is still not strictly increasing somewhere.
-    #[error("Γ is not strictly increasing: Γ'({eta}) = {slope}")]
-    NotMonotone {
-        /// Where.
-        eta: f64,
-        /// The slope there.
-        slope: f64,
-    },
+    #[error(transparent)]
+    NotMonotone(#[from] NotMonotone),
 }
 
 /// How the QP went, for the report.

@@ -117,7 +117,7 @@ pub fn explain(design: &Design, index: usize, error: FitError) -> SpecError {
             problem,
             "Γ is too flat somewhere for a certified table of Γ⁻¹: lower `map.beta` (or `map.nm`) so that the basis bends less sharply, or use `normalisation = \"intercept\"`",
         ),
-        FitError::Table(_) | FitError::NotMonotone { .. } => design.error(
+        FitError::Table(_) | FitError::NotMonotone(_) => design.error(
             "map.monotonicity_grid",
             problem,
             "raise `map.monotonicity_grid` (e.g. to 801), or lower `map.beta` so that the basis bends less sharply",

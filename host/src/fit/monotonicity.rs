@@ -2,7 +2,15 @@
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(x > y)` is deliberate: a NaN must fail the check.
 
-use crate::fit::identify::FitError;
+/// `Γ` is not strictly increasing at `eta` (as far as the check grid shows).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("Γ is not strictly increasing: Γ'({eta}) = {slope}")]
+pub struct NotMonotone {
+    /// Where.
+    pub eta: f64,
+    /// The slope there.
+    pub slope: f64,
+}
 
 /// Chebyshev–Lobatto points on `[0, 1]`: clustered at both ends, where the steepest basis functions
 /// bend (a uniform grid lets `Γ` turn non-monotone between points once `β ≥ 2`).
@@ -29,12 +37,12 @@ pub fn check_grid() -> Vec<f64> {
 /// Strict monotonicity of `Γ`: `Γ' > 0` at every point of [`check_grid`], and `Γ` increasing from
 /// each point to the next of a uniform grid of step 5e-5 (values of points closer than that may tie
 /// in floating point). Returns the smallest slope.
-pub fn check_strictly_increasing(gamma: &firmware::Gamma<'_, f64>) -> Result<f64, FitError> {
+pub fn check_strictly_increasing(gamma: &firmware::Gamma<'_, f64>) -> Result<f64, NotMonotone> {
     let mut min_slope = f64::INFINITY;
     for eta in check_grid() {
         let slope = gamma.slope(eta);
         if !(slope > 0.0) {
-            return Err(FitError::NotMonotone { eta, slope });
+            return Err(NotMonotone { eta, slope });
         }
         min_slope = min_slope.min(slope);
     }
@@ -43,7 +51,7 @@ pub fn check_strictly_increasing(gamma: &firmware::Gamma<'_, f64>) -> Result<f64
         let eta = i as f64 / 20_000.0;
         let value = gamma.value(eta);
         if !(value > previous) {
-            return Err(FitError::NotMonotone {
+            return Err(NotMonotone {
                 eta,
                 slope: gamma.slope(eta),
             });
@@ -66,10 +74,7 @@ mod tests {
             weights: &w,
             odds_ratios: &b,
         };
-        assert!(matches!(
-            check_strictly_increasing(&gamma),
-            Err(FitError::NotMonotone { .. })
-        ));
+        assert!(matches!(check_strictly_increasing(&gamma), Err(NotMonotone { .. })));
         // A dip that only a fine grid sees: the slope is negative on a sliver of width 2e-5 at η = 1.
         let (w, b) = ([1.0, -1e-9], [1.0, 1e-5]);
         let gamma = firmware::Gamma {
@@ -78,10 +83,7 @@ mod tests {
             odds_ratios: &b,
         };
         assert!(gamma.slope(0.5) > 0.0 && gamma.slope(0.9999) > 0.0);
-        assert!(matches!(
-            check_strictly_increasing(&gamma),
-            Err(FitError::NotMonotone { .. })
-        ));
+        assert!(matches!(check_strictly_increasing(&gamma), Err(NotMonotone { .. })));
         let (w, b) = ([1.0, 2.0], [1.0, 4.0]);
         let gamma = firmware::Gamma {
             offset: 0.0,

@@ -15,9 +15,9 @@ use std::sync::Once;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use crate::data::recording;
 use crate::data::{DataSet, Window};
 use crate::fit::DesignResult;
+use crate::recording;
 use crate::spec::Design;
 
 /// Why a figure could not be written.

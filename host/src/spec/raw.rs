@@ -1,0 +1,145 @@
+//! The spec as TOML spells it (serde, unknown fields refused); [`super::validate`] turns it into a
+//! [`super::Design`].
+
+use std::collections::BTreeMap;
+
+use serde::Deserialize;
+
+use super::Normalisation;
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawSpec {
+    pub(super) name: String,
+    #[serde(default)]
+    pub(super) description: String,
+    pub(super) model: RawModel,
+    pub(super) sampling: RawSampling,
+    pub(super) learning: RawLearning,
+    pub(super) validation: RawValidation,
+    pub(super) map: RawMap,
+    pub(super) targets: Vec<RawNamedExpr>,
+    pub(super) scenario: Option<RawScenario>,
+    pub(super) family: Option<RawFamily>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawFamily {
+    pub(super) name: String,
+    pub(super) output: String,
+    pub(super) value: f64,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawScenario {
+    pub(super) x0: BTreeMap<String, f64>,
+    pub(super) samples: usize,
+    pub(super) seed: u64,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawModel {
+    pub(super) states: Vec<String>,
+    #[serde(default)]
+    pub(super) inputs: Vec<String>,
+    #[serde(default)]
+    pub(super) parameters: BTreeMap<String, f64>,
+    #[serde(default)]
+    pub(super) definitions: Vec<RawNamedExpr>,
+    pub(super) derivatives: BTreeMap<String, String>,
+    pub(super) outputs: Vec<RawOutput>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawNamedExpr {
+    pub(super) name: String,
+    pub(super) expr: String,
+    #[serde(default)]
+    pub(super) unit: String,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawOutput {
+    pub(super) name: String,
+    pub(super) expr: String,
+    pub(super) noise_variance: f64,
+    #[serde(default)]
+    pub(super) unit: String,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawSampling {
+    pub(super) tau: f64,
+    #[serde(default = "default_time_unit")]
+    pub(super) time_unit: String,
+    #[serde(default = "default_substeps")]
+    pub(super) substeps: usize,
+}
+
+fn default_time_unit() -> String {
+    "s".into()
+}
+
+fn default_substeps() -> usize {
+    10
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawLearning {
+    pub(super) samples: usize,
+    pub(super) seed: u64,
+    pub(super) grid: BTreeMap<String, RawAxis>,
+    #[serde(default)]
+    pub(super) inputs: BTreeMap<String, RawInputProfile>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawAxis {
+    pub(super) min: Option<f64>,
+    pub(super) max: Option<f64>,
+    pub(super) points: Option<usize>,
+    pub(super) value: Option<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawInputProfile {
+    pub(super) min: f64,
+    pub(super) max: f64,
+    pub(super) hold: usize,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawValidation {
+    pub(super) trajectories: usize,
+    pub(super) samples: usize,
+    pub(super) seed: u64,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawMap {
+    pub(super) horizon: usize,
+    pub(super) nm: usize,
+    pub(super) beta: f64,
+    pub(super) epsilon: f64,
+    #[serde(default)]
+    pub(super) normalisation: Normalisation,
+    #[serde(default = "default_grid")]
+    pub(super) monotonicity_grid: usize,
+}
+
+fn default_grid() -> usize {
+    201
+}
+
+// ---------------------------------------------------------------------------------------------------

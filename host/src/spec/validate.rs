@@ -1,0 +1,295 @@
+//! Field-by-field validation of a parsed spec: every problem becomes a [`SpecError`] naming the field
+//! and the fix. The model and the learning grid are checked in [`super::validate_model`].
+
+use super::raw::*;
+use super::*;
+
+pub(super) struct Validator {
+    pub(super) file: String,
+    pub(super) path: PathBuf,
+}
+
+impl Validator {
+    pub(super) fn err(
+        &self,
+        field: impl Into<String>,
+        problem: impl Into<String>,
+        fix: impl Into<String>,
+    ) -> SpecError {
+        SpecError {
+            file: self.file.clone(),
+            field: field.into(),
+            problem: problem.into(),
+            fix: fix.into(),
+        }
+    }
+
+    pub(super) fn identifier(&self, field: &str, name: &str) -> Result<(), SpecError> {
+        let mut chars = name.chars();
+        let valid = matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_')
+            && chars.all(|c| c.is_ascii_alphanumeric() || c == '_');
+        if RESERVED_NAMES.contains(&name) {
+            return Err(self.err(
+                field,
+                format!("`{name}` is reserved: it names a column of the CSV files `simulate` and `estimate` use"),
+                format!("rename it (reserved: {})", RESERVED_NAMES.join(", ")),
+            ));
+        }
+        if valid {
+            Ok(())
+        } else {
+            Err(self.err(
+                field,
+                format!("`{name}` is not a valid name"),
+                "use letters, digits and `_`, starting with a letter",
+            ))
+        }
+    }
+
+    /// Every key of the table `section` must be one of `names` (`kind`: "a state", "an input"); `fix`
+    /// says what the table holds, and the names are listed after it.
+    pub(super) fn keys_among<'k>(
+        &self,
+        section: &str,
+        keys: impl IntoIterator<Item = &'k String>,
+        names: &[String],
+        kind: &str,
+        fix: &str,
+    ) -> Result<(), SpecError> {
+        match keys.into_iter().find(|key| !names.contains(key)) {
+            Some(key) => Err(self.err(
+                format!("{section}.{key}"),
+                format!("`{key}` is not {kind}"),
+                format!("{fix} ({})", names.join(", ")),
+            )),
+            None => Ok(()),
+        }
+    }
+
+    pub(super) fn positive(&self, field: &str, value: f64, what: &str) -> Result<f64, SpecError> {
+        if value.is_finite() && value > 0.0 {
+            Ok(value)
+        } else {
+            Err(self.err(
+                field,
+                format!("{what} must be a finite number > 0, got {value}"),
+                format!("set `{field}` to a positive value"),
+            ))
+        }
+    }
+
+    pub(super) fn design(&self, raw: RawSpec) -> Result<Design, SpecError> {
+        let name_ok = is_module_name(&raw.name);
+        if !name_ok {
+            return Err(self.err(
+                "name",
+                format!("`{}` is not a lower-case identifier, or is reserved", raw.name),
+                "use lower-case letters, digits and `_`, starting with a letter, not a Rust keyword (it names a module in generated/)",
+            ));
+        }
+        let model = self.model(&raw.model)?;
+        let tau = self.positive("sampling.tau", raw.sampling.tau, "the sample period τ")?;
+        if raw.sampling.substeps == 0 {
+            return Err(self.err(
+                "sampling.substeps",
+                "RK4 needs at least one step per sample",
+                "set `sampling.substeps` to 1 or more (10 is usual)",
+            ));
+        }
+        let map = self.map(&raw.map)?;
+        let learning = self.learning(&raw.learning, &model, map.horizon)?;
+        let validation = self.validation(&raw.validation, map.horizon)?;
+        let targets = self.targets(&raw.targets, &model)?;
+        let family = raw
+            .family
+            .as_ref()
+            .map(|f| self.family(f, &model, &raw.name))
+            .transpose()?;
+        let scenario = raw
+            .scenario
+            .as_ref()
+            .map(|s| self.scenario(s, &model, map.horizon))
+            .transpose()?;
+        Ok(Design {
+            file: self.path.clone(),
+            name: raw.name,
+            description: raw.description,
+            model,
+            tau,
+            time_unit: raw.sampling.time_unit.clone(),
+            substeps: raw.sampling.substeps,
+            learning,
+            validation,
+            map,
+            targets,
+            scenario,
+            family,
+            spec_sha256: String::new(),
+        })
+    }
+
+    fn family(&self, raw: &RawFamily, model: &Model, design: &str) -> Result<Family, SpecError> {
+        if !is_module_name(&raw.name) || raw.name == design {
+            return Err(self.err(
+                "family.name",
+                format!("`{}` cannot name the family's module", raw.name),
+                "use a lower-case identifier that is not a Rust keyword and differs from every design name",
+            ));
+        }
+        let output = model.outputs.iter().position(|o| o.name == raw.output).ok_or_else(|| {
+            let names: Vec<&str> = model.outputs.iter().map(|o| o.name.as_str()).collect();
+            self.err(
+                "family.output",
+                format!("`{}` is not an output", raw.output),
+                format!("name one of the outputs: {}", names.join(", ")),
+            )
+        })?;
+        if !raw.value.is_finite() {
+            return Err(self.err(
+                "family.value",
+                format!("{} is not finite", raw.value),
+                "give this member's value of the output",
+            ));
+        }
+        Ok(Family {
+            name: raw.name.clone(),
+            output,
+            value: raw.value,
+        })
+    }
+
+    fn scenario(&self, raw: &RawScenario, model: &Model, horizon: usize) -> Result<Scenario, SpecError> {
+        self.keys_among(
+            "scenario.x0",
+            raw.x0.keys(),
+            &model.states,
+            "a state",
+            "give one initial value per state",
+        )?;
+        let x0 = model
+            .states
+            .iter()
+            .map(|state| match raw.x0.get(state) {
+                Some(v) if v.is_finite() => Ok(*v),
+                Some(v) => Err(self.err(
+                    format!("scenario.x0.{state}"),
+                    format!("{v} is not finite"),
+                    "give a finite initial value",
+                )),
+                None => Err(self.err(
+                    format!("scenario.x0.{state}"),
+                    format!("no initial value for `{state}`"),
+                    format!("add `{state} = …` to `scenario.x0`"),
+                )),
+            })
+            .collect::<Result<_, _>>()?;
+        if raw.samples < horizon {
+            return Err(self.err(
+                "scenario.samples",
+                format!("{} samples hold no window of N = {horizon}", raw.samples),
+                "set `scenario.samples` ≥ `map.horizon`",
+            ));
+        }
+        Ok(Scenario {
+            x0,
+            samples: raw.samples,
+            seed: raw.seed,
+        })
+    }
+
+    fn map(&self, raw: &RawMap) -> Result<MapSettings, SpecError> {
+        if raw.horizon == 0 {
+            return Err(self.err(
+                "map.horizon",
+                "the horizon N must be at least 1",
+                "set `map.horizon` to the number of past measurements to use (the paper uses 10 and 3)",
+            ));
+        }
+        if raw.nm == 0 {
+            return Err(self.err("map.nm", "n_m must be at least 1", "set `map.nm` (the paper uses 5)"));
+        }
+        let beta = self.positive("map.beta", raw.beta, "β")?;
+        if beta * (raw.nm as f64 - 1.0) > 30.0 {
+            return Err(self.err(
+                "map.beta",
+                format!(
+                    "β·(n_m - 1) = {} makes basis odds ratios reach e^{:.0}: the basis degenerates to steps",
+                    beta * (raw.nm as f64 - 1.0),
+                    beta * (raw.nm as f64 - 1.0)
+                ),
+                "keep β·(n_m - 1) ≤ 30 (β of 0.5 to 3 is usual)",
+            ));
+        }
+        let epsilon = self.positive("map.epsilon", raw.epsilon, "ε")?;
+        if raw.monotonicity_grid < 3 {
+            return Err(self.err(
+                "map.monotonicity_grid",
+                format!(
+                    "{} points cannot constrain the slope of Γ on [0, 1]",
+                    raw.monotonicity_grid
+                ),
+                "use 201 or more points",
+            ));
+        }
+        Ok(MapSettings {
+            horizon: raw.horizon,
+            nm: raw.nm,
+            beta,
+            epsilon,
+            normalisation: raw.normalisation,
+            monotonicity_grid: raw.monotonicity_grid,
+        })
+    }
+
+    fn validation(&self, raw: &RawValidation, horizon: usize) -> Result<Validation, SpecError> {
+        if raw.trajectories == 0 {
+            return Err(self.err(
+                "validation.trajectories",
+                "no validation run: accuracy could not be reported",
+                "set `validation.trajectories` to 1 or more (50 or more is sensible)",
+            ));
+        }
+        if raw.samples < horizon {
+            return Err(self.err(
+                "validation.samples",
+                format!("runs of {} samples hold no window of N = {horizon}", raw.samples),
+                "set `validation.samples` ≥ `map.horizon`",
+            ));
+        }
+        Ok(Validation {
+            trajectories: raw.trajectories,
+            samples: raw.samples,
+            seed: raw.seed,
+        })
+    }
+
+    fn targets(&self, raw: &[RawNamedExpr], model: &Model) -> Result<Vec<Target>, SpecError> {
+        if raw.is_empty() {
+            return Err(self.err(
+                "targets",
+                "nothing to estimate",
+                "add a `[[targets]]` table with `name` and `expr` (e.g. a state name)",
+            ));
+        }
+        let scope = model.scope();
+        let mut targets: Vec<Target> = Vec::new();
+        for (i, t) in raw.iter().enumerate() {
+            self.identifier(&format!("targets[{i}].name"), &t.name)?;
+            if targets.iter().any(|other| other.name == t.name) {
+                return Err(self.err(
+                    format!("targets[{i}].name"),
+                    format!("target `{}` is declared twice", t.name),
+                    "give each target its own name",
+                ));
+            }
+            let expr = Expression::compile(&t.expr, &scope)
+                .map_err(|e| self.err(format!("targets[{i}].expr"), e.to_string(), e.fix()))?;
+            targets.push(Target {
+                name: t.name.clone(),
+                unit: t.unit.clone(),
+                expr,
+            });
+        }
+        Ok(targets)
+    }
+}
