@@ -18,23 +18,29 @@
 //! `c` as small as `e^{-30}`, where `1 + b` rounds to 0 in `f32` and `1 + b η` vanishes at `η = 1`;
 //! `(1 - η) + c η` keeps full relative precision for every `c`, and rounding `c` changes `B` by at most
 //! one part in `2^24`.
+//!
+//! Only with the `reference` feature: the host fits and tabulates `Γ` with these functions; the chip
+//! runs the tables and never evaluates a basis function.
 
 use crate::Scalar;
 
 /// `(1 - η) + c η`, the denominator of `B(η; c)`.
 #[inline]
+#[must_use]
 pub fn denominator<T: Scalar>(odds_ratio: T, eta: T) -> T {
     (T::one() - eta) + odds_ratio * eta
 }
 
 /// `B(η; c) = c η / ((1 - η) + c η)`.
 #[inline]
+#[must_use]
 pub fn value<T: Scalar>(odds_ratio: T, eta: T) -> T {
     odds_ratio * eta / denominator(odds_ratio, eta)
 }
 
 /// `dB/dη = c / ((1 - η) + c η)²`.
 #[inline]
+#[must_use]
 pub fn slope<T: Scalar>(odds_ratio: T, eta: T) -> T {
     let d = denominator(odds_ratio, eta);
     odds_ratio / (d * d)
@@ -42,6 +48,7 @@ pub fn slope<T: Scalar>(odds_ratio: T, eta: T) -> T {
 
 /// `∫₀¹ B(η; c) dη = c (1/b - ln(c)/b²)` with `b = c - 1`, by its Taylor series in `b` near `c = 1`
 /// where the closed form cancels. Host-side (f64): the switch-over is tuned for f64.
+#[must_use]
 pub fn integral(odds_ratio: f64) -> f64 {
     let (c, b) = (odds_ratio, odds_ratio - 1.0);
     if b.abs() < 1e-3 {

@@ -17,6 +17,9 @@ pub struct Member<T, const N: usize, const NY: usize, const NU: usize, const NT:
 }
 
 /// An observer over a family of `K` designs sharing `N`, `NY`, `NU` and `NT`.
+///
+/// A clone shares the members (they are borrowed) and copies the window and the choice.
+#[derive(Clone, Debug)]
 pub struct FamilyObserver<'a, T, const N: usize, const NY: usize, const NU: usize, const NT: usize, const K: usize> {
     members: &'a [Member<T, N, NY, NU, NT>; K],
     output: usize,
@@ -28,6 +31,7 @@ impl<'a, T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: 
     FamilyObserver<'a, T, N, NY, NU, NT, K>
 {
     /// A family observer choosing by output `output` (an index into `y`).
+    #[must_use]
     pub const fn new(members: &'a [Member<T, N, NY, NU, NT>; K], output: usize) -> Self {
         FamilyObserver {
             members,
@@ -65,11 +69,13 @@ impl<'a, T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: 
     }
 
     /// Index of the member in use, once the batch's first sample has arrived.
+    #[must_use]
     pub fn chosen(&self) -> Option<usize> {
         self.chosen
     }
 
     /// The chosen member's estimates, or `None` before `N` samples of the batch have arrived.
+    #[must_use]
     pub fn estimate(&self) -> Option<[Estimate<T>; NT]> {
         let member = self.members.get(self.chosen?)?;
         self.window.samples().map(member.estimate)
@@ -134,6 +140,24 @@ mod tests {
         assert!(observer.estimate().is_none());
         observer.push([1.6], []).unwrap();
         assert_eq!(observer.chosen(), Some(1));
+    }
+
+    #[test]
+    fn a_clone_keeps_the_choice_and_continues_independently() {
+        let mut observer: FamilyObserver<'_, f64, 2, 1, 0, 1, 2> = FamilyObserver::new(&MEMBERS, 0);
+        observer.push([1.6], []).unwrap();
+        let mut copy = observer.clone();
+        copy.reset();
+        copy.push([0.4], []).unwrap();
+        assert_eq!((observer.chosen(), copy.chosen()), (Some(1), Some(0)));
+        observer.push([0.5], []).unwrap(); // HIGH: r = 10 + y(k)
+        assert_eq!(observer.estimate().unwrap()[0].value, 10.5);
+        assert!(copy.estimate().is_none());
+        let text = std::format!("{observer:?}");
+        assert!(
+            text.starts_with("FamilyObserver") && text.contains("chosen: Some(1)"),
+            "{text}"
+        );
     }
 
     #[test]

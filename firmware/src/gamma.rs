@@ -1,7 +1,10 @@
 //! The monotone map `Γ : [0, 1] → ℝ` and its exact inverse by bisection: the host's reference, which
 //! the certified table the chip runs ([`crate::InverseTable`]) is proven against.
+//!
+//! Only with the `reference` feature: the chip never evaluates `Γ` (its tables fold it in), and a
+//! bisection of 24 steps, each a sum of divisions, has no place in a sampling period.
 
-use crate::{basis, Scalar};
+use crate::{basis, Saturation, Scalar};
 
 /// `Γ(η) = offset + Σ_j μ_j B(η; c_j) = offset + η Σ_j w_j / ((1 - η) + c_j η)`, with `w_j = μ_j c_j`.
 ///
@@ -17,24 +20,6 @@ pub struct Gamma<'a, T> {
     pub odds_ratios: &'a [T],
 }
 
-/// Which side, if any, `Γ⁻¹` clamped to.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Saturation {
-    /// `Γ(0) ≤ v ≤ Γ(1)`: the estimate is inside the learning range.
-    Inside,
-    /// `v < Γ(0)` (or `v` is NaN): the estimate is clamped to `r_min`.
-    Low,
-    /// `v > Γ(1)`: the estimate is clamped to `r_max`.
-    High,
-}
-
-impl Saturation {
-    /// `true` when the estimate was clamped to an end of the learning range.
-    pub fn is_saturated(self) -> bool {
-        self != Saturation::Inside
-    }
-}
-
 /// The result of `Γ⁻¹(v)`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Inverse<T> {
@@ -47,6 +32,7 @@ pub struct Inverse<T> {
 impl<T: Scalar> Gamma<'_, T> {
     /// `Γ(η)`.
     #[inline]
+    #[must_use]
     pub fn value(&self, eta: T) -> T {
         let mut sum = T::zero();
         for (&w, &c) in self.weights.iter().zip(self.odds_ratios) {
@@ -56,6 +42,7 @@ impl<T: Scalar> Gamma<'_, T> {
     }
 
     /// `Γ'(η) = Σ_j w_j / ((1 - η) + c_j η)²`.
+    #[must_use]
     pub fn slope(&self, eta: T) -> T {
         let mut sum = T::zero();
         for (&w, &c) in self.weights.iter().zip(self.odds_ratios) {
@@ -66,6 +53,7 @@ impl<T: Scalar> Gamma<'_, T> {
     }
 
     /// `Γ(1) = offset + Σ_j μ_j` (every basis function is 1 at `η = 1`).
+    #[must_use]
     pub fn upper(&self) -> T {
         self.value(T::one())
     }
@@ -73,6 +61,7 @@ impl<T: Scalar> Gamma<'_, T> {
     /// `Γ⁻¹(v)` on `[0, 1]` by bisection with exactly [`Scalar::BISECTION_STEPS`] steps whatever `v`
     /// is, so every call costs the same. Outside `[Γ(0), Γ(1)]` the result is clamped to `η = 0` or
     /// `η = 1` and says so; a NaN `v` is treated as below the range.
+    #[must_use]
     pub fn inverse(&self, v: T) -> Inverse<T> {
         let (low, high) = (self.offset, self.upper());
         let saturation = if v > high {
@@ -107,11 +96,13 @@ impl<T: Scalar> Gamma<'_, T> {
 }
 
 /// `w_j = μ_j c_j`: the weights [`Gamma`] stores, from the coefficients `μ_j` of `B(·; c_j)`.
+#[must_use]
 pub fn weight<T: Scalar>(mu: T, odds_ratio: T) -> T {
     mu * odds_ratio
 }
 
 /// `Γ(η)` written as the sum `offset + Σ μ_j B(η; c_j)` of [`basis::value`], the reference form.
+#[must_use]
 pub fn value_from_coefficients<T: Scalar>(offset: T, mu: &[T], odds_ratios: &[T], eta: T) -> T {
     let mut sum = offset;
     for (&m, &c) in mu.iter().zip(odds_ratios) {

@@ -59,6 +59,7 @@ impl<T: Scalar> InverseTable<'_, T> {
     /// `r(t)`, clamped to `[r_min, r_max]` outside `[0, K]`, which the result says. A NaN `t` gives
     /// `r_min`, flagged low: the estimate is always finite.
     #[inline(always)]
+    #[must_use]
     pub fn evaluate(&self, t: T) -> Estimate<T> {
         let k = match self.knots {
             // ⌊t⌋, saturating: NaN and negatives give 0.
@@ -71,6 +72,7 @@ impl<T: Scalar> InverseTable<'_, T> {
     /// `r(t)` on segment `k` (the last one if `k` is beyond it), saturated as [`InverseTable::evaluate`]
     /// does. For code that finds `k` itself: generated designs write the search out step by step.
     #[inline(always)]
+    #[must_use]
     pub fn evaluate_segment(&self, t: T, k: usize) -> Estimate<T> {
         let k = k.min(self.segments.len().saturating_sub(1));
         let start = match self.knots {
@@ -116,6 +118,7 @@ pub fn search_halves(len: usize) -> impl Iterator<Item = usize> {
 /// One step of the search: `base + half` if `starts[base + half] ≤ t`, else `base` (a select, no
 /// branch). Out of the table (never, in a search by [`search_halves`]) the step stays at `base`.
 #[inline(always)]
+#[must_use]
 pub fn search_step<T: Scalar>(starts: &[T], t: T, base: usize, half: usize) -> usize {
     let above = starts.get(base + half).is_some_and(|&s| s <= t);
     select(above, base + half, base)

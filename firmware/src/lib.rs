@@ -14,16 +14,16 @@
 //! # Conventions
 //!
 //! * `η(r) = (r - r_min) / (r_max - r_min)` normalises the target to `[0, 1]` over the learning data.
-//! * Every non-constant basis function of the paper is a member of one family ([`basis`]):
+//! * Every non-constant basis function of the paper is a member of one family (module `basis`):
 //!   `B(η; c) = c η / ((1 - η) + c η)`, odds ratio `c > 0`, with `B(0) = 0`, `B(1) = 1`, `B' > 0`.
 //!   The paper's `B1_i` is `c = e^{β(1-i)}` (convex) and its `B2_i` is `c = e^{β(i-1)}` (concave);
 //!   `B1_1 = B2_1 = η` is `c = 1`.
 //! * `Γ(η) = offset + Σ_j μ_j B(η; c_j) = offset + η Σ_j w_j / ((1 - η) + c_j η)` with `w_j = μ_j c_j`
-//!   ([`Gamma`]); the offset holds the constant basis coefficient minus any intercept of `Lᵀ Z`.
+//!   (`Gamma`); the offset holds the constant basis coefficient minus any intercept of `Lᵀ Z`.
 //!
 //! # What the chip computes
 //!
-//! The exact inverse of `Γ` (bisection, [`Gamma::inverse`]) is the host's reference. The chip runs a
+//! The exact inverse of `Γ` (bisection, `Gamma::inverse`) is the host's reference. The chip runs a
 //! certified table instead ([`InverseTable`]): with `K` segments uniform in `v = Lᵀ Z`,
 //!
 //! ```text
@@ -37,12 +37,24 @@
 //! fixed length (`⌈log₂ K⌉` selects, the same steps whatever `t` is). Generated designs ([`Design`])
 //! write the dot products (and the search steps) out as straight-line code; the [`Observer`] keeps the
 //! last `N` samples in a window that is always contiguous ([`window`]).
+//!
+//! # Features
+//!
+//! * `reference` (off by default): the host's reference maths, which the chip never runs: `Γ` and
+//!   its exact inverse by bisection (`gamma`: `Gamma`, `Inverse`, `gamma::weight`,
+//!   `gamma::value_from_coefficients`), the basis functions and their integrals (`basis`), and
+//!   `Scalar::BISECTION_STEPS` and `Scalar::constant`. The host enables it; firmware leaves it off,
+//!   so that its API is exactly what runs on the chip, where a bisection of 24 steps, each a sum of
+//!   divisions, could not be afforded every sample.
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+// The crate doc names the `reference` items without links: a link to an absent item fails `cargo doc`.
+#[cfg(any(test, feature = "reference"))]
 pub mod basis;
 pub mod family;
+#[cfg(any(test, feature = "reference"))]
 pub mod gamma;
 pub mod inverse;
 pub mod map;
@@ -51,9 +63,10 @@ pub mod scalar;
 pub mod window;
 
 pub use family::{FamilyObserver, Member};
-pub use gamma::{Gamma, Inverse, Saturation};
+#[cfg(any(test, feature = "reference"))]
+pub use gamma::{Gamma, Inverse};
 pub use inverse::{search_halves, search_step, InverseTable, Knots};
-pub use map::{Estimate, TargetMap};
+pub use map::{Estimate, Saturation, TargetMap};
 pub use observer::{estimate_by_loops, Design, Observer, RejectedSample};
 pub use scalar::Scalar;
 pub use window::{Sample, Window};

@@ -1,7 +1,7 @@
 //! One target's map `r = Γ⁻¹(Lᵀ Z)` as the chip evaluates it: a projection onto the table
 //! coordinate `t`, then the tabulated inverse ([`InverseTable`]).
 
-use crate::{InverseTable, Saturation, Scalar};
+use crate::{InverseTable, Scalar};
 
 /// The map for one target: `t = offset + Σ_i gains_i z_i`, `r = table(t)`.
 ///
@@ -26,9 +26,30 @@ pub struct Estimate<T> {
     pub saturation: Saturation,
 }
 
+/// Which end of the learning range, if any, an estimate was clamped to. The table coordinate `t` is
+/// `0` at `Lᵀ Z = Γ(0)` and `t_max` at `Lᵀ Z = Γ(1)`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Saturation {
+    /// `0 ≤ t ≤ t_max` (`Γ(0) ≤ Lᵀ Z ≤ Γ(1)`): the estimate is inside the learning range.
+    Inside,
+    /// `t < 0` (or `t` is NaN): the estimate is clamped to `r_min`.
+    Low,
+    /// `t > t_max`: the estimate is clamped to `r_max`.
+    High,
+}
+
+impl Saturation {
+    /// `true` when the estimate was clamped to an end of the learning range.
+    #[must_use]
+    pub fn is_saturated(self) -> bool {
+        self != Saturation::Inside
+    }
+}
+
 impl<T: Scalar> TargetMap<'_, T> {
     /// `t = offset + Σ_i gains_i z_i`, summed in that order. Entries beyond the shorter of `gains` and
     /// `regressor` are ignored.
+    #[must_use]
     pub fn project(&self, regressor: &[T]) -> T {
         let mut sum = self.offset;
         for (&g, &z) in self.gains.iter().zip(regressor) {
@@ -38,6 +59,7 @@ impl<T: Scalar> TargetMap<'_, T> {
     }
 
     /// `F(Z)`: the tabulated inverse of the projection.
+    #[must_use]
     pub fn estimate(&self, regressor: &[T]) -> Estimate<T> {
         self.inverse.evaluate(self.project(regressor))
     }

@@ -29,6 +29,7 @@ pub trait Design<T: Scalar, const N: usize, const NY: usize, const NU: usize, co
     /// One estimate per target from the last `N` samples, oldest first. The default loops over the
     /// gains ([`estimate_by_loops`]); an override must give the same bits.
     #[inline(always)]
+    #[must_use]
     fn estimate(window: &[Sample<T, NY, NU>; N]) -> [Estimate<T>; NT] {
         estimate_by_loops(&Self::MAPS, window)
     }
@@ -36,6 +37,7 @@ pub trait Design<T: Scalar, const N: usize, const NY: usize, const NU: usize, co
     /// Whether a sample may enter the window: every value finite. The default loops; an override
     /// must give the same answer.
     #[inline(always)]
+    #[must_use]
     fn accepts(y: &[T; NY], u: &[T; NU]) -> bool {
         all_finite(y, u)
     }
@@ -44,6 +46,7 @@ pub trait Design<T: Scalar, const N: usize, const NY: usize, const NU: usize, co
 /// Every map's estimate from a window (oldest first), summing `offset + Σ g_i z_i` in regressor order
 /// (all outputs newest first, then all inputs), so that it rounds exactly as [`TargetMap::project`]
 /// on the same regressor.
+#[must_use]
 pub fn estimate_by_loops<T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: usize>(
     maps: &[TargetMap<'_, T>; NT],
     window: &[Sample<T, NY, NU>; N],
@@ -113,6 +116,7 @@ impl<T: Scalar, D: Design<T, N, NY, NU, NT>, const N: usize, const NY: usize, co
     Observer<T, D, N, NY, NU, NT>
 {
     /// An observer with an empty window.
+    #[must_use]
     pub const fn new() -> Self {
         Observer {
             window: Window::new(),
@@ -138,12 +142,14 @@ impl<T: Scalar, D: Design<T, N, NY, NU, NT>, const N: usize, const NY: usize, co
     }
 
     /// `true` once `N` samples have arrived.
+    #[must_use]
     pub fn is_ready(&self) -> bool {
         self.window.is_full()
     }
 
     /// One estimate per target from the last `N` samples, or `None` before `N` samples have arrived.
     #[inline]
+    #[must_use]
     pub fn estimate(&self) -> Option<[Estimate<T>; NT]> {
         self.window.samples().map(D::estimate)
     }
@@ -157,11 +163,27 @@ impl<T: Scalar, D: Design<T, N, NY, NU, NT>, const N: usize, const NY: usize, co
     }
 }
 
+// `Clone` and `Debug` by hand: derives would demand them of the design `D`, a marker type that is
+// never stored, so that `Observer<…, D, …>` would lack them for the unit types generated code emits.
+impl<T: Clone, D, const N: usize, const NY: usize, const NU: usize, const NT: usize> Clone
+    for Observer<T, D, N, NY, NU, NT>
+{
+    fn clone(&self) -> Self {
+        Observer {
+            window: self.window.clone(),
+            design: PhantomData,
+        }
+    }
+}
+
 impl<T: core::fmt::Debug, D, const N: usize, const NY: usize, const NU: usize, const NT: usize> core::fmt::Debug
     for Observer<T, D, N, NY, NU, NT>
 {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("Observer").field("window", &self.window).finish()
+        f.debug_struct("Observer")
+            .field("design", &core::any::type_name::<D>())
+            .field("window", &self.window)
+            .finish()
     }
 }
 
@@ -263,5 +285,28 @@ mod tests {
     fn rejected_sample_says_what_happened() {
         let text = std::format!("{RejectedSample}");
         assert!(text.contains("NaN or infinite"), "{text}");
+        // Usable wherever an error is expected (`?` into a boxed error, error reporters).
+        let error: &dyn core::error::Error = &RejectedSample;
+        assert_eq!(error.to_string(), text);
+        assert!(error.source().is_none());
+    }
+
+    #[test]
+    fn a_clone_continues_independently_and_debug_names_the_design() {
+        // `Test` is neither `Clone` nor `Debug`: the observer must be both regardless.
+        let mut observer = TestObserver::new();
+        for k in 0..3 {
+            let (y, u) = sample(k);
+            observer.push(y, u).unwrap();
+        }
+        let mut copy = observer.clone();
+        assert_eq!(copy.estimate(), observer.estimate());
+        let (y, u) = sample(3);
+        copy.push(y, u).unwrap();
+        assert_ne!(copy.estimate(), observer.estimate());
+        observer.push(y, u).unwrap();
+        assert_eq!(copy.estimate(), observer.estimate());
+        let text = std::format!("{observer:?}");
+        assert!(text.starts_with("Observer") && text.contains("Test"), "{text}");
     }
 }

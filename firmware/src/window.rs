@@ -28,6 +28,7 @@ pub struct Window<T, const N: usize, const NY: usize, const NU: usize> {
 
 impl<T: Scalar, const N: usize, const NY: usize, const NU: usize> Window<T, N, NY, NU> {
     /// An empty window.
+    #[must_use]
     pub const fn new() -> Self {
         let zero = Sample {
             y: [T::ZERO; NY],
@@ -61,12 +62,14 @@ impl<T: Scalar, const N: usize, const NY: usize, const NU: usize> Window<T, N, N
     }
 
     /// `true` once `N` samples are held.
+    #[must_use]
     pub fn is_full(&self) -> bool {
         self.filled >= N
     }
 
     /// The last `N` samples, oldest first, or `None` before `N` have arrived.
     #[inline(always)]
+    #[must_use]
     pub fn samples(&self) -> Option<&[Sample<T, NY, NU>; N]> {
         if !self.is_full() {
             return None;
