@@ -1,10 +1,38 @@
-//! Design-time side of the off-line moving-horizon observer.
+//! Design-time side of the off-line moving-horizon observer (M. Alamir, *A new identification
+//! framework for off-line computation of moving-horizon observers*).
 //!
-//! From a design spec ([`spec`]) the host simulates learning data ([`data`], [`simulate`]), fits for
-//! every target a map `r = Γ⁻¹(Lᵀ Z)` by constrained least squares ([`identify`], solved by Clarabel
-//! through [`qp`]), judges it on fresh validation runs beside a plain linear least-squares floor
-//! ([`evaluate`]) and writes a report ([`report`]). The fitted maps are evaluated through the
-//! `firmware` crate's code, in `f64` ([`maps`]).
+//! # The problem
+//!
+//! For a plant `x⁺ = f(x, u)`, `y = h(x, u) + w` and every quantity `r(x)` to estimate, find a map of
+//! the last `N` measurements
+//!
+//! ```text
+//! r̂ = F(Z) = Γ⁻¹(Lᵀ Z),   Z(k) = (y(k), …, y(k-N+1), u(k), …, u(k-N+1)),
+//! Γ(η) = μ₀ + Σ_j μ_j B(η; c_j),  η = (r - r_min)/(r_max - r_min),  Γ' ≥ ε > 0 on [0, 1],
+//! ```
+//!
+//! by least squares of `Γ(η(r)) - Lᵀ Z` over simulated windows: a convex QP in `(μ, L)`. On the chip
+//! `Γ⁻¹` becomes a table whose distance to the exact inverse is proven, so an estimate is a dot
+//! product and a table lookup.
+//!
+//! # The pipeline, one folder per stage
+//!
+//! 1. [`spec`]: a TOML design (model as expressions, sample time, state box, noise, map settings)
+//!    parsed and validated into a [`spec::Design`]; every problem names the file, field and fix.
+//! 2. [`data`]: learning runs from a grid of initial states and validation runs from fresh random
+//!    ones, simulated by RK4 ([`data::simulate`]), cut into windows `(Z, r)`.
+//! 3. [`fit`]: per target, the constrained least squares ([`fit::identify`]: streamed QR, elimination
+//!    of `L`, whitening, Clarabel through [`fit::qp`], monotonicity checked on a fine grid), the
+//!    certified table of `Γ⁻¹` ([`fit::inverse_table`]), the fitted map ([`fit::maps`], evaluated by
+//!    the `firmware` crate's own code in `f64`), and its validation beside the linear floor
+//!    `Lᵀ Z + c` ([`fit::evaluate`]).
+//! 4. [`emit`]: the `generated` crate's Rust source (f32 tables, straight-line code), written only
+//!    after the f32 evaluation is checked against the f64 one on every validation window
+//!    ([`emit::precision`]).
+//! 5. [`report`]: JSON and Markdown reports and the paper's figures.
+//!
+//! [`generate`] runs the whole job (`host gen`); [`recording`] applies fitted maps to CSV recordings
+//! (`host estimate`); [`output`] writes files atomically.
 #![warn(missing_docs)]
 
 pub mod data;

@@ -19,7 +19,7 @@
 //! of different scales. Handing it to a solver as it is invites "insufficient progress" far from the
 //! optimum. Instead:
 //! 1. One pass over the windows accumulates the triangular factor `R` of the column-scaled data
-//!    `[Z̃ | 1 | B | r]` ([`StreamingQr`]): memory independent of `n_E`, condition not squared.
+//!    `[Z̃ | 1 | B | r]` ([`StreamingQr`](crate::fit::streaming_qr::StreamingQr)): memory independent of `n_E`, condition not squared.
 //! 2. For fixed `μ` the best `L` is least squares, so `L` is eliminated: with `R` partitioned by the
 //!    `L`-columns and the `μ`-columns, the objective is `‖R_μμ μ‖² / n_E` and `L = R_LL⁻¹ R_Lμ μ`.
 //! 3. `μ` is whitened through the SVD `R_μμ / √n_E = U S Vᵀ`: `μ = V Σ⁻¹ x` with `σ_i = max(s_i,

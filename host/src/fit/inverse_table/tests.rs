@@ -1,5 +1,6 @@
 //! Tests of the tables and their proof: closed forms, interval bounds against finite differences.
 
+use super::proof::interval_bounds;
 use super::*;
 use firmware::basis;
 
