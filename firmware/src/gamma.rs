@@ -9,13 +9,14 @@ use crate::{basis, Saturation, Scalar};
 /// `Γ(η) = offset + Σ_j μ_j B(η; c_j) = offset + η Σ_j w_j / ((1 - η) + c_j η)`, with `w_j = μ_j c_j`.
 ///
 /// The slices are borrowed so that the same code serves `const` tables on the target and fitted
-/// vectors on the host. `weights` and `odds_ratios` have one entry per basis function.
+/// vectors on the host. `mu` and `odds_ratios` have one entry per basis function; the weights
+/// `w_j = μ_j c_j` are formed where they are used ([`weight`]), so the coefficients are stored once.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Gamma<'a, T> {
     /// `Γ(0)`: the constant basis coefficient minus any intercept of `Lᵀ Z`.
     pub offset: T,
-    /// `w_j = μ_j c_j`.
-    pub weights: &'a [T],
+    /// `μ_j`, the coefficients of `B(·; c_j)`.
+    pub mu: &'a [T],
     /// `c_j > 0`, the odds ratios of the basis functions ([`basis`]).
     pub odds_ratios: &'a [T],
 }
@@ -35,8 +36,8 @@ impl<T: Scalar> Gamma<'_, T> {
     #[must_use]
     pub fn value(&self, eta: T) -> T {
         let mut sum = T::zero();
-        for (&w, &c) in self.weights.iter().zip(self.odds_ratios) {
-            sum += w / basis::denominator(c, eta);
+        for (&m, &c) in self.mu.iter().zip(self.odds_ratios) {
+            sum += weight(m, c) / basis::denominator(c, eta);
         }
         self.offset + eta * sum
     }
@@ -45,9 +46,9 @@ impl<T: Scalar> Gamma<'_, T> {
     #[must_use]
     pub fn slope(&self, eta: T) -> T {
         let mut sum = T::zero();
-        for (&w, &c) in self.weights.iter().zip(self.odds_ratios) {
+        for (&m, &c) in self.mu.iter().zip(self.odds_ratios) {
             let d = basis::denominator(c, eta);
-            sum += w / d / d;
+            sum += weight(m, c) / d / d;
         }
         sum
     }
@@ -95,7 +96,7 @@ impl<T: Scalar> Gamma<'_, T> {
     }
 }
 
-/// `w_j = μ_j c_j`: the weights [`Gamma`] stores, from the coefficients `μ_j` of `B(·; c_j)`.
+/// `w_j = μ_j c_j`: the weight of `1 / ((1 - η) + c_j η)` in [`Gamma`], from the coefficient `μ_j` of `B(·; c_j)`.
 #[must_use]
 pub fn weight<T: Scalar>(mu: T, odds_ratio: T) -> T {
     mu * odds_ratio
@@ -126,10 +127,9 @@ mod tests {
 
     proptest! {
         #[test]
-        fn folded_weights_give_the_same_gamma(mu in proptest::array::uniform8(-3.0f64..3.0), offset in -5.0f64..5.0, eta in 0.0f64..=1.0) {
+        fn the_folded_form_gives_the_same_gamma(mu in proptest::array::uniform8(-3.0f64..3.0), offset in -5.0f64..5.0, eta in 0.0f64..=1.0) {
             let b = odds_ratios();
-            let w: [f64; 8] = core::array::from_fn(|j| weight(mu[j], b[j]));
-            let gamma = Gamma { offset, weights: &w, odds_ratios: &b };
+            let gamma = Gamma { offset, mu: &mu, odds_ratios: &b };
             let reference = value_from_coefficients(offset, &mu, &b, eta);
             prop_assert!((gamma.value(eta) - reference).abs() <= 1e-12 * (1.0 + reference.abs()) * 3000.0);
         }
@@ -138,8 +138,7 @@ mod tests {
         fn inverse_undoes_gamma(mu in proptest::array::uniform8(0.01f64..3.0), offset in -5.0f64..5.0, eta in 0.0f64..=1.0) {
             // Non-negative μ make Γ strictly increasing: every basis slope is positive.
             let b = odds_ratios();
-            let w: [f64; 8] = core::array::from_fn(|j| weight(mu[j], b[j]));
-            let gamma = Gamma { offset, weights: &w, odds_ratios: &b };
+            let gamma = Gamma { offset, mu: &mu, odds_ratios: &b };
             let inverse = gamma.inverse(gamma.value(eta));
             prop_assert_eq!(inverse.saturation, Saturation::Inside);
             // Bisection resolves η to 2^-52; rounding of Γ near η adds |δΓ| / Γ'(η) with Γ' ≥ min μ.
@@ -150,8 +149,7 @@ mod tests {
         #[test]
         fn inverse_in_f32_is_within_f32_resolution(mu in proptest::array::uniform8(0.05f32..3.0), eta in 0.0f32..=1.0) {
             let b: [f32; 8] = core::array::from_fn(|j| odds_ratios()[j] as f32);
-            let w: [f32; 8] = core::array::from_fn(|j| weight(mu[j], b[j]));
-            let gamma = Gamma { offset: 0.5f32, weights: &w, odds_ratios: &b };
+            let gamma = Gamma { offset: 0.5f32, mu: &mu, odds_ratios: &b };
             let inverse = gamma.inverse(gamma.value(eta));
             let tolerance = 1e-6 + 64.0 * f32::EPSILON * (0.5 + mu.iter().sum::<f32>()) / gamma.slope(eta);
             prop_assert!((inverse.eta - eta).abs() <= tolerance, "{} vs {eta}", inverse.eta);
@@ -162,10 +160,9 @@ mod tests {
     fn slope_is_the_derivative_of_value() {
         let b = odds_ratios();
         let mu = [0.3, -0.1, 0.7, 0.2, 1.0, -0.05, 0.4, 0.01];
-        let w: [f64; 8] = core::array::from_fn(|j| weight(mu[j], b[j]));
         let gamma = Gamma {
             offset: 1.0,
-            weights: &w,
+            mu: &mu,
             odds_ratios: &b,
         };
         for k in 1..100 {
@@ -179,10 +176,10 @@ mod tests {
     #[test]
     fn saturates_visibly_outside_the_range() {
         let b = [1.0, 4.0];
-        let w = [1.0, 4.0];
+        let mu = [1.0, 1.0];
         let gamma = Gamma {
             offset: -1.0,
-            weights: &w,
+            mu: &mu,
             odds_ratios: &b,
         };
         // Γ(0) = -1, Γ(1) = -1 + 1/1 + 4/4 = 1.

@@ -25,10 +25,6 @@ pub struct FittedMap {
     pub mu: Vec<f64>,
     /// Odds ratios `c_j` of the basis functions.
     pub odds_ratios: Vec<f64>,
-    /// `w_j = μ_j c_j`, what the firmware evaluates.
-    pub weights: Vec<f64>,
-    /// `Γ(0)` of the firmware form, `μ₀ - c`.
-    pub offset: f64,
     /// Smallest target value on the learning windows.
     pub r_min: f64,
     /// Largest target value on the learning windows.
@@ -54,15 +50,9 @@ impl FittedMap {
         odds_ratios: Vec<f64>,
         (r_min, r_max): (f64, f64),
     ) -> Result<Self, TableError> {
-        let weights: Vec<f64> = mu
-            .iter()
-            .zip(&odds_ratios)
-            .map(|(&m, &b)| firmware::gamma::weight(m, b))
-            .collect();
-        let offset = mu_constant - intercept;
         let exact = Gamma {
-            offset,
-            weights: &weights,
+            offset: mu_constant - intercept,
+            mu: &mu,
             odds_ratios: &odds_ratios,
         };
         let table = match InverseTable::certify(&exact, &gains, (r_min, r_max), RELATIVE_TOLERANCE) {
@@ -78,8 +68,6 @@ impl FittedMap {
             mu_constant,
             mu,
             odds_ratios,
-            weights,
-            offset,
             r_min,
             r_max,
             table,
@@ -89,8 +77,8 @@ impl FittedMap {
     /// `Γ` in the firmware's form (`Γ(η) - c`, so that it is compared with `Lᵀ Z` alone).
     pub fn gamma(&self) -> Gamma<'_, f64> {
         Gamma {
-            offset: self.offset,
-            weights: &self.weights,
+            offset: self.mu_constant - self.intercept,
+            mu: &self.mu,
             odds_ratios: &self.odds_ratios,
         }
     }

@@ -68,26 +68,26 @@ mod tests {
     #[test]
     fn a_decreasing_gamma_is_refused() {
         // Γ(η) = 2η - 3B(η; c = 4) has Γ'(0) = 2 - 12 < 0 (w = μ c).
-        let (w, b) = ([2.0, -12.0], [1.0, 4.0]);
+        let (mu, b) = ([2.0, -3.0], [1.0, 4.0]);
         let gamma = firmware::Gamma {
             offset: 0.0,
-            weights: &w,
+            mu: &mu,
             odds_ratios: &b,
         };
         assert!(matches!(check_strictly_increasing(&gamma), Err(NotMonotone { .. })));
         // A dip that only a fine grid sees: the slope is negative on a sliver of width 2e-5 at η = 1.
-        let (w, b) = ([1.0, -1e-9], [1.0, 1e-5]);
+        let (mu, b) = ([1.0, -1e-4], [1.0, 1e-5]);
         let gamma = firmware::Gamma {
             offset: 0.0,
-            weights: &w,
+            mu: &mu,
             odds_ratios: &b,
         };
         assert!(gamma.slope(0.5) > 0.0 && gamma.slope(0.9999) > 0.0);
         assert!(matches!(check_strictly_increasing(&gamma), Err(NotMonotone { .. })));
-        let (w, b) = ([1.0, 2.0], [1.0, 4.0]);
+        let (mu, b) = ([1.0, 0.5], [1.0, 4.0]);
         let gamma = firmware::Gamma {
             offset: 0.0,
-            weights: &w,
+            mu: &mu,
             odds_ratios: &b,
         };
         assert!(check_strictly_increasing(&gamma).is_ok());

@@ -8,7 +8,10 @@
 //! `λ ⊙ (G x - g) = 0`, which is what the KKT checks of `identify` use.
 
 use clarabel::algebra::CscMatrix;
-use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
+use clarabel::solver::{
+    DefaultSettingsBuilder, DefaultSettingsBuilderError, DefaultSolver, IPSolver, SolverError, SolverStatus,
+    SupportedConeT,
+};
 use nalgebra::DMatrix;
 
 /// The problem data (dense; `P` symmetric positive semidefinite).
@@ -37,7 +40,7 @@ pub struct Solution {
     /// Multipliers of `G x ≥ g` (non-negative).
     pub lambda: Vec<f64>,
     /// Clarabel's status (`Solved` or `AlmostSolved`).
-    pub status: String,
+    pub status: SolverStatus,
     /// Interior-point iterations.
     pub iterations: u32,
     /// Clarabel's own solve time, in seconds.
@@ -45,20 +48,23 @@ pub struct Solution {
 }
 
 /// Why the QP has no usable solution.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Debug, thiserror::Error)]
 pub enum QpError {
     /// The constraints cannot all hold.
-    #[error("the QP is infeasible (Clarabel: {0})")]
-    Infeasible(String),
+    #[error("the QP is infeasible (Clarabel: {0:?})")]
+    Infeasible(SolverStatus),
     /// The objective is unbounded below.
-    #[error("the QP is unbounded (Clarabel: {0})")]
-    Unbounded(String),
+    #[error("the QP is unbounded (Clarabel: {0:?})")]
+    Unbounded(SolverStatus),
     /// Clarabel stopped without a solution (iteration limit, numerical trouble).
-    #[error("Clarabel stopped without a solution: {0}")]
-    NotSolved(String),
-    /// Clarabel refused the data.
+    #[error("Clarabel stopped without a solution: {0:?}")]
+    NotSolved(SolverStatus),
+    /// Clarabel refused the settings.
+    #[error("Clarabel refused the settings: {0}")]
+    Settings(#[from] DefaultSettingsBuilderError),
+    /// Clarabel refused the problem data.
     #[error("Clarabel rejected the problem data: {0}")]
-    Setup(String),
+    Setup(#[from] SolverError),
 }
 
 /// Column-compressed copy of `matrix`, keeping only the upper triangle when `upper` is set.
@@ -93,11 +99,7 @@ pub fn solve(problem: &Problem) -> Result<Solution, QpError> {
     if mg > 0 {
         cones.push(SupportedConeT::NonnegativeConeT(mg));
     }
-    let settings = DefaultSettingsBuilder::default()
-        .verbose(false)
-        .max_iter(500)
-        .build()
-        .map_err(|e| QpError::Setup(format!("{e:?}")))?;
+    let settings = DefaultSettingsBuilder::default().verbose(false).max_iter(500).build()?;
     let mut solver = DefaultSolver::new(
         &csc(&problem.p, true),
         &problem.q,
@@ -105,12 +107,11 @@ pub fn solve(problem: &Problem) -> Result<Solution, QpError> {
         &b,
         &cones,
         settings,
-    )
-    .map_err(|e| QpError::Setup(format!("{e:?}")))?;
+    )?;
     solver.solve();
     let s = &solver.solution;
-    let status = format!("{:?}", s.status);
-    match s.status {
+    let status = s.status;
+    match status {
         SolverStatus::Solved | SolverStatus::AlmostSolved => Ok(Solution {
             x: s.x.clone(),
             nu: s.z[..me].iter().map(|z| -z).collect(),

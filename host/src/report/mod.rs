@@ -141,7 +141,7 @@ pub fn table(report: &Report<'_>) -> String {
     for t in &report.targets {
         let _ = writeln!(
             s,
-            "| {} | {:.4} | {:.4} | {:.4} | {:.4} | {:.3} | {:.1} % | {} | {} | {} / {} | {} | {} | {} |",
+            "| {} | {:.4} | {:.4} | {:.4} | {:.4} | {:.3} | {:.1} % | {:?} | {} | {} / {} | {} | {} | {} |",
             t.name,
             t.rmse_learning,
             t.rmse_validation,

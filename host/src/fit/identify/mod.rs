@@ -38,8 +38,8 @@ mod reduce;
 
 use reduce::{accumulate, linear_floor, solve_upper, Columns, Reduced, TargetRange};
 
+use clarabel::solver::SolverStatus;
 use firmware::basis;
-use firmware::gamma::weight as basis_weight;
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
@@ -63,7 +63,7 @@ const ACTIVE_TOLERANCE: f64 = 1e-4;
 const COLLAPSE_FRACTION: f64 = 0.9;
 
 /// Why a map could not be fitted.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, thiserror::Error)]
 pub enum FitError {
     /// The target takes a single value on the learning data, so `η` is undefined.
     #[error("the target is constant ({value}) on the learning windows")]
@@ -94,8 +94,9 @@ pub enum FitError {
 /// How the QP went, for the report.
 #[derive(Clone, Debug, Serialize)]
 pub struct Diagnostics {
-    /// Clarabel's status of the last solve.
-    pub status: String,
+    /// Clarabel's status of the last solve (`Solved` or `AlmostSolved`).
+    #[serde(serialize_with = "as_debug_text")]
+    pub status: SolverStatus,
     /// Interior-point iterations, summed over refinement rounds.
     pub iterations: u32,
     /// Clarabel's solve time, summed over rounds, in seconds.
@@ -135,6 +136,11 @@ pub struct Certificate {
     pub lambda: Vec<f64>,
     /// Multiplier of the `paper` equality.
     pub nu: Option<f64>,
+}
+
+/// Clarabel's status as its name (`"Solved"`), for the JSON report.
+fn as_debug_text<S: serde::Serializer>(status: &SolverStatus, serializer: S) -> Result<S::Ok, S::Error> {
+    serializer.serialize_str(&format!("{status:?}"))
 }
 
 /// A fitted target: the map, the linear floor on the same data, and how the solve went.
@@ -184,14 +190,9 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
     let intercept = if with_constant { 0.0 } else { scale * l_scaled[n_z] };
     let mu_constant = if with_constant { scale * mu[0] } else { 0.0 };
     let mu_basis: Vec<f64> = mu.iter().skip(usize::from(with_constant)).map(|m| scale * m).collect();
-    let weights: Vec<f64> = mu_basis
-        .iter()
-        .zip(&odds_ratios)
-        .map(|(&m, &c)| basis_weight(m, c))
-        .collect();
     let min_slope = check_strictly_increasing(&firmware::Gamma {
         offset: mu_constant - intercept,
-        weights: &weights,
+        mu: &mu_basis,
         odds_ratios: &odds_ratios,
     })?;
     let map = FittedMap::new(
@@ -217,7 +218,7 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
         .filter(|&&eta| columns.slope(eta, mu) - epsilon <= ACTIVE_TOLERANCE * epsilon)
         .count();
     let diagnostics = Diagnostics {
-        status: solved.status.clone(),
+        status: solved.status,
         iterations: solved.iterations,
         solve_time_s: solved.solve_time,
         constraints: solved.grid.len(),
@@ -252,7 +253,7 @@ struct Solved {
     grid: Vec<f64>,
     lambda: Vec<f64>,
     nu: Option<f64>,
-    status: String,
+    status: SolverStatus,
     iterations: u32,
     solve_time: f64,
     rounds: usize,

@@ -3,6 +3,7 @@
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(x > y)` is deliberate: a NaN must fail the check.
 
+use firmware::gamma::weight;
 use firmware::Gamma;
 
 use super::{TableError, MAX_DEPTH, MAX_SEGMENTS, ROUNDING_MARGIN, SEARCHED_BOUND_DEPTH};
@@ -42,10 +43,10 @@ pub(super) fn nodes_and_bound(
 pub(super) fn node_error(gamma: &Gamma<'_, f64>, min_slope: f64) -> f64 {
     let size: f64 = gamma.offset.abs()
         + gamma
-            .weights
+            .mu
             .iter()
             .zip(gamma.odds_ratios)
-            .map(|(w, c)| (w / c).abs())
+            .map(|(&m, &c)| (weight(m, c) / c).abs())
             .sum::<f64>();
     2f64.powi(-52) + 64.0 * f64::EPSILON * size / min_slope
 }
@@ -105,7 +106,8 @@ pub(super) struct Sup {
 pub(super) fn interval_bounds(gamma: &Gamma<'_, f64>, a: f64, b: f64) -> (f64, f64) {
     let (mut slope_low, mut slope_size) = (0.0, 0.0);
     let (mut bend_low, mut bend_high, mut bend_size) = (0.0, 0.0, 0.0);
-    for (&w, &c) in gamma.weights.iter().zip(gamma.odds_ratios) {
+    for (&m, &c) in gamma.mu.iter().zip(gamma.odds_ratios) {
+        let w = weight(m, c);
         let (da, db) = (firmware::basis::denominator(c, a), firmware::basis::denominator(c, b));
         let (d_low, d_high) = (da.min(db), da.max(db));
         // w / d²: monotone in d.

@@ -4,10 +4,10 @@ use super::proof::interval_bounds;
 use super::*;
 use firmware::basis;
 
-fn gamma_of<'a>(weights: &'a [f64], odds_ratios: &'a [f64], offset: f64) -> Gamma<'a, f64> {
+fn gamma_of<'a>(mu: &'a [f64], odds_ratios: &'a [f64], offset: f64) -> Gamma<'a, f64> {
     Gamma {
         offset,
-        weights,
+        mu,
         odds_ratios,
     }
 }
@@ -17,8 +17,7 @@ fn interval_bounds_enclose_the_derivatives_of_a_mixed_sign_gamma() {
     // Weights of both signs (cancelling terms), as Example 1's x1 has.
     let c: Vec<f64> = basis::paper_odds_ratios(5, 0.5).collect();
     let mu = [-0.62, 0.52, -0.29, 0.08, 0.56, -0.35, 0.12, -0.012];
-    let w: Vec<f64> = mu.iter().zip(&c).map(|(m, c)| m * c).collect();
-    let gamma = gamma_of(&w, &c, 0.0);
+    let gamma = gamma_of(&mu, &c, 0.0);
     for k in 0..50 {
         let (a, b) = (k as f64 / 50.0, (k + 1) as f64 / 50.0);
         let (slope_low, bend_high) = interval_bounds(&gamma, a, b);
@@ -53,8 +52,8 @@ fn knots_follow_the_closed_form_for_a_single_bent_basis_function() {
     // Γ = B(η; c): φ(v) = v / (c - (c - 1) v) on [0, 1], so |φ''| = 2|c-1|c / (c - (c-1)v)³ and
     // the uniform-knot bound needs K = ⌈sqrt(max|φ''| / (8 tol))⌉ segments.
     let c = 4.0;
-    let weights = [c];
-    let gamma = gamma_of(&weights, &weights, 0.0);
+    let (mu, odds_ratios) = ([1.0], [c]);
+    let gamma = gamma_of(&mu, &odds_ratios, 0.0);
     let tol = 1e-4;
     let table = InverseTable::certify(&gamma, &[1.0], (0.0, 1.0), tol).unwrap();
     let max_phi2: f64 = 2.0 * (c - 1.0) * c / 1.0; // at v = 1, c - (c-1) = 1
@@ -72,7 +71,7 @@ fn knots_follow_the_closed_form_for_a_single_bent_basis_function() {
 #[test]
 fn a_decreasing_gamma_cannot_be_certified() {
     // Γ'(η) = 2 - 12/(1 + 3η)² < 0 near η = 0.
-    let gamma = gamma_of(&[2.0, -12.0], &[1.0, 4.0], 0.0);
+    let gamma = gamma_of(&[2.0, -3.0], &[1.0, 4.0], 0.0);
     assert!(matches!(
         InverseTable::certify(&gamma, &[1.0], (0.0, 1.0), RELATIVE_TOLERANCE),
         Err(TableError::NotIncreasing { .. })
@@ -84,8 +83,8 @@ fn a_steep_inverse_falls_back_to_searched_knots_that_meet_the_closed_form() {
     // Γ = B(η; c = e^12): max φ'' = 2c(c - 1) ≈ 5e10, so uniform knots would need
     // K ≈ sqrt(5e10 / 8e-4) ≈ 8·10⁶ segments; knots placed by the curvature need a few hundred.
     let c = 12f64.exp();
-    let weights = [c];
-    let gamma = gamma_of(&weights, &weights, 0.0);
+    let (mu, odds_ratios) = ([1.0], [c]);
+    let gamma = gamma_of(&mu, &odds_ratios, 0.0);
     assert!(matches!(
         InverseTable::uniform(&gamma, &[1.0], (0.0, 1.0), RELATIVE_TOLERANCE),
         Err(TableError::TooManySegments {
@@ -127,8 +126,8 @@ fn a_steep_inverse_falls_back_to_searched_knots_that_meet_the_closed_form() {
 fn a_table_beyond_the_segment_limit_is_refused() {
     // The same Γ at a tolerance of 1e-9: the searched knots grow as tolerance^(-1/2), past MAX_SEGMENTS.
     let c = 12f64.exp();
-    let weights = [c];
-    let gamma = gamma_of(&weights, &weights, 0.0);
+    let (mu, odds_ratios) = ([1.0], [c]);
+    let gamma = gamma_of(&mu, &odds_ratios, 0.0);
     match InverseTable::certify(&gamma, &[1.0], (0.0, 1.0), 1e-9) {
         Err(TableError::TooManySegments { limit }) => assert_eq!(limit, MAX_SEGMENTS),
         other => panic!("{:?}", other.map(|t| t.segments.len())),
