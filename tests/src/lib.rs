@@ -1,7 +1,6 @@
 //! Shared helpers of the integration tests: the shipped specs and designs built from them.
 
 pub mod on_target;
-pub mod tolerance;
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};

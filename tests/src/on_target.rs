@@ -7,6 +7,9 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
+use firmware::{Estimate, Saturation};
+use host::emit::precision::compare;
+
 use crate::workspace_root;
 
 /// Why the on-target measurements could not be made.
@@ -444,7 +447,7 @@ fn recorded_rows(result: &host::fit::DesignResult) -> Vec<host::recording::Row> 
 }
 
 /// Compares the target's estimates of design `name` with the host's f64 library estimates on the
-/// same recorded sequence, within [`crate::tolerance::tolerance`]; returns the largest `|target - host|`.
+/// same recorded sequence, by [`host::emit::precision::compare`]; returns the largest `|target - host|`.
 pub fn compare_with_library(name: &str, measured: &DesignMeasurement) -> Result<f64, String> {
     let path = crate::shipped_specs()
         .into_iter()
@@ -484,30 +487,27 @@ pub fn compare_with_library(name: &str, measured: &DesignMeasurement) -> Result<
             .zip(result.targets.iter().map(|t| &t.fit.map))
             .enumerate()
         {
-            let library = fitted.estimate(z);
-            let value = f64::from(f32::from_bits(*bits));
             let table = fitted
                 .table
                 .as_ref()
                 .ok_or_else(|| format!("{name}: target {t} has no table"))?;
-            let (tolerance, decidable) = crate::tolerance::tolerance(table, z);
-            let difference = (value - library.value).abs();
-            if difference > tolerance {
-                return Err(format!(
-                    "{name} sample {k} target {t}: target {value} vs host {} (> {tolerance:e})",
-                    library.value
-                ));
-            }
-            let library_flag = match library.saturation {
-                firmware::Saturation::Low => 'L',
-                firmware::Saturation::Inside => 'I',
-                firmware::Saturation::High => 'H',
+            let saturation = match flag {
+                'L' => Saturation::Low,
+                'I' => Saturation::Inside,
+                'H' => Saturation::High,
+                other => {
+                    return Err(format!(
+                        "{name} sample {k} target {t}: unknown saturation flag {other:?}"
+                    ))
+                }
             };
-            if decidable && *flag != library_flag {
-                return Err(format!(
-                    "{name} sample {k} target {t}: saturation {flag} on the target, {library_flag} on the host"
-                ));
-            }
+            let on_target = Estimate {
+                value: f32::from_bits(*bits),
+                saturation,
+            };
+            let difference = compare(table, z, on_target, fitted.estimate(z))
+                .map_err(|mismatch| format!("{name} sample {k} target {t}: target vs host: {mismatch}"))?
+                .difference;
             largest = largest.max(difference);
         }
     }

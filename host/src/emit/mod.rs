@@ -11,6 +11,8 @@
 pub mod families;
 pub mod precision;
 
+use precision::{check_f32, F32Tables};
+
 pub use families::{families, FamilyError, FamilyModule};
 
 use std::path::Path;
@@ -277,6 +279,8 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
                 target: target.name.clone(),
             });
         };
+        // Rounded once: these f32 values are checked against the f64 map, then printed.
+        let rounded = F32Tables::new(table);
         for data in [
             &result.validation,
             &DataSet {
@@ -284,22 +288,23 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
                 horizon: design.map.horizon,
             },
         ] {
-            crate::emit::precision::check_f32(table, data).map_err(|mismatch| EmitError::NotReproducibleInF32 {
+            check_f32(table, &rounded, data).map_err(|mismatch| EmitError::NotReproducibleInF32 {
                 target: target.name.clone(),
                 mismatch,
             })?;
         }
         let what = |field: &str| format!("target `{}` {field}", target.name);
         let upper = target.name.to_uppercase();
-        let segments = table
+        let widen = |values: &[f32]| values.iter().map(|&v| f64::from(v)).collect::<Vec<f64>>();
+        let segments = rounded
             .segments
             .iter()
             .enumerate()
             .map(|(k, [a, b])| {
                 Ok(format!(
                     "    [{}, {}],",
-                    f32_literal(&what(&format!("segments[{k}].a")), *a)?,
-                    f32_literal(&what(&format!("segments[{k}].b")), *b)?
+                    f32_literal(&what(&format!("segments[{k}].a")), f64::from(*a))?,
+                    f32_literal(&what(&format!("segments[{k}].b")), f64::from(*b))?
                 ))
             })
             .collect::<Result<Vec<_>, EmitError>>()?;
@@ -313,18 +318,18 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
             rmse: format!("{:.4}", t.validation.map.rmse),
             max_error: format!("{:.4}", t.validation.map.max_error),
             linear_rmse: format!("{:.4}", t.validation.linear.rmse),
-            gains: literal_block(&what("gains"), &table.gains, 4)?,
-            offset: f32_literal(&what("offset"), table.offset)?,
+            gains: literal_block(&what("gains"), &widen(&rounded.gains), 4)?,
+            offset: f32_literal(&what("offset"), f64::from(rounded.offset))?,
             segments: segments.join("\n"),
             segment_count: table.segments.len(),
             knot_count: table.segments.len() + 1,
-            starts: match &table.starts {
+            starts: match &rounded.starts {
                 None => None,
-                Some(starts) => Some(literal_block(&what("starts"), starts, 4)?),
+                Some(starts) => Some(literal_block(&what("starts"), &widen(starts), 4)?),
             },
-            t_max: f32_literal(&what("t_max"), table.t_max())?,
-            r_min: f32_literal(&what("r_min"), table.r_min)?,
-            r_max: f32_literal(&what("r_max"), table.r_max)?,
+            t_max: f32_literal(&what("t_max"), f64::from(rounded.t_max))?,
+            r_min: f32_literal(&what("r_min"), f64::from(rounded.r_min))?,
+            r_max: f32_literal(&what("r_max"), f64::from(rounded.r_max))?,
             proven_bound: format!("{:.2e}", table.proven_bound),
             sampled_error: format!("{:.2e}", table.sampled_error),
         });

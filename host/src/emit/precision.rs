@@ -21,7 +21,7 @@
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(x <= y)` is deliberate: a NaN must fail the check.
 
-use firmware::{Knots, TargetMap};
+use firmware::{Estimate, Knots, Saturation, TargetMap};
 
 use crate::data::DataSet;
 use crate::fit::inverse_table::InverseTable;
@@ -66,13 +66,20 @@ fn f64_map(table: &InverseTable) -> TargetMap<'_, f64> {
 
 /// The f32 tables of a map, exactly as `emit` prints them (every literal round-trips to these bits).
 pub struct F32Tables {
-    gains: Vec<f32>,
-    offset: f32,
-    starts: Option<Vec<f32>>,
-    segments: Vec<[f32; 2]>,
-    t_max: f32,
-    r_min: f32,
-    r_max: f32,
+    /// The scaled gains.
+    pub gains: Vec<f32>,
+    /// Where the dot product starts.
+    pub offset: f32,
+    /// The left knots of a searched table.
+    pub starts: Option<Vec<f32>>,
+    /// `(a_k, b_k)`.
+    pub segments: Vec<[f32; 2]>,
+    /// The end of the table.
+    pub t_max: f32,
+    /// The estimate below the table.
+    pub r_min: f32,
+    /// The estimate above it.
+    pub r_max: f32,
 }
 
 impl F32Tables {
@@ -109,42 +116,72 @@ impl F32Tables {
     }
 }
 
-/// An f32 evaluation that left the bound.
+/// An f32 evaluation that left the bound, or whose decidable saturation flag differs.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("in f32 the map gives {f32_value} where f64 gives {f64_value} (allowed difference {tolerance:e})")]
+#[error("in f32 the map gives {f32_value} ({f32_saturation:?}) where f64 gives {f64_value} ({f64_saturation:?}) (allowed difference {tolerance:e})")]
 pub struct F32Mismatch {
     /// The f32 estimate.
     pub f32_value: f64,
+    /// Its saturation flag.
+    pub f32_saturation: Saturation,
     /// The f64 estimate.
     pub f64_value: f64,
+    /// Its saturation flag.
+    pub f64_saturation: Saturation,
     /// The bound.
     pub tolerance: f64,
 }
 
-/// Evaluates `table` in f32 (rounded to [`F32Tables`], firmware code) and in f64 on every window of
-/// `data`; returns the largest `|difference| / tolerance`, or the first window beyond the bound, or
-/// whose decidable saturation flag differs.
-pub fn check_f32(table: &InverseTable, data: &DataSet) -> Result<f64, F32Mismatch> {
-    let rounded_tables = F32Tables::new(table);
-    let (single, double) = (rounded_tables.as_firmware(), f64_map(table));
+/// How an f32 estimate agreed with the f64 one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Agreement {
+    /// `|f32 - f64|`.
+    pub difference: f64,
+    /// `|f32 - f64| / tolerance` (at most 1).
+    pub ratio: f64,
+    /// Whether the saturation flags were compared (`false` within rounding of an edge of the table).
+    pub flag_decided: bool,
+}
+
+/// The one comparison of an f32 estimate (`single`: generated tables, the chip, the host's f32 run)
+/// with the f64 library estimate (`double`) of `table`'s map on the regressor `z`: within
+/// [`tolerance`], and the same saturation flag unless `t` is within rounding of an edge.
+pub fn compare(
+    table: &InverseTable,
+    z: &[f64],
+    single: Estimate<f32>,
+    double: Estimate<f64>,
+) -> Result<Agreement, F32Mismatch> {
+    let (tolerance, decidable) = tolerance(table, z);
+    let difference = (f64::from(single.value) - double.value).abs();
+    if !(difference <= tolerance) || (decidable && single.saturation != double.saturation) {
+        return Err(F32Mismatch {
+            f32_value: f64::from(single.value),
+            f32_saturation: single.saturation,
+            f64_value: double.value,
+            f64_saturation: double.saturation,
+            tolerance,
+        });
+    }
+    Ok(Agreement {
+        difference,
+        ratio: difference / tolerance,
+        flag_decided: decidable,
+    })
+}
+
+/// Evaluates `table` in f32 (`rounded`, firmware code) and in f64 on every window of `data`; returns
+/// the largest `|difference| / tolerance`, or the first window that fails [`compare`].
+pub fn check_f32(table: &InverseTable, rounded: &F32Tables, data: &DataSet) -> Result<f64, F32Mismatch> {
+    let (single, double) = (rounded.as_firmware(), f64_map(table));
     let (mut z, mut z32) = (Vec::new(), Vec::new());
     let mut worst: f64 = 0.0;
     for window in data.windows() {
         data.regressor(window, &mut z);
         z32.clear();
         z32.extend(z.iter().map(|&v| v as f32));
-        let (exact, rounded) = (double.estimate(&z), single.estimate(&z32));
-        let (tolerance, decidable) = tolerance(table, &z);
-        let difference = (f64::from(rounded.value) - exact.value).abs();
-        let flags_differ = decidable && exact.saturation != rounded.saturation;
-        if !(difference <= tolerance) || flags_differ {
-            return Err(F32Mismatch {
-                f32_value: f64::from(rounded.value),
-                f64_value: exact.value,
-                tolerance,
-            });
-        }
-        worst = worst.max(difference / tolerance);
+        let agreement = compare(table, &z, single.estimate(&z32), double.estimate(&z))?;
+        worst = worst.max(agreement.ratio);
     }
     Ok(worst)
 }
