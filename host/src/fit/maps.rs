@@ -2,6 +2,8 @@
 //! code so that the host's "library estimate" is the very computation the target runs: the certified
 //! table ([`InverseTable`]). The exact `Γ` and its bisection stay beside it as the reference.
 
+use std::sync::Arc;
+
 use firmware::{Estimate, Gamma, Saturation, TargetMap};
 use serde::Serialize;
 
@@ -24,7 +26,7 @@ pub struct FittedMap {
     /// Coefficients `μ_j` of `B(·; c_j)`.
     pub mu: Vec<f64>,
     /// Odds ratios `c_j` of the basis functions.
-    pub odds_ratios: Vec<f64>,
+    pub odds_ratios: Arc<[f64]>,
     /// Smallest target value on the learning windows.
     pub r_min: f64,
     /// Largest target value on the learning windows.
@@ -47,7 +49,7 @@ impl FittedMap {
         intercept: f64,
         mu_constant: f64,
         mu: Vec<f64>,
-        odds_ratios: Vec<f64>,
+        odds_ratios: Arc<[f64]>,
         (r_min, r_max): (f64, f64),
     ) -> Result<Self, TableError> {
         let exact = Gamma {

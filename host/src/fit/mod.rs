@@ -55,10 +55,12 @@ pub fn run(design: &Design, progress: &ProgressBar) -> Result<DesignResult, Spec
     progress.set_message(format!("{}: simulating validation runs", design.name));
     let validation = data::validation_set(design)?;
     progress.inc(1);
+    let odds_ratios = identify::basis_of(&design.map);
     let mut targets = Vec::new();
     for (index, target) in design.targets.iter().enumerate() {
         progress.set_message(format!("{}: fitting {}", design.name, target.name));
-        let fit = identify::fit(&learning, index, &target.name, &design.map).map_err(|e| explain(design, index, e))?;
+        let fit = identify::fit(&learning, index, &target.name, &design.map, &odds_ratios)
+            .map_err(|e| explain(design, index, e))?;
         let result = TargetResult {
             index,
             learning: evaluate(&learning, index, &fit),

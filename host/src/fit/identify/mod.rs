@@ -41,6 +41,8 @@ use reduce::{accumulate, linear_floor, solve_upper, Columns, Reduced, TargetRang
 use clarabel::solver::SolverStatus;
 use firmware::basis;
 use nalgebra::{DMatrix, DVector};
+use std::sync::Arc;
+
 use serde::Serialize;
 
 use crate::data::DataSet;
@@ -156,16 +158,27 @@ pub struct Fit {
     pub certificate: Certificate,
 }
 
-/// Fits target `target` of `data` with `settings`.
-pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSettings) -> Result<Fit, FitError> {
-    let odds_ratios: Vec<f64> = basis::paper_odds_ratios(settings.nm, settings.beta).collect();
+/// The odds ratios `c_j` of the paper's basis for `settings` (`n_m`, `β`): computed once per design
+/// and shared by every target's map.
+pub fn basis_of(settings: &MapSettings) -> Arc<[f64]> {
+    basis::paper_odds_ratios(settings.nm, settings.beta).collect()
+}
+
+/// Fits target `target` of `data` with `settings` on the basis `odds_ratios` ([`basis_of`]).
+pub fn fit(
+    data: &DataSet,
+    target: usize,
+    target_name: &str,
+    settings: &MapSettings,
+    odds_ratios: &Arc<[f64]>,
+) -> Result<Fit, FitError> {
     let range = TargetRange::gather(data, target)?;
-    let r_factor = accumulate(data, target, &range, &odds_ratios);
+    let r_factor = accumulate(data, target, &range, odds_ratios);
     let linear = linear_floor(&r_factor, &range)?;
     let with_constant = settings.normalisation == Normalisation::Paper;
     let reduced = Reduced::new(&r_factor, range.scales.len(), with_constant, range.windows);
     let columns = Columns {
-        odds_ratios: &odds_ratios,
+        odds_ratios: odds_ratios,
         with_constant,
     };
 
@@ -193,7 +206,7 @@ pub fn fit(data: &DataSet, target: usize, target_name: &str, settings: &MapSetti
     let min_slope = check_strictly_increasing(&firmware::Gamma {
         offset: mu_constant - intercept,
         mu: &mu_basis,
-        odds_ratios: &odds_ratios,
+        odds_ratios: odds_ratios,
     })?;
     let map = FittedMap::new(
         target_name.to_owned(),

@@ -1,6 +1,11 @@
 //! Tests of the identification: KKT conditions, invariances, recovery of a map of the model's class.
 
 use super::*;
+
+/// [`super::fit`] with the basis of `settings`, as [`crate::fit::run`] builds it once per design.
+fn fit(data: &DataSet, target: usize, name: &str, settings: &MapSettings) -> Result<Fit, FitError> {
+    super::fit(data, target, name, settings, &basis_of(settings))
+}
 use crate::data::{Run, Window};
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
