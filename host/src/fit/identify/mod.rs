@@ -178,7 +178,7 @@ pub fn fit(
     let with_constant = settings.normalisation == Normalisation::Paper;
     let reduced = Reduced::new(&r_factor, range.scales.len(), with_constant, range.windows);
     let columns = Columns {
-        odds_ratios: odds_ratios,
+        odds_ratios,
         with_constant,
     };
 
@@ -206,7 +206,7 @@ pub fn fit(
     let min_slope = check_strictly_increasing(&firmware::Gamma {
         offset: mu_constant - intercept,
         mu: &mu_basis,
-        odds_ratios: odds_ratios,
+        odds_ratios,
     })?;
     let map = FittedMap::new(
         target_name.to_owned(),
