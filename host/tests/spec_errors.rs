@@ -1,6 +1,29 @@
 //! Every error the spec validator can return, reached from TOML text by one table.
 //!
-//! PLACEHOLDER: summary written after the run.
+//! Each case edits a shipped spec (every find-string must occur exactly once, so a changed spec cannot
+//! turn a case into a no-op), parses it and checks the error's field (written by hand from reading
+//! `host/src/spec/`, not computed), that the message names the file, the field and a fix, and what the
+//! fix mentions. All failing cases are reported together.
+//!
+//! **Error sites.** `host/src/spec/` builds a [`SpecError`] at 42 places: 2 in `mod.rs` (`load` cannot
+//! read the file; `parse` gets a TOML/serde error), 21 `self.err(` in `validate.rs` and 19 in
+//! `validate_model.rs` (not counted: the body of `Validator::err` itself, and `Design::error`, which
+//! `data` and `fit` use after validation; `tests/bad_input.rs` covers those). Some sites are shared, so
+//! the table counts branches, one per (site, caller or cause), 72 in all:
+//! - `identifier` (invalid, reserved) × its 6 callers (states, inputs, parameters, definitions,
+//!   outputs, targets): 12; `declare`'s "declared twice" × its 5 kinds of name: 5;
+//! - `keys_among` × `model.derivatives`, `learning.grid`, `learning.inputs`, `scenario.x0`: 4;
+//!   `positive` × `sampling.tau`, `map.beta`, `map.epsilon`: 3;
+//! - expression errors of `expr.rs` (`Syntax`, `AmbiguousMinus`, `UnknownVariable`) × the fields that
+//!   hold an expression (`model.definitions[i].expr`, `model.derivatives.*`, `model.outputs[i].expr`,
+//!   through `model.rs` and `validate_model.rs`; `targets[i].expr` through `validate.rs`): 12;
+//! - `parse` (line, document): 2; every other site once: 34.
+//!
+//! **Reached: all 42 sites, 71 of the 72 branches.** The one unreachable branch is the `"(document)"`
+//! fallback of `parse` for a TOML error without a span: with toml 1.2, every syntax error carries the
+//! span of the unexpected text, and the root deserializer gives the whole document's span to any
+//! serde error that has none (a missing top-level field is reported at `(line 1)`, see
+//! `toml_missing_top_level_field`).
 
 use std::collections::HashSet;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -73,7 +96,168 @@ const fn case(name: &'static str, base: Base, edits: &'static [Edit], field: Fie
 
 #[rustfmt::skip]
 const CASES: &[Case] = &[
-    case("scratch", Vdp, &[Swap("tau = 0.1", "tau = 0.0")], Exact("sampling.tau"), "positive"),
+    // ---- mod.rs `load`: the file cannot be read.
+    case("unreadable_file", NoFile, &[], Exact("(file)"), "existing, readable"),
+
+    // ---- mod.rs `parse`: TOML or serde refuses the text (the line is counted by hand in vanderpol.toml).
+    case("toml_syntax", Vdp, &[Swap("tau = 0.1", "tau = = 0.1")], Exact("(line 20)"), "TOML"),
+    case("toml_unterminated_string", Vdp, &[Swap("tau = 0.1", "tau = \"0.1")], Prefix("(line "), "TOML"),
+    case("toml_duplicate_key", Vdp, &[Swap("tau = 0.1", "tau = 0.1\ntau = 0.2")], Exact("(line 21)"), "TOML"),
+    case("toml_unknown_field", Vdp, &[Swap("tau = 0.1", "taux = 0.1")], Exact("(line 20)"), "TOML"),
+    case("toml_unknown_table", Vdp, &[Swap("[map]", "[maps]")], Exact("(line 35)"), "TOML"),
+    case("toml_missing_field", Vdp, &[Swap("trajectories = 64\n", "")], Exact("(line 30)"), "TOML"),
+    // A missing top-level field is reported with the span of the whole document: line 1. The fallback
+    // field "(document)", for an error without a span, is unreachable with toml 1.2 (see the file's doc).
+    case("toml_missing_top_level_field", Vdp, &[Swap("name = \"vanderpol\"\n", "")], Exact("(line 1)"), "TOML"),
+    case("toml_wrong_type", Vdp, &[Swap("substeps = 10 ", "substeps = -1 ")], Exact("(line 22)"), "TOML"),
+    case("toml_unknown_normalisation", Vdp, &[Swap("normalisation = \"intercept\"", "normalisation = \"none\"")], Exact("(line 40)"), "TOML"),
+
+    // ---- validate.rs `design`: the design name.
+    case("name_upper_case", Vdp, &[Swap("name = \"vanderpol\"", "name = \"VanDerPol\"")], Exact("name"), "lower-case"),
+    case("name_rust_keyword", Vdp, &[Swap("name = \"vanderpol\"", "name = \"match\"")], Exact("name"), "not a Rust keyword"),
+    case("name_digit_first", Vdp, &[Swap("name = \"vanderpol\"", "name = \"1vdp\"")], Exact("name"), "starting with a letter"),
+
+    // ---- validate_model.rs `model`: no state, no output.
+    case("states_empty", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = []")], Exact("model.states"), "states = ["),
+    case("outputs_empty", Vdp, &[
+        Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\noutputs = []"),
+        Swap("[[model.outputs]]\nname = \"y\"\nexpr = \"x1 + x2\"\n", ""),
+        Swap("noise_variance = 0.2\n", ""),
+    ], Exact("model.outputs"), "[[model.outputs]]"),
+
+    // ---- validate.rs `identifier` (invalid, reserved) and validate_model.rs `declare` (declared twice), for
+    // each kind of name declared in the model.
+    case("state_invalid_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x 2\"]")], Exact("model.states[1]"), "letters, digits and `_`"),
+    case("state_reserved_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"time\"]")], Exact("model.states[1]"), "reserved: time, run, saturated"),
+    case("state_declared_twice", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x1\"]")], Exact("model.states[1]"), "its own name"),
+    case("input_invalid_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\ninputs = [\"u.1\"]")], Exact("model.inputs[0]"), "letters, digits and `_`"),
+    case("input_reserved_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\ninputs = [\"saturated\"]")], Exact("model.inputs[0]"), "reserved"),
+    case("input_named_like_a_state", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\ninputs = [\"x2\"]")], Exact("model.inputs[0]"), "its own name"),
+    // Parameters are a TOML table: checked in key order (upper case first), after states and inputs.
+    case("parameter_invalid_name", E05, &[Swap("I = 1.0 ", "\"I 2\" = 1.0\nI = 1.0 ")], Exact("model.parameters.I 2"), "letters, digits and `_`"),
+    case("parameter_reserved_name", E05, &[Swap("I = 1.0 ", "run = 1.0\nI = 1.0 ")], Exact("model.parameters.run"), "reserved"),
+    case("parameter_named_like_a_state", E05, &[Swap("I = 1.0 ", "X = 1.0\nI = 1.0 ")], Exact("model.parameters.X"), "its own name"),
+    case("definition_invalid_name", E05, &[Swap("name = \"mu\"", "name = \"mu'\"")], Exact("model.definitions[0].name"), "letters, digits and `_`"),
+    case("definition_reserved_name", E05, &[Swap("name = \"death\"", "name = \"time\"")], Exact("model.definitions[1].name"), "reserved"),
+    case("definition_named_like_a_parameter", E05, &[Swap("name = \"mu\"", "name = \"k_s\"")], Exact("model.definitions[0].name"), "its own name"),
+    case("output_invalid_name", Vdp, &[Swap("name = \"y\"", "name = \"y-meas\"")], Exact("model.outputs[0].name"), "letters, digits and `_`"),
+    case("output_reserved_name", Vdp, &[Swap("name = \"y\"", "name = \"time\"")], Exact("model.outputs[0].name"), "reserved"),
+    case("output_named_like_a_definition", E05, &[Swap("name = \"L\"", "name = \"mu\"")], Exact("model.outputs[1].name"), "its own name"),
+
+    // ---- validate_model.rs `model`: values of parameters and noise variances.
+    case("parameter_nan", E05, &[Swap("mu_m = 0.2 ", "mu_m = nan ")], Exact("model.parameters.mu_m"), "finite number"),
+    case("parameter_infinite", Vdp, &[Swap("[model.derivatives]", "[model.parameters]\nk = -inf\n\n[model.derivatives]")], Exact("model.parameters.k"), "finite number"),
+    case("noise_variance_negative", Vdp, &[Swap("noise_variance = 0.2", "noise_variance = -0.2")], Exact("model.outputs[0].noise_variance"), "variance"),
+    case("noise_variance_nan", E05, &[Swap("noise_variance = 20.0", "noise_variance = nan")], Exact("model.outputs[1].noise_variance"), "0 for none"),
+
+    // ---- validate.rs `keys_among` for `model.derivatives`, and validate_model.rs: a derivative missing.
+    case("derivative_of_no_state", Vdp, &[Swap("x1 = \"-x2\"", "x1 = \"-x2\"\nx3 = \"0\"")], Exact("model.derivatives.x3"), "one derivative per state of `model.states` (x1, x2)"),
+    case("derivative_missing", Vdp, &[Swap("x1 = \"-x2\"\n", "")], Exact("model.derivatives.x1"), "x1 = \"…\""),
+
+    // ---- model.rs `compile` (through validate_model.rs `model`): each expression field × each ExprError of expr.rs
+    // (Syntax, AmbiguousMinus, UnknownVariable).
+    case("definition_expr_syntax", E05, &[Swap("expr = \"mu_m*S/(k_s + S)\"", "expr = \"mu_m*S/(k_s + S\"")], Exact("model.definitions[0].expr"), "exmex syntax"),
+    case("definition_expr_minus_before_power", E05, &[Swap("expr = \"k_d*exp(-k_p/P)\"", "expr = \"k_d*exp(-k_p^2/P)\"")], Exact("model.definitions[1].expr"), "-(k_p^…)"),
+    // A definition may only use the definitions before it.
+    case("definition_expr_uses_a_later_definition", E05, &[Swap("expr = \"mu_m*S/(k_s + S)\"", "expr = \"mu_m*S/(k_s + S) + death\"")], Exact("model.definitions[0].expr"), "declare `death`"),
+    case("derivative_expr_syntax", Vdp, &[Swap("x1 = \"-x2\"", "x1 = \"-x2 * (\"")], Exact("model.derivatives.x1"), "exmex syntax"),
+    case("derivative_expr_minus_before_power", Vdp, &[Swap("x1 = \"-x2\"", "x1 = \"-x2^3\"")], Exact("model.derivatives.x1"), "-(x2^…)"),
+    case("derivative_expr_unknown_variable", E05, &[Swap("- death*P\"", "- decay*P\"")], Exact("model.derivatives.P"), "declare `decay`"),
+    case("output_expr_syntax", Vdp, &[Swap("expr = \"x1 + x2\"", "expr = \"x1 +\"")], Exact("model.outputs[0].expr"), "exmex syntax"),
+    case("output_expr_minus_before_power", Vdp, &[Swap("expr = \"x1 + x2\"", "expr = \"x1 + -x2^2\"")], Exact("model.outputs[0].expr"), "-(x2^…)"),
+    case("output_expr_unknown_variable", E05, &[Swap("*X*P\"", "*X*Q\"")], Exact("model.outputs[1].expr"), "declare `Q`"),
+
+    // ---- validate.rs `positive` (τ) and `design` (substeps).
+    case("tau_zero", Vdp, &[Swap("tau = 0.1", "tau = 0.0")], Exact("sampling.tau"), "positive"),
+    case("tau_negative", E05, &[Swap("tau = 0.2", "tau = -0.2")], Exact("sampling.tau"), "positive"),
+    case("tau_nan", Vdp, &[Swap("tau = 0.1", "tau = nan")], Exact("sampling.tau"), "positive"),
+    case("substeps_zero", Vdp, &[Swap("substeps = 10 ", "substeps = 0 ")], Exact("sampling.substeps"), "1 or more"),
+
+    // ---- validate.rs `map` (and `positive` for β and ε).
+    case("horizon_zero", Vdp, &[Swap("horizon = 10 ", "horizon = 0 ")], Exact("map.horizon"), "set `map.horizon`"),
+    case("nm_zero", Vdp, &[Swap("nm = 5 ", "nm = 0 ")], Exact("map.nm"), "set `map.nm`"),
+    case("beta_zero", Vdp, &[Swap("beta = 0.5 ", "beta = 0.0 ")], Exact("map.beta"), "positive"),
+    case("beta_negative", E05, &[Swap("beta = 1.0", "beta = -1.0")], Exact("map.beta"), "positive"),
+    case("beta_degenerate_basis", Vdp, &[Swap("beta = 0.5 ", "beta = 8.0 ")], Exact("map.beta"), "β·(n_m - 1) ≤ 30"),
+    case("epsilon_zero", Vdp, &[Swap("epsilon = 0.01 ", "epsilon = 0.0 ")], Exact("map.epsilon"), "positive"),
+    case("epsilon_infinite", E05, &[Swap("epsilon = 0.01", "epsilon = inf")], Exact("map.epsilon"), "positive"),
+    case("monotonicity_grid_too_small", Vdp, &[Swap("monotonicity_grid = 201", "monotonicity_grid = 2")], Exact("map.monotonicity_grid"), "201 or more"),
+
+    // ---- validate_model.rs `learning`: the horizon against the run length (blamed on `map.horizon`).
+    case("learning_runs_not_longer_than_horizon", Vdp, &[Swap("samples = 100\nseed = 1\n", "samples = 10\nseed = 1\n")], Exact("map.horizon"), "raise `learning.samples`"),
+
+    // ---- validate.rs `keys_among` for `learning.grid`, and validate_model.rs `learning`: an axis missing.
+    case("grid_axis_of_no_state", Vdp, &[Swap("grid.x2 = { min = -5.0, max = 5.0, points = 4 }", "grid.x2 = { min = -5.0, max = 5.0, points = 4 }\ngrid.x3 = { value = 0.0 }")], Exact("learning.grid.x3"), "one axis per state (x1, x2)"),
+    case("grid_axis_missing", Vdp, &[Swap("grid.x2 = { min = -5.0, max = 5.0, points = 4 }\n", "")], Exact("learning.grid.x2"), "grid.x2 = { min"),
+
+    // ---- validate.rs `keys_among` for `learning.inputs`, and validate_model.rs `learning`: input profiles.
+    case("input_profile_of_no_input", Vdp, &[Swap("grid.x2 = { min = -5.0, max = 5.0, points = 4 }", "grid.x2 = { min = -5.0, max = 5.0, points = 4 }\ninputs.u = { min = 0.0, max = 1.0, hold = 5 }")], Exact("learning.inputs.u"), "one profile per input"),
+    case("input_profile_missing", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\ninputs = [\"u\"]")], Exact("learning.inputs.u"), "inputs.u = { min"),
+    case("input_profile_inverted", Vdp, &[
+        Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\ninputs = [\"u\"]"),
+        Swap("grid.x2 = { min = -5.0, max = 5.0, points = 4 }", "grid.x2 = { min = -5.0, max = 5.0, points = 4 }\ninputs.u = { min = 1.0, max = 0.0, hold = 5 }"),
+    ], Exact("learning.inputs.u.max"), "min ≤ max"),
+    // The bad bound is `max`, and the error names it (it named `min` until this test found it).
+    case("input_profile_infinite_max", Vdp, &[
+        Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\ninputs = [\"u\"]"),
+        Swap("grid.x2 = { min = -5.0, max = 5.0, points = 4 }", "grid.x2 = { min = -5.0, max = 5.0, points = 4 }\ninputs.u = { min = 0.0, max = inf, hold = 5 }"),
+    ], Exact("learning.inputs.u.max"), "finite bounds"),
+    case("input_profile_infinite_min", Vdp, &[
+        Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\ninputs = [\"u\"]"),
+        Swap("grid.x2 = { min = -5.0, max = 5.0, points = 4 }", "grid.x2 = { min = -5.0, max = 5.0, points = 4 }\ninputs.u = { min = -inf, max = 1.0, hold = 5 }"),
+    ], Exact("learning.inputs.u.min"), "finite bounds"),
+    case("input_profile_hold_zero", Vdp, &[
+        Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\ninputs = [\"u\"]"),
+        Swap("grid.x2 = { min = -5.0, max = 5.0, points = 4 }", "grid.x2 = { min = -5.0, max = 5.0, points = 4 }\ninputs.u = { min = 0.0, max = 1.0, hold = 0 }"),
+    ], Exact("learning.inputs.u.hold"), "1 or more"),
+
+    // ---- validate_model.rs `axis`.
+    case("axis_value_nan", E05, &[Swap("grid.X = { value = 0.5 }", "grid.X = { value = nan }")], Exact("learning.grid.X.value"), "finite value"),
+    case("axis_value_infinite", E2, &[Swap("grid.X = { value = 2.0 }", "grid.X = { value = inf }")], Exact("learning.grid.X.value"), "finite value"),
+    case("axis_span_overflows", Vdp, &[Swap("min = -5.0, max = 5.0", "min = -1e308, max = 1e308")], Exact("learning.grid.x2.max"), "finite bounds"),
+    // The bad bound is `max`, and the error names it (it named `min` until this test found it).
+    case("axis_max_nan", Vdp, &[Swap("min = -5.0, max = 5.0", "min = -5.0, max = nan")], Exact("learning.grid.x2.max"), "finite bounds"),
+    case("axis_min_infinite", Vdp, &[Swap("min = -5.0, max = 5.0", "min = -inf, max = 5.0")], Exact("learning.grid.x2.min"), "finite bounds"),
+    case("axis_inverted", Vdp, &[Swap("min = -5.0, max = 5.0", "min = 5.0, max = -5.0")], Exact("learning.grid.x2.max"), "swap"),
+    case("axis_empty", Vdp, &[Swap("min = -2.0, max = 2.0", "min = 2.0, max = 2.0")], Exact("learning.grid.x1.max"), "{ value = … }"),
+    case("axis_zero_points", Vdp, &[Swap("max = 2.0, points = 4", "max = 2.0, points = 0")], Exact("learning.grid.x1.points"), "2 or more"),
+    case("axis_one_point", E05, &[Swap("max = 5.0, points = 5", "max = 5.0, points = 1")], Exact("learning.grid.S.points"), "hold the state fixed"),
+    case("axis_range_and_value", Vdp, &[Swap("max = 2.0, points = 4 }", "max = 2.0, points = 4, value = 1.0 }")], Exact("learning.grid.x1"), "{ value = … }"),
+    case("axis_without_points", Vdp, &[Swap("min = -5.0, max = 5.0, points = 4 }", "min = -5.0, max = 5.0 }")], Exact("learning.grid.x2"), "points = …"),
+    case("axis_empty_table", E05, &[Swap("grid.X = { value = 0.5 }", "grid.X = {}")], Exact("learning.grid.X"), "min = …, max = …, points = …"),
+
+    // ---- validate.rs `validation`.
+    case("validation_no_trajectory", Vdp, &[Swap("trajectories = 64", "trajectories = 0")], Exact("validation.trajectories"), "1 or more"),
+    case("validation_runs_shorter_than_horizon", Vdp, &[Swap("trajectories = 64\nsamples = 100", "trajectories = 64\nsamples = 9")], Exact("validation.samples"), "≥ `map.horizon`"),
+
+    // ---- validate.rs `targets` (and `identifier` for their names).
+    case("targets_empty", Vdp, &[
+        Swap("name = \"vanderpol\"", "name = \"vanderpol\"\ntargets = []"),
+        Swap("[[targets]]\nname = \"x1\"\nexpr = \"x1\"\n\n[[targets]]\nname = \"x2\"\nexpr = \"x2\"\n", ""),
+    ], Exact("targets"), "[[targets]]"),
+    case("target_invalid_name", Vdp, &[Swap("name = \"x1\"\nexpr", "name = \"x 1\"\nexpr")], Exact("targets[0].name"), "letters, digits and `_`"),
+    case("target_reserved_name", Vdp, &[Swap("name = \"x2\"\nexpr", "name = \"run\"\nexpr")], Exact("targets[1].name"), "reserved"),
+    case("target_declared_twice", Vdp, &[Swap("name = \"x2\"\nexpr", "name = \"x1\"\nexpr")], Exact("targets[1].name"), "its own name"),
+    case("target_expr_syntax", Vdp, &[Swap("expr = \"x2\"", "expr = \"x2)\"")], Exact("targets[1].expr"), "exmex syntax"),
+    case("target_expr_minus_before_power", Vdp, &[Swap("name = \"x1\"\nexpr = \"x1\"", "name = \"x1\"\nexpr = \"-x1^2\"")], Exact("targets[0].expr"), "-(x1^…)"),
+    case("target_expr_unknown_variable", E05, &[Swap("expr = \"mu*X\"", "expr = \"mu*Y\"")], Exact("targets[1].expr"), "declare `Y`"),
+
+    // ---- validate.rs `family`.
+    case("family_name_upper_case", E05, &[Swap("name = \"ecoli\"", "name = \"E_coli\"")], Exact("family.name"), "lower-case identifier"),
+    case("family_name_rust_keyword", E2, &[Swap("name = \"ecoli\"", "name = \"mod\"")], Exact("family.name"), "not a Rust keyword"),
+    case("family_name_is_the_design_name", E2, &[Swap("name = \"ecoli\"", "name = \"ecoli_x0_2\"")], Exact("family.name"), "differs from every design name"),
+    case("family_name_is_the_design_name_appended", Vdp, &[Append("\n[family]\nname = \"vanderpol\"\noutput = \"y\"\nvalue = 1.0\n")], Exact("family.name"), "differs from every design name"),
+    case("family_output_is_a_state", E05, &[Swap("output = \"X_meas\"", "output = \"X\"")], Exact("family.output"), "X_meas, L"),
+    case("family_output_unknown", Vdp, &[Append("\n[family]\nname = \"vdp\"\noutput = \"z\"\nvalue = 1.0\n")], Exact("family.output"), "outputs: y"),
+    case("family_value_nan", E05, &[Swap("output = \"X_meas\"\nvalue = 0.5", "output = \"X_meas\"\nvalue = nan")], Exact("family.value"), "value of the output"),
+    case("family_value_infinite", E2, &[Swap("output = \"X_meas\"\nvalue = 2.0", "output = \"X_meas\"\nvalue = -inf")], Exact("family.value"), "value of the output"),
+
+    // ---- validate.rs `keys_among` for `scenario.x0`, and `scenario`.
+    case("scenario_x0_of_no_state", Vdp, &[Swap("x0 = { x1 = 2.0, x2 = 0.5 }", "x0 = { x1 = 2.0, x2 = 0.5, x3 = 0.0 }")], Exact("scenario.x0.x3"), "one initial value per state (x1, x2)"),
+    case("scenario_x0_nan", Vdp, &[Swap("x0 = { x1 = 2.0, x2 = 0.5 }", "x0 = { x1 = nan, x2 = 0.5 }")], Exact("scenario.x0.x1"), "finite initial value"),
+    case("scenario_x0_missing", Vdp, &[Swap("x0 = { x1 = 2.0, x2 = 0.5 }", "x0 = { x1 = 2.0 }")], Exact("scenario.x0.x2"), "`x2 = …` to `scenario.x0`"),
+    case("scenario_shorter_than_horizon", Vdp, &[Swap("samples = 101", "samples = 9")], Exact("scenario.samples"), "≥ `map.horizon`"),
+    case("scenario_shorter_than_horizon_ecoli", E05, &[Swap("samples = 40\nseed = 13", "samples = 2\nseed = 13")], Exact("scenario.samples"), "≥ `map.horizon`"),
 ];
 
 /// Applies the case's edits; each find-string must occur exactly once in the text it edits.
@@ -197,4 +381,36 @@ fn the_shipped_specs_are_valid() {
         }
     }
     assert!(count >= 3, "{count} specs in {}", dir.display());
+}
+
+/// exmex reads `E`, `e`, `PI`, `TAU` as constants and `sin`, `exp`, … as functions, so a parameter
+/// with one of these names used to be accepted and then silently ignored by every expression using it
+/// (`E*x1` was 2.718·x1, whatever `E` was set to). Such names are refused where they are declared.
+#[test]
+fn names_the_expression_language_reserves_are_refused_where_declared() {
+    for name in ["E", "e", "PI", "TAU", "sin", "exp", "ln"] {
+        let text = VANDERPOL.replacen(
+            "[model.derivatives]",
+            &format!("[model.parameters]\n{name} = 5.0\n\n[model.derivatives]"),
+            1,
+        );
+        assert_ne!(text, VANDERPOL, "the edit must apply");
+        match spec::parse(Path::new("constant.toml"), &text) {
+            Ok(_) => panic!("a parameter named `{name}` was accepted"),
+            Err(e) => {
+                assert_eq!(e.field, format!("model.parameters.{name}"), "{e}");
+                assert!(
+                    e.problem.contains("expression language") && e.fix.contains("rename"),
+                    "{e}"
+                );
+            }
+        }
+    }
+    // The check is not over-eager: names that merely contain an operator's name are fine.
+    let text = VANDERPOL.replacen(
+        "[model.derivatives]",
+        "[model.parameters]\nE0 = 5.0\nexponent = 2.0\n\n[model.derivatives]",
+        1,
+    );
+    spec::parse(Path::new("constant.toml"), &text).unwrap();
 }

@@ -160,6 +160,15 @@ fn tokens(text: &str) -> Vec<Token<'_>> {
     out
 }
 
+/// Whether `name` is a function or constant of the expression language (`sin`, `exp`, `E`, `PI`,
+/// `TAU`, …, as `exmex`'s own operator table lists them): a state, input, parameter or definition of
+/// that name would be read as the operator, silently.
+pub fn is_operator_name(name: &str) -> bool {
+    <exmex::FloatOpsFactory<f64> as exmex::MakeOperators<f64>>::make()
+        .iter()
+        .any(|op| op.repr() == name)
+}
+
 /// Refuses `-x^2`, `-(a+b)^2`, `-sin(x)^2`: exmex binds a unary minus tighter than `^`, so these
 /// would silently mean `(-x)^2`. `-(x^2)` and `0 - x^2` say what is meant.
 fn reject_minus_before_power(text: &str) -> Result<(), ExprError> {

@@ -35,6 +35,13 @@ impl Validator {
                 format!("rename it (reserved: {})", RESERVED_NAMES.join(", ")),
             ));
         }
+        if crate::spec::expr::is_operator_name(name) {
+            return Err(self.err(
+                field,
+                format!("`{name}` is a function or constant of the expression language: expressions would read it as that, not as this name"),
+                "rename it (e.g. `E` → `E0`, `PI` → `p`, `exp` → `expo`)",
+            ));
+        }
         if valid {
             Ok(())
         } else {

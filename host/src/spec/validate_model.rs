@@ -153,8 +153,10 @@ impl Validator {
                     )
                 })?;
                 if !(p.min.is_finite() && p.max.is_finite() && p.min <= p.max && (p.max - p.min).is_finite()) {
+                    // Name the bound to change: `min` only when it is the one that is not finite.
+                    let bound = if p.min.is_finite() { "max" } else { "min" };
                     return Err(self.err(
-                        format!("{field}.min"),
+                        format!("{field}.{bound}"),
                         format!("the range [{}, {}] is not a finite interval", p.min, p.max),
                         "give finite bounds with min ≤ max",
                     ));
@@ -191,8 +193,9 @@ impl Validator {
             )),
             (Some(min), Some(max), Some(points), None) => {
                 if !(min.is_finite() && max.is_finite() && (max - min).is_finite()) {
+                    let bound = if min.is_finite() { "max" } else { "min" };
                     return Err(self.err(
-                        format!("{field}.min"),
+                        format!("{field}.{bound}"),
                         format!("the bounds [{min}, {max}] are not finite"),
                         "give finite bounds",
                     ));
