@@ -31,10 +31,11 @@
 //!    ([`emit::precision`]).
 //! 5. [`report`]: JSON and Markdown reports and the paper's figures.
 //!
-//! [`generate`] runs the whole job (`host gen`); [`recording`] applies fitted maps to CSV recordings
-//! (`host estimate`); [`output`] writes files atomically.
+//! [`generate`] runs the whole job (`host gen`); [`commands`] the `simulate` and `estimate` jobs, with
+//! [`recording`] reading and writing CSV recordings; [`output`] writes files atomically.
 #![warn(missing_docs)]
 
+pub mod commands;
 pub mod data;
 pub mod emit;
 pub mod fit;

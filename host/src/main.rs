@@ -6,11 +6,8 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
-use rand::SeedableRng;
 
-use anyhow::Context;
-use host::recording;
-use host::{data, fit, generate, output, spec};
+use host::{commands, fit, generate, spec};
 
 /// Off-line moving-horizon observer design: simulate, fit r = Γ⁻¹(Lᵀ Z), validate, report, emit Rust.
 #[derive(Parser)]
@@ -180,37 +177,12 @@ fn simulate(
     output: &Path,
 ) -> anyhow::Result<()> {
     let design = choice.load()?;
-    let scenario = design.scenario.clone();
-    let missing = |what: &str| anyhow::anyhow!("design `{}` has no `[scenario]`: give --{what}", design.name);
-    let x0 = x0
-        .or_else(|| scenario.as_ref().map(|s| s.x0.clone()))
-        .ok_or_else(|| missing("x0"))?;
-    if x0.len() != design.model.states.len() {
-        anyhow::bail!(
-            "--x0 has {} values; the states are {}",
-            x0.len(),
-            design.model.states.join(", ")
-        );
-    }
-    let samples = samples
-        .or(scenario.as_ref().map(|s| s.samples))
-        .ok_or_else(|| missing("samples"))?;
-    let seed = seed
-        .or(scenario.as_ref().map(|s| s.seed))
-        .ok_or_else(|| missing("seed"))?;
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-    let run = data::simulate_run(&design, &x0, samples, &mut rng, "scenario")?;
-    output::write_atomically(output, recording::run_csv(&design, &run).as_bytes())
-        .with_context(|| output.display().to_string())
+    commands::simulate(&design, &commands::Simulation { x0, samples, seed }, output)?;
+    Ok(())
 }
 
 fn estimate(choice: &DesignChoice, input: &Path, output: &Path) -> anyhow::Result<()> {
     let design = choice.load()?;
-    let rows = recording::read(&design, input)?;
-    let result = fit::run(&design, &progress_bar(&design))?;
-    let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
-    let estimates = recording::estimate(&maps, design.map.horizon, &rows);
-    let names: Vec<&str> = design.targets.iter().map(|t| t.name.as_str()).collect();
-    output::write_atomically(output, recording::estimates_csv(&names, &estimates).as_bytes())
-        .with_context(|| output.display().to_string())
+    commands::estimate(&design, input, output, &progress_bar(&design))?;
+    Ok(())
 }

@@ -1,0 +1,104 @@
+//! The `simulate` and `estimate` jobs as library functions (the command line only parses arguments
+//! and prints): one run of a design as CSV, and the library estimate over a recorded CSV file.
+//! Nothing is written unless the whole job succeeded.
+
+use std::path::{Path, PathBuf};
+
+use indicatif::ProgressBar;
+use rand::SeedableRng;
+
+use crate::recording::{self, RecordingError};
+use crate::spec::{Design, SpecError};
+use crate::{data, fit, output};
+
+/// Why `simulate` or `estimate` did not run.
+#[derive(Debug, thiserror::Error)]
+pub enum CommandError {
+    /// The spec is invalid, or its simulation or fit failed.
+    #[error(transparent)]
+    Spec(#[from] SpecError),
+    /// The recorded file cannot be used.
+    #[error(transparent)]
+    Recording(#[from] RecordingError),
+    /// A value the design's `[scenario]` would give is missing.
+    #[error("design `{design}` has no `[scenario]`: give --{option}")]
+    NoScenario {
+        /// The design.
+        design: String,
+        /// The command-line option to give instead.
+        option: &'static str,
+    },
+    /// The initial state has the wrong length.
+    #[error("--x0 has {given} values; the states are {states}")]
+    StateCount {
+        /// Values given.
+        given: usize,
+        /// The design's states.
+        states: String,
+    },
+    /// The output file could not be written.
+    #[error("{}: {source}", path.display())]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+}
+
+/// What `simulate` runs: each `None` falls back on the design's `[scenario]`.
+#[derive(Clone, Debug, Default)]
+pub struct Simulation {
+    /// Initial state, in state order.
+    pub x0: Option<Vec<f64>>,
+    /// Samples.
+    pub samples: Option<usize>,
+    /// Seed of the noise and inputs.
+    pub seed: Option<u64>,
+}
+
+/// Simulates one run of `design` and writes it to `output` as CSV (time, states, outputs, inputs).
+pub fn simulate(design: &Design, run: &Simulation, output: &Path) -> Result<(), CommandError> {
+    let scenario = design.scenario.as_ref();
+    let missing = |option| CommandError::NoScenario {
+        design: design.name.clone(),
+        option,
+    };
+    let x0 = run
+        .x0
+        .clone()
+        .or_else(|| scenario.map(|s| s.x0.clone()))
+        .ok_or_else(|| missing("x0"))?;
+    if x0.len() != design.model.states.len() {
+        return Err(CommandError::StateCount {
+            given: x0.len(),
+            states: design.model.states.join(", "),
+        });
+    }
+    let samples = run
+        .samples
+        .or(scenario.map(|s| s.samples))
+        .ok_or_else(|| missing("samples"))?;
+    let seed = run.seed.or(scenario.map(|s| s.seed)).ok_or_else(|| missing("seed"))?;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let simulated = data::simulate_run(design, &x0, samples, &mut rng, "scenario")?;
+    write(output, &recording::run_csv(design, &simulated))
+}
+
+/// Fits `design` and writes its library estimates over the recorded file `input` to `output` (see
+/// [`recording`] for the columns).
+pub fn estimate(design: &Design, input: &Path, output: &Path, progress: &ProgressBar) -> Result<(), CommandError> {
+    let rows = recording::read(design, input)?;
+    let result = fit::run(design, progress)?;
+    let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
+    let estimates = recording::estimate(&maps, design.map.horizon, &rows);
+    let names: Vec<&str> = design.targets.iter().map(|t| t.name.as_str()).collect();
+    write(output, &recording::estimates_csv(&names, &estimates))
+}
+
+fn write(path: &Path, text: &str) -> Result<(), CommandError> {
+    output::write_atomically(path, text.as_bytes()).map_err(|source| CommandError::Io {
+        path: path.to_owned(),
+        source,
+    })
+}
