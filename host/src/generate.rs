@@ -1,9 +1,10 @@
 //! The `gen` job as one library function, which the command line, the tests and a design search call:
 //! every spec through the pipeline (spec → data → fit → emit → report), then `generated/src/lib.rs`.
 //!
-//! A design's observer file is written only when its fit, its emission checks (f32 against f64 on
-//! every validation window) and its report and figures all succeeded: a failing design leaves its
-//! previous file in place and the others still run. `lib.rs` then declares every design file present.
+//! All or nothing: every spec is loaded and the names and families of the resulting generated set are
+//! checked before any fit; every design is then fitted, emitted (f32 against f64 on every validation
+//! window) and reported in memory; only when all succeeded are the reports, figures, observer files and
+//! `lib.rs` written. A failure touches no file and names the spec that failed.
 
 use std::path::{Path, PathBuf};
 
@@ -46,8 +47,18 @@ pub enum GenerateError {
         /// Why.
         source: std::io::Error,
     },
-    /// Some designs failed (each was reported); nothing was written for them.
-    #[error("{failed} of {total} design(s) failed; nothing was written for them")]
+    /// Two specs of one run name the same design.
+    #[error("{} and {}: both specs name the design `{name}`: rename one", first.display(), second.display())]
+    DuplicateName {
+        /// The design name.
+        name: String,
+        /// One spec.
+        first: PathBuf,
+        /// The other.
+        second: PathBuf,
+    },
+    /// Some designs failed (each was reported); nothing was written.
+    #[error("{failed} of {total} design(s) failed; nothing was written")]
     Failed {
         /// Designs that failed.
         failed: usize,
@@ -135,14 +146,8 @@ pub struct Destinations {
 
 /// What `gen` wrote for one design.
 pub struct Outcome {
-    /// The design.
-    pub design: Design,
-    /// Learning windows (`n_E`).
-    pub learning_windows: usize,
-    /// Validation windows.
-    pub validation_windows: usize,
-    /// The report's table (Markdown).
-    pub table: String,
+    /// The design's name.
+    pub name: String,
     /// The design's report folder.
     pub folder: PathBuf,
     /// The report files (JSON, Markdown).
@@ -155,84 +160,146 @@ pub struct Outcome {
     pub changed: bool,
 }
 
-/// Runs `gen` on `specs` (and declares in `lib.rs` every design file present afterwards, with the
-/// families of `specs` and of the shipped specs). `progress` gives each design its progress bar and
-/// `done` hears of each design as it ends. Fails if any design failed.
+/// Runs `gen` on `specs`: every design, then `lib.rs` declaring every design file present afterwards
+/// with the families of `specs` and of the shipped specs. `progress` gives each design its progress bar
+/// and `done` hears of each design as it ends (before anything is written). Writes nothing unless every
+/// design succeeded.
 pub fn run(
     specs: &[PathBuf],
     to: &Destinations,
     progress: impl Fn(&Design) -> ProgressBar,
-    mut done: impl FnMut(&Path, Result<&Outcome, &GenerateError>),
-) -> Result<(), GenerateError> {
-    let sources = to.generated.join("src");
-    std::fs::create_dir_all(&sources).map_err(|source| GenerateError::Io {
-        path: sources.clone(),
-        source,
-    })?;
-    let mut failed = 0;
+    mut done: impl FnMut(&Path, Result<&Prepared, &GenerateError>),
+) -> Result<Vec<Outcome>, GenerateError> {
+    // 1. Every spec, the names and the families of the generated set afterwards: before any fit.
+    let mut designs: Vec<(PathBuf, Design)> = Vec::new();
     for spec in specs {
-        match one_design(spec, to, &progress) {
-            Ok(outcome) => done(spec, Ok(&outcome)),
+        let design = spec::load(spec)?;
+        if let Some((first, _)) = designs.iter().find(|(_, d)| d.name == design.name) {
+            return Err(GenerateError::DuplicateName {
+                name: design.name,
+                first: first.clone(),
+                second: spec.clone(),
+            });
+        }
+        designs.push((spec.clone(), design));
+    }
+    let sources = to.generated.join("src");
+    let mut present = present_designs(&sources)?;
+    for (_, design) in &designs {
+        if !present.contains(&design.name) {
+            present.push(design.name.clone());
+        }
+    }
+    let all_specs: Vec<PathBuf> = specs.iter().cloned().chain(shipped_specs()?).collect();
+    let lib = lib_source(&all_specs, &present)?;
+
+    // 2. Fit, emit and report every design in memory.
+    let mut prepared = Vec::new();
+    let mut failed = 0;
+    for (spec, design) in designs {
+        let bar = progress(&design);
+        let one = prepare(design, &spec, &to.reports, &bar);
+        bar.finish_and_clear();
+        match one {
+            Ok(one) => {
+                done(&spec, Ok(&one));
+                prepared.push(one);
+            }
             Err(e) => {
-                done(spec, Err(&e));
+                done(&spec, Err(&e));
                 failed += 1;
             }
         }
     }
-    let present: Vec<String> = std::fs::read_dir(&sources)
-        .map_err(|source| GenerateError::Io {
-            path: sources.clone(),
-            source,
-        })?
-        .filter_map(|e| e.ok()?.file_name().into_string().ok())
-        .filter_map(|f| f.strip_suffix(".rs").map(str::to_owned))
-        .filter(|f| f != "lib")
-        .collect();
-    let all_specs: Vec<PathBuf> = specs.iter().cloned().chain(shipped_specs()?).collect();
-    let lib = lib_source(&all_specs, &present)?;
-    let lib_path = sources.join("lib.rs");
-    output::write_if_changed(&lib_path, &lib).map_err(|source| GenerateError::Io { path: lib_path, source })?;
     if failed > 0 {
         return Err(GenerateError::Failed {
             failed,
             total: specs.len(),
         });
     }
-    Ok(())
+
+    // 3. Write.
+    std::fs::create_dir_all(&sources).map_err(|source| GenerateError::Io {
+        path: sources.clone(),
+        source,
+    })?;
+    let mut outcomes = Vec::new();
+    for one in prepared {
+        outcomes.push(write(one, to)?);
+    }
+    let lib_path = sources.join("lib.rs");
+    output::write_if_changed(&lib_path, &lib).map_err(|source| GenerateError::Io { path: lib_path, source })?;
+    Ok(outcomes)
 }
 
-/// Fits, emits and reports one design; writes its observer file last.
-fn one_design(
-    spec: &Path,
-    to: &Destinations,
-    progress: &impl Fn(&Design) -> ProgressBar,
-) -> Result<Outcome, GenerateError> {
-    let design = spec::load(spec)?;
-    let bar = progress(&design);
-    let emitted = emit_design(design, spec, &bar);
-    bar.finish_and_clear();
-    let Emitted { design, result, source } = emitted?;
-    let report = reporting::report(&design, &result);
-    let folder = to.reports.join(&design.name);
-    let report_files = reporting::write(&report, &folder).map_err(|source| GenerateError::Io {
-        path: folder.clone(),
-        source,
-    })?;
-    let figures = plots::draw(&design, &result, &folder)?;
-    let observer = to.generated.join("src").join(format!("{}.rs", design.name));
-    let changed = output::write_if_changed(&observer, &source).map_err(|source| GenerateError::Io {
-        path: observer.clone(),
-        source,
-    })?;
-    Ok(Outcome {
+/// The design files in `sources` (`<name>.rs` other than `lib.rs`), sorted; none if it does not exist.
+fn present_designs(sources: &Path) -> Result<Vec<String>, GenerateError> {
+    let entries = match std::fs::read_dir(sources) {
+        Ok(entries) => entries,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(source) => {
+            return Err(GenerateError::Io {
+                path: sources.to_owned(),
+                source,
+            })
+        }
+    };
+    let mut names: Vec<String> = entries
+        .filter_map(|e| e.ok()?.file_name().into_string().ok())
+        .filter_map(|f| f.strip_suffix(".rs").map(str::to_owned))
+        .filter(|f| !spec::RESERVED_MODULES.contains(&f.as_str()))
+        .collect();
+    names.sort();
+    Ok(names)
+}
+
+/// One design fitted, emitted and reported, not yet written.
+pub struct Prepared {
+    /// The design, its fit and its observer source.
+    pub emitted: Emitted,
+    /// The report's JSON and Markdown.
+    pub report: (String, String),
+    /// The report's table (Markdown).
+    pub table: String,
+    /// Learning windows (`n_E`).
+    pub learning_windows: usize,
+    /// Validation windows.
+    pub validation_windows: usize,
+    /// Where its report goes.
+    pub folder: PathBuf,
+}
+
+fn prepare(design: Design, spec: &Path, reports: &Path, bar: &ProgressBar) -> Result<Prepared, GenerateError> {
+    let emitted = emit_design(design, spec, bar)?;
+    let report = reporting::report(&emitted.design, &emitted.result);
+    Ok(Prepared {
+        report: reporting::texts(&report),
+        table: reporting::table(&report),
         learning_windows: report.learning.windows,
         validation_windows: report.validation.windows,
-        table: reporting::table(&report),
+        folder: reports.join(&emitted.design.name),
+        emitted,
+    })
+}
+
+/// Writes one prepared design: its report, figures and observer file (last).
+fn write(one: Prepared, to: &Destinations) -> Result<Outcome, GenerateError> {
+    let folder = one.folder;
+    let io = |path: &Path| {
+        let path = path.to_owned();
+        move |source| GenerateError::Io { path, source }
+    };
+    let report_files = reporting::write_texts(&one.report, &folder).map_err(io(&folder))?;
+    let Emitted { design, result, source } = one.emitted;
+    let figures = plots::draw(&design, &result, &folder)?;
+    let observer = to.generated.join("src").join(format!("{}.rs", design.name));
+    let changed = output::write_if_changed(&observer, &source).map_err(io(&observer))?;
+    Ok(Outcome {
+        name: design.name,
         folder,
         report_files,
         figures,
         observer,
         changed,
-        design,
     })
 }

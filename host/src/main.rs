@@ -129,7 +129,8 @@ fn progress_bar(design: &spec::Design) -> ProgressBar {
     }
 }
 
-/// `gen`: every spec through the library's job, a summary per design as it ends.
+/// `gen`: every spec through the library's job, a summary per design as it ends, then what was written
+/// (nothing, if any design failed).
 fn gen(specs: Vec<PathBuf>, reports: PathBuf, generated: PathBuf) -> anyhow::Result<()> {
     let specs = if specs.is_empty() {
         generate::shipped_specs()?
@@ -137,36 +138,39 @@ fn gen(specs: Vec<PathBuf>, reports: PathBuf, generated: PathBuf) -> anyhow::Res
         specs
     };
     let to = generate::Destinations { reports, generated };
-    generate::run(&specs, &to, progress_bar, |spec, outcome| match outcome {
-        Ok(outcome) => print_summary(outcome),
+    let outcomes = generate::run(&specs, &to, progress_bar, |spec, prepared| match prepared {
+        Ok(prepared) => print_summary(prepared),
         Err(error) => eprintln!("error: {}: {error}", spec.display()),
     })?;
+    for outcome in &outcomes {
+        println!(
+            "{}:\n  report: {}\n  figures: {} files in {}\n  observer: {} ({})",
+            outcome.name,
+            outcome.report_files[1].display(),
+            outcome.figures.len(),
+            outcome.folder.display(),
+            outcome.observer.display(),
+            if outcome.changed { "updated" } else { "unchanged" }
+        );
+    }
     Ok(())
 }
 
-/// What a user sees of one design: its settings, the report's table, where the files went.
-fn print_summary(outcome: &generate::Outcome) {
-    let design = &outcome.design;
+/// What a user sees of one design once fitted: its settings and the report's table.
+fn print_summary(prepared: &generate::Prepared) {
+    let design = &prepared.emitted.design;
     println!(
         "{} — {}\n  n_E = {} learning windows, {} validation windows, N = {}, n_m = {}, β = {}, normalisation {:?}\n",
         design.name,
         design.description,
-        outcome.learning_windows,
-        outcome.validation_windows,
+        prepared.learning_windows,
+        prepared.validation_windows,
         design.map.horizon,
         design.map.nm,
         design.map.beta,
         design.map.normalisation
     );
-    print!("{}", outcome.table);
-    println!(
-        "\n  report: {}\n  figures: {} files in {}\n  observer: {} ({})\n",
-        outcome.report_files[1].display(),
-        outcome.figures.len(),
-        outcome.folder.display(),
-        outcome.observer.display(),
-        if outcome.changed { "updated" } else { "unchanged" }
-    );
+    println!("{}", prepared.table);
 }
 
 fn simulate(

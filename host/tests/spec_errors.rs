@@ -116,6 +116,8 @@ const CASES: &[Case] = &[
     case("name_upper_case", Vdp, &[Swap("name = \"vanderpol\"", "name = \"VanDerPol\"")], Exact("name"), "lower-case"),
     case("name_rust_keyword", Vdp, &[Swap("name = \"vanderpol\"", "name = \"match\"")], Exact("name"), "not a Rust keyword"),
     case("name_digit_first", Vdp, &[Swap("name = \"vanderpol\"", "name = \"1vdp\"")], Exact("name"), "starting with a letter"),
+    // `lib` is the crate root of generated/: a design `lib` overwrote it and reported success.
+    case("name_lib", Vdp, &[Swap("name = \"vanderpol\"", "name = \"lib\"")], Exact("name"), "nor `lib`"),
 
     // ---- validate_model.rs `model`: no state, no output.
     case("states_empty", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = []")], Exact("model.states"), "states = ["),

@@ -34,6 +34,14 @@ pub enum EmitError {
         /// Its value.
         value: f64,
     },
+    /// A non-zero value that f32 rounds to zero or to a subnormal (losing its precision).
+    #[error("{what} = {value:e} is below the normal f32 range (smallest {min:e}): the chip would see 0 or a value without precision; rescale it (e.g. change its units)", min = f32::MIN_POSITIVE)]
+    Underflow {
+        /// Which value.
+        what: String,
+        /// Its value.
+        value: f64,
+    },
     /// Two targets would get the same Rust constant name.
     #[error("targets `{first}` and `{second}` both become the constant `{constant}`")]
     NameClash {
@@ -68,6 +76,12 @@ pub fn f32_literal(what: &str, value: f64) -> Result<String, EmitError> {
     let single = value as f32;
     if !single.is_finite() {
         return Err(EmitError::NotFinite {
+            what: what.to_owned(),
+            value,
+        });
+    }
+    if value != 0.0 && (single == 0.0 || single.is_subnormal()) {
+        return Err(EmitError::Underflow {
             what: what.to_owned(),
             value,
         });
@@ -387,7 +401,7 @@ mod tests {
         #[test]
         fn literals_round_trip_to_the_same_f32_bits(bits in any::<u32>()) {
             let value = f32::from_bits(bits);
-            prop_assume!(value.is_finite());
+            prop_assume!(value.is_finite() && !value.is_subnormal()); // subnormals are refused
             let literal = f32_literal("x", value as f64).unwrap();
             prop_assert_eq!(literal.parse::<f32>().unwrap().to_bits(), bits, "{}", literal);
             prop_assert!(literal.contains('.') || literal.contains('e'), "{} is not a float literal", literal);
@@ -398,6 +412,19 @@ mod tests {
     fn comment_text_cannot_end_a_comment() {
         let text = comment_text("line\npub fn injected() {}\r\n");
         assert!(!text.contains('\n') && !text.contains('\r'));
+    }
+
+    #[test]
+    fn values_that_underflow_in_f32_are_refused_and_zero_and_the_smallest_normal_are_not() {
+        for value in [1e-300, -1e-300, 1e-40, f64::from(f32::MIN_POSITIVE) / 2.0] {
+            assert!(
+                matches!(f32_literal("x", value), Err(EmitError::Underflow { .. })),
+                "{value:e}"
+            );
+        }
+        for value in [0.0, -0.0, f64::from(f32::MIN_POSITIVE), 1e-37] {
+            assert!(f32_literal("x", value).is_ok(), "{value:e}");
+        }
     }
 
     #[test]

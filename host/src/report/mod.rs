@@ -207,12 +207,17 @@ pub fn markdown(report: &Report<'_>) -> String {
     s
 }
 
-/// Writes `report.json` and `report.md` into `folder` (each atomically); returns the paths.
-pub fn write(report: &Report<'_>, folder: &Path) -> std::io::Result<Vec<PathBuf>> {
+/// The report as its two files' texts: `report.json` and `report.md`.
+pub fn texts(report: &Report<'_>) -> (String, String) {
+    let json = serde_json::to_string_pretty(report).expect("the report serialises: plain numbers and strings") + "\n";
+    (json, markdown(report))
+}
+
+/// Writes `report.json` and `report.md` (from [`texts`]) into `folder`; returns their paths.
+pub fn write_texts((json, markdown): &(String, String), folder: &Path) -> std::io::Result<Vec<PathBuf>> {
     std::fs::create_dir_all(folder)?;
-    let json = serde_json::to_string_pretty(report).map_err(std::io::Error::other)? + "\n";
     let paths = vec![folder.join("report.json"), folder.join("report.md")];
     write_atomically(&paths[0], json.as_bytes())?;
-    write_atomically(&paths[1], markdown(report).as_bytes())?;
+    write_atomically(&paths[1], markdown.as_bytes())?;
     Ok(paths)
 }

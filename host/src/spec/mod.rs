@@ -207,13 +207,18 @@ impl Design {
     }
 }
 
-/// A lower-case identifier that is not a Rust keyword: usable as a module name in `generated/`.
+/// Module names of `generated/src/` that are not designs: `lib.rs` is the crate root.
+pub const RESERVED_MODULES: &[&str] = &["lib"];
+
+/// A lower-case identifier that is not a Rust keyword nor reserved: usable as a module name in
+/// `generated/`.
 fn is_module_name(name: &str) -> bool {
     name.chars().next().is_some_and(|c| c.is_ascii_lowercase())
         && name
             .chars()
             .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
         && !RUST_KEYWORDS.contains(&name)
+        && !RESERVED_MODULES.contains(&name)
 }
 
 /// Names that would collide with the columns `time`, `run` and `saturated` of recorded CSV files.

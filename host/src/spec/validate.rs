@@ -91,7 +91,7 @@ impl Validator {
             return Err(self.err(
                 "name",
                 format!("`{}` is not a lower-case identifier, or is reserved", raw.name),
-                "use lower-case letters, digits and `_`, starting with a letter, not a Rust keyword (it names a module in generated/)",
+                "use lower-case letters, digits and `_`, starting with a letter, not a Rust keyword nor `lib` (it names a module in generated/)",
             ));
         }
         let model = self.model(&raw.model)?;

@@ -1,0 +1,183 @@
+//! `gen` is all or nothing: names, families and every design are checked before any file is written,
+//! so a failing run leaves `generated/` and the reports exactly as they were.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use host::generate::{self, Destinations, GenerateError};
+use indicatif::ProgressBar;
+
+/// A scratch folder with a copy of the shipped `generated/src` and the specs written into it.
+struct Scratch {
+    root: PathBuf,
+}
+
+impl Scratch {
+    fn new(name: &str) -> Self {
+        let root = std::env::temp_dir().join(format!("host-generate-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&root);
+        let sources = root.join("generated/src");
+        std::fs::create_dir_all(&sources).unwrap();
+        let shipped = Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/src");
+        for entry in std::fs::read_dir(shipped).unwrap() {
+            let path = entry.unwrap().path();
+            std::fs::copy(&path, sources.join(path.file_name().unwrap())).unwrap();
+        }
+        Scratch { root }
+    }
+
+    /// An empty scratch folder (no generated crate yet).
+    fn empty(name: &str) -> Self {
+        let root = std::env::temp_dir().join(format!("host-generate-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&root);
+        std::fs::create_dir_all(&root).unwrap();
+        Scratch { root }
+    }
+
+    /// Writes a shipped spec, edited, as `file`.
+    fn spec(&self, shipped: &str, file: &str, edits: &[(&str, &str)]) -> PathBuf {
+        let mut text =
+            std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("specs/{shipped}.toml")))
+                .unwrap();
+        for (from, to) in edits {
+            assert!(text.contains(from), "`{from}` not in {shipped}.toml");
+            text = text.replacen(from, to, 1);
+        }
+        let path = self.root.join(file);
+        std::fs::write(&path, text).unwrap();
+        path
+    }
+
+    fn destinations(&self) -> Destinations {
+        Destinations {
+            reports: self.root.join("reports"),
+            generated: self.root.join("generated"),
+        }
+    }
+
+    /// Every file under the scratch folder's `generated/` and `reports/`, with its bytes.
+    fn files(&self) -> BTreeMap<PathBuf, Vec<u8>> {
+        fn walk(dir: &Path, into: &mut BTreeMap<PathBuf, Vec<u8>>) {
+            let Ok(entries) = std::fs::read_dir(dir) else { return };
+            for entry in entries {
+                let path = entry.unwrap().path();
+                if path.is_dir() {
+                    walk(&path, into);
+                } else {
+                    into.insert(path.clone(), std::fs::read(&path).unwrap());
+                }
+            }
+        }
+        let mut files = BTreeMap::new();
+        walk(&self.root.join("generated"), &mut files);
+        walk(&self.root.join("reports"), &mut files);
+        files
+    }
+
+    fn run(&self, specs: &[PathBuf]) -> Result<Vec<generate::Outcome>, GenerateError> {
+        generate::run(specs, &self.destinations(), |_| ProgressBar::hidden(), |_, _| {})
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.root);
+    }
+}
+
+#[test]
+fn a_design_that_breaks_its_family_writes_nothing() {
+    // E. coli X0 = 2 with N = 4 no longer shares its family's observer type (N = 3): refused before
+    // its file is rewritten (it used to be rewritten, leaving lib.rs declaring an N = 3 family).
+    let scratch = Scratch::new("family");
+    let spec = scratch.spec("ecoli_x0_2", "ecoli_x0_2.toml", &[("horizon = 3", "horizon = 4")]);
+    let before = scratch.files();
+    match scratch.run(&[spec]) {
+        Err(GenerateError::Family(e)) => assert!(e.to_string().contains("ecoli_x0_2"), "{e}"),
+        other => panic!("expected a family error, got {:?}", other.map(|_| ())),
+    }
+    assert!(scratch.files() == before, "a failed gen changed files");
+}
+
+#[test]
+fn a_design_named_like_a_family_is_refused_before_anything_is_written() {
+    // A design `ecoli` would write ecoli.rs beside the family module `ecoli` of lib.rs.
+    let scratch = Scratch::new("family-name");
+    let spec = scratch.spec(
+        "vanderpol",
+        "ecoli.toml",
+        &[("name = \"vanderpol\"", "name = \"ecoli\"")],
+    );
+    let before = scratch.files();
+    match scratch.run(&[spec]) {
+        Err(GenerateError::Family(e)) => assert!(e.to_string().contains("ecoli"), "{e}"),
+        other => panic!("expected a name clash, got {:?}", other.map(|_| ())),
+    }
+    assert!(scratch.files() == before, "a failed gen changed files");
+}
+
+#[test]
+fn two_specs_naming_one_design_are_refused() {
+    let scratch = Scratch::new("duplicate");
+    let first = scratch.spec("vanderpol", "a.toml", &[]);
+    let second = scratch.spec("vanderpol", "b.toml", &[("beta = 0.5", "beta = 1.0")]);
+    let before = scratch.files();
+    match scratch.run(&[first, second]) {
+        Err(GenerateError::DuplicateName { name, .. }) => assert_eq!(name, "vanderpol"),
+        other => panic!("expected a duplicate name, got {:?}", other.map(|_| ())),
+    }
+    assert!(scratch.files() == before, "a failed gen changed files");
+}
+
+#[test]
+fn one_failing_design_writes_nothing_for_any_design() {
+    // x2's target made constant: the fit refuses it. The other design fits, but nothing is written:
+    // no report, no observer, no lib.rs (it used to write lib.rs even when every spec failed).
+    let scratch = Scratch::empty("one-fails");
+    let good = scratch.spec("vanderpol", "vanderpol.toml", &[]);
+    let bad = scratch.spec(
+        "vanderpol",
+        "constant.toml",
+        &[
+            ("name = \"vanderpol\"", "name = \"constant_target\""),
+            ("expr = \"x2\"", "expr = \"x1 - x1 + 1.0\""),
+        ],
+    );
+    let mut heard = Vec::new();
+    let result = generate::run(
+        &[good, bad.clone()],
+        &scratch.destinations(),
+        |_| ProgressBar::hidden(),
+        |spec, outcome| heard.push((spec.to_owned(), outcome.is_ok())),
+    );
+    assert!(
+        matches!(result, Err(GenerateError::Failed { failed: 1, total: 2 })),
+        "{:?}",
+        result.map(|_| ())
+    );
+    assert_eq!(heard.len(), 2);
+    assert!(heard.contains(&(bad, false)), "the failing spec is named: {heard:?}");
+    assert!(
+        scratch.files().is_empty(),
+        "files written: {:?}",
+        scratch.files().keys().collect::<Vec<_>>()
+    );
+}
+
+#[test]
+fn a_sample_period_that_underflows_in_f32_is_refused_naming_the_field() {
+    // τ = 1e-300 used to be emitted as `SAMPLE_PERIOD: f32 = 0.0` with exit 0.
+    let scratch = Scratch::empty("underflow");
+    let spec = scratch.spec("vanderpol", "vanderpol.toml", &[("tau = 0.1", "tau = 1e-300")]);
+    match scratch.run(&[spec]) {
+        Err(GenerateError::Failed { failed: 1, .. }) => {}
+        other => panic!("expected a failure, got {:?}", other.map(|_| ())),
+    }
+    let design = host::spec::load(&scratch.root.join("vanderpol.toml")).unwrap();
+    let error = match generate::emit_design(design, &scratch.root.join("vanderpol.toml"), &ProgressBar::hidden()) {
+        Err(e) => e.to_string(),
+        Ok(_) => panic!("τ = 1e-300 was emitted"),
+    };
+    assert!(error.contains("sampling.tau") && error.contains("f32"), "{error}");
+    assert!(scratch.files().is_empty());
+}
