@@ -36,6 +36,14 @@ pub enum CommandError {
         /// The design's states.
         states: String,
     },
+    /// The output would replace one of the job's inputs, or is a folder.
+    #[error("{}: {reason}; give another --output", path.display())]
+    Output {
+        /// The output path.
+        path: PathBuf,
+        /// Why it cannot be written.
+        reason: String,
+    },
     /// The output file could not be written.
     #[error("{}: {source}", path.display())]
     Io {
@@ -80,6 +88,7 @@ pub fn simulate(design: &Design, run: &Simulation, output: &Path) -> Result<(), 
         .or(scenario.map(|s| s.samples))
         .ok_or_else(|| missing("samples"))?;
     let seed = run.seed.or(scenario.map(|s| s.seed)).ok_or_else(|| missing("seed"))?;
+    refuse_overwrite(output, &[&design.file])?;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
     let simulated = data::simulate_run(design, &x0, samples, &mut rng, "scenario")?;
     write(output, &recording::run_csv(design, &simulated))
@@ -88,12 +97,37 @@ pub fn simulate(design: &Design, run: &Simulation, output: &Path) -> Result<(), 
 /// Fits `design` and writes its library estimates over the recorded file `input` to `output` (see
 /// [`recording`] for the columns).
 pub fn estimate(design: &Design, input: &Path, output: &Path, progress: &ProgressBar) -> Result<(), CommandError> {
+    refuse_overwrite(output, &[input, &design.file])?;
     let rows = recording::read(design, input)?;
     let result = fit::run(design, progress)?;
     let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
     let estimates = recording::estimate(&maps, design.map.horizon, &rows);
     let names: Vec<&str> = design.targets.iter().map(|t| t.name.as_str()).collect();
     write(output, &recording::estimates_csv(&names, &estimates))
+}
+
+/// Refuses an `output` that is a folder or the same file as one of `inputs` (compared as canonical
+/// paths, so `./a.csv`, `a.csv` and a link to it are one file): writing it would destroy the input.
+fn refuse_overwrite(output: &Path, inputs: &[&Path]) -> Result<(), CommandError> {
+    let refuse = |reason: String| CommandError::Output {
+        path: output.to_owned(),
+        reason,
+    };
+    if output.is_dir() {
+        return Err(refuse("is a folder".to_owned()));
+    }
+    let Ok(target) = output.canonicalize() else {
+        return Ok(()); // does not exist yet: it cannot be an input
+    };
+    for input in inputs {
+        if input.canonicalize().is_ok_and(|i| i == target) {
+            return Err(refuse(format!(
+                "is the input {}, which writing would destroy",
+                input.display()
+            )));
+        }
+    }
+    Ok(())
 }
 
 fn write(path: &Path, text: &str) -> Result<(), CommandError> {

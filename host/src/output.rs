@@ -1,18 +1,55 @@
 //! Writing output files so that a failure never leaves a half-written one behind.
 
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
-/// Writes `bytes` to a temporary file beside `path`, then renames it over `path`: a reader never sees
-/// a half-written file, and a failure leaves the previous one in place.
+/// Writes `bytes` to a temporary file beside `path`, syncs it to disk, then renames it over `path` (and
+/// syncs the folder): a reader never sees a half-written file, a crash leaves the previous one in
+/// place, and temporaries left by an interrupted earlier run are removed.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let folder = path
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    remove_stale_temporaries(folder, &format!("{name}.tmp"), "");
     let mut temporary = path.as_os_str().to_owned();
     temporary.push(format!(".tmp{}", std::process::id()));
     let temporary = PathBuf::from(temporary);
-    std::fs::write(&temporary, bytes)
-        .and_then(|()| std::fs::rename(&temporary, path))
-        .inspect_err(|_| {
-            let _ = std::fs::remove_file(&temporary);
+    let written = std::fs::File::create(&temporary)
+        .and_then(|mut file| {
+            file.write_all(bytes)?;
+            file.sync_all()
         })
+        .and_then(|()| std::fs::rename(&temporary, path));
+    if written.is_err() {
+        let _ = std::fs::remove_file(&temporary);
+    }
+    written?;
+    // The rename itself is durable once the folder is synced (best effort: not every platform can).
+    if let Ok(dir) = std::fs::File::open(folder) {
+        let _ = dir.sync_all();
+    }
+    Ok(())
+}
+
+/// Removes the files of `folder` named `<prefix><digits><suffix>`: temporaries this tool names after
+/// its process id, left behind when a run was killed.
+pub fn remove_stale_temporaries(folder: &Path, prefix: &str, suffix: &str) {
+    let Ok(entries) = std::fs::read_dir(folder) else { return };
+    for entry in entries.flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let is_stale = name
+            .strip_prefix(prefix)
+            .and_then(|rest| rest.strip_suffix(suffix))
+            .is_some_and(|pid| !pid.is_empty() && pid.bytes().all(|b| b.is_ascii_digit()));
+        if is_stale {
+            let _ = std::fs::remove_file(entry.path());
+        }
+    }
 }
 
 /// Writes `text` to `path` only if it differs from what is there (keeps timestamps, and so cargo's
@@ -39,6 +76,13 @@ mod tests {
         assert!(!write_if_changed(&path, "two").unwrap());
         assert_eq!(std::fs::read_to_string(&path).unwrap(), "two");
         assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
+        // Temporaries of an interrupted run (this tool's names only) are cleaned up by the next write.
+        std::fs::write(dir.join("a.txt.tmp4242"), "stale").unwrap();
+        std::fs::write(dir.join("a.txt.tmpx"), "not ours").unwrap();
+        write_atomically(&path, b"three").unwrap();
+        assert!(!dir.join("a.txt.tmp4242").exists());
+        assert!(dir.join("a.txt.tmpx").exists());
+        std::fs::remove_file(dir.join("a.txt.tmpx")).unwrap();
         // A failed write (into a missing folder) leaves nothing behind and reports the error.
         assert!(write_atomically(&dir.join("missing").join("b.txt"), b"x").is_err());
         std::fs::remove_dir_all(&dir).unwrap();

@@ -158,3 +158,32 @@ fn bad_recordings_are_refused_with_line_and_column_and_nothing_is_written() {
     );
     assert!(!output.exists());
 }
+
+#[test]
+fn an_output_that_is_an_input_or_a_folder_is_refused_and_the_input_survives() {
+    let dir = scratch("overwrite");
+    let recording = dir.join("a.csv");
+    std::fs::write(&recording, "y\n0.5\n").unwrap();
+    // estimate --input a.csv --output ./a.csv (same file, spelt differently) used to replace the recording.
+    let same = dir.join(".").join("a.csv");
+    let out = estimate_vanderpol(&recording, &same);
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("which writing would destroy") && stderr.contains("--output"),
+        "{stderr}"
+    );
+    assert_eq!(std::fs::read_to_string(&recording).unwrap(), "y\n0.5\n");
+    // simulate --spec v.toml --output v.toml used to replace the spec.
+    let spec = dir.join("v.toml");
+    let text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml")).unwrap();
+    std::fs::write(&spec, &text).unwrap();
+    let out = host(&["simulate", "--spec", s(&spec), "--output", s(&spec)]);
+    assert!(!out.status.success(), "{}", String::from_utf8_lossy(&out.stdout));
+    assert_eq!(std::fs::read_to_string(&spec).unwrap(), text);
+    // An output that is a folder.
+    let out = host(&["simulate", "--spec", s(&spec), "--output", s(&dir)]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("is a folder"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -181,3 +181,24 @@ fn a_sample_period_that_underflows_in_f32_is_refused_naming_the_field() {
     assert!(error.contains("sampling.tau") && error.contains("f32"), "{error}");
     assert!(scratch.files().is_empty());
 }
+
+#[test]
+fn a_description_cannot_open_a_code_fence_in_the_generated_docs() {
+    // `description = "```"` made the generated file start a doctest that failed.
+    let scratch = Scratch::empty("fence");
+    let spec = scratch.spec(
+        "vanderpol",
+        "vanderpol.toml",
+        &[(
+            "description = \"Van der Pol",
+            "description = \"```\\n    fn injected() {} <b> [x] Van der Pol",
+        )],
+    );
+    let design = host::spec::load(&spec).unwrap();
+    let emitted = generate::emit_design(design, &spec, &ProgressBar::hidden()).unwrap();
+    let first = emitted.source.lines().next().unwrap();
+    assert_eq!(
+        first,
+        r"//! \`\`\`     fn injected() {} \<b\> \[x\] Van der Pol oscillator, x1 and x2 from y = x1 + x2 + w (paper Example 1)"
+    );
+}

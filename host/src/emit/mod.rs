@@ -96,6 +96,30 @@ fn comment_text(text: &str) -> String {
     text.chars().map(|c| if c.is_control() { ' ' } else { c }).collect()
 }
 
+/// Characters Markdown or rustdoc may read as markup: code spans and fences, emphasis, links, HTML,
+/// headings, tables.
+const MARKUP: &str = "\\`*_[]<>#|~";
+
+/// Spec text for the prose of a doc comment: one line, no leading blanks (an indented code block), and
+/// every markup character escaped with a backslash, so that nothing a spec says can open a code fence
+/// (a doctest that fails), a link or an HTML tag (rustdoc warnings) in the generated crate.
+fn doc_prose(text: &str) -> String {
+    let mut inert = String::new();
+    for c in comment_text(text).trim_start().chars() {
+        if MARKUP.contains(c) {
+            inert.push('\\');
+        }
+        inert.push(c);
+    }
+    inert
+}
+
+/// Spec text inside a code span of a doc comment: one line, a backtick (which would end the span)
+/// shown as `'`.
+fn doc_code(text: &str) -> String {
+    comment_text(text).replace('`', "'")
+}
+
 /// Literals of `values`, one per line (as rustfmt lays them out), indented by `indent` spaces.
 fn literal_block(what: &str, values: &[f64], indent: usize) -> Result<String, EmitError> {
     let literals = values
@@ -328,7 +352,7 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
             dot: dot_lines(&upper, design.map.horizon, outputs.len(), design.model.inputs.len()),
             search_steps: table.starts.as_ref().map(|starts| search_steps(&upper, starts.len())),
             upper,
-            expr: comment_text(target.expr.text()),
+            expr: doc_code(target.expr.text()),
             rmse: format!("{:.4}", t.validation.map.rmse),
             max_error: format!("{:.4}", t.validation.map.max_error),
             linear_rmse: format!("{:.4}", t.validation.linear.rmse),
@@ -350,10 +374,10 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
     }
     let file = DesignFile {
         name: design.name.clone(),
-        description: comment_text(&design.description),
-        command: comment_text(&format!("cargo run -p host -- gen --spec {spec_path}")),
+        description: doc_prose(&design.description),
+        command: doc_code(&format!("cargo run -p host -- gen --spec {spec_path}")),
         version: env!("CARGO_PKG_VERSION"),
-        spec_path: comment_text(spec_path),
+        spec_path: doc_code(spec_path),
         spec_path_literal: format!("{spec_path:?}"),
         spec_hash: design.spec_sha256.clone(),
         tau: f32_literal("sampling.tau", design.tau)?,
@@ -405,6 +429,28 @@ mod tests {
             let literal = f32_literal("x", value as f64).unwrap();
             prop_assert_eq!(literal.parse::<f32>().unwrap().to_bits(), bits, "{}", literal);
             prop_assert!(literal.contains('.') || literal.contains('e'), "{} is not a float literal", literal);
+        }
+    }
+
+    #[test]
+    fn spec_text_cannot_open_markup_in_the_docs() {
+        // A code fence in a description made the generated file start a doctest that fails.
+        let prose = doc_prose("   ```rust\nfn main() {} <b>[link] *x* # h");
+        assert_eq!(prose, "\\`\\`\\`rust fn main() {} \\<b\\>\\[link\\] \\*x\\* \\# h");
+        assert!(!doc_code("a`b").contains('`'));
+    }
+
+    proptest! {
+        #[test]
+        fn every_markup_character_of_the_prose_is_escaped(text in ".*") {
+            let prose = doc_prose(&text);
+            prop_assert!(!prose.contains('\n') && !prose.starts_with(' '));
+            let mut escaped = false;
+            for c in prose.chars() {
+                prop_assert!(escaped || c == '\\' || !MARKUP.contains(c), "{prose}");
+                escaped = !escaped && c == '\\';
+            }
+            prop_assert!(!escaped, "a trailing backslash would escape what follows: {prose}");
         }
     }
 

@@ -167,6 +167,7 @@ fn write_figure(
 ) -> Result<Vec<PathBuf>, PlotError> {
     let size = (560 * columns as u32, 380 * rows as u32);
     let png = folder.join(format!("{stem}.png"));
+    crate::output::remove_stale_temporaries(folder, &format!(".{stem}.tmp"), ".png");
     let temporary = folder.join(format!(".{stem}.tmp{}.png", std::process::id()));
     let drawn = draw_grid(
         BitMapBackend::new(&temporary, size).into_drawing_area(),
