@@ -8,7 +8,7 @@ use indicatif::ProgressBar;
 use rand::SeedableRng;
 
 use crate::recording::{self, RecordingError};
-use crate::spec::{Design, SpecError};
+use crate::spec::{limits, Design, SpecError};
 use crate::{data, fit, output};
 
 /// Why `simulate` or `estimate` did not run.
@@ -35,6 +35,20 @@ pub enum CommandError {
         given: usize,
         /// The design's states.
         states: String,
+    },
+    /// `--samples` is above [`limits::MAX_RUN_SAMPLES`].
+    #[error("--samples {samples} is above the limit of {limit} samples per run")]
+    TooLong {
+        /// Samples asked for.
+        samples: usize,
+        /// The limit.
+        limit: usize,
+    },
+    /// The recorded input is not a regular file (a folder, a device such as /dev/zero, a pipe).
+    #[error("{}: not a regular file; give a CSV file", path.display())]
+    NotAFile {
+        /// The input.
+        path: PathBuf,
     },
     /// The output would replace one of the job's inputs, or is a folder.
     #[error("{}: {reason}; give another --output", path.display())]
@@ -87,6 +101,12 @@ pub fn simulate(design: &Design, run: &Simulation, output: &Path) -> Result<(), 
         .samples
         .or(scenario.map(|s| s.samples))
         .ok_or_else(|| missing("samples"))?;
+    if samples > limits::MAX_RUN_SAMPLES {
+        return Err(CommandError::TooLong {
+            samples,
+            limit: limits::MAX_RUN_SAMPLES,
+        });
+    }
     let seed = run.seed.or(scenario.map(|s| s.seed)).ok_or_else(|| missing("seed"))?;
     refuse_overwrite(output, &[&design.file])?;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
@@ -98,6 +118,10 @@ pub fn simulate(design: &Design, run: &Simulation, output: &Path) -> Result<(), 
 /// [`recording`] for the columns).
 pub fn estimate(design: &Design, input: &Path, output: &Path, progress: &ProgressBar) -> Result<(), CommandError> {
     refuse_overwrite(output, &[input, &design.file])?;
+    // A device or pipe may never end: only a regular file has a size to read.
+    if input.exists() && !std::fs::metadata(input).is_ok_and(|m| m.is_file()) {
+        return Err(CommandError::NotAFile { path: input.to_owned() });
+    }
     let rows = recording::read(design, input)?;
     let result = fit::run(design, progress)?;
     let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();

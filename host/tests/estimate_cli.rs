@@ -187,3 +187,25 @@ fn an_output_that_is_an_input_or_a_folder_is_refused_and_the_input_survives() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("is a folder"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_device_as_input_and_a_huge_run_are_refused_at_once() {
+    // `estimate --input /dev/zero` read forever; `simulate --samples 10^9` ran out of memory.
+    let dir = scratch("bounds");
+    let out = estimate_vanderpol(Path::new("/dev/zero"), &dir.join("out.csv"));
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("not a regular file"));
+    let out = host(&[
+        "simulate",
+        "--design",
+        "vanderpol",
+        "--samples",
+        "1000000000",
+        "--output",
+        s(&dir.join("run.csv")),
+    ]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("above the limit"));
+    assert!(!dir.join("out.csv").exists() && !dir.join("run.csv").exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}

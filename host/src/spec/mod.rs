@@ -4,6 +4,7 @@
 //! any problem becomes a [`SpecError`] naming the file, the field and what to change.
 
 pub mod expr;
+pub mod limits;
 pub mod model;
 mod raw;
 mod validate;

@@ -1,6 +1,7 @@
 //! Field-by-field validation of a parsed spec: every problem becomes a [`SpecError`] naming the field
 //! and the fix. The model and the learning grid are checked in [`super::validate_model`].
 
+use super::limits;
 use super::raw::*;
 use super::*;
 
@@ -103,6 +104,7 @@ impl Validator {
                 "set `sampling.substeps` to 1 or more (10 is usual)",
             ));
         }
+        self.at_most("sampling.substeps", raw.sampling.substeps, limits::MAX_SUBSTEPS)?;
         let map = self.map(&raw.map)?;
         let learning = self.learning(&raw.learning, &model, map.horizon)?;
         let validation = self.validation(&raw.validation, map.horizon)?;
@@ -117,7 +119,7 @@ impl Validator {
             .as_ref()
             .map(|s| self.scenario(s, &model, map.horizon))
             .transpose()?;
-        Ok(Design {
+        let design = Design {
             file: self.path.clone(),
             name: raw.name,
             description: raw.description,
@@ -132,7 +134,9 @@ impl Validator {
             scenario,
             family,
             spec_sha256: String::new(),
-        })
+        };
+        limits::check_budget(&design)?;
+        Ok(design)
     }
 
     fn family(&self, raw: &RawFamily, model: &Model, design: &str) -> Result<Family, SpecError> {
@@ -190,6 +194,7 @@ impl Validator {
                 )),
             })
             .collect::<Result<_, _>>()?;
+        self.at_most("scenario.samples", raw.samples, limits::MAX_RUN_SAMPLES)?;
         if raw.samples < horizon {
             return Err(self.err(
                 "scenario.samples",
@@ -212,6 +217,13 @@ impl Validator {
                 "set `map.horizon` to the number of past measurements to use (the paper uses 10 and 3)",
             ));
         }
+        self.at_most("map.horizon", raw.horizon, limits::MAX_HORIZON)?;
+        self.at_most("map.nm", raw.nm, limits::MAX_NM)?;
+        self.at_most(
+            "map.monotonicity_grid",
+            raw.monotonicity_grid,
+            limits::MAX_MONOTONICITY_GRID,
+        )?;
         if raw.nm == 0 {
             return Err(self.err("map.nm", "n_m must be at least 1", "set `map.nm` (the paper uses 5)"));
         }
@@ -256,6 +268,8 @@ impl Validator {
                 "set `validation.trajectories` to 1 or more (50 or more is sensible)",
             ));
         }
+        self.at_most("validation.trajectories", raw.trajectories, limits::MAX_TRAJECTORIES)?;
+        self.at_most("validation.samples", raw.samples, limits::MAX_RUN_SAMPLES)?;
         if raw.samples < horizon {
             return Err(self.err(
                 "validation.samples",

@@ -1,6 +1,7 @@
 //! Validation of the model (states, inputs, parameters, definitions, derivatives, outputs) and of the
 //! learning grid.
 
+use super::limits;
 use super::raw::*;
 use super::validate::Validator;
 use super::*;
@@ -105,6 +106,7 @@ impl Validator {
     }
 
     pub(super) fn learning(&self, raw: &RawLearning, model: &Model, horizon: usize) -> Result<Learning, SpecError> {
+        self.at_most("learning.samples", raw.samples, limits::MAX_RUN_SAMPLES)?;
         if raw.samples <= horizon {
             return Err(self.err(
                 "map.horizon",
@@ -214,6 +216,7 @@ impl Validator {
                         "widen the interval, or hold the state fixed with `{ value = … }`",
                     ));
                 }
+                self.at_most(&format!("{field}.points"), points, limits::MAX_AXIS_POINTS)?;
                 if points == 0 {
                     return Err(self.err(
                         format!("{field}.points"),

@@ -1,0 +1,87 @@
+//! Upper bounds of every size a spec sets, and an overall budget of the work it asks for, checked
+//! before anything runs: a mistyped exponent is a spec error in milliseconds, not an allocation abort
+//! or an hour of simulation.
+//!
+//! The bounds are far above what the method needs (the paper uses N ≤ 10, n_m = 5, a few hundred
+//! runs): they only keep a typo from taking the machine down.
+
+use super::validate::Validator;
+use super::{Axis, Design, SpecError};
+
+/// Most past samples in the regressor (`map.horizon`).
+pub const MAX_HORIZON: usize = 1_000;
+/// Most basis functions per side (`map.nm`): the QP has `2 n_m - 1` unknowns in `μ`.
+pub const MAX_NM: usize = 50;
+/// Most points of the monotonicity grid (`map.monotonicity_grid`), one constraint each.
+pub const MAX_MONOTONICITY_GRID: usize = 100_001;
+/// Most points of one learning-grid axis.
+pub const MAX_AXIS_POINTS: usize = 10_000;
+/// Most RK4 steps per sample (`sampling.substeps`).
+pub const MAX_SUBSTEPS: usize = 10_000;
+/// Most samples of one run (`learning.samples`, `validation.samples`, `scenario.samples`).
+pub const MAX_RUN_SAMPLES: usize = 10_000_000;
+/// Most validation runs (`validation.trajectories`).
+pub const MAX_TRAJECTORIES: usize = 1_000_000;
+/// Most RK4 steps of one `gen` of the design: learning, validation and scenario runs together
+/// (about a minute of simulation on one core for a small model).
+pub const MAX_SIMULATION_STEPS: f64 = 1e9;
+/// Most values the simulated runs hold in memory (states, outputs and inputs of every sample of
+/// every run, 8 bytes each: 400 MB).
+pub const MAX_STORED_VALUES: f64 = 5e7;
+
+impl Validator {
+    /// `value ≤ limit`, or an error naming `field`.
+    pub(super) fn at_most(&self, field: &str, value: usize, limit: usize) -> Result<(), SpecError> {
+        if value <= limit {
+            Ok(())
+        } else {
+            Err(self.err(
+                field,
+                format!("{value} is above the limit of {limit}"),
+                format!("set `{field}` to at most {limit} (see host/src/spec/limits.rs)"),
+            ))
+        }
+    }
+}
+
+/// The work `design` asks of `gen`, against [`MAX_SIMULATION_STEPS`] and [`MAX_STORED_VALUES`]
+/// (in `f64`, so that no product overflows).
+pub(super) fn check_budget(design: &Design) -> Result<(), SpecError> {
+    let learning_runs: f64 = design
+        .learning
+        .axes
+        .iter()
+        .map(|axis| match axis {
+            Axis::Range { points, .. } => *points as f64,
+            Axis::Fixed(_) => 1.0,
+        })
+        .product();
+    let scenario = design.scenario.as_ref().map_or(0.0, |s| s.samples as f64);
+    let samples = learning_runs * design.learning.samples as f64
+        + design.validation.trajectories as f64 * design.validation.samples as f64
+        + scenario;
+    let steps = samples * design.substeps as f64;
+    let model = &design.model;
+    let values = samples * (model.states.len() + model.outputs.len() + model.inputs.len()) as f64;
+    let fix = "fewer learning grid points, shorter runs, fewer validation runs or fewer `sampling.substeps`";
+    if steps > MAX_SIMULATION_STEPS {
+        return Err(design.error(
+            "learning",
+            format!(
+                "the runs take {steps:.2e} RK4 steps ({learning_runs:.0} learning runs of {} samples, {} validation runs of {}, {} substeps), above the budget of {MAX_SIMULATION_STEPS:.0e}",
+                design.learning.samples, design.validation.trajectories, design.validation.samples, design.substeps
+            ),
+            fix,
+        ));
+    }
+    if values > MAX_STORED_VALUES {
+        return Err(design.error(
+            "learning",
+            format!(
+                "the runs hold {values:.2e} values ({samples:.2e} samples), above the budget of {MAX_STORED_VALUES:.0e} (400 MB)"
+            ),
+            fix,
+        ));
+    }
+    Ok(())
+}
