@@ -47,6 +47,12 @@ pub enum GenerateError {
         /// Why.
         source: std::io::Error,
     },
+    /// No checkout around the current folder (needed for the defaults: shipped specs, `generated/`).
+    #[error("{}: not inside a checkout (no folder upward holds host/specs/ and generated/Cargo.toml); run from the checkout, or give --spec, --reports and --generated", from.display())]
+    NoWorkspace {
+        /// Where the search started.
+        from: PathBuf,
+    },
     /// Two specs of one run name the same design.
     #[error("{} and {}: both specs name the design `{name}`: rename one", first.display(), second.display())]
     DuplicateName {
@@ -67,17 +73,23 @@ pub enum GenerateError {
     },
 }
 
-/// The workspace the host belongs to (generated paths are written relative to it).
-pub fn workspace_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .expect("host/ lives in the workspace")
-        .to_owned()
+/// The checkout `gen` works in: the nearest folder, from the current one upward, that holds
+/// `host/specs/` and `generated/Cargo.toml`. Found at run time, so that a copied or moved checkout
+/// writes into itself, never into the one the binary was built in.
+pub fn workspace_root() -> Result<PathBuf, GenerateError> {
+    let here = std::env::current_dir().map_err(|source| GenerateError::Io {
+        path: PathBuf::from("."),
+        source,
+    })?;
+    here.ancestors()
+        .find(|dir| dir.join("host/specs").is_dir() && dir.join("generated/Cargo.toml").is_file())
+        .map(Path::to_owned)
+        .ok_or(GenerateError::NoWorkspace { from: here })
 }
 
-/// Every spec shipped in `host/specs/`, sorted: what `gen` runs by default.
+/// Every spec shipped in `host/specs/` of the [`workspace_root`], sorted: what `gen` runs by default.
 pub fn shipped_specs() -> Result<Vec<PathBuf>, GenerateError> {
-    let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("specs");
+    let folder = workspace_root()?.join("host/specs");
     let entries = std::fs::read_dir(&folder).map_err(|source| GenerateError::Io {
         path: folder.clone(),
         source,
@@ -103,14 +115,16 @@ pub struct Emitted {
 /// Fits and emits `design`, loaded from `spec` (nothing is written).
 pub fn emit_design(design: Design, spec: &Path, progress: &ProgressBar) -> Result<Emitted, GenerateError> {
     let result = fit::run(&design, progress)?;
-    let source =
-        emit::design_file(&design, &result, &emit::portable_spec_path(spec, &workspace_root())).map_err(|source| {
-            GenerateError::Emit {
-                file: spec.to_owned(),
-                design: design.name.clone(),
-                source,
-            }
-        })?;
+    // Relative to the checkout when there is one, so that the text does not depend on where it lives.
+    let spec_path = match workspace_root() {
+        Ok(workspace) => emit::portable_spec_path(spec, &workspace),
+        Err(_) => spec.display().to_string(),
+    };
+    let source = emit::design_file(&design, &result, &spec_path).map_err(|source| GenerateError::Emit {
+        file: spec.to_owned(),
+        design: design.name.clone(),
+        source,
+    })?;
     Ok(Emitted { design, result, source })
 }
 
@@ -190,7 +204,8 @@ pub fn run(
             present.push(design.name.clone());
         }
     }
-    let all_specs: Vec<PathBuf> = specs.iter().cloned().chain(shipped_specs()?).collect();
+    let shipped = shipped_specs().unwrap_or_default(); // families of shipped designs, when in a checkout
+    let all_specs: Vec<PathBuf> = specs.iter().cloned().chain(shipped).collect();
     let lib = lib_source(&all_specs, &present)?;
 
     // 2. Fit, emit and report every design in memory.

@@ -24,12 +24,12 @@ enum Command {
         /// A design spec (TOML); repeat for several. Default: every spec in host/specs/.
         #[arg(long = "spec", value_name = "FILE")]
         specs: Vec<PathBuf>,
-        /// Folder for reports (one sub-folder per design).
-        #[arg(long, value_name = "DIR", default_value_os_t = generate::workspace_root().join("target").join("designs"))]
-        reports: PathBuf,
-        /// The `generated` crate to write the observers into.
-        #[arg(long, value_name = "DIR", default_value_os_t = generate::workspace_root().join("generated"))]
-        generated: PathBuf,
+        /// Folder for reports, one sub-folder per design. Default: target/designs/ of the checkout.
+        #[arg(long, value_name = "DIR")]
+        reports: Option<PathBuf>,
+        /// The `generated` crate to write the observers into. Default: generated/ of the checkout.
+        #[arg(long, value_name = "DIR")]
+        generated: Option<PathBuf>,
     },
     /// Simulates one run of a design (its `[scenario]` unless overridden) and writes it as CSV.
     Simulate {
@@ -131,13 +131,30 @@ fn progress_bar(design: &spec::Design) -> ProgressBar {
 
 /// `gen`: every spec through the library's job, a summary per design as it ends, then what was written
 /// (nothing, if any design failed).
-fn gen(specs: Vec<PathBuf>, reports: PathBuf, generated: PathBuf) -> anyhow::Result<()> {
+fn gen(specs: Vec<PathBuf>, reports: Option<PathBuf>, generated: Option<PathBuf>) -> anyhow::Result<()> {
     let specs = if specs.is_empty() {
         generate::shipped_specs()?
     } else {
         specs
     };
-    let to = generate::Destinations { reports, generated };
+    // The checkout is found from the current folder, at run time; only needed for the defaults.
+    let in_checkout = |folder: &str| generate::workspace_root().map(|root| root.join(folder));
+    let to = generate::Destinations {
+        reports: match reports {
+            Some(folder) => folder,
+            None => in_checkout("target/designs")?,
+        },
+        generated: match generated {
+            Some(folder) => folder,
+            None => in_checkout("generated")?,
+        },
+    };
+    eprintln!(
+        "gen: {} spec(s); observers into {}, reports into {}",
+        specs.len(),
+        to.generated.display(),
+        to.reports.display()
+    );
     let outcomes = generate::run(&specs, &to, progress_bar, |spec, prepared| match prepared {
         Ok(prepared) => print_summary(prepared),
         Err(error) => eprintln!("error: {}: {error}", spec.display()),

@@ -68,3 +68,45 @@ fn gen_writes_the_report_and_prints_a_summary() {
         .collect();
     assert!(leftovers.is_empty());
 }
+
+#[test]
+fn gen_finds_the_checkout_from_the_current_folder_not_from_where_it_was_built() {
+    // A copied checkout (just what gen needs) used to be ignored: the defaults pointed into the
+    // checkout the binary was compiled in.
+    let copy = std::env::temp_dir().join(format!("host-cli-copy-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&copy);
+    std::fs::create_dir_all(copy.join("host/specs")).unwrap();
+    std::fs::create_dir_all(copy.join("generated/src")).unwrap();
+    let here = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    std::fs::copy(
+        here.join("specs/vanderpol.toml"),
+        copy.join("host/specs/vanderpol.toml"),
+    )
+    .unwrap();
+    std::fs::copy(here.join("../generated/Cargo.toml"), copy.join("generated/Cargo.toml")).unwrap();
+    let inside = copy.join("host/specs");
+    let output = Command::new(env!("CARGO_BIN_EXE_host"))
+        .arg("gen")
+        .current_dir(&inside)
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains(&format!("observers into {}", copy.join("generated").display())),
+        "{stderr}"
+    );
+    assert!(copy.join("generated/src/vanderpol.rs").is_file());
+    assert!(copy.join("generated/src/lib.rs").is_file());
+    assert!(copy.join("target/designs/vanderpol/report.md").is_file());
+    // Outside any checkout, the defaults are an error that says what to do.
+    let outside = std::env::temp_dir();
+    let output = Command::new(env!("CARGO_BIN_EXE_host"))
+        .arg("gen")
+        .current_dir(&outside)
+        .output()
+        .unwrap();
+    assert!(!output.status.success());
+    assert!(String::from_utf8_lossy(&output.stderr).contains("not inside a checkout"));
+    let _ = std::fs::remove_dir_all(&copy);
+}

@@ -35,7 +35,7 @@ pub fn design(name: &str, text: &str) -> Design {
 
 /// The workspace root.
 pub fn workspace_root() -> PathBuf {
-    host::generate::workspace_root()
+    host::generate::workspace_root().expect("the tests run inside the checkout")
 }
 
 /// Every shipped spec file, sorted (what `gen` runs by default).
