@@ -40,8 +40,16 @@ pub enum RecordingError {
         /// The columns it needs.
         needed: String,
     },
-    /// A cell is not a number.
-    #[error("{file}: line {line}, column `{column}`: `{cell}` is not a number")]
+    /// A column the design reads is named twice in the header.
+    #[error("{file}: the header names column `{column}` twice: keep one")]
+    DuplicateColumn {
+        /// The file.
+        file: String,
+        /// The column.
+        column: String,
+    },
+    /// A cell is not a number, or beyond the range of `f64`.
+    #[error("{file}: line {line}, column `{column}`: `{cell}` is not a number within the range of f64")]
     NotANumber {
         /// The file.
         file: String,
@@ -65,7 +73,12 @@ pub struct Row {
     pub u: Vec<f64>,
 }
 
-/// Reads the columns `design` needs from `path`.
+/// Reads the columns `design` needs from `path`, row by row.
+///
+/// Lines are counted by record (the header is line 1): exact for any line ending (`\n`, `\r\n`, `\r`)
+/// as long as no quoted field spans lines. Columns the design does not read may hold anything, even
+/// bytes that are not UTF-8. A needed column named twice is refused, as is a number beyond the range
+/// of `f64` (`1e400`); `nan` and `inf` written as such are kept, and the observer refuses them.
 pub fn read(design: &Design, path: &Path) -> Result<Vec<Row>, RecordingError> {
     let file = path.display().to_string();
     let csv_error = |e: csv::Error| RecordingError::Csv {
@@ -76,39 +89,64 @@ pub fn read(design: &Design, path: &Path) -> Result<Vec<Row>, RecordingError> {
         .trim(csv::Trim::All)
         .from_path(path)
         .map_err(csv_error)?;
-    let header: Vec<String> = reader.headers().map_err(csv_error)?.iter().map(str::to_owned).collect();
+    let header: Vec<String> = reader
+        .byte_headers()
+        .map_err(csv_error)?
+        .iter()
+        .map(|h| String::from_utf8_lossy(h).into_owned())
+        .collect();
     let outputs: Vec<&str> = design.model.outputs.iter().map(|o| o.name.as_str()).collect();
     let inputs: Vec<&str> = design.model.inputs.iter().map(String::as_str).collect();
     let column = |name: &str| {
-        header
-            .iter()
-            .position(|h| h == name)
-            .ok_or_else(|| RecordingError::MissingColumn {
+        let mut positions = header.iter().enumerate().filter(|(_, h)| *h == name).map(|(i, _)| i);
+        match (positions.next(), positions.next()) {
+            (Some(i), None) => Ok(Some(i)),
+            (None, _) => Ok(None),
+            (Some(_), Some(_)) => Err(RecordingError::DuplicateColumn {
                 file: file.clone(),
                 column: name.to_owned(),
-                found: header.join(", "),
-                design: design.name.clone(),
-                needed: outputs.iter().chain(&inputs).copied().collect::<Vec<_>>().join(", "),
-            })
+            }),
+        }
     };
-    let output_columns = outputs.iter().map(|n| column(n)).collect::<Result<Vec<_>, _>>()?;
-    let input_columns = inputs.iter().map(|n| column(n)).collect::<Result<Vec<_>, _>>()?;
-    let run_column = header.iter().position(|h| h == "run");
+    let needed = |name: &str| {
+        column(name)?.ok_or_else(|| RecordingError::MissingColumn {
+            file: file.clone(),
+            column: name.to_owned(),
+            found: header.join(", "),
+            design: design.name.clone(),
+            needed: outputs.iter().chain(&inputs).copied().collect::<Vec<_>>().join(", "),
+        })
+    };
+    let output_columns = outputs.iter().map(|n| needed(n)).collect::<Result<Vec<_>, _>>()?;
+    let input_columns = inputs.iter().map(|n| needed(n)).collect::<Result<Vec<_>, _>>()?;
+    let run_column = column("run")?;
     let mut rows = Vec::new();
-    for record in reader.records() {
-        let record = record.map_err(csv_error)?;
-        let line = record.position().map_or(0, |p| p.line());
+    let mut record = csv::ByteRecord::new();
+    let mut line = 1u64;
+    while reader.read_byte_record(&mut record).map_err(csv_error)? {
+        line += 1;
+        let text = |c: usize| String::from_utf8_lossy(record.get(c).unwrap_or(b"")).into_owned();
         let number = |c: usize| -> Result<f64, RecordingError> {
-            let cell = record.get(c).unwrap_or("");
-            cell.parse::<f64>().map_err(|_| RecordingError::NotANumber {
+            let cell = text(c);
+            let not_a_number = || RecordingError::NotANumber {
                 file: file.clone(),
                 line,
                 column: header[c].clone(),
-                cell: cell.to_owned(),
-            })
+                cell: cell.clone(),
+            };
+            let value = cell.parse::<f64>().map_err(|_| not_a_number())?;
+            // `1e400` parses as infinity: out of range, not an infinity the user wrote.
+            let written_infinite = cell
+                .trim_start_matches(['+', '-'])
+                .to_ascii_lowercase()
+                .starts_with("inf");
+            if value.is_infinite() && !written_infinite {
+                return Err(not_a_number());
+            }
+            Ok(value)
         };
         rows.push(Row {
-            run: run_column.and_then(|c| record.get(c)).unwrap_or("").to_owned(),
+            run: run_column.map(text).unwrap_or_default(),
             y: output_columns.iter().map(|&c| number(c)).collect::<Result<_, _>>()?,
             u: input_columns.iter().map(|&c| number(c)).collect::<Result<_, _>>()?,
         });

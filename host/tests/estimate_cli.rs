@@ -209,3 +209,64 @@ fn a_device_as_input_and_a_huge_run_are_refused_at_once() {
     assert!(!dir.join("out.csv").exists() && !dir.join("run.csv").exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The recorded-file reader on the defects found by fuzzing it.
+mod reading {
+    use std::path::Path;
+
+    use host::recording::{read, RecordingError};
+
+    fn vanderpol() -> host::spec::Design {
+        host::spec::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml")).unwrap()
+    }
+
+    fn read_bytes(name: &str, bytes: &[u8]) -> Result<Vec<host::recording::Row>, RecordingError> {
+        let path = std::env::temp_dir().join(format!("host-reading-{}-{name}.csv", std::process::id()));
+        std::fs::write(&path, bytes).unwrap();
+        let result = read(&vanderpol(), &path);
+        let _ = std::fs::remove_file(&path);
+        result
+    }
+
+    #[test]
+    fn line_numbers_are_true_for_every_line_ending() {
+        // The bad cell is on line 3 (the header is line 1); CRLF used to say 2 and CR 1.
+        for (ending, name) in [("\n", "lf"), ("\r\n", "crlf"), ("\r", "cr")] {
+            let text = ["y", "0.5", "oops", "0.7"].join(ending) + ending;
+            match read_bytes(name, text.as_bytes()) {
+                Err(RecordingError::NotANumber { line, .. }) => assert_eq!(line, 3, "{name}"),
+                other => panic!("{name}: {other:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn a_needed_column_named_twice_is_refused() {
+        assert!(matches!(
+            read_bytes("duplicate", b"y,y\n1,2\n"),
+            Err(RecordingError::DuplicateColumn { column, .. }) if column == "y"
+        ));
+        assert!(matches!(
+            read_bytes("duplicate-run", b"run,y,run\na,1,b\n"),
+            Err(RecordingError::DuplicateColumn { column, .. }) if column == "run"
+        ));
+        // A column the design does not read may repeat.
+        assert_eq!(read_bytes("ignored", b"note,y,note\na,1,b\n").unwrap().len(), 1);
+    }
+
+    #[test]
+    fn an_ignored_column_may_hold_any_bytes() {
+        let rows = read_bytes("bytes", b"y,note\n0.5,\xff\xfe\n0.25,ok\n").unwrap();
+        assert_eq!(rows.iter().map(|r| r.y[0]).collect::<Vec<_>>(), [0.5, 0.25]);
+    }
+
+    #[test]
+    fn a_number_beyond_f64_is_an_error_and_a_written_infinity_is_kept() {
+        match read_bytes("overflow", b"y\n1e400\n") {
+            Err(RecordingError::NotANumber { line: 2, cell, .. }) => assert_eq!(cell, "1e400"),
+            other => panic!("{other:?}"),
+        }
+        let rows = read_bytes("infinity", b"y\ninf\n-Infinity\nNaN\n").unwrap();
+        assert!(rows[0].y[0] == f64::INFINITY && rows[1].y[0] == f64::NEG_INFINITY && rows[2].y[0].is_nan());
+    }
+}
