@@ -436,3 +436,32 @@ fn names_the_expression_language_reserves_are_refused_where_declared() {
     );
     spec::parse(Path::new("constant.toml"), &text).unwrap();
 }
+
+/// An expression longer than `MAX_EXPRESSION_CHARS` is refused with a way out: exmex evaluates a long
+/// expression in more than linear time (a 10 000-term derivative took minutes to simulate).
+#[test]
+fn an_overlong_expression_is_refused_naming_its_field() {
+    let long = (0..1200)
+        .map(|i| format!("x{}", 1 + i % 2))
+        .collect::<Vec<_>>()
+        .join(" + ");
+    let text = VANDERPOL.replacen("x1 = \"-x2\"", &format!("x1 = \"-x2 + 0*({long})\""), 1);
+    assert_ne!(text, VANDERPOL);
+    let error = spec::parse(Path::new("long.toml"), &text).unwrap_err();
+    assert_eq!(error.field, "model.derivatives.x1", "{error}");
+    assert!(
+        error.problem.contains("longer than the limit") && error.fix.contains("model.definitions"),
+        "{error}"
+    );
+    // The same sum in four definitions of 300 terms each is accepted.
+    let part = (0..300)
+        .map(|i| format!("x{}", 1 + i % 2))
+        .collect::<Vec<_>>()
+        .join(" + ");
+    let definitions: String = (0..4)
+        .map(|k| format!("\n[[model.definitions]]\nname = \"part{k}\"\nexpr = \"{part}\"\n"))
+        .collect();
+    let text = VANDERPOL.replacen("x1 = \"-x2\"", "x1 = \"-x2 + 0*(part0 + part1 + part2 + part3)\"", 1);
+    let text = text.replacen("[model.derivatives]", &format!("{definitions}\n[model.derivatives]"), 1);
+    spec::parse(Path::new("split.toml"), &text).unwrap();
+}
