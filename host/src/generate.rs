@@ -282,12 +282,37 @@ pub struct Prepared {
     pub validation_windows: usize,
     /// Where its report goes.
     pub folder: PathBuf,
+    /// Targets the map barely estimates (see [`weak_targets`]), one sentence each.
+    pub warnings: Vec<String>,
+}
+
+/// One sentence per target whose validation RMSE is at least [`WEAK_FRACTION`](crate::fit::evaluate::WEAK_FRACTION) of the target's own
+/// spread: the map explains less than half of its variance, and the target may not be observable from
+/// these measurements over this horizon.
+pub fn weak_targets(design: &Design, result: &DesignResult) -> Vec<String> {
+    result
+        .targets
+        .iter()
+        .filter(|t| t.validation.is_weak())
+        .map(|t| {
+            let v = &t.validation;
+            format!(
+                "target `{}`: validation RMSE {:.4} is {:.0} % of the target's spread (standard deviation {:.4}): the map barely beats a constant; the target may not be observable from these measurements over N = {} samples",
+                design.targets[t.index].name,
+                v.map.rmse,
+                100.0 * v.map.rmse / v.target_spread,
+                v.target_spread,
+                design.map.horizon
+            )
+        })
+        .collect()
 }
 
 fn prepare(design: Design, spec: &Path, reports: &Path, bar: &ProgressBar) -> Result<Prepared, GenerateError> {
     let emitted = emit_design(design, spec, bar)?;
     let report = reporting::report(&emitted.design, &emitted.result);
     Ok(Prepared {
+        warnings: weak_targets(&emitted.design, &emitted.result),
         report: reporting::texts(&report),
         table: reporting::table(&report),
         learning_windows: report.learning.windows,

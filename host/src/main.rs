@@ -188,6 +188,9 @@ fn print_summary(prepared: &generate::Prepared) {
         design.map.normalisation
     );
     println!("{}", prepared.table);
+    for warning in &prepared.warnings {
+        eprintln!("warning: {}: {warning}", design.name);
+    }
 }
 
 fn simulate(

@@ -202,3 +202,38 @@ fn a_description_cannot_open_a_code_fence_in_the_generated_docs() {
         r"//! \`\`\`     fn injected() {} \<b\> \[x\] Van der Pol oscillator, x1 and x2 from y = x1 + x2 + w (paper Example 1)"
     );
 }
+
+#[test]
+fn a_target_the_measurements_do_not_show_is_named_in_a_warning() {
+    // A third state `z` that nothing measures (z' = 0, drawn from a grid): its map can only return about
+    // the mean, and gen used to emit it without a word.
+    let scratch = Scratch::empty("weak");
+    let spec = scratch.spec(
+        "vanderpol",
+        "vanderpol.toml",
+        &[
+            ("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\", \"z\"]"),
+            (
+                "x2 = \"4*x1 + (1 - x1^2)*x2\"",
+                "x2 = \"4*x1 + (1 - x1^2)*x2\"\nz = \"0\"",
+            ),
+            (
+                "grid.x2 = { min = -5.0, max = 5.0, points = 4 }",
+                "grid.x2 = { min = -5.0, max = 5.0, points = 4 }\ngrid.z = { min = 0.0, max = 1.0, points = 3 }",
+            ),
+            ("x0 = { x1 = 2.0, x2 = 0.5 }", "x0 = { x1 = 2.0, x2 = 0.5, z = 0.5 }"),
+            (
+                "[[targets]]\nname = \"x2\"",
+                "[[targets]]\nname = \"z\"\nexpr = \"z\"\n\n[[targets]]\nname = \"x2\"",
+            ),
+        ],
+    );
+    let design = host::spec::load(&spec).unwrap();
+    let emitted = generate::emit_design(design, &spec, &ProgressBar::hidden()).unwrap();
+    let warnings = generate::weak_targets(&emitted.design, &emitted.result);
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+    assert!(
+        warnings[0].starts_with("target `z`") && warnings[0].contains("may not be observable"),
+        "{warnings:?}"
+    );
+}
