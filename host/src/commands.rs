@@ -28,6 +28,12 @@ pub enum CommandError {
         /// The command-line option to give instead.
         option: &'static str,
     },
+    /// The initial state holds a NaN or an infinity (it used to be blamed on the spec's derivatives).
+    #[error("--x0 {x0:?}: every initial value must be finite")]
+    NonFiniteX0 {
+        /// The values given.
+        x0: Vec<f64>,
+    },
     /// The initial state has the wrong length.
     #[error("--x0 has {given} values; the states are {states}")]
     StateCount {
@@ -91,6 +97,9 @@ pub fn simulate(design: &Design, run: &Simulation, output: &Path) -> Result<(), 
         .clone()
         .or_else(|| scenario.map(|s| s.x0.clone()))
         .ok_or_else(|| missing("x0"))?;
+    if x0.iter().any(|v| !v.is_finite()) {
+        return Err(CommandError::NonFiniteX0 { x0 });
+    }
     if x0.len() != design.model.states.len() {
         return Err(CommandError::StateCount {
             given: x0.len(),

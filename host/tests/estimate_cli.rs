@@ -270,3 +270,21 @@ mod reading {
         assert!(rows[0].y[0] == f64::INFINITY && rows[1].y[0] == f64::NEG_INFINITY && rows[2].y[0].is_nan());
     }
 }
+
+#[test]
+fn a_non_finite_initial_state_is_blamed_on_x0() {
+    let dir = scratch("x0");
+    let out = host(&[
+        "simulate",
+        "--design",
+        "vanderpol",
+        "--x0",
+        "nan,0",
+        "--output",
+        s(&dir.join("run.csv")),
+    ]);
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("--x0") && !stderr.contains("derivatives"), "{stderr}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

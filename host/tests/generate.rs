@@ -237,3 +237,23 @@ fn a_target_the_measurements_do_not_show_is_named_in_a_warning() {
         "{warnings:?}"
     );
 }
+
+#[test]
+fn measurements_beyond_f32_are_blamed_on_their_scale_not_on_beta() {
+    // A noise variance of 1e300 used to end in an f32 mismatch advising a lower β.
+    let scratch = Scratch::empty("huge-noise");
+    let spec = scratch.spec(
+        "vanderpol",
+        "vanderpol.toml",
+        &[("noise_variance = 0.2", "noise_variance = 1e300")],
+    );
+    let design = host::spec::load(&spec).unwrap();
+    let error = match generate::emit_design(design, &spec, &ProgressBar::hidden()) {
+        Err(e) => e.to_string(),
+        Ok(_) => panic!("measurements of 1e150 were emitted"),
+    };
+    assert!(
+        error.contains("beyond the range of f32") && !error.contains("map.beta"),
+        "{error}"
+    );
+}

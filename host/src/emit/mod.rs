@@ -27,7 +27,7 @@ use crate::spec::Design;
 #[derive(Debug, thiserror::Error)]
 pub enum EmitError {
     /// A coefficient is NaN, infinite, or beyond the range of `f32`.
-    #[error("{what} = {value} cannot be stored as a finite f32")]
+    #[error("{what} = {} cannot be stored as a finite f32", crate::spec::readable(*value))]
     NotFinite {
         /// Which coefficient.
         what: String,
@@ -51,6 +51,13 @@ pub enum EmitError {
         second: String,
         /// The constant both map to.
         constant: String,
+    },
+    /// A measurement or input of the validation data is beyond the range of f32: the chip could not
+    /// hold it.
+    #[error("the measurements and inputs reach {}, beyond the range of f32 (±3.4e38): rescale the outputs or inputs (their units) or lower the noise variance", crate::spec::readable(*value))]
+    BeyondF32 {
+        /// The largest magnitude seen.
+        value: f64,
     },
     /// Rounded to f32, the tables do not reproduce the f64 map (see [`crate::emit::precision`]).
     #[error("target `{target}`: {mismatch}; lower `map.beta` or `map.nm`")]
@@ -300,6 +307,19 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
         }
     };
     let outputs: Vec<String> = design.model.outputs.iter().map(|o| o.name.clone()).collect();
+    // The chip holds every sample in f32: data beyond its range cannot be what the map is checked on.
+    let largest = result
+        .validation
+        .runs
+        .iter()
+        .chain(std::iter::once(&result.scenario))
+        .flat_map(|run| run.measurements.iter().chain(&run.inputs).flatten())
+        .map(|v| v.abs())
+        .filter(|v| v.is_finite())
+        .fold(0.0, f64::max);
+    if largest > f64::from(f32::MAX) {
+        return Err(EmitError::BeyondF32 { value: largest });
+    }
     let mut targets: Vec<TargetTables> = Vec::new();
     for t in &result.targets {
         let target = &design.targets[t.index];

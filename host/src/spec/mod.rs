@@ -208,6 +208,17 @@ impl Design {
     }
 }
 
+/// A number as a message should show it: plain when it reads well, in scientific notation when it
+/// is huge or tiny (`1e308`, not a 309-digit decimal).
+pub fn readable(value: f64) -> String {
+    let size = value.abs();
+    if size != 0.0 && size.is_finite() && !(1e-4..1e9).contains(&size) {
+        format!("{value:e}")
+    } else {
+        format!("{value}")
+    }
+}
+
 /// Module names of `generated/src/` that are not designs: `lib.rs` is the crate root.
 pub const RESERVED_MODULES: &[&str] = &["lib"];
 
@@ -251,14 +262,28 @@ pub fn load(path: &Path) -> Result<Design, SpecError> {
 /// Parses and validates spec text; `path` is only used in messages and kept in the design.
 pub fn parse(path: &Path, text: &str) -> Result<Design, SpecError> {
     let file = path.display().to_string();
-    let raw: RawSpec = toml::from_str(text).map_err(|e| SpecError {
-        file: file.clone(),
-        field: e
+    let toml_error = |e: toml::de::Error, path: String| {
+        let line = e
             .span()
             .map(|s| format!("(line {})", 1 + text[..s.start].matches('\n').count()))
-            .unwrap_or_else(|| "(document)".into()),
-        problem: e.message().trim().to_owned(),
-        fix: "correct the TOML at that line; see host/specs/vanderpol.toml for a complete example".into(),
+            .unwrap_or_else(|| "(document)".into());
+        // A value of the wrong type is named by its field path (serde's path); syntax errors by line.
+        let (field, problem) = if path.is_empty() || path == "." {
+            (line, e.message().trim().to_owned())
+        } else {
+            (path, format!("{} {line}", e.message().trim()))
+        };
+        SpecError {
+            file: file.clone(),
+            field,
+            problem,
+            fix: "correct the TOML there; see host/specs/vanderpol.toml for a complete example".into(),
+        }
+    };
+    let deserializer = toml::Deserializer::parse(text).map_err(|e| toml_error(e, String::new()))?;
+    let raw: RawSpec = serde_path_to_error::deserialize(deserializer).map_err(|e| {
+        let path = e.path().to_string();
+        toml_error(e.into_inner(), path)
     })?;
     let mut design = Validator {
         file,

@@ -80,7 +80,7 @@ impl Validator {
         } else {
             Err(self.err(
                 field,
-                format!("{what} must be a finite number > 0, got {value}"),
+                format!("{what} must be a finite number > 0, got {}", readable(value)),
                 format!("set `{field}` to a positive value"),
             ))
         }
@@ -240,6 +240,13 @@ impl Validator {
             ));
         }
         let epsilon = self.positive("map.epsilon", raw.epsilon, "ε")?;
+        if !(1e-12..=1e12).contains(&epsilon) {
+            return Err(self.err(
+                "map.epsilon",
+                format!("ε = {} is outside [1e-12, 1e12]: the QP loses its scale", readable(epsilon)),
+                "set `map.epsilon` near the spread of the target times 1e-2 (0.01 is usual; with `intercept` the map does not depend on it)",
+            ));
+        }
         if raw.monotonicity_grid < 3 {
             return Err(self.err(
                 "map.monotonicity_grid",

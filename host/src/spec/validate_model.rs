@@ -60,7 +60,7 @@ impl Validator {
             if !(o.noise_variance.is_finite() && o.noise_variance >= 0.0) {
                 return Err(self.err(
                     field,
-                    format!("a variance must be finite and ≥ 0, got {}", o.noise_variance),
+                    format!("a variance must be finite and ≥ 0, got {}", readable(o.noise_variance)),
                     "give the variance of the measurement noise (0 for none)",
                 ));
             }
@@ -159,7 +159,11 @@ impl Validator {
                     let bound = if p.min.is_finite() { "max" } else { "min" };
                     return Err(self.err(
                         format!("{field}.{bound}"),
-                        format!("the range [{}, {}] is not a finite interval", p.min, p.max),
+                        format!(
+                            "the range [{}, {}] is not a finite interval",
+                            readable(p.min),
+                            readable(p.max)
+                        ),
                         "give finite bounds with min ≤ max",
                     ));
                 }
@@ -198,7 +202,7 @@ impl Validator {
                     let bound = if min.is_finite() { "max" } else { "min" };
                     return Err(self.err(
                         format!("{field}.{bound}"),
-                        format!("the bounds [{min}, {max}] are not finite"),
+                        format!("the bounds [{}, {}] are not finite", readable(min), readable(max)),
                         "give finite bounds",
                     ));
                 }
