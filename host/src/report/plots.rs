@@ -208,6 +208,9 @@ fn write_figure(
     Ok(vec![png, svg])
 }
 
+/// Most dots of one scatter panel.
+const MAX_DOTS: usize = 4000;
+
 const TRUE_COLOR: RGBColor = RGBColor(31, 119, 180);
 const ESTIMATE_COLOR: RGBColor = RGBColor(214, 39, 40);
 const NOISE_COLOR: RGBColor = RGBColor(90, 90, 90);
@@ -286,7 +289,15 @@ pub fn draw(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec
 
     // Identification on the learning windows, and dΓ/dr.
     let learning: &DataSet = &result.learning;
-    let windows: Vec<Window> = learning.windows().collect();
+    // A dot per window would make the SVG grow with n_E (184 MB at 10⁶ windows): every `stride`-th.
+    let count = learning.windows().count();
+    let stride = count.div_ceil(MAX_DOTS).max(1);
+    let windows: Vec<Window> = learning.windows().step_by(stride).collect();
+    let shown = if stride == 1 {
+        format!("the n_E = {count} learning windows")
+    } else {
+        format!("every {stride}th of the n_E = {count} learning windows")
+    };
     let mut z = Vec::new();
     let mut panels = Vec::new();
     let mut gradients = Vec::new();
@@ -301,12 +312,7 @@ pub fn draw(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec
         let label = with_unit(&target.name, &target.unit);
         let diagonal = vec![(map.r_min, map.r_min), (map.r_max, map.r_max)];
         panels.push(Panel {
-            title: format!(
-                "{}: {} on the n_E = {} learning windows",
-                design.name,
-                target.name,
-                windows.len()
-            ),
+            title: format!("{}: {} on {shown}", design.name, target.name),
             x_label: format!("true {label}"),
             y_label: format!("identified {label}"),
             curves: vec![
