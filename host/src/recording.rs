@@ -263,10 +263,10 @@ mod tests {
         // The same samples as runs of a DataSet, whose regressor code is independent of this one.
         let rows = rows();
         let as_run = |rows: &[Row]| Run {
-            states: vec![vec![]; rows.len()],
+            states: vec![vec![]; rows.len()].into(),
             inputs: rows.iter().map(|r| r.u.clone()).collect(),
             measurements: rows.iter().map(|r| r.y.clone()).collect(),
-            targets: vec![vec![]; rows.len()],
+            targets: vec![vec![]; rows.len()].into(),
         };
         let data = DataSet {
             runs: vec![as_run(&rows[..6]), as_run(&rows[6..])],

@@ -6,7 +6,10 @@
 //! and all outputs of one instant together, `Z(k) = (y(k), …, y(k-N+1), u(k), …, u(k-N+1))`.
 //! Noise is added to the outputs only; targets are noise-free functions of the current state.
 
+pub mod rows;
 pub mod simulate;
+
+pub use rows::Rows;
 
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -15,17 +18,17 @@ use rand_distr::{Distribution, Normal};
 use crate::data::simulate::{BlowUp, Integrator};
 use crate::spec::{Axis, Design, InputProfile, SpecError};
 
-/// One simulated run.
+/// One simulated run, one row per sample.
 #[derive(Clone, Debug)]
 pub struct Run {
-    /// `x(k)`, one vector per sample.
-    pub states: Vec<Vec<f64>>,
-    /// `u(k)`, one vector per sample (empty vectors when the model has no input).
-    pub inputs: Vec<Vec<f64>>,
-    /// `y(k)` with noise, one vector per sample.
-    pub measurements: Vec<Vec<f64>>,
-    /// `r(k)` per target, noise-free, one vector per sample.
-    pub targets: Vec<Vec<f64>>,
+    /// `x(k)`.
+    pub states: Rows,
+    /// `u(k)` (rows of width 0 when the model has no input).
+    pub inputs: Rows,
+    /// `y(k)` with noise.
+    pub measurements: Rows,
+    /// `r(k)` per target, noise-free.
+    pub targets: Rows,
 }
 
 /// A set of runs and the horizon that cuts them into windows.
@@ -191,10 +194,10 @@ pub fn simulate_run(
         targets.push(r);
     }
     Ok(Run {
-        states,
-        inputs,
-        measurements,
-        targets,
+        states: Rows::from(states),
+        inputs: Rows::from(inputs),
+        measurements: Rows::from(measurements),
+        targets: Rows::from(targets),
     })
 }
 

@@ -253,7 +253,7 @@ pub fn refused_samples(len: usize) -> Vec<usize> {
 
 /// Rows `[v, …],` of a recorded sequence, one sample per line, with the refused samples' first value
 /// replaced by `f32::NAN` or `f32::INFINITY`.
-fn recorded_rows(what: &str, rows: &[Vec<f64>], corrupt: bool) -> Result<String, EmitError> {
+fn recorded_rows(what: &str, rows: &crate::data::Rows, corrupt: bool) -> Result<String, EmitError> {
     let refused = refused_samples(rows.len());
     let mut text = Vec::new();
     for (k, row) in rows.iter().enumerate() {

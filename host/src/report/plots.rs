@@ -360,8 +360,8 @@ pub fn draw(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec
         .zip(&run.inputs)
         .map(|(y, u)| recording::Row {
             run: String::new(),
-            y: y.clone(),
-            u: u.clone(),
+            y: y.to_vec(),
+            u: u.to_vec(),
         })
         .collect();
     let estimates = recording::estimate(&maps, design.map.horizon, &rows);

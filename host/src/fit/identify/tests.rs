@@ -14,8 +14,8 @@ use rand_distr::StandardNormal;
 /// A data set with horizon 1 whose "measurements" are the given regressors.
 fn pairs(samples: &[(Vec<f64>, f64)]) -> DataSet {
     let run = Run {
-        states: vec![vec![]; samples.len()],
-        inputs: vec![vec![]; samples.len()],
+        states: vec![vec![]; samples.len()].into(),
+        inputs: vec![vec![]; samples.len()].into(),
         measurements: samples.iter().map(|s| s.0.clone()).collect(),
         targets: samples.iter().map(|s| vec![s.1]).collect(),
     };
