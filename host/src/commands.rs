@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use indicatif::ProgressBar;
 use rand::SeedableRng;
 
-use crate::recording::{self, RecordingError};
+use crate::recording::{self, RecordingError, StreamError};
 use crate::spec::{limits, Design, SpecError};
 use crate::{data, fit, output};
 
@@ -131,12 +131,20 @@ pub fn estimate(design: &Design, input: &Path, output: &Path, progress: &Progres
     if input.exists() && !std::fs::metadata(input).is_ok_and(|m| m.is_file()) {
         return Err(CommandError::NotAFile { path: input.to_owned() });
     }
-    let rows = recording::read(design, input)?;
+    let mut rows = recording::RowReader::open(design, input)?;
     let result = fit::run(design, progress)?;
     let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
-    let estimates = recording::estimate(&maps, design.map.horizon, &rows);
-    let names: Vec<&str> = design.targets.iter().map(|t| t.name.as_str()).collect();
-    write(output, &recording::estimates_csv(&names, &estimates))
+    // Row by row: memory does not grow with the recording; the output appears only when complete.
+    output::write_atomically_with(output, |out| {
+        recording::estimate_streaming(&maps, design.map.horizon, &mut rows, out)
+    })
+    .map_err(|e| match e {
+        StreamError::Recording(e) => CommandError::Recording(e),
+        StreamError::Io(source) => CommandError::Io {
+            path: output.to_owned(),
+            source,
+        },
+    })
 }
 
 /// Refuses an `output` that is a folder or the same file as one of `inputs` (compared as canonical

@@ -7,6 +7,15 @@ use std::path::{Path, PathBuf};
 /// syncs the folder): a reader never sees a half-written file, a crash leaves the previous one in
 /// place, and temporaries left by an interrupted earlier run are removed.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    write_atomically_with(path, |out| out.write_all(bytes))
+}
+
+/// [`write_atomically`] for text produced piece by piece: `write` writes into a buffered temporary
+/// file, which replaces `path` only if `write` succeeded.
+pub fn write_atomically_with<E: From<std::io::Error>>(
+    path: &Path,
+    write: impl FnOnce(&mut std::io::BufWriter<std::fs::File>) -> Result<(), E>,
+) -> Result<(), E> {
     let name = path
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
@@ -19,12 +28,14 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let mut temporary = path.as_os_str().to_owned();
     temporary.push(format!(".tmp{}", std::process::id()));
     let temporary = PathBuf::from(temporary);
-    let written = std::fs::File::create(&temporary)
-        .and_then(|mut file| {
-            file.write_all(bytes)?;
-            file.sync_all()
-        })
-        .and_then(|()| std::fs::rename(&temporary, path));
+    let written = (|| -> Result<(), E> {
+        let mut out = std::io::BufWriter::new(std::fs::File::create(&temporary)?);
+        write(&mut out)?;
+        let file = out.into_inner().map_err(|e| e.into_error())?;
+        file.sync_all()?;
+        std::fs::rename(&temporary, path)?;
+        Ok(())
+    })();
     if written.is_err() {
         let _ = std::fs::remove_file(&temporary);
     }

@@ -73,65 +73,108 @@ pub struct Row {
     pub u: Vec<f64>,
 }
 
-/// Reads the columns `design` needs from `path`, row by row.
+/// Reads the columns `design` needs from `path` (all rows; see [`RowReader`] for the rules).
+pub fn read(design: &Design, path: &Path) -> Result<Vec<Row>, RecordingError> {
+    let mut reader = RowReader::open(design, path)?;
+    let mut rows = Vec::new();
+    while let Some(row) = reader.next_row()? {
+        rows.push(row);
+    }
+    Ok(rows)
+}
+
+/// The rows of a recorded file, one at a time (memory independent of the file's length).
 ///
 /// Lines are counted by record (the header is line 1): exact for any line ending (`\n`, `\r\n`, `\r`)
 /// as long as no quoted field spans lines. Columns the design does not read may hold anything, even
 /// bytes that are not UTF-8. A needed column named twice is refused, as is a number beyond the range
 /// of `f64` (`1e400`); `nan` and `inf` written as such are kept, and the observer refuses them.
-pub fn read(design: &Design, path: &Path) -> Result<Vec<Row>, RecordingError> {
-    let file = path.display().to_string();
-    let csv_error = |e: csv::Error| RecordingError::Csv {
-        file: file.clone(),
-        message: e.to_string(),
-    };
-    let mut reader = csv::ReaderBuilder::new()
-        .trim(csv::Trim::All)
-        .from_path(path)
-        .map_err(csv_error)?;
-    let header: Vec<String> = reader
-        .byte_headers()
-        .map_err(csv_error)?
-        .iter()
-        .map(|h| String::from_utf8_lossy(h).into_owned())
-        .collect();
-    let outputs: Vec<&str> = design.model.outputs.iter().map(|o| o.name.as_str()).collect();
-    let inputs: Vec<&str> = design.model.inputs.iter().map(String::as_str).collect();
-    let column = |name: &str| {
-        let mut positions = header.iter().enumerate().filter(|(_, h)| *h == name).map(|(i, _)| i);
-        match (positions.next(), positions.next()) {
-            (Some(i), None) => Ok(Some(i)),
-            (None, _) => Ok(None),
-            (Some(_), Some(_)) => Err(RecordingError::DuplicateColumn {
+pub struct RowReader {
+    reader: csv::Reader<std::fs::File>,
+    file: String,
+    header: Vec<String>,
+    output_columns: Vec<usize>,
+    input_columns: Vec<usize>,
+    run_column: Option<usize>,
+    record: csv::ByteRecord,
+    line: u64,
+}
+
+impl RowReader {
+    /// Opens `path` and checks its header against the columns `design` reads.
+    pub fn open(design: &Design, path: &Path) -> Result<Self, RecordingError> {
+        let file = path.display().to_string();
+        let csv_error = |e: csv::Error| RecordingError::Csv {
+            file: file.clone(),
+            message: e.to_string(),
+        };
+        let mut reader = csv::ReaderBuilder::new()
+            .trim(csv::Trim::All)
+            .from_path(path)
+            .map_err(csv_error)?;
+        let header: Vec<String> = reader
+            .byte_headers()
+            .map_err(csv_error)?
+            .iter()
+            .map(|h| String::from_utf8_lossy(h).into_owned())
+            .collect();
+        let outputs: Vec<&str> = design.model.outputs.iter().map(|o| o.name.as_str()).collect();
+        let inputs: Vec<&str> = design.model.inputs.iter().map(String::as_str).collect();
+        let column = |name: &str| {
+            let mut positions = header.iter().enumerate().filter(|(_, h)| *h == name).map(|(i, _)| i);
+            match (positions.next(), positions.next()) {
+                (Some(i), None) => Ok(Some(i)),
+                (None, _) => Ok(None),
+                (Some(_), Some(_)) => Err(RecordingError::DuplicateColumn {
+                    file: file.clone(),
+                    column: name.to_owned(),
+                }),
+            }
+        };
+        let needed = |name: &str| {
+            column(name)?.ok_or_else(|| RecordingError::MissingColumn {
                 file: file.clone(),
                 column: name.to_owned(),
-            }),
-        }
-    };
-    let needed = |name: &str| {
-        column(name)?.ok_or_else(|| RecordingError::MissingColumn {
-            file: file.clone(),
-            column: name.to_owned(),
-            found: header.join(", "),
-            design: design.name.clone(),
-            needed: outputs.iter().chain(&inputs).copied().collect::<Vec<_>>().join(", "),
+                found: header.join(", "),
+                design: design.name.clone(),
+                needed: outputs.iter().chain(&inputs).copied().collect::<Vec<_>>().join(", "),
+            })
+        };
+        let output_columns = outputs.iter().map(|n| needed(n)).collect::<Result<Vec<_>, _>>()?;
+        let input_columns = inputs.iter().map(|n| needed(n)).collect::<Result<Vec<_>, _>>()?;
+        let run_column = column("run")?;
+        Ok(RowReader {
+            reader,
+            file,
+            header,
+            output_columns,
+            input_columns,
+            run_column,
+            record: csv::ByteRecord::new(),
+            line: 1,
         })
-    };
-    let output_columns = outputs.iter().map(|n| needed(n)).collect::<Result<Vec<_>, _>>()?;
-    let input_columns = inputs.iter().map(|n| needed(n)).collect::<Result<Vec<_>, _>>()?;
-    let run_column = column("run")?;
-    let mut rows = Vec::new();
-    let mut record = csv::ByteRecord::new();
-    let mut line = 1u64;
-    while reader.read_byte_record(&mut record).map_err(csv_error)? {
-        line += 1;
-        let text = |c: usize| String::from_utf8_lossy(record.get(c).unwrap_or(b"")).into_owned();
+    }
+
+    /// The next row, `None` at the end of the file.
+    pub fn next_row(&mut self) -> Result<Option<Row>, RecordingError> {
+        let more = self
+            .reader
+            .read_byte_record(&mut self.record)
+            .map_err(|e| RecordingError::Csv {
+                file: self.file.clone(),
+                message: e.to_string(),
+            })?;
+        if !more {
+            return Ok(None);
+        }
+        self.line += 1;
+        let text = |c: usize| String::from_utf8_lossy(self.record.get(c).unwrap_or(b"")).into_owned();
         let number = |c: usize| -> Result<f64, RecordingError> {
             let cell = text(c);
             let not_a_number = || RecordingError::NotANumber {
-                file: file.clone(),
-                line,
-                column: header[c].clone(),
+                file: self.file.clone(),
+                line: self.line,
+                column: self.header[c].clone(),
                 cell: cell.clone(),
             };
             let value = cell.parse::<f64>().map_err(|_| not_a_number())?;
@@ -145,13 +188,76 @@ pub fn read(design: &Design, path: &Path) -> Result<Vec<Row>, RecordingError> {
             }
             Ok(value)
         };
-        rows.push(Row {
-            run: run_column.map(text).unwrap_or_default(),
-            y: output_columns.iter().map(|&c| number(c)).collect::<Result<_, _>>()?,
-            u: input_columns.iter().map(|&c| number(c)).collect::<Result<_, _>>()?,
-        });
+        Ok(Some(Row {
+            run: self.run_column.map(text).unwrap_or_default(),
+            y: self
+                .output_columns
+                .iter()
+                .map(|&c| number(c))
+                .collect::<Result<_, _>>()?,
+            u: self
+                .input_columns
+                .iter()
+                .map(|&c| number(c))
+                .collect::<Result<_, _>>()?,
+        }))
     }
-    Ok(rows)
+}
+
+/// Estimates over `rows` as they are read and writes each estimate row to `out` as it is known (the
+/// same text as [`estimates_csv`] of [`estimate`] on all rows, in memory of `N` rows).
+pub fn estimate_streaming(
+    maps: &[FittedMap],
+    horizon: usize,
+    rows: &mut RowReader,
+    out: &mut impl std::io::Write,
+) -> Result<(), StreamError> {
+    let names: Vec<&str> = maps.iter().map(|m| m.target.as_str()).collect();
+    out.write_all((names.join(",") + ",saturated\n").as_bytes())?;
+    let mut window: VecDeque<Row> = VecDeque::with_capacity(horizon + 1);
+    let mut previous_run: Option<String> = None;
+    let mut z = Vec::new();
+    while let Some(row) = rows.next_row()? {
+        if previous_run.as_deref() != Some(row.run.as_str()) {
+            window.clear();
+            previous_run = Some(row.run.clone());
+        }
+        let estimates: EstimateRow = if row.y.iter().chain(&row.u).any(|v| !v.is_finite()) {
+            vec![None; maps.len()]
+        } else {
+            if window.len() == horizon {
+                window.pop_back();
+            }
+            window.push_front(row);
+            if window.len() == horizon {
+                // Newest first, all outputs of one instant together, then all inputs.
+                z.clear();
+                z.extend(window.iter().flat_map(|r| r.y.iter().copied()));
+                z.extend(window.iter().flat_map(|r| r.u.iter().copied()));
+                maps.iter()
+                    .map(|m| {
+                        let e = m.estimate(&z);
+                        Some((e.value, e.saturation.is_saturated()))
+                    })
+                    .collect()
+            } else {
+                vec![None; maps.len()]
+            }
+        };
+        out.write_all(estimate_line(&estimates).as_bytes())?;
+    }
+    Ok(())
+}
+
+/// Why streaming estimates stopped.
+#[derive(Debug, thiserror::Error)]
+pub enum StreamError {
+    /// The recorded file.
+    #[error(transparent)]
+    Recording(#[from] RecordingError),
+    /// Writing the estimates.
+    #[error("writing the estimates: {0}")]
+    Io(#[from] std::io::Error),
 }
 
 /// One estimate row: per target `Some((value, saturated))`, or `None` where there is no estimate.
@@ -208,18 +314,23 @@ pub fn estimate(maps: &[FittedMap], horizon: usize, rows: &[Row]) -> Vec<Estimat
 pub fn estimates_csv(target_names: &[&str], estimates: &[EstimateRow]) -> String {
     let mut text = target_names.join(",") + ",saturated\n";
     for row in estimates {
-        let cells: Vec<String> = row
-            .iter()
-            .map(|e| e.map(|(v, _)| format!("{v}")).unwrap_or_default())
-            .collect();
-        let saturated = if row.iter().all(Option::is_none) {
-            String::new()
-        } else {
-            u8::from(row.iter().any(|e| e.is_some_and(|(_, s)| s))).to_string()
-        };
-        text += &format!("{},{saturated}\n", cells.join(","));
+        text += &estimate_line(row);
     }
     text
+}
+
+/// One line of the estimates file: a value per target (empty without an estimate), then `saturated`.
+fn estimate_line(row: &[Option<(f64, bool)>]) -> String {
+    let cells: Vec<String> = row
+        .iter()
+        .map(|e| e.map(|(v, _)| format!("{v}")).unwrap_or_default())
+        .collect();
+    let saturated = if row.iter().all(Option::is_none) {
+        String::new()
+    } else {
+        u8::from(row.iter().any(|e| e.is_some_and(|(_, s)| s))).to_string()
+    };
+    format!("{},{saturated}\n", cells.join(","))
 }
 
 /// CSV text of a simulated run: `time`, the states (true values), the outputs (with noise) and inputs.

@@ -288,3 +288,37 @@ fn a_non_finite_initial_state_is_blamed_on_x0() {
     assert!(stderr.contains("--x0") && !stderr.contains("derivatives"), "{stderr}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn streaming_estimates_equal_the_in_memory_ones() {
+    // Two runs, a refused NaN sample and enough rows for windows: `estimate` now streams the file
+    // row by row; its text must be what the in-memory path (used by the figures) gives.
+    let design = host::spec::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml")).unwrap();
+    let result = host::fit::run(&design, &indicatif::ProgressBar::hidden()).unwrap();
+    let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
+    let mut text = String::from("run,y\n");
+    for k in 0..40 {
+        let run = if k < 25 { "a" } else { "b" };
+        let y = if k == 17 {
+            "nan".to_owned()
+        } else {
+            format!("{}", (k as f64 * 0.3).sin() * 2.0)
+        };
+        text += &format!("{run},{y}\n");
+    }
+    let path = std::env::temp_dir().join(format!("host-stream-{}.csv", std::process::id()));
+    std::fs::write(&path, &text).unwrap();
+    let rows = host::recording::read(&design, &path).unwrap();
+    let names: Vec<&str> = design.targets.iter().map(|t| t.name.as_str()).collect();
+    let in_memory =
+        host::recording::estimates_csv(&names, &host::recording::estimate(&maps, design.map.horizon, &rows));
+    let mut streamed = Vec::new();
+    let mut reader = host::recording::RowReader::open(&design, &path).unwrap();
+    host::recording::estimate_streaming(&maps, design.map.horizon, &mut reader, &mut streamed).unwrap();
+    let _ = std::fs::remove_file(&path);
+    assert_eq!(String::from_utf8(streamed).unwrap(), in_memory);
+    assert!(
+        in_memory.lines().filter(|l| !l.starts_with(',')).count() > 10,
+        "{in_memory}"
+    );
+}
