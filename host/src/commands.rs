@@ -120,7 +120,12 @@ pub fn simulate(design: &Design, run: &Simulation, output: &Path) -> Result<(), 
     refuse_overwrite(output, &[&design.file])?;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
     let simulated = data::simulate_run(design, &x0, samples, &mut rng, "scenario")?;
-    write(output, &recording::run_csv(design, &simulated))
+    output::write_atomically_with(output, |out| recording::write_run_csv(design, &simulated, out)).map_err(|source| {
+        CommandError::Io {
+            path: output.to_owned(),
+            source,
+        }
+    })
 }
 
 /// Fits `design` and writes its library estimates over the recorded file `input` to `output` (see
@@ -169,11 +174,4 @@ fn refuse_overwrite(output: &Path, inputs: &[&Path]) -> Result<(), CommandError>
         }
     }
     Ok(())
-}
-
-fn write(path: &Path, text: &str) -> Result<(), CommandError> {
-    output::write_atomically(path, text.as_bytes()).map_err(|source| CommandError::Io {
-        path: path.to_owned(),
-        source,
-    })
 }

@@ -335,12 +335,19 @@ fn estimate_line(row: &[Option<(f64, bool)>]) -> String {
 
 /// CSV text of a simulated run: `time`, the states (true values), the outputs (with noise) and inputs.
 pub fn run_csv(design: &Design, run: &Run) -> String {
+    let mut text = Vec::new();
+    write_run_csv(design, run, &mut text).expect("writing into memory cannot fail");
+    String::from_utf8(text).expect("the CSV is ASCII")
+}
+
+/// [`run_csv`], written line by line into `out`.
+pub fn write_run_csv(design: &Design, run: &Run, out: &mut impl std::io::Write) -> std::io::Result<()> {
     let names: Vec<&str> = std::iter::once("time")
         .chain(design.model.states.iter().map(String::as_str))
         .chain(design.model.outputs.iter().map(|o| o.name.as_str()))
         .chain(design.model.inputs.iter().map(String::as_str))
         .collect();
-    let mut text = names.join(",") + "\n";
+    writeln!(out, "{}", names.join(","))?;
     for (k, ((x, y), u)) in run.states.iter().zip(&run.measurements).zip(&run.inputs).enumerate() {
         let values: Vec<String> = std::iter::once(k as f64 * design.tau)
             .chain(x.iter().copied())
@@ -348,9 +355,9 @@ pub fn run_csv(design: &Design, run: &Run) -> String {
             .chain(u.iter().copied())
             .map(|v| format!("{v}"))
             .collect();
-        text += &(values.join(",") + "\n");
+        writeln!(out, "{}", values.join(","))?;
     }
-    text
+    Ok(())
 }
 
 #[cfg(test)]

@@ -161,9 +161,9 @@ pub fn simulate_run(
         .map(|o| Normal::new(0.0, o.noise_variance.sqrt()).expect("variance validated finite and ≥ 0"))
         .collect();
     let mut environment = Vec::new();
-    let mut measurements = Vec::with_capacity(samples);
-    let mut targets = Vec::with_capacity(samples);
-    for (k, (x, u)) in states.iter().zip(&inputs).enumerate() {
+    let mut measurements = Rows::new(model.outputs.len());
+    let mut targets = Rows::new(design.targets.len());
+    for (k, (x, u)) in states.iter().zip(inputs.iter()).enumerate() {
         let mut y = vec![0.0; model.outputs.len()];
         model.outputs(x, u, &mut environment, &mut y);
         let r: Vec<f64> = design.targets.iter().map(|t| t.expr.eval(&environment)).collect();
@@ -190,14 +190,14 @@ pub fn simulate_run(
         for (value, distribution) in y.iter_mut().zip(&noise) {
             *value += distribution.sample(rng);
         }
-        measurements.push(y);
-        targets.push(r);
+        measurements.push(&y);
+        targets.push(&r);
     }
     Ok(Run {
-        states: Rows::from(states),
-        inputs: Rows::from(inputs),
-        measurements: Rows::from(measurements),
-        targets: Rows::from(targets),
+        states,
+        inputs,
+        measurements,
+        targets,
     })
 }
 
@@ -210,22 +210,22 @@ fn blow_up_error(design: &Design, x0: &[f64], set: &str, e: BlowUp) -> SpecError
 }
 
 /// Piecewise-constant inputs, one vector per sample.
-fn input_sequence(profiles: &[InputProfile], samples: usize, rng: &mut ChaCha8Rng) -> Vec<Vec<f64>> {
+fn input_sequence(profiles: &[InputProfile], samples: usize, rng: &mut ChaCha8Rng) -> Rows {
     let mut current = vec![0.0; profiles.len()];
-    (0..samples)
-        .map(|k| {
-            for (value, p) in current.iter_mut().zip(profiles) {
-                if k % p.hold == 0 {
-                    *value = if p.min < p.max {
-                        rng.random_range(p.min..=p.max)
-                    } else {
-                        p.min
-                    };
-                }
+    let mut inputs = Rows::new(profiles.len());
+    for k in 0..samples {
+        for (value, p) in current.iter_mut().zip(profiles) {
+            if k % p.hold == 0 {
+                *value = if p.min < p.max {
+                    rng.random_range(p.min..=p.max)
+                } else {
+                    p.min
+                };
             }
-            current.clone()
-        })
-        .collect()
+        }
+        inputs.push(&current);
+    }
+    inputs
 }
 
 /// The Cartesian product of the grids, the first varying slowest.

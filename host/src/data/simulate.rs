@@ -1,5 +1,6 @@
 //! Discretisation of `ẋ = f(x, u)` by classical RK4, the input held constant over each sample period.
 
+use crate::data::Rows;
 use crate::spec::model::Model;
 
 /// The first non-finite state of a simulated run.
@@ -64,9 +65,9 @@ impl<'a> Integrator<'a> {
 
     /// States `x(0) … x(n-1)` for `n = inputs.len()` samples from `x0`, `inputs[k]` held on
     /// `[kτ, (k+1)τ)`. Fails at the first non-finite state.
-    pub fn run(&mut self, x0: &[f64], inputs: &[Vec<f64>]) -> Result<Vec<Vec<f64>>, BlowUp> {
+    pub fn run(&mut self, x0: &[f64], inputs: &Rows) -> Result<Rows, BlowUp> {
         let mut x = x0.to_vec();
-        let mut states = Vec::with_capacity(inputs.len());
+        let mut states = Rows::new(x0.len());
         for (k, u) in inputs.iter().enumerate() {
             if x.iter().any(|v| !v.is_finite()) {
                 return Err(BlowUp {
@@ -75,7 +76,7 @@ impl<'a> Integrator<'a> {
                     state: x,
                 });
             }
-            states.push(x.clone());
+            states.push(&x);
             if k + 1 < inputs.len() {
                 self.advance(&mut x, u);
             }
@@ -108,7 +109,7 @@ mod tests {
         // ẋ1 = x2, ẋ2 = -x1: x1 = cos t, x2 = -sin t from (1, 0). RK4's global error is O(h⁴).
         let m = model(&["x2", "-x1"]);
         let mut integrator = Integrator::new(&m, 0.1, 10);
-        let states = integrator.run(&[1.0, 0.0], &vec![vec![]; 101]).unwrap();
+        let states = integrator.run(&[1.0, 0.0], &Rows::from(vec![vec![]; 101])).unwrap();
         for (k, x) in states.iter().enumerate() {
             let t = k as f64 * 0.1;
             assert!(
@@ -119,7 +120,7 @@ mod tests {
         // Halving the step divides the error at t = 10 by about 2⁴.
         let error = |substeps| {
             let mut i = Integrator::new(&m, 0.1, substeps);
-            let x = i.run(&[1.0, 0.0], &vec![vec![]; 101]).unwrap();
+            let x = i.run(&[1.0, 0.0], &Rows::from(vec![vec![]; 101])).unwrap();
             (x[100][0] - 10f64.cos()).abs()
         };
         let ratio = error(2) / error(4);
@@ -130,7 +131,9 @@ mod tests {
     fn nonlinear_decay_matches_the_closed_form() {
         // ẋ = -x², x(0) = 1  ⇒  x(t) = 1/(1 + t).
         let m = model(&["-(x1^2)"]);
-        let states = Integrator::new(&m, 0.2, 20).run(&[1.0], &vec![vec![]; 50]).unwrap();
+        let states = Integrator::new(&m, 0.2, 20)
+            .run(&[1.0], &Rows::from(vec![vec![]; 50]))
+            .unwrap();
         for (k, x) in states.iter().enumerate() {
             let t = k as f64 * 0.2;
             assert!((x[0] - 1.0 / (1.0 + t)).abs() < 1e-9);
@@ -142,7 +145,7 @@ mod tests {
         // ẋ = x², x(0) = 1 ⇒ x(t) = 1/(1 - t): infinite at t = 1.
         let m = model(&["x1^2"]);
         let err = Integrator::new(&m, 0.1, 10)
-            .run(&[1.0], &vec![vec![]; 100])
+            .run(&[1.0], &Rows::from(vec![vec![]; 100]))
             .unwrap_err();
         assert!((9..=40).contains(&err.sample), "{err}");
     }
