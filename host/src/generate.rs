@@ -48,7 +48,7 @@ pub enum GenerateError {
         source: std::io::Error,
     },
     /// No checkout around the current folder (needed for the defaults: shipped specs, `generated/`).
-    #[error("{}: not inside a checkout (no folder upward holds host/specs/ and generated/Cargo.toml); run from the checkout, or give --spec, --reports and --generated", from.display())]
+    #[error("{}: not inside a checkout (no folder upward holds host/specs/ and generated/Cargo.toml); run from the checkout, or give the paths (--spec FILE instead of --design; for gen also --reports and --generated)", from.display())]
     NoWorkspace {
         /// Where the search started.
         from: PathBuf,
