@@ -38,6 +38,12 @@
 //! write the dot products (and the search steps) out as straight-line code; the [`Observer`] keeps the
 //! last `N` samples in a window that is always contiguous ([`window`]).
 //!
+//! # The peer
+//!
+//! [`Ekf`] is an extended Kalman filter over any [`Plant`] (one sampling period of the model and its
+//! output, with Jacobians), in plain arrays with sequential scalar updates in Joseph form: the observer
+//! every design is compared with.
+//!
 //! # Features
 //!
 //! * `reference` (off by default): the host's reference maths, which the chip never runs: `Γ` and
@@ -53,6 +59,7 @@
 // The crate doc names the `reference` items without links: a link to an absent item fails `cargo doc`.
 #[cfg(any(test, feature = "reference"))]
 pub mod basis;
+pub mod ekf;
 pub mod family;
 #[cfg(any(test, feature = "reference"))]
 pub mod gamma;
@@ -62,6 +69,7 @@ pub mod observer;
 pub mod scalar;
 pub mod window;
 
+pub use ekf::{Ekf, Plant};
 pub use family::{FamilyObserver, Member};
 #[cfg(any(test, feature = "reference"))]
 pub use gamma::{Gamma, Inverse};

@@ -1,0 +1,217 @@
+//! An extended Kalman filter: the peer every design is measured against (and, later, the model
+//! correction of the map). Plain arrays, no allocation, no division but one per output.
+//!
+//! # The filter
+//!
+//! With the plant `x⁺ = f(x, u) + w`, `y = h(x, u) + v`, `w ~ N(0, Q)`, `v ~ N(0, diag(r))`, each sample
+//! `(y(k), u(k))`:
+//!
+//! ```text
+//! update    for each output i (sequentially, R diagonal: one scalar division each):
+//!             s = H_i P H_iᵀ + r_i,  K = P H_iᵀ / s,  x ← x + K (y_i - h_i(x, u))
+//!             P ← (I - K H_i) P (I - K H_i)ᵀ + K r_i Kᵀ          (Joseph form)
+//! predict   x ← f(x, u),  P ← F P Fᵀ + Q                          (F = ∂f/∂x at the updated x)
+//! ```
+//!
+//! The estimate after a sample is the *updated* state `x̂(k|k)`. The Joseph form keeps `P` positive
+//! semidefinite under rounding where `(I - K H) P` alone may not; after every step the lower triangle
+//! is copied from the upper one, so `P` stays exactly symmetric without extra arithmetic.
+//!
+//! A sample with a NaN or infinite value is refused: the update is skipped, the prediction still runs
+//! (time advances with the given input if it is finite; a non-finite input skips the prediction too), so
+//! a refused sample costs the filter that sample's information and nothing else.
+
+#![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(s > 0)` is deliberate: a NaN must count as no information.
+
+use core::marker::PhantomData;
+
+use crate::Scalar;
+
+/// The plant as the filter sees it: one sampling period of the model and its output, each with its
+/// Jacobian in the state. Generated designs implement it from the spec's expressions.
+pub trait Plant<T: Scalar, const NX: usize, const NY: usize, const NU: usize> {
+    /// `f(x, u)` over one sampling period, and `F = ∂f/∂x` there.
+    fn step(x: &[T; NX], u: &[T; NU]) -> ([T; NX], [[T; NX]; NX]);
+    /// `h(x, u)`, and `H = ∂h/∂x` there.
+    fn output(x: &[T; NX], u: &[T; NU]) -> ([T; NY], [[T; NX]; NY]);
+}
+
+/// The filter of plant `P`: the estimate, its covariance and the noise model.
+pub struct Ekf<T, P, const NX: usize, const NY: usize, const NU: usize> {
+    /// `x̂`: after a sample, the estimate given that sample (`x̂(k|k)`).
+    x: [T; NX],
+    /// `P`, kept exactly symmetric.
+    p: [[T; NX]; NX],
+    /// `Q`, the process noise covariance per sampling period.
+    q: [[T; NX]; NX],
+    /// The measurement noise variances (diagonal `R`).
+    r: [T; NY],
+    plant: PhantomData<fn() -> P>,
+}
+
+// By hand: the plant is a marker type, which needs neither `Clone` nor `Debug`.
+impl<T: Copy, P, const NX: usize, const NY: usize, const NU: usize> Clone for Ekf<T, P, NX, NY, NU> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<T: Copy, P, const NX: usize, const NY: usize, const NU: usize> Copy for Ekf<T, P, NX, NY, NU> {}
+
+impl<T: core::fmt::Debug, P, const NX: usize, const NY: usize, const NU: usize> core::fmt::Debug
+    for Ekf<T, P, NX, NY, NU>
+{
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Ekf")
+            .field("x", &self.x)
+            .field("p", &self.p)
+            .field("q", &self.q)
+            .field("r", &self.r)
+            .finish()
+    }
+}
+
+/// The result of one sample: the updated estimate, or the refusal of a non-finite sample.
+pub type EkfResult<T, const NX: usize> = Result<[T; NX], crate::RejectedSample>;
+
+impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const NU: usize> Ekf<T, P, NX, NY, NU> {
+    /// A filter starting at `x0` with covariance `p0`, process noise `q` and measurement variances `r`.
+    pub fn new(x0: [T; NX], p0: [[T; NX]; NX], q: [[T; NX]; NX], r: [T; NY]) -> Self {
+        let mut filter = Ekf {
+            x: x0,
+            p: p0,
+            q,
+            r,
+            plant: PhantomData,
+        };
+        filter.symmetrise();
+        filter
+    }
+
+    /// The current estimate.
+    #[must_use]
+    pub fn state(&self) -> [T; NX] {
+        self.x
+    }
+
+    /// The current covariance `P`.
+    #[must_use]
+    pub fn covariance(&self) -> [[T; NX]; NX] {
+        self.p
+    }
+
+    /// Takes the sample `(y, u)`: the measurement update, then the prediction to the next sample.
+    /// Returns the updated estimate `x̂(k|k)`; a non-finite `y` is refused (see the module docs).
+    pub fn push(&mut self, y: &[T; NY], u: &[T; NU]) -> EkfResult<T, NX> {
+        let measured = y.iter().all(|v| v.is_finite());
+        let driven = u.iter().all(|v| v.is_finite());
+        if measured && driven {
+            self.update(y, u);
+        }
+        let estimate = self.x;
+        if driven {
+            self.predict(u);
+        }
+        if measured && driven {
+            Ok(estimate)
+        } else {
+            Err(crate::RejectedSample)
+        }
+    }
+
+    /// Sequential scalar updates in Joseph form, one per output.
+    fn update(&mut self, y: &[T; NY], u: &[T; NU]) {
+        for i in 0..NY {
+            let (predicted, h) = P::output(&self.x, u);
+            let row = h[i];
+            // P Hᵢᵀ and s = Hᵢ P Hᵢᵀ + rᵢ.
+            let mut ph = [T::ZERO; NX];
+            for (a, out) in ph.iter_mut().enumerate() {
+                for (b, &hb) in row.iter().enumerate() {
+                    *out += self.p[a][b] * hb;
+                }
+            }
+            let mut s = self.r[i];
+            for (&hb, &phb) in row.iter().zip(&ph) {
+                s += hb * phb;
+            }
+            if !(s > T::ZERO) {
+                continue; // nothing to learn from this output (no sensitivity, no noise)
+            }
+            let inverse = T::one() / s;
+            let gain = ph.map(|v| v * inverse);
+            let innovation = y[i] - predicted[i];
+            for (x, &k) in self.x.iter_mut().zip(&gain) {
+                *x += k * innovation;
+            }
+            // Joseph: P ← A P Aᵀ + K r Kᵀ with A = I - K Hᵢ.
+            let mut a = [[T::ZERO; NX]; NX];
+            for (r, row_a) in a.iter_mut().enumerate() {
+                for (c, entry) in row_a.iter_mut().enumerate() {
+                    let identity = if r == c { T::one() } else { T::ZERO };
+                    *entry = identity - gain[r] * row[c];
+                }
+            }
+            let mut next = product_transposed(&product(&a, &self.p), &a);
+            for (r, next_row) in next.iter_mut().enumerate() {
+                for (c, entry) in next_row.iter_mut().enumerate() {
+                    *entry += gain[r] * self.r[i] * gain[c];
+                }
+            }
+            self.p = next;
+            self.symmetrise();
+        }
+    }
+
+    /// `x ← f(x, u)`, `P ← F P Fᵀ + Q`.
+    fn predict(&mut self, u: &[T; NU]) {
+        let (x, f) = P::step(&self.x, u);
+        let mut next = product_transposed(&product(&f, &self.p), &f);
+        for (next_row, q_row) in next.iter_mut().zip(&self.q) {
+            for (entry, &q) in next_row.iter_mut().zip(q_row) {
+                *entry += q;
+            }
+        }
+        self.x = x;
+        self.p = next;
+        self.symmetrise();
+    }
+
+    /// Copies the upper triangle of `P` onto the lower one.
+    fn symmetrise(&mut self) {
+        for r in 0..NX {
+            for c in 0..r {
+                self.p[r][c] = self.p[c][r];
+            }
+        }
+    }
+}
+
+/// `A B`.
+fn product<T: Scalar, const N: usize>(a: &[[T; N]; N], b: &[[T; N]; N]) -> [[T; N]; N] {
+    let mut out = [[T::ZERO; N]; N];
+    for (r, out_row) in out.iter_mut().enumerate() {
+        for (c, entry) in out_row.iter_mut().enumerate() {
+            for k in 0..N {
+                *entry += a[r][k] * b[k][c];
+            }
+        }
+    }
+    out
+}
+
+/// `A Bᵀ`.
+fn product_transposed<T: Scalar, const N: usize>(a: &[[T; N]; N], b: &[[T; N]; N]) -> [[T; N]; N] {
+    let mut out = [[T::ZERO; N]; N];
+    for (r, out_row) in out.iter_mut().enumerate() {
+        for (c, entry) in out_row.iter_mut().enumerate() {
+            for k in 0..N {
+                *entry += a[r][k] * b[c][k];
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests;

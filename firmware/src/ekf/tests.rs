@@ -1,0 +1,143 @@
+//! The filter on linear plants, where the Kalman filter is known independently: the steady-state
+//! covariance in closed form (scalar Riccati equation), and a textbook filter written with nalgebra
+//! matrices and a matrix inverse instead of sequential scalar Joseph updates.
+
+use nalgebra::{Matrix2, Matrix2x1, Vector2};
+
+use super::*;
+
+/// `x⁺ = 0.9 x`, `y = 2 x`.
+struct Scalar1;
+
+const A1: f64 = 0.9;
+const C1: f64 = 2.0;
+
+impl Plant<f64, 1, 1, 0> for Scalar1 {
+    fn step(x: &[f64; 1], _: &[f64; 0]) -> ([f64; 1], [[f64; 1]; 1]) {
+        ([A1 * x[0]], [[A1]])
+    }
+    fn output(x: &[f64; 1], _: &[f64; 0]) -> ([f64; 1], [[f64; 1]; 1]) {
+        ([C1 * x[0]], [[C1]])
+    }
+}
+
+/// The steady-state prior variance of the scalar filter: the positive root of
+/// `c² P² + (r (1 - a²) - q c²) P - q r = 0`.
+fn riccati_scalar(a: f64, c: f64, q: f64, r: f64) -> f64 {
+    let b = r * (1.0 - a * a) - q * c * c;
+    (-b + (b * b + 4.0 * c * c * q * r).sqrt()) / (2.0 * c * c)
+}
+
+#[test]
+fn the_covariance_converges_to_the_closed_form_riccati_solution() {
+    let (q, r) = (0.1, 0.5);
+    let mut filter: Ekf<f64, Scalar1, 1, 1, 0> = Ekf::new([3.0], [[10.0]], [[q]], [r]);
+    for k in 0..300 {
+        // The covariance does not depend on the measurements: any finite values.
+        filter.push(&[(k as f64).sin()], &[]).unwrap();
+    }
+    let expected = riccati_scalar(A1, C1, q, r);
+    let prior = filter.covariance()[0][0];
+    assert!((prior - expected).abs() < 1e-12 * expected, "{prior} vs {expected}");
+}
+
+/// `x⁺ = A x`, `y = x₁ + v`: coupled states, one output.
+struct Coupled;
+
+fn a2() -> Matrix2<f64> {
+    Matrix2::new(1.0, 0.1, -0.2, 0.95)
+}
+
+impl Plant<f64, 2, 1, 1> for Coupled {
+    fn step(x: &[f64; 2], u: &[f64; 1]) -> ([f64; 2], [[f64; 2]; 2]) {
+        let a = a2();
+        let next = a * Vector2::new(x[0], x[1]) + Vector2::new(0.0, 0.1 * u[0]);
+        ([next[0], next[1]], [[a[(0, 0)], a[(0, 1)]], [a[(1, 0)], a[(1, 1)]]])
+    }
+    fn output(x: &[f64; 2], _: &[f64; 1]) -> ([f64; 1], [[f64; 2]; 1]) {
+        ([x[0]], [[1.0, 0.0]])
+    }
+}
+
+#[test]
+fn sequential_joseph_updates_match_a_textbook_filter_with_a_matrix_inverse() {
+    let (q, r) = (Matrix2::new(0.01, 0.002, 0.002, 0.02), 0.3);
+    let mut filter: Ekf<f64, Coupled, 2, 1, 1> = Ekf::new(
+        [0.5, -1.0],
+        [[2.0, 0.1], [0.1, 1.0]],
+        [[q[(0, 0)], q[(0, 1)]], [q[(1, 0)], q[(1, 1)]]],
+        [r],
+    );
+    // The textbook form: K = P Cᵀ (C P Cᵀ + R)⁻¹, x += K (y - C x), P = (I - K C) P; then predict.
+    let (a, c) = (a2(), Matrix2x1::new(1.0, 0.0).transpose());
+    let (mut x, mut p) = (Vector2::new(0.5, -1.0), Matrix2::new(2.0, 0.1, 0.1, 1.0));
+    for k in 0..200 {
+        let (y, u) = ((k as f64 * 0.37).cos(), (k as f64 * 0.11).sin());
+        let s = (c * p * c.transpose())[(0, 0)] + r;
+        let gain = p * c.transpose() * s.recip();
+        x += gain * (y - (c * x)[(0, 0)]);
+        p = (Matrix2::identity() - gain * c) * p;
+        let estimate = filter.push(&[y], &[u]).unwrap();
+        assert!(
+            (estimate[0] - x[0]).abs() < 1e-10 && (estimate[1] - x[1]).abs() < 1e-10,
+            "k = {k}"
+        );
+        x = a * x + Vector2::new(0.0, 0.1 * u);
+        p = a * p * a.transpose() + q;
+        let ours = filter.covariance();
+        for (row, col) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+            assert!(
+                (ours[row][col] - p[(row, col)]).abs() < 1e-10,
+                "k = {k} P[{row}][{col}]"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_covariance_stays_symmetric_and_positive_with_an_almost_exact_sensor() {
+    // r = 1e-14 after P = 1e6: an almost exact sensor, where the short update (I - K H) P is prone to
+    // lose symmetry and positivity to rounding; the Joseph form with the copied triangle must not.
+    let mut filter: Ekf<f64, Coupled, 2, 1, 1> = Ekf::new(
+        [0.0, 0.0],
+        [[1e6, 0.0], [0.0, 1e6]],
+        [[1e-9, 0.0], [0.0, 1e-9]],
+        [1e-14],
+    );
+    for k in 0..500 {
+        filter.push(&[(k as f64).sin()], &[0.0]).unwrap();
+        let p = filter.covariance();
+        assert_eq!(p[0][1].to_bits(), p[1][0].to_bits(), "k = {k}");
+        let (trace, det) = (p[0][0] + p[1][1], p[0][0] * p[1][1] - p[0][1] * p[1][0]);
+        assert!(
+            p[0][0] >= 0.0 && p[1][1] >= 0.0 && trace >= 0.0 && det >= -1e-12 * trace * trace,
+            "k = {k}: {p:?}"
+        );
+    }
+}
+
+#[test]
+fn a_non_finite_measurement_is_refused_and_only_the_prediction_runs() {
+    let (q, r) = (0.1, 0.5);
+    let mut filter: Ekf<f64, Scalar1, 1, 1, 0> = Ekf::new([3.0], [[2.0]], [[q]], [r]);
+    for y in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        let (x, p) = (filter.state()[0], filter.covariance()[0][0]);
+        assert_eq!(filter.push(&[y], &[]), Err(crate::RejectedSample));
+        assert_eq!(filter.state(), [A1 * x]);
+        assert_eq!(filter.covariance(), [[A1 * p * A1 + q]]);
+    }
+    // And a finite sample afterwards is taken as usual.
+    assert!(filter.push(&[1.0], &[]).is_ok() && filter.state()[0].is_finite());
+}
+
+#[test]
+fn a_non_finite_input_changes_nothing() {
+    let mut filter: Ekf<f64, Coupled, 2, 1, 1> =
+        Ekf::new([0.5, -1.0], [[2.0, 0.1], [0.1, 1.0]], [[0.01, 0.0], [0.0, 0.02]], [0.3]);
+    let before = filter;
+    assert_eq!(filter.push(&[0.2], &[f64::NAN]), Err(crate::RejectedSample));
+    assert_eq!(
+        (filter.state(), filter.covariance()),
+        (before.state(), before.covariance())
+    );
+}
