@@ -213,9 +213,7 @@ impl InverseTable {
         nodes: &[f64],
         bound_eta: f64,
     ) -> Result<Self, TableError> {
-        let (v0, v1) = (gamma.value(0.0), gamma.value(1.0));
         let count = nodes.len() - 1;
-        let scale = count as f64 / (v1 - v0);
         let span = r_max - r_min;
         let segments = nodes
             .windows(2)
@@ -226,17 +224,7 @@ impl InverseTable {
                 [r0 - slope * k as f64, slope]
             })
             .collect();
-        InverseTable {
-            gains: gains.iter().map(|g| g * scale).collect(),
-            offset: -v0 * scale,
-            starts: None,
-            segments,
-            r_min,
-            r_max,
-            proven_bound: bound_eta * span,
-            sampled_error: 0.0,
-        }
-        .confirmed(gamma)
+        Self::assemble(gamma, gains, (r_min, r_max), count as f64, None, segments, bound_eta)
     }
 
     /// The searched table through the knots `η_k` (the last is 1), whose interpolation is proven within
@@ -267,14 +255,31 @@ impl InverseTable {
             let slope = span * (knots[k + 1] - knots[k]) / (t[k + 1] - t[k]);
             segments.push([r_min + span * knots[k], slope]);
         }
+        let starts = Some(t[..t.len() - 1].to_vec());
+        Self::assemble(gamma, gains, (r_min, r_max), 1.0, starts, segments, bound_eta)
+    }
+
+    /// The table of `segments` (with their `starts` for searched knots) over `t ∈ [0, t_max]`: gains
+    /// and offset scaled so that the dot product gives `t`, then confirmed densely.
+    fn assemble(
+        gamma: &Gamma<'_, f64>,
+        gains: &[f64],
+        (r_min, r_max): (f64, f64),
+        t_max: f64,
+        starts: Option<Vec<f64>>,
+        segments: Vec<[f64; 2]>,
+        bound_eta: f64,
+    ) -> Result<Self, TableError> {
+        let (v0, v1) = (gamma.value(0.0), gamma.value(1.0));
+        let scale = t_max / (v1 - v0);
         InverseTable {
             gains: gains.iter().map(|g| g * scale).collect(),
             offset: -v0 * scale,
-            starts: Some(t[..t.len() - 1].to_vec()),
+            starts,
             segments,
             r_min,
             r_max,
-            proven_bound: bound_eta * span,
+            proven_bound: bound_eta * (r_max - r_min),
             sampled_error: 0.0,
         }
         .confirmed(gamma)
