@@ -3,6 +3,7 @@
 //! [`load`] parses it (serde, unknown fields rejected) and validates every field into a [`Design`];
 //! any problem becomes a [`SpecError`] naming the file, the field and what to change.
 
+pub mod ast;
 pub mod expr;
 pub mod limits;
 pub mod model;

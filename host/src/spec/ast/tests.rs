@@ -1,0 +1,78 @@
+//! The tree against exmex: the same value on random expressions and random points (exmex's own
+//! evaluation is the independent truth), and the shapes exmex's priorities give.
+
+use exmex::prelude::*;
+use proptest::prelude::*;
+
+use super::*;
+
+fn shape(text: &str) -> String {
+    parse(text).unwrap().to_string()
+}
+
+#[test]
+fn priorities_and_signs_follow_exmex() {
+    assert_eq!(shape("a * b / c"), "(a Mul (b Div c))");
+    assert_eq!(shape("a + b - c"), "(a Add (b Sub c))");
+    assert_eq!(shape("a - b - c"), "((a Sub b) Sub c)");
+    assert_eq!(shape("-x^2"), "((-x) Pow 2.0)");
+    assert_eq!(shape("x^-2"), "(x Pow (-2.0))");
+    assert_eq!(shape("2*sin(x + 1)"), "(2.0 Mul sin((x Add 1.0)))");
+    assert_eq!(shape("PI*r"), format!("({:?} Mul r)", std::f64::consts::PI));
+}
+
+#[test]
+fn malformed_text_is_refused_with_a_position() {
+    for (text, at) in [("x +", 3), ("(x", 2), ("x)", 1), ("sin x", 0), ("x # y", 2), ("", 0)] {
+        let error = parse(text).unwrap_err();
+        assert_eq!(error.at, at, "{text}: {error}");
+    }
+}
+
+/// Expression texts over `a`, `b`, `c`: operators with and without parentheses, signs, calls.
+fn expression_text() -> impl Strategy<Value = String> {
+    let leaf = prop_oneof![
+        Just("a".to_owned()),
+        Just("b".to_owned()),
+        Just("c".to_owned()),
+        (0u32..20, 0u32..100).prop_map(|(i, f)| format!("{i}.{f}")),
+        Just("PI".to_owned()),
+    ];
+    leaf.prop_recursive(4, 24, 3, |inner| {
+        let operator = prop_oneof![Just("+"), Just("-"), Just("*"), Just("/"), Just("^")];
+        let function = prop_oneof![
+            Just("sin"),
+            Just("exp"),
+            Just("sqrt"),
+            Just("abs"),
+            Just("ln"),
+            Just("tanh")
+        ];
+        prop_oneof![
+            (inner.clone(), operator.clone(), inner.clone()).prop_map(|(l, o, r)| format!("{l} {o} {r}")),
+            (inner.clone(), operator, inner.clone()).prop_map(|(l, o, r)| format!("({l}) {o} ({r})")),
+            (function, inner.clone()).prop_map(|(f, a)| format!("{f}({a})")),
+            inner.prop_map(|a| format!("-{a}")),
+        ]
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+    #[test]
+    fn evaluates_as_exmex_does(text in expression_text(), a in 0.1f64..3.0, b in 0.1f64..3.0, c in 0.1f64..3.0) {
+        // Texts exmex refuses are not in the language (the validator refuses them before us); proptest
+        // fails the test if too many are, so the comparison cannot become vacuous.
+        let flat = FlatEx::<f64>::parse(&text);
+        prop_assume!(flat.is_ok());
+        let flat = flat.unwrap();
+        let node = parse(&text).map_err(|e| TestCaseError::fail(format!("exmex parses `{text}`, we do not: {e}")))?;
+        let values: Vec<f64> = flat.var_names().iter().map(|n| match n.as_str() { "a" => a, "b" => b, _ => c }).collect();
+        let theirs = flat.eval(&values).unwrap_or(f64::NAN);
+        let ours = node.eval(&|n: &str| match n { "a" => a, "b" => b, _ => c });
+        let close = (ours - theirs).abs() <= 1e-9 * (1.0 + theirs.abs())
+            || (ours.is_nan() && theirs.is_nan())
+            || ours == theirs;
+        prop_assert!(close, "`{}`: ours {} ({}), exmex {}", text, ours, node, theirs);
+    }
+}
