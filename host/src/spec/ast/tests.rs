@@ -76,3 +76,54 @@ proptest! {
         prop_assert!(close, "`{}`: ours {} ({}), exmex {}", text, ours, node, theirs);
     }
 }
+
+#[test]
+fn derivatives_follow_the_rules() {
+    let d = |text: &str, v: &str| parse(text).unwrap().derivative(v).to_string();
+    assert_eq!(d("3*x + y", "x"), "3.0");
+    assert_eq!(d("x^3", "x"), "(3.0 Mul (x Pow 2.0))");
+    assert_eq!(d("sin(x)", "y"), "0.0");
+    assert_eq!(d("exp(2*x)", "x"), "(exp((2.0 Mul x)) Mul 2.0)");
+}
+
+/// Smooth expressions on a domain where every function is defined: `a`, `b`, `c` in `[0.5, 2]`.
+fn smooth_text() -> impl Strategy<Value = String> {
+    let leaf = prop_oneof![
+        Just("a".to_owned()),
+        Just("b".to_owned()),
+        Just("c".to_owned()),
+        (1u32..5, 0u32..10).prop_map(|(i, f)| format!("{i}.{f}")),
+    ];
+    leaf.prop_recursive(3, 12, 3, |inner| {
+        let operator = prop_oneof![Just("+"), Just("-"), Just("*"), Just("/")];
+        let function = prop_oneof![Just("sin"), Just("cos"), Just("exp"), Just("tanh"), Just("atan")];
+        prop_oneof![
+            (inner.clone(), operator, inner.clone()).prop_map(|(l, o, r)| format!("({l}) {o} ({r})")),
+            (function, inner.clone()).prop_map(|(f, a)| format!("{f}({a})")),
+            inner.clone().prop_map(|a| format!("sqrt(1.0 + ({a})^2)")),
+            (inner.clone(), inner).prop_map(|(l, r)| format!("({l}) min ({r})")),
+        ]
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1000))]
+    #[test]
+    fn derivatives_match_central_differences(text in smooth_text(), a in 0.5f64..2.0, b in 0.5f64..2.0, c in 0.5f64..2.0) {
+        let node = parse(&text).unwrap();
+        let at = |a: f64| move |n: &str| match n { "a" => a, "b" => b, _ => c };
+        let value = node.eval(&at(a));
+        prop_assume!(value.is_finite() && value.abs() < 1e6);
+        let h = 1e-6;
+        let (up, down) = (node.eval(&at(a + h)), node.eval(&at(a - h)));
+        let numeric = (up - down) / (2.0 * h);
+        let exact = node.derivative("a").eval(&at(a));
+        // A kink of `min` within h of the point makes the difference quotient meaningless there.
+        let second = (up - 2.0 * value + down) / (h * h);
+        prop_assume!(second.abs() < 1e6);
+        prop_assert!(
+            (exact - numeric).abs() <= 1e-5 * (1.0 + exact.abs()),
+            "`{}` at a = {}: derivative {} vs central difference {}", text, a, exact, numeric
+        );
+    }
+}
