@@ -53,6 +53,16 @@ pub enum GenerateError {
         /// Where the search started.
         from: PathBuf,
     },
+    /// No shipped spec names the design asked for.
+    #[error("unknown design `{name}`; the shipped designs are: {known}{broken} (or pass --spec FILE)")]
+    UnknownDesign {
+        /// The name asked for.
+        name: String,
+        /// The shipped designs that loaded.
+        known: String,
+        /// The shipped specs that did not load, if any.
+        broken: String,
+    },
     /// Two specs of one run name the same design.
     #[error("{} and {}: both specs name the design `{name}`: rename one", first.display(), second.display())]
     DuplicateName {
@@ -100,6 +110,30 @@ pub fn shipped_specs() -> Result<Vec<PathBuf>, GenerateError> {
         .collect();
     specs.sort();
     Ok(specs)
+}
+
+/// The shipped design named `name`. A broken spec of another design does not stand in the way; a
+/// broken spec whose file is `<name>.toml` gives its own error; otherwise the error lists the designs
+/// found and the specs that did not load.
+pub fn shipped_design(name: &str) -> Result<Design, GenerateError> {
+    let (mut known, mut broken) = (Vec::new(), Vec::new());
+    for path in shipped_specs()? {
+        match spec::load(&path) {
+            Ok(design) if design.name == name => return Ok(design),
+            Ok(design) => known.push(design.name),
+            Err(e) if path.file_stem().is_some_and(|stem| stem == name) => return Err(e.into()),
+            Err(_) => broken.push(path.display().to_string()),
+        }
+    }
+    Err(GenerateError::UnknownDesign {
+        name: name.to_owned(),
+        known: known.join(", "),
+        broken: if broken.is_empty() {
+            String::new()
+        } else {
+            format!(" ({} did not load)", broken.join(", "))
+        },
+    })
 }
 
 /// One design fitted and emitted, in memory.

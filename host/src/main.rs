@@ -78,19 +78,7 @@ impl DesignChoice {
         if let Some(path) = &self.spec {
             return Ok(spec::load(path)?);
         }
-        let name = self.design.as_deref().unwrap_or_default();
-        let mut known = Vec::new();
-        for path in generate::shipped_specs()? {
-            let design = spec::load(&path)?;
-            if design.name == name {
-                return Ok(design);
-            }
-            known.push(design.name);
-        }
-        anyhow::bail!(
-            "unknown design `{name}`; the shipped designs are: {} (or pass --spec FILE)",
-            known.join(", ")
-        )
+        Ok(generate::shipped_design(self.design.as_deref().unwrap_or_default())?)
     }
 }
 

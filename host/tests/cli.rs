@@ -110,3 +110,42 @@ fn gen_finds_the_checkout_from_the_current_folder_not_from_where_it_was_built() 
     assert!(String::from_utf8_lossy(&output.stderr).contains("not inside a checkout"));
     let _ = std::fs::remove_dir_all(&copy);
 }
+
+#[test]
+fn one_broken_shipped_spec_does_not_stop_the_others() {
+    // A broken spec in host/specs/ used to make `--design` fail for every design.
+    let copy = std::env::temp_dir().join(format!("host-cli-broken-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&copy);
+    std::fs::create_dir_all(copy.join("host/specs")).unwrap();
+    std::fs::create_dir_all(copy.join("generated/src")).unwrap();
+    let here = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    std::fs::copy(
+        here.join("specs/vanderpol.toml"),
+        copy.join("host/specs/vanderpol.toml"),
+    )
+    .unwrap();
+    std::fs::copy(here.join("../generated/Cargo.toml"), copy.join("generated/Cargo.toml")).unwrap();
+    std::fs::write(
+        copy.join("host/specs/broken.toml"),
+        "name = \"broken\"\nthis is not toml\n",
+    )
+    .unwrap();
+    let run = |design: &str| {
+        Command::new(env!("CARGO_BIN_EXE_host"))
+            .args(["simulate", "--design", design, "--output", "run.csv"])
+            .current_dir(&copy)
+            .output()
+            .unwrap()
+    };
+    let ok = run("vanderpol");
+    assert!(ok.status.success(), "{}", String::from_utf8_lossy(&ok.stderr));
+    // Asking for the broken one gives its own error; an unknown name lists what loaded and what did not.
+    let broken = run("broken");
+    assert!(!broken.status.success() && String::from_utf8_lossy(&broken.stderr).contains("broken.toml"));
+    let unknown = String::from_utf8_lossy(&run("nothing").stderr).into_owned();
+    assert!(
+        unknown.contains("vanderpol") && unknown.contains("did not load"),
+        "{unknown}"
+    );
+    let _ = std::fs::remove_dir_all(&copy);
+}
