@@ -163,19 +163,17 @@ pub fn emit_design(design: Design, spec: &Path, progress: &ProgressBar) -> Resul
 }
 
 /// The text of `generated/src/lib.rs` declaring the design files `present` (sorted here) and the
-/// families among them, whose members' specs are found in `specs`.
-pub fn lib_source(specs: &[PathBuf], present: &[String]) -> Result<String, GenerateError> {
+/// families among them, as the designs `known` declare them (the first of a name counts).
+pub fn lib_source(known: &[Design], present: &[String]) -> Result<String, GenerateError> {
     let mut present = present.to_vec();
     present.sort();
-    let mut known: Vec<Design> = Vec::new();
-    for path in specs {
-        if let Ok(design) = spec::load(path) {
-            if !known.iter().any(|d| d.name == design.name) {
-                known.push(design);
-            }
+    let mut distinct: Vec<Design> = Vec::new();
+    for design in known {
+        if !distinct.iter().any(|d| d.name == design.name) {
+            distinct.push(design.clone());
         }
     }
-    let families = emit::families(&known, &present)?;
+    let families = emit::families(&distinct, &present)?;
     emit::lib_file(&present, &families).map_err(|source| GenerateError::Emit {
         file: PathBuf::from("generated/src/lib.rs"),
         design: "lib".to_owned(),
@@ -238,9 +236,14 @@ pub fn run(
             present.push(design.name.clone());
         }
     }
-    let shipped = shipped_specs().unwrap_or_default(); // families of shipped designs, when in a checkout
-    let all_specs: Vec<PathBuf> = specs.iter().cloned().chain(shipped).collect();
-    let lib = lib_source(&all_specs, &present)?;
+    // This run's designs first, then the shipped ones that load (their families), when in a checkout.
+    let shipped = shipped_specs().unwrap_or_default();
+    let known: Vec<Design> = designs
+        .iter()
+        .map(|(_, d)| d.clone())
+        .chain(shipped.iter().filter_map(|path| spec::load(path).ok()))
+        .collect();
+    let lib = lib_source(&known, &present)?;
 
     // 2. Fit, emit and report every design in memory.
     let mut prepared = Vec::new();

@@ -69,11 +69,10 @@ fn gen_writes_the_report_and_prints_a_summary() {
     assert!(leftovers.is_empty());
 }
 
-#[test]
-fn gen_finds_the_checkout_from_the_current_folder_not_from_where_it_was_built() {
-    // A copied checkout (just what gen needs) used to be ignored: the defaults pointed into the
-    // checkout the binary was compiled in.
-    let copy = std::env::temp_dir().join(format!("host-cli-copy-{}", std::process::id()));
+/// A fresh folder holding just what `gen` needs of a checkout: the Van der Pol spec in `host/specs/`
+/// and `generated/Cargo.toml`.
+fn minimal_checkout(name: &str) -> std::path::PathBuf {
+    let copy = std::env::temp_dir().join(format!("host-cli-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&copy);
     std::fs::create_dir_all(copy.join("host/specs")).unwrap();
     std::fs::create_dir_all(copy.join("generated/src")).unwrap();
@@ -84,6 +83,14 @@ fn gen_finds_the_checkout_from_the_current_folder_not_from_where_it_was_built() 
     )
     .unwrap();
     std::fs::copy(here.join("../generated/Cargo.toml"), copy.join("generated/Cargo.toml")).unwrap();
+    copy
+}
+
+#[test]
+fn gen_finds_the_checkout_from_the_current_folder_not_from_where_it_was_built() {
+    // A copied checkout (just what gen needs) used to be ignored: the defaults pointed into the
+    // checkout the binary was compiled in.
+    let copy = minimal_checkout("copy");
     let inside = copy.join("host/specs");
     let output = Command::new(env!("CARGO_BIN_EXE_host"))
         .arg("gen")
@@ -114,17 +121,7 @@ fn gen_finds_the_checkout_from_the_current_folder_not_from_where_it_was_built() 
 #[test]
 fn one_broken_shipped_spec_does_not_stop_the_others() {
     // A broken spec in host/specs/ used to make `--design` fail for every design.
-    let copy = std::env::temp_dir().join(format!("host-cli-broken-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&copy);
-    std::fs::create_dir_all(copy.join("host/specs")).unwrap();
-    std::fs::create_dir_all(copy.join("generated/src")).unwrap();
-    let here = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    std::fs::copy(
-        here.join("specs/vanderpol.toml"),
-        copy.join("host/specs/vanderpol.toml"),
-    )
-    .unwrap();
-    std::fs::copy(here.join("../generated/Cargo.toml"), copy.join("generated/Cargo.toml")).unwrap();
+    let copy = minimal_checkout("broken");
     std::fs::write(
         copy.join("host/specs/broken.toml"),
         "name = \"broken\"\nthis is not toml\n",
