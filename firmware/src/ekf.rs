@@ -23,20 +23,20 @@
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(s > 0)` is deliberate: a NaN must count as no information.
 
-use core::marker::PhantomData;
-
+use crate::model::product;
 use crate::Scalar;
 
 /// The plant as the filter sees it: one sampling period of the model and its output, each with its
-/// Jacobian in the state. Generated designs implement it from the spec's expressions.
+/// Jacobian in the state. Generated designs use [`crate::Rk4`] over their emitted [`crate::Model`].
 pub trait Plant<T: Scalar, const NX: usize, const NY: usize, const NU: usize> {
     /// `f(x, u)` over one sampling period, and `F = ∂f/∂x` there.
-    fn step(x: &[T; NX], u: &[T; NU]) -> ([T; NX], [[T; NX]; NX]);
+    fn step(&self, x: &[T; NX], u: &[T; NU]) -> ([T; NX], [[T; NX]; NX]);
     /// `h(x, u)`, and `H = ∂h/∂x` there.
-    fn output(x: &[T; NX], u: &[T; NU]) -> ([T; NY], [[T; NX]; NY]);
+    fn output(&self, x: &[T; NX], u: &[T; NU]) -> ([T; NY], [[T; NX]; NY]);
 }
 
 /// The filter of plant `P`: the estimate, its covariance and the noise model.
+#[derive(Clone, Copy, Debug)]
 pub struct Ekf<T, P, const NX: usize, const NY: usize, const NU: usize> {
     /// `x̂`: after a sample, the estimate given that sample (`x̂(k|k)`).
     x: [T; NX],
@@ -46,43 +46,23 @@ pub struct Ekf<T, P, const NX: usize, const NY: usize, const NU: usize> {
     q: [[T; NX]; NX],
     /// The measurement noise variances (diagonal `R`).
     r: [T; NY],
-    plant: PhantomData<fn() -> P>,
+    plant: P,
 }
 
-// By hand: the plant is a marker type, which needs neither `Clone` nor `Debug`.
-impl<T: Copy, P, const NX: usize, const NY: usize, const NU: usize> Clone for Ekf<T, P, NX, NY, NU> {
-    fn clone(&self) -> Self {
-        *self
-    }
-}
-
-impl<T: Copy, P, const NX: usize, const NY: usize, const NU: usize> Copy for Ekf<T, P, NX, NY, NU> {}
-
-impl<T: core::fmt::Debug, P, const NX: usize, const NY: usize, const NU: usize> core::fmt::Debug
-    for Ekf<T, P, NX, NY, NU>
-{
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("Ekf")
-            .field("x", &self.x)
-            .field("p", &self.p)
-            .field("q", &self.q)
-            .field("r", &self.r)
-            .finish()
-    }
-}
 
 /// The result of one sample: the updated estimate, or the refusal of a non-finite sample.
 pub type EkfResult<T, const NX: usize> = Result<[T; NX], crate::RejectedSample>;
 
 impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const NU: usize> Ekf<T, P, NX, NY, NU> {
-    /// A filter starting at `x0` with covariance `p0`, process noise `q` and measurement variances `r`.
-    pub fn new(x0: [T; NX], p0: [[T; NX]; NX], q: [[T; NX]; NX], r: [T; NY]) -> Self {
+    /// A filter of `plant` starting at `x0` with covariance `p0`, process noise `q` and measurement
+    /// variances `r`.
+    pub fn new(plant: P, x0: [T; NX], p0: [[T; NX]; NX], q: [[T; NX]; NX], r: [T; NY]) -> Self {
         let mut filter = Ekf {
             x: x0,
             p: p0,
             q,
             r,
-            plant: PhantomData,
+            plant,
         };
         filter.symmetrise();
         filter
@@ -122,7 +102,7 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
     /// Sequential scalar updates in Joseph form, one per output.
     fn update(&mut self, y: &[T; NY], u: &[T; NU]) {
         for i in 0..NY {
-            let (predicted, h) = P::output(&self.x, u);
+            let (predicted, h) = self.plant.output(&self.x, u);
             let row = h[i];
             // P Hᵢᵀ and s = Hᵢ P Hᵢᵀ + rᵢ.
             let mut ph = [T::ZERO; NX];
@@ -165,7 +145,7 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
 
     /// `x ← f(x, u)`, `P ← F P Fᵀ + Q`.
     fn predict(&mut self, u: &[T; NU]) {
-        let (x, f) = P::step(&self.x, u);
+        let (x, f) = self.plant.step(&self.x, u);
         let mut next = product_transposed(&product(&f, &self.p), &f);
         for (next_row, q_row) in next.iter_mut().zip(&self.q) {
             for (entry, &q) in next_row.iter_mut().zip(q_row) {
@@ -185,19 +165,6 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
             }
         }
     }
-}
-
-/// `A B`.
-fn product<T: Scalar, const N: usize>(a: &[[T; N]; N], b: &[[T; N]; N]) -> [[T; N]; N] {
-    let mut out = [[T::ZERO; N]; N];
-    for (r, out_row) in out.iter_mut().enumerate() {
-        for (c, entry) in out_row.iter_mut().enumerate() {
-            for k in 0..N {
-                *entry += a[r][k] * b[k][c];
-            }
-        }
-    }
-    out
 }
 
 /// `A Bᵀ`.

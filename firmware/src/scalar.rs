@@ -23,6 +23,12 @@ pub trait Scalar: RealField + Copy {
         nalgebra::convert(value)
     }
 
+    /// The constant written `single` in `f32` and `double` in `f64`: how emitted code spells a number
+    /// once for both precisions, each rounded by the host at generation time, so that the chip never
+    /// converts from `f64`.
+    #[must_use]
+    fn literal(single: f32, double: f64) -> Self;
+
     /// `⌊t⌋` as an index for `t ≥ 0`: Rust's `as usize`, which saturates (negative and NaN give 0,
     /// too large gives `usize::MAX`), so it never panics. One `VCVT` on the Cortex-M4F.
     #[must_use]
@@ -34,6 +40,10 @@ impl Scalar for f32 {
     const BISECTION_STEPS: u32 = 24;
     const ZERO: Self = 0.0;
     #[inline(always)]
+    fn literal(single: f32, _: f64) -> Self {
+        single
+    }
+    #[inline(always)]
     fn index(self) -> usize {
         self as usize
     }
@@ -43,6 +53,10 @@ impl Scalar for f64 {
     #[cfg(any(test, feature = "reference"))]
     const BISECTION_STEPS: u32 = 52;
     const ZERO: Self = 0.0;
+    #[inline(always)]
+    fn literal(_: f32, double: f64) -> Self {
+        double
+    }
     #[inline(always)]
     fn index(self) -> usize {
         self as usize

@@ -7,16 +7,17 @@ use nalgebra::{Matrix2, Matrix2x1, Vector2};
 use super::*;
 
 /// `x⁺ = 0.9 x`, `y = 2 x`.
+#[derive(Clone, Copy, Debug)]
 struct Scalar1;
 
 const A1: f64 = 0.9;
 const C1: f64 = 2.0;
 
 impl Plant<f64, 1, 1, 0> for Scalar1 {
-    fn step(x: &[f64; 1], _: &[f64; 0]) -> ([f64; 1], [[f64; 1]; 1]) {
+    fn step(&self, x: &[f64; 1], _: &[f64; 0]) -> ([f64; 1], [[f64; 1]; 1]) {
         ([A1 * x[0]], [[A1]])
     }
-    fn output(x: &[f64; 1], _: &[f64; 0]) -> ([f64; 1], [[f64; 1]; 1]) {
+    fn output(&self, x: &[f64; 1], _: &[f64; 0]) -> ([f64; 1], [[f64; 1]; 1]) {
         ([C1 * x[0]], [[C1]])
     }
 }
@@ -31,7 +32,7 @@ fn riccati_scalar(a: f64, c: f64, q: f64, r: f64) -> f64 {
 #[test]
 fn the_covariance_converges_to_the_closed_form_riccati_solution() {
     let (q, r) = (0.1, 0.5);
-    let mut filter: Ekf<f64, Scalar1, 1, 1, 0> = Ekf::new([3.0], [[10.0]], [[q]], [r]);
+    let mut filter: Ekf<f64, Scalar1, 1, 1, 0> = Ekf::new(Scalar1, [3.0], [[10.0]], [[q]], [r]);
     for k in 0..300 {
         // The covariance does not depend on the measurements: any finite values.
         filter.push(&[(k as f64).sin()], &[]).unwrap();
@@ -42,6 +43,7 @@ fn the_covariance_converges_to_the_closed_form_riccati_solution() {
 }
 
 /// `x⁺ = A x`, `y = x₁ + v`: coupled states, one output.
+#[derive(Clone, Copy, Debug)]
 struct Coupled;
 
 fn a2() -> Matrix2<f64> {
@@ -49,12 +51,12 @@ fn a2() -> Matrix2<f64> {
 }
 
 impl Plant<f64, 2, 1, 1> for Coupled {
-    fn step(x: &[f64; 2], u: &[f64; 1]) -> ([f64; 2], [[f64; 2]; 2]) {
+    fn step(&self, x: &[f64; 2], u: &[f64; 1]) -> ([f64; 2], [[f64; 2]; 2]) {
         let a = a2();
         let next = a * Vector2::new(x[0], x[1]) + Vector2::new(0.0, 0.1 * u[0]);
         ([next[0], next[1]], [[a[(0, 0)], a[(0, 1)]], [a[(1, 0)], a[(1, 1)]]])
     }
-    fn output(x: &[f64; 2], _: &[f64; 1]) -> ([f64; 1], [[f64; 2]; 1]) {
+    fn output(&self, x: &[f64; 2], _: &[f64; 1]) -> ([f64; 1], [[f64; 2]; 1]) {
         ([x[0]], [[1.0, 0.0]])
     }
 }
@@ -62,7 +64,7 @@ impl Plant<f64, 2, 1, 1> for Coupled {
 #[test]
 fn sequential_joseph_updates_match_a_textbook_filter_with_a_matrix_inverse() {
     let (q, r) = (Matrix2::new(0.01, 0.002, 0.002, 0.02), 0.3);
-    let mut filter: Ekf<f64, Coupled, 2, 1, 1> = Ekf::new(
+    let mut filter: Ekf<f64, Coupled, 2, 1, 1> = Ekf::new(Coupled, 
         [0.5, -1.0],
         [[2.0, 0.1], [0.1, 1.0]],
         [[q[(0, 0)], q[(0, 1)]], [q[(1, 0)], q[(1, 1)]]],
@@ -98,7 +100,7 @@ fn sequential_joseph_updates_match_a_textbook_filter_with_a_matrix_inverse() {
 fn the_covariance_stays_symmetric_and_positive_with_an_almost_exact_sensor() {
     // r = 1e-14 after P = 1e6: an almost exact sensor, where the short update (I - K H) P is prone to
     // lose symmetry and positivity to rounding; the Joseph form with the copied triangle must not.
-    let mut filter: Ekf<f64, Coupled, 2, 1, 1> = Ekf::new(
+    let mut filter: Ekf<f64, Coupled, 2, 1, 1> = Ekf::new(Coupled, 
         [0.0, 0.0],
         [[1e6, 0.0], [0.0, 1e6]],
         [[1e-9, 0.0], [0.0, 1e-9]],
@@ -119,7 +121,7 @@ fn the_covariance_stays_symmetric_and_positive_with_an_almost_exact_sensor() {
 #[test]
 fn a_non_finite_measurement_is_refused_and_only_the_prediction_runs() {
     let (q, r) = (0.1, 0.5);
-    let mut filter: Ekf<f64, Scalar1, 1, 1, 0> = Ekf::new([3.0], [[2.0]], [[q]], [r]);
+    let mut filter: Ekf<f64, Scalar1, 1, 1, 0> = Ekf::new(Scalar1, [3.0], [[2.0]], [[q]], [r]);
     for y in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
         let (x, p) = (filter.state()[0], filter.covariance()[0][0]);
         assert_eq!(filter.push(&[y], &[]), Err(crate::RejectedSample));
@@ -133,7 +135,7 @@ fn a_non_finite_measurement_is_refused_and_only_the_prediction_runs() {
 #[test]
 fn a_non_finite_input_changes_nothing() {
     let mut filter: Ekf<f64, Coupled, 2, 1, 1> =
-        Ekf::new([0.5, -1.0], [[2.0, 0.1], [0.1, 1.0]], [[0.01, 0.0], [0.0, 0.02]], [0.3]);
+        Ekf::new(Coupled, [0.5, -1.0], [[2.0, 0.1], [0.1, 1.0]], [[0.01, 0.0], [0.0, 0.02]], [0.3]);
     let before = filter;
     assert_eq!(filter.push(&[0.2], &[f64::NAN]), Err(crate::RejectedSample));
     assert_eq!(
