@@ -41,6 +41,7 @@ pub mod emit;
 pub mod fit;
 pub mod generate;
 pub mod output;
+pub mod plant;
 pub mod recording;
 pub mod report;
 pub mod spec;

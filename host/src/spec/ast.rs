@@ -4,9 +4,12 @@
 //!
 //! * binary operators by exmex's priorities, highest first, equal ones left to right:
 //!   `^` (4) > `/` (3) > `*` (2) > binary `-` (1) > `+`, `atan2`, `min`, `max` (0), so `a * b / c` is
-//!   `a * (b / c)` and `a + b - c` is `a + (b - c)`;
+//!   `a * (b / c)` and `a + b - c` is `a + (b - c)`. (exmex folds operations between numbers before
+//!   the others, which breaks its left-to-right order at priority 0: it reads `a max 1 + 2` as
+//!   `a max 3`. The translator finds such texts by evaluating both readings, and refuses them.)
 //! * a unary `-` or `+` binds tighter than any binary operator (`-x^2` is `(-x)^2`, which the
 //!   validator refuses as ambiguous);
+//! * `atan2(a, b)`, `min(a, b)`, `max(a, b)` are the binary operators written as calls (an operand);
 //! * `f(…)` applies one of exmex's unary functions; `PI`, `π`, `E`, `e`, `TAU`, `τ` are constants;
 //!   numbers are decimals without exponent.
 
@@ -104,6 +107,7 @@ enum Token {
     Operator(String),
     Open,
     Close,
+    Comma,
 }
 
 fn tokens(text: &str) -> Result<Vec<(Token, usize)>, ParseError> {
@@ -140,6 +144,9 @@ fn tokens(text: &str) -> Result<Vec<(Token, usize)>, ParseError> {
             i += 1;
         } else if c == ')' {
             out.push((Token::Close, start));
+            i += 1;
+        } else if c == ',' {
+            out.push((Token::Comma, start));
             i += 1;
         } else {
             return Err(error(&format!("unexpected `{c}`"), start));
@@ -212,6 +219,23 @@ impl Parser<'_> {
                 self.close()?;
                 Ok(inner)
             }
+            Token::Name(name) if Binary::parse(&name).is_some() => {
+                // `atan2(a, b)`, `min(a, b)`, `max(a, b)`: the binary operator written as a call.
+                let (operator, _) = Binary::parse(&name).expect("checked by the guard");
+                if !matches!(self.tokens.get(self.next), Some((Token::Open, _))) {
+                    return Err(self.error(&format!("`(` after `{name}`"), at));
+                }
+                self.next += 1;
+                let a = self.expression(0)?;
+                match self.tokens.get(self.next) {
+                    Some((Token::Comma, _)) => self.next += 1,
+                    Some((_, at)) => return Err(self.error("`,`", *at)),
+                    None => return Err(self.error("`,`", self.end())),
+                }
+                let b = self.expression(0)?;
+                self.close()?;
+                Ok(Node::Binary(operator, Box::new(a), Box::new(b)))
+            }
             Token::Name(name) => {
                 if let Some(&function) = FUNCTIONS.iter().find(|f| **f == name) {
                     if matches!(self.tokens.get(self.next), Some((Token::Open, _))) {
@@ -243,6 +267,23 @@ impl Parser<'_> {
             None => Err(self.error("`)`", self.end())),
         }
     }
+}
+
+/// Whether exmex evaluates `text` as `node` does, at three sets of values of its variables (NaN for
+/// NaN): false for texts where exmex's folding of numbers departs from its own priorities.
+pub fn reads_as_exmex(text: &str, node: &Node) -> bool {
+    use exmex::prelude::*;
+    let Ok(flat) = exmex::FlatEx::<f64>::parse(text) else {
+        return false;
+    };
+    let names = flat.var_names().to_vec();
+    (0..3).all(|set| {
+        let value = |i: usize| 0.37 + 0.61 * ((i * 7 + set * 3) % 11) as f64;
+        let values: Vec<f64> = (0..names.len()).map(value).collect();
+        let theirs = flat.eval(&values).unwrap_or(f64::NAN);
+        let ours = node.eval(&|n: &str| names.iter().position(|m| m == n).map_or(f64::NAN, value));
+        (ours - theirs).abs() <= 1e-9 * (1.0 + theirs.abs()) || (ours.is_nan() && theirs.is_nan()) || ours == theirs
+    })
 }
 
 impl Node {
@@ -361,7 +402,8 @@ fn folded(op: Binary, a: &Node, b: &Node) -> Option<Node> {
     }
 }
 
-fn add(a: Node, b: Node) -> Node {
+/// `a + b`, folded where an operand is a number.
+pub fn add(a: Node, b: Node) -> Node {
     if let Some(n) = folded(Binary::Add, &a, &b) {
         return n;
     }
@@ -383,7 +425,8 @@ fn sub(a: Node, b: Node) -> Node {
     }
 }
 
-fn mul(a: Node, b: Node) -> Node {
+/// `a * b`, folded where an operand is a number.
+pub fn mul(a: Node, b: Node) -> Node {
     if let Some(n) = folded(Binary::Mul, &a, &b) {
         n
     } else if is_zero(&a) || is_zero(&b) {

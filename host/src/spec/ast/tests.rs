@@ -18,12 +18,16 @@ fn priorities_and_signs_follow_exmex() {
     assert_eq!(shape("-x^2"), "((-x) Pow 2.0)");
     assert_eq!(shape("x^-2"), "(x Pow (-2.0))");
     assert_eq!(shape("2*sin(x + 1)"), "(2.0 Mul sin((x Add 1.0)))");
+    assert_eq!(shape("2*atan2(a, b)^2"), "(2.0 Mul ((a Atan2 b) Pow 2.0))");
+    assert_eq!(shape("max(a + 1, b) * c"), "(((a Add 1.0) Max b) Mul c)");
+    assert_eq!(shape("a max b + c"), "((a Max b) Add c)");
+    assert_eq!(shape("a - b min c"), "((a Sub b) Min c)");
     assert_eq!(shape("PI*r"), format!("({:?} Mul r)", std::f64::consts::PI));
 }
 
 #[test]
 fn malformed_text_is_refused_with_a_position() {
-    for (text, at) in [("x +", 3), ("(x", 2), ("x)", 1), ("sin x", 0), ("x # y", 2), ("", 0)] {
+    for (text, at) in [("x +", 3), ("(x", 2), ("x)", 1), ("sin x", 0), ("x # y", 2), ("", 0), ("min(a b)", 6), ("atan2 x", 0)] {
         let error = parse(text).unwrap_err();
         assert_eq!(error.at, at, "{text}: {error}");
     }
@@ -40,6 +44,7 @@ fn expression_text() -> impl Strategy<Value = String> {
     ];
     leaf.prop_recursive(4, 24, 3, |inner| {
         let operator = prop_oneof![Just("+"), Just("-"), Just("*"), Just("/"), Just("^")];
+        let named = prop_oneof![Just("atan2"), Just("min"), Just("max")];
         let function = prop_oneof![
             Just("sin"),
             Just("exp"),
@@ -52,6 +57,7 @@ fn expression_text() -> impl Strategy<Value = String> {
             (inner.clone(), operator.clone(), inner.clone()).prop_map(|(l, o, r)| format!("{l} {o} {r}")),
             (inner.clone(), operator, inner.clone()).prop_map(|(l, o, r)| format!("({l}) {o} ({r})")),
             (function, inner.clone()).prop_map(|(f, a)| format!("{f}({a})")),
+            (named.clone(), inner.clone(), inner.clone()).prop_map(|(f, a, b)| format!("{f}({a}, {b})")),
             inner.prop_map(|a| format!("-{a}")),
         ]
     })

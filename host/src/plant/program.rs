@@ -1,0 +1,286 @@
+//! A straight-line program: expression trees lowered to one list of operations in which every
+//! operand comes before its use and every distinct subexpression is computed once (hash-consing).
+//!
+//! The host evaluates it (in `f64` to tune and judge the EKF, in `f32` to predict the chip's bits) and
+//! [`crate::emit::model`] writes it out as Rust, one `let` per operation in the same order, so that
+//! both compute the same IEEE operations on the same operands. Integer powers 2 to 4 become products
+//! (`powf` costs hundreds of instructions on the chip); every other function is `firmware::Maths`'s.
+
+use std::collections::HashMap;
+
+use firmware::{Maths, Scalar};
+
+use crate::spec::ast::{Binary, Node};
+
+/// A value the program reads: the spec's names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Leaf {
+    /// `model.parameters`, by index.
+    Parameter(usize),
+    /// A state, by index.
+    State(usize),
+    /// An input, by index.
+    Input(usize),
+}
+
+/// One operation; operands are indices of earlier operations.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Op {
+    /// A number (rounded to `f32` for the chip).
+    Number(f64),
+    /// A name.
+    Leaf(Leaf),
+    /// `-a`.
+    Negate(usize),
+    /// `a op b`.
+    Binary(Binary, usize, usize),
+    /// `f(a)`, `f` one of the expression language's functions (`log` is `ln`).
+    Call(&'static str, usize),
+}
+
+/// Operations and the indices of the results, in the order the caller asked for them.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Program {
+    /// The operations, each after its operands.
+    pub ops: Vec<Op>,
+    /// Which operations are the results.
+    pub results: Vec<usize>,
+}
+
+/// The names a program's trees may use, each bound to a leaf or to an earlier operation.
+pub struct Names<'a> {
+    /// Parameter names and values.
+    pub parameters: &'a [(String, f64)],
+    /// State names.
+    pub states: &'a [String],
+    /// Input names.
+    pub inputs: &'a [String],
+}
+
+/// Builds a [`Program`] from trees, sharing what they have in common.
+pub struct Builder<'a> {
+    names: Names<'a>,
+    program: Program,
+    /// Operations already present, keyed by their exact value (numbers by their bits).
+    seen: HashMap<Key, usize>,
+    /// Names bound to operations: definitions, and the derivative of a definition.
+    bound: HashMap<String, usize>,
+}
+
+/// The identity of an operation, for sharing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+enum Key {
+    Number(u64),
+    Leaf(Leaf),
+    Negate(usize),
+    Binary(u8, usize, usize),
+    Call(&'static str, usize),
+}
+
+/// A tree the builder cannot lower.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum LowerError {
+    /// A name that is neither a parameter, state, input nor bound definition.
+    #[error("`{0}` is not a parameter, state, input or definition the model has")]
+    UnknownName(String),
+    /// A function the firmware does not provide.
+    #[error("function `{0}` is not one the firmware provides")]
+    UnknownFunction(String),
+}
+
+impl<'a> Builder<'a> {
+    /// An empty program over `names`.
+    pub fn new(names: Names<'a>) -> Self {
+        Builder {
+            names,
+            program: Program::default(),
+            seen: HashMap::new(),
+            bound: HashMap::new(),
+        }
+    }
+
+    /// Binds `name` to operation `op` (a definition's value, or a derivative of one).
+    pub fn bind(&mut self, name: impl Into<String>, op: usize) {
+        self.bound.insert(name.into(), op);
+    }
+
+    /// Appends `tree`'s operations (those not already present) and returns the index of its value.
+    pub fn lower(&mut self, tree: &Node) -> Result<usize, LowerError> {
+        Ok(match tree {
+            Node::Number(v) => self.push(Op::Number(*v)),
+            Node::Variable(name) => {
+                if let Some(&op) = self.bound.get(name) {
+                    op
+                } else {
+                    let leaf = self.leaf(name)?;
+                    self.push(Op::Leaf(leaf))
+                }
+            }
+            Node::Negate(a) => {
+                let a = self.lower(a)?;
+                self.push(Op::Negate(a))
+            }
+            Node::Binary(Binary::Pow, a, b) if matches!(**b, Node::Number(n) if n == 2.0 || n == 3.0 || n == 4.0) => {
+                let a = self.lower(a)?;
+                let square = self.push(Op::Binary(Binary::Mul, a, a));
+                match **b {
+                    Node::Number(n) if n == 2.0 => square,
+                    Node::Number(n) if n == 3.0 => self.push(Op::Binary(Binary::Mul, square, a)),
+                    _ => self.push(Op::Binary(Binary::Mul, square, square)),
+                }
+            }
+            Node::Binary(op, a, b) => {
+                let (a, b) = (self.lower(a)?, self.lower(b)?);
+                self.push(Op::Binary(*op, a, b))
+            }
+            Node::Call(f, a) => {
+                let function = match *f {
+                    "log" => "ln",
+                    f if crate::spec::ast::FUNCTIONS.contains(&f) => f,
+                    f => return Err(LowerError::UnknownFunction(f.to_owned())),
+                };
+                let a = self.lower(a)?;
+                self.push(Op::Call(function, a))
+            }
+        })
+    }
+
+    /// Marks operation `op` as the next result.
+    pub fn result(&mut self, op: usize) {
+        self.program.results.push(op);
+    }
+
+    /// The program built.
+    pub fn finish(self) -> Program {
+        self.program
+    }
+
+    fn leaf(&self, name: &str) -> Result<Leaf, LowerError> {
+        if let Some(i) = self.names.parameters.iter().position(|(n, _)| n == name) {
+            Ok(Leaf::Parameter(i))
+        } else if let Some(i) = self.names.states.iter().position(|n| n == name) {
+            Ok(Leaf::State(i))
+        } else if let Some(i) = self.names.inputs.iter().position(|n| n == name) {
+            Ok(Leaf::Input(i))
+        } else {
+            Err(LowerError::UnknownName(name.to_owned()))
+        }
+    }
+
+    fn push(&mut self, op: Op) -> usize {
+        let key = match op {
+            Op::Number(v) => Key::Number(v.to_bits()),
+            Op::Leaf(leaf) => Key::Leaf(leaf),
+            Op::Negate(a) => Key::Negate(a),
+            Op::Binary(b, x, y) => Key::Binary(b as u8, x, y),
+            Op::Call(f, a) => Key::Call(f, a),
+        };
+        *self.seen.entry(key).or_insert_with(|| {
+            self.program.ops.push(op);
+            self.program.ops.len() - 1
+        })
+    }
+}
+
+impl Program {
+    /// Drops the operations no result needs, keeping the order of the others.
+    pub fn prune(&mut self) {
+        let mut needed = vec![false; self.ops.len()];
+        for &r in &self.results {
+            needed[r] = true;
+        }
+        for i in (0..self.ops.len()).rev() {
+            if needed[i] {
+                match self.ops[i] {
+                    Op::Negate(a) | Op::Call(_, a) => needed[a] = true,
+                    Op::Binary(_, a, b) => {
+                        needed[a] = true;
+                        needed[b] = true;
+                    }
+                    Op::Number(_) | Op::Leaf(_) => {}
+                }
+            }
+        }
+        let mut renumbered = vec![usize::MAX; self.ops.len()];
+        let mut ops = Vec::new();
+        for (i, op) in self.ops.iter().enumerate() {
+            if needed[i] {
+                let op = match *op {
+                    Op::Negate(a) => Op::Negate(renumbered[a]),
+                    Op::Call(f, a) => Op::Call(f, renumbered[a]),
+                    Op::Binary(b, x, y) => Op::Binary(b, renumbered[x], renumbered[y]),
+                    other => other,
+                };
+                renumbered[i] = ops.len();
+                ops.push(op);
+            }
+        }
+        self.ops = ops;
+        for r in &mut self.results {
+            *r = renumbered[*r];
+        }
+    }
+
+    /// Evaluates every operation into `values` (one per operation) and returns the results: in `T`
+    /// exactly as the emitted code computes them (numbers and parameters rounded to `f32` for `f32`).
+    pub fn eval<T: Scalar + Maths>(&self, parameters: &[(String, f64)], x: &[T], u: &[T], values: &mut Vec<T>) -> Vec<T> {
+        values.clear();
+        for op in &self.ops {
+            let value = match *op {
+                Op::Number(v) => T::literal(v as f32, v),
+                Op::Leaf(Leaf::Parameter(i)) => T::literal(parameters[i].1 as f32, parameters[i].1),
+                Op::Leaf(Leaf::State(i)) => x[i],
+                Op::Leaf(Leaf::Input(i)) => u[i],
+                Op::Negate(a) => -values[a],
+                Op::Binary(op, a, b) => {
+                    let (a, b) = (values[a], values[b]);
+                    match op {
+                        Binary::Add => a + b,
+                        Binary::Sub => a - b,
+                        Binary::Mul => a * b,
+                        Binary::Div => a / b,
+                        Binary::Pow => Maths::powf(a, b),
+                        Binary::Atan2 => Maths::atan2(a, b),
+                        Binary::Min => Maths::min(a, b),
+                        Binary::Max => Maths::max(a, b),
+                    }
+                }
+                Op::Call(f, a) => call(f, values[a]),
+            };
+            values.push(value);
+        }
+        self.results.iter().map(|&r| values[r]).collect()
+    }
+}
+
+/// `f(a)` by the firmware's function of that name.
+pub fn call<T: Maths>(function: &str, a: T) -> T {
+    match function {
+        "abs" => a.abs(),
+        "signum" => a.signum(),
+        "sin" => a.sin(),
+        "cos" => a.cos(),
+        "tan" => a.tan(),
+        "asin" => a.asin(),
+        "acos" => a.acos(),
+        "atan" => a.atan(),
+        "sinh" => a.sinh(),
+        "cosh" => a.cosh(),
+        "tanh" => a.tanh(),
+        "asinh" => a.asinh(),
+        "acosh" => a.acosh(),
+        "atanh" => a.atanh(),
+        "floor" => a.floor(),
+        "round" => a.round(),
+        "ceil" => a.ceil(),
+        "trunc" => a.trunc(),
+        "fract" => a.fract(),
+        "exp" => a.exp(),
+        "sqrt" => a.sqrt(),
+        "cbrt" => a.cbrt(),
+        "ln" => a.ln(),
+        "log2" => a.log2(),
+        "log10" => a.log10(),
+        other => unreachable!("`{other}` was refused when the program was built"),
+    }
+}
