@@ -19,7 +19,7 @@
 //! assert!(observer.estimate().is_none()); // until HORIZON samples have arrived
 //! ```
 
-use firmware::{Estimate, InverseTable, Knots, Sample, TargetMap};
+use firmware::{Estimate, InverseTable, Knots, Maths, Sample, Scalar, TargetMap};
 
 /// The design's name.
 pub const NAME: &str = "ecoli_x0_2";
@@ -27,6 +27,8 @@ pub const NAME: &str = "ecoli_x0_2";
 pub const SPEC: &str = "host/specs/ecoli_x0_2.toml";
 /// Sample period τ.
 pub const SAMPLE_PERIOD: f32 = 0.2;
+/// States of the model.
+pub const STATES: usize = 3;
 /// Horizon N: samples in the regressor.
 pub const HORIZON: usize = 3;
 /// Measured outputs per sample.
@@ -41,6 +43,8 @@ pub const REGRESSOR_LEN: usize = 6;
 pub const OUTPUT_NAMES: [&str; OUTPUTS] = ["X_meas", "L"];
 /// Input names, in `push` order.
 pub const INPUT_NAMES: [&str; INPUTS] = [];
+/// State names, in state order.
+pub const STATE_NAMES: [&str; STATES] = ["X", "S", "P"];
 /// Target names, in estimate order.
 pub const TARGET_NAMES: [&str; TARGETS] = ["P", "muX"];
 
@@ -751,3 +755,222 @@ pub static RECORDED_Y: [[f32; OUTPUTS]; RECORDED_LEN] = [
 
 /// The inputs of the recorded sequence, per sample.
 pub static RECORDED_U: [[f32; INPUTS]; RECORDED_LEN] = [[]; RECORDED_LEN];
+
+/// The spec's parameters (`[model.parameters]`), each as `(f32, f64)`.
+#[allow(non_upper_case_globals)]
+pub mod parameters {
+    /// `I`.
+    pub const I: (f32, f64) = (1.0, 1.0);
+    /// `k_I`.
+    pub const k_I: (f32, f64) = (0.5, 0.5);
+    /// `k_d`.
+    pub const k_d: (f32, f64) = (0.1, 0.1);
+    /// `k_l`.
+    pub const k_l: (f32, f64) = (1.0, 1.0);
+    /// `k_m`.
+    pub const k_m: (f32, f64) = (0.05, 0.05);
+    /// `k_p`.
+    pub const k_p: (f32, f64) = (0.5, 0.5);
+    /// `k_s`.
+    pub const k_s: (f32, f64) = (0.1, 0.1);
+    /// `ks_m`.
+    pub const ks_m: (f32, f64) = (0.01, 0.01);
+    /// `mu_m`.
+    pub const mu_m: (f32, f64) = (0.2, 0.2);
+    /// `y_l`.
+    pub const y_l: (f32, f64) = (5000.0, 5000.0);
+    /// `y_p`.
+    pub const y_p: (f32, f64) = (0.2, 0.2);
+    /// `y_s`.
+    pub const y_s: (f32, f64) = (1.0, 1.0);
+}
+
+/// The spec's model on the chip, written out from its expression trees by `gen`:
+///
+/// ```text
+/// dX/dt = mu*X - death*X
+/// dS/dt = 0 - y_s*mu*X - k_m*X*S/(S + ks_m)
+/// dP/dt = y_p*mu*I/(I + k_I)*X - death*P
+/// X_meas = X
+/// L = y_l*mu*I/(I + k_l)*X*P
+/// where mu = mu_m*S/(k_s + S)
+/// where death = k_d*exp(-k_p/P)
+/// ```
+///
+/// with the Jacobians `∂f/∂x` and `∂h/∂x` (symbolic, shared subexpressions computed once).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Plant;
+
+impl<T: Scalar + Maths> firmware::Model<T, STATES, OUTPUTS, INPUTS> for Plant {
+    #[allow(unused_variables, non_snake_case)]
+    fn derivative(&self, x: &[T; STATES], u: &[T; INPUTS]) -> ([T; STATES], [[T; STATES]; STATES]) {
+        let p_mu_m: T = T::literal(parameters::mu_m.0, parameters::mu_m.1);
+        let x_S: T = x[1];
+        let p_k_s: T = T::literal(parameters::k_s.0, parameters::k_s.1);
+        let t3: T = p_k_s + x_S;
+        let t4: T = x_S / t3;
+        let t5: T = p_mu_m * t4;
+        let t6: T = T::literal(0.0, 0.0);
+        let t7: T = T::literal(1.0, 1.0);
+        let t8: T = t7 / t3;
+        let t9: T = t3 * t3;
+        let t10: T = x_S / t9;
+        let t11: T = t8 - t10;
+        let t12: T = p_mu_m * t11;
+        let p_k_d: T = T::literal(parameters::k_d.0, parameters::k_d.1);
+        let p_k_p: T = T::literal(parameters::k_p.0, parameters::k_p.1);
+        let t15: T = -p_k_p;
+        let x_P: T = x[2];
+        let t17: T = t15 / x_P;
+        let t18: T = Maths::exp(t17);
+        let t19: T = p_k_d * t18;
+        let t20: T = x_P * x_P;
+        let t21: T = t15 / t20;
+        let t22: T = -t21;
+        let t23: T = t18 * t22;
+        let t24: T = p_k_d * t23;
+        let x_X: T = x[0];
+        let t26: T = t5 * x_X;
+        let t27: T = t19 * x_X;
+        let t28: T = t26 - t27;
+        let t29: T = t5 - t19;
+        let t30: T = x_X * t6;
+        let t31: T = t29 + t30;
+        let t32: T = -x_X;
+        let t33: T = t32 * t6;
+        let t34: T = t31 + t33;
+        let t35: T = x_X * t12;
+        let t36: T = t35 + t33;
+        let t37: T = t32 * t24;
+        let t38: T = t30 + t37;
+        let p_y_s: T = T::literal(parameters::y_s.0, parameters::y_s.1);
+        let t40: T = p_y_s * t5;
+        let t41: T = t40 * x_X;
+        let t42: T = t6 - t41;
+        let p_k_m: T = T::literal(parameters::k_m.0, parameters::k_m.1);
+        let t44: T = p_k_m * x_X;
+        let p_ks_m: T = T::literal(parameters::ks_m.0, parameters::ks_m.1);
+        let t46: T = x_S + p_ks_m;
+        let t47: T = x_S / t46;
+        let t48: T = t44 * t47;
+        let t49: T = t42 - t48;
+        let t50: T = -t40;
+        let t51: T = p_k_m * t47;
+        let t52: T = t50 - t51;
+        let t53: T = p_y_s * x_X;
+        let t54: T = -t53;
+        let t55: T = t54 * t6;
+        let t56: T = t52 + t55;
+        let t57: T = t7 / t46;
+        let t58: T = t46 * t46;
+        let t59: T = x_S / t58;
+        let t60: T = t57 - t59;
+        let t61: T = t44 * t60;
+        let t62: T = -t61;
+        let t63: T = t54 * t12;
+        let t64: T = t62 + t63;
+        let p_y_p: T = T::literal(parameters::y_p.0, parameters::y_p.1);
+        let t66: T = p_y_p * t5;
+        let p_I: T = T::literal(parameters::I.0, parameters::I.1);
+        let p_k_I: T = T::literal(parameters::k_I.0, parameters::k_I.1);
+        let t69: T = p_I + p_k_I;
+        let t70: T = p_I / t69;
+        let t71: T = t66 * t70;
+        let t72: T = t71 * x_X;
+        let t73: T = t19 * x_P;
+        let t74: T = t72 - t73;
+        let t75: T = p_y_p * t70;
+        let t76: T = t75 * x_X;
+        let t77: T = t76 * t6;
+        let t78: T = t71 + t77;
+        let t79: T = -x_P;
+        let t80: T = t79 * t6;
+        let t81: T = t78 + t80;
+        let t82: T = t76 * t12;
+        let t83: T = t82 + t80;
+        let t84: T = -t19;
+        let t85: T = t84 + t77;
+        let t86: T = t79 * t24;
+        let t87: T = t85 + t86;
+        ([t28, t49, t74], [[t34, t36, t38], [t56, t64, t55], [t81, t83, t87]])
+    }
+
+    #[allow(unused_variables, non_snake_case)]
+    fn output(&self, x: &[T; STATES], u: &[T; INPUTS]) -> ([T; OUTPUTS], [[T; STATES]; OUTPUTS]) {
+        let p_mu_m: T = T::literal(parameters::mu_m.0, parameters::mu_m.1);
+        let x_S: T = x[1];
+        let p_k_s: T = T::literal(parameters::k_s.0, parameters::k_s.1);
+        let t3: T = p_k_s + x_S;
+        let t4: T = x_S / t3;
+        let t5: T = p_mu_m * t4;
+        let t6: T = T::literal(0.0, 0.0);
+        let t7: T = T::literal(1.0, 1.0);
+        let t8: T = t7 / t3;
+        let t9: T = t3 * t3;
+        let t10: T = x_S / t9;
+        let t11: T = t8 - t10;
+        let t12: T = p_mu_m * t11;
+        let x_P: T = x[2];
+        let x_X: T = x[0];
+        let p_y_l: T = T::literal(parameters::y_l.0, parameters::y_l.1);
+        let t16: T = p_y_l * t5;
+        let p_I: T = T::literal(parameters::I.0, parameters::I.1);
+        let p_k_l: T = T::literal(parameters::k_l.0, parameters::k_l.1);
+        let t19: T = p_I + p_k_l;
+        let t20: T = p_I / t19;
+        let t21: T = t16 * t20;
+        let t22: T = t21 * x_X;
+        let t23: T = t22 * x_P;
+        let t24: T = t21 * x_P;
+        let t25: T = p_y_l * t20;
+        let t26: T = t25 * x_X;
+        let t27: T = t26 * x_P;
+        let t28: T = t27 * t6;
+        let t29: T = t24 + t28;
+        let t30: T = t27 * t12;
+        let t31: T = t22 + t28;
+        ([x_X, t23], [[t7, t6, t6], [t29, t30, t31]])
+    }
+}
+
+/// The targets at state `x` and input `u`, in [`TARGET_NAMES`] order: what the EKF's estimate
+/// gives for each.
+#[allow(unused_variables, non_snake_case)]
+pub fn targets<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {
+    let p_mu_m: T = T::literal(parameters::mu_m.0, parameters::mu_m.1);
+    let x_S: T = x[1];
+    let p_k_s: T = T::literal(parameters::k_s.0, parameters::k_s.1);
+    let t3: T = p_k_s + x_S;
+    let t4: T = x_S / t3;
+    let t5: T = p_mu_m * t4;
+    let x_P: T = x[2];
+    let x_X: T = x[0];
+    let t8: T = t5 * x_X;
+    [x_P, t8]
+}
+
+/// RK4 steps per sample in the chip's model (the learning simulation takes 10).
+pub const CHIP_SUBSTEPS: usize = 1;
+
+/// One sampling period of [`Plant`] by [`CHIP_SUBSTEPS`] RK4 steps, the input held.
+pub type Discrete<T> = firmware::Rk4<T, Plant, CHIP_SUBSTEPS>;
+
+/// The extended Kalman filter of this design (see [`ekf_in`]).
+pub type Ekf = firmware::Ekf<f32, Discrete<f32>, STATES, OUTPUTS, INPUTS>;
+
+/// A fresh EKF in `f32`, as the chip runs it.
+pub fn ekf() -> Ekf {
+    ekf_in::<f32>()
+}
+
+/// A fresh EKF in any precision: starting at the centre of the state box, `P(0)` and `Q` diagonal
+/// as chosen by `gen` on the tuning runs, `R` the outputs' noise variances.
+pub fn ekf_in<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATES, OUTPUTS, INPUTS> {
+    firmware::Ekf::new(
+        firmware::Rk4::new(Plant, T::literal(0.2, 0.2)),
+        [T::literal(2.0, 2.0), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
+        [[T::literal(0.014411001, 0.014411000111124768), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.025, 0.025), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.0005010181, 0.0005010180838248452)]],
+        [[T::literal(4.5571583e-6, 4.557158371209388e-6), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(7.9056945e-6, 7.905694150420947e-6), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(1.5843582e-7, 1.5843582938196762e-7)]],
+        [T::literal(0.1, 0.1), T::literal(20.0, 20.0)],
+    )
+}

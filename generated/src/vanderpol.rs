@@ -19,7 +19,7 @@
 //! assert!(observer.estimate().is_none()); // until HORIZON samples have arrived
 //! ```
 
-use firmware::{Estimate, InverseTable, Knots, Sample, TargetMap};
+use firmware::{Estimate, InverseTable, Knots, Maths, Sample, Scalar, TargetMap};
 
 /// The design's name.
 pub const NAME: &str = "vanderpol";
@@ -27,6 +27,8 @@ pub const NAME: &str = "vanderpol";
 pub const SPEC: &str = "host/specs/vanderpol.toml";
 /// Sample period τ.
 pub const SAMPLE_PERIOD: f32 = 0.1;
+/// States of the model.
+pub const STATES: usize = 2;
 /// Horizon N: samples in the regressor.
 pub const HORIZON: usize = 10;
 /// Measured outputs per sample.
@@ -41,6 +43,8 @@ pub const REGRESSOR_LEN: usize = 10;
 pub const OUTPUT_NAMES: [&str; OUTPUTS] = ["y"];
 /// Input names, in `push` order.
 pub const INPUT_NAMES: [&str; INPUTS] = [];
+/// State names, in state order.
+pub const STATE_NAMES: [&str; STATES] = ["x1", "x2"];
 /// Target names, in estimate order.
 pub const TARGET_NAMES: [&str; TARGETS] = ["x1", "x2"];
 
@@ -386,3 +390,83 @@ pub static RECORDED_Y: [[f32; OUTPUTS]; RECORDED_LEN] = [
 
 /// The inputs of the recorded sequence, per sample.
 pub static RECORDED_U: [[f32; INPUTS]; RECORDED_LEN] = [[]; RECORDED_LEN];
+
+/// The spec's model on the chip, written out from its expression trees by `gen`:
+///
+/// ```text
+/// dx1/dt = -x2
+/// dx2/dt = 4*x1 + (1 - x1^2)*x2
+/// y = x1 + x2
+/// ```
+///
+/// with the Jacobians `∂f/∂x` and `∂h/∂x` (symbolic, shared subexpressions computed once).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Plant;
+
+impl<T: Scalar + Maths> firmware::Model<T, STATES, OUTPUTS, INPUTS> for Plant {
+    #[allow(unused_variables, non_snake_case)]
+    fn derivative(&self, x: &[T; STATES], u: &[T; INPUTS]) -> ([T; STATES], [[T; STATES]; STATES]) {
+        let x_x2: T = x[1];
+        let t1: T = -x_x2;
+        let t2: T = T::literal(-0.0, -0.0);
+        let t3: T = T::literal(-1.0, -1.0);
+        let t4: T = T::literal(4.0, 4.0);
+        let x_x1: T = x[0];
+        let t6: T = t4 * x_x1;
+        let t7: T = T::literal(1.0, 1.0);
+        let t8: T = x_x1 * x_x1;
+        let t9: T = t7 - t8;
+        let t10: T = t9 * x_x2;
+        let t11: T = t6 + t10;
+        let t12: T = T::literal(2.0, 2.0);
+        let t13: T = t12 * x_x1;
+        let t14: T = -t13;
+        let t15: T = t14 * x_x2;
+        let t16: T = t4 + t15;
+        ([t1, t11], [[t2, t3], [t16, t9]])
+    }
+
+    #[allow(unused_variables, non_snake_case)]
+    fn output(&self, x: &[T; STATES], u: &[T; INPUTS]) -> ([T; OUTPUTS], [[T; STATES]; OUTPUTS]) {
+        let x_x1: T = x[0];
+        let x_x2: T = x[1];
+        let t2: T = x_x1 + x_x2;
+        let t3: T = T::literal(1.0, 1.0);
+        ([t2], [[t3, t3]])
+    }
+}
+
+/// The targets at state `x` and input `u`, in [`TARGET_NAMES`] order: what the EKF's estimate
+/// gives for each.
+#[allow(unused_variables, non_snake_case)]
+pub fn targets<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {
+    let x_x1: T = x[0];
+    let x_x2: T = x[1];
+    [x_x1, x_x2]
+}
+
+/// RK4 steps per sample in the chip's model (the learning simulation takes 10).
+pub const CHIP_SUBSTEPS: usize = 1;
+
+/// One sampling period of [`Plant`] by [`CHIP_SUBSTEPS`] RK4 steps, the input held.
+pub type Discrete<T> = firmware::Rk4<T, Plant, CHIP_SUBSTEPS>;
+
+/// The extended Kalman filter of this design (see [`ekf_in`]).
+pub type Ekf = firmware::Ekf<f32, Discrete<f32>, STATES, OUTPUTS, INPUTS>;
+
+/// A fresh EKF in `f32`, as the chip runs it.
+pub fn ekf() -> Ekf {
+    ekf_in::<f32>()
+}
+
+/// A fresh EKF in any precision: starting at the centre of the state box, `P(0)` and `Q` diagonal
+/// as chosen by `gen` on the tuning runs, `R` the outputs' noise variances.
+pub fn ekf_in<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATES, OUTPUTS, INPUTS> {
+    firmware::Ekf::new(
+        firmware::Rk4::new(Plant, T::literal(0.1, 0.1)),
+        [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
+        [[T::literal(0.8348736, 0.8348736226182275), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(5.1750417, 5.1750416375155055)]],
+        [[T::literal(0.00026401022, 0.0002640102205869467), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0016364919, 0.001636491856075647)]],
+        [T::literal(0.2, 0.2)],
+    )
+}

@@ -142,6 +142,8 @@ pub struct Emitted {
     pub design: Design,
     /// Its data, fits and evaluation.
     pub result: DesignResult,
+    /// Its observers compared (the map and the EKF).
+    pub comparison: crate::observers::Comparison,
     /// The text of `generated/src/<design>.rs`.
     pub source: String,
 }
@@ -154,12 +156,42 @@ pub fn emit_design(design: Design, spec: &Path, progress: &ProgressBar) -> Resul
         Ok(workspace) => emit::portable_spec_path(spec, &workspace),
         Err(_) => spec.display().to_string(),
     };
-    let source = emit::design_file(&design, &result, &spec_path).map_err(|source| GenerateError::Emit {
+    let (comparison, source) = design_source(&design, &result, &spec_path, spec, progress)?;
+    Ok(Emitted {
+        design,
+        result,
+        comparison,
+        source,
+    })
+}
+
+/// The observers of a fitted design compared (the EKF tuned on new runs), and the text of its
+/// `generated/src/<design>.rs`: maps, model and EKF.
+pub fn design_source(
+    design: &Design,
+    result: &DesignResult,
+    spec_path: &str,
+    spec: &Path,
+    progress: &ProgressBar,
+) -> Result<(crate::observers::Comparison, String), GenerateError> {
+    let code = crate::plant::ModelCode::new(design).map_err(|e| {
+        design.error(
+            e.field,
+            format!("the model cannot be written as Rust for the chip: {}", e.construct),
+            "rewrite the expression as the message says",
+        )
+    })?;
+    progress.set_message(format!("{}: tuning the EKF", design.name));
+    let comparison = crate::observers::compare(design, result, &code)?;
+    let emit_error = |source| GenerateError::Emit {
         file: spec.to_owned(),
         design: design.name.clone(),
         source,
-    })?;
-    Ok(Emitted { design, result, source })
+    };
+    let model = emit::model::model_source(design, &code, comparison.ekf.as_ref().map(|t| &t.constants))
+        .map_err(emit_error)?;
+    let source = emit::design_file(design, result, spec_path, &model).map_err(emit_error)?;
+    Ok((comparison, source))
 }
 
 /// The text of `generated/src/lib.rs` declaring the design files `present` (sorted here) and the
@@ -367,7 +399,9 @@ fn write(one: Prepared, to: &Destinations) -> Result<Outcome, GenerateError> {
         move |source| GenerateError::Io { path, source }
     };
     let report_files = reporting::write_texts(&one.report, &folder).map_err(io(&folder))?;
-    let Emitted { design, result, source } = one.emitted;
+    let Emitted {
+        design, result, source, ..
+    } = one.emitted;
     let figures = plots::draw(&design, &result, &folder)?;
     let observer = to.generated.join("src").join(format!("{}.rs", design.name));
     let changed = output::write_if_changed(&observer, &source).map_err(io(&observer))?;

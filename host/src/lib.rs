@@ -40,6 +40,7 @@ pub mod data;
 pub mod emit;
 pub mod fit;
 pub mod generate;
+pub mod observers;
 pub mod output;
 pub mod plant;
 pub mod recording;

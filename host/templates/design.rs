@@ -19,7 +19,7 @@
 //! assert!(observer.estimate().is_none()); // until HORIZON samples have arrived
 //! ```
 
-use firmware::{Estimate, InverseTable, Knots, Sample, TargetMap};
+use firmware::{Estimate, InverseTable, Knots, Maths, Sample, Scalar, TargetMap};
 
 /// The design's name.
 pub const NAME: &str = "{{ name }}";
@@ -27,6 +27,8 @@ pub const NAME: &str = "{{ name }}";
 pub const SPEC: &str = {{ spec_path_literal }};
 /// Sample period τ.
 pub const SAMPLE_PERIOD: f32 = {{ tau }};
+/// States of the model.
+pub const STATES: usize = {{ states }};
 /// Horizon N: samples in the regressor.
 pub const HORIZON: usize = {{ horizon }};
 /// Measured outputs per sample.
@@ -41,6 +43,8 @@ pub const REGRESSOR_LEN: usize = {{ regressor_len }};
 pub const OUTPUT_NAMES: [&str; OUTPUTS] = [{% for o in outputs %}"{{ o }}"{% if !loop.last %}, {% endif %}{% endfor %}];
 /// Input names, in `push` order.
 pub const INPUT_NAMES: [&str; INPUTS] = [{% for i in inputs %}"{{ i }}"{% if !loop.last %}, {% endif %}{% endfor %}];
+/// State names, in state order.
+pub const STATE_NAMES: [&str; STATES] = {{ state_list }};
 /// Target names, in estimate order.
 pub const TARGET_NAMES: [&str; TARGETS] = [{% for t in targets %}"{{ t.name }}"{% if !loop.last %}, {% endif %}{% endfor %}];
 
@@ -177,3 +181,5 @@ pub static RECORDED_U: [[f32; INPUTS]; RECORDED_LEN] = [
 {{ recorded_u }}
 ];
 {%- endif %}
+
+{{ model }}

@@ -45,7 +45,14 @@ fn generated_files_match_a_fresh_generation() {
 fn the_searched_knot_fixture_is_current() {
     let path = workspace_root().join(SEARCHED_FIXTURE_SPEC);
     let design = host::spec::load(&path).unwrap();
-    let text = emit::design_file(&design, &build(&design), SEARCHED_FIXTURE_SPEC).unwrap();
+    let (_, text) = generate::design_source(
+        &design,
+        &build(&design),
+        SEARCHED_FIXTURE_SPEC,
+        &path,
+        &indicatif::ProgressBar::hidden(),
+    )
+    .unwrap();
     assert!(
         text.contains("Knots::Searched"),
         "the fixture no longer exercises searched knots"

@@ -115,9 +115,18 @@ pub fn learning_set(design: &Design) -> Result<DataSet, SpecError> {
 /// The validation set: `trajectories` runs from states drawn uniformly in the box, with their own
 /// inputs and noise (a different seed from the learning set's).
 pub fn validation_set(design: &Design) -> Result<DataSet, SpecError> {
-    let mut rng = ChaCha8Rng::seed_from_u64(design.validation.seed);
+    random_runs(design, &design.validation, "validation")
+}
+
+/// The tuning set: runs drawn as the validation set's, from `[tuning]`'s own seed.
+pub fn tuning_set(design: &Design) -> Result<DataSet, SpecError> {
+    random_runs(design, &design.tuning, "tuning")
+}
+
+fn random_runs(design: &Design, settings: &crate::spec::Validation, set: &str) -> Result<DataSet, SpecError> {
+    let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
     let mut runs = Vec::new();
-    for _ in 0..design.validation.trajectories {
+    for _ in 0..settings.trajectories {
         let x0: Vec<f64> = design
             .learning
             .axes
@@ -127,13 +136,7 @@ pub fn validation_set(design: &Design) -> Result<DataSet, SpecError> {
                 Axis::Fixed(value) => value,
             })
             .collect();
-        runs.push(simulate_run(
-            design,
-            &x0,
-            design.validation.samples,
-            &mut rng,
-            "validation",
-        )?);
+        runs.push(simulate_run(design, &x0, settings.samples, &mut rng, set)?);
     }
     Ok(DataSet {
         runs,

@@ -9,6 +9,7 @@
 //! byte.
 
 pub mod families;
+pub mod model;
 pub mod precision;
 
 use precision::{check_f32, F32Tables};
@@ -123,7 +124,7 @@ fn doc_prose(text: &str) -> String {
 
 /// Spec text inside a code span of a doc comment: one line, a backtick (which would end the span)
 /// shown as `'`.
-fn doc_code(text: &str) -> String {
+pub(crate) fn doc_code(text: &str) -> String {
     comment_text(text).replace('`', "'")
 }
 
@@ -239,6 +240,9 @@ struct DesignFile {
     recorded_y: String,
     recorded_u: String,
     refused: Vec<usize>,
+    states: usize,
+    state_list: String,
+    model: String,
 }
 
 /// Samples of the recorded sequence where a value is replaced by NaN, then by +∞, so that every
@@ -298,7 +302,7 @@ pub fn portable_spec_path(spec: &Path, workspace: &Path) -> String {
 }
 
 /// The text of `generated/src/<design>.rs`.
-pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> Result<String, EmitError> {
+pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str, model: &str) -> Result<String, EmitError> {
     let list = |names: &[String]| {
         if names.is_empty() {
             "none".to_owned()
@@ -420,6 +424,9 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str) -> R
         )?,
         recorded_u: recorded_rows("recorded u", &result.scenario.inputs, false)?,
         refused: refused_samples(result.scenario.measurements.len()),
+        states: design.model.states.len(),
+        state_list: format!("{:?}", design.model.states),
+        model: model.trim_end().to_owned(),
     };
     file.render().map(|text| text + "\n").map_err(EmitError::from)
 }

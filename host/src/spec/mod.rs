@@ -134,6 +134,9 @@ pub struct MapSettings {
 pub struct Scenario {
     /// Initial state, in state order.
     pub x0: Vec<f64>,
+    /// Where observers that need an initial guess (the EKF) start, in state order (`observer_x0`;
+    /// default: the centre of the state box).
+    pub observer_x0: Option<Vec<f64>>,
     /// Samples.
     pub samples: usize,
     /// Seed of its inputs and noise.
@@ -185,6 +188,11 @@ pub struct Design {
     pub learning: Learning,
     /// The validation set.
     pub validation: Validation,
+    /// The tuning runs (`[tuning]`): what every tunable constant of an observer is chosen on, never
+    /// what accuracy is reported on.
+    pub tuning: Validation,
+    /// RK4 steps per sample of the model on the chip (`sampling.chip_substeps`, default 1).
+    pub chip_substeps: usize,
     /// The maps.
     pub map: MapSettings,
     /// The quantities to estimate.

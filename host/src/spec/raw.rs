@@ -17,6 +17,7 @@ pub(super) struct RawSpec {
     pub(super) sampling: RawSampling,
     pub(super) learning: RawLearning,
     pub(super) validation: RawValidation,
+    pub(super) tuning: Option<RawTuning>,
     pub(super) map: RawMap,
     pub(super) targets: Vec<RawNamedExpr>,
     pub(super) scenario: Option<RawScenario>,
@@ -35,6 +36,7 @@ pub(super) struct RawFamily {
 #[serde(deny_unknown_fields)]
 pub(super) struct RawScenario {
     pub(super) x0: BTreeMap<String, f64>,
+    pub(super) observer_x0: Option<BTreeMap<String, f64>>,
     pub(super) samples: usize,
     pub(super) seed: u64,
 }
@@ -80,6 +82,12 @@ pub(super) struct RawSampling {
     pub(super) time_unit: String,
     #[serde(default = "default_substeps")]
     pub(super) substeps: usize,
+    #[serde(default = "default_chip_substeps")]
+    pub(super) chip_substeps: usize,
+}
+
+fn default_chip_substeps() -> usize {
+    1
 }
 
 fn default_time_unit() -> String {
@@ -123,6 +131,15 @@ pub(super) struct RawValidation {
     pub(super) trajectories: usize,
     pub(super) samples: usize,
     pub(super) seed: u64,
+}
+
+/// `[tuning]`: every field defaults from `[validation]` (the seed to another one).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawTuning {
+    pub(super) trajectories: Option<usize>,
+    pub(super) samples: Option<usize>,
+    pub(super) seed: Option<u64>,
 }
 
 #[derive(Deserialize)]

@@ -1,6 +1,8 @@
 //! Field-by-field validation of a parsed spec: every problem becomes a [`SpecError`] naming the field
 //! and the fix. The model and the learning grid are checked in [`super::validate_model`].
 
+use std::collections::BTreeMap;
+
 use super::limits;
 use super::raw::*;
 use super::*;
@@ -107,7 +109,16 @@ impl Validator {
         self.at_most("sampling.substeps", raw.sampling.substeps, limits::MAX_SUBSTEPS)?;
         let map = self.map(&raw.map)?;
         let learning = self.learning(&raw.learning, &model, map.horizon)?;
-        let validation = self.validation(&raw.validation, map.horizon)?;
+        let validation = self.runs("validation", &raw.validation, map.horizon)?;
+        let tuning = self.tuning(raw.tuning.as_ref(), &validation, &learning, raw.scenario.as_ref(), map.horizon)?;
+        if raw.sampling.chip_substeps == 0 {
+            return Err(self.err(
+                "sampling.chip_substeps",
+                "the model on the chip needs at least one RK4 step per sample",
+                "set `sampling.chip_substeps` to 1 or more (1 is the default)",
+            ));
+        }
+        self.at_most("sampling.chip_substeps", raw.sampling.chip_substeps, 64)?;
         let targets = self.targets(&raw.targets, &model)?;
         let family = raw
             .family
@@ -129,6 +140,8 @@ impl Validator {
             substeps: raw.sampling.substeps,
             learning,
             validation,
+            tuning,
+            chip_substeps: raw.sampling.chip_substeps,
             map,
             targets,
             scenario,
@@ -169,31 +182,35 @@ impl Validator {
         })
     }
 
-    fn scenario(&self, raw: &RawScenario, model: &Model, horizon: usize) -> Result<Scenario, SpecError> {
-        self.keys_among(
-            "scenario.x0",
-            raw.x0.keys(),
-            &model.states,
-            "a state",
-            "give one initial value per state",
-        )?;
-        let x0 = model
+    /// One finite value per state, from the table at `field`.
+    fn state_values(&self, field: &str, raw: &BTreeMap<String, f64>, model: &Model) -> Result<Vec<f64>, SpecError> {
+        self.keys_among(field, raw.keys(), &model.states, "a state", "give one initial value per state")?;
+        model
             .states
             .iter()
-            .map(|state| match raw.x0.get(state) {
+            .map(|state| match raw.get(state) {
                 Some(v) if v.is_finite() => Ok(*v),
                 Some(v) => Err(self.err(
-                    format!("scenario.x0.{state}"),
+                    format!("{field}.{state}"),
                     format!("{v} is not finite"),
                     "give a finite initial value",
                 )),
                 None => Err(self.err(
-                    format!("scenario.x0.{state}"),
+                    format!("{field}.{state}"),
                     format!("no initial value for `{state}`"),
-                    format!("add `{state} = …` to `scenario.x0`"),
+                    format!("add `{state} = …` to `{field}`"),
                 )),
             })
-            .collect::<Result<_, _>>()?;
+            .collect()
+    }
+
+    fn scenario(&self, raw: &RawScenario, model: &Model, horizon: usize) -> Result<Scenario, SpecError> {
+        let x0 = self.state_values("scenario.x0", &raw.x0, model)?;
+        let observer_x0 = raw
+            .observer_x0
+            .as_ref()
+            .map(|values| self.state_values("scenario.observer_x0", values, model))
+            .transpose()?;
         self.at_most("scenario.samples", raw.samples, limits::MAX_RUN_SAMPLES)?;
         if raw.samples < horizon {
             return Err(self.err(
@@ -204,6 +221,7 @@ impl Validator {
         }
         Ok(Scenario {
             x0,
+            observer_x0,
             samples: raw.samples,
             seed: raw.seed,
         })
@@ -267,21 +285,52 @@ impl Validator {
         })
     }
 
-    fn validation(&self, raw: &RawValidation, horizon: usize) -> Result<Validation, SpecError> {
+    /// `[tuning]`, each field defaulting from `[validation]`; the seed must differ from every other.
+    fn tuning(
+        &self,
+        raw: Option<&RawTuning>,
+        validation: &Validation,
+        learning: &Learning,
+        scenario: Option<&RawScenario>,
+        horizon: usize,
+    ) -> Result<Validation, SpecError> {
+        let others = [Some(learning.seed), Some(validation.seed), scenario.map(|s| s.seed)];
+        let taken = |seed: u64| others.contains(&Some(seed));
+        let seed = match raw.and_then(|t| t.seed) {
+            Some(seed) if taken(seed) => {
+                return Err(self.err(
+                    "tuning.seed",
+                    format!("seed {seed} is also the learning, validation or scenario seed: the tuning runs would not be new data"),
+                    "choose another seed, or leave it out (a free one is derived from `validation.seed`)",
+                ))
+            }
+            Some(seed) => seed,
+            None => (1..).map(|k| validation.seed.wrapping_add(1000 * k)).find(|s| !taken(*s)).expect("three seeds cannot take them all"),
+        };
+        let raw = RawValidation {
+            trajectories: raw.and_then(|t| t.trajectories).unwrap_or(validation.trajectories),
+            samples: raw.and_then(|t| t.samples).unwrap_or(validation.samples),
+            seed,
+        };
+        self.runs("tuning", &raw, horizon)
+    }
+
+    /// The random runs of section `section` (`validation` or `tuning`).
+    fn runs(&self, section: &str, raw: &RawValidation, horizon: usize) -> Result<Validation, SpecError> {
         if raw.trajectories == 0 {
             return Err(self.err(
-                "validation.trajectories",
-                "no validation run: accuracy could not be reported",
-                "set `validation.trajectories` to 1 or more (50 or more is sensible)",
+                format!("{section}.trajectories"),
+                format!("no {section} run"),
+                format!("set `{section}.trajectories` to 1 or more (50 or more is sensible)"),
             ));
         }
-        self.at_most("validation.trajectories", raw.trajectories, limits::MAX_TRAJECTORIES)?;
-        self.at_most("validation.samples", raw.samples, limits::MAX_RUN_SAMPLES)?;
+        self.at_most(&format!("{section}.trajectories"), raw.trajectories, limits::MAX_TRAJECTORIES)?;
+        self.at_most(&format!("{section}.samples"), raw.samples, limits::MAX_RUN_SAMPLES)?;
         if raw.samples < horizon {
             return Err(self.err(
-                "validation.samples",
+                format!("{section}.samples"),
                 format!("runs of {} samples hold no window of N = {horizon}", raw.samples),
-                "set `validation.samples` ≥ `map.horizon`",
+                format!("set `{section}.samples` ≥ `map.horizon`"),
             ));
         }
         Ok(Validation {

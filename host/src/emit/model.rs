@@ -1,0 +1,205 @@
+//! The model of a design written out as Rust: one `let` per operation of its straight-line programs
+//! ([`crate::plant::Program`]), in their order, generic over the firmware's [`firmware::Scalar`] so
+//! that the chip runs it in `f32` and the host's tests in `f64`; and the design's EKF over it.
+//!
+//! Every number is written once for both precisions (`T::literal(f32, f64)`, each rounded here), every
+//! function is the firmware's `Maths::…` (libm), every name a local of the spec's name with a prefix
+//! (`x_` states, `u_` inputs; parameters are constants of module `parameters`), so nothing of the
+//! spec's text is pasted into code.
+
+use std::fmt::Write;
+
+use crate::emit::{f32_literal, EmitError};
+use crate::plant::program::Leaf;
+use crate::plant::{ModelCode, Op, Program};
+use crate::spec::ast::Binary;
+use crate::spec::Design;
+
+/// The EKF's constants, chosen on the tuning runs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EkfConstants {
+    /// `x̂(0)`.
+    pub x0: Vec<f64>,
+    /// `P(0)` diagonal.
+    pub p0: Vec<f64>,
+    /// `Q` diagonal.
+    pub q: Vec<f64>,
+    /// `R` diagonal: the outputs' noise variances.
+    pub r: Vec<f64>,
+    /// RK4 substeps per sample on the chip.
+    pub substeps: usize,
+    /// Width of one substep, `τ / substeps`.
+    pub h: f64,
+}
+
+/// `T::literal(single, double)` for `value`, the `f32` checked as [`f32_literal`] checks it.
+fn literal(what: &str, value: f64) -> Result<String, EmitError> {
+    Ok(format!("T::literal({}, {value:?})", f32_literal(what, value)?))
+}
+
+/// The right-hand side of operation `op`.
+fn operation(op: &Op, code: &ModelCode, names: &Names<'_>) -> Result<String, EmitError> {
+    Ok(match *op {
+        Op::Number(v) => literal("a number of the model", v)?,
+        Op::Leaf(Leaf::Parameter(i)) => {
+            format!("T::literal(parameters::{0}.0, parameters::{0}.1)", code.parameters[i].0)
+        }
+        Op::Leaf(Leaf::State(i)) => format!("x[{i}]"),
+        Op::Leaf(Leaf::Input(i)) => format!("u[{i}]"),
+        Op::Negate(a) => format!("-{}", names.of(a)),
+        Op::Binary(b, x, y) => {
+            let (x, y) = (names.of(x), names.of(y));
+            match b {
+                Binary::Add => format!("{x} + {y}"),
+                Binary::Sub => format!("{x} - {y}"),
+                Binary::Mul => format!("{x} * {y}"),
+                Binary::Div => format!("{x} / {y}"),
+                Binary::Pow => format!("Maths::powf({x}, {y})"),
+                Binary::Atan2 => format!("Maths::atan2({x}, {y})"),
+                Binary::Min => format!("Maths::min({x}, {y})"),
+                Binary::Max => format!("Maths::max({x}, {y})"),
+            }
+        }
+        Op::Call(f, a) => format!("Maths::{f}({})", names.of(a)),
+    })
+}
+
+/// The local each operation is bound to: `x_<state>`, `u_<input>`, `p_<parameter>`, or `t<index>`.
+struct Names<'a> {
+    program: &'a Program,
+    design: &'a Design,
+}
+
+impl Names<'_> {
+    fn of(&self, op: usize) -> String {
+        let model = &self.design.model;
+        match self.program.ops[op] {
+            Op::Leaf(Leaf::State(i)) => format!("x_{}", model.states[i]),
+            Op::Leaf(Leaf::Input(i)) => format!("u_{}", model.inputs[i]),
+            Op::Leaf(Leaf::Parameter(i)) => format!("p_{}", model.parameters[i].0),
+            _ => format!("t{op}"),
+        }
+    }
+}
+
+/// The body of a function computing `program`: its `let`s, then `result` (the results by name).
+fn body(
+    program: &Program,
+    code: &ModelCode,
+    design: &Design,
+    indent: &str,
+    result: impl Fn(&[String]) -> String,
+) -> Result<String, EmitError> {
+    let names = Names { program, design };
+    let mut text = String::new();
+    for (i, op) in program.ops.iter().enumerate() {
+        writeln!(text, "{indent}let {}: T = {};", names.of(i), operation(op, code, &names)?).expect("write to a String");
+    }
+    let results: Vec<String> = program.results.iter().map(|&r| names.of(r)).collect();
+    writeln!(text, "{indent}{}", result(&results)).expect("write to a String");
+    Ok(text)
+}
+
+/// `[a, b, …]`.
+fn list(items: &[String]) -> String {
+    format!("[{}]", items.join(", "))
+}
+
+/// `[[…], …]`: `items` in rows of `width`.
+fn rows(items: &[String], width: usize) -> String {
+    if width == 0 {
+        return format!("[[]; {}]", items.len());
+    }
+    list(&items.chunks(width).map(list).collect::<Vec<_>>())
+}
+
+/// The Rust source of the design's model (`parameters`, `Plant`, `targets`) and its EKF (`ekf`).
+pub fn model_source(design: &Design, code: &ModelCode, ekf: Option<&EkfConstants>) -> Result<String, EmitError> {
+    let nx = code.dimensions.states;
+    let ny = code.dimensions.outputs;
+    let mut text = String::new();
+    let w = &mut text;
+    let spec = |s: &str| crate::emit::doc_code(s);
+    if !code.parameters.is_empty() {
+        writeln!(w, "/// The spec's parameters (`[model.parameters]`), each as `(f32, f64)`.").ok();
+        writeln!(w, "#[allow(non_upper_case_globals)]\npub mod parameters {{").ok();
+        for (name, value) in &code.parameters {
+            writeln!(w, "    /// `{}`.", spec(name)).ok();
+            writeln!(w, "    pub const {name}: (f32, f64) = ({}, {value:?});", f32_literal(&format!("model.parameters.{name}"), *value)?).ok();
+        }
+        writeln!(w, "}}\n").ok();
+    }
+    writeln!(w, "/// The spec's model on the chip, written out from its expression trees by `gen`:").ok();
+    writeln!(w, "///").ok();
+    writeln!(w, "/// ```text").ok();
+    for (state, expr) in design.model.states.iter().zip(&design.model.derivatives) {
+        writeln!(w, "/// d{}/dt = {}", spec(state), spec(expr.text())).ok();
+    }
+    for output in &design.model.outputs {
+        writeln!(w, "/// {} = {}", spec(&output.name), spec(output.expr.text())).ok();
+    }
+    for definition in &design.model.definitions {
+        writeln!(w, "/// where {} = {}", spec(&definition.name), spec(definition.expr.text())).ok();
+    }
+    writeln!(w, "/// ```").ok();
+    writeln!(w, "///").ok();
+    writeln!(w, "/// with the Jacobians `∂f/∂x` and `∂h/∂x` (symbolic, shared subexpressions computed once).").ok();
+    writeln!(w, "#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]\npub struct Plant;\n").ok();
+    writeln!(w, "impl<T: Scalar + Maths> firmware::Model<T, STATES, OUTPUTS, INPUTS> for Plant {{").ok();
+    writeln!(w, "    #[allow(unused_variables, non_snake_case)]").ok();
+    writeln!(w, "    fn derivative(&self, x: &[T; STATES], u: &[T; INPUTS]) -> ([T; STATES], [[T; STATES]; STATES]) {{").ok();
+    w.push_str(&body(&code.derivative, code, design, "        ", |r| format!("({}, {})", list(&r[..nx]), rows(&r[nx..], nx)))?);
+    writeln!(w, "    }}\n").ok();
+    writeln!(w, "    #[allow(unused_variables, non_snake_case)]").ok();
+    writeln!(w, "    fn output(&self, x: &[T; STATES], u: &[T; INPUTS]) -> ([T; OUTPUTS], [[T; STATES]; OUTPUTS]) {{").ok();
+    w.push_str(&body(&code.output, code, design, "        ", |r| format!("({}, {})", list(&r[..ny]), rows(&r[ny..], nx)))?);
+    writeln!(w, "    }}\n}}\n").ok();
+    writeln!(w, "/// The targets at state `x` and input `u`, in [`TARGET_NAMES`] order: what the EKF's estimate").ok();
+    writeln!(w, "/// gives for each.").ok();
+    writeln!(w, "#[allow(unused_variables, non_snake_case)]").ok();
+    writeln!(w, "pub fn targets<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {{").ok();
+    w.push_str(&body(&code.targets, code, design, "    ", list)?);
+    writeln!(w, "}}\n").ok();
+    writeln!(w, "/// RK4 steps per sample in the chip's model (the learning simulation takes {}).", design.substeps).ok();
+    writeln!(w, "pub const CHIP_SUBSTEPS: usize = {};\n", design.chip_substeps).ok();
+    writeln!(w, "/// One sampling period of [`Plant`] by [`CHIP_SUBSTEPS`] RK4 steps, the input held.").ok();
+    writeln!(w, "pub type Discrete<T> = firmware::Rk4<T, Plant, CHIP_SUBSTEPS>;").ok();
+    let Some(ekf) = ekf else {
+        return Ok(text);
+    };
+    writeln!(w).ok();
+
+    let diagonal = |what: &str, values: &[f64]| -> Result<String, EmitError> {
+        let n = values.len();
+        let entries = (0..n * n)
+            .map(|k| {
+                let (i, j) = (k / n, k % n);
+                literal(&format!("{what}[{i}][{j}]"), if i == j { values[i] } else { 0.0 })
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(rows(&entries, n))
+    };
+    let vector = |what: &str, values: &[f64]| -> Result<String, EmitError> {
+        let entries = values
+            .iter()
+            .enumerate()
+            .map(|(i, v)| literal(&format!("{what}[{i}]"), *v))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(list(&entries))
+    };
+    writeln!(w, "/// The extended Kalman filter of this design (see [`ekf_in`]).").ok();
+    writeln!(w, "pub type Ekf = firmware::Ekf<f32, Discrete<f32>, STATES, OUTPUTS, INPUTS>;\n").ok();
+    writeln!(w, "/// A fresh EKF in `f32`, as the chip runs it.").ok();
+    writeln!(w, "pub fn ekf() -> Ekf {{\n    ekf_in::<f32>()\n}}\n").ok();
+    writeln!(w, "/// A fresh EKF in any precision: starting at the centre of the state box, `P(0)` and `Q` diagonal").ok();
+    writeln!(w, "/// as chosen by `gen` on the tuning runs, `R` the outputs' noise variances.").ok();
+    writeln!(w, "pub fn ekf_in<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATES, OUTPUTS, INPUTS> {{").ok();
+    writeln!(w, "    firmware::Ekf::new(").ok();
+    writeln!(w, "        firmware::Rk4::new(Plant, {}),", literal("EKF substep", ekf.h)?).ok();
+    writeln!(w, "        {},", vector("EKF x0", &ekf.x0)?).ok();
+    writeln!(w, "        {},", diagonal("EKF P0", &ekf.p0)?).ok();
+    writeln!(w, "        {},", diagonal("EKF Q", &ekf.q)?).ok();
+    writeln!(w, "        {},", vector("EKF R", &ekf.r)?).ok();
+    writeln!(w, "    )\n}}").ok();
+    Ok(text)
+}
