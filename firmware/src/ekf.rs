@@ -49,7 +49,6 @@ pub struct Ekf<T, P, const NX: usize, const NY: usize, const NU: usize> {
     plant: P,
 }
 
-
 /// The result of one sample: the updated estimate, or the refusal of a non-finite sample.
 pub type EkfResult<T, const NX: usize> = Result<[T; NX], crate::RejectedSample>;
 

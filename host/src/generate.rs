@@ -188,8 +188,8 @@ pub fn design_source(
         design: design.name.clone(),
         source,
     };
-    let model = emit::model::model_source(design, &code, comparison.ekf.as_ref().map(|t| &t.constants))
-        .map_err(emit_error)?;
+    let model =
+        emit::model::model_source(design, &code, comparison.ekf.as_ref().map(|t| &t.constants)).map_err(emit_error)?;
     let source = emit::design_file(design, result, spec_path, &model).map_err(emit_error)?;
     Ok((comparison, source))
 }
@@ -379,11 +379,11 @@ pub fn weak_targets(design: &Design, result: &DesignResult) -> Vec<String> {
 
 fn prepare(design: Design, spec: &Path, reports: &Path, bar: &ProgressBar) -> Result<Prepared, GenerateError> {
     let emitted = emit_design(design, spec, bar)?;
-    let report = reporting::report(&emitted.design, &emitted.result);
+    let report = reporting::report(&emitted.design, &emitted.result, &emitted.comparison);
     Ok(Prepared {
         warnings: weak_targets(&emitted.design, &emitted.result),
         report: reporting::texts(&report),
-        table: reporting::table(&report),
+        table: format!("{}\n{}", reporting::table(&report), reporting::observers_table(&report)),
         learning_windows: report.learning.windows,
         validation_windows: report.validation.windows,
         folder: reports.join(&emitted.design.name),

@@ -1,6 +1,6 @@
 //! The files in `generated/` are exactly what `gen` produces now, and producing them is deterministic.
 
-use host::{emit, generate};
+use host::generate;
 use indicatif::ProgressBar;
 use integration_tests::{build, shipped_specs, workspace_root, SEARCHED_FIXTURE_SPEC};
 

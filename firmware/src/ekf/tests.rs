@@ -64,7 +64,8 @@ impl Plant<f64, 2, 1, 1> for Coupled {
 #[test]
 fn sequential_joseph_updates_match_a_textbook_filter_with_a_matrix_inverse() {
     let (q, r) = (Matrix2::new(0.01, 0.002, 0.002, 0.02), 0.3);
-    let mut filter: Ekf<f64, Coupled, 2, 1, 1> = Ekf::new(Coupled, 
+    let mut filter: Ekf<f64, Coupled, 2, 1, 1> = Ekf::new(
+        Coupled,
         [0.5, -1.0],
         [[2.0, 0.1], [0.1, 1.0]],
         [[q[(0, 0)], q[(0, 1)]], [q[(1, 0)], q[(1, 1)]]],
@@ -100,7 +101,8 @@ fn sequential_joseph_updates_match_a_textbook_filter_with_a_matrix_inverse() {
 fn the_covariance_stays_symmetric_and_positive_with_an_almost_exact_sensor() {
     // r = 1e-14 after P = 1e6: an almost exact sensor, where the short update (I - K H) P is prone to
     // lose symmetry and positivity to rounding; the Joseph form with the copied triangle must not.
-    let mut filter: Ekf<f64, Coupled, 2, 1, 1> = Ekf::new(Coupled, 
+    let mut filter: Ekf<f64, Coupled, 2, 1, 1> = Ekf::new(
+        Coupled,
         [0.0, 0.0],
         [[1e6, 0.0], [0.0, 1e6]],
         [[1e-9, 0.0], [0.0, 1e-9]],
@@ -134,8 +136,13 @@ fn a_non_finite_measurement_is_refused_and_only_the_prediction_runs() {
 
 #[test]
 fn a_non_finite_input_changes_nothing() {
-    let mut filter: Ekf<f64, Coupled, 2, 1, 1> =
-        Ekf::new(Coupled, [0.5, -1.0], [[2.0, 0.1], [0.1, 1.0]], [[0.01, 0.0], [0.0, 0.02]], [0.3]);
+    let mut filter: Ekf<f64, Coupled, 2, 1, 1> = Ekf::new(
+        Coupled,
+        [0.5, -1.0],
+        [[2.0, 0.1], [0.1, 1.0]],
+        [[0.01, 0.0], [0.0, 0.02]],
+        [0.3],
+    );
     let before = filter;
     assert_eq!(filter.push(&[0.2], &[f64::NAN]), Err(crate::RejectedSample));
     assert_eq!(

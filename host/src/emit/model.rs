@@ -93,7 +93,13 @@ fn body(
     let names = Names { program, design };
     let mut text = String::new();
     for (i, op) in program.ops.iter().enumerate() {
-        writeln!(text, "{indent}let {}: T = {};", names.of(i), operation(op, code, &names)?).expect("write to a String");
+        writeln!(
+            text,
+            "{indent}let {}: T = {};",
+            names.of(i),
+            operation(op, code, &names)?
+        )
+        .expect("write to a String");
     }
     let results: Vec<String> = program.results.iter().map(|&r| names.of(r)).collect();
     writeln!(text, "{indent}{}", result(&results)).expect("write to a String");
@@ -121,15 +127,28 @@ pub fn model_source(design: &Design, code: &ModelCode, ekf: Option<&EkfConstants
     let w = &mut text;
     let spec = |s: &str| crate::emit::doc_code(s);
     if !code.parameters.is_empty() {
-        writeln!(w, "/// The spec's parameters (`[model.parameters]`), each as `(f32, f64)`.").ok();
+        writeln!(
+            w,
+            "/// The spec's parameters (`[model.parameters]`), each as `(f32, f64)`."
+        )
+        .ok();
         writeln!(w, "#[allow(non_upper_case_globals)]\npub mod parameters {{").ok();
         for (name, value) in &code.parameters {
             writeln!(w, "    /// `{}`.", spec(name)).ok();
-            writeln!(w, "    pub const {name}: (f32, f64) = ({}, {value:?});", f32_literal(&format!("model.parameters.{name}"), *value)?).ok();
+            writeln!(
+                w,
+                "    pub const {name}: (f32, f64) = ({}, {value:?});",
+                f32_literal(&format!("model.parameters.{name}"), *value)?
+            )
+            .ok();
         }
         writeln!(w, "}}\n").ok();
     }
-    writeln!(w, "/// The spec's model on the chip, written out from its expression trees by `gen`:").ok();
+    writeln!(
+        w,
+        "/// The spec's model on the chip, written out from its expression trees by `gen`:"
+    )
+    .ok();
     writeln!(w, "///").ok();
     writeln!(w, "/// ```text").ok();
     for (state, expr) in design.model.states.iter().zip(&design.model.derivatives) {
@@ -139,30 +158,77 @@ pub fn model_source(design: &Design, code: &ModelCode, ekf: Option<&EkfConstants
         writeln!(w, "/// {} = {}", spec(&output.name), spec(output.expr.text())).ok();
     }
     for definition in &design.model.definitions {
-        writeln!(w, "/// where {} = {}", spec(&definition.name), spec(definition.expr.text())).ok();
+        writeln!(
+            w,
+            "/// where {} = {}",
+            spec(&definition.name),
+            spec(definition.expr.text())
+        )
+        .ok();
     }
     writeln!(w, "/// ```").ok();
     writeln!(w, "///").ok();
-    writeln!(w, "/// with the Jacobians `∂f/∂x` and `∂h/∂x` (symbolic, shared subexpressions computed once).").ok();
-    writeln!(w, "#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]\npub struct Plant;\n").ok();
-    writeln!(w, "impl<T: Scalar + Maths> firmware::Model<T, STATES, OUTPUTS, INPUTS> for Plant {{").ok();
+    writeln!(
+        w,
+        "/// with the Jacobians `∂f/∂x` and `∂h/∂x` (symbolic, shared subexpressions computed once)."
+    )
+    .ok();
+    writeln!(
+        w,
+        "#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]\npub struct Plant;\n"
+    )
+    .ok();
+    writeln!(
+        w,
+        "impl<T: Scalar + Maths> firmware::Model<T, STATES, OUTPUTS, INPUTS> for Plant {{"
+    )
+    .ok();
     writeln!(w, "    #[allow(unused_variables, non_snake_case)]").ok();
-    writeln!(w, "    fn derivative(&self, x: &[T; STATES], u: &[T; INPUTS]) -> ([T; STATES], [[T; STATES]; STATES]) {{").ok();
-    w.push_str(&body(&code.derivative, code, design, "        ", |r| format!("({}, {})", list(&r[..nx]), rows(&r[nx..], nx)))?);
+    writeln!(
+        w,
+        "    fn derivative(&self, x: &[T; STATES], u: &[T; INPUTS]) -> ([T; STATES], [[T; STATES]; STATES]) {{"
+    )
+    .ok();
+    w.push_str(&body(&code.derivative, code, design, "        ", |r| {
+        format!("({}, {})", list(&r[..nx]), rows(&r[nx..], nx))
+    })?);
     writeln!(w, "    }}\n").ok();
     writeln!(w, "    #[allow(unused_variables, non_snake_case)]").ok();
-    writeln!(w, "    fn output(&self, x: &[T; STATES], u: &[T; INPUTS]) -> ([T; OUTPUTS], [[T; STATES]; OUTPUTS]) {{").ok();
-    w.push_str(&body(&code.output, code, design, "        ", |r| format!("({}, {})", list(&r[..ny]), rows(&r[ny..], nx)))?);
+    writeln!(
+        w,
+        "    fn output(&self, x: &[T; STATES], u: &[T; INPUTS]) -> ([T; OUTPUTS], [[T; STATES]; OUTPUTS]) {{"
+    )
+    .ok();
+    w.push_str(&body(&code.output, code, design, "        ", |r| {
+        format!("({}, {})", list(&r[..ny]), rows(&r[ny..], nx))
+    })?);
     writeln!(w, "    }}\n}}\n").ok();
-    writeln!(w, "/// The targets at state `x` and input `u`, in [`TARGET_NAMES`] order: what the EKF's estimate").ok();
+    writeln!(
+        w,
+        "/// The targets at state `x` and input `u`, in [`TARGET_NAMES`] order: what the EKF's estimate"
+    )
+    .ok();
     writeln!(w, "/// gives for each.").ok();
     writeln!(w, "#[allow(unused_variables, non_snake_case)]").ok();
-    writeln!(w, "pub fn targets<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {{").ok();
+    writeln!(
+        w,
+        "pub fn targets<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {{"
+    )
+    .ok();
     w.push_str(&body(&code.targets, code, design, "    ", list)?);
     writeln!(w, "}}\n").ok();
-    writeln!(w, "/// RK4 steps per sample in the chip's model (the learning simulation takes {}).", design.substeps).ok();
+    writeln!(
+        w,
+        "/// RK4 steps per sample in the chip's model (the learning simulation takes {}).",
+        design.substeps
+    )
+    .ok();
     writeln!(w, "pub const CHIP_SUBSTEPS: usize = {};\n", design.chip_substeps).ok();
-    writeln!(w, "/// One sampling period of [`Plant`] by [`CHIP_SUBSTEPS`] RK4 steps, the input held.").ok();
+    writeln!(
+        w,
+        "/// One sampling period of [`Plant`] by [`CHIP_SUBSTEPS`] RK4 steps, the input held."
+    )
+    .ok();
     writeln!(w, "pub type Discrete<T> = firmware::Rk4<T, Plant, CHIP_SUBSTEPS>;").ok();
     let Some(ekf) = ekf else {
         return Ok(text);
@@ -188,14 +254,35 @@ pub fn model_source(design: &Design, code: &ModelCode, ekf: Option<&EkfConstants
         Ok(list(&entries))
     };
     writeln!(w, "/// The extended Kalman filter of this design (see [`ekf_in`]).").ok();
-    writeln!(w, "pub type Ekf = firmware::Ekf<f32, Discrete<f32>, STATES, OUTPUTS, INPUTS>;\n").ok();
+    writeln!(
+        w,
+        "pub type Ekf = firmware::Ekf<f32, Discrete<f32>, STATES, OUTPUTS, INPUTS>;\n"
+    )
+    .ok();
     writeln!(w, "/// A fresh EKF in `f32`, as the chip runs it.").ok();
     writeln!(w, "pub fn ekf() -> Ekf {{\n    ekf_in::<f32>()\n}}\n").ok();
-    writeln!(w, "/// A fresh EKF in any precision: starting at the centre of the state box, `P(0)` and `Q` diagonal").ok();
-    writeln!(w, "/// as chosen by `gen` on the tuning runs, `R` the outputs' noise variances.").ok();
-    writeln!(w, "pub fn ekf_in<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATES, OUTPUTS, INPUTS> {{").ok();
+    writeln!(
+        w,
+        "/// A fresh EKF in any precision: starting at the centre of the state box, `P(0)` and `Q` diagonal"
+    )
+    .ok();
+    writeln!(
+        w,
+        "/// as chosen by `gen` on the tuning runs, `R` the outputs' noise variances."
+    )
+    .ok();
+    writeln!(
+        w,
+        "pub fn ekf_in<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATES, OUTPUTS, INPUTS> {{"
+    )
+    .ok();
     writeln!(w, "    firmware::Ekf::new(").ok();
-    writeln!(w, "        firmware::Rk4::new(Plant, {}),", literal("EKF substep", ekf.h)?).ok();
+    writeln!(
+        w,
+        "        firmware::Rk4::new(Plant, {}),",
+        literal("EKF substep", ekf.h)?
+    )
+    .ok();
     writeln!(w, "        {},", vector("EKF x0", &ekf.x0)?).ok();
     writeln!(w, "        {},", diagonal("EKF P0", &ekf.p0)?).ok();
     writeln!(w, "        {},", diagonal("EKF Q", &ekf.q)?).ok();

@@ -121,8 +121,30 @@ pub fn estimate_run(code: &ModelCode, constants: &EkfConstants, x0: &[f64], run:
         return None;
     }
     sized!(
-        (1, 1), (1, 2), (1, 3), (1, 4), (2, 1), (2, 2), (2, 3), (2, 4), (3, 1), (3, 2), (3, 3), (3, 4),
-        (4, 1), (4, 2), (4, 3), (4, 4), (5, 1), (5, 2), (5, 3), (5, 4), (6, 1), (6, 2), (6, 3), (6, 4)
+        (1, 1),
+        (1, 2),
+        (1, 3),
+        (1, 4),
+        (2, 1),
+        (2, 2),
+        (2, 3),
+        (2, 4),
+        (3, 1),
+        (3, 2),
+        (3, 3),
+        (3, 4),
+        (4, 1),
+        (4, 2),
+        (4, 3),
+        (4, 4),
+        (5, 1),
+        (5, 2),
+        (5, 3),
+        (5, 4),
+        (6, 1),
+        (6, 2),
+        (6, 3),
+        (6, 4)
     )
 }
 
@@ -193,7 +215,13 @@ pub fn rmse(code: &ModelCode, constants: &EkfConstants, x0: &[f64], data: &DataS
 }
 
 /// Chooses `(q, p)` on `tuning` (see the module docs). `target_spreads` normalises each target's RMSE.
-pub fn tune(design: &Design, code: &ModelCode, tuning: &DataSet, learning: &DataSet, target_spreads: &[f64]) -> Option<Tuned> {
+pub fn tune(
+    design: &Design,
+    code: &ModelCode,
+    tuning: &DataSet,
+    learning: &DataSet,
+    target_spreads: &[f64],
+) -> Option<Tuned> {
     use rayon::prelude::*;
     if !supported(code) {
         return None;
@@ -203,7 +231,11 @@ pub fn tune(design: &Design, code: &ModelCode, tuning: &DataSet, learning: &Data
     let cost = |(q, p): (f64, f64)| -> f64 {
         let constants = constants(design, &centre, &spreads, q, p);
         let rmse = rmse(code, &constants, &centre, tuning).expect("size checked");
-        let mean = rmse.iter().zip(target_spreads).map(|(e, s)| e / s.max(f64::MIN_POSITIVE)).sum::<f64>()
+        let mean = rmse
+            .iter()
+            .zip(target_spreads)
+            .map(|(e, s)| e / s.max(f64::MIN_POSITIVE))
+            .sum::<f64>()
             / rmse.len() as f64;
         if mean.is_finite() {
             mean
@@ -218,7 +250,13 @@ pub fn tune(design: &Design, code: &ModelCode, tuning: &DataSet, learning: &Data
             .collect::<Vec<_>>()
             .into_iter()
             // The first of equals, so that the choice does not depend on the thread schedule.
-            .fold(((f64::NAN, f64::NAN), f64::INFINITY), |best, c| if c.1 < best.1 { c } else { best })
+            .fold(((f64::NAN, f64::NAN), f64::INFINITY), |best, c| {
+                if c.1 < best.1 {
+                    c
+                } else {
+                    best
+                }
+            })
     };
     let decade = |e: f64| 10f64.powf(e);
     let coarse: Vec<(f64, f64)> = (-8..=0)

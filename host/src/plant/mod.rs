@@ -136,7 +136,12 @@ impl ModelCode {
             .definitions
             .iter()
             .enumerate()
-            .map(|(i, d)| Ok((d.name.clone(), parse(format!("model.definitions[{i}].expr"), d.expr.text())?)))
+            .map(|(i, d)| {
+                Ok((
+                    d.name.clone(),
+                    parse(format!("model.definitions[{i}].expr"), d.expr.text())?,
+                ))
+            })
             .collect::<Result<Vec<_>, ModelCodeError>>()?;
         let derivatives = model
             .states
@@ -167,7 +172,11 @@ impl ModelCode {
                 builder.result(value);
                 let mut row = Vec::new();
                 for (j, state) in model.states.iter().enumerate() {
-                    row.push(lower(&mut builder, tree, &total_derivative(&tree.node, state, j, &definitions))?);
+                    row.push(lower(
+                        &mut builder,
+                        tree,
+                        &total_derivative(&tree.node, state, j, &definitions),
+                    )?);
                 }
                 rows.push(row);
             }
@@ -257,7 +266,11 @@ fn array<T: Copy, const N: usize>(values: &[T]) -> [T; N] {
 }
 
 /// Lowers every definition's value, and its total derivative in each of `states`.
-fn bind_definitions(builder: &mut Builder<'_>, definitions: &[(String, Tree)], states: &[String]) -> Result<(), ModelCodeError> {
+fn bind_definitions(
+    builder: &mut Builder<'_>,
+    definitions: &[(String, Tree)],
+    states: &[String],
+) -> Result<(), ModelCodeError> {
     for (k, (name, tree)) in definitions.iter().enumerate() {
         let value = lower(builder, tree, &tree.node)?;
         builder.bind(name.clone(), value);

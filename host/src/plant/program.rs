@@ -223,7 +223,13 @@ impl Program {
 
     /// Evaluates every operation into `values` (one per operation) and returns the results: in `T`
     /// exactly as the emitted code computes them (numbers and parameters rounded to `f32` for `f32`).
-    pub fn eval<T: Scalar + Maths>(&self, parameters: &[(String, f64)], x: &[T], u: &[T], values: &mut Vec<T>) -> Vec<T> {
+    pub fn eval<T: Scalar + Maths>(
+        &self,
+        parameters: &[(String, f64)],
+        x: &[T],
+        u: &[T],
+        values: &mut Vec<T>,
+    ) -> Vec<T> {
         values.clear();
         for op in &self.ops {
             let value = match *op {

@@ -69,7 +69,11 @@ fn points() -> impl Iterator<Item = ([f64; 3], [f64; 1])> {
     (1..=500).map(|k| {
         let k = k as f64;
         (
-            [2.0 * (k * 0.731).sin(), 2.0 * (k * 0.377).cos(), 1.5 + (k * 0.913).sin()],
+            [
+                2.0 * (k * 0.731).sin(),
+                2.0 * (k * 0.377).cos(),
+                1.5 + (k * 0.913).sin(),
+            ],
             [(k * 0.191).sin()],
         )
     })
@@ -91,7 +95,12 @@ fn values_match_the_specs_own_evaluation_to_rounding() {
         let (ours_f, _) = code.derivative(&x, &u, &mut scratch);
         let (ours_h, _) = code.output(&x, &u, &mut scratch);
         let ours_r = code.targets(&x, &u, &mut scratch);
-        for (a, b) in f.iter().chain(&h).chain(&targets).zip(ours_f.iter().chain(&ours_h).chain(&ours_r)) {
+        for (a, b) in f
+            .iter()
+            .chain(&h)
+            .chain(&targets)
+            .zip(ours_f.iter().chain(&ours_h).chain(&ours_r))
+        {
             worst = worst.max((a - b).abs() / (1.0 + a.abs()));
         }
     }

@@ -12,6 +12,7 @@ use crate::fit::evaluate::Evaluation;
 use crate::fit::identify::Diagnostics;
 use crate::fit::maps::FittedMap;
 use crate::fit::DesignResult;
+use crate::observers::Comparison;
 use crate::output::write_atomically;
 use crate::spec::{Design, MapSettings};
 
@@ -38,6 +39,72 @@ pub struct Report<'a> {
     pub validation: SetSummary,
     /// One entry per target.
     pub targets: Vec<TargetReport<'a>>,
+    /// Tuning runs (what the EKF's constants were chosen on; never reported as accuracy).
+    pub tuning: SetSummary,
+    /// Every observer on the same data: the map, then the EKF.
+    pub observers: Vec<ObserverReport>,
+    /// How the EKF was tuned, when the host could run one.
+    pub ekf_tuning: Option<EkfTuning>,
+    /// The model on the chip against the learning simulation's.
+    pub chip_model: ChipModel,
+}
+
+/// One observer's figures.
+#[derive(Serialize)]
+pub struct ObserverReport {
+    /// `"map"` or `"ekf"`.
+    pub kind: &'static str,
+    /// Per target name.
+    pub targets: std::collections::BTreeMap<String, FiguresReport>,
+    /// Measured on the emulated Cortex-M4F by `cargo run -p integration-tests --bin on-target-report`
+    /// (README), not by `gen`: `null` here.
+    pub on_target: Option<()>,
+}
+
+/// [`crate::observers::Figures`] as serialised (NaN, where a filter diverged, as `null`).
+#[derive(Serialize)]
+pub struct FiguresReport {
+    /// RMSE over the validation windows.
+    pub rmse_validation: Option<f64>,
+    /// Largest |error| there.
+    pub max_error_validation: Option<f64>,
+    /// RMSE over the scenario's windows (the EKF from `scenario.observer_x0`).
+    pub rmse_scenario: Option<f64>,
+    /// RMSE over the scenario's first 2 time units after the map's first estimate.
+    pub rmse_transient: Option<f64>,
+    /// RMSE over the tuning runs.
+    pub rmse_tuning: Option<f64>,
+}
+
+/// The EKF's tuning.
+#[derive(Serialize)]
+pub struct EkfTuning {
+    /// `Q = q · diag(s_i²)`.
+    pub q: f64,
+    /// `P(0) = p · diag(s_i²)`.
+    pub p0: f64,
+    /// Mean normalised RMSE on the tuning runs at the choice.
+    pub cost: f64,
+    /// Candidates tried.
+    pub candidates: usize,
+    /// `diag(Q)`.
+    pub q_diagonal: Vec<f64>,
+    /// `diag(P(0))`.
+    pub p0_diagonal: Vec<f64>,
+    /// `x̂(0)` (centre of the state box).
+    pub x0: Vec<f64>,
+}
+
+/// The chip's model against the simulation's.
+#[derive(Serialize)]
+pub struct ChipModel {
+    /// RK4 steps per sample on the chip.
+    pub chip_substeps: usize,
+    /// RK4 steps per sample of the learning simulation.
+    pub simulation_substeps: usize,
+    /// Per state: largest one-sample difference of the two over the validation states, relative to
+    /// the state's spread.
+    pub max_step_difference_relative: Vec<f64>,
 }
 
 /// Size of a data set.
@@ -88,7 +155,8 @@ pub struct LinearReport {
 }
 
 /// Assembles the report of a run.
-pub fn report<'a>(design: &'a Design, result: &'a DesignResult) -> Report<'a> {
+pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a Comparison) -> Report<'a> {
+    let finite = |v: f64| v.is_finite().then_some(v);
     let summary = |set: &crate::data::DataSet, seed| SetSummary {
         runs: set.runs.len(),
         windows: set.window_count(),
@@ -127,7 +195,100 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult) -> Report<'a> {
                 }
             })
             .collect(),
+        tuning: summary(&comparison.tuning, design.tuning.seed),
+        observers: comparison
+            .observers
+            .iter()
+            .map(|o| ObserverReport {
+                kind: o.kind,
+                targets: design
+                    .targets
+                    .iter()
+                    .zip(&o.targets)
+                    .map(|(t, f)| {
+                        (
+                            t.name.clone(),
+                            FiguresReport {
+                                rmse_validation: finite(f.rmse_validation),
+                                max_error_validation: finite(f.max_error_validation),
+                                rmse_scenario: finite(f.rmse_scenario),
+                                rmse_transient: finite(f.rmse_transient),
+                                rmse_tuning: finite(f.rmse_tuning),
+                            },
+                        )
+                    })
+                    .collect(),
+                on_target: None,
+            })
+            .collect(),
+        ekf_tuning: comparison.ekf.as_ref().map(|t| EkfTuning {
+            q: t.q,
+            p0: t.p,
+            cost: t.cost,
+            candidates: t.candidates,
+            q_diagonal: t.constants.q.clone(),
+            p0_diagonal: t.constants.p0.clone(),
+            x0: t.constants.x0.clone(),
+        }),
+        chip_model: ChipModel {
+            chip_substeps: design.chip_substeps,
+            simulation_substeps: design.substeps,
+            max_step_difference_relative: comparison.chip_model_error.clone(),
+        },
     }
+}
+
+/// The observers side by side (Markdown), and per figure a sentence naming the better one.
+pub fn observers_table(report: &Report<'_>) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "| observer | target | RMSE validation | max error validation | RMSE scenario | RMSE transient | RMSE tuning |"
+    );
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|");
+    let show = |v: Option<f64>| v.map_or("diverged".to_owned(), |v| format!("{v:.4}"));
+    for o in &report.observers {
+        for (name, f) in &o.targets {
+            let _ = writeln!(
+                s,
+                "| {} | {name} | {} | {} | {} | {} | {} |",
+                o.kind,
+                show(f.rmse_validation),
+                show(f.max_error_validation),
+                show(f.rmse_scenario),
+                show(f.rmse_transient),
+                show(f.rmse_tuning)
+            );
+        }
+    }
+    if report.observers.len() < 2 {
+        let _ = writeln!(s, "\nNo EKF: the model is beyond the sizes the host runs one for.");
+        return s;
+    }
+    type Pick = fn(&FiguresReport) -> Option<f64>;
+    let figures: [(&str, Pick); 4] = [
+        ("validation RMSE", |f| f.rmse_validation),
+        ("validation max error", |f| f.max_error_validation),
+        ("scenario RMSE", |f| f.rmse_scenario),
+        ("transient RMSE", |f| f.rmse_transient),
+    ];
+    let _ = writeln!(s);
+    for (label, pick) in figures {
+        let mut verdicts = Vec::new();
+        for name in report.observers[0].targets.keys() {
+            let best = report
+                .observers
+                .iter()
+                .filter_map(|o| pick(&o.targets[name]).map(|v| (o.kind, v)))
+                .min_by(|a, b| a.1.total_cmp(&b.1));
+            verdicts.push(match best {
+                Some((kind, _)) => format!("{kind} for {name}"),
+                None => format!("neither for {name} (both diverged)"),
+            });
+        }
+        let _ = writeln!(s, "Better on {label}: {}.", verdicts.join(", "));
+    }
+    s
 }
 
 /// The table shared by `report.md` and the terminal summary.
@@ -193,6 +354,24 @@ pub fn markdown(report: &Report<'_>) -> String {
         report.validation.windows
     );
     s.push_str(&table(report));
+    s.push_str("\n## Observers on the same data\n\n");
+    s.push_str(&observers_table(report));
+    if let Some(t) = &report.ekf_tuning {
+        let _ = writeln!(
+            s,
+            "\nEKF: the firmware's filter over the model emitted as Rust ({} RK4 step(s) per sample on the chip, {} in the learning simulation; \
+             largest one-sample difference between the two over the validation states, relative to each state's spread: {}), \
+             starting at the centre of the state box; Q = {:.3e}·diag(s²), P(0) = {:.3e}·diag(s²) (s: each state's spread over the learning runs), \
+             chosen among {} candidates on {} tuning runs that no figure above but *RMSE tuning* uses.",
+            report.chip_model.chip_substeps,
+            report.chip_model.simulation_substeps,
+            report.chip_model.max_step_difference_relative.iter().map(|v| format!("{v:.1e}")).collect::<Vec<_>>().join(", "),
+            t.q,
+            t.p0,
+            t.candidates,
+            report.tuning.runs
+        );
+    }
     s.push_str(
         "\n*ratio*: validation RMSE of the map over that of the plain linear least-squares map `Lᵀ Z + c` on the same data \
          (below 1: the nonlinear map beats the floor). *max error validation* is the paper's empirical ε_x. \

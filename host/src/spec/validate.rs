@@ -110,7 +110,13 @@ impl Validator {
         let map = self.map(&raw.map)?;
         let learning = self.learning(&raw.learning, &model, map.horizon)?;
         let validation = self.runs("validation", &raw.validation, map.horizon)?;
-        let tuning = self.tuning(raw.tuning.as_ref(), &validation, &learning, raw.scenario.as_ref(), map.horizon)?;
+        let tuning = self.tuning(
+            raw.tuning.as_ref(),
+            &validation,
+            &learning,
+            raw.scenario.as_ref(),
+            map.horizon,
+        )?;
         if raw.sampling.chip_substeps == 0 {
             return Err(self.err(
                 "sampling.chip_substeps",
@@ -184,7 +190,13 @@ impl Validator {
 
     /// One finite value per state, from the table at `field`.
     fn state_values(&self, field: &str, raw: &BTreeMap<String, f64>, model: &Model) -> Result<Vec<f64>, SpecError> {
-        self.keys_among(field, raw.keys(), &model.states, "a state", "give one initial value per state")?;
+        self.keys_among(
+            field,
+            raw.keys(),
+            &model.states,
+            "a state",
+            "give one initial value per state",
+        )?;
         model
             .states
             .iter()
@@ -324,7 +336,11 @@ impl Validator {
                 format!("set `{section}.trajectories` to 1 or more (50 or more is sensible)"),
             ));
         }
-        self.at_most(&format!("{section}.trajectories"), raw.trajectories, limits::MAX_TRAJECTORIES)?;
+        self.at_most(
+            &format!("{section}.trajectories"),
+            raw.trajectories,
+            limits::MAX_TRAJECTORIES,
+        )?;
         self.at_most(&format!("{section}.samples"), raw.samples, limits::MAX_RUN_SAMPLES)?;
         if raw.samples < horizon {
             return Err(self.err(

@@ -27,7 +27,16 @@ fn priorities_and_signs_follow_exmex() {
 
 #[test]
 fn malformed_text_is_refused_with_a_position() {
-    for (text, at) in [("x +", 3), ("(x", 2), ("x)", 1), ("sin x", 0), ("x # y", 2), ("", 0), ("min(a b)", 6), ("atan2 x", 0)] {
+    for (text, at) in [
+        ("x +", 3),
+        ("(x", 2),
+        ("x)", 1),
+        ("sin x", 0),
+        ("x # y", 2),
+        ("", 0),
+        ("min(a b)", 6),
+        ("atan2 x", 0),
+    ] {
         let error = parse(text).unwrap_err();
         assert_eq!(error.at, at, "{text}: {error}");
     }
