@@ -1,13 +1,14 @@
 //! Running the generated observers on the emulated Cortex-M4F (QEMU `mps2-an386`) and measuring them:
 //! estimates over semihosting, instructions per `push` + `estimate` from an execution trace, flash
-//! and RAM from the ELF, and the no-panic proof (see `tests/on-target/`).
+//! and RAM from the ELF, and the no-panic proof (see `tests/on-target/`). Each design's extended
+//! Kalman filter is measured the same way, in its own program ([`measure_ekf`]).
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use firmware::{Estimate, Saturation};
+use firmware::{Estimate, Maths, Saturation, Scalar};
 use host::emit::precision::compare;
 
 use crate::workspace_root;
@@ -105,9 +106,34 @@ impl DesignMeasurement {
     }
 }
 
-/// Builds `bin` of the on-target program in release, linking design `design` (the runner's
-/// `ON_TARGET_DESIGN`, the probe's `PROBE_DESIGN`), into `target_dir`.
-fn build(bin: &str, design: &str, target_dir: &Path) -> Result<PathBuf, String> {
+/// What a program measures: the map observer, or the design's extended Kalman filter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    Map,
+    Ekf,
+}
+
+impl Kind {
+    /// The runner binary of the on-target program.
+    fn runner(self) -> &'static str {
+        match self {
+            Kind::Map => "on-target",
+            Kind::Ekf => "ekf",
+        }
+    }
+
+    /// The probe's `PROBE_KIND`.
+    fn probe_kind(self) -> &'static str {
+        match self {
+            Kind::Map => "map",
+            Kind::Ekf => "ekf",
+        }
+    }
+}
+
+/// Builds `bin` of the on-target program in release, linking design `design` (a runner's
+/// `ON_TARGET_DESIGN`, the probe's `PROBE_DESIGN`, with `PROBE_KIND` from `kind`), into `target_dir`.
+fn build(bin: &str, design: &str, kind: Kind, target_dir: &Path) -> Result<PathBuf, String> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let output = Command::new(cargo)
         .current_dir(workspace_root())
@@ -122,6 +148,7 @@ fn build(bin: &str, design: &str, target_dir: &Path) -> Result<PathBuf, String> 
             },
             design,
         )
+        .env("PROBE_KIND", kind.probe_kind())
         .output()
         .map_err(|e| format!("cannot run cargo: {e}"))?;
     if !output.status.success() {
@@ -349,23 +376,12 @@ pub struct Measurements {
 /// Builds and runs, per design, the on-target program linking that design alone, and the size
 /// probes; returns the measurements. `Err(Unavailable::Missing)` when QEMU or binutils are missing.
 pub fn measure() -> Result<Measurements, Unavailable> {
-    require("qemu-system-arm", "qemu-system-arm")?;
-    require("arm-none-eabi-size", "binutils-arm-none-eabi")?;
-    require("arm-none-eabi-objdump", "binutils-arm-none-eabi")?;
+    require_tools()?;
     let root = workspace_root().join("target");
     let mut designs = BTreeMap::new();
     for name in design_names() {
-        let elf = build("on-target", name, &root.join("on-target")).map_err(failed)?;
-        let trace = root.join("on-target").join(format!("{name}.trace"));
-        let text = run_qemu(&elf, &trace, Duration::from_secs(300))?;
+        let (text, counts) = run_counted(Kind::Map, name)?;
         let mut design = parse(&text)?;
-        let counts = count_between(
-            &trace,
-            symbol(&elf, "measure_start")?,
-            symbol(&elf, "measure_end")?,
-            &division_addresses(&elf)?,
-        )?;
-        let _ = std::fs::remove_file(&trace);
         if counts.len() != design.samples.len() {
             return Err(failed(format!(
                 "{name}: {} measured calls for {} samples",
@@ -378,17 +394,14 @@ pub fn measure() -> Result<Measurements, Unavailable> {
     }
 
     let probes = root.join("on-target-probe");
-    let baseline = sizes(&build("probe", "", &probes).map_err(|e| failed(format!("baseline probe: {e}")))?)?;
+    let baseline = baseline_sizes(&probes)?;
     for (name, design) in designs.iter_mut() {
-        let probe = build("probe", name, &probes)
-            .map_err(|e| failed(format!("probe of {name} (a panic path would show here): {e}")))?;
-        let (text, data, bss) = sizes(&probe)?;
-        design.flash_bytes = (text + data).saturating_sub(baseline.0 + baseline.1);
-        design.static_ram_bytes = (data + bss).saturating_sub(baseline.1 + baseline.2);
+        (design.flash_bytes, design.static_ram_bytes) = probe_cost(Kind::Map, name, &probes, baseline)?;
     }
     let mut family_flash_bytes = BTreeMap::new();
     for family in generated::FAMILIES {
-        let probe = build("probe", family, &probes).map_err(|e| failed(format!("probe of family {family}: {e}")))?;
+        let probe =
+            build("probe", family, Kind::Map, &probes).map_err(|e| failed(format!("probe of family {family}: {e}")))?;
         let (text, data, _) = sizes(&probe)?;
         family_flash_bytes.insert(family.to_owned(), (text + data).saturating_sub(baseline.0 + baseline.1));
     }
@@ -398,11 +411,246 @@ pub fn measure() -> Result<Measurements, Unavailable> {
     })
 }
 
+/// QEMU and binutils, or which is missing.
+fn require_tools() -> Result<(), Unavailable> {
+    require("qemu-system-arm", "qemu-system-arm")?;
+    require("arm-none-eabi-size", "binutils-arm-none-eabi")?;
+    require("arm-none-eabi-objdump", "binutils-arm-none-eabi")
+}
+
+/// Builds the `kind` runner linking design `name` alone, runs it under QEMU with an execution trace
+/// and returns what it printed, and the instructions and divisions of each measured call.
+fn run_counted(kind: Kind, name: &str) -> Result<(String, Vec<(u64, u64)>), Unavailable> {
+    let dir = workspace_root().join("target").join("on-target");
+    let elf = build(kind.runner(), name, kind, &dir).map_err(failed)?;
+    let trace = dir.join(match kind {
+        Kind::Map => format!("{name}.trace"),
+        Kind::Ekf => format!("{name}.ekf.trace"),
+    });
+    let text = run_qemu(&elf, &trace, Duration::from_secs(300))?;
+    let counts = count_between(
+        &trace,
+        symbol(&elf, "measure_start")?,
+        symbol(&elf, "measure_end")?,
+        &division_addresses(&elf)?,
+    )?;
+    let _ = std::fs::remove_file(&trace);
+    Ok((text, counts))
+}
+
+/// `(text, data, bss)` of the baseline probe (no observer), built into `probes`.
+fn baseline_sizes(probes: &Path) -> Result<(u64, u64, u64), Unavailable> {
+    sizes(&build("probe", "", Kind::Map, probes).map_err(|e| failed(format!("baseline probe: {e}")))?)
+}
+
+/// `(flash, static RAM)` added over `baseline` by the probe linking design `name`'s `kind`; the probe
+/// failing to link (a reachable panic) is an error.
+fn probe_cost(kind: Kind, name: &str, probes: &Path, baseline: (u64, u64, u64)) -> Result<(u64, u64), Unavailable> {
+    let what = match kind {
+        Kind::Map => "probe",
+        Kind::Ekf => "EKF probe",
+    };
+    let probe = build("probe", name, kind, probes)
+        .map_err(|e| failed(format!("{what} of {name} (a panic path would show here): {e}")))?;
+    let (text, data, bss) = sizes(&probe)?;
+    Ok((
+        (text + data).saturating_sub(baseline.0 + baseline.1),
+        (data + bss).saturating_sub(baseline.1 + baseline.2),
+    ))
+}
+
+/// One sample of a design's extended Kalman filter as the target reported it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct EkfSample {
+    /// The bits of the targets of the updated estimate `push` returned, in `TARGET_NAMES` order;
+    /// `None` when `push` refused the sample.
+    pub targets: Option<Vec<u32>>,
+    /// The bits of the filter's state after the sample (`state()`: the prediction to the next one).
+    pub state: Vec<u32>,
+}
+
+impl EkfSample {
+    /// Whether `push` accepted the sample.
+    pub fn accepted(&self) -> bool {
+        self.targets.is_some()
+    }
+}
+
+/// Everything measured for one design's extended Kalman filter.
+#[derive(Clone, Debug, Default)]
+pub struct EkfMeasurement {
+    /// Samples in the recorded sequence order.
+    pub samples: Vec<EkfSample>,
+    /// Instructions executed by `push` + `targets` per sample (markers included).
+    pub instructions: Vec<u64>,
+    /// `VDIV` and `VSQRT` instructions executed per sample.
+    pub divisions: Vec<u64>,
+    /// Deepest stack use of `push` + `targets` (the call to them included), in bytes.
+    pub stack_bytes: usize,
+    /// `size_of` the filter on the target, in bytes.
+    pub filter_bytes: usize,
+    /// Flash (text + data) added by the filter over the baseline probe, in bytes.
+    pub flash_bytes: u64,
+    /// Static RAM (data + bss) added over the baseline probe, in bytes.
+    pub static_ram_bytes: u64,
+}
+
+impl EkfMeasurement {
+    /// Instruction counts of the accepted samples (update and prediction; a refused sample only
+    /// predicts).
+    pub fn accepted_instructions(&self) -> Vec<u64> {
+        self.instructions
+            .iter()
+            .zip(&self.samples)
+            .filter(|(_, s)| s.accepted())
+            .map(|(n, _)| *n)
+            .collect()
+    }
+}
+
+/// Parses the EKF program's `K …`, `S …` and `STACK …` lines.
+fn parse_ekf(text: &str) -> Result<EkfMeasurement, Unavailable> {
+    let mut filter = EkfMeasurement::default();
+    let bits = |fields: &[&str]| -> Result<Vec<u32>, Unavailable> {
+        fields
+            .iter()
+            .map(|f| u32::from_str_radix(f, 16).map_err(|e| failed(format!("{f:?} in the EKF output: {e}"))))
+            .collect()
+    };
+    for line in text.lines() {
+        let fields: Vec<&str> = line.split_whitespace().collect();
+        match fields.as_slice() {
+            ["K", _k, accepted, rest @ ..] => {
+                let marker = rest
+                    .iter()
+                    .position(|&f| f == "X")
+                    .ok_or_else(|| failed(format!("no state in {line:?}")))?;
+                let (targets, state) = (&rest[..marker], &rest[marker + 1..]);
+                filter.samples.push(EkfSample {
+                    targets: (*accepted == "1").then(|| bits(targets)).transpose()?,
+                    state: bits(state)?,
+                });
+            }
+            ["S", bytes] => filter.filter_bytes = bytes.parse().unwrap_or(0),
+            ["STACK", bytes] => filter.stack_bytes = bytes.parse().unwrap_or(0),
+            _ => {}
+        }
+    }
+    if filter.samples.is_empty() {
+        return Err(failed(format!("no sample in the EKF output:\n{text}")));
+    }
+    Ok(filter)
+}
+
+/// Builds and runs, per design, the program running that design's extended Kalman filter alone, and
+/// its size probe (measured against the same baseline as the map observers'); returns the
+/// measurements by design. `Err(Unavailable::Missing)` when QEMU or binutils are missing.
+pub fn measure_ekf() -> Result<BTreeMap<String, EkfMeasurement>, Unavailable> {
+    require_tools()?;
+    let mut filters = BTreeMap::new();
+    for name in design_names() {
+        let (text, counts) = run_counted(Kind::Ekf, name)?;
+        let mut filter = parse_ekf(&text)?;
+        if counts.len() != filter.samples.len() {
+            return Err(failed(format!(
+                "{name} EKF: {} measured calls for {} samples",
+                counts.len(),
+                filter.samples.len()
+            )));
+        }
+        (filter.instructions, filter.divisions) = counts.into_iter().unzip();
+        filters.insert(name.to_owned(), filter);
+    }
+    let probes = workspace_root().join("target").join("on-target-probe");
+    let baseline = baseline_sizes(&probes)?;
+    for (name, filter) in filters.iter_mut() {
+        (filter.flash_bytes, filter.static_ram_bytes) = probe_cost(Kind::Ekf, name, &probes, baseline)?;
+    }
+    Ok(filters)
+}
+
+/// One sample of an extended Kalman filter run on the host: the targets of the estimate `push`
+/// returned (`None` when refused) and the state after the sample.
+pub type HostEkfSample<T> = (Option<Vec<T>>, Vec<T>);
+
+/// Runs design `name`'s extended Kalman filter (`ekf_in::<T>()`) on the host over the recorded
+/// sequence the chip runs (`RECORDED_Y`, `RECORDED_U`, each value taken exactly into `T`); `None` for
+/// an unknown design.
+pub fn host_ekf<T: Scalar + Maths>(name: &str) -> Option<Vec<HostEkfSample<T>>> {
+    let mut samples = None;
+    macro_rules! run {
+        ($design:ident) => {
+            if generated::$design::NAME == name {
+                use generated::$design as d;
+                let exact = |v: f32| T::literal(v, f64::from(v));
+                let mut filter = d::ekf_in::<T>();
+                samples = Some(
+                    d::RECORDED_Y
+                        .iter()
+                        .zip(&d::RECORDED_U)
+                        .map(|(y, u)| {
+                            let (y, u) = (y.map(exact), u.map(exact));
+                            let targets = filter.push(&y, &u).ok().map(|x| d::targets(&x, &u).to_vec());
+                            (targets, filter.state().to_vec())
+                        })
+                        .collect(),
+                );
+            }
+        };
+    }
+    generated::for_each_design!(run);
+    samples
+}
+
+/// The largest `|target − host|` over the targets of design `name`'s extended Kalman filter, the chip
+/// (f32) against the same filter in f64 on the host over the same recorded sequence; an error when the
+/// two do not refuse the same samples.
+pub fn compare_ekf_with_f64(name: &str, measured: &EkfMeasurement) -> Result<f64, String> {
+    let host = host_ekf::<f64>(name).ok_or_else(|| format!("no generated design {name}"))?;
+    if host.len() != measured.samples.len() {
+        return Err(format!(
+            "{name} EKF: {} samples on the target, {} recorded",
+            measured.samples.len(),
+            host.len()
+        ));
+    }
+    let mut largest: f64 = 0.0;
+    for (k, (sample, (host_targets, _))) in measured.samples.iter().zip(&host).enumerate() {
+        match (&sample.targets, host_targets) {
+            (Some(target), Some(host)) => {
+                for (t, (&bits, &h)) in target.iter().zip(host).enumerate() {
+                    let on_target = f64::from(f32::from_bits(bits));
+                    if on_target.is_nan() && h.is_nan() {
+                        continue;
+                    }
+                    let difference = (on_target - h).abs();
+                    if difference.is_nan() {
+                        return Err(format!(
+                            "{name} EKF sample {k} target {t}: {on_target} on the target, {h} on the host"
+                        ));
+                    }
+                    largest = largest.max(difference);
+                }
+            }
+            (None, None) => {}
+            (target, _) => {
+                return Err(format!(
+                    "{name} EKF sample {k}: accepted {} on the target, {} on the host",
+                    target.is_some(),
+                    host_targets.is_some()
+                ))
+            }
+        }
+    }
+    Ok(largest)
+}
+
 /// Builds the probe that indexes out of bounds: it must fail to link, naming the missing symbol.
 pub fn panic_check_catches_a_reachable_panic() -> Result<bool, Unavailable> {
     match build(
         "probe",
         "__reachable_panic",
+        Kind::Map,
         &workspace_root().join("target").join("on-target-probe"),
     ) {
         Ok(_) => Ok(false),

@@ -1,5 +1,6 @@
-//! Measures every generated observer on the emulated Cortex-M4F and rewrites the table in the
-//! README between `<!-- on-target:begin -->` and `<!-- on-target:end -->`:
+//! Measures every generated observer, and every design's extended Kalman filter beside it, on the
+//! emulated Cortex-M4F and rewrites the table in the README between `<!-- on-target:begin -->` and
+//! `<!-- on-target:end -->`:
 //!
 //! ```sh
 //! cargo run -p integration-tests --bin on-target-report
@@ -26,8 +27,9 @@ fn main() -> ExitCode {
 fn run() -> Result<String, String> {
     let all = on_target::measure().map_err(|e| e.to_string())?;
     let measured = &all.designs;
+    let filters = on_target::measure_ekf().map_err(|e| e.to_string())?;
     let mut table = String::from(
-        "| design | targets | N | segments per target | instructions per push + estimate (min / median / max) | first estimate | dot-product floor | VDIV + VSQRT per sample | stack bytes | flash bytes | RAM bytes | max \\|target − host\\| |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| design | targets | N | segments per target | instructions per push + estimate; EKF: push + targets (min / median / max) | first estimate | dot-product floor | VDIV + VSQRT per sample (max) | stack bytes | flash bytes | RAM bytes | max \\|target − host\\| |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for (name, design) in measured {
         let spec = integration_tests::shipped_specs()
@@ -61,6 +63,19 @@ fn run() -> Result<String, String> {
             design.stack_bytes,
             design.flash_bytes,
             design.observer_bytes + design.static_ram_bytes as usize,
+        );
+        // The design's extended Kalman filter: `push` + `targets` per sample, over the accepted
+        // samples (a refused one only predicts); compared with the same filter in f64 on the host.
+        let filter = filters.get(name).ok_or_else(|| format!("no EKF measured for {name}"))?;
+        let largest = on_target::compare_ekf_with_f64(name, filter)?;
+        let (min, median, max) = on_target::spread(&filter.accepted_instructions());
+        table += &format!(
+            "| `{name}` EKF | {} | — | — | {min} / {median} / {max} | — | — | {} | {} | {} | {} | {largest:.1e} |\n",
+            targets.join(", "),
+            filter.divisions.iter().max().unwrap_or(&0),
+            filter.stack_bytes,
+            filter.flash_bytes,
+            filter.filter_bytes + filter.static_ram_bytes as usize,
         );
     }
     for (family, flash) in &all.family_flash_bytes {

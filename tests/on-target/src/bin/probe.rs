@@ -1,5 +1,7 @@
 //! Size and panic probe: links exactly one design's observer (chosen by `PROBE_DESIGN` at build
-//! time, none for the baseline) and calls every entry point (`push`, `estimate`, `reset`).
+//! time, none for the baseline) and calls every entry point (`push`, `estimate`, `reset`); with
+//! `PROBE_KIND=ekf`, that design's extended Kalman filter instead (`ekf`, `push`, `targets`, `state`,
+//! `covariance`).
 //!
 //! Its panic handler calls a function that does not exist: if any panic path is reachable from the
 //! observer after optimisation, the link fails with `observer_code_can_panic` undefined. The release
