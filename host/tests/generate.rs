@@ -223,6 +223,10 @@ fn a_target_the_measurements_do_not_show_is_named_in_a_warning() {
             ),
             ("x0 = { x1 = 2.0, x2 = 0.5 }", "x0 = { x1 = 2.0, x2 = 0.5, z = 0.5 }"),
             (
+                "observer_x0 = { x1 = 1.0, x2 = 0.7 }",
+                "observer_x0 = { x1 = 1.0, x2 = 0.7, z = 0.5 }",
+            ),
+            (
                 "[[targets]]\nname = \"x2\"",
                 "[[targets]]\nname = \"z\"\nexpr = \"z\"\n\n[[targets]]\nname = \"x2\"",
             ),

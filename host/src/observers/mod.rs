@@ -113,7 +113,7 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
                     max_error_validation,
                     rmse_scenario: errors(scenario, &on_scenario, t, windows).0,
                     rmse_transient: errors(scenario, &on_scenario, t, |run| {
-                        horizon - 1..(horizon + transient).min(run.targets.len())
+                        horizon - 1..horizon.saturating_add(transient).min(run.targets.len())
                     })
                     .0,
                     rmse_tuning: errors(&tuning.runs, &on_tuning, t, windows).0,

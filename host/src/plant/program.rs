@@ -123,10 +123,12 @@ impl<'a> Builder<'a> {
             Node::Binary(Binary::Pow, a, b) if matches!(**b, Node::Number(n) if n == 2.0 || n == 3.0 || n == 4.0) => {
                 let a = self.lower(a)?;
                 let square = self.push(Op::Binary(Binary::Mul, a, a));
-                match **b {
-                    Node::Number(n) if n == 2.0 => square,
-                    Node::Number(n) if n == 3.0 => self.push(Op::Binary(Binary::Mul, square, a)),
-                    _ => self.push(Op::Binary(Binary::Mul, square, square)),
+                if **b == Node::Number(2.0) {
+                    square
+                } else if **b == Node::Number(3.0) {
+                    self.push(Op::Binary(Binary::Mul, square, a))
+                } else {
+                    self.push(Op::Binary(Binary::Mul, square, square))
                 }
             }
             Node::Binary(op, a, b) => {
