@@ -136,8 +136,8 @@ fn identity<T: Scalar, const N: usize>() -> [[T; N]; N] {
     m
 }
 
-/// `A B`.
-pub(crate) fn product<T: Scalar, const N: usize>(a: &[[T; N]; N], b: &[[T; N]; N]) -> [[T; N]; N] {
+/// `A B` (also what the host composes substeps with).
+pub fn product<T: Scalar, const N: usize>(a: &[[T; N]; N], b: &[[T; N]; N]) -> [[T; N]; N] {
     let mut out = [[T::ZERO; N]; N];
     for (r, out_row) in out.iter_mut().enumerate() {
         for (c, entry) in out_row.iter_mut().enumerate() {

@@ -188,12 +188,8 @@ pub fn design_source(
         design: design.name.clone(),
         source,
     };
-    // The maps' checks first (data beyond f32, tables not reproducible): they name the cause where the
-    // EKF's constants, derived from the same data, would only fail to be stored.
-    emit::design_file(design, result, spec_path, "").map_err(emit_error)?;
-    let model =
-        emit::model::model_source(design, &code, comparison.ekf.as_ref().map(|t| &t.constants)).map_err(emit_error)?;
-    let source = emit::design_file(design, result, spec_path, &model).map_err(emit_error)?;
+    let ekf = comparison.ekf.as_ref().map(|t| &t.constants);
+    let source = emit::design_file(design, result, spec_path, &code, ekf).map_err(emit_error)?;
     Ok((comparison, source))
 }
 

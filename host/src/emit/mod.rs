@@ -302,7 +302,13 @@ pub fn portable_spec_path(spec: &Path, workspace: &Path) -> String {
 }
 
 /// The text of `generated/src/<design>.rs`.
-pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str, model: &str) -> Result<String, EmitError> {
+pub fn design_file(
+    design: &Design,
+    result: &DesignResult,
+    spec_path: &str,
+    code: &crate::plant::ModelCode,
+    ekf: Option<&model::EkfConstants>,
+) -> Result<String, EmitError> {
     let list = |names: &[String]| {
         if names.is_empty() {
             "none".to_owned()
@@ -426,7 +432,9 @@ pub fn design_file(design: &Design, result: &DesignResult, spec_path: &str, mode
         refused: refused_samples(result.scenario.measurements.len()),
         states: design.model.states.len(),
         state_list: format!("{:?}", design.model.states),
-        model: model.trim_end().to_owned(),
+        // Last: the maps' checks above (data beyond f32, the sample period) name the cause where the
+        // EKF's constants, derived from the same data, would only fail to be stored.
+        model: model::model_source(design, code, ekf)?.trim_end().to_owned(),
     };
     file.render().map(|text| text + "\n").map_err(EmitError::from)
 }

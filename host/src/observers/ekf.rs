@@ -88,15 +88,7 @@ impl<const NX: usize, const NY: usize, const NU: usize> Plant<f64, NX, NY, NU> f
         for _ in 1..self.substeps {
             let (next, d) = Plant::<f64, NX, NY, NU>::step(&self.step, &x, u);
             x = next;
-            let mut product = [[0.0; NX]; NX];
-            for (r, row) in product.iter_mut().enumerate() {
-                for (c, entry) in row.iter_mut().enumerate() {
-                    for k in 0..NX {
-                        *entry += d[r][k] * jacobian[k][c];
-                    }
-                }
-            }
-            jacobian = product;
+            jacobian = firmware::model::product(&d, &jacobian);
         }
         (x, jacobian)
     }
@@ -198,20 +190,17 @@ pub fn constants(design: &Design, centre: &[f64], spreads: &[f64], q: f64, p: f6
 /// RMSE per target over the windows of `data` (samples `k ≥ N - 1` of every run), with the filter
 /// started at `x0`; NaN where the filter diverged.
 pub fn rmse(code: &ModelCode, constants: &EkfConstants, x0: &[f64], data: &DataSet) -> Option<Vec<f64>> {
-    let targets = code.dimensions.targets;
-    let mut sums = vec![0.0; targets];
-    let mut count = 0usize;
-    for run in &data.runs {
-        let estimates = estimate_run(code, constants, x0, run)?;
-        for k in data.horizon.saturating_sub(1)..run.targets.len() {
-            for (t, sum) in sums.iter_mut().enumerate() {
-                let error = estimates[k][t] - run.targets[k][t];
-                *sum += error * error;
-            }
-            count += 1;
-        }
-    }
-    Some(sums.iter().map(|s| (s / count.max(1) as f64).sqrt()).collect())
+    let estimates = data
+        .runs
+        .iter()
+        .map(|run| estimate_run(code, constants, x0, run))
+        .collect::<Option<Vec<Rows>>>()?;
+    let windows = |run: &Run| data.horizon.saturating_sub(1)..run.targets.len();
+    Some(
+        (0..code.dimensions.targets)
+            .map(|t| super::errors(&data.runs, &estimates, t, windows).0)
+            .collect(),
+    )
 }
 
 /// Chooses `(q, p)` on `tuning` (see the module docs). `target_spreads` normalises each target's RMSE.

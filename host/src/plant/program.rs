@@ -240,55 +240,11 @@ impl Program {
                 Op::Leaf(Leaf::State(i)) => x[i],
                 Op::Leaf(Leaf::Input(i)) => u[i],
                 Op::Negate(a) => -values[a],
-                Op::Binary(op, a, b) => {
-                    let (a, b) = (values[a], values[b]);
-                    match op {
-                        Binary::Add => a + b,
-                        Binary::Sub => a - b,
-                        Binary::Mul => a * b,
-                        Binary::Div => a / b,
-                        Binary::Pow => Maths::powf(a, b),
-                        Binary::Atan2 => Maths::atan2(a, b),
-                        Binary::Min => Maths::min(a, b),
-                        Binary::Max => Maths::max(a, b),
-                    }
-                }
-                Op::Call(f, a) => call(f, values[a]),
+                Op::Binary(op, a, b) => op.apply(values[a], values[b]),
+                Op::Call(f, a) => crate::spec::ast::call(f, values[a]),
             };
             values.push(value);
         }
         self.results.iter().map(|&r| values[r]).collect()
-    }
-}
-
-/// `f(a)` by the firmware's function of that name.
-pub fn call<T: Maths>(function: &str, a: T) -> T {
-    match function {
-        "abs" => a.abs(),
-        "signum" => a.signum(),
-        "sin" => a.sin(),
-        "cos" => a.cos(),
-        "tan" => a.tan(),
-        "asin" => a.asin(),
-        "acos" => a.acos(),
-        "atan" => a.atan(),
-        "sinh" => a.sinh(),
-        "cosh" => a.cosh(),
-        "tanh" => a.tanh(),
-        "asinh" => a.asinh(),
-        "acosh" => a.acosh(),
-        "atanh" => a.atanh(),
-        "floor" => a.floor(),
-        "round" => a.round(),
-        "ceil" => a.ceil(),
-        "trunc" => a.trunc(),
-        "fract" => a.fract(),
-        "exp" => a.exp(),
-        "sqrt" => a.sqrt(),
-        "cbrt" => a.cbrt(),
-        "ln" => a.ln(),
-        "log2" => a.log2(),
-        "log10" => a.log10(),
-        other => unreachable!("`{other}` was refused when the program was built"),
     }
 }

@@ -15,6 +15,8 @@
 
 use std::fmt;
 
+use firmware::{Maths, Scalar};
+
 /// A binary operator.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Binary {
@@ -52,17 +54,18 @@ impl Binary {
         })
     }
 
-    /// Applies the operator.
-    pub fn apply(self, a: f64, b: f64) -> f64 {
+    /// Applies the operator (the non-arithmetic ones by the firmware's `libm`-backed [`Maths`]: what
+    /// the emitted code calls).
+    pub fn apply<T: Scalar + Maths>(self, a: T, b: T) -> T {
         match self {
             Binary::Add => a + b,
             Binary::Sub => a - b,
             Binary::Mul => a * b,
             Binary::Div => a / b,
-            Binary::Pow => a.powf(b),
-            Binary::Atan2 => a.atan2(b),
-            Binary::Min => a.min(b),
-            Binary::Max => a.max(b),
+            Binary::Pow => Maths::powf(a, b),
+            Binary::Atan2 => Maths::atan2(a, b),
+            Binary::Min => Maths::min(a, b),
+            Binary::Max => Maths::max(a, b),
         }
     }
 }
@@ -478,35 +481,36 @@ fn select(op: Binary, a: Node, b: Node, da: Node, db: Node) -> Node {
     )
 }
 
-/// `f(a)` for a name of [`FUNCTIONS`].
-pub fn call(function: &str, a: f64) -> f64 {
+/// `f(a)` for a name of [`FUNCTIONS`] (`ln` and `log` both the natural logarithm), by the firmware's
+/// `libm`-backed [`Maths`]; NaN for any other name.
+pub fn call<T: Scalar + Maths>(function: &str, a: T) -> T {
     match function {
-        "abs" => a.abs(),
-        "signum" => a.signum(),
-        "sin" => a.sin(),
-        "cos" => a.cos(),
-        "tan" => a.tan(),
-        "asin" => a.asin(),
-        "acos" => a.acos(),
-        "atan" => a.atan(),
-        "sinh" => a.sinh(),
-        "cosh" => a.cosh(),
-        "tanh" => a.tanh(),
-        "asinh" => a.asinh(),
-        "acosh" => a.acosh(),
-        "atanh" => a.atanh(),
-        "floor" => a.floor(),
-        "round" => a.round(),
-        "ceil" => a.ceil(),
-        "trunc" => a.trunc(),
-        "fract" => a.fract(),
-        "exp" => a.exp(),
-        "sqrt" => a.sqrt(),
-        "cbrt" => a.cbrt(),
-        "ln" | "log" => a.ln(),
-        "log2" => a.log2(),
-        "log10" => a.log10(),
-        _ => f64::NAN,
+        "abs" => Maths::abs(a),
+        "signum" => Maths::signum(a),
+        "sin" => Maths::sin(a),
+        "cos" => Maths::cos(a),
+        "tan" => Maths::tan(a),
+        "asin" => Maths::asin(a),
+        "acos" => Maths::acos(a),
+        "atan" => Maths::atan(a),
+        "sinh" => Maths::sinh(a),
+        "cosh" => Maths::cosh(a),
+        "tanh" => Maths::tanh(a),
+        "asinh" => Maths::asinh(a),
+        "acosh" => Maths::acosh(a),
+        "atanh" => Maths::atanh(a),
+        "floor" => Maths::floor(a),
+        "round" => Maths::round(a),
+        "ceil" => Maths::ceil(a),
+        "trunc" => Maths::trunc(a),
+        "fract" => Maths::fract(a),
+        "exp" => Maths::exp(a),
+        "sqrt" => Maths::sqrt(a),
+        "cbrt" => Maths::cbrt(a),
+        "ln" | "log" => Maths::ln(a),
+        "log2" => Maths::log2(a),
+        "log10" => Maths::log10(a),
+        _ => T::literal(f32::NAN, f64::NAN),
     }
 }
 
