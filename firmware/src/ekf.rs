@@ -19,7 +19,9 @@
 //!
 //! A sample with a NaN or infinite value is refused: the update is skipped, the prediction still runs
 //! (time advances with the given input if it is finite; a non-finite input skips the prediction too), so
-//! a refused sample costs the filter that sample's information and nothing else.
+//! a refused sample costs the filter that sample's information and nothing else. A step whose result
+//! is not finite (the model overflowed, e.g. `exp` of a diverged estimate) is not taken either: the
+//! filter keeps its state and covariance and refuses the sample, so no NaN ever enters its state.
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(s > 0)` is deliberate: a NaN must count as no information.
 
@@ -82,16 +84,21 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
     /// Takes the sample `(y, u)`: the measurement update, then the prediction to the next sample.
     /// Returns the updated estimate `x̂(k|k)`; a non-finite `y` is refused (see the module docs).
     pub fn push(&mut self, y: &[T; NY], u: &[T; NU]) -> EkfResult<T, NX> {
+        if !u.iter().all(|v| v.is_finite()) {
+            return Err(crate::RejectedSample);
+        }
         let measured = y.iter().all(|v| v.is_finite());
-        let driven = u.iter().all(|v| v.is_finite());
-        if measured && driven {
+        let before = (self.x, self.p);
+        if measured {
             self.update(y, u);
         }
         let estimate = self.x;
-        if driven {
-            self.predict(u);
+        self.predict(u);
+        if !self.x.iter().chain(self.p.iter().flatten()).all(|v| v.is_finite()) {
+            (self.x, self.p) = before; // the model overflowed: the step is not taken
+            return Err(crate::RejectedSample);
         }
-        if measured && driven {
+        if measured {
             Ok(estimate)
         } else {
             Err(crate::RejectedSample)

@@ -451,17 +451,87 @@ pub const CHIP_SUBSTEPS: usize = 1;
 /// One sampling period of [`Plant`] by [`CHIP_SUBSTEPS`] RK4 steps, the input held.
 pub type Discrete<T> = firmware::Rk4<T, Plant, CHIP_SUBSTEPS>;
 
-/// The extended Kalman filter of this design (see [`ekf_in`]).
-pub type Ekf = firmware::Ekf<f32, Discrete<f32>, STATES, OUTPUTS, INPUTS>;
+
+/// Entries of the EKF's covariance kept: its upper triangle, row by row (it is symmetric).
+pub const COVARIANCE: usize = 3;
+
+/// This design's extended Kalman filter, written out for its size by `gen`: the library's
+/// [`firmware::Ekf`] over [`Discrete`] ([`reference_ekf`], same constants), with each sample as
+/// straight-line code (no loop, no structural zero or one multiplied, `P` as its upper triangle).
+/// It starts at the centre of the state box with `P(0)` and `Q` diagonal as chosen by `gen` on the
+/// tuning runs, `R` the outputs' noise variances.
+///
+/// Each sample: every output's scalar update in Joseph form, then the prediction over one sampling
+/// period. A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u`
+/// changes nothing; a sample whose result is not finite (the model overflowed) is not taken.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ekf<T = f32> {
+    /// `x̂`: after a sample, the prediction to the next one.
+    x: [T; STATES],
+    /// The upper triangle of `P`.
+    p: [T; COVARIANCE],
+}
+
+impl<T: Scalar + Maths> Default for Ekf<T> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T: Scalar + Maths> Ekf<T> {
+    /// A fresh filter.
+    pub fn new() -> Self {
+        Ekf {
+            x: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
+            p: [T::literal(0.08348736, 0.08348736226182274), T::literal(0.0, 0.0), T::literal(0.51750416, 0.5175041637515504)],
+        }
+    }
+
+    /// The current estimate (after a sample, the prediction to the next one).
+    pub fn state(&self) -> [T; STATES] {
+        self.x
+    }
+
+    /// The current covariance `P`.
+    pub fn covariance(&self) -> [[T; STATES]; STATES] {
+        [[self.p[0], self.p[1]], [self.p[1], self.p[2]]]
+    }
+
+    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
+    /// type's docs). The same operations run for every accepted sample.
+    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
+        if !u.iter().all(|v| v.is_finite()) {
+            return Err(firmware::RejectedSample);
+        }
+        if y.iter().all(|v| v.is_finite()) {
+            let (estimate, x, p) = ekf_measured(&self.x, &self.p, y, u);
+            if finite(&x, &p) {
+                (self.x, self.p) = (x, p);
+                return Ok(estimate);
+            }
+        } else {
+            let (x, p) = ekf_unmeasured(&self.x, &self.p, u);
+            if finite(&x, &p) {
+                (self.x, self.p) = (x, p);
+            }
+        }
+        Err(firmware::RejectedSample)
+    }
+}
+
+/// Whether every entry of a filter's state and covariance is finite.
+fn finite<T: Scalar>(x: &[T; STATES], p: &[T; COVARIANCE]) -> bool {
+    x.iter().chain(p).all(|v| v.is_finite())
+}
 
 /// A fresh EKF in `f32`, as the chip runs it.
 pub fn ekf() -> Ekf {
-    ekf_in::<f32>()
+    Ekf::new()
 }
 
-/// A fresh EKF in any precision: starting at the centre of the state box, `P(0)` and `Q` diagonal
-/// as chosen by `gen` on the tuning runs, `R` the outputs' noise variances.
-pub fn ekf_in<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATES, OUTPUTS, INPUTS> {
+/// The library filter this design's [`Ekf`] writes out, with the same constants: what the tests
+/// check the written-out one against.
+pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATES, OUTPUTS, INPUTS> {
     firmware::Ekf::new(
         firmware::Rk4::new(Plant, T::literal(0.1, 0.1)),
         [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
@@ -469,4 +539,388 @@ pub fn ekf_in<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATES, OUTP
         [[T::literal(0.00026401022, 0.0002640102205869467), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0016364919, 0.001636491856075647)]],
         [T::literal(0.2, 0.2)],
     )
+}
+
+/// One sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
+#[allow(unused_variables, non_snake_case, clippy::type_complexity)]
+fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {
+    let x_x1: T = x[0];
+    let x_x2: T = x[1];
+    let cov0: T = p[0];
+    let cov1: T = p[1];
+    let cov2: T = p[2];
+    let t5: T = x_x1 + x_x2;
+    let t6: T = T::literal(1.0, 1.0);
+    let t7: T = cov0 + cov1;
+    let t8: T = cov1 + cov2;
+    let t9: T = T::literal(0.2, 0.2);
+    let t10: T = t9 + t7;
+    let t11: T = t10 + t8;
+    let t12: T = t6 / t11;
+    let t13: T = t7 * t12;
+    let t14: T = t8 * t12;
+    let y_y: T = y[0];
+    let t16: T = y_y - t5;
+    let t17: T = t13 * t16;
+    let t18: T = x_x1 + t17;
+    let t19: T = t14 * t16;
+    let t20: T = x_x2 + t19;
+    let t21: T = t6 - t13;
+    let t22: T = -t13;
+    let t23: T = -t14;
+    let t24: T = t6 - t14;
+    let t25: T = t21 * cov0;
+    let t26: T = t22 * cov1;
+    let t27: T = t25 + t26;
+    let t28: T = t21 * cov1;
+    let t29: T = t22 * cov2;
+    let t30: T = t28 + t29;
+    let t31: T = t23 * cov0;
+    let t32: T = t24 * cov1;
+    let t33: T = t31 + t32;
+    let t34: T = t23 * cov1;
+    let t35: T = t24 * cov2;
+    let t36: T = t34 + t35;
+    let t37: T = t27 * t21;
+    let t38: T = t30 * t22;
+    let t39: T = t37 + t38;
+    let t40: T = t27 * t23;
+    let t41: T = t30 * t24;
+    let t42: T = t40 + t41;
+    let t43: T = t33 * t23;
+    let t44: T = t36 * t24;
+    let t45: T = t43 + t44;
+    let t46: T = t13 * t9;
+    let t47: T = t46 * t13;
+    let t48: T = t39 + t47;
+    let t49: T = t46 * t14;
+    let t50: T = t42 + t49;
+    let t51: T = t14 * t9;
+    let t52: T = t51 * t14;
+    let t53: T = t45 + t52;
+    let t54: T = T::literal(0.1, 0.1);
+    let t55: T = T::literal(2.0, 2.0);
+    let t56: T = T::literal(6.0, 6.0);
+    let t57: T = t54 / t55;
+    let t58: T = t54 / t56;
+    let t59: T = -t20;
+    let t60: T = T::literal(-1.0, -1.0);
+    let t61: T = T::literal(4.0, 4.0);
+    let t62: T = t61 * t18;
+    let t63: T = t18 * t18;
+    let t64: T = t6 - t63;
+    let t65: T = t64 * t20;
+    let t66: T = t62 + t65;
+    let t67: T = t55 * t18;
+    let t68: T = -t67;
+    let t69: T = t68 * t20;
+    let t70: T = t61 + t69;
+    let t71: T = t57 * t59;
+    let t72: T = t18 + t71;
+    let t73: T = t57 * t66;
+    let t74: T = t20 + t73;
+    let t75: T = -t57;
+    let t76: T = t57 * t70;
+    let t77: T = t57 * t64;
+    let t78: T = t6 + t77;
+    let t79: T = -t74;
+    let t80: T = t61 * t72;
+    let t81: T = t72 * t72;
+    let t82: T = t6 - t81;
+    let t83: T = t82 * t74;
+    let t84: T = t80 + t83;
+    let t85: T = t55 * t72;
+    let t86: T = -t85;
+    let t87: T = t86 * t74;
+    let t88: T = t61 + t87;
+    let t89: T = -t76;
+    let t90: T = -t78;
+    let t91: T = t82 * t76;
+    let t92: T = t88 + t91;
+    let t93: T = t88 * t75;
+    let t94: T = t82 * t78;
+    let t95: T = t93 + t94;
+    let t96: T = t57 * t79;
+    let t97: T = t18 + t96;
+    let t98: T = t57 * t84;
+    let t99: T = t20 + t98;
+    let t100: T = t57 * t89;
+    let t101: T = t6 + t100;
+    let t102: T = t57 * t90;
+    let t103: T = t57 * t92;
+    let t104: T = t57 * t95;
+    let t105: T = t6 + t104;
+    let t106: T = -t99;
+    let t107: T = t61 * t97;
+    let t108: T = t97 * t97;
+    let t109: T = t6 - t108;
+    let t110: T = t109 * t99;
+    let t111: T = t107 + t110;
+    let t112: T = t55 * t97;
+    let t113: T = -t112;
+    let t114: T = t113 * t99;
+    let t115: T = t61 + t114;
+    let t116: T = -t103;
+    let t117: T = -t105;
+    let t118: T = t115 * t101;
+    let t119: T = t109 * t103;
+    let t120: T = t118 + t119;
+    let t121: T = t115 * t102;
+    let t122: T = t109 * t105;
+    let t123: T = t121 + t122;
+    let t124: T = t54 * t106;
+    let t125: T = t18 + t124;
+    let t126: T = t54 * t111;
+    let t127: T = t20 + t126;
+    let t128: T = t54 * t116;
+    let t129: T = t6 + t128;
+    let t130: T = t54 * t117;
+    let t131: T = t54 * t120;
+    let t132: T = t54 * t123;
+    let t133: T = t6 + t132;
+    let t134: T = -t127;
+    let t135: T = t61 * t125;
+    let t136: T = t125 * t125;
+    let t137: T = t6 - t136;
+    let t138: T = t137 * t127;
+    let t139: T = t135 + t138;
+    let t140: T = t55 * t125;
+    let t141: T = -t140;
+    let t142: T = t141 * t127;
+    let t143: T = t61 + t142;
+    let t144: T = -t131;
+    let t145: T = -t133;
+    let t146: T = t143 * t129;
+    let t147: T = t137 * t131;
+    let t148: T = t146 + t147;
+    let t149: T = t143 * t130;
+    let t150: T = t137 * t133;
+    let t151: T = t149 + t150;
+    let t152: T = t79 + t106;
+    let t153: T = t55 * t152;
+    let t154: T = t59 + t153;
+    let t155: T = t154 + t134;
+    let t156: T = t58 * t155;
+    let t157: T = t18 + t156;
+    let t158: T = t84 + t111;
+    let t159: T = t55 * t158;
+    let t160: T = t66 + t159;
+    let t161: T = t160 + t139;
+    let t162: T = t58 * t161;
+    let t163: T = t20 + t162;
+    let t164: T = t89 + t116;
+    let t165: T = t55 * t164;
+    let t166: T = t165 + t144;
+    let t167: T = t58 * t166;
+    let t168: T = t6 + t167;
+    let t169: T = t90 + t117;
+    let t170: T = t55 * t169;
+    let t171: T = t60 + t170;
+    let t172: T = t171 + t145;
+    let t173: T = t58 * t172;
+    let t174: T = t92 + t120;
+    let t175: T = t55 * t174;
+    let t176: T = t70 + t175;
+    let t177: T = t176 + t148;
+    let t178: T = t58 * t177;
+    let t179: T = t95 + t123;
+    let t180: T = t55 * t179;
+    let t181: T = t64 + t180;
+    let t182: T = t181 + t151;
+    let t183: T = t58 * t182;
+    let t184: T = t6 + t183;
+    let t185: T = t168 * t48;
+    let t186: T = t173 * t50;
+    let t187: T = t185 + t186;
+    let t188: T = t168 * t50;
+    let t189: T = t173 * t53;
+    let t190: T = t188 + t189;
+    let t191: T = t178 * t48;
+    let t192: T = t184 * t50;
+    let t193: T = t191 + t192;
+    let t194: T = t178 * t50;
+    let t195: T = t184 * t53;
+    let t196: T = t194 + t195;
+    let t197: T = t187 * t168;
+    let t198: T = t190 * t173;
+    let t199: T = t197 + t198;
+    let t200: T = t187 * t178;
+    let t201: T = t190 * t184;
+    let t202: T = t200 + t201;
+    let t203: T = t193 * t178;
+    let t204: T = t196 * t184;
+    let t205: T = t203 + t204;
+    let t206: T = T::literal(0.00026401022, 0.0002640102205869467);
+    let t207: T = t199 + t206;
+    let t208: T = T::literal(0.0016364919, 0.001636491856075647);
+    let t209: T = t205 + t208;
+    ([t18, t20], [t157, t163], [t207, t202, t209])
+}
+
+/// One sample without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`.
+#[allow(unused_variables, non_snake_case)]
+fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[T; INPUTS]) -> ([T; STATES], [T; COVARIANCE]) {
+    let x_x1: T = x[0];
+    let x_x2: T = x[1];
+    let cov0: T = p[0];
+    let cov1: T = p[1];
+    let cov2: T = p[2];
+    let t5: T = T::literal(0.1, 0.1);
+    let t6: T = T::literal(2.0, 2.0);
+    let t7: T = T::literal(6.0, 6.0);
+    let t8: T = t5 / t6;
+    let t9: T = t5 / t7;
+    let t10: T = -x_x2;
+    let t11: T = T::literal(-1.0, -1.0);
+    let t12: T = T::literal(4.0, 4.0);
+    let t13: T = t12 * x_x1;
+    let t14: T = T::literal(1.0, 1.0);
+    let t15: T = x_x1 * x_x1;
+    let t16: T = t14 - t15;
+    let t17: T = t16 * x_x2;
+    let t18: T = t13 + t17;
+    let t19: T = t6 * x_x1;
+    let t20: T = -t19;
+    let t21: T = t20 * x_x2;
+    let t22: T = t12 + t21;
+    let t23: T = t8 * t10;
+    let t24: T = x_x1 + t23;
+    let t25: T = t8 * t18;
+    let t26: T = x_x2 + t25;
+    let t27: T = -t8;
+    let t28: T = t8 * t22;
+    let t29: T = t8 * t16;
+    let t30: T = t14 + t29;
+    let t31: T = -t26;
+    let t32: T = t12 * t24;
+    let t33: T = t24 * t24;
+    let t34: T = t14 - t33;
+    let t35: T = t34 * t26;
+    let t36: T = t32 + t35;
+    let t37: T = t6 * t24;
+    let t38: T = -t37;
+    let t39: T = t38 * t26;
+    let t40: T = t12 + t39;
+    let t41: T = -t28;
+    let t42: T = -t30;
+    let t43: T = t34 * t28;
+    let t44: T = t40 + t43;
+    let t45: T = t40 * t27;
+    let t46: T = t34 * t30;
+    let t47: T = t45 + t46;
+    let t48: T = t8 * t31;
+    let t49: T = x_x1 + t48;
+    let t50: T = t8 * t36;
+    let t51: T = x_x2 + t50;
+    let t52: T = t8 * t41;
+    let t53: T = t14 + t52;
+    let t54: T = t8 * t42;
+    let t55: T = t8 * t44;
+    let t56: T = t8 * t47;
+    let t57: T = t14 + t56;
+    let t58: T = -t51;
+    let t59: T = t12 * t49;
+    let t60: T = t49 * t49;
+    let t61: T = t14 - t60;
+    let t62: T = t61 * t51;
+    let t63: T = t59 + t62;
+    let t64: T = t6 * t49;
+    let t65: T = -t64;
+    let t66: T = t65 * t51;
+    let t67: T = t12 + t66;
+    let t68: T = -t55;
+    let t69: T = -t57;
+    let t70: T = t67 * t53;
+    let t71: T = t61 * t55;
+    let t72: T = t70 + t71;
+    let t73: T = t67 * t54;
+    let t74: T = t61 * t57;
+    let t75: T = t73 + t74;
+    let t76: T = t5 * t58;
+    let t77: T = x_x1 + t76;
+    let t78: T = t5 * t63;
+    let t79: T = x_x2 + t78;
+    let t80: T = t5 * t68;
+    let t81: T = t14 + t80;
+    let t82: T = t5 * t69;
+    let t83: T = t5 * t72;
+    let t84: T = t5 * t75;
+    let t85: T = t14 + t84;
+    let t86: T = -t79;
+    let t87: T = t12 * t77;
+    let t88: T = t77 * t77;
+    let t89: T = t14 - t88;
+    let t90: T = t89 * t79;
+    let t91: T = t87 + t90;
+    let t92: T = t6 * t77;
+    let t93: T = -t92;
+    let t94: T = t93 * t79;
+    let t95: T = t12 + t94;
+    let t96: T = -t83;
+    let t97: T = -t85;
+    let t98: T = t95 * t81;
+    let t99: T = t89 * t83;
+    let t100: T = t98 + t99;
+    let t101: T = t95 * t82;
+    let t102: T = t89 * t85;
+    let t103: T = t101 + t102;
+    let t104: T = t31 + t58;
+    let t105: T = t6 * t104;
+    let t106: T = t10 + t105;
+    let t107: T = t106 + t86;
+    let t108: T = t9 * t107;
+    let t109: T = x_x1 + t108;
+    let t110: T = t36 + t63;
+    let t111: T = t6 * t110;
+    let t112: T = t18 + t111;
+    let t113: T = t112 + t91;
+    let t114: T = t9 * t113;
+    let t115: T = x_x2 + t114;
+    let t116: T = t41 + t68;
+    let t117: T = t6 * t116;
+    let t118: T = t117 + t96;
+    let t119: T = t9 * t118;
+    let t120: T = t14 + t119;
+    let t121: T = t42 + t69;
+    let t122: T = t6 * t121;
+    let t123: T = t11 + t122;
+    let t124: T = t123 + t97;
+    let t125: T = t9 * t124;
+    let t126: T = t44 + t72;
+    let t127: T = t6 * t126;
+    let t128: T = t22 + t127;
+    let t129: T = t128 + t100;
+    let t130: T = t9 * t129;
+    let t131: T = t47 + t75;
+    let t132: T = t6 * t131;
+    let t133: T = t16 + t132;
+    let t134: T = t133 + t103;
+    let t135: T = t9 * t134;
+    let t136: T = t14 + t135;
+    let t137: T = t120 * cov0;
+    let t138: T = t125 * cov1;
+    let t139: T = t137 + t138;
+    let t140: T = t120 * cov1;
+    let t141: T = t125 * cov2;
+    let t142: T = t140 + t141;
+    let t143: T = t130 * cov0;
+    let t144: T = t136 * cov1;
+    let t145: T = t143 + t144;
+    let t146: T = t130 * cov1;
+    let t147: T = t136 * cov2;
+    let t148: T = t146 + t147;
+    let t149: T = t139 * t120;
+    let t150: T = t142 * t125;
+    let t151: T = t149 + t150;
+    let t152: T = t139 * t130;
+    let t153: T = t142 * t136;
+    let t154: T = t152 + t153;
+    let t155: T = t145 * t130;
+    let t156: T = t148 * t136;
+    let t157: T = t155 + t156;
+    let t158: T = T::literal(0.00026401022, 0.0002640102205869467);
+    let t159: T = t151 + t158;
+    let t160: T = T::literal(0.0016364919, 0.001636491856075647);
+    let t161: T = t157 + t160;
+    ([t109, t115], [t159, t154, t161])
 }

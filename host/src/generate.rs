@@ -378,14 +378,19 @@ pub fn weak_targets(design: &Design, result: &DesignResult) -> Vec<String> {
 
 fn prepare(design: Design, spec: &Path, reports: &Path, bar: &ProgressBar) -> Result<Prepared, GenerateError> {
     let emitted = emit_design(design, spec, bar)?;
-    let report = reporting::report(&emitted.design, &emitted.result, &emitted.comparison);
+    let folder = reports.join(&emitted.design.name);
+    let mut report = reporting::report(&emitted.design, &emitted.result, &emitted.comparison);
+    let measured = reporting::on_target::recorded(&folder, &emitted.source);
+    for observer in &mut report.observers {
+        observer.on_target = measured.get(observer.kind).cloned();
+    }
     Ok(Prepared {
         warnings: weak_targets(&emitted.design, &emitted.result),
         report: reporting::texts(&report),
         table: format!("{}\n{}", reporting::table(&report), reporting::observers_table(&report)),
         learning_windows: report.learning.windows,
         validation_windows: report.validation.windows,
-        folder: reports.join(&emitted.design.name),
+        folder,
         emitted,
     })
 }

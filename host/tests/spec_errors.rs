@@ -253,6 +253,8 @@ const CASES: &[Case] = &[
     // Every size within its bound, the total beyond the budget: 8·10⁷ stored samples, then 2·10¹¹ RK4 steps.
     case("budget_stored_values", Vdp, &[Swap("samples = 100\nseed = 1", "samples = 5000000\nseed = 1")], Exact("learning"), "shorter runs"),
     case("budget_simulation_steps", Vdp, &[Swap("substeps = 10 ", "substeps = 10000 "), Swap("trajectories = 64", "trajectories = 200000")], Exact("learning"), "fewer `sampling.substeps`"),
+    // The tuning runs count too: 10⁹ samples of them alone, everything else as shipped.
+    case("budget_tuning_runs", Vdp, &[Swap("[tuning]", "[tuning]\ntrajectories = 1000000\nsamples = 1000")], Exact("learning"), "fewer validation or tuning runs"),
 
     // ---- validate.rs `targets` (and `identifier` for their names).
     case("targets_empty", Vdp, &[

@@ -573,7 +573,7 @@ pub fn measure_ekf() -> Result<BTreeMap<String, EkfMeasurement>, Unavailable> {
 /// returned (`None` when refused) and the state after the sample.
 pub type HostEkfSample<T> = (Option<Vec<T>>, Vec<T>);
 
-/// Runs design `name`'s extended Kalman filter (`ekf_in::<T>()`) on the host over the recorded
+/// Runs design `name`'s extended Kalman filter (`Ekf::<T>::new()`, the written-out one) on the host over the recorded
 /// sequence the chip runs (`RECORDED_Y`, `RECORDED_U`, each value taken exactly into `T`); `None` for
 /// an unknown design.
 pub fn host_ekf<T: Scalar + Maths>(name: &str) -> Option<Vec<HostEkfSample<T>>> {
@@ -583,7 +583,7 @@ pub fn host_ekf<T: Scalar + Maths>(name: &str) -> Option<Vec<HostEkfSample<T>>> 
             if generated::$design::NAME == name {
                 use generated::$design as d;
                 let exact = |v: f32| T::literal(v, f64::from(v));
-                let mut filter = d::ekf_in::<T>();
+                let mut filter = d::Ekf::<T>::new();
                 samples = Some(
                     d::RECORDED_Y
                         .iter()

@@ -307,7 +307,7 @@ pub fn design_file(
     result: &DesignResult,
     spec_path: &str,
     code: &crate::plant::ModelCode,
-    ekf: Option<&model::EkfConstants>,
+    ekf: Option<&crate::plant::kalman::EkfConstants>,
 ) -> Result<String, EmitError> {
     let list = |names: &[String]| {
         if names.is_empty() {

@@ -10,27 +10,11 @@
 use std::fmt::Write;
 
 use crate::emit::{f32_literal, EmitError};
+use crate::plant::kalman::{self, EkfConstants};
 use crate::plant::program::Leaf;
 use crate::plant::{ModelCode, Op, Program};
 use crate::spec::ast::Binary;
 use crate::spec::Design;
-
-/// The EKF's constants, chosen on the tuning runs.
-#[derive(Clone, Debug, PartialEq)]
-pub struct EkfConstants {
-    /// `x̂(0)`.
-    pub x0: Vec<f64>,
-    /// `P(0)` diagonal.
-    pub p0: Vec<f64>,
-    /// `Q` diagonal.
-    pub q: Vec<f64>,
-    /// `R` diagonal: the outputs' noise variances.
-    pub r: Vec<f64>,
-    /// RK4 substeps per sample on the chip.
-    pub substeps: usize,
-    /// Width of one substep, `τ / substeps`.
-    pub h: f64,
-}
 
 /// `T::literal(single, double)` for `value`, the `f32` checked as [`f32_literal`] checks it.
 fn literal(what: &str, value: f64) -> Result<String, EmitError> {
@@ -46,6 +30,8 @@ fn operation(op: &Op, code: &ModelCode, names: &Names<'_>) -> Result<String, Emi
         }
         Op::Leaf(Leaf::State(i)) => format!("x[{i}]"),
         Op::Leaf(Leaf::Input(i)) => format!("u[{i}]"),
+        Op::Leaf(Leaf::Covariance(k)) => format!("p[{k}]"),
+        Op::Leaf(Leaf::Measurement(i)) => format!("y[{i}]"),
         Op::Negate(a) => format!("-{}", names.of(a)),
         Op::Binary(b, x, y) => {
             let (x, y) = (names.of(x), names.of(y));
@@ -77,6 +63,8 @@ impl Names<'_> {
             Op::Leaf(Leaf::State(i)) => format!("x_{}", model.states[i]),
             Op::Leaf(Leaf::Input(i)) => format!("u_{}", model.inputs[i]),
             Op::Leaf(Leaf::Parameter(i)) => format!("p_{}", model.parameters[i].0),
+            Op::Leaf(Leaf::Covariance(k)) => format!("cov{k}"),
+            Op::Leaf(Leaf::Measurement(i)) => format!("y_{}", model.outputs[i].name),
             _ => format!("t{op}"),
         }
     }
@@ -253,40 +241,150 @@ pub fn model_source(design: &Design, code: &ModelCode, ekf: Option<&EkfConstants
             .collect::<Result<Vec<_>, _>>()?;
         Ok(list(&entries))
     };
-    writeln!(w, "/// The extended Kalman filter of this design (see [`ekf_in`]).").ok();
-    writeln!(
+    let filter = kalman::filter_code(code, ekf);
+    let triangle = kalman::triangle(nx);
+    let upper: Vec<f64> = (0..nx)
+        .flat_map(|r| (r..nx).map(move |c| (r, c)))
+        .map(|(r, c)| if r == c { ekf.p0[r] } else { 0.0 })
+        .collect();
+    let full: Vec<String> = (0..nx * nx)
+        .map(|k| format!("self.p[{}]", kalman::upper(nx, k / nx, k % nx)))
+        .collect();
+    write!(
         w,
-        "pub type Ekf = firmware::Ekf<f32, Discrete<f32>, STATES, OUTPUTS, INPUTS>;\n"
+        "{}",
+        EKF_TEMPLATE
+            .replace("{TRIANGLE}", &triangle.to_string())
+            .replace("{X0}", &vector("EKF x0", &ekf.x0)?)
+            .replace("{P0}", &vector("EKF P0", &upper)?)
+            .replace("{COVARIANCE}", &rows(&full, nx))
+            .replace("{H}", &literal("EKF substep", ekf.h)?)
+            .replace("{P0_FULL}", &diagonal("EKF P0", &ekf.p0)?)
+            .replace("{Q}", &diagonal("EKF Q", &ekf.q)?)
+            .replace("{R}", &vector("EKF R", &ekf.r)?)
     )
     .ok();
-    writeln!(w, "/// A fresh EKF in `f32`, as the chip runs it.").ok();
-    writeln!(w, "pub fn ekf() -> Ekf {{\n    ekf_in::<f32>()\n}}\n").ok();
     writeln!(
         w,
-        "/// A fresh EKF in any precision: starting at the centre of the state box, `P(0)` and `Q` diagonal"
+        "\n/// One sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`."
     )
     .ok();
+    writeln!(w, "#[allow(unused_variables, non_snake_case, clippy::type_complexity)]").ok();
     writeln!(
         w,
-        "/// as chosen by `gen` on the tuning runs, `R` the outputs' noise variances."
+        "fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {{"
     )
     .ok();
+    w.push_str(&body(&filter.measured, code, design, "    ", |r| {
+        format!("({}, {}, {})", list(&r[..nx]), list(&r[nx..2 * nx]), list(&r[2 * nx..]))
+    })?);
+    writeln!(w, "}}\n").ok();
     writeln!(
         w,
-        "pub fn ekf_in<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATES, OUTPUTS, INPUTS> {{"
+        "/// One sample without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`."
     )
     .ok();
-    writeln!(w, "    firmware::Ekf::new(").ok();
+    writeln!(w, "#[allow(unused_variables, non_snake_case)]").ok();
     writeln!(
         w,
-        "        firmware::Rk4::new(Plant, {}),",
-        literal("EKF substep", ekf.h)?
+        "fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[T; INPUTS]) -> ([T; STATES], [T; COVARIANCE]) {{"
     )
     .ok();
-    writeln!(w, "        {},", vector("EKF x0", &ekf.x0)?).ok();
-    writeln!(w, "        {},", diagonal("EKF P0", &ekf.p0)?).ok();
-    writeln!(w, "        {},", diagonal("EKF Q", &ekf.q)?).ok();
-    writeln!(w, "        {},", vector("EKF R", &ekf.r)?).ok();
-    writeln!(w, "    )\n}}").ok();
+    w.push_str(&body(&filter.unmeasured, code, design, "    ", |r| {
+        format!("({}, {})", list(&r[..nx]), list(&r[nx..]))
+    })?);
+    writeln!(w, "}}").ok();
     Ok(text)
 }
+
+/// The design's filter type around its written-out sample (`{…}` filled in by [`model_source`]).
+const EKF_TEMPLATE: &str = r#"
+/// Entries of the EKF's covariance kept: its upper triangle, row by row (it is symmetric).
+pub const COVARIANCE: usize = {TRIANGLE};
+
+/// This design's extended Kalman filter, written out for its size by `gen`: the library's
+/// [`firmware::Ekf`] over [`Discrete`] ([`reference_ekf`], same constants), with each sample as
+/// straight-line code (no loop, no structural zero or one multiplied, `P` as its upper triangle).
+/// It starts at the centre of the state box with `P(0)` and `Q` diagonal as chosen by `gen` on the
+/// tuning runs, `R` the outputs' noise variances.
+///
+/// Each sample: every output's scalar update in Joseph form, then the prediction over one sampling
+/// period. A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u`
+/// changes nothing; a sample whose result is not finite (the model overflowed) is not taken.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ekf<T = f32> {
+    /// `x̂`: after a sample, the prediction to the next one.
+    x: [T; STATES],
+    /// The upper triangle of `P`.
+    p: [T; COVARIANCE],
+}
+
+impl<T: Scalar + Maths> Default for Ekf<T> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T: Scalar + Maths> Ekf<T> {
+    /// A fresh filter.
+    pub fn new() -> Self {
+        Ekf {
+            x: {X0},
+            p: {P0},
+        }
+    }
+
+    /// The current estimate (after a sample, the prediction to the next one).
+    pub fn state(&self) -> [T; STATES] {
+        self.x
+    }
+
+    /// The current covariance `P`.
+    pub fn covariance(&self) -> [[T; STATES]; STATES] {
+        {COVARIANCE}
+    }
+
+    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
+    /// type's docs). The same operations run for every accepted sample.
+    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
+        if !u.iter().all(|v| v.is_finite()) {
+            return Err(firmware::RejectedSample);
+        }
+        if y.iter().all(|v| v.is_finite()) {
+            let (estimate, x, p) = ekf_measured(&self.x, &self.p, y, u);
+            if finite(&x, &p) {
+                (self.x, self.p) = (x, p);
+                return Ok(estimate);
+            }
+        } else {
+            let (x, p) = ekf_unmeasured(&self.x, &self.p, u);
+            if finite(&x, &p) {
+                (self.x, self.p) = (x, p);
+            }
+        }
+        Err(firmware::RejectedSample)
+    }
+}
+
+/// Whether every entry of a filter's state and covariance is finite.
+fn finite<T: Scalar>(x: &[T; STATES], p: &[T; COVARIANCE]) -> bool {
+    x.iter().chain(p).all(|v| v.is_finite())
+}
+
+/// A fresh EKF in `f32`, as the chip runs it.
+pub fn ekf() -> Ekf {
+    Ekf::new()
+}
+
+/// The library filter this design's [`Ekf`] writes out, with the same constants: what the tests
+/// check the written-out one against.
+pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATES, OUTPUTS, INPUTS> {
+    firmware::Ekf::new(
+        firmware::Rk4::new(Plant, {H}),
+        {X0},
+        {P0_FULL},
+        {Q},
+        {R},
+    )
+}
+"#;

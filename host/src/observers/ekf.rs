@@ -12,7 +12,7 @@
 use firmware::{Ekf, Plant, Rk4};
 
 use crate::data::{DataSet, Rows, Run};
-use crate::emit::model::EkfConstants;
+use crate::plant::kalman::EkfConstants;
 use crate::plant::{Compiled, ModelCode};
 use crate::spec::{Axis, Design};
 

@@ -21,6 +21,10 @@ pub enum Leaf {
     State(usize),
     /// An input, by index.
     Input(usize),
+    /// An entry of a filter's covariance, by index in its upper triangle ([`crate::plant::kalman`]).
+    Covariance(usize),
+    /// A measured output, by index ([`crate::plant::kalman`]).
+    Measurement(usize),
 }
 
 /// One operation; operands are indices of earlier operations.
@@ -112,7 +116,7 @@ impl<'a> Builder<'a> {
                 if let Some(&op) = self.bound.get(name) {
                     op
                 } else {
-                    let leaf = self.leaf(name)?;
+                    let leaf = self.leaf_named(name)?;
                     self.push(Op::Leaf(leaf))
                 }
             }
@@ -157,7 +161,107 @@ impl<'a> Builder<'a> {
         self.program
     }
 
-    fn leaf(&self, name: &str) -> Result<Leaf, LowerError> {
+    // Arithmetic on operations, for programs composed of others (a filter's sample). Each folds what
+    // is known from the operands alone: an operation on numbers becomes a number, `0·a` becomes 0,
+    // `1·a`, `a + 0`, `a - 0` and `a / 1` become `a`, so that the Jacobians' structural zeros and ones
+    // cost nothing. (`0·a = 0` assumes `a` finite, which the filter checks of its results.)
+
+    /// The number `v`.
+    pub fn number(&mut self, v: f64) -> usize {
+        self.push(Op::Number(v))
+    }
+
+    /// The leaf `leaf`.
+    pub fn leaf(&mut self, leaf: Leaf) -> usize {
+        self.push(Op::Leaf(leaf))
+    }
+
+    /// `-a`.
+    pub fn negate(&mut self, a: usize) -> usize {
+        match self.program.ops[a] {
+            Op::Number(v) => self.number(-v),
+            Op::Negate(b) => b,
+            _ => self.push(Op::Negate(a)),
+        }
+    }
+
+    /// `a op b`, folded where the operands decide it.
+    pub fn binary(&mut self, op: Binary, a: usize, b: usize) -> usize {
+        let (x, y) = (self.known(a), self.known(b));
+        match (op, x, y) {
+            (_, Some(x), Some(y)) => self.number(op.apply(x, y)),
+            (Binary::Add, Some(0.0), _) => b,
+            (Binary::Add | Binary::Sub, _, Some(0.0)) => a,
+            (Binary::Sub, Some(0.0), _) => self.negate(b),
+            (Binary::Mul, Some(0.0), _) | (Binary::Mul, _, Some(0.0)) => self.number(0.0),
+            (Binary::Mul, Some(1.0), _) => b,
+            (Binary::Mul | Binary::Div, _, Some(1.0)) => a,
+            (Binary::Mul, Some(-1.0), _) => self.negate(b),
+            (Binary::Mul | Binary::Div, _, Some(-1.0)) => self.negate(a),
+            _ => self.push(Op::Binary(op, a, b)),
+        }
+    }
+
+    /// `a op b` computed as written, in the program's precision, even on numbers (a constant the
+    /// library computes in its own precision at construction; the compiler folds it in the emitted
+    /// code, where it costs nothing).
+    pub fn unfolded(&mut self, op: Binary, a: usize, b: usize) -> usize {
+        self.push(Op::Binary(op, a, b))
+    }
+
+    /// `a + b`.
+    pub fn add(&mut self, a: usize, b: usize) -> usize {
+        self.binary(Binary::Add, a, b)
+    }
+
+    /// `a - b`.
+    pub fn sub(&mut self, a: usize, b: usize) -> usize {
+        self.binary(Binary::Sub, a, b)
+    }
+
+    /// `a · b`.
+    pub fn mul(&mut self, a: usize, b: usize) -> usize {
+        self.binary(Binary::Mul, a, b)
+    }
+
+    /// `Σ aᵢ bᵢ` in order, starting from `start` (zero terms fold away).
+    pub fn dot(&mut self, start: usize, a: &[usize], b: &[usize]) -> usize {
+        a.iter().zip(b).fold(start, |sum, (&a, &b)| {
+            let term = self.mul(a, b);
+            self.add(sum, term)
+        })
+    }
+
+    /// Appends `program`'s operations with its states read from `states` (its other leaves read as
+    /// themselves), folding as it goes; returns its results.
+    pub fn inline(&mut self, program: &Program, states: &[usize]) -> Vec<usize> {
+        let mut map = Vec::with_capacity(program.ops.len());
+        for op in &program.ops {
+            let mapped = match *op {
+                Op::Number(v) => self.number(v),
+                Op::Leaf(Leaf::State(i)) => states[i],
+                Op::Leaf(leaf) => self.leaf(leaf),
+                Op::Negate(a) => self.negate(map[a]),
+                Op::Binary(b, x, y) => self.binary(b, map[x], map[y]),
+                Op::Call(f, a) => match self.known(map[a]) {
+                    Some(v) => self.number(crate::spec::ast::call(f, v)),
+                    None => self.push(Op::Call(f, map[a])),
+                },
+            };
+            map.push(mapped);
+        }
+        program.results.iter().map(|&r| map[r]).collect()
+    }
+
+    /// The value of operation `op` when it is a number.
+    fn known(&self, op: usize) -> Option<f64> {
+        match self.program.ops[op] {
+            Op::Number(v) => Some(v),
+            _ => None,
+        }
+    }
+
+    fn leaf_named(&self, name: &str) -> Result<Leaf, LowerError> {
         if let Some(i) = self.names.parameters.iter().position(|(n, _)| n == name) {
             Ok(Leaf::Parameter(i))
         } else if let Some(i) = self.names.states.iter().position(|n| n == name) {
@@ -232,13 +336,27 @@ impl Program {
         u: &[T],
         values: &mut Vec<T>,
     ) -> Vec<T> {
+        self.eval_with(parameters, values, |leaf| match leaf {
+            Leaf::State(i) => x[i],
+            Leaf::Input(i) => u[i],
+            _ => T::literal(f32::NAN, f64::NAN), // a model's program reads no other leaf
+        })
+    }
+
+    /// [`Program::eval`] with the values of states, inputs, covariance and measurements given by
+    /// `leaf` (parameters are the program's constants).
+    pub fn eval_with<T: Scalar + Maths>(
+        &self,
+        parameters: &[(String, f64)],
+        values: &mut Vec<T>,
+        leaf: impl Fn(Leaf) -> T,
+    ) -> Vec<T> {
         values.clear();
         for op in &self.ops {
             let value = match *op {
                 Op::Number(v) => T::literal(v as f32, v),
                 Op::Leaf(Leaf::Parameter(i)) => T::literal(parameters[i].1 as f32, parameters[i].1),
-                Op::Leaf(Leaf::State(i)) => x[i],
-                Op::Leaf(Leaf::Input(i)) => u[i],
+                Op::Leaf(other) => leaf(other),
                 Op::Negate(a) => -values[a],
                 Op::Binary(op, a, b) => op.apply(values[a], values[b]),
                 Op::Call(f, a) => crate::spec::ast::call(f, values[a]),

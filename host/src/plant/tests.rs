@@ -59,12 +59,12 @@ name = "c"
 expr = "c"
 "#;
 
-fn design() -> Design {
+pub(super) fn design() -> Design {
     crate::spec::parse(Path::new("constructs.toml"), SPEC).unwrap()
 }
 
 /// Deterministic points: states in [-2, 2]³ (c ≥ 0 keeps ln's argument positive), input in [-1, 1].
-fn points() -> impl Iterator<Item = ([f64; 3], [f64; 1])> {
+pub(super) fn points() -> impl Iterator<Item = ([f64; 3], [f64; 1])> {
     // From k = 1: at k = 0, g = v = 0 is the kink of `min(g, v)`.
     (1..=500).map(|k| {
         let k = k as f64;

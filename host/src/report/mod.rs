@@ -1,6 +1,7 @@
 //! The report of a design: `report.json` (everything, machine-readable), `report.md` (one table a
 //! person reads) and the one-screen summary `gen` prints.
 
+pub mod on_target;
 pub mod plots;
 
 use std::fmt::Write as _;
@@ -57,8 +58,8 @@ pub struct ObserverReport {
     /// Per target name.
     pub targets: std::collections::BTreeMap<String, FiguresReport>,
     /// Measured on the emulated Cortex-M4F by `cargo run -p integration-tests --bin on-target-report`
-    /// (README), not by `gen`: `null` here.
-    pub on_target: Option<()>,
+    /// ([`on_target`]); `null` until the generated source written is measured.
+    pub on_target: Option<on_target::OnTarget>,
 }
 
 /// [`crate::observers::Figures`] as serialised (NaN, where a filter diverged, as `null`).
@@ -243,15 +244,18 @@ pub fn observers_table(report: &Report<'_>) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "| observer | target | RMSE validation | max error validation | RMSE scenario | RMSE transient | RMSE tuning |"
+        "| observer | target | RMSE validation | max error validation | RMSE scenario | RMSE transient | RMSE tuning | on chip: instructions (median / max), VDIV + VSQRT |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
     let show = |v: Option<f64>| v.map_or("diverged".to_owned(), |v| format!("{v:.4}"));
     for o in &report.observers {
         for (name, f) in &o.targets {
+            let chip = o.on_target.as_ref().map_or("not measured".to_owned(), |c| {
+                format!("{} / {}, {}", c.instructions_median, c.instructions_max, c.divisions)
+            });
             let _ = writeln!(
                 s,
-                "| {} | {name} | {} | {} | {} | {} | {} |",
+                "| {} | {name} | {} | {} | {} | {} | {} | {chip} |",
                 o.kind,
                 show(f.rmse_validation),
                 show(f.max_error_validation),
@@ -260,6 +264,12 @@ pub fn observers_table(report: &Report<'_>) -> String {
                 show(f.rmse_tuning)
             );
         }
+    }
+    if report.observers.iter().any(|o| o.on_target.is_none()) {
+        let _ = writeln!(
+            s,
+            "\nOn-chip figures of this generated source are not measured yet: `cargo run -p integration-tests --bin on-target-report`."
+        );
     }
     if report.observers.len() < 2 {
         let _ = writeln!(s, "\nNo EKF: the model is beyond the sizes the host runs one for.");

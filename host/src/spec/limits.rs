@@ -59,17 +59,23 @@ pub(super) fn check_budget(design: &Design) -> Result<(), SpecError> {
     let scenario = design.scenario.as_ref().map_or(0.0, |s| s.samples as f64);
     let samples = learning_runs * design.learning.samples as f64
         + design.validation.trajectories as f64 * design.validation.samples as f64
+        + design.tuning.trajectories as f64 * design.tuning.samples as f64
         + scenario;
     let steps = samples * design.substeps as f64;
     let model = &design.model;
     let values = samples * (model.states.len() + model.outputs.len() + model.inputs.len()) as f64;
-    let fix = "fewer learning grid points, shorter runs, fewer validation runs or fewer `sampling.substeps`";
+    let fix = "fewer learning grid points, shorter runs, fewer validation or tuning runs or fewer `sampling.substeps`";
     if steps > MAX_SIMULATION_STEPS {
         return Err(design.error(
             "learning",
             format!(
-                "the runs take {steps:.2e} RK4 steps ({learning_runs:.0} learning runs of {} samples, {} validation runs of {}, {} substeps), above the budget of {MAX_SIMULATION_STEPS:.0e}",
-                design.learning.samples, design.validation.trajectories, design.validation.samples, design.substeps
+                "the runs take {steps:.2e} RK4 steps ({learning_runs:.0} learning runs of {} samples, {} validation runs of {}, {} tuning runs of {}, {} substeps), above the budget of {MAX_SIMULATION_STEPS:.0e}",
+                design.learning.samples,
+                design.validation.trajectories,
+                design.validation.samples,
+                design.tuning.trajectories,
+                design.tuning.samples,
+                design.substeps
             ),
             fix,
         ));

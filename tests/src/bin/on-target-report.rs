@@ -1,6 +1,7 @@
 //! Measures every generated observer, and every design's extended Kalman filter beside it, on the
-//! emulated Cortex-M4F and rewrites the table in the README between `<!-- on-target:begin -->` and
-//! `<!-- on-target:end -->`:
+//! emulated Cortex-M4F, rewrites the table in the README between `<!-- on-target:begin -->` and
+//! `<!-- on-target:end -->`, and records each design's figures beside its report
+//! (`target/designs/<design>/on_target.json`, and `report.json`'s `observers[].on_target`):
 //!
 //! ```sh
 //! cargo run -p integration-tests --bin on-target-report
@@ -8,6 +9,7 @@
 
 use std::process::ExitCode;
 
+use host::report::on_target::{Measured, OnTarget};
 use integration_tests::on_target;
 use integration_tests::workspace_root;
 
@@ -69,6 +71,41 @@ fn run() -> Result<String, String> {
         let filter = filters.get(name).ok_or_else(|| format!("no EKF measured for {name}"))?;
         let largest = on_target::compare_ekf_with_f64(name, filter)?;
         let (min, median, max) = on_target::spread(&filter.accepted_instructions());
+        let source = std::fs::read_to_string(workspace_root().join("generated/src").join(format!("{name}.rs")))
+            .map_err(|e| e.to_string())?;
+        let (_, map_median, map_max) = on_target::spread(&steady);
+        let measured = Measured {
+            source_sha256: host::report::on_target::source_hash(&source),
+            observers: [
+                (
+                    "map".to_owned(),
+                    OnTarget {
+                        instructions_median: map_median,
+                        instructions_max: map_max,
+                        divisions: design.divisions.iter().copied().max().unwrap_or(0),
+                        flash_bytes: design.flash_bytes,
+                        ram_bytes: design.observer_bytes as u64 + design.static_ram_bytes,
+                        stack_bytes: design.stack_bytes as u64,
+                    },
+                ),
+                (
+                    "ekf".to_owned(),
+                    OnTarget {
+                        instructions_median: median,
+                        instructions_max: max,
+                        divisions: filter.divisions.iter().copied().max().unwrap_or(0),
+                        flash_bytes: filter.flash_bytes,
+                        ram_bytes: filter.filter_bytes as u64 + filter.static_ram_bytes,
+                        stack_bytes: filter.stack_bytes as u64,
+                    },
+                ),
+            ]
+            .into(),
+        };
+        // Beside the design's report, which `gen` wrote there (and fills in again while the source
+        // is the one measured).
+        host::report::on_target::record(&workspace_root().join("target/designs").join(name), &measured)
+            .map_err(|e| format!("{name}: cannot record the on-target figures: {e}"))?;
         table += &format!(
             "| `{name}` EKF | {} | — | — | {min} / {median} / {max} | — | — | {} | {} | {} | {} | {largest:.1e} |\n",
             targets.join(", "),

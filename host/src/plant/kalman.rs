@@ -1,0 +1,301 @@
+//! The design's extended Kalman filter written out for its size: one sample of
+//! [`firmware::Ekf`] over [`firmware::Rk4`] as two straight-line programs, so that the chip runs no
+//! loop, no index arithmetic and no multiplication by a structural zero or one.
+//!
+//! The programs compute exactly the library filter's steps (see `firmware::ekf` and
+//! `firmware::model`), in the same order:
+//!
+//! ```text
+//! sample   (x, P, y, u) → (x̂(k|k), x⁺, P⁺)     every output's Joseph update, then the prediction
+//! predict  (x, P, u)    → (x⁺, P⁺)             the prediction alone (a refused measurement)
+//! ```
+//!
+//! `P` is read and written as its upper triangle, row by row ([`upper`]): it is symmetric, so the
+//! lower entries would be copies. The filter's constants (`Q`, `R`, the substep `h`) are numbers of
+//! the programs, so the products they take part in fold where they can.
+
+use firmware::{Maths, Scalar};
+
+use crate::spec::ast::Binary;
+
+use super::program::{Builder, Leaf, Names, Program};
+use super::ModelCode;
+
+/// The EKF's constants, chosen on the tuning runs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EkfConstants {
+    /// `x̂(0)`.
+    pub x0: Vec<f64>,
+    /// `P(0)` diagonal.
+    pub p0: Vec<f64>,
+    /// `Q` diagonal.
+    pub q: Vec<f64>,
+    /// `R` diagonal: the outputs' noise variances.
+    pub r: Vec<f64>,
+    /// RK4 substeps per sample on the chip.
+    pub substeps: usize,
+    /// Width of one substep, `τ / substeps`.
+    pub h: f64,
+}
+
+/// The two programs of one sample.
+#[derive(Clone, Debug)]
+pub struct FilterCode {
+    /// Results: `x̂(k|k)` (states), `x⁺` (states), `P⁺` (upper triangle).
+    pub measured: Program,
+    /// Results: `x⁺` (states), `P⁺` (upper triangle).
+    pub unmeasured: Program,
+    /// The model's parameters, as the programs read them.
+    pub parameters: Vec<(String, f64)>,
+    /// States.
+    pub states: usize,
+}
+
+/// What one sample gives: the updated estimate (`None` without a measurement), the predicted state
+/// and the predicted covariance's upper triangle.
+pub type Sampled<T> = (Option<Vec<T>>, Vec<T>, Vec<T>);
+
+impl FilterCode {
+    /// Runs one sample from `x` and `p` (upper triangle) in `T` exactly as the emitted code does:
+    /// with `y`, the update and the prediction; without, the prediction alone.
+    pub fn run<T: Scalar + Maths>(
+        &self,
+        x: &[T],
+        p: &[T],
+        y: Option<&[T]>,
+        u: &[T],
+        scratch: &mut Vec<T>,
+    ) -> Sampled<T> {
+        let program = if y.is_some() { &self.measured } else { &self.unmeasured };
+        let mut results = program.eval_with(&self.parameters, scratch, |leaf| match leaf {
+            Leaf::State(i) => x[i],
+            Leaf::Input(i) => u[i],
+            Leaf::Covariance(k) => p[k],
+            Leaf::Measurement(i) => y.map_or(T::literal(f32::NAN, f64::NAN), |y| y[i]),
+            // Parameters are the program's constants, read before this.
+            Leaf::Parameter(_) => T::literal(f32::NAN, f64::NAN),
+        });
+        let n = self.states;
+        let estimate = y.map(|_| results.drain(..n).collect());
+        let covariance = results.split_off(n);
+        (estimate, results, covariance)
+    }
+}
+
+/// Entries of the upper triangle of an `n × n` matrix.
+pub fn triangle(n: usize) -> usize {
+    n * (n + 1) / 2
+}
+
+/// Index of entry `(r, c)` (either order) in the upper triangle of an `n × n` matrix, row by row.
+pub fn upper(n: usize, r: usize, c: usize) -> usize {
+    let (r, c) = if r <= c { (r, c) } else { (c, r) };
+    r * n - r * (r + 1) / 2 + c
+}
+
+/// Writes one sample of the EKF of `code` with `constants` as programs.
+pub fn filter_code(code: &ModelCode, constants: &EkfConstants) -> FilterCode {
+    let build = |measured: bool| {
+        let nx = code.dimensions.states;
+        let mut b = Builder::new(Names {
+            parameters: &code.parameters,
+            states: &[],
+            inputs: &[],
+        });
+        let mut x: Vec<usize> = (0..nx).map(|i| b.leaf(Leaf::State(i))).collect();
+        let mut p: Vec<Vec<usize>> = (0..nx)
+            .map(|r| (0..nx).map(|c| b.leaf(Leaf::Covariance(upper(nx, r, c)))).collect())
+            .collect();
+        if measured {
+            for i in 0..code.dimensions.outputs {
+                update(&mut b, code, constants.r[i], i, &mut x, &mut p);
+            }
+            for &e in &x {
+                b.result(e);
+            }
+        }
+        predict(&mut b, code, constants, &mut x, &mut p);
+        for &e in &x {
+            b.result(e);
+        }
+        for (r, row) in p.iter().enumerate() {
+            for &entry in &row[r..] {
+                b.result(entry);
+            }
+        }
+        let mut program = b.finish();
+        program.prune();
+        program
+    };
+    FilterCode {
+        measured: build(true),
+        unmeasured: build(false),
+        parameters: code.parameters.clone(),
+        states: code.dimensions.states,
+    }
+}
+
+/// Output `i`'s scalar update in Joseph form (`firmware::Ekf::update`).
+fn update(b: &mut Builder<'_>, code: &ModelCode, variance: f64, i: usize, x: &mut [usize], p: &mut [Vec<usize>]) {
+    let (nx, ny) = (x.len(), code.dimensions.outputs);
+    let output = b.inline(&code.output, x);
+    let h = &output[ny + i * nx..ny + (i + 1) * nx];
+    let zero = b.number(0.0);
+    let ph: Vec<usize> = (0..nx).map(|a| b.dot(zero, &p[a], h)).collect();
+    let r = b.number(variance);
+    let mut s = b.dot(r, h, &ph);
+    if variance == 0.0 {
+        // No measurement noise: `s` may be 0 where this output tells nothing; the library skips the
+        // update there, which a gain of 0 reproduces.
+        let tiny = b.number(f64::from(f32::MIN_POSITIVE));
+        s = b.binary(Binary::Max, s, tiny);
+    }
+    let one = b.number(1.0);
+    let inverse = b.binary(Binary::Div, one, s);
+    let gain: Vec<usize> = ph.iter().map(|&v| b.mul(v, inverse)).collect();
+    let measured = b.leaf(Leaf::Measurement(i));
+    let innovation = b.sub(measured, output[i]);
+    for (e, &k) in x.iter_mut().zip(&gain) {
+        let step = b.mul(k, innovation);
+        *e = b.add(*e, step);
+    }
+    // A = I - K Hᵢ; P ← A P Aᵀ + K r Kᵀ, the upper triangle.
+    let a: Vec<Vec<usize>> = (0..nx)
+        .map(|row| {
+            (0..nx)
+                .map(|c| {
+                    let identity = b.number(if row == c { 1.0 } else { 0.0 });
+                    let kh = b.mul(gain[row], h[c]);
+                    b.sub(identity, kh)
+                })
+                .collect()
+        })
+        .collect();
+    let ap = product(b, &a, p);
+    let next = product_transposed(b, &ap, &a);
+    for row in 0..nx {
+        for c in row..nx {
+            let kr = b.mul(gain[row], r);
+            let krk = b.mul(kr, gain[c]);
+            let entry = b.add(next[row][c], krk);
+            p[row][c] = entry;
+            p[c][row] = entry;
+        }
+    }
+}
+
+/// `x ← f(x, u)`, `P ← F P Fᵀ + Q` with `CHIP_SUBSTEPS` RK4 steps (`firmware::Rk4::step`).
+fn predict(b: &mut Builder<'_>, code: &ModelCode, constants: &EkfConstants, x: &mut Vec<usize>, p: &mut [Vec<usize>]) {
+    let nx = x.len();
+    let (mut next, mut jacobian) = substep(b, code, constants.h, x);
+    for _ in 1..constants.substeps {
+        let (after, d) = substep(b, code, constants.h, &next);
+        next = after;
+        jacobian = product(b, &d, &jacobian);
+    }
+    let fp = product(b, &jacobian, p);
+    let fpf = product_transposed(b, &fp, &jacobian);
+    for r in 0..nx {
+        for c in r..nx {
+            let q = b.number(if r == c { constants.q[r] } else { 0.0 });
+            let entry = b.add(fpf[r][c], q);
+            p[r][c] = entry;
+            p[c][r] = entry;
+        }
+    }
+    *x = next;
+}
+
+/// One RK4 step of width `h` and its derivative in `x` (`firmware::Rk4::substep`).
+fn substep(b: &mut Builder<'_>, code: &ModelCode, h: f64, x: &[usize]) -> (Vec<usize>, Vec<Vec<usize>>) {
+    let nx = x.len();
+    // The library's `h / 2` and `h / 6`, computed at construction in the filter's precision.
+    let width = b.number(h);
+    let (two, six) = (b.number(2.0), b.number(6.0));
+    let half = b.unfolded(Binary::Div, width, two);
+    let sixth = b.unfolded(Binary::Div, width, six);
+    let derivative = |b: &mut Builder<'_>, at: &[usize]| {
+        let values = b.inline(&code.derivative, at);
+        let a: Vec<Vec<usize>> = (0..nx).map(|i| values[nx * (i + 1)..nx * (i + 2)].to_vec()).collect();
+        (values[..nx].to_vec(), a)
+    };
+    let stage = |b: &mut Builder<'_>, k: &[usize], d: &[Vec<usize>], w: usize| {
+        let point: Vec<usize> = (0..nx)
+            .map(|i| {
+                let moved = b.mul(w, k[i]);
+                b.add(x[i], moved)
+            })
+            .collect();
+        let moved: Vec<Vec<usize>> = (0..nx)
+            .map(|i| {
+                (0..nx)
+                    .map(|j| {
+                        let identity = b.number(if i == j { 1.0 } else { 0.0 });
+                        let wd = b.mul(w, d[i][j]);
+                        b.add(identity, wd)
+                    })
+                    .collect()
+            })
+            .collect();
+        let (value, a) = derivative(b, &point);
+        let chained = product(b, &a, &moved);
+        (value, chained)
+    };
+    let (k1, d1) = derivative(b, x);
+    let (k2, d2) = stage(b, &k1, &d1, half);
+    let (k3, d3) = stage(b, &k2, &d2, half);
+    let (k4, d4) = stage(b, &k3, &d3, width);
+    let combine = |b: &mut Builder<'_>, start: usize, v1: usize, v2: usize, v3: usize, v4: usize| {
+        let middle = b.add(v2, v3);
+        let doubled = b.mul(two, middle);
+        let sum = b.add(v1, doubled);
+        let sum = b.add(sum, v4);
+        let scaled = b.mul(sixth, sum);
+        b.add(start, scaled)
+    };
+    let next = (0..nx).map(|i| combine(b, x[i], k1[i], k2[i], k3[i], k4[i])).collect();
+    let jacobian = (0..nx)
+        .map(|i| {
+            (0..nx)
+                .map(|j| {
+                    let identity = b.number(if i == j { 1.0 } else { 0.0 });
+                    combine(b, identity, d1[i][j], d2[i][j], d3[i][j], d4[i][j])
+                })
+                .collect()
+        })
+        .collect();
+    (next, jacobian)
+}
+
+/// `A B` (`firmware::model::product`: each entry summed from 0 in order).
+fn product(b: &mut Builder<'_>, a: &[Vec<usize>], m: &[Vec<usize>]) -> Vec<Vec<usize>> {
+    let n = a.len();
+    let zero = b.number(0.0);
+    (0..n)
+        .map(|r| {
+            (0..n)
+                .map(|c| {
+                    let column: Vec<usize> = (0..n).map(|k| m[k][c]).collect();
+                    b.dot(zero, &a[r], &column)
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// `A Bᵀ`, the upper triangle only (the rest is left as the upper's mirror; callers read `r ≤ c`).
+fn product_transposed(b: &mut Builder<'_>, a: &[Vec<usize>], m: &[Vec<usize>]) -> Vec<Vec<usize>> {
+    let n = a.len();
+    let zero = b.number(0.0);
+    let mut out = vec![vec![zero; n]; n];
+    for r in 0..n {
+        for c in r..n {
+            out[r][c] = b.dot(zero, &a[r], &m[c]);
+            out[c][r] = out[r][c];
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests;
