@@ -4,6 +4,7 @@
 //! map's were fitted on the learning runs only, so the validation and scenario figures are on data
 //! neither saw.
 
+pub mod corrected;
 pub mod ekf;
 
 use crate::data::{self, DataSet, Rows, Run};
@@ -32,7 +33,7 @@ pub const TRANSIENT_TIME: f64 = 2.0;
 /// One observer's figures, per target in spec order.
 #[derive(Clone, Debug)]
 pub struct ObserverFigures {
-    /// `"map"` or `"ekf"`.
+    /// `"map"`, `"ekf"` or `"corrected"`.
     pub kind: &'static str,
     /// Per target.
     pub targets: Vec<Figures>,
@@ -45,6 +46,8 @@ pub struct Comparison {
     pub observers: Vec<ObserverFigures>,
     /// The tuned EKF (`None` when the model is beyond the host's sizes, [`ekf::supported`]).
     pub ekf: Option<ekf::Tuned>,
+    /// The tuned model-corrected map, or why the design cannot have one.
+    pub corrected: Result<corrected::Tuned, String>,
     /// The tuning runs.
     pub tuning: DataSet,
     /// Largest one-sample difference between the chip's model (`chip_substeps`) and the learning
@@ -140,9 +143,26 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
             }),
         });
     }
+    let corrected = corrected::state_targets(design).map(|state_targets| {
+        let setting = corrected::Setting::new(
+            code,
+            design.tau / design.chip_substeps as f64,
+            design.chip_substeps,
+            &state_targets,
+            horizon - 1,
+        );
+        let maps: Vec<Rows> = tuning.runs.iter().map(|r| map_estimates(result, horizon, r)).collect();
+        let tuned = corrected::tune(&setting, &tuning, &maps, &spreads);
+        observers.push(ObserverFigures {
+            kind: "corrected",
+            targets: figures(&|run, _| setting.estimate_run(&tuned.gains, &map_estimates(result, horizon, run), run)),
+        });
+        tuned
+    });
     Ok(Comparison {
         observers,
         ekf: tuned,
+        corrected,
         chip_model_error: chip_model_error(design, result),
         tuning,
     })

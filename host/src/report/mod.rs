@@ -46,6 +46,8 @@ pub struct Report<'a> {
     pub observers: Vec<ObserverReport>,
     /// How the EKF was tuned, when the host could run one.
     pub ekf_tuning: Option<EkfTuning>,
+    /// How the model-corrected map was tuned, or why the design has none.
+    pub corrected_tuning: CorrectedTuning,
     /// The model on the chip against the learning simulation's.
     pub chip_model: ChipModel,
 }
@@ -94,6 +96,30 @@ pub struct EkfTuning {
     pub p0_diagonal: Vec<f64>,
     /// `x̂(0)` (centre of the state box).
     pub x0: Vec<f64>,
+}
+
+/// The model-corrected map's tuning ([`crate::observers::corrected`]).
+#[derive(Serialize)]
+#[serde(untagged)]
+pub enum CorrectedTuning {
+    /// Tuned.
+    Tuned {
+        /// `G` per state, after the start-up.
+        g: Vec<f64>,
+        /// `K`, states × outputs, row by row.
+        k: Vec<f64>,
+        /// `T`: the start-up blend's time constant, in estimates.
+        schedule: f64,
+        /// Mean normalised RMSE on the tuning runs at the choice.
+        cost: f64,
+        /// Criterion evaluations (Nelder–Mead, every start).
+        evaluations: u64,
+    },
+    /// Not available.
+    Unavailable {
+        /// Why.
+        unavailable: String,
+    },
 }
 
 /// The chip's model against the simulation's.
@@ -231,6 +257,18 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             p0_diagonal: t.constants.p0.clone(),
             x0: t.constants.x0.clone(),
         }),
+        corrected_tuning: match &comparison.corrected {
+            Ok(t) => CorrectedTuning::Tuned {
+                g: t.gains.g.clone(),
+                k: t.gains.k.clone(),
+                schedule: t.gains.schedule,
+                cost: t.cost,
+                evaluations: t.evaluations,
+            },
+            Err(why) => CorrectedTuning::Unavailable {
+                unavailable: why.clone(),
+            },
+        },
         chip_model: ChipModel {
             chip_substeps: design.chip_substeps,
             simulation_substeps: design.substeps,
@@ -250,9 +288,11 @@ pub fn observers_table(report: &Report<'_>) -> String {
     let show = |v: Option<f64>| v.map_or("diverged".to_owned(), |v| format!("{v:.4}"));
     for o in &report.observers {
         for (name, f) in &o.targets {
-            let chip = o.on_target.as_ref().map_or("not measured".to_owned(), |c| {
-                format!("{} / {}, {}", c.instructions_median, c.instructions_max, c.divisions)
-            });
+            let chip = match (&o.on_target, o.kind) {
+                (Some(c), _) => format!("{} / {}, {}", c.instructions_median, c.instructions_max, c.divisions),
+                (None, "corrected") => "host only (not emitted yet)".to_owned(),
+                (None, _) => "not measured".to_owned(),
+            };
             let _ = writeln!(
                 s,
                 "| {} | {name} | {} | {} | {} | {} | {} | {chip} |",
@@ -265,11 +305,18 @@ pub fn observers_table(report: &Report<'_>) -> String {
             );
         }
     }
-    if report.observers.iter().any(|o| o.on_target.is_none()) {
+    if report
+        .observers
+        .iter()
+        .any(|o| o.on_target.is_none() && o.kind != "corrected")
+    {
         let _ = writeln!(
             s,
             "\nOn-chip figures of this generated source are not measured yet: `cargo run -p integration-tests --bin on-target-report`."
         );
+    }
+    if let CorrectedTuning::Unavailable { unavailable } = &report.corrected_tuning {
+        let _ = writeln!(s, "\nNo model-corrected map: {unavailable}.");
     }
     if report.observers.len() < 2 {
         let _ = writeln!(s, "\nNo EKF: the model is beyond the sizes the host runs one for.");
