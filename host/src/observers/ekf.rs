@@ -77,9 +77,9 @@ pub fn state_spreads(data: &DataSet, states: usize) -> Vec<f64> {
 
 /// One sampling period of the model in `substeps` RK4 steps: the firmware's one-step [`Rk4`] composed
 /// (the chip's `Rk4<_, _, CHIP_SUBSTEPS>` does the same products in the same order).
-struct Stepped<'a> {
-    step: Rk4<f64, Compiled<'a, f64>, 1>,
-    substeps: usize,
+pub(crate) struct Stepped<'a> {
+    pub(crate) step: Rk4<f64, Compiled<'a, f64>, 1>,
+    pub(crate) substeps: usize,
 }
 
 impl<const NX: usize, const NY: usize, const NU: usize> Plant<f64, NX, NY, NU> for Stepped<'_> {

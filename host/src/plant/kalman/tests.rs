@@ -7,6 +7,7 @@ use std::path::Path;
 use firmware::{Ekf, Rk4};
 
 use super::*;
+use crate::observers::ekf::Stepped;
 use crate::plant::program::Op;
 use crate::plant::Compiled;
 use crate::spec::ast::Binary;
@@ -80,27 +81,6 @@ fn compare<const NX: usize, const NY: usize, const NU: usize>(
         (Some(e), Ok(l)) => worst.max(gap(&e, &l)),
         (None, Err(_)) => worst,
         (e, l) => panic!("written-out {e:?}, library {l:?}"),
-    }
-}
-
-/// The library's substeps composed as `firmware::Rk4<_, _, S>` composes them.
-struct Stepped<'a> {
-    step: Rk4<f64, Compiled<'a, f64>, 1>,
-    substeps: usize,
-}
-
-impl<const NX: usize, const NY: usize, const NU: usize> firmware::Plant<f64, NX, NY, NU> for Stepped<'_> {
-    fn step(&self, x: &[f64; NX], u: &[f64; NU]) -> ([f64; NX], [[f64; NX]; NX]) {
-        let (mut x, mut jacobian) = firmware::Plant::<f64, NX, NY, NU>::step(&self.step, x, u);
-        for _ in 1..self.substeps {
-            let (next, d) = firmware::Plant::<f64, NX, NY, NU>::step(&self.step, &x, u);
-            x = next;
-            jacobian = firmware::model::product(&d, &jacobian);
-        }
-        (x, jacobian)
-    }
-    fn output(&self, x: &[f64; NX], u: &[f64; NU]) -> ([f64; NY], [[f64; NX]; NY]) {
-        firmware::Plant::<f64, NX, NY, NU>::output(&self.step, x, u)
     }
 }
 
