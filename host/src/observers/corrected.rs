@@ -175,14 +175,12 @@ struct Criterion<'a> {
     target_spreads: &'a [f64],
 }
 
-impl Criterion<'_> {
-    fn gains(&self, theta: &[f64]) -> Gains {
-        let nx = self.setting.code.dimensions.states;
-        Gains {
-            g: theta[..nx].iter().map(|g| g.clamp(0.0, 1.0)).collect(),
-            k: theta[nx..theta.len() - 1].to_vec(),
-            schedule: theta[theta.len() - 1].exp(),
-        }
+/// The gains a search point `θ = (G, K, ln T)` stands for (`G` clamped to `[0, 1]`), `nx` states.
+fn gains(nx: usize, theta: &[f64]) -> Gains {
+    Gains {
+        g: theta[..nx].iter().map(|g| g.clamp(0.0, 1.0)).collect(),
+        k: theta[nx..theta.len() - 1].to_vec(),
+        schedule: theta[theta.len() - 1].exp(),
     }
 }
 
@@ -192,7 +190,7 @@ impl CostFunction for Criterion<'_> {
 
     fn cost(&self, theta: &Self::Param) -> Result<f64, argmin::core::Error> {
         self.count.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-        let gains = self.gains(theta);
+        let gains = gains(self.setting.code.dimensions.states, theta);
         let estimates: Vec<Rows> = self
             .data
             .runs
@@ -268,15 +266,8 @@ pub fn tune(setting: &Setting<'_>, tuning: &DataSet, maps: &[Rows], target_sprea
         (Vec::new(), f64::INFINITY),
         |best, r| if r.1 < best.1 { r } else { best },
     );
-    let criterion = Criterion {
-        count: &count,
-        setting,
-        data: tuning,
-        maps,
-        target_spreads,
-    };
     Tuned {
-        gains: criterion.gains(&theta),
+        gains: gains(nx, &theta),
         cost,
         evaluations: count.into_inner(),
     }
