@@ -69,6 +69,7 @@ pub mod maths;
 pub mod model;
 pub mod observer;
 pub mod scalar;
+pub mod started;
 pub mod window;
 
 pub use ekf::{Ekf, Plant};
@@ -81,4 +82,5 @@ pub use maths::Maths;
 pub use model::{Model, Rk4};
 pub use observer::{estimate_by_loops, Design, Observer, RejectedSample};
 pub use scalar::Scalar;
+pub use started::{Follower, Started};
 pub use window::{Sample, Window};

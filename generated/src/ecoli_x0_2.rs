@@ -695,11 +695,11 @@ impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
     }
 }
 
-/// The observer of this design.
-pub type Observer = firmware::Observer<f32, Design, HORIZON, OUTPUTS, INPUTS, TARGETS>;
+/// The map alone over this design: `F(Z)` from the last `HORIZON` samples.
+pub type MapObserver = firmware::Observer<f32, Design, HORIZON, OUTPUTS, INPUTS, TARGETS>;
 
-/// A fresh observer, holding no sample yet.
-pub const fn observer() -> Observer {
+/// A fresh [`MapObserver`], holding no sample yet.
+pub const fn map_observer() -> MapObserver {
     firmware::Observer::new()
 }
 
@@ -958,6 +958,9 @@ pub type Discrete<T> = firmware::Rk4<T, Plant, CHIP_SUBSTEPS>;
 
 /// Entries of the EKF's covariance kept: its upper triangle, row by row (it is symmetric).
 pub const COVARIANCE: usize = 6;
+
+/// The EKF's `Q` diagonal as `gen` chose it (f64).
+pub const EKF_Q: [f64; STATES] = [4.557158371209388e-6, 7.905694150420947e-6, 1.5843582938196762e-7];
 
 /// This design's extended Kalman filter, written out for its size by `gen`: the library's
 /// [`firmware::Ekf`] over [`Discrete`] ([`reference_ekf`], same constants), with each sample as
@@ -2392,4 +2395,15 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t557: T = T::literal(1.5843582e-7, 1.5843582938196762e-7);
     let t558: T = t552 + t557;
     ([t418, t424, t430], [t554, t532, t537, t556, t547, t558])
+}
+
+/// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
+pub const KIND: &str = "map";
+
+/// This design's observer: the map alone ([`MapObserver`]).
+pub type Observer = MapObserver;
+
+/// A fresh [`Observer`], holding no sample yet.
+pub const fn observer() -> Observer {
+    MapObserver::new()
 }

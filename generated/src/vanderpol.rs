@@ -269,11 +269,11 @@ impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
     }
 }
 
-/// The observer of this design.
-pub type Observer = firmware::Observer<f32, Design, HORIZON, OUTPUTS, INPUTS, TARGETS>;
+/// The map alone over this design: `F(Z)` from the last `HORIZON` samples.
+pub type MapObserver = firmware::Observer<f32, Design, HORIZON, OUTPUTS, INPUTS, TARGETS>;
 
-/// A fresh observer, holding no sample yet.
-pub const fn observer() -> Observer {
+/// A fresh [`MapObserver`], holding no sample yet.
+pub const fn map_observer() -> MapObserver {
     firmware::Observer::new()
 }
 
@@ -454,6 +454,9 @@ pub type Discrete<T> = firmware::Rk4<T, Plant, CHIP_SUBSTEPS>;
 
 /// Entries of the EKF's covariance kept: its upper triangle, row by row (it is symmetric).
 pub const COVARIANCE: usize = 3;
+
+/// The EKF's `Q` diagonal as `gen` chose it (f64).
+pub const EKF_Q: [f64; STATES] = [0.0002640102205869467, 0.001636491856075647];
 
 /// This design's extended Kalman filter, written out for its size by `gen`: the library's
 /// [`firmware::Ekf`] over [`Discrete`] ([`reference_ekf`], same constants), with each sample as
@@ -923,4 +926,276 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t160: T = T::literal(0.0016364919, 0.001636491856075647);
     let t161: T = t157 + t160;
     ([t109, t115], [t159, t154, t161])
+}
+
+/// The model-corrected map's constants as `gen` chose them (f64): `G`, `K` (states × outputs, row
+/// by row), the schedule `T`, and each state's clamp.
+pub const CORRECTED_G: [f64; STATES] = [0.0, 0.0];
+/// See [`CORRECTED_G`].
+pub const CORRECTED_K: [f64; STATES * OUTPUTS] = [0.02564100227201662, 0.08272598434074695];
+/// See [`CORRECTED_G`].
+pub const CORRECTED_SCHEDULE: f64 = 0.603895116019639;
+/// See [`CORRECTED_G`].
+pub const CORRECTED_LOWER: [f64; STATES] = [-2.4116380867868843, -4.676576635756306];
+/// See [`CORRECTED_G`].
+pub const CORRECTED_UPPER: [f64; STATES] = [2.4116380867868843, 4.676576635756306];
+
+/// The model-corrected map's start-up blends `g_j = G + (1 − G) / (1 + j / T)`, `j = 1 … J`, per
+/// state, each as `(f32, f64)`.
+#[rustfmt::skip]
+static CORRECTED_BLENDS: [[(f32, f64); STATES]; 30] = [
+    [(0.37651783, 0.37651783460648963), (0.37651783, 0.37651783460648963)],
+    [(0.23191991, 0.23191990810396537), (0.23191991, 0.23191990810396537)],
+    [(0.16756734, 0.16756733938656282), (0.16756734, 0.16756733938656282)],
+    [(0.13117048, 0.13117047647726277), (0.13117048, 0.13117047647726277)],
+    [(0.107763454, 0.10776345800857466), (0.107763454, 0.10776345800857466)],
+    [(0.09144529, 0.09144529181796338), (0.09144529, 0.09144529181796338)],
+    [(0.07941918, 0.0794191801445778), (0.07941918, 0.0794191801445778)],
+    [(0.070188574, 0.07018857248680814), (0.070188574, 0.07018857248680814)],
+    [(0.062880225, 0.06288022814954741), (0.062880225, 0.06288022814954741)],
+    [(0.05695031, 0.056950310184350615), (0.05695031, 0.056950310184350615)],
+    [(0.052042447, 0.052042448676215436), (0.052042447, 0.052042448676215436)],
+    [(0.047913373, 0.04791337205369823), (0.047913373, 0.04791337205369823)],
+    [(0.044391338, 0.044391338720959836), (0.044391338, 0.044391338720959836)],
+    [(0.041351646, 0.041351647024443536), (0.041351646, 0.041351647024443536)],
+    [(0.03870156, 0.03870156211186359), (0.03870156, 0.03870156211186359)],
+    [(0.03637069, 0.03637068963637295), (0.03637069, 0.03637068963637295)],
+    [(0.03430463, 0.03430463042637031), (0.03430463, 0.03430463042637031)],
+    [(0.032460682, 0.03246068160745706), (0.032460682, 0.03246068160745706)],
+    [(0.030804854, 0.030804853445994842), (0.030804854, 0.030804853445994842)],
+    [(0.029309755, 0.029309754908920464), (0.029309755, 0.029309754908920464)],
+    [(0.027953066, 0.02795306646216038), (0.027953066, 0.02795306646216038)],
+    [(0.026716419, 0.026716418250925772), (0.026716419, 0.026716418250925772)],
+    [(0.025584554, 0.025584553441342132), (0.025584554, 0.025584553441342132)],
+    [(0.024544695, 0.024544695592790176), (0.024544695, 0.024544695592790176)],
+    [(0.023586065, 0.023586064279797755), (0.023586065, 0.023586064279797755)],
+    [(0.0226995, 0.022699499956154962), (0.0226995, 0.022699499956154962)],
+    [(0.02187717, 0.021877170358801087), (0.02187717, 0.021877170358801087)],
+    [(0.021112338, 0.02111233849691425), (0.021112338, 0.02111233849691425)],
+    [(0.020399177, 0.020399177664051766), (0.020399177, 0.020399177664051766)],
+    [(0.019732622, 0.01973262271780331), (0.019732622, 0.01973262271780331)],
+];
+
+/// The model-corrected map on the chip: `x̂(N−1) = F(Z)`, then
+/// `x̂ = clamp(x̄ + g_j ⊙ (F(Z) − x̄) + K (y − h(x̄, u)))` with `x̄` the model's prediction, as chosen
+/// by `gen` on the tuning runs: `G = [0.0, 0.0]`, `K = [0.02564100227201662, 0.08272598434074695]` (states × outputs, row by row), `T = 0.603895116019639`,
+/// `J = 30`. The clamp is each state's learning range.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Corrector;
+
+impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for Corrector {
+    type Carried = [T; STATES];
+    const START_UP: usize = 30;
+    const STEADY_READS_MAP: bool = false;
+    const STATE_TARGETS: [usize; STATES] = [0, 1];
+
+    #[inline(always)]
+    fn start(first: &[T; STATES], u: &[T; INPUTS]) -> Option<[T; STATES]> {
+        let next = corrected_predict(first, u);
+        next.iter().all(|v| v.is_finite()).then_some(next)
+    }
+
+    #[inline(always)]
+    fn follow(
+        x: &[T; STATES],
+        j: usize,
+        start_up: bool,
+        f: &[T; STATES],
+        y: &[T; OUTPUTS],
+        u: &[T; INPUTS],
+    ) -> Option<([T; STATES], [Estimate<T>; STATES])> {
+        // Loops rather than `array::map`, which the compiler turns into copies at `opt-level = "s"`.
+        let pick = |pairs: &[(f32, f64); STATES]| {
+            let mut out = [T::ZERO; STATES];
+            for (out, &(single, double)) in out.iter_mut().zip(pairs) {
+                *out = T::literal(single, double);
+            }
+            out
+        };
+        let raw = if start_up {
+            let row = CORRECTED_BLENDS.get(j.wrapping_sub(1)).unwrap_or(&[(0.0, 0.0); STATES]);
+            corrected_start_up(x, y, u, f, &pick(row))
+        } else {
+            corrected_steady(x, y, u, f)
+        };
+        let states = firmware::started::clamp(&raw, &pick(&[(-2.411638, -2.4116380867868843), (-4.6765766, -4.676576635756306)]), &pick(&[(2.411638, 2.4116380867868843), (4.6765766, 4.676576635756306)]));
+        let mut estimate = [T::ZERO; STATES];
+        for (e, s) in estimate.iter_mut().zip(&states) {
+            *e = s.value;
+        }
+        let next = corrected_predict(&estimate, u);
+        next.iter().all(|v| v.is_finite()).then_some((next, states))
+    }
+
+    #[inline(always)]
+    fn targets(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {
+        targets(x, u)
+    }
+}
+
+/// The model-corrected map over this design's map.
+pub type CorrectedObserver = firmware::Started<f32, Design, Corrector, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
+
+/// One sampling period of the model from `x`, the value alone: `x⁺`, written out by `gen`.
+#[allow(unused_variables, non_snake_case)]
+fn corrected_predict<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; STATES] {
+    let x_x1: T = x[0];
+    let x_x2: T = x[1];
+    let t2: T = T::literal(0.1, 0.1);
+    let t3: T = T::literal(2.0, 2.0);
+    let t4: T = T::literal(6.0, 6.0);
+    let t5: T = t2 / t3;
+    let t6: T = t2 / t4;
+    let t7: T = -x_x2;
+    let t8: T = T::literal(4.0, 4.0);
+    let t9: T = t8 * x_x1;
+    let t10: T = T::literal(1.0, 1.0);
+    let t11: T = x_x1 * x_x1;
+    let t12: T = t10 - t11;
+    let t13: T = t12 * x_x2;
+    let t14: T = t9 + t13;
+    let t15: T = t5 * t7;
+    let t16: T = x_x1 + t15;
+    let t17: T = t5 * t14;
+    let t18: T = x_x2 + t17;
+    let t19: T = -t18;
+    let t20: T = t8 * t16;
+    let t21: T = t16 * t16;
+    let t22: T = t10 - t21;
+    let t23: T = t22 * t18;
+    let t24: T = t20 + t23;
+    let t25: T = t5 * t19;
+    let t26: T = x_x1 + t25;
+    let t27: T = t5 * t24;
+    let t28: T = x_x2 + t27;
+    let t29: T = -t28;
+    let t30: T = t8 * t26;
+    let t31: T = t26 * t26;
+    let t32: T = t10 - t31;
+    let t33: T = t32 * t28;
+    let t34: T = t30 + t33;
+    let t35: T = t2 * t29;
+    let t36: T = x_x1 + t35;
+    let t37: T = t2 * t34;
+    let t38: T = x_x2 + t37;
+    let t39: T = -t38;
+    let t40: T = t8 * t36;
+    let t41: T = t36 * t36;
+    let t42: T = t10 - t41;
+    let t43: T = t42 * t38;
+    let t44: T = t40 + t43;
+    let t45: T = t19 + t29;
+    let t46: T = t3 * t45;
+    let t47: T = t7 + t46;
+    let t48: T = t47 + t39;
+    let t49: T = t6 * t48;
+    let t50: T = x_x1 + t49;
+    let t51: T = t24 + t34;
+    let t52: T = t3 * t51;
+    let t53: T = t14 + t52;
+    let t54: T = t53 + t44;
+    let t55: T = t6 * t54;
+    let t56: T = x_x2 + t55;
+    [t50, t56]
+}
+
+/// The correction during the start-up, blend `g` given: `x̂` before its clamp, written out by `gen`.
+#[allow(unused_variables, non_snake_case)]
+fn corrected_start_up<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T; INPUTS], f: &[T; STATES], g: &[T; STATES]) -> [T; STATES] {
+    let x_x1: T = x[0];
+    let x_x2: T = x[1];
+    let t2: T = x_x1 + x_x2;
+    let y_y: T = y[0];
+    let t4: T = y_y - t2;
+    let g_x1: T = g[0];
+    let f_x1: T = f[0];
+    let t7: T = f_x1 - x_x1;
+    let t8: T = g_x1 * t7;
+    let t9: T = x_x1 + t8;
+    let t10: T = T::literal(0.025641002, 0.02564100227201662);
+    let t11: T = t10 * t4;
+    let t12: T = t9 + t11;
+    let g_x2: T = g[1];
+    let f_x2: T = f[1];
+    let t15: T = f_x2 - x_x2;
+    let t16: T = g_x2 * t15;
+    let t17: T = x_x2 + t16;
+    let t18: T = T::literal(0.08272599, 0.08272598434074695);
+    let t19: T = t18 * t4;
+    let t20: T = t17 + t19;
+    [t12, t20]
+}
+
+/// The correction after the start-up (`G` as numbers): `x̂` before its clamp, written out by `gen`.
+#[allow(unused_variables, non_snake_case)]
+fn corrected_steady<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T; INPUTS], f: &[T; STATES]) -> [T; STATES] {
+    let x_x1: T = x[0];
+    let x_x2: T = x[1];
+    let t2: T = x_x1 + x_x2;
+    let y_y: T = y[0];
+    let t4: T = y_y - t2;
+    let t5: T = T::literal(0.025641002, 0.02564100227201662);
+    let t6: T = t5 * t4;
+    let t7: T = x_x1 + t6;
+    let t8: T = T::literal(0.08272599, 0.08272598434074695);
+    let t9: T = t8 * t4;
+    let t10: T = x_x2 + t9;
+    [t7, t10]
+}
+
+/// `P(N−1)` diagonal of [`StartedEkf`] (f64), as `gen` chose it.
+pub const STARTED_P0: [f64; STATES] = [0.05662187892394452, 0.07985707084510697];
+
+/// The EKF started at the map's first estimate `x̂(N−1) = F(Z)` with `P(N−1)` diagonal, each variance
+/// the map's mean squared error on the tuning runs, then [`Ekf`]'s samples (same `Q` and `R`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct StartedEkf;
+
+impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+    type Carried = ([T; STATES], [T; COVARIANCE]);
+    const START_UP: usize = 0;
+    const STEADY_READS_MAP: bool = false;
+    const STATE_TARGETS: [usize; STATES] = [0, 1];
+
+    #[inline(always)]
+    fn start(first: &[T; STATES], u: &[T; INPUTS]) -> Option<([T; STATES], [T; COVARIANCE])> {
+        let (x, p) = ekf_unmeasured(first, &[T::literal(0.05662188, 0.05662187892394452), T::literal(0.0, 0.0), T::literal(0.07985707, 0.07985707084510697)], u);
+        finite(&x, &p).then_some((x, p))
+    }
+
+    #[inline(always)]
+    fn follow(
+        carried: &([T; STATES], [T; COVARIANCE]),
+        _: usize,
+        _: bool,
+        _: &[T; STATES],
+        y: &[T; OUTPUTS],
+        u: &[T; INPUTS],
+    ) -> Option<(([T; STATES], [T; COVARIANCE]), [Estimate<T>; STATES])> {
+        let (estimate, x, p) = ekf_measured(&carried.0, &carried.1, y, u);
+        let mut inside = [Estimate { value: T::ZERO, saturation: firmware::Saturation::Inside }; STATES];
+        for (e, &value) in inside.iter_mut().zip(&estimate) {
+            e.value = value;
+        }
+        finite(&x, &p).then_some(((x, p), inside))
+    }
+
+    #[inline(always)]
+    fn targets(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {
+        targets(x, u)
+    }
+}
+
+/// The EKF started by this design's map.
+pub type StartedEkfObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
+
+/// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
+pub const KIND: &str = "ekf";
+
+/// This design's observer: the EKF started by the map ([`StartedEkfObserver`]).
+pub type Observer = StartedEkfObserver;
+
+/// A fresh [`Observer`], holding no sample yet.
+pub const fn observer() -> Observer {
+    StartedEkfObserver::new()
 }

@@ -188,8 +188,19 @@ pub fn design_source(
         design: design.name.clone(),
         source,
     };
-    let ekf = comparison.ekf.as_ref().map(|t| &t.constants);
-    let source = emit::design_file(design, result, spec_path, &code, ekf).map_err(emit_error)?;
+    let state_targets = crate::observers::corrected::state_targets(design).ok();
+    let observers = emit::model::Observers {
+        ekf: comparison.ekf.as_ref().map(|t| &t.constants),
+        started: comparison.started.as_ref().map(|(p0, t)| (p0.as_slice(), t.as_slice())),
+        corrected: comparison
+            .corrected
+            .as_ref()
+            .ok()
+            .map(|t| &t.constants)
+            .zip(state_targets.as_deref()),
+        kind: comparison.chosen.0,
+    };
+    let source = emit::design_file(design, result, spec_path, &code, &observers).map_err(emit_error)?;
     Ok((comparison, source))
 }
 

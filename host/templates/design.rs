@@ -153,11 +153,11 @@ impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
     }
 }
 
-/// The observer of this design.
-pub type Observer = firmware::Observer<f32, Design, HORIZON, OUTPUTS, INPUTS, TARGETS>;
+/// The map alone over this design: `F(Z)` from the last `HORIZON` samples.
+pub type MapObserver = firmware::Observer<f32, Design, HORIZON, OUTPUTS, INPUTS, TARGETS>;
 
-/// A fresh observer, holding no sample yet.
-pub const fn observer() -> Observer {
+/// A fresh [`MapObserver`], holding no sample yet.
+pub const fn map_observer() -> MapObserver {
     firmware::Observer::new()
 }
 

@@ -72,6 +72,14 @@ pub mod {{ f.name }} {
     pub const fn observer() -> Observer {
         firmware::FamilyObserver::new(&MEMBERS, SELECTING_OUTPUT)
     }
+
+    /// The family's observer is its members' maps: the same type, named as a design's map.
+    pub type MapObserver = Observer;
+
+    /// [`observer`], named as a design's map.
+    pub const fn map_observer() -> MapObserver {
+        observer()
+    }
 }
 {%- endfor %}
 

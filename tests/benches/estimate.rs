@@ -10,7 +10,7 @@ macro_rules! bench_design {
         #[divan::bench]
         fn $name(bencher: divan::Bencher) {
             use generated::$name as d;
-            let mut observer = d::observer();
+            let mut observer = d::map_observer();
             let mut k = 0;
             bencher.bench_local(|| {
                 k = (k + 1) % d::RECORDED_LEN;

@@ -13,12 +13,22 @@ fn main() {
 
     // The runners (`on-target` for the map observer, `ekf` for the filter) link the one design named
     // by ON_TARGET_DESIGN.
+    // ON_TARGET_KIND picks the runner's observer: the map (default), or `observer` (the design's
+    // chosen kind), `corrected` or `started_ekf`.
     println!("cargo:rerun-if-env-changed=ON_TARGET_DESIGN");
+    println!("cargo:rerun-if-env-changed=ON_TARGET_KIND");
+    let (measured, fresh) = match std::env::var("ON_TARGET_KIND").unwrap_or_default().as_str() {
+        "" | "map" => ("MapObserver", "map_observer()"),
+        "observer" => ("Observer", "observer()"),
+        "corrected" => ("CorrectedObserver", "CorrectedObserver::new()"),
+        "started_ekf" => ("StartedEkfObserver", "StartedEkfObserver::new()"),
+        other => panic!("ON_TARGET_KIND must be map, observer, corrected or started_ekf, got {other:?}"),
+    };
     let runner = module_name("ON_TARGET_DESIGN");
     let runner = if runner.is_empty() {
-        "compile_error!(\"set ON_TARGET_DESIGN to the generated design module to run\");\nmod d { pub type Observer = (); pub const TARGETS: usize = 0; pub const OUTPUTS: usize = 0; pub const INPUTS: usize = 0; pub const RECORDED_LEN: usize = 0; pub type Ekf = (); pub const STATES: usize = 0; }\n".to_owned()
+        "compile_error!(\"set ON_TARGET_DESIGN to the generated design module to run\");\ntype Measured = ();\nfn fresh() -> Measured {}\nmod d { pub const TARGETS: usize = 0; pub const OUTPUTS: usize = 0; pub const INPUTS: usize = 0; pub const RECORDED_LEN: usize = 0; pub type Ekf = (); pub const STATES: usize = 0; }\n".to_owned()
     } else {
-        format!("use generated::{runner} as d;\n")
+        format!("use generated::{runner} as d;\n/// The observer measured.\ntype Measured = d::{measured};\n/// A fresh one.\nfn fresh() -> Measured {{\n    d::{fresh}\n}}\n")
     };
     std::fs::write(out.join("design.rs"), runner).expect("write design.rs");
 
@@ -43,7 +53,7 @@ fn main() {
         )
     } else {
         format!(
-            "/// Pushes samples into `{design}`'s observer and estimates, forever.\nfn probe() -> ! {{\n    use generated::{design} as d;\n    let mut observer = d::observer();\n    loop {{\n        let y = core::hint::black_box([0.0f32; d::OUTPUTS]);\n        let u = core::hint::black_box([0.0f32; d::INPUTS]);\n        let _ = core::hint::black_box(observer.push(y, u));\n        core::hint::black_box(observer.estimate());\n        if core::hint::black_box(false) {{\n            observer.reset();\n        }}\n    }}\n}}\n"
+            "/// Pushes samples into `{design}`'s observer and estimates, forever.\nfn probe() -> ! {{\n    use generated::{design} as d;\n    let mut observer = d::map_observer();\n    loop {{\n        let y = core::hint::black_box([0.0f32; d::OUTPUTS]);\n        let u = core::hint::black_box([0.0f32; d::INPUTS]);\n        let _ = core::hint::black_box(observer.push(y, u));\n        core::hint::black_box(observer.estimate());\n        if core::hint::black_box(false) {{\n            observer.reset();\n        }}\n    }}\n}}\n"
         )
     };
     std::fs::write(out.join("probe_design.rs"), probe).expect("write probe_design.rs");

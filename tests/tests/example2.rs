@@ -59,8 +59,8 @@ fn family_observer_uses_the_member_of_the_initial_biomass() {
         for run in &result.validation.runs {
             let mut family = generated::ecoli::observer();
             let mut own = match expected {
-                0 => FamilyMember::Low(generated::ecoli_x0_0p5::observer()),
-                _ => FamilyMember::High(generated::ecoli_x0_2::observer()),
+                0 => FamilyMember::Low(generated::ecoli_x0_0p5::map_observer()),
+                _ => FamilyMember::High(generated::ecoli_x0_2::map_observer()),
             };
             for (y, u) in run.measurements.iter().zip(&run.inputs) {
                 let y = [y[0] as f32, y[1] as f32];
@@ -85,8 +85,8 @@ fn family_observer_uses_the_member_of_the_initial_biomass() {
 }
 
 enum FamilyMember {
-    Low(generated::ecoli_x0_0p5::Observer),
-    High(generated::ecoli_x0_2::Observer),
+    Low(generated::ecoli_x0_0p5::MapObserver),
+    High(generated::ecoli_x0_2::MapObserver),
 }
 
 impl FamilyMember {

@@ -41,7 +41,7 @@ macro_rules! compare_design {
         let mut z = Vec::new();
         for (set, data) in &sets {
             for (r, run) in data.runs.iter().enumerate() {
-                let mut observer = tables::observer();
+                let mut observer = tables::map_observer();
                 for k in 0..run.states.len() {
                     let y: [f32; tables::OUTPUTS] = core::array::from_fn(|i| run.measurements[k][i] as f32);
                     let u: [f32; tables::INPUTS] = core::array::from_fn(|i| run.inputs[k][i] as f32);

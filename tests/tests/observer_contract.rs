@@ -38,7 +38,7 @@ macro_rules! contract {
                         1..3 * d::HORIZON,
                     )
                 ) {
-                    let mut observer = d::observer();
+                    let mut observer = d::map_observer();
                     let mut accepted = 0usize;
                     for (y, u) in samples {
                         let finite = y.iter().chain(&u).all(|v| v.is_finite());
@@ -79,7 +79,7 @@ macro_rules! contract {
 
             #[test]
             fn straight_line_code_equals_the_loops_on_the_recorded_sequence() {
-                let mut observer = d::observer();
+                let mut observer = d::map_observer();
                 let mut window: Vec<Sample<f32, { d::OUTPUTS }, { d::INPUTS }>> = Vec::new();
                 let mut compared = 0;
                 for (y, u) in d::RECORDED_Y.iter().zip(&d::RECORDED_U) {

@@ -22,7 +22,7 @@ macro_rules! same_as_host_f32 {
     ($name:ident) => {{
         use generated::$name as tables;
         let measured = &MEASURED.with(|m| m.borrow().clone()).unwrap()[tables::NAME];
-        let mut observer = tables::observer();
+        let mut observer = tables::map_observer();
         assert_eq!(measured.samples.len(), tables::RECORDED_LEN);
         for (k, ((y, u), sample)) in tables::RECORDED_Y
             .iter()

@@ -307,7 +307,7 @@ pub fn design_file(
     result: &DesignResult,
     spec_path: &str,
     code: &crate::plant::ModelCode,
-    ekf: Option<&crate::plant::kalman::EkfConstants>,
+    observers: &model::Observers<'_>,
 ) -> Result<String, EmitError> {
     let list = |names: &[String]| {
         if names.is_empty() {
@@ -434,7 +434,7 @@ pub fn design_file(
         state_list: format!("{:?}", design.model.states),
         // Last: the maps' checks above (data beyond f32, the sample period) name the cause where the
         // EKF's constants, derived from the same data, would only fail to be stored.
-        model: model::model_source(design, code, ekf)?.trim_end().to_owned(),
+        model: model::model_source(design, code, observers)?.trim_end().to_owned(),
     };
     file.render().map(|text| text + "\n").map_err(EmitError::from)
 }

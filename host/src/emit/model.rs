@@ -10,11 +10,12 @@
 use std::fmt::Write;
 
 use crate::emit::{f32_literal, EmitError};
+use crate::plant::correction::{self, CorrectionConstants};
 use crate::plant::kalman::{self, EkfConstants};
 use crate::plant::program::Leaf;
 use crate::plant::{ModelCode, Op, Program};
 use crate::spec::ast::Binary;
-use crate::spec::Design;
+use crate::spec::{Design, ObserverKind};
 
 /// `T::literal(single, double)` for `value`, the `f32` checked as [`f32_literal`] checks it.
 fn literal(what: &str, value: f64) -> Result<String, EmitError> {
@@ -32,6 +33,8 @@ fn operation(op: &Op, code: &ModelCode, names: &Names<'_>) -> Result<String, Emi
         Op::Leaf(Leaf::Input(i)) => format!("u[{i}]"),
         Op::Leaf(Leaf::Covariance(k)) => format!("p[{k}]"),
         Op::Leaf(Leaf::Measurement(i)) => format!("y[{i}]"),
+        Op::Leaf(Leaf::Map(i)) => format!("f[{i}]"),
+        Op::Leaf(Leaf::Blend(i)) => format!("g[{i}]"),
         Op::Negate(a) => format!("-{}", names.of(a)),
         Op::Binary(b, x, y) => {
             let (x, y) = (names.of(x), names.of(y));
@@ -65,6 +68,8 @@ impl Names<'_> {
             Op::Leaf(Leaf::Parameter(i)) => format!("p_{}", model.parameters[i].0),
             Op::Leaf(Leaf::Covariance(k)) => format!("cov{k}"),
             Op::Leaf(Leaf::Measurement(i)) => format!("y_{}", model.outputs[i].name),
+            Op::Leaf(Leaf::Map(i)) => format!("f_{}", model.states[i]),
+            Op::Leaf(Leaf::Blend(i)) => format!("g_{}", model.states[i]),
             _ => format!("t{op}"),
         }
     }
@@ -107,8 +112,285 @@ fn rows(items: &[String], width: usize) -> String {
     list(&items.chunks(width).map(list).collect::<Vec<_>>())
 }
 
-/// The Rust source of the design's model (`parameters`, `Plant`, `targets`) and its EKF (`ekf`).
-pub fn model_source(design: &Design, code: &ModelCode, ekf: Option<&EkfConstants>) -> Result<String, EmitError> {
+/// The observers a design file carries besides its map, and which one `observer()` is.
+#[derive(Clone, Copy, Debug)]
+pub struct Observers<'a> {
+    /// The EKF's constants (the peer, and the map-started EKF).
+    pub ekf: Option<&'a EkfConstants>,
+    /// The EKF started by the map: its `P(N−1)` diagonal and each state's target.
+    pub started: Option<(&'a [f64], &'a [usize])>,
+    /// The model-corrected map's constants and each state's target.
+    pub corrected: Option<(&'a CorrectionConstants, &'a [usize])>,
+    /// `observer()`'s kind: `Map`, `Corrected` or `Ekf` (never `Auto`: chosen before).
+    pub kind: ObserverKind,
+}
+
+/// The Rust source of the design's model (`parameters`, `Plant`, `targets`), its EKF (`ekf`), its
+/// model-based followers of the map, and `Observer` / `observer()` of the chosen kind.
+pub fn model_source(design: &Design, code: &ModelCode, observers: &Observers<'_>) -> Result<String, EmitError> {
+    let mut text = model_and_ekf(design, code, observers.ekf)?;
+    if let Some((constants, state_targets)) = observers.corrected {
+        text.push_str(&corrector(design, code, constants, state_targets)?);
+    }
+    if let (Some(_), Some((p0, state_targets))) = (observers.ekf, observers.started) {
+        let upper: Vec<f64> = (0..p0.len())
+            .flat_map(|r| (r..p0.len()).map(move |c| (r, c)))
+            .map(|(r, c)| if r == c { p0[r] } else { 0.0 })
+            .collect();
+        let entries = upper
+            .iter()
+            .enumerate()
+            .map(|(i, v)| literal(&format!("map-started EKF P0[{i}]"), *v))
+            .collect::<Result<Vec<_>, _>>()?;
+        text.push_str(
+            &STARTED_EKF_TEMPLATE
+                .replace("{P0}", &list(&entries))
+                .replace("{P0_F64}", &format!("{p0:?}"))
+                .replace("{STATE_TARGETS}", &format!("{state_targets:?}")),
+        );
+    }
+    let (ty, what) = match observers.kind {
+        ObserverKind::Corrected => ("CorrectedObserver", "the model-corrected map ([`CorrectedObserver`])"),
+        ObserverKind::Ekf => (
+            "StartedEkfObserver",
+            "the EKF started by the map ([`StartedEkfObserver`])",
+        ),
+        ObserverKind::Map | ObserverKind::Auto => ("MapObserver", "the map alone ([`MapObserver`])"),
+    };
+    let kind = match observers.kind {
+        ObserverKind::Corrected => "corrected",
+        ObserverKind::Ekf => "ekf",
+        ObserverKind::Map | ObserverKind::Auto => "map",
+    };
+    write!(
+        text,
+        "
+/// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
+pub const KIND: &str = \"{kind}\";
+
+/// This design's observer: {what}.
+pub type Observer = {ty};
+
+/// A fresh [`Observer`], holding no sample yet.
+pub const fn observer() -> Observer {{
+    {ty}::new()
+}}
+"
+    )
+    .ok();
+    Ok(text)
+}
+
+/// The model-corrected map's follower (`Corrector`), its programs and `CorrectedObserver`.
+fn corrector(
+    design: &Design,
+    code: &ModelCode,
+    constants: &CorrectionConstants,
+    state_targets: &[usize],
+) -> Result<String, EmitError> {
+    let programs = correction::correction_code(code, constants);
+    let pairs = |what: &str, values: &[f64]| -> Result<String, EmitError> {
+        let entries = values
+            .iter()
+            .enumerate()
+            .map(|(i, v)| Ok(format!("({}, {v:?})", f32_literal(&format!("{what}[{i}]"), *v)?)))
+            .collect::<Result<Vec<_>, EmitError>>()?;
+        Ok(list(&entries))
+    };
+    let blends = constants
+        .blends()
+        .iter()
+        .enumerate()
+        .map(|(j, row)| pairs(&format!("corrected start-up blend {}", j + 1), row).map(|r| format!("    {r},")))
+        .collect::<Result<Vec<_>, _>>()?;
+    let mut text = CORRECTED_TEMPLATE
+        .replace("{START_UP}", &constants.start_up.to_string())
+        .replace("{READS}", &programs.steady_reads_map.to_string())
+        .replace("{STATE_TARGETS}", &format!("{state_targets:?}"))
+        .replace("{BLENDS}", &blends.join("\n"))
+        .replace("{LOWER}", &pairs("corrected lower", &constants.lower)?)
+        .replace("{UPPER}", &pairs("corrected upper", &constants.upper)?)
+        .replace("{G}", &format!("{:?}", constants.g))
+        .replace("{K}", &format!("{:?}", constants.k))
+        .replace("{T}", &format!("{:?}", constants.schedule))
+        .replace("{LOWER_F64}", &format!("{:?}", constants.lower))
+        .replace("{UPPER_F64}", &format!("{:?}", constants.upper));
+    let w = &mut text;
+    writeln!(
+        w,
+        "\n/// One sampling period of the model from `x`, the value alone: `x⁺`, written out by `gen`."
+    )
+    .ok();
+    writeln!(w, "#[allow(unused_variables, non_snake_case)]").ok();
+    writeln!(
+        w,
+        "fn corrected_predict<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; STATES] {{"
+    )
+    .ok();
+    w.push_str(&body(&programs.predict, code, design, "    ", list)?);
+    writeln!(w, "}}\n").ok();
+    writeln!(
+        w,
+        "/// The correction during the start-up, blend `g` given: `x̂` before its clamp, written out by `gen`."
+    )
+    .ok();
+    writeln!(w, "#[allow(unused_variables, non_snake_case)]").ok();
+    writeln!(
+        w,
+        "fn corrected_start_up<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T; INPUTS], f: &[T; STATES], g: &[T; STATES]) -> [T; STATES] {{"
+    )
+    .ok();
+    w.push_str(&body(&programs.start_up, code, design, "    ", list)?);
+    writeln!(w, "}}\n").ok();
+    writeln!(
+        w,
+        "/// The correction after the start-up (`G` as numbers): `x̂` before its clamp, written out by `gen`."
+    )
+    .ok();
+    writeln!(w, "#[allow(unused_variables, non_snake_case)]").ok();
+    writeln!(
+        w,
+        "fn corrected_steady<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T; INPUTS], f: &[T; STATES]) -> [T; STATES] {{"
+    )
+    .ok();
+    w.push_str(&body(&programs.steady, code, design, "    ", list)?);
+    writeln!(w, "}}").ok();
+    Ok(text)
+}
+
+/// The model-corrected map around its written-out programs (`{…}` filled in by [`corrector`]).
+const CORRECTED_TEMPLATE: &str = r#"
+/// The model-corrected map's constants as `gen` chose them (f64): `G`, `K` (states × outputs, row
+/// by row), the schedule `T`, and each state's clamp.
+pub const CORRECTED_G: [f64; STATES] = {G};
+/// See [`CORRECTED_G`].
+pub const CORRECTED_K: [f64; STATES * OUTPUTS] = {K};
+/// See [`CORRECTED_G`].
+pub const CORRECTED_SCHEDULE: f64 = {T};
+/// See [`CORRECTED_G`].
+pub const CORRECTED_LOWER: [f64; STATES] = {LOWER_F64};
+/// See [`CORRECTED_G`].
+pub const CORRECTED_UPPER: [f64; STATES] = {UPPER_F64};
+
+/// The model-corrected map's start-up blends `g_j = G + (1 − G) / (1 + j / T)`, `j = 1 … J`, per
+/// state, each as `(f32, f64)`.
+#[rustfmt::skip]
+static CORRECTED_BLENDS: [[(f32, f64); STATES]; {START_UP}] = [
+{BLENDS}
+];
+
+/// The model-corrected map on the chip: `x̂(N−1) = F(Z)`, then
+/// `x̂ = clamp(x̄ + g_j ⊙ (F(Z) − x̄) + K (y − h(x̄, u)))` with `x̄` the model's prediction, as chosen
+/// by `gen` on the tuning runs: `G = {G}`, `K = {K}` (states × outputs, row by row), `T = {T}`,
+/// `J = {START_UP}`. The clamp is each state's learning range.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Corrector;
+
+impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for Corrector {
+    type Carried = [T; STATES];
+    const START_UP: usize = {START_UP};
+    const STEADY_READS_MAP: bool = {READS};
+    const STATE_TARGETS: [usize; STATES] = {STATE_TARGETS};
+
+    #[inline(always)]
+    fn start(first: &[T; STATES], u: &[T; INPUTS]) -> Option<[T; STATES]> {
+        let next = corrected_predict(first, u);
+        next.iter().all(|v| v.is_finite()).then_some(next)
+    }
+
+    #[inline(always)]
+    fn follow(
+        x: &[T; STATES],
+        j: usize,
+        start_up: bool,
+        f: &[T; STATES],
+        y: &[T; OUTPUTS],
+        u: &[T; INPUTS],
+    ) -> Option<([T; STATES], [Estimate<T>; STATES])> {
+        // Loops rather than `array::map`, which the compiler turns into copies at `opt-level = "s"`.
+        let pick = |pairs: &[(f32, f64); STATES]| {
+            let mut out = [T::ZERO; STATES];
+            for (out, &(single, double)) in out.iter_mut().zip(pairs) {
+                *out = T::literal(single, double);
+            }
+            out
+        };
+        let raw = if start_up {
+            let row = CORRECTED_BLENDS.get(j.wrapping_sub(1)).unwrap_or(&[(0.0, 0.0); STATES]);
+            corrected_start_up(x, y, u, f, &pick(row))
+        } else {
+            corrected_steady(x, y, u, f)
+        };
+        let states = firmware::started::clamp(&raw, &pick(&{LOWER}), &pick(&{UPPER}));
+        let mut estimate = [T::ZERO; STATES];
+        for (e, s) in estimate.iter_mut().zip(&states) {
+            *e = s.value;
+        }
+        let next = corrected_predict(&estimate, u);
+        next.iter().all(|v| v.is_finite()).then_some((next, states))
+    }
+
+    #[inline(always)]
+    fn targets(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {
+        targets(x, u)
+    }
+}
+
+/// The model-corrected map over this design's map.
+pub type CorrectedObserver = firmware::Started<f32, Design, Corrector, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
+"#;
+
+/// The EKF started by the map (`{…}` filled in by [`model_source`]).
+const STARTED_EKF_TEMPLATE: &str = r#"
+/// `P(N−1)` diagonal of [`StartedEkf`] (f64), as `gen` chose it.
+pub const STARTED_P0: [f64; STATES] = {P0_F64};
+
+/// The EKF started at the map's first estimate `x̂(N−1) = F(Z)` with `P(N−1)` diagonal, each variance
+/// the map's mean squared error on the tuning runs, then [`Ekf`]'s samples (same `Q` and `R`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct StartedEkf;
+
+impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+    type Carried = ([T; STATES], [T; COVARIANCE]);
+    const START_UP: usize = 0;
+    const STEADY_READS_MAP: bool = false;
+    const STATE_TARGETS: [usize; STATES] = {STATE_TARGETS};
+
+    #[inline(always)]
+    fn start(first: &[T; STATES], u: &[T; INPUTS]) -> Option<([T; STATES], [T; COVARIANCE])> {
+        let (x, p) = ekf_unmeasured(first, &{P0}, u);
+        finite(&x, &p).then_some((x, p))
+    }
+
+    #[inline(always)]
+    fn follow(
+        carried: &([T; STATES], [T; COVARIANCE]),
+        _: usize,
+        _: bool,
+        _: &[T; STATES],
+        y: &[T; OUTPUTS],
+        u: &[T; INPUTS],
+    ) -> Option<(([T; STATES], [T; COVARIANCE]), [Estimate<T>; STATES])> {
+        let (estimate, x, p) = ekf_measured(&carried.0, &carried.1, y, u);
+        let mut inside = [Estimate { value: T::ZERO, saturation: firmware::Saturation::Inside }; STATES];
+        for (e, &value) in inside.iter_mut().zip(&estimate) {
+            e.value = value;
+        }
+        finite(&x, &p).then_some(((x, p), inside))
+    }
+
+    #[inline(always)]
+    fn targets(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {
+        targets(x, u)
+    }
+}
+
+/// The EKF started by this design's map.
+pub type StartedEkfObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
+"#;
+
+/// The model and the EKF.
+fn model_and_ekf(design: &Design, code: &ModelCode, ekf: Option<&EkfConstants>) -> Result<String, EmitError> {
     let nx = code.dimensions.states;
     let ny = code.dimensions.outputs;
     let mut text = String::new();
@@ -261,6 +543,7 @@ pub fn model_source(design: &Design, code: &ModelCode, ekf: Option<&EkfConstants
             .replace("{H}", &literal("EKF substep", ekf.h)?)
             .replace("{P0_FULL}", &diagonal("EKF P0", &ekf.p0)?)
             .replace("{Q}", &diagonal("EKF Q", &ekf.q)?)
+            .replace("{Q_F64}", &format!("{:?}", ekf.q))
             .replace("{R}", &vector("EKF R", &ekf.r)?)
     )
     .ok();
@@ -301,6 +584,9 @@ pub fn model_source(design: &Design, code: &ModelCode, ekf: Option<&EkfConstants
 const EKF_TEMPLATE: &str = r#"
 /// Entries of the EKF's covariance kept: its upper triangle, row by row (it is symmetric).
 pub const COVARIANCE: usize = {TRIANGLE};
+
+/// The EKF's `Q` diagonal as `gen` chose it (f64).
+pub const EKF_Q: [f64; STATES] = {Q_F64};
 
 /// This design's extended Kalman filter, written out for its size by `gen`: the library's
 /// [`firmware::Ekf`] over [`Discrete`] ([`reference_ekf`], same constants), with each sample as

@@ -10,7 +10,7 @@ pub mod ekf;
 use crate::data::{self, DataSet, Rows, Run};
 use crate::fit::DesignResult;
 use crate::plant::ModelCode;
-use crate::spec::{Design, SpecError};
+use crate::spec::{Design, ObserverKind, SpecError};
 
 /// Errors of one observer on one target.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -48,6 +48,11 @@ pub struct Comparison {
     pub ekf: Option<ekf::Tuned>,
     /// The tuned model-corrected map, or why the design cannot have one.
     pub corrected: Result<corrected::Tuned, String>,
+    /// The EKF started by the map: `P(N−1)` diagonal (the map's mean squared error per state on the
+    /// tuning runs) and each state's target; `None` without an EKF or the full state.
+    pub started: Option<(Vec<f64>, Vec<usize>)>,
+    /// What `observer()` is, and why.
+    pub chosen: (ObserverKind, String),
     /// The tuning runs.
     pub tuning: DataSet,
     /// Largest one-sample difference between the chip's model (`chip_substeps`) and the learning
@@ -144,28 +149,129 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         });
     }
     let corrected = corrected::state_targets(design).map(|state_targets| {
-        let setting = corrected::Setting::new(
+        let (lower, upper) = state_targets
+            .iter()
+            .map(|&t| (result.targets[t].fit.map.r_min, result.targets[t].fit.map.r_max))
+            .unzip();
+        let setting = corrected::Setting {
             code,
-            design.tau / design.chip_substeps as f64,
-            design.chip_substeps,
-            &state_targets,
-            horizon - 1,
-        );
+            h: design.tau / design.chip_substeps as f64,
+            substeps: design.chip_substeps,
+            state_targets: &state_targets,
+            first: horizon - 1,
+            lower,
+            upper,
+        };
         let maps: Vec<Rows> = tuning.runs.iter().map(|r| map_estimates(result, horizon, r)).collect();
         let tuned = corrected::tune(&setting, &tuning, &maps, &spreads);
+        let programs = crate::plant::correction::correction_code(code, &tuned.constants);
         observers.push(ObserverFigures {
             kind: "corrected",
-            targets: figures(&|run, _| setting.estimate_run(&tuned.gains, &map_estimates(result, horizon, run), run)),
+            targets: figures(&|run, _| {
+                corrected::estimate_rows(
+                    &setting,
+                    &programs,
+                    &tuned.constants,
+                    &map_estimates(result, horizon, run),
+                    run,
+                )
+            }),
         });
         tuned
     });
+    let started = match (&tuned, corrected::state_targets(design)) {
+        (Some(tuned), Ok(state_targets)) => {
+            let map = &observers[0].targets;
+            let p0: Vec<f64> = state_targets.iter().map(|&t| map[t].rmse_tuning.powi(2)).collect();
+            let filter = crate::plant::kalman::filter_code(code, &tuned.constants);
+            observers.push(ObserverFigures {
+                kind: "ekf_started",
+                targets: figures(&|run, _| {
+                    let map: Vec<Vec<f64>> = map_estimates(result, horizon, run)
+                        .iter()
+                        .map(<[f64]>::to_vec)
+                        .collect();
+                    Rows::from(ekf::estimate_started(
+                        &filter,
+                        &p0,
+                        &state_targets,
+                        horizon - 1,
+                        &map,
+                        run,
+                        code,
+                    ))
+                }),
+            });
+            Some((p0, state_targets))
+        }
+        _ => None,
+    };
+    let chosen = choose(design, &observers, &spreads)?;
     Ok(Comparison {
         observers,
+        started,
+        chosen,
         ekf: tuned,
         corrected,
         chip_model_error: chip_model_error(design, result),
         tuning,
     })
+}
+
+/// A kind's score on the tuning runs: the mean over targets of RMSE / spread.
+fn score(figures: &ObserverFigures, spreads: &[f64]) -> f64 {
+    figures
+        .targets
+        .iter()
+        .zip(spreads)
+        .map(|(f, s)| f.rmse_tuning / s)
+        .sum::<f64>()
+        / spreads.len() as f64
+}
+
+/// How much worse than the best a cheaper kind's score may be and still be chosen by `auto`.
+pub const CHEAPER_WITHIN: f64 = 0.02;
+
+/// The kind `observer()` is: the spec's, or for `auto` the lowest [`score`] on the tuning runs,
+/// except that a cheaper kind (map, then corrected, then the map-started EKF) within
+/// [`CHEAPER_WITHIN`] of the best is preferred. Errors when the spec asks for a kind the design
+/// cannot have.
+pub fn choose(
+    design: &Design,
+    observers: &[ObserverFigures],
+    spreads: &[f64],
+) -> Result<(ObserverKind, String), SpecError> {
+    let kinds = [
+        ("map", ObserverKind::Map),
+        ("corrected", ObserverKind::Corrected),
+        ("ekf_started", ObserverKind::Ekf),
+    ];
+    let scored: Vec<(ObserverKind, &str, f64)> = kinds
+        .iter()
+        .filter_map(|&(name, kind)| {
+            observers
+                .iter()
+                .find(|o| o.kind == name)
+                .map(|o| (kind, name, score(o, spreads)))
+        })
+        .collect();
+    if design.observer != ObserverKind::Auto {
+        return match scored.iter().find(|s| s.0 == design.observer) {
+            Some(&(kind, name, score)) => Ok((kind, format!("`{name}` as the spec asks (tuning score {score:.4})"))),
+            None => Err(design.error(
+                "observer.kind",
+                format!("the design cannot have a `{:?}` observer: it needs every state as a target and a model the host can filter", design.observer).to_lowercase(),
+                "add a target per state (expr = the state's name), or set kind = \"map\" or \"auto\"",
+            )),
+        };
+    }
+    let best = scored.iter().map(|s| s.2).fold(f64::INFINITY, f64::min);
+    let &(kind, name, _) = scored
+        .iter()
+        .find(|s| s.2 <= best * (1.0 + CHEAPER_WITHIN))
+        .expect("the map is always scored");
+    let all: Vec<String> = scored.iter().map(|(_, n, s)| format!("{n} {s:.4}")).collect();
+    Ok((kind, format!("`{name}` by `auto`: the lowest tuning score (mean RMSE / spread; {}), a cheaper kind preferred within {:.0} %", all.join(", "), CHEAPER_WITHIN * 100.0)))
 }
 
 /// See [`Comparison::chip_model_error`].

@@ -72,8 +72,8 @@ impl FilterCode {
             Leaf::Input(i) => u[i],
             Leaf::Covariance(k) => p[k],
             Leaf::Measurement(i) => y.map_or(T::literal(f32::NAN, f64::NAN), |y| y[i]),
-            // Parameters are the program's constants, read before this.
-            Leaf::Parameter(_) => T::literal(f32::NAN, f64::NAN),
+            // Parameters are the program's constants, read before this; a filter reads no map.
+            Leaf::Parameter(_) | Leaf::Map(_) | Leaf::Blend(_) => T::literal(f32::NAN, f64::NAN),
         });
         let n = self.states;
         let estimate = y.map(|_| results.drain(..n).collect());

@@ -25,6 +25,10 @@ pub enum Leaf {
     Covariance(usize),
     /// A measured output, by index ([`crate::plant::kalman`]).
     Measurement(usize),
+    /// The map's estimate of a state, by state index ([`crate::plant::correction`]).
+    Map(usize),
+    /// The start-up blend of a state, by state index ([`crate::plant::correction`]).
+    Blend(usize),
 }
 
 /// One operation; operands are indices of earlier operations.

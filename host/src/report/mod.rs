@@ -48,6 +48,8 @@ pub struct Report<'a> {
     pub ekf_tuning: Option<EkfTuning>,
     /// How the model-corrected map was tuned, or why the design has none.
     pub corrected_tuning: CorrectedTuning,
+    /// What the design's `observer()` is (`map`, `corrected` or `ekf`, the map-started EKF), and why.
+    pub observer: (crate::spec::ObserverKind, String),
     /// The model on the chip against the learning simulation's.
     pub chip_model: ChipModel,
 }
@@ -110,8 +112,16 @@ pub enum CorrectedTuning {
         k: Vec<f64>,
         /// `T`: the start-up blend's time constant, in estimates.
         schedule: f64,
+        /// `J`: estimates that take the start-up blend.
+        start_up: usize,
+        /// Each state's clamp (its map's range), lower ends.
+        lower: Vec<f64>,
+        /// Upper ends.
+        upper: Vec<f64>,
         /// Mean normalised RMSE on the tuning runs at the choice.
         cost: f64,
+        /// The same at the best of the search's starts.
+        start_cost: f64,
         /// Criterion evaluations (Nelder–Mead, every start).
         evaluations: u64,
     },
@@ -257,12 +267,17 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             p0_diagonal: t.constants.p0.clone(),
             x0: t.constants.x0.clone(),
         }),
+        observer: comparison.chosen.clone(),
         corrected_tuning: match &comparison.corrected {
             Ok(t) => CorrectedTuning::Tuned {
-                g: t.gains.g.clone(),
-                k: t.gains.k.clone(),
-                schedule: t.gains.schedule,
+                g: t.constants.g.clone(),
+                k: t.constants.k.clone(),
+                schedule: t.constants.schedule,
+                start_up: t.constants.start_up,
+                lower: t.constants.lower.clone(),
+                upper: t.constants.upper.clone(),
                 cost: t.cost,
+                start_cost: t.start_cost,
                 evaluations: t.evaluations,
             },
             Err(why) => CorrectedTuning::Unavailable {
@@ -290,7 +305,7 @@ pub fn observers_table(report: &Report<'_>) -> String {
         for (name, f) in &o.targets {
             let chip = match (&o.on_target, o.kind) {
                 (Some(c), _) => format!("{} / {}, {}", c.instructions_median, c.instructions_max, c.divisions),
-                (None, "corrected") => "host only (not emitted yet)".to_owned(),
+                (None, "corrected" | "ekf_started") => "by hand: `ON_TARGET_KIND` (README)".to_owned(),
                 (None, _) => "not measured".to_owned(),
             };
             let _ = writeln!(
@@ -308,13 +323,18 @@ pub fn observers_table(report: &Report<'_>) -> String {
     if report
         .observers
         .iter()
-        .any(|o| o.on_target.is_none() && o.kind != "corrected")
+        .any(|o| o.on_target.is_none() && matches!(o.kind, "map" | "ekf"))
     {
         let _ = writeln!(
             s,
             "\nOn-chip figures of this generated source are not measured yet: `cargo run -p integration-tests --bin on-target-report`."
         );
     }
+    let _ = writeln!(
+        s,
+        "\n`observer()` is {:?}: {}.",
+        report.observer.0, report.observer.1
+    );
     if let CorrectedTuning::Unavailable { unavailable } = &report.corrected_tuning {
         let _ = writeln!(s, "\nNo model-corrected map: {unavailable}.");
     }

@@ -47,6 +47,22 @@ pub enum Normalisation {
     Paper,
 }
 
+/// Which observer a design's `observer()` is (`[observer] kind`); the report judges every kind the
+/// design can have either way.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ObserverKind {
+    /// The best on the tuning runs by [`crate::observers::choose`]'s score (default).
+    #[default]
+    Auto,
+    /// The fitted map `F(Z)` alone.
+    Map,
+    /// The map corrected by the model ([`crate::observers::corrected`]).
+    Corrected,
+    /// The EKF started at the map's first estimate.
+    Ekf,
+}
+
 /// Values of one state for the learning grid and the validation box.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Axis {
@@ -201,6 +217,8 @@ pub struct Design {
     pub scenario: Option<Scenario>,
     /// The family this design belongs to, if any.
     pub family: Option<Family>,
+    /// `[observer] kind`.
+    pub observer: ObserverKind,
     /// SHA-256 of the spec text, in hex (provenance of generated files).
     pub spec_sha256: String,
 }

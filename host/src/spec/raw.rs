@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 
 use serde::Deserialize;
 
-use super::Normalisation;
+use super::{Normalisation, ObserverKind};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -22,6 +22,14 @@ pub(super) struct RawSpec {
     pub(super) targets: Vec<RawNamedExpr>,
     pub(super) scenario: Option<RawScenario>,
     pub(super) family: Option<RawFamily>,
+    pub(super) observer: Option<RawObserver>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawObserver {
+    #[serde(default)]
+    pub(super) kind: ObserverKind,
 }
 
 #[derive(Deserialize)]

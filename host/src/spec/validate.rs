@@ -152,6 +152,7 @@ impl Validator {
             targets,
             scenario,
             family,
+            observer: raw.observer.map(|o| o.kind).unwrap_or_default(),
             spec_sha256: String::new(),
         };
         limits::check_budget(&design)?;

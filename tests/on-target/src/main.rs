@@ -50,7 +50,7 @@ type Estimates = Option<[Estimate<f32>; d::TARGETS]>;
 /// One sample: what a user's firmware does every period. Not inlined, and its results are returned
 /// and printed, so nothing of `push` and `estimate` can be optimised away.
 #[inline(never)]
-fn step(observer: &mut d::Observer, y: &[f32; d::OUTPUTS], u: &[f32; d::INPUTS]) -> (bool, Estimates) {
+fn step(observer: &mut Measured, y: &[f32; d::OUTPUTS], u: &[f32; d::INPUTS]) -> (bool, Estimates) {
     measure_start();
     let accepted = observer.push(*y, *u).is_ok();
     let estimates = observer.estimate();
@@ -60,7 +60,7 @@ fn step(observer: &mut d::Observer, y: &[f32; d::OUTPUTS], u: &[f32; d::INPUTS])
 
 #[entry]
 fn main() -> ! {
-    let mut observer = d::observer();
+    let mut observer = fresh();
     let mut results: [(bool, Estimates); d::RECORDED_LEN] = [(false, None); d::RECORDED_LEN];
     let top = cortex_m::register::msp::read() as usize;
     for address in (top - PAINTED..top).step_by(4) {
@@ -87,7 +87,7 @@ fn main() -> ! {
         }
         hprintln!();
     }
-    hprintln!("S {}", core::mem::size_of::<d::Observer>());
+    hprintln!("S {}", core::mem::size_of::<Measured>());
     hprintln!("STACK {}", top - deepest);
     hprintln!("DONE");
     debug::exit(debug::EXIT_SUCCESS);

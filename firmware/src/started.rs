@@ -1,0 +1,240 @@
+//! Observers that the map starts and the model carries on: the model-corrected map and the EKF
+//! started at the map's first estimate.
+//!
+//! The map `F(Z)` needs no initial guess and has no transient, but it only sees `N` samples; a model
+//! carries information across all of them. [`Started`] joins the two: no estimate before `N` samples,
+//! then `x̂(N−1) = F(Z(N−1))`, then for every later sample a [`Follower`] updates `x̂` from what it
+//! carried and the new sample (reading the map during a start-up of [`Follower::START_UP`]
+//! estimates, and afterwards only if [`Follower::STEADY_READS_MAP`]). The model-corrected map is
+//!
+//! ```text
+//! x̂(k) = clamp(x̄ + g_j ⊙ (F(Z(k)) − x̄) + K (y(k) − h(x̄, u(k)))),    x̄ = f(x̂(k−1), u(k−1)),
+//! g_j = a table of the host's (start-up, j = 1 … START_UP),   g_j = G  (after),
+//! ```
+//!
+//! clamped to each state's learning range ([`clamp`]), so its estimate is bounded as the map's is.
+//! Generated designs implement [`Follower`] with their model written out as straight-line code.
+
+#![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(x >= lower)` is deliberate: a NaN must count as low.
+
+use core::marker::PhantomData;
+
+use crate::window::{Sample, Window};
+use crate::{Design, Estimate, RejectedSample, Saturation, Scalar};
+
+/// What carries the estimate from one sample to the next once the map has started it.
+pub trait Follower<T: Scalar, const NX: usize, const NY: usize, const NU: usize, const NT: usize> {
+    /// What is kept between samples (the predicted state; with its covariance for an EKF).
+    type Carried: Copy;
+    /// Estimates after the first (`j = 1 … START_UP`) that read the map and take the start-up path.
+    const START_UP: usize;
+    /// Whether the estimates after the start-up read the map.
+    const STEADY_READS_MAP: bool;
+    /// The target of each state: the map of target `STATE_TARGETS[i]` estimates state `i`.
+    const STATE_TARGETS: [usize; NX];
+
+    /// From the first estimate `x̂(N−1)` (the map's) and `u(N−1)`: what to carry, or `None` when it is
+    /// not finite.
+    fn start(first: &[T; NX], u: &[T; NU]) -> Option<Self::Carried>;
+
+    /// Estimate `j ≥ 1` (`start_up` is `j ≤ START_UP`; `j` is not counted beyond `START_UP + 1`)
+    /// from what was carried, the map's states (zeros when not read), `y(k)` and `u(k)`: what to
+    /// carry next and the states, or `None` when a result is not finite.
+    fn follow(
+        carried: &Self::Carried,
+        j: usize,
+        start_up: bool,
+        map: &[T; NX],
+        y: &[T; NY],
+        u: &[T; NU],
+    ) -> Option<(Self::Carried, [Estimate<T>; NX])>;
+
+    /// The targets at state `x` and input `u`.
+    fn targets(x: &[T; NX], u: &[T; NU]) -> [T; NT];
+}
+
+/// `x` clamped to `[lower, upper]` per entry, with the end it was clamped to (NaN goes to `lower`),
+/// by selects: the same instructions whatever the values.
+#[inline(always)]
+#[must_use]
+pub fn clamp<T: Scalar, const NX: usize>(x: &[T; NX], lower: &[T; NX], upper: &[T; NX]) -> [Estimate<T>; NX] {
+    let mut out = [Estimate {
+        value: T::ZERO,
+        saturation: Saturation::Inside,
+    }; NX];
+    for i in 0..NX {
+        let (low, high) = (!(x[i] >= lower[i]), x[i] > upper[i]);
+        let edge = select(low, lower[i], upper[i]);
+        let flag = select(low, Saturation::Low, Saturation::High);
+        out[i] = Estimate {
+            value: select(low | high, edge, x[i]),
+            saturation: select(low | high, flag, Saturation::Inside),
+        };
+    }
+    out
+}
+
+fn select<V>(condition: bool, a: V, b: V) -> V {
+    core::hint::select_unpredictable(condition, a, b)
+}
+
+/// The observer of map design `D` followed by `F`: `NT` targets from `NY` outputs and `NU` inputs,
+/// `NX` states, the map over the last `N` samples.
+///
+/// `push` takes every sample and does the work; `estimate` returns the latest estimate. Memory is
+/// fixed (the window, what `F` carries, the latest estimate). After the start-up every accepted
+/// sample runs the same instructions. A sample with a NaN or infinite value is refused and nothing
+/// changes; a sample whose follow-up is not finite (the model overflowed) is refused too, and
+/// only the map's window keeps it.
+pub struct Started<T: Scalar, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize>
+where
+    F: Follower<T, NX, NY, NU, NT>,
+{
+    window: Window<T, N, NY, NU>,
+    carried: Option<F::Carried>,
+    /// Estimates so far, up to `START_UP + 1`.
+    count: usize,
+    latest: Option<[Estimate<T>; NT]>,
+    design: PhantomData<fn() -> D>,
+}
+
+impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize>
+    Started<T, D, F, N, NY, NU, NT, NX>
+where
+    T: Scalar,
+    D: Design<T, N, NY, NU, NT>,
+    F: Follower<T, NX, NY, NU, NT>,
+{
+    /// An observer holding no sample.
+    #[must_use]
+    pub const fn new() -> Self {
+        Started {
+            window: Window::new(),
+            carried: None,
+            count: 0,
+            latest: None,
+            design: PhantomData,
+        }
+    }
+
+    /// Takes the sample of the current instant (see the type's docs).
+    #[inline]
+    pub fn push(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
+        if !D::accepts(&y, &u) {
+            return Err(RejectedSample);
+        }
+        let start_up = self.count <= F::START_UP;
+        let mut map = [T::ZERO; NX];
+        let mut estimates = None;
+        if start_up || F::STEADY_READS_MAP {
+            self.window.push(Sample { y, u });
+            let Some(window) = self.window.samples() else {
+                return Ok(()); // fewer than N samples: no estimate yet
+            };
+            let all = D::estimate(window);
+            for (m, &t) in map.iter_mut().zip(&F::STATE_TARGETS) {
+                *m = all.get(t).map_or(T::ZERO, |e| e.value);
+            }
+            estimates = Some(all);
+        }
+        match (&self.carried, estimates) {
+            (None, Some(first)) => {
+                let carried = F::start(&map, &u).ok_or(RejectedSample)?;
+                self.carried = Some(carried);
+                self.latest = Some(first);
+            }
+            (Some(carried), _) => {
+                let (next, states) = F::follow(carried, self.count, start_up, &map, &y, &u).ok_or(RejectedSample)?;
+                self.carried = Some(next);
+                let mut x = [T::ZERO; NX];
+                for (x, state) in x.iter_mut().zip(&states) {
+                    *x = state.value;
+                }
+                let values = F::targets(&x, &u);
+                let mut targets = [Estimate {
+                    value: T::ZERO,
+                    saturation: Saturation::Inside,
+                }; NT];
+                for (target, &value) in targets.iter_mut().zip(&values) {
+                    target.value = value;
+                }
+                for (state, &t) in states.iter().zip(&F::STATE_TARGETS) {
+                    if let Some(target) = targets.get_mut(t) {
+                        target.saturation = state.saturation;
+                    }
+                }
+                self.latest = Some(targets);
+            }
+            // Unreachable: without a carried state the map is read, and the window is full here.
+            (None, None) => return Ok(()),
+        }
+        self.count = if start_up { self.count + 1 } else { self.count };
+        Ok(())
+    }
+
+    /// The latest estimate, one per target, or `None` before `N` samples have arrived.
+    #[inline]
+    #[must_use]
+    pub fn estimate(&self) -> Option<[Estimate<T>; NT]> {
+        self.latest
+    }
+
+    /// Forgets every sample (a new batch or run starts).
+    pub fn reset(&mut self) {
+        *self = Self::new();
+    }
+
+    /// `true` once an estimate is available.
+    #[must_use]
+    pub fn is_ready(&self) -> bool {
+        self.latest.is_some()
+    }
+}
+
+impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> Default
+    for Started<T, D, F, N, NY, NU, NT, NX>
+where
+    T: Scalar,
+    D: Design<T, N, NY, NU, NT>,
+    F: Follower<T, NX, NY, NU, NT>,
+{
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> Clone
+    for Started<T, D, F, N, NY, NU, NT, NX>
+where
+    T: Scalar,
+    F: Follower<T, NX, NY, NU, NT>,
+{
+    fn clone(&self) -> Self {
+        Started {
+            window: self.window.clone(),
+            carried: self.carried,
+            count: self.count,
+            latest: self.latest,
+            design: PhantomData,
+        }
+    }
+}
+
+impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> core::fmt::Debug
+    for Started<T, D, F, N, NY, NU, NT, NX>
+where
+    T: Scalar,
+    F: Follower<T, NX, NY, NU, NT>,
+{
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Started")
+            .field("design", &core::any::type_name::<D>())
+            .field("follower", &core::any::type_name::<F>())
+            .field("estimates", &self.count)
+            .field("latest", &self.latest)
+            .finish()
+    }
+}
+
+#[cfg(test)]
+mod tests;

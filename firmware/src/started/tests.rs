@@ -1,0 +1,169 @@
+use super::*;
+use crate::{InverseTable, Knots, TargetMap};
+
+// The map: r = 10 (0.5 y(k) + 0.5 y(k−1)) on [0, 10] (one segment, r = 10 t).
+struct Mean;
+impl Design<f64, 2, 1, 0, 1> for Mean {
+    const MAPS: [TargetMap<'static, f64>; 1] = [TargetMap {
+        gains: &[0.5, 0.5],
+        offset: 0.0,
+        inverse: InverseTable {
+            knots: Knots::Uniform,
+            segments: &[[0.0, 10.0]],
+            t_max: 1.0,
+            r_min: 0.0,
+            r_max: 10.0,
+        },
+    }];
+}
+
+// The follower: x⁺ = 0.5 x, h = x, x̂ = clamp(x̄ + g (F − x̄) + 0.25 (y − x̄)) to [0, 10], start-up
+// blend 1 − 0.25 j for j = 1, 2, then G (0.5 when `READS`, else 0).
+struct Halving<const READS: bool>;
+impl<const READS: bool> Follower<f64, 1, 1, 0, 1> for Halving<READS> {
+    type Carried = [f64; 1];
+    const START_UP: usize = 2;
+    const STEADY_READS_MAP: bool = READS;
+    const STATE_TARGETS: [usize; 1] = [0];
+
+    fn start(first: &[f64; 1], _: &[f64; 0]) -> Option<[f64; 1]> {
+        Some([0.5 * first[0]])
+    }
+
+    fn follow(
+        carried: &[f64; 1],
+        j: usize,
+        start_up: bool,
+        map: &[f64; 1],
+        y: &[f64; 1],
+        _: &[f64; 0],
+    ) -> Option<([f64; 1], [Estimate<f64>; 1])> {
+        let g = if start_up {
+            1.0 - 0.25 * j as f64
+        } else if READS {
+            0.5
+        } else {
+            0.0
+        };
+        let x = carried[0];
+        let raw = x + g * (map[0] - x) + 0.25 * (y[0] - x);
+        let state = clamp(&[raw], &[0.0], &[10.0]);
+        let next = 0.5 * state[0].value;
+        next.is_finite().then_some(([next], state))
+    }
+
+    fn targets(x: &[f64; 1], _: &[f64; 0]) -> [f64; 1] {
+        *x
+    }
+}
+
+/// The same observer written as a plain recursion, sample by sample: `(estimate, map read)`.
+fn by_hand(ys: &[f64], g_steady: f64) -> Vec<Option<f64>> {
+    let mut out = Vec::new();
+    let mut predicted = 0.0;
+    for k in 0..ys.len() {
+        if k == 0 {
+            out.push(None);
+            continue;
+        }
+        let map = 10.0 * (0.5 * ys[k] + 0.5 * ys[k - 1]);
+        let j = (k - 1) as f64;
+        let x = if k == 1 {
+            map
+        } else {
+            let g = if j <= 2.0 { 1.0 - 0.25 * j } else { g_steady };
+            (predicted + g * (map - predicted) + 0.25 * (ys[k] - predicted)).clamp(0.0, 10.0)
+        };
+        predicted = 0.5 * x;
+        out.push(Some(x));
+    }
+    out
+}
+
+fn ys() -> Vec<f64> {
+    (0..12).map(|k| 0.3 + 0.05 * (k as f64)).collect()
+}
+
+#[test]
+fn follows_the_recursion_through_start_up_and_steady_state() {
+    for (reads, g) in [(true, 0.5), (false, 0.0)] {
+        let expected = by_hand(&ys(), g);
+        let mut with_map: Started<f64, Mean, Halving<true>, 2, 1, 0, 1, 1> = Started::new();
+        let mut without: Started<f64, Mean, Halving<false>, 2, 1, 0, 1, 1> = Started::new();
+        for (k, y) in ys().into_iter().enumerate() {
+            let got = if reads {
+                with_map.push([y], []).unwrap();
+                with_map.estimate()
+            } else {
+                without.push([y], []).unwrap();
+                without.estimate()
+            };
+            let got = got.map(|[e]| e.value);
+            match (got, expected[k]) {
+                (Some(a), Some(b)) => assert!((a - b).abs() < 1e-12, "reads {reads}, k = {k}: {a} vs {b}"),
+                (a, b) => assert_eq!(a, b, "reads {reads}, k = {k}"),
+            }
+        }
+    }
+}
+
+#[test]
+fn the_map_is_not_read_after_the_start_up_unless_the_steady_blend_needs_it() {
+    // After the start-up, the map of a follower whose G is 0 would see a sample that changes it, but
+    // the estimate does not move with it; one whose G is not 0 does.
+    let run = |reads_map: bool, last: f64| {
+        let mut ys = ys();
+        *ys.last_mut().unwrap() = last;
+        if reads_map {
+            let mut o: Started<f64, Mean, Halving<true>, 2, 1, 0, 1, 1> = Started::new();
+            ys.iter().for_each(|&y| o.push([y], []).unwrap());
+            o.estimate().unwrap()[0].value
+        } else {
+            let mut o: Started<f64, Mean, Halving<false>, 2, 1, 0, 1, 1> = Started::new();
+            ys.iter().for_each(|&y| o.push([y], []).unwrap());
+            o.estimate().unwrap()[0].value
+        }
+    };
+    // y enters through the innovation (0.25 y) in both; through the map (0.5 · 10 · 0.5 y) only in one.
+    let without = run(false, 1.0) - run(false, 0.0);
+    let with = run(true, 1.0) - run(true, 0.0);
+    assert!((without - 0.25).abs() < 1e-12, "{without}");
+    assert!((with - (0.25 + 0.5 * 5.0)).abs() < 1e-12, "{with}");
+}
+
+#[test]
+fn refused_samples_change_nothing_and_clamps_are_flagged() {
+    let mut o: Started<f64, Mean, Halving<true>, 2, 1, 0, 1, 1> = Started::new();
+    o.push([0.4], []).unwrap();
+    assert!(o.estimate().is_none() && !o.is_ready());
+    o.push([0.6], []).unwrap();
+    let first = o.estimate().unwrap();
+    assert_eq!(first[0].value, 5.0);
+    let before = o.clone();
+    assert_eq!(o.push([f64::NAN], []), Err(RejectedSample));
+    assert_eq!(o.push([f64::INFINITY], []), Err(RejectedSample));
+    assert_eq!(o.estimate(), before.estimate());
+    // The same next sample gives the same estimate as if the refused ones had not come.
+    let mut twin = before.clone();
+    o.push([0.5], []).unwrap();
+    twin.push([0.5], []).unwrap();
+    assert_eq!(o.estimate(), twin.estimate());
+    // A large measurement drives the corrected state past the range: clamped and flagged.
+    o.push([1e6], []).unwrap();
+    let [e] = o.estimate().unwrap();
+    assert_eq!((e.value, e.saturation), (10.0, Saturation::High));
+    o.push([-1e6], []).unwrap();
+    o.push([-1e6], []).unwrap();
+    let [e] = o.estimate().unwrap();
+    assert_eq!((e.value, e.saturation), (0.0, Saturation::Low));
+    o.reset();
+    assert!(o.estimate().is_none());
+}
+
+#[test]
+fn clamp_sends_nan_to_the_lower_end() {
+    let [a, b, c] = clamp(&[f64::NAN, 0.5, 3.0], &[0.0; 3], &[1.0; 3]);
+    assert_eq!((a.value, a.saturation), (0.0, Saturation::Low));
+    assert_eq!((b.value, b.saturation), (0.5, Saturation::Inside));
+    assert_eq!((c.value, c.saturation), (1.0, Saturation::High));
+}

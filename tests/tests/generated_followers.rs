@@ -1,0 +1,156 @@
+//! The generated observers started by the map (`Corrector`, `StartedEkf` in `firmware::Started`)
+//! against the host's own runs of the same observers (`host::observers::corrected::estimate_run`,
+//! `host::observers::ekf::estimate_started`), in f32 over each design's recorded sequence: bit for
+//! bit, so that the report's figures are what the chip computes. The recorded sequence holds samples
+//! the observers must refuse; the host runs the accepted ones only, which is also the contract
+//! (a refused sample changes nothing).
+
+use firmware::{Follower, Started};
+use host::data::{Rows, Run};
+use host::observers::{corrected, ekf};
+use host::plant::correction::{correction_code, CorrectionConstants};
+use host::plant::kalman::{filter_code, EkfConstants};
+use host::plant::ModelCode;
+use integration_tests::load_relative;
+
+macro_rules! check_followers {
+    ($test:ident, $module:ident) => {
+        #[test]
+        fn $test() {
+            use generated::$module as d;
+            let design = load_relative(d::SPEC);
+            let code = ModelCode::new(&design).unwrap();
+            let accepted: Vec<([f32; d::OUTPUTS], [f32; d::INPUTS])> = d::RECORDED_Y
+                .iter()
+                .zip(&d::RECORDED_U)
+                .filter(|(y, u)| y.iter().chain(u.iter()).all(|v| v.is_finite()))
+                .map(|(y, u)| (*y, *u))
+                .collect();
+            assert!(
+                accepted.len() < d::RECORDED_LEN,
+                "the sequence holds refused samples"
+            );
+            let widen = |rows: Vec<Vec<f64>>| Rows::from(rows);
+            let run = Run {
+                states: widen(vec![vec![0.0; d::STATES]; accepted.len()]),
+                inputs: widen(
+                    accepted
+                        .iter()
+                        .map(|(_, u)| u.iter().map(|&v| f64::from(v)).collect())
+                        .collect(),
+                ),
+                measurements: widen(
+                    accepted
+                        .iter()
+                        .map(|(y, _)| y.iter().map(|&v| f64::from(v)).collect())
+                        .collect(),
+                ),
+                targets: widen(vec![vec![0.0; d::TARGETS]; accepted.len()]),
+            };
+            // The map's f32 estimates, as the chip computes them.
+            let mut map = d::map_observer();
+            let maps: Vec<Vec<f32>> = accepted
+                .iter()
+                .map(|(y, u)| {
+                    map.push(*y, *u).unwrap();
+                    map.estimate().map_or(vec![f32::NAN; d::TARGETS], |e| {
+                        e.iter().map(|e| e.value).collect()
+                    })
+                })
+                .collect();
+            /// Runs a generated observer over the whole recorded sequence (refused samples included).
+            fn chip<F: Follower<f32, { d::STATES }, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>>() -> Vec<Vec<u32>> {
+                let mut observer: Started<
+                    f32,
+                    d::Design,
+                    F,
+                    { d::HORIZON },
+                    { d::OUTPUTS },
+                    { d::INPUTS },
+                    { d::TARGETS },
+                    { d::STATES },
+                > = Started::new();
+                let mut out = Vec::new();
+                for (y, u) in d::RECORDED_Y.iter().zip(&d::RECORDED_U) {
+                    let finite = y.iter().chain(u.iter()).all(|v| v.is_finite());
+                    assert_eq!(observer.push(*y, *u).is_ok(), finite);
+                    if finite {
+                        out.push(
+                            observer
+                                .estimate()
+                                .map_or(vec![f32::NAN.to_bits(); d::TARGETS], |e| {
+                                    e.iter().map(|e| e.value.to_bits()).collect()
+                                }),
+                        );
+                    }
+                }
+                out
+            }
+            let bits = |rows: Vec<Vec<f32>>| -> Vec<Vec<u32>> {
+                rows.iter()
+                    .map(|r| r.iter().map(|v| v.to_bits()).collect())
+                    .collect()
+            };
+            let state_targets = corrected::state_targets(&design).unwrap();
+            let first = design.map.horizon - 1;
+
+            let constants = CorrectionConstants {
+                g: d::CORRECTED_G.to_vec(),
+                k: d::CORRECTED_K.to_vec(),
+                schedule: d::CORRECTED_SCHEDULE,
+                start_up: <d::Corrector as Follower<
+                    f32,
+                    { d::STATES },
+                    { d::OUTPUTS },
+                    { d::INPUTS },
+                    { d::TARGETS },
+                >>::START_UP,
+                lower: d::CORRECTED_LOWER.to_vec(),
+                upper: d::CORRECTED_UPPER.to_vec(),
+                substeps: design.chip_substeps,
+                h: design.tau / design.chip_substeps as f64,
+            };
+            let setting = corrected::Setting {
+                code: &code,
+                h: constants.h,
+                substeps: constants.substeps,
+                state_targets: &state_targets,
+                first,
+                lower: constants.lower.clone(),
+                upper: constants.upper.clone(),
+            };
+            let host = corrected::estimate_run::<f32>(
+                &setting,
+                &correction_code(&code, &constants),
+                &constants,
+                &maps,
+                &run,
+            );
+            let chip_corrected = chip::<d::Corrector>();
+            assert_eq!(chip_corrected, bits(host));
+            assert!(
+                chip_corrected
+                    .iter()
+                    .filter(|r| f32::from_bits(r[0]).is_finite())
+                    .count()
+                    > 50
+            );
+
+            let filter = filter_code(
+                &code,
+                &EkfConstants {
+                    x0: vec![0.0; d::STATES],
+                    p0: vec![0.0; d::STATES],
+                    q: d::EKF_Q.to_vec(),
+                    r: design.model.outputs.iter().map(|o| o.noise_variance).collect(),
+                    substeps: design.chip_substeps,
+                    h: design.tau / design.chip_substeps as f64,
+                },
+            );
+            let host = ekf::estimate_started::<f32>(&filter, &d::STARTED_P0, &state_targets, first, &maps, &run, &code);
+            assert_eq!(chip::<d::StartedEkf>(), bits(host));
+        }
+    };
+}
+
+check_followers!(vanderpol_followers_are_the_hosts, vanderpol);
