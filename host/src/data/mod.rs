@@ -275,6 +275,41 @@ mod tests {
         expr = "x"
     "#;
 
+    /// A first-order lag with an input and parameters: `ẋ = (k u - x)/T`, `y = x`.
+    const LAG: &str = r#"
+        name = "lag"
+        [model]
+        states = ["x"]
+        inputs = ["u"]
+        parameters = { k = 2.0, T = 0.7 }
+        derivatives.x = "(k*u - x)/T"
+        outputs = [{ name = "y", expr = "x", noise_variance = 0.01 }]
+        [sampling]
+        tau = 0.1
+        substeps = 4
+        [learning]
+        samples = 30
+        seed = 5
+        grid.x = { min = -1.0, max = 1.0, points = 4 }
+        inputs.u = { min = -1.0, max = 1.0, hold = 3 }
+        [validation]
+        trajectories = 5
+        samples = 25
+        seed = 6
+        [map]
+        horizon = 3
+        nm = 2
+        beta = 1.0
+        epsilon = 0.01
+        [[targets]]
+        name = "x"
+        expr = "x"
+        [scenario]
+        x0 = { x = 0.3 }
+        samples = 20
+        seed = 8
+    "#;
+
     #[test]
     fn windows_and_regressors_follow_the_convention() {
         let design = crate::spec::parse(Path::new("clock.toml"), CLOCK).unwrap();
@@ -306,6 +341,85 @@ mod tests {
         assert_eq!(a.runs[1].inputs, b.runs[1].inputs);
         let learning = learning_set(&design).unwrap();
         assert_ne!(a.runs[0].inputs, learning.runs[0].inputs);
+    }
+
+    /// FNV-1a over the bits of every number of every run, in order: one value that changes when any
+    /// state, input, measurement or target of the set changes by one ulp.
+    fn fingerprint(data: &DataSet) -> u64 {
+        let mut hash = 0xcbf2_9ce4_8422_2325_u64;
+        for run in &data.runs {
+            for rows in [&run.states, &run.inputs, &run.measurements, &run.targets] {
+                for value in rows.iter().flatten() {
+                    for byte in value.to_bits().to_le_bytes() {
+                        hash = (hash ^ u64::from(byte)).wrapping_mul(0x0100_0000_01b3);
+                    }
+                }
+            }
+        }
+        hash
+    }
+
+    /// The data of designs without uncertain parameters, bit for bit: the fingerprints of the learning,
+    /// validation and tuning sets and of the scenario run (when there is one), recorded on commit
+    /// 8afa2e3, before parameters could have ranges. A change of any number, or of the order in which
+    /// the seeded generator is drawn from, changes them.
+    #[test]
+    fn data_of_designs_without_uncertainty_are_unchanged() {
+        let specs: [(&str, &str, &[u64]); 4] = [
+            (
+                "vanderpol.toml",
+                include_str!("../../specs/vanderpol.toml"),
+                &[
+                    0x1ad9537a3298baae,
+                    0x6d07d1944dfba7e4,
+                    0x6992cc728e5a9677,
+                    0x5f0abdf2051990e3,
+                ],
+            ),
+            (
+                "ecoli_x0_0p5.toml",
+                include_str!("../../specs/ecoli_x0_0p5.toml"),
+                &[
+                    0x026701f1120ff900,
+                    0xc073017b424c1b4f,
+                    0x60667de660fe253f,
+                    0xa54e47ab120561eb,
+                ],
+            ),
+            (
+                "clock.toml",
+                CLOCK,
+                &[0xc740017051f01dd6, 0x9785931629337735, 0xb3c6cc57771f8138],
+            ),
+            (
+                "lag.toml",
+                LAG,
+                &[
+                    0x06917c6fe73703f6,
+                    0xd5620cc4f76c6d7a,
+                    0xba3761529ce2e868,
+                    0x039b5b87a69d142a,
+                ],
+            ),
+        ];
+        for (name, text, expected) in specs {
+            let design = crate::spec::parse(Path::new(name), text).unwrap();
+            let sets = [
+                learning_set(&design).unwrap(),
+                validation_set(&design).unwrap(),
+                tuning_set(&design).unwrap(),
+            ];
+            let mut prints: Vec<u64> = sets.iter().map(fingerprint).collect();
+            if let Some(s) = &design.scenario {
+                let mut rng = ChaCha8Rng::seed_from_u64(s.seed);
+                let run = simulate_run(&design, &s.x0, s.samples, &mut rng, "scenario").unwrap();
+                prints.push(fingerprint(&DataSet {
+                    runs: vec![run],
+                    horizon: 1,
+                }));
+            }
+            assert_eq!(prints, expected, "{name}: learning, validation, tuning, scenario");
+        }
     }
 
     #[test]
