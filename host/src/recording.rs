@@ -385,6 +385,7 @@ mod tests {
             inputs: rows.iter().map(|r| r.u.clone()).collect(),
             measurements: rows.iter().map(|r| r.y.clone()).collect(),
             targets: vec![vec![]; rows.len()].into(),
+            parameters: Vec::new(),
         };
         let data = DataSet {
             runs: vec![as_run(&rows[..6]), as_run(&rows[6..])],

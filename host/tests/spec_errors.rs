@@ -29,6 +29,11 @@
 //! span of the unexpected text, and the root deserializer gives the whole document's span to any
 //! serde error that has none (a missing top-level field is reported at `(line 1)`, see
 //! `toml_missing_top_level_field`).
+//!
+//! Parameters with a range (`{ value, min, max }`) then added 6 sites, all reached by the table: 5 in
+//! `validate_model.rs` `parameter_range` (bounds not finite, inverted, empty; value not finite,
+//! outside) and `at_most_uncertain` in `limits.rs`; the table also reaches the type check of `raw.rs`
+//! `RawParameter` (through `parse`) and the mismatch runs' share of the budget.
 
 use std::collections::HashSet;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -154,6 +159,22 @@ const CASES: &[Case] = &[
     // ---- validate_model.rs `model`: values of parameters and noise variances.
     case("parameter_nan", E05, &[Swap("mu_m = 0.2 ", "mu_m = nan ")], Exact("model.parameters.mu_m"), "finite number"),
     case("parameter_infinite", Vdp, &[Swap("[model.derivatives]", "[model.parameters]\nk = -inf\n\n[model.derivatives]")], Exact("model.parameters.k"), "finite number"),
+    // A parameter with a range, `{ value, min, max }` (validate_model.rs `parameter_range`): each error
+    // names the key to change, as for the bounds of an axis.
+    case("parameter_range_inverted", E05, &[Swap("mu_m = 0.2 ", "mu_m = { value = 0.2, min = 0.3, max = 0.1 } ")], Exact("model.parameters.mu_m.max"), "swap `min` and `max`"),
+    case("parameter_range_empty", E05, &[Swap("mu_m = 0.2 ", "mu_m = { value = 0.2, min = 0.2, max = 0.2 } ")], Exact("model.parameters.mu_m.max"), "plain number: `mu_m = 0.2`"),
+    case("parameter_range_min_infinite", E05, &[Swap("mu_m = 0.2 ", "mu_m = { value = 0.2, min = -inf, max = 0.3 } ")], Exact("model.parameters.mu_m.min"), "finite bounds"),
+    case("parameter_range_max_nan", E05, &[Swap("mu_m = 0.2 ", "mu_m = { value = 0.2, min = 0.1, max = nan } ")], Exact("model.parameters.mu_m.max"), "finite bounds"),
+    case("parameter_range_span_overflows", Vdp, &[Swap("[model.derivatives]", "[model.parameters]\na = { value = 0.0, min = -1e308, max = 1e308 }\n\n[model.derivatives]")], Exact("model.parameters.a.max"), "finite bounds"),
+    case("parameter_range_value_nan", E05, &[Swap("mu_m = 0.2 ", "mu_m = { value = nan, min = 0.1, max = 0.3 } ")], Exact("model.parameters.mu_m.value"), "finite value"),
+    case("parameter_range_value_above", E05, &[Swap("mu_m = 0.2 ", "mu_m = { value = 0.4, min = 0.1, max = 0.3 } ")], Exact("model.parameters.mu_m.value"), "between `min` and `max`"),
+    case("parameter_range_value_below", E2, &[Swap("k_s = 0.1 ", "k_s = { value = 0.01, min = 0.05, max = 0.2 } ")], Exact("model.parameters.k_s.value"), "widen the range"),
+    // The TOML of a parameter: a number or a table of exactly `value`, `min`, `max` (raw.rs `RawParameter`).
+    case("parameter_range_without_max", E05, &[Swap("mu_m = 0.2 ", "mu_m = { value = 0.2, min = 0.1 } ")], Exact("model.parameters.mu_m"), "TOML"),
+    case("parameter_range_unknown_key", E05, &[Swap("mu_m = 0.2 ", "mu_m = { value = 0.2, min = 0.1, max = 0.3, mid = 0.2 } ")], Exact("model.parameters.mu_m.mid"), "TOML"),
+    case("parameter_not_a_number", E05, &[Swap("mu_m = 0.2 ", "mu_m = \"0.2\" ")], Exact("model.parameters.mu_m"), "TOML"),
+    // limits.rs: at most 8 parameters with a range (the mismatch set runs all 2^p corners).
+    case("parameter_ranges_too_many", Vdp, &[Swap("[model.derivatives]", "[model.parameters]\na1 = { value = 0.0, min = -1.0, max = 1.0 }\na2 = { value = 0.0, min = -1.0, max = 1.0 }\na3 = { value = 0.0, min = -1.0, max = 1.0 }\na4 = { value = 0.0, min = -1.0, max = 1.0 }\na5 = { value = 0.0, min = -1.0, max = 1.0 }\na6 = { value = 0.0, min = -1.0, max = 1.0 }\na7 = { value = 0.0, min = -1.0, max = 1.0 }\na8 = { value = 0.0, min = -1.0, max = 1.0 }\na9 = { value = 0.0, min = -1.0, max = 1.0 }\n\n[model.derivatives]")], Exact("model.parameters.a9"), "at most 8 parameters a range"),
     case("noise_variance_negative", Vdp, &[Swap("noise_variance = 0.2", "noise_variance = -0.2")], Exact("model.outputs[0].noise_variance"), "variance"),
     case("noise_variance_nan", E05, &[Swap("noise_variance = 20.0", "noise_variance = nan")], Exact("model.outputs[1].noise_variance"), "0 for none"),
 
@@ -253,6 +274,11 @@ const CASES: &[Case] = &[
     // Every size within its bound, the total beyond the budget: 8·10⁷ stored samples, then 2·10¹¹ RK4 steps.
     case("budget_stored_values", Vdp, &[Swap("samples = 100\nseed = 1", "samples = 5000000\nseed = 1")], Exact("learning"), "shorter runs"),
     case("budget_simulation_steps", Vdp, &[Swap("substeps = 10 ", "substeps = 10000 "), Swap("trajectories = 64", "trajectories = 200000")], Exact("learning"), "fewer `sampling.substeps`"),
+    // The mismatch runs count too: 2⁸ corners × 4·10⁵ validation samples take 1.03·10⁹ steps (8·10⁶ without them).
+    case("budget_mismatch_runs", Vdp, &[
+        Swap("[model.derivatives]", "[model.parameters]\na1 = { value = 0.0, min = -1.0, max = 1.0 }\na2 = { value = 0.0, min = -1.0, max = 1.0 }\na3 = { value = 0.0, min = -1.0, max = 1.0 }\na4 = { value = 0.0, min = -1.0, max = 1.0 }\na5 = { value = 0.0, min = -1.0, max = 1.0 }\na6 = { value = 0.0, min = -1.0, max = 1.0 }\na7 = { value = 0.0, min = -1.0, max = 1.0 }\na8 = { value = 0.0, min = -1.0, max = 1.0 }\n\n[model.derivatives]"),
+        Swap("trajectories = 64", "trajectories = 4000"),
+    ], Exact("learning"), "fewer parameters with a range"),
     // The tuning runs count too: 10⁹ samples of them alone, everything else as shipped.
     case("budget_tuning_runs", Vdp, &[Swap("[tuning]", "[tuning]\ntrajectories = 1000000\nsamples = 1000")], Exact("learning"), "fewer validation or tuning runs"),
 

@@ -8,14 +8,17 @@
 
 pub mod rows;
 pub mod simulate;
+pub mod uncertain;
 
 pub use rows::Rows;
+pub use uncertain::{corner_set, corners, mismatch_seed, mismatch_set};
 
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, Normal};
 
 use crate::data::simulate::{BlowUp, Integrator};
+use crate::spec::model::Model;
 use crate::spec::{Axis, Design, InputProfile, SpecError};
 
 /// One simulated run, one row per sample.
@@ -29,6 +32,10 @@ pub struct Run {
     pub measurements: Rows,
     /// `r(k)` per target, noise-free.
     pub targets: Rows,
+    /// The parameter values of the plant it was simulated on, one per parameter of the model in the
+    /// order of `Model::parameters`: drawn for the uncertain ones (see [`uncertain`]), nominal for the
+    /// others. Empty for a run that was not simulated (recorded data).
+    pub parameters: Vec<f64>,
 }
 
 /// A set of runs and the horizon that cuts them into windows.
@@ -93,13 +100,19 @@ impl DataSet {
 
 /// The learning set: one run per point of the grid (the Cartesian product of the axes, the first
 /// state varying slowest), each with its own input profile and noise.
+///
+/// When the model has uncertain parameters, each run's plant draws them first (before its input
+/// profile and its noise, from the same generator; see [`uncertain::draw_plant`]); otherwise nothing
+/// is drawn for them and the data are those of a model without ranges.
 pub fn learning_set(design: &Design) -> Result<DataSet, SpecError> {
     let mut rng = ChaCha8Rng::seed_from_u64(design.learning.seed);
     let grids: Vec<Vec<f64>> = design.learning.axes.iter().map(Axis::grid).collect();
     let mut runs = Vec::new();
     for x0 in cartesian(&grids) {
-        runs.push(simulate_run(
+        let plant = uncertain::draw_plant(&design.model, &mut rng);
+        runs.push(simulate_plant(
             design,
+            plant.as_ref().unwrap_or(&design.model),
             &x0,
             design.learning.samples,
             &mut rng,
@@ -113,30 +126,42 @@ pub fn learning_set(design: &Design) -> Result<DataSet, SpecError> {
 }
 
 /// The validation set: `trajectories` runs from states drawn uniformly in the box, with their own
-/// inputs and noise (a different seed from the learning set's).
+/// inputs and noise (a different seed from the learning set's). Each run draws, in this order from
+/// the set's generator: its uncertain parameters (none when the model has none; see
+/// [`uncertain::draw_plant`]), its initial state, its inputs, its noise.
 pub fn validation_set(design: &Design) -> Result<DataSet, SpecError> {
-    random_runs(design, &design.validation, "validation")
+    random_runs(design, &design.validation, "validation", None)
 }
 
 /// The tuning set: runs drawn as the validation set's, from `[tuning]`'s own seed.
 pub fn tuning_set(design: &Design) -> Result<DataSet, SpecError> {
-    random_runs(design, &design.tuning, "tuning")
+    random_runs(design, &design.tuning, "tuning", None)
 }
 
-fn random_runs(design: &Design, settings: &crate::spec::Validation, set: &str) -> Result<DataSet, SpecError> {
+/// `settings.trajectories` runs, each drawing its plant (unless `fixed` gives it, or no parameter is
+/// uncertain), then its initial state in the box, then its inputs and noise.
+fn random_runs(
+    design: &Design,
+    settings: &crate::spec::Validation,
+    set: &str,
+    fixed: Option<&Model>,
+) -> Result<DataSet, SpecError> {
     let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
     let mut runs = Vec::new();
     for _ in 0..settings.trajectories {
-        let x0: Vec<f64> = design
-            .learning
-            .axes
-            .iter()
-            .map(|axis| match *axis {
-                Axis::Range { min, max, .. } => rng.random_range(min..=max),
-                Axis::Fixed(value) => value,
-            })
-            .collect();
-        runs.push(simulate_run(design, &x0, settings.samples, &mut rng, set)?);
+        let drawn = match fixed {
+            Some(_) => None,
+            None => uncertain::draw_plant(&design.model, &mut rng),
+        };
+        let x0 = random_state(design, &mut rng);
+        runs.push(simulate_plant(
+            design,
+            fixed.or(drawn.as_ref()).unwrap_or(&design.model),
+            &x0,
+            settings.samples,
+            &mut rng,
+            set,
+        )?);
     }
     Ok(DataSet {
         runs,
@@ -144,8 +169,21 @@ fn random_runs(design: &Design, settings: &crate::spec::Validation, set: &str) -
     })
 }
 
-/// Simulates one run of `samples` samples from `x0`: draws its inputs, integrates, evaluates targets
-/// and adds output noise, all from `rng` in that order.
+/// An initial state drawn uniformly in the box of the learning grid (fixed axes held).
+fn random_state(design: &Design, rng: &mut ChaCha8Rng) -> Vec<f64> {
+    design
+        .learning
+        .axes
+        .iter()
+        .map(|axis| match *axis {
+            Axis::Range { min, max, .. } => rng.random_range(min..=max),
+            Axis::Fixed(value) => value,
+        })
+        .collect()
+}
+
+/// Simulates one run of `samples` samples from `x0` on the nominal model: draws its inputs,
+/// integrates, evaluates targets and adds output noise, all from `rng` in that order.
 pub fn simulate_run(
     design: &Design,
     x0: &[f64],
@@ -153,29 +191,45 @@ pub fn simulate_run(
     rng: &mut ChaCha8Rng,
     set: &str,
 ) -> Result<Run, SpecError> {
-    let model = &design.model;
+    simulate_plant(design, &design.model, x0, samples, rng, set)
+}
+
+/// [`simulate_run`] on the plant `plant` (the design's model with other parameter values, see
+/// `Model::with_parameters`): its states, outputs and targets, the run recording its parameters. A
+/// target that reads a parameter uses the plant's value: it is the true quantity of that plant.
+pub fn simulate_plant(
+    design: &Design,
+    plant: &Model,
+    x0: &[f64],
+    samples: usize,
+    rng: &mut ChaCha8Rng,
+    set: &str,
+) -> Result<Run, SpecError> {
+    let at = RunContext { design, plant, x0, set };
     let inputs = input_sequence(&design.learning.inputs, samples, rng);
-    let states = Integrator::new(model, design.tau, design.substeps)
+    let states = Integrator::new(plant, design.tau, design.substeps)
         .run(x0, &inputs)
-        .map_err(|e| blow_up_error(design, x0, set, e))?;
-    let noise: Vec<Normal<f64>> = model
+        .map_err(|e| blow_up_error(&at, e))?;
+    let noise: Vec<Normal<f64>> = plant
         .outputs
         .iter()
         .map(|o| Normal::new(0.0, o.noise_variance.sqrt()).expect("variance validated finite and ≥ 0"))
         .collect();
     let mut environment = Vec::new();
-    let mut measurements = Rows::new(model.outputs.len());
+    let mut measurements = Rows::new(plant.outputs.len());
     let mut targets = Rows::new(design.targets.len());
     for (k, (x, u)) in states.iter().zip(inputs.iter()).enumerate() {
-        let mut y = vec![0.0; model.outputs.len()];
-        model.outputs(x, u, &mut environment, &mut y);
+        let mut y = vec![0.0; plant.outputs.len()];
+        plant.outputs(x, u, &mut environment, &mut y);
         let r: Vec<f64> = design.targets.iter().map(|t| t.expr.eval(&environment)).collect();
         if let Some(i) = y.iter().position(|v| !v.is_finite()) {
             return Err(design.error(
                 format!("model.outputs[{i}].expr"),
                 format!(
-                    "output `{}` is {} at sample {k} of a {set} run from x0 = {x0:?} (x = {x:?})",
-                    model.outputs[i].name, y[i]
+                    "output `{}` is {} at sample {k} of {} (x = {x:?})",
+                    plant.outputs[i].name,
+                    y[i],
+                    at.run()
                 ),
                 "make the output expression finite over the state box, or shrink `learning.grid`",
             ));
@@ -184,8 +238,10 @@ pub fn simulate_run(
             return Err(design.error(
                 format!("targets[{i}].expr"),
                 format!(
-                    "target `{}` is {} at sample {k} of a {set} run from x0 = {x0:?} (x = {x:?})",
-                    design.targets[i].name, r[i]
+                    "target `{}` is {} at sample {k} of {} (x = {x:?})",
+                    design.targets[i].name,
+                    r[i],
+                    at.run()
                 ),
                 "make the target expression finite over the state box, or shrink `learning.grid`",
             ));
@@ -201,15 +257,47 @@ pub fn simulate_run(
         inputs,
         measurements,
         targets,
+        parameters: plant.parameter_values(),
     })
 }
 
-fn blow_up_error(design: &Design, x0: &[f64], set: &str, e: BlowUp) -> SpecError {
-    design.error(
-        "model.derivatives",
-        format!("a {set} run from x0 = {x0:?} blew up: {e}"),
-        "check the derivative expressions, shrink the state box (`learning.grid`), or lower `sampling.tau` / raise `sampling.substeps`",
-    )
+/// Which run a message is about: its set, its initial state and, when the plant is not the nominal
+/// model, the parameters it was simulated with.
+struct RunContext<'a> {
+    design: &'a Design,
+    plant: &'a Model,
+    x0: &'a [f64],
+    set: &'a str,
+}
+
+impl RunContext<'_> {
+    /// "a validation run from x0 = [..]" (", on a plant with a = 4.4, b = 1.1" when it is not the
+    /// nominal one).
+    fn run(&self) -> String {
+        let mut text = format!("a {} run from x0 = {:?}", self.set, self.x0);
+        let changed: Vec<String> = self
+            .plant
+            .parameters
+            .iter()
+            .zip(&self.design.model.parameters)
+            .filter(|(p, nominal)| p.1.to_bits() != nominal.1.to_bits())
+            .map(|(p, _)| format!("{} = {}", p.0, p.1))
+            .collect();
+        if !changed.is_empty() {
+            text.push_str(&format!(", on a plant with {}", changed.join(", ")));
+        }
+        text
+    }
+}
+
+fn blow_up_error(at: &RunContext<'_>, e: BlowUp) -> SpecError {
+    let fix = if at.design.model.uncertain.is_empty() {
+        "check the derivative expressions, shrink the state box (`learning.grid`), or lower `sampling.tau` / raise `sampling.substeps`"
+    } else {
+        "check the derivative expressions, shrink the state box (`learning.grid`) or the ranges of the parameters, or lower `sampling.tau` / raise `sampling.substeps`"
+    };
+    at.design
+        .error("model.derivatives", format!("{} blew up: {e}", at.run()), fix)
 }
 
 /// Piecewise-constant inputs, one vector per sample.
@@ -275,6 +363,41 @@ mod tests {
         expr = "x"
     "#;
 
+    /// A first-order lag with an input and parameters: `ẋ = (k u - x)/T`, `y = x`.
+    const LAG: &str = r#"
+        name = "lag"
+        [model]
+        states = ["x"]
+        inputs = ["u"]
+        parameters = { k = 2.0, T = 0.7 }
+        derivatives.x = "(k*u - x)/T"
+        outputs = [{ name = "y", expr = "x", noise_variance = 0.01 }]
+        [sampling]
+        tau = 0.1
+        substeps = 4
+        [learning]
+        samples = 30
+        seed = 5
+        grid.x = { min = -1.0, max = 1.0, points = 4 }
+        inputs.u = { min = -1.0, max = 1.0, hold = 3 }
+        [validation]
+        trajectories = 5
+        samples = 25
+        seed = 6
+        [map]
+        horizon = 3
+        nm = 2
+        beta = 1.0
+        epsilon = 0.01
+        [[targets]]
+        name = "x"
+        expr = "x"
+        [scenario]
+        x0 = { x = 0.3 }
+        samples = 20
+        seed = 8
+    "#;
+
     #[test]
     fn windows_and_regressors_follow_the_convention() {
         let design = crate::spec::parse(Path::new("clock.toml"), CLOCK).unwrap();
@@ -306,6 +429,85 @@ mod tests {
         assert_eq!(a.runs[1].inputs, b.runs[1].inputs);
         let learning = learning_set(&design).unwrap();
         assert_ne!(a.runs[0].inputs, learning.runs[0].inputs);
+    }
+
+    /// FNV-1a over the bits of every number of every run, in order: one value that changes when any
+    /// state, input, measurement or target of the set changes by one ulp.
+    fn fingerprint(data: &DataSet) -> u64 {
+        let mut hash = 0xcbf2_9ce4_8422_2325_u64;
+        for run in &data.runs {
+            for rows in [&run.states, &run.inputs, &run.measurements, &run.targets] {
+                for value in rows.iter().flatten() {
+                    for byte in value.to_bits().to_le_bytes() {
+                        hash = (hash ^ u64::from(byte)).wrapping_mul(0x0100_0000_01b3);
+                    }
+                }
+            }
+        }
+        hash
+    }
+
+    /// The data of designs without uncertain parameters, bit for bit: the fingerprints of the learning,
+    /// validation and tuning sets and of the scenario run (when there is one), recorded on commit
+    /// 8afa2e3, before parameters could have ranges. A change of any number, or of the order in which
+    /// the seeded generator is drawn from, changes them.
+    #[test]
+    fn data_of_designs_without_uncertainty_are_unchanged() {
+        let specs: [(&str, &str, &[u64]); 4] = [
+            (
+                "vanderpol.toml",
+                include_str!("../../specs/vanderpol.toml"),
+                &[
+                    0x1ad9537a3298baae,
+                    0x6d07d1944dfba7e4,
+                    0x6992cc728e5a9677,
+                    0x5f0abdf2051990e3,
+                ],
+            ),
+            (
+                "ecoli_x0_0p5.toml",
+                include_str!("../../specs/ecoli_x0_0p5.toml"),
+                &[
+                    0x026701f1120ff900,
+                    0xc073017b424c1b4f,
+                    0x60667de660fe253f,
+                    0xa54e47ab120561eb,
+                ],
+            ),
+            (
+                "clock.toml",
+                CLOCK,
+                &[0xc740017051f01dd6, 0x9785931629337735, 0xb3c6cc57771f8138],
+            ),
+            (
+                "lag.toml",
+                LAG,
+                &[
+                    0x06917c6fe73703f6,
+                    0xd5620cc4f76c6d7a,
+                    0xba3761529ce2e868,
+                    0x039b5b87a69d142a,
+                ],
+            ),
+        ];
+        for (name, text, expected) in specs {
+            let design = crate::spec::parse(Path::new(name), text).unwrap();
+            let sets = [
+                learning_set(&design).unwrap(),
+                validation_set(&design).unwrap(),
+                tuning_set(&design).unwrap(),
+            ];
+            let mut prints: Vec<u64> = sets.iter().map(fingerprint).collect();
+            if let Some(s) = &design.scenario {
+                let mut rng = ChaCha8Rng::seed_from_u64(s.seed);
+                let run = simulate_run(&design, &s.x0, s.samples, &mut rng, "scenario").unwrap();
+                prints.push(fingerprint(&DataSet {
+                    runs: vec![run],
+                    horizon: 1,
+                }));
+            }
+            assert_eq!(prints, expected, "{name}: learning, validation, tuning, scenario");
+        }
     }
 
     #[test]

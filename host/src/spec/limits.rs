@@ -5,6 +5,7 @@
 //! The bounds are far above what the method needs (the paper uses N ≤ 10, n_m = 5, a few hundred
 //! runs): they only keep a typo from taking the machine down.
 
+use super::model::Uncertain;
 use super::validate::Validator;
 use super::{Axis, Design, SpecError};
 
@@ -22,6 +23,9 @@ pub const MAX_SUBSTEPS: usize = 10_000;
 pub const MAX_RUN_SAMPLES: usize = 10_000_000;
 /// Most validation runs (`validation.trajectories`).
 pub const MAX_TRAJECTORIES: usize = 1_000_000;
+/// Most parameters with a range (`{ value, min, max }`): the mismatch set runs the validation runs at
+/// every corner of their box, `2^p` times over (256 times for 8).
+pub const MAX_UNCERTAIN: usize = 8;
 /// Most RK4 steps of one `gen` of the design: learning, validation and scenario runs together
 /// (about a minute of simulation on one core for a small model).
 pub const MAX_SIMULATION_STEPS: f64 = 1e9;
@@ -44,6 +48,26 @@ impl Validator {
     }
 }
 
+impl Validator {
+    /// At most [`MAX_UNCERTAIN`] parameters with a range, or an error naming the first one beyond.
+    pub(super) fn at_most_uncertain(&self, uncertain: &[Uncertain]) -> Result<(), SpecError> {
+        match uncertain.get(MAX_UNCERTAIN) {
+            None => Ok(()),
+            Some(first) => Err(self.err(
+                format!("model.parameters.{}", first.name),
+                format!(
+                    "{} parameters have a range: the mismatch runs would simulate the validation runs at each of the 2^{} corners of their box",
+                    uncertain.len(),
+                    uncertain.len()
+                ),
+                format!(
+                    "give at most {MAX_UNCERTAIN} parameters a range `{{ value, min, max }}`, the others a plain number (see host/src/spec/limits.rs)"
+                ),
+            )),
+        }
+    }
+}
+
 /// The work `design` asks of `gen`, against [`MAX_SIMULATION_STEPS`] and [`MAX_STORED_VALUES`]
 /// (in `f64`, so that no product overflows).
 pub(super) fn check_budget(design: &Design) -> Result<(), SpecError> {
@@ -57,27 +81,46 @@ pub(super) fn check_budget(design: &Design) -> Result<(), SpecError> {
         })
         .product();
     let scenario = design.scenario.as_ref().map_or(0.0, |s| s.samples as f64);
+    let validation = design.validation.trajectories as f64 * design.validation.samples as f64;
+    // The mismatch set: the validation runs again at every corner of the parameter box (none when
+    // every parameter is known).
+    let corners = match design.model.uncertain.len() {
+        0 => 0.0,
+        p => 2f64.powi(p as i32),
+    };
     let samples = learning_runs * design.learning.samples as f64
-        + design.validation.trajectories as f64 * design.validation.samples as f64
+        + validation
         + design.tuning.trajectories as f64 * design.tuning.samples as f64
-        + scenario;
+        + scenario
+        + corners * validation;
     let steps = samples * design.substeps as f64;
     let model = &design.model;
     let values = samples * (model.states.len() + model.outputs.len() + model.inputs.len()) as f64;
-    let fix = "fewer learning grid points, shorter runs, fewer validation or tuning runs or fewer `sampling.substeps`";
+    let mismatch = if corners > 0.0 {
+        format!(", the validation runs again at {corners:.0} corners of the parameter box")
+    } else {
+        String::new()
+    };
+    let mut fix = String::from(
+        "fewer learning grid points, shorter runs, fewer validation or tuning runs or fewer `sampling.substeps`",
+    );
+    if corners > 0.0 {
+        fix.push_str(", or fewer parameters with a range");
+    }
     if steps > MAX_SIMULATION_STEPS {
         return Err(design.error(
             "learning",
             format!(
-                "the runs take {steps:.2e} RK4 steps ({learning_runs:.0} learning runs of {} samples, {} validation runs of {}, {} tuning runs of {}, {} substeps), above the budget of {MAX_SIMULATION_STEPS:.0e}",
+                "the runs take {steps:.2e} RK4 steps ({learning_runs:.0} learning runs of {} samples, {} validation runs of {}, {} tuning runs of {}{}, {} substeps), above the budget of {MAX_SIMULATION_STEPS:.0e}",
                 design.learning.samples,
                 design.validation.trajectories,
                 design.validation.samples,
                 design.tuning.trajectories,
                 design.tuning.samples,
+                mismatch,
                 design.substeps
             ),
-            fix,
+            fix.clone(),
         ));
     }
     if values > MAX_STORED_VALUES {

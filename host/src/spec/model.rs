@@ -32,14 +32,35 @@ pub struct Model {
     pub states: Vec<String>,
     /// Input names, in input-vector order (may be empty).
     pub inputs: Vec<String>,
-    /// Parameter names and values.
+    /// Parameter names and values. For a parameter declared with a range, the value is its nominal
+    /// `value`: what the emitted model and the observers use.
     pub parameters: Vec<(String, f64)>,
+    /// The parameters declared with a range (`{ value, min, max }`), in the order of
+    /// [`Model::parameters`] (so in name order, as TOML tables are read). The simulated plant of a
+    /// learning, validation or tuning run draws each of them in its range (see `data`); empty when the
+    /// model is known exactly, and for a model compiled from text alone ([`Model::compile`]), which
+    /// declares no range: the spec validator fills it.
+    pub uncertain: Vec<Uncertain>,
     /// Helper definitions, each evaluated after those before it.
     pub definitions: Vec<Definition>,
     /// `dx_i/dt`, one per state, in state order.
     pub derivatives: Vec<Expression>,
     /// Measured outputs.
     pub outputs: Vec<Output>,
+}
+
+/// A parameter whose true value is only known to lie in `[min, max]` (`min < max`, the nominal value
+/// in between, all finite: the spec validator checks it).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Uncertain {
+    /// Its index in [`Model::parameters`].
+    pub index: usize,
+    /// Its name.
+    pub name: String,
+    /// Smallest value the plant may have.
+    pub min: f64,
+    /// Largest value the plant may have.
+    pub max: f64,
 }
 
 /// Where a model expression failed to compile: the spec field and the reason.
@@ -117,10 +138,57 @@ impl Model {
             states: text.states.to_vec(),
             inputs: text.inputs.to_vec(),
             parameters: text.parameters.to_vec(),
+            uncertain: Vec::new(),
             definitions,
             derivatives,
             outputs,
         })
+    }
+
+    /// The parameter values, in the order of [`Model::parameters`].
+    pub fn parameter_values(&self) -> Vec<f64> {
+        self.parameters.iter().map(|(_, v)| *v).collect()
+    }
+
+    /// The same model with the parameter values `values` (one per parameter, in the order of
+    /// [`Model::parameters`]): the plant a run simulates when the true parameters differ from the
+    /// nominal ones. The ranges in [`Model::uncertain`] are kept; `values` need not lie in them.
+    ///
+    /// # Panics
+    /// When `values` does not hold one value per parameter.
+    pub fn with_parameters(&self, values: &[f64]) -> Model {
+        assert_eq!(
+            values.len(),
+            self.parameters.len(),
+            "{} values for the {} parameters",
+            values.len(),
+            self.parameters.len()
+        );
+        let mut model = self.clone();
+        for ((_, value), new) in model.parameters.iter_mut().zip(values) {
+            *value = *new;
+        }
+        model
+    }
+
+    /// The nominal parameter values with those of the uncertain parameters replaced by `values`
+    /// (one per entry of [`Model::uncertain`], in its order).
+    ///
+    /// # Panics
+    /// When `values` does not hold one value per uncertain parameter.
+    pub fn values_with_uncertain(&self, values: &[f64]) -> Vec<f64> {
+        assert_eq!(
+            values.len(),
+            self.uncertain.len(),
+            "{} values for the {} uncertain parameters",
+            values.len(),
+            self.uncertain.len()
+        );
+        let mut all = self.parameter_values();
+        for (u, value) in self.uncertain.iter().zip(values) {
+            all[u.index] = *value;
+        }
+        all
     }
 
     /// Names of the environment slots, in order: what a target expression may use.

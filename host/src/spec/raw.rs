@@ -56,11 +56,59 @@ pub(super) struct RawModel {
     #[serde(default)]
     pub(super) inputs: Vec<String>,
     #[serde(default)]
-    pub(super) parameters: BTreeMap<String, f64>,
+    pub(super) parameters: BTreeMap<String, RawParameter>,
     #[serde(default)]
     pub(super) definitions: Vec<RawNamedExpr>,
     pub(super) derivatives: BTreeMap<String, String>,
     pub(super) outputs: Vec<RawOutput>,
+}
+
+/// A parameter: a number (`a = 4.0`), or a nominal value with the range the plant's true value may
+/// lie in (`a = { value = 4.0, min = 3.6, max = 4.4 }`).
+pub(super) enum RawParameter {
+    Known(f64),
+    Uncertain(RawRange),
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawRange {
+    pub(super) value: f64,
+    pub(super) min: f64,
+    pub(super) max: f64,
+}
+
+/// By hand rather than `#[serde(untagged)]`: an untagged enum answers any mistake inside the table
+/// (a missing `max`, a misspelt key) with "data did not match any variant"; this visitor hands the
+/// table to [`RawRange`], whose own message names the key.
+impl<'de> Deserialize<'de> for RawParameter {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Visitor;
+        impl<'de> serde::de::Visitor<'de> for Visitor {
+            type Value = RawParameter;
+
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a number, or a table `{ value = …, min = …, max = … }`")
+            }
+
+            fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<RawParameter, E> {
+                Ok(RawParameter::Known(v))
+            }
+
+            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<RawParameter, E> {
+                Ok(RawParameter::Known(v as f64))
+            }
+
+            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<RawParameter, E> {
+                Ok(RawParameter::Known(v as f64))
+            }
+
+            fn visit_map<A: serde::de::MapAccess<'de>>(self, map: A) -> Result<RawParameter, A::Error> {
+                RawRange::deserialize(serde::de::value::MapAccessDeserializer::new(map)).map(RawParameter::Uncertain)
+            }
+        }
+        deserializer.deserialize_any(Visitor)
+    }
 }
 
 #[derive(Deserialize)]

@@ -2,6 +2,7 @@
 //! learning grid.
 
 use super::limits;
+use super::model::Uncertain;
 use super::raw::*;
 use super::validate::Validator;
 use super::*;
@@ -41,16 +42,26 @@ impl Validator {
         for (i, s) in raw.inputs.iter().enumerate() {
             declare(format!("model.inputs[{i}]"), s)?;
         }
-        for (name, value) in &raw.parameters {
+        let mut parameters: Vec<(String, f64)> = Vec::new();
+        let mut uncertain = Vec::new();
+        for (index, (name, raw)) in raw.parameters.iter().enumerate() {
             declare(format!("model.parameters.{name}"), name)?;
-            if !value.is_finite() {
-                return Err(self.err(
-                    format!("model.parameters.{name}"),
-                    format!("value {value} is not finite"),
-                    "give a finite number",
-                ));
-            }
+            let value = match raw {
+                RawParameter::Known(value) => self.known_parameter(name, *value)?,
+                RawParameter::Uncertain(range) => {
+                    let (min, max) = self.parameter_range(name, range)?;
+                    uncertain.push(Uncertain {
+                        index,
+                        name: name.clone(),
+                        min,
+                        max,
+                    });
+                    range.value
+                }
+            };
+            parameters.push((name.clone(), value));
         }
+        self.at_most_uncertain(&uncertain)?;
         for (i, d) in raw.definitions.iter().enumerate() {
             declare(format!("model.definitions[{i}].name"), &d.name)?;
         }
@@ -83,7 +94,6 @@ impl Validator {
             })?;
             derivatives.push(text.clone());
         }
-        let parameters: Vec<(String, f64)> = raw.parameters.iter().map(|(k, v)| (k.clone(), *v)).collect();
         let definitions: Vec<(String, String)> = raw
             .definitions
             .iter()
@@ -94,7 +104,7 @@ impl Validator {
             .iter()
             .map(|o| (o.name.clone(), o.expr.clone(), o.noise_variance, o.unit.clone()))
             .collect();
-        Model::compile(&ModelText {
+        let mut model = Model::compile(&ModelText {
             states: &raw.states,
             inputs: &raw.inputs,
             parameters: &parameters,
@@ -102,7 +112,77 @@ impl Validator {
             derivatives: &derivatives,
             outputs: &outputs,
         })
-        .map_err(|e| self.err(e.field, e.error.to_string(), e.error.fix()))
+        .map_err(|e| self.err(e.field, e.error.to_string(), e.error.fix()))?;
+        model.uncertain = uncertain;
+        Ok(model)
+    }
+
+    fn known_parameter(&self, name: &str, value: f64) -> Result<f64, SpecError> {
+        if value.is_finite() {
+            Ok(value)
+        } else {
+            Err(self.err(
+                format!("model.parameters.{name}"),
+                format!("value {value} is not finite"),
+                "give a finite number",
+            ))
+        }
+    }
+
+    /// `[min, max]` of an uncertain parameter: finite, `min < max`, the nominal value inside. Each
+    /// error names the key to change (`model.parameters.a.max`), as for the bounds of an axis.
+    fn parameter_range(&self, name: &str, raw: &RawRange) -> Result<(f64, f64), SpecError> {
+        let field = format!("model.parameters.{name}");
+        let (value, min, max) = (raw.value, raw.min, raw.max);
+        if !(min.is_finite() && max.is_finite() && (max - min).is_finite()) {
+            let bound = if min.is_finite() { "max" } else { "min" };
+            return Err(self.err(
+                format!("{field}.{bound}"),
+                format!("the range [{}, {}] is not finite", readable(min), readable(max)),
+                "give finite bounds of the values the plant's parameter may take",
+            ));
+        }
+        if min > max {
+            return Err(self.err(
+                format!("{field}.max"),
+                format!(
+                    "the range is inverted: min = {} > max = {}",
+                    readable(min),
+                    readable(max)
+                ),
+                "swap `min` and `max`",
+            ));
+        }
+        if min == max {
+            return Err(self.err(
+                format!("{field}.max"),
+                format!("the range is empty: min = max = {}", readable(min)),
+                format!(
+                    "widen the range, or give a known parameter as a plain number: `{name} = {}`",
+                    readable(value)
+                ),
+            ));
+        }
+        if !value.is_finite() {
+            return Err(self.err(
+                format!("{field}.value"),
+                format!("the nominal value {value} is not finite"),
+                "give the finite value the emitted model and the observers use",
+            ));
+        }
+        if !(min..=max).contains(&value) {
+            return Err(self.err(
+                format!("{field}.value"),
+                format!(
+                    "the nominal value {} is outside the range [{}, {}]",
+                    readable(value),
+                    readable(min),
+                    readable(max)
+                ),
+                "give a nominal value between `min` and `max`, or widen the range to hold it",
+            ));
+        }
+        Ok((min, max))
     }
 
     pub(super) fn learning(&self, raw: &RawLearning, model: &Model, horizon: usize) -> Result<Learning, SpecError> {
@@ -243,5 +323,125 @@ impl Validator {
                 format!("write `{field} = {{ min = …, max = …, points = … }}` or `{{ value = … }}`"),
             )),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::path::Path;
+
+    use crate::spec::model::Uncertain;
+
+    /// A first-order lag whose gain and time constant may be given as numbers or with ranges.
+    fn lag(parameters: &str) -> String {
+        format!(
+            r#"
+            name = "lag"
+            [model]
+            states = ["x"]
+            inputs = ["u"]
+            derivatives.x = "(k*u - x)/T"
+            outputs = [{{ name = "y", expr = "b*x", noise_variance = 0.01 }}]
+            [model.parameters]
+            {parameters}
+            [sampling]
+            tau = 0.1
+            [learning]
+            samples = 20
+            seed = 1
+            grid.x = {{ min = -1.0, max = 1.0, points = 3 }}
+            inputs.u = {{ min = -1.0, max = 1.0, hold = 3 }}
+            [validation]
+            trajectories = 4
+            samples = 20
+            seed = 2
+            [map]
+            horizon = 3
+            nm = 2
+            beta = 1.0
+            epsilon = 0.01
+            [[targets]]
+            name = "x"
+            expr = "x"
+        "#
+        )
+    }
+
+    #[test]
+    fn a_parameter_is_a_number_or_a_value_with_a_range() {
+        let text = lag("k = { value = 2.0, min = 1.5, max = 2.5 }\nT = { value = 1, min = 0.5, max = 2 }\nb = 3");
+        let design = crate::spec::parse(Path::new("lag.toml"), &text).unwrap();
+        let model = &design.model;
+        // Table order: upper case first. The nominal value stands in `parameters`, integers read as numbers.
+        let names: Vec<&str> = model.parameters.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(names, ["T", "b", "k"]);
+        assert_eq!(model.parameter_values(), [1.0, 3.0, 2.0]);
+        assert_eq!(
+            model.uncertain,
+            [
+                Uncertain {
+                    index: 0,
+                    name: "T".into(),
+                    min: 0.5,
+                    max: 2.0
+                },
+                Uncertain {
+                    index: 2,
+                    name: "k".into(),
+                    min: 1.5,
+                    max: 2.5
+                },
+            ]
+        );
+        // Plain numbers only: nothing is uncertain, as before ranges existed.
+        let design = crate::spec::parse(Path::new("lag.toml"), &lag("k = 2.0\nT = 1\nb = 3.0")).unwrap();
+        assert!(design.model.uncertain.is_empty());
+        assert_eq!(design.model.parameter_values(), [1.0, 3.0, 2.0]);
+        // The nominal value may sit on a bound.
+        let text = lag("k = { value = 2.5, min = 1.5, max = 2.5 }\nT = 1.0\nb = 3.0");
+        crate::spec::parse(Path::new("lag.toml"), &text).unwrap();
+    }
+
+    #[test]
+    fn with_parameters_changes_the_plant_and_keeps_the_ranges() {
+        let text = lag("k = { value = 2.0, min = 1.5, max = 2.5 }\nT = 1.0\nb = 3.0");
+        let model = crate::spec::parse(Path::new("lag.toml"), &text).unwrap().model;
+        let mut environment = Vec::new();
+        let mut dx = [0.0];
+        // ẋ = (k u - x)/T at x = 1, u = 1: (2 - 1)/1 nominally, (2.5 - 1)/4 with T = 4, k = 2.5.
+        model.derivative(&[1.0], &[1.0], &mut environment, &mut dx);
+        assert_eq!(dx, [1.0]);
+        let other = model.with_parameters(&[4.0, 3.0, 2.5]);
+        other.derivative(&[1.0], &[1.0], &mut environment, &mut dx);
+        assert_eq!(dx, [0.375]);
+        assert_eq!(other.uncertain, model.uncertain);
+        assert_eq!(model.parameter_values(), [1.0, 3.0, 2.0], "the original is unchanged");
+        assert_eq!(model.values_with_uncertain(&[1.75]), [1.0, 3.0, 1.75]);
+    }
+
+    #[test]
+    #[should_panic(expected = "2 values for the 3 parameters")]
+    fn with_parameters_wants_one_value_per_parameter() {
+        let model = crate::spec::parse(Path::new("lag.toml"), &lag("k = 2.0\nT = 1.0\nb = 3.0"))
+            .unwrap()
+            .model;
+        model.with_parameters(&[1.0, 2.0]);
+    }
+
+    /// The limit on uncertain parameters is [`limits::MAX_UNCERTAIN`]: 8 pass, 9 are refused.
+    #[test]
+    fn at_most_eight_parameters_have_a_range() {
+        let ranges = |count: usize| -> String {
+            (1..=count)
+                .map(|i| format!("p{i} = {{ value = 1.0, min = 0.5, max = 1.5 }}\n"))
+                .collect()
+        };
+        let text = lag(&format!("k = 2.0\nT = 1.0\nb = 3.0\n{}", ranges(8)));
+        let design = crate::spec::parse(Path::new("lag.toml"), &text).unwrap();
+        assert_eq!(design.model.uncertain.len(), 8);
+        let text = lag(&format!("k = 2.0\nT = 1.0\nb = 3.0\n{}", ranges(9)));
+        let error = crate::spec::parse(Path::new("lag.toml"), &text).unwrap_err();
+        assert_eq!(error.field, "model.parameters.p9", "{error}");
+        assert!(error.fix.contains("at most 8"), "{error}");
     }
 }

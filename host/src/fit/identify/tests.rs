@@ -18,6 +18,7 @@ fn pairs(samples: &[(Vec<f64>, f64)]) -> DataSet {
         inputs: vec![vec![]; samples.len()].into(),
         measurements: samples.iter().map(|s| s.0.clone()).collect(),
         targets: samples.iter().map(|s| vec![s.1]).collect(),
+        parameters: Vec::new(),
     };
     DataSet {
         runs: vec![run],
