@@ -46,6 +46,7 @@ macro_rules! check_followers {
                         .collect(),
                 ),
                 targets: widen(vec![vec![0.0; d::TARGETS]; accepted.len()]),
+                parameters: Vec::new(),
             };
             // The map's f32 estimates, as the chip computes them.
             let mut map = d::map_observer();

@@ -232,7 +232,7 @@ fn score(figures: &ObserverFigures, spreads: &[f64]) -> f64 {
 /// How much worse than the best a cheaper kind's score may be and still be chosen by `auto`.
 pub const CHEAPER_WITHIN: f64 = 0.02;
 
-/// The kind `observer()` is: the spec's, or for `auto` the lowest [`score`] on the tuning runs,
+/// The kind `observer()` is: the spec's, or for `auto` the lowest score on the tuning runs (mean RMSE / spread),
 /// except that a cheaper kind (map, then corrected, then the map-started EKF) within
 /// [`CHEAPER_WITHIN`] of the best is preferred. Errors when the spec asks for a kind the design
 /// cannot have.

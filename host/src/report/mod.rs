@@ -330,11 +330,7 @@ pub fn observers_table(report: &Report<'_>) -> String {
             "\nOn-chip figures of this generated source are not measured yet: `cargo run -p integration-tests --bin on-target-report`."
         );
     }
-    let _ = writeln!(
-        s,
-        "\n`observer()` is {:?}: {}.",
-        report.observer.0, report.observer.1
-    );
+    let _ = writeln!(s, "\n`observer()` is {:?}: {}.", report.observer.0, report.observer.1);
     if let CorrectedTuning::Unavailable { unavailable } = &report.corrected_tuning {
         let _ = writeln!(s, "\nNo model-corrected map: {unavailable}.");
     }
