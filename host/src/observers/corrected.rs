@@ -109,7 +109,6 @@ impl Setting<'_> {
 /// The targets estimated at every sample of `run` in `T` by the observer with `constants` (its
 /// programs `code`), given the map's estimates `map` (NaN before the first): `firmware::Started`
 /// step for step. NaN before the first estimate.
-#[allow(clippy::needless_range_loop)] // the index runs over several parallel sequences
 pub fn estimate_run<T: Scalar + Maths>(
     setting: &Setting<'_>,
     code: &CorrectionCode,
@@ -117,82 +116,62 @@ pub fn estimate_run<T: Scalar + Maths>(
     map: &[Vec<T>],
     run: &Run,
 ) -> Vec<Vec<T>> {
-    let model = setting.code;
-    let (nx, nt) = (model.dimensions.states, model.dimensions.targets);
-    let literal = |v: f64| T::literal(v as f32, v);
-    let to_t = |row: &[f64]| row.iter().map(|&v| literal(v)).collect::<Vec<T>>();
+    let to_t = |row: &[f64]| row.iter().map(|&v| T::literal(v as f32, v)).collect::<Vec<T>>();
     let (lower, upper) = (to_t(&constants.lower), to_t(&constants.upper));
     let blends: Vec<Vec<T>> = constants.blends().iter().map(|row| to_t(row)).collect();
-    let start_up = constants.start_up;
-    let nan = vec![literal(f64::NAN); nt];
-    let mut out = Vec::with_capacity(run.targets.len());
-    let mut carried: Option<Vec<T>> = None;
-    let mut scratch = Vec::new();
+    let scratch = std::cell::RefCell::new(Vec::new());
     let no: [T; 0] = [];
-    for k in 0..run.targets.len() {
-        let u = to_t(&run.inputs[k]);
-        let y = to_t(&run.measurements[k]);
-        if k < setting.first {
-            out.push(nan.clone());
-            continue;
-        }
-        let j = k - setting.first;
-        let from_map: Vec<T> = setting.state_targets.iter().map(|&t| map[k][t]).collect();
-        let Some(predicted) = &carried else {
-            let at = Reading {
-                x: &from_map,
-                u: &u,
-                y: &no,
-                map: &no,
-                blend: &no,
-            };
-            carried = Some(code.run(&code.predict, &at, &mut scratch));
-            out.push(map[k].clone());
-            continue;
-        };
-        let blend = blends.get(j - 1).map_or(&[][..], Vec::as_slice);
+    let predict = |x: &[T], u: &[T]| {
         let at = Reading {
-            x: predicted,
-            u: &u,
-            y: &y,
-            map: &from_map,
-            blend,
+            x,
+            u,
+            y: &no,
+            map: &no,
+            blend: &no,
         };
-        let program = if j <= start_up { &code.start_up } else { &code.steady };
-        let raw = code.run(program, &at, &mut scratch);
-        // `firmware::started::clamp`: NaN to the lower end.
-        let x: Vec<T> = (0..nx)
-            .map(|i| {
-                if raw[i].partial_cmp(&lower[i]).is_none_or(|o| o.is_lt()) {
-                    lower[i]
-                } else if raw[i] > upper[i] {
-                    upper[i]
-                } else {
-                    raw[i]
-                }
-            })
-            .collect();
-        let next = code.run(
-            &code.predict,
-            &Reading {
-                x: &x,
-                u: &u,
-                y: &no,
-                map: &no,
-                blend: &no,
-            },
-            &mut scratch,
-        );
-        if next.iter().all(|v| v.is_finite()) {
-            carried = Some(next);
-            out.push(model.targets(&x, &u, &mut scratch));
-        } else {
-            // Refused: the estimate and the carried state stay.
-            let last = out.last().cloned().unwrap_or_else(|| nan.clone());
-            out.push(last);
-        }
-    }
-    out
+        let next = code.run(&code.predict, &at, &mut scratch.borrow_mut());
+        next.iter().all(|v| v.is_finite()).then_some(next)
+    };
+    super::started::run(
+        setting.first,
+        setting.state_targets,
+        map,
+        run,
+        predict,
+        |predicted: &Vec<T>, j, from_map, y, u| {
+            let blend = blends.get(j.wrapping_sub(1)).map_or(&[][..], Vec::as_slice);
+            let at = Reading {
+                x: predicted,
+                u,
+                y,
+                map: from_map,
+                blend,
+            };
+            let program = if j <= constants.start_up {
+                &code.start_up
+            } else {
+                &code.steady
+            };
+            let raw = code.run(program, &at, &mut scratch.borrow_mut());
+            // `firmware::started::clamp`: NaN to the lower end.
+            let x: Vec<T> = raw
+                .iter()
+                .zip(lower.iter().zip(&upper))
+                .map(|(&v, (&lo, &hi))| {
+                    if v.partial_cmp(&lo).is_none_or(|o| o.is_lt()) {
+                        lo
+                    } else if v > hi {
+                        hi
+                    } else {
+                        v
+                    }
+                })
+                .collect();
+            let next = predict(&x, u)?;
+            let targets = setting.code.targets(&x, u, &mut scratch.borrow_mut());
+            Some((next, targets))
+        },
+    )
 }
 
 /// [`estimate_run`] in `f64` over the map's `f64` estimates.

@@ -203,11 +203,9 @@ pub fn rmse(code: &ModelCode, constants: &EkfConstants, x0: &[f64], data: &DataS
     )
 }
 
-/// The EKF started by the map (the generated `StartedEkf` in `firmware::Started`, step for step)
-/// in `T`: no estimate before sample `first`; there the map's estimate `map[first]`, from which
-/// `(x, P)` is predicted with `P` = `p0` on the diagonal; then `filter`'s measured samples. A sample
-/// whose result is not finite is refused (the last estimate stays).
-#[allow(clippy::needless_range_loop)] // the index runs over several parallel sequences
+/// The EKF started by the map (the generated `StartedEkf` in `firmware::Started`, step for step,
+/// [`super::started::run`]) in `T`: at sample `first` the map's estimate, from which `(x, P)` is
+/// predicted with `P` = `p0` on the diagonal; then `filter`'s measured samples.
 pub fn estimate_started<T: firmware::Scalar + firmware::Maths>(
     filter: &crate::plant::kalman::FilterCode,
     p0: &[f64],
@@ -217,49 +215,35 @@ pub fn estimate_started<T: firmware::Scalar + firmware::Maths>(
     run: &Run,
     code: &ModelCode,
 ) -> Vec<Vec<T>> {
-    let literal = |v: f64| T::literal(v as f32, v);
     let nx = p0.len();
     let upper: Vec<T> = (0..nx)
         .flat_map(|r| (r..nx).map(move |c| (r, c)))
-        .map(|(r, c)| literal(if r == c { p0[r] } else { 0.0 }))
+        .map(|(r, c)| {
+            if r == c {
+                T::literal(p0[r] as f32, p0[r])
+            } else {
+                T::ZERO
+            }
+        })
         .collect();
-    let nan = vec![literal(f64::NAN); code.dimensions.targets];
     let finite = |x: &[T], p: &[T]| x.iter().chain(p).all(|v| v.is_finite());
-    let mut carried: Option<(Vec<T>, Vec<T>)> = None;
-    let mut out: Vec<Vec<T>> = Vec::with_capacity(run.targets.len());
-    let mut scratch = Vec::new();
-    for k in 0..run.targets.len() {
-        let u: Vec<T> = run.inputs[k].iter().map(|&v| literal(v)).collect();
-        let y: Vec<T> = run.measurements[k].iter().map(|&v| literal(v)).collect();
-        if k < first {
-            out.push(nan.clone());
-            continue;
-        }
-        match &carried {
-            None => {
-                let x: Vec<T> = state_targets.iter().map(|&t| map[k][t]).collect();
-                let (_, x, p) = filter.run(&x, &upper, None, &u, &mut scratch);
-                if finite(&x, &p) {
-                    carried = Some((x, p));
-                    out.push(map[k].clone());
-                } else {
-                    out.push(nan.clone());
-                }
-            }
-            Some((x, p)) => {
-                let (estimate, x, p) = filter.run(x, p, Some(&y), &u, &mut scratch);
-                let estimate = estimate.unwrap_or_else(|| x.clone());
-                if finite(&x, &p) {
-                    carried = Some((x, p));
-                    out.push(code.targets(&estimate, &u, &mut scratch));
-                } else {
-                    let last = out.last().cloned().unwrap_or_else(|| nan.clone());
-                    out.push(last);
-                }
-            }
-        }
-    }
-    out
+    let scratch = std::cell::RefCell::new(Vec::new());
+    super::started::run(
+        first,
+        state_targets,
+        map,
+        run,
+        |x, u| {
+            let (_, x, p) = filter.run(x, &upper, None, u, &mut scratch.borrow_mut());
+            finite(&x, &p).then_some((x, p))
+        },
+        |(x, p): &(Vec<T>, Vec<T>), _, _, y, u| {
+            let (estimate, x, p) = filter.run(x, p, Some(y), u, &mut scratch.borrow_mut());
+            let estimate = estimate.unwrap_or_else(|| x.clone());
+            let targets = code.targets(&estimate, u, &mut scratch.borrow_mut());
+            finite(&x, &p).then_some(((x, p), targets))
+        },
+    )
 }
 
 /// Chooses `(q, p)` on `tuning` (see the module docs). `target_spreads` normalises each target's RMSE.

@@ -6,6 +6,7 @@
 
 pub mod corrected;
 pub mod ekf;
+pub mod started;
 
 use crate::data::{self, DataSet, Rows, Run};
 use crate::fit::DesignResult;

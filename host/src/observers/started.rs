@@ -1,0 +1,61 @@
+//! `firmware::Started` on the host, step for step, over a simulated run: the one mirror of the
+//! chip's shell that the model-corrected map ([`super::corrected`]) and the map-started EKF
+//! ([`super::ekf::estimate_started`]) plug their samples into.
+//!
+//! No estimate before sample `first` (NaN rows); there the map's row, and `start` from the map's
+//! states; then `follow` for every later sample with its count `j` (counted as the chip counts:
+//! only samples taken). A start or follow-up that gives `None` (not finite) is refused: nothing
+//! carried changes and the last estimate stays.
+
+use firmware::Scalar;
+
+use crate::data::Run;
+
+/// The targets at every sample of `run` (rows of `map`'s width), in `T`. `map` is the map's
+/// estimate at every sample, `state_targets` the map target of each state. `start(x, u)` gives what
+/// to carry from the map's states; `follow(carried, j, map_states, y, u)` what to carry next and the
+/// targets.
+pub fn run<T: Scalar, C>(
+    first: usize,
+    state_targets: &[usize],
+    map: &[Vec<T>],
+    run: &Run,
+    mut start: impl FnMut(&[T], &[T]) -> Option<C>,
+    mut follow: impl FnMut(&C, usize, &[T], &[T], &[T]) -> Option<(C, Vec<T>)>,
+) -> Vec<Vec<T>> {
+    let literal = |v: f64| T::literal(v as f32, v);
+    let width = map.first().map_or(0, Vec::len);
+    let nan = vec![literal(f64::NAN); width];
+    let mut out: Vec<Vec<T>> = Vec::with_capacity(run.targets.len());
+    let mut carried: Option<C> = None;
+    let mut j = 0;
+    for (k, row) in map.iter().enumerate().take(run.targets.len()) {
+        let last = out.last().cloned().unwrap_or_else(|| nan.clone());
+        if k < first {
+            out.push(nan.clone());
+            continue;
+        }
+        let u: Vec<T> = run.inputs[k].iter().map(|&v| literal(v)).collect();
+        let y: Vec<T> = run.measurements[k].iter().map(|&v| literal(v)).collect();
+        let states: Vec<T> = state_targets.iter().map(|&t| row[t]).collect();
+        match &carried {
+            None => match start(&states, &u) {
+                Some(c) => {
+                    carried = Some(c);
+                    j = 1;
+                    out.push(row.clone());
+                }
+                None => out.push(last),
+            },
+            Some(c) => match follow(c, j, &states, &y, &u) {
+                Some((next, targets)) => {
+                    carried = Some(next);
+                    j += 1;
+                    out.push(targets);
+                }
+                None => out.push(last),
+            },
+        }
+    }
+    out
+}
