@@ -30,6 +30,8 @@ pub mod ecoli_x0_0p5;
 pub mod ecoli_x0_2;
 #[rustfmt::skip]
 pub mod vanderpol;
+#[rustfmt::skip]
+pub mod vanderpol_uncertain;
 
 /// Family `ecoli`: one design per value of output `X_meas` at the start of a batch
 /// (`ecoli_x0_0p5` at 0.5, `ecoli_x0_2` at 2.0). Its observer
@@ -93,5 +95,6 @@ macro_rules! for_each_design {
         $callback!(ecoli_x0_0p5);
         $callback!(ecoli_x0_2);
         $callback!(vanderpol);
+        $callback!(vanderpol_uncertain);
     };
 }

@@ -415,9 +415,13 @@ fn write(one: Prepared, to: &Destinations) -> Result<Outcome, GenerateError> {
     };
     let report_files = reporting::write_texts(&one.report, &folder).map_err(io(&folder))?;
     let Emitted {
-        design, result, source, ..
+        design,
+        result,
+        source,
+        comparison,
+        ..
     } = one.emitted;
-    let figures = plots::draw(&design, &result, &folder)?;
+    let figures = plots::draw(&design, &result, &comparison, &folder)?;
     let observer = to.generated.join("src").join(format!("{}.rs", design.name));
     let changed = output::write_if_changed(&observer, &source).map_err(io(&observer))?;
     Ok(Outcome {

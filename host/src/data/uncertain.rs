@@ -49,6 +49,13 @@ pub fn corners(model: &Model) -> Vec<Vec<f64>> {
 /// runs start from other states, with other inputs and noise, than any run the maps or the observers
 /// were fitted, tuned or judged on.
 pub fn mismatch_seed(design: &Design) -> u64 {
+    free_seed(design, 0)
+}
+
+/// The `index`-th (from 0) of the seeds `validation.seed + 1000 k`, `k = 1, 2, …` (wrapping), that is
+/// none of the learning, validation, tuning and scenario seeds: 0 is [`mismatch_seed`], 1 the long
+/// runs' ([`long_set`]).
+pub fn free_seed(design: &Design, index: usize) -> u64 {
     let taken = [
         Some(design.learning.seed),
         Some(design.validation.seed),
@@ -57,8 +64,34 @@ pub fn mismatch_seed(design: &Design) -> u64 {
     ];
     (1..)
         .map(|k: u64| design.validation.seed.wrapping_add(1000 * k))
-        .find(|seed| !taken.contains(&Some(*seed)))
+        .filter(|seed| !taken.contains(&Some(*seed)))
+        .nth(index)
         .expect("four seeds cannot take them all")
+}
+
+/// Long runs, to see whether an observer drifts: `validation.trajectories` runs of `samples` samples
+/// from random states in the box, from their own seed ([`free_seed`] 1), on the plant with the
+/// uncertain parameters at `values` (in the order of `Model::uncertain`), or on the nominal model
+/// when `values` is `None`. Nothing is drawn for the parameters.
+pub fn long_set(design: &Design, values: Option<&[f64]>, samples: usize) -> Result<DataSet, SpecError> {
+    let plant = match values {
+        Some(values) => design
+            .model
+            .with_parameters(&design.model.values_with_uncertain(values)),
+        None => design.model.clone(),
+    };
+    let settings = crate::spec::Validation {
+        seed: free_seed(design, 1),
+        samples,
+        ..design.validation
+    };
+    random_runs(design, &settings, "long", Some(&plant))
+}
+
+/// The nominal values of the uncertain parameters, in the order of `Model::uncertain`.
+pub fn nominal(model: &Model) -> Vec<f64> {
+    let values = model.parameter_values();
+    model.uncertain.iter().map(|u| values[u.index]).collect()
 }
 
 /// The runs of the mismatch set at one point of the parameter box: the uncertain parameters at

@@ -14,7 +14,7 @@ use crate::plant::ModelCode;
 use crate::spec::{Design, ObserverKind, SpecError};
 
 /// Errors of one observer on one target.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Figures {
     /// RMSE over the validation windows.
     pub rmse_validation: f64,
@@ -26,18 +26,69 @@ pub struct Figures {
     pub rmse_transient: f64,
     /// RMSE over the tuning runs' windows.
     pub rmse_tuning: f64,
+    /// RMSE over the mismatch runs' windows: the validation runs replayed on plants at every corner of
+    /// the box of the uncertain parameters (`data::uncertain::mismatch_set`); `None` when every
+    /// parameter is known.
+    pub rmse_mismatch: Option<f64>,
+    /// The same per corner, in the order of [`Mismatch::corners`].
+    pub rmse_corners: Vec<f64>,
+    /// RMSE over the mismatch runs replayed on the nominal plant (the model's values), when
+    /// parameters are uncertain (`rmse_validation` is then over plants drawn in the box).
+    pub rmse_nominal: Option<f64>,
+    /// Drift over long runs on the nominal plant ([`Drift`]).
+    pub drift: Drift,
+    /// The same on the plant at the last corner ([`Mismatch::scenario`]'s plant).
+    pub drift_mismatch: Option<Drift>,
+}
+
+/// Whether an observer drifts: its RMSE over the first and the last [`Drift::WINDOW`]s of
+/// [`Drift::WINDOWS`] after the start-up (`START_UP_HORIZONS · N` estimates after the first, for every
+/// kind), on long runs from their own seed (`data::uncertain::long_set`). A window is as long as a
+/// validation run (`validation.samples`): 10 s and 60 s on Example 1.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Drift {
+    /// RMSE over the first window after the start-up.
+    pub first: f64,
+    /// RMSE over the last window.
+    pub last: f64,
+}
+
+impl Drift {
+    /// Windows after the start-up in a long run.
+    pub const WINDOWS: usize = 6;
 }
 
 /// Length of the transient judged, in the spec's time unit, from the first window.
 pub const TRANSIENT_TIME: f64 = 2.0;
 
-/// One observer's figures, per target in spec order.
+/// One observer's figures, per target in spec order, and its estimates along the scenarios.
 #[derive(Clone, Debug)]
 pub struct ObserverFigures {
-    /// `"map"`, `"ekf"` or `"corrected"`.
+    /// `"map"`, `"ekf"` (from the box centre), `"corrected"` or `"ekf_started"` (from the map).
     pub kind: &'static str,
     /// Per target.
     pub targets: Vec<Figures>,
+    /// Its estimate of every target at every sample of the scenario (NaN before its first).
+    pub scenario: Rows,
+    /// The same along [`Mismatch::scenario`], when parameters are uncertain.
+    pub mismatch_scenario: Option<Rows>,
+}
+
+/// The plants an observer with uncertain parameters is judged on besides the nominal one.
+#[derive(Clone, Debug)]
+pub struct Mismatch {
+    /// Every corner of the box of the uncertain parameters (`data::uncertain::corners`), the
+    /// parameters in the order of `Model::uncertain`.
+    pub corners: Vec<Vec<f64>>,
+    /// The names of the uncertain parameters, in that order.
+    pub names: Vec<String>,
+    /// Runs per corner (the validation set's count).
+    pub runs_per_corner: usize,
+    /// The nominal values of the uncertain parameters.
+    pub nominal: Vec<f64>,
+    /// The scenario (its initial state, inputs and noise) on the plant at the last corner, every
+    /// uncertain parameter at its `max`.
+    pub scenario: Run,
 }
 
 /// The comparison of a design's observers.
@@ -56,6 +107,8 @@ pub struct Comparison {
     pub chosen: (ObserverKind, String),
     /// The tuning runs.
     pub tuning: DataSet,
+    /// The mismatch plants, when parameters are uncertain.
+    pub mismatch: Option<Mismatch>,
     /// Largest one-sample difference between the chip's model (`chip_substeps`) and the learning
     /// simulation's (`substeps`) over the validation states, per state, relative to its spread.
     pub chip_model_error: Vec<f64>,
@@ -100,40 +153,117 @@ fn map_estimates(result: &DesignResult, horizon: usize, run: &Run) -> Rows {
     rows
 }
 
-/// Simulates the tuning runs, tunes the EKF on them, and judges both observers.
+/// The mismatch plants of `design` and their runs (every corner, the nominal plant, and long runs at the
+/// last corner), `None` when every parameter is known.
+fn mismatch(design: &Design, long_samples: usize) -> Result<Option<(Mismatch, [DataSet; 3])>, SpecError> {
+    let Some(set) = data::uncertain::mismatch_set(design)? else {
+        return Ok(None);
+    };
+    let corners = data::uncertain::corners(&design.model);
+    let last = corners.last().expect("a mismatch set has corners");
+    let plant = design.model.with_parameters(&design.model.values_with_uncertain(last));
+    let scenario = match &design.scenario {
+        Some(s) => {
+            let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(s.seed);
+            data::simulate_plant(design, &plant, &s.x0, s.samples, &mut rng, "mismatch scenario")?
+        }
+        None => set.runs[set.runs.len() - design.validation.trajectories].clone(),
+    };
+    let nominal = data::uncertain::nominal(&design.model);
+    let sets = [
+        set,
+        data::uncertain::corner_set(design, &nominal)?,
+        data::uncertain::long_set(design, Some(last), long_samples)?,
+    ];
+    Ok(Some((
+        Mismatch {
+            names: design.model.uncertain.iter().map(|u| u.name.clone()).collect(),
+            runs_per_corner: design.validation.trajectories,
+            nominal,
+            corners,
+            scenario,
+        },
+        sets,
+    )))
+}
+
+/// Simulates the tuning runs, tunes the EKF and the model-corrected map on them, and judges every
+/// observer on the validation runs, the scenario and (with uncertain parameters) the mismatch runs.
 pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Result<Comparison, SpecError> {
     let tuning = data::tuning_set(design)?;
     let horizon = design.map.horizon;
+    let start_up = horizon - 1 + corrected::START_UP_HORIZONS * horizon;
+    let window = design.validation.samples;
+    let long_samples = start_up + Drift::WINDOWS * window;
+    let mismatch = mismatch(design, long_samples)?;
+    let long = data::uncertain::long_set(design, None, long_samples)?;
+    let drift = |runs: &[Run], estimates: &[Rows], t: usize| Drift {
+        first: errors(runs, estimates, t, |_| start_up..start_up + window).0,
+        last: errors(runs, estimates, t, |_| long_samples - window..long_samples).0,
+    };
     let targets = design.targets.len();
-    let spreads: Vec<f64> = result.targets.iter().map(|t| t.validation.target_spread).collect();
+    // Each target's spread over the tuning runs normalises the tuning criteria: the tuning runs are the
+    // only data any constant below is chosen on.
+    let spreads: Vec<f64> = result
+        .targets
+        .iter()
+        .map(|t| crate::fit::evaluate::evaluate(&tuning, t.index, &t.fit).target_spread)
+        .collect();
     let tuned = ekf::tune(design, code, &tuning, &result.learning, &spreads);
     let transient = (TRANSIENT_TIME / design.tau).round() as usize;
-    let scenario = std::slice::from_ref(&result.scenario);
     let windows = |run: &Run| horizon - 1..run.targets.len();
-    let figures = |estimate: &dyn Fn(&Run, bool) -> Rows| -> Vec<Figures> {
+    // One observer judged everywhere: `estimate(run, is_scenario)` is its estimate of every target
+    // at every sample of `run` (a scenario's EKF starts from `scenario.observer_x0`).
+    let judge = |kind: &'static str, estimate: &dyn Fn(&Run, bool) -> Rows| -> ObserverFigures {
         let validation: Vec<Rows> = result.validation.runs.iter().map(|r| estimate(r, false)).collect();
-        let on_scenario = vec![estimate(&result.scenario, true)];
+        let scenario = estimate(&result.scenario, true);
         let on_tuning: Vec<Rows> = tuning.runs.iter().map(|r| estimate(r, false)).collect();
-        (0..targets)
+        let on = |set: &DataSet| -> Vec<Rows> { set.runs.iter().map(|r| estimate(r, false)).collect() };
+        let on_mismatch: Option<[Vec<Rows>; 3]> = mismatch.as_ref().map(|(_, sets)| sets.each_ref().map(on));
+        let on_long = on(&long);
+        let one_scenario = std::slice::from_ref(&result.scenario);
+        let on_scenario = std::slice::from_ref(&scenario);
+        let targets = (0..targets)
             .map(|t| {
                 let (rmse_validation, max_error_validation) = errors(&result.validation.runs, &validation, t, windows);
+                let (rmse_mismatch, rmse_corners, rmse_nominal, drift_mismatch) = match (&mismatch, &on_mismatch) {
+                    (Some((m, [set, nominal, long])), Some([estimates, on_nominal, on_long])) => (
+                        Some(errors(&set.runs, estimates, t, windows).0),
+                        set.runs
+                            .chunks(m.runs_per_corner)
+                            .zip(estimates.chunks(m.runs_per_corner))
+                            .map(|(runs, estimates)| errors(runs, estimates, t, windows).0)
+                            .collect(),
+                        Some(errors(&nominal.runs, on_nominal, t, windows).0),
+                        Some(drift(&long.runs, on_long, t)),
+                    ),
+                    _ => (None, Vec::new(), None, None),
+                };
                 Figures {
                     rmse_validation,
                     max_error_validation,
-                    rmse_scenario: errors(scenario, &on_scenario, t, windows).0,
-                    rmse_transient: errors(scenario, &on_scenario, t, |run| {
+                    rmse_scenario: errors(one_scenario, on_scenario, t, windows).0,
+                    rmse_transient: errors(one_scenario, on_scenario, t, |run| {
                         horizon - 1..horizon.saturating_add(transient).min(run.targets.len())
                     })
                     .0,
                     rmse_tuning: errors(&tuning.runs, &on_tuning, t, windows).0,
+                    rmse_mismatch,
+                    rmse_corners,
+                    rmse_nominal,
+                    drift: drift(&long.runs, &on_long, t),
+                    drift_mismatch,
                 }
             })
-            .collect()
+            .collect();
+        ObserverFigures {
+            kind,
+            targets,
+            mismatch_scenario: mismatch.as_ref().map(|(m, _)| estimate(&m.scenario, true)),
+            scenario,
+        }
     };
-    let mut observers = vec![ObserverFigures {
-        kind: "map",
-        targets: figures(&|run, _| map_estimates(result, horizon, run)),
-    }];
+    let mut observers = vec![judge("map", &|run, _| map_estimates(result, horizon, run))];
     if let Some(tuned) = &tuned {
         let centre = ekf::box_centre(design);
         let scenario_start = design
@@ -141,13 +271,10 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
             .as_ref()
             .and_then(|s| s.observer_x0.clone())
             .unwrap_or_else(|| centre.clone());
-        observers.push(ObserverFigures {
-            kind: "ekf",
-            targets: figures(&|run, is_scenario| {
-                let x0 = if is_scenario { &scenario_start } else { &centre };
-                ekf::estimate_run(code, &tuned.constants, x0, run).expect("size checked by tune")
-            }),
-        });
+        observers.push(judge("ekf", &|run, is_scenario| {
+            let x0 = if is_scenario { &scenario_start } else { &centre };
+            ekf::estimate_run(code, &tuned.constants, x0, run).expect("size checked by tune")
+        }));
     }
     let corrected = corrected::state_targets(design).map(|state_targets| {
         let (lower, upper) = state_targets
@@ -166,18 +293,15 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         let maps: Vec<Rows> = tuning.runs.iter().map(|r| map_estimates(result, horizon, r)).collect();
         let tuned = corrected::tune(&setting, &tuning, &maps, &spreads);
         let programs = crate::plant::correction::correction_code(code, &tuned.constants);
-        observers.push(ObserverFigures {
-            kind: "corrected",
-            targets: figures(&|run, _| {
-                corrected::estimate_rows(
-                    &setting,
-                    &programs,
-                    &tuned.constants,
-                    &map_estimates(result, horizon, run),
-                    run,
-                )
-            }),
-        });
+        observers.push(judge("corrected", &|run, _| {
+            corrected::estimate_rows(
+                &setting,
+                &programs,
+                &tuned.constants,
+                &map_estimates(result, horizon, run),
+                run,
+            )
+        }));
         tuned
     });
     let started = match (&tuned, corrected::state_targets(design)) {
@@ -185,24 +309,21 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
             let map = &observers[0].targets;
             let p0: Vec<f64> = state_targets.iter().map(|&t| map[t].rmse_tuning.powi(2)).collect();
             let filter = crate::plant::kalman::filter_code(code, &tuned.constants);
-            observers.push(ObserverFigures {
-                kind: "ekf_started",
-                targets: figures(&|run, _| {
-                    let map: Vec<Vec<f64>> = map_estimates(result, horizon, run)
-                        .iter()
-                        .map(<[f64]>::to_vec)
-                        .collect();
-                    Rows::from(ekf::estimate_started(
-                        &filter,
-                        &p0,
-                        &state_targets,
-                        horizon - 1,
-                        &map,
-                        run,
-                        code,
-                    ))
-                }),
-            });
+            observers.push(judge("ekf_started", &|run, _| {
+                let map: Vec<Vec<f64>> = map_estimates(result, horizon, run)
+                    .iter()
+                    .map(<[f64]>::to_vec)
+                    .collect();
+                Rows::from(ekf::estimate_started(
+                    &filter,
+                    &p0,
+                    &state_targets,
+                    horizon - 1,
+                    &map,
+                    run,
+                    code,
+                ))
+            }));
             Some((p0, state_targets))
         }
         _ => None,
@@ -216,6 +337,7 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         corrected,
         chip_model_error: chip_model_error(design, result),
         tuning,
+        mismatch: mismatch.map(|(m, _)| m),
     })
 }
 

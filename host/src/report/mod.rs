@@ -30,6 +30,10 @@ pub struct Report<'a> {
     pub tool_version: &'static str,
     /// Sample period.
     pub tau: f64,
+    /// Its unit.
+    pub time_unit: &'a str,
+    /// Samples per validation run (a drift window).
+    pub validation_samples: usize,
     /// Map settings.
     pub map: &'a MapSettings,
     /// `n_z`.
@@ -52,6 +56,9 @@ pub struct Report<'a> {
     pub observer: (crate::spec::ObserverKind, String),
     /// The model on the chip against the learning simulation's.
     pub chip_model: ChipModel,
+    /// The plants of the `rmse_mismatch` figures, when parameters are uncertain.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mismatch: Option<MismatchReport>,
 }
 
 /// One observer's figures.
@@ -79,7 +86,50 @@ pub struct FiguresReport {
     pub rmse_transient: Option<f64>,
     /// RMSE over the tuning runs.
     pub rmse_tuning: Option<f64>,
+    /// RMSE over the mismatch runs (every corner of the uncertain parameters' box; [`MismatchReport`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rmse_mismatch: Option<f64>,
+    /// The same per corner, in the order of [`MismatchReport::corners`].
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub rmse_corners: Vec<Option<f64>>,
+    /// RMSE over the mismatch runs replayed on the nominal plant (with uncertain parameters, whose
+    /// `rmse_validation` is over plants drawn in the box).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rmse_nominal: Option<f64>,
+    /// Drift over long runs on the nominal plant ([`crate::observers::Drift`]).
+    pub drift: DriftReport,
+    /// The same on the plant at the last corner of the uncertain parameters' box.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub drift_mismatch: Option<DriftReport>,
 }
+
+/// [`crate::observers::Drift`] as serialised.
+#[derive(Serialize)]
+pub struct DriftReport {
+    /// RMSE over the first window after the start-up.
+    pub rmse_first: Option<f64>,
+    /// RMSE over the last window of the long runs.
+    pub rmse_last: Option<f64>,
+}
+
+/// What the mismatch figures are measured on.
+#[derive(Serialize)]
+pub struct MismatchReport {
+    /// How the plants were chosen.
+    pub plants: &'static str,
+    /// The uncertain parameters.
+    pub parameters: Vec<String>,
+    /// Every corner, the parameters in that order.
+    pub corners: Vec<Vec<f64>>,
+    /// Runs per corner.
+    pub runs_per_corner: usize,
+    /// The nominal values (the model's), in the same order.
+    pub nominal: Vec<f64>,
+}
+
+/// See [`MismatchReport::plants`].
+pub const MISMATCH_PLANTS: &str = "the corners of the box of the uncertain parameters (not drawn): at each, the \
+     validation set's number of runs from its own seed, the same initial states, inputs and noise at every corner";
 
 /// The EKF's tuning.
 #[derive(Serialize)]
@@ -194,6 +244,10 @@ pub struct LinearReport {
 /// Assembles the report of a run.
 pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a Comparison) -> Report<'a> {
     let finite = |v: f64| v.is_finite().then_some(v);
+    let drift = |d: crate::observers::Drift| DriftReport {
+        rmse_first: finite(d.first),
+        rmse_last: finite(d.last),
+    };
     let summary = |set: &crate::data::DataSet, seed| SetSummary {
         runs: set.runs.len(),
         windows: set.window_count(),
@@ -205,6 +259,8 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
         spec: design.file.display().to_string(),
         tool_version: env!("CARGO_PKG_VERSION"),
         tau: design.tau,
+        time_unit: &design.time_unit,
+        validation_samples: design.validation.samples,
         map: &design.map,
         regressor_len: result.learning.regressor_len(),
         learning: summary(&result.learning, design.learning.seed),
@@ -251,6 +307,11 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
                                 rmse_scenario: finite(f.rmse_scenario),
                                 rmse_transient: finite(f.rmse_transient),
                                 rmse_tuning: finite(f.rmse_tuning),
+                                rmse_mismatch: f.rmse_mismatch.and_then(finite),
+                                rmse_corners: f.rmse_corners.iter().map(|&v| finite(v)).collect(),
+                                rmse_nominal: f.rmse_nominal.and_then(finite),
+                                drift: drift(f.drift),
+                                drift_mismatch: f.drift_mismatch.map(drift),
                             },
                         )
                     })
@@ -289,6 +350,13 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             simulation_substeps: design.substeps,
             max_step_difference_relative: comparison.chip_model_error.clone(),
         },
+        mismatch: comparison.mismatch.as_ref().map(|m| MismatchReport {
+            plants: MISMATCH_PLANTS,
+            parameters: m.names.clone(),
+            corners: m.corners.clone(),
+            runs_per_corner: m.runs_per_corner,
+            nominal: m.nominal.clone(),
+        }),
     }
 }
 
@@ -330,6 +398,10 @@ pub fn observers_table(report: &Report<'_>) -> String {
             "\nOn-chip figures of this generated source are not measured yet: `cargo run -p integration-tests --bin on-target-report`."
         );
     }
+    if let Some(m) = &report.mismatch {
+        s.push_str(&mismatch_table(report, m));
+    }
+    s.push_str(&drift_table(report));
     let _ = writeln!(s, "\n`observer()` is {:?}: {}.", report.observer.0, report.observer.1);
     if let CorrectedTuning::Unavailable { unavailable } = &report.corrected_tuning {
         let _ = writeln!(s, "\nNo model-corrected map: {unavailable}.");
@@ -360,6 +432,83 @@ pub fn observers_table(report: &Report<'_>) -> String {
             });
         }
         let _ = writeln!(s, "Better on {label}: {}.", verdicts.join(", "));
+    }
+    s
+}
+
+/// Every observer's drift over long runs (Markdown).
+fn drift_table(report: &Report<'_>) -> String {
+    let long = crate::observers::Drift::WINDOWS * report.validation_samples;
+    let time = |samples: usize| format!("{}", samples as f64 * report.tau);
+    let mut s = format!(
+        "\nDrift: RMSE over the first and the last {} {} of {} {} after the start-up (3N estimates after the first), on {} long runs from their own seed{}:\n\n\
+         | observer | target | first | last | last / first |{}\n|---|---|---|---|---|{}\n",
+        time(report.validation_samples),
+        report.time_unit,
+        time(long),
+        report.time_unit,
+        report.validation.runs,
+        if report.mismatch.is_some() { "; then on the plant at the last corner" } else { "" },
+        if report.mismatch.is_some() { " first (last corner) | last (last corner) | last / first |" } else { "" },
+        if report.mismatch.is_some() { "---|---|---|" } else { "" },
+    );
+    let show = |v: Option<f64>| v.map_or("diverged".to_owned(), |v| format!("{v:.4}"));
+    let ratio = |d: &DriftReport| match (d.rmse_first, d.rmse_last) {
+        (Some(a), Some(b)) => format!("{:.2}", b / a),
+        _ => "—".to_owned(),
+    };
+    for o in &report.observers {
+        for (name, f) in &o.targets {
+            let _ = write!(
+                s,
+                "| {} | {name} | {} | {} | {} |",
+                o.kind,
+                show(f.drift.rmse_first),
+                show(f.drift.rmse_last),
+                ratio(&f.drift)
+            );
+            if let Some(d) = &f.drift_mismatch {
+                let _ = write!(s, " {} | {} | {} |", show(d.rmse_first), show(d.rmse_last), ratio(d));
+            }
+            s.push('\n');
+        }
+    }
+    s
+}
+
+/// Every observer on the plants of the uncertain parameters' corners (Markdown).
+fn mismatch_table(report: &Report<'_>, m: &MismatchReport) -> String {
+    let corner = |c: &[f64]| {
+        m.parameters
+            .iter()
+            .zip(c)
+            .map(|(name, v)| format!("{name} = {v}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let mut s = format!(
+        "\nWith the model's parameters wrong (the plant at {}, {} runs each; the observers keep the nominal model):\n\n\
+         | observer | target | RMSE validation (drawn plants) | nominal plant ({}) | RMSE mismatch (all corners) | {} |\n|---|---|---|---|---|{}\n",
+        MISMATCH_PLANTS.split(':').next().unwrap_or(MISMATCH_PLANTS),
+        m.runs_per_corner,
+        corner(&m.nominal),
+        m.corners.iter().map(|c| corner(c)).collect::<Vec<_>>().join(" | "),
+        "---|".repeat(m.corners.len()),
+    );
+    let show = |v: Option<f64>| v.map_or("diverged".to_owned(), |v| format!("{v:.4}"));
+    for o in &report.observers {
+        for (name, f) in &o.targets {
+            let corners: Vec<String> = f.rmse_corners.iter().map(|&v| show(v)).collect();
+            let _ = writeln!(
+                s,
+                "| {} | {name} | {} | {} | {} | {} |",
+                o.kind,
+                show(f.rmse_validation),
+                show(f.rmse_nominal),
+                show(f.rmse_mismatch),
+                corners.join(" | ")
+            );
+        }
     }
     s
 }

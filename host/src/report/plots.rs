@@ -17,7 +17,7 @@ use plotters::prelude::*;
 
 use crate::data::{DataSet, Window};
 use crate::fit::DesignResult;
-use crate::recording;
+use crate::observers::Comparison;
 use crate::spec::Design;
 
 /// Why a figure could not be written.
@@ -60,12 +60,14 @@ struct Curve {
     dots: bool,
 }
 
-/// One panel: a title, axis descriptions and its curves.
+/// One panel: a title, axis descriptions, its curves and vertical marks (a time and what happens
+/// there, drawn as a dashed line across the panel).
 struct Panel {
     title: String,
     x_label: String,
     y_label: String,
     curves: Vec<Curve>,
+    marks: Vec<(f64, String)>,
 }
 
 fn with_unit(name: &str, unit: &str) -> String {
@@ -103,14 +105,15 @@ fn tick(value: &f64) -> String {
 
 fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) -> Result<(), String> {
     let all = || panel.curves.iter().flat_map(|c| c.points.iter());
-    let x = range(all().map(|p| p.0));
+    let x = range(all().map(|p| p.0).chain(panel.marks.iter().map(|m| m.0)));
     let y = range(all().map(|p| p.1));
     let mut chart = ChartBuilder::on(area)
         .caption(&panel.title, (FONT, 18))
         .margin(12)
+        .margin_right(12 + LEGEND_WIDTH as u32)
         .x_label_area_size(42)
         .y_label_area_size(70)
-        .build_cartesian_2d(x, y)
+        .build_cartesian_2d(x, y.clone())
         .map_err(|e| e.to_string())?;
     chart
         .configure_mesh()
@@ -124,24 +127,83 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
         .map_err(|e| e.to_string())?;
     for curve in &panel.curves {
         let color = curve.color;
-        let series = if curve.dots {
-            chart.draw_series(curve.points.iter().map(move |&p| Circle::new(p, 2, color.filled())))
+        // A NaN (no estimate yet) would break a line: draw only the finite points.
+        let points = curve
+            .points
+            .iter()
+            .copied()
+            .filter(|p| p.0.is_finite() && p.1.is_finite());
+        if curve.dots {
+            chart.draw_series(points.map(move |p| Circle::new(p, 2, color.filled())))
         } else {
-            chart.draw_series(LineSeries::new(curve.points.iter().copied(), color.stroke_width(2)))
-        };
-        series
-            .map_err(|e| e.to_string())?
-            .label(curve.label.as_str())
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(3)));
+            chart.draw_series(LineSeries::new(points, color.stroke_width(2)))
+        }
+        .map_err(|e| e.to_string())?;
     }
-    chart
-        .configure_series_labels()
-        .label_font((FONT, 13))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(|e| e.to_string())
+    for (at, _) in &panel.marks {
+        let (bottom, top) = (y.start, y.end);
+        let dashes = 24;
+        let step = (top - bottom) / (2 * dashes) as f64;
+        chart
+            .draw_series((0..dashes).map(|i| {
+                let from = bottom + 2.0 * i as f64 * step;
+                PathElement::new(vec![(*at, from), (*at, from + step)], MARK_COLOR.stroke_width(1))
+            }))
+            .map_err(|e| e.to_string())?;
+    }
+    // The legend goes in the right margin, beside the plotting area, so that it never covers data;
+    // each swatch is drawn as its series is (dots, line, dashes).
+    let (xs, ys) = chart.plotting_area().get_pixel_range();
+    let (base_x, base_y) = area.get_base_pixel();
+    let (left, top) = (xs.end - base_x + 12, ys.start - base_y);
+    let entries = panel
+        .curves
+        .iter()
+        .map(|c| {
+            (
+                c.label.as_str(),
+                c.color,
+                if c.dots { Swatch::Dots } else { Swatch::Line },
+            )
+        })
+        .chain(
+            panel
+                .marks
+                .iter()
+                .map(|(_, label)| (label.as_str(), MARK_COLOR, Swatch::Dashes)),
+        );
+    for (i, (label, color, swatch)) in entries.enumerate() {
+        let y = top + 10 + 20 * i as i32;
+        let drawn = match swatch {
+            Swatch::Dots => area.draw(&Circle::new((left + 11, y), 3, color.filled())),
+            Swatch::Line => area.draw(&PathElement::new(
+                vec![(left, y), (left + 22, y)],
+                color.stroke_width(3),
+            )),
+            Swatch::Dashes => (0..3).try_for_each(|d| {
+                area.draw(&PathElement::new(
+                    vec![(left + 9 * d, y), (left + 9 * d + 5, y)],
+                    color.stroke_width(1),
+                ))
+            }),
+        };
+        drawn.map_err(|e| e.to_string())?;
+        area.draw(&Text::new(
+            label.to_owned(),
+            (left + 30, y - 7),
+            (FONT, 13).into_font().color(&BLACK),
+        ))
+        .map_err(|e| e.to_string())?;
+    }
+    Ok(())
+}
+
+/// How a legend entry shows its series.
+#[derive(Clone, Copy)]
+enum Swatch {
+    Dots,
+    Line,
+    Dashes,
 }
 
 fn draw_grid<DB: DrawingBackend>(
@@ -157,6 +219,9 @@ fn draw_grid<DB: DrawingBackend>(
     root.present().map_err(|e| e.to_string())
 }
 
+/// Pixels right of each panel's plotting area kept for its legend.
+const LEGEND_WIDTH: i32 = 230;
+
 /// Writes `<stem>.png` and `<stem>.svg` in `folder`, each through a temporary file.
 fn write_figure(
     folder: &Path,
@@ -165,7 +230,7 @@ fn write_figure(
     columns: usize,
     panels: &[Panel],
 ) -> Result<Vec<PathBuf>, PlotError> {
-    let size = (560 * columns as u32, 380 * rows as u32);
+    let size = ((560 + LEGEND_WIDTH as u32) * columns as u32, 380 * rows as u32);
     let png = folder.join(format!("{stem}.png"));
     crate::output::remove_stale_temporaries(folder, &format!(".{stem}.tmp"), ".png");
     let temporary = folder.join(format!(".{stem}.tmp{}.png", std::process::id()));
@@ -214,9 +279,25 @@ const MAX_DOTS: usize = 4000;
 const TRUE_COLOR: RGBColor = RGBColor(31, 119, 180);
 const ESTIMATE_COLOR: RGBColor = RGBColor(214, 39, 40);
 const NOISE_COLOR: RGBColor = RGBColor(90, 90, 90);
+const MARK_COLOR: RGBColor = RGBColor(60, 60, 60);
 
-/// Draws the three figures of `design` into `folder`; returns the files written.
-pub fn draw(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec<PathBuf>, PlotError> {
+/// Each observer kind's colour and whether it is drawn as dots, in the estimation figures.
+fn kind_style(kind: &str) -> (RGBColor, bool, &'static str) {
+    match kind {
+        "map" => (ESTIMATE_COLOR, true, "map F(Z)"),
+        "ekf" => (RGBColor(255, 127, 14), false, "EKF from x̂(0)"),
+        "corrected" => (RGBColor(44, 160, 44), false, "model-corrected map"),
+        _ => (RGBColor(148, 103, 189), false, "EKF started by the map"),
+    }
+}
+
+/// Draws the figures of `design` into `folder`; returns the files written.
+pub fn draw(
+    design: &Design,
+    result: &DesignResult,
+    comparison: &Comparison,
+    folder: &Path,
+) -> Result<Vec<PathBuf>, PlotError> {
     register_font();
     std::fs::create_dir_all(folder).map_err(|source| PlotError::Io {
         path: folder.to_owned(),
@@ -266,6 +347,7 @@ pub fn draw(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec
                     dots: true,
                 },
             ],
+            marks: Vec::new(),
         });
         panels.push(Panel {
             title: format!("{}: noise on {}", design.name, output.name),
@@ -277,6 +359,7 @@ pub fn draw(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec
                 color: NOISE_COLOR,
                 dots: false,
             }],
+            marks: Vec::new(),
         });
     }
     files.extend(write_figure(
@@ -329,6 +412,7 @@ pub fn draw(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec
                     dots: false,
                 },
             ],
+            marks: Vec::new(),
         });
         let span = map.r_max - map.r_min;
         let gamma = map.gamma();
@@ -346,63 +430,85 @@ pub fn draw(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec
                 color: TRUE_COLOR,
                 dots: false,
             }],
+            marks: Vec::new(),
         });
     }
     let columns = panels.len();
     panels.extend(gradients);
     files.extend(write_figure(folder, "identification", 2, columns, &panels)?);
 
-    // Estimation along the scenario.
-    let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
-    let rows: Vec<recording::Row> = run
-        .measurements
-        .iter()
-        .zip(&run.inputs)
-        .map(|(y, u)| recording::Row {
-            run: String::new(),
-            y: y.to_vec(),
-            u: u.to_vec(),
-        })
-        .collect();
-    let estimates = recording::estimate(&maps, design.map.horizon, &rows);
+    // Estimation along the scenario, every observer, and on the mismatch plant.
+    files.extend(estimation(design, comparison, run, false, folder)?);
+    if let Some(m) = &comparison.mismatch {
+        files.extend(estimation(design, comparison, &m.scenario, true, folder)?);
+    }
+    Ok(files)
+}
+
+/// The `estimation` figure (or `estimation_mismatch`, on the plant at the last corner of the uncertain
+/// parameters): per target, every observer's estimate against the truth along `run`, with the first
+/// estimate and the end of the start-up (`START_UP_HORIZONS · N` estimates later) marked.
+fn estimation(
+    design: &Design,
+    comparison: &Comparison,
+    run: &crate::data::Run,
+    on_mismatch: bool,
+    folder: &Path,
+) -> Result<Vec<PathBuf>, PlotError> {
+    let times: Vec<f64> = (0..run.states.len()).map(|k| k as f64 * design.tau).collect();
+    let horizon = design.map.horizon;
+    let first = (horizon - 1) as f64 * design.tau;
+    let start_up = first + (crate::observers::corrected::START_UP_HORIZONS * horizon) as f64 * design.tau;
+    let plant = match (&comparison.mismatch, on_mismatch) {
+        (Some(m), true) => format!(
+            " on the plant at {}",
+            m.names
+                .iter()
+                .zip(m.corners.last().into_iter().flatten())
+                .map(|(n, v)| format!("{n} = {v}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        _ => String::new(),
+    };
     let mut panels = Vec::new();
-    for (i, t) in result.targets.iter().enumerate() {
-        let target = &design.targets[t.index];
-        let truth: Vec<(f64, f64)> = times
-            .iter()
-            .zip(&run.targets)
-            .map(|(&time, r)| (time, r[t.index]))
-            .collect();
-        let estimate: Vec<(f64, f64)> = times
-            .iter()
-            .zip(&estimates)
-            .filter_map(|(&time, e)| e[i].map(|(value, _)| (time, value)))
-            .collect();
+    for (index, target) in design.targets.iter().enumerate() {
+        let mut curves = vec![Curve {
+            label: "true".into(),
+            points: times.iter().zip(&run.targets).map(|(&t, r)| (t, r[index])).collect(),
+            color: TRUE_COLOR,
+            dots: false,
+        }];
+        for o in &comparison.observers {
+            let rows = if on_mismatch {
+                o.mismatch_scenario.as_ref()
+            } else {
+                Some(&o.scenario)
+            };
+            let Some(rows) = rows else { continue };
+            let (color, dots, label) = kind_style(o.kind);
+            curves.push(Curve {
+                label: label.into(),
+                points: times.iter().zip(rows.iter()).map(|(&t, e)| (t, e[index])).collect(),
+                color,
+                dots,
+            });
+        }
         panels.push(Panel {
-            title: format!(
-                "{}: estimating {} (first estimate at t = {})",
-                design.name,
-                target.name,
-                (design.map.horizon - 1) as f64 * design.tau
-            ),
-            x_label: time_label.clone(),
+            title: format!("{}: estimating {}{plant}", design.name, target.name),
+            x_label: with_unit("time", &design.time_unit),
             y_label: with_unit(&target.name, &target.unit),
-            curves: vec![
-                Curve {
-                    label: "true".into(),
-                    points: truth,
-                    color: TRUE_COLOR,
-                    dots: false,
-                },
-                Curve {
-                    label: "estimate".into(),
-                    points: estimate,
-                    color: ESTIMATE_COLOR,
-                    dots: true,
-                },
+            curves,
+            marks: vec![
+                (first, format!("first estimate (t = {})", tick(&first))),
+                (start_up, format!("end of start-up (t = {})", tick(&start_up))),
             ],
         });
     }
-    files.extend(write_figure(folder, "estimation", panels.len(), 1, &panels)?);
-    Ok(files)
+    let stem = if on_mismatch {
+        "estimation_mismatch"
+    } else {
+        "estimation"
+    };
+    write_figure(folder, stem, panels.len(), 1, &panels)
 }
