@@ -238,6 +238,40 @@ fn the_mismatch_seed_is_none_of_the_others() {
 }
 
 #[test]
+fn the_long_runs_have_their_own_seed_and_the_plant_asked_for() {
+    let mut design = design();
+    assert_eq!(free_seed(&design, 0), 2006);
+    assert_eq!(free_seed(&design, 1), 3006);
+    design.learning.seed = 3006;
+    assert_eq!(free_seed(&design, 1), 4006);
+    let nominal_values = nominal(&design.model);
+    assert_eq!(
+        nominal_values,
+        vec![0.7, 2.0],
+        "T then k, in the order of Model::uncertain"
+    );
+    let on_nominal = long_set(&design, None, 40).unwrap();
+    let at_corner = long_set(&design, Some(&[0.9, 2.5]), 40).unwrap();
+    assert_eq!(on_nominal.runs.len(), design.validation.trajectories);
+    for (a, b) in on_nominal.runs.iter().zip(&at_corner.runs) {
+        assert_eq!(a.targets.len(), 40);
+        assert_eq!(
+            a.parameters,
+            vec![0.7, 3.0, 2.0],
+            "T, b, k of Model::parameters, nominal"
+        );
+        assert_eq!(b.parameters, vec![0.9, 3.0, 2.5]);
+        // Same initial state and inputs, another plant.
+        assert_eq!(a.states[0], b.states[0]);
+        assert_eq!(a.inputs[5], b.inputs[5]);
+        assert_ne!(a.states[5], b.states[5]);
+    }
+    // Not the mismatch runs' initial states.
+    let mismatch = corner_set(&design, &nominal_values).unwrap();
+    assert_ne!(mismatch.runs[0].states[0], on_nominal.runs[0].states[0]);
+}
+
+#[test]
 #[should_panic(expected = "1 values for the 2 uncertain parameters")]
 fn a_corner_has_one_value_per_uncertain_parameter() {
     let _ = corner_set(&design(), &[1.0]);
