@@ -73,6 +73,12 @@ pub enum GenerateError {
         /// The other.
         second: PathBuf,
     },
+    /// `--strict`: some designs fail quality gates (each was reported); nothing was written.
+    #[error("{designs} fail(s) the quality gates above (--strict); nothing was written: change the spec as each warning says, or run without --strict")]
+    Gates {
+        /// The designs, comma separated.
+        designs: String,
+    },
     /// Some designs failed (each was reported); nothing was written.
     #[error("{failed} of {total} design(s) failed; nothing was written")]
     Failed {
@@ -251,10 +257,12 @@ pub struct Outcome {
 /// Runs `gen` on `specs`: every design, then `lib.rs` declaring every design file present afterwards
 /// with the families of `specs` and of the shipped specs. `progress` gives each design its progress bar
 /// and `done` hears of each design as it ends (before anything is written). Writes nothing unless every
-/// design succeeded.
+/// design succeeded, and with `strict` unless every design passes the quality gates
+/// ([`reporting::gates`]).
 pub fn run(
     specs: &[PathBuf],
     to: &Destinations,
+    strict: bool,
     progress: impl Fn(&Design) -> ProgressBar,
     mut done: impl FnMut(&Path, Result<&Prepared, &GenerateError>),
 ) -> Result<Vec<Outcome>, GenerateError> {
@@ -312,6 +320,17 @@ pub fn run(
         });
     }
 
+    let gated: Vec<&str> = prepared
+        .iter()
+        .filter(|p| !p.warnings.is_empty())
+        .map(|p| p.emitted.design.name.as_str())
+        .collect();
+    if strict && !gated.is_empty() {
+        return Err(GenerateError::Gates {
+            designs: gated.join(", "),
+        });
+    }
+
     // 3. Write.
     std::fs::create_dir_all(&sources).map_err(|source| GenerateError::Io {
         path: sources.clone(),
@@ -361,30 +380,8 @@ pub struct Prepared {
     pub validation_windows: usize,
     /// Where its report goes.
     pub folder: PathBuf,
-    /// Targets the map barely estimates (see [`weak_targets`]), one sentence each.
-    pub warnings: Vec<String>,
-}
-
-/// One sentence per target whose validation RMSE is at least [`WEAK_FRACTION`](crate::fit::evaluate::WEAK_FRACTION) of the target's own
-/// spread: the map explains less than half of its variance, and the target may not be observable from
-/// these measurements over this horizon.
-pub fn weak_targets(design: &Design, result: &DesignResult) -> Vec<String> {
-    result
-        .targets
-        .iter()
-        .filter(|t| t.validation.is_weak())
-        .map(|t| {
-            let v = &t.validation;
-            format!(
-                "target `{}`: validation RMSE {:.4} is {:.0} % of the target's spread (standard deviation {:.4}): the map barely beats a constant; the target may not be observable from these measurements over N = {} samples",
-                design.targets[t.index].name,
-                v.map.rmse,
-                100.0 * v.map.rmse / v.target_spread,
-                v.target_spread,
-                design.map.horizon
-            )
-        })
-        .collect()
+    /// The quality gates it fails ([`reporting::gates`]): `gen` warns, `gen --strict` refuses.
+    pub warnings: Vec<reporting::gates::Gate>,
 }
 
 fn prepare(design: Design, spec: &Path, reports: &Path, bar: &ProgressBar) -> Result<Prepared, GenerateError> {
@@ -396,7 +393,7 @@ fn prepare(design: Design, spec: &Path, reports: &Path, bar: &ProgressBar) -> Re
         observer.on_target = measured.get(observer.kind).cloned();
     }
     Ok(Prepared {
-        warnings: weak_targets(&emitted.design, &emitted.result),
+        warnings: reporting::gates::check(&emitted.design, &emitted.result, &emitted.comparison),
         report: reporting::texts(&report),
         table: format!("{}\n{}", reporting::table(&report), reporting::observers_table(&report)),
         learning_windows: report.learning.windows,

@@ -30,6 +30,9 @@ enum Command {
         /// The `generated` crate to write the observers into. Default: generated/ of the checkout.
         #[arg(long, value_name = "DIR")]
         generated: Option<PathBuf>,
+        /// Refuse (write nothing) when a design fails a quality gate, instead of warning.
+        #[arg(long)]
+        strict: bool,
     },
     /// Simulates one run of a design (its `[scenario]` unless overridden) and writes it as CSV.
     Simulate {
@@ -88,7 +91,8 @@ fn main() -> ExitCode {
             specs,
             reports,
             generated,
-        } => gen(specs, reports, generated),
+            strict,
+        } => gen(specs, reports, generated, strict),
         Command::Simulate {
             design,
             x0,
@@ -119,7 +123,7 @@ fn progress_bar(design: &spec::Design) -> ProgressBar {
 
 /// `gen`: every spec through the library's job, a summary per design as it ends, then what was written
 /// (nothing, if any design failed).
-fn gen(specs: Vec<PathBuf>, reports: Option<PathBuf>, generated: Option<PathBuf>) -> anyhow::Result<()> {
+fn gen(specs: Vec<PathBuf>, reports: Option<PathBuf>, generated: Option<PathBuf>, strict: bool) -> anyhow::Result<()> {
     let specs = if specs.is_empty() {
         generate::shipped_specs()?
     } else {
@@ -143,7 +147,7 @@ fn gen(specs: Vec<PathBuf>, reports: Option<PathBuf>, generated: Option<PathBuf>
         to.generated.display(),
         to.reports.display()
     );
-    let outcomes = generate::run(&specs, &to, progress_bar, |spec, prepared| match prepared {
+    let outcomes = generate::run(&specs, &to, strict, progress_bar, |spec, prepared| match prepared {
         Ok(prepared) => print_summary(prepared),
         Err(error) => eprintln!("error: {}: {error}", spec.display()),
     })?;

@@ -1,4 +1,5 @@
-//! The files in `generated/` are exactly what `gen` produces now, and producing them is deterministic.
+//! The files in `generated/` are exactly what `gen` produces now, producing them is deterministic, and
+//! every shipped design passes the quality gates (what `gen --strict` asks).
 
 use host::generate;
 use indicatif::ProgressBar;
@@ -16,6 +17,9 @@ fn generated_files_match_a_fresh_generation() {
         };
         let (first, second) = (emit(), emit());
         let name = first.design.name.clone();
+        // `gen --strict` on the shipped specs: every one passes the quality gates.
+        let gates = host::report::gates::check(&first.design, &first.result, &first.comparison);
+        assert!(gates.is_empty(), "{name} fails quality gates: {gates:?}");
         assert_eq!(first.source, second.source, "generation of {name} is not deterministic");
         let file = workspace_root().join("generated/src").join(format!("{name}.rs"));
         let committed = std::fs::read_to_string(&file).unwrap_or_default();

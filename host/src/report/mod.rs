@@ -1,6 +1,7 @@
 //! The report of a design: `report.json` (everything, machine-readable), `report.md` (one table a
 //! person reads) and the one-screen summary `gen` prints.
 
+pub mod gates;
 pub mod on_target;
 pub mod plots;
 
@@ -56,6 +57,8 @@ pub struct Report<'a> {
     pub observer: (crate::spec::ObserverKind, String),
     /// The model on the chip against the learning simulation's.
     pub chip_model: ChipModel,
+    /// The quality gates the design fails ([`gates`]), one sentence each; empty when it passes them all.
+    pub quality_gates: Vec<String>,
     /// The plants of the `rmse_mismatch` figures, when parameters are uncertain.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mismatch: Option<MismatchReport>,
@@ -350,6 +353,10 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             simulation_substeps: design.substeps,
             max_step_difference_relative: comparison.chip_model_error.clone(),
         },
+        quality_gates: gates::check(design, result, comparison)
+            .iter()
+            .map(ToString::to_string)
+            .collect(),
         mismatch: comparison.mismatch.as_ref().map(|m| MismatchReport {
             plants: MISMATCH_PLANTS,
             parameters: m.names.clone(),
@@ -576,6 +583,14 @@ pub fn markdown(report: &Report<'_>) -> String {
         report.validation.windows
     );
     s.push_str(&table(report));
+    if report.quality_gates.is_empty() {
+        s.push_str("\nQuality gates (linear floor, learning range, observability, EKF): all passed.\n");
+    } else {
+        s.push_str("\n**Quality gates failed** (`gen` warns, `gen --strict` refuses):\n\n");
+        for gate in &report.quality_gates {
+            let _ = writeln!(s, "- {gate}");
+        }
+    }
     s.push_str("\n## Observers on the same data\n\n");
     s.push_str(&observers_table(report));
     if let Some(t) = &report.ekf_tuning {

@@ -1,0 +1,192 @@
+//! Quality gates: what `gen` warns about a design before a user ships it (and `gen --strict` refuses).
+//! Each gate is measured on the validation runs (data no fit and no tuning saw) and says what to
+//! change:
+//!
+//! * [`Gate::BelowLinearFloor`]: the map is worse than the plain linear least-squares map `Lᵀ Z + c` on
+//!   the same windows by more than [`LINEAR_FLOOR_SLACK`]: the nonlinear fit failed to pay for itself.
+//! * [`Gate::OutsideLearningRange`]: more than [`OUTSIDE_FRACTION`] of the validation windows have a
+//!   true target outside the learning range `[r_min, r_max]`: the validation runs went where the
+//!   learning runs never did (a pendulum going over the top, say), so the map can only saturate there.
+//! * [`Gate::Weak`]: the map's validation RMSE is at least
+//!   [`WEAK_FRACTION`](crate::fit::evaluate::WEAK_FRACTION) of the target's spread: it barely beats
+//!   predicting the mean, and the target may not be observable from these measurements over N.
+//! * [`Gate::EkfBetter`]: the chosen observer's validation RMSE is more than [`EKF_FACTOR`] times the
+//!   design's EKF's (either start) on some target: the EKF is the better choice for this system.
+
+use std::fmt;
+
+use crate::fit::evaluate::WEAK_FRACTION;
+use crate::fit::DesignResult;
+use crate::observers::Comparison;
+use crate::spec::{Design, ObserverKind};
+
+/// How much worse than the linear floor the map may be before [`Gate::BelowLinearFloor`].
+pub const LINEAR_FLOOR_SLACK: f64 = 0.02;
+/// Largest fraction of validation windows whose true target may lie outside the learning range.
+pub const OUTSIDE_FRACTION: f64 = 0.01;
+/// How many times the EKF's validation RMSE the chosen observer may reach.
+pub const EKF_FACTOR: f64 = 2.0;
+
+/// One failed gate, for one target.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Gate {
+    /// See the module docs.
+    BelowLinearFloor {
+        /// The target.
+        target: String,
+        /// Map's validation RMSE over the linear map's.
+        ratio: f64,
+        /// Whether the spec uses the paper's normalisation (the `intercept` one is never far below
+        /// the floor on the paper's examples).
+        paper_normalisation: bool,
+    },
+    /// See the module docs.
+    OutsideLearningRange {
+        /// The target.
+        target: String,
+        /// Fraction of validation windows outside `[r_min, r_max]`.
+        fraction: f64,
+        /// The learning range.
+        range: (f64, f64),
+        /// The true target's range over the validation windows.
+        seen: (f64, f64),
+    },
+    /// See the module docs.
+    Weak {
+        /// The target.
+        target: String,
+        /// Map's validation RMSE over the target's spread.
+        fraction: f64,
+        /// The horizon `N`.
+        horizon: usize,
+    },
+    /// See the module docs.
+    EkfBetter {
+        /// The target.
+        target: String,
+        /// The chosen observer's kind.
+        chosen: &'static str,
+        /// Its validation RMSE.
+        rmse: f64,
+        /// The better EKF's (`ekf` from the box centre, or `ekf_started`) kind.
+        ekf: &'static str,
+        /// Its validation RMSE.
+        ekf_rmse: f64,
+    },
+}
+
+impl fmt::Display for Gate {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Gate::BelowLinearFloor {
+                target,
+                ratio,
+                paper_normalisation,
+            } => write!(
+                f,
+                "target `{target}`: the map's validation RMSE is {ratio:.3} times the linear floor's (more than {:.0} % worse): \
+                 the map does not generalise from the learning runs; {}try another `map.beta` or `map.nm`, or learning runs \
+                 that cover the validation box (`learning.grid`, `learning.samples`)",
+                LINEAR_FLOOR_SLACK * 100.0,
+                if *paper_normalisation { "set `map.normalisation = \"intercept\"`, or " } else { "" }
+            ),
+            Gate::OutsideLearningRange { target, fraction, range, seen } => write!(
+                f,
+                "target `{target}`: {:.1} % of the validation windows have a true value outside the learning range [{:.4}, {:.4}] \
+                 (validation saw [{:.4}, {:.4}]): the validation runs go where no learning run went, and the map can only \
+                 saturate there; widen the learning grid (`learning.grid`, more points or a wider box) or lengthen the learning runs \
+                 (`learning.samples`) so that they cover it",
+                fraction * 100.0,
+                range.0,
+                range.1,
+                seen.0,
+                seen.1
+            ),
+            Gate::Weak { target, fraction, horizon } => write!(
+                f,
+                "target `{target}`: validation RMSE is {:.0} % of the target's spread: the map barely beats predicting the mean \
+                 (at least {:.0} %); the target may not be observable from these measurements over N = {horizon} samples: \
+                 measure another output, or lengthen `map.horizon`",
+                fraction * 100.0,
+                WEAK_FRACTION * 100.0
+            ),
+            Gate::EkfBetter { target, chosen, rmse, ekf, ekf_rmse } => write!(
+                f,
+                "target `{target}`: the chosen observer (`{chosen}`) has validation RMSE {rmse:.4}, more than {EKF_FACTOR} times \
+                 the EKF's (`{ekf}`: {ekf_rmse:.4}): the EKF is the better choice for this system (`[observer] kind = \"ekf\"`, \
+                 or `auto` with every state a target)"
+            ),
+        }
+    }
+}
+
+/// Every failed gate of a design, in target order, gate by gate.
+pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) -> Vec<Gate> {
+    let mut failed = Vec::new();
+    for t in &result.targets {
+        let name = design.targets[t.index].name.clone();
+        let v = &t.validation;
+        let ratio = v.map.rmse / v.linear.rmse;
+        if ratio > 1.0 + LINEAR_FLOOR_SLACK {
+            failed.push(Gate::BelowLinearFloor {
+                target: name.clone(),
+                ratio,
+                paper_normalisation: design.map.normalisation == crate::spec::Normalisation::Paper,
+            });
+        }
+        let range = (t.fit.map.r_min, t.fit.map.r_max);
+        let (mut outside, mut windows) = (0usize, 0usize);
+        let mut seen = (f64::INFINITY, f64::NEG_INFINITY);
+        for window in result.validation.windows() {
+            let truth = result.validation.target(window, t.index);
+            seen = (seen.0.min(truth), seen.1.max(truth));
+            outside += usize::from(!(range.0..=range.1).contains(&truth));
+            windows += 1;
+        }
+        let fraction = outside as f64 / windows.max(1) as f64;
+        if fraction > OUTSIDE_FRACTION {
+            failed.push(Gate::OutsideLearningRange {
+                target: name.clone(),
+                fraction,
+                range,
+                seen,
+            });
+        }
+        if v.is_weak() {
+            failed.push(Gate::Weak {
+                target: name.clone(),
+                fraction: v.map.rmse / v.target_spread,
+                horizon: design.map.horizon,
+            });
+        }
+        let chosen = match comparison.chosen.0 {
+            ObserverKind::Map | ObserverKind::Auto => "map",
+            ObserverKind::Corrected => "corrected",
+            ObserverKind::Ekf => "ekf_started",
+        };
+        let rmse_of = |kind: &str| {
+            comparison
+                .observers
+                .iter()
+                .find(|o| o.kind == kind)
+                .map(|o| o.targets[t.index].rmse_validation)
+                .filter(|v| v.is_finite())
+        };
+        let best_ekf = ["ekf", "ekf_started"]
+            .into_iter()
+            .filter_map(|kind| rmse_of(kind).map(|v| (kind, v)))
+            .min_by(|a, b| a.1.total_cmp(&b.1));
+        if let (Some(rmse), Some((ekf, ekf_rmse))) = (rmse_of(chosen), best_ekf) {
+            if chosen != "ekf_started" && rmse > EKF_FACTOR * ekf_rmse {
+                failed.push(Gate::EkfBetter {
+                    target: name,
+                    chosen,
+                    rmse,
+                    ekf,
+                    ekf_rmse,
+                });
+            }
+        }
+    }
+    failed
+}

@@ -1,0 +1,74 @@
+//! The quality gates `gen` warns about (and `gen --strict` refuses): each fires where it should, on a
+//! design built to fail it, and stays quiet on Example 1 (the shipped designs pass them all: checked in
+//! `generated_is_current`, which builds them).
+
+use host::observers::compare;
+use host::plant::ModelCode;
+use host::report::gates::{check, Gate};
+use integration_tests::{build, load_relative};
+
+/// Example 1, built once per test binary, and its observers compared.
+fn example_1() -> (host::spec::Design, host::fit::DesignResult, host::observers::Comparison) {
+    let design = load_relative("host/specs/vanderpol.toml");
+    let result = (*build(&design)).clone();
+    let code = ModelCode::new(&design).expect("Example 1's model is emittable");
+    let comparison = compare(&design, &result, &code).expect("Example 1 compares");
+    (design, result, comparison)
+}
+
+#[test]
+fn example_1_passes_every_gate_and_each_gate_bites() {
+    let (design, mut result, mut comparison) = example_1();
+    assert_eq!(check(&design, &result, &comparison), Vec::new());
+
+    // The map as `observer()`: 0.2424 against the EKF's 0.0801 on x1 (3.0×) and 0.2870 against 0.1220
+    // on x2 (2.35×): both over 2×.
+    comparison.chosen.0 = host::spec::ObserverKind::Map;
+    let gates = check(&design, &result, &comparison);
+    assert!(
+        matches!(&gates[..], [Gate::EkfBetter { target: a, .. }, Gate::EkfBetter { target: b, .. }] if a == "x1" && b == "x2"),
+        "{gates:?}"
+    );
+    comparison.chosen.0 = host::spec::ObserverKind::Ekf;
+
+    // A learning range cut to [-1.5, 1.5] on x1 leaves more than 1 % of the validation windows (x1
+    // spans about [-2.3, 2.3]) outside; cut to the range seen it leaves none.
+    let map = &mut result.targets[0].fit.map;
+    let full = (map.r_min, map.r_max);
+    (map.r_min, map.r_max) = (-1.5, 1.5);
+    let gates = check(&design, &result, &comparison);
+    match &gates[..] {
+        [Gate::OutsideLearningRange {
+            target, fraction, seen, ..
+        }] => {
+            assert_eq!(target, "x1");
+            assert!(*fraction > 0.05 && *fraction < 0.5, "{fraction}");
+            assert!(seen.0 < -1.5 && seen.1 > 1.5, "{seen:?}");
+            let (lo, hi) = *seen;
+            let map = &mut result.targets[0].fit.map;
+            (map.r_min, map.r_max) = (lo, hi);
+            assert_eq!(check(&design, &result, &comparison), Vec::new());
+            let text = gates[0].to_string();
+            assert!(text.contains("learning.grid") && text.contains("x1"), "{text}");
+        }
+        other => panic!("{other:?}"),
+    }
+    let map = &mut result.targets[0].fit.map;
+    (map.r_min, map.r_max) = full;
+}
+
+#[test]
+fn a_pendulum_whose_runs_go_over_the_top_warns() {
+    let design = load_relative("tests/fixtures/pendulum_over_the_top.toml");
+    let result = build(&design);
+    let code = ModelCode::new(&design).expect("the pendulum's model is emittable");
+    let comparison = compare(&design, &result, &code).expect("the pendulum compares");
+    let gates = check(&design, &result, &comparison);
+    // Measured: θ's map is 1.077 times its linear floor on validation.
+    assert!(
+        gates
+            .iter()
+            .any(|g| matches!(g, Gate::BelowLinearFloor { target, ratio, .. } if target == "theta" && *ratio > 1.02)),
+        "{gates:?}"
+    );
+}
