@@ -1,17 +1,26 @@
 //! Running the generated observers on the emulated Cortex-M4F (QEMU `mps2-an386`) and measuring them:
 //! estimates over semihosting, instructions per `push` + `estimate` from an execution trace, flash
-//! and RAM from the ELF, and the no-panic proof (see `tests/on-target/`). Each design's extended
-//! Kalman filter is measured the same way, in its own program ([`measure_ekf`]).
+//! and RAM from the ELF, and the no-panic proof (see `tests/on-target/`).
+//!
+//! Every kind of observer a design has is measured ([`Kind`]): the map, the observers the map starts
+//! (the model-corrected map, the map-started EKF: one program per design runs them one after the
+//! other over the recorded sequence, [`ObserverMeasurement`]) and the EKF from the box centre (a
+//! program of its own, [`EkfMeasurement`]: it shares the filter's code with the map-started EKF, which
+//! linked together could change what the compiler inlines). [`measure`] builds each program once
+//! per design and runs QEMU on one while cargo builds the next.
 
+use std::any::TypeId;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use firmware::{Estimate, Maths, Saturation, Scalar};
+use firmware::{Estimate, Follower, Maths, Saturation, Scalar, Started};
 use host::emit::precision::compare;
 
 use crate::workspace_root;
+
+include!(concat!(env!("OUT_DIR"), "/started_observers.rs"));
 
 /// Why the on-target measurements could not be made.
 #[derive(Debug)]
@@ -57,7 +66,108 @@ fn require(tool: &'static str, package: &'static str) -> Result<(), Unavailable>
     }
 }
 
-/// One sample as the target reported it.
+/// A kind of observer a generated design may have.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Kind {
+    /// The paper's map (`map_observer()`, every design).
+    Map,
+    /// The model-corrected map (`CorrectedObserver`).
+    Corrected,
+    /// The EKF started by the map (`StartedEkfObserver`).
+    StartedEkf,
+    /// The EKF from the centre of the state box (`ekf()`, every design).
+    Ekf,
+}
+
+impl Kind {
+    /// Every kind, in the order the report lists them.
+    pub const ALL: [Kind; 4] = [Kind::Map, Kind::Corrected, Kind::StartedEkf, Kind::Ekf];
+
+    /// Its name for the on-target program (`ON_TARGET_KIND`, `PROBE_KIND`).
+    pub fn chip_name(self) -> &'static str {
+        match self {
+            Kind::Map => "map",
+            Kind::Corrected => "corrected",
+            Kind::StartedEkf => "started_ekf",
+            Kind::Ekf => "ekf",
+        }
+    }
+
+    /// Its name in `report.json` (`observers[].kind`) and `on_target.json`.
+    pub fn report_name(self) -> &'static str {
+        match self {
+            Kind::Map => "map",
+            Kind::Corrected => "corrected",
+            Kind::StartedEkf => "ekf_started",
+            Kind::Ekf => "ekf",
+        }
+    }
+
+    /// How firmware makes one.
+    pub fn api(self) -> &'static str {
+        match self {
+            Kind::Map => "map_observer()",
+            Kind::Corrected => "CorrectedObserver::new()",
+            Kind::StartedEkf => "StartedEkfObserver::new()",
+            Kind::Ekf => "ekf()",
+        }
+    }
+
+    fn from_chip_name(name: &str) -> Option<Kind> {
+        Kind::ALL.into_iter().find(|k| k.chip_name() == name)
+    }
+}
+
+/// Every kind design `name` has, in [`Kind::ALL`]'s order: the map, the observers the map starts
+/// that its generated file declares, and the EKF from the centre. Empty for an unknown design.
+pub fn kinds(name: &str) -> Vec<Kind> {
+    let mut kinds = Vec::new();
+    if design_names().contains(&name) {
+        kinds.push(Kind::Map);
+    }
+    macro_rules! started {
+        ($design:ident, $kind:ident, $type:ident) => {
+            if stringify!($design) == name {
+                kinds.push(Kind::$kind);
+            }
+        };
+    }
+    for_each_started_observer!(started);
+    if !kinds.is_empty() {
+        kinds.push(Kind::Ekf);
+    }
+    kinds.sort();
+    kinds
+}
+
+/// The kind of design `name`'s `observer()` (its type compared with each kind's); `None` for an
+/// unknown design, or an `Observer` that is none of the kinds.
+pub fn chosen_kind(name: &str) -> Option<Kind> {
+    let mut chosen = None;
+    macro_rules! map {
+        ($design:ident) => {
+            if stringify!($design) == name
+                && TypeId::of::<generated::$design::Observer>() == TypeId::of::<generated::$design::MapObserver>()
+            {
+                chosen = Some(Kind::Map);
+            }
+        };
+    }
+    generated::for_each_design!(map);
+    macro_rules! started {
+        ($design:ident, $kind:ident, $type:ident) => {
+            if stringify!($design) == name
+                && TypeId::of::<generated::$design::Observer>() == TypeId::of::<generated::$design::$type>()
+            {
+                chosen = Some(Kind::$kind);
+            }
+        };
+    }
+    for_each_started_observer!(started);
+    chosen
+}
+
+/// One sample as the target reported it (or the host computed it).
 #[derive(Clone, Debug, PartialEq)]
 pub struct TargetSample {
     /// Whether `push` accepted the sample.
@@ -66,9 +176,15 @@ pub struct TargetSample {
     pub estimates: Option<Vec<(u32, char)>>,
 }
 
-/// Everything measured for one design.
-#[derive(Clone, Debug, Default)]
-pub struct DesignMeasurement {
+/// Everything measured for one observer of a design that estimates through `push` + `estimate`:
+/// the map, or an observer the map starts.
+#[derive(Clone, Debug)]
+pub struct ObserverMeasurement {
+    /// Which.
+    pub kind: Kind,
+    /// Estimates after the first that take the start-up path, as the chip reported it (0 for the
+    /// map, `Follower::START_UP` for the others).
+    pub start_up: usize,
     /// Samples in the recorded sequence order.
     pub samples: Vec<TargetSample>,
     /// Instructions executed by `push` + `estimate` per sample (markers included).
@@ -79,82 +195,122 @@ pub struct DesignMeasurement {
     pub stack_bytes: usize,
     /// `size_of` the observer on the target, in bytes.
     pub observer_bytes: usize,
-    /// Flash (text + data) added by the design's observer over the baseline probe, in bytes.
+    /// Flash (text + data) added by this observer over the baseline probe, in bytes.
     pub flash_bytes: u64,
     /// Static RAM (data + bss) added over the baseline probe, in bytes.
     pub static_ram_bytes: u64,
 }
 
-impl DesignMeasurement {
-    /// Instruction counts of the samples that were accepted and gave an estimate (the steady state:
-    /// a full window, the same path every sample).
-    pub fn steady_instructions(&self) -> Vec<u64> {
-        self.instructions
+impl ObserverMeasurement {
+    /// The instructions split into start-up and steady state ([`phases`]).
+    pub fn phases(&self) -> Result<Phases, String> {
+        let accepted: Vec<bool> = self.samples.iter().map(|s| s.accepted).collect();
+        let estimated: Vec<bool> = self
+            .samples
             .iter()
-            .zip(&self.samples)
-            .filter(|(_, s)| s.accepted && s.estimates.is_some())
-            .map(|(n, _)| *n)
-            .collect()
-    }
-
-    /// Instructions of the sample that gave the first estimate (the window just became full).
-    pub fn first_estimate_instructions(&self) -> Option<u64> {
-        self.samples
-            .iter()
-            .position(|s| s.estimates.is_some())
-            .and_then(|k| self.instructions.get(k).copied())
+            .map(|s| s.accepted && s.estimates.is_some())
+            .collect();
+        phases(&self.instructions, &accepted, &estimated, self.start_up)
     }
 }
 
-/// What a program measures: the map observer, or the design's extended Kalman filter.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Kind {
-    Map,
-    Ekf,
+/// A run's instructions per sample, split at the end of the start-up.
+///
+/// The start-up is every sample up to and including the one that gives estimate number
+/// `start_up + 1`, counting only samples that were accepted and gave an estimate: the samples before
+/// the first estimate (the window filling), the first estimate, and the `start_up` estimates after
+/// it that take a follower's start-up path (`Follower::START_UP`; 0 for the map and the EKF, whose
+/// start-up is their first estimate). Refused samples in between count with the start-up. The
+/// steady state is every later sample.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Phases {
+    /// Samples in the start-up (the index of the first steady sample).
+    pub start_up_samples: usize,
+    /// Largest instructions of one start-up sample.
+    pub start_up_max: u64,
+    /// Instructions of the sample that gave the first estimate.
+    pub first_estimate: u64,
+    /// Instructions of every accepted sample of the steady state, in order.
+    pub steady: Vec<u64>,
+    /// Instructions of every refused sample of the steady state, in order.
+    pub steady_refused: Vec<u64>,
 }
 
-impl Kind {
-    /// The runner binary of the on-target program.
-    fn runner(self) -> &'static str {
-        match self {
-            Kind::Map => "on-target",
-            Kind::Ekf => "ekf",
-        }
+/// Splits `instructions` ([`Phases`]); `accepted` and `estimated` say, per sample, whether `push`
+/// accepted it and whether it then gave an estimate. An error when the lengths differ, or when the
+/// run does not reach the steady state.
+pub fn phases(instructions: &[u64], accepted: &[bool], estimated: &[bool], start_up: usize) -> Result<Phases, String> {
+    if instructions.len() != accepted.len() || accepted.len() != estimated.len() {
+        return Err(format!(
+            "{} instruction counts for {} samples ({} estimate flags)",
+            instructions.len(),
+            accepted.len(),
+            estimated.len()
+        ));
     }
-
-    /// The probe's `PROBE_KIND`.
-    fn probe_kind(self) -> &'static str {
-        match self {
-            Kind::Map => "map",
-            Kind::Ekf => "ekf",
-        }
+    let estimates: Vec<usize> = (0..estimated.len()).filter(|&k| estimated[k]).collect();
+    let (Some(&first), Some(&last)) = (estimates.first(), estimates.get(start_up)) else {
+        return Err(format!(
+            "{} estimates in {} samples: the start-up takes {}",
+            estimates.len(),
+            estimated.len(),
+            start_up + 1
+        ));
+    };
+    let after = last + 1;
+    let steady: Vec<u64> = (after..instructions.len())
+        .filter(|&k| accepted[k])
+        .map(|k| instructions[k])
+        .collect();
+    if steady.is_empty() {
+        return Err(format!(
+            "no accepted sample after the start-up ({after} of {} samples)",
+            instructions.len()
+        ));
     }
+    Ok(Phases {
+        start_up_samples: after,
+        start_up_max: instructions[..after].iter().copied().max().unwrap_or(0),
+        first_estimate: instructions[first],
+        steady,
+        steady_refused: (after..instructions.len())
+            .filter(|&k| !accepted[k])
+            .map(|k| instructions[k])
+            .collect(),
+    })
 }
 
-/// Builds `bin` of the on-target program in release, linking design `design` (a runner's
-/// `ON_TARGET_DESIGN`, the probe's `PROBE_DESIGN`, with `PROBE_KIND` from `kind`), into `target_dir`.
-fn build(bin: &str, design: &str, kind: Kind, target_dir: &Path) -> Result<PathBuf, String> {
+/// Builds `bin` of the on-target program in release into `target_dir`, with `variables` set (the
+/// design and kind selections of `tests/on-target/build.rs`), and copies the ELF to `copy`, so that
+/// the next build (which writes the same file) leaves it as built.
+fn build(bin: &str, variables: &[(&str, &str)], target_dir: &Path, copy: &Path) -> Result<PathBuf, String> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    let output = Command::new(cargo)
+    let mut command = Command::new(cargo);
+    command
         .current_dir(workspace_root())
         .args(["build", "--release", "--manifest-path", "tests/on-target/Cargo.toml"])
         .args(["--target", "thumbv7em-none-eabihf", "--bin", bin, "--target-dir"])
-        .arg(target_dir)
-        .env(
-            if bin == "probe" {
-                "PROBE_DESIGN"
-            } else {
-                "ON_TARGET_DESIGN"
-            },
-            design,
-        )
-        .env("PROBE_KIND", kind.probe_kind())
-        .output()
-        .map_err(|e| format!("cannot run cargo: {e}"))?;
+        .arg(target_dir);
+    for variable in ["ON_TARGET_DESIGN", "ON_TARGET_KIND", "PROBE_DESIGN", "PROBE_KIND"] {
+        command.env_remove(variable);
+    }
+    command.envs(variables.iter().copied());
+    let output = command.output().map_err(|e| format!("cannot run cargo: {e}"))?;
     if !output.status.success() {
         return Err(String::from_utf8_lossy(&output.stderr).into_owned());
     }
-    Ok(target_dir.join("thumbv7em-none-eabihf/release").join(bin))
+    let built = target_dir.join("thumbv7em-none-eabihf/release").join(bin);
+    if let Some(folder) = copy.parent() {
+        std::fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
+    }
+    std::fs::copy(&built, copy).map_err(|e| format!("cannot copy {} to {}: {e}", built.display(), copy.display()))?;
+    Ok(copy.to_owned())
+}
+
+/// Where the on-target programs are built (runners and probes share it, so their dependencies are
+/// compiled once).
+fn target_dir() -> PathBuf {
+    workspace_root().join("target").join("on-target")
 }
 
 /// Address of a symbol in an ELF (`arm-none-eabi-nm`).
@@ -318,37 +474,63 @@ fn count_between(
     Ok(counts)
 }
 
-/// Parses the program's `E …`, `S …` and `STACK …` lines.
-fn parse(text: &str) -> Result<DesignMeasurement, Unavailable> {
-    let mut design = DesignMeasurement::default();
+/// Parses the runner's output: per `KIND` block its `E …`, `S …` and `STACK …` lines (the costs
+/// measured elsewhere are left at zero).
+fn parse(text: &str) -> Result<Vec<ObserverMeasurement>, Unavailable> {
+    let mut observers: Vec<ObserverMeasurement> = Vec::new();
+    let number = |field: &str, line: &str| -> Result<usize, Unavailable> {
+        field.parse().map_err(|e| failed(format!("{field:?} in {line:?}: {e}")))
+    };
     for line in text.lines() {
         let fields: Vec<&str> = line.split_whitespace().collect();
+        if let ["KIND", name, start_up] = fields.as_slice() {
+            let kind = Kind::from_chip_name(name).ok_or_else(|| failed(format!("unknown kind in {line:?}")))?;
+            observers.push(ObserverMeasurement {
+                kind,
+                start_up: number(start_up, line)?,
+                samples: Vec::new(),
+                instructions: Vec::new(),
+                divisions: Vec::new(),
+                stack_bytes: 0,
+                observer_bytes: 0,
+                flash_bytes: 0,
+                static_ram_bytes: 0,
+            });
+            continue;
+        }
+        let Some(observer) = observers.last_mut() else {
+            continue;
+        };
         match fields.as_slice() {
             ["E", _k, accepted, rest @ ..] => {
-                let estimates = (!rest.is_empty()).then(|| {
-                    rest.chunks(2)
-                        .map(|c| {
-                            (
-                                u32::from_str_radix(c[0], 16).unwrap_or(0),
-                                c.get(1).and_then(|f| f.chars().next()).unwrap_or('?'),
-                            )
-                        })
-                        .collect()
-                });
-                design.samples.push(TargetSample {
+                if rest.len() % 2 != 0 {
+                    return Err(failed(format!("an estimate without its flag in {line:?}")));
+                }
+                let estimates = rest
+                    .chunks(2)
+                    .map(|c| {
+                        let bits = u32::from_str_radix(c[0], 16)
+                            .map_err(|e| failed(format!("{:?} in {line:?}: {e}", c[0])))?;
+                        match c[1] {
+                            "L" | "I" | "H" => Ok((bits, c[1].chars().next().unwrap_or('?'))),
+                            other => Err(failed(format!("saturation flag {other:?} in {line:?}"))),
+                        }
+                    })
+                    .collect::<Result<Vec<_>, _>>()?;
+                observer.samples.push(TargetSample {
                     accepted: *accepted == "1",
-                    estimates,
+                    estimates: (!estimates.is_empty()).then_some(estimates),
                 });
             }
-            ["S", bytes] => design.observer_bytes = bytes.parse().unwrap_or(0),
-            ["STACK", bytes] => design.stack_bytes = bytes.parse().unwrap_or(0),
+            ["S", bytes] => observer.observer_bytes = number(bytes, line)?,
+            ["STACK", bytes] => observer.stack_bytes = number(bytes, line)?,
             _ => {}
         }
     }
-    if design.samples.is_empty() {
+    if observers.is_empty() || observers.iter().any(|o| o.samples.is_empty()) {
         return Err(failed(format!("no estimate in the output:\n{text}")));
     }
-    Ok(design)
+    Ok(observers)
 }
 
 /// The generated design modules.
@@ -366,49 +548,175 @@ pub fn design_names() -> Vec<&'static str> {
 /// Everything measured on the target.
 #[derive(Clone, Debug, Default)]
 pub struct Measurements {
-    /// Per design.
-    pub designs: BTreeMap<String, DesignMeasurement>,
+    /// Per design, its map and the observers the map starts, by kind.
+    pub observers: BTreeMap<String, BTreeMap<Kind, ObserverMeasurement>>,
+    /// Per design, its EKF from the box centre.
+    pub filters: BTreeMap<String, EkfMeasurement>,
     /// Flash added by each family observer (all its members' tables and the selection) over the
     /// baseline probe, in bytes; its probe links, so it has no reachable panic either.
     pub family_flash_bytes: BTreeMap<String, u64>,
 }
 
-/// Builds and runs, per design, the on-target program linking that design alone, and the size
-/// probes; returns the measurements. `Err(Unavailable::Missing)` when QEMU or binutils are missing.
+/// A program built and waiting for QEMU: the design, whether it is the EKF's, and its ELF.
+type Built = (String, bool, PathBuf);
+
+/// What QEMU reported for a [`Built`] program: the design, whether it is the EKF's, what the program
+/// printed and the instructions and divisions of each measured call.
+type Ran = (String, bool, String, Vec<(u64, u64)>);
+
+/// Builds and runs, per design, two programs on the emulated chip: one that runs the map and every
+/// observer the map starts ([`kinds`]) one after the other, and one that runs the EKF from the box
+/// centre; then the size probes (one per design and kind, the families, a baseline). QEMU runs on a
+/// second thread while cargo builds the next program. `Err(Unavailable::Missing)` when QEMU or
+/// binutils are missing.
 pub fn measure() -> Result<Measurements, Unavailable> {
     require_tools()?;
-    let root = workspace_root().join("target");
-    let mut designs = BTreeMap::new();
-    for name in design_names() {
-        let (text, counts) = run_counted(Kind::Map, name)?;
-        let mut design = parse(&text)?;
-        if counts.len() != design.samples.len() {
-            return Err(failed(format!(
-                "{name}: {} measured calls for {} samples",
-                counts.len(),
-                design.samples.len()
-            )));
-        }
-        (design.instructions, design.divisions) = counts.into_iter().unzip();
-        designs.insert(name.to_owned(), design);
-    }
+    let dir = target_dir();
+    let runs = dir.join("runs");
+    let (ran, probes) = std::thread::scope(|scope| {
+        let (send, receive) = std::sync::mpsc::channel::<Built>();
+        let qemu = scope.spawn(move || -> Result<Vec<Ran>, Unavailable> {
+            receive
+                .into_iter()
+                .map(|(name, ekf, elf)| {
+                    let (text, counts) = run_counted(&elf)?;
+                    Ok((name, ekf, text, counts))
+                })
+                .collect()
+        });
+        let built = (|| -> Result<Probes, Unavailable> {
+            for name in design_names() {
+                let kinds: Vec<&str> = kinds(name)
+                    .into_iter()
+                    .filter(|&k| k != Kind::Ekf)
+                    .map(Kind::chip_name)
+                    .collect();
+                let elf = build(
+                    "on-target",
+                    &[("ON_TARGET_DESIGN", name), ("ON_TARGET_KIND", &kinds.join(","))],
+                    &dir,
+                    &runs.join(format!("{name}.elf")),
+                )
+                .map_err(|e| failed(format!("on-target program of {name}: {e}")))?;
+                // The QEMU thread has stopped only after an error, which its result reports.
+                let _ = send.send((name.to_owned(), false, elf));
+                let elf = build(
+                    "ekf",
+                    &[("ON_TARGET_DESIGN", name)],
+                    &dir,
+                    &runs.join(format!("{name}.ekf.elf")),
+                )
+                .map_err(|e| failed(format!("EKF program of {name}: {e}")))?;
+                let _ = send.send((name.to_owned(), true, elf));
+            }
+            drop(send);
+            probe_all(&dir)
+        })();
+        let ran = qemu
+            .join()
+            .unwrap_or_else(|_| Err(failed("the thread running QEMU panicked")));
+        (ran, built)
+    });
+    let (ran, probes) = (ran?, probes?);
 
-    let probes = root.join("on-target-probe");
-    let baseline = baseline_sizes(&probes)?;
-    for (name, design) in designs.iter_mut() {
-        (design.flash_bytes, design.static_ram_bytes) = probe_cost(Kind::Map, name, &probes, baseline)?;
+    let mut all = Measurements {
+        family_flash_bytes: probes.families,
+        ..Measurements::default()
+    };
+    for (name, ekf, text, counts) in ran {
+        let cost = |kind: Kind| {
+            probes
+                .kinds
+                .get(&(name.clone(), kind))
+                .copied()
+                .ok_or_else(|| failed(format!("{name}: no size probe of {kind:?}")))
+        };
+        if ekf {
+            let mut filter = parse_ekf(&text)?;
+            if counts.len() != filter.samples.len() {
+                return Err(failed(format!(
+                    "{name} EKF: {} measured calls for {} samples",
+                    counts.len(),
+                    filter.samples.len()
+                )));
+            }
+            (filter.instructions, filter.divisions) = counts.into_iter().unzip();
+            (filter.flash_bytes, filter.static_ram_bytes) = cost(Kind::Ekf)?;
+            all.filters.insert(name, filter);
+        } else {
+            let observers = parse(&text)?;
+            let samples: usize = observers.iter().map(|o| o.samples.len()).sum();
+            if counts.len() != samples {
+                return Err(failed(format!(
+                    "{name}: {} measured calls for {samples} samples of {} observers",
+                    counts.len(),
+                    observers.len()
+                )));
+            }
+            let mut counts = counts.into_iter();
+            let mut by_kind = BTreeMap::new();
+            for mut observer in observers {
+                (observer.instructions, observer.divisions) = counts.by_ref().take(observer.samples.len()).unzip();
+                (observer.flash_bytes, observer.static_ram_bytes) = cost(observer.kind)?;
+                if by_kind.insert(observer.kind, observer).is_some() {
+                    return Err(failed(format!("{name}: one kind ran twice")));
+                }
+            }
+            all.observers.insert(name, by_kind);
+        }
     }
-    let mut family_flash_bytes = BTreeMap::new();
+    Ok(all)
+}
+
+/// What the size probes measured: `(flash, static RAM)` added over the baseline per design and
+/// kind, and the families' flash.
+struct Probes {
+    kinds: BTreeMap<(String, Kind), (u64, u64)>,
+    families: BTreeMap<String, u64>,
+}
+
+/// Builds the baseline probe, one probe per design and kind, and one per family.
+fn probe_all(dir: &Path) -> Result<Probes, Unavailable> {
+    let elf = dir.join("probes");
+    let baseline = sizes(
+        &build("probe", &[], dir, &elf.join("baseline.elf")).map_err(|e| failed(format!("baseline probe: {e}")))?,
+    )?;
+    let mut kinds = BTreeMap::new();
+    for name in design_names() {
+        for kind in self::kinds(name) {
+            let probe = build(
+                "probe",
+                &[("PROBE_DESIGN", name), ("PROBE_KIND", kind.chip_name())],
+                dir,
+                &elf.join(format!("{name}.{}.elf", kind.chip_name())),
+            )
+            .map_err(|e| {
+                failed(format!(
+                    "probe of {name}'s {} (a panic path would show here): {e}",
+                    kind.api()
+                ))
+            })?;
+            let (text, data, bss) = sizes(&probe)?;
+            let cost = (
+                (text + data).saturating_sub(baseline.0 + baseline.1),
+                (data + bss).saturating_sub(baseline.1 + baseline.2),
+            );
+            kinds.insert((name.to_owned(), kind), cost);
+        }
+    }
+    let mut families = BTreeMap::new();
     for family in generated::FAMILIES {
-        let probe =
-            build("probe", family, Kind::Map, &probes).map_err(|e| failed(format!("probe of family {family}: {e}")))?;
+        let probe = build(
+            "probe",
+            &[("PROBE_DESIGN", family)],
+            dir,
+            &elf.join(format!("{family}.elf")),
+        )
+        .map_err(|e| failed(format!("probe of family {family}: {e}")))?;
         let (text, data, _) = sizes(&probe)?;
-        family_flash_bytes.insert(family.to_owned(), (text + data).saturating_sub(baseline.0 + baseline.1));
+        families.insert(family.to_owned(), (text + data).saturating_sub(baseline.0 + baseline.1));
     }
-    Ok(Measurements {
-        designs,
-        family_flash_bytes,
-    })
+    Ok(Probes { kinds, families })
 }
 
 /// QEMU and binutils, or which is missing.
@@ -418,45 +726,39 @@ fn require_tools() -> Result<(), Unavailable> {
     require("arm-none-eabi-objdump", "binutils-arm-none-eabi")
 }
 
-/// Builds the `kind` runner linking design `name` alone, runs it under QEMU with an execution trace
-/// and returns what it printed, and the instructions and divisions of each measured call.
-fn run_counted(kind: Kind, name: &str) -> Result<(String, Vec<(u64, u64)>), Unavailable> {
-    let dir = workspace_root().join("target").join("on-target");
-    let elf = build(kind.runner(), name, kind, &dir).map_err(failed)?;
-    let trace = dir.join(match kind {
-        Kind::Map => format!("{name}.trace"),
-        Kind::Ekf => format!("{name}.ekf.trace"),
-    });
-    let text = run_qemu(&elf, &trace, Duration::from_secs(300))?;
+/// Runs `elf` under QEMU with an execution trace beside it and returns what it printed, and the
+/// instructions and divisions of each measured call.
+fn run_counted(elf: &Path) -> Result<(String, Vec<(u64, u64)>), Unavailable> {
+    let trace = elf.with_extension("trace");
+    let text = run_qemu(elf, &trace, Duration::from_secs(300))?;
     let counts = count_between(
         &trace,
-        symbol(&elf, "measure_start")?,
-        symbol(&elf, "measure_end")?,
-        &division_addresses(&elf)?,
+        symbol(elf, "measure_start")?,
+        symbol(elf, "measure_end")?,
+        &division_addresses(elf)?,
     )?;
     let _ = std::fs::remove_file(&trace);
     Ok((text, counts))
 }
 
-/// `(text, data, bss)` of the baseline probe (no observer), built into `probes`.
-fn baseline_sizes(probes: &Path) -> Result<(u64, u64, u64), Unavailable> {
-    sizes(&build("probe", "", Kind::Map, probes).map_err(|e| failed(format!("baseline probe: {e}")))?)
-}
-
-/// `(flash, static RAM)` added over `baseline` by the probe linking design `name`'s `kind`; the probe
-/// failing to link (a reachable panic) is an error.
-fn probe_cost(kind: Kind, name: &str, probes: &Path, baseline: (u64, u64, u64)) -> Result<(u64, u64), Unavailable> {
-    let what = match kind {
-        Kind::Map => "probe",
-        Kind::Ekf => "EKF probe",
-    };
-    let probe = build("probe", name, kind, probes)
-        .map_err(|e| failed(format!("{what} of {name} (a panic path would show here): {e}")))?;
-    let (text, data, bss) = sizes(&probe)?;
-    Ok((
-        (text + data).saturating_sub(baseline.0 + baseline.1),
-        (data + bss).saturating_sub(baseline.1 + baseline.2),
-    ))
+/// Builds the runner of design `name` with `kind` alone and returns the instructions of each of its
+/// measured calls: the report checks that running several kinds in one program ([`measure`]) counts
+/// what each kind counts when linked alone.
+pub fn instructions_alone(name: &str, kind: Kind) -> Result<Vec<u64>, Unavailable> {
+    require_tools()?;
+    if kind == Kind::Ekf {
+        return Err(failed("the EKF from the box centre runs alone already"));
+    }
+    let dir = target_dir();
+    let elf = build(
+        "on-target",
+        &[("ON_TARGET_DESIGN", name), ("ON_TARGET_KIND", kind.chip_name())],
+        &dir,
+        &dir.join("runs").join(format!("{name}.{}.elf", kind.chip_name())),
+    )
+    .map_err(|e| failed(format!("on-target program of {name}'s {} alone: {e}", kind.api())))?;
+    let (_, counts) = run_counted(&elf)?;
+    Ok(counts.into_iter().map(|(n, _)| n).collect())
 }
 
 /// One sample of a design's extended Kalman filter as the target reported it.
@@ -496,15 +798,11 @@ pub struct EkfMeasurement {
 }
 
 impl EkfMeasurement {
-    /// Instruction counts of the accepted samples (update and prediction; a refused sample only
-    /// predicts).
-    pub fn accepted_instructions(&self) -> Vec<u64> {
-        self.instructions
-            .iter()
-            .zip(&self.samples)
-            .filter(|(_, s)| s.accepted())
-            .map(|(n, _)| *n)
-            .collect()
+    /// The instructions split into start-up and steady state ([`phases`]): the filter estimates
+    /// from its first accepted sample, which is its whole start-up.
+    pub fn phases(&self) -> Result<Phases, String> {
+        let accepted: Vec<bool> = self.samples.iter().map(EkfSample::accepted).collect();
+        phases(&self.instructions, &accepted, &accepted, 0)
     }
 }
 
@@ -531,8 +829,12 @@ fn parse_ekf(text: &str) -> Result<EkfMeasurement, Unavailable> {
                     state: bits(state)?,
                 });
             }
-            ["S", bytes] => filter.filter_bytes = bytes.parse().unwrap_or(0),
-            ["STACK", bytes] => filter.stack_bytes = bytes.parse().unwrap_or(0),
+            ["S", bytes] => {
+                filter.filter_bytes = bytes.parse().map_err(|e| failed(format!("{line:?}: {e}")))?;
+            }
+            ["STACK", bytes] => {
+                filter.stack_bytes = bytes.parse().map_err(|e| failed(format!("{line:?}: {e}")))?;
+            }
             _ => {}
         }
     }
@@ -540,33 +842,6 @@ fn parse_ekf(text: &str) -> Result<EkfMeasurement, Unavailable> {
         return Err(failed(format!("no sample in the EKF output:\n{text}")));
     }
     Ok(filter)
-}
-
-/// Builds and runs, per design, the program running that design's extended Kalman filter alone, and
-/// its size probe (measured against the same baseline as the map observers'); returns the
-/// measurements by design. `Err(Unavailable::Missing)` when QEMU or binutils are missing.
-pub fn measure_ekf() -> Result<BTreeMap<String, EkfMeasurement>, Unavailable> {
-    require_tools()?;
-    let mut filters = BTreeMap::new();
-    for name in design_names() {
-        let (text, counts) = run_counted(Kind::Ekf, name)?;
-        let mut filter = parse_ekf(&text)?;
-        if counts.len() != filter.samples.len() {
-            return Err(failed(format!(
-                "{name} EKF: {} measured calls for {} samples",
-                counts.len(),
-                filter.samples.len()
-            )));
-        }
-        (filter.instructions, filter.divisions) = counts.into_iter().unzip();
-        filters.insert(name.to_owned(), filter);
-    }
-    let probes = workspace_root().join("target").join("on-target-probe");
-    let baseline = baseline_sizes(&probes)?;
-    for (name, filter) in filters.iter_mut() {
-        (filter.flash_bytes, filter.static_ram_bytes) = probe_cost(Kind::Ekf, name, &probes, baseline)?;
-    }
-    Ok(filters)
 }
 
 /// One sample of an extended Kalman filter run on the host: the targets of the estimate `push`
@@ -645,13 +920,317 @@ pub fn compare_ekf_with_f64(name: &str, measured: &EkfMeasurement) -> Result<f64
     Ok(largest)
 }
 
+/// Estimates as the chip prints them: per target the value's bits and the saturation flag.
+fn bits_and_flags<T: Scalar>(estimates: &[Estimate<T>], bits: impl Fn(T) -> u32) -> Vec<(u32, char)> {
+    estimates
+        .iter()
+        .map(|e| {
+            let flag = match e.saturation {
+                Saturation::Low => 'L',
+                Saturation::Inside => 'I',
+                Saturation::High => 'H',
+            };
+            (bits(e.value), flag)
+        })
+        .collect()
+}
+
+/// Runs design `name`'s observer of `kind` on the host in f32, over the recorded sequence the chip
+/// runs (`RECORDED_Y`, `RECORDED_U`): per sample whether `push` accepted it and what `estimate`
+/// gave, as the chip reports them. `None` for the EKF from the box centre (see [`host_ekf`]), an
+/// unknown design or a kind the design does not have.
+pub fn host_samples(name: &str, kind: Kind) -> Option<Vec<TargetSample>> {
+    let mut samples = None;
+    macro_rules! run {
+        ($design:ident, $fresh:expr) => {{
+            use generated::$design as d;
+            let mut observer = $fresh;
+            d::RECORDED_Y
+                .iter()
+                .zip(&d::RECORDED_U)
+                .map(|(y, u)| TargetSample {
+                    accepted: observer.push(*y, *u).is_ok(),
+                    estimates: observer.estimate().map(|e| bits_and_flags(&e, f32::to_bits)),
+                })
+                .collect::<Vec<_>>()
+        }};
+    }
+    macro_rules! map {
+        ($design:ident) => {
+            if kind == Kind::Map && stringify!($design) == name {
+                samples = Some(run!($design, generated::$design::map_observer()));
+            }
+        };
+    }
+    generated::for_each_design!(map);
+    macro_rules! started {
+        ($design:ident, $kind:ident, $type:ident) => {
+            if kind == Kind::$kind && stringify!($design) == name {
+                samples = Some(run!($design, generated::$design::$type::new()));
+            }
+        };
+    }
+    for_each_started_observer!(started);
+    samples
+}
+
+/// `Follower::START_UP` of a started observer's follower.
+fn follower_start_up<D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize>(
+    _: &Started<f32, D, F, N, NY, NU, NT, NX>,
+) -> usize
+where
+    F: Follower<f32, NX, NY, NU, NT>,
+{
+    F::START_UP
+}
+
+/// The estimates after the first that take the start-up path, for design `name`'s observer of
+/// `kind`, from the generated code (0 for the map and the EKF); `None` for a kind it does not have.
+pub fn start_up(name: &str, kind: Kind) -> Option<usize> {
+    if !kinds(name).contains(&kind) {
+        return None;
+    }
+    let mut start_up = Some(0);
+    macro_rules! started {
+        ($design:ident, $kind:ident, $type:ident) => {
+            if kind == Kind::$kind && stringify!($design) == name {
+                start_up = Some(follower_start_up(&generated::$design::$type::new()));
+            }
+        };
+    }
+    for_each_started_observer!(started);
+    start_up
+}
+
+/// Every difference between what the chip reported (`chip`) and what the host computed (`host`),
+/// sample by sample, one line each naming `what`, the sample and the target; empty when the two
+/// are equal bit for bit (acceptance, the presence of an estimate, each value's bits and flag).
+pub fn differences(what: &str, chip: &[TargetSample], host: &[TargetSample]) -> Vec<String> {
+    let mut found = Vec::new();
+    if chip.len() != host.len() {
+        found.push(format!(
+            "{what}: {} samples on the chip, {} on the host",
+            chip.len(),
+            host.len()
+        ));
+    }
+    for (k, (chip, host)) in chip.iter().zip(host).enumerate() {
+        if chip.accepted != host.accepted {
+            found.push(format!(
+                "{what} sample {k}: accepted {} on the chip, {} on the host",
+                chip.accepted, host.accepted
+            ));
+        }
+        match (&chip.estimates, &host.estimates) {
+            (Some(on_chip), Some(on_host)) => {
+                if on_chip.len() != on_host.len() {
+                    found.push(format!(
+                        "{what} sample {k}: {} targets on the chip, {} on the host",
+                        on_chip.len(),
+                        on_host.len()
+                    ));
+                }
+                for (t, (c, h)) in on_chip.iter().zip(on_host).enumerate() {
+                    if c != h {
+                        found.push(format!(
+                            "{what} sample {k} target {t}: chip {:08x} {} ({:e}), host {:08x} {} ({:e})",
+                            c.0,
+                            c.1,
+                            f32::from_bits(c.0),
+                            h.0,
+                            h.1,
+                            f32::from_bits(h.0)
+                        ));
+                    }
+                }
+            }
+            (None, None) => {}
+            (on_chip, on_host) => found.push(format!(
+                "{what} sample {k}: an estimate on the chip: {}, on the host: {}",
+                on_chip.is_some(),
+                on_host.is_some()
+            )),
+        }
+    }
+    found
+}
+
+/// [`differences`] for an extended Kalman filter: the targets of every estimate `push` returned
+/// (`None` when refused) and the state after every sample.
+pub fn ekf_differences(what: &str, chip: &[EkfSample], host: &[HostEkfSample<f32>]) -> Vec<String> {
+    let mut found = Vec::new();
+    if chip.len() != host.len() {
+        found.push(format!(
+            "{what}: {} samples on the chip, {} on the host",
+            chip.len(),
+            host.len()
+        ));
+    }
+    let bits = |values: &[f32]| values.iter().map(|v| v.to_bits()).collect::<Vec<u32>>();
+    for (k, (chip, (targets, state))) in chip.iter().zip(host).enumerate() {
+        let targets = targets.as_deref().map(bits);
+        if chip.targets != targets {
+            found.push(format!(
+                "{what} sample {k}: targets {:x?} on the chip, {targets:x?} on the host",
+                chip.targets
+            ));
+        }
+        if chip.state != bits(state) {
+            found.push(format!(
+                "{what} sample {k}: state {:x?} on the chip, {:x?} on the host",
+                chip.state,
+                bits(state)
+            ));
+        }
+    }
+    found
+}
+
+/// The largest `|target − host|` of design `name`'s observer that the map starts, measured on the
+/// chip (f32), against the host's mirror of the same observer in f64 (`host::observers`) started by
+/// the library's f64 map, over the same recorded sequence (the mirror runs the accepted samples: a
+/// refused one changes nothing). An error for a kind the design does not have, or when the two do
+/// not estimate at the same samples.
+pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> Result<f64, String> {
+    use host::data::{Rows, Run};
+    use host::observers::{corrected, ekf};
+    use host::plant::correction::{correction_code, CorrectionConstants};
+    use host::plant::kalman::{filter_code, EkfConstants};
+    use host::plant::ModelCode;
+
+    let path = crate::shipped_specs()
+        .into_iter()
+        .find(|p| host::spec::load(p).is_ok_and(|d| d.name == name))
+        .ok_or_else(|| format!("no shipped spec for {name}"))?;
+    let design = host::spec::load(&path).map_err(|e| e.to_string())?;
+    let result = crate::build(&design);
+    let code = ModelCode::new(&design).map_err(|e| e.to_string())?;
+    let state_targets = corrected::state_targets(&design)?;
+    let first = design.map.horizon - 1;
+    let widen = |values: &[f32]| values.iter().map(|&v| f64::from(v)).collect::<Vec<f64>>();
+    let mut host: Option<Vec<Vec<f64>>> = None;
+    macro_rules! mirror {
+        ($design:ident, $kind:ident, $type:ident) => {
+            if measured.kind == Kind::$kind && stringify!($design) == name {
+                use generated::$design as d;
+                let accepted: Vec<(Vec<f64>, Vec<f64>)> = d::RECORDED_Y
+                    .iter()
+                    .zip(&d::RECORDED_U)
+                    .filter(|(y, u)| y.iter().chain(u.iter()).all(|v| v.is_finite()))
+                    .map(|(y, u)| (widen(y), widen(u)))
+                    .collect();
+                let rows: Vec<host::recording::Row> = accepted
+                    .iter()
+                    .map(|(y, u)| host::recording::Row {
+                        run: String::new(),
+                        y: y.clone(),
+                        u: u.clone(),
+                    })
+                    .collect();
+                let maps: Vec<Vec<f64>> = host::recording::regressors(design.map.horizon, &rows)
+                    .iter()
+                    .map(|z| match z {
+                        Some(z) => result.targets.iter().map(|t| t.fit.map.estimate(z).value).collect(),
+                        None => vec![f64::NAN; d::TARGETS],
+                    })
+                    .collect();
+                let run = Run {
+                    states: Rows::from(vec![vec![0.0; d::STATES]; accepted.len()]),
+                    inputs: Rows::from(accepted.iter().map(|(_, u)| u.clone()).collect::<Vec<_>>()),
+                    measurements: Rows::from(accepted.iter().map(|(y, _)| y.clone()).collect::<Vec<_>>()),
+                    targets: Rows::from(vec![vec![0.0; d::TARGETS]; accepted.len()]),
+                    parameters: Vec::new(),
+                };
+                host = Some(mirror!(@ $kind, d, design, code, state_targets, first, maps, run));
+            }
+        };
+        (@ Corrected, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
+            let constants = CorrectionConstants {
+                g: $d::CORRECTED_G.to_vec(),
+                k: $d::CORRECTED_K.to_vec(),
+                schedule: $d::CORRECTED_SCHEDULE,
+                start_up: follower_start_up(&$d::CorrectedObserver::new()),
+                lower: $d::CORRECTED_LOWER.to_vec(),
+                upper: $d::CORRECTED_UPPER.to_vec(),
+                substeps: $design.chip_substeps,
+                h: $design.tau / $design.chip_substeps as f64,
+            };
+            let setting = corrected::Setting {
+                code: &$code,
+                h: constants.h,
+                substeps: constants.substeps,
+                state_targets: &$targets,
+                first: $first,
+                lower: constants.lower.clone(),
+                upper: constants.upper.clone(),
+            };
+            corrected::estimate_run::<f64>(&setting, &correction_code(&$code, &constants), &constants, &$maps, &$run)
+        }};
+        (@ StartedEkf, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
+            let filter = filter_code(
+                &$code,
+                &EkfConstants {
+                    x0: vec![0.0; $d::STATES],
+                    p0: vec![0.0; $d::STATES],
+                    q: $d::EKF_Q.to_vec(),
+                    r: $design.model.outputs.iter().map(|o| o.noise_variance).collect(),
+                    substeps: $design.chip_substeps,
+                    h: $design.tau / $design.chip_substeps as f64,
+                },
+            );
+            ekf::estimate_started::<f64>(&filter, &$d::STARTED_P0, &$targets, $first, &$maps, &$run, &$code)
+        }};
+    }
+    for_each_started_observer!(mirror);
+    let host = host.ok_or_else(|| format!("{name} has no {:?} observer", measured.kind))?;
+    let chip: Vec<&TargetSample> = measured.samples.iter().filter(|s| s.accepted).collect();
+    if chip.len() != host.len() {
+        return Err(format!(
+            "{name} {:?}: {} accepted samples on the chip, {} on the host",
+            measured.kind,
+            chip.len(),
+            host.len()
+        ));
+    }
+    let mut largest: f64 = 0.0;
+    for (k, (sample, host)) in chip.iter().zip(&host).enumerate() {
+        let before_first = host.iter().all(|v| v.is_nan());
+        match &sample.estimates {
+            None if before_first => {}
+            Some(estimates) if !before_first => {
+                for (t, (&(bits, _), &h)) in estimates.iter().zip(host).enumerate() {
+                    let difference = (f64::from(f32::from_bits(bits)) - h).abs();
+                    if difference.is_nan() {
+                        return Err(format!(
+                            "{name} {:?} accepted sample {k} target {t}: {} on the chip, {h} on the host",
+                            measured.kind,
+                            f32::from_bits(bits)
+                        ));
+                    }
+                    largest = largest.max(difference);
+                }
+            }
+            estimates => {
+                return Err(format!(
+                    "{name} {:?} accepted sample {k}: an estimate on the chip: {}, on the host: {}",
+                    measured.kind,
+                    estimates.is_some(),
+                    !before_first
+                ))
+            }
+        }
+    }
+    Ok(largest)
+}
+
 /// Builds the probe that indexes out of bounds: it must fail to link, naming the missing symbol.
 pub fn panic_check_catches_a_reachable_panic() -> Result<bool, Unavailable> {
+    let dir = target_dir();
     match build(
         "probe",
-        "__reachable_panic",
-        Kind::Map,
-        &workspace_root().join("target").join("on-target-probe"),
+        &[("PROBE_DESIGN", "__reachable_panic")],
+        &dir,
+        &dir.join("probes").join("reachable_panic.elf"),
     ) {
         Ok(_) => Ok(false),
         Err(stderr) => Ok(stderr.contains("observer_code_can_panic")),
@@ -696,7 +1275,7 @@ fn recorded_rows(result: &host::fit::DesignResult) -> Vec<host::recording::Row> 
 
 /// Compares the target's estimates of design `name` with the host's f64 library estimates on the
 /// same recorded sequence, by [`host::emit::precision::compare`]; returns the largest `|target - host|`.
-pub fn compare_with_library(name: &str, measured: &DesignMeasurement) -> Result<f64, String> {
+pub fn compare_with_library(name: &str, measured: &ObserverMeasurement) -> Result<f64, String> {
     let path = crate::shipped_specs()
         .into_iter()
         .find(|p| host::spec::load(p).is_ok_and(|d| d.name == name))

@@ -1,10 +1,12 @@
-//! The generated observers on an emulated Cortex-M4F: the same numbers as the host (bit for bit in
-//! f32, within the f32 tolerance of the f64 library), instructions per estimate, flash and RAM, and no
-//! reachable panic. Without QEMU the test says so and passes, unless `CI` is set: CI must run it.
+//! Every observer of every generated design on an emulated Cortex-M4F: the map, the observers the map
+//! starts (model-corrected map, map-started EKF) and the EKF from the box centre, whichever the design
+//! has. Each prints, bit for bit, what the host computes running the same generated observer in f32
+//! over the same recorded sequence (refused samples and the samples before the first estimate
+//! included); how far that is from the host in f64; instructions per sample in the start-up and the
+//! steady state; stack, flash and RAM; no reachable panic. Without QEMU the test says so and passes,
+//! unless `CI` is set: CI must run it.
 
-use std::collections::BTreeMap;
-
-use integration_tests::on_target::{self, DesignMeasurement, Measurements, Unavailable};
+use integration_tests::on_target::{self, Kind, Measurements, Unavailable};
 
 fn measurements() -> Option<Measurements> {
     match on_target::measure() {
@@ -18,94 +20,192 @@ fn measurements() -> Option<Measurements> {
     }
 }
 
-macro_rules! same_as_host_f32 {
-    ($name:ident) => {{
-        use generated::$name as tables;
-        let measured = &MEASURED.with(|m| m.borrow().clone()).unwrap()[tables::NAME];
-        let mut observer = tables::map_observer();
-        assert_eq!(measured.samples.len(), tables::RECORDED_LEN);
-        for (k, ((y, u), sample)) in tables::RECORDED_Y
-            .iter()
-            .zip(&tables::RECORDED_U)
-            .zip(&measured.samples)
-            .enumerate()
-        {
-            assert_eq!(
-                observer.push(*y, *u).is_ok(),
-                sample.accepted,
-                "{} sample {k}",
-                tables::NAME
-            );
-            let host: Option<Vec<(u32, char)>> = observer.estimate().map(|estimates| {
-                estimates
-                    .iter()
-                    .map(|e| {
-                        let flag = match e.saturation {
-                            firmware::Saturation::Low => 'L',
-                            firmware::Saturation::Inside => 'I',
-                            firmware::Saturation::High => 'H',
-                        };
-                        (e.value.to_bits(), flag)
-                    })
-                    .collect()
-            });
-            assert_eq!(
-                host,
-                sample.estimates,
-                "{} sample {k}: host f32 and target differ",
-                tables::NAME
-            );
-        }
-    }};
-}
-
-thread_local! {
-    static MEASURED: std::cell::RefCell<Option<BTreeMap<String, DesignMeasurement>>> = const { std::cell::RefCell::new(None) };
-}
+/// Bytes painted below the runners' stack pointer (`PAINTED` in `tests/on-target/src/main.rs` and
+/// `src/bin/ekf.rs`): a measured depth must stay below, or the paint was used up.
+const PAINTED: [(Kind, usize); 2] = [(Kind::Map, 4096), (Kind::Ekf, 8192)];
 
 #[test]
-fn generated_observers_on_the_emulated_cortex_m4f() {
+fn every_observer_on_the_emulated_cortex_m4f() {
     let Some(all) = measurements() else { return };
-    let measured = all.designs;
-    MEASURED.with(|m| *m.borrow_mut() = Some(measured.clone()));
-    // Bit for bit with the host running the same firmware code in f32 (IEEE-754 single precision,
-    // round to nearest, no fused multiply-add on either side).
-    generated::for_each_design!(same_as_host_f32);
-    for (name, design) in &measured {
-        let largest = on_target::compare_with_library(name, design).unwrap_or_else(|e| panic!("{e}"));
-        let steady = design.steady_instructions();
-        let (min, median, max) = on_target::spread(&steady);
+
+    // Every kind of every design ran, and `observer()` is one of them.
+    for name in on_target::design_names() {
+        let mut measured: Vec<Kind> = all
+            .observers
+            .get(name)
+            .into_iter()
+            .flat_map(|o| o.keys().copied())
+            .collect();
+        measured.extend(all.filters.contains_key(name).then_some(Kind::Ekf));
+        assert_eq!(measured, on_target::kinds(name), "{name}: the kinds run on the chip");
+        let chosen = on_target::chosen_kind(name).unwrap_or_else(|| panic!("{name}: observer() is of no known kind"));
+        assert!(
+            measured.contains(&chosen),
+            "{name}: observer() ({chosen:?}) did not run"
+        );
+    }
+
+    // Bit for bit with the host running the same generated observer in f32 (IEEE-754 single
+    // precision, round to nearest, no fused multiply-add on either side): every sample's acceptance,
+    // whether there is an estimate, and each estimate's bits and saturation flag; for the EKF the
+    // targets of every estimate and the state after every sample (a refused sample still predicts).
+    // Every difference is listed before the test fails.
+    let mut differences = Vec::new();
+    for (name, observers) in &all.observers {
+        for (&kind, observer) in observers {
+            let what = format!("{name} {}", kind.api());
+            let host = on_target::host_samples(name, kind).unwrap_or_else(|| panic!("{what}: no host run"));
+            // The sequence exercises what must be compared: refused samples, and samples before
+            // the first estimate.
+            assert!(
+                host.iter().any(|s| !s.accepted),
+                "{what}: no refused sample in the sequence"
+            );
+            assert!(
+                host.iter().any(|s| s.accepted && s.estimates.is_none()),
+                "{what}: no sample before the first estimate"
+            );
+            assert_eq!(
+                Some(observer.start_up),
+                on_target::start_up(name, kind),
+                "{what}: the start-up the chip reported"
+            );
+            differences.extend(on_target::differences(&what, &observer.samples, &host));
+        }
+    }
+    for (name, filter) in &all.filters {
+        let host = on_target::host_ekf::<f32>(name).unwrap_or_else(|| panic!("{name}: no host EKF"));
+        assert!(host.iter().any(|(t, _)| t.is_none()), "{name} ekf(): no refused sample");
+        differences.extend(on_target::ekf_differences(
+            &format!("{name} ekf()"),
+            &filter.samples,
+            &host,
+        ));
+    }
+    assert!(
+        differences.is_empty(),
+        "the chip and the host (f32) differ:\n{}",
+        differences.join("\n")
+    );
+
+    // The comparison sees one bit: the last estimate of each observer with its lowest bit flipped
+    // (and the EKF's last state) is reported, once.
+    for (name, observers) in &all.observers {
+        for (&kind, observer) in observers {
+            let mut changed = observer.samples.clone();
+            let last = changed
+                .iter_mut()
+                .rev()
+                .find_map(|s| s.estimates.as_mut())
+                .expect("an estimate");
+            last[0].0 ^= 1;
+            let found = on_target::differences("flipped", &changed, &observer.samples);
+            assert_eq!(found.len(), 1, "{name} {kind:?}: one flipped bit: {found:?}");
+        }
+    }
+    for (name, filter) in &all.filters {
+        let host = on_target::host_ekf::<f32>(name).expect("a host EKF");
+        let mut changed = filter.samples.clone();
+        if let Some(last) = changed.last_mut() {
+            last.state[0] ^= 1;
+        }
+        let found = on_target::ekf_differences("flipped", &changed, &host);
+        assert_eq!(found.len(), 1, "{name} ekf(): one flipped bit: {found:?}");
+    }
+
+    // Costs, and the distance to the host in f64.
+    for (name, observers) in &all.observers {
+        for (&kind, observer) in observers {
+            let what = format!("{name} {}", kind.api());
+            assert_eq!(
+                observer.instructions.len(),
+                observer.samples.len(),
+                "{what}: one count per sample"
+            );
+            let phases = observer.phases().unwrap_or_else(|e| panic!("{what}: {e}"));
+            let (min, median, max) = on_target::spread(&phases.steady);
+            assert!(min > 0, "{what}: instruction counts {:?}", observer.instructions);
+            // After the start-up no sample, refused or not, costs more than the steady maximum.
+            assert!(
+                phases.steady_refused.iter().all(|&n| n <= max),
+                "{what}: a refused sample costs more than {max}: {:?}",
+                phases.steady_refused
+            );
+            let largest = if kind == Kind::Map {
+                // The same instruction path every sample once the window is full, saturated or not,
+                // and no division or square root anywhere.
+                assert_eq!(min, max, "{what}: instruction counts vary from {min} to {max}");
+                assert!(
+                    observer.divisions.iter().all(|&d| d == 0),
+                    "{what}: VDIV/VSQRT executed: {:?}",
+                    observer.divisions
+                );
+                on_target::compare_with_library(name, observer)
+            } else {
+                on_target::compare_started_with_f64(name, observer)
+            }
+            .unwrap_or_else(|e| panic!("{e}"));
+            assert!(largest.is_finite(), "{what}: max |target - host f64| = {largest}");
+            assert!(
+                observer.stack_bytes > 0 && observer.stack_bytes < PAINTED[0].1,
+                "{what}: stack {} B",
+                observer.stack_bytes
+            );
+            assert!(
+                observer.flash_bytes > 0 && observer.observer_bytes > 0,
+                "{what}: {observer:?}"
+            );
+            println!(
+                "{what}: push + estimate {min}/{median}/{max} instructions (steady: min/median/max of {} samples), \
+                 start-up {} samples, at most {}, first estimate {}; {} VDIV + VSQRT at most; stack {} B, flash {} B, \
+                 observer {} B, static RAM {} B; max |target - host f64| = {largest:e}",
+                phases.steady.len(),
+                phases.start_up_samples,
+                phases.start_up_max,
+                phases.first_estimate,
+                observer.divisions.iter().max().unwrap_or(&0),
+                observer.stack_bytes,
+                observer.flash_bytes,
+                observer.observer_bytes,
+                observer.static_ram_bytes
+            );
+        }
+    }
+    for (name, filter) in &all.filters {
+        let what = format!("{name} ekf()");
         assert_eq!(
-            design.instructions.len(),
-            design.samples.len(),
-            "{name}: one count per sample"
+            filter.instructions.len(),
+            filter.samples.len(),
+            "{what}: one count per sample"
         );
+        let phases = filter.phases().unwrap_or_else(|e| panic!("{what}: {e}"));
+        let (min, median, max) = on_target::spread(&phases.steady);
+        assert!(min > 0, "{what}: instruction counts {:?}", filter.instructions);
         assert!(
-            min > 0 && !steady.is_empty(),
-            "{name}: instruction counts {:?}",
-            design.instructions
+            phases.steady_refused.iter().all(|&n| n <= max),
+            "{what}: a refused sample costs more than {max}: {:?}",
+            phases.steady_refused
         );
-        // The same instruction path every sample once the window is full, saturated or not.
-        assert_eq!(min, max, "{name}: instruction counts vary from {min} to {max}");
-        // No division or square root anywhere in push + estimate, in any sample.
+        let largest = on_target::compare_ekf_with_f64(name, filter).unwrap_or_else(|e| panic!("{e}"));
+        assert!(largest.is_finite(), "{what}: max |target - host f64| = {largest}");
         assert!(
-            design.divisions.iter().all(|&d| d == 0),
-            "{name}: VDIV/VSQRT executed: {:?}",
-            design.divisions
+            filter.stack_bytes > 0 && filter.stack_bytes < PAINTED[1].1,
+            "{what}: stack {} B",
+            filter.stack_bytes
         );
-        assert!(design.stack_bytes > 0, "{name}: stack not measured");
-        assert!(
-            design.flash_bytes > 0 && design.observer_bytes > 0,
-            "{name}: {design:?}"
-        );
+        // The probe linked (so no panic is reachable from the filter) and added code.
+        assert!(filter.flash_bytes > 0 && filter.filter_bytes > 0, "{what}: {filter:?}");
         println!(
-            "{name}: push + estimate {min}/{median}/{max} instructions (min/median/max), first estimate {:?}, \
-             stack {} B, flash {} B, observer {} B, static RAM {} B, max |target - host f64| = {largest:e}",
-            design.first_estimate_instructions(),
-            design.stack_bytes,
-            design.flash_bytes,
-            design.observer_bytes,
-            design.static_ram_bytes
+            "{what}: push + targets {min}/{median}/{max} instructions (steady: min/median/max of {} accepted samples), \
+             first {}; {} VDIV + VSQRT at most; stack {} B, flash {} B, filter {} B, static RAM {} B; \
+             max |target - host f64| = {largest:e}",
+            phases.steady.len(),
+            phases.first_estimate,
+            filter.divisions.iter().max().unwrap_or(&0),
+            filter.stack_bytes,
+            filter.flash_bytes,
+            filter.filter_bytes,
+            filter.static_ram_bytes
         );
     }
     for family in generated::FAMILIES {
@@ -117,4 +217,27 @@ fn generated_observers_on_the_emulated_cortex_m4f() {
         on_target::panic_check_catches_a_reachable_panic().unwrap(),
         "the no-panic check did not catch a reachable panic"
     );
+}
+
+/// The split into start-up and steady state, on a made-up run: three samples fill the window (the
+/// second refused), the first estimate, two start-up estimates (a refused sample between them),
+/// then the steady state.
+#[test]
+fn phases_end_the_start_up_after_the_first_estimate_and_start_up_more() {
+    let instructions = [10, 5, 10, 200, 300, 6, 300, 100, 7, 100];
+    let accepted = [true, false, true, true, true, false, true, true, false, true];
+    let estimated = [false, false, false, true, true, false, true, true, false, true];
+    let phases = on_target::phases(&instructions, &accepted, &estimated, 2).unwrap();
+    assert_eq!(phases.start_up_samples, 7);
+    assert_eq!(phases.start_up_max, 300);
+    assert_eq!(phases.first_estimate, 200);
+    assert_eq!(phases.steady, [100, 100]);
+    assert_eq!(phases.steady_refused, [7]);
+    // The map: the start-up is its first estimate.
+    let map = on_target::phases(&instructions, &accepted, &estimated, 0).unwrap();
+    assert_eq!((map.start_up_samples, map.start_up_max), (4, 200));
+    assert_eq!(map.steady, [300, 300, 100, 100]);
+    // Too short for the start-up: an error, not a made-up figure.
+    assert!(on_target::phases(&instructions, &accepted, &estimated, 5).is_err());
+    assert!(on_target::phases(&instructions[..9], &accepted, &estimated, 0).is_err());
 }

@@ -372,16 +372,21 @@ pub fn observers_table(report: &Report<'_>) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "| observer | target | RMSE validation | max error validation | RMSE scenario | RMSE transient | RMSE tuning | on chip: instructions (median / max), VDIV + VSQRT |"
+        "| observer | target | RMSE validation | max error validation | RMSE scenario | RMSE transient | RMSE tuning | on chip: instructions steady (median / max; start-up max), VDIV + VSQRT |"
     );
     let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
     let show = |v: Option<f64>| v.map_or("diverged".to_owned(), |v| format!("{v:.4}"));
     for o in &report.observers {
         for (name, f) in &o.targets {
-            let chip = match (&o.on_target, o.kind) {
-                (Some(c), _) => format!("{} / {}, {}", c.instructions_median, c.instructions_max, c.divisions),
-                (None, "corrected" | "ekf_started") => "by hand: `ON_TARGET_KIND` (README)".to_owned(),
-                (None, _) => "not measured".to_owned(),
+            let chip = match &o.on_target {
+                Some(c) => {
+                    let start_up = c.start_up_instructions_max.map_or(String::new(), |m| format!("; {m}"));
+                    format!(
+                        "{} / {}{start_up}, {}",
+                        c.instructions_median, c.instructions_max, c.divisions
+                    )
+                }
+                None => "not measured".to_owned(),
             };
             let _ = writeln!(
                 s,
@@ -395,11 +400,7 @@ pub fn observers_table(report: &Report<'_>) -> String {
             );
         }
     }
-    if report
-        .observers
-        .iter()
-        .any(|o| o.on_target.is_none() && matches!(o.kind, "map" | "ekf"))
-    {
+    if report.observers.iter().any(|o| o.on_target.is_none()) {
         let _ = writeln!(
             s,
             "\nOn-chip figures of this generated source are not measured yet: `cargo run -p integration-tests --bin on-target-report`."

@@ -16,12 +16,24 @@ use sha2::Digest;
 pub const FILE: &str = "on_target.json";
 
 /// One observer's cost on the emulated Cortex-M4F, per sample.
+///
+/// The start-up is every sample of the recorded sequence up to and including the estimate that
+/// ends it: the samples before the first estimate, the first estimate, and the estimates after it
+/// that take a follower's start-up path (`Follower::START_UP`; none for the map and the EKF). The
+/// steady state is every accepted sample after it.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct OnTarget {
     /// Median instructions of a steady sample (`push` + estimate).
     pub instructions_median: u64,
     /// Largest instructions of a steady sample.
     pub instructions_max: u64,
+    /// Largest instructions of a start-up sample; `None` in figures recorded before the start-up was
+    /// measured.
+    #[serde(default)]
+    pub start_up_instructions_max: Option<u64>,
+    /// Samples of the recorded sequence in the start-up; `None` as above.
+    #[serde(default)]
+    pub start_up_samples: Option<u64>,
     /// Largest number of `VDIV` and `VSQRT` in one sample.
     pub divisions: u64,
     /// Flash the observer adds to a program, in bytes.
@@ -37,7 +49,8 @@ pub struct OnTarget {
 pub struct Measured {
     /// SHA-256 of `generated/src/<design>.rs` as measured.
     pub source_sha256: String,
-    /// By observer kind (`"map"`, `"ekf"`).
+    /// By observer kind, as `report.json` names them (`"map"`, `"corrected"`, `"ekf_started"`,
+    /// `"ekf"`).
     pub observers: BTreeMap<String, OnTarget>,
 }
 
@@ -103,6 +116,8 @@ mod tests {
                 OnTarget {
                     instructions_median: 241,
                     instructions_max: 241,
+                    start_up_instructions_max: Some(336),
+                    start_up_samples: Some(10),
                     divisions: 1,
                     flash_bytes: 900,
                     ram_bytes: 20,
@@ -128,6 +143,23 @@ mod tests {
             serde_json::from_str(&std::fs::read_to_string(dir.join("report.json")).unwrap()).unwrap();
         assert_eq!(report["observers"][0]["on_target"], serde_json::Value::Null);
         assert_eq!(report["observers"][1]["on_target"]["instructions_median"], 241);
+        assert_eq!(report["observers"][1]["on_target"]["start_up_instructions_max"], 336);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn figures_recorded_before_the_start_up_was_measured_still_read() {
+        let dir = std::env::temp_dir().join(format!("on-target-old-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let old = format!(
+            r#"{{"source_sha256": "{}", "observers": {{"map": {{"instructions_median": 126, "instructions_max": 126,
+            "divisions": 0, "flash_bytes": 2428, "ram_bytes": 88, "stack_bytes": 48}}}}}}"#,
+            source_hash("fn a() {}")
+        );
+        std::fs::write(dir.join(FILE), old).unwrap();
+        let figures = recorded(&dir, "fn a() {}");
+        assert_eq!(figures["map"].instructions_max, 126);
+        assert_eq!(figures["map"].start_up_instructions_max, None);
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -1,19 +1,30 @@
-//! Runs one generated observer (chosen by `ON_TARGET_DESIGN` at build time, so that the program
-//! links that design alone) over its recorded sequence on the emulated Cortex-M4F and reports over
-//! semihosting:
+//! Runs the observers of one generated design (chosen by `ON_TARGET_DESIGN` at build time, so that
+//! the program links that design alone) over its recorded sequence on the emulated Cortex-M4F, one
+//! kind after the other (`ON_TARGET_KIND`, comma-separated: `map`, `observer`, `corrected`,
+//! `started_ekf`; the map alone by default), and reports over semihosting:
 //!
 //! ```text
+//! KIND <kind> <START_UP>                                           for each kind, then
 //! E <k> <accepted 0|1> [<value bits hex> <saturation L|I|H>]…     one line per sample
-//! S <size_of Observer>
+//! S <size_of the observer>
 //! STACK <bytes used by push + estimate>
-//! DONE
+//! DONE                                                              once, at the end
 //! ```
+//!
+//! `START_UP` is the number of estimates after the first that take the start-up path (0 for the
+//! map; a follower's `Follower::START_UP`).
 //!
 //! `push` + `estimate` of every sample runs in [`step`], between `measure_start` and `measure_end`:
 //! two functions the host finds in the ELF and counts executed instructions between (QEMU `-d exec`
-//! with one instruction per translation block). Stack: the region below the stack pointer is painted
-//! before the samples are run and scanned afterwards; nothing is printed in between, so the deepest
-//! word changed is the deepest `step` went.
+//! with one instruction per translation block). Each kind's samples are counted in order, so the
+//! host splits the counts by the `KIND` blocks. Stack: the region below the stack pointer is painted
+//! before a kind's samples are run and scanned afterwards; nothing is printed in between, so the
+//! deepest word changed is the deepest `step` went.
+//!
+//! Every kind has its own [`step`] (one instance of it per observer type, called from one place), and
+//! everything of `push` and `estimate` that the kinds share (the map's dot products and table, the
+//! window) is `#[inline(always)]`: linking several kinds into one program leaves each one's
+//! measured code as it is when the kind is linked alone (the report's test compares the two).
 #![no_std]
 #![no_main]
 
@@ -21,9 +32,10 @@ use core::panic::PanicInfo;
 
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprint, hprintln};
-use firmware::{Estimate, Saturation};
+use firmware::{Design, Estimate, Follower, Saturation};
 
 include!(concat!(env!("OUT_DIR"), "/design.rs"));
+include!(concat!(env!("OUT_DIR"), "/kinds.rs"));
 
 /// Marks the start of a measured `push` + `estimate`.
 #[inline(never)]
@@ -41,26 +53,72 @@ pub extern "C" fn measure_end() {
     cortex_m::asm::nop();
 }
 
-/// Bytes of stack painted below the stack pointer of `main`.
+/// Bytes of stack painted below the stack pointer of [`run`].
 const PAINTED: usize = 4096;
 const PAINT: u32 = 0xA5A5_5A5A;
 
 type Estimates = Option<[Estimate<f32>; d::TARGETS]>;
 
+/// What the runner uses of an observer: its `push` and `estimate`, and its start-up.
+trait Observe {
+    /// Estimates after the first that take the start-up path.
+    const START_UP: usize;
+    /// `push`: whether the sample was accepted.
+    fn take(&mut self, y: [f32; d::OUTPUTS], u: [f32; d::INPUTS]) -> bool;
+    /// `estimate`.
+    fn latest(&self) -> Estimates;
+}
+
+impl<D, const N: usize> Observe for firmware::Observer<f32, D, N, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>
+where
+    D: Design<f32, N, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
+{
+    const START_UP: usize = 0;
+
+    #[inline(always)]
+    fn take(&mut self, y: [f32; d::OUTPUTS], u: [f32; d::INPUTS]) -> bool {
+        self.push(y, u).is_ok()
+    }
+
+    #[inline(always)]
+    fn latest(&self) -> Estimates {
+        self.estimate()
+    }
+}
+
+impl<D, F, const N: usize, const NX: usize> Observe
+    for firmware::Started<f32, D, F, N, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }, NX>
+where
+    D: Design<f32, N, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
+    F: Follower<f32, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
+{
+    const START_UP: usize = F::START_UP;
+
+    #[inline(always)]
+    fn take(&mut self, y: [f32; d::OUTPUTS], u: [f32; d::INPUTS]) -> bool {
+        self.push(y, u).is_ok()
+    }
+
+    #[inline(always)]
+    fn latest(&self) -> Estimates {
+        self.estimate()
+    }
+}
+
 /// One sample: what a user's firmware does every period. Not inlined, and its results are returned
 /// and printed, so nothing of `push` and `estimate` can be optimised away.
 #[inline(never)]
-fn step(observer: &mut Measured, y: &[f32; d::OUTPUTS], u: &[f32; d::INPUTS]) -> (bool, Estimates) {
+fn step<O: Observe>(observer: &mut O, y: &[f32; d::OUTPUTS], u: &[f32; d::INPUTS]) -> (bool, Estimates) {
     measure_start();
-    let accepted = observer.push(*y, *u).is_ok();
-    let estimates = observer.estimate();
+    let accepted = observer.take(*y, *u);
+    let estimates = observer.latest();
     measure_end();
     (accepted, estimates)
 }
 
-#[entry]
-fn main() -> ! {
-    let mut observer = fresh();
+/// Runs `observer` (of kind `kind`) over the recorded sequence and prints what it estimated.
+#[inline(never)]
+fn run<O: Observe>(kind: &str, mut observer: O) {
     let mut results: [(bool, Estimates); d::RECORDED_LEN] = [(false, None); d::RECORDED_LEN];
     let top = cortex_m::register::msp::read() as usize;
     for address in (top - PAINTED..top).step_by(4) {
@@ -75,6 +133,7 @@ fn main() -> ! {
         // SAFETY: the same painted words, read back.
         .find(|&address| unsafe { core::ptr::read_volatile(address as *const u32) } != PAINT)
         .unwrap_or(top);
+    hprintln!("KIND {} {}", kind, O::START_UP);
     for (k, (accepted, estimates)) in results.iter().enumerate() {
         hprint!("E {} {}", k, u8::from(*accepted));
         for e in estimates.iter().flatten() {
@@ -87,8 +146,13 @@ fn main() -> ! {
         }
         hprintln!();
     }
-    hprintln!("S {}", core::mem::size_of::<Measured>());
+    hprintln!("S {}", core::mem::size_of::<O>());
     hprintln!("STACK {}", top - deepest);
+}
+
+#[entry]
+fn main() -> ! {
+    run_all();
     hprintln!("DONE");
     debug::exit(debug::EXIT_SUCCESS);
     loop {}

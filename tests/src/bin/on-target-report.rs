@@ -1,16 +1,21 @@
-//! Measures every generated observer, and every design's extended Kalman filter beside it, on the
-//! emulated Cortex-M4F, rewrites the table in the README between `<!-- on-target:begin -->` and
-//! `<!-- on-target:end -->`, and records each design's figures beside its report
-//! (`target/designs/<design>/on_target.json`, and `report.json`'s `observers[].on_target`):
+//! Measures every observer of every generated design on the emulated Cortex-M4F (the map, the
+//! observers the map starts and the EKF from the box centre, whichever the design has), rewrites
+//! the table in the README between `<!-- on-target:begin -->` and `<!-- on-target:end -->`, and
+//! records each design's figures beside its report (`target/designs/<design>/on_target.json`, and
+//! `report.json`'s `observers[].on_target`):
 //!
 //! ```sh
 //! cargo run -p integration-tests --bin on-target-report
 //! ```
+//!
+//! The map and the observers it starts run one after the other in one program per design; before
+//! anything is written, each of them is also built and run alone, and its counts must be the same.
 
+use std::collections::BTreeMap;
 use std::process::ExitCode;
 
 use host::report::on_target::{Measured, OnTarget};
-use integration_tests::on_target;
+use integration_tests::on_target::{self, Kind, Phases};
 use integration_tests::workspace_root;
 
 fn main() -> ExitCode {
@@ -26,22 +31,58 @@ fn main() -> ExitCode {
     }
 }
 
+/// One row's cost columns.
+struct Row {
+    phases: Phases,
+    divisions: u64,
+    stack_bytes: u64,
+    flash_bytes: u64,
+    ram_bytes: u64,
+    largest: f64,
+}
+
+impl Row {
+    fn on_target(&self) -> OnTarget {
+        let (_, median, max) = on_target::spread(&self.phases.steady);
+        OnTarget {
+            instructions_median: median,
+            instructions_max: max,
+            start_up_instructions_max: Some(self.phases.start_up_max),
+            start_up_samples: Some(self.phases.start_up_samples as u64),
+            divisions: self.divisions,
+            flash_bytes: self.flash_bytes,
+            ram_bytes: self.ram_bytes,
+            stack_bytes: self.stack_bytes,
+        }
+    }
+}
+
 fn run() -> Result<String, String> {
     let all = on_target::measure().map_err(|e| e.to_string())?;
-    let measured = &all.designs;
-    let filters = on_target::measure_ekf().map_err(|e| e.to_string())?;
+    for (name, observers) in &all.observers {
+        if observers.len() < 2 {
+            continue;
+        }
+        for (&kind, observer) in observers {
+            let alone = on_target::instructions_alone(name, kind).map_err(|e| e.to_string())?;
+            if alone != observer.instructions {
+                return Err(format!(
+                    "{name} {}: linked with the other kinds it counts {:?}, alone {alone:?}: the program that runs them together does not measure what a firmware with this kind alone runs",
+                    kind.api(),
+                    observer.instructions
+                ));
+            }
+        }
+    }
     let mut table = String::from(
-        "| design | targets | N | segments per target | instructions per push + estimate; EKF: push + targets (min / median / max) | first estimate | dot-product floor | VDIV + VSQRT per sample (max) | stack bytes | flash bytes | RAM bytes | max \\|target − host\\| |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| design | observer | targets | N | segments per target | instructions per sample, steady (min / median / max) | start-up: samples, max instructions | first estimate | dot-product floor | VDIV + VSQRT per sample (max) | stack bytes | flash bytes | RAM bytes | max \\|target − host f64\\| |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
-    for (name, design) in measured {
+    for name in on_target::design_names() {
         let spec = integration_tests::shipped_specs()
             .into_iter()
-            .find_map(|p| host::spec::load(&p).ok().filter(|d| &d.name == name))
+            .find_map(|p| host::spec::load(&p).ok().filter(|d| d.name == name))
             .ok_or_else(|| format!("no shipped spec for {name}"))?;
         let result = integration_tests::build(&spec);
-        let largest = on_target::compare_with_library(name, design)?;
-        let steady = design.steady_instructions();
-        let (min, median, max) = on_target::spread(&steady);
         let targets: Vec<&str> = spec.targets.iter().map(|t| t.name.as_str()).collect();
         let segments: Vec<String> = result
             .targets
@@ -54,69 +95,97 @@ fn run() -> Result<String, String> {
             })
             .collect();
         let n_z = spec.map.horizon * (spec.model.outputs.len() + spec.model.inputs.len());
-        table += &format!(
-            "| `{name}` | {} | {} | {} | {min} / {median} / {max} | {} | {} | {} | {} | {} | {} | {largest:.1e} |\n",
-            targets.join(", "),
-            spec.map.horizon,
-            segments.join(", "),
-            design.first_estimate_instructions().unwrap_or(0),
-            2 * n_z * targets.len(),
-            design.divisions.iter().max().unwrap_or(&0),
-            design.stack_bytes,
-            design.flash_bytes,
-            design.observer_bytes + design.static_ram_bytes as usize,
+        let chosen = on_target::chosen_kind(name);
+
+        let mut rows: BTreeMap<Kind, Row> = BTreeMap::new();
+        for (&kind, observer) in all.observers.get(name).into_iter().flatten() {
+            let largest = match kind {
+                Kind::Map => on_target::compare_with_library(name, observer)?,
+                _ => on_target::compare_started_with_f64(name, observer)?,
+            };
+            rows.insert(
+                kind,
+                Row {
+                    phases: observer.phases().map_err(|e| format!("{name} {}: {e}", kind.api()))?,
+                    divisions: observer.divisions.iter().copied().max().unwrap_or(0),
+                    stack_bytes: observer.stack_bytes as u64,
+                    flash_bytes: observer.flash_bytes,
+                    ram_bytes: observer.observer_bytes as u64 + observer.static_ram_bytes,
+                    largest,
+                },
+            );
+        }
+        let filter = all
+            .filters
+            .get(name)
+            .ok_or_else(|| format!("no EKF measured for {name}"))?;
+        rows.insert(
+            Kind::Ekf,
+            Row {
+                phases: filter.phases().map_err(|e| format!("{name} ekf(): {e}"))?,
+                divisions: filter.divisions.iter().copied().max().unwrap_or(0),
+                stack_bytes: filter.stack_bytes as u64,
+                flash_bytes: filter.flash_bytes,
+                ram_bytes: filter.filter_bytes as u64 + filter.static_ram_bytes,
+                largest: on_target::compare_ekf_with_f64(name, filter)?,
+            },
         );
-        // The design's extended Kalman filter: `push` + `targets` per sample, over the accepted
-        // samples (a refused one only predicts); compared with the same filter in f64 on the host.
-        let filter = filters.get(name).ok_or_else(|| format!("no EKF measured for {name}"))?;
-        let largest = on_target::compare_ekf_with_f64(name, filter)?;
-        let (min, median, max) = on_target::spread(&filter.accepted_instructions());
+        let expected = on_target::kinds(name);
+        if !rows.keys().copied().eq(expected.iter().copied()) {
+            return Err(format!(
+                "{name}: measured {:?}, the design has {expected:?}",
+                rows.keys().collect::<Vec<_>>()
+            ));
+        }
+
+        for (&kind, row) in &rows {
+            let (min, median, max) = on_target::spread(&row.phases.steady);
+            let observer = match kind {
+                Kind::Map => "`map_observer()`",
+                Kind::Corrected => "`CorrectedObserver`",
+                Kind::StartedEkf => "`StartedEkfObserver`",
+                Kind::Ekf => "`ekf()`",
+            };
+            let chosen = if chosen == Some(kind) { " = `observer()`" } else { "" };
+            let (horizon, segments, floor) = match kind {
+                Kind::Map => (
+                    spec.map.horizon.to_string(),
+                    segments.join(", "),
+                    (2 * n_z * targets.len()).to_string(),
+                ),
+                Kind::Corrected | Kind::StartedEkf => (spec.map.horizon.to_string(), "—".to_owned(), "—".to_owned()),
+                Kind::Ekf => ("—".to_owned(), "—".to_owned(), "—".to_owned()),
+            };
+            table += &format!(
+                "| `{name}` | {observer}{chosen} | {} | {horizon} | {segments} | {min} / {median} / {max} | {}, {} | {} | {floor} | {} | {} | {} | {} | {:.1e} |\n",
+                targets.join(", "),
+                row.phases.start_up_samples,
+                row.phases.start_up_max,
+                row.phases.first_estimate,
+                row.divisions,
+                row.stack_bytes,
+                row.flash_bytes,
+                row.ram_bytes,
+                row.largest,
+            );
+        }
+
         let source = std::fs::read_to_string(workspace_root().join("generated/src").join(format!("{name}.rs")))
             .map_err(|e| e.to_string())?;
-        let (_, map_median, map_max) = on_target::spread(&steady);
         let measured = Measured {
             source_sha256: host::report::on_target::source_hash(&source),
-            observers: [
-                (
-                    "map".to_owned(),
-                    OnTarget {
-                        instructions_median: map_median,
-                        instructions_max: map_max,
-                        divisions: design.divisions.iter().copied().max().unwrap_or(0),
-                        flash_bytes: design.flash_bytes,
-                        ram_bytes: design.observer_bytes as u64 + design.static_ram_bytes,
-                        stack_bytes: design.stack_bytes as u64,
-                    },
-                ),
-                (
-                    "ekf".to_owned(),
-                    OnTarget {
-                        instructions_median: median,
-                        instructions_max: max,
-                        divisions: filter.divisions.iter().copied().max().unwrap_or(0),
-                        flash_bytes: filter.flash_bytes,
-                        ram_bytes: filter.filter_bytes as u64 + filter.static_ram_bytes,
-                        stack_bytes: filter.stack_bytes as u64,
-                    },
-                ),
-            ]
-            .into(),
+            observers: rows
+                .iter()
+                .map(|(kind, row)| (kind.report_name().to_owned(), row.on_target()))
+                .collect(),
         };
         // Beside the design's report, which `gen` wrote there (and fills in again while the source
         // is the one measured).
         host::report::on_target::record(&workspace_root().join("target/designs").join(name), &measured)
             .map_err(|e| format!("{name}: cannot record the on-target figures: {e}"))?;
-        table += &format!(
-            "| `{name}` EKF | {} | — | — | {min} / {median} / {max} | — | — | {} | {} | {} | {} | {largest:.1e} |\n",
-            targets.join(", "),
-            filter.divisions.iter().max().unwrap_or(&0),
-            filter.stack_bytes,
-            filter.flash_bytes,
-            filter.filter_bytes + filter.static_ram_bytes as usize,
-        );
     }
     for (family, flash) in &all.family_flash_bytes {
-        table += &format!("| family `{family}` | (its members') | | | | | | | | {flash} | | |\n");
+        table += &format!("| family `{family}` | (its members' maps) | | | | | | | | | | {flash} | | |\n");
     }
     let readme_path = workspace_root().join("README.md");
     let readme = std::fs::read_to_string(&readme_path).map_err(|e| e.to_string())?;

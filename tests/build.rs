@@ -1,0 +1,44 @@
+//! Lists, for the on-target tests, the observers of every generated design that the map starts
+//! (`firmware::Started`): not every design has them, and code that names one a design lacks does not
+//! compile, so the list is read from the generated sources (`generated/src/<design>.rs`, where
+//! `gen` declares each as `pub type CorrectedObserver = …` / `pub type StartedEkfObserver = …`,
+//! host/src/emit/model.rs) and written as a macro, `for_each_started_observer!`, into
+//! `OUT_DIR/started_observers.rs`.
+
+use std::path::{Path, PathBuf};
+
+/// The type alias `gen` declares for each kind, and the kind's variant of `on_target::Kind`.
+const STARTED: [(&str, &str); 2] = [("CorrectedObserver", "Corrected"), ("StartedEkfObserver", "StartedEkf")];
+
+fn main() {
+    let sources = Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/src");
+    println!("cargo:rerun-if-changed={}", sources.display());
+    let mut designs: Vec<(String, String)> = std::fs::read_dir(&sources)
+        .unwrap_or_else(|e| panic!("cannot list {}: {e}", sources.display()))
+        .map(|entry| entry.expect("a directory entry").path())
+        .filter(|path| path.extension().is_some_and(|e| e == "rs") && !path.ends_with("lib.rs"))
+        .map(|path| {
+            let name = path
+                .file_stem()
+                .and_then(|s| s.to_str())
+                .expect("a UTF-8 file name")
+                .to_owned();
+            let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
+            (name, text)
+        })
+        .collect();
+    designs.sort();
+    let mut calls = String::new();
+    for (name, text) in &designs {
+        for (alias, kind) in STARTED {
+            if text.contains(&format!("\npub type {alias} = firmware::Started<")) {
+                calls += &format!("        $callback!({name}, {kind}, {alias});\n");
+            }
+        }
+    }
+    let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));
+    let text = format!(
+        "/// Invokes `$callback!(design, kind, Type)` for every observer of a generated design that the\n/// map starts (`firmware::Started`): `kind` is its [`crate::on_target::Kind`] variant, `Type` its alias in the\n/// design's module. Written by `tests/build.rs` from the generated sources.\n#[macro_export]\nmacro_rules! for_each_started_observer {{\n    ($callback:ident) => {{\n{calls}    }};\n}}\n"
+    );
+    std::fs::write(out.join("started_observers.rs"), text).expect("write started_observers.rs");
+}
