@@ -8,7 +8,7 @@ use indicatif::ProgressBar;
 use rand::SeedableRng;
 
 use crate::recording::{self, RecordingError, StreamError};
-use crate::spec::{limits, Design, SpecError};
+use crate::spec::{limits, Design, ObserverKind, SpecError};
 use crate::{data, fit, output};
 
 /// Why `simulate` or `estimate` did not run.
@@ -20,6 +20,9 @@ pub enum CommandError {
     /// The recorded file cannot be used.
     #[error(transparent)]
     Recording(#[from] RecordingError),
+    /// The observer kind asked for does not exist for this design.
+    #[error("{0}: ask for --kind map, or for the kind the report offers")]
+    Kind(#[from] crate::observers::recorded::RecordedError),
     /// A value the design's `[scenario]` would give is missing.
     #[error("design `{design}` has no `[scenario]`: give --{option}")]
     NoScenario {
@@ -128,9 +131,17 @@ pub fn simulate(design: &Design, run: &Simulation, output: &Path) -> Result<(), 
     })
 }
 
-/// Fits `design` and writes its library estimates over the recorded file `input` to `output` (see
-/// [`recording`] for the columns).
-pub fn estimate(design: &Design, input: &Path, output: &Path, progress: &ProgressBar) -> Result<(), CommandError> {
+/// Fits `design` and writes the estimates of its observer `kind` over the recorded file `input` to
+/// `output` (see [`recording`] for the columns): the map streams row by row; an observer the map
+/// starts (`corrected`, `ekf`, or the kind `gen` chose, `auto`) tunes its constants on the tuning runs
+/// as `gen` does and runs through the host mirror of the chip's `firmware::Started`, in `f64`.
+pub fn estimate(
+    design: &Design,
+    input: &Path,
+    output: &Path,
+    kind: ObserverKind,
+    progress: &ProgressBar,
+) -> Result<(), CommandError> {
     refuse_overwrite(output, &[input, &design.file])?;
     // A device or pipe may never end: only a regular file has a size to read.
     if input.exists() && !std::fs::metadata(input).is_ok_and(|m| m.is_file()) {
@@ -139,16 +150,40 @@ pub fn estimate(design: &Design, input: &Path, output: &Path, progress: &Progres
     let mut rows = recording::RowReader::open(design, input)?;
     let result = fit::run(design, progress)?;
     let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
+    let io = |source| CommandError::Io {
+        path: output.to_owned(),
+        source,
+    };
+    if kind != ObserverKind::Map {
+        let code = crate::plant::ModelCode::new(design).map_err(|e| {
+            design.error(
+                e.field,
+                format!("the model cannot be written as Rust: {}", e.construct),
+                "rewrite the expression as the message says",
+            )
+        })?;
+        progress.set_message(format!("{}: tuning the observers", design.name));
+        let comparison = crate::observers::compare(design, &result, &code)?;
+        let chosen = if kind == ObserverKind::Auto {
+            comparison.chosen.0
+        } else {
+            kind
+        };
+        if chosen != ObserverKind::Map {
+            let all = recording::read(design, input)?;
+            let estimates = crate::observers::recorded::estimate(design, &result, &code, &comparison, chosen, &all)?;
+            let names: Vec<&str> = design.targets.iter().map(|t| t.name.as_str()).collect();
+            return output::write_atomically(output, recording::estimates_csv(&names, &estimates).as_bytes())
+                .map_err(io);
+        }
+    }
     // Row by row: memory does not grow with the recording; the output appears only when complete.
     output::write_atomically_with(output, |out| {
         recording::estimate_streaming(&maps, design.map.horizon, &mut rows, out)
     })
     .map_err(|e| match e {
         StreamError::Recording(e) => CommandError::Recording(e),
-        StreamError::Io(source) => CommandError::Io {
-            path: output.to_owned(),
-            source,
-        },
+        StreamError::Io(source) => io(source),
     })
 }
 

@@ -51,7 +51,7 @@ enum Command {
         #[arg(long, value_name = "FILE")]
         output: PathBuf,
     },
-    /// Estimates the targets of a design over recorded measurements (the library maps, in f64).
+    /// Estimates the targets of a design over recorded measurements with its observer (in f64).
     Estimate {
         #[command(flatten)]
         design: DesignChoice,
@@ -61,7 +61,20 @@ enum Command {
         /// CSV to write: one column per target, then `saturated`.
         #[arg(long, value_name = "FILE")]
         output: PathBuf,
+        /// The observer: `auto` (default) is the design's `observer()`, the kind `gen` chose; `map`,
+        /// `corrected` or `ekf` (started by the map) ask for one.
+        #[arg(long, value_enum, default_value = "auto")]
+        kind: KindArg,
     },
+}
+
+/// `--kind`.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum KindArg {
+    Auto,
+    Map,
+    Corrected,
+    Ekf,
 }
 
 /// Which design: a shipped one by name, or any spec file.
@@ -100,7 +113,12 @@ fn main() -> ExitCode {
             seed,
             output,
         } => simulate(&design, x0, samples, seed, &output),
-        Command::Estimate { design, input, output } => estimate(&design, &input, &output),
+        Command::Estimate {
+            design,
+            input,
+            output,
+            kind,
+        } => estimate(&design, &input, &output, kind),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -197,8 +215,14 @@ fn simulate(
     Ok(())
 }
 
-fn estimate(choice: &DesignChoice, input: &Path, output: &Path) -> anyhow::Result<()> {
+fn estimate(choice: &DesignChoice, input: &Path, output: &Path, kind: KindArg) -> anyhow::Result<()> {
     let design = choice.load()?;
-    commands::estimate(&design, input, output, &progress_bar(&design))?;
+    let kind = match kind {
+        KindArg::Auto => spec::ObserverKind::Auto,
+        KindArg::Map => spec::ObserverKind::Map,
+        KindArg::Corrected => spec::ObserverKind::Corrected,
+        KindArg::Ekf => spec::ObserverKind::Ekf,
+    };
+    commands::estimate(&design, input, output, kind, &progress_bar(&design))?;
     Ok(())
 }

@@ -8,8 +8,13 @@ fn host(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_host")).args(args).output().unwrap()
 }
 
-/// `host estimate --design vanderpol --input IN --output OUT`.
+/// `host estimate --design vanderpol --input IN --output OUT --kind map`.
 fn estimate_vanderpol(input: &Path, output: &Path) -> Output {
+    estimate_kind("map", input, output)
+}
+
+/// `host estimate --design vanderpol --input IN --output OUT --kind KIND`.
+fn estimate_kind(kind: &str, input: &Path, output: &Path) -> Output {
     host(&[
         "estimate",
         "--design",
@@ -18,6 +23,8 @@ fn estimate_vanderpol(input: &Path, output: &Path) -> Output {
         s(input),
         "--output",
         s(output),
+        "--kind",
+        kind,
     ])
 }
 
@@ -81,7 +88,15 @@ fn paper_scenario_round_trip_matches_the_library() {
 
 #[test]
 fn runs_restart_the_observer_and_refused_samples_leave_no_trace() {
-    let dir = scratch("runs");
+    for kind in ["map", "corrected", "ekf"] {
+        restart_and_refusal(kind);
+    }
+}
+
+/// Every kind of observer: restarted by each run, no estimate before the N-th accepted sample, and a
+/// refused sample changes nothing that follows.
+fn restart_and_refusal(kind: &str) {
+    let dir = scratch(&format!("runs-{kind}"));
     let (input, output) = (dir.join("in.csv"), dir.join("out.csv"));
     // Two runs of 12 samples, an extra ignored column, and a NaN in the second run at row 16.
     let mut text = String::from("note,run,y\n");
@@ -94,7 +109,7 @@ fn runs_restart_the_observer_and_refused_samples_leave_no_trace() {
         text += &format!("n{k},{},{y}\n", if k < 12 { "a" } else { "b" });
     }
     std::fs::write(&input, &text).unwrap();
-    let out = estimate_vanderpol(&input, &output);
+    let out = estimate_kind(kind, &input, &output);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let table = rows(&std::fs::read_to_string(&output).unwrap());
     let has_estimate: Vec<bool> = table[1..].iter().map(|r| !r[0].is_empty()).collect();
@@ -102,7 +117,7 @@ fn runs_restart_the_observer_and_refused_samples_leave_no_trace() {
     let expected: Vec<bool> = (0..24).map(|k| matches!(k, 9..=11) || (k >= 22)).collect();
     assert_eq!(
         has_estimate, expected,
-        "estimates from the 10th accepted sample of each run"
+        "{kind}: estimates from the 10th accepted sample of each run"
     );
     // The refused row leaves no trace: the same file without it gives the same last estimates.
     let without: String = text
@@ -113,9 +128,9 @@ fn runs_restart_the_observer_and_refused_samples_leave_no_trace() {
         .collect();
     let (input2, output2) = (dir.join("in2.csv"), dir.join("out2.csv"));
     std::fs::write(&input2, without).unwrap();
-    assert!(estimate_vanderpol(&input2, &output2).status.success());
+    assert!(estimate_kind(kind, &input2, &output2).status.success());
     let table2 = rows(&std::fs::read_to_string(&output2).unwrap());
-    assert_eq!(table[table.len() - 2..], table2[table2.len() - 2..]);
+    assert_eq!(table[table.len() - 2..], table2[table2.len() - 2..], "{kind}");
 }
 
 #[test]
@@ -321,4 +336,52 @@ fn streaming_estimates_equal_the_in_memory_ones() {
         in_memory.lines().filter(|l| !l.starts_with(',')).count() > 10,
         "{in_memory}"
     );
+}
+
+#[test]
+fn the_chosen_observer_on_the_recorded_scenario_is_the_reports() {
+    // `estimate` (default `--kind auto`: Example 1's map-started EKF) over the scenario `simulate`
+    // recorded gives, to the last bit, the estimates the report and the figure show for that observer.
+    let dir = scratch("chosen");
+    let (run, estimates) = (dir.join("run.csv"), dir.join("estimates.csv"));
+    assert!(host(&["simulate", "--design", "vanderpol", "--output", s(&run)])
+        .status
+        .success());
+    let out = host(&[
+        "estimate",
+        "--design",
+        "vanderpol",
+        "--input",
+        s(&run),
+        "--output",
+        s(&estimates),
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let table = rows(&std::fs::read_to_string(&estimates).unwrap());
+
+    let design = host::spec::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml")).unwrap();
+    let result = host::fit::run(&design, &indicatif::ProgressBar::hidden()).unwrap();
+    let code = host::plant::ModelCode::new(&design).unwrap();
+    let comparison = host::observers::compare(&design, &result, &code).unwrap();
+    assert_eq!(comparison.chosen.0, host::spec::ObserverKind::Ekf);
+    let report = comparison.observers.iter().find(|o| o.kind == "ekf_started").unwrap();
+    let map = &comparison.observers[0].scenario;
+    assert_eq!(table.len(), 1 + report.scenario.len());
+    let mut differs_from_map = 0;
+    for (k, (row, expected)) in table[1..].iter().zip(report.scenario.iter()).enumerate() {
+        for t in 0..2 {
+            if expected[t].is_nan() {
+                assert!(row[t].is_empty(), "row {k}");
+            } else {
+                assert_eq!(
+                    row[t].parse::<f64>().unwrap().to_bits(),
+                    expected[t].to_bits(),
+                    "row {k} target {t}"
+                );
+                differs_from_map += usize::from(expected[t] != map[k][t]);
+            }
+        }
+    }
+    // It is not the map: every estimate after the first differs from the map's.
+    assert!(differs_from_map >= 2 * (table.len() - 11), "{differs_from_map}");
 }

@@ -89,7 +89,30 @@ pub struct Setting<'a> {
     pub upper: Vec<f64>,
 }
 
-impl Setting<'_> {
+impl<'a> Setting<'a> {
+    /// The setting of `design`'s observer: the chip's model and substeps, the first estimate at
+    /// `N − 1`, each state clamped to its map's learning range.
+    pub fn for_design(
+        design: &Design,
+        result: &crate::fit::DesignResult,
+        code: &'a ModelCode,
+        state_targets: &'a [usize],
+    ) -> Self {
+        let (lower, upper) = state_targets
+            .iter()
+            .map(|&t| (result.targets[t].fit.map.r_min, result.targets[t].fit.map.r_max))
+            .unzip();
+        Setting {
+            code,
+            h: design.tau / design.chip_substeps as f64,
+            substeps: design.chip_substeps,
+            state_targets,
+            first: design.map.horizon - 1,
+            lower,
+            upper,
+        }
+    }
+
     /// The constants a search point `θ = (G, K, ln T)` stands for (`G` clamped to `[0, 1]`).
     pub fn constants(&self, theta: &[f64]) -> CorrectionConstants {
         let nx = self.code.dimensions.states;

@@ -6,6 +6,7 @@
 
 pub mod corrected;
 pub mod ekf;
+pub mod recorded;
 pub mod started;
 
 use crate::data::{self, DataSet, Rows, Run};
@@ -277,19 +278,7 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         }));
     }
     let corrected = corrected::state_targets(design).map(|state_targets| {
-        let (lower, upper) = state_targets
-            .iter()
-            .map(|&t| (result.targets[t].fit.map.r_min, result.targets[t].fit.map.r_max))
-            .unzip();
-        let setting = corrected::Setting {
-            code,
-            h: design.tau / design.chip_substeps as f64,
-            substeps: design.chip_substeps,
-            state_targets: &state_targets,
-            first: horizon - 1,
-            lower,
-            upper,
-        };
+        let setting = corrected::Setting::for_design(design, result, code, &state_targets);
         let maps: Vec<Rows> = tuning.runs.iter().map(|r| map_estimates(result, horizon, r)).collect();
         let tuned = corrected::tune(&setting, &tuning, &maps, &spreads);
         let programs = crate::plant::correction::correction_code(code, &tuned.constants);

@@ -2,10 +2,12 @@
 //! chip's shell that the model-corrected map ([`super::corrected`]) and the map-started EKF
 //! ([`super::ekf::estimate_started`]) plug their samples into.
 //!
-//! No estimate before sample `first` (NaN rows); there the map's row, and `start` from the map's
-//! states; then `follow` for every later sample with its count `j` (counted as the chip counts:
-//! only samples taken). A start or follow-up that gives `None` (not finite) is refused: nothing
-//! carried changes and the last estimate stays.
+//! No estimate before the map's first (NaN rows: before sample `first`, or while the map's row is not
+//! finite because refused samples left its window short); there the map's row, and `start` from the
+//! map's states; then `follow` for every later sample with its count `j` (counted as the chip counts:
+//! only samples taken). A sample with a non-finite output or input is refused as the chip refuses it:
+//! nothing changes, and its row is NaN (no estimate from that sample). A start or follow-up that gives
+//! `None` (not finite) is refused too: nothing carried changes and the last estimate stays.
 
 use firmware::Scalar;
 
@@ -26,12 +28,16 @@ pub fn run<T: Scalar, C>(
     let literal = |v: f64| T::literal(v as f32, v);
     let width = map.first().map_or(0, Vec::len);
     let nan = vec![literal(f64::NAN); width];
-    let mut out: Vec<Vec<T>> = Vec::with_capacity(run.targets.len());
+    let mut out: Vec<Vec<T>> = Vec::with_capacity(map.len());
     let mut carried: Option<C> = None;
     let mut j = 0;
-    for (k, row) in map.iter().enumerate().take(run.targets.len()) {
-        let last = out.last().cloned().unwrap_or_else(|| nan.clone());
-        if k < first {
+    let mut last = nan.clone();
+    for (k, row) in map.iter().enumerate().take(run.measurements.len()) {
+        let refused = run.measurements[k]
+            .iter()
+            .chain(run.inputs[k].iter())
+            .any(|v| !v.is_finite());
+        if refused || (carried.is_none() && (k < first || row.iter().any(|v| !v.is_finite()))) {
             out.push(nan.clone());
             continue;
         }
@@ -43,17 +49,19 @@ pub fn run<T: Scalar, C>(
                 Some(c) => {
                     carried = Some(c);
                     j = 1;
+                    last = row.clone();
                     out.push(row.clone());
                 }
-                None => out.push(last),
+                None => out.push(last.clone()),
             },
             Some(c) => match follow(c, j, &states, &y, &u) {
                 Some((next, targets)) => {
                     carried = Some(next);
                     j += 1;
+                    last = targets.clone();
                     out.push(targets);
                 }
-                None => out.push(last),
+                None => out.push(last.clone()),
             },
         }
     }
