@@ -1148,6 +1148,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
             let constants = CorrectionConstants {
                 g: $d::CORRECTED_G.to_vec(),
                 k: $d::CORRECTED_K.to_vec(),
+                k_start: $d::CORRECTED_K_START.to_vec(),
                 schedule: $d::CORRECTED_SCHEDULE,
                 start_up: follower_start_up(&$d::CorrectedObserver::new()),
                 lower: $d::CORRECTED_LOWER.to_vec(),

@@ -98,6 +98,7 @@ macro_rules! check_followers {
             let constants = CorrectionConstants {
                 g: d::CORRECTED_G.to_vec(),
                 k: d::CORRECTED_K.to_vec(),
+                k_start: d::CORRECTED_K_START.to_vec(),
                 schedule: d::CORRECTED_SCHEDULE,
                 start_up: <d::Corrector as Follower<
                     f32,

@@ -69,7 +69,8 @@ impl Names<'_> {
             Op::Leaf(Leaf::Covariance(k)) => format!("cov{k}"),
             Op::Leaf(Leaf::Measurement(i)) => format!("y_{}", model.outputs[i].name),
             Op::Leaf(Leaf::Map(i)) => format!("f_{}", model.states[i]),
-            Op::Leaf(Leaf::Blend(i)) => format!("g_{}", model.states[i]),
+            Op::Leaf(Leaf::Blend(i)) if i < model.states.len() => format!("g_{}", model.states[i]),
+            Op::Leaf(Leaf::Blend(i)) => format!("k{}", i - model.states.len()),
             _ => format!("t{op}"),
         }
     }
@@ -212,6 +213,7 @@ fn corrector(
         .replace("{UPPER}", &pairs("corrected upper", &constants.upper)?)
         .replace("{G}", &format!("{:?}", constants.g))
         .replace("{K}", &format!("{:?}", constants.k))
+        .replace("{K0}", &format!("{:?}", constants.k_start))
         .replace("{T}", &format!("{:?}", constants.schedule))
         .replace("{LOWER_F64}", &format!("{:?}", constants.lower))
         .replace("{UPPER_F64}", &format!("{:?}", constants.upper));
@@ -231,13 +233,13 @@ fn corrector(
     writeln!(w, "}}\n").ok();
     writeln!(
         w,
-        "/// The correction during the start-up, blend `g` given: `x̂` before its clamp, written out by `gen`."
+        "/// The correction during the start-up, `g` = (blend `g_j`, gain `K_j`) given: `x̂` before its clamp, written out by `gen`."
     )
     .ok();
     writeln!(w, "#[allow(unused_variables, non_snake_case)]").ok();
     writeln!(
         w,
-        "fn corrected_start_up<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T; INPUTS], f: &[T; STATES], g: &[T; STATES]) -> [T; STATES] {{"
+        "fn corrected_start_up<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T; INPUTS], f: &[T; STATES], g: &[T; SCHEDULED]) -> [T; STATES] {{"
     )
     .ok();
     w.push_str(&body(&programs.start_up, code, design, "    ", list)?);
@@ -265,6 +267,8 @@ const CORRECTED_TEMPLATE: &str = r#"
 pub const CORRECTED_G: [f64; STATES] = {G};
 /// See [`CORRECTED_G`].
 pub const CORRECTED_K: [f64; STATES * OUTPUTS] = {K};
+/// See [`CORRECTED_G`]: the start-up gain `K₀`.
+pub const CORRECTED_K_START: [f64; STATES * OUTPUTS] = {K0};
 /// See [`CORRECTED_G`].
 pub const CORRECTED_SCHEDULE: f64 = {T};
 /// See [`CORRECTED_G`].
@@ -272,17 +276,21 @@ pub const CORRECTED_LOWER: [f64; STATES] = {LOWER_F64};
 /// See [`CORRECTED_G`].
 pub const CORRECTED_UPPER: [f64; STATES] = {UPPER_F64};
 
-/// The model-corrected map's start-up blends `g_j = G + (1 − G) / (1 + j / T)`, `j = 1 … J`, per
-/// state, each as `(f32, f64)`.
+/// Entries of one row of [`CORRECTED_BLENDS`]: a blend per state, then the gain.
+const SCHEDULED: usize = STATES + STATES * OUTPUTS;
+
+/// The model-corrected map's start-up schedule, `j = 1 … J`: the blends
+/// `g_j = G + (1 − G) / (1 + j / T)` per state, then the gains `K_j = K + (K₀ − K) / (1 + j / T)`
+/// (states × outputs, row by row), each as `(f32, f64)`.
 #[rustfmt::skip]
-static CORRECTED_BLENDS: [[(f32, f64); STATES]; {START_UP}] = [
+static CORRECTED_BLENDS: [[(f32, f64); SCHEDULED]; {START_UP}] = [
 {BLENDS}
 ];
 
 /// The model-corrected map on the chip: `x̂(N−1) = F(Z)`, then
-/// `x̂ = clamp(x̄ + g_j ⊙ (F(Z) − x̄) + K (y − h(x̄, u)))` with `x̄` the model's prediction, as chosen
-/// by `gen` on the tuning runs: `G = {G}`, `K = {K}` (states × outputs, row by row), `T = {T}`,
-/// `J = {START_UP}`. The clamp is each state's learning range.
+/// `x̂ = clamp(x̄ + g_j ⊙ (F(Z) − x̄) + K_j (y − h(x̄, u)))` with `x̄` the model's prediction, as chosen
+/// by `gen` on the tuning runs: `G = {G}`, `K = {K}`, `K₀ = {K0}` (states × outputs, row by row),
+/// `T = {T}`, `J = {START_UP}`. The clamp is each state's learning range.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Corrector;
 
@@ -308,15 +316,15 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
         u: &[T; INPUTS],
     ) -> Option<([T; STATES], [Estimate<T>; STATES])> {
         // Loops rather than `array::map`, which the compiler turns into copies at `opt-level = "s"`.
-        let pick = |pairs: &[(f32, f64); STATES]| {
-            let mut out = [T::ZERO; STATES];
+        fn pick<T: Scalar, const M: usize>(pairs: &[(f32, f64); M]) -> [T; M] {
+            let mut out = [T::ZERO; M];
             for (out, &(single, double)) in out.iter_mut().zip(pairs) {
                 *out = T::literal(single, double);
             }
             out
-        };
+        }
         let raw = if start_up {
-            let row = CORRECTED_BLENDS.get(j.wrapping_sub(1)).unwrap_or(&[(0.0, 0.0); STATES]);
+            let row = CORRECTED_BLENDS.get(j.wrapping_sub(1)).unwrap_or(&[(0.0, 0.0); SCHEDULED]);
             corrected_start_up(x, y, u, f, &pick(row))
         } else {
             corrected_steady(x, y, u, f)

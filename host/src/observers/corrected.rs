@@ -21,10 +21,13 @@
 //!
 //! # Tuning
 //!
-//! `(G, K, ln T)` minimises the mean over targets of RMSE / spread on the tuning runs, the same
+//! `(G, K, K₀, ln T)` minimises the mean over targets of RMSE / spread on the tuning runs, the same
 //! criterion as the EKF's, by Nelder–Mead (`argmin`) from a few fixed starts (closed loop: the
-//! one-step least-squares criterion is not the closed-loop one). Deterministic: fixed starts, fixed
-//! iterations, the best of the starts by cost, the first of equals.
+//! one-step least-squares criterion is not the closed-loop one), once with `G` free and once with
+//! `G = 0` (no map after the start-up: the chip's steady sample is then the model and `K` alone);
+//! `G = 0` is kept unless `G` free does better by more than
+//! [`CHEAPER_WITHIN`](super::CHEAPER_WITHIN). Deterministic: fixed starts, fixed iterations, the best
+//! of the starts by cost, the first of equals.
 
 use argmin::core::{CostFunction, Executor, State};
 use argmin::solver::neldermead::NelderMead;
@@ -46,6 +49,11 @@ pub struct Tuned {
     pub start_cost: f64,
     /// Cost evaluations over every start.
     pub evaluations: u64,
+    /// The best criterion with `G` free (the chip reads the map after the start-up where `G ≠ 0`).
+    pub cost_with_map: f64,
+    /// The best with `G = 0` (no map after the start-up): chosen when within
+    /// [`CHEAPER_WITHIN`](super::CHEAPER_WITHIN) of [`Tuned::cost_with_map`].
+    pub cost_without_map: f64,
 }
 
 /// For every state, the target that is that state (`None` with the reason when one is missing).
@@ -113,12 +121,13 @@ impl<'a> Setting<'a> {
         }
     }
 
-    /// The constants a search point `θ = (G, K, ln T)` stands for (`G` clamped to `[0, 1]`).
+    /// The constants a search point `θ = (G, K, K₀, ln T)` stands for (`G` clamped to `[0, 1]`).
     pub fn constants(&self, theta: &[f64]) -> CorrectionConstants {
-        let nx = self.code.dimensions.states;
+        let (nx, ny) = (self.code.dimensions.states, self.code.dimensions.outputs);
         CorrectionConstants {
             g: theta[..nx].iter().map(|g| g.clamp(0.0, 1.0)).collect(),
-            k: theta[nx..theta.len() - 1].to_vec(),
+            k: theta[nx..nx + nx * ny].to_vec(),
+            k_start: theta[nx + nx * ny..nx + 2 * nx * ny].to_vec(),
             schedule: theta[theta.len() - 1].exp(),
             start_up: START_UP_HORIZONS * (self.first + 1),
             lower: self.lower.clone(),
@@ -217,6 +226,8 @@ struct Criterion<'a> {
     data: &'a DataSet,
     maps: &'a [Rows],
     target_spreads: &'a [f64],
+    /// Whether `G = 0` is fixed (and left out of `θ`): the chip reads no map after the start-up.
+    without_map: bool,
 }
 
 impl Criterion<'_> {
@@ -252,7 +263,20 @@ impl CostFunction for Criterion<'_> {
     type Output = f64;
 
     fn cost(&self, theta: &Self::Param) -> Result<f64, argmin::core::Error> {
-        Ok(self.score(&self.setting.constants(theta)))
+        Ok(self.score(&self.constants(theta)))
+    }
+}
+
+impl Criterion<'_> {
+    /// The constants `θ` stands for: `(G, K, K₀, ln T)`, or `(K, K₀, ln T)` with `G = 0`.
+    fn constants(&self, theta: &[f64]) -> CorrectionConstants {
+        if self.without_map {
+            let mut full = vec![0.0; self.setting.code.dimensions.states];
+            full.extend_from_slice(theta);
+            self.setting.constants(&full)
+        } else {
+            self.setting.constants(theta)
+        }
     }
 }
 
@@ -266,7 +290,7 @@ pub fn tune(setting: &Setting<'_>, tuning: &DataSet, maps: &[Rows], target_sprea
     // Starts: the paper's blend at three strengths, and two constant-gain observers.
     let start = |g: f64, k: f64, schedule: f64| -> Vec<f64> {
         let mut theta = vec![g; nx];
-        theta.extend(std::iter::repeat_n(k, nx * ny));
+        theta.extend(std::iter::repeat_n(k, 2 * nx * ny)); // K₀ = K: a constant gain
         theta.push(schedule.ln());
         theta
     };
@@ -278,21 +302,27 @@ pub fn tune(setting: &Setting<'_>, tuning: &DataSet, maps: &[Rows], target_sprea
         start(0.0, 0.05, 2.0),
     ];
     let count = std::sync::atomic::AtomicU64::new(0);
-    let criterion = || Criterion {
+    let criterion = |without_map| Criterion {
         count: &count,
         setting,
         data: tuning,
         maps,
         target_spreads,
+        without_map,
     };
     let start_cost = starts
         .iter()
-        .map(|theta| criterion().score(&setting.constants(theta)))
+        .map(|theta| criterion(false).score(&setting.constants(theta)))
         .fold(f64::INFINITY, f64::min);
-    let results: Vec<(Vec<f64>, f64)> = starts
+    // Every start twice: `G` free, and `G = 0` fixed (the same start without its `G`).
+    let searches: Vec<(bool, Vec<f64>)> = starts
+        .iter()
+        .flat_map(|theta| [(false, theta.clone()), (true, theta[nx..].to_vec())])
+        .collect();
+    let results: Vec<(bool, Vec<f64>, f64)> = searches
         .into_par_iter()
-        .map(|theta| {
-            let criterion = criterion();
+        .map(|(without_map, theta)| {
+            let criterion = criterion(without_map);
             // The initial simplex: the start and one step along each coordinate.
             let simplex: Vec<Vec<f64>> = std::iter::once(theta.clone())
                 .chain((0..theta.len()).map(|i| {
@@ -310,18 +340,34 @@ pub fn tune(setting: &Setting<'_>, tuning: &DataSet, maps: &[Rows], target_sprea
                 .expect("the criterion does not fail");
             let state = result.state();
             let best = state.get_best_param().cloned().unwrap_or(theta);
-            (best, state.get_best_cost())
+            (without_map, best, state.get_best_cost())
         })
         .collect();
-    let (theta, cost) = results.into_iter().fold(
-        (Vec::new(), f64::INFINITY),
-        |best, r| if r.1 < best.1 { r } else { best },
-    );
+    let best = |without_map: bool| {
+        results
+            .iter()
+            .filter(|r| r.0 == without_map)
+            .fold(None, |best: Option<&(bool, Vec<f64>, f64)>, r| match best {
+                Some(b) if b.2 <= r.2 => Some(b),
+                _ => Some(r),
+            })
+            .expect("every start was searched")
+    };
+    let (free, without) = (best(false), best(true));
+    // Reading the map after the start-up costs the chip the map's evaluation every sample: it must
+    // pay for itself by more than `CHEAPER_WITHIN`, the rule `auto` applies between kinds.
+    let chosen = if without.2 <= free.2 * (1.0 + super::CHEAPER_WITHIN) {
+        without
+    } else {
+        free
+    };
     Tuned {
-        constants: setting.constants(&theta),
-        cost,
+        constants: criterion(chosen.0).constants(&chosen.1),
+        cost: chosen.2,
         start_cost,
         evaluations: count.into_inner(),
+        cost_with_map: free.2,
+        cost_without_map: without.2,
     }
 }
 

@@ -4,7 +4,7 @@
 //!
 //! ```text
 //! predict   (x, u)          → x⁺ = f(x, u)                       one sampling period, RK4
-//! start_up  (x̄, y, u, F, g) → x̄ + g ⊙ (F − x̄) + K (y − h(x̄, u))  the blend g given
+//! start_up  (x̄, y, u, F, g) → x̄ + g ⊙ (F − x̄) + K_j (y − h(x̄, u))  the blend g_j, K_j given
 //! steady    (x̄, y, u, F)    → x̄ + G ⊙ (F − x̄) + K (y − h(x̄, u))  G a number: F is not read where G = 0
 //! ```
 //!
@@ -24,8 +24,11 @@ use super::ModelCode;
 pub struct CorrectionConstants {
     /// `G`, per state: the blend after the start-up, in `[0, 1]`.
     pub g: Vec<f64>,
-    /// `K`, states × outputs, row by row.
+    /// `K`, states × outputs, row by row: the innovation gain after the start-up.
     pub k: Vec<f64>,
+    /// `K₀`, the same shape: the start-up gain `K_j = K + (K₀ − K) / (1 + j / T)` falls from it to `K`
+    /// on the blend's schedule (`K₀ = K` keeps the gain constant).
+    pub k_start: Vec<f64>,
     /// `T > 0`: the start-up blend `g_j = G + (1 − G) / (1 + j / T)` falls from 1 (the map's first
     /// estimate, `j = 0`) towards `G` with this time constant, in estimates.
     pub schedule: f64,
@@ -42,14 +45,16 @@ pub struct CorrectionConstants {
 }
 
 impl CorrectionConstants {
-    /// The start-up blends, `J` rows of one per state: row `j − 1` is `g_j` (the chip reads them
-    /// from a table: no division).
+    /// The start-up table, `J` rows: row `j − 1` is `g_j` (one per state), then `K_j` (states ×
+    /// outputs, row by row); the chip reads them from a table: no division.
     pub fn blends(&self) -> Vec<Vec<f64>> {
         (1..=self.start_up)
             .map(|j| {
+                let fall = 1.0 / (1.0 + j as f64 / self.schedule);
                 self.g
                     .iter()
-                    .map(|g| g + (1.0 - g) / (1.0 + j as f64 / self.schedule))
+                    .map(|g| g + (1.0 - g) * fall)
+                    .chain(self.k.iter().zip(&self.k_start).map(|(k, k0)| k + (k0 - k) * fall))
                     .collect()
             })
             .collect()
@@ -136,7 +141,8 @@ pub fn correction_code(code: &ModelCode, constants: &CorrectionConstants) -> Cor
     }
     let predict = finish(b);
 
-    let correct = |blend: &dyn Fn(&mut Builder<'_>, usize) -> usize| {
+    let correct = |blend: &dyn Fn(&mut Builder<'_>, usize) -> usize,
+                   gain: &dyn Fn(&mut Builder<'_>, usize) -> usize| {
         let mut b = builder();
         let x: Vec<usize> = (0..nx).map(|i| b.leaf(Leaf::State(i))).collect();
         let h = b.inline(&output, &x);
@@ -152,14 +158,14 @@ pub fn correction_code(code: &ModelCode, constants: &CorrectionConstants) -> Cor
             let towards = b.sub(map, x[i]);
             let moved = b.mul(g, towards);
             let blended = b.add(x[i], moved);
-            let gains: Vec<usize> = (0..ny).map(|o| b.number(constants.k[i * ny + o])).collect();
+            let gains: Vec<usize> = (0..ny).map(|o| gain(&mut b, i * ny + o)).collect();
             let corrected = b.dot(blended, &gains, &innovations);
             b.result(corrected);
         }
         finish(b)
     };
-    let start_up = correct(&|b, i| b.leaf(Leaf::Blend(i)));
-    let steady = correct(&|b, i| b.number(constants.g[i]));
+    let start_up = correct(&|b, i| b.leaf(Leaf::Blend(i)), &|b, e| b.leaf(Leaf::Blend(nx + e)));
+    let steady = correct(&|b, i| b.number(constants.g[i]), &|b, e| b.number(constants.k[e]));
     CorrectionCode {
         steady_reads_map: steady.ops.iter().any(|op| matches!(op, super::Op::Leaf(Leaf::Map(_)))),
         predict,

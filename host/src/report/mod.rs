@@ -163,6 +163,8 @@ pub enum CorrectedTuning {
         g: Vec<f64>,
         /// `K`, states × outputs, row by row.
         k: Vec<f64>,
+        /// `K₀`: the start-up gain, falling to `K` on the blend's schedule.
+        k_start: Vec<f64>,
         /// `T`: the start-up blend's time constant, in estimates.
         schedule: f64,
         /// `J`: estimates that take the start-up blend.
@@ -177,6 +179,8 @@ pub enum CorrectedTuning {
         start_cost: f64,
         /// Criterion evaluations (Nelder–Mead, every start).
         evaluations: u64,
+        /// The best criterion with `G` free, and with `G = 0` (no map after the start-up).
+        cost_with_and_without_map: (f64, f64),
     },
     /// Not available.
     Unavailable {
@@ -336,6 +340,7 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             Ok(t) => CorrectedTuning::Tuned {
                 g: t.constants.g.clone(),
                 k: t.constants.k.clone(),
+                k_start: t.constants.k_start.clone(),
                 schedule: t.constants.schedule,
                 start_up: t.constants.start_up,
                 lower: t.constants.lower.clone(),
@@ -343,6 +348,7 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
                 cost: t.cost,
                 start_cost: t.start_cost,
                 evaluations: t.evaluations,
+                cost_with_and_without_map: (t.cost_with_map, t.cost_without_map),
             },
             Err(why) => CorrectedTuning::Unavailable {
                 unavailable: why.clone(),
