@@ -29,6 +29,8 @@ pub mod ecoli_x0_0p5;
 #[rustfmt::skip]
 pub mod ecoli_x0_2;
 #[rustfmt::skip]
+pub mod two_tanks;
+#[rustfmt::skip]
 pub mod vanderpol;
 #[rustfmt::skip]
 pub mod vanderpol_uncertain;
@@ -94,6 +96,7 @@ macro_rules! for_each_design {
     ($callback:ident) => {
         $callback!(ecoli_x0_0p5);
         $callback!(ecoli_x0_2);
+        $callback!(two_tanks);
         $callback!(vanderpol);
         $callback!(vanderpol_uncertain);
     };

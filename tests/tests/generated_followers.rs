@@ -156,3 +156,4 @@ macro_rules! check_followers {
 }
 
 check_followers!(vanderpol_followers_are_the_hosts, vanderpol);
+check_followers!(two_tanks_followers_are_the_hosts, two_tanks);

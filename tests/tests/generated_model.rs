@@ -95,6 +95,7 @@ macro_rules! check_design {
 check_design!(vanderpol_model_is_the_specs, vanderpol);
 check_design!(ecoli_x0_0p5_model_is_the_specs, ecoli_x0_0p5);
 check_design!(ecoli_x0_2_model_is_the_specs, ecoli_x0_2);
+check_design!(two_tanks_model_is_the_specs, two_tanks);
 
 /// Each design's written-out EKF (`Ekf`, what the chip runs) against the library filter it writes out
 /// (`reference_ekf`: `firmware::Ekf` over `firmware::Rk4` of the emitted `Plant`, same constants) over
@@ -145,3 +146,4 @@ macro_rules! check_filter {
 check_filter!(vanderpol_filter_is_the_librarys, vanderpol);
 check_filter!(ecoli_x0_0p5_filter_is_the_librarys, ecoli_x0_0p5);
 check_filter!(ecoli_x0_2_filter_is_the_librarys, ecoli_x0_2);
+check_filter!(two_tanks_filter_is_the_librarys, two_tanks);
