@@ -34,7 +34,8 @@ fn operation(op: &Op, code: &ModelCode, names: &Names<'_>) -> Result<String, Emi
         Op::Leaf(Leaf::Covariance(k)) => format!("p[{k}]"),
         Op::Leaf(Leaf::Measurement(i)) => format!("y[{i}]"),
         Op::Leaf(Leaf::Map(i)) => format!("f[{i}]"),
-        Op::Leaf(Leaf::Blend(i)) => format!("g[{i}]"),
+        // Read from the start-up table where used: no copy of the row.
+        Op::Leaf(Leaf::Blend(i)) => format!("T::literal(g[{i}].0, g[{i}].1)"),
         Op::Negate(a) => format!("-{}", names.of(a)),
         Op::Binary(b, x, y) => {
             let (x, y) = (names.of(x), names.of(y));
@@ -239,7 +240,7 @@ fn corrector(
     writeln!(w, "#[allow(unused_variables, non_snake_case)]").ok();
     writeln!(
         w,
-        "fn corrected_start_up<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T; INPUTS], f: &[T; STATES], g: &[T; SCHEDULED]) -> [T; STATES] {{"
+        "fn corrected_start_up<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T; INPUTS], f: &[T; STATES], g: &[(f32, f64); SCHEDULED]) -> [T; STATES] {{"
     )
     .ok();
     w.push_str(&body(&programs.start_up, code, design, "    ", list)?);
@@ -325,7 +326,7 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
         }
         let raw = if start_up {
             let row = CORRECTED_BLENDS.get(j.wrapping_sub(1)).unwrap_or(&[(0.0, 0.0); SCHEDULED]);
-            corrected_start_up(x, y, u, f, &pick(row))
+            corrected_start_up(x, y, u, f, row)
         } else {
             corrected_steady(x, y, u, f)
         };
