@@ -42,7 +42,7 @@ pub struct Figures {
     pub drift_mismatch: Option<Drift>,
 }
 
-/// Whether an observer drifts: its RMSE over the first and the last [`Drift::WINDOW`]s of
+/// Whether an observer drifts: its RMSE over the first and the last window of
 /// [`Drift::WINDOWS`] after the start-up (`START_UP_HORIZONS · N` estimates after the first, for every
 /// kind), on long runs from their own seed (`data::uncertain::long_set`). A window is as long as a
 /// validation run (`validation.samples`): 10 s and 60 s on Example 1.

@@ -8,7 +8,7 @@
 //!   true target outside the learning range `[r_min, r_max]`: the validation runs went where the
 //!   learning runs never did (a pendulum going over the top, say), so the map can only saturate there.
 //! * [`Gate::Weak`]: the map's validation RMSE is at least
-//!   [`WEAK_FRACTION`](crate::fit::evaluate::WEAK_FRACTION) of the target's spread: it barely beats
+//!   [`WEAK_FRACTION`] of the target's spread: it barely beats
 //!   predicting the mean, and the target may not be observable from these measurements over N.
 //! * [`Gate::EkfBetter`]: the chosen observer's validation RMSE is more than [`EKF_FACTOR`] times the
 //!   design's EKF's (either start) on some target: the EKF is the better choice for this system.
