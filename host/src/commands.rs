@@ -155,13 +155,7 @@ pub fn estimate(
         source,
     };
     if kind != ObserverKind::Map {
-        let code = crate::plant::ModelCode::new(design).map_err(|e| {
-            design.error(
-                e.field,
-                format!("the model cannot be written as Rust: {}", e.construct),
-                "rewrite the expression as the message says",
-            )
-        })?;
+        let code = crate::generate::model_code(design)?;
         progress.set_message(format!("{}: tuning the observers", design.name));
         let comparison = crate::observers::compare(design, &result, &code)?;
         let chosen = if kind == ObserverKind::Auto {

@@ -171,6 +171,17 @@ pub fn emit_design(design: Design, spec: &Path, progress: &ProgressBar) -> Resul
     })
 }
 
+/// The design's model written as programs, or an error naming the spec field that cannot be.
+pub fn model_code(design: &Design) -> Result<crate::plant::ModelCode, SpecError> {
+    crate::plant::ModelCode::new(design).map_err(|e| {
+        design.error(
+            e.field,
+            format!("the model cannot be written as Rust for the chip: {}", e.construct),
+            "rewrite the expression as the message says",
+        )
+    })
+}
+
 /// The observers of a fitted design compared (the EKF tuned on new runs), and the text of its
 /// `generated/src/<design>.rs`: maps, model and EKF.
 pub fn design_source(
@@ -180,13 +191,7 @@ pub fn design_source(
     spec: &Path,
     progress: &ProgressBar,
 ) -> Result<(crate::observers::Comparison, String), GenerateError> {
-    let code = crate::plant::ModelCode::new(design).map_err(|e| {
-        design.error(
-            e.field,
-            format!("the model cannot be written as Rust for the chip: {}", e.construct),
-            "rewrite the expression as the message says",
-        )
-    })?;
+    let code = model_code(design)?;
     progress.set_message(format!("{}: tuning the EKF", design.name));
     let comparison = crate::observers::compare(design, result, &code)?;
     let emit_error = |source| GenerateError::Emit {

@@ -194,6 +194,20 @@ pub fn simulate_run(
     simulate_plant(design, &design.model, x0, samples, rng, set)
 }
 
+/// The spec's `[scenario]` run on `plant` (the nominal model, or another plant of its parameters):
+/// its initial state, samples and seed, the noise and inputs drawn as [`simulate_run`] draws them, so
+/// that two plants get the same ones. `None` without a `[scenario]`.
+pub fn scenario_run(design: &Design, plant: &Model, set: &str) -> Result<Option<Run>, SpecError> {
+    design
+        .scenario
+        .as_ref()
+        .map(|s| {
+            let mut rng = ChaCha8Rng::seed_from_u64(s.seed);
+            simulate_plant(design, plant, &s.x0, s.samples, &mut rng, set)
+        })
+        .transpose()
+}
+
 /// [`simulate_run`] on the plant `plant` (the design's model with other parameter values, see
 /// `Model::with_parameters`): its states, outputs and targets, the run recording its parameters. A
 /// target that reads a parameter uses the plant's value: it is the true quantity of that plant.

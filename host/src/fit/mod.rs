@@ -70,11 +70,8 @@ pub fn run(design: &Design, progress: &ProgressBar) -> Result<DesignResult, Spec
         targets.push(result);
         progress.inc(1);
     }
-    let scenario = match &design.scenario {
-        Some(s) => {
-            let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(s.seed);
-            data::simulate_run(design, &s.x0, s.samples, &mut rng, "scenario")?
-        }
+    let scenario = match data::scenario_run(design, &design.model, "scenario")? {
+        Some(run) => run,
         None => validation.runs[0].clone(),
     };
     Ok(DesignResult {

@@ -163,11 +163,8 @@ fn mismatch(design: &Design, long_samples: usize) -> Result<Option<(Mismatch, [D
     let corners = data::uncertain::corners(&design.model);
     let last = corners.last().expect("a mismatch set has corners");
     let plant = design.model.with_parameters(&design.model.values_with_uncertain(last));
-    let scenario = match &design.scenario {
-        Some(s) => {
-            let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(s.seed);
-            data::simulate_plant(design, &plant, &s.x0, s.samples, &mut rng, "mismatch scenario")?
-        }
+    let scenario = match data::scenario_run(design, &plant, "mismatch scenario")? {
+        Some(run) => run,
         None => set.runs[set.runs.len() - design.validation.trajectories].clone(),
     };
     let nominal = data::uncertain::nominal(&design.model);
@@ -341,6 +338,19 @@ fn score(figures: &ObserverFigures, spreads: &[f64]) -> f64 {
         / spreads.len() as f64
 }
 
+/// The kinds `observer()` may be, cheapest first, each with the name of its row in
+/// [`Comparison::observers`] (`ekf` there is the EKF from the box centre, which no `observer()` is).
+pub const KINDS: [(ObserverKind, &str); 3] = [
+    (ObserverKind::Map, "map"),
+    (ObserverKind::Corrected, "corrected"),
+    (ObserverKind::Ekf, "ekf_started"),
+];
+
+/// The name of `kind`'s row in [`Comparison::observers`] (`Auto` is not a kind a design has: `map`).
+pub fn row_name(kind: ObserverKind) -> &'static str {
+    KINDS.iter().find(|k| k.0 == kind).map_or("map", |k| k.1)
+}
+
 /// How much worse than the best a cheaper kind's score may be and still be chosen by `auto`.
 pub const CHEAPER_WITHIN: f64 = 0.02;
 
@@ -353,14 +363,9 @@ pub fn choose(
     observers: &[ObserverFigures],
     spreads: &[f64],
 ) -> Result<(ObserverKind, String), SpecError> {
-    let kinds = [
-        ("map", ObserverKind::Map),
-        ("corrected", ObserverKind::Corrected),
-        ("ekf_started", ObserverKind::Ekf),
-    ];
-    let scored: Vec<(ObserverKind, &str, f64)> = kinds
+    let scored: Vec<(ObserverKind, &str, f64)> = KINDS
         .iter()
-        .filter_map(|&(name, kind)| {
+        .filter_map(|&(kind, name)| {
             observers
                 .iter()
                 .find(|o| o.kind == name)

@@ -18,7 +18,7 @@ use std::fmt;
 use crate::fit::evaluate::WEAK_FRACTION;
 use crate::fit::DesignResult;
 use crate::observers::Comparison;
-use crate::spec::{Design, ObserverKind};
+use crate::spec::Design;
 
 /// How much worse than the linear floor the map may be before [`Gate::BelowLinearFloor`].
 pub const LINEAR_FLOOR_SLACK: f64 = 0.02;
@@ -159,11 +159,7 @@ pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) ->
                 horizon: design.map.horizon,
             });
         }
-        let chosen = match comparison.chosen.0 {
-            ObserverKind::Map | ObserverKind::Auto => "map",
-            ObserverKind::Corrected => "corrected",
-            ObserverKind::Ekf => "ekf_started",
-        };
+        let chosen = crate::observers::row_name(comparison.chosen.0);
         let rmse_of = |kind: &str| {
             comparison
                 .observers

@@ -373,6 +373,11 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
     }
 }
 
+/// A figure in the report's tables: four decimals, or "diverged" where it is not finite.
+fn show(v: Option<f64>) -> String {
+    v.map_or("diverged".to_owned(), |v| format!("{v:.4}"))
+}
+
 /// The observers side by side (Markdown), and per figure a sentence naming the better one.
 pub fn observers_table(report: &Report<'_>) -> String {
     let mut s = String::new();
@@ -381,7 +386,6 @@ pub fn observers_table(report: &Report<'_>) -> String {
         "| observer | target | RMSE validation | max error validation | RMSE scenario | RMSE transient | RMSE tuning | on chip: instructions steady (median / max; start-up max), VDIV + VSQRT |"
     );
     let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
-    let show = |v: Option<f64>| v.map_or("diverged".to_owned(), |v| format!("{v:.4}"));
     for o in &report.observers {
         for (name, f) in &o.targets {
             let chip = match &o.on_target {
@@ -466,7 +470,6 @@ fn drift_table(report: &Report<'_>) -> String {
         if report.mismatch.is_some() { " first (last corner) | last (last corner) | last / first |" } else { "" },
         if report.mismatch.is_some() { "---|---|---|" } else { "" },
     );
-    let show = |v: Option<f64>| v.map_or("diverged".to_owned(), |v| format!("{v:.4}"));
     let ratio = |d: &DriftReport| match (d.rmse_first, d.rmse_last) {
         (Some(a), Some(b)) => format!("{:.2}", b / a),
         _ => "—".to_owned(),
@@ -509,7 +512,6 @@ fn mismatch_table(report: &Report<'_>, m: &MismatchReport) -> String {
         m.corners.iter().map(|c| corner(c)).collect::<Vec<_>>().join(" | "),
         "---|".repeat(m.corners.len()),
     );
-    let show = |v: Option<f64>| v.map_or("diverged".to_owned(), |v| format!("{v:.4}"));
     for o in &report.observers {
         for (name, f) in &o.targets {
             let corners: Vec<String> = f.rmse_corners.iter().map(|&v| show(v)).collect();

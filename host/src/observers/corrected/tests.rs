@@ -111,10 +111,9 @@ fn the_start_up_blend_follows_its_schedule_and_is_cut_to_g() {
     }
 }
 
-#[test]
-fn a_linear_plant_with_g_zero_is_the_fixed_gain_observer_in_closed_form() {
-    // ẋ = A x, y = C x: one RK4 step is exactly A_d = Σₙ₌₀⁴ (hA)ⁿ / n!, and with G = 0 after the
-    // first estimate the observer is x̂(k) = (I − K C) A_d x̂(k−1) + K y(k).
+/// `ẋ1 = x2, ẋ2 = −x1 − 0.5 x2, y = x1` (Example 1's spec otherwise), a validation run, and a map
+/// biased by (0.3, −0.4).
+fn linear() -> (ModelCode, Run, Rows) {
     let design = crate::spec::parse(
         std::path::Path::new("linear.toml"),
         &std::fs::read_to_string("specs/vanderpol.toml")
@@ -127,13 +126,26 @@ fn a_linear_plant_with_g_zero_is_the_fixed_gain_observer_in_closed_form() {
     let code = ModelCode::new(&design).unwrap();
     let run = crate::data::validation_set(&design).unwrap().runs[0].clone();
     let map: Rows = run.states.iter().map(|x| vec![x[0] + 0.3, x[1] - 0.4]).collect();
+    (code, run, map)
+}
+
+/// One RK4 step of the linear plant: exactly `A_d = Σₙ₌₀⁴ (hA)ⁿ / n!`.
+fn linear_step() -> Matrix2<f64> {
+    let ha = Matrix2::new(0.0, 1.0, -1.0, -0.5) * 0.1;
+    Matrix2::identity() + ha + ha * ha / 2.0 + ha * ha * ha / 6.0 + ha * ha * ha * ha / 24.0
+}
+
+#[test]
+fn a_linear_plant_with_g_zero_is_the_fixed_gain_observer_in_closed_form() {
+    // ẋ = A x, y = C x: one RK4 step is exactly A_d = Σₙ₌₀⁴ (hA)ⁿ / n!, and with G = 0 after the
+    // first estimate the observer is x̂(k) = (I − K C) A_d x̂(k−1) + K y(k).
+    let (code, run, map) = linear();
     let targets = [0, 1];
     let setting = setting(&code, &targets);
     let gain = [0.4, 0.15];
     let out = run_with(&setting, &constants(&setting, 0.0, gain, 1e-300), &map, &run);
 
-    let ha = Matrix2::new(0.0, 1.0, -1.0, -0.5) * 0.1;
-    let discrete = Matrix2::identity() + ha + ha * ha / 2.0 + ha * ha * ha / 6.0 + ha * ha * ha * ha / 24.0;
+    let discrete = linear_step();
     let k = Vector2::new(gain[0], gain[1]);
     let c = nalgebra::RowVector2::new(1.0, 0.0);
     let mut x = Vector2::new(map[9][0], map[9][1]);
@@ -154,18 +166,7 @@ fn on_a_linear_plant_the_start_up_gain_falls_from_k0_to_k_in_closed_form() {
     // As above, with estimate j = k − N + 1 of the start-up (j ≤ J = 3N) blending the map by
     // g_j = 1/(1 + j/T) (G = 0) and correcting by K_j = K + (K₀ − K)/(1 + j/T), then by K alone:
     // x̄ = A_d x̂(k−1), x̂(k) = x̄ + g_j (F(k) − x̄) + K_j (y(k) − C x̄).
-    let design = crate::spec::parse(
-        std::path::Path::new("linear.toml"),
-        &std::fs::read_to_string("specs/vanderpol.toml")
-            .unwrap()
-            .replace("x2 = \"4*x1 + (1 - x1^2)*x2\"", "x2 = \"-x1 - 0.5*x2\"")
-            .replace("x1 = \"-x2\"", "x1 = \"x2\"")
-            .replace("expr = \"x1 + x2\"", "expr = \"x1\""),
-    )
-    .unwrap();
-    let code = ModelCode::new(&design).unwrap();
-    let run = crate::data::validation_set(&design).unwrap().runs[0].clone();
-    let map: Rows = run.states.iter().map(|x| vec![x[0] + 0.3, x[1] - 0.4]).collect();
+    let (code, run, map) = linear();
     let targets = [0, 1];
     let setting = setting(&code, &targets);
     let (gain, start, schedule) = ([0.4, 0.15], [0.9, 0.6], 2.0);
@@ -175,8 +176,7 @@ fn on_a_linear_plant_the_start_up_gain_falls_from_k0_to_k_in_closed_form() {
     };
     let out = run_with(&setting, &with(start), &map, &run);
 
-    let ha = Matrix2::new(0.0, 1.0, -1.0, -0.5) * 0.1;
-    let discrete = Matrix2::identity() + ha + ha * ha / 2.0 + ha * ha * ha / 6.0 + ha * ha * ha * ha / 24.0;
+    let discrete = linear_step();
     let c = nalgebra::RowVector2::new(1.0, 0.0);
     let (k, k0) = (Vector2::new(gain[0], gain[1]), Vector2::new(start[0], start[1]));
     let mut x = Vector2::new(map[9][0], map[9][1]);
