@@ -373,9 +373,22 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
     }
 }
 
-/// A figure in the report's tables: four decimals, or "diverged" where it is not finite.
+/// An observer's figures per target, in the spec's order of targets (`report.json` keys them by name).
+fn in_spec_order<'r>(
+    report: &'r Report<'_>,
+    o: &'r ObserverReport,
+) -> impl Iterator<Item = (&'r String, &'r FiguresReport)> {
+    report.targets.iter().filter_map(|t| o.targets.get_key_value(t.name))
+}
+
+/// A figure in the report's tables: four decimals (scientific from 10⁴ on, where a filter ran away),
+/// or "diverged" where it is not finite.
 fn show(v: Option<f64>) -> String {
-    v.map_or("diverged".to_owned(), |v| format!("{v:.4}"))
+    match v {
+        None => "diverged".to_owned(),
+        Some(v) if v.abs() >= 1e4 => format!("{v:.3e}"),
+        Some(v) => format!("{v:.4}"),
+    }
 }
 
 /// The observers side by side (Markdown), and per figure a sentence naming the better one.
@@ -387,7 +400,7 @@ pub fn observers_table(report: &Report<'_>) -> String {
     );
     let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
     for o in &report.observers {
-        for (name, f) in &o.targets {
+        for (name, f) in in_spec_order(report, o) {
             let chip = match &o.on_target {
                 Some(c) => {
                     let start_up = c.start_up_instructions_max.map_or(String::new(), |m| format!("; {m}"));
@@ -438,7 +451,7 @@ pub fn observers_table(report: &Report<'_>) -> String {
     let _ = writeln!(s);
     for (label, pick) in figures {
         let mut verdicts = Vec::new();
-        for name in report.observers[0].targets.keys() {
+        for name in report.targets.iter().map(|t| t.name) {
             let best = report
                 .observers
                 .iter()
@@ -475,7 +488,7 @@ fn drift_table(report: &Report<'_>) -> String {
         _ => "—".to_owned(),
     };
     for o in &report.observers {
-        for (name, f) in &o.targets {
+        for (name, f) in in_spec_order(report, o) {
             let _ = write!(
                 s,
                 "| {} | {name} | {} | {} | {} |",
@@ -513,7 +526,7 @@ fn mismatch_table(report: &Report<'_>, m: &MismatchReport) -> String {
         "---|".repeat(m.corners.len()),
     );
     for o in &report.observers {
-        for (name, f) in &o.targets {
+        for (name, f) in in_spec_order(report, o) {
             let corners: Vec<String> = f.rmse_corners.iter().map(|&v| show(v)).collect();
             let _ = writeln!(
                 s,
