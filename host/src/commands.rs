@@ -21,7 +21,7 @@ pub enum CommandError {
     #[error(transparent)]
     Recording(#[from] RecordingError),
     /// The observer kind asked for does not exist for this design.
-    #[error("{0}: ask for --kind map, or for the kind the report offers")]
+    #[error(transparent)]
     Kind(#[from] crate::observers::recorded::RecordedError),
     /// A value the design's `[scenario]` would give is missing.
     #[error("design `{design}` has no `[scenario]`: give --{option}")]
@@ -148,6 +148,17 @@ pub fn estimate(
         return Err(CommandError::NotAFile { path: input.to_owned() });
     }
     let mut rows = recording::RowReader::open(design, input)?;
+    // A started observer needs every state as a target: say so before fitting anything.
+    if let (ObserverKind::Corrected | ObserverKind::Ekf, Err(why)) =
+        (kind, crate::observers::corrected::state_targets(design))
+    {
+        return Err(crate::observers::recorded::RecordedError::Unavailable {
+            design: design.name.clone(),
+            kind: if kind == ObserverKind::Ekf { "ekf" } else { "corrected" },
+            why,
+        }
+        .into());
+    }
     let result = fit::run(design, progress)?;
     let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
     let io = |source| CommandError::Io {

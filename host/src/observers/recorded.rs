@@ -16,7 +16,9 @@ use super::{corrected, ekf, Comparison};
 #[derive(Debug, thiserror::Error)]
 pub enum RecordedError {
     /// The design has no observer of that kind (see the report's observers).
-    #[error("the design `{design}` has no `{kind}` observer: {why}")]
+    #[error(
+        "the design `{design}` has no `{kind}` observer: {why}; ask for --kind map, or for a kind its report lists"
+    )]
     Unavailable {
         /// The design.
         design: String,
