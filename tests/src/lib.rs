@@ -85,3 +85,42 @@ pub fn build(design: &Design) -> Arc<DesignResult> {
 pub fn build_fresh(design: &Design) -> DesignResult {
     fit::run(design, &indicatif::ProgressBar::hidden()).expect("the design builds")
 }
+
+/// The host's constants of a generated design module `$d`'s map-started observers, read back from
+/// what it emitted: the model-corrected map's (`CORRECTED_*`, its follower's `START_UP`) and the EKF's
+/// (`EKF_Q`, the spec's noise; the map gives `x̂` and `STARTED_P0` the covariance, so `x0` and `p0`
+/// are unused). What the host mirrors run to be compared with the generated code.
+#[macro_export]
+macro_rules! emitted_constants {
+    ($d:ident, $design:expr) => {{
+        let design: &host::spec::Design = $design;
+        let h = design.tau / design.chip_substeps as f64;
+        (
+            host::plant::correction::CorrectionConstants {
+                g: $d::CORRECTED_G.to_vec(),
+                k: $d::CORRECTED_K.to_vec(),
+                k_start: $d::CORRECTED_K_START.to_vec(),
+                schedule: $d::CORRECTED_SCHEDULE,
+                start_up: <$d::Corrector as firmware::Follower<
+                    f32,
+                    { $d::STATES },
+                    { $d::OUTPUTS },
+                    { $d::INPUTS },
+                    { $d::TARGETS },
+                >>::START_UP,
+                lower: $d::CORRECTED_LOWER.to_vec(),
+                upper: $d::CORRECTED_UPPER.to_vec(),
+                substeps: design.chip_substeps,
+                h,
+            },
+            host::plant::kalman::EkfConstants {
+                x0: vec![0.0; $d::STATES],
+                p0: vec![0.0; $d::STATES],
+                q: $d::EKF_Q.to_vec(),
+                r: design.model.outputs.iter().map(|o| o.noise_variance).collect(),
+                substeps: design.chip_substeps,
+                h,
+            },
+        )
+    }};
+}

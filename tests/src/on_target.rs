@@ -1094,8 +1094,8 @@ pub fn ekf_differences(what: &str, chip: &[EkfSample], host: &[HostEkfSample<f32
 pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> Result<f64, String> {
     use host::data::{Rows, Run};
     use host::observers::{corrected, ekf};
-    use host::plant::correction::{correction_code, CorrectionConstants};
-    use host::plant::kalman::{filter_code, EkfConstants};
+    use host::plant::correction::correction_code;
+    use host::plant::kalman::filter_code;
     use host::plant::ModelCode;
 
     let path = crate::shipped_specs()
@@ -1145,17 +1145,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
             }
         };
         (@ Corrected, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
-            let constants = CorrectionConstants {
-                g: $d::CORRECTED_G.to_vec(),
-                k: $d::CORRECTED_K.to_vec(),
-                k_start: $d::CORRECTED_K_START.to_vec(),
-                schedule: $d::CORRECTED_SCHEDULE,
-                start_up: follower_start_up(&$d::CorrectedObserver::new()),
-                lower: $d::CORRECTED_LOWER.to_vec(),
-                upper: $d::CORRECTED_UPPER.to_vec(),
-                substeps: $design.chip_substeps,
-                h: $design.tau / $design.chip_substeps as f64,
-            };
+            let (constants, _) = crate::emitted_constants!($d, &$design);
             let setting = corrected::Setting {
                 code: &$code,
                 h: constants.h,
@@ -1168,17 +1158,8 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
             corrected::estimate_run::<f64>(&setting, &correction_code(&$code, &constants), &constants, &$maps, &$run)
         }};
         (@ StartedEkf, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
-            let filter = filter_code(
-                &$code,
-                &EkfConstants {
-                    x0: vec![0.0; $d::STATES],
-                    p0: vec![0.0; $d::STATES],
-                    q: $d::EKF_Q.to_vec(),
-                    r: $design.model.outputs.iter().map(|o| o.noise_variance).collect(),
-                    substeps: $design.chip_substeps,
-                    h: $design.tau / $design.chip_substeps as f64,
-                },
-            );
+            let (_, ekf_constants) = crate::emitted_constants!($d, &$design);
+            let filter = filter_code(&$code, &ekf_constants);
             ekf::estimate_started::<f64>(&filter, &$d::STARTED_P0, &$targets, $first, &$maps, &$run, &$code)
         }};
     }

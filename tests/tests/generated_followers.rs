@@ -8,8 +8,8 @@
 use firmware::{Follower, Started};
 use host::data::{Rows, Run};
 use host::observers::{corrected, ekf};
-use host::plant::correction::{correction_code, CorrectionConstants};
-use host::plant::kalman::{filter_code, EkfConstants};
+use host::plant::correction::correction_code;
+use host::plant::kalman::filter_code;
 use host::plant::ModelCode;
 use integration_tests::load_relative;
 
@@ -95,23 +95,7 @@ macro_rules! check_followers {
             let state_targets = corrected::state_targets(&design).unwrap();
             let first = design.map.horizon - 1;
 
-            let constants = CorrectionConstants {
-                g: d::CORRECTED_G.to_vec(),
-                k: d::CORRECTED_K.to_vec(),
-                k_start: d::CORRECTED_K_START.to_vec(),
-                schedule: d::CORRECTED_SCHEDULE,
-                start_up: <d::Corrector as Follower<
-                    f32,
-                    { d::STATES },
-                    { d::OUTPUTS },
-                    { d::INPUTS },
-                    { d::TARGETS },
-                >>::START_UP,
-                lower: d::CORRECTED_LOWER.to_vec(),
-                upper: d::CORRECTED_UPPER.to_vec(),
-                substeps: design.chip_substeps,
-                h: design.tau / design.chip_substeps as f64,
-            };
+            let (constants, ekf_constants) = integration_tests::emitted_constants!(d, &design);
             let setting = corrected::Setting {
                 code: &code,
                 h: constants.h,
@@ -138,17 +122,7 @@ macro_rules! check_followers {
                     > 50
             );
 
-            let filter = filter_code(
-                &code,
-                &EkfConstants {
-                    x0: vec![0.0; d::STATES],
-                    p0: vec![0.0; d::STATES],
-                    q: d::EKF_Q.to_vec(),
-                    r: design.model.outputs.iter().map(|o| o.noise_variance).collect(),
-                    substeps: design.chip_substeps,
-                    h: design.tau / design.chip_substeps as f64,
-                },
-            );
+            let filter = filter_code(&code, &ekf_constants);
             let host = ekf::estimate_started::<f32>(&filter, &d::STARTED_P0, &state_targets, first, &maps, &run, &code);
             assert_eq!(chip::<d::StartedEkf>(), bits(host));
         }
