@@ -159,6 +159,8 @@ pub fn estimate(
         }
         .into());
     }
+    let (design, _) = crate::search::settle(design.clone(), progress)?;
+    let design = &design;
     let result = fit::run(design, progress)?;
     let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
     let io = |source| CommandError::Io {

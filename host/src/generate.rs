@@ -152,10 +152,17 @@ pub struct Emitted {
     pub comparison: crate::observers::Comparison,
     /// The text of `generated/src/<design>.rs`.
     pub source: String,
+    /// The design search, when the spec asks for one ([`crate::search`]); `design.map` holds its choice.
+    pub search: Option<crate::search::Outcome>,
 }
 
-/// Fits and emits `design`, loaded from `spec` (nothing is written).
+/// Searches (when the spec asks), fits and emits `design`, loaded from `spec` (nothing is written).
 pub fn emit_design(design: Design, spec: &Path, progress: &ProgressBar) -> Result<Emitted, GenerateError> {
+    let (design, search) = crate::search::settle(design, progress)?;
+    if search.is_some() {
+        progress.set_length(fit::steps(&design));
+        progress.set_position(0);
+    }
     let result = fit::run(&design, progress)?;
     // Relative to the checkout when there is one, so that the text does not depend on where it lives.
     let spec_path = match workspace_root() {
@@ -168,6 +175,7 @@ pub fn emit_design(design: Design, spec: &Path, progress: &ProgressBar) -> Resul
         result,
         comparison,
         source,
+        search,
     })
 }
 

@@ -45,4 +45,5 @@ pub mod output;
 pub mod plant;
 pub mod recording;
 pub mod report;
+pub mod search;
 pub mod spec;

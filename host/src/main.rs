@@ -34,6 +34,15 @@ enum Command {
         #[arg(long)]
         strict: bool,
     },
+    /// Runs a design's search over N, n_m and β (the spec's candidates, or with --auto the default
+    /// ones) and prints the trade-off front; writes nothing.
+    Search {
+        #[command(flatten)]
+        design: DesignChoice,
+        /// Search every `[map]` field over its default candidates, whatever the spec gives.
+        #[arg(long)]
+        auto: bool,
+    },
     /// Simulates one run of a design (its `[scenario]` unless overridden) and writes it as CSV.
     Simulate {
         #[command(flatten)]
@@ -106,6 +115,7 @@ fn main() -> ExitCode {
             generated,
             strict,
         } => gen(specs, reports, generated, strict),
+        Command::Search { design, auto } => search(&design, auto),
         Command::Simulate {
             design,
             x0,
@@ -197,10 +207,31 @@ fn print_summary(prepared: &generate::Prepared) {
         design.map.beta,
         design.map.normalisation
     );
+    if let Some(search) = &prepared.emitted.search {
+        print!("{}", host::search::summary(design, search));
+    }
     println!("{}", prepared.table);
     for warning in &prepared.warnings {
         eprintln!("warning: {}: {warning}", design.name);
     }
+}
+
+fn search(choice: &DesignChoice, auto: bool) -> anyhow::Result<()> {
+    let mut design = choice.load()?;
+    if auto {
+        design.search = Some(spec::Search::every_default());
+    }
+    let Some(search) = design.search.clone() else {
+        anyhow::bail!(
+            "{}: `map`: the spec fixes N, n_m and β, so there is nothing to search\n  fix: set `horizon`, `nm` or `beta` to \"auto\" or a list of candidates, or pass --auto",
+            design.file.display()
+        );
+    };
+    let bar = progress_bar(&design);
+    let outcome = host::search::run(&design, &search, &bar)?;
+    bar.finish_and_clear();
+    print!("{}", host::search::summary(&design, &outcome));
+    Ok(())
 }
 
 fn simulate(

@@ -10,6 +10,15 @@ use serde::Serialize;
 use crate::fit::inverse_table::{InverseTable, TableError, RELATIVE_TOLERANCE};
 use crate::spec::Normalisation;
 
+/// How a fit tabulates `Γ⁻¹`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Tabulation {
+    /// [`InverseTable::certify`]: proven, what is emitted.
+    Certified,
+    /// [`InverseTable::sketch`]: unproven, ten times cheaper; for ranking search candidates only.
+    Sketched,
+}
+
 /// `r = r_min + (r_max - r_min) Γ⁻¹(Lᵀ Z)` for one target.
 #[derive(Clone, Debug, Serialize)]
 pub struct FittedMap {
@@ -40,7 +49,7 @@ pub struct FittedMap {
 
 impl FittedMap {
     /// Assembles a map from the fitted coefficients (the derived fields are computed here) and
-    /// certifies its table; fails when `Γ` cannot be proven increasing.
+    /// tabulates `Γ⁻¹` as `tabulation` says; a certified table fails when `Γ` cannot be proven increasing.
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         target: String,
@@ -51,16 +60,21 @@ impl FittedMap {
         mu: Vec<f64>,
         odds_ratios: Arc<[f64]>,
         (r_min, r_max): (f64, f64),
+        tabulation: Tabulation,
     ) -> Result<Self, TableError> {
         let exact = Gamma {
             offset: mu_constant - intercept,
             mu: &mu,
             odds_ratios: &odds_ratios,
         };
-        let table = match InverseTable::certify(&exact, &gains, (r_min, r_max), RELATIVE_TOLERANCE) {
-            Ok(table) => Some(table),
-            Err(TableError::TooManySegments { .. }) => None,
-            Err(e) => return Err(e),
+        let range = (r_min, r_max);
+        let table = match tabulation {
+            Tabulation::Sketched => Some(InverseTable::sketch(&exact, &gains, range, RELATIVE_TOLERANCE)),
+            Tabulation::Certified => match InverseTable::certify(&exact, &gains, range, RELATIVE_TOLERANCE) {
+                Ok(table) => Some(table),
+                Err(TableError::TooManySegments { .. }) => None,
+                Err(e) => return Err(e),
+            },
         };
         Ok(FittedMap {
             target,

@@ -144,6 +144,61 @@ pub struct MapSettings {
     pub monotonicity_grid: usize,
 }
 
+/// The candidates of the design search (`"auto"` or a list in `[map]` `horizon`, `nm` or `beta`):
+/// every combination is fitted and scored on the tuning runs ([`crate::search`]).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Search {
+    /// Candidates for `N`.
+    pub horizons: Vec<usize>,
+    /// Candidates for `n_m`.
+    pub nms: Vec<usize>,
+    /// Candidates for `β`.
+    pub betas: Vec<f64>,
+}
+
+impl Search {
+    /// `N` for `horizon = "auto"`: every horizon from 5 to 40 samples.
+    pub const AUTO_HORIZONS: std::ops::RangeInclusive<usize> = 5..=40;
+    /// `n_m` for `nm = "auto"`.
+    pub const AUTO_NMS: [usize; 3] = [3, 5, 8];
+    /// `β` for `beta = "auto"`.
+    pub const AUTO_BETAS: [f64; 4] = [0.25, 0.5, 1.0, 2.0];
+
+    /// Every field over its `"auto"` candidates.
+    pub fn every_default() -> Self {
+        Search {
+            horizons: Self::AUTO_HORIZONS.collect(),
+            nms: Self::AUTO_NMS.to_vec(),
+            betas: Self::AUTO_BETAS.to_vec(),
+        }
+    }
+
+    /// Every candidate `(N, n_m, β)`, `N` varying slowest.
+    pub fn candidates(&self) -> Vec<(usize, usize, f64)> {
+        let mut all = Vec::new();
+        for &n in &self.horizons {
+            for &nm in &self.nms {
+                for &beta in &self.betas {
+                    all.push((n, nm, beta));
+                }
+            }
+        }
+        all
+    }
+}
+
+/// `[budget]`: what the chosen observer may cost on the chip, as [`crate::search::cost`] predicts it.
+/// The search keeps only candidates within it; `auto` only kinds within it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct Budget {
+    /// Instructions per sample in steady state.
+    pub instructions: Option<u64>,
+    /// Delay to the first estimate, `(N − 1) τ`, in the spec's time unit.
+    pub first_estimate: Option<f64>,
+    /// Flash the observer adds, in bytes.
+    pub flash: Option<u64>,
+}
+
 /// A recorded-style estimation run: one trajectory from a given state with fresh noise (the paper's
 /// Fig. 2, right, for Example 1).
 #[derive(Clone, Debug)]
@@ -209,8 +264,13 @@ pub struct Design {
     pub tuning: Validation,
     /// RK4 steps per sample of the model on the chip (`sampling.chip_substeps`, default 1).
     pub chip_substeps: usize,
-    /// The maps.
+    /// The maps. With a [`Search`], until [`crate::search::settle`] puts the chosen values here: the
+    /// largest candidate `N` (every run length was checked against it) and the first `n_m` and `β`.
     pub map: MapSettings,
+    /// The design search, when a `[map]` field is `"auto"` or a list.
+    pub search: Option<Search>,
+    /// `[budget]` (no limit when absent).
+    pub budget: Budget,
     /// The quantities to estimate.
     pub targets: Vec<Target>,
     /// The estimation scenario, if the spec has one.

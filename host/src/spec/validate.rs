@@ -107,7 +107,8 @@ impl Validator {
             ));
         }
         self.at_most("sampling.substeps", raw.sampling.substeps, limits::MAX_SUBSTEPS)?;
-        let map = self.map(&raw.map)?;
+        let (map, search) = self.map(&raw.map)?;
+        let budget = self.budget(raw.budget.as_ref())?;
         let learning = self.learning(&raw.learning, &model, map.horizon)?;
         let validation = self.runs("validation", &raw.validation, map.horizon)?;
         let tuning = self.tuning(
@@ -149,6 +150,8 @@ impl Validator {
             tuning,
             chip_substeps: raw.sampling.chip_substeps,
             map,
+            search,
+            budget,
             targets,
             scenario,
             family,
@@ -240,36 +243,50 @@ impl Validator {
         })
     }
 
-    fn map(&self, raw: &RawMap) -> Result<MapSettings, SpecError> {
-        if raw.horizon == 0 {
-            return Err(self.err(
-                "map.horizon",
-                "the horizon N must be at least 1",
-                "set `map.horizon` to the number of past measurements to use (the paper uses 10 and 3)",
-            ));
+    /// `[map]`: one value of each field, or the search's candidates.
+    fn map(&self, raw: &RawMap) -> Result<(MapSettings, Option<Search>), SpecError> {
+        let horizons = self.choices("map.horizon", &raw.horizon, || Search::AUTO_HORIZONS.collect())?;
+        let nms = self.choices("map.nm", &raw.nm, || Search::AUTO_NMS.to_vec())?;
+        let betas = self.choices("map.beta", &raw.beta, || Search::AUTO_BETAS.to_vec())?;
+        for &horizon in &horizons {
+            if horizon == 0 {
+                return Err(self.err(
+                    "map.horizon",
+                    "the horizon N must be at least 1",
+                    "set `map.horizon` to the number of past measurements to use (the paper uses 10 and 3), or \"auto\"",
+                ));
+            }
+            self.at_most("map.horizon", horizon, limits::MAX_HORIZON)?;
         }
-        self.at_most("map.horizon", raw.horizon, limits::MAX_HORIZON)?;
-        self.at_most("map.nm", raw.nm, limits::MAX_NM)?;
+        for &nm in &nms {
+            self.at_most("map.nm", nm, limits::MAX_NM)?;
+            if nm == 0 {
+                return Err(self.err("map.nm", "n_m must be at least 1", "set `map.nm` (the paper uses 5), or \"auto\""));
+            }
+        }
+        for &beta in &betas {
+            self.positive("map.beta", beta, "β")?;
+        }
         self.at_most(
             "map.monotonicity_grid",
             raw.monotonicity_grid,
             limits::MAX_MONOTONICITY_GRID,
         )?;
-        if raw.nm == 0 {
-            return Err(self.err("map.nm", "n_m must be at least 1", "set `map.nm` (the paper uses 5)"));
-        }
-        let beta = self.positive("map.beta", raw.beta, "β")?;
-        if beta * (raw.nm as f64 - 1.0) > 30.0 {
+        let largest = |values: &[f64]| values.iter().copied().fold(f64::MIN, f64::max);
+        let (nm_max, beta_max) = (*nms.iter().max().expect("checked non-empty"), largest(&betas));
+        if beta_max * (nm_max as f64 - 1.0) > 30.0 {
             return Err(self.err(
                 "map.beta",
                 format!(
-                    "β·(n_m - 1) = {} makes basis odds ratios reach e^{:.0}: the basis degenerates to steps",
-                    beta * (raw.nm as f64 - 1.0),
-                    beta * (raw.nm as f64 - 1.0)
+                    "β·(n_m - 1) = {} (β = {beta_max}, n_m = {nm_max}) makes basis odds ratios reach e^{:.0}: the basis degenerates to steps",
+                    beta_max * (nm_max as f64 - 1.0),
+                    beta_max * (nm_max as f64 - 1.0)
                 ),
-                "keep β·(n_m - 1) ≤ 30 (β of 0.5 to 3 is usual)",
+                "keep β·(n_m - 1) ≤ 30 for every candidate (β of 0.5 to 3 is usual)",
             ));
         }
+        let (horizon, nm, beta) = (*horizons.iter().max().expect("checked non-empty"), nms[0], betas[0]);
+        let search = (horizons.len() > 1 || nms.len() > 1 || betas.len() > 1).then_some(Search { horizons, nms, betas });
         let epsilon = self.positive("map.epsilon", raw.epsilon, "ε")?;
         if !(1e-12..=1e12).contains(&epsilon) {
             return Err(self.err(
@@ -288,13 +305,61 @@ impl Validator {
                 "use 201 or more points",
             ));
         }
-        Ok(MapSettings {
-            horizon: raw.horizon,
-            nm: raw.nm,
+        let settings = MapSettings {
+            horizon,
+            nm,
             beta,
             epsilon,
             normalisation: raw.normalisation,
             monotonicity_grid: raw.monotonicity_grid,
+        };
+        Ok((settings, search))
+    }
+
+    /// The candidates of one `[map]` field: its value, its list (sorted, without repeats) or `auto`'s.
+    fn choices<T: Copy + PartialOrd>(
+        &self,
+        field: &str,
+        raw: &RawChoice<T>,
+        auto: impl FnOnce() -> Vec<T>,
+    ) -> Result<Vec<T>, SpecError> {
+        let mut values = match raw {
+            RawChoice::One(v) => vec![*v],
+            RawChoice::List(values) => values.clone(),
+            RawChoice::Auto => auto(),
+        };
+        if values.is_empty() {
+            return Err(self.err(
+                field,
+                "an empty list of candidates",
+                format!("give `{field}` one value, a list of candidates, or \"auto\""),
+            ));
+        }
+        values.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+        values.dedup_by(|a, b| a == b);
+        Ok(values)
+    }
+
+    /// `[budget]`: each limit, when given, positive.
+    fn budget(&self, raw: Option<&RawBudget>) -> Result<Budget, SpecError> {
+        let Some(raw) = raw else {
+            return Ok(Budget::default());
+        };
+        let whole = |field: &str, value: Option<u64>, what: &str| match value {
+            Some(0) => Err(self.err(
+                field,
+                format!("a budget of 0 {what} leaves no observer"),
+                format!("set `{field}` to the most the chip can spend, or leave it out"),
+            )),
+            _ => Ok(value),
+        };
+        Ok(Budget {
+            instructions: whole("budget.instructions", raw.instructions, "instructions per sample")?,
+            first_estimate: raw
+                .first_estimate
+                .map(|t| self.positive("budget.first_estimate", t, "the delay to the first estimate"))
+                .transpose()?,
+            flash: whole("budget.flash", raw.flash, "bytes")?,
         })
     }
 

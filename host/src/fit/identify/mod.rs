@@ -46,7 +46,7 @@ use std::sync::Arc;
 use serde::Serialize;
 
 use crate::data::DataSet;
-use crate::fit::maps::{FittedMap, LinearMap};
+use crate::fit::maps::{FittedMap, LinearMap, Tabulation};
 use crate::fit::monotonicity::{check_grid, check_strictly_increasing, monotonicity_grid, NotMonotone};
 use crate::fit::qp::{self, Problem, QpError};
 use crate::spec::{MapSettings, Normalisation};
@@ -164,13 +164,26 @@ pub fn basis_of(settings: &MapSettings) -> Arc<[f64]> {
     basis::paper_odds_ratios(settings.nm, settings.beta).collect()
 }
 
-/// Fits target `target` of `data` with `settings` on the basis `odds_ratios` ([`basis_of`]).
+/// Fits target `target` of `data` with `settings` on the basis `odds_ratios` ([`basis_of`]), with a
+/// certified table of `Γ⁻¹`.
 pub fn fit(
     data: &DataSet,
     target: usize,
     target_name: &str,
     settings: &MapSettings,
     odds_ratios: &Arc<[f64]>,
+) -> Result<Fit, FitError> {
+    fit_tabulated(data, target, target_name, settings, odds_ratios, Tabulation::Certified)
+}
+
+/// [`fit`], with `Γ⁻¹` tabulated as `tabulation` says (sketched for the design search).
+pub fn fit_tabulated(
+    data: &DataSet,
+    target: usize,
+    target_name: &str,
+    settings: &MapSettings,
+    odds_ratios: &Arc<[f64]>,
+    tabulation: Tabulation,
 ) -> Result<Fit, FitError> {
     let range = TargetRange::gather(data, target)?;
     let r_factor = accumulate(data, target, &range, odds_ratios);
@@ -217,6 +230,7 @@ pub fn fit(
         mu_basis,
         odds_ratios.clone(),
         (range.min, range.max),
+        tabulation,
     )?;
     let gamma = map.gamma();
     let (g0, g1) = (gamma.value(0.0), gamma.value(1.0));

@@ -137,6 +137,51 @@ impl InverseTable {
         }
     }
 
+    /// An unproven table, to rank candidates in the design search ([`crate::search`]) where the proof
+    /// would cost 90 % of the time: uniform knots, as many as the pointwise curvature estimate asks
+    /// (the count [`InverseTable::uniform`] starts from, at most [`MAX_SEGMENTS`]), no proof and no dense
+    /// confirmation (`proven_bound` and `sampled_error` are NaN). Never emitted: the chosen candidate is
+    /// fitted again with [`InverseTable::certify`].
+    pub fn sketch(gamma: &Gamma<'_, f64>, gains: &[f64], range: (f64, f64), relative_tolerance: f64) -> Self {
+        let (v0, v1) = (gamma.value(0.0), gamma.value(1.0));
+        let curvature = (0..=8192)
+            .map(|i| pointwise_curvature(gamma, i as f64 / 8192.0))
+            .fold(0.0, f64::max);
+        let estimate = ((v1 - v0) * (curvature / (8.0 * relative_tolerance)).sqrt()).ceil();
+        let segments = if estimate >= 1.0 { estimate.min(MAX_SEGMENTS as f64) as usize } else { 1 };
+        let h = (v1 - v0) / segments as f64;
+        let mut nodes: Vec<f64> = (0..=segments)
+            .map(|k| match k {
+                0 => 0.0,
+                k if k == segments => 1.0,
+                k => gamma.inverse(v0 + k as f64 * h).eta,
+            })
+            .collect();
+        for k in 1..nodes.len() {
+            nodes[k] = nodes[k].max(nodes[k - 1]);
+        }
+        let (r_min, r_max) = range;
+        let span = r_max - r_min;
+        let scale = segments as f64 / (v1 - v0);
+        InverseTable {
+            gains: gains.iter().map(|g| g * scale).collect(),
+            offset: -v0 * scale,
+            starts: None,
+            segments: nodes
+                .windows(2)
+                .enumerate()
+                .map(|(k, pair)| {
+                    let slope = span * (pair[1] - pair[0]);
+                    [r_min + span * pair[0] - slope * k as f64, slope]
+                })
+                .collect(),
+            r_min,
+            r_max,
+            proven_bound: f64::NAN,
+            sampled_error: f64::NAN,
+        }
+    }
+
     /// The table with (about) the fewest uniform knots that meets the tolerance, if at most
     /// [`MAX_UNIFORM_SEGMENTS`] segments do.
     pub fn uniform(

@@ -1,0 +1,295 @@
+//! The design search: the paper's "static game" over `N`, `n_m` and `β` with the identification in
+//! the inner loop (Sect. VI, future work), made cheap because each fit is a QP.
+//!
+//! Every candidate `(N, n_m, β)` of the spec's [`Search`] is fitted on the learning runs and scored on
+//! the tuning runs, never on validation:
+//!
+//! ```text
+//! score = (1/n_r) Σ_targets RMSE_tuning / spread_tuning
+//! ```
+//!
+//! over the same tuning windows for every candidate (those ending at `k ≥ N_max − 1`), so that a
+//! short horizon is not judged on the samples a long one never sees. Its cost on the chip is
+//! predicted by [`cost`]; a candidate beyond the spec's [`Budget`] is kept in the table but not
+//! chosen. The [`pareto`] front is over (score, instructions, delay to the first estimate); the chosen
+//! candidate is the best score within budget, a cheaper one preferred within
+//! [`crate::observers::CHEAPER_WITHIN`] (as `auto` prefers a cheaper observer kind).
+//!
+//! The learning and tuning runs are simulated once and shared by every candidate (a run is cut into
+//! windows of any `N`); candidates are fitted in parallel (rayon).
+
+pub mod cost;
+pub mod pareto;
+
+use std::time::Instant;
+
+use indicatif::ProgressBar;
+use rayon::prelude::*;
+use serde::Serialize;
+
+use crate::data::{self, DataSet};
+use crate::fit::identify;
+use crate::fit::maps::Tabulation;
+use crate::spec::{Budget, Design, MapSettings, Search, SpecError};
+pub use cost::Cost;
+
+/// One candidate of the search, fitted and scored.
+#[derive(Clone, Debug, Serialize)]
+pub struct Candidate {
+    /// `N`.
+    pub horizon: usize,
+    /// `n_m`.
+    pub nm: usize,
+    /// `β`.
+    pub beta: f64,
+    /// The score on the tuning runs (mean RMSE / spread); `None` when a fit failed.
+    pub score: Option<f64>,
+    /// RMSE per target on the tuning runs.
+    pub rmse: Vec<f64>,
+    /// Why a fit failed.
+    pub failure: Option<String>,
+    /// The predicted cost of its map on the chip (of the first target's fit shape when a fit failed).
+    pub cost: Option<Cost>,
+    /// Whether its cost is within the budget.
+    pub within_budget: bool,
+    /// Whether it is on the Pareto front (score, instructions, delay to the first estimate).
+    pub on_front: bool,
+}
+
+/// What the search did and chose.
+#[derive(Clone, Debug, Serialize)]
+pub struct Outcome {
+    /// Every candidate, in the spec's order (`N` slowest).
+    pub candidates: Vec<Candidate>,
+    /// Index of the chosen one.
+    pub chosen: usize,
+    /// The budget it was chosen within.
+    pub budget: Budget,
+    /// Tuning windows each candidate was scored on (the same for all).
+    pub windows: usize,
+    /// Wall-clock seconds the search took.
+    pub seconds: f64,
+}
+
+impl Outcome {
+    /// The chosen candidate.
+    pub fn chosen(&self) -> &Candidate {
+        &self.candidates[self.chosen]
+    }
+
+    /// The front, by increasing instructions.
+    pub fn front(&self) -> Vec<&Candidate> {
+        let mut front: Vec<&Candidate> = self.candidates.iter().filter(|c| c.on_front).collect();
+        front.sort_by(|a, b| instructions(a).total_cmp(&instructions(b)));
+        front
+    }
+}
+
+fn instructions(c: &Candidate) -> f64 {
+    c.cost.map_or(f64::INFINITY, |c| c.instructions)
+}
+
+/// Runs the design's search, if it has one, and returns the design with the chosen `N`, `n_m` and `β`
+/// in its [`MapSettings`] (unchanged without a search).
+pub fn settle(mut design: Design, progress: &ProgressBar) -> Result<(Design, Option<Outcome>), SpecError> {
+    let Some(search) = design.search.clone() else {
+        return Ok((design, None));
+    };
+    let outcome = run(&design, &search, progress)?;
+    let chosen = outcome.chosen();
+    design.map = MapSettings {
+        horizon: chosen.horizon,
+        nm: chosen.nm,
+        beta: chosen.beta,
+        ..design.map
+    };
+    Ok((design, Some(outcome)))
+}
+
+/// Fits and scores every candidate of `search` (see the module's documentation).
+pub fn run(design: &Design, search: &Search, progress: &ProgressBar) -> Result<Outcome, SpecError> {
+    let start = Instant::now();
+    progress.set_message(format!("{}: simulating the runs of the search", design.name));
+    let learning = data::learning_set(design)?;
+    let tuning = data::tuning_set(design)?;
+    let n_max = *search.horizons.iter().max().expect("a search has candidates");
+    let spreads = spreads(&tuning, n_max, design.targets.len());
+    let windows = tuning.runs.iter().map(|r| r.targets.len().saturating_sub(n_max - 1)).sum();
+    let all = search.candidates();
+    progress.set_length(all.len() as u64);
+    progress.set_position(0);
+    progress.set_message(format!("{}: searching {} candidates", design.name, all.len()));
+    let mut candidates: Vec<Candidate> = all
+        .par_iter()
+        .map(|&(horizon, nm, beta)| {
+            let settings = MapSettings {
+                horizon,
+                nm,
+                beta,
+                ..design.map
+            };
+            let candidate = candidate(design, &settings, &learning, &tuning, n_max, &spreads);
+            progress.inc(1);
+            candidate
+        })
+        .collect();
+    for c in &mut candidates {
+        c.within_budget = c.score.is_some() && c.cost.is_some_and(|cost| within(&design.budget, &cost));
+    }
+    pareto::mark_front(&mut candidates);
+    let chosen = pareto::choose(&candidates).ok_or_else(|| {
+        let fitted = candidates.iter().filter(|c| c.score.is_some()).count();
+        design.error(
+            "budget",
+            format!(
+                "none of the {} candidates is within the budget ({fitted} fitted; the cheapest needs {})",
+                candidates.len(),
+                cheapest(&candidates)
+            ),
+            "raise `budget.instructions`, `budget.flash` or `budget.first_estimate`, or offer shorter horizons",
+        )
+    })?;
+    Ok(Outcome {
+        candidates,
+        chosen,
+        budget: design.budget,
+        windows,
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}
+
+/// Whether `cost` is within `budget`.
+pub fn within(budget: &Budget, cost: &Cost) -> bool {
+    budget.instructions.is_none_or(|b| cost.instructions <= b as f64)
+        && budget.flash.is_none_or(|b| cost.flash <= b as f64)
+        && budget.first_estimate.is_none_or(|b| cost.first_estimate <= b * (1.0 + 1e-9))
+}
+
+/// The cheapest fitted candidate's cost, for the message when none is within budget.
+fn cheapest(candidates: &[Candidate]) -> String {
+    candidates
+        .iter()
+        .filter(|c| c.score.is_some())
+        .filter_map(|c| c.cost)
+        .min_by(|a, b| a.instructions.total_cmp(&b.instructions))
+        .map_or("nothing: no candidate could be fitted".to_owned(), |c| {
+            format!(
+                "{:.0} instructions, {:.0} bytes of flash, a first estimate after {}",
+                c.instructions, c.flash, c.first_estimate
+            )
+        })
+}
+
+/// Each target's standard deviation over the tuning windows ending at `k ≥ n_max − 1`.
+fn spreads(tuning: &DataSet, n_max: usize, targets: usize) -> Vec<f64> {
+    (0..targets)
+        .map(|t| {
+            let values: Vec<f64> = tuning
+                .runs
+                .iter()
+                .flat_map(|run| run.targets.iter().skip(n_max - 1).map(move |row| row[t]))
+                .collect();
+            let mean = values.iter().sum::<f64>() / values.len() as f64;
+            (values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / values.len() as f64).sqrt()
+        })
+        .collect()
+}
+
+/// Fits every target with `settings` and scores the maps on the tuning windows ending at
+/// `k ≥ n_max − 1`.
+fn candidate(
+    design: &Design,
+    settings: &MapSettings,
+    learning: &DataSet,
+    tuning: &DataSet,
+    n_max: usize,
+    spreads: &[f64],
+) -> Candidate {
+    let mut candidate = Candidate {
+        horizon: settings.horizon,
+        nm: settings.nm,
+        beta: settings.beta,
+        score: None,
+        rmse: Vec::new(),
+        failure: None,
+        cost: None,
+        within_budget: false,
+        on_front: false,
+    };
+    let learning = DataSet {
+        runs: learning.runs.clone(),
+        horizon: settings.horizon,
+    };
+    let odds_ratios = identify::basis_of(settings);
+    let mut maps = Vec::new();
+    for (index, target) in design.targets.iter().enumerate() {
+        match identify::fit_tabulated(&learning, index, &target.name, settings, &odds_ratios, Tabulation::Sketched) {
+            Ok(fit) if fit.map.table.is_some() => maps.push(fit.map),
+            Ok(_) => {
+                candidate.failure = Some(format!("{}: Γ too flat for a certified table", target.name));
+                return candidate;
+            }
+            Err(e) => {
+                candidate.failure = Some(format!("{}: {e}", target.name));
+                return candidate;
+            }
+        }
+    }
+    let tuning = DataSet {
+        runs: tuning.runs.clone(),
+        horizon: settings.horizon,
+    };
+    let mut sums = vec![0.0; maps.len()];
+    let mut count = 0usize;
+    let mut z = Vec::new();
+    for window in tuning.windows().filter(|w| w.end + 1 >= n_max) {
+        tuning.regressor(window, &mut z);
+        for (t, map) in maps.iter().enumerate() {
+            let error = map.estimate(&z).value - tuning.target(window, t);
+            sums[t] += error * error;
+        }
+        count += 1;
+    }
+    candidate.rmse = sums.iter().map(|s| (s / count as f64).sqrt()).collect();
+    let score = candidate.rmse.iter().zip(spreads).map(|(r, s)| r / s).sum::<f64>() / spreads.len() as f64;
+    candidate.score = score.is_finite().then_some(score);
+    if candidate.score.is_none() {
+        candidate.failure = Some("a non-finite error on the tuning runs".to_owned());
+    }
+    let refs: Vec<&_> = maps.iter().collect();
+    candidate.cost = Some(cost::of_maps(&refs, settings.horizon, design.tau));
+    candidate
+}
+
+/// The search in a few lines, as `gen` and `search` print it: what was searched, the front, the choice.
+pub fn summary(design: &Design, outcome: &Outcome) -> String {
+    use std::fmt::Write;
+    let fitted = outcome.candidates.iter().filter(|c| c.score.is_some()).count();
+    let mut text = format!(
+        "  search: {} candidates (N, n_m, β), {fitted} fitted, scored on {} tuning windows in {:.1} s; front (score = mean RMSE / spread on the tuning runs):\n",
+        outcome.candidates.len(),
+        outcome.windows,
+        outcome.seconds
+    );
+    let unit = &design.time_unit;
+    for c in outcome.front() {
+        let cost = c.cost.expect("a front candidate has a cost");
+        let mark = match (std::ptr::eq(c, outcome.chosen()), c.within_budget) {
+            (true, _) => "  ← chosen",
+            (false, false) => "  (over budget)",
+            _ => "",
+        };
+        let _ = writeln!(
+            text,
+            "    N = {:>3}, n_m = {}, β = {:<4}  score {:.4}  ~{:.0} instructions  first estimate after {:.3} {unit}  ~{:.0} B flash{mark}",
+            c.horizon,
+            c.nm,
+            c.beta,
+            c.score.expect("a front candidate is scored"),
+            cost.instructions,
+            cost.first_estimate,
+            cost.flash,
+        );
+    }
+    text
+}
