@@ -33,6 +33,8 @@ pub mod two_tanks;
 #[rustfmt::skip]
 pub mod vanderpol;
 #[rustfmt::skip]
+pub mod vanderpol_searched;
+#[rustfmt::skip]
 pub mod vanderpol_uncertain;
 
 /// Family `ecoli`: one design per value of output `X_meas` at the start of a batch
@@ -98,6 +100,7 @@ macro_rules! for_each_design {
         $callback!(ecoli_x0_2);
         $callback!(two_tanks);
         $callback!(vanderpol);
+        $callback!(vanderpol_searched);
         $callback!(vanderpol_uncertain);
     };
 }

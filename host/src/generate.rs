@@ -401,6 +401,7 @@ fn prepare(design: Design, spec: &Path, reports: &Path, bar: &ProgressBar) -> Re
     let emitted = emit_design(design, spec, bar)?;
     let folder = reports.join(&emitted.design.name);
     let mut report = reporting::report(&emitted.design, &emitted.result, &emitted.comparison);
+    report.search = emitted.search.as_ref();
     let measured = reporting::on_target::recorded(&folder, &emitted.source);
     for observer in &mut report.observers {
         observer.on_target = measured.get(observer.kind).cloned();
@@ -429,9 +430,12 @@ fn write(one: Prepared, to: &Destinations) -> Result<Outcome, GenerateError> {
         result,
         source,
         comparison,
-        ..
+        search,
     } = one.emitted;
-    let figures = plots::draw(&design, &result, &comparison, &folder)?;
+    let mut figures = plots::draw(&design, &result, &comparison, &folder)?;
+    if let Some(search) = &search {
+        figures.extend(plots::draw_search(&design, search, &folder)?);
+    }
     let observer = to.generated.join("src").join(format!("{}.rs", design.name));
     let changed = output::write_if_changed(&observer, &source).map_err(io(&observer))?;
     Ok(Outcome {

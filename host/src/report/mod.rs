@@ -62,6 +62,9 @@ pub struct Report<'a> {
     /// The plants of the `rmse_mismatch` figures, when parameters are uncertain.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mismatch: Option<MismatchReport>,
+    /// The design search, when the spec asks for one (every candidate, the front, the choice).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub search: Option<&'a crate::search::Outcome>,
 }
 
 /// One observer's figures.
@@ -370,6 +373,7 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             runs_per_corner: m.runs_per_corner,
             nominal: m.nominal.clone(),
         }),
+        search: None,
     }
 }
 
@@ -583,6 +587,50 @@ pub fn table(report: &Report<'_>) -> String {
     s
 }
 
+/// The design search's Pareto front as a Markdown table, with what was searched and how it was judged.
+pub fn search_table(outcome: &crate::search::Outcome, time_unit: &str) -> String {
+    let fitted = outcome.candidates.iter().filter(|c| c.score.is_some()).count();
+    let budget = &outcome.budget;
+    let limits: Vec<String> = [
+        budget.instructions.map(|b| format!("{b} instructions")),
+        budget.first_estimate.map(|b| format!("first estimate within {b} {time_unit}")),
+        budget.flash.map(|b| format!("{b} B of flash")),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
+    let mut s = format!(
+        "{} candidates (N, n_m, β), {fitted} fitted in {:.1} s, each scored on the same {} tuning windows (mean RMSE / spread of the map; \
+         never on validation); budget: {}. The front: no other candidate is better on score, predicted instructions and delay to the \
+         first estimate at once; the chosen one is the best score within budget, the fewest instructions preferred within 2 %. \
+         Costs are predicted (`search::cost`, checked against the emulated chip on the shipped designs). Figure: `search`.\n\n",
+        outcome.candidates.len(),
+        outcome.seconds,
+        outcome.windows,
+        if limits.is_empty() { "none".to_owned() } else { limits.join(", ") }
+    );
+    s.push_str(&format!(
+        "| N | n_m | β | tuning score | instructions | first estimate [{time_unit}] | flash [B] | within budget | |\n|---|---|---|---|---|---|---|---|---|\n"
+    ));
+    for c in outcome.front() {
+        let cost = c.cost.expect("a front candidate has a cost");
+        let _ = writeln!(
+            s,
+            "| {} | {} | {} | {:.4} | {:.0} | {} | {:.0} | {} | {} |",
+            c.horizon,
+            c.nm,
+            c.beta,
+            c.score.expect("a front candidate is scored"),
+            cost.instructions,
+            crate::search::short(cost.first_estimate),
+            cost.flash,
+            if c.within_budget { "yes" } else { "no" },
+            if std::ptr::eq(c, outcome.chosen()) { "**chosen**" } else { "" }
+        );
+    }
+    s
+}
+
 /// `report.md`.
 pub fn markdown(report: &Report<'_>) -> String {
     let mut s = format!("# {}\n\n{}\n\n", report.design, report.description);
@@ -612,6 +660,10 @@ pub fn markdown(report: &Report<'_>) -> String {
         for gate in &report.quality_gates {
             let _ = writeln!(s, "- {gate}");
         }
+    }
+    if let Some(search) = report.search {
+        s.push_str("\n## Design search\n\n");
+        s.push_str(&search_table(search, report.time_unit));
     }
     s.push_str("\n## Observers on the same data\n\n");
     s.push_str(&observers_table(report));

@@ -272,24 +272,47 @@ pub fn summary(design: &Design, outcome: &Outcome) -> String {
         outcome.seconds
     );
     let unit = &design.time_unit;
-    for c in outcome.front() {
+    let front = outcome.front();
+    let at = front.iter().position(|c| std::ptr::eq(*c, outcome.chosen())).unwrap_or(0);
+    // A few lines: the cheapest, two either side of the choice, the best score.
+    let best = (0..front.len())
+        .min_by(|&a, &b| front[a].score.unwrap_or(f64::INFINITY).total_cmp(&front[b].score.unwrap_or(f64::INFINITY)))
+        .unwrap_or(0);
+    let mut shown: Vec<usize> = vec![0, best];
+    shown.extend(at.saturating_sub(2)..(at + 3).min(front.len()));
+    shown.sort_unstable();
+    shown.dedup();
+    let mut last = None;
+    for i in shown {
+        if last.is_some_and(|l: usize| i > l + 1) {
+            text.push_str("    …\n");
+        }
+        last = Some(i);
+        let c = front[i];
         let cost = c.cost.expect("a front candidate has a cost");
-        let mark = match (std::ptr::eq(c, outcome.chosen()), c.within_budget) {
+        let mark = match (i == at, c.within_budget) {
             (true, _) => "  ← chosen",
             (false, false) => "  (over budget)",
             _ => "",
         };
         let _ = writeln!(
             text,
-            "    N = {:>3}, n_m = {}, β = {:<4}  score {:.4}  ~{:.0} instructions  first estimate after {:.3} {unit}  ~{:.0} B flash{mark}",
+            "    N = {:>3}, n_m = {}, β = {:<4}  score {:.4}  ~{:.0} instructions  first estimate after {} {unit}  ~{:.0} B flash{mark}",
             c.horizon,
             c.nm,
             c.beta,
             c.score.expect("a front candidate is scored"),
             cost.instructions,
-            cost.first_estimate,
+            short(cost.first_estimate),
             cost.flash,
         );
     }
+    let _ = writeln!(text, "    ({} on the front; all of it in report.md, every candidate in report.json)", front.len());
     text
+}
+
+/// A delay as tables show it: four decimals at most, trailing zeros dropped (`2.3`, not `2.3000000000000003`).
+pub fn short(value: f64) -> String {
+    let text = format!("{value:.4}");
+    text.trim_end_matches('0').trim_end_matches('.').to_owned()
 }
