@@ -211,6 +211,17 @@ const CASES: &[Case] = &[
     case("epsilon_infinite", E05, &[Swap("epsilon = 0.01", "epsilon = inf")], Exact("map.epsilon"), "positive"),
     case("monotonicity_grid_too_small", Vdp, &[Swap("monotonicity_grid = 201", "monotonicity_grid = 2")], Exact("map.monotonicity_grid"), "201 or more"),
 
+    // ---- validate.rs `map` candidates (`choices`) and `budget`; raw.rs `RawChoice`.
+    case("horizon_word_not_auto", Vdp, &[Swap("horizon = 10 ", "horizon = \"best\" ")], Exact("map.horizon"), "TOML"),
+    case("horizon_fraction", Vdp, &[Swap("horizon = 10 ", "horizon = 10.5 ")], Exact("map.horizon"), "TOML"),
+    case("horizon_list_of_words", Vdp, &[Swap("horizon = 10 ", "horizon = [5, \"auto\"] ")], Exact("map.horizon"), "TOML"),
+    case("horizon_empty_list", Vdp, &[Swap("horizon = 10 ", "horizon = [] ")], Exact("map.horizon"), "a list of candidates"),
+    case("horizon_candidate_zero", Vdp, &[Swap("horizon = 10 ", "horizon = [0, 10] ")], Exact("map.horizon"), "set `map.horizon`"),
+    case("beta_candidate_degenerate", Vdp, &[Swap("beta = 0.5 ", "beta = [0.5, 8.0] ")], Exact("map.beta"), "for every candidate"),
+    case("budget_zero_instructions", Vdp, &[Append("\n[budget]\ninstructions = 0\n")], Exact("budget.instructions"), "most the chip can spend"),
+    case("budget_negative_delay", Vdp, &[Append("\n[budget]\nfirst_estimate = -1.0\n")], Exact("budget.first_estimate"), "positive"),
+    case("budget_unknown_field", Vdp, &[Append("\n[budget]\ncycles = 100\n")], Exact("budget.cycles"), "TOML"),
+
     // ---- validate_model.rs `learning`: the horizon against the run length (blamed on `map.horizon`).
     case("learning_runs_not_longer_than_horizon", Vdp, &[Swap("samples = 100\nseed = 1\n", "samples = 10\nseed = 1\n")], Exact("map.horizon"), "raise `learning.samples`"),
 
@@ -506,4 +517,36 @@ fn huge_numbers_in_messages_are_in_scientific_notation() {
     assert_eq!(spec::readable(2.5e-7), "2.5e-7");
     assert_eq!(spec::readable(0.25), "0.25");
     assert_eq!(spec::readable(-1234.5), "-1234.5");
+}
+
+/// `"auto"` and lists in `[map]` become the search's candidates (sorted, without repeats), the fitted
+/// settings holding the largest `N`; one value each is no search.
+#[test]
+fn map_choices_become_the_search_candidates() {
+    let path = Path::new("vanderpol.toml");
+    let fixed = spec::parse(path, VANDERPOL).unwrap();
+    assert_eq!(fixed.search, None);
+    let text = VANDERPOL.replacen("horizon = 10 ", "horizon = \"auto\" ", 1).replacen(
+        "beta = 0.5 ",
+        "beta = [2, 0.5, 0.5, 1.0] ",
+        1,
+    );
+    let searched = spec::parse(path, &text).unwrap();
+    let search = searched.search.expect("a search");
+    assert_eq!(search.horizons, (5..=40).collect::<Vec<_>>());
+    assert_eq!(search.nms, [5]);
+    assert_eq!(search.betas, [0.5, 1.0, 2.0]);
+    assert_eq!(search.candidates().len(), 36 * 3);
+    assert_eq!(search.candidates()[0], (5, 5, 0.5));
+    assert_eq!(searched.map.horizon, 40);
+    let budget = spec::parse(
+        path,
+        &format!("{VANDERPOL}\n[budget]\ninstructions = 150\nfirst_estimate = 1.5\n"),
+    )
+    .unwrap()
+    .budget;
+    assert_eq!(
+        (budget.instructions, budget.first_estimate, budget.flash),
+        (Some(150), Some(1.5), None)
+    );
 }

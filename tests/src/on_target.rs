@@ -1102,7 +1102,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
         .into_iter()
         .find(|p| host::spec::load(p).is_ok_and(|d| d.name == name))
         .ok_or_else(|| format!("no shipped spec for {name}"))?;
-    let design = host::spec::load(&path).map_err(|e| e.to_string())?;
+    let design = crate::settled(host::spec::load(&path).map_err(|e| e.to_string())?);
     let result = crate::build(&design);
     let code = ModelCode::new(&design).map_err(|e| e.to_string())?;
     let state_targets = corrected::state_targets(&design)?;
@@ -1262,7 +1262,7 @@ pub fn compare_with_library(name: &str, measured: &ObserverMeasurement) -> Resul
         .into_iter()
         .find(|p| host::spec::load(p).is_ok_and(|d| d.name == name))
         .ok_or_else(|| format!("no shipped spec for {name}"))?;
-    let design = host::spec::load(&path).map_err(|e| e.to_string())?;
+    let design = crate::settled(host::spec::load(&path).map_err(|e| e.to_string())?);
     let result = crate::build(&design);
     let rows = recorded_rows(&result);
     if rows.len() != measured.samples.len() {

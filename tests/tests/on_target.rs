@@ -213,6 +213,38 @@ fn every_observer_on_the_emulated_cortex_m4f() {
         assert!(flash > 0, "family {family}");
         println!("family {family}: flash {flash} B, its probe links: no reachable panic");
     }
+    // The design search's cost model (`host::search::cost`) against the chip: every design's map,
+    // its instructions per steady sample within the model's tolerance, its flash above the bound by
+    // at most the measured spread of code sizes. The constants were calibrated on the designs shipped
+    // before `vanderpol_searched`, which is the check out of the calibration set.
+    for (name, observers) in &all.observers {
+        let Some(map) = observers.get(&Kind::Map) else { continue };
+        let measured = on_target::spread(&map.phases().unwrap().steady).1 as f64;
+        let spec = integration_tests::shipped_specs()
+            .into_iter()
+            .find(|p| host::spec::load(p).is_ok_and(|d| &d.name == name))
+            .unwrap_or_else(|| panic!("{name}: no shipped spec"));
+        let design = integration_tests::load_settled(&spec);
+        let result = integration_tests::build(&design);
+        let maps: Vec<_> = result.targets.iter().map(|t| &t.fit.map).collect();
+        let predicted = host::search::cost::of_maps(&maps, design.map.horizon, design.tau);
+        println!(
+            "{name} map cost: instructions predicted {:.1}, measured {measured}; flash at least {:.0} B, measured {} B",
+            predicted.instructions, predicted.flash, map.flash_bytes
+        );
+        assert!(
+            (predicted.instructions / measured - 1.0).abs() <= host::search::cost::TOLERANCE,
+            "{name}: the cost model predicts {:.0} instructions for the map, the chip measures {measured}: recalibrate host/src/search/cost.rs",
+            predicted.instructions
+        );
+        let above = map.flash_bytes as f64 - predicted.flash;
+        assert!(
+            (0.0..=host::search::cost::CODE_SPREAD).contains(&above),
+            "{name}: the map's flash bound is {:.0} B, the chip measures {} B: recalibrate host/src/search/cost.rs",
+            predicted.flash,
+            map.flash_bytes
+        );
+    }
     assert!(
         on_target::panic_check_catches_a_reachable_panic().unwrap(),
         "the no-panic check did not catch a reachable panic"

@@ -593,7 +593,9 @@ pub fn search_table(outcome: &crate::search::Outcome, time_unit: &str) -> String
     let budget = &outcome.budget;
     let limits: Vec<String> = [
         budget.instructions.map(|b| format!("{b} instructions")),
-        budget.first_estimate.map(|b| format!("first estimate within {b} {time_unit}")),
+        budget
+            .first_estimate
+            .map(|b| format!("first estimate within {b} {time_unit}")),
         budget.flash.map(|b| format!("{b} B of flash")),
     ]
     .into_iter()
@@ -625,7 +627,11 @@ pub fn search_table(outcome: &crate::search::Outcome, time_unit: &str) -> String
             crate::search::short(cost.first_estimate),
             cost.flash,
             if c.within_budget { "yes" } else { "no" },
-            if std::ptr::eq(c, outcome.chosen()) { "**chosen**" } else { "" }
+            if std::ptr::eq(c, outcome.chosen()) {
+                "**chosen**"
+            } else {
+                ""
+            }
         );
     }
     s

@@ -516,11 +516,18 @@ fn estimation(
 /// `search.png`/`.svg`: the design search's trade-off in two projections, the tuning score against
 /// the predicted instructions per sample and against the delay to the first estimate. Every fitted
 /// candidate is a grey dot, the Pareto front is drawn over them, the chosen candidate in red.
-pub fn draw_search(design: &Design, outcome: &crate::search::Outcome, folder: &Path) -> Result<Vec<PathBuf>, PlotError> {
+pub fn draw_search(
+    design: &Design,
+    outcome: &crate::search::Outcome,
+    folder: &Path,
+) -> Result<Vec<PathBuf>, PlotError> {
     register_font();
     let fitted: Vec<&crate::search::Candidate> = outcome.candidates.iter().filter(|c| c.score.is_some()).collect();
     let point = |c: &crate::search::Candidate, x: fn(&crate::search::Cost) -> f64| {
-        (x(&c.cost.expect("a fitted candidate has a cost")), c.score.expect("fitted"))
+        (
+            x(&c.cost.expect("a fitted candidate has a cost")),
+            c.score.expect("fitted"),
+        )
     };
     let panel = |x_label: String, x: fn(&crate::search::Cost) -> f64| {
         let mut front: Vec<(f64, f64)> = outcome.front().into_iter().map(|c| point(c, x)).collect();
@@ -537,7 +544,11 @@ pub fn draw_search(design: &Design, outcome: &crate::search::Outcome, folder: &P
             .copied()
             .collect();
         Panel {
-            title: format!("{}: design search ({} candidates)", design.name, outcome.candidates.len()),
+            title: format!(
+                "{}: design search ({} candidates)",
+                design.name,
+                outcome.candidates.len()
+            ),
             x_label,
             y_label: "tuning score (mean RMSE / spread)".to_owned(),
             curves: vec![
@@ -570,7 +581,9 @@ pub fn draw_search(design: &Design, outcome: &crate::search::Outcome, folder: &P
     };
     let panels = [
         panel("predicted instructions per sample (map)".to_owned(), |c| c.instructions),
-        panel(with_unit("delay to the first estimate", &design.time_unit), |c| c.first_estimate),
+        panel(with_unit("delay to the first estimate", &design.time_unit), |c| {
+            c.first_estimate
+        }),
     ];
     write_figure(folder, "search", 1, 2, &panels)
 }

@@ -6,14 +6,20 @@
 //! ```text
 //! instructions ≈ BASE + PER_TARGET·targets + PER_TAP·Σ taps + PER_TABLE·(targets with > 1 segment)
 //!                + PER_SEARCH_STEP·Σ ⌈log₂ knots⌉          (searched knots only)
-//! flash        ≈ code + 4·(Σ taps + 2·Σ segments + Σ knots + 4·targets)   (f32 constants)
+//! flash        ≳ CODE_BYTES + 4·(Σ taps + 2·Σ segments + Σ knots + 4·targets)   (f32 constants)
 //! ```
 //!
-//! The constants are calibrated on the shipped designs as the emulated Cortex-M4F measures them
-//! (`on-target-report`); `tests/tests/on_target.rs` checks the prediction against QEMU on every
-//! shipped design within [`TOLERANCE`]. All shipped designs have two targets, so `BASE` and
-//! `PER_TARGET` are not separated by the data: the split follows the code (one table look-up with its
-//! clamps per target).
+//! The constants are calibrated on the designs shipped before `vanderpol_searched` as the emulated
+//! Cortex-M4F measures them (`on-target-report`); `tests/tests/on_target.rs` checks the instructions
+//! against QEMU on every shipped design within [`TOLERANCE`] (`vanderpol_searched`, out of the
+//! calibration set: predicted 149.2, measured 147). All shipped designs have two targets, so `BASE`
+//! and `PER_TARGET` are not separated by the data: the split follows the code (one table look-up with
+//! its clamps per target).
+//!
+//! Flash is a lower bound, not a prediction within 10 %: the constants are counted exactly, but the
+//! code a map links measured from 630 B (`ecoli_*`) to 1830 B (`two_tanks`), depending on
+//! what else the design's module links, not on the map's shape alone; [`CODE_BYTES`] is the smallest.
+//! The test checks that the bound holds and is within [`CODE_SPREAD`] of the measurement.
 
 use serde::Serialize;
 
@@ -29,8 +35,10 @@ pub const PER_TAP: f64 = 2.6;
 pub const PER_TABLE: f64 = 8.0;
 /// Instructions per step of the branch-free search over searched knots.
 pub const PER_SEARCH_STEP: f64 = 5.0;
-/// Code bytes of the map's `push` and `estimate`, besides its constants.
-pub const CODE_BYTES: f64 = 1100.0;
+/// The smallest code a map was measured to link besides its constants (`ecoli_x0_0p5`), in bytes.
+pub const CODE_BYTES: f64 = 630.0;
+/// How far above the flash bound the measurement may be: the spread of the measured code sizes.
+pub const CODE_SPREAD: f64 = 1300.0;
 /// Bytes per emitted constant (`f32`).
 const CONSTANT_BYTES: f64 = 4.0;
 /// How far the prediction may be from the emulated chip on the shipped designs (relative).
@@ -41,7 +49,7 @@ pub const TOLERANCE: f64 = 0.10;
 pub struct Cost {
     /// Instructions of `push` + `estimate` in steady state.
     pub instructions: f64,
-    /// Bytes of flash the observer adds.
+    /// Bytes of flash the map adds, at least (see the module's documentation).
     pub flash: f64,
     /// Delay from the first sample to the first estimate, `(N − 1) τ`, in the spec's time unit.
     pub first_estimate: f64,

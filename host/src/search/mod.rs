@@ -114,7 +114,11 @@ pub fn run(design: &Design, search: &Search, progress: &ProgressBar) -> Result<O
     let tuning = data::tuning_set(design)?;
     let n_max = *search.horizons.iter().max().expect("a search has candidates");
     let spreads = spreads(&tuning, n_max, design.targets.len());
-    let windows = tuning.runs.iter().map(|r| r.targets.len().saturating_sub(n_max - 1)).sum();
+    let windows = tuning
+        .runs
+        .iter()
+        .map(|r| r.targets.len().saturating_sub(n_max - 1))
+        .sum();
     let all = search.candidates();
     progress.set_length(all.len() as u64);
     progress.set_position(0);
@@ -162,7 +166,9 @@ pub fn run(design: &Design, search: &Search, progress: &ProgressBar) -> Result<O
 pub fn within(budget: &Budget, cost: &Cost) -> bool {
     budget.instructions.is_none_or(|b| cost.instructions <= b as f64)
         && budget.flash.is_none_or(|b| cost.flash <= b as f64)
-        && budget.first_estimate.is_none_or(|b| cost.first_estimate <= b * (1.0 + 1e-9))
+        && budget
+            .first_estimate
+            .is_none_or(|b| cost.first_estimate <= b * (1.0 + 1e-9))
 }
 
 /// The cheapest fitted candidate's cost, for the message when none is within budget.
@@ -223,7 +229,14 @@ fn candidate(
     let odds_ratios = identify::basis_of(settings);
     let mut maps = Vec::new();
     for (index, target) in design.targets.iter().enumerate() {
-        match identify::fit_tabulated(&learning, index, &target.name, settings, &odds_ratios, Tabulation::Sketched) {
+        match identify::fit_tabulated(
+            &learning,
+            index,
+            &target.name,
+            settings,
+            &odds_ratios,
+            Tabulation::Sketched,
+        ) {
             Ok(fit) if fit.map.table.is_some() => maps.push(fit.map),
             Ok(_) => {
                 candidate.failure = Some(format!("{}: Γ too flat for a certified table", target.name));
@@ -273,10 +286,18 @@ pub fn summary(design: &Design, outcome: &Outcome) -> String {
     );
     let unit = &design.time_unit;
     let front = outcome.front();
-    let at = front.iter().position(|c| std::ptr::eq(*c, outcome.chosen())).unwrap_or(0);
+    let at = front
+        .iter()
+        .position(|c| std::ptr::eq(*c, outcome.chosen()))
+        .unwrap_or(0);
     // A few lines: the cheapest, two either side of the choice, the best score.
     let best = (0..front.len())
-        .min_by(|&a, &b| front[a].score.unwrap_or(f64::INFINITY).total_cmp(&front[b].score.unwrap_or(f64::INFINITY)))
+        .min_by(|&a, &b| {
+            front[a]
+                .score
+                .unwrap_or(f64::INFINITY)
+                .total_cmp(&front[b].score.unwrap_or(f64::INFINITY))
+        })
         .unwrap_or(0);
     let mut shown: Vec<usize> = vec![0, best];
     shown.extend(at.saturating_sub(2)..(at + 3).min(front.len()));
@@ -307,7 +328,11 @@ pub fn summary(design: &Design, outcome: &Outcome) -> String {
             cost.flash,
         );
     }
-    let _ = writeln!(text, "    ({} on the front; all of it in report.md, every candidate in report.json)", front.len());
+    let _ = writeln!(
+        text,
+        "    ({} on the front; all of it in report.md, every candidate in report.json)",
+        front.len()
+    );
     text
 }
 

@@ -261,7 +261,11 @@ impl Validator {
         for &nm in &nms {
             self.at_most("map.nm", nm, limits::MAX_NM)?;
             if nm == 0 {
-                return Err(self.err("map.nm", "n_m must be at least 1", "set `map.nm` (the paper uses 5), or \"auto\""));
+                return Err(self.err(
+                    "map.nm",
+                    "n_m must be at least 1",
+                    "set `map.nm` (the paper uses 5), or \"auto\"",
+                ));
             }
         }
         for &beta in &betas {
@@ -286,7 +290,8 @@ impl Validator {
             ));
         }
         let (horizon, nm, beta) = (*horizons.iter().max().expect("checked non-empty"), nms[0], betas[0]);
-        let search = (horizons.len() > 1 || nms.len() > 1 || betas.len() > 1).then_some(Search { horizons, nms, betas });
+        let search =
+            (horizons.len() > 1 || nms.len() > 1 || betas.len() > 1).then_some(Search { horizons, nms, betas });
         let epsilon = self.positive("map.epsilon", raw.epsilon, "ε")?;
         if !(1e-12..=1e12).contains(&epsilon) {
             return Err(self.err(

@@ -81,6 +81,7 @@ fn run() -> Result<String, String> {
         let spec = integration_tests::shipped_specs()
             .into_iter()
             .find_map(|p| host::spec::load(&p).ok().filter(|d| d.name == name))
+            .map(integration_tests::settled)
             .ok_or_else(|| format!("no shipped spec for {name}"))?;
         let result = integration_tests::build(&spec);
         let targets: Vec<&str> = spec.targets.iter().map(|t| t.name.as_str()).collect();

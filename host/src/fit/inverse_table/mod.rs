@@ -148,7 +148,11 @@ impl InverseTable {
             .map(|i| pointwise_curvature(gamma, i as f64 / 8192.0))
             .fold(0.0, f64::max);
         let estimate = ((v1 - v0) * (curvature / (8.0 * relative_tolerance)).sqrt()).ceil();
-        let segments = if estimate >= 1.0 { estimate.min(MAX_SEGMENTS as f64) as usize } else { 1 };
+        let segments = if estimate >= 1.0 {
+            estimate.min(MAX_SEGMENTS as f64) as usize
+        } else {
+            1
+        };
         let h = (v1 - v0) / segments as f64;
         let mut nodes: Vec<f64> = (0..=segments)
             .map(|k| match k {
