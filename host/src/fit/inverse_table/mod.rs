@@ -49,6 +49,21 @@ use serde::Serialize;
 
 use proof::{node_error, nodes_and_bound, pointwise_curvature, Search};
 
+/// The rows `(a_k, b_k)` of uniform segments through the knots `nodes` (in `η`), for `r ∈ [r_min, r_max]`:
+/// `r = a_k + b_k t` on `t ∈ [k, k + 1]`.
+fn uniform_segments((r_min, r_max): (f64, f64), nodes: &[f64]) -> Vec<[f64; 2]> {
+    let span = r_max - r_min;
+    nodes
+        .windows(2)
+        .enumerate()
+        .map(|(k, pair)| {
+            let (r0, r1) = (r_min + span * pair[0], r_min + span * pair[1]);
+            let slope = r1 - r0;
+            [r0 - slope * k as f64, slope]
+        })
+        .collect()
+}
+
 /// Accuracy asked of every table: `sup |r_table - Γ⁻¹| ≤ RELATIVE_TOLERANCE · (r_max - r_min)`.
 pub const RELATIVE_TOLERANCE: f64 = 1e-4;
 /// The most segments of a table with uniform knots (8 bytes each in flash); beyond, searched knots.
@@ -153,37 +168,18 @@ impl InverseTable {
         } else {
             1
         };
-        let h = (v1 - v0) / segments as f64;
-        let mut nodes: Vec<f64> = (0..=segments)
-            .map(|k| match k {
-                0 => 0.0,
-                k if k == segments => 1.0,
-                k => gamma.inverse(v0 + k as f64 * h).eta,
-            })
-            .collect();
-        for k in 1..nodes.len() {
-            nodes[k] = nodes[k].max(nodes[k - 1]);
-        }
-        let (r_min, r_max) = range;
-        let span = r_max - r_min;
-        let scale = segments as f64 / (v1 - v0);
-        InverseTable {
-            gains: gains.iter().map(|g| g * scale).collect(),
-            offset: -v0 * scale,
-            starts: None,
-            segments: nodes
-                .windows(2)
-                .enumerate()
-                .map(|(k, pair)| {
-                    let slope = span * (pair[1] - pair[0]);
-                    [r_min + span * pair[0] - slope * k as f64, slope]
-                })
-                .collect(),
-            r_min,
-            r_max,
-            proven_bound: f64::NAN,
-            sampled_error: f64::NAN,
-        }
+        let nodes = proof::uniform_nodes(gamma, segments);
+        let mut table = Self::unconfirmed(
+            gamma,
+            gains,
+            range,
+            segments as f64,
+            None,
+            uniform_segments(range, &nodes),
+            f64::NAN,
+        );
+        table.sampled_error = f64::NAN;
+        table
     }
 
     /// The table with (about) the fewest uniform knots that meets the tolerance, if at most
@@ -263,16 +259,7 @@ impl InverseTable {
         bound_eta: f64,
     ) -> Result<Self, TableError> {
         let count = nodes.len() - 1;
-        let span = r_max - r_min;
-        let segments = nodes
-            .windows(2)
-            .enumerate()
-            .map(|(k, pair)| {
-                let (r0, r1) = (r_min + span * pair[0], r_min + span * pair[1]);
-                let slope = r1 - r0;
-                [r0 - slope * k as f64, slope]
-            })
-            .collect();
+        let segments = uniform_segments((r_min, r_max), nodes);
         Self::assemble(gamma, gains, (r_min, r_max), count as f64, None, segments, bound_eta)
     }
 
@@ -313,12 +300,25 @@ impl InverseTable {
     fn assemble(
         gamma: &Gamma<'_, f64>,
         gains: &[f64],
-        (r_min, r_max): (f64, f64),
+        range: (f64, f64),
         t_max: f64,
         starts: Option<Vec<f64>>,
         segments: Vec<[f64; 2]>,
         bound_eta: f64,
     ) -> Result<Self, TableError> {
+        Self::unconfirmed(gamma, gains, range, t_max, starts, segments, bound_eta).confirmed(gamma)
+    }
+
+    /// [`InverseTable::assemble`] without the dense confirmation (`sampled_error` 0).
+    fn unconfirmed(
+        gamma: &Gamma<'_, f64>,
+        gains: &[f64],
+        (r_min, r_max): (f64, f64),
+        t_max: f64,
+        starts: Option<Vec<f64>>,
+        segments: Vec<[f64; 2]>,
+        bound_eta: f64,
+    ) -> Self {
         let (v0, v1) = (gamma.value(0.0), gamma.value(1.0));
         let scale = t_max / (v1 - v0);
         InverseTable {
@@ -331,7 +331,6 @@ impl InverseTable {
             proven_bound: bound_eta * (r_max - r_min),
             sampled_error: 0.0,
         }
-        .confirmed(gamma)
     }
 
     /// This table with its dense confirmation, or [`TableError::BoundViolated`].

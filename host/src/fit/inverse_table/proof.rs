@@ -17,17 +17,7 @@ pub(super) fn nodes_and_bound(
 ) -> Result<(Vec<f64>, f64), TableError> {
     let (v0, v1) = (gamma.value(0.0), gamma.value(1.0));
     let h = (v1 - v0) / segments as f64;
-    let mut nodes: Vec<f64> = (0..=segments)
-        .map(|k| match k {
-            0 => 0.0,
-            k if k == segments => 1.0,
-            k => gamma.inverse(v0 + k as f64 * h).eta,
-        })
-        .collect();
-    // The bisection is monotone in v, so the knots are ordered; make sure of it for the bounds below.
-    for k in 1..nodes.len() {
-        nodes[k] = nodes[k].max(nodes[k - 1]);
-    }
+    let nodes = uniform_nodes(gamma, segments);
     let budget = 8.0 * goal / (h * h);
     let (mut curvature, mut min_slope) = (0.0f64, f64::INFINITY);
     for pair in nodes.windows(2) {
@@ -36,6 +26,24 @@ pub(super) fn nodes_and_bound(
         min_slope = min_slope.min(local.min_slope);
     }
     Ok((nodes, h * h / 8.0 * curvature + node_error(gamma, min_slope)))
+}
+
+/// The knots `η_k = φ(v_k)` of `segments` segments uniform in `v`, by the f64 bisection.
+pub(super) fn uniform_nodes(gamma: &Gamma<'_, f64>, segments: usize) -> Vec<f64> {
+    let (v0, v1) = (gamma.value(0.0), gamma.value(1.0));
+    let h = (v1 - v0) / segments as f64;
+    let mut nodes: Vec<f64> = (0..=segments)
+        .map(|k| match k {
+            0 => 0.0,
+            k if k == segments => 1.0,
+            k => gamma.inverse(v0 + k as f64 * h).eta,
+        })
+        .collect();
+    // The bisection is monotone in v, so the knots are ordered; make sure of it for the bounds.
+    for k in 1..nodes.len() {
+        nodes[k] = nodes[k].max(nodes[k - 1]);
+    }
+    nodes
 }
 
 /// How far a knot from the f64 bisection may be from `φ(v_k)`: `2⁻⁵²` of bisection, plus the
