@@ -154,6 +154,8 @@ pub struct Emitted {
     pub source: String,
     /// The design search, when the spec asks for one ([`crate::search`]); `design.map` holds its choice.
     pub search: Option<crate::search::Outcome>,
+    /// Validation accuracy against the taps kept, when the spec prunes `L` ([`crate::search::sparsity`]).
+    pub taps: Option<Vec<crate::search::sparsity::Row>>,
 }
 
 /// Searches (when the spec asks), fits and emits `design`, loaded from `spec` (nothing is written).
@@ -164,6 +166,14 @@ pub fn emit_design(design: Design, spec: &Path, progress: &ProgressBar) -> Resul
         progress.set_position(0);
     }
     let result = fit::run(&design, progress)?;
+    let taps =
+        crate::search::sparsity::accuracy_vs_taps(&design, &result.learning, &result.validation).map_err(|e| {
+            design.error(
+                "map.taps",
+                format!("a pruned fit failed: {e}"),
+                "offer fewer counts in `map.taps`, or leave it out",
+            )
+        })?;
     // Relative to the checkout when there is one, so that the text does not depend on where it lives.
     let spec_path = match workspace_root() {
         Ok(workspace) => emit::portable_spec_path(spec, &workspace),
@@ -176,6 +186,7 @@ pub fn emit_design(design: Design, spec: &Path, progress: &ProgressBar) -> Resul
         comparison,
         source,
         search,
+        taps,
     })
 }
 
@@ -402,6 +413,7 @@ fn prepare(design: Design, spec: &Path, reports: &Path, bar: &ProgressBar) -> Re
     let folder = reports.join(&emitted.design.name);
     let mut report = reporting::report(&emitted.design, &emitted.result, &emitted.comparison);
     report.search = emitted.search.as_ref();
+    report.taps = emitted.taps.as_deref();
     let measured = reporting::on_target::recorded(&folder, &emitted.source);
     for observer in &mut report.observers {
         observer.on_target = measured.get(observer.kind).cloned();
@@ -431,6 +443,7 @@ fn write(one: Prepared, to: &Destinations) -> Result<Outcome, GenerateError> {
         source,
         comparison,
         search,
+        taps: _,
     } = one.emitted;
     let mut figures = plots::draw(&design, &result, &comparison, &folder)?;
     if let Some(search) = &search {

@@ -217,6 +217,9 @@ const CASES: &[Case] = &[
     case("horizon_list_of_words", Vdp, &[Swap("horizon = 10 ", "horizon = [5, \"auto\"] ")], Exact("map.horizon"), "TOML"),
     case("horizon_empty_list", Vdp, &[Swap("horizon = 10 ", "horizon = [] ")], Exact("map.horizon"), "a list of candidates"),
     case("horizon_candidate_zero", Vdp, &[Swap("horizon = 10 ", "horizon = [0, 10] ")], Exact("map.horizon"), "set `map.horizon`"),
+    case("taps_zero", Vdp, &[Swap("beta = 0.5 ", "beta = 0.5\ntaps = 0 ")], Exact("map.taps"), "(≥ 1)"),
+    case("taps_candidate_zero", Vdp, &[Swap("beta = 0.5 ", "beta = 0.5\ntaps = [0, 4] ")], Exact("map.taps"), "set `map.taps`"),
+    case("taps_word_not_auto", Vdp, &[Swap("beta = 0.5 ", "beta = 0.5\ntaps = \"few\" ")], Exact("map.taps"), "TOML"),
     case("beta_candidate_degenerate", Vdp, &[Swap("beta = 0.5 ", "beta = [0.5, 8.0] ")], Exact("map.beta"), "for every candidate"),
     case("budget_zero_instructions", Vdp, &[Append("\n[budget]\ninstructions = 0\n")], Exact("budget.instructions"), "most the chip can spend"),
     case("budget_negative_delay", Vdp, &[Append("\n[budget]\nfirst_estimate = -1.0\n")], Exact("budget.first_estimate"), "positive"),
@@ -549,4 +552,23 @@ fn map_choices_become_the_search_candidates() {
         (budget.instructions, budget.first_estimate, budget.flash),
         (Some(150), Some(1.5), None)
     );
+    // One tap count is a setting, not a search; a list or "auto" is searched.
+    let taps = |value: &str| {
+        spec::parse(
+            path,
+            &VANDERPOL.replacen("beta = 0.5 ", &format!("beta = 0.5\ntaps = {value} "), 1),
+        )
+        .unwrap()
+    };
+    let one = taps("6");
+    assert_eq!((one.map.taps, one.search), (Some(6), None));
+    let listed = taps("[8, 4, 8]").search.expect("a search over taps");
+    assert_eq!(listed.taps, spec::Taps::Counts(vec![4, 8]));
+    assert_eq!(listed.taps.for_regressor(10), [8, 4]);
+    assert_eq!(listed.taps.for_regressor(6), [6, 4]);
+    assert_eq!(
+        taps("\"auto\"").search.expect("a search").taps.for_regressor(10),
+        [10, 8, 6, 5, 4, 3]
+    );
+    assert_eq!(fixed.map.taps, None);
 }

@@ -187,18 +187,22 @@ fn finite_check(outputs: usize, inputs: usize) -> String {
     }
 }
 
-/// `+ GAINS_<upper>[i] * w[…].y[…]` for every regressor entry, in regressor order, one per line: the
-/// window `w` is oldest first, so lag `l` is `w[N - 1 - l]`.
-fn dot_lines(upper: &str, horizon: usize, outputs: usize, inputs: usize) -> String {
+/// `+ GAINS_<upper>[i] * w[…].y[…]` for every regressor entry with a non-zero gain, in regressor
+/// order, one per line: the window `w` is oldest first, so lag `l` is `w[N - 1 - l]`. Pruned taps
+/// (gain exactly 0) are left out, as [`firmware::estimate_by_loops`] skips them.
+fn dot_lines(upper: &str, gains: &[f32], horizon: usize, outputs: usize, inputs: usize) -> String {
     let mut lines = Vec::new();
+    let mut i = 0;
     for (count, field) in [(outputs, "y"), (inputs, "u")] {
         for lag in 0..horizon {
             for m in 0..count {
-                let i = lines.len();
-                lines.push(format!(
-                    "                    + GAINS_{upper}[{i}] * w[{}].{field}[{m}]",
-                    horizon - 1 - lag
-                ));
+                if gains[i] != 0.0 {
+                    lines.push(format!(
+                        "                    + GAINS_{upper}[{i}] * w[{}].{field}[{m}]",
+                        horizon - 1 - lag
+                    ));
+                }
+                i += 1;
             }
         }
     }
@@ -379,7 +383,13 @@ pub fn design_file(
         targets.push(TargetTables {
             name: target.name.clone(),
             const_name,
-            dot: dot_lines(&upper, design.map.horizon, outputs.len(), design.model.inputs.len()),
+            dot: dot_lines(
+                &upper,
+                &rounded.gains,
+                design.map.horizon,
+                outputs.len(),
+                design.model.inputs.len(),
+            ),
             search_steps: table.starts.as_ref().map(|starts| search_steps(&upper, starts.len())),
             upper,
             expr: doc_code(target.expr.text()),

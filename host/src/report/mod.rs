@@ -65,6 +65,9 @@ pub struct Report<'a> {
     /// The design search, when the spec asks for one (every candidate, the front, the choice).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub search: Option<&'a crate::search::Outcome>,
+    /// Validation accuracy against the taps of `L` kept, when the spec prunes it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub taps: Option<&'a [crate::search::sparsity::Row]>,
 }
 
 /// One observer's figures.
@@ -374,6 +377,7 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             nominal: m.nominal.clone(),
         }),
         search: None,
+        taps: None,
     }
 }
 
@@ -601,24 +605,36 @@ pub fn search_table(outcome: &crate::search::Outcome, time_unit: &str) -> String
     .into_iter()
     .flatten()
     .collect();
+    let sparse = outcome.candidates.iter().any(|c| c.taps < c.regressor_len);
     let mut s = format!(
-        "{} candidates (N, n_m, β), {fitted} fitted in {:.1} s, each scored on the same {} tuning windows (mean RMSE / spread of the map; \
+        "{} candidates (N, n_m, β{}), {fitted} fitted in {:.1} s, each scored on the same {} tuning windows (mean RMSE / spread of the map; \
          never on validation); budget: {}. The front: no other candidate is better on score, predicted instructions and delay to the \
          first estimate at once; the chosen one is the best score within budget, the fewest instructions preferred within 2 %. \
          Costs are predicted (`search::cost`, checked against the emulated chip on the shipped designs). Figure: `search`.\n\n",
         outcome.candidates.len(),
+        if sparse { ", taps" } else { "" },
         outcome.seconds,
         outcome.windows,
         if limits.is_empty() { "none".to_owned() } else { limits.join(", ") }
     );
+    let (taps_head, taps_rule) = if sparse {
+        (" taps per target |", "---|")
+    } else {
+        ("", "")
+    };
     s.push_str(&format!(
-        "| N | n_m | β | tuning score | instructions | first estimate [{time_unit}] | flash [B] | within budget | |\n|---|---|---|---|---|---|---|---|---|\n"
+        "| N | n_m | β |{taps_head} tuning score | instructions | first estimate [{time_unit}] | flash [B] | within budget | |\n|---|---|---|{taps_rule}---|---|---|---|---|---|\n"
     ));
     for c in outcome.front() {
         let cost = c.cost.expect("a front candidate has a cost");
+        let taps = if sparse {
+            format!(" {}/{} |", c.taps, c.regressor_len)
+        } else {
+            String::new()
+        };
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {:.4} | {:.0} | {} | {:.0} | {} | {} |",
+            "| {} | {} | {} |{taps} {:.4} | {:.0} | {} | {:.0} | {} | {} |",
             c.horizon,
             c.nm,
             c.beta,
@@ -633,6 +649,33 @@ pub fn search_table(outcome: &crate::search::Outcome, time_unit: &str) -> String
                 ""
             }
         );
+    }
+    s
+}
+
+/// Validation accuracy against the taps of `L` kept, as a Markdown table.
+pub fn taps_table(rows: &[crate::search::sparsity::Row], targets: &[&str]) -> String {
+    let mut s = format!(
+        "N = {}·(outputs + inputs) gives {} taps per target; `L` pruned by backward elimination (`fit::identify::prune`), refitted at \
+         every count and judged on the validation runs (tables sketched, not certified: within 10⁻³ of the emitted figures). \
+         Instructions are predicted (`search::cost`).\n\n| taps per target | instructions |",
+        rows.first().map_or(0, |r| r.regressor_len),
+        rows.first().map_or(0, |r| r.regressor_len),
+    );
+    for t in targets {
+        let _ = write!(s, " RMSE {t} |");
+    }
+    s.push_str(" |\n|---|---|");
+    for _ in targets {
+        s.push_str("---|");
+    }
+    s.push_str("---|\n");
+    for row in rows {
+        let _ = write!(s, "| {}/{} | {:.0} |", row.taps, row.regressor_len, row.instructions);
+        for rmse in &row.rmse {
+            let _ = write!(s, " {rmse:.4} |");
+        }
+        let _ = writeln!(s, " {} |", if row.chosen { "**chosen**" } else { "" });
     }
     s
 }
@@ -670,6 +713,11 @@ pub fn markdown(report: &Report<'_>) -> String {
     if let Some(search) = report.search {
         s.push_str("\n## Design search\n\n");
         s.push_str(&search_table(search, report.time_unit));
+    }
+    if let Some(rows) = report.taps {
+        s.push_str("\n## Sparse L: accuracy against taps\n\n");
+        let names: Vec<&str> = report.targets.iter().map(|t| t.name).collect();
+        s.push_str(&taps_table(rows, &names));
     }
     s.push_str("\n## Observers on the same data\n\n");
     s.push_str(&observers_table(report));

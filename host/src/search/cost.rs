@@ -29,7 +29,8 @@ use crate::fit::maps::FittedMap;
 pub const BASE: f64 = 42.0;
 /// Instructions of one target's table look-up with a single segment (projection start, the clamps).
 pub const PER_TARGET: f64 = 12.0;
-/// Instructions per gain of the projection (load, load, fused multiply-add, loop share).
+/// Instructions per non-zero gain of the projection (load, load, fused multiply-add); pruned gains
+/// (exactly 0) are not emitted.
 pub const PER_TAP: f64 = 2.6;
 /// Extra instructions of a table with more than one uniform segment (the index, its clamp, the row).
 pub const PER_TABLE: f64 = 8.0;
@@ -60,7 +61,7 @@ pub fn of_maps(maps: &[&FittedMap], horizon: usize, tau: f64) -> Cost {
     let mut instructions = BASE;
     let mut constants = 0.0;
     for map in maps {
-        let taps = map.gains.len() as f64;
+        let taps = map.gains.iter().filter(|&&g| g != 0.0).count() as f64;
         instructions += PER_TARGET + PER_TAP * taps;
         let (segments, knots) = match &map.table {
             Some(table) => (table.segments.len(), table.starts.as_ref().map_or(0, Vec::len)),

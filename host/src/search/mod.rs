@@ -20,6 +20,7 @@
 
 pub mod cost;
 pub mod pareto;
+pub mod sparsity;
 
 use std::time::Instant;
 
@@ -29,8 +30,8 @@ use serde::Serialize;
 
 use crate::data::{self, DataSet};
 use crate::fit::identify;
-use crate::fit::maps::Tabulation;
-use crate::spec::{Budget, Design, MapSettings, Search, SpecError};
+use crate::fit::maps::{FittedMap, Tabulation};
+use crate::spec::{Budget, Design, MapSettings, Search, SpecError, Taps};
 pub use cost::Cost;
 
 /// One candidate of the search, fitted and scored.
@@ -42,6 +43,10 @@ pub struct Candidate {
     pub nm: usize,
     /// `β`.
     pub beta: f64,
+    /// Non-zero gains per target (sparse `L` when fewer than the regressor's entries).
+    pub taps: usize,
+    /// Entries of the regressor, `N·(outputs + inputs)`: every tap.
+    pub regressor_len: usize,
     /// The score on the tuning runs (mean RMSE / spread); `None` when a fit failed.
     pub score: Option<f64>,
     /// RMSE per target on the tuning runs.
@@ -101,6 +106,7 @@ pub fn settle(mut design: Design, progress: &ProgressBar) -> Result<(Design, Opt
         horizon: chosen.horizon,
         nm: chosen.nm,
         beta: chosen.beta,
+        taps: (chosen.taps < chosen.regressor_len).then_some(chosen.taps),
         ..design.map
     };
     Ok((design, Some(outcome)))
@@ -130,12 +136,14 @@ pub fn run(design: &Design, search: &Search, progress: &ProgressBar) -> Result<O
                 horizon,
                 nm,
                 beta,
+                taps: None,
                 ..design.map
             };
-            let candidate = candidate(design, &settings, &learning, &tuning, n_max, &spreads);
+            let candidates = candidates_of(design, &settings, &search.taps, &learning, &tuning, n_max, &spreads);
             progress.inc(1);
-            candidate
+            candidates
         })
+        .flatten()
         .collect();
     for c in &mut candidates {
         c.within_budget = c.score.is_some() && c.cost.is_some_and(|cost| within(&design.budget, &cost));
@@ -201,20 +209,29 @@ fn spreads(tuning: &DataSet, n_max: usize, targets: usize) -> Vec<f64> {
         .collect()
 }
 
-/// Fits every target with `settings` and scores the maps on the tuning windows ending at
-/// `k ≥ n_max − 1`.
-fn candidate(
+/// Fits every target with `settings` at every count of `taps` (one pruning path per target) and
+/// scores the maps on the tuning windows ending at `k ≥ n_max − 1`: one candidate per count.
+fn candidates_of(
     design: &Design,
     settings: &MapSettings,
+    taps: &Taps,
     learning: &DataSet,
     tuning: &DataSet,
     n_max: usize,
     spreads: &[f64],
-) -> Candidate {
-    let mut candidate = Candidate {
+) -> Vec<Candidate> {
+    let learning = DataSet {
+        runs: learning.runs.clone(),
+        horizon: settings.horizon,
+    };
+    let regressor_len = learning.regressor_len();
+    let counts = taps.for_regressor(regressor_len);
+    let blank = |taps: usize| Candidate {
         horizon: settings.horizon,
         nm: settings.nm,
         beta: settings.beta,
+        taps,
+        regressor_len,
         score: None,
         rmse: Vec::new(),
         failure: None,
@@ -222,65 +239,79 @@ fn candidate(
         within_budget: false,
         on_front: false,
     };
-    let learning = DataSet {
-        runs: learning.runs.clone(),
-        horizon: settings.horizon,
-    };
     let odds_ratios = identify::basis_of(settings);
-    let mut maps = Vec::new();
+    // maps[target][count]
+    let mut maps: Vec<Vec<FittedMap>> = Vec::new();
     for (index, target) in design.targets.iter().enumerate() {
-        match identify::fit_tabulated(
+        let failure = match identify::fit_counts(
             &learning,
             index,
             &target.name,
             settings,
             &odds_ratios,
+            &counts,
             Tabulation::Sketched,
         ) {
-            Ok(fit) if fit.map.table.is_some() => maps.push(fit.map),
-            Ok(_) => {
-                candidate.failure = Some(format!("{}: Γ too flat for a certified table", target.name));
-                return candidate;
+            Ok(fits) if fits.iter().all(|fit| fit.map.table.is_some()) => {
+                maps.push(fits.into_iter().map(|fit| fit.map).collect());
+                continue;
             }
-            Err(e) => {
-                candidate.failure = Some(format!("{}: {e}", target.name));
-                return candidate;
-            }
-        }
+            Ok(_) => format!("{}: Γ too flat for a certified table", target.name),
+            Err(e) => format!("{}: {e}", target.name),
+        };
+        return counts
+            .iter()
+            .map(|&taps| Candidate {
+                failure: Some(failure.clone()),
+                ..blank(taps)
+            })
+            .collect();
     }
     let tuning = DataSet {
         runs: tuning.runs.clone(),
         horizon: settings.horizon,
     };
-    let mut sums = vec![0.0; maps.len()];
+    let mut sums = vec![vec![0.0; maps.len()]; counts.len()];
     let mut count = 0usize;
     let mut z = Vec::new();
     for window in tuning.windows().filter(|w| w.end + 1 >= n_max) {
         tuning.regressor(window, &mut z);
-        for (t, map) in maps.iter().enumerate() {
-            let error = map.estimate(&z).value - tuning.target(window, t);
-            sums[t] += error * error;
+        let truths: Vec<f64> = (0..maps.len()).map(|t| tuning.target(window, t)).collect();
+        for (c, sums) in sums.iter_mut().enumerate() {
+            for (t, target_maps) in maps.iter().enumerate() {
+                let error = target_maps[c].estimate(&z).value - truths[t];
+                sums[t] += error * error;
+            }
         }
         count += 1;
     }
-    candidate.rmse = sums.iter().map(|s| (s / count as f64).sqrt()).collect();
-    let score = candidate.rmse.iter().zip(spreads).map(|(r, s)| r / s).sum::<f64>() / spreads.len() as f64;
-    candidate.score = score.is_finite().then_some(score);
-    if candidate.score.is_none() {
-        candidate.failure = Some("a non-finite error on the tuning runs".to_owned());
-    }
-    let refs: Vec<&_> = maps.iter().collect();
-    candidate.cost = Some(cost::of_maps(&refs, settings.horizon, design.tau));
-    candidate
+    counts
+        .iter()
+        .enumerate()
+        .map(|(c, &taps)| {
+            let mut candidate = blank(taps);
+            candidate.rmse = sums[c].iter().map(|s| (s / count as f64).sqrt()).collect();
+            let score = candidate.rmse.iter().zip(spreads).map(|(r, s)| r / s).sum::<f64>() / spreads.len() as f64;
+            candidate.score = score.is_finite().then_some(score);
+            if candidate.score.is_none() {
+                candidate.failure = Some("a non-finite error on the tuning runs".to_owned());
+            }
+            let refs: Vec<&FittedMap> = maps.iter().map(|m| &m[c]).collect();
+            candidate.cost = Some(cost::of_maps(&refs, settings.horizon, design.tau));
+            candidate
+        })
+        .collect()
 }
 
 /// The search in a few lines, as `gen` and `search` print it: what was searched, the front, the choice.
 pub fn summary(design: &Design, outcome: &Outcome) -> String {
     use std::fmt::Write;
     let fitted = outcome.candidates.iter().filter(|c| c.score.is_some()).count();
+    let sparse = outcome.candidates.iter().any(|c| c.taps < c.regressor_len);
     let mut text = format!(
-        "  search: {} candidates (N, n_m, β), {fitted} fitted, scored on {} tuning windows in {:.1} s; front (score = mean RMSE / spread on the tuning runs):\n",
+        "  search: {} candidates (N, n_m, β{}), {fitted} fitted, scored on {} tuning windows in {:.1} s; front (score = mean RMSE / spread on the tuning runs):\n",
         outcome.candidates.len(),
+        if sparse { ", taps" } else { "" },
         outcome.windows,
         outcome.seconds
     );
@@ -316,9 +347,14 @@ pub fn summary(design: &Design, outcome: &Outcome) -> String {
             (false, false) => "  (over budget)",
             _ => "",
         };
+        let taps = if sparse {
+            format!("  {:>3}/{:<3} taps", c.taps, c.regressor_len)
+        } else {
+            String::new()
+        };
         let _ = writeln!(
             text,
-            "    N = {:>3}, n_m = {}, β = {:<4}  score {:.4}  ~{:.0} instructions  first estimate after {} {unit}  ~{:.0} B flash{mark}",
+            "    N = {:>3}, n_m = {}, β = {:<4}{taps}  score {:.4}  ~{:.0} instructions  first estimate after {} {unit}  ~{:.0} B flash{mark}",
             c.horizon,
             c.nm,
             c.beta,

@@ -50,6 +50,8 @@ mod tests {
             horizon: 1,
             nm: 1,
             beta: 1.0,
+            taps: 1,
+            regressor_len: 1,
             score: Some(score),
             rmse: Vec::new(),
             failure: None,

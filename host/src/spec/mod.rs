@@ -142,6 +142,8 @@ pub struct MapSettings {
     pub normalisation: Normalisation,
     /// Points of the monotonicity grid on `[0, 1]`.
     pub monotonicity_grid: usize,
+    /// Non-zero gains kept per target (sparse `L`, [`crate::fit::identify::prune`]); `None`: all.
+    pub taps: Option<usize>,
 }
 
 /// The candidates of the design search (`"auto"` or a list in `[map]` `horizon`, `nm` or `beta`):
@@ -154,6 +156,33 @@ pub struct Search {
     pub nms: Vec<usize>,
     /// Candidates for `β`.
     pub betas: Vec<f64>,
+    /// Candidates for the taps kept per target.
+    pub taps: Taps,
+}
+
+/// The taps of `L` kept per target, as `[map] taps` asks.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub enum Taps {
+    /// Every tap (no `taps`).
+    All,
+    /// These counts (sorted, without repeats); a count of at least `n_z` is every tap.
+    Counts(Vec<usize>),
+    /// `"auto"`: [`crate::fit::identify::prune::auto_counts`] of each candidate's regressor.
+    Auto,
+}
+
+impl Taps {
+    /// The counts to fit for a regressor of `regressor_len` entries: distinct, largest first.
+    pub fn for_regressor(&self, regressor_len: usize) -> Vec<usize> {
+        let mut counts = match self {
+            Taps::All => vec![regressor_len],
+            Taps::Counts(counts) => counts.iter().map(|&c| c.min(regressor_len)).collect(),
+            Taps::Auto => crate::fit::identify::prune::auto_counts(regressor_len),
+        };
+        counts.sort_unstable_by(|a, b| b.cmp(a));
+        counts.dedup();
+        counts
+    }
 }
 
 impl Search {
@@ -170,6 +199,7 @@ impl Search {
             horizons: Self::AUTO_HORIZONS.collect(),
             nms: Self::AUTO_NMS.to_vec(),
             betas: Self::AUTO_BETAS.to_vec(),
+            taps: Taps::All,
         }
     }
 

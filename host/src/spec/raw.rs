@@ -219,6 +219,8 @@ pub(super) struct RawMap {
     pub(super) normalisation: Normalisation,
     #[serde(default = "default_grid")]
     pub(super) monotonicity_grid: usize,
+    #[serde(default)]
+    pub(super) taps: Option<RawChoice<usize>>,
 }
 
 fn default_grid() -> usize {

@@ -289,9 +289,34 @@ impl Validator {
                 "keep β·(n_m - 1) ≤ 30 for every candidate (β of 0.5 to 3 is usual)",
             ));
         }
+        let taps = match &raw.taps {
+            None => Taps::All,
+            Some(RawChoice::Auto) => Taps::Auto,
+            Some(choice) => {
+                let counts = self.choices("map.taps", choice, Vec::new)?;
+                if counts.contains(&0) {
+                    return Err(self.err(
+                        "map.taps",
+                        "a map needs at least one tap",
+                        "set `map.taps` to the number of non-zero gains to keep per target (≥ 1), a list of them, or \"auto\"; leave it out to keep every gain",
+                    ));
+                }
+                Taps::Counts(counts)
+            }
+        };
         let (horizon, nm, beta) = (*horizons.iter().max().expect("checked non-empty"), nms[0], betas[0]);
+        let fixed_taps = match &taps {
+            Taps::All => Some(None),
+            Taps::Counts(counts) if counts.len() == 1 => Some(Some(counts[0])),
+            _ => None,
+        };
         let search =
-            (horizons.len() > 1 || nms.len() > 1 || betas.len() > 1).then_some(Search { horizons, nms, betas });
+            (horizons.len() > 1 || nms.len() > 1 || betas.len() > 1 || fixed_taps.is_none()).then_some(Search {
+                horizons,
+                nms,
+                betas,
+                taps,
+            });
         let epsilon = self.positive("map.epsilon", raw.epsilon, "ε")?;
         if !(1e-12..=1e12).contains(&epsilon) {
             return Err(self.err(
@@ -317,6 +342,7 @@ impl Validator {
             epsilon,
             normalisation: raw.normalisation,
             monotonicity_grid: raw.monotonicity_grid,
+            taps: fixed_taps.flatten(),
         };
         Ok((settings, search))
     }

@@ -34,6 +34,7 @@
 // `!(x > y)` is deliberate throughout: a NaN must fail every check.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+pub mod prune;
 mod reduce;
 
 use reduce::{accumulate, linear_floor, solve_upper, Columns, Reduced, TargetRange};
@@ -176,7 +177,8 @@ pub fn fit(
     fit_tabulated(data, target, target_name, settings, odds_ratios, Tabulation::Certified)
 }
 
-/// [`fit`], with `Γ⁻¹` tabulated as `tabulation` says (sketched for the design search).
+/// [`fit`], with `Γ⁻¹` tabulated as `tabulation` says (sketched for the design search). With
+/// `settings.taps` below the regressor's length, `L` is pruned to that many taps ([`prune`]).
 pub fn fit_tabulated(
     data: &DataSet,
     target: usize,
@@ -185,93 +187,214 @@ pub fn fit_tabulated(
     odds_ratios: &Arc<[f64]>,
     tabulation: Tabulation,
 ) -> Result<Fit, FitError> {
-    let range = TargetRange::gather(data, target)?;
-    let r_factor = accumulate(data, target, &range, odds_ratios);
-    let linear = linear_floor(&r_factor, &range)?;
-    let with_constant = settings.normalisation == Normalisation::Paper;
-    let reduced = Reduced::new(&r_factor, range.scales.len(), with_constant, range.windows);
-    let columns = Columns {
-        odds_ratios,
-        with_constant,
-    };
+    let learning = Learning::gather(data, target, settings, odds_ratios)?;
+    match settings.taps.filter(|&taps| taps < learning.regressor_len()) {
+        None => learning.fit(&learning.dense(), target_name, tabulation),
+        Some(taps) => {
+            let mut fits = prune::fit_path(&learning, &[taps], target_name, tabulation)?;
+            Ok(fits.pop().expect("one fit per count"))
+        }
+    }
+}
 
-    // The QP is solved at unit scale: Clarabel's tolerances are partly absolute, and with ε = 0.01 a
-    // whole objective of 3e-7 would sit near them. `(μ, L)` scale with `scale`: exactly for `intercept`
-    // (homogeneous), and for `paper` because ε and the equality's right-hand side are both divided by it.
-    let mean = 0.5 * (range.min + range.max);
-    let scale = if with_constant {
-        settings.epsilon.max(mean.abs())
-    } else {
-        settings.epsilon
-    };
-    let epsilon = settings.epsilon / scale;
-    let equality = with_constant.then_some(mean / scale);
-    let solved = solve_refined(&reduced, &columns, epsilon, equality, settings.monotonicity_grid)?;
-    let mu = &solved.mu;
+/// One fit per entry of `counts` (taps kept per target, [`prune`]), from one elimination path;
+/// `settings.taps` is ignored.
+pub fn fit_counts(
+    data: &DataSet,
+    target: usize,
+    target_name: &str,
+    settings: &MapSettings,
+    odds_ratios: &Arc<[f64]>,
+    counts: &[usize],
+    tabulation: Tabulation,
+) -> Result<Vec<Fit>, FitError> {
+    let learning = Learning::gather(data, target, settings, odds_ratios)?;
+    prune::fit_path(&learning, counts, target_name, tabulation)
+}
 
-    // Recover L, undo the internal scale and the column scaling of Z.
-    let n_z = range.scales.len();
-    let l_scaled = solve_upper(&reduced.r_ll, &(&reduced.r_lmu * mu))?;
-    let gains = (0..n_z).map(|c| scale * l_scaled[c] / range.scales[c]).collect();
-    let intercept = if with_constant { 0.0 } else { scale * l_scaled[n_z] };
-    let mu_constant = if with_constant { scale * mu[0] } else { 0.0 };
-    let mu_basis: Vec<f64> = mu.iter().skip(usize::from(with_constant)).map(|m| scale * m).collect();
-    let min_slope = check_strictly_increasing(&firmware::Gamma {
-        offset: mu_constant - intercept,
-        mu: &mu_basis,
-        odds_ratios,
-    })?;
-    let map = FittedMap::new(
-        target_name.to_owned(),
-        settings.normalisation,
-        gains,
-        intercept,
-        mu_constant,
-        mu_basis,
-        odds_ratios.clone(),
-        (range.min, range.max),
-        tabulation,
-    )?;
-    let gamma = map.gamma();
-    let (g0, g1) = (gamma.value(0.0), gamma.value(1.0));
-    let nonlinearity = check_grid()
-        .iter()
-        .map(|&eta| (gamma.value(eta) - g0 - eta * (g1 - g0)).abs())
-        .fold(0.0, f64::max)
-        / (g1 - g0);
-    let active_constraints = solved
-        .grid
-        .iter()
-        .filter(|&&eta| columns.slope(eta, mu) - epsilon <= ACTIVE_TOLERANCE * epsilon)
-        .count();
-    let diagnostics = Diagnostics {
-        status: solved.status,
-        iterations: solved.iterations,
-        solve_time_s: solved.solve_time,
-        constraints: solved.grid.len(),
-        active_constraints,
-        collapsed: active_constraints as f64 >= COLLAPSE_FRACTION * solved.grid.len() as f64,
-        nonlinearity,
-        refinement_rounds: solved.rounds,
-        min_slope_over_epsilon: min_slope / settings.epsilon,
-        reduced_condition: reduced.condition,
-        objective_over_epsilon_squared: (&reduced.r_mumu * mu).norm_squared() / (epsilon * epsilon),
-    };
-    let certificate = Certificate {
-        epsilon,
-        mean: mean / scale,
-        mu: mu.iter().copied().collect(),
-        with_constant,
-        grid: solved.grid,
-        lambda: solved.lambda,
-        nu: solved.nu,
-    };
-    Ok(Fit {
-        map,
-        linear,
-        diagnostics,
-        certificate,
-    })
+/// The learning data of one target reduced to what a fit needs, gathered in one pass over the
+/// windows: shared by every support of `L` the pruning tries.
+pub(crate) struct Learning<'a> {
+    range: TargetRange,
+    /// `R` of `[Z̃ | 1 | B | r]`.
+    r_factor: DMatrix<f64>,
+    linear: LinearMap,
+    settings: &'a MapSettings,
+    odds_ratios: &'a Arc<[f64]>,
+}
+
+impl<'a> Learning<'a> {
+    /// Pass 1 and 2 over the learning windows, and the linear floor.
+    pub(crate) fn gather(
+        data: &DataSet,
+        target: usize,
+        settings: &'a MapSettings,
+        odds_ratios: &'a Arc<[f64]>,
+    ) -> Result<Self, FitError> {
+        let range = TargetRange::gather(data, target)?;
+        let r_factor = accumulate(data, target, &range, odds_ratios);
+        let linear = linear_floor(&r_factor, &range.scales)?;
+        Ok(Learning {
+            range,
+            r_factor,
+            linear,
+            settings,
+            odds_ratios,
+        })
+    }
+
+    /// `n_z`: entries of the regressor.
+    pub(crate) fn regressor_len(&self) -> usize {
+        self.range.scales.len()
+    }
+
+    /// Every regressor entry.
+    pub(crate) fn dense(&self) -> Vec<usize> {
+        (0..self.regressor_len()).collect()
+    }
+
+    fn with_constant(&self) -> bool {
+        self.settings.normalisation == Normalisation::Paper
+    }
+
+    /// `R` of `[Z̃_S | 1 | B | r]` for the support `S` (increasing entries of `Z`): the full factor when
+    /// `S` is every entry, else the QR of its columns (`R_Sᵀ R_S = Z_Sᵀ Z_S`, same data, no new pass).
+    fn factor_of(&self, support: &[usize]) -> std::borrow::Cow<'_, DMatrix<f64>> {
+        let n_z = self.regressor_len();
+        if support.len() == n_z {
+            return std::borrow::Cow::Borrowed(&self.r_factor);
+        }
+        let columns: Vec<usize> = support.iter().copied().chain(n_z..self.r_factor.ncols()).collect();
+        std::borrow::Cow::Owned(self.r_factor.select_columns(&columns).qr().r())
+    }
+
+    /// The linear floor on the support `S`: what a linear map reading the same taps achieves.
+    fn linear_floor(&self, support: &[usize]) -> Result<LinearMap, FitError> {
+        if support.len() == self.regressor_len() {
+            return Ok(self.linear.clone());
+        }
+        let scales: Vec<f64> = support.iter().map(|&c| self.range.scales[c]).collect();
+        let on_support = linear_floor(&self.factor_of(support), &scales)?;
+        let mut gains = vec![0.0; self.regressor_len()];
+        for (&c, &g) in support.iter().zip(&on_support.gains) {
+            gains[c] = g;
+        }
+        Ok(LinearMap {
+            gains,
+            intercept: on_support.intercept,
+        })
+    }
+
+    /// The reduced problem in `μ` on the support `S`.
+    fn reduced(&self, support: &[usize]) -> Reduced {
+        Reduced::new(
+            &self.factor_of(support),
+            support.len(),
+            self.with_constant(),
+            self.range.windows,
+        )
+    }
+
+    /// Solves the QP with `L` restricted to `support` (the other gains are 0).
+    fn fit(&self, support: &[usize], target_name: &str, tabulation: Tabulation) -> Result<Fit, FitError> {
+        let (range, settings, odds_ratios) = (&self.range, self.settings, self.odds_ratios);
+        let with_constant = self.with_constant();
+        let reduced = self.reduced(support);
+        let linear = self.linear_floor(support)?;
+        let columns = Columns {
+            odds_ratios,
+            with_constant,
+        };
+
+        // The QP is solved at unit scale: Clarabel's tolerances are partly absolute, and with ε = 0.01 a
+        // whole objective of 3e-7 would sit near them. `(μ, L)` scale with `scale`: exactly for `intercept`
+        // (homogeneous), and for `paper` because ε and the equality's right-hand side are both divided by it.
+        let mean = 0.5 * (range.min + range.max);
+        let scale = if with_constant {
+            settings.epsilon.max(mean.abs())
+        } else {
+            settings.epsilon
+        };
+        let epsilon = settings.epsilon / scale;
+        let equality = with_constant.then_some(mean / scale);
+        let solved = solve_refined(&reduced, &columns, epsilon, equality, settings.monotonicity_grid)?;
+        let mu = &solved.mu;
+
+        // Recover L, undo the internal scale and the column scaling of Z.
+        let l_scaled = solve_upper(&reduced.r_ll, &(&reduced.r_lmu * mu)).map_err(|e| match e {
+            FitError::DependentRegressor { column } => FitError::DependentRegressor {
+                column: support.get(column).copied().unwrap_or(self.regressor_len()),
+            },
+            e => e,
+        })?;
+        let mut gains = vec![0.0; self.regressor_len()];
+        for (c, &entry) in support.iter().enumerate() {
+            gains[entry] = scale * l_scaled[c] / range.scales[entry];
+        }
+        let intercept = if with_constant {
+            0.0
+        } else {
+            scale * l_scaled[support.len()]
+        };
+        let mu_constant = if with_constant { scale * mu[0] } else { 0.0 };
+        let mu_basis: Vec<f64> = mu.iter().skip(usize::from(with_constant)).map(|m| scale * m).collect();
+        let min_slope = check_strictly_increasing(&firmware::Gamma {
+            offset: mu_constant - intercept,
+            mu: &mu_basis,
+            odds_ratios,
+        })?;
+        let map = FittedMap::new(
+            target_name.to_owned(),
+            settings.normalisation,
+            gains,
+            intercept,
+            mu_constant,
+            mu_basis,
+            odds_ratios.clone(),
+            (range.min, range.max),
+            tabulation,
+        )?;
+        let gamma = map.gamma();
+        let (g0, g1) = (gamma.value(0.0), gamma.value(1.0));
+        let nonlinearity = check_grid()
+            .iter()
+            .map(|&eta| (gamma.value(eta) - g0 - eta * (g1 - g0)).abs())
+            .fold(0.0, f64::max)
+            / (g1 - g0);
+        let active_constraints = solved
+            .grid
+            .iter()
+            .filter(|&&eta| columns.slope(eta, mu) - epsilon <= ACTIVE_TOLERANCE * epsilon)
+            .count();
+        let diagnostics = Diagnostics {
+            status: solved.status,
+            iterations: solved.iterations,
+            solve_time_s: solved.solve_time,
+            constraints: solved.grid.len(),
+            active_constraints,
+            collapsed: active_constraints as f64 >= COLLAPSE_FRACTION * solved.grid.len() as f64,
+            nonlinearity,
+            refinement_rounds: solved.rounds,
+            min_slope_over_epsilon: min_slope / settings.epsilon,
+            reduced_condition: reduced.condition,
+            objective_over_epsilon_squared: (&reduced.r_mumu * mu).norm_squared() / (epsilon * epsilon),
+        };
+        let certificate = Certificate {
+            epsilon,
+            mean: mean / scale,
+            mu: mu.iter().copied().collect(),
+            with_constant,
+            grid: solved.grid,
+            lambda: solved.lambda,
+            nu: solved.nu,
+        };
+        Ok(Fit {
+            map,
+            linear,
+            diagnostics,
+            certificate,
+        })
+    }
 }
 
 /// A solution of the reduced QP with its multipliers in `μ` space.

@@ -80,16 +80,17 @@ pub(super) fn accumulate(data: &DataSet, target: usize, range: &TargetRange, odd
     qr.finish()
 }
 
-/// Least squares of `r` on `[Z̃ | 1]`: the leading block of `R` and its last column.
-pub(super) fn linear_floor(r_factor: &DMatrix<f64>, range: &TargetRange) -> Result<LinearMap, FitError> {
-    let n_z = range.scales.len();
+/// Least squares of `r` on `[Z̃ | 1]`: the leading block of `R` and its last column. `scales` are the
+/// RMS of the `Z̃` columns `R` was built from (a support's, for a pruned `L`).
+pub(super) fn linear_floor(r_factor: &DMatrix<f64>, scales: &[f64]) -> Result<LinearMap, FitError> {
+    let n_z = scales.len();
     let last = r_factor.ncols() - 1;
     let coefficients = solve_upper(
         &r_factor.view((0, 0), (n_z + 1, n_z + 1)).into_owned(),
         &r_factor.view((0, last), (n_z + 1, 1)).column(0).into_owned(),
     )?;
     Ok(LinearMap {
-        gains: (0..n_z).map(|c| coefficients[c] / range.scales[c]).collect(),
+        gains: (0..n_z).map(|c| coefficients[c] / scales[c]).collect(),
         intercept: coefficients[n_z],
     })
 }

@@ -12,7 +12,7 @@ use rand_chacha::ChaCha8Rng;
 use rand_distr::StandardNormal;
 
 /// A data set with horizon 1 whose "measurements" are the given regressors.
-fn pairs(samples: &[(Vec<f64>, f64)]) -> DataSet {
+pub(super) fn pairs(samples: &[(Vec<f64>, f64)]) -> DataSet {
     let run = Run {
         states: vec![vec![]; samples.len()].into(),
         inputs: vec![vec![]; samples.len()].into(),
@@ -26,7 +26,7 @@ fn pairs(samples: &[(Vec<f64>, f64)]) -> DataSet {
     }
 }
 
-fn settings(normalisation: Normalisation, nm: usize, beta: f64, epsilon: f64) -> MapSettings {
+pub(super) fn settings(normalisation: Normalisation, nm: usize, beta: f64, epsilon: f64) -> MapSettings {
     MapSettings {
         horizon: 1,
         nm,
@@ -34,11 +34,12 @@ fn settings(normalisation: Normalisation, nm: usize, beta: f64, epsilon: f64) ->
         epsilon,
         normalisation,
         monotonicity_grid: 201,
+        taps: None,
     }
 }
 
 /// Regressors and targets of a known map r = 3 + 2 Γ⁻¹(Lᵀ Z), Γ from the same basis family.
-fn synthetic(seed: u64, count: usize) -> Vec<(Vec<f64>, f64)> {
+pub(super) fn synthetic(seed: u64, count: usize) -> Vec<(Vec<f64>, f64)> {
     let odds_ratios: Vec<f64> = basis::paper_odds_ratios(3, 1.0).collect();
     let mu = [0.2, 1.5, 0.1, 0.8];
     let gamma = firmware::Gamma {
