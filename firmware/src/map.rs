@@ -47,13 +47,15 @@ impl Saturation {
 }
 
 impl<T: Scalar> TargetMap<'_, T> {
-    /// `t = offset + Σ_i gains_i z_i`, summed in that order. Entries beyond the shorter of `gains` and
-    /// `regressor` are ignored.
+    /// `t = offset + Σ_i gains_i z_i`, summed in that order, skipping pruned taps (gain exactly 0, as
+    /// the generated code does). Entries beyond the shorter of `gains` and `regressor` are ignored.
     #[must_use]
     pub fn project(&self, regressor: &[T]) -> T {
         let mut sum = self.offset;
         for (&g, &z) in self.gains.iter().zip(regressor) {
-            sum += g * z;
+            if g != T::ZERO {
+                sum += g * z;
+            }
         }
         sum
     }

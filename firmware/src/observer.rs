@@ -45,7 +45,8 @@ pub trait Design<T: Scalar, const N: usize, const NY: usize, const NU: usize, co
 
 /// Every map's estimate from a window (oldest first), summing `offset + Σ g_i z_i` in regressor order
 /// (all outputs newest first, then all inputs), so that it rounds exactly as [`TargetMap::project`]
-/// on the same regressor.
+/// on the same regressor. Pruned taps (gain exactly 0, sparse `L`) are skipped, as the generated
+/// straight-line code leaves them out: the branch depends on the constants only, never on the data.
 #[must_use]
 pub fn estimate_by_loops<T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: usize>(
     maps: &[TargetMap<'_, T>; NT],
@@ -56,12 +57,16 @@ pub fn estimate_by_loops<T: Scalar, const N: usize, const NY: usize, const NU: u
         let mut sum = map.offset;
         for (gains, sample) in output_gains.chunks_exact(NY.max(1)).zip(window.iter().rev()) {
             for (&g, &y) in gains.iter().zip(&sample.y) {
-                sum += g * y;
+                if g != T::ZERO {
+                    sum += g * y;
+                }
             }
         }
         for (gains, sample) in input_gains.chunks_exact(NU.max(1)).zip(window.iter().rev()) {
             for (&g, &u) in gains.iter().zip(&sample.u) {
-                sum += g * u;
+                if g != T::ZERO {
+                    sum += g * u;
+                }
             }
         }
         map.inverse.evaluate(sum)
