@@ -35,6 +35,8 @@ pub mod vanderpol;
 #[rustfmt::skip]
 pub mod vanderpol_searched;
 #[rustfmt::skip]
+pub mod vanderpol_sparse;
+#[rustfmt::skip]
 pub mod vanderpol_uncertain;
 
 /// Family `ecoli`: one design per value of output `X_meas` at the start of a batch
@@ -101,6 +103,7 @@ macro_rules! for_each_design {
         $callback!(two_tanks);
         $callback!(vanderpol);
         $callback!(vanderpol_searched);
+        $callback!(vanderpol_sparse);
         $callback!(vanderpol_uncertain);
     };
 }

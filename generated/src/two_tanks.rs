@@ -48,6 +48,11 @@ pub const STATE_NAMES: [&str; STATES] = ["h1", "h2"];
 /// Target names, in estimate order.
 pub const TARGET_NAMES: [&str; TARGETS] = ["h1", "h2"];
 
+/// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
+/// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
+/// them against the emulated Cortex-M4F.
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 4] = [("map", 186), ("ekf", 992), ("corrected", 796), ("ekf_started", 1000)];
+
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
 /// Gains `g_i` of `h1`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`.

@@ -48,6 +48,11 @@ pub const STATE_NAMES: [&str; STATES] = ["x1", "x2"];
 /// Target names, in estimate order.
 pub const TARGET_NAMES: [&str; TARGETS] = ["x1", "x2"];
 
+/// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
+/// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
+/// them against the emulated Cortex-M4F.
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 4] = [("map", 134), ("ekf", 241), ("corrected", 149), ("ekf_started", 249)];
+
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
 /// Gains `g_i` of `x1`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`.

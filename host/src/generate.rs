@@ -219,6 +219,8 @@ pub fn design_source(
         source,
     };
     let state_targets = crate::observers::corrected::state_targets(design).ok();
+    let instructions: Vec<(&'static str, f64)> =
+        comparison.observers.iter().map(|o| (o.kind, o.instructions)).collect();
     let observers = emit::model::Observers {
         ekf: comparison.ekf.as_ref().map(|t| &t.constants),
         started: comparison.started.as_ref().map(|(p0, t)| (p0.as_slice(), t.as_slice())),
@@ -229,6 +231,7 @@ pub fn design_source(
             .map(|t| &t.constants)
             .zip(state_targets.as_deref()),
         kind: comparison.chosen.0,
+        instructions: &instructions,
     };
     let source = emit::design_file(design, result, spec_path, &code, &observers).map_err(emit_error)?;
     Ok((comparison, source))

@@ -48,9 +48,14 @@ pub const STATE_NAMES: [&str; STATES] = {{ state_list }};
 /// Target names, in estimate order.
 pub const TARGET_NAMES: [&str; TARGETS] = [{% for t in targets %}"{{ t.name }}"{% if !loop.last %}, {% endif %}{% endfor %}];
 
+/// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
+/// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
+/// them against the emulated Cortex-M4F.
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); {{ predicted_len }}] = [{{ predicted }}];
+
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 {% for t in targets %}
-/// Gains `g_i` of `{{ t.name }}`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`.
+/// Gains `g_i` of `{{ t.name }}`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`.{{ t.taps_note }}
 const GAINS_{{ t.upper }}: [f32; REGRESSOR_LEN] = [
 {{ t.gains }}
 ];

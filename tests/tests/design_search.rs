@@ -3,7 +3,7 @@
 //! the budget and the choice rule hold; the search is deterministic though parallel.
 
 use host::data::DataSet;
-use host::spec::{Budget, Search};
+use host::spec::{Budget, MapSettings, Search, Taps};
 use indicatif::ProgressBar;
 
 /// Mean over targets of RMSE / spread of `result`'s certified maps on the tuning windows ending at
@@ -41,6 +41,7 @@ fn a_sketched_score_is_the_certified_score_and_the_budget_and_rule_hold() {
         horizons: vec![8, 10],
         nms: vec![5],
         betas: vec![0.5],
+        taps: Taps::All,
     };
     let outcome = host::search::run(&design, &search, &ProgressBar::hidden()).unwrap();
     let [short, long] = [&outcome.candidates[0], &outcome.candidates[1]];
@@ -77,4 +78,63 @@ fn a_sketched_score_is_the_certified_score_and_the_budget_and_rule_hold() {
     let again = host::search::run(&design, &search, &ProgressBar::hidden()).unwrap();
     let scores = |o: &host::search::Outcome| o.candidates.iter().map(|c| c.score).collect::<Vec<_>>();
     assert_eq!(scores(&again), scores(&outcome));
+}
+
+/// Sparse `L` in the search: a pruned candidate's sketched score is the score of the certified fit
+/// `gen` makes with that `taps` (the pruning path of a count does not depend on the other counts
+/// offered), its cost counts only the kept taps, and a budget only pruning meets is met by pruning.
+#[test]
+fn a_pruned_candidate_is_the_fit_gen_makes_and_meets_a_budget_the_dense_map_cannot() {
+    let mut design = integration_tests::load_relative("host/specs/vanderpol.toml");
+    let search = Search {
+        horizons: vec![10],
+        nms: vec![5],
+        betas: vec![0.5],
+        taps: Taps::Counts(vec![4, 7]),
+    };
+    let outcome = host::search::run(&design, &search, &ProgressBar::hidden()).unwrap();
+    let taps: Vec<usize> = outcome.candidates.iter().map(|c| c.taps).collect();
+    assert_eq!(taps, [7, 4]);
+    let four = &outcome.candidates[1];
+    let pruned = host::spec::Design {
+        map: MapSettings {
+            taps: Some(4),
+            ..design.map
+        },
+        ..design.clone()
+    };
+    let certified = certified_score(&pruned, 9);
+    println!(
+        "N = 10, 4 taps: sketched {:.6}, certified {certified:.6}",
+        four.score.unwrap()
+    );
+    assert!((four.score.unwrap() / certified - 1.0).abs() < 1e-3);
+    let result = integration_tests::build(&pruned);
+    for t in &result.targets {
+        assert_eq!(t.fit.map.gains.iter().filter(|&&g| g != 0.0).count(), 4);
+    }
+    // The cost counts the kept taps only: the same maps with their 6 pruned gains made non-zero cost
+    // 2 · 6 taps more.
+    let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
+    let mut dense = maps.clone();
+    for map in &mut dense {
+        for g in &mut map.gains {
+            if *g == 0.0 {
+                *g = 1e-30;
+            }
+        }
+    }
+    let of = |maps: &[host::fit::maps::FittedMap]| {
+        host::search::cost::of_maps(&maps.iter().collect::<Vec<_>>(), 10, design.tau).instructions
+    };
+    assert!((of(&dense) - of(&maps) - 12.0 * host::search::cost::PER_TAP).abs() < 1e-9);
+    let (seven, cost) = (
+        outcome.candidates[0].cost.unwrap().instructions,
+        four.cost.unwrap().instructions,
+    );
+    assert!(cost < seven, "{cost} {seven}");
+    // A budget between the two is met by the 4-tap candidate only.
+    design.budget.instructions = Some(((cost + seven) / 2.0) as u64);
+    let budgeted = host::search::run(&design, &search, &ProgressBar::hidden()).unwrap();
+    assert_eq!(budgeted.chosen().taps, 4);
 }

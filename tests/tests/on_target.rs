@@ -245,6 +245,36 @@ fn every_observer_on_the_emulated_cortex_m4f() {
             map.flash_bytes
         );
     }
+    // The cost model of every observer kind, as each generated design states it
+    // (`PREDICTED_INSTRUCTIONS`), against the chip: what `auto` and the budget rely on.
+    let mut predicted: std::collections::BTreeMap<&str, &[(&str, u32)]> = Default::default();
+    macro_rules! predicted_of {
+        ($d:ident) => {
+            predicted.insert(generated::$d::NAME, &generated::$d::PREDICTED_INSTRUCTIONS);
+        };
+    }
+    generated::for_each_design!(predicted_of);
+    let observers = all.observers.iter().flat_map(|(name, observers)| {
+        observers
+            .iter()
+            .map(move |(kind, run)| (name, kind.report_name(), run.phases().unwrap().steady))
+    });
+    let filters = all
+        .filters
+        .iter()
+        .map(|(name, filter)| (name, "ekf", filter.phases().unwrap().steady));
+    for (name, kind, steady) in observers.chain(filters) {
+        let measured = on_target::spread(&steady).1 as f64;
+        let &(_, prediction) = predicted[name.as_str()]
+            .iter()
+            .find(|(k, _)| *k == kind)
+            .unwrap_or_else(|| panic!("{name}: no predicted cost for {kind}"));
+        println!("{name} {kind}: instructions predicted {prediction}, measured {measured}");
+        assert!(
+            (f64::from(prediction) / measured - 1.0).abs() <= host::search::cost::TOLERANCE,
+            "{name} {kind}: the cost model predicts {prediction} instructions, the chip measures {measured}: recalibrate host/src/search/cost.rs"
+        );
+    }
     assert!(
         on_target::panic_check_catches_a_reachable_panic().unwrap(),
         "the no-panic check did not catch a reachable panic"

@@ -55,6 +55,64 @@ fn example_1_passes_every_gate_and_each_gate_bites() {
     }
     let map = &mut result.targets[0].fit.map;
     (map.r_min, map.r_max) = full;
+
+    // An EKF the budget does not allow is no choice, so it does not count: Example 1's EKFs are
+    // predicted at ~241 (`ekf`) and ~249 (`ekf_started`) instructions.
+    comparison.chosen.0 = host::spec::ObserverKind::Map;
+    let mut budgeted = design.clone();
+    budgeted.budget.instructions = Some(200);
+    assert_eq!(check(&budgeted, &result, &comparison), Vec::new());
+    budgeted.budget.instructions = Some(260);
+    assert_eq!(check(&budgeted, &result, &comparison).len(), 2);
+}
+
+/// `auto` takes the best kind within `[budget] instructions`; a kind the spec names beyond it, or a
+/// budget no kind fits in, is an error naming the field.
+#[test]
+fn the_observer_kind_is_chosen_within_the_instruction_budget() {
+    use host::spec::ObserverKind::{Auto, Corrected, Ekf, Map};
+    let (mut design, result, comparison) = example_1();
+    let spreads: Vec<f64> = result
+        .targets
+        .iter()
+        .map(|t| host::fit::evaluate::evaluate(&comparison.tuning, t.index, &t.fit).target_spread)
+        .collect();
+    let predicted = |kind: &str| {
+        comparison
+            .observers
+            .iter()
+            .find(|o| o.kind == kind)
+            .unwrap()
+            .instructions
+    };
+    // Map 126, corrected 149, map-started EKF 249 (checked against the chip in `on_target`).
+    assert_eq!(
+        [predicted("map"), predicted("corrected"), predicted("ekf_started")],
+        [126.0, 149.0, 249.0]
+    );
+    let choose = |design: &host::spec::Design| host::observers::choose(design, &comparison.observers, &spreads);
+    design.observer = Auto;
+    for (budget, kind) in [
+        (None, Corrected),
+        (Some(300), Corrected),
+        (Some(148), Map),
+        (Some(126), Map),
+    ] {
+        design.budget.instructions = budget;
+        assert_eq!(choose(&design).unwrap().0, kind, "budget {budget:?}");
+    }
+    design.budget.instructions = Some(125);
+    let error = choose(&design).unwrap_err().to_string();
+    assert!(
+        error.contains("budget.instructions") && error.contains("125"),
+        "{error}"
+    );
+    design.observer = Ekf;
+    design.budget.instructions = Some(200);
+    let error = choose(&design).unwrap_err().to_string();
+    assert!(error.contains("observer.kind") && error.contains("~249"), "{error}");
+    design.budget.instructions = Some(250);
+    assert_eq!(choose(&design).unwrap().0, Ekf);
 }
 
 #[test]

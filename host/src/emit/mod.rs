@@ -165,6 +165,8 @@ struct TargetTables {
     proven_bound: String,
     sampled_error: String,
     dot: String,
+    /// For a pruned `L`: how many gains are non-zero (empty when all are).
+    taps_note: String,
 }
 
 /// `y[0].is_finite() & … & u[…].is_finite()`: every value, no early exit (`true` for none).
@@ -184,6 +186,19 @@ fn finite_check(outputs: usize, inputs: usize) -> String {
         format!("{unused}true")
     } else {
         format!("{unused}{}", terms.join(" & "))
+    }
+}
+
+/// The doc line of a pruned `L` (sparse, `[map] taps`): which share of the gains the chip reads.
+fn taps_note(gains: &[f32]) -> String {
+    let kept = gains.iter().filter(|&&g| g != 0.0).count();
+    if kept == gains.len() {
+        String::new()
+    } else {
+        format!(
+            "\n/// `L` is sparse: {kept} of the {} gains are non-zero, and only those are multiplied on the chip.",
+            gains.len()
+        )
     }
 }
 
@@ -239,6 +254,9 @@ struct DesignFile {
     input_list: String,
     regressor_len: usize,
     finite_check: String,
+    /// `("kind", instructions)` of every observer kind, predicted.
+    predicted: String,
+    predicted_len: usize,
     targets: Vec<TargetTables>,
     recorded_len: usize,
     recorded_y: String,
@@ -391,6 +409,7 @@ pub fn design_file(
                 design.model.inputs.len(),
             ),
             search_steps: table.starts.as_ref().map(|starts| search_steps(&upper, starts.len())),
+            taps_note: taps_note(&rounded.gains),
             upper,
             expr: doc_code(target.expr.text()),
             rmse: format!("{:.4}", t.validation.map.rmse),
@@ -442,6 +461,13 @@ pub fn design_file(
         refused: refused_samples(result.scenario.measurements.len()),
         states: design.model.states.len(),
         state_list: format!("{:?}", design.model.states),
+        predicted: observers
+            .instructions
+            .iter()
+            .map(|(kind, instructions)| format!("(\"{kind}\", {instructions:.0})"))
+            .collect::<Vec<_>>()
+            .join(", "),
+        predicted_len: observers.instructions.len(),
         // Last: the maps' checks above (data beyond f32, the sample period) name the cause where the
         // EKF's constants, derived from the same data, would only fail to be stored.
         model: model::model_source(design, code, observers)?.trim_end().to_owned(),

@@ -125,6 +125,9 @@ pub struct Observers<'a> {
     pub corrected: Option<(&'a CorrectionConstants, &'a [usize])>,
     /// `observer()`'s kind: `Map`, `Corrected` or `Ekf` (never `Auto`: chosen before).
     pub kind: ObserverKind,
+    /// Every observer kind the design has and its predicted instructions per steady sample
+    /// ([`crate::search::cost`]), in the report's order.
+    pub instructions: &'a [(&'static str, f64)],
 }
 
 /// The Rust source of the design's model (`parameters`, `Plant`, `targets`), its EKF (`ekf`), its

@@ -12,6 +12,7 @@ pub mod started;
 use crate::data::{self, DataSet, Rows, Run};
 use crate::fit::DesignResult;
 use crate::plant::ModelCode;
+use crate::search::cost;
 use crate::spec::{Design, ObserverKind, SpecError};
 
 /// Errors of one observer on one target.
@@ -67,6 +68,8 @@ pub const TRANSIENT_TIME: f64 = 2.0;
 pub struct ObserverFigures {
     /// `"map"`, `"ekf"` (from the box centre), `"corrected"` or `"ekf_started"` (from the map).
     pub kind: &'static str,
+    /// Predicted instructions per sample on the chip in steady state ([`crate::search::cost`]).
+    pub instructions: f64,
     /// Per target.
     pub targets: Vec<Figures>,
     /// Its estimate of every target at every sample of the scenario (NaN before its first).
@@ -212,7 +215,7 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
     let windows = |run: &Run| horizon - 1..run.targets.len();
     // One observer judged everywhere: `estimate(run, is_scenario)` is its estimate of every target
     // at every sample of `run` (a scenario's EKF starts from `scenario.observer_x0`).
-    let judge = |kind: &'static str, estimate: &dyn Fn(&Run, bool) -> Rows| -> ObserverFigures {
+    let judge = |kind: &'static str, instructions: f64, estimate: &dyn Fn(&Run, bool) -> Rows| -> ObserverFigures {
         let validation: Vec<Rows> = result.validation.runs.iter().map(|r| estimate(r, false)).collect();
         let scenario = estimate(&result.scenario, true);
         let on_tuning: Vec<Rows> = tuning.runs.iter().map(|r| estimate(r, false)).collect();
@@ -256,12 +259,17 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
             .collect();
         ObserverFigures {
             kind,
+            instructions,
             targets,
             mismatch_scenario: mismatch.as_ref().map(|(m, _)| estimate(&m.scenario, true)),
             scenario,
         }
     };
-    let mut observers = vec![judge("map", &|run, _| map_estimates(result, horizon, run))];
+    let maps: Vec<&crate::fit::maps::FittedMap> = result.targets.iter().map(|t| &t.fit.map).collect();
+    let map_cost = cost::of_maps(&maps, horizon, design.tau);
+    let mut observers = vec![judge("map", map_cost.instructions, &|run, _| {
+        map_estimates(result, horizon, run)
+    })];
     if let Some(tuned) = &tuned {
         let centre = ekf::box_centre(design);
         let scenario_start = design
@@ -269,7 +277,8 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
             .as_ref()
             .and_then(|s| s.observer_x0.clone())
             .unwrap_or_else(|| centre.clone());
-        observers.push(judge("ekf", &|run, is_scenario| {
+        let filter = crate::plant::kalman::filter_code(code, &tuned.constants);
+        observers.push(judge("ekf", cost::of_ekf(&filter), &|run, is_scenario| {
             let x0 = if is_scenario { &scenario_start } else { &centre };
             ekf::estimate_run(code, &tuned.constants, x0, run).expect("size checked by tune")
         }));
@@ -279,15 +288,19 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         let maps: Vec<Rows> = tuning.runs.iter().map(|r| map_estimates(result, horizon, r)).collect();
         let tuned = corrected::tune(&setting, &tuning, &maps, &spreads);
         let programs = crate::plant::correction::correction_code(code, &tuned.constants);
-        observers.push(judge("corrected", &|run, _| {
-            corrected::estimate_rows(
-                &setting,
-                &programs,
-                &tuned.constants,
-                &map_estimates(result, horizon, run),
-                run,
-            )
-        }));
+        observers.push(judge(
+            "corrected",
+            cost::of_corrected(&programs, &map_cost),
+            &|run, _| {
+                corrected::estimate_rows(
+                    &setting,
+                    &programs,
+                    &tuned.constants,
+                    &map_estimates(result, horizon, run),
+                    run,
+                )
+            },
+        ));
         tuned
     });
     let started = match (&tuned, corrected::state_targets(design)) {
@@ -295,7 +308,7 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
             let map = &observers[0].targets;
             let p0: Vec<f64> = state_targets.iter().map(|&t| map[t].rmse_tuning.powi(2)).collect();
             let filter = crate::plant::kalman::filter_code(code, &tuned.constants);
-            observers.push(judge("ekf_started", &|run, _| {
+            observers.push(judge("ekf_started", cost::of_started(&filter), &|run, _| {
                 let map: Vec<Vec<f64>> = map_estimates(result, horizon, run)
                     .iter()
                     .map(<[f64]>::to_vec)
@@ -354,27 +367,41 @@ pub fn row_name(kind: ObserverKind) -> &'static str {
 /// How much worse than the best a cheaper kind's score may be and still be chosen by `auto`.
 pub const CHEAPER_WITHIN: f64 = 0.02;
 
-/// The kind `observer()` is: the spec's, or for `auto` the lowest score on the tuning runs (mean RMSE / spread),
-/// except that a cheaper kind (map, then corrected, then the map-started EKF) within
-/// [`CHEAPER_WITHIN`] of the best is preferred. Errors when the spec asks for a kind the design
-/// cannot have.
+/// The kind `observer()` is: the spec's, or for `auto` the lowest score on the tuning runs (mean
+/// RMSE / spread) among the kinds within `[budget] instructions` (as [`cost`] predicts them), except
+/// that a cheaper kind (map, then corrected, then the map-started EKF) within [`CHEAPER_WITHIN`] of
+/// the best is preferred. Errors when the spec asks for a kind the design cannot have or the budget
+/// does not allow.
 pub fn choose(
     design: &Design,
     observers: &[ObserverFigures],
     spreads: &[f64],
 ) -> Result<(ObserverKind, String), SpecError> {
-    let scored: Vec<(ObserverKind, &str, f64)> = KINDS
+    let scored: Vec<(ObserverKind, &str, f64, f64)> = KINDS
         .iter()
         .filter_map(|&(kind, name)| {
             observers
                 .iter()
                 .find(|o| o.kind == name)
-                .map(|o| (kind, name, score(o, spreads)))
+                .map(|o| (kind, name, score(o, spreads), o.instructions))
         })
         .collect();
+    let budget = design.budget.instructions.map(|b| b as f64);
+    let within = |instructions: f64| budget.is_none_or(|b| instructions <= b);
     if design.observer != ObserverKind::Auto {
         return match scored.iter().find(|s| s.0 == design.observer) {
-            Some(&(kind, name, score)) => Ok((kind, format!("`{name}` as the spec asks (tuning score {score:.4})"))),
+            Some(&(_, name, _, instructions)) if !within(instructions) => Err(design.error(
+                "observer.kind",
+                format!(
+                    "the `{name}` observer needs ~{instructions:.0} instructions per sample, more than `budget.instructions` = {}",
+                    budget.unwrap_or_default()
+                ),
+                "raise `budget.instructions`, or set kind = \"auto\" to take the best kind within it",
+            )),
+            Some(&(kind, name, score, instructions)) => Ok((
+                kind,
+                format!("`{name}` as the spec asks (tuning score {score:.4}, ~{instructions:.0} instructions)"),
+            )),
             None => Err(design.error(
                 "observer.kind",
                 format!("the design cannot have a `{:?}` observer: it needs every state as a target and a model the host can filter", design.observer).to_lowercase(),
@@ -382,13 +409,28 @@ pub fn choose(
             )),
         };
     }
-    let best = scored.iter().map(|s| s.2).fold(f64::INFINITY, f64::min);
-    let &(kind, name, _) = scored
+    let allowed: Vec<&(ObserverKind, &str, f64, f64)> = scored.iter().filter(|s| within(s.3)).collect();
+    let best = allowed.iter().map(|s| s.2).fold(f64::INFINITY, f64::min);
+    let Some(&&(kind, name, _, _)) = allowed.iter().find(|s| s.2 <= best * (1.0 + CHEAPER_WITHIN)) else {
+        return Err(design.error(
+            "budget.instructions",
+            format!(
+                "no observer kind fits in {} instructions per sample (the map needs ~{:.0})",
+                budget.unwrap_or_default(),
+                scored.first().map_or(f64::NAN, |s| s.3)
+            ),
+            "raise `budget.instructions`, or shorten the map (`map.horizon`, `map.taps`)",
+        ));
+    };
+    let all: Vec<String> = scored
         .iter()
-        .find(|s| s.2 <= best * (1.0 + CHEAPER_WITHIN))
-        .expect("the map is always scored");
-    let all: Vec<String> = scored.iter().map(|(_, n, s)| format!("{n} {s:.4}")).collect();
-    Ok((kind, format!("`{name}` by `auto`: the lowest tuning score (mean RMSE / spread; {}), a cheaper kind preferred within {:.0} %", all.join(", "), CHEAPER_WITHIN * 100.0)))
+        .map(|&(_, n, s, i)| {
+            let over = if within(i) { "" } else { ", over budget" };
+            format!("{n} {s:.4} at ~{i:.0} instructions{over}")
+        })
+        .collect();
+    let limit = budget.map_or(String::new(), |b| format!(" within `budget.instructions` = {b}"));
+    Ok((kind, format!("`{name}` by `auto`: the lowest tuning score (mean RMSE / spread; {}){limit}, a cheaper kind preferred within {:.0} %", all.join(", "), CHEAPER_WITHIN * 100.0)))
 }
 
 /// See [`Comparison::chip_model_error`].

@@ -11,7 +11,9 @@
 //!   [`WEAK_FRACTION`] of the target's spread: it barely beats
 //!   predicting the mean, and the target may not be observable from these measurements over N.
 //! * [`Gate::EkfBetter`]: the chosen observer's validation RMSE is more than [`EKF_FACTOR`] times the
-//!   design's EKF's (either start) on some target: the EKF is the better choice for this system.
+//!   design's EKF's (either start) on some target: the EKF is the better choice for this system. An
+//!   EKF the spec's `[budget] instructions` does not allow (as [`crate::search::cost`] predicts it)
+//!   is not a choice, so it does not count.
 
 use std::fmt;
 
@@ -168,8 +170,20 @@ pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) ->
                 .map(|o| o.targets[t.index].rmse_validation)
                 .filter(|v| v.is_finite())
         };
+        let affordable = |kind: &str| {
+            let instructions = comparison
+                .observers
+                .iter()
+                .find(|o| o.kind == kind)
+                .map(|o| o.instructions);
+            match (design.budget.instructions, instructions) {
+                (Some(budget), Some(instructions)) => instructions <= budget as f64,
+                _ => true,
+            }
+        };
         let best_ekf = ["ekf", "ekf_started"]
             .into_iter()
+            .filter(|kind| affordable(kind))
             .filter_map(|kind| rmse_of(kind).map(|v| (kind, v)))
             .min_by(|a, b| a.1.total_cmp(&b.1));
         if let (Some(rmse), Some((ekf, ekf_rmse))) = (rmse_of(chosen), best_ekf) {
