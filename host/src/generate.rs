@@ -158,8 +158,15 @@ pub struct Emitted {
     pub taps: Option<Vec<crate::search::sparsity::Row>>,
 }
 
-/// Searches (when the spec asks), fits and emits `design`, loaded from `spec` (nothing is written).
-pub fn emit_design(design: Design, spec: &Path, progress: &ProgressBar) -> Result<Emitted, GenerateError> {
+/// Searches (when the spec asks), fits and emits `design`, loaded from `spec` (nothing is written):
+/// as a module of the `generated` crate, or with `standalone = Some(crate name)` as the module of a
+/// crate of its own.
+pub fn emit_design(
+    design: Design,
+    spec: &Path,
+    standalone: Option<&str>,
+    progress: &ProgressBar,
+) -> Result<Emitted, GenerateError> {
     let (design, search) = crate::search::settle(design, progress)?;
     if search.is_some() {
         progress.set_length(fit::steps(&design));
@@ -179,7 +186,14 @@ pub fn emit_design(design: Design, spec: &Path, progress: &ProgressBar) -> Resul
         Ok(workspace) => emit::portable_spec_path(spec, &workspace),
         Err(_) => spec.display().to_string(),
     };
-    let (comparison, source) = design_source(&design, &result, &spec_path, spec, progress)?;
+    let placement = match standalone {
+        None => emit::Placement::Generated { spec: &spec_path },
+        Some(crate_name) => emit::Placement::Standalone {
+            crate_name,
+            source: &spec_path,
+        },
+    };
+    let (comparison, source) = design_source(&design, &result, &placement, spec, progress)?;
     Ok(Emitted {
         design,
         result,
@@ -206,7 +220,7 @@ pub fn model_code(design: &Design) -> Result<crate::plant::ModelCode, SpecError>
 pub fn design_source(
     design: &Design,
     result: &DesignResult,
-    spec_path: &str,
+    placement: &emit::Placement<'_>,
     spec: &Path,
     progress: &ProgressBar,
 ) -> Result<(crate::observers::Comparison, String), GenerateError> {
@@ -233,7 +247,7 @@ pub fn design_source(
         kind: comparison.chosen.0,
         instructions: &instructions,
     };
-    let source = emit::design_file(design, result, spec_path, &code, &observers).map_err(emit_error)?;
+    let source = emit::design_file(design, result, placement, &code, &observers).map_err(emit_error)?;
     Ok((comparison, source))
 }
 
@@ -327,7 +341,7 @@ pub fn run(
     let mut failed = 0;
     for (spec, design) in designs {
         let bar = progress(&design);
-        let one = prepare(design, &spec, &to.reports, &bar);
+        let one = prepare(design, &spec, None, |name| to.reports.join(name), &bar);
         bar.finish_and_clear();
         match one {
             Ok(one) => {
@@ -411,9 +425,16 @@ pub struct Prepared {
     pub warnings: Vec<reporting::gates::Gate>,
 }
 
-fn prepare(design: Design, spec: &Path, reports: &Path, bar: &ProgressBar) -> Result<Prepared, GenerateError> {
-    let emitted = emit_design(design, spec, bar)?;
-    let folder = reports.join(&emitted.design.name);
+/// Fits, emits and reports one design in memory; its report goes to `folder(name)`.
+pub(crate) fn prepare(
+    design: Design,
+    spec: &Path,
+    standalone: Option<&str>,
+    folder: impl FnOnce(&str) -> PathBuf,
+    bar: &ProgressBar,
+) -> Result<Prepared, GenerateError> {
+    let emitted = emit_design(design, spec, standalone, bar)?;
+    let folder = folder(&emitted.design.name);
     let mut report = reporting::report(&emitted.design, &emitted.result, &emitted.comparison);
     report.search = emitted.search.as_ref();
     report.taps = emitted.taps.as_deref();
@@ -432,28 +453,36 @@ fn prepare(design: Design, spec: &Path, reports: &Path, bar: &ProgressBar) -> Re
     })
 }
 
-/// Writes one prepared design: its report, figures and observer file (last).
-fn write(one: Prepared, to: &Destinations) -> Result<Outcome, GenerateError> {
-    let folder = one.folder;
-    let io = |path: &Path| {
-        let path = path.to_owned();
-        move |source| GenerateError::Io { path, source }
-    };
-    let report_files = reporting::write_texts(&one.report, &folder).map_err(io(&folder))?;
+/// Writes a prepared design's report (JSON, Markdown) and figures into its folder.
+pub(crate) fn write_report(one: &Prepared) -> Result<(Vec<PathBuf>, Vec<PathBuf>), GenerateError> {
+    let folder = &one.folder;
+    let report_files = reporting::write_texts(&one.report, folder).map_err(|source| GenerateError::Io {
+        path: folder.clone(),
+        source,
+    })?;
     let Emitted {
         design,
         result,
-        source,
         comparison,
         search,
-        taps: _,
-    } = one.emitted;
-    let mut figures = plots::draw(&design, &result, &comparison, &folder)?;
-    if let Some(search) = &search {
-        figures.extend(plots::draw_search(&design, search, &folder)?);
+        ..
+    } = &one.emitted;
+    let mut figures = plots::draw(design, result, comparison, folder)?;
+    if let Some(search) = search {
+        figures.extend(plots::draw_search(design, search, folder)?);
     }
+    Ok((report_files, figures))
+}
+
+/// Writes one prepared design: its report, figures and observer file (last).
+fn write(one: Prepared, to: &Destinations) -> Result<Outcome, GenerateError> {
+    let (report_files, figures) = write_report(&one)?;
+    let (folder, design, source) = (one.folder, one.emitted.design, one.emitted.source);
     let observer = to.generated.join("src").join(format!("{}.rs", design.name));
-    let changed = output::write_if_changed(&observer, &source).map_err(io(&observer))?;
+    let changed = output::write_if_changed(&observer, &source).map_err(|source| GenerateError::Io {
+        path: observer.clone(),
+        source,
+    })?;
     Ok(Outcome {
         name: design.name,
         folder,

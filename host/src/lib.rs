@@ -31,7 +31,9 @@
 //!    ([`emit::precision`]).
 //! 5. [`report`]: JSON and Markdown reports and the paper's figures.
 //!
-//! [`generate`] runs the whole job (`host gen`); [`commands`] the `simulate` and `estimate` jobs, with
+//! [`generate`] runs the whole job (`host gen`) into the project's `generated/` crate, [`standalone`]
+//! writes a user's design as a crate of its own (`host gen --spec`), [`search`] chooses `N`, `n_m`, `β`
+//! and the taps of `L` within a budget; [`commands`] the `simulate` and `estimate` jobs, with
 //! [`recording`] reading and writing CSV recordings; [`output`] writes files atomically.
 #![warn(missing_docs)]
 
@@ -47,3 +49,4 @@ pub mod recording;
 pub mod report;
 pub mod search;
 pub mod spec;
+pub mod standalone;

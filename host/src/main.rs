@@ -19,15 +19,30 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Trains every design, writes its report and its generated observer (all shipped specs by default).
+    /// Trains designs and writes their observers and reports. Without --spec: every shipped spec into
+    /// the project's generated/ crate. With --spec: each design as a standalone crate (--out).
     Gen {
-        /// A design spec (TOML); repeat for several. Default: every spec in host/specs/.
+        /// A design spec (TOML); repeat for several. Each becomes a standalone crate, unless
+        /// --generated names a `generated` crate to add it to.
         #[arg(long = "spec", value_name = "FILE")]
         specs: Vec<PathBuf>,
-        /// Folder for reports, one sub-folder per design. Default: target/designs/ of the checkout.
+        /// With --spec: the crate's folder (several specs: one sub-folder per design). Default:
+        /// target/observers/<name>/ of the checkout.
+        #[arg(long, value_name = "DIR", conflicts_with = "generated")]
+        out: Option<PathBuf>,
+        /// With --spec: the `firmware` runtime the crate depends on, by path. Default: the checkout's
+        /// firmware/.
+        #[arg(long, value_name = "DIR", conflicts_with = "runtime_version")]
+        runtime_path: Option<PathBuf>,
+        /// With --spec: the `firmware` runtime by version requirement (for a registry that has it).
+        #[arg(long, value_name = "VERSION")]
+        runtime_version: Option<String>,
+        /// Folder for reports, one sub-folder per design. Default: target/designs/ of the checkout
+        /// (a standalone crate keeps its report in its report/ folder).
         #[arg(long, value_name = "DIR")]
         reports: Option<PathBuf>,
-        /// The `generated` crate to write the observers into. Default: generated/ of the checkout.
+        /// The `generated` crate to write the observers into. Default (without --spec): generated/ of
+        /// the checkout.
         #[arg(long, value_name = "DIR")]
         generated: Option<PathBuf>,
         /// Refuse (write nothing) when a design fails a quality gate, instead of warning.
@@ -111,10 +126,19 @@ fn main() -> ExitCode {
     let result = match Cli::parse().command {
         Command::Gen {
             specs,
+            out,
+            runtime_path,
+            runtime_version,
             reports,
             generated,
             strict,
-        } => gen(specs, reports, generated, strict),
+        } => {
+            if specs.is_empty() || generated.is_some() {
+                gen(specs, reports, generated, strict)
+            } else {
+                gen_standalone(&specs, out, runtime_path, runtime_version, strict)
+            }
+        }
         Command::Search { design, auto } => search(&design, auto),
         Command::Simulate {
             design,
@@ -188,6 +212,60 @@ fn gen(specs: Vec<PathBuf>, reports: Option<PathBuf>, generated: Option<PathBuf>
             outcome.folder.display(),
             outcome.observer.display(),
             if outcome.changed { "updated" } else { "unchanged" }
+        );
+    }
+    Ok(())
+}
+
+/// `gen --spec`: every spec as a standalone crate.
+fn gen_standalone(
+    specs: &[PathBuf],
+    out: Option<PathBuf>,
+    runtime_path: Option<PathBuf>,
+    runtime_version: Option<String>,
+    strict: bool,
+) -> anyhow::Result<()> {
+    use host::standalone::{Destination, Runtime};
+    let checkout = generate::workspace_root();
+    let runtime = match (runtime_path, runtime_version) {
+        (_, Some(version)) => Runtime::Version(version),
+        (Some(path), None) => Runtime::Path(std::path::absolute(&path)?),
+        (None, None) => match &checkout {
+            Ok(root) => Runtime::Path(root.join("firmware")),
+            Err(_) => anyhow::bail!(
+                "outside the tool's checkout the crate needs the `firmware` runtime\n  fix: pass --runtime-path <firmware crate folder> or --runtime-version <version>"
+            ),
+        },
+    };
+    let per_design = out.is_none() || specs.len() > 1;
+    let out = match out {
+        Some(out) => out,
+        None => match &checkout {
+            Ok(root) => root.join("target").join("observers"),
+            Err(_) => PathBuf::from("observers"),
+        },
+    };
+    let to = Destination {
+        out: std::path::absolute(&out)?,
+        per_design,
+        runtime,
+    };
+    eprintln!(
+        "gen: {} spec(s) as standalone crates in {}",
+        specs.len(),
+        to.out.display()
+    );
+    let outcomes = host::standalone::run(specs, &to, strict, progress_bar, |spec, prepared| match prepared {
+        Ok(prepared) => print_summary(prepared),
+        Err(error) => eprintln!("error: {}: {error}", spec.display()),
+    })?;
+    for outcome in &outcomes {
+        println!(
+            "{}:\n  crate: {} (cargo build --release --target thumbv7em-none-eabihf there)\n  report: {}\n  figures: {} files",
+            outcome.name,
+            outcome.folder.display(),
+            outcome.report_files[1].display(),
+            outcome.figures.len(),
         );
     }
     Ok(())

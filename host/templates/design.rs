@@ -13,8 +13,8 @@
 //! [`Design`] writes the dot products out as straight-line code.
 //!
 //! ```
-//! let mut observer = generated::{{ name }}::observer();
-//! let (y, u) = ([0.0; generated::{{ name }}::OUTPUTS], [0.0; generated::{{ name }}::INPUTS]);
+//! let mut observer = {{ crate_name }}::{{ name }}::observer();
+//! let (y, u) = ([0.0; {{ crate_name }}::{{ name }}::OUTPUTS], [0.0; {{ crate_name }}::{{ name }}::INPUTS]);
 //! observer.push(y, u).unwrap(); // every sample; a NaN or infinite one is refused
 //! assert!(observer.estimate().is_none()); // until HORIZON samples have arrived
 //! ```
@@ -23,9 +23,9 @@ use firmware::{Estimate, InverseTable, Knots, Maths, Sample, Scalar, TargetMap};
 
 /// The design's name.
 pub const NAME: &str = "{{ name }}";
-/// The spec it was generated from, relative to the workspace.
+/// The spec it was generated from (relative to the workspace, or to a standalone crate).
 pub const SPEC: &str = {{ spec_path_literal }};
-/// Sample period τ.
+/// Sample period τ, in {{ time_unit }} (the spec's `sampling.time_unit`).
 pub const SAMPLE_PERIOD: f32 = {{ tau }};
 /// States of the model.
 pub const STATES: usize = {{ states }};

@@ -175,7 +175,12 @@ fn a_sample_period_that_underflows_in_f32_is_refused_naming_the_field() {
         other => panic!("expected a failure, got {:?}", other.map(|_| ())),
     }
     let design = host::spec::load(&scratch.root.join("vanderpol.toml")).unwrap();
-    let error = match generate::emit_design(design, &scratch.root.join("vanderpol.toml"), &ProgressBar::hidden()) {
+    let error = match generate::emit_design(
+        design,
+        &scratch.root.join("vanderpol.toml"),
+        None,
+        &ProgressBar::hidden(),
+    ) {
         Err(e) => e.to_string(),
         Ok(_) => panic!("τ = 1e-300 was emitted"),
     };
@@ -196,7 +201,7 @@ fn a_description_cannot_open_a_code_fence_in_the_generated_docs() {
         )],
     );
     let design = host::spec::load(&spec).unwrap();
-    let emitted = generate::emit_design(design, &spec, &ProgressBar::hidden()).unwrap();
+    let emitted = generate::emit_design(design, &spec, None, &ProgressBar::hidden()).unwrap();
     let first = emitted.source.lines().next().unwrap();
     assert_eq!(
         first,
@@ -234,7 +239,7 @@ fn a_target_the_measurements_do_not_show_is_named_in_a_warning() {
         ],
     );
     let design = host::spec::load(&spec).unwrap();
-    let emitted = generate::emit_design(design, &spec, &ProgressBar::hidden()).unwrap();
+    let emitted = generate::emit_design(design, &spec, None, &ProgressBar::hidden()).unwrap();
     let gates = host::report::gates::check(&emitted.design, &emitted.result, &emitted.comparison);
     let warnings: Vec<String> = gates.iter().map(ToString::to_string).collect();
     assert!(
@@ -255,7 +260,7 @@ fn measurements_beyond_f32_are_blamed_on_their_scale_not_on_beta() {
         &[("noise_variance = 0.2", "noise_variance = 1e300")],
     );
     let design = host::spec::load(&spec).unwrap();
-    let error = match generate::emit_design(design, &spec, &ProgressBar::hidden()) {
+    let error = match generate::emit_design(design, &spec, None, &ProgressBar::hidden()) {
         Err(e) => e.to_string(),
         Ok(_) => panic!("measurements of 1e150 were emitted"),
     };

@@ -13,7 +13,7 @@ fn generated_files_match_a_fresh_generation() {
         // `gen`'s own function, twice: the text must not depend on the run.
         let emit = || {
             let design = host::spec::load(path).unwrap();
-            generate::emit_design(design, path, &ProgressBar::hidden()).unwrap()
+            generate::emit_design(design, path, None, &ProgressBar::hidden()).unwrap()
         };
         let (first, second) = (emit(), emit());
         let name = first.design.name.clone();
@@ -52,7 +52,9 @@ fn the_searched_knot_fixture_is_current() {
     let (_, text) = generate::design_source(
         &design,
         &build(&design),
-        SEARCHED_FIXTURE_SPEC,
+        &host::emit::Placement::Generated {
+            spec: SEARCHED_FIXTURE_SPEC,
+        },
         &path,
         &indicatif::ProgressBar::hidden(),
     )

@@ -1,0 +1,278 @@
+//! A user's design as a crate of its own: what `gen --spec FILE [--out DIR]` writes, so that a spec
+//! outside `host/specs/` never touches the project's `generated/` crate or its tests.
+//!
+//! ```text
+//! <out>/Cargo.toml        its own [workspace]: it builds wherever it is copied; `firmware` by path or version
+//! <out>/src/lib.rs        #![no_std]; the design module
+//! <out>/src/<name>.rs     the design, as `gen` emits it for `generated/`
+//! <out>/spec.toml         the spec it came from
+//! <out>/README.md         how to use it, then the report (accuracy and cost tables) and its figures
+//! <out>/report/           report.json, report.md and the figures (PNG and SVG)
+//! ```
+//!
+//! The default `<out>` is `target/observers/<name>/` of the checkout. Like `gen`, nothing is written
+//! unless every design fits (and, with `--strict`, passes the quality gates).
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use indicatif::ProgressBar;
+
+use crate::emit::STANDALONE_SPEC;
+use crate::generate::{prepare, write_report, GenerateError, Outcome, Prepared};
+use crate::output::write_if_changed;
+use crate::spec::{self, Design};
+
+/// Where the crate finds the `firmware` runtime.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Runtime {
+    /// A path to the `firmware` crate (default: the checkout's `firmware/`, absolute).
+    Path(PathBuf),
+    /// A version requirement, for a registry that has `firmware`.
+    Version(String),
+}
+
+impl Runtime {
+    /// The `[dependencies]` line.
+    fn dependency(&self) -> String {
+        match self {
+            Runtime::Path(path) => format!("firmware = {{ path = {:?} }}", path.to_string_lossy()),
+            Runtime::Version(version) => format!("firmware = {version:?}"),
+        }
+    }
+}
+
+/// Where `gen --spec` writes.
+#[derive(Clone, Debug)]
+pub struct Destination {
+    /// With one spec, the crate's folder; with several, the folder holding one crate per design.
+    pub out: PathBuf,
+    /// Whether `out` holds one crate per design (`out/<name>/`) rather than being the crate.
+    pub per_design: bool,
+    /// The runtime dependency.
+    pub runtime: Runtime,
+}
+
+/// The crate's package name for design `name`.
+pub fn package_name(name: &str) -> String {
+    format!("{}-observer", name.replace('_', "-"))
+}
+
+/// The crate's library name (what `use` names) for design `name`.
+pub fn library_name(name: &str) -> String {
+    format!("{name}_observer")
+}
+
+/// Fits every spec and writes each design as a standalone crate (see the module's documentation).
+/// `progress` and `done` are as for [`crate::generate::run`].
+pub fn run(
+    specs: &[PathBuf],
+    to: &Destination,
+    strict: bool,
+    progress: impl Fn(&Design) -> ProgressBar,
+    mut done: impl FnMut(&Path, Result<&Prepared, &GenerateError>),
+) -> Result<Vec<Outcome>, GenerateError> {
+    let mut designs = Vec::new();
+    for path in specs {
+        let design = spec::load(path)?;
+        if let Some((first, _)) = designs.iter().find(|(_, d): &&(PathBuf, Design)| d.name == design.name) {
+            return Err(GenerateError::DuplicateName {
+                name: design.name,
+                first: first.clone(),
+                second: path.clone(),
+            });
+        }
+        designs.push((path.clone(), design));
+    }
+    let folder_of = |name: &str| {
+        if to.per_design {
+            to.out.join(name)
+        } else {
+            to.out.clone()
+        }
+    };
+    let mut prepared = Vec::new();
+    let mut failed = 0;
+    for (path, design) in designs {
+        let bar = progress(&design);
+        let library = library_name(&design.name);
+        let one = prepare(
+            design,
+            &path,
+            Some(&library),
+            |name| folder_of(name).join("report"),
+            &bar,
+        );
+        bar.finish_and_clear();
+        match one {
+            Ok(one) => {
+                done(&path, Ok(&one));
+                prepared.push((path, one));
+            }
+            Err(e) => {
+                done(&path, Err(&e));
+                failed += 1;
+            }
+        }
+    }
+    if failed > 0 {
+        return Err(GenerateError::Failed {
+            failed,
+            total: specs.len(),
+        });
+    }
+    let gated: Vec<&str> = prepared
+        .iter()
+        .filter(|(_, p)| !p.warnings.is_empty())
+        .map(|(_, p)| p.emitted.design.name.as_str())
+        .collect();
+    if strict && !gated.is_empty() {
+        return Err(GenerateError::Gates {
+            designs: gated.join(", "),
+        });
+    }
+    prepared
+        .into_iter()
+        .map(|(path, one)| {
+            let folder = folder_of(&one.emitted.design.name);
+            write(&one, &path, &folder, &to.runtime)
+        })
+        .collect()
+}
+
+/// Writes one crate into `folder`.
+fn write(one: &Prepared, spec: &Path, folder: &Path, runtime: &Runtime) -> Result<Outcome, GenerateError> {
+    let design = &one.emitted.design;
+    let io = |path: &Path| {
+        let path = path.to_owned();
+        move |source| GenerateError::Io { path, source }
+    };
+    let (report_files, figures) = write_report(one)?;
+    let sources = folder.join("src");
+    std::fs::create_dir_all(&sources).map_err(io(&sources))?;
+    let spec_text = std::fs::read_to_string(spec).map_err(io(spec))?;
+    let files = [
+        (folder.join("Cargo.toml"), manifest(design, runtime)),
+        (folder.join(STANDALONE_SPEC), spec_text),
+        (folder.join("README.md"), readme(one, folder, &figures)),
+        (sources.join("lib.rs"), library(design)),
+    ];
+    for (path, text) in &files {
+        write_if_changed(path, text).map_err(io(path))?;
+    }
+    // The observer last, as `gen` does: a half-written crate never has a new design with old tables.
+    let observer = sources.join(format!("{}.rs", design.name));
+    let changed = write_if_changed(&observer, &one.emitted.source).map_err(io(&observer))?;
+    Ok(Outcome {
+        name: design.name.clone(),
+        folder: folder.to_owned(),
+        report_files,
+        figures,
+        observer,
+        changed,
+    })
+}
+
+/// `Cargo.toml`.
+fn manifest(design: &Design, runtime: &Runtime) -> String {
+    format!(
+        "# The `{name}` observer, emitted by `host gen --spec` (host {version}). Do not edit: regenerate.\n\
+         [package]\n\
+         name = \"{package}\"\n\
+         version = \"0.1.0\"\n\
+         edition = \"2021\"\n\
+         rust-version = \"1.95\"\n\
+         description = {description:?}\n\
+         publish = false\n\
+         \n\
+         [lib]\n\
+         name = \"{library}\"\n\
+         \n\
+         [dependencies]\n\
+         {dependency}\n\
+         \n\
+         # A workspace of its own: the crate builds wherever it is copied, even inside another workspace.\n\
+         [workspace]\n\
+         \n\
+         [profile.release]\n\
+         opt-level = \"s\"\n\
+         lto = true\n\
+         codegen-units = 1\n",
+        name = design.name,
+        version = env!("CARGO_PKG_VERSION"),
+        package = package_name(&design.name),
+        library = library_name(&design.name),
+        description = format!("Observer `{}`: {}", design.name, design.description),
+        dependency = runtime.dependency(),
+    )
+}
+
+/// `src/lib.rs`.
+fn library(design: &Design) -> String {
+    format!(
+        "//! The `{name}` observer: {description}\n\
+         //!\n\
+         //! Emitted by `host gen --spec` from `{spec}` (host {version}); its accuracy and cost are in\n\
+         //! README.md. Do not edit: change the spec and regenerate.\n\
+         #![no_std]\n\
+         \n\
+         pub use firmware;\n\
+         \n\
+         // Kept as `gen` writes it (regeneration is compared byte for byte).\n\
+         #[rustfmt::skip]\n\
+         pub mod {name};\n",
+        name = design.name,
+        description = design.description.replace('\n', " "),
+        spec = STANDALONE_SPEC,
+        version = env!("CARGO_PKG_VERSION"),
+    )
+}
+
+/// `README.md`: how to build and use the crate, then the report with its figures.
+fn readme(one: &Prepared, folder: &Path, figures: &[PathBuf]) -> String {
+    let design = &one.emitted.design;
+    let (name, library) = (&design.name, library_name(&design.name));
+    let mut text = format!(
+        "# The `{name}` observer\n\n{}\n\nEmitted by `host gen --spec` from [`{STANDALONE_SPEC}`]({STANDALONE_SPEC}) (host {}). \
+         Do not edit: change the spec and regenerate.\n\n\
+         ## Build and use\n\n\
+         ```sh\ncargo build --release --target thumbv7em-none-eabihf   # a Cortex-M4F; any target with a float unit works\n```\n\n\
+         ```rust\n\
+         let mut observer = {library}::{name}::observer(); // fixed memory, no allocation\n\
+         let (y, u) = ([0.0; {library}::{name}::OUTPUTS], [0.0; {library}::{name}::INPUTS]);\n\
+         observer.push(y, u).ok(); // every sample; a NaN or infinite one is refused and changes nothing\n\
+         if let Some(estimates) = observer.estimate() {{\n    \
+         // one per target, in {library}::{name}::TARGET_NAMES order\n    \
+         let _ = estimates[0].value;\n\
+         }}\n\
+         ```\n\n",
+        design.description,
+        env!("CARGO_PKG_VERSION"),
+    );
+    // The report, its first heading dropped (the README has its own).
+    let report = &one.report.1;
+    let body = report.split_once('\n').map_or(report.as_str(), |(_, rest)| rest);
+    let _ = write!(
+        text,
+        "## Report\n\nFrom `report/report.md`; every figure is on validation runs unless it says otherwise.\n{body}"
+    );
+    let pngs: Vec<&PathBuf> = figures
+        .iter()
+        .filter(|f| f.extension().is_some_and(|e| e == "png"))
+        .collect();
+    if !pngs.is_empty() {
+        text.push_str("\n## Figures\n\n");
+        for figure in pngs {
+            let relative = figure
+                .strip_prefix(folder)
+                .unwrap_or(figure)
+                .to_string_lossy()
+                .replace('\\', "/");
+            let stem = figure
+                .file_stem()
+                .map_or(String::new(), |s| s.to_string_lossy().into_owned());
+            let _ = writeln!(text, "![{stem}]({relative})\n");
+        }
+    }
+    text
+}
