@@ -39,6 +39,14 @@ pub enum GenerateError {
     /// A figure could not be drawn or written.
     #[error(transparent)]
     Plot(#[from] PlotError),
+    /// cbindgen could not write the C header of a standalone crate's C library.
+    #[error("{}: cbindgen could not write the C header: {message}", path.display())]
+    Header {
+        /// The C library's source it read.
+        path: PathBuf,
+        /// cbindgen's message.
+        message: String,
+    },
     /// A file or folder could not be listed, created or written.
     #[error("{}: {source}", path.display())]
     Io {

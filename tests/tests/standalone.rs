@@ -1,6 +1,7 @@
 //! `gen --spec` for a user's own design: a crate of its own, outside this repository, that builds for
-//! the Cortex-M4F and passes its doc example on its own, while the project's `generated/` crate is
-//! left exactly as it was.
+//! the Cortex-M4F and passes its doc example on its own, and its C library, linked into a C program by
+//! the system's C compiler, that gives the Rust observer's numbers bit for bit; the project's
+//! `generated/` crate is left exactly as it was.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -23,11 +24,17 @@ fn snapshot(folder: &Path) -> Vec<(PathBuf, Vec<u8>)> {
     files
 }
 
-/// `cargo <args>` in `folder`, with a target folder in this workspace's `target/` shared between runs.
-fn cargo(folder: &Path, args: &[&str]) {
-    let target = integration_tests::workspace_root()
+/// The target folder the standalone crates are built in: in this workspace's `target/`, shared between
+/// runs.
+fn target_folder() -> PathBuf {
+    integration_tests::workspace_root()
         .join("target")
-        .join("standalone-check");
+        .join("standalone-check")
+}
+
+/// `cargo <args>` in `folder`, in [`target_folder`].
+fn cargo(folder: &Path, args: &[&str]) {
+    let target = target_folder();
     let output = Command::new(env!("CARGO"))
         .args(args)
         .current_dir(folder)
@@ -49,11 +56,11 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
     let scratch = std::env::temp_dir().join(format!("standalone-test-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&scratch);
     std::fs::create_dir_all(&scratch).unwrap();
-    // A user's spec, outside the repository: Example 1 under another name, fewer validation runs.
+    // A user's spec, outside the repository: Example 1 under another name (the same data and fits, so
+    // its observer is `generated::vanderpol`'s, which the C program is held against).
     let spec = scratch.join("my_oscillator.toml");
-    let text = integration_tests::spec_text("vanderpol")
-        .replacen("name = \"vanderpol\"", "name = \"my_oscillator\"", 1)
-        .replacen("trajectories = 64", "trajectories = 16", 1);
+    let text =
+        integration_tests::spec_text("vanderpol").replacen("name = \"vanderpol\"", "name = \"my_oscillator\"", 1);
     assert!(text.contains("name = \"my_oscillator\""));
     std::fs::write(&spec, &text).unwrap();
     let out = scratch.join("crate");
@@ -97,6 +104,36 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
     );
     cargo(&out, &["test", "--offline", "--doc"]);
 
+    // Its C library, linked into a C program by the system's compiler: the Rust observer's bits.
+    let c = out.join("c");
+    cargo(&c, &["build", "--offline", "--release"]);
+    let library = target_folder().join("release/libmy_oscillator_observer_c.a");
+    let program = scratch.join("replay");
+    std::fs::write(scratch.join("replay.c"), replay_source()).unwrap();
+    let compiled = Command::new("cc")
+        .args(["-std=c99", "-Wall", "-Werror", "-O1", "-o"])
+        .arg(&program)
+        .arg(scratch.join("replay.c"))
+        .arg("-I")
+        .arg(c.join("include"))
+        .arg(&library)
+        .output()
+        .unwrap();
+    assert!(
+        compiled.status.success(),
+        "cc: {}",
+        String::from_utf8_lossy(&compiled.stderr)
+    );
+    let run = Command::new(&program).output().unwrap();
+    assert!(run.status.success(), "replay: {}", String::from_utf8_lossy(&run.stderr));
+    let printed = String::from_utf8(run.stdout).unwrap();
+    assert_eq!(printed, rust_replay());
+    assert!(printed.lines().filter(|l| l.split(' ').nth(2) == Some("0")).count() > 50);
+    assert!(
+        printed.lines().any(|l| l.split(' ').nth(1) == Some("1")),
+        "no refused sample"
+    );
+
     // The project's generated crate is untouched, byte for byte.
     assert!(
         generated_before == snapshot(&root.join("generated")),
@@ -106,4 +143,70 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
     let again = standalone::run(&[spec], &to, true, |_| ProgressBar::hidden(), |_, _| {}).unwrap();
     assert!(!again[0].changed);
     std::fs::remove_dir_all(&scratch).unwrap();
+}
+
+/// The C program: every recorded sample of Example 1's scenario pushed, the estimates printed as bits,
+/// one line per sample: `k push-status estimate-status [bits saturation]…`.
+fn replay_source() -> String {
+    use generated::vanderpol as d;
+    let rows: Vec<String> = d::RECORDED_Y
+        .iter()
+        .map(|y| format!("{{0x{:08x}u}}", y[0].to_bits()))
+        .collect();
+    format!(
+        r#"#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+#include "my_oscillator.h"
+
+static const uint32_t samples[{len}][MY_OSCILLATOR_OUTPUTS] = {{ {rows} }};
+static uint8_t storage[MY_OSCILLATOR_STORAGE_SIZE] __attribute__((aligned(MY_OSCILLATOR_STORAGE_ALIGN)));
+
+int main(void) {{
+    if (my_oscillator_init(storage, sizeof storage) != MyOscillatorStatus_Ok) return 2;
+    if (my_oscillator_storage_size() > sizeof storage) return 3;
+    for (int k = 0; k < {len}; k++) {{
+        float y[MY_OSCILLATOR_OUTPUTS];
+        memcpy(y, samples[k], sizeof y);
+        int pushed = my_oscillator_push(storage, y, NULL);
+        float x[MY_OSCILLATOR_TARGETS];
+        int8_t saturation[MY_OSCILLATOR_TARGETS];
+        int status = my_oscillator_estimate(storage, x, saturation);
+        printf("%d %d %d", k, pushed, status);
+        for (int t = 0; status == MyOscillatorStatus_Ok && t < MY_OSCILLATOR_TARGETS; t++) {{
+            uint32_t bits;
+            memcpy(&bits, &x[t], sizeof bits);
+            printf(" %08lx %d", (unsigned long)bits, saturation[t]);
+        }}
+        printf("\n");
+    }}
+    return 0;
+}}
+"#,
+        len = d::RECORDED_LEN,
+        rows = rows.join(", "),
+    )
+}
+
+/// What [`replay_source`] prints, from the Rust observer.
+fn rust_replay() -> String {
+    use generated::vanderpol as d;
+    use std::fmt::Write as _;
+    let mut observer = d::observer();
+    let mut text = String::new();
+    for (k, (y, u)) in d::RECORDED_Y.iter().zip(d::RECORDED_U.iter()).enumerate() {
+        let pushed = u8::from(observer.push(*y, *u).is_err());
+        let estimates = observer.estimate();
+        let _ = write!(text, "{k} {pushed} {}", if estimates.is_some() { 0 } else { 2 });
+        for e in estimates.iter().flatten() {
+            let flag = match e.saturation {
+                firmware::Saturation::Low => -1,
+                firmware::Saturation::Inside => 0,
+                firmware::Saturation::High => 1,
+            };
+            let _ = write!(text, " {:08x} {flag}", e.value.to_bits());
+        }
+        text.push('\n');
+    }
+    text
 }

@@ -8,10 +8,13 @@
 //! <out>/spec.toml         the spec it came from
 //! <out>/README.md         how to use it, then the report (accuracy and cost tables) and its figures
 //! <out>/report/           report.json, report.md and the figures (PNG and SVG)
+//! <out>/c/                 the C library: a staticlib crate of extern "C" functions, include/<name>.h
 //! ```
 //!
 //! The default `<out>` is `target/observers/<name>/` of the checkout. Like `gen`, nothing is written
 //! unless every design fits (and, with `--strict`, passes the quality gates).
+
+pub mod c_library;
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -160,6 +163,25 @@ fn write(one: &Prepared, spec: &Path, folder: &Path, runtime: &Runtime) -> Resul
     for (path, text) in &files {
         write_if_changed(path, text).map_err(io(path))?;
     }
+    let c = folder.join(c_library::FOLDER);
+    let c_sources = c.join("src");
+    let include = c.join("include");
+    for dir in [&c_sources, &include] {
+        std::fs::create_dir_all(dir).map_err(io(dir))?;
+    }
+    let c_source = c_sources.join("lib.rs");
+    for (path, text) in [
+        (c.join("Cargo.toml"), c_library::manifest(design)),
+        (c_source.clone(), c_library::source(design)),
+    ] {
+        write_if_changed(&path, &text).map_err(io(&path))?;
+    }
+    let header = c_library::header(design, &c_source).map_err(|e| GenerateError::Header {
+        path: c_source.clone(),
+        message: e.to_string(),
+    })?;
+    let header_path = include.join(format!("{}.h", design.name));
+    write_if_changed(&header_path, &header).map_err(io(&header_path))?;
     // The observer last, as `gen` does: a half-written crate never has a new design with old tables.
     let observer = sources.join(format!("{}.rs", design.name));
     let changed = write_if_changed(&observer, &one.emitted.source).map_err(io(&observer))?;

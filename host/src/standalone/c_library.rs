@@ -1,0 +1,293 @@
+//! The C library of a standalone crate (`<crate>/c/`): a `staticlib` crate of `extern "C"` functions
+//! over the design's observer, and its header written by cbindgen.
+//!
+//! ```c
+//! static uint8_t storage[MY_DESIGN_STORAGE_SIZE] __attribute__((aligned(MY_DESIGN_STORAGE_ALIGN)));
+//! my_design_init(storage, sizeof storage);               // or to reset
+//! my_design_push(storage, y, u);                         // MyDesignStatus_Refused for a NaN/inf sample
+//! float x[MY_DESIGN_TARGETS];
+//! if (my_design_estimate(storage, x, NULL) == MyDesignStatus_Ok) { /* use x */ }
+//! ```
+//!
+//! The observer lives in storage the caller provides: `STORAGE_SIZE` bytes aligned to `STORAGE_ALIGN`.
+//! The size is a bound the host computes from the design's shape (the window of `N` samples stored
+//! twice, the follower's state and covariance); the crate does not compile on a target where the
+//! observer would not fit in it, so a header never states too little.
+
+use std::path::Path;
+
+use crate::spec::Design;
+use crate::standalone::library_name;
+
+/// The C library's folder inside the standalone crate.
+pub const FOLDER: &str = "c";
+
+/// `c/Cargo.toml`.
+pub fn manifest(design: &Design) -> String {
+    format!(
+        "# The C library of the `{name}` observer, emitted by `host gen --spec`. Do not edit: regenerate.\n\
+         # cargo build --release --target thumbv7em-none-eabihf  →  target/thumbv7em-none-eabihf/release/lib{library}_c.a\n\
+         [package]\n\
+         name = \"{package}-c\"\n\
+         version = \"0.1.0\"\n\
+         edition = \"2021\"\n\
+         rust-version = \"1.95\"\n\
+         publish = false\n\
+         \n\
+         [lib]\n\
+         name = \"{library}_c\"\n\
+         crate-type = [\"staticlib\"]\n\
+         \n\
+         [dependencies]\n\
+         {package} = {{ path = \"..\" }}\n\
+         \n\
+         [workspace]\n\
+         \n\
+         # No unwinding across the C boundary; the observer's code has no reachable panic.\n\
+         [profile.dev]\n\
+         panic = \"abort\"\n\
+         \n\
+         [profile.release]\n\
+         panic = \"abort\"\n\
+         opt-level = \"s\"\n\
+         lto = true\n\
+         codegen-units = 1\n",
+        name = design.name,
+        package = super::package_name(&design.name),
+        library = library_name(&design.name),
+    )
+}
+
+/// `MyDesign` for `my_design`: the prefix of the C types.
+fn camel(name: &str) -> String {
+    name.split('_')
+        .map(|part| {
+            let mut chars = part.chars();
+            chars.next().map_or(String::new(), |first| {
+                first.to_ascii_uppercase().to_string() + chars.as_str()
+            })
+        })
+        .collect()
+}
+
+/// Bytes the observer of `design` needs at most on any target: the window (`N` samples of `f32`
+/// outputs and inputs, twice, and two indices), the follower's state, covariance and start-up
+/// constants, and slack for indices and padding.
+pub fn storage_bound(design: &Design) -> usize {
+    let (n, ny, nu) = (
+        design.map.horizon,
+        design.model.outputs.len(),
+        design.model.inputs.len(),
+    );
+    let (nx, nt) = (design.model.states.len(), design.targets.len());
+    let window = 2 * 4 * n * (ny + nu) + 2 * 8;
+    let follower = 4 * (nx * (nx + 7) + 4 * nt) + 64;
+    (window + follower).div_ceil(8) * 8
+}
+
+/// `c/src/lib.rs`.
+pub fn source(design: &Design) -> String {
+    let name = &design.name;
+    let upper = name.to_uppercase();
+    let status = format!("{}Status", camel(name));
+    let list = |names: &[String]| {
+        if names.is_empty() {
+            "none".to_owned()
+        } else {
+            names.join(", ")
+        }
+    };
+    let outputs: Vec<String> = design.model.outputs.iter().map(|o| o.name.clone()).collect();
+    let targets: Vec<String> = design.targets.iter().map(|t| t.name.clone()).collect();
+    format!(
+        r#"//! C interface of the `{name}` observer: create it in storage the caller provides, push each
+//! sample, read the estimates; every call returns a status. Header: `include/{name}.h` (cbindgen).
+//! Emitted by `host gen --spec`. Do not edit: regenerate.
+#![no_std]
+
+use core::ffi::c_void;
+use core::mem::{{align_of, size_of}};
+
+use {library}::{name} as design;
+
+/// Bytes of storage the observer needs at most (checked against its size when this crate compiles).
+pub const {upper}_STORAGE_SIZE: usize = {bound};
+/// Alignment of the storage, in bytes.
+pub const {upper}_STORAGE_ALIGN: usize = 8;
+/// Measured outputs per sample (`y`), in this order: {outputs}.
+pub const {upper}_OUTPUTS: usize = {ny};
+/// Inputs per sample (`u`), in this order: {inputs}.
+pub const {upper}_INPUTS: usize = {nu};
+/// Estimates, in this order: {targets}.
+pub const {upper}_TARGETS: usize = {nt};
+/// Samples before the first estimate.
+pub const {upper}_HORIZON: usize = {horizon};
+
+const _: () = assert!(size_of::<design::Observer>() <= {upper}_STORAGE_SIZE);
+const _: () = assert!(align_of::<design::Observer>() <= {upper}_STORAGE_ALIGN);
+const _: () = assert!(
+    design::OUTPUTS == {upper}_OUTPUTS
+        && design::INPUTS == {upper}_INPUTS
+        && design::TARGETS == {upper}_TARGETS
+        && design::HORIZON == {upper}_HORIZON
+);
+
+/// What a call did.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum {status} {{
+    /// Done.
+    Ok = 0,
+    /// The sample has a NaN or infinite value and was refused; the observer is unchanged.
+    Refused = 1,
+    /// Fewer than `HORIZON` samples since the start: no estimate yet; nothing was written.
+    NoEstimateYet = 2,
+    /// A null pointer, or storage too small or misaligned: nothing was done.
+    BadArgument = 3,
+}}
+
+/// The observer in `storage`, or `None` for a null or misaligned pointer.
+///
+/// # Safety
+/// `storage` holds an observer made by `{name}_init`, used by nothing else during the call.
+unsafe fn observer<'a>(storage: *mut c_void) -> Option<&'a mut design::Observer> {{
+    if storage.is_null() || (storage as usize) % align_of::<design::Observer>() != 0 {{
+        return None;
+    }}
+    // SAFETY: non-null and aligned; initialised by `{name}_init` (the caller's contract).
+    Some(unsafe {{ &mut *storage.cast::<design::Observer>() }})
+}}
+
+/// Creates a fresh observer (no sample yet) in `storage`, `size` bytes aligned to
+/// `{upper}_STORAGE_ALIGN`; call it again to reset.
+///
+/// # Safety
+/// `storage` points to `size` writable bytes that nothing else uses while the observer lives.
+#[no_mangle]
+pub unsafe extern "C" fn {name}_init(storage: *mut c_void, size: usize) -> {status} {{
+    if storage.is_null()
+        || size < size_of::<design::Observer>()
+        || (storage as usize) % align_of::<design::Observer>() != 0
+    {{
+        return {status}::BadArgument;
+    }}
+    // SAFETY: large enough, aligned, and the caller's to write.
+    unsafe {{ storage.cast::<design::Observer>().write(design::observer()) }};
+    {status}::Ok
+}}
+
+/// Pushes this instant's sample: `y` points to `{upper}_OUTPUTS` floats and `u` to
+/// `{upper}_INPUTS` floats (either may be null when there are none).
+///
+/// # Safety
+/// `storage` was initialised by `{name}_init`; `y` and `u` point to that many floats.
+#[no_mangle]
+pub unsafe extern "C" fn {name}_push(storage: *mut c_void, y: *const f32, u: *const f32) -> {status} {{
+    // SAFETY: the caller's contract.
+    let Some(observer) = (unsafe {{ observer(storage) }}) else {{
+        return {status}::BadArgument;
+    }};
+    if (y.is_null() && design::OUTPUTS > 0) || (u.is_null() && design::INPUTS > 0) {{
+        return {status}::BadArgument;
+    }}
+    let mut outputs = [0.0f32; design::OUTPUTS];
+    let mut inputs = [0.0f32; design::INPUTS];
+    for (i, value) in outputs.iter_mut().enumerate() {{
+        // SAFETY: `y` points to OUTPUTS floats.
+        *value = unsafe {{ y.add(i).read_unaligned() }};
+    }}
+    for (i, value) in inputs.iter_mut().enumerate() {{
+        // SAFETY: `u` points to INPUTS floats.
+        *value = unsafe {{ u.add(i).read_unaligned() }};
+    }}
+    match observer.push(outputs, inputs) {{
+        Ok(()) => {status}::Ok,
+        Err(_) => {status}::Refused,
+    }}
+}}
+
+/// Writes the `{upper}_TARGETS` estimates into `estimates` and, unless `saturation` is null, whether
+/// each was clamped to the learning range (-1 below, 0 inside, 1 above) into `saturation`.
+///
+/// # Safety
+/// `storage` was initialised by `{name}_init`; `estimates` (and `saturation`, when not null) point
+/// to `{upper}_TARGETS` writable values.
+#[no_mangle]
+pub unsafe extern "C" fn {name}_estimate(storage: *mut c_void, estimates: *mut f32, saturation: *mut i8) -> {status} {{
+    // SAFETY: the caller's contract.
+    let Some(observer) = (unsafe {{ observer(storage) }}) else {{
+        return {status}::BadArgument;
+    }};
+    if estimates.is_null() {{
+        return {status}::BadArgument;
+    }}
+    let Some(all) = observer.estimate() else {{
+        return {status}::NoEstimateYet;
+    }};
+    for (i, estimate) in all.iter().enumerate() {{
+        // SAFETY: `estimates` points to TARGETS floats.
+        unsafe {{ estimates.add(i).write_unaligned(estimate.value) }};
+        if !saturation.is_null() {{
+            let flag = match estimate.saturation {{
+                {library}::firmware::Saturation::Low => -1,
+                {library}::firmware::Saturation::Inside => 0,
+                {library}::firmware::Saturation::High => 1,
+            }};
+            // SAFETY: `saturation` points to TARGETS values.
+            unsafe {{ saturation.add(i).write_unaligned(flag) }};
+        }}
+    }}
+    {status}::Ok
+}}
+
+/// Bytes the observer occupies on this target (at most `{upper}_STORAGE_SIZE`).
+#[no_mangle]
+pub extern "C" fn {name}_storage_size() -> usize {{
+    size_of::<design::Observer>()
+}}
+
+/// The observer's code has no reachable panic (the project's probe proves it for every design);
+/// a C program cannot unwind a Rust panic, so one would stop here.
+#[panic_handler]
+fn panic(_: &core::panic::PanicInfo) -> ! {{
+    loop {{}}
+}}
+"#,
+        library = library_name(name),
+        bound = storage_bound(design),
+        outputs = list(&outputs),
+        inputs = list(&design.model.inputs),
+        targets = list(&targets),
+        ny = design.model.outputs.len(),
+        nu = design.model.inputs.len(),
+        nt = design.targets.len(),
+        horizon = design.map.horizon,
+    )
+}
+
+/// The C header of `source` (written at `source_path`), by cbindgen.
+pub fn header(design: &Design, source_path: &Path) -> Result<String, cbindgen::Error> {
+    let guard = format!("{}_OBSERVER_H", design.name.to_uppercase());
+    let config = cbindgen::Config {
+        language: cbindgen::Language::C,
+        include_guard: Some(guard),
+        usize_is_size_t: true,
+        header: Some(format!(
+            "/* C interface of the `{}` observer, written by cbindgen from c/src/lib.rs (host gen --spec). Do not edit. */",
+            design.name
+        )),
+        enumeration: cbindgen::EnumConfig {
+            prefix_with_name: true,
+            ..Default::default()
+        },
+        documentation: true,
+        ..Default::default()
+    };
+    let bindings = cbindgen::Builder::new()
+        .with_config(config)
+        .with_src(source_path)
+        .generate()?;
+    let mut text = Vec::new();
+    bindings.write(&mut text);
+    Ok(String::from_utf8_lossy(&text).into_owned())
+}
