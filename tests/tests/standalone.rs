@@ -24,6 +24,11 @@ fn snapshot(folder: &Path) -> Vec<(PathBuf, Vec<u8>)> {
     files
 }
 
+/// Whether `tool` cannot be started.
+fn tool_missing(tool: &str) -> bool {
+    Command::new(tool).arg("--version").output().is_err()
+}
+
 /// The target folder the standalone crates are built in: in this workspace's `target/`, shared between
 /// runs.
 fn target_folder() -> PathBuf {
@@ -133,6 +138,75 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
         printed.lines().any(|l| l.split(' ').nth(1) == Some("1")),
         "no refused sample"
     );
+
+    // The same C program for the Cortex-M4F, by arm-none-eabi-gcc against the library built for
+    // thumbv7em, on the emulated board (semihosting prints): the same bits.
+    if tool_missing("arm-none-eabi-gcc") || tool_missing("qemu-system-arm") {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI needs arm-none-eabi-gcc (gcc-arm-none-eabi, libnewlib-arm-none-eabi) and qemu-system-arm"
+        );
+        eprintln!("skipped the C program on the emulated Cortex-M4F: arm-none-eabi-gcc or qemu-system-arm missing");
+    } else {
+        cargo(
+            &c,
+            &["build", "--offline", "--release", "--target", "thumbv7em-none-eabihf"],
+        );
+        let library = target_folder().join("thumbv7em-none-eabihf/release/libmy_oscillator_observer_c.a");
+        let board = root.join("tests/c");
+        let elf = scratch.join("replay.elf");
+        let compiled = Command::new("arm-none-eabi-gcc")
+            .args(["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard", "-mfpu=fpv4-sp-d16"])
+            .args([
+                "-std=c99",
+                "-Wall",
+                "-Werror",
+                "-O1",
+                "--specs=rdimon.specs",
+                "-Wl,--gc-sections",
+            ])
+            .arg("-T")
+            .arg(board.join("mps2-an386.ld"))
+            .arg("-o")
+            .arg(&elf)
+            .arg(board.join("startup.c"))
+            .arg(scratch.join("replay.c"))
+            .arg("-I")
+            .arg(c.join("include"))
+            .arg(&library)
+            .output()
+            .unwrap();
+        assert!(
+            compiled.status.success(),
+            "arm-none-eabi-gcc: {}",
+            String::from_utf8_lossy(&compiled.stderr)
+        );
+        let run = Command::new("timeout")
+            .args([
+                "120",
+                "qemu-system-arm",
+                "-machine",
+                "mps2-an386",
+                "-cpu",
+                "cortex-m4",
+                "-nographic",
+            ])
+            .args([
+                "-monitor",
+                "none",
+                "-serial",
+                "none",
+                "-semihosting-config",
+                "enable=on,target=native",
+                "-kernel",
+            ])
+            .arg(&elf)
+            .stdin(std::process::Stdio::null())
+            .output()
+            .unwrap();
+        assert!(run.status.success(), "qemu: {}", String::from_utf8_lossy(&run.stderr));
+        assert_eq!(String::from_utf8(run.stdout).unwrap(), printed);
+    }
 
     // The project's generated crate is untouched, byte for byte.
     assert!(
