@@ -9,6 +9,7 @@ use rand::SeedableRng;
 
 use crate::recording::{self, RecordingError, StreamError};
 use crate::spec::{limits, Design, ObserverKind, SpecError};
+use crate::tables::Tables;
 use crate::{data, fit, output};
 
 /// Why `simulate` or `estimate` did not run.
@@ -23,6 +24,17 @@ pub enum CommandError {
     /// The observer kind asked for does not exist for this design.
     #[error(transparent)]
     Kind(#[from] crate::observers::recorded::RecordedError),
+    /// Saved tables could not be read.
+    #[error(transparent)]
+    Tables(#[from] crate::tables::TablesError),
+    /// `--tables` names tables fitted from another spec (or by another version of the tool).
+    #[error("{}: these tables were not fitted from {} as it is now (or by this version of the tool); run `gen` for it, or leave out --tables to fit for this call", path.display(), spec.display())]
+    StaleTables {
+        /// The tables.
+        path: PathBuf,
+        /// The spec.
+        spec: PathBuf,
+    },
     /// A value the design's `[scenario]` would give is missing.
     #[error("design `{design}` has no `[scenario]`: give --{option}")]
     NoScenario {
@@ -131,17 +143,65 @@ pub fn simulate(design: &Design, run: &Simulation, output: &Path) -> Result<(), 
     })
 }
 
-/// Fits `design` and writes the estimates of its observer `kind` over the recorded file `input` to
-/// `output` (see [`recording`] for the columns): the map streams row by row; an observer the map
-/// starts (`corrected`, `ekf`, or the kind `gen` chose, `auto`) tunes its constants on the tuning runs
-/// as `gen` does and runs through the host mirror of the chip's `firmware::Started`, in `f64`.
+/// Where `estimate` took the fitted design from.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Provenance {
+    /// The tables `gen` saved ([`crate::tables`]): nothing was fitted.
+    Saved(PathBuf),
+    /// No saved tables for this spec: the design was fitted (and its observers tuned) for this call.
+    Fitted,
+}
+
+/// The saved tables of `design`: `explicit` (which must be this spec's), or the first of the
+/// checkout's report folders (`target/designs/<name>/`, `target/observers/<name>/report/`) whose
+/// tables are this spec's and were written with the observer file that is there now
+/// (`generated/src/<name>.rs`, the crate's `src/<name>.rs`).
+fn saved_tables(design: &Design, explicit: Option<&Path>) -> Result<Option<(Tables, PathBuf)>, CommandError> {
+    if let Some(path) = explicit {
+        let tables = Tables::read(path)?.ok_or_else(|| CommandError::NotAFile { path: path.to_owned() })?;
+        if !tables.belongs_to(design) {
+            return Err(CommandError::StaleTables {
+                path: path.to_owned(),
+                spec: design.file.clone(),
+            });
+        }
+        return Ok(Some((tables, path.to_owned())));
+    }
+    let Ok(root) = crate::generate::workspace_root() else {
+        return Ok(None);
+    };
+    let source = format!("{}.rs", design.name);
+    let crate_folder = root.join("target/observers").join(&design.name);
+    for (path, observer) in [
+        (
+            root.join("target/designs").join(&design.name).join(crate::tables::FILE),
+            root.join("generated/src").join(&source),
+        ),
+        (
+            crate_folder.join("report").join(crate::tables::FILE),
+            crate_folder.join("src").join(&source),
+        ),
+    ] {
+        if let Some(tables) = Tables::read(&path)? {
+            if tables.belongs_to(design) && tables.matches_observer(&observer) {
+                return Ok(Some((tables, path)));
+            }
+        }
+    }
+    Ok(None)
+}
+
+/// Estimates the targets over the recorded measurements `input` into `output` with observer `kind`,
+/// by the tables `gen` saved for this spec (`tables`, or found in the checkout's report folders), or
+/// else by fitting the design for this call.
 pub fn estimate(
     design: &Design,
     input: &Path,
     output: &Path,
     kind: ObserverKind,
+    tables: Option<&Path>,
     progress: &ProgressBar,
-) -> Result<(), CommandError> {
+) -> Result<Provenance, CommandError> {
     refuse_overwrite(output, &[input, &design.file])?;
     // A device or pipe may never end: only a regular file has a size to read.
     if input.exists() && !std::fs::metadata(input).is_ok_and(|m| m.is_file()) {
@@ -159,39 +219,66 @@ pub fn estimate(
         }
         .into());
     }
-    let (design, _) = crate::search::settle(design.clone(), progress)?;
+    let (mut design, provenance, tables) = match saved_tables(design, tables)? {
+        Some((tables, path)) => (design.clone(), Provenance::Saved(path), tables),
+        None => {
+            let (design, _) = crate::search::settle(design.clone(), progress)?;
+            let result = fit::run(&design, progress)?;
+            let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
+            let mut tables = Tables {
+                version: env!("CARGO_PKG_VERSION").to_owned(),
+                spec_sha256: design.spec_sha256.clone(),
+                source_sha256: String::new(),
+                horizon: design.map.horizon,
+                nm: design.map.nm,
+                beta: design.map.beta,
+                taps: design.map.taps,
+                chosen: ObserverKind::Map,
+                maps,
+                corrected: None,
+                ekf: None,
+                started: None,
+            };
+            if kind != ObserverKind::Map {
+                let code = crate::generate::model_code(&design)?;
+                progress.set_message(format!("{}: tuning the observers", design.name));
+                let comparison = crate::observers::compare(&design, &result, &code)?;
+                tables.chosen = comparison.chosen.0;
+                tables.corrected = comparison.corrected.as_ref().ok().map(|t| t.constants.clone());
+                tables.ekf = comparison.ekf.as_ref().map(|t| t.constants.clone());
+                tables.started = comparison.started.clone();
+            }
+            (design, Provenance::Fitted, tables)
+        }
+    };
+    design.map.horizon = tables.horizon;
     let design = &design;
-    let result = fit::run(design, progress)?;
-    let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
     let io = |source| CommandError::Io {
         path: output.to_owned(),
         source,
     };
-    if kind != ObserverKind::Map {
+    let chosen = if kind == ObserverKind::Auto {
+        tables.chosen
+    } else {
+        kind
+    };
+    if chosen != ObserverKind::Map {
         let code = crate::generate::model_code(design)?;
-        progress.set_message(format!("{}: tuning the observers", design.name));
-        let comparison = crate::observers::compare(design, &result, &code)?;
-        let chosen = if kind == ObserverKind::Auto {
-            comparison.chosen.0
-        } else {
-            kind
-        };
-        if chosen != ObserverKind::Map {
-            let all = recording::read(design, input)?;
-            let estimates = crate::observers::recorded::estimate(design, &result, &code, &comparison, chosen, &all)?;
-            let names: Vec<&str> = design.targets.iter().map(|t| t.name.as_str()).collect();
-            return output::write_atomically(output, recording::estimates_csv(&names, &estimates).as_bytes())
-                .map_err(io);
-        }
+        let all = recording::read(design, input)?;
+        let estimates = crate::observers::recorded::estimate(design, &tables, &code, chosen, &all)?;
+        let names: Vec<&str> = design.targets.iter().map(|t| t.name.as_str()).collect();
+        output::write_atomically(output, recording::estimates_csv(&names, &estimates).as_bytes()).map_err(io)?;
+        return Ok(provenance);
     }
     // Row by row: memory does not grow with the recording; the output appears only when complete.
     output::write_atomically_with(output, |out| {
-        recording::estimate_streaming(&maps, design.map.horizon, &mut rows, out)
+        recording::estimate_streaming(&tables.maps, tables.horizon, &mut rows, out)
     })
     .map_err(|e| match e {
         StreamError::Recording(e) => CommandError::Recording(e),
         StreamError::Io(source) => io(source),
-    })
+    })?;
+    Ok(provenance)
 }
 
 /// Refuses an `output` that is a folder or the same file as one of `inputs` (compared as canonical

@@ -461,13 +461,23 @@ pub(crate) fn prepare(
     })
 }
 
-/// Writes a prepared design's report (JSON, Markdown) and figures into its folder.
+/// Writes a prepared design's report (JSON, Markdown), its tables ([`crate::tables`]) and figures
+/// into its folder.
 pub(crate) fn write_report(one: &Prepared) -> Result<(Vec<PathBuf>, Vec<PathBuf>), GenerateError> {
     let folder = &one.folder;
-    let report_files = reporting::write_texts(&one.report, folder).map_err(|source| GenerateError::Io {
+    let mut report_files = reporting::write_texts(&one.report, folder).map_err(|source| GenerateError::Io {
         path: folder.clone(),
         source,
     })?;
+    // The design as data, for `estimate` to run without fitting again.
+    let tables = folder.join(crate::tables::FILE);
+    output::write_if_changed(&tables, &crate::tables::Tables::of(&one.emitted).to_json()).map_err(|source| {
+        GenerateError::Io {
+            path: tables.clone(),
+            source,
+        }
+    })?;
+    report_files.push(tables);
     let Emitted {
         design,
         result,

@@ -50,3 +50,4 @@ pub mod report;
 pub mod search;
 pub mod spec;
 pub mod standalone;
+pub mod tables;

@@ -89,6 +89,11 @@ enum Command {
         /// `corrected` or `ekf` (started by the map) ask for one.
         #[arg(long, value_enum, default_value = "auto")]
         kind: KindArg,
+        /// The fitted design `gen` saved (design.json in its report folder). Default: the checkout's
+        /// target/designs/<name>/ or target/observers/<name>/report/ when they hold this spec's; else
+        /// the design is fitted for this call.
+        #[arg(long, value_name = "FILE")]
+        tables: Option<PathBuf>,
     },
 }
 
@@ -152,7 +157,8 @@ fn main() -> ExitCode {
             input,
             output,
             kind,
-        } => estimate(&design, &input, &output, kind),
+            tables,
+        } => estimate(&design, &input, &output, kind, tables.as_deref()),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -324,7 +330,13 @@ fn simulate(
     Ok(())
 }
 
-fn estimate(choice: &DesignChoice, input: &Path, output: &Path, kind: KindArg) -> anyhow::Result<()> {
+fn estimate(
+    choice: &DesignChoice,
+    input: &Path,
+    output: &Path,
+    kind: KindArg,
+    tables: Option<&Path>,
+) -> anyhow::Result<()> {
     let design = choice.load()?;
     let kind = match kind {
         KindArg::Auto => spec::ObserverKind::Auto,
@@ -332,6 +344,14 @@ fn estimate(choice: &DesignChoice, input: &Path, output: &Path, kind: KindArg) -
         KindArg::Corrected => spec::ObserverKind::Corrected,
         KindArg::Ekf => spec::ObserverKind::Ekf,
     };
-    commands::estimate(&design, input, output, kind, &progress_bar(&design))?;
+    let bar = progress_bar(&design);
+    let provenance = commands::estimate(&design, input, output, kind, tables, &bar)?;
+    bar.finish_and_clear();
+    match provenance {
+        commands::Provenance::Saved(path) => eprintln!("estimate: by the design saved in {}", path.display()),
+        commands::Provenance::Fitted => {
+            eprintln!("estimate: no saved design for this spec (`gen` saves one), so it was fitted for this call")
+        }
+    }
     Ok(())
 }

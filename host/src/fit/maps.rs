@@ -5,7 +5,7 @@
 use std::sync::Arc;
 
 use firmware::{Estimate, Gamma, Saturation, TargetMap};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::fit::inverse_table::{InverseTable, TableError, RELATIVE_TOLERANCE};
 use crate::spec::Normalisation;
@@ -20,7 +20,7 @@ pub enum Tabulation {
 }
 
 /// `r = r_min + (r_max - r_min) Γ⁻¹(Lᵀ Z)` for one target.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct FittedMap {
     /// The target's name.
     pub target: String,

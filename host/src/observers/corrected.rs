@@ -106,16 +106,25 @@ impl<'a> Setting<'a> {
         code: &'a ModelCode,
         state_targets: &'a [usize],
     ) -> Self {
-        let (lower, upper) = state_targets
-            .iter()
-            .map(|&t| (result.targets[t].fit.map.r_min, result.targets[t].fit.map.r_max))
-            .unzip();
+        let maps: Vec<crate::fit::maps::FittedMap> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
+        Self::for_maps(design, design.map.horizon, &maps, code, state_targets)
+    }
+
+    /// [`Setting::for_design`] from the fitted maps alone (one per target) and the horizon `N`.
+    pub fn for_maps(
+        design: &Design,
+        horizon: usize,
+        maps: &[crate::fit::maps::FittedMap],
+        code: &'a ModelCode,
+        state_targets: &'a [usize],
+    ) -> Self {
+        let (lower, upper) = state_targets.iter().map(|&t| (maps[t].r_min, maps[t].r_max)).unzip();
         Setting {
             code,
             h: design.tau / design.chip_substeps as f64,
             substeps: design.chip_substeps,
             state_targets,
-            first: design.map.horizon - 1,
+            first: horizon - 1,
             lower,
             upper,
         }

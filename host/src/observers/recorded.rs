@@ -5,12 +5,12 @@
 //! `run` column restarts the observer.
 
 use crate::data::{Rows, Run};
-use crate::fit::DesignResult;
 use crate::plant::ModelCode;
 use crate::recording::{self, EstimateRow, Row};
 use crate::spec::{Design, ObserverKind};
+use crate::tables::Tables;
 
-use super::{corrected, ekf, Comparison};
+use super::{corrected, ekf};
 
 /// Why a kind cannot run on this design.
 #[derive(Debug, thiserror::Error)]
@@ -30,19 +30,19 @@ pub enum RecordedError {
 }
 
 /// `kind`'s estimates over `rows` (one row out per row in, per target the value and whether it was
-/// clamped to its learning range). `ObserverKind::Auto` is the kind `gen` chose (`observer()`).
+/// clamped to its learning range) by the fitted design `tables`. `ObserverKind::Auto` is the kind
+/// `gen` chose (`observer()`).
 pub fn estimate(
     design: &Design,
-    result: &DesignResult,
+    tables: &Tables,
     code: &ModelCode,
-    comparison: &Comparison,
     kind: ObserverKind,
     rows: &[Row],
 ) -> Result<Vec<EstimateRow>, RecordedError> {
-    let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
-    let horizon = design.map.horizon;
+    let maps = &tables.maps;
+    let horizon = tables.horizon;
     let kind = match kind {
-        ObserverKind::Auto => comparison.chosen.0,
+        ObserverKind::Auto => tables.chosen,
         other => other,
     };
     let unavailable = |kind: &'static str, why: String| RecordedError::Unavailable {
@@ -52,7 +52,7 @@ pub fn estimate(
     };
     let mut out = Vec::with_capacity(rows.len());
     for segment in rows.chunk_by(|a, b| a.run == b.run) {
-        let map = recording::estimate(&maps, horizon, segment);
+        let map = recording::estimate(maps, horizon, segment);
         if kind == ObserverKind::Map {
             out.extend(map);
             continue;
@@ -70,29 +70,31 @@ pub fn estimate(
         };
         let (estimates, clamps) = match kind {
             ObserverKind::Corrected => {
-                let tuned = comparison
-                    .corrected
-                    .as_ref()
-                    .map_err(|why| unavailable("corrected", why.clone()))?;
+                let constants = tables.corrected.as_ref().ok_or_else(|| {
+                    unavailable(
+                        "corrected",
+                        "it needs every state as a target and a model the host can run".to_owned(),
+                    )
+                })?;
                 let state_targets = corrected::state_targets(design).map_err(|why| unavailable("corrected", why))?;
-                let setting = corrected::Setting::for_design(design, result, code, &state_targets);
-                let programs = crate::plant::correction::correction_code(code, &tuned.constants);
-                let estimates = corrected::estimate_run(&setting, &programs, &tuned.constants, &values, &run);
+                let setting = corrected::Setting::for_maps(design, horizon, maps, code, &state_targets);
+                let programs = crate::plant::correction::correction_code(code, constants);
+                let estimates = corrected::estimate_run(&setting, &programs, constants, &values, &run);
                 let bounds: Vec<(usize, f64, f64)> = state_targets
                     .iter()
-                    .zip(tuned.constants.lower.iter().zip(&tuned.constants.upper))
+                    .zip(constants.lower.iter().zip(&constants.upper))
                     .map(|(&t, (&lo, &hi))| (t, lo, hi))
                     .collect();
                 (estimates, bounds)
             }
             _ => {
-                let (Some(tuned), Some((p0, state_targets))) = (&comparison.ekf, &comparison.started) else {
+                let (Some(constants), Some((p0, state_targets))) = (&tables.ekf, &tables.started) else {
                     return Err(unavailable(
                         "ekf",
                         "it needs every state as a target and a model the host can filter".to_owned(),
                     ));
                 };
-                let filter = crate::plant::kalman::filter_code(code, &tuned.constants);
+                let filter = crate::plant::kalman::filter_code(code, constants);
                 let estimates = ekf::estimate_started(&filter, p0, state_targets, horizon - 1, &values, &run, code);
                 (estimates, Vec::new())
             }

@@ -20,7 +20,7 @@ use super::program::{Builder, Leaf, Names, Program};
 use super::ModelCode;
 
 /// The corrected observer's constants, chosen on the tuning runs.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct CorrectionConstants {
     /// `G`, per state: the blend after the start-up, in `[0, 1]`.
     pub g: Vec<f64>,

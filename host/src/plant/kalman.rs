@@ -22,7 +22,7 @@ use super::program::{Builder, Leaf, Names, Program};
 use super::ModelCode;
 
 /// The EKF's constants, chosen on the tuning runs.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct EkfConstants {
     /// `x̂(0)`.
     pub x0: Vec<f64>,

@@ -45,7 +45,7 @@ mod proof;
 mod tests;
 
 use firmware::Gamma;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use proof::{node_error, nodes_and_bound, pointwise_curvature, Search};
 
@@ -114,7 +114,7 @@ pub enum TableError {
 }
 
 /// `Γ⁻¹` as the chip evaluates it (see the module docs), with its certificate.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct InverseTable {
     /// `L t_max / (Γ(1) - Γ(0))`: the dot product gives `t` directly.
     pub gains: Vec<f64>,
