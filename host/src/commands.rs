@@ -224,30 +224,14 @@ pub fn estimate(
         None => {
             let (design, _) = crate::search::settle(design.clone(), progress)?;
             let result = fit::run(&design, progress)?;
-            let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
-            let mut tables = Tables {
-                version: env!("CARGO_PKG_VERSION").to_owned(),
-                spec_sha256: design.spec_sha256.clone(),
-                source_sha256: String::new(),
-                horizon: design.map.horizon,
-                nm: design.map.nm,
-                beta: design.map.beta,
-                taps: design.map.taps,
-                chosen: ObserverKind::Map,
-                maps,
-                corrected: None,
-                ekf: None,
-                started: None,
-            };
-            if kind != ObserverKind::Map {
+            let comparison = if kind == ObserverKind::Map {
+                None
+            } else {
                 let code = crate::generate::model_code(&design)?;
                 progress.set_message(format!("{}: tuning the observers", design.name));
-                let comparison = crate::observers::compare(&design, &result, &code)?;
-                tables.chosen = comparison.chosen.0;
-                tables.corrected = comparison.corrected.as_ref().ok().map(|t| t.constants.clone());
-                tables.ekf = comparison.ekf.as_ref().map(|t| t.constants.clone());
-                tables.started = comparison.started.clone();
-            }
+                Some(crate::observers::compare(&design, &result, &code)?)
+            };
+            let tables = Tables::new(&design, &result, comparison.as_ref());
             (design, Provenance::Fitted, tables)
         }
     };

@@ -313,21 +313,10 @@ pub fn run(
     to: &Destinations,
     strict: bool,
     progress: impl Fn(&Design) -> ProgressBar,
-    mut done: impl FnMut(&Path, Result<&Prepared, &GenerateError>),
+    done: impl FnMut(&Path, Result<&Prepared, &GenerateError>),
 ) -> Result<Vec<Outcome>, GenerateError> {
     // 1. Every spec, the names and the families of the generated set afterwards: before any fit.
-    let mut designs: Vec<(PathBuf, Design)> = Vec::new();
-    for spec in specs {
-        let design = spec::load(spec)?;
-        if let Some((first, _)) = designs.iter().find(|(_, d)| d.name == design.name) {
-            return Err(GenerateError::DuplicateName {
-                name: design.name,
-                first: first.clone(),
-                second: spec.clone(),
-            });
-        }
-        designs.push((spec.clone(), design));
-    }
+    let designs = load_specs(specs)?;
     let sources = to.generated.join("src");
     let mut present = present_designs(&sources)?;
     for (_, design) in &designs {
@@ -345,16 +334,62 @@ pub fn run(
     let lib = lib_source(&known, &present)?;
 
     // 2. Fit, emit and report every design in memory.
+    let prepared = prepare_all(designs, |_| None, |name| to.reports.join(name), strict, progress, done)?;
+
+    // 3. Write.
+    std::fs::create_dir_all(&sources).map_err(|source| GenerateError::Io {
+        path: sources.clone(),
+        source,
+    })?;
+    let mut outcomes = Vec::new();
+    for (_, one) in prepared {
+        outcomes.push(write(one, to)?);
+    }
+    let lib_path = sources.join("lib.rs");
+    output::write_if_changed(&lib_path, &lib).map_err(|source| GenerateError::Io { path: lib_path, source })?;
+    Ok(outcomes)
+}
+
+/// Every spec loaded and checked, refusing two designs of one name, before anything is fitted.
+pub(crate) fn load_specs(specs: &[PathBuf]) -> Result<Vec<(PathBuf, Design)>, GenerateError> {
+    let mut designs: Vec<(PathBuf, Design)> = Vec::new();
+    for spec in specs {
+        let design = spec::load(spec)?;
+        if let Some((first, _)) = designs.iter().find(|(_, d)| d.name == design.name) {
+            return Err(GenerateError::DuplicateName {
+                name: design.name,
+                first: first.clone(),
+                second: spec.clone(),
+            });
+        }
+        designs.push((spec.clone(), design));
+    }
+    Ok(designs)
+}
+
+/// Fits, emits and reports every design in memory ([`prepare`], the crate name from `standalone`,
+/// the report folder from `folder`); `done` hears of each as it ends. Fails, before anything is
+/// written, when one failed or, with `strict`, when one fails a quality gate.
+pub(crate) fn prepare_all(
+    designs: Vec<(PathBuf, Design)>,
+    standalone: impl Fn(&Design) -> Option<String>,
+    folder: impl Fn(&str) -> PathBuf,
+    strict: bool,
+    progress: impl Fn(&Design) -> ProgressBar,
+    mut done: impl FnMut(&Path, Result<&Prepared, &GenerateError>),
+) -> Result<Vec<(PathBuf, Prepared)>, GenerateError> {
+    let total = designs.len();
     let mut prepared = Vec::new();
     let mut failed = 0;
     for (spec, design) in designs {
         let bar = progress(&design);
-        let one = prepare(design, &spec, None, |name| to.reports.join(name), &bar);
+        let crate_name = standalone(&design);
+        let one = prepare(design, &spec, crate_name.as_deref(), &folder, &bar);
         bar.finish_and_clear();
         match one {
             Ok(one) => {
                 done(&spec, Ok(&one));
-                prepared.push(one);
+                prepared.push((spec, one));
             }
             Err(e) => {
                 done(&spec, Err(&e));
@@ -363,35 +398,19 @@ pub fn run(
         }
     }
     if failed > 0 {
-        return Err(GenerateError::Failed {
-            failed,
-            total: specs.len(),
-        });
+        return Err(GenerateError::Failed { failed, total });
     }
-
     let gated: Vec<&str> = prepared
         .iter()
-        .filter(|p| !p.warnings.is_empty())
-        .map(|p| p.emitted.design.name.as_str())
+        .filter(|(_, p)| !p.warnings.is_empty())
+        .map(|(_, p)| p.emitted.design.name.as_str())
         .collect();
     if strict && !gated.is_empty() {
         return Err(GenerateError::Gates {
             designs: gated.join(", "),
         });
     }
-
-    // 3. Write.
-    std::fs::create_dir_all(&sources).map_err(|source| GenerateError::Io {
-        path: sources.clone(),
-        source,
-    })?;
-    let mut outcomes = Vec::new();
-    for one in prepared {
-        outcomes.push(write(one, to)?);
-    }
-    let lib_path = sources.join("lib.rs");
-    output::write_if_changed(&lib_path, &lib).map_err(|source| GenerateError::Io { path: lib_path, source })?;
-    Ok(outcomes)
+    Ok(prepared)
 }
 
 /// The design files in `sources` (`<name>.rs` other than `lib.rs`), sorted; none if it does not exist.
@@ -438,7 +457,7 @@ pub(crate) fn prepare(
     design: Design,
     spec: &Path,
     standalone: Option<&str>,
-    folder: impl FnOnce(&str) -> PathBuf,
+    folder: impl Fn(&str) -> PathBuf,
     bar: &ProgressBar,
 ) -> Result<Prepared, GenerateError> {
     let emitted = emit_design(design, spec, standalone, bar)?;

@@ -11,7 +11,9 @@ use std::path::{Path, PathBuf};
 use serde::{Deserialize, Serialize};
 
 use crate::fit::maps::FittedMap;
+use crate::fit::DesignResult;
 use crate::generate::Emitted;
+use crate::observers::Comparison;
 use crate::plant::correction::CorrectionConstants;
 use crate::plant::kalman::EkfConstants;
 use crate::spec::{Design, ObserverKind};
@@ -73,20 +75,29 @@ pub enum TablesError {
 impl Tables {
     /// What `emitted` is, as data.
     pub fn of(emitted: &Emitted) -> Self {
-        let (design, comparison) = (&emitted.design, &emitted.comparison);
+        let mut tables = Self::new(&emitted.design, &emitted.result, Some(&emitted.comparison));
+        tables.source_sha256 = sha256(&emitted.source);
+        tables
+    }
+
+    /// A fitted `design` (its map settled) as data: the maps of `result` and, when its observers were
+    /// compared, their constants and the chosen kind (else the map alone). No observer file yet.
+    pub fn new(design: &Design, result: &DesignResult, comparison: Option<&Comparison>) -> Self {
         Tables {
             version: env!("CARGO_PKG_VERSION").to_owned(),
             spec_sha256: design.spec_sha256.clone(),
-            source_sha256: sha256(&emitted.source),
+            source_sha256: String::new(),
             horizon: design.map.horizon,
             nm: design.map.nm,
             beta: design.map.beta,
             taps: design.map.taps,
-            chosen: comparison.chosen.0,
-            maps: emitted.result.targets.iter().map(|t| t.fit.map.clone()).collect(),
-            corrected: comparison.corrected.as_ref().ok().map(|t| t.constants.clone()),
-            ekf: comparison.ekf.as_ref().map(|t| t.constants.clone()),
-            started: comparison.started.clone(),
+            chosen: comparison.map_or(ObserverKind::Map, |c| c.chosen.0),
+            maps: result.targets.iter().map(|t| t.fit.map.clone()).collect(),
+            corrected: comparison
+                .and_then(|c| c.corrected.as_ref().ok())
+                .map(|t| t.constants.clone()),
+            ekf: comparison.and_then(|c| c.ekf.as_ref()).map(|t| t.constants.clone()),
+            started: comparison.and_then(|c| c.started.clone()),
         }
     }
 

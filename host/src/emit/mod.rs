@@ -325,6 +325,15 @@ pub fn portable_spec_path(spec: &Path, workspace: &Path) -> String {
         })
 }
 
+/// Names as the emitted docs list them: comma separated, `none` for none.
+pub fn name_list(names: &[String]) -> String {
+    if names.is_empty() {
+        "none".to_owned()
+    } else {
+        names.join(", ")
+    }
+}
+
 /// Where an emitted design file lives: what its examples, its `SPEC` and its "regenerate" line say.
 #[derive(Clone, Copy, Debug)]
 pub enum Placement<'a> {
@@ -381,13 +390,7 @@ pub fn design_file(
     code: &crate::plant::ModelCode,
     observers: &model::Observers<'_>,
 ) -> Result<String, EmitError> {
-    let list = |names: &[String]| {
-        if names.is_empty() {
-            "none".to_owned()
-        } else {
-            names.join(", ")
-        }
-    };
+    let list = name_list;
     let outputs: Vec<String> = design.model.outputs.iter().map(|o| o.name.clone()).collect();
     // The chip holds every sample in f32: data beyond its range cannot be what the map is checked on.
     let largest = result

@@ -90,13 +90,7 @@ pub fn source(design: &Design) -> String {
     let name = &design.name;
     let upper = name.to_uppercase();
     let status = format!("{}Status", camel(name));
-    let list = |names: &[String]| {
-        if names.is_empty() {
-            "none".to_owned()
-        } else {
-            names.join(", ")
-        }
-    };
+    let list = crate::emit::name_list;
     let outputs: Vec<String> = design.model.outputs.iter().map(|o| o.name.clone()).collect();
     let targets: Vec<String> = design.targets.iter().map(|t| t.name.clone()).collect();
     format!(

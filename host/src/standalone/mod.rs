@@ -22,9 +22,9 @@ use std::path::{Path, PathBuf};
 use indicatif::ProgressBar;
 
 use crate::emit::STANDALONE_SPEC;
-use crate::generate::{prepare, write_report, GenerateError, Outcome, Prepared};
+use crate::generate::{load_specs, prepare_all, write_report, GenerateError, Outcome, Prepared};
 use crate::output::write_if_changed;
-use crate::spec::{self, Design};
+use crate::spec::Design;
 
 /// Where the crate finds the `firmware` runtime.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -73,20 +73,9 @@ pub fn run(
     to: &Destination,
     strict: bool,
     progress: impl Fn(&Design) -> ProgressBar,
-    mut done: impl FnMut(&Path, Result<&Prepared, &GenerateError>),
+    done: impl FnMut(&Path, Result<&Prepared, &GenerateError>),
 ) -> Result<Vec<Outcome>, GenerateError> {
-    let mut designs = Vec::new();
-    for path in specs {
-        let design = spec::load(path)?;
-        if let Some((first, _)) = designs.iter().find(|(_, d): &&(PathBuf, Design)| d.name == design.name) {
-            return Err(GenerateError::DuplicateName {
-                name: design.name,
-                first: first.clone(),
-                second: path.clone(),
-            });
-        }
-        designs.push((path.clone(), design));
-    }
+    let designs = load_specs(specs)?;
     let folder_of = |name: &str| {
         if to.per_design {
             to.out.join(name)
@@ -94,46 +83,14 @@ pub fn run(
             to.out.clone()
         }
     };
-    let mut prepared = Vec::new();
-    let mut failed = 0;
-    for (path, design) in designs {
-        let bar = progress(&design);
-        let library = library_name(&design.name);
-        let one = prepare(
-            design,
-            &path,
-            Some(&library),
-            |name| folder_of(name).join("report"),
-            &bar,
-        );
-        bar.finish_and_clear();
-        match one {
-            Ok(one) => {
-                done(&path, Ok(&one));
-                prepared.push((path, one));
-            }
-            Err(e) => {
-                done(&path, Err(&e));
-                failed += 1;
-            }
-        }
-    }
-    if failed > 0 {
-        return Err(GenerateError::Failed {
-            failed,
-            total: specs.len(),
-        });
-    }
-    let gated: Vec<&str> = prepared
-        .iter()
-        .filter(|(_, p)| !p.warnings.is_empty())
-        .map(|(_, p)| p.emitted.design.name.as_str())
-        .collect();
-    if strict && !gated.is_empty() {
-        return Err(GenerateError::Gates {
-            designs: gated.join(", "),
-        });
-    }
+    let prepared = prepare_all(
+        designs,
+        |design| Some(library_name(&design.name)),
+        |name| folder_of(name).join("report"),
+        strict,
+        progress,
+        done,
+    )?;
     prepared
         .into_iter()
         .map(|(path, one)| {
