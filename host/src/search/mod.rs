@@ -271,26 +271,13 @@ fn candidates_of(
         runs: tuning.runs.clone(),
         horizon: settings.horizon,
     };
-    let mut sums = vec![vec![0.0; maps.len()]; counts.len()];
-    let mut count = 0usize;
-    let mut z = Vec::new();
-    for window in tuning.windows().filter(|w| w.end + 1 >= n_max) {
-        tuning.regressor(window, &mut z);
-        let truths: Vec<f64> = (0..maps.len()).map(|t| tuning.target(window, t)).collect();
-        for (c, sums) in sums.iter_mut().enumerate() {
-            for (t, target_maps) in maps.iter().enumerate() {
-                let error = target_maps[c].estimate(&z).value - truths[t];
-                sums[t] += error * error;
-            }
-        }
-        count += 1;
-    }
+    let rmse = rmse_per_count(&maps, &tuning, n_max);
     counts
         .iter()
         .enumerate()
         .map(|(c, &taps)| {
             let mut candidate = blank(taps);
-            candidate.rmse = sums[c].iter().map(|s| (s / count as f64).sqrt()).collect();
+            candidate.rmse = rmse[c].clone();
             let score = candidate.rmse.iter().zip(spreads).map(|(r, s)| r / s).sum::<f64>() / spreads.len() as f64;
             candidate.score = score.is_finite().then_some(score);
             if candidate.score.is_none() {
@@ -300,6 +287,29 @@ fn candidates_of(
             candidate.cost = Some(cost::of_maps(&refs, settings.horizon, design.tau));
             candidate
         })
+        .collect()
+}
+
+/// RMSE of every map of `maps[target][count]` on the windows of `data` ending at `k ≥ from − 1`, as
+/// `[count][target]`: the search's scores (tuning runs) and the accuracy against taps (validation).
+pub(crate) fn rmse_per_count(maps: &[Vec<FittedMap>], data: &DataSet, from: usize) -> Vec<Vec<f64>> {
+    let counts = maps.first().map_or(0, Vec::len);
+    let mut sums = vec![vec![0.0; maps.len()]; counts];
+    let mut windows = 0usize;
+    let mut z = Vec::new();
+    for window in data.windows().filter(|w| w.end + 1 >= from) {
+        data.regressor(window, &mut z);
+        for (t, target_maps) in maps.iter().enumerate() {
+            let truth = data.target(window, t);
+            for (c, map) in target_maps.iter().enumerate() {
+                let error = map.estimate(&z).value - truth;
+                sums[c][t] += error * error;
+            }
+        }
+        windows += 1;
+    }
+    sums.iter()
+        .map(|row| row.iter().map(|s| (s / windows as f64).sqrt()).collect())
         .collect()
 }
 

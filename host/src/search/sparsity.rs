@@ -60,19 +60,7 @@ pub fn accuracy_vs_taps(
             Ok(fits.into_iter().map(|fit| fit.map).collect())
         })
         .collect::<Result<_, FitError>>()?;
-    let mut z = Vec::new();
-    let mut sums = vec![vec![0.0; maps.len()]; counts.len()];
-    let mut windows = 0usize;
-    for window in validation.windows() {
-        validation.regressor(window, &mut z);
-        for (c, sums) in sums.iter_mut().enumerate() {
-            for (t, target_maps) in maps.iter().enumerate() {
-                let error = target_maps[c].estimate(&z).value - validation.target(window, t);
-                sums[t] += error * error;
-            }
-        }
-        windows += 1;
-    }
+    let rmse = super::rmse_per_count(&maps, validation, 0);
     Ok(Some(
         counts
             .iter()
@@ -83,7 +71,7 @@ pub fn accuracy_vs_taps(
                     taps,
                     regressor_len,
                     instructions: cost::of_maps(&refs, design.map.horizon, design.tau).instructions,
-                    rmse: sums[c].iter().map(|s| (s / windows as f64).sqrt()).collect(),
+                    rmse: rmse[c].clone(),
                     chosen: taps == chosen,
                 }
             })

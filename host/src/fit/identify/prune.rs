@@ -122,14 +122,16 @@ pub(super) fn deletion_costs(
     support: &[usize],
     mu: &DVector<f64>,
 ) -> Result<Vec<f64>, FitError> {
-    let reduced = learning.reduced(support);
-    let l = reduced
-        .r_ll
-        .solve_upper_triangular(&(&reduced.r_lmu * mu))
+    // The L block of the support's factor and its coupling to μ (no whitening needed here).
+    let factor = learning.factor_of(support);
+    let l_count = support.len() + usize::from(!learning.with_constant());
+    let r_ll = factor.view((0, 0), (l_count, l_count));
+    let r_lmu = factor.view((0, l_count), (l_count, mu.len()));
+    let l = r_ll
+        .solve_upper_triangular(&(r_lmu * mu))
         .ok_or(FitError::DependentRegressor { column: support[0] })?;
-    let inverse = reduced
-        .r_ll
-        .solve_upper_triangular(&DMatrix::identity(reduced.r_ll.nrows(), reduced.r_ll.ncols()))
+    let inverse = r_ll
+        .solve_upper_triangular(&DMatrix::identity(l_count, l_count))
         .ok_or(FitError::DependentRegressor { column: support[0] })?;
     Ok((0..support.len())
         .map(|j| l[j] * l[j] / inverse.row(j).norm_squared())
