@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use indicatif::ProgressBar;
 use rand::SeedableRng;
 
-use crate::recording::{self, RecordingError, StreamError};
+use crate::recording::{self, EstimatesCsv, MapEvaluator, Precision, RecordingError, StreamError};
 use crate::spec::{limits, Design, ObserverKind, SpecError};
 use crate::tables::Tables;
 use crate::{data, fit, output};
@@ -191,17 +191,32 @@ fn saved_tables(design: &Design, explicit: Option<&Path>) -> Result<Option<(Tabl
     Ok(None)
 }
 
-/// Estimates the targets over the recorded measurements `input` into `output` with observer `kind`,
-/// by the tables `gen` saved for this spec (`tables`, or found in the checkout's report folders), or
-/// else by fitting the design for this call.
+/// What `estimate` runs.
+#[derive(Clone, Copy, Debug)]
+pub struct Estimation<'a> {
+    /// The observer (`Auto`: the one `gen` chose).
+    pub kind: ObserverKind,
+    /// Its arithmetic.
+    pub precision: Precision,
+    /// The saved tables to use (`None`: look for them in the checkout, else fit).
+    pub tables: Option<&'a Path>,
+}
+
+/// Estimates the targets over the recorded measurements `input` into `output` (the format of
+/// [`crate::recording`]) as `how` says, by the tables `gen` saved for this spec, or else by fitting
+/// the design for this call.
 pub fn estimate(
     design: &Design,
     input: &Path,
     output: &Path,
-    kind: ObserverKind,
-    tables: Option<&Path>,
+    how: Estimation<'_>,
     progress: &ProgressBar,
 ) -> Result<Provenance, CommandError> {
+    let Estimation {
+        kind,
+        precision,
+        tables,
+    } = how;
     refuse_overwrite(output, &[input, &design.file])?;
     // A device or pipe may never end: only a regular file has a size to read.
     if input.exists() && !std::fs::metadata(input).is_ok_and(|m| m.is_file()) {
@@ -246,17 +261,19 @@ pub fn estimate(
     } else {
         kind
     };
+    let names: Vec<&str> = design.targets.iter().map(|t| t.name.as_str()).collect();
+    let csv = EstimatesCsv::new(&names, rows.has_runs(), design.tau);
     if chosen != ObserverKind::Map {
         let code = crate::generate::model_code(design)?;
         let all = recording::read(design, input)?;
-        let estimates = crate::observers::recorded::estimate(design, &tables, &code, chosen, &all)?;
-        let names: Vec<&str> = design.targets.iter().map(|t| t.name.as_str()).collect();
-        output::write_atomically(output, recording::estimates_csv(&names, &estimates).as_bytes()).map_err(io)?;
+        let estimates = crate::observers::recorded::estimate(design, &tables, &code, chosen, precision, &all)?;
+        output::write_atomically(output, recording::estimates_csv(&csv, &all, &estimates).as_bytes()).map_err(io)?;
         return Ok(provenance);
     }
+    let maps = MapEvaluator::new(&tables.maps, precision).map_err(crate::observers::recorded::RecordedError::from)?;
     // Row by row: memory does not grow with the recording; the output appears only when complete.
     output::write_atomically_with(output, |out| {
-        recording::estimate_streaming(&tables.maps, tables.horizon, &mut rows, out)
+        recording::estimate_streaming(&maps, tables.horizon, &csv, &mut rows, out)
     })
     .map_err(|e| match e {
         StreamError::Recording(e) => CommandError::Recording(e),

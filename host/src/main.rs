@@ -75,14 +75,15 @@ enum Command {
         #[arg(long, value_name = "FILE")]
         output: PathBuf,
     },
-    /// Estimates the targets of a design over recorded measurements with its observer (in f64).
+    /// Estimates the targets of a design over recorded measurements with its observer.
     Estimate {
         #[command(flatten)]
         design: DesignChoice,
         /// CSV with a header, one row per sample; columns named after the outputs and inputs.
         #[arg(long, value_name = "FILE")]
         input: PathBuf,
-        /// CSV to write: one column per target, then `saturated`.
+        /// CSV to write: `time`, `run` (when the input has one), `status`, one column per target, then
+        /// `saturated_<target>` per target (-1, 0, 1).
         #[arg(long, value_name = "FILE")]
         output: PathBuf,
         /// The observer: `auto` (default) is the design's `observer()`, the kind `gen` chose; `map`,
@@ -94,7 +95,18 @@ enum Command {
         /// the design is fitted for this call.
         #[arg(long, value_name = "FILE")]
         tables: Option<PathBuf>,
+        /// `f64` (default): the host library, the reference the tables are certified against. `f32`:
+        /// the firmware's code on the emitted tables, bit for bit what the chip computes.
+        #[arg(long, value_enum, default_value = "f64")]
+        precision: PrecisionArg,
     },
+}
+
+/// `--precision`.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum PrecisionArg {
+    F64,
+    F32,
 }
 
 /// `--kind`.
@@ -158,7 +170,8 @@ fn main() -> ExitCode {
             output,
             kind,
             tables,
-        } => estimate(&design, &input, &output, kind, tables.as_deref()),
+            precision,
+        } => estimate(&design, &input, &output, kind, tables.as_deref(), precision),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -336,6 +349,7 @@ fn estimate(
     output: &Path,
     kind: KindArg,
     tables: Option<&Path>,
+    precision: PrecisionArg,
 ) -> anyhow::Result<()> {
     let design = choice.load()?;
     let kind = match kind {
@@ -345,7 +359,15 @@ fn estimate(
         KindArg::Ekf => spec::ObserverKind::Ekf,
     };
     let bar = progress_bar(&design);
-    let provenance = commands::estimate(&design, input, output, kind, tables, &bar)?;
+    let how = commands::Estimation {
+        kind,
+        precision: match precision {
+            PrecisionArg::F64 => host::recording::Precision::F64,
+            PrecisionArg::F32 => host::recording::Precision::F32,
+        },
+        tables,
+    };
+    let provenance = commands::estimate(&design, input, output, how, &bar)?;
     bar.finish_and_clear();
     match provenance {
         commands::Provenance::Saved(path) => eprintln!("estimate: by the design saved in {}", path.display()),

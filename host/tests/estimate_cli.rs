@@ -45,6 +45,15 @@ fn rows(text: &str) -> Vec<Vec<String>> {
         .collect()
 }
 
+/// The cells of the column named `name` below the header.
+fn column<'a>(table: &'a [Vec<String>], name: &str) -> Vec<&'a str> {
+    let c = table[0]
+        .iter()
+        .position(|h| h == name)
+        .unwrap_or_else(|| panic!("no column {name}"));
+    table[1..].iter().map(|r| r[c].as_str()).collect()
+}
+
 #[test]
 fn paper_scenario_round_trip_matches_the_library() {
     let dir = scratch("scenario");
@@ -55,15 +64,21 @@ fn paper_scenario_round_trip_matches_the_library() {
     assert_eq!(recorded[0], ["time", "x1", "x2", "y"]);
     assert_eq!(recorded.len(), 1 + 101);
     assert_eq!((recorded[1][1].as_str(), recorded[1][2].as_str()), ("2", "0.5"));
+    // Times are the decimals k τ (τ = 0.1 s), not `3.0 * 0.1` = 0.30000000000000004.
+    assert_eq!(column(&recorded, "time")[..4], ["0", "0.1", "0.2", "0.3"]);
+    assert_eq!(column(&recorded, "time")[100], "10");
 
     let out = estimate_vanderpol(&run, &estimates);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let table = rows(&std::fs::read_to_string(&estimates).unwrap());
-    assert_eq!(table[0], ["x1", "x2", "saturated"]);
+    assert_eq!(table[0], ["time", "status", "x1", "x2", "saturated_x1", "saturated_x2"]);
     assert_eq!(table.len(), recorded.len());
+    // The recording's time, as written.
+    assert_eq!(column(&table, "time"), column(&recorded, "time"));
     // No estimate before N = 10 samples (the first correction at t = 0.9 s, as in the paper).
     for row in &table[1..10] {
-        assert!(row.iter().all(String::is_empty), "{row:?}");
+        assert_eq!(row[1], "no_estimate_yet");
+        assert!(row[2..].iter().all(String::is_empty), "{row:?}");
     }
     // From then on, the library estimate on the same window, to the last bit.
     let design = host::spec::load(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/vanderpol.toml"))).unwrap();
@@ -73,8 +88,20 @@ fn paper_scenario_round_trip_matches_the_library() {
     for k in 9..y.len() {
         let z: Vec<f64> = (0..10).map(|lag| y[k - lag]).collect();
         for t in 0..2 {
-            let expected = result.targets[t].fit.map.estimate(&z).value;
-            assert_eq!(table[1 + k][t].parse::<f64>().unwrap(), expected, "row {k} target {t}");
+            let expected = result.targets[t].fit.map.estimate(&z);
+            assert_eq!(table[1 + k][1], "ok");
+            assert_eq!(
+                table[1 + k][2 + t].parse::<f64>().unwrap(),
+                expected.value,
+                "row {k} target {t}"
+            );
+            let flag = match expected.saturation {
+                firmware::Saturation::Low => "-1",
+                firmware::Saturation::Inside => "0",
+                firmware::Saturation::High => "1",
+            };
+            assert_eq!(table[1 + k][4 + t], flag, "row {k} target {t}");
+            let expected = expected.value;
             let truth: f64 = recorded[1 + k][1 + t].parse().unwrap();
             errors[t] = errors[t].max((expected - truth).abs());
         }
@@ -112,13 +139,29 @@ fn restart_and_refusal(kind: &str) {
     let out = estimate_kind(kind, &input, &output);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let table = rows(&std::fs::read_to_string(&output).unwrap());
-    let has_estimate: Vec<bool> = table[1..].iter().map(|r| !r[0].is_empty()).collect();
-    // Run b accepts rows 12-15 and 17-23: its 10th accepted sample is row 22.
-    let expected: Vec<bool> = (0..24).map(|k| matches!(k, 9..=11) || (k >= 22)).collect();
     assert_eq!(
-        has_estimate, expected,
+        table[0],
+        ["time", "run", "status", "x1", "x2", "saturated_x1", "saturated_x2"]
+    );
+    // Without a time column, row k is at k τ; the run column is repeated.
+    assert_eq!(column(&table, "time")[21], "2.1");
+    assert_eq!(column(&table, "run")[11..13], ["a", "b"]);
+    // Run b accepts rows 12-15 and 17-23: its 10th accepted sample is row 22.
+    let expected: Vec<&str> = (0..24)
+        .map(|k| match k {
+            16 => "refused",
+            9..=11 | 22.. => "ok",
+            _ => "no_estimate_yet",
+        })
+        .collect();
+    assert_eq!(
+        column(&table, "status"),
+        expected,
         "{kind}: estimates from the 10th accepted sample of each run"
     );
+    for (k, row) in table[1..].iter().enumerate() {
+        assert_eq!(row[3].is_empty(), expected[k] != "ok", "{kind} row {k}");
+    }
     // The refused row leaves no trace: the same file without it gives the same last estimates.
     let without: String = text
         .lines()
@@ -130,7 +173,9 @@ fn restart_and_refusal(kind: &str) {
     std::fs::write(&input2, without).unwrap();
     assert!(estimate_kind(kind, &input2, &output2).status.success());
     let table2 = rows(&std::fs::read_to_string(&output2).unwrap());
-    assert_eq!(table[table.len() - 2..], table2[table2.len() - 2..], "{kind}");
+    // From `status` on (the times differ: the rows moved up by one).
+    let tail = |t: &[Vec<String>]| t[t.len() - 2..].iter().map(|r| r[2..].to_vec()).collect::<Vec<_>>();
+    assert_eq!(tail(&table), tail(&table2), "{kind}");
 }
 
 #[test]
@@ -325,17 +370,21 @@ fn streaming_estimates_equal_the_in_memory_ones() {
     std::fs::write(&path, &text).unwrap();
     let rows = host::recording::read(&design, &path).unwrap();
     let names: Vec<&str> = design.targets.iter().map(|t| t.name.as_str()).collect();
-    let in_memory =
-        host::recording::estimates_csv(&names, &host::recording::estimate(&maps, design.map.horizon, &rows));
-    let mut streamed = Vec::new();
-    let mut reader = host::recording::RowReader::open(&design, &path).unwrap();
-    host::recording::estimate_streaming(&maps, design.map.horizon, &mut reader, &mut streamed).unwrap();
+    let csv = host::recording::EstimatesCsv::new(&names, true, design.tau);
+    for precision in [host::recording::Precision::F64, host::recording::Precision::F32] {
+        let maps = host::recording::MapEvaluator::new(&maps, precision).unwrap();
+        let estimates = host::recording::estimate(&maps, design.map.horizon, &rows);
+        let in_memory = host::recording::estimates_csv(&csv, &rows, &estimates);
+        let mut streamed = Vec::new();
+        let mut reader = host::recording::RowReader::open(&design, &path).unwrap();
+        host::recording::estimate_streaming(&maps, design.map.horizon, &csv, &mut reader, &mut streamed).unwrap();
+        assert_eq!(String::from_utf8(streamed).unwrap(), in_memory);
+        assert!(
+            in_memory.lines().filter(|l| l.contains(",ok,")).count() > 10,
+            "{in_memory}"
+        );
+    }
     let _ = std::fs::remove_file(&path);
-    assert_eq!(String::from_utf8(streamed).unwrap(), in_memory);
-    assert!(
-        in_memory.lines().filter(|l| !l.starts_with(',')).count() > 10,
-        "{in_memory}"
-    );
 }
 
 #[test]
@@ -377,10 +426,10 @@ fn the_chosen_observer_on_the_recorded_scenario_is_the_reports() {
     for (k, (row, expected)) in table[1..].iter().zip(report.scenario.iter()).enumerate() {
         for t in 0..2 {
             if expected[t].is_nan() {
-                assert!(row[t].is_empty(), "row {k}");
+                assert!(row[2 + t].is_empty(), "row {k}");
             } else {
                 assert_eq!(
-                    row[t].parse::<f64>().unwrap().to_bits(),
+                    row[2 + t].parse::<f64>().unwrap().to_bits(),
                     expected[t].to_bits(),
                     "row {k} target {t}"
                 );

@@ -140,7 +140,8 @@ const CASES: &[Case] = &[
     // ---- validate.rs `identifier` (invalid, reserved) and validate_model.rs `declare` (declared twice), for
     // each kind of name declared in the model.
     case("state_invalid_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x 2\"]")], Exact("model.states[1]"), "letters, digits and `_`"),
-    case("state_reserved_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"time\"]")], Exact("model.states[1]"), "reserved: time, run, saturated"),
+    case("state_reserved_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"time\"]")], Exact("model.states[1]"), "reserved: time, t, run, status, saturated"),
+    case("target_reserved_prefix", Vdp, &[Swap("name = \"x1\"", "name = \"truth_x1\"")], Exact("targets[0].name"), "names starting with saturated_ or truth_"),
     case("state_declared_twice", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x1\"]")], Exact("model.states[1]"), "its own name"),
     case("input_invalid_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\ninputs = [\"u.1\"]")], Exact("model.inputs[0]"), "letters, digits and `_`"),
     case("input_reserved_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\ninputs = [\"saturated\"]")], Exact("model.inputs[0]"), "reserved"),

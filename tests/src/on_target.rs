@@ -1122,6 +1122,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
                 let rows: Vec<host::recording::Row> = accepted
                     .iter()
                     .map(|(y, u)| host::recording::Row {
+ time: None,
                         run: String::new(),
                         y: y.clone(),
                         u: u.clone(),
@@ -1247,6 +1248,7 @@ fn recorded_rows(result: &host::fit::DesignResult) -> Vec<host::recording::Row> 
                 _ => {}
             }
             host::recording::Row {
+                time: None,
                 run: String::new(),
                 y,
                 u: u.iter().map(|&v| f64::from(v as f32)).collect(),

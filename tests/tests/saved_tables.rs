@@ -2,7 +2,8 @@
 //! estimates are those of the design in memory for every observer kind, and tables of another spec
 //! are refused.
 
-use host::commands::{self, Provenance, Simulation};
+use host::commands::{self, Estimation, Provenance, Simulation};
+use host::recording::Precision;
 use host::spec::ObserverKind;
 use host::tables::Tables;
 use indicatif::ProgressBar;
@@ -40,6 +41,7 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
     let rows = host::recording::read(&design, &recording).unwrap();
     let code = host::generate::model_code(&design).unwrap();
     let names: Vec<&str> = design.targets.iter().map(|t| t.name.as_str()).collect();
+    let csv = host::recording::EstimatesCsv::new(&names, false, design.tau);
     for kind in [
         ObserverKind::Auto,
         ObserverKind::Map,
@@ -47,32 +49,138 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         ObserverKind::Ekf,
     ] {
         let out = scratch.join(format!("{kind:?}.csv"));
-        let provenance =
-            commands::estimate(&design, &recording, &out, kind, Some(&saved), &ProgressBar::hidden()).unwrap();
+        let how = Estimation {
+            kind,
+            precision: Precision::F64,
+            tables: Some(&saved),
+        };
+        let provenance = commands::estimate(&design, &recording, &out, how, &ProgressBar::hidden()).unwrap();
         assert_eq!(provenance, Provenance::Saved(saved.clone()));
         // The design in memory (no file), through the same observers.
-        let expected = host::observers::recorded::estimate(&design, &in_memory, &code, kind, &rows).unwrap();
+        let expected =
+            host::observers::recorded::estimate(&design, &in_memory, &code, kind, Precision::F64, &rows).unwrap();
         assert_eq!(
             std::fs::read_to_string(&out).unwrap(),
-            host::recording::estimates_csv(&names, &expected),
+            host::recording::estimates_csv(&csv, &rows, &expected),
             "{kind:?}"
         );
+    }
+
+    // `--precision f32` is the generated observer (the emitted code, compiled for this host) bit for
+    // bit, flags included, over the recording with a refused sample.
+    let text = std::fs::read_to_string(&recording).unwrap();
+    let with_nan: String = text
+        .lines()
+        .enumerate()
+        .map(|(i, line)| {
+            if i == 40 {
+                let cells: Vec<&str> = line.split(',').collect();
+                format!("{},nan\n", cells[..cells.len() - 1].join(","))
+            } else {
+                format!("{line}\n")
+            }
+        })
+        .collect();
+    let refused = scratch.join("refused.csv");
+    std::fs::write(&refused, with_nan).unwrap();
+    let rows = host::recording::read(&design, &refused).unwrap();
+    assert!(rows[39].y[0].is_nan());
+    use generated::vanderpol as d;
+    fn chip<O>(
+        rows: &[host::recording::Row],
+        mut push: impl FnMut(&mut O, [f32; d::OUTPUTS]) -> bool,
+        estimate: impl Fn(&O) -> Option<[firmware::Estimate<f32>; d::TARGETS]>,
+        mut observer: O,
+    ) -> Vec<String> {
+        rows.iter()
+            .map(|row| {
+                let y: [f32; d::OUTPUTS] = core::array::from_fn(|i| row.y[i] as f32);
+                if !push(&mut observer, y) {
+                    return "refused".to_owned();
+                }
+                match estimate(&observer) {
+                    None => "no_estimate_yet".to_owned(),
+                    Some(e) => {
+                        let flag = |s: firmware::Saturation| match s {
+                            firmware::Saturation::Low => "-1",
+                            firmware::Saturation::Inside => "0",
+                            firmware::Saturation::High => "1",
+                        };
+                        format!(
+                            "ok,{},{},{},{}",
+                            f64::from(e[0].value),
+                            f64::from(e[1].value),
+                            flag(e[0].saturation),
+                            flag(e[1].saturation)
+                        )
+                    }
+                }
+            })
+            .collect()
+    }
+    let map = chip(
+        &rows,
+        |o: &mut d::MapObserver, y| o.push(y, []).is_ok(),
+        d::MapObserver::estimate,
+        d::MapObserver::new(),
+    );
+    let corrected = chip(
+        &rows,
+        |o: &mut d::CorrectedObserver, y| o.push(y, []).is_ok(),
+        d::CorrectedObserver::estimate,
+        d::CorrectedObserver::new(),
+    );
+    let started_ekf = chip(
+        &rows,
+        |o: &mut d::StartedEkfObserver, y| o.push(y, []).is_ok(),
+        d::StartedEkfObserver::estimate,
+        d::StartedEkfObserver::new(),
+    );
+    for (kind, expected) in [
+        (ObserverKind::Map, map),
+        (ObserverKind::Corrected, corrected),
+        (ObserverKind::Ekf, started_ekf),
+    ] {
+        let out = scratch.join(format!("{kind:?}-f32.csv"));
+        let how = Estimation {
+            kind,
+            precision: Precision::F32,
+            tables: Some(&saved),
+        };
+        commands::estimate(&design, &refused, &out, how, &ProgressBar::hidden()).unwrap();
+        let written = std::fs::read_to_string(&out).unwrap();
+        let lines: Vec<&str> = written.lines().skip(1).collect();
+        assert_eq!(lines.len(), expected.len());
+        let mut ok = 0;
+        for (k, (line, expected)) in lines.iter().zip(&expected).enumerate() {
+            // After `time,`; empty cells follow a row without estimates.
+            let (_, rest) = line.split_once(',').unwrap();
+            assert_eq!(rest.trim_end_matches(','), expected, "{kind:?} row {k}");
+            ok += usize::from(expected.starts_with("ok"));
+        }
+        assert!(ok > 100, "{kind:?}: {ok} estimates compared");
+        // And f32 is not f64: the default precision differs somewhere.
+        let f64_out = scratch.join(format!("{kind:?}-f64.csv"));
+        let how = Estimation {
+            precision: Precision::F64,
+            ..how
+        };
+        commands::estimate(&design, &refused, &f64_out, how, &ProgressBar::hidden()).unwrap();
+        assert_ne!(std::fs::read_to_string(&f64_out).unwrap(), written, "{kind:?}");
     }
 
     // Tables of another spec text (a comment added) are refused, naming both files.
     let edited = scratch.join("vanderpol.toml");
     std::fs::write(&edited, std::fs::read_to_string(&spec).unwrap() + "# edited\n").unwrap();
     let other = host::spec::load(&edited).unwrap();
-    let error = commands::estimate(
-        &other,
-        &recording,
-        &scratch.join("x.csv"),
-        ObserverKind::Map,
-        Some(&saved),
-        &ProgressBar::hidden(),
-    )
-    .unwrap_err()
-    .to_string();
+    let how = Estimation {
+        kind: ObserverKind::Map,
+        precision: Precision::F64,
+        tables: Some(&saved),
+    };
+    let error = commands::estimate(&other, &recording, &scratch.join("x.csv"), how, &ProgressBar::hidden())
+        .unwrap_err()
+        .to_string();
     assert!(
         error.contains("design.json") && error.contains("vanderpol.toml") && error.contains("gen"),
         "{error}"

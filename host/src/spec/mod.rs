@@ -350,8 +350,13 @@ fn is_module_name(name: &str) -> bool {
         && !RESERVED_MODULES.contains(&name)
 }
 
-/// Names that would collide with the columns `time`, `run` and `saturated` of recorded CSV files.
-const RESERVED_NAMES: &[&str] = &["time", "run", "saturated"];
+/// Names that would collide with the columns of the recorded and estimates CSV files (`time` or `t`,
+/// `run`, `status`); names starting with [`RESERVED_PREFIXES`] would collide with their per-target
+/// columns.
+const RESERVED_NAMES: &[&str] = &["time", "t", "run", "status", "saturated"];
+
+/// Prefixes of the per-target columns: `saturated_<target>` in estimates, `truth_<target>` in recordings.
+const RESERVED_PREFIXES: &[&str] = &["saturated_", "truth_"];
 
 /// Names that cannot be a Rust module (the design name becomes one in `generated/`).
 const RUST_KEYWORDS: &[&str] = &[

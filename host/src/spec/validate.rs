@@ -31,11 +31,17 @@ impl Validator {
         let mut chars = name.chars();
         let valid = matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_')
             && chars.all(|c| c.is_ascii_alphanumeric() || c == '_');
-        if RESERVED_NAMES.contains(&name) {
+        if RESERVED_NAMES.contains(&name) || RESERVED_PREFIXES.iter().any(|p| name.starts_with(p)) {
             return Err(self.err(
                 field,
-                format!("`{name}` is reserved: it names a column of the CSV files `simulate` and `estimate` use"),
-                format!("rename it (reserved: {})", RESERVED_NAMES.join(", ")),
+                format!(
+                    "`{name}` is reserved: it names a column of the CSV files `simulate`, `estimate` and `plot` use"
+                ),
+                format!(
+                    "rename it (reserved: {}, and names starting with {})",
+                    RESERVED_NAMES.join(", "),
+                    RESERVED_PREFIXES.join(" or ")
+                ),
             ));
         }
         if crate::spec::expr::is_operator_name(name) {
