@@ -197,6 +197,16 @@ fn the_board_example_prints_the_hosts_estimates_on_the_emulated_board() {
         design::TARGETS
     );
 
+    // The first estimate the example's README and main.rs quote is the one it prints.
+    let first = lines[design::HORIZON];
+    for quoted in ["examples/board/README.md", "examples/board/src/main.rs"] {
+        let text = std::fs::read_to_string(root.join(quoted)).expect("the example's file");
+        assert!(
+            text.contains(first),
+            "{quoted} does not quote the first estimate {first:?}"
+        );
+    }
+
     // The comparison sees one bit of one printed value, and a clamp flag.
     let mut changed = board.clone();
     let last = changed

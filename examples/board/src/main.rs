@@ -4,9 +4,9 @@
 //!
 //! ```text
 //! 0 no estimate yet            until HORIZON samples have arrived
-//! 9 x1=1.7424 x2=0.06258857    one name=value per target; (low) or (high) after a value clamped to
-//!                              the design's learning range
-//! 23 refused                   a NaN or infinite sample: the observer is unchanged
+//! 9 x1=0.14226508 x2=4.250018  one name=value per target, (low) or (high) after a value clamped
+//!                              to the design's learning range
+//! <k> refused                  a NaN or infinite sample: the observer is unchanged
 //! ```
 //!
 //! The board is a cargo feature: `nucleo-f401re` (the default) or `qemu-mps2-an386` (the emulator;
