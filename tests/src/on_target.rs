@@ -11,6 +11,7 @@
 
 use std::any::TypeId;
 use std::collections::BTreeMap;
+use std::ffi::OsStr;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
@@ -372,11 +373,48 @@ fn one_instruction_per_block() -> Result<Vec<&'static str>, Unavailable> {
 }
 
 /// Runs `elf` under QEMU with semihosting and an execution trace in `trace`; returns what it printed.
-/// Output goes to a file, not a pipe (QEMU can hang when a pipe closes early), and a run that does not
-/// finish within `timeout` is killed.
 fn run_qemu(elf: &Path, trace: &Path, timeout: Duration) -> Result<String, Unavailable> {
-    let output_file = trace.with_extension("out");
-    let stdout = std::fs::File::create(&output_file).map_err(|e| failed(e.to_string()))?;
+    let mut tracing: Vec<&OsStr> = one_instruction_per_block()?.into_iter().map(OsStr::new).collect();
+    tracing.extend([
+        OsStr::new("-d"),
+        OsStr::new("exec,nochain"),
+        OsStr::new("-D"),
+        trace.as_os_str(),
+    ]);
+    let (status, text) = qemu(elf, &tracing, &trace.with_extension("out"), timeout)?;
+    if !status.success() || !text.contains("DONE") {
+        return Err(failed(format!("the on-target program failed ({status}):\n{text}")));
+    }
+    Ok(text)
+}
+
+/// Runs `elf` on the emulated board (QEMU `mps2-an386`, semihosting, no trace) until it exits, with
+/// its output in `output`; returns what it printed. An error when it exits with a failure (a
+/// semihosting `EXIT_FAILURE`, as a panic handler does) or does not finish within `timeout`.
+pub fn run_on_emulator(elf: &Path, output: &Path, timeout: Duration) -> Result<String, Unavailable> {
+    let (status, text) = qemu(elf, &[], output, timeout)?;
+    if !status.success() {
+        return Err(failed(format!(
+            "{} failed on the emulator ({status}):\n{text}",
+            elf.display()
+        )));
+    }
+    Ok(text)
+}
+
+/// Runs `elf` under QEMU with semihosting and the `extra` options; returns its exit status and what
+/// it printed. Output goes to `output`, a file, not a pipe (QEMU can hang when a pipe closes early),
+/// and a run that does not finish within `timeout` is killed.
+fn qemu(
+    elf: &Path,
+    extra: &[&OsStr],
+    output: &Path,
+    timeout: Duration,
+) -> Result<(std::process::ExitStatus, String), Unavailable> {
+    if let Some(folder) = output.parent() {
+        std::fs::create_dir_all(folder).map_err(|e| failed(format!("{}: {e}", folder.display())))?;
+    }
+    let stdout = std::fs::File::create(output).map_err(|e| failed(e.to_string()))?;
     let mut child = Command::new("qemu-system-arm")
         .args([
             "-machine",
@@ -390,9 +428,7 @@ fn run_qemu(elf: &Path, trace: &Path, timeout: Duration) -> Result<String, Unava
             "none",
         ])
         .args(["-semihosting-config", "enable=on,target=native"])
-        .args(one_instruction_per_block()?)
-        .args(["-d", "exec,nochain", "-D"])
-        .arg(trace)
+        .args(extra)
         .arg("-kernel")
         .arg(elf)
         .stdin(Stdio::null())
@@ -412,11 +448,8 @@ fn run_qemu(elf: &Path, trace: &Path, timeout: Duration) -> Result<String, Unava
         }
         std::thread::sleep(Duration::from_millis(20));
     };
-    let text = std::fs::read_to_string(&output_file).map_err(|e| failed(e.to_string()))?;
-    if !status.success() || !text.contains("DONE") {
-        return Err(failed(format!("the on-target program failed ({status}):\n{text}")));
-    }
-    Ok(text)
+    let text = std::fs::read_to_string(output).map_err(|e| failed(e.to_string()))?;
+    Ok((status, text))
 }
 
 /// Addresses of the division and square-root instructions (`VDIV`, `VSQRT`) in an ELF, from
@@ -721,9 +754,15 @@ fn probe_all(dir: &Path) -> Result<Probes, Unavailable> {
 
 /// QEMU and binutils, or which is missing.
 fn require_tools() -> Result<(), Unavailable> {
-    require("qemu-system-arm", "qemu-system-arm")?;
-    require("arm-none-eabi-size", "binutils-arm-none-eabi")?;
+    require_emulator()?;
     require("arm-none-eabi-objdump", "binutils-arm-none-eabi")
+}
+
+/// QEMU (to run a program, [`run_on_emulator`]) and `arm-none-eabi-size` (to measure it, [`sizes`]),
+/// or which is missing.
+pub fn require_emulator() -> Result<(), Unavailable> {
+    require("qemu-system-arm", "qemu-system-arm")?;
+    require("arm-none-eabi-size", "binutils-arm-none-eabi")
 }
 
 /// Runs `elf` under QEMU with an execution trace beside it and returns what it printed, and the
@@ -921,7 +960,7 @@ pub fn compare_ekf_with_f64(name: &str, measured: &EkfMeasurement) -> Result<f64
 }
 
 /// Estimates as the chip prints them: per target the value's bits and the saturation flag.
-fn bits_and_flags<T: Scalar>(estimates: &[Estimate<T>], bits: impl Fn(T) -> u32) -> Vec<(u32, char)> {
+pub fn bits_and_flags<T: Scalar>(estimates: &[Estimate<T>], bits: impl Fn(T) -> u32) -> Vec<(u32, char)> {
     estimates
         .iter()
         .map(|e| {
