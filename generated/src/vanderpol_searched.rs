@@ -29,7 +29,7 @@ pub const SPEC: &str = "host/specs/vanderpol_searched.toml";
 pub const SAMPLE_PERIOD: f32 = 0.1;
 /// States of the model.
 pub const STATES: usize = 2;
-/// Horizon N: samples in the regressor.
+/// Horizon N: samples in the regressor, spanning (N − 1) τ = 1.5 s.
 pub const HORIZON: usize = 16;
 /// Measured outputs per sample.
 pub const OUTPUTS: usize = 1;
@@ -39,14 +39,23 @@ pub const INPUTS: usize = 0;
 pub const TARGETS: usize = 2;
 /// Entries of the regressor `z`: `HORIZON · (OUTPUTS + INPUTS)`.
 pub const REGRESSOR_LEN: usize = 16;
-/// Output names, in `push` order.
+/// Output names, in `push` order (units: [`OUTPUT_UNITS`]).
 pub const OUTPUT_NAMES: [&str; OUTPUTS] = ["y"];
-/// Input names, in `push` order.
+/// Input names, in `push` order (units: [`INPUT_UNITS`]).
 pub const INPUT_NAMES: [&str; INPUTS] = [];
-/// State names, in state order.
+/// State names, in state order (units: [`STATE_UNITS`]).
 pub const STATE_NAMES: [&str; STATES] = ["x1", "x2"];
-/// Target names, in estimate order.
+/// Target names, in estimate order (units: [`TARGET_UNITS`]).
 pub const TARGET_NAMES: [&str; TARGETS] = ["x1", "x2"];
+/// Each output's unit, as `push` takes it (the spec's `unit`; "" where it gives none).
+pub const OUTPUT_UNITS: [&str; OUTPUTS] = [""];
+/// Each input's unit, as `push` takes it (the spec's `[model.units]`; "" where it gives none).
+pub const INPUT_UNITS: [&str; INPUTS] = [];
+/// Each state's unit (the spec's `[model.units]`; "" where it gives none): the unit of the model's
+/// states and of the observers' state constants.
+pub const STATE_UNITS: [&str; STATES] = ["", ""];
+/// Each target's unit, as `estimate` returns it (the spec's `unit`; "" where it gives none).
+pub const TARGET_UNITS: [&str; TARGETS] = ["", ""];
 
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
@@ -55,7 +64,8 @@ pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 4] = [("map", 149), ("ekf", 241)
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
-/// Gains `g_i` of `x1`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`.
+/// Gains `g_i` of `x1`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`, each
+/// in 1 / the unit of its regressor entry, so that `t` has no unit.
 const GAINS_X1: [f32; REGRESSOR_LEN] = [
     0.017425023,
     0.0037131133,
@@ -100,7 +110,8 @@ pub const MAP_X1: TargetMap<'static, f32> = TargetMap {
 
 const _: () = assert!(SEGMENTS_X1.len() == 1 && MAP_X1.inverse.t_max == SEGMENTS_X1.len() as f32);
 
-/// Gains `g_i` of `x2`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`.
+/// Gains `g_i` of `x2`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`, each
+/// in 1 / the unit of its regressor entry, so that `t` has no unit.
 const GAINS_X2: [f32; REGRESSOR_LEN] = [
     0.032474767,
     0.027363943,
@@ -219,7 +230,7 @@ pub const fn map_observer() -> MapObserver {
 pub const RECORDED_LEN: usize = 101;
 
 /// A recorded measurement sequence for tests and examples: the spec's scenario as measured, outputs
-/// per sample, with the first output of samples 33 and 67 replaced by NaN and +∞, which
+/// per sample (in [`OUTPUT_UNITS`]), with the first output of samples 33 and 67 replaced by NaN and +∞, which
 /// the observer must refuse without disturbing later estimates.
 #[rustfmt::skip]
 pub static RECORDED_Y: [[f32; OUTPUTS]; RECORDED_LEN] = [
@@ -326,7 +337,7 @@ pub static RECORDED_Y: [[f32; OUTPUTS]; RECORDED_LEN] = [
     [4.1486936],
 ];
 
-/// The inputs of the recorded sequence, per sample.
+/// The inputs of the recorded sequence, per sample (in [`INPUT_UNITS`]).
 pub static RECORDED_U: [[f32; INPUTS]; RECORDED_LEN] = [[]; RECORDED_LEN];
 
 /// The spec's model on the chip, written out from its expression trees by `gen`:
@@ -393,7 +404,8 @@ pub type Discrete<T> = firmware::Rk4<T, Plant, CHIP_SUBSTEPS>;
 /// Entries of the EKF's covariance kept: its upper triangle, row by row (it is symmetric).
 pub const COVARIANCE: usize = 3;
 
-/// The EKF's `Q` diagonal as `gen` chose it (f64).
+/// The EKF's `Q` diagonal as `gen` chose it (f64): each state's process-noise variance per sample
+/// period, in its unit squared ([`STATE_UNITS`]).
 pub const EKF_Q: [f64; STATES] = [8.348736226182275e-5, 0.0005175041637515505];
 
 /// This design's extended Kalman filter, written out for its size by `gen`: the library's
@@ -866,8 +878,9 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     ([t109, t115], [t159, t154, t161])
 }
 
-/// The model-corrected map's constants as `gen` chose them (f64): `G`, `K` (states × outputs, row
-/// by row), the schedule `T`, and each state's clamp.
+/// The model-corrected map's constants as `gen` chose them (f64): `G` (no unit), `K` (states ×
+/// outputs, row by row, in state unit per output unit), the schedule `T` (in samples), and each
+/// state's clamp (in its unit); units in [`STATE_UNITS`] and [`OUTPUT_UNITS`].
 pub const CORRECTED_G: [f64; STATES] = [0.0, 0.0];
 /// See [`CORRECTED_G`].
 pub const CORRECTED_K: [f64; STATES * OUTPUTS] = [0.00497990504992314, 0.033520997685604334];
@@ -1105,7 +1118,8 @@ fn corrected_steady<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T
     [t7, t10]
 }
 
-/// `P(N−1)` diagonal of [`StartedEkf`] (f64), as `gen` chose it.
+/// `P(N−1)` diagonal of [`StartedEkf`] (f64), as `gen` chose it, in each state's unit squared
+/// ([`STATE_UNITS`]).
 pub const STARTED_P0: [f64; STATES] = [0.01483079302671924, 0.058551022002572485];
 
 /// The EKF started at the map's first estimate `x̂(N−1) = F(Z)` with `P(N−1)` diagonal, each variance

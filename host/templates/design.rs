@@ -29,7 +29,7 @@ pub const SPEC: &str = {{ spec_path_literal }};
 pub const SAMPLE_PERIOD: f32 = {{ tau }};
 /// States of the model.
 pub const STATES: usize = {{ states }};
-/// Horizon N: samples in the regressor.
+/// Horizon N: samples in the regressor, spanning (N − 1) τ = {{ window }} {{ time_unit }}.
 pub const HORIZON: usize = {{ horizon }};
 /// Measured outputs per sample.
 pub const OUTPUTS: usize = {{ outputs.len() }};
@@ -39,14 +39,23 @@ pub const INPUTS: usize = {{ inputs.len() }};
 pub const TARGETS: usize = {{ targets.len() }};
 /// Entries of the regressor `z`: `HORIZON · (OUTPUTS + INPUTS)`.
 pub const REGRESSOR_LEN: usize = {{ regressor_len }};
-/// Output names, in `push` order.
+/// Output names, in `push` order (units: [`OUTPUT_UNITS`]).
 pub const OUTPUT_NAMES: [&str; OUTPUTS] = [{% for o in outputs %}"{{ o }}"{% if !loop.last %}, {% endif %}{% endfor %}];
-/// Input names, in `push` order.
+/// Input names, in `push` order (units: [`INPUT_UNITS`]).
 pub const INPUT_NAMES: [&str; INPUTS] = [{% for i in inputs %}"{{ i }}"{% if !loop.last %}, {% endif %}{% endfor %}];
-/// State names, in state order.
+/// State names, in state order (units: [`STATE_UNITS`]).
 pub const STATE_NAMES: [&str; STATES] = {{ state_list }};
-/// Target names, in estimate order.
+/// Target names, in estimate order (units: [`TARGET_UNITS`]).
 pub const TARGET_NAMES: [&str; TARGETS] = [{% for t in targets %}"{{ t.name }}"{% if !loop.last %}, {% endif %}{% endfor %}];
+/// Each output's unit, as `push` takes it (the spec's `unit`; "" where it gives none).
+pub const OUTPUT_UNITS: [&str; OUTPUTS] = {{ output_units }};
+/// Each input's unit, as `push` takes it (the spec's `[model.units]`; "" where it gives none).
+pub const INPUT_UNITS: [&str; INPUTS] = {{ input_units }};
+/// Each state's unit (the spec's `[model.units]`; "" where it gives none): the unit of the model's
+/// states and of the observers' state constants.
+pub const STATE_UNITS: [&str; STATES] = {{ state_units }};
+/// Each target's unit, as `estimate` returns it (the spec's `unit`; "" where it gives none).
+pub const TARGET_UNITS: [&str; TARGETS] = {{ target_units }};
 
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
@@ -55,18 +64,19 @@ pub const PREDICTED_INSTRUCTIONS: [(&str, u32); {{ predicted_len }}] = [{{ predi
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 {% for t in targets %}
-/// Gains `g_i` of `{{ t.name }}`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`.{{ t.taps_note }}
+/// Gains `g_i` of `{{ t.name }}`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`, each
+/// in 1 / the unit of its regressor entry, so that `t` has no unit.{{ t.taps_note }}
 const GAINS_{{ t.upper }}: [f32; REGRESSOR_LEN] = [
 {{ t.gains }}
 ];
 
-{% match t.starts %}{% when None %}/// The {{ t.segment_count }} segments `(a_k, b_k)` of `{{ t.name }} = a_k + b_k t` on `t ∈ [k, k + 1]`.
+{% match t.starts %}{% when None %}/// The {{ t.segment_count }} segments `(a_k, b_k)` of `{{ t.name }} = a_k + b_k t` on `t ∈ [k, k + 1]`{{ t.unit_phrase }}.
 #[rustfmt::skip]
 const SEGMENTS_{{ t.upper }}: [[f32; 2]; {{ t.segment_count }}] = [
 {{ t.segments }}
 ];
 
-/// `{{ t.name }} = {{ t.expr }}`: validation RMSE {{ t.rmse }}, max error {{ t.max_error }} (linear floor RMSE {{ t.linear_rmse }}).
+/// `{{ t.name }} = {{ t.expr }}`{{ t.unit_phrase }}: validation RMSE {{ t.rmse }}, max error {{ t.max_error }} (linear floor RMSE {{ t.linear_rmse }}).
 ///
 /// `Γ⁻¹` is a table of {{ t.segment_count }} segments ({{ t.knot_count }} knots uniform in `Lᵀ z`). Proven on the
 /// host from bounds of `Γ'` and `Γ''`: |table − Γ⁻¹| ≤ {{ t.proven_bound }} over the whole range
@@ -90,13 +100,13 @@ const STARTS_{{ t.upper }}: [f32; {{ t.segment_count }}] = [
 {{ starts }}
 ];
 
-/// The {{ t.segment_count }} segments `(a_k, b_k)` of `{{ t.name }} = a_k + b_k (t - t_k)` on `[t_k, t_{k+1}]`.
+/// The {{ t.segment_count }} segments `(a_k, b_k)` of `{{ t.name }} = a_k + b_k (t - t_k)` on `[t_k, t_{k+1}]`{{ t.unit_phrase }}.
 #[rustfmt::skip]
 const SEGMENTS_{{ t.upper }}: [[f32; 2]; {{ t.segment_count }}] = [
 {{ t.segments }}
 ];
 
-/// `{{ t.name }} = {{ t.expr }}`: validation RMSE {{ t.rmse }}, max error {{ t.max_error }} (linear floor RMSE {{ t.linear_rmse }}).
+/// `{{ t.name }} = {{ t.expr }}`{{ t.unit_phrase }}: validation RMSE {{ t.rmse }}, max error {{ t.max_error }} (linear floor RMSE {{ t.linear_rmse }}).
 ///
 /// `Γ⁻¹` is a table of {{ t.segment_count }} segments ({{ t.knot_count }} knots placed by the curvature of `Γ⁻¹`,
 /// found by a binary search of fixed length). Proven on the host from bounds of `Γ'` and `Γ''`:
@@ -170,14 +180,14 @@ pub const fn map_observer() -> MapObserver {
 pub const RECORDED_LEN: usize = {{ recorded_len }};
 
 /// A recorded measurement sequence for tests and examples: the spec's scenario as measured, outputs
-/// per sample, with the first output of samples {% for k in refused %}{{ k }}{% if !loop.last %} and {% endif %}{% endfor %} replaced by NaN and +∞, which
+/// per sample (in [`OUTPUT_UNITS`]), with the first output of samples {% for k in refused %}{{ k }}{% if !loop.last %} and {% endif %}{% endfor %} replaced by NaN and +∞, which
 /// the observer must refuse without disturbing later estimates.
 #[rustfmt::skip]
 pub static RECORDED_Y: [[f32; OUTPUTS]; RECORDED_LEN] = [
 {{ recorded_y }}
 ];
 
-/// The inputs of the recorded sequence, per sample.
+/// The inputs of the recorded sequence, per sample (in [`INPUT_UNITS`]).
 {%- if inputs.is_empty() %}
 pub static RECORDED_U: [[f32; INPUTS]; RECORDED_LEN] = [[]; RECORDED_LEN];
 {%- else %}

@@ -141,6 +141,9 @@ const CASES: &[Case] = &[
     // each kind of name declared in the model.
     case("state_invalid_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x 2\"]")], Exact("model.states[1]"), "letters, digits and `_`"),
     case("state_reserved_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"time\"]")], Exact("model.states[1]"), "reserved: time, t, run, status, saturated"),
+    case("units_of_an_output", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nunits = { y = \"V\" }")], Exact("model.units.y"), "`unit` field"),
+    case("units_of_an_unknown_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nunits = { x3 = \"V\" }")], Exact("model.units.x3"), "name a state or an input (x1, x2)"),
+    case("units_on_two_lines", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nunits = { x1 = \"c\\nm\" }")], Exact("model.units.x1"), "without line breaks"),
     case("target_reserved_prefix", Vdp, &[Swap("name = \"x1\"", "name = \"truth_x1\"")], Exact("targets[0].name"), "names starting with saturated_ or truth_"),
     case("state_declared_twice", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x1\"]")], Exact("model.states[1]"), "its own name"),
     case("input_invalid_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\ninputs = [\"u.1\"]")], Exact("model.inputs[0]"), "letters, digits and `_`"),

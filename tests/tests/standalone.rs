@@ -239,6 +239,7 @@ static uint8_t storage[MY_OSCILLATOR_STORAGE_SIZE] __attribute__((aligned(MY_OSC
 int main(void) {{
     if (my_oscillator_init(storage, sizeof storage) != MyOscillatorStatus_Ok) return 2;
     if (my_oscillator_storage_size() > sizeof storage) return 3;
+    if ((float)MY_OSCILLATOR_SAMPLE_PERIOD != {tau}f) return 4; /* the header states the design's period */
     for (int k = 0; k < {len}; k++) {{
         float y[MY_OSCILLATOR_OUTPUTS];
         memcpy(y, samples[k], sizeof y);
@@ -259,6 +260,7 @@ int main(void) {{
 "#,
         len = d::RECORDED_LEN,
         rows = rows.join(", "),
+        tau = format!("{:?}", d::SAMPLE_PERIOD),
     )
 }
 

@@ -144,6 +144,8 @@ fn literal_block(what: &str, values: &[f64], indent: usize) -> Result<String, Em
 
 struct TargetTables {
     name: String,
+    /// `, in <unit>` for the docs ("" without a unit).
+    unit_phrase: String,
     const_name: String,
     upper: String,
     expr: String,
@@ -224,6 +226,11 @@ fn dot_lines(upper: &str, gains: &[f32], horizon: usize, outputs: usize, inputs:
     lines.join("\n")
 }
 
+/// A `[&str; _]` literal of units.
+fn units<'a>(units: impl IntoIterator<Item = &'a String>) -> String {
+    format!("{:?}", units.into_iter().collect::<Vec<_>>())
+}
+
 /// `let k = firmware::search_step(&STARTS_<upper>, t, k, half);` for every step of the search over
 /// `len` knots ([`firmware::search_halves`]).
 fn search_steps(upper: &str, len: usize) -> String {
@@ -244,6 +251,12 @@ struct DesignFile {
     spec_path: String,
     spec_path_literal: String,
     time_unit: String,
+    /// `(N − 1) τ`.
+    window: String,
+    output_units: String,
+    input_units: String,
+    state_units: String,
+    target_units: String,
     spec_hash: String,
     tau: String,
     horizon: usize,
@@ -453,6 +466,11 @@ pub fn design_file(
             .collect::<Result<Vec<_>, EmitError>>()?;
         targets.push(TargetTables {
             name: target.name.clone(),
+            unit_phrase: if target.unit.is_empty() {
+                String::new()
+            } else {
+                format!(", in {}", doc_code(&target.unit))
+            },
             const_name,
             dot: dot_lines(
                 &upper,
@@ -493,6 +511,11 @@ pub fn design_file(
         spec_path: doc_code(placement.spec_path()),
         spec_path_literal: format!("{:?}", placement.spec_path()),
         time_unit: doc_code(&design.time_unit),
+        window: crate::recording::time_text(design.map.horizon - 1, design.tau),
+        output_units: units(design.model.outputs.iter().map(|o| &o.unit)),
+        input_units: units(&design.input_units),
+        state_units: units(&design.state_units),
+        target_units: units(design.targets.iter().map(|t| &t.unit)),
         spec_hash: design.spec_sha256.clone(),
         tau: f32_literal("sampling.tau", design.tau)?,
         horizon: design.map.horizon,

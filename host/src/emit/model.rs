@@ -266,8 +266,9 @@ fn corrector(
 
 /// The model-corrected map around its written-out programs (`{…}` filled in by [`corrector`]).
 const CORRECTED_TEMPLATE: &str = r#"
-/// The model-corrected map's constants as `gen` chose them (f64): `G`, `K` (states × outputs, row
-/// by row), the schedule `T`, and each state's clamp.
+/// The model-corrected map's constants as `gen` chose them (f64): `G` (no unit), `K` (states ×
+/// outputs, row by row, in state unit per output unit), the schedule `T` (in samples), and each
+/// state's clamp (in its unit); units in [`STATE_UNITS`] and [`OUTPUT_UNITS`].
 pub const CORRECTED_G: [f64; STATES] = {G};
 /// See [`CORRECTED_G`].
 pub const CORRECTED_K: [f64; STATES * OUTPUTS] = {K};
@@ -354,7 +355,8 @@ pub type CorrectedObserver = firmware::Started<f32, Design, Corrector, HORIZON, 
 
 /// The EKF started by the map (`{…}` filled in by [`model_source`]).
 const STARTED_EKF_TEMPLATE: &str = r#"
-/// `P(N−1)` diagonal of [`StartedEkf`] (f64), as `gen` chose it.
+/// `P(N−1)` diagonal of [`StartedEkf`] (f64), as `gen` chose it, in each state's unit squared
+/// ([`STATE_UNITS`]).
 pub const STARTED_P0: [f64; STATES] = {P0_F64};
 
 /// The EKF started at the map's first estimate `x̂(N−1) = F(Z)` with `P(N−1)` diagonal, each variance
@@ -597,7 +599,8 @@ const EKF_TEMPLATE: &str = r#"
 /// Entries of the EKF's covariance kept: its upper triangle, row by row (it is symmetric).
 pub const COVARIANCE: usize = {TRIANGLE};
 
-/// The EKF's `Q` diagonal as `gen` chose it (f64).
+/// The EKF's `Q` diagonal as `gen` chose it (f64): each state's process-noise variance per sample
+/// period, in its unit squared ([`STATE_UNITS`]).
 pub const EKF_Q: [f64; STATES] = {Q_F64};
 
 /// This design's extended Kalman filter, written out for its size by `gen`: the library's

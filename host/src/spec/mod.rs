@@ -283,6 +283,10 @@ pub struct Design {
     pub tau: f64,
     /// Unit of time (of `τ`), for plots and reports.
     pub time_unit: String,
+    /// Each state's unit (`[model.units]`; "" where the spec gives none).
+    pub state_units: Vec<String>,
+    /// Each input's unit (`[model.units]`; "" where the spec gives none).
+    pub input_units: Vec<String>,
     /// RK4 steps per sample period.
     pub substeps: usize,
     /// The learning set.

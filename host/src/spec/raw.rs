@@ -71,6 +71,8 @@ pub(super) struct RawModel {
     pub(super) definitions: Vec<RawNamedExpr>,
     pub(super) derivatives: BTreeMap<String, String>,
     pub(super) outputs: Vec<RawOutput>,
+    #[serde(default)]
+    pub(super) units: BTreeMap<String, String>,
 }
 
 /// A parameter: a number (`a = 4.0`), or a nominal value with the range the plant's true value may

@@ -133,6 +133,7 @@ impl Validator {
         }
         self.at_most("sampling.chip_substeps", raw.sampling.chip_substeps, 64)?;
         let targets = self.targets(&raw.targets, &model)?;
+        let (state_units, input_units) = self.units(&raw.model.units, &model)?;
         let family = raw
             .family
             .as_ref()
@@ -150,6 +151,8 @@ impl Validator {
             model,
             tau,
             time_unit: raw.sampling.time_unit.clone(),
+            state_units,
+            input_units,
             substeps: raw.sampling.substeps,
             learning,
             validation,
@@ -457,6 +460,41 @@ impl Validator {
             samples: raw.samples,
             seed: raw.seed,
         })
+    }
+
+    /// `[model.units]`: a unit for each state or input named (outputs and targets have their own
+    /// `unit` field), "" for the others.
+    fn units(&self, raw: &BTreeMap<String, String>, model: &Model) -> Result<(Vec<String>, Vec<String>), SpecError> {
+        for (name, unit) in raw {
+            let field = format!("model.units.{name}");
+            if !model.states.contains(name) && !model.inputs.contains(name) {
+                let own_field = model.outputs.iter().any(|o| &o.name == name);
+                return Err(self.err(
+                    field,
+                    format!("`{name}` is not a state or an input"),
+                    if own_field {
+                        format!("an output's unit is its `unit` field: set `unit = \"{unit}\"` in the `[[model.outputs]]` table of `{name}`")
+                    } else {
+                        format!(
+                            "name a state or an input ({})",
+                            model.states.iter().chain(&model.inputs).cloned().collect::<Vec<_>>().join(", ")
+                        )
+                    },
+                ));
+            }
+            if unit.chars().any(char::is_control) || unit.chars().count() > 32 {
+                return Err(self.err(
+                    field,
+                    "a unit is a short label on one line",
+                    "write it in at most 32 characters, without line breaks (e.g. \"cm\", \"m/s^2\")",
+                ));
+            }
+        }
+        let unit_of = |name: &String| raw.get(name).cloned().unwrap_or_default();
+        Ok((
+            model.states.iter().map(unit_of).collect(),
+            model.inputs.iter().map(unit_of).collect(),
+        ))
     }
 
     fn targets(&self, raw: &[RawNamedExpr], model: &Model) -> Result<Vec<Target>, SpecError> {

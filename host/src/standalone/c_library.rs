@@ -91,8 +91,28 @@ pub fn source(design: &Design) -> String {
     let upper = name.to_uppercase();
     let status = format!("{}Status", camel(name));
     let list = crate::emit::name_list;
-    let outputs: Vec<String> = design.model.outputs.iter().map(|o| o.name.clone()).collect();
-    let targets: Vec<String> = design.targets.iter().map(|t| t.name.clone()).collect();
+    // `name (unit)`, as the docs list them.
+    let with_unit = |name: &String, unit: &String| {
+        if unit.is_empty() {
+            name.clone()
+        } else {
+            format!("{name} ({})", crate::emit::doc_code(unit))
+        }
+    };
+    let outputs: Vec<String> = design
+        .model
+        .outputs
+        .iter()
+        .map(|o| with_unit(&o.name, &o.unit))
+        .collect();
+    let inputs: Vec<String> = design
+        .model
+        .inputs
+        .iter()
+        .zip(&design.input_units)
+        .map(|(i, unit)| with_unit(i, unit))
+        .collect();
+    let targets: Vec<String> = design.targets.iter().map(|t| with_unit(&t.name, &t.unit)).collect();
     format!(
         r#"//! C interface of the `{name}` observer: create it in storage the caller provides, push each
 //! sample, read the estimates; every call returns a status. Header: `include/{name}.h` (cbindgen).
@@ -116,6 +136,8 @@ pub const {upper}_INPUTS: usize = {nu};
 pub const {upper}_TARGETS: usize = {nt};
 /// Samples before the first estimate.
 pub const {upper}_HORIZON: usize = {horizon};
+/// The sample period the design assumes: push one sample every {upper}_SAMPLE_PERIOD {time_unit}.
+pub const {upper}_SAMPLE_PERIOD: f32 = {tau};
 
 const _: () = assert!(size_of::<design::Observer>() <= {upper}_STORAGE_SIZE);
 const _: () = assert!(align_of::<design::Observer>() <= {upper}_STORAGE_ALIGN);
@@ -124,6 +146,7 @@ const _: () = assert!(
         && design::INPUTS == {upper}_INPUTS
         && design::TARGETS == {upper}_TARGETS
         && design::HORIZON == {upper}_HORIZON
+        && design::SAMPLE_PERIOD == {upper}_SAMPLE_PERIOD
 );
 
 /// What a call did.
@@ -250,7 +273,9 @@ fn panic(_: &core::panic::PanicInfo) -> ! {{
         library = library_name(name),
         bound = storage_bound(design),
         outputs = list(&outputs),
-        inputs = list(&design.model.inputs),
+        inputs = list(&inputs),
+        time_unit = crate::emit::doc_code(&design.time_unit),
+        tau = format!("{:?}", design.tau as f32),
         targets = list(&targets),
         ny = design.model.outputs.len(),
         nu = design.model.inputs.len(),

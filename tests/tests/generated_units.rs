@@ -1,0 +1,69 @@
+//! Every generated design states the units of what it takes and returns as its spec gives them: the
+//! spec is read here as plain TOML, independently of the host's validator.
+
+use integration_tests::workspace_root;
+
+/// The units the spec text gives: per output and target its `unit`, per state and input its entry of
+/// `[model.units]`; "" where there is none.
+fn spec_units(spec: &str) -> [Vec<String>; 4] {
+    let text = std::fs::read_to_string(workspace_root().join(spec)).unwrap();
+    let spec: toml::Table = text.parse().unwrap();
+    let model = spec["model"].as_table().unwrap();
+    let text_of = |v: Option<&toml::Value>| v.and_then(|v| v.as_str()).unwrap_or_default().to_owned();
+    let units = model.get("units").and_then(|u| u.as_table());
+    let named = |list: Option<&toml::Value>| -> Vec<String> {
+        list.and_then(|l| l.as_array())
+            .map(|names| {
+                names
+                    .iter()
+                    .map(|n| text_of(units.and_then(|u| u.get(n.as_str().unwrap()))))
+                    .collect()
+            })
+            .unwrap_or_default()
+    };
+    let own = |tables: &toml::Value| -> Vec<String> {
+        tables
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|t| text_of(t.get("unit")))
+            .collect()
+    };
+    [
+        named(model.get("states")),
+        named(model.get("inputs")),
+        own(&model["outputs"]),
+        own(&spec["targets"]),
+    ]
+}
+
+macro_rules! check_units {
+    ($($design:ident),*) => {
+        $(
+            {
+                use generated::$design as d;
+                let [states, inputs, outputs, targets] = spec_units(d::SPEC);
+                assert_eq!(d::STATE_UNITS.to_vec(), states, "{}", d::NAME);
+                assert_eq!(d::INPUT_UNITS.to_vec(), inputs, "{}", d::NAME);
+                assert_eq!(d::OUTPUT_UNITS.to_vec(), outputs, "{}", d::NAME);
+                assert_eq!(d::TARGET_UNITS.to_vec(), targets, "{}", d::NAME);
+            }
+        )*
+    };
+}
+
+#[test]
+fn generated_units_are_the_specs() {
+    check_units!(
+        ecoli_x0_0p5,
+        ecoli_x0_2,
+        two_tanks,
+        vanderpol,
+        vanderpol_searched,
+        vanderpol_sparse,
+        vanderpol_uncertain
+    );
+    // The shipped designs do exercise every kind of unit.
+    assert_eq!(generated::two_tanks::INPUT_UNITS, ["V"]);
+    assert_eq!(generated::ecoli_x0_2::STATE_UNITS, ["g/L"; 3]);
+}
