@@ -113,6 +113,8 @@ pub fn source(design: &Design) -> String {
         .map(|(i, unit)| with_unit(i, unit))
         .collect();
     let targets: Vec<String> = design.targets.iter().map(|t| with_unit(&t.name, &t.unit)).collect();
+    // The shortest decimal that reads back as the design's f32 period.
+    let tau = format!("{:?}", design.tau as f32);
     format!(
         r#"//! C interface of the `{name}` observer: create it in storage the caller provides, push each
 //! sample, read the estimates; every call returns a status. Header: `include/{name}.h` (cbindgen).
@@ -275,7 +277,7 @@ fn panic(_: &core::panic::PanicInfo) -> ! {{
         outputs = list(&outputs),
         inputs = list(&inputs),
         time_unit = crate::emit::doc_code(&design.time_unit),
-        tau = format!("{:?}", design.tau as f32),
+        tau = tau,
         targets = list(&targets),
         ny = design.model.outputs.len(),
         nu = design.model.inputs.len(),
