@@ -227,6 +227,7 @@ fn replay_source() -> String {
         .iter()
         .map(|y| format!("{{0x{:08x}u}}", y[0].to_bits()))
         .collect();
+    let tau = format!("{:?}", d::SAMPLE_PERIOD);
     format!(
         r#"#include <stdint.h>
 #include <stdio.h>
@@ -260,7 +261,7 @@ int main(void) {{
 "#,
         len = d::RECORDED_LEN,
         rows = rows.join(", "),
-        tau = format!("{:?}", d::SAMPLE_PERIOD),
+        tau = tau,
     )
 }
 
