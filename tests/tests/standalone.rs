@@ -1,13 +1,13 @@
-//! `gen --spec` for a user's own design: a crate of its own, outside this repository, that builds for
-//! the Cortex-M4F and passes its doc example on its own, and its C library, linked into a C program by
-//! the system's C compiler, that gives the Rust observer's numbers bit for bit; the project's
-//! `generated/` crate is left exactly as it was.
+//! The README's own-system walkthrough, end to end in a temporary folder, as a user types it: `gen
+//! --spec` makes a crate of its own, outside this repository, that builds for the Cortex-M4F and
+//! passes its doc example; its C library, linked into a C program by the system's C compiler and by
+//! `arm-none-eabi-gcc` for the emulated board, gives the Rust observer's numbers bit for bit;
+//! `simulate`, `estimate --precision f32` (the Rust observer's bits again) and `plot` on a recording;
+//! and the repository (`generated/` byte for byte, and `git status`) is left as it was.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use host::standalone::{self, Destination, Runtime};
-use indicatif::ProgressBar;
 
 /// Every file under `folder` with its bytes, sorted.
 fn snapshot(folder: &Path) -> Vec<(PathBuf, Vec<u8>)> {
@@ -22,6 +22,32 @@ fn snapshot(folder: &Path) -> Vec<(PathBuf, Vec<u8>)> {
     }
     files.sort();
     files
+}
+
+/// `host <args>`, which must succeed; its standard output.
+fn host(args: &[&str]) -> String {
+    let output = integration_tests::host_command().args(args).output().unwrap();
+    assert!(
+        output.status.success(),
+        "host {args:?}:\n{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    String::from_utf8(output.stdout).unwrap()
+}
+
+fn s(path: &Path) -> &str {
+    path.to_str().unwrap()
+}
+
+/// `git status --porcelain` of the repository (every change, untracked files included); empty
+/// outside a git checkout.
+fn git_status(root: &Path) -> String {
+    Command::new("git")
+        .args(["status", "--porcelain", "--untracked-files=all"])
+        .current_dir(root)
+        .output()
+        .map(|o| String::from_utf8_lossy(&o.stdout).into_owned())
+        .unwrap_or_default()
 }
 
 /// Whether `tool` cannot be started.
@@ -58,6 +84,7 @@ fn cargo(folder: &Path, args: &[&str]) {
 fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone() {
     let root = integration_tests::workspace_root();
     let generated_before = snapshot(&root.join("generated"));
+    let status_before = git_status(&root);
     let scratch = std::env::temp_dir().join(format!("standalone-test-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&scratch);
     std::fs::create_dir_all(&scratch).unwrap();
@@ -69,20 +96,17 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
     assert!(text.contains("name = \"my_oscillator\""));
     std::fs::write(&spec, &text).unwrap();
     let out = scratch.join("crate");
-    let to = Destination {
-        out: out.clone(),
-        per_design: false,
-        runtime: Runtime::Path(root.join("firmware")),
-    };
-    let outcomes = standalone::run(
-        std::slice::from_ref(&spec),
-        &to,
-        true,
-        |_| ProgressBar::hidden(),
-        |_, _| {},
-    )
-    .unwrap();
-    assert_eq!(outcomes.len(), 1);
+    // The README's walkthrough, as a user types it.
+    host(&[
+        "gen",
+        "--spec",
+        s(&spec),
+        "--out",
+        s(&out),
+        "--runtime-path",
+        s(&root.join("firmware")),
+        "--strict",
+    ]);
     for file in [
         "Cargo.toml",
         "README.md",
@@ -208,15 +232,85 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
         assert_eq!(String::from_utf8(run.stdout).unwrap(), printed);
     }
 
+    // Recorded data: a run of the plant, then the design's estimates over it by the tables `gen` saved
+    // beside the crate, in the chip's f32: the Rust observer's bits.
+    let run = scratch.join("run.csv");
+    host(&["simulate", "--spec", s(&spec), "--output", s(&run)]);
+    let estimates = scratch.join("estimates.csv");
+    host(&[
+        "estimate",
+        "--spec",
+        s(&spec),
+        "--input",
+        s(&run),
+        "--output",
+        s(&estimates),
+        "--tables",
+        s(&out.join("report/design.json")),
+        "--precision",
+        "f32",
+    ]);
+    let written = std::fs::read_to_string(&estimates).unwrap();
+    assert_eq!(written, rust_estimates(&std::fs::read_to_string(&run).unwrap()));
+    assert!(written.matches(",ok,").count() > 50, "{written}");
+    // And its figure: every target against its truth.
+    host(&[
+        "plot",
+        "--spec",
+        s(&spec),
+        "--input",
+        s(&run),
+        "--estimates",
+        s(&estimates),
+    ]);
+    for figure in ["estimates.png", "estimates.svg"] {
+        let bytes = std::fs::read(scratch.join(figure)).unwrap();
+        assert!(bytes.len() > 10_000, "{figure}: {} bytes", bytes.len());
+    }
+
     // The project's generated crate is untouched, byte for byte.
     assert!(
         generated_before == snapshot(&root.join("generated")),
         "gen --spec changed generated/"
     );
-    // A second run with nothing changed rewrites nothing.
-    let again = standalone::run(&[spec], &to, true, |_| ProgressBar::hidden(), |_, _| {}).unwrap();
-    assert!(!again[0].changed);
+    // Nor anything else of the repository.
+    assert_eq!(git_status(&root), status_before, "the walkthrough changed the repository");
     std::fs::remove_dir_all(&scratch).unwrap();
+}
+
+/// The estimates file of the Rust observer (the design's, `generated::vanderpol`) over the `y` column
+/// of the simulated run `csv`: `time,status,x1,x2,saturated_x1,saturated_x2`.
+fn rust_estimates(csv: &str) -> String {
+    use generated::vanderpol as d;
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let (time, y) = (0, header.iter().position(|h| *h == "y").unwrap());
+    let mut observer = d::observer();
+    let mut text = String::from("time,status,x1,x2,saturated_x1,saturated_x2\n");
+    for line in lines {
+        let cells: Vec<&str> = line.split(',').collect();
+        let sample: f32 = cells[y].parse().unwrap();
+        let row = match (observer.push([sample], []), observer.estimate()) {
+            (Err(_), _) => "refused,,,,".to_owned(),
+            (Ok(()), None) => "no_estimate_yet,,,,".to_owned(),
+            (Ok(()), Some(e)) => {
+                let flag = |s: firmware::Saturation| match s {
+                    firmware::Saturation::Low => -1,
+                    firmware::Saturation::Inside => 0,
+                    firmware::Saturation::High => 1,
+                };
+                format!(
+                    "ok,{},{},{},{}",
+                    f64::from(e[0].value),
+                    f64::from(e[1].value),
+                    flag(e[0].saturation),
+                    flag(e[1].saturation)
+                )
+            }
+        };
+        text += &format!("{},{row}\n", cells[time]);
+    }
+    text
 }
 
 /// The C program: every recorded sample of Example 1's scenario pushed, the estimates printed as bits,
