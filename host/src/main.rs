@@ -58,6 +58,27 @@ enum Command {
         #[arg(long)]
         auto: bool,
     },
+    /// Plots a recorded run and its estimates (what `estimate` wrote for it) as PNG and SVG: every
+    /// target's estimate against its truth column when the input has one (`truth_<target>` or the
+    /// target's name), refused samples and saturated estimates marked, then the outputs and inputs.
+    Plot {
+        /// The recorded run (CSV with a header), as given to `estimate`.
+        #[arg(long, value_name = "FILE")]
+        input: PathBuf,
+        /// The estimates `estimate` wrote for it.
+        #[arg(long, value_name = "FILE")]
+        estimates: PathBuf,
+        /// A shipped design, for its names and units: a panel per output and input. Without a design
+        /// the input's other numeric columns share one panel.
+        #[arg(long, conflicts_with = "spec")]
+        design: Option<String>,
+        /// A design spec file, instead of --design.
+        #[arg(long, value_name = "FILE")]
+        spec: Option<PathBuf>,
+        /// Writes PREFIX.png and PREFIX.svg. Default: the estimates' path without its extension.
+        #[arg(long, value_name = "PREFIX")]
+        out: Option<PathBuf>,
+    },
     /// Simulates one run of a design (its `[scenario]` unless overridden) and writes it as CSV.
     Simulate {
         #[command(flatten)]
@@ -157,6 +178,13 @@ fn main() -> ExitCode {
             }
         }
         Command::Search { design, auto } => search(&design, auto),
+        Command::Plot {
+            input,
+            estimates,
+            design,
+            spec,
+            out,
+        } => plot(&input, &estimates, DesignChoice { design, spec }, out.as_deref()),
         Command::Simulate {
             design,
             x0,
@@ -328,6 +356,19 @@ fn search(choice: &DesignChoice, auto: bool) -> anyhow::Result<()> {
     let outcome = host::search::run(&design, &search, &bar)?;
     bar.finish_and_clear();
     print!("{}", host::search::summary(&design, &outcome));
+    Ok(())
+}
+
+/// `plot`: the design is optional (names and units); the figure is written only when everything read.
+fn plot(input: &Path, estimates: &Path, choice: DesignChoice, out: Option<&Path>) -> anyhow::Result<()> {
+    let design = match (&choice.design, &choice.spec) {
+        (None, None) => None,
+        _ => Some(choice.load()?),
+    };
+    let files = host::report::recorded::plot(input, estimates, design.as_ref(), out)?;
+    for file in files {
+        println!("{}", file.display());
+    }
     Ok(())
 }
 

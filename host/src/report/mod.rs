@@ -1,9 +1,12 @@
 //! The report of a design: `report.json` (everything, machine-readable), `report.md` (one table a
 //! person reads) and the one-screen summary `gen` prints.
 
+mod draw;
 pub mod gates;
+pub mod html;
 pub mod on_target;
 pub mod plots;
+pub mod recorded;
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -743,12 +746,37 @@ pub fn markdown(report: &Report<'_>) -> String {
          *saturated*: windows where Γ⁻¹ clamped the estimate to the learning range. *collapsed*: Γ is a straight \
          line (≥ 90 % of the monotonicity constraints active). *Γ⁻¹ segments*: the table the chip evaluates instead of \
          inverting Γ; *proven table error*: its proven largest distance to the exact Γ⁻¹ (target units, at most 1e-4 of \
-         the learning range); every estimate in this report uses that table, as the chip does. Full figures and the fitted coefficients: `report.json`.\n\n\
-         Figures (PNG and SVG): `measurements` (the scenario's measured outputs and their noise, paper Fig. 1/5), \
-         `identification` (identified against true on the learning windows, and dΓ/dr, Fig. 2 left/Fig. 3), \
-         `estimation` (the observer along the scenario, Fig. 2 right/Fig. 4).\n",
+         the learning range); every estimate in this report uses that table, as the chip does. Full figures and the fitted coefficients: `report.json`.\n",
     );
+    s.push_str(&figures(report));
     s
+}
+
+/// The report's figures, embedded (each beside this file as PNG and SVG), with what each shows.
+fn figures(report: &Report<'_>) -> String {
+    let mut s = String::from(
+        "\n## Figures\n\nEach as PNG and SVG beside this file; saturated estimates (clamped by Γ⁻¹ to the learning range) are ringed.\n",
+    );
+    for (stem, shows) in plots::figure_stems(report.mismatch.is_some(), report.search.is_some()) {
+        let _ = write!(s, "\n### {stem}\n\n{shows}.\n\n![{stem}]({stem}.png)\n");
+    }
+    s
+}
+
+/// `markdown` with its figures' links (`![stem](stem.png)`, relative to the report's folder) made
+/// relative to the folder that holds the report's folder as `folder` (for a page that embeds the
+/// report from there).
+pub fn relocate_figures(markdown: &str, folder: &str) -> String {
+    markdown
+        .lines()
+        .map(
+            |line| match line.strip_prefix("![").and_then(|rest| rest.split_once("](")) {
+                Some((alt, target)) if !target.contains('/') => format!("![{alt}]({folder}/{target}"),
+                _ => line.to_owned(),
+            },
+        )
+        .map(|line| line + "\n")
+        .collect()
 }
 
 /// The report as its two files' texts: `report.json` and `report.md`.
@@ -757,11 +785,22 @@ pub fn texts(report: &Report<'_>) -> (String, String) {
     (json, markdown(report))
 }
 
-/// Writes `report.json` and `report.md` (from [`texts`]) into `folder`; returns their paths.
+/// Writes `report.json`, `report.md` (from [`texts`]) and `report.html` (the Markdown for a browser,
+/// [`html::page`]) into `folder`; returns their paths in that order.
 pub fn write_texts((json, markdown): &(String, String), folder: &Path) -> std::io::Result<Vec<PathBuf>> {
     std::fs::create_dir_all(folder)?;
-    let paths = vec![folder.join("report.json"), folder.join("report.md")];
+    let paths = vec![
+        folder.join("report.json"),
+        folder.join("report.md"),
+        folder.join("report.html"),
+    ];
+    let title = markdown
+        .lines()
+        .next()
+        .and_then(|l| l.strip_prefix("# "))
+        .unwrap_or("report");
     write_atomically(&paths[0], json.as_bytes())?;
     write_atomically(&paths[1], markdown.as_bytes())?;
+    write_atomically(&paths[2], html::page(title, markdown).as_bytes())?;
     Ok(paths)
 }

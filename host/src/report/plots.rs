@@ -1,314 +1,132 @@
-//! The paper's figures for a design, as PNG and SVG (plotters; the bundled DejaVu Sans font is
-//! rasterised by ab_glyph, so no system font library is involved):
+//! The paper's figures for a design, as PNG and SVG, drawn by [`super::draw`]:
 //!
-//! * `measurements`: the scenario's measured outputs against their noise-free values, and the noise
-//!   (paper Fig. 1 and 5);
+//! * `measurements`: the scenario's measured outputs against their noise-free values, the noise
+//!   (paper Fig. 1 and 5), and the inputs applied;
 //! * `identification`: per target, identified against true values on the learning windows, and the
 //!   gradient `dΓ/dr` of the identified `Γ` (Fig. 2 left, Fig. 3);
 //! * `estimation`: per target, the observer's estimate against the truth along the scenario (Fig. 2
-//!   right, Fig. 4).
+//!   right, Fig. 4);
+//! * `validation`: per target, the map's error on every validation run against time and against the
+//!   true value (what the report's validation RMSE and max error summarise).
+//!
+//! Saturated estimates (clamped by `Γ⁻¹` to the learning range) are ringed wherever the map's
+//! estimates are drawn.
 
-use std::ops::Range;
 use std::path::{Path, PathBuf};
-use std::sync::Once;
 
-use plotters::coord::Shift;
-use plotters::prelude::*;
-
-use crate::data::{DataSet, Window};
+pub use super::draw::PlotError;
+use super::draw::{
+    thinning, tick, with_unit, write_figure, Figure, Panel, Series, Style, ESTIMATE_COLOR, MARK_COLOR, NOISE_COLOR,
+    PALETTE, SATURATED_COLOR, TRUE_COLOR,
+};
+use crate::data::{DataSet, Run, Window};
+use crate::fit::maps::FittedMap;
 use crate::fit::DesignResult;
 use crate::observers::Comparison;
 use crate::spec::Design;
-
-/// Why a figure could not be written.
-#[derive(Debug, thiserror::Error)]
-pub enum PlotError {
-    /// plotters failed to draw (its errors are generic over the backend; their text is kept).
-    #[error("{}: cannot draw: {message}", file.display())]
-    Draw {
-        /// The figure.
-        file: PathBuf,
-        /// plotters' message.
-        message: String,
-    },
-    /// The file or its folder could not be written.
-    #[error("{}: {source}", path.display())]
-    Io {
-        /// The file or folder.
-        path: PathBuf,
-        /// Why.
-        source: std::io::Error,
-    },
-}
-
-const FONT: &str = "sans-serif";
-static REGISTER_FONT: Once = Once::new();
-
-fn register_font() {
-    REGISTER_FONT.call_once(|| {
-        let bytes: &'static [u8] = include_bytes!("../../assets/DejaVuSans.ttf");
-        // The font is bundled and valid; a failure here would only lose the text of the plots.
-        let _ = plotters::style::register_font(FONT, FontStyle::Normal, bytes);
-    });
-}
-
-/// One curve of a panel.
-struct Curve {
-    label: String,
-    points: Vec<(f64, f64)>,
-    color: RGBColor,
-    dots: bool,
-}
-
-/// One panel: a title, axis descriptions, its curves and vertical marks (a time and what happens
-/// there, drawn as a dashed line across the panel).
-struct Panel {
-    title: String,
-    x_label: String,
-    y_label: String,
-    curves: Vec<Curve>,
-    marks: Vec<(f64, String)>,
-}
-
-fn with_unit(name: &str, unit: &str) -> String {
-    if unit.is_empty() {
-        name.to_owned()
-    } else {
-        format!("{name} [{unit}]")
-    }
-}
-
-fn range(values: impl Iterator<Item = f64>) -> Range<f64> {
-    let (lo, hi) = values
-        .filter(|v| v.is_finite())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
-    if !(lo.is_finite() && hi.is_finite()) {
-        return 0.0..1.0;
-    }
-    // Pad by 5 % of the spread, and by at least 2 % of the magnitude so that a flat curve looks flat.
-    let pad = (0.05 * (hi - lo)).max(0.02 * lo.abs().max(hi.abs())).max(1e-12);
-    (lo - pad)..(hi + pad)
-}
-
-/// Tick labels: fixed-point for ordinary magnitudes, scientific for tiny or huge ones.
-fn tick(value: &f64) -> String {
-    let magnitude = value.abs();
-    if magnitude < 1e-12 {
-        "0".to_owned() // a tick at zero computed with rounding noise
-    } else if !(1e-2..1e4).contains(&magnitude) {
-        format!("{value:.3e}")
-    } else {
-        let text = format!("{value:.4}");
-        text.trim_end_matches('0').trim_end_matches('.').to_owned()
-    }
-}
-
-fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) -> Result<(), String> {
-    let all = || panel.curves.iter().flat_map(|c| c.points.iter());
-    let x = range(all().map(|p| p.0).chain(panel.marks.iter().map(|m| m.0)));
-    let y = range(all().map(|p| p.1));
-    let mut chart = ChartBuilder::on(area)
-        .caption(&panel.title, (FONT, 18))
-        .margin(12)
-        .margin_right(12 + LEGEND_WIDTH as u32)
-        .x_label_area_size(42)
-        .y_label_area_size(70)
-        .build_cartesian_2d(x, y.clone())
-        .map_err(|e| e.to_string())?;
-    chart
-        .configure_mesh()
-        .x_desc(panel.x_label.as_str())
-        .y_desc(panel.y_label.as_str())
-        .label_style((FONT, 13))
-        .x_label_formatter(&tick)
-        .y_label_formatter(&tick)
-        .axis_desc_style((FONT, 15))
-        .draw()
-        .map_err(|e| e.to_string())?;
-    for curve in &panel.curves {
-        let color = curve.color;
-        // A NaN (no estimate yet) would break a line: draw only the finite points.
-        let points = curve
-            .points
-            .iter()
-            .copied()
-            .filter(|p| p.0.is_finite() && p.1.is_finite());
-        if curve.dots {
-            chart.draw_series(points.map(move |p| Circle::new(p, 2, color.filled())))
-        } else {
-            chart.draw_series(LineSeries::new(points, color.stroke_width(2)))
-        }
-        .map_err(|e| e.to_string())?;
-    }
-    for (at, _) in &panel.marks {
-        let (bottom, top) = (y.start, y.end);
-        let dashes = 24;
-        let step = (top - bottom) / (2 * dashes) as f64;
-        chart
-            .draw_series((0..dashes).map(|i| {
-                let from = bottom + 2.0 * i as f64 * step;
-                PathElement::new(vec![(*at, from), (*at, from + step)], MARK_COLOR.stroke_width(1))
-            }))
-            .map_err(|e| e.to_string())?;
-    }
-    // The legend goes in the right margin, beside the plotting area, so that it never covers data;
-    // each swatch is drawn as its series is (dots, line, dashes).
-    let (xs, ys) = chart.plotting_area().get_pixel_range();
-    let (base_x, base_y) = area.get_base_pixel();
-    let (left, top) = (xs.end - base_x + 12, ys.start - base_y);
-    let entries = panel
-        .curves
-        .iter()
-        .map(|c| {
-            (
-                c.label.as_str(),
-                c.color,
-                if c.dots { Swatch::Dots } else { Swatch::Line },
-            )
-        })
-        .chain(
-            panel
-                .marks
-                .iter()
-                .map(|(_, label)| (label.as_str(), MARK_COLOR, Swatch::Dashes)),
-        );
-    for (i, (label, color, swatch)) in entries.enumerate() {
-        let y = top + 10 + 20 * i as i32;
-        let drawn = match swatch {
-            Swatch::Dots => area.draw(&Circle::new((left + 11, y), 3, color.filled())),
-            Swatch::Line => area.draw(&PathElement::new(
-                vec![(left, y), (left + 22, y)],
-                color.stroke_width(3),
-            )),
-            Swatch::Dashes => (0..3).try_for_each(|d| {
-                area.draw(&PathElement::new(
-                    vec![(left + 9 * d, y), (left + 9 * d + 5, y)],
-                    color.stroke_width(1),
-                ))
-            }),
-        };
-        drawn.map_err(|e| e.to_string())?;
-        area.draw(&Text::new(
-            label.to_owned(),
-            (left + 30, y - 7),
-            (FONT, 13).into_font().color(&BLACK),
-        ))
-        .map_err(|e| e.to_string())?;
-    }
-    Ok(())
-}
-
-/// How a legend entry shows its series.
-#[derive(Clone, Copy)]
-enum Swatch {
-    Dots,
-    Line,
-    Dashes,
-}
-
-fn draw_grid<DB: DrawingBackend>(
-    root: DrawingArea<DB, Shift>,
-    rows: usize,
-    columns: usize,
-    panels: &[Panel],
-) -> Result<(), String> {
-    root.fill(&WHITE).map_err(|e| e.to_string())?;
-    for (area, panel) in root.split_evenly((rows, columns)).iter().zip(panels) {
-        draw_panel(area, panel)?;
-    }
-    root.present().map_err(|e| e.to_string())
-}
-
-/// Pixels right of each panel's plotting area kept for its legend.
-const LEGEND_WIDTH: i32 = 230;
-
-/// Writes `<stem>.png` and `<stem>.svg` in `folder`, each through a temporary file.
-fn write_figure(
-    folder: &Path,
-    stem: &str,
-    rows: usize,
-    columns: usize,
-    panels: &[Panel],
-) -> Result<Vec<PathBuf>, PlotError> {
-    let size = ((560 + LEGEND_WIDTH as u32) * columns as u32, 380 * rows as u32);
-    let png = folder.join(format!("{stem}.png"));
-    crate::output::remove_stale_temporaries(folder, &format!(".{stem}.tmp"), ".png");
-    let temporary = folder.join(format!(".{stem}.tmp{}.png", std::process::id()));
-    let drawn = draw_grid(
-        BitMapBackend::new(&temporary, size).into_drawing_area(),
-        rows,
-        columns,
-        panels,
-    );
-    let written = match drawn {
-        Ok(()) => std::fs::rename(&temporary, &png).map_err(|source| PlotError::Io {
-            path: png.clone(),
-            source,
-        }),
-        Err(message) => Err(PlotError::Draw {
-            file: png.clone(),
-            message,
-        }),
-    };
-    if written.is_err() {
-        let _ = std::fs::remove_file(&temporary);
-    }
-    written?;
-    let svg = folder.join(format!("{stem}.svg"));
-    let mut svg_text = String::new();
-    draw_grid(
-        SVGBackend::with_string(&mut svg_text, size).into_drawing_area(),
-        rows,
-        columns,
-        panels,
-    )
-    .map_err(|message| PlotError::Draw {
-        file: svg.clone(),
-        message,
-    })?;
-    crate::output::write_atomically(&svg, svg_text.as_bytes()).map_err(|source| PlotError::Io {
-        path: svg.clone(),
-        source,
-    })?;
-    Ok(vec![png, svg])
-}
+use plotters::style::RGBColor;
 
 /// Most dots of one scatter panel.
 const MAX_DOTS: usize = 4000;
 
-const TRUE_COLOR: RGBColor = RGBColor(31, 119, 180);
-const ESTIMATE_COLOR: RGBColor = RGBColor(214, 39, 40);
-const NOISE_COLOR: RGBColor = RGBColor(90, 90, 90);
-const MARK_COLOR: RGBColor = RGBColor(60, 60, 60);
+/// Legend label of the rings around saturated estimates.
+pub(crate) const SATURATED_LABEL: &str = "saturated (clamped to the learning range)";
 
-/// Each observer kind's colour and whether it is drawn as dots, in the estimation figures.
-fn kind_style(kind: &str) -> (RGBColor, bool, &'static str) {
+/// Each observer kind's colour, style and legend label in the estimation figures.
+fn kind_style(kind: &str) -> (RGBColor, Style, &'static str) {
     match kind {
-        "map" => (ESTIMATE_COLOR, true, "map F(Z)"),
-        "ekf" => (RGBColor(255, 127, 14), false, "EKF from x̂(0)"),
-        "corrected" => (RGBColor(44, 160, 44), false, "model-corrected map"),
-        _ => (RGBColor(148, 103, 189), false, "EKF started by the map"),
+        "map" => (ESTIMATE_COLOR, Style::Dots, "map F(Z)"),
+        "ekf" => (RGBColor(255, 127, 14), Style::Line, "EKF from x̂(0)"),
+        "corrected" => (RGBColor(44, 160, 44), Style::Line, "model-corrected map"),
+        _ => (RGBColor(148, 103, 189), Style::Line, "EKF started by the map"),
     }
 }
 
-/// Draws the figures of `design` into `folder`; returns the files written.
+/// The stems of the figures [`draw`] and [`draw_search`] write for a design, in the order the report
+/// shows them, each with what it shows.
+pub fn figure_stems(mismatch: bool, search: bool) -> Vec<(&'static str, &'static str)> {
+    let mut stems = vec![
+        (
+            "measurements",
+            "The scenario's measured outputs against their noise-free values, the noise, and the inputs when the model has any (paper Fig. 1/5)",
+        ),
+        (
+            "identification",
+            "Identified against true on the learning windows, and dΓ/dr (paper Fig. 2 left/Fig. 3)",
+        ),
+        (
+            "estimation",
+            "Every observer along the scenario against the truth (paper Fig. 2 right/Fig. 4)",
+        ),
+    ];
+    if mismatch {
+        stems.push((
+            "estimation_mismatch",
+            "The same on the plant at the last corner of the uncertain parameters",
+        ));
+    }
+    stems.push((
+        "validation",
+        "The map's error on every validation run, against time and against the true value",
+    ));
+    if search {
+        stems.push(("search", "The design search's trade-off: the tuning score against the predicted instructions and the delay to the first estimate"));
+    }
+    stems
+}
+
+/// The map's estimate at every window end of `run` (NaN before the first), and whether it saturated.
+fn map_along(map: &FittedMap, run: &Run, horizon: usize) -> Vec<(f64, bool)> {
+    let set = DataSet {
+        runs: vec![run.clone()],
+        horizon,
+    };
+    let mut z = Vec::new();
+    let mut out = vec![(f64::NAN, false); run.states.len()];
+    for w in set.windows() {
+        set.regressor(w, &mut z);
+        let e = map.estimate(&z);
+        out[w.end] = (e.value, e.saturation.is_saturated());
+    }
+    out
+}
+
+/// Rings at the saturated points of `estimates` (pairs of a point and whether it saturated).
+fn saturated_rings(estimates: impl Iterator<Item = ((f64, f64), bool)>) -> Series {
+    Series::new(
+        SATURATED_LABEL,
+        estimates.filter(|e| e.1).map(|e| e.0).collect(),
+        SATURATED_COLOR,
+        Style::Rings,
+    )
+}
+
+/// Draws the figures of `design` into `folder` (every figure but `search`); returns the files written.
 pub fn draw(
     design: &Design,
     result: &DesignResult,
     comparison: &Comparison,
     folder: &Path,
 ) -> Result<Vec<PathBuf>, PlotError> {
-    register_font();
     std::fs::create_dir_all(folder).map_err(|source| PlotError::Io {
         path: folder.to_owned(),
         source,
     })?;
-    let run = &result.scenario;
+    let mut files = measurements(design, &result.scenario, folder)?;
+    files.extend(identification(design, result, folder)?);
+    // Estimation along the scenario, every observer, and on the mismatch plant.
+    files.extend(estimation(design, result, comparison, &result.scenario, false, folder)?);
+    if let Some(m) = &comparison.mismatch {
+        files.extend(estimation(design, result, comparison, &m.scenario, true, folder)?);
+    }
+    files.extend(validation(design, result, folder)?);
+    Ok(files)
+}
+
+/// `measurements`: per output, measured against noise-free and the noise; then the inputs, across.
+fn measurements(design: &Design, run: &Run, folder: &Path) -> Result<Vec<PathBuf>, PlotError> {
     let time_label = with_unit("time", &design.time_unit);
     let times: Vec<f64> = (0..run.states.len()).map(|k| k as f64 * design.tau).collect();
-    let mut files = Vec::new();
-
-    // Measurements and noise.
     let mut environment = Vec::new();
     let mut clean = vec![0.0; design.model.outputs.len()];
     let noise_free: Vec<Vec<f64>> = run
@@ -320,69 +138,70 @@ pub fn draw(
             clean.clone()
         })
         .collect();
-    let mut panels = Vec::new();
+    let mut rows = Vec::new();
     for (i, output) in design.model.outputs.iter().enumerate() {
         let label = with_unit(&output.name, &output.unit);
         let measured: Vec<(f64, f64)> = times.iter().zip(&run.measurements).map(|(&t, y)| (t, y[i])).collect();
         let exact: Vec<(f64, f64)> = times.iter().zip(&noise_free).map(|(&t, y)| (t, y[i])).collect();
         let noise: Vec<(f64, f64)> = measured.iter().zip(&exact).map(|(m, e)| (m.0, m.1 - e.1)).collect();
-        panels.push(Panel {
-            title: format!(
-                "{}: measured {} (noise variance {})",
-                design.name, output.name, output.noise_variance
-            ),
-            x_label: time_label.clone(),
-            y_label: label.clone(),
-            curves: vec![
-                Curve {
-                    label: "noise-free".into(),
-                    points: exact,
-                    color: TRUE_COLOR,
-                    dots: false,
-                },
-                Curve {
-                    label: "measured".into(),
-                    points: measured,
-                    color: ESTIMATE_COLOR,
-                    dots: true,
-                },
-            ],
-            marks: Vec::new(),
-        });
-        panels.push(Panel {
-            title: format!("{}: noise on {}", design.name, output.name),
-            x_label: time_label.clone(),
-            y_label: with_unit(&format!("w ({})", output.name), &output.unit),
-            curves: vec![Curve {
-                label: "noise".into(),
-                points: noise,
-                color: NOISE_COLOR,
-                dots: false,
-            }],
-            marks: Vec::new(),
-        });
+        rows.push(vec![
+            Panel::new(
+                format!(
+                    "{}: measured {} (noise variance {})",
+                    design.name, output.name, output.noise_variance
+                ),
+                time_label.clone(),
+                label,
+            )
+            .with(Series::new("noise-free", exact, TRUE_COLOR, Style::Line))
+            .with(Series::new("measured", measured, ESTIMATE_COLOR, Style::Dots)),
+            Panel::new(
+                format!("{}: noise on {}", design.name, output.name),
+                time_label.clone(),
+                with_unit(&format!("w ({})", output.name), &output.unit),
+            )
+            .with(Series::new("noise", noise, NOISE_COLOR, Style::Line)),
+        ]);
     }
-    files.extend(write_figure(
-        folder,
-        "measurements",
-        design.model.outputs.len(),
-        2,
-        &panels,
-    )?);
+    if !design.model.inputs.is_empty() {
+        let mut panel = Panel::new(
+            format!("{}: inputs applied along the scenario", design.name),
+            time_label,
+            "input",
+        );
+        for (j, name) in design.model.inputs.iter().enumerate() {
+            let points = times.iter().zip(&run.inputs).map(|(&t, u)| (t, u[j])).collect();
+            panel = panel.with(Series::new(
+                name.as_str(),
+                points,
+                PALETTE[j % PALETTE.len()],
+                Style::Line,
+            ));
+        }
+        rows.push(vec![panel]);
+    }
+    let figure = Figure {
+        rows,
+        panel_width: 560,
+        row_height: 380,
+    };
+    write_figure(&folder.join("measurements"), &figure)
+}
 
-    // Identification on the learning windows, and dΓ/dr.
+/// `identification`: identified against true on the learning windows (saturated ringed), then each
+/// target's `dΓ/dr`, on an axis from 0 so that a straight `Γ` looks straight and says it is linear.
+fn identification(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec<PathBuf>, PlotError> {
     let learning: &DataSet = &result.learning;
-    // A dot per window would make the SVG grow with n_E (184 MB at 10⁶ windows): every `stride`-th.
     let count = learning.windows().count();
-    let stride = count.div_ceil(MAX_DOTS).max(1);
+    let stride = thinning(count, MAX_DOTS);
     let windows: Vec<Window> = learning.windows().step_by(stride).collect();
     let shown = if stride == 1 {
         format!("the n_E = {count} learning windows")
     } else {
-        format!("every {stride}th of the n_E = {count} learning windows")
+        format!("1 in {stride} of the n_E = {count} learning windows")
     };
     let mut z = Vec::new();
-    let mut panels = Vec::new();
+    let mut scatter = Vec::new();
     let mut gradients = Vec::new();
     for t in &result.targets {
         let target = &design.targets[t.index];
@@ -390,68 +209,75 @@ pub fn draw(
         let mut pairs = Vec::new();
         for &w in &windows {
             learning.regressor(w, &mut z);
-            pairs.push((learning.target(w, t.index), map.estimate(&z).value));
+            let e = map.estimate(&z);
+            pairs.push(((learning.target(w, t.index), e.value), e.saturation.is_saturated()));
         }
         let label = with_unit(&target.name, &target.unit);
         let diagonal = vec![(map.r_min, map.r_min), (map.r_max, map.r_max)];
-        panels.push(Panel {
-            title: format!("{}: {} on {shown}", design.name, target.name),
-            x_label: format!("true {label}"),
-            y_label: format!("identified {label}"),
-            curves: vec![
-                Curve {
-                    label: "identified".into(),
-                    points: pairs,
-                    color: ESTIMATE_COLOR,
-                    dots: true,
-                },
-                Curve {
-                    label: "identified = true".into(),
-                    points: diagonal,
-                    color: TRUE_COLOR,
-                    dots: false,
-                },
-            ],
-            marks: Vec::new(),
-        });
+        scatter.push(
+            Panel::new(
+                format!("{}: {} on {shown}", design.name, target.name),
+                format!("true {label}"),
+                format!("identified {label}"),
+            )
+            .with(Series::new(
+                "identified",
+                pairs.iter().map(|p| p.0).collect(),
+                ESTIMATE_COLOR,
+                Style::Dots,
+            ))
+            .with(saturated_rings(pairs.into_iter()))
+            .with(Series::new("identified = true", diagonal, TRUE_COLOR, Style::Line)),
+        );
         let span = map.r_max - map.r_min;
         let gamma = map.gamma();
         let gradient: Vec<(f64, f64)> = (0..=400)
             .map(|i| i as f64 / 400.0)
             .map(|eta| (map.r_min + span * eta, gamma.slope(eta) / span))
             .collect();
-        gradients.push(Panel {
-            title: format!("{}: gradient of Γ for {}", design.name, target.name),
-            x_label: label,
-            y_label: "dΓ/dr".into(),
-            curves: vec![Curve {
-                label: "dΓ/dr".into(),
-                points: gradient,
-                color: TRUE_COLOR,
-                dots: false,
-            }],
-            marks: Vec::new(),
-        });
+        let (title, legend) = if linear(&gradient) || t.fit.diagnostics.collapsed {
+            (
+                format!(
+                    "{}: Γ for {} is linear (collapsed), dΓ/dr = {}",
+                    design.name,
+                    target.name,
+                    tick(&gradient[0].1)
+                ),
+                "dΓ/dr (constant: Γ is a straight line)",
+            )
+        } else {
+            (format!("{}: gradient of Γ for {}", design.name, target.name), "dΓ/dr")
+        };
+        let mut panel = Panel::new(title, label, "dΓ/dr").with(Series::new(legend, gradient, TRUE_COLOR, Style::Line));
+        panel.y_from_zero = true;
+        gradients.push(panel);
     }
-    let columns = panels.len();
-    panels.extend(gradients);
-    files.extend(write_figure(folder, "identification", 2, columns, &panels)?);
+    let figure = Figure {
+        rows: vec![scatter, gradients],
+        panel_width: 560,
+        row_height: 380,
+    };
+    write_figure(&folder.join("identification"), &figure)
+}
 
-    // Estimation along the scenario, every observer, and on the mismatch plant.
-    files.extend(estimation(design, comparison, run, false, folder)?);
-    if let Some(m) = &comparison.mismatch {
-        files.extend(estimation(design, comparison, &m.scenario, true, folder)?);
-    }
-    Ok(files)
+/// Whether a gradient is constant to within 10⁻⁶ of its size (a collapsed `Γ` whatever the QP's
+/// active-constraint count says).
+fn linear(gradient: &[(f64, f64)]) -> bool {
+    let (lo, hi) = gradient
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.1), b.max(p.1)));
+    hi - lo <= 1e-6 * hi.abs()
 }
 
 /// The `estimation` figure (or `estimation_mismatch`, on the plant at the last corner of the uncertain
-/// parameters): per target, every observer's estimate against the truth along `run`, with the first
-/// estimate and the end of the start-up (`START_UP_HORIZONS · N` estimates later) marked.
+/// parameters): per target, every observer's estimate against the truth along `run` (the map's
+/// saturated estimates ringed), with the first estimate and the end of the start-up
+/// (`START_UP_HORIZONS · N` estimates later) marked.
 fn estimation(
     design: &Design,
+    result: &DesignResult,
     comparison: &Comparison,
-    run: &crate::data::Run,
+    run: &Run,
     on_mismatch: bool,
     folder: &Path,
 ) -> Result<Vec<PathBuf>, PlotError> {
@@ -473,12 +299,17 @@ fn estimation(
     };
     let mut panels = Vec::new();
     for (index, target) in design.targets.iter().enumerate() {
-        let mut curves = vec![Curve {
-            label: "true".into(),
-            points: times.iter().zip(&run.targets).map(|(&t, r)| (t, r[index])).collect(),
-            color: TRUE_COLOR,
-            dots: false,
-        }];
+        let mut panel = Panel::new(
+            format!("{}: estimating {}{plant}", design.name, target.name),
+            with_unit("time", &design.time_unit),
+            with_unit(&target.name, &target.unit),
+        )
+        .with(Series::new(
+            "true",
+            times.iter().zip(&run.targets).map(|(&t, r)| (t, r[index])).collect(),
+            TRUE_COLOR,
+            Style::Line,
+        ));
         for o in &comparison.observers {
             let rows = if on_mismatch {
                 o.mismatch_scenario.as_ref()
@@ -486,31 +317,151 @@ fn estimation(
                 Some(&o.scenario)
             };
             let Some(rows) = rows else { continue };
-            let (color, dots, label) = kind_style(o.kind);
-            curves.push(Curve {
-                label: label.into(),
-                points: times.iter().zip(rows.iter()).map(|(&t, e)| (t, e[index])).collect(),
+            let (color, style, label) = kind_style(o.kind);
+            panel = panel.with(Series::new(
+                label,
+                times.iter().zip(rows.iter()).map(|(&t, e)| (t, e[index])).collect(),
                 color,
-                dots,
-            });
+                style,
+            ));
         }
-        panels.push(Panel {
-            title: format!("{}: estimating {}{plant}", design.name, target.name),
-            x_label: with_unit("time", &design.time_unit),
-            y_label: with_unit(&target.name, &target.unit),
-            curves,
-            marks: vec![
-                (first, format!("first estimate (t = {})", tick(&first))),
-                (start_up, format!("end of start-up (t = {})", tick(&start_up))),
-            ],
-        });
+        if let Some(t) = result.targets.iter().find(|t| t.index == index) {
+            let along = map_along(&t.fit.map, run, horizon);
+            panel = panel.with(saturated_rings(
+                times
+                    .iter()
+                    .zip(along)
+                    .map(|(&time, (value, saturated))| ((time, value), saturated)),
+            ));
+        }
+        panels.push(
+            panel
+                .marked(
+                    format!("first estimate (t = {})", tick(&first)),
+                    vec![first],
+                    MARK_COLOR,
+                    Style::Dashes,
+                )
+                .marked(
+                    format!("end of start-up (t = {})", tick(&start_up)),
+                    vec![start_up],
+                    MARK_COLOR,
+                    Style::Dashes,
+                ),
+        );
     }
     let stem = if on_mismatch {
         "estimation_mismatch"
     } else {
         "estimation"
     };
-    write_figure(folder, stem, panels.len(), 1, &panels)
+    write_figure(&folder.join(stem), &Figure::grid(panels, 1))
+}
+
+/// Bins of the validation figure's RMSE curve against the true value.
+const BINS: usize = 40;
+
+/// `validation`: per target, the map's error (estimate − true) on every validation window against
+/// the time in its run, with the RMSE over the runs at each time, and against the true value, with
+/// the RMSE per bin of it; saturated estimates ringed.
+fn validation(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec<PathBuf>, PlotError> {
+    let set = &result.validation;
+    let count = set.window_count();
+    let stride = thinning(count, MAX_DOTS);
+    let shown = if stride == 1 {
+        format!("{} runs, {count} windows", set.runs.len())
+    } else {
+        format!("{} runs, 1 in {stride} of {count} windows", set.runs.len())
+    };
+    let samples = set.runs.iter().map(|r| r.states.len()).max().unwrap_or(0);
+    let mut z = Vec::new();
+    let mut rows = Vec::new();
+    for t in &result.targets {
+        let target = &design.targets[t.index];
+        // Every window counts in the RMSE curves; every `stride`-th is drawn.
+        let (mut by_time, mut by_time_count) = (vec![0.0; samples], vec![0usize; samples]);
+        let mut errors = Vec::with_capacity(count);
+        for w in set.windows() {
+            set.regressor(w, &mut z);
+            let e = t.fit.map.estimate(&z);
+            let truth = set.target(w, t.index);
+            let error = e.value - truth;
+            by_time[w.end] += error * error;
+            by_time_count[w.end] += 1;
+            errors.push((w.end, truth, error, e.saturation.is_saturated()));
+        }
+        let time = |k: usize| k as f64 * design.tau;
+        let rmse_by_time: Vec<(f64, f64)> = by_time
+            .iter()
+            .zip(&by_time_count)
+            .enumerate()
+            .filter(|(_, (_, &n))| n > 0)
+            .map(|(k, (&sum, &n))| (time(k), (sum / n as f64).sqrt()))
+            .collect();
+        let (lo, hi) = (t.fit.map.r_min, t.fit.map.r_max);
+        let width = (hi - lo) / BINS as f64;
+        let (mut by_value, mut by_value_count) = (vec![0.0; BINS], vec![0usize; BINS]);
+        for &(_, truth, error, _) in &errors {
+            let bin = (((truth - lo) / width).floor().max(0.0) as usize).min(BINS - 1);
+            by_value[bin] += error * error;
+            by_value_count[bin] += 1;
+        }
+        let rmse_by_value: Vec<(f64, f64)> = (0..BINS)
+            .filter(|&b| by_value_count[b] > 0)
+            .map(|b| {
+                (
+                    lo + (b as f64 + 0.5) * width,
+                    (by_value[b] / by_value_count[b] as f64).sqrt(),
+                )
+            })
+            .collect();
+        let drawn: Vec<_> = errors.iter().step_by(stride).collect();
+        let error_label = with_unit(&format!("error of {} (estimate − true)", target.name), &target.unit);
+        rows.push(vec![
+            Panel::new(
+                format!("{}: map error on {} ({shown})", design.name, target.name),
+                with_unit("time in the run", &design.time_unit),
+                error_label.clone(),
+            )
+            .with(Series::new(
+                "error",
+                drawn.iter().map(|e| (time(e.0), e.2)).collect(),
+                ESTIMATE_COLOR,
+                Style::Dots,
+            ))
+            .with(saturated_rings(drawn.iter().map(|e| ((time(e.0), e.2), e.3))))
+            .with(Series::new(
+                "RMSE over the runs at this time",
+                rmse_by_time,
+                TRUE_COLOR,
+                Style::Line,
+            )),
+            Panel::new(
+                format!("{}: map error on {} against the true value", design.name, target.name),
+                format!("true {}", with_unit(&target.name, &target.unit)),
+                error_label,
+            )
+            .with(Series::new(
+                "error",
+                drawn.iter().map(|e| (e.1, e.2)).collect(),
+                ESTIMATE_COLOR,
+                Style::Dots,
+            ))
+            .with(saturated_rings(drawn.iter().map(|e| ((e.1, e.2), e.3))))
+            .with(Series::new(
+                format!("RMSE per 1/{BINS} of the learning range"),
+                rmse_by_value,
+                TRUE_COLOR,
+                Style::Line,
+            )),
+        ]);
+    }
+    let figure = Figure {
+        rows,
+        panel_width: 560,
+        row_height: 380,
+    };
+    write_figure(&folder.join("validation"), &figure)
 }
 
 /// `search.png`/`.svg`: the design search's trade-off in two projections, the tuning score against
@@ -521,7 +472,6 @@ pub fn draw_search(
     outcome: &crate::search::Outcome,
     folder: &Path,
 ) -> Result<Vec<PathBuf>, PlotError> {
-    register_font();
     let fitted: Vec<&crate::search::Candidate> = outcome.candidates.iter().filter(|c| c.score.is_some()).collect();
     let point = |c: &crate::search::Candidate, x: fn(&crate::search::Cost) -> f64| {
         (
@@ -543,47 +493,70 @@ pub fn draw_search(
             })
             .copied()
             .collect();
-        Panel {
-            title: format!(
+        Panel::new(
+            format!(
                 "{}: design search ({} candidates)",
                 design.name,
                 outcome.candidates.len()
             ),
             x_label,
-            y_label: "tuning score (mean RMSE / spread)".to_owned(),
-            curves: vec![
-                Curve {
-                    label: "candidate".to_owned(),
-                    points: fitted.iter().map(|c| point(c, x)).collect(),
-                    color: RGBColor(170, 170, 170),
-                    dots: true,
-                },
-                Curve {
-                    label: "best at this cost".to_owned(),
-                    points: envelope,
-                    color: RGBColor(31, 119, 180),
-                    dots: false,
-                },
-                Curve {
-                    label: format!(
-                        "chosen: N = {}, n_m = {}, β = {}",
-                        outcome.chosen().horizon,
-                        outcome.chosen().nm,
-                        outcome.chosen().beta
-                    ),
-                    points: vec![point(outcome.chosen(), x)],
-                    color: RGBColor(214, 39, 40),
-                    dots: true,
-                },
-            ],
-            marks: Vec::new(),
-        }
+            "tuning score (mean RMSE / spread)",
+        )
+        .with(Series::new(
+            "candidate",
+            fitted.iter().map(|c| point(c, x)).collect(),
+            RGBColor(170, 170, 170),
+            Style::Dots,
+        ))
+        .with(Series::new("best at this cost", envelope, TRUE_COLOR, Style::Line))
+        .with(Series::new(
+            format!(
+                "chosen: N = {}, n_m = {}, β = {}",
+                outcome.chosen().horizon,
+                outcome.chosen().nm,
+                outcome.chosen().beta
+            ),
+            vec![point(outcome.chosen(), x)],
+            ESTIMATE_COLOR,
+            Style::Dots,
+        ))
     };
-    let panels = [
+    let panels = vec![
         panel("predicted instructions per sample (map)".to_owned(), |c| c.instructions),
         panel(with_unit("delay to the first estimate", &design.time_unit), |c| {
             c.first_estimate
         }),
     ];
-    write_figure(folder, "search", 1, 2, &panels)
+    write_figure(&folder.join("search"), &Figure::grid(panels, 2))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_constant_gradient_is_linear_and_a_curved_one_is_not() {
+        let flat: Vec<(f64, f64)> = (0..10).map(|i| (i as f64, 1.069e-3)).collect();
+        assert!(linear(&flat));
+        let curved: Vec<(f64, f64)> = (0..10).map(|i| (i as f64, 2e-3 + 1e-4 * (i * i) as f64)).collect();
+        assert!(!linear(&curved));
+    }
+
+    #[test]
+    fn every_figure_is_listed_once_in_the_report_order() {
+        let all = figure_stems(true, true);
+        let stems: Vec<&str> = all.iter().map(|s| s.0).collect();
+        assert_eq!(
+            stems,
+            [
+                "measurements",
+                "identification",
+                "estimation",
+                "estimation_mismatch",
+                "validation",
+                "search"
+            ]
+        );
+        assert_eq!(figure_stems(false, false).len(), 4);
+    }
 }

@@ -114,7 +114,7 @@ fn write(one: &Prepared, spec: &Path, folder: &Path, runtime: &Runtime) -> Resul
     let files = [
         (folder.join("Cargo.toml"), manifest(design, runtime)),
         (folder.join(STANDALONE_SPEC), spec_text),
-        (folder.join("README.md"), readme(one, folder, &figures)),
+        (folder.join("README.md"), readme(one)),
         (sources.join("lib.rs"), library(design)),
     ];
     for (path, text) in &files {
@@ -208,7 +208,7 @@ fn library(design: &Design) -> String {
 }
 
 /// `README.md`: how to build and use the crate, then the report with its figures.
-fn readme(one: &Prepared, folder: &Path, figures: &[PathBuf]) -> String {
+fn readme(one: &Prepared) -> String {
     let design = &one.emitted.design;
     let (name, library) = (&design.name, library_name(&design.name));
     let mut text = format!(
@@ -228,30 +228,13 @@ fn readme(one: &Prepared, folder: &Path, figures: &[PathBuf]) -> String {
         design.description,
         env!("CARGO_PKG_VERSION"),
     );
-    // The report, its first heading dropped (the README has its own).
-    let report = &one.report.1;
+    // The report, its first heading dropped (the README has its own), its figures (embedded by the
+    // report, beside it in report/) linked from here.
+    let report = crate::report::relocate_figures(&one.report.1, "report");
     let body = report.split_once('\n').map_or(report.as_str(), |(_, rest)| rest);
     let _ = write!(
         text,
-        "## Report\n\nFrom `report/report.md`; every figure is on validation runs unless it says otherwise.\n{body}"
+        "## Report\n\nFrom `report/report.md` (also `report/report.html`); every figure is on validation runs unless it says otherwise.\n{body}"
     );
-    let pngs: Vec<&PathBuf> = figures
-        .iter()
-        .filter(|f| f.extension().is_some_and(|e| e == "png"))
-        .collect();
-    if !pngs.is_empty() {
-        text.push_str("\n## Figures\n\n");
-        for figure in pngs {
-            let relative = figure
-                .strip_prefix(folder)
-                .unwrap_or(figure)
-                .to_string_lossy()
-                .replace('\\', "/");
-            let stem = figure
-                .file_stem()
-                .map_or(String::new(), |s| s.to_string_lossy().into_owned());
-            let _ = writeln!(text, "![{stem}]({relative})\n");
-        }
-    }
     text
 }
