@@ -177,7 +177,9 @@ pub fn host_command() -> std::process::Command {
             String::from_utf8_lossy(&built.stderr)
         );
         let target = std::env::var_os("CARGO_TARGET_DIR").map_or_else(|| root.join("target"), PathBuf::from);
-        target.join("debug").join(format!("host{}", std::env::consts::EXE_SUFFIX))
+        target
+            .join("debug")
+            .join(format!("host{}", std::env::consts::EXE_SUFFIX))
     });
     std::process::Command::new(binary)
 }

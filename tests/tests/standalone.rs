@@ -8,7 +8,6 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-
 /// Every file under `folder` with its bytes, sorted.
 fn snapshot(folder: &Path) -> Vec<(PathBuf, Vec<u8>)> {
     let mut files = Vec::new();
@@ -274,7 +273,11 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
         "gen --spec changed generated/"
     );
     // Nor anything else of the repository.
-    assert_eq!(git_status(&root), status_before, "the walkthrough changed the repository");
+    assert_eq!(
+        git_status(&root),
+        status_before,
+        "the walkthrough changed the repository"
+    );
     std::fs::remove_dir_all(&scratch).unwrap();
 }
 

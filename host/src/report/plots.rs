@@ -169,10 +169,10 @@ fn measurements(design: &Design, run: &Run, folder: &Path) -> Result<Vec<PathBuf
             time_label,
             "input",
         );
-        for (j, name) in design.model.inputs.iter().enumerate() {
+        for (j, (name, unit)) in design.model.inputs.iter().zip(&design.input_units).enumerate() {
             let points = times.iter().zip(&run.inputs).map(|(&t, u)| (t, u[j])).collect();
             panel = panel.with(Series::new(
-                name.as_str(),
+                with_unit(name, unit),
                 points,
                 PALETTE[j % PALETTE.len()],
                 Style::Line,

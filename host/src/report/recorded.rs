@@ -426,15 +426,15 @@ fn figure(input: &Table, estimates: &Table, design: Option<&Design>) -> Result<F
                     .with(Series::new("measured", series(&values), ESTIMATE_COLOR, Style::Dots)),
                 ));
             }
-            for name in &design.model.inputs {
+            for (name, unit) in design.model.inputs.iter().zip(&design.input_units) {
                 let values = input.numbers(input.require(name, &fix)?)?;
                 panels.push(marked(
-                    Panel::new(format!("{title}: input {name}"), time_label.clone(), name.as_str()).with(Series::new(
-                        name.as_str(),
-                        series(&values),
-                        PALETTE[1],
-                        Style::Line,
-                    )),
+                    Panel::new(
+                        format!("{title}: input {name}"),
+                        time_label.clone(),
+                        with_unit(name, unit),
+                    )
+                    .with(Series::new(name.as_str(), series(&values), PALETTE[1], Style::Line)),
                 ));
             }
         }
