@@ -1,4 +1,4 @@
-//! The paper's figures for a design, as PNG and SVG, drawn by [`super::draw`]:
+//! The paper's figures for a design, as PNG and SVG, drawn by the report's drawing module (`draw`):
 //!
 //! * `measurements`: the scenario's measured outputs against their noise-free values, the noise
 //!   (paper Fig. 1 and 5), and the inputs applied;

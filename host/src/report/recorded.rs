@@ -1,5 +1,5 @@
 //! `plot`: a recorded run and its estimates (what `estimate` writes) in one figure, the paper's
-//! Fig. 2 (right) for recorded data, drawn by [`super::draw`] as PNG and SVG.
+//! Fig. 2 (right) for recorded data, drawn by the report's drawing module (`draw`) as PNG and SVG.
 //!
 //! Per target, a panel of the estimates against the truth when the input holds it (a column
 //! `truth_<target>`, else one named after the target, as `simulate` writes the states); then, with
