@@ -183,3 +183,32 @@ pub fn host_command() -> std::process::Command {
     });
     std::process::Command::new(binary)
 }
+
+/// A saturation as the estimates file and the C interface write it: -1 low, 0 inside, 1 high.
+pub fn saturation_flag(saturation: firmware::Saturation) -> i8 {
+    match saturation {
+        firmware::Saturation::Low => -1,
+        firmware::Saturation::Inside => 0,
+        firmware::Saturation::High => 1,
+    }
+}
+
+/// One row of an estimates file after its `time` (and `run`) cells, written from a generated
+/// observer's own output: `status`, each target's value, each target's flag, empty cells without an
+/// estimate. `accepted` is whether `push` took the sample; `targets` the design's count.
+pub fn estimates_row(accepted: bool, estimates: Option<&[firmware::Estimate<f32>]>, targets: usize) -> String {
+    let empty = |status: &str| format!("{status}{}", ",".repeat(2 * targets));
+    match (accepted, estimates) {
+        (false, _) => empty("refused"),
+        (true, None) => empty("no_estimate_yet"),
+        (true, Some(e)) => {
+            let values = e.iter().map(|e| format!("{}", f64::from(e.value)));
+            let flags = e.iter().map(|e| saturation_flag(e.saturation).to_string());
+            std::iter::once("ok".to_owned())
+                .chain(values)
+                .chain(flags)
+                .collect::<Vec<_>>()
+                .join(",")
+        }
+    }
+}

@@ -293,24 +293,8 @@ fn rust_estimates(csv: &str) -> String {
     for line in lines {
         let cells: Vec<&str> = line.split(',').collect();
         let sample: f32 = cells[y].parse().unwrap();
-        let row = match (observer.push([sample], []), observer.estimate()) {
-            (Err(_), _) => "refused,,,,".to_owned(),
-            (Ok(()), None) => "no_estimate_yet,,,,".to_owned(),
-            (Ok(()), Some(e)) => {
-                let flag = |s: firmware::Saturation| match s {
-                    firmware::Saturation::Low => -1,
-                    firmware::Saturation::Inside => 0,
-                    firmware::Saturation::High => 1,
-                };
-                format!(
-                    "ok,{},{},{},{}",
-                    f64::from(e[0].value),
-                    f64::from(e[1].value),
-                    flag(e[0].saturation),
-                    flag(e[1].saturation)
-                )
-            }
-        };
+        let accepted = observer.push([sample], []).is_ok();
+        let row = integration_tests::estimates_row(accepted, observer.estimate().as_ref().map(|e| &e[..]), d::TARGETS);
         text += &format!("{},{row}\n", cells[time]);
     }
     text
@@ -373,11 +357,7 @@ fn rust_replay() -> String {
         let estimates = observer.estimate();
         let _ = write!(text, "{k} {pushed} {}", if estimates.is_some() { 0 } else { 2 });
         for e in estimates.iter().flatten() {
-            let flag = match e.saturation {
-                firmware::Saturation::Low => -1,
-                firmware::Saturation::Inside => 0,
-                firmware::Saturation::High => 1,
-            };
+            let flag = integration_tests::saturation_flag(e.saturation);
             let _ = write!(text, " {:08x} {flag}", e.value.to_bits());
         }
         text.push('\n');
