@@ -21,6 +21,8 @@ use host::emit::precision::compare;
 
 use crate::workspace_root;
 
+pub mod standalone;
+
 include!(concat!(env!("OUT_DIR"), "/started_observers.rs"));
 
 /// Why the on-target measurements could not be made.
@@ -281,37 +283,58 @@ pub fn phases(instructions: &[u64], accepted: &[bool], estimated: &[bool], start
     })
 }
 
-/// Builds `bin` of the on-target program in release into `target_dir`, with `variables` set (the
-/// design and kind selections of `tests/on-target/build.rs`), and copies the ELF to `copy`, so that
-/// the next build (which writes the same file) leaves it as built.
-fn build(bin: &str, variables: &[(&str, &str)], target_dir: &Path, copy: &Path) -> Result<PathBuf, String> {
-    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    let mut command = Command::new(cargo);
-    command
-        .current_dir(workspace_root())
-        .args(["build", "--release", "--manifest-path", "tests/on-target/Cargo.toml"])
-        .args(["--target", "thumbv7em-none-eabihf", "--bin", bin, "--target-dir"])
-        .arg(target_dir);
-    for variable in ["ON_TARGET_DESIGN", "ON_TARGET_KIND", "PROBE_DESIGN", "PROBE_KIND"] {
-        command.env_remove(variable);
-    }
-    command.envs(variables.iter().copied());
-    let output = command.output().map_err(|e| format!("cannot run cargo: {e}"))?;
-    if !output.status.success() {
-        return Err(String::from_utf8_lossy(&output.stderr).into_owned());
-    }
-    let built = target_dir.join("thumbv7em-none-eabihf/release").join(bin);
-    if let Some(folder) = copy.parent() {
-        std::fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
-    }
-    std::fs::copy(&built, copy).map_err(|e| format!("cannot copy {} to {}: {e}", built.display(), copy.display()))?;
-    Ok(copy.to_owned())
+/// An on-target program to build: the manifest of its runners and probes (`tests/on-target/`, or
+/// one [`standalone`] writes for a user's crate) and the folder cargo builds into.
+#[derive(Clone, Debug)]
+pub struct Program {
+    /// Its `Cargo.toml`.
+    pub manifest: PathBuf,
+    /// Cargo's `--target-dir`: runners and probes share it, so their dependencies are compiled once.
+    pub target_dir: PathBuf,
+    /// Where the ELFs are kept (`runs/`, `probes/`).
+    pub elves: PathBuf,
 }
 
-/// Where the on-target programs are built (runners and probes share it, so their dependencies are
-/// compiled once).
-fn target_dir() -> PathBuf {
-    workspace_root().join("target").join("on-target")
+impl Program {
+    /// `tests/on-target/`, linking the project's `generated` crate.
+    pub fn project() -> Self {
+        let target_dir = workspace_root().join("target").join("on-target");
+        Program {
+            manifest: workspace_root().join("tests/on-target/Cargo.toml"),
+            elves: target_dir.clone(),
+            target_dir,
+        }
+    }
+
+    /// Builds `bin` in release with `variables` set (the design and kind selections of
+    /// `tests/on-target/build.rs`), and copies the ELF to `copy` (under [`Program::elves`]), so that
+    /// the next build (which writes the same file) leaves it as built.
+    fn build(&self, bin: &str, variables: &[(&str, &str)], copy: &str) -> Result<PathBuf, String> {
+        let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+        let mut command = Command::new(cargo);
+        command
+            .current_dir(workspace_root())
+            .args(["build", "--release", "--manifest-path"])
+            .arg(&self.manifest)
+            .args(["--target", "thumbv7em-none-eabihf", "--bin", bin, "--target-dir"])
+            .arg(&self.target_dir);
+        for variable in ["ON_TARGET_DESIGN", "ON_TARGET_KIND", "PROBE_DESIGN", "PROBE_KIND"] {
+            command.env_remove(variable);
+        }
+        command.envs(variables.iter().copied());
+        let output = command.output().map_err(|e| format!("cannot run cargo: {e}"))?;
+        if !output.status.success() {
+            return Err(String::from_utf8_lossy(&output.stderr).into_owned());
+        }
+        let built = self.target_dir.join("thumbv7em-none-eabihf/release").join(bin);
+        let copy = self.elves.join(copy);
+        if let Some(folder) = copy.parent() {
+            std::fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
+        }
+        std::fs::copy(&built, &copy)
+            .map_err(|e| format!("cannot copy {} to {}: {e}", built.display(), copy.display()))?;
+        Ok(copy)
+    }
 }
 
 /// Address of a symbol in an ELF (`arm-none-eabi-nm`).
@@ -603,9 +626,21 @@ type Ran = (String, bool, String, Vec<(u64, u64)>);
 /// second thread while cargo builds the next program. `Err(Unavailable::Missing)` when QEMU or
 /// binutils are missing.
 pub fn measure() -> Result<Measurements, Unavailable> {
+    let designs: Vec<(String, Vec<Kind>)> = design_names()
+        .into_iter()
+        .map(|name| (name.to_owned(), kinds(name)))
+        .collect();
+    measure_designs(&Program::project(), &designs, &generated::FAMILIES)
+}
+
+/// [`measure`] of `designs` (each with its kinds, the EKF from the centre among them) and
+/// `families` (probes only) as `program` links them.
+pub fn measure_designs(
+    program: &Program,
+    designs: &[(String, Vec<Kind>)],
+    families: &[&str],
+) -> Result<Measurements, Unavailable> {
     require_tools()?;
-    let dir = target_dir();
-    let runs = dir.join("runs");
     let (ran, probes) = std::thread::scope(|scope| {
         let (send, receive) = std::sync::mpsc::channel::<Built>();
         let qemu = scope.spawn(move || -> Result<Vec<Ran>, Unavailable> {
@@ -618,32 +653,29 @@ pub fn measure() -> Result<Measurements, Unavailable> {
                 .collect()
         });
         let built = (|| -> Result<Probes, Unavailable> {
-            for name in design_names() {
-                let kinds: Vec<&str> = kinds(name)
-                    .into_iter()
-                    .filter(|&k| k != Kind::Ekf)
-                    .map(Kind::chip_name)
+            for (name, kinds) in designs {
+                let name = name.as_str();
+                let kinds: Vec<&str> = kinds
+                    .iter()
+                    .filter(|&&k| k != Kind::Ekf)
+                    .map(|k| k.chip_name())
                     .collect();
-                let elf = build(
-                    "on-target",
-                    &[("ON_TARGET_DESIGN", name), ("ON_TARGET_KIND", &kinds.join(","))],
-                    &dir,
-                    &runs.join(format!("{name}.elf")),
-                )
-                .map_err(|e| failed(format!("on-target program of {name}: {e}")))?;
+                let elf = program
+                    .build(
+                        "on-target",
+                        &[("ON_TARGET_DESIGN", name), ("ON_TARGET_KIND", &kinds.join(","))],
+                        &format!("runs/{name}.elf"),
+                    )
+                    .map_err(|e| failed(format!("on-target program of {name}: {e}")))?;
                 // The QEMU thread has stopped only after an error, which its result reports.
                 let _ = send.send((name.to_owned(), false, elf));
-                let elf = build(
-                    "ekf",
-                    &[("ON_TARGET_DESIGN", name)],
-                    &dir,
-                    &runs.join(format!("{name}.ekf.elf")),
-                )
-                .map_err(|e| failed(format!("EKF program of {name}: {e}")))?;
+                let elf = program
+                    .build("ekf", &[("ON_TARGET_DESIGN", name)], &format!("runs/{name}.ekf.elf"))
+                    .map_err(|e| failed(format!("EKF program of {name}: {e}")))?;
                 let _ = send.send((name.to_owned(), true, elf));
             }
             drop(send);
-            probe_all(&dir)
+            probe_all(program, designs, families)
         })();
         let ran = qemu
             .join()
@@ -709,47 +741,47 @@ struct Probes {
 }
 
 /// Builds the baseline probe, one probe per design and kind, and one per family.
-fn probe_all(dir: &Path) -> Result<Probes, Unavailable> {
-    let elf = dir.join("probes");
+fn probe_all(program: &Program, designs: &[(String, Vec<Kind>)], families: &[&str]) -> Result<Probes, Unavailable> {
     let baseline = sizes(
-        &build("probe", &[], dir, &elf.join("baseline.elf")).map_err(|e| failed(format!("baseline probe: {e}")))?,
+        &program
+            .build("probe", &[], "probes/baseline.elf")
+            .map_err(|e| failed(format!("baseline probe: {e}")))?,
     )?;
     let mut kinds = BTreeMap::new();
-    for name in design_names() {
-        for kind in self::kinds(name) {
-            let probe = build(
-                "probe",
-                &[("PROBE_DESIGN", name), ("PROBE_KIND", kind.chip_name())],
-                dir,
-                &elf.join(format!("{name}.{}.elf", kind.chip_name())),
-            )
-            .map_err(|e| {
-                failed(format!(
-                    "probe of {name}'s {} (a panic path would show here): {e}",
-                    kind.api()
-                ))
-            })?;
+    for (name, design_kinds) in designs {
+        for &kind in design_kinds {
+            let probe = program
+                .build(
+                    "probe",
+                    &[("PROBE_DESIGN", name), ("PROBE_KIND", kind.chip_name())],
+                    &format!("probes/{name}.{}.elf", kind.chip_name()),
+                )
+                .map_err(|e| {
+                    failed(format!(
+                        "probe of {name}'s {} (a panic path would show here): {e}",
+                        kind.api()
+                    ))
+                })?;
             let (text, data, bss) = sizes(&probe)?;
             let cost = (
                 (text + data).saturating_sub(baseline.0 + baseline.1),
                 (data + bss).saturating_sub(baseline.1 + baseline.2),
             );
-            kinds.insert((name.to_owned(), kind), cost);
+            kinds.insert((name.clone(), kind), cost);
         }
     }
-    let mut families = BTreeMap::new();
-    for family in generated::FAMILIES {
-        let probe = build(
-            "probe",
-            &[("PROBE_DESIGN", family)],
-            dir,
-            &elf.join(format!("{family}.elf")),
-        )
-        .map_err(|e| failed(format!("probe of family {family}: {e}")))?;
+    let mut family_flash = BTreeMap::new();
+    for &family in families {
+        let probe = program
+            .build("probe", &[("PROBE_DESIGN", family)], &format!("probes/{family}.elf"))
+            .map_err(|e| failed(format!("probe of family {family}: {e}")))?;
         let (text, data, _) = sizes(&probe)?;
-        families.insert(family.to_owned(), (text + data).saturating_sub(baseline.0 + baseline.1));
+        family_flash.insert(family.to_owned(), (text + data).saturating_sub(baseline.0 + baseline.1));
     }
-    Ok(Probes { kinds, families })
+    Ok(Probes {
+        kinds,
+        families: family_flash,
+    })
 }
 
 /// QEMU and binutils, or which is missing.
@@ -782,22 +814,42 @@ fn run_counted(elf: &Path) -> Result<(String, Vec<(u64, u64)>), Unavailable> {
 
 /// Builds the runner of design `name` with `kind` alone and returns the instructions of each of its
 /// measured calls: the report checks that running several kinds in one program ([`measure`]) counts
-/// what each kind counts when linked alone.
-pub fn instructions_alone(name: &str, kind: Kind) -> Result<Vec<u64>, Unavailable> {
+/// what each kind counts when linked alone ([`same_alone`]).
+pub fn instructions_alone(program: &Program, name: &str, kind: Kind) -> Result<Vec<u64>, Unavailable> {
     require_tools()?;
     if kind == Kind::Ekf {
         return Err(failed("the EKF from the box centre runs alone already"));
     }
-    let dir = target_dir();
-    let elf = build(
-        "on-target",
-        &[("ON_TARGET_DESIGN", name), ("ON_TARGET_KIND", kind.chip_name())],
-        &dir,
-        &dir.join("runs").join(format!("{name}.{}.elf", kind.chip_name())),
-    )
-    .map_err(|e| failed(format!("on-target program of {name}'s {} alone: {e}", kind.api())))?;
+    let elf = program
+        .build(
+            "on-target",
+            &[("ON_TARGET_DESIGN", name), ("ON_TARGET_KIND", kind.chip_name())],
+            &format!("runs/{name}.{}.elf", kind.chip_name()),
+        )
+        .map_err(|e| failed(format!("on-target program of {name}'s {} alone: {e}", kind.api())))?;
     let (_, counts) = run_counted(&elf)?;
     Ok(counts.into_iter().map(|(n, _)| n).collect())
+}
+
+/// Checks that every kind of every design that ran with others counts, built alone, the same
+/// instructions: the program that runs them together measures what a firmware with one kind runs.
+pub fn same_alone(program: &Program, all: &Measurements) -> Result<(), String> {
+    for (name, observers) in &all.observers {
+        if observers.len() < 2 {
+            continue;
+        }
+        for (&kind, observer) in observers {
+            let alone = instructions_alone(program, name, kind).map_err(|e| e.to_string())?;
+            if alone != observer.instructions {
+                return Err(format!(
+                    "{name} {}: linked with the other kinds it counts {:?}, alone {alone:?}: the program that runs them together does not measure what a firmware with this kind alone runs",
+                    kind.api(),
+                    observer.instructions
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// One sample of a design's extended Kalman filter as the target reported it.
@@ -963,15 +1015,17 @@ pub fn compare_ekf_with_f64(name: &str, measured: &EkfMeasurement) -> Result<f64
 pub fn bits_and_flags<T: Scalar>(estimates: &[Estimate<T>], bits: impl Fn(T) -> u32) -> Vec<(u32, char)> {
     estimates
         .iter()
-        .map(|e| {
-            let flag = match e.saturation {
-                Saturation::Low => 'L',
-                Saturation::Inside => 'I',
-                Saturation::High => 'H',
-            };
-            (bits(e.value), flag)
-        })
+        .map(|e| (bits(e.value), chip_flag(e.saturation)))
         .collect()
+}
+
+/// The saturation flag as the chip prints it.
+pub fn chip_flag(saturation: Saturation) -> char {
+    match saturation {
+        Saturation::Low => 'L',
+        Saturation::Inside => 'I',
+        Saturation::High => 'H',
+    }
 }
 
 /// Runs design `name`'s observer of `kind` on the host in f32, over the recorded sequence the chip
@@ -1247,15 +1301,72 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
 
 /// Builds the probe that indexes out of bounds: it must fail to link, naming the missing symbol.
 pub fn panic_check_catches_a_reachable_panic() -> Result<bool, Unavailable> {
-    let dir = target_dir();
-    match build(
+    match Program::project().build(
         "probe",
         &[("PROBE_DESIGN", "__reachable_panic")],
-        &dir,
-        &dir.join("probes").join("reachable_panic.elf"),
+        "probes/reachable_panic.elf",
     ) {
         Ok(_) => Ok(false),
         Err(stderr) => Ok(stderr.contains("observer_code_can_panic")),
+    }
+}
+
+/// One observer's figures as the reports give them.
+#[derive(Clone, Debug)]
+pub struct Figures {
+    /// Its instructions split into start-up and steady state.
+    pub phases: Phases,
+    /// Most `VDIV` + `VSQRT` of a sample.
+    pub divisions: u64,
+    /// Deepest stack use of a sample, in bytes.
+    pub stack_bytes: u64,
+    /// Flash added to a program, in bytes.
+    pub flash_bytes: u64,
+    /// RAM: the observer itself and the static RAM it adds, in bytes.
+    pub ram_bytes: u64,
+    /// Largest `|chip − host f64|` over the recorded sequence (target units).
+    pub largest: f64,
+}
+
+impl Figures {
+    /// A map or an observer it starts, `largest` from comparing it with the host.
+    pub fn of_observer(observer: &ObserverMeasurement, largest: f64) -> Result<Self, String> {
+        Ok(Figures {
+            phases: observer.phases()?,
+            divisions: observer.divisions.iter().copied().max().unwrap_or(0),
+            stack_bytes: observer.stack_bytes as u64,
+            flash_bytes: observer.flash_bytes,
+            ram_bytes: observer.observer_bytes as u64 + observer.static_ram_bytes,
+            largest,
+        })
+    }
+
+    /// The EKF from the box centre, `largest` from comparing it with the host.
+    pub fn of_filter(filter: &EkfMeasurement, largest: f64) -> Result<Self, String> {
+        Ok(Figures {
+            phases: filter.phases()?,
+            divisions: filter.divisions.iter().copied().max().unwrap_or(0),
+            stack_bytes: filter.stack_bytes as u64,
+            flash_bytes: filter.flash_bytes,
+            ram_bytes: filter.filter_bytes as u64 + filter.static_ram_bytes,
+            largest,
+        })
+    }
+
+    /// As recorded beside a report.
+    pub fn on_target(&self) -> host::report::on_target::OnTarget {
+        let (_, median, max) = spread(&self.phases.steady);
+        host::report::on_target::OnTarget {
+            instructions_median: median,
+            instructions_max: max,
+            start_up_instructions_max: Some(self.phases.start_up_max),
+            start_up_samples: Some(self.phases.start_up_samples as u64),
+            divisions: self.divisions,
+            flash_bytes: self.flash_bytes,
+            ram_bytes: self.ram_bytes,
+            stack_bytes: self.stack_bytes,
+            largest_difference: Some(self.largest),
+        }
     }
 }
 
@@ -1269,33 +1380,6 @@ pub fn spread(values: &[u64]) -> (u64, u64, u64) {
     (sorted[0], sorted[sorted.len() / 2], sorted[sorted.len() - 1])
 }
 
-/// The recorded sequence of a design as the generated file holds it, rebuilt on the host in f64
-/// (the scenario's measurements rounded to f32, with the same refused samples).
-fn recorded_rows(result: &host::fit::DesignResult) -> Vec<host::recording::Row> {
-    let scenario = &result.scenario;
-    let refused = host::emit::refused_samples(scenario.measurements.len());
-    scenario
-        .measurements
-        .iter()
-        .zip(&scenario.inputs)
-        .enumerate()
-        .map(|(k, (y, u))| {
-            let mut y: Vec<f64> = y.iter().map(|&v| f64::from(v as f32)).collect();
-            match (refused.iter().position(|&r| r == k), y.first_mut()) {
-                (Some(0), Some(first)) => *first = f64::NAN,
-                (Some(_), Some(first)) => *first = f64::INFINITY,
-                _ => {}
-            }
-            host::recording::Row {
-                time: None,
-                run: String::new(),
-                y,
-                u: u.iter().map(|&v| f64::from(v as f32)).collect(),
-            }
-        })
-        .collect()
-}
-
 /// Compares the target's estimates of design `name` with the host's f64 library estimates on the
 /// same recorded sequence, by [`host::emit::precision::compare`]; returns the largest `|target - host|`.
 pub fn compare_with_library(name: &str, measured: &ObserverMeasurement) -> Result<f64, String> {
@@ -1305,7 +1389,7 @@ pub fn compare_with_library(name: &str, measured: &ObserverMeasurement) -> Resul
         .ok_or_else(|| format!("no shipped spec for {name}"))?;
     let design = crate::settled(host::spec::load(&path).map_err(|e| e.to_string())?);
     let result = crate::build(&design);
-    let rows = recorded_rows(&result);
+    let rows = host::emit::recorded_sequence(&result.scenario);
     if rows.len() != measured.samples.len() {
         return Err(format!(
             "{name}: {} samples on the target, {} recorded",

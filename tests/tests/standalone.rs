@@ -2,8 +2,9 @@
 //! --spec` makes a crate of its own, outside this repository, that builds for the Cortex-M4F and
 //! passes its doc example; its C library, linked into a C program by the system's C compiler and by
 //! `arm-none-eabi-gcc` for the emulated board, gives the Rust observer's numbers bit for bit;
-//! `simulate`, `estimate --precision f32` (the Rust observer's bits again) and `plot` on a recording;
-//! and the repository (`generated/` byte for byte, and `git status`) is left as it was.
+//! `on-target-report -- --crate` measures it on the emulated board into its own README; `simulate`,
+//! `estimate --precision f32` (the Rust observer's bits again) and `plot` on a recording; and the
+//! repository (`generated/` byte for byte, and `git status`) is left as it was.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -229,6 +230,8 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
             .unwrap();
         assert!(run.status.success(), "qemu: {}", String::from_utf8_lossy(&run.stderr));
         assert_eq!(String::from_utf8(run.stdout).unwrap(), printed);
+
+        measured_on_the_emulated_board(&spec, &out);
     }
 
     // Recorded data: a run of the plant, then the design's estimates over it by the tables `gen` saved
@@ -279,6 +282,85 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
         "the walkthrough changed the repository"
     );
     std::fs::remove_dir_all(&scratch).unwrap();
+}
+
+/// `on-target-report -- --crate DIR` on the walkthrough's crate: every observer's figures go into the
+/// crate's report and README (never the project's), checked there against the host; `gen --spec`
+/// again writes the same README (the figures are kept while the source is the one measured); and
+/// tables that do not compute what the chip computes are refused, nothing written.
+fn measured_on_the_emulated_board(spec: &Path, out: &Path) {
+    let report = || {
+        Command::new(env!("CARGO_BIN_EXE_on-target-report"))
+            .arg("--crate")
+            .arg(out)
+            .output()
+            .unwrap()
+    };
+    let before = std::fs::read_to_string(out.join("README.md")).unwrap();
+    assert!(before.contains("Not measured for this generated source yet"));
+    let run = report();
+    assert!(
+        run.status.success(),
+        "on-target-report --crate: {}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    // What it prints is the section, and the README changed by that section alone.
+    let section = String::from_utf8(run.stdout).unwrap();
+    let readme = std::fs::read_to_string(out.join("README.md")).unwrap();
+    assert_eq!(host::report::on_target::splice(&before, &section), Some(readme.clone()));
+    let rows: Vec<&str> = section
+        .lines()
+        .filter(|l| l.starts_with("| `"))
+        .map(|l| l.split(" | ").next().unwrap())
+        .collect();
+    assert_eq!(
+        rows,
+        [
+            "| `map_observer()`",
+            "| `CorrectedObserver`",
+            "| `StartedEkfObserver`",
+            "| `ekf()`"
+        ],
+        "{section}"
+    );
+    let markdown = std::fs::read_to_string(out.join("report/report.md")).unwrap();
+    assert!(markdown.contains(&section), "report.md shows the same figures");
+    assert!(out.join("report/on_target.json").is_file());
+
+    host(&[
+        "gen",
+        "--spec",
+        s(spec),
+        "--out",
+        s(out),
+        "--runtime-path",
+        s(&integration_tests::workspace_root().join("firmware")),
+    ]);
+    assert_eq!(
+        std::fs::read_to_string(out.join("README.md")).unwrap(),
+        readme,
+        "gen again keeps the figures"
+    );
+
+    // One gain of the saved table off by 1 %: `estimate --precision f32` no longer gives the chip's bits.
+    let path = out.join("report/design.json");
+    let saved = std::fs::read_to_string(&path).unwrap();
+    let mut tables = host::tables::Tables::read(&path).unwrap().unwrap();
+    let table = tables.maps[0].table.as_mut().unwrap();
+    table.gains[0] *= 1.01;
+    std::fs::write(&path, tables.to_json()).unwrap();
+    let run = report();
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(
+        !run.status.success() && stderr.contains("by `estimate --precision f32`"),
+        "{stderr}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(out.join("README.md")).unwrap(),
+        readme,
+        "nothing written"
+    );
+    std::fs::write(&path, saved).unwrap();
 }
 
 /// The estimates file of the Rust observer (the design's, `generated::vanderpol`) over the `y` column

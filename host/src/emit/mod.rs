@@ -292,6 +292,34 @@ pub fn refused_samples(len: usize) -> Vec<usize> {
     }
 }
 
+/// The recorded sequence an emitted design carries (`RECORDED_Y`, `RECORDED_U`), as rows of a
+/// recording: `scenario`'s measurements and inputs rounded to `f32` as emitted, the
+/// [`refused_samples`]' first output NaN, then +∞. What the chip runs, for the host to run too.
+pub fn recorded_sequence(scenario: &crate::data::Run) -> Vec<crate::recording::Row> {
+    let refused = refused_samples(scenario.measurements.len());
+    let exact = |row: &[f64]| -> Vec<f64> { row.iter().map(|&v| f64::from(v as f32)).collect() };
+    scenario
+        .measurements
+        .iter()
+        .zip(scenario.inputs.iter())
+        .enumerate()
+        .map(|(k, (y, u))| {
+            let mut y = exact(y);
+            match (refused.iter().position(|&r| r == k), y.first_mut()) {
+                (Some(0), Some(first)) => *first = f64::NAN,
+                (Some(_), Some(first)) => *first = f64::INFINITY,
+                _ => {}
+            }
+            crate::recording::Row {
+                time: None,
+                run: String::new(),
+                y,
+                u: exact(u),
+            }
+        })
+        .collect()
+}
+
 /// Rows `[v, …],` of a recorded sequence, one sample per line, with the refused samples' first value
 /// replaced by `f32::NAN` or `f32::INFINITY`.
 fn recorded_rows(what: &str, rows: &crate::data::Rows, corrupt: bool) -> Result<String, EmitError> {

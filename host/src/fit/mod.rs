@@ -70,15 +70,21 @@ pub fn run(design: &Design, progress: &ProgressBar) -> Result<DesignResult, Spec
         targets.push(result);
         progress.inc(1);
     }
-    let scenario = match data::scenario_run(design, &design.model, "scenario")? {
-        Some(run) => run,
-        None => validation.runs[0].clone(),
-    };
+    let scenario = scenario(design, &validation)?;
     Ok(DesignResult {
         learning,
         validation,
         targets,
         scenario,
+    })
+}
+
+/// The estimation run ([`DesignResult::scenario`]): the spec's `[scenario]`, else the first run of
+/// `validation`, the design's validation set.
+pub fn scenario(design: &Design, validation: &DataSet) -> Result<Run, SpecError> {
+    Ok(match data::scenario_run(design, &design.model, "scenario")? {
+        Some(run) => run,
+        None => validation.runs[0].clone(),
     })
 }
 

@@ -32,6 +32,7 @@ use core::panic::PanicInfo;
 
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprint, hprintln};
+use generated::firmware;
 use firmware::{Design, Estimate, Follower, Saturation};
 
 include!(concat!(env!("OUT_DIR"), "/design.rs"));

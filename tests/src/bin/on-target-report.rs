@@ -2,24 +2,46 @@
 //! observers the map starts and the EKF from the box centre, whichever the design has), rewrites
 //! the table in the README between `<!-- on-target:begin -->` and `<!-- on-target:end -->`, and
 //! records each design's figures beside its report (`target/designs/<design>/on_target.json`, and
-//! `report.json`'s `observers[].on_target`):
+//! `report.json`'s `observers[].on_target`, and the section of `report.md` that shows them):
 //!
 //! ```sh
 //! cargo run -p integration-tests --bin on-target-report
 //! ```
 //!
+//! With `--crate DIR`, the same for the standalone crate `host gen --spec` wrote in `DIR` (see
+//! `integration_tests::on_target::standalone`): its figures go beside its report (`DIR/report/`) and
+//! into its `README.md`, never into the project's.
+//!
 //! The map and the observers it starts run one after the other in one program per design; before
 //! anything is written, each of them is also built and run alone, and its counts must be the same.
 
 use std::collections::BTreeMap;
+use std::path::PathBuf;
 use std::process::ExitCode;
 
-use host::report::on_target::{Measured, OnTarget};
-use integration_tests::on_target::{self, Kind, Phases};
+use host::report::on_target::Measured;
+use integration_tests::on_target::{self, Figures, Kind};
 use integration_tests::workspace_root;
 
+const USAGE: &str = "usage: on-target-report [--crate DIR]
+
+Measures the observers on the emulated Cortex-M4F (QEMU mps2-an386) and records the figures:
+  (no argument)   every shipped design: beside its report (target/designs/<name>/) and in README.md
+  --crate DIR     the standalone crate `host gen --spec FILE --out DIR` wrote: in DIR/report/ and DIR/README.md
+";
+
 fn main() -> ExitCode {
-    match run() {
+    let arguments: Vec<String> = std::env::args().skip(1).collect();
+    let result = match arguments.iter().map(String::as_str).collect::<Vec<_>>().as_slice() {
+        [] => run(),
+        ["--crate", folder] => on_target::standalone::measure_crate(&PathBuf::from(folder)),
+        ["-h" | "--help"] => {
+            print!("{USAGE}");
+            return ExitCode::SUCCESS;
+        }
+        _ => Err(format!("unexpected arguments {arguments:?}\n\n{USAGE}")),
+    };
+    match result {
         Ok(table) => {
             print!("{table}");
             ExitCode::SUCCESS
@@ -31,49 +53,10 @@ fn main() -> ExitCode {
     }
 }
 
-/// One row's cost columns.
-struct Row {
-    phases: Phases,
-    divisions: u64,
-    stack_bytes: u64,
-    flash_bytes: u64,
-    ram_bytes: u64,
-    largest: f64,
-}
-
-impl Row {
-    fn on_target(&self) -> OnTarget {
-        let (_, median, max) = on_target::spread(&self.phases.steady);
-        OnTarget {
-            instructions_median: median,
-            instructions_max: max,
-            start_up_instructions_max: Some(self.phases.start_up_max),
-            start_up_samples: Some(self.phases.start_up_samples as u64),
-            divisions: self.divisions,
-            flash_bytes: self.flash_bytes,
-            ram_bytes: self.ram_bytes,
-            stack_bytes: self.stack_bytes,
-        }
-    }
-}
-
 fn run() -> Result<String, String> {
     let all = on_target::measure().map_err(|e| e.to_string())?;
-    for (name, observers) in &all.observers {
-        if observers.len() < 2 {
-            continue;
-        }
-        for (&kind, observer) in observers {
-            let alone = on_target::instructions_alone(name, kind).map_err(|e| e.to_string())?;
-            if alone != observer.instructions {
-                return Err(format!(
-                    "{name} {}: linked with the other kinds it counts {:?}, alone {alone:?}: the program that runs them together does not measure what a firmware with this kind alone runs",
-                    kind.api(),
-                    observer.instructions
-                ));
-            }
-        }
-    }
+    let program = on_target::Program::project();
+    on_target::same_alone(&program, &all)?;
     let mut table = String::from(
         "| design | observer | targets | N | segments per target | instructions per sample, steady (min / median / max) | start-up: samples, max instructions | first estimate | dot-product floor | VDIV + VSQRT per sample (max) | stack bytes | flash bytes | RAM bytes | max \\|target − host f64\\| |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
@@ -98,7 +81,7 @@ fn run() -> Result<String, String> {
         let n_z = spec.map.horizon * (spec.model.outputs.len() + spec.model.inputs.len());
         let chosen = on_target::chosen_kind(name);
 
-        let mut rows: BTreeMap<Kind, Row> = BTreeMap::new();
+        let mut rows: BTreeMap<Kind, Figures> = BTreeMap::new();
         for (&kind, observer) in all.observers.get(name).into_iter().flatten() {
             let largest = match kind {
                 Kind::Map => on_target::compare_with_library(name, observer)?,
@@ -106,14 +89,7 @@ fn run() -> Result<String, String> {
             };
             rows.insert(
                 kind,
-                Row {
-                    phases: observer.phases().map_err(|e| format!("{name} {}: {e}", kind.api()))?,
-                    divisions: observer.divisions.iter().copied().max().unwrap_or(0),
-                    stack_bytes: observer.stack_bytes as u64,
-                    flash_bytes: observer.flash_bytes,
-                    ram_bytes: observer.observer_bytes as u64 + observer.static_ram_bytes,
-                    largest,
-                },
+                Figures::of_observer(observer, largest).map_err(|e| format!("{name} {}: {e}", kind.api()))?,
             );
         }
         let filter = all
@@ -122,14 +98,8 @@ fn run() -> Result<String, String> {
             .ok_or_else(|| format!("no EKF measured for {name}"))?;
         rows.insert(
             Kind::Ekf,
-            Row {
-                phases: filter.phases().map_err(|e| format!("{name} ekf(): {e}"))?,
-                divisions: filter.divisions.iter().copied().max().unwrap_or(0),
-                stack_bytes: filter.stack_bytes as u64,
-                flash_bytes: filter.flash_bytes,
-                ram_bytes: filter.filter_bytes as u64 + filter.static_ram_bytes,
-                largest: on_target::compare_ekf_with_f64(name, filter)?,
-            },
+            Figures::of_filter(filter, on_target::compare_ekf_with_f64(name, filter)?)
+                .map_err(|e| format!("{name} ekf(): {e}"))?,
         );
         let expected = on_target::kinds(name);
         if !rows.keys().copied().eq(expected.iter().copied()) {

@@ -23,6 +23,7 @@ use core::panic::PanicInfo;
 
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprint, hprintln};
+use generated::firmware;
 use firmware::RejectedSample;
 
 include!(concat!(env!("OUT_DIR"), "/design.rs"));
