@@ -49,6 +49,12 @@ pub trait Follower<T: Scalar, const NX: usize, const NY: usize, const NU: usize,
         u: &[T; NU],
     ) -> Option<(Self::Carried, [Estimate<T>; NX])>;
 
+    /// Over a sample whose output was lost (refused: not finite) but whose input `u` is known: what
+    /// to carry to the next sample with no measurement (the model's prediction from what was
+    /// carried), or `None` when it is not finite. Without it the carried state would fall one period
+    /// behind the plant for every lost sample.
+    fn predict(carried: &Self::Carried, u: &[T; NU]) -> Option<Self::Carried>;
+
     /// The targets at state `x` and input `u`.
     fn targets(x: &[T; NX], u: &[T; NU]) -> [T; NT];
 }
@@ -83,9 +89,11 @@ fn select<V>(condition: bool, a: V, b: V) -> V {
 ///
 /// `push` takes every sample and does the work; `estimate` returns the latest estimate. Memory is
 /// fixed (the window, what `F` carries, the latest estimate). After the start-up every accepted
-/// sample runs the same instructions. A sample with a NaN or infinite value is refused and nothing
-/// changes; a sample whose follow-up is not finite (the model overflowed) is refused too, and
-/// only the map's window keeps it.
+/// sample runs the same instructions. A sample with a NaN or infinite value is refused: it gives no
+/// estimate and the map's window does not take it, but once started, a refused sample whose input
+/// is finite still takes one period of the model ([`Follower::predict`]), so that what is carried
+/// stays in step with the plant. A sample whose follow-up is not finite (the model overflowed) is
+/// refused too, and only the map's window keeps it.
 pub struct Started<T: Scalar, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize>
 where
     F: Follower<T, NX, NY, NU, NT>,
@@ -121,6 +129,7 @@ where
     #[inline]
     pub fn push(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
         if !D::accepts(&y, &u) {
+            self.lost(&u);
             return Err(RejectedSample);
         }
         let start_up = self.count <= F::START_UP;
@@ -170,6 +179,21 @@ where
         }
         self.count = if start_up { self.count + 1 } else { self.count };
         Ok(())
+    }
+
+    /// Over a refused sample: the output is lost, not the time, so once started what is carried
+    /// takes the model's period when the input is known. Out of line and cold, so that the accepted
+    /// samples' code is laid out as without it.
+    #[cold]
+    #[inline(never)]
+    fn lost(&mut self, u: &[T; NU]) {
+        if let Some(carried) = &self.carried {
+            if u.iter().all(|v| v.is_finite()) {
+                if let Some(next) = F::predict(carried, u) {
+                    self.carried = Some(next);
+                }
+            }
+        }
     }
 
     /// The latest estimate, one per target, or `None` before `N` samples have arrived.

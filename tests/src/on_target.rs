@@ -1206,13 +1206,14 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
         ($design:ident, $kind:ident, $type:ident) => {
             if measured.kind == Kind::$kind && stringify!($design) == name {
                 use generated::$design as d;
-                let accepted: Vec<(Vec<f64>, Vec<f64>)> = d::RECORDED_Y
+                // Every sample, the refused ones included: over them the observer carries its state
+                // one period (`Follower::predict`).
+                let all: Vec<(Vec<f64>, Vec<f64>)> = d::RECORDED_Y
                     .iter()
                     .zip(&d::RECORDED_U)
-                    .filter(|(y, u)| y.iter().chain(u.iter()).all(|v| v.is_finite()))
                     .map(|(y, u)| (widen(y), widen(u)))
                     .collect();
-                let rows: Vec<host::recording::Row> = accepted
+                let rows: Vec<host::recording::Row> = all
                     .iter()
                     .map(|(y, u)| host::recording::Row {
  time: None,
@@ -1229,13 +1230,21 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
                     })
                     .collect();
                 let run = Run {
-                    states: Rows::from(vec![vec![0.0; d::STATES]; accepted.len()]),
-                    inputs: Rows::from(accepted.iter().map(|(_, u)| u.clone()).collect::<Vec<_>>()),
-                    measurements: Rows::from(accepted.iter().map(|(y, _)| y.clone()).collect::<Vec<_>>()),
-                    targets: Rows::from(vec![vec![0.0; d::TARGETS]; accepted.len()]),
+                    states: Rows::from(vec![vec![0.0; d::STATES]; all.len()]),
+                    inputs: Rows::from(all.iter().map(|(_, u)| u.clone()).collect::<Vec<_>>()),
+                    measurements: Rows::from(all.iter().map(|(y, _)| y.clone()).collect::<Vec<_>>()),
+                    targets: Rows::from(vec![vec![0.0; d::TARGETS]; all.len()]),
                     parameters: Vec::new(),
                 };
-                host = Some(mirror!(@ $kind, d, design, code, state_targets, first, maps, run));
+                let estimates: Vec<Vec<f64>> = mirror!(@ $kind, d, design, code, state_targets, first, maps, run);
+                host = Some(
+                    estimates
+                        .into_iter()
+                        .zip(&all)
+                        .filter(|(_, (y, u))| y.iter().chain(u).all(|v| v.is_finite()))
+                        .map(|(estimate, _)| estimate)
+                        .collect(),
+                );
             }
         };
         (@ Corrected, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{

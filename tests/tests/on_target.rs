@@ -146,6 +146,12 @@ fn every_observer_on_the_emulated_cortex_m4f() {
             }
             .unwrap_or_else(|e| panic!("{e}"));
             assert!(largest.is_finite(), "{what}: max |target - host f64| = {largest}");
+            // Measured at most 9e-6 (f32 against f64); a follower out of step with its mirror (one
+            // side giving a refused sample the model's period, the other not) differs by 0.4 to 1.4.
+            assert!(
+                kind == Kind::Map || largest < 1e-3,
+                "{what}: max |target - host f64| = {largest}"
+            );
             assert!(
                 observer.stack_bytes > 0 && observer.stack_bytes < PAINTED[0].1,
                 "{what}: stack {} B",

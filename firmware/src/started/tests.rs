@@ -52,6 +52,12 @@ impl<const READS: bool> Follower<f64, 1, 1, 0, 1> for Halving<READS> {
         next.is_finite().then_some(([next], state))
     }
 
+    fn predict(carried: &[f64; 1], _: &[f64; 0]) -> Option<[f64; 1]> {
+        let state = clamp(carried, &[0.0], &[10.0]);
+        let next = 0.5 * state[0].value;
+        next.is_finite().then_some([next])
+    }
+
     fn targets(x: &[f64; 1], _: &[f64; 0]) -> [f64; 1] {
         *x
     }
@@ -132,8 +138,10 @@ fn the_map_is_not_read_after_the_start_up_unless_the_steady_blend_needs_it() {
 }
 
 #[test]
-fn refused_samples_change_nothing_and_clamps_are_flagged() {
+fn refused_samples_give_no_estimate_but_the_model_keeps_time_and_clamps_are_flagged() {
     let mut o: Started<f64, Mean, Halving<true>, 2, 1, 0, 1, 1> = Started::new();
+    // Before the start, a refused sample changes nothing: the first estimate below is the map's.
+    assert_eq!(o.push([f64::NAN], []), Err(RejectedSample));
     o.push([0.4], []).unwrap();
     assert!(o.estimate().is_none() && !o.is_ready());
     o.push([0.6], []).unwrap();
@@ -142,12 +150,19 @@ fn refused_samples_change_nothing_and_clamps_are_flagged() {
     let before = o.clone();
     assert_eq!(o.push([f64::NAN], []), Err(RejectedSample));
     assert_eq!(o.push([f64::INFINITY], []), Err(RejectedSample));
-    assert_eq!(o.estimate(), before.estimate());
-    // The same next sample gives the same estimate as if the refused ones had not come.
-    let mut twin = before.clone();
+    assert_eq!(o.estimate(), before.estimate(), "no estimate from a refused sample");
+    // By hand: x̄ = 0.5 · 5 = 2.5 carried from the first estimate; each lost sample halves it (x̂ =
+    // x̄, no correction), so the next sample meets x̄ = 0.625. Its map reads the window [0.6, 0.5]
+    // (the lost samples never entered it): F = 10 (0.3 + 0.25) = 5.5; j = 1, g = 0.75:
+    // x̂ = 0.625 + 0.75 (5.5 − 0.625) + 0.25 (0.5 − 0.625).
     o.push([0.5], []).unwrap();
+    let expected = 0.625 + 0.75 * (5.5 - 0.625) + 0.25 * (0.5 - 0.625);
+    assert!((o.estimate().unwrap()[0].value - expected).abs() < 1e-12);
+    // Without the lost samples, the same sample meets x̄ = 2.5: another estimate.
+    let mut twin = before.clone();
     twin.push([0.5], []).unwrap();
-    assert_eq!(o.estimate(), twin.estimate());
+    let skipped = 2.5 + 0.75 * (5.5 - 2.5) + 0.25 * (0.5 - 2.5);
+    assert!((twin.estimate().unwrap()[0].value - skipped).abs() < 1e-12);
     // A large measurement drives the corrected state past the range: clamped and flagged.
     o.push([1e6], []).unwrap();
     let [e] = o.estimate().unwrap();

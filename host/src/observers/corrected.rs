@@ -173,6 +173,21 @@ pub fn estimate_run<T: Scalar + Maths>(
         let next = code.run(&code.predict, &at, &mut scratch.borrow_mut());
         next.iter().all(|v| v.is_finite()).then_some(next)
     };
+    // `firmware::started::clamp`: NaN to the lower end.
+    let clamp = |raw: &[T]| -> Vec<T> {
+        raw.iter()
+            .zip(lower.iter().zip(&upper))
+            .map(|(&v, (&lo, &hi))| {
+                if v.partial_cmp(&lo).is_none_or(|o| o.is_lt()) {
+                    lo
+                } else if v > hi {
+                    hi
+                } else {
+                    v
+                }
+            })
+            .collect()
+    };
     super::started::run(
         setting.first,
         setting.state_targets,
@@ -193,25 +208,13 @@ pub fn estimate_run<T: Scalar + Maths>(
             } else {
                 &code.steady
             };
-            let raw = code.run(program, &at, &mut scratch.borrow_mut());
-            // `firmware::started::clamp`: NaN to the lower end.
-            let x: Vec<T> = raw
-                .iter()
-                .zip(lower.iter().zip(&upper))
-                .map(|(&v, (&lo, &hi))| {
-                    if v.partial_cmp(&lo).is_none_or(|o| o.is_lt()) {
-                        lo
-                    } else if v > hi {
-                        hi
-                    } else {
-                        v
-                    }
-                })
-                .collect();
+            let x = clamp(&code.run(program, &at, &mut scratch.borrow_mut()));
             let next = predict(&x, u)?;
             let targets = setting.code.targets(&x, u, &mut scratch.borrow_mut());
             Some((next, targets))
         },
+        // A lost output: `x̂ = clamp(x̄)`, then the model's period (`Corrector::predict`).
+        |predicted: &Vec<T>, u| predict(&clamp(predicted), u),
     )
 }
 

@@ -243,6 +243,11 @@ pub fn estimate_started<T: firmware::Scalar + firmware::Maths>(
             let targets = code.targets(&estimate, u, &mut scratch.borrow_mut());
             finite(&x, &p).then_some(((x, p), targets))
         },
+        // A lost output: the prediction alone (`StartedEkf::predict`).
+        |(x, p): &(Vec<T>, Vec<T>), u| {
+            let (_, x, p) = filter.run(x, p, None, u, &mut scratch.borrow_mut());
+            finite(&x, &p).then_some((x, p))
+        },
     )
 }
 

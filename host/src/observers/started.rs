@@ -6,8 +6,10 @@
 //! finite because refused samples left its window short); there the map's row, and `start` from the
 //! map's states; then `follow` for every later sample with its count `j` (counted as the chip counts:
 //! only samples taken). A sample with a non-finite output or input is refused as the chip refuses it:
-//! nothing changes, and its row is NaN (no estimate from that sample). A start or follow-up that gives
-//! `None` (not finite) is refused too: nothing carried changes and the last estimate stays.
+//! its row is NaN (no estimate from that sample), and once started, when its input is finite, what
+//! is carried takes one period of the model (`lost`, `Follower::predict`). A start, follow-up or
+//! prediction that gives `None` (not finite) is refused too: nothing carried changes and the last
+//! estimate stays.
 
 use firmware::Scalar;
 
@@ -16,7 +18,7 @@ use crate::data::Run;
 /// The targets at every sample of `run` (rows of `map`'s width), in `T`. `map` is the map's
 /// estimate at every sample, `state_targets` the map target of each state. `start(x, u)` gives what
 /// to carry from the map's states; `follow(carried, j, map_states, y, u)` what to carry next and the
-/// targets.
+/// targets; `lost(carried, u)` what to carry over a refused sample with a finite input.
 pub fn run<T: Scalar, C>(
     first: usize,
     state_targets: &[usize],
@@ -24,6 +26,7 @@ pub fn run<T: Scalar, C>(
     run: &Run,
     mut start: impl FnMut(&[T], &[T]) -> Option<C>,
     mut follow: impl FnMut(&C, usize, &[T], &[T], &[T]) -> Option<(C, Vec<T>)>,
+    mut lost: impl FnMut(&C, &[T]) -> Option<C>,
 ) -> Vec<Vec<T>> {
     let literal = |v: f64| T::literal(v as f32, v);
     let width = map.first().map_or(0, Vec::len);
@@ -37,11 +40,20 @@ pub fn run<T: Scalar, C>(
             .iter()
             .chain(run.inputs[k].iter())
             .any(|v| !v.is_finite());
-        if refused || (carried.is_none() && (k < first || row.iter().any(|v| !v.is_finite()))) {
+        let u: Vec<T> = run.inputs[k].iter().map(|&v| literal(v)).collect();
+        if refused {
+            if let Some(c) = carried.as_ref().filter(|_| u.iter().all(|v| v.is_finite())) {
+                if let Some(next) = lost(c, &u) {
+                    carried = Some(next);
+                }
+            }
             out.push(nan.clone());
             continue;
         }
-        let u: Vec<T> = run.inputs[k].iter().map(|&v| literal(v)).collect();
+        if carried.is_none() && (k < first || row.iter().any(|v| !v.is_finite())) {
+            out.push(nan.clone());
+            continue;
+        }
         let y: Vec<T> = run.measurements[k].iter().map(|&v| literal(v)).collect();
         let states: Vec<T> = state_targets.iter().map(|&t| row[t]).collect();
         match &carried {

@@ -219,7 +219,7 @@ fn readme(one: &Prepared) -> String {
          ```rust\n\
          let mut observer = {library}::{name}::observer(); // fixed memory, no allocation\n\
          let (y, u) = ([0.0; {library}::{name}::OUTPUTS], [0.0; {library}::{name}::INPUTS]);\n\
-         observer.push(y, u).ok(); // every sample; a NaN or infinite one is refused and changes nothing\n\
+         observer.push(y, u).ok(); // every sample; a NaN or infinite one is refused (no new estimate)\n\
          if let Some(estimates) = observer.estimate() {{\n    \
          // one per target, in {library}::{name}::TARGET_NAMES order\n    \
          let _ = estimates[0].value;\n\
