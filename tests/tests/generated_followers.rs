@@ -2,8 +2,8 @@
 //! against the host's own runs of the same observers (`host::observers::corrected::estimate_run`,
 //! `host::observers::ekf::estimate_started`), in f32 over each design's recorded sequence: bit for
 //! bit, so that the report's figures are what the chip computes. The recorded sequence holds samples
-//! the observers must refuse; the host runs the accepted ones only, which is also the contract
-//! (a refused sample changes nothing).
+//! the observers must refuse: both sides give no estimate there (a NaN row) and carry the state over
+//! them by the model's period.
 
 use firmware::{Follower, Started};
 use host::data::{Rows, Run};
@@ -20,43 +20,44 @@ macro_rules! check_followers {
             use generated::$module as d;
             let design = load_relative(d::SPEC);
             let code = ModelCode::new(&design).unwrap();
-            let accepted: Vec<([f32; d::OUTPUTS], [f32; d::INPUTS])> = d::RECORDED_Y
+            let samples: Vec<([f32; d::OUTPUTS], [f32; d::INPUTS])> = d::RECORDED_Y
                 .iter()
                 .zip(&d::RECORDED_U)
-                .filter(|(y, u)| y.iter().chain(u.iter()).all(|v| v.is_finite()))
                 .map(|(y, u)| (*y, *u))
                 .collect();
+            let finite =
+                |(y, u): &([f32; d::OUTPUTS], [f32; d::INPUTS])| y.iter().chain(u.iter()).all(|v| v.is_finite());
             assert!(
-                accepted.len() < d::RECORDED_LEN,
+                samples.iter().filter(|s| finite(s)).count() < d::RECORDED_LEN,
                 "the sequence holds refused samples"
             );
             let widen = |rows: Vec<Vec<f64>>| Rows::from(rows);
             let run = Run {
-                states: widen(vec![vec![0.0; d::STATES]; accepted.len()]),
+                states: widen(vec![vec![0.0; d::STATES]; samples.len()]),
                 inputs: widen(
-                    accepted
+                    samples
                         .iter()
                         .map(|(_, u)| u.iter().map(|&v| f64::from(v)).collect())
                         .collect(),
                 ),
                 measurements: widen(
-                    accepted
+                    samples
                         .iter()
                         .map(|(y, _)| y.iter().map(|&v| f64::from(v)).collect())
                         .collect(),
                 ),
-                targets: widen(vec![vec![0.0; d::TARGETS]; accepted.len()]),
+                targets: widen(vec![vec![0.0; d::TARGETS]; samples.len()]),
                 parameters: Vec::new(),
             };
-            // The map's f32 estimates, as the chip computes them.
+            // The map's f32 estimates, as the chip computes them (NaN where it refuses the sample).
             let mut map = d::map_observer();
-            let maps: Vec<Vec<f32>> = accepted
+            let maps: Vec<Vec<f32>> = samples
                 .iter()
-                .map(|(y, u)| {
-                    map.push(*y, *u).unwrap();
-                    map.estimate().map_or(vec![f32::NAN; d::TARGETS], |e| {
+                .map(|(y, u)| match map.push(*y, *u) {
+                    Ok(()) => map.estimate().map_or(vec![f32::NAN; d::TARGETS], |e| {
                         e.iter().map(|e| e.value).collect()
-                    })
+                    }),
+                    Err(_) => vec![f32::NAN; d::TARGETS],
                 })
                 .collect();
             /// Runs a generated observer over the whole recorded sequence (refused samples included).
@@ -75,15 +76,10 @@ macro_rules! check_followers {
                 for (y, u) in d::RECORDED_Y.iter().zip(&d::RECORDED_U) {
                     let finite = y.iter().chain(u.iter()).all(|v| v.is_finite());
                     assert_eq!(observer.push(*y, *u).is_ok(), finite);
-                    if finite {
-                        out.push(
-                            observer
-                                .estimate()
-                                .map_or(vec![f32::NAN.to_bits(); d::TARGETS], |e| {
-                                    e.iter().map(|e| e.value.to_bits()).collect()
-                                }),
-                        );
-                    }
+                    let estimate = observer.estimate().filter(|_| finite);
+                    out.push(estimate.map_or(vec![f32::NAN.to_bits(); d::TARGETS], |e| {
+                        e.iter().map(|e| e.value.to_bits()).collect()
+                    }));
                 }
                 out
             }

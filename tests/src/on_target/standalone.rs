@@ -10,7 +10,7 @@
 //! Only when all of that holds are the figures written, beside the crate's report and into the
 //! [`section`](host::report::on_target::section) its `report.md` and `README.md` show.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 use host::observers::recorded;
@@ -194,12 +194,8 @@ pub fn measure_crate(folder: &Path) -> Result<String, String> {
         let figures = Figures::of_filter(filter, largest).map_err(|e| format!("{name} ekf(): {e}"))?;
         observers.insert(Kind::Ekf.report_name().to_owned(), figures.on_target());
     }
-    let expected: Vec<&str> = kinds.iter().map(|k| k.report_name()).collect();
-    if !observers.keys().map(String::as_str).eq({
-        let mut sorted = expected.clone();
-        sorted.sort_unstable();
-        sorted
-    }) {
+    let expected: BTreeSet<&str> = kinds.iter().map(|k| k.report_name()).collect();
+    if !observers.keys().map(String::as_str).eq(expected.iter().copied()) {
         return Err(format!(
             "{name}: measured {:?}, the crate has {expected:?}",
             observers.keys().collect::<Vec<_>>()
