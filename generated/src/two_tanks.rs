@@ -1781,6 +1781,14 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
         y: &[T; OUTPUTS],
         u: &[T; INPUTS],
     ) -> Option<([T; STATES], [Estimate<T>; STATES])> {
+        // Loops rather than `array::map`, which the compiler turns into copies at `opt-level = "s"`.
+        fn pick<T: Scalar, const M: usize>(pairs: &[(f32, f64); M]) -> [T; M] {
+            let mut out = [T::ZERO; M];
+            for (out, &(single, double)) in out.iter_mut().zip(pairs) {
+                *out = T::literal(single, double);
+            }
+            out
+        }
         let raw = if start_up {
             let row = CORRECTED_BLENDS.get(j.wrapping_sub(1)).unwrap_or(&[(0.0, 0.0); SCHEDULED]);
             corrected_start_up(x, y, u, f, row)
@@ -1796,15 +1804,10 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
         next.iter().all(|v| v.is_finite()).then_some((next, states))
     }
 
-    /// A lost output: `x̂ = clamp(x̄)` (no correction), then the model's period.
+    /// A lost output: the model's period from `x̄` (no correction; the next estimate is clamped).
     #[inline(always)]
     fn predict(x: &[T; STATES], u: &[T; INPUTS]) -> Option<[T; STATES]> {
-        let states = firmware::started::clamp(x, &pick(&[(4.3011494, 4.3011495275450145), (4.715646, 4.715646027826667)]), &pick(&[(26.20642, 26.20642049189526), (25.001827, 25.001827888818976)]));
-        let mut estimate = [T::ZERO; STATES];
-        for (e, s) in estimate.iter_mut().zip(&states) {
-            *e = s.value;
-        }
-        let next = corrected_predict(&estimate, u);
+        let next = corrected_predict(x, u);
         next.iter().all(|v| v.is_finite()).then_some(next)
     }
 
@@ -1812,16 +1815,6 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
     fn targets(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {
         targets(x, u)
     }
-}
-
-/// `(f32, f64)` constants as `T`. Loops rather than `array::map`, which the compiler turns into
-/// copies at `opt-level = "s"`.
-fn pick<T: Scalar, const M: usize>(pairs: &[(f32, f64); M]) -> [T; M] {
-    let mut out = [T::ZERO; M];
-    for (out, &(single, double)) in out.iter_mut().zip(pairs) {
-        *out = T::literal(single, double);
-    }
-    out
 }
 
 /// The model-corrected map over this design's map.

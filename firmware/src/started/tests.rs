@@ -53,8 +53,7 @@ impl<const READS: bool> Follower<f64, 1, 1, 0, 1> for Halving<READS> {
     }
 
     fn predict(carried: &[f64; 1], _: &[f64; 0]) -> Option<[f64; 1]> {
-        let state = clamp(carried, &[0.0], &[10.0]);
-        let next = 0.5 * state[0].value;
+        let next = 0.5 * carried[0];
         next.is_finite().then_some([next])
     }
 
@@ -151,8 +150,8 @@ fn refused_samples_give_no_estimate_but_the_model_keeps_time_and_clamps_are_flag
     assert_eq!(o.push([f64::NAN], []), Err(RejectedSample));
     assert_eq!(o.push([f64::INFINITY], []), Err(RejectedSample));
     assert_eq!(o.estimate(), before.estimate(), "no estimate from a refused sample");
-    // By hand: x̄ = 0.5 · 5 = 2.5 carried from the first estimate; each lost sample halves it (x̂ =
-    // x̄, no correction), so the next sample meets x̄ = 0.625. Its map reads the window [0.6, 0.5]
+    // By hand: x̄ = 0.5 · 5 = 2.5 carried from the first estimate; each lost sample halves it (the model's
+    // period, no correction), so the next sample meets x̄ = 0.625. Its map reads the window [0.6, 0.5]
     // (the lost samples never entered it): F = 10 (0.3 + 0.25) = 5.5; j = 1, g = 0.75:
     // x̂ = 0.625 + 0.75 (5.5 − 0.625) + 0.25 (0.5 − 0.625).
     o.push([0.5], []).unwrap();

@@ -213,8 +213,8 @@ pub fn estimate_run<T: Scalar + Maths>(
             let targets = setting.code.targets(&x, u, &mut scratch.borrow_mut());
             Some((next, targets))
         },
-        // A lost output: `x̂ = clamp(x̄)`, then the model's period (`Corrector::predict`).
-        |predicted: &Vec<T>, u| predict(&clamp(predicted), u),
+        // A lost output: the model's period from `x̄` (`Corrector::predict`).
+        |predicted: &Vec<T>, u| predict(predicted, u),
     )
 }
 
