@@ -296,7 +296,7 @@ pub fn refused_samples(len: usize) -> Vec<usize> {
 /// recording: `scenario`'s measurements and inputs rounded to `f32` as emitted, the
 /// [`refused_samples`]' first output NaN, then +∞. What the chip runs, for the host to run too.
 pub fn recorded_sequence(scenario: &crate::data::Run) -> Vec<crate::recording::Row> {
-    let refused = refused_samples(scenario.measurements.len());
+    let len = scenario.measurements.len();
     let exact = |row: &[f64]| -> Vec<f64> { row.iter().map(|&v| f64::from(v as f32)).collect() };
     scenario
         .measurements
@@ -305,10 +305,8 @@ pub fn recorded_sequence(scenario: &crate::data::Run) -> Vec<crate::recording::R
         .enumerate()
         .map(|(k, (y, u))| {
             let mut y = exact(y);
-            match (refused.iter().position(|&r| r == k), y.first_mut()) {
-                (Some(0), Some(first)) => *first = f64::NAN,
-                (Some(_), Some(first)) => *first = f64::INFINITY,
-                _ => {}
+            if let (Some(value), Some(first)) = (refused_value(k, len), y.first_mut()) {
+                *first = value;
             }
             crate::recording::Row {
                 time: None,
@@ -320,10 +318,18 @@ pub fn recorded_sequence(scenario: &crate::data::Run) -> Vec<crate::recording::R
         .collect()
 }
 
+/// The value that replaces the first output of sample `k` of a recorded sequence of `len` samples:
+/// NaN at the first of the [`refused_samples`], +∞ at the second, `None` elsewhere.
+fn refused_value(k: usize, len: usize) -> Option<f64> {
+    match refused_samples(len).iter().position(|&r| r == k)? {
+        0 => Some(f64::NAN),
+        _ => Some(f64::INFINITY),
+    }
+}
+
 /// Rows `[v, …],` of a recorded sequence, one sample per line, with the refused samples' first value
 /// replaced by `f32::NAN` or `f32::INFINITY`.
 fn recorded_rows(what: &str, rows: &crate::data::Rows, corrupt: bool) -> Result<String, EmitError> {
-    let refused = refused_samples(rows.len());
     let mut text = Vec::new();
     for (k, row) in rows.iter().enumerate() {
         let mut cells = row
@@ -331,9 +337,8 @@ fn recorded_rows(what: &str, rows: &crate::data::Rows, corrupt: bool) -> Result<
             .enumerate()
             .map(|(i, &v)| f32_literal(&format!("{what}[{k}][{i}]"), v))
             .collect::<Result<Vec<_>, _>>()?;
-        if let (true, Some(position), Some(first)) = (corrupt, refused.iter().position(|&r| r == k), cells.first_mut())
-        {
-            *first = if position == 0 {
+        if let (true, Some(value), Some(first)) = (corrupt, refused_value(k, rows.len()), cells.first_mut()) {
+            *first = if value.is_nan() {
                 "f32::NAN".into()
             } else {
                 "f32::INFINITY".into()
