@@ -973,15 +973,23 @@ pub fn host_ekf<T: Scalar + Maths>(name: &str) -> Option<Vec<HostEkfSample<T>>> 
 /// two do not refuse the same samples.
 pub fn compare_ekf_with_f64(name: &str, measured: &EkfMeasurement) -> Result<f64, String> {
     let host = host_ekf::<f64>(name).ok_or_else(|| format!("no generated design {name}"))?;
+    let targets: Vec<Option<Vec<f64>>> = host.into_iter().map(|(targets, _)| targets).collect();
+    ekf_largest_difference(&format!("{name} EKF"), measured, &targets)
+}
+
+/// The largest `|chip − host|` of an EKF's targets, `host` giving per sample the f64 filter's targets
+/// (`None` where it refused the sample); an error when the two do not refuse the same samples or a
+/// difference is NaN (one side NaN, the other not).
+pub fn ekf_largest_difference(what: &str, measured: &EkfMeasurement, host: &[Option<Vec<f64>>]) -> Result<f64, String> {
     if host.len() != measured.samples.len() {
         return Err(format!(
-            "{name} EKF: {} samples on the target, {} recorded",
+            "{what}: {} samples on the target, {} recorded",
             measured.samples.len(),
             host.len()
         ));
     }
     let mut largest: f64 = 0.0;
-    for (k, (sample, (host_targets, _))) in measured.samples.iter().zip(&host).enumerate() {
+    for (k, (sample, host_targets)) in measured.samples.iter().zip(host).enumerate() {
         match (&sample.targets, host_targets) {
             (Some(target), Some(host)) => {
                 for (t, (&bits, &h)) in target.iter().zip(host).enumerate() {
@@ -992,7 +1000,7 @@ pub fn compare_ekf_with_f64(name: &str, measured: &EkfMeasurement) -> Result<f64
                     let difference = (on_target - h).abs();
                     if difference.is_nan() {
                         return Err(format!(
-                            "{name} EKF sample {k} target {t}: {on_target} on the target, {h} on the host"
+                            "{what} sample {k} target {t}: {on_target} on the target, {h} on the host"
                         ));
                     }
                     largest = largest.max(difference);
@@ -1001,7 +1009,7 @@ pub fn compare_ekf_with_f64(name: &str, measured: &EkfMeasurement) -> Result<f64
             (None, None) => {}
             (target, _) => {
                 return Err(format!(
-                    "{name} EKF sample {k}: accepted {} on the target, {} on the host",
+                    "{what} sample {k}: accepted {} on the target, {} on the host",
                     target.is_some(),
                     host_targets.is_some()
                 ))
