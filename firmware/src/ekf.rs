@@ -13,6 +13,10 @@
 //! predict   x ← f(x, u),  P ← F P Fᵀ + Q                          (F = ∂f/∂x at the updated x)
 //! ```
 //!
+//! With bounds ([`Ekf::with_bounds`], [`crate::bounds`]), the state is projected onto them after the
+//! updates and after the prediction (`P` is left as it is): the estimate and the state carried are
+//! inside them, and the model is never evaluated outside.
+//!
 //! The estimate after a sample is the *updated* state `x̂(k|k)`. The Joseph form keeps `P` positive
 //! semidefinite under rounding where `(I - K H) P` alone may not; after every step the lower triangle
 //! is copied from the upper one, so `P` stays exactly symmetric without extra arithmetic.
@@ -48,6 +52,8 @@ pub struct Ekf<T, P, const NX: usize, const NY: usize, const NU: usize> {
     q: [[T; NX]; NX],
     /// The measurement noise variances (diagonal `R`).
     r: [T; NY],
+    /// Lower and upper bounds of each state (`±∞` where unbounded), when the state is bounded.
+    bounds: Option<([T; NX], [T; NX])>,
     plant: P,
 }
 
@@ -63,10 +69,27 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
             p: p0,
             q,
             r,
+            bounds: None,
             plant,
         };
         filter.symmetrise();
         filter
+    }
+
+    /// The same filter with its state projected onto `[lower, upper]` after every update and every
+    /// prediction (`±∞` for an unbounded side); the start is projected too.
+    #[must_use]
+    pub fn with_bounds(mut self, lower: [T; NX], upper: [T; NX]) -> Self {
+        self.x = crate::bounds::project(&self.x, &lower, &upper);
+        self.bounds = Some((lower, upper));
+        self
+    }
+
+    /// The state projected onto the bounds, if any.
+    fn project(&mut self) {
+        if let Some((lower, upper)) = &self.bounds {
+            self.x = crate::bounds::project(&self.x, lower, upper);
+        }
     }
 
     /// The current estimate.
@@ -91,9 +114,11 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
         let before = (self.x, self.p);
         if measured {
             self.update(y, u);
+            self.project();
         }
         let estimate = self.x;
         self.predict(u);
+        self.project();
         if !self.x.iter().chain(self.p.iter().flatten()).all(|v| v.is_finite()) {
             (self.x, self.p) = before; // the model overflowed: the step is not taken
             return Err(crate::RejectedSample);

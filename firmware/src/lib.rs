@@ -59,6 +59,7 @@
 // The crate doc names the `reference` items without links: a link to an absent item fails `cargo doc`.
 #[cfg(any(test, feature = "reference"))]
 pub mod basis;
+pub mod bounds;
 pub mod ekf;
 pub mod family;
 #[cfg(any(test, feature = "reference"))]

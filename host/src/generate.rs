@@ -245,7 +245,10 @@ pub fn design_source(
         comparison.observers.iter().map(|o| (o.kind, o.instructions)).collect();
     let observers = emit::model::Observers {
         ekf: comparison.ekf.as_ref().map(|t| &t.constants),
-        started: comparison.started.as_ref().map(|(p0, t)| (p0.as_slice(), t.as_slice())),
+        started: comparison
+            .started
+            .as_ref()
+            .map(|s| (s.p0.as_slice(), s.state_targets.as_slice())),
         corrected: comparison
             .corrected
             .as_ref()

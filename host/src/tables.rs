@@ -97,7 +97,9 @@ impl Tables {
                 .and_then(|c| c.corrected.as_ref().ok())
                 .map(|t| t.constants.clone()),
             ekf: comparison.and_then(|c| c.ekf.as_ref()).map(|t| t.constants.clone()),
-            started: comparison.and_then(|c| c.started.clone()),
+            started: comparison
+                .and_then(|c| c.started.as_ref())
+                .map(|s| (s.p0.clone(), s.state_targets.clone())),
         }
     }
 

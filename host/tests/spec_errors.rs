@@ -34,6 +34,10 @@
 //! `validate_model.rs` `parameter_range` (bounds not finite, inverted, empty; value not finite,
 //! outside) and `at_most_uncertain` in `limits.rs`; the table also reaches the type check of `raw.rs`
 //! `RawParameter` (through `parse`) and the mismatch runs' share of the budget.
+//!
+//! Physical bounds (`[model.bounds]`) added 5 sites in `validate.rs` `bounds` (not a state, neither
+//! side, a side not finite, `min` not below `max`, the learning box outside), all in the table, and
+//! the unknown key of `raw.rs` `RawBounds` (through `parse`).
 
 use std::collections::HashSet;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -144,6 +148,13 @@ const CASES: &[Case] = &[
     case("units_of_an_output", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nunits = { y = \"V\" }")], Exact("model.units.y"), "`unit` field"),
     case("units_of_an_unknown_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nunits = { x3 = \"V\" }")], Exact("model.units.x3"), "name a state or an input (x1, x2)"),
     case("units_on_two_lines", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nunits = { x1 = \"c\\nm\" }")], Exact("model.units.x1"), "without line breaks"),
+    // `[model.bounds]` (validate.rs `bounds`): a state's physical bounds.
+    case("bounds_of_an_unknown_state", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nbounds = { x3 = { min = 0.0 } }")], Exact("model.bounds.x3"), "name a state (x1, x2)"),
+    case("bounds_with_neither_side", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nbounds = { x1 = {} }")], Exact("model.bounds.x1"), "one side or both"),
+    case("bounds_min_above_max", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nbounds = { x1 = { min = 3.0, max = -3.0 } }")], Exact("model.bounds.x1"), "`min` < `max`"),
+    case("bounds_not_finite", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nbounds = { x1 = { max = inf } }")], Exact("model.bounds.x1.max"), "leave `max` out"),
+    case("bounds_exclude_the_learning_box", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nbounds = { x2 = { min = 0.0 } }")], Exact("model.bounds.x2"), "widen the bounds"),
+    case("bounds_with_an_unknown_key", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nbounds = { x1 = { minimum = 0.0 } }")], Exact("model.bounds.x1.minimum"), "correct the TOML"),
     case("target_reserved_prefix", Vdp, &[Swap("name = \"x1\"", "name = \"truth_x1\"")], Exact("targets[0].name"), "names starting with saturated_ or truth_"),
     case("state_declared_twice", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x1\"]")], Exact("model.states[1]"), "its own name"),
     case("input_invalid_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\ninputs = [\"u.1\"]")], Exact("model.inputs[0]"), "letters, digits and `_`"),
@@ -189,7 +200,7 @@ const CASES: &[Case] = &[
     // ---- model.rs `compile` (through validate_model.rs `model`): each expression field × each ExprError of expr.rs
     // (Syntax, AmbiguousMinus, UnknownVariable).
     case("definition_expr_syntax", E05, &[Swap("expr = \"mu_m*S/(k_s + S)\"", "expr = \"mu_m*S/(k_s + S\"")], Exact("model.definitions[0].expr"), "exmex syntax"),
-    case("definition_expr_minus_before_power", E05, &[Swap("expr = \"k_d*exp(-k_p/P)\"", "expr = \"k_d*exp(-k_p^2/P)\"")], Exact("model.definitions[1].expr"), "-(k_p^…)"),
+    case("definition_expr_minus_before_power", E05, &[Swap("expr = \"k_d*exp(-k_p/max(P, 0.001))\"", "expr = \"k_d*exp(-k_p^2/max(P, 0.001))\"")], Exact("model.definitions[1].expr"), "-(k_p^…)"),
     // A definition may only use the definitions before it.
     case("definition_expr_uses_a_later_definition", E05, &[Swap("expr = \"mu_m*S/(k_s + S)\"", "expr = \"mu_m*S/(k_s + S) + death\"")], Exact("model.definitions[0].expr"), "declare `death`"),
     case("derivative_expr_syntax", Vdp, &[Swap("x1 = \"-x2\"", "x1 = \"-x2 * (\"")], Exact("model.derivatives.x1"), "exmex syntax"),

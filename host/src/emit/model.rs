@@ -51,6 +51,8 @@ fn operation(op: &Op, code: &ModelCode, names: &Names<'_>) -> Result<String, Emi
             }
         }
         Op::Call(f, a) => format!("Maths::{f}({})", names.of(a)),
+        Op::AtLeast(a, b) => format!("firmware::bounds::at_least({}, {})", names.of(a), names.of(b)),
+        Op::AtMost(a, b) => format!("firmware::bounds::at_most({}, {})", names.of(a), names.of(b)),
     })
 }
 
@@ -128,6 +130,31 @@ pub struct Observers<'a> {
     /// Every observer kind the design has and its predicted instructions per steady sample
     /// ([`crate::search::cost`]), in the report's order.
     pub instructions: &'a [(&'static str, f64)],
+}
+
+/// `.with_bounds(lower, upper)` for the library filter when a state is bounded (`±∞` on an open
+/// side), else nothing.
+fn bounds_call(bounds: &[crate::spec::Bounds]) -> Result<String, EmitError> {
+    if bounds.iter().all(|b| b.min.is_none() && b.max.is_none()) {
+        return Ok(String::new());
+    }
+    let side = |value: Option<f64>, what: &str, infinity: &str| -> Result<String, EmitError> {
+        match value {
+            Some(v) => literal(what, v),
+            None => Ok(format!("T::literal(f32::{infinity}, f64::{infinity})")),
+        }
+    };
+    let lower = bounds
+        .iter()
+        .enumerate()
+        .map(|(i, b)| side(b.min, &format!("state {i}'s lower bound"), "NEG_INFINITY"))
+        .collect::<Result<Vec<_>, _>>()?;
+    let upper = bounds
+        .iter()
+        .enumerate()
+        .map(|(i, b)| side(b.max, &format!("state {i}'s upper bound"), "INFINITY"))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(format!("\n    .with_bounds({}, {})", list(&lower), list(&upper)))
 }
 
 /// The Rust source of the design's model (`parameters`, `Plant`, `targets`), its EKF (`ekf`), its
@@ -573,6 +600,7 @@ fn model_and_ekf(design: &Design, code: &ModelCode, ekf: Option<&EkfConstants>) 
             .replace("{Q}", &diagonal("EKF Q", &ekf.q)?)
             .replace("{Q_F64}", &format!("{:?}", ekf.q))
             .replace("{R}", &vector("EKF R", &ekf.r)?)
+            .replace("{BOUNDS}", &bounds_call(&code.bounds)?)
     )
     .ok();
     writeln!(
@@ -700,6 +728,6 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
         {P0_FULL},
         {Q},
         {R},
-    )
+    ){BOUNDS}
 }
 "#;

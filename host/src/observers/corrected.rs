@@ -21,8 +21,8 @@
 //!
 //! # Tuning
 //!
-//! `(G, K, K₀, ln T)` minimises the mean over targets of RMSE / spread on the tuning runs, the same
-//! criterion as the EKF's, by Nelder–Mead (`argmin`) from a few fixed starts (closed loop: the
+//! `(G, K, K₀, ln T)` minimises the [score](super::score) on the tuning runs (pooled RMSE and the
+//! 95th percentile over runs, per target over its spread), the same criterion as the EKF's, by Nelder–Mead (`argmin`) from a few fixed starts (closed loop: the
 //! one-step least-squares criterion is not the closed-loop one), once with `G` free and once with
 //! `G = 0` (no map after the start-up: the chip's steady sample is then the model and `K` alone);
 //! `G = 0` is kept unless `G` free does better by more than
@@ -43,7 +43,7 @@ use crate::spec::Design;
 pub struct Tuned {
     /// The constants.
     pub constants: CorrectionConstants,
-    /// The criterion there (mean normalised RMSE on the tuning runs).
+    /// The criterion there (the [score](super::score) on the tuning runs).
     pub cost: f64,
     /// The criterion at the best start before the search.
     pub start_cost: f64,
@@ -91,7 +91,7 @@ pub struct Setting<'a> {
     pub state_targets: &'a [usize],
     /// The map's first estimate comes at this sample (`N − 1`).
     pub first: usize,
-    /// Each state's clamp: its map's range.
+    /// Each state's clamp: its map's range, within the state's bounds (`[model.bounds]`).
     pub lower: Vec<f64>,
     /// See [`Setting::lower`].
     pub upper: Vec<f64>,
@@ -118,7 +118,12 @@ impl<'a> Setting<'a> {
         code: &'a ModelCode,
         state_targets: &'a [usize],
     ) -> Self {
-        let (lower, upper) = state_targets.iter().map(|&t| (maps[t].r_min, maps[t].r_max)).unzip();
+        // The map's range, within the state's physical bounds where the spec declares them.
+        let (lower, upper) = state_targets
+            .iter()
+            .zip(&design.state_bounds)
+            .map(|(&t, b)| (maps[t].r_min.max(b.lower()), maps[t].r_max.min(b.upper())))
+            .unzip();
         Setting {
             code,
             h: design.tau / design.chip_substeps as f64,
@@ -243,7 +248,7 @@ struct Criterion<'a> {
 }
 
 impl Criterion<'_> {
-    /// The mean over targets of RMSE / spread with `constants`.
+    /// The [score](super::score) with `constants`.
     fn score(&self, constants: &CorrectionConstants) -> f64 {
         self.count.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let code = correction_code(self.setting.code, constants);
@@ -255,18 +260,11 @@ impl Criterion<'_> {
             .map(|(run, map)| estimate_rows(self.setting, &code, constants, map, run))
             .collect();
         let first = self.setting.first;
-        let mean = (0..self.target_spreads.len())
-            .map(|t| {
-                super::errors(&self.data.runs, &estimates, t, |run| first..run.targets.len()).0 / self.target_spreads[t]
-            })
-            .sum::<f64>()
-            / self.target_spreads.len() as f64;
-        // A diverging candidate is the worst, not a NaN that Nelder–Mead cannot order.
-        if mean.is_finite() {
-            mean
-        } else {
-            1e30
-        }
+        let score = super::score::of_estimates(&self.data.runs, &estimates, self.target_spreads, |run| {
+            first..run.targets.len()
+        });
+        // A diverging candidate is the worst, not an infinity that Nelder–Mead cannot order.
+        score.min(1e30)
     }
 }
 

@@ -1,13 +1,23 @@
 //! The EKF peer on the host: the firmware's own [`firmware::Ekf`] in `f64` over the model's programs
 //! ([`crate::plant::Compiled`]), tuned on the tuning runs and judged like the map.
 //!
-//! # Tuning
+//! # Tuning, as an expert tunes a filter
 //!
-//! With `s_i` the spread of state `i` over the learning runs (its range; 1 where it never moves),
-//! `Q = q · diag(s_i²)` and `P(0) = p · diag(s_i²)`; `R` is the outputs' noise variances and the filter
-//! starts at the centre of the state box. `(q, p)` minimises the mean over targets of RMSE / spread
-//! on the tuning runs: first on the grid `q ∈ 10^{-8…0}`, `p ∈ 10^{-3…0}` (decades), then once more on
-//! the half-decades around the best point. Deterministic: no random search.
+//! `R` is the outputs' noise variances (the spec states them) and the filter starts at the centre of
+//! the state box. `Q` and `P(0)` are diagonal, one free value per state, searched in log-space and
+//! scaled by `s_i²`, `s_i` the spread of state `i` over the learning runs (its range; 1 where it
+//! never moves), so that the search's steps mean the same for every state:
+//!
+//! ```text
+//! Q = diag(10^{a_i} s_i²),   P(0) = diag(10^{b_i} s_i²),   θ = (a, b) ∈ [−12, 3]^{2 n_x}.
+//! ```
+//!
+//! `θ` minimises the [score](super::score) (pooled RMSE and the 95th percentile over runs, per
+//! target, over its spread) on the tuning runs: first on an isotropic decade grid (`a_i = a`,
+//! `b_i = b`, `a ∈ {−8…0}`, `b ∈ {−3…0}`), then by Nelder–Mead (`argmin`) from the
+//! [`STARTS`] best grid points, each coordinate free. Deterministic: a fixed grid, fixed starts and
+//! iterations, the best by cost and the first of equals. The map-started EKF shares `Q` (one filter
+//! on the chip) and scales its own start covariance ([`tune_started`]).
 
 use firmware::{Ekf, Plant, Rk4};
 
@@ -28,15 +38,26 @@ pub const MAX_INPUTS: usize = 4;
 pub struct Tuned {
     /// The constants the design's EKF is emitted with.
     pub constants: EkfConstants,
-    /// The chosen `q` and `p`.
-    pub q: f64,
-    /// See `q`.
-    pub p: f64,
-    /// The criterion at the chosen point (mean normalised RMSE on the tuning runs).
+    /// `a`: `log10(Q_ii / s_i²)` per state.
+    pub log_q: Vec<f64>,
+    /// `b`: `log10(P(0)_ii / s_i²)` per state.
+    pub log_p0: Vec<f64>,
+    /// The score at the choice (tuning runs).
     pub cost: f64,
-    /// Candidates evaluated.
-    pub candidates: usize,
+    /// The score at the best point of the isotropic grid, before the search.
+    pub grid_cost: f64,
+    /// Score evaluations, grid and search.
+    pub evaluations: u64,
 }
+
+/// Grid points the search starts from.
+pub const STARTS: usize = 3;
+
+/// Nelder–Mead iterations per start.
+const ITERATIONS: u64 = 300;
+
+/// The range of each log-space coordinate of `θ`.
+const LOG_RANGE: (f64, f64) = (-12.0, 3.0);
 
 /// Whether the host can run an EKF of this size.
 pub fn supported(code: &ModelCode) -> bool {
@@ -159,6 +180,10 @@ fn run_sized<const NX: usize, const NY: usize>(
         diagonal(&constants.p0),
         diagonal(&constants.q),
         std::array::from_fn(|i| constants.r[i]),
+    )
+    .with_bounds(
+        std::array::from_fn(|i| code.bounds[i].lower()),
+        std::array::from_fn(|i| code.bounds[i].upper()),
     );
     let mut estimates = Rows::new(code.dimensions.targets);
     let mut scratch = Vec::new();
@@ -174,27 +199,37 @@ fn run_sized<const NX: usize, const NY: usize>(
     estimates
 }
 
-/// The constants for `(q, p)`.
-pub fn constants(design: &Design, centre: &[f64], spreads: &[f64], q: f64, p: f64) -> EkfConstants {
-    let squares = |scale: f64| spreads.iter().map(|s| scale * s * s).collect();
+/// The constants for `θ = (a, b)` (see the module docs), each coordinate clamped to [`LOG_RANGE`].
+pub fn constants(design: &Design, centre: &[f64], spreads: &[f64], theta: &[f64]) -> EkfConstants {
+    let n = spreads.len();
+    let scaled = |logs: &[f64]| -> Vec<f64> {
+        logs.iter()
+            .zip(spreads)
+            .map(|(a, s)| 10f64.powf(a.clamp(LOG_RANGE.0, LOG_RANGE.1)) * s * s)
+            .collect()
+    };
     EkfConstants {
         x0: centre.to_vec(),
-        p0: squares(p),
-        q: squares(q),
+        p0: scaled(&theta[n..2 * n]),
+        q: scaled(&theta[..n]),
         r: design.model.outputs.iter().map(|o| o.noise_variance).collect(),
         substeps: design.chip_substeps,
         h: design.tau / design.chip_substeps as f64,
     }
 }
 
+/// The filter's estimates of every run of `data`, started at `x0`.
+pub fn estimates(code: &ModelCode, constants: &EkfConstants, x0: &[f64], data: &DataSet) -> Option<Vec<Rows>> {
+    data.runs
+        .iter()
+        .map(|run| estimate_run(code, constants, x0, run))
+        .collect()
+}
+
 /// RMSE per target over the windows of `data` (samples `k ≥ N - 1` of every run), with the filter
 /// started at `x0`; NaN where the filter diverged.
 pub fn rmse(code: &ModelCode, constants: &EkfConstants, x0: &[f64], data: &DataSet) -> Option<Vec<f64>> {
-    let estimates = data
-        .runs
-        .iter()
-        .map(|run| estimate_run(code, constants, x0, run))
-        .collect::<Option<Vec<Rows>>>()?;
+    let estimates = estimates(code, constants, x0, data)?;
     let windows = |run: &Run| data.horizon.saturating_sub(1)..run.targets.len();
     Some(
         (0..code.dimensions.targets)
@@ -251,7 +286,47 @@ pub fn estimate_started<T: firmware::Scalar + firmware::Maths>(
     )
 }
 
-/// Chooses `(q, p)` on `tuning` (see the module docs). `target_spreads` normalises each target's RMSE.
+/// The score of the EKF with `constants` from the box centre on `data` (windows `k ≥ N − 1`).
+fn score(code: &ModelCode, constants: &EkfConstants, centre: &[f64], data: &DataSet, target_spreads: &[f64]) -> f64 {
+    let estimates = estimates(code, constants, centre, data).expect("size checked");
+    super::score::of_estimates(&data.runs, &estimates, target_spreads, |run| {
+        data.horizon.saturating_sub(1)..run.targets.len()
+    })
+}
+
+/// The tuning criterion as `argmin` sees it: `θ` to the score.
+#[derive(Clone, Copy)]
+struct Criterion<'a> {
+    design: &'a Design,
+    code: &'a ModelCode,
+    centre: &'a [f64],
+    spreads: &'a [f64],
+    data: &'a DataSet,
+    target_spreads: &'a [f64],
+    count: &'a std::sync::atomic::AtomicU64,
+}
+
+impl Criterion<'_> {
+    fn at(&self, theta: &[f64]) -> f64 {
+        self.count.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let constants = constants(self.design, self.centre, self.spreads, theta);
+        let score = score(self.code, &constants, self.centre, self.data, self.target_spreads);
+        // Nelder–Mead must be able to order a diverging candidate: the worst, not infinity.
+        score.min(1e30)
+    }
+}
+
+impl argmin::core::CostFunction for Criterion<'_> {
+    type Param = Vec<f64>;
+    type Output = f64;
+
+    fn cost(&self, theta: &Self::Param) -> Result<f64, argmin::core::Error> {
+        Ok(self.at(theta))
+    }
+}
+
+/// Chooses `Q` and `P(0)` on `tuning` (see the module docs). `target_spreads` normalises each
+/// target's errors.
 pub fn tune(
     design: &Design,
     code: &ModelCode,
@@ -259,62 +334,159 @@ pub fn tune(
     learning: &DataSet,
     target_spreads: &[f64],
 ) -> Option<Tuned> {
+    use argmin::core::{Executor, State};
+    use argmin::solver::neldermead::NelderMead;
     use rayon::prelude::*;
     if !supported(code) {
         return None;
     }
+    let nx = code.dimensions.states;
     let centre = box_centre(design);
-    let spreads = state_spreads(learning, code.dimensions.states);
-    let cost = |(q, p): (f64, f64)| -> f64 {
-        let constants = constants(design, &centre, &spreads, q, p);
-        let rmse = rmse(code, &constants, &centre, tuning).expect("size checked");
-        let mean = rmse
-            .iter()
-            .zip(target_spreads)
-            .map(|(e, s)| e / s.max(f64::MIN_POSITIVE))
-            .sum::<f64>()
-            / rmse.len() as f64;
-        if mean.is_finite() {
-            mean
-        } else {
-            f64::INFINITY
-        }
+    let spreads = state_spreads(learning, nx);
+    let count = std::sync::atomic::AtomicU64::new(0);
+    let criterion = Criterion {
+        design,
+        code,
+        centre: &centre,
+        spreads: &spreads,
+        data: tuning,
+        target_spreads,
+        count: &count,
     };
-    let best = |candidates: Vec<(f64, f64)>| -> ((f64, f64), f64) {
-        candidates
-            .into_par_iter()
-            .map(|c| (c, cost(c)))
-            .collect::<Vec<_>>()
-            .into_iter()
-            // The first of equals, so that the choice does not depend on the thread schedule.
-            .fold(((f64::NAN, f64::NAN), f64::INFINITY), |best, c| {
-                if c.1 < best.1 {
-                    c
-                } else {
-                    best
-                }
-            })
-    };
-    let decade = |e: f64| 10f64.powf(e);
-    let coarse: Vec<(f64, f64)> = (-8..=0)
-        .flat_map(|a| (-3..=0).map(move |b| (decade(f64::from(a)), decade(f64::from(b)))))
+    let isotropic =
+        |a: f64, b: f64| -> Vec<f64> { std::iter::repeat_n(a, nx).chain(std::iter::repeat_n(b, nx)).collect() };
+    let grid: Vec<Vec<f64>> = (-8..=0)
+        .flat_map(|a| (-3..=0).map(move |b| (f64::from(a), f64::from(b))))
+        .map(|(a, b)| isotropic(a, b))
         .collect();
-    let mut candidates = coarse.len();
-    let ((q0, p0), _) = best(coarse);
-    if q0.is_nan() {
+    let mut scored: Vec<(Vec<f64>, f64)> = grid
+        .into_par_iter()
+        .map(|theta| {
+            let cost = criterion.at(&theta);
+            (theta, cost)
+        })
+        .collect();
+    // Best first; the first of equals (a stable sort), so the choice does not depend on threads.
+    scored.sort_by(|a, b| a.1.total_cmp(&b.1));
+    let grid_cost = scored[0].1;
+    if grid_cost >= 1e30 {
         return None; // diverged everywhere
     }
-    let fine: Vec<(f64, f64)> = [-0.5, 0.0, 0.5]
-        .iter()
-        .flat_map(|a| [-0.5, 0.0, 0.5].map(|b| (q0 * decade(*a), p0 * decade(b))))
+    let searched: Vec<(Vec<f64>, f64)> = scored[..STARTS.min(scored.len())]
+        .par_iter()
+        .map(|(theta, cost)| {
+            let simplex: Vec<Vec<f64>> = std::iter::once(theta.clone())
+                .chain((0..theta.len()).map(|i| {
+                    let mut vertex = theta.clone();
+                    vertex[i] += 1.0;
+                    vertex
+                }))
+                .collect();
+            let solver = NelderMead::new(simplex)
+                .with_sd_tolerance(1e-6)
+                .expect("a non-negative tolerance");
+            let result = Executor::new(criterion, solver)
+                .configure(|state| state.max_iters(ITERATIONS))
+                .run()
+                .expect("the criterion does not fail");
+            let state = result.state();
+            match state.get_best_param() {
+                Some(best) if state.get_best_cost() < *cost => (best.clone(), state.get_best_cost()),
+                _ => (theta.clone(), *cost),
+            }
+        })
         .collect();
-    candidates += fine.len();
-    let ((q, p), cost) = best(fine);
+    let (theta, cost) = searched.into_iter().fold(
+        (Vec::new(), f64::INFINITY),
+        |best, c| if c.1 < best.1 { c } else { best },
+    );
+    let theta: Vec<f64> = theta.iter().map(|a| a.clamp(LOG_RANGE.0, LOG_RANGE.1)).collect();
     Some(Tuned {
-        constants: constants(design, &centre, &spreads, q, p),
-        q,
-        p,
+        constants: constants(design, &centre, &spreads, &theta),
+        log_q: theta[..nx].to_vec(),
+        log_p0: theta[nx..].to_vec(),
         cost,
-        candidates,
+        grid_cost,
+        evaluations: count.into_inner(),
     })
+}
+
+/// The factors of the map-started EKF's start covariance tried by [`tune_started`]: half-decades from
+/// 10⁻² to 10².
+pub const START_FACTORS: [f64; 9] = [
+    1e-2,
+    0.031_622_776_601_683_79,
+    0.1,
+    0.316_227_766_016_837_9,
+    1.0,
+    3.162_277_660_168_379,
+    10.0,
+    31.622_776_601_683_79,
+    100.0,
+];
+
+/// Chooses the factor `c` of the map-started EKF's start covariance `P(N−1) = c · diag(e_i²)`, `e_i`
+/// the map's RMSE of state `i` on the tuning runs: the [`START_FACTORS`] value of lowest `score(c)`,
+/// the first of equals. Returns `(c, score)`.
+pub fn tune_started(score: impl Fn(f64) -> f64 + Sync) -> (f64, f64) {
+    use rayon::prelude::*;
+    START_FACTORS
+        .par_iter()
+        .map(|&c| (c, score(c)))
+        .collect::<Vec<_>>()
+        .into_iter()
+        .fold((1.0, f64::INFINITY), |best, c| if c.1 < best.1 { c } else { best })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// E. coli (`ecoli_x0_2`) with its `[model.bounds]` (every concentration ≥ 0) and without them.
+    fn ecoli(bounded: bool) -> (Design, ModelCode) {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/ecoli_x0_2.toml");
+        let mut text = std::fs::read_to_string(&path).unwrap();
+        if !bounded {
+            let start = text.find("[model.bounds]").expect("the shipped spec declares bounds");
+            let end = start + text[start..].find("\n\n").unwrap();
+            text.replace_range(start..end, "");
+        }
+        let design = crate::spec::parse(&path, &text).unwrap();
+        let code = ModelCode::new(&design).unwrap();
+        (design, code)
+    }
+
+    #[test]
+    fn bounds_keep_the_filter_inside_where_the_unbounded_one_leaves() {
+        // One filter, constants fixed (a trusting start, a small Q), on the validation runs: without
+        // bounds the product P is estimated negative, from where exp(-k_p/P) blows up; with them
+        // every estimate of P is ≥ 0 and finite.
+        let theta = [-6.0, -6.0, -6.0, -0.5, -0.5, -0.5];
+        let lowest = |bounded: bool| -> (f64, bool) {
+            let (design, code) = ecoli(bounded);
+            let data = crate::data::validation_set(&design).unwrap();
+            let spreads = vec![1.0; 3];
+            let centre = box_centre(&design);
+            let constants = constants(&design, &centre, &spreads, &theta);
+            let p = design.targets.iter().position(|t| t.name == "P").unwrap();
+            let mut lowest = f64::INFINITY;
+            let mut finite = true;
+            for run in &data.runs {
+                let rows = estimate_run(&code, &constants, &centre, run).unwrap();
+                for row in rows.iter() {
+                    finite &= row.iter().all(|v| v.is_finite());
+                    lowest = lowest.min(row[p]);
+                }
+            }
+            (lowest, finite)
+        };
+        let (unbounded, _) = lowest(false);
+        assert!(
+            unbounded < 0.0,
+            "the unbounded filter stays inside ({unbounded}): the test shows nothing"
+        );
+        let (bounded, finite) = lowest(true);
+        assert!(bounded >= 0.0, "{bounded}");
+        assert!(finite, "a bounded estimate is not finite");
+    }
 }

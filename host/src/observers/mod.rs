@@ -7,6 +7,7 @@
 pub mod corrected;
 pub mod ekf;
 pub mod recorded;
+pub mod score;
 pub mod started;
 
 use crate::data::{self, DataSet, Rows, Run};
@@ -22,12 +23,16 @@ pub struct Figures {
     pub rmse_validation: f64,
     /// Largest |error| over the validation windows.
     pub max_error_validation: f64,
+    /// The 95th percentile over validation runs of each run's RMSE ([`score::percentile_95`]).
+    pub p95_validation: f64,
     /// RMSE over the scenario's windows.
     pub rmse_scenario: f64,
     /// RMSE over the scenario's first [`TRANSIENT_TIME`] time units after the map's first estimate.
     pub rmse_transient: f64,
     /// RMSE over the tuning runs' windows.
     pub rmse_tuning: f64,
+    /// The 95th percentile over tuning runs of each run's RMSE.
+    pub p95_tuning: f64,
     /// RMSE over the mismatch runs' windows: the validation runs replayed on plants at every corner of
     /// the box of the uncertain parameters (`data::uncertain::mismatch_set`); `None` when every
     /// parameter is known.
@@ -95,6 +100,17 @@ pub struct Mismatch {
     pub scenario: Run,
 }
 
+/// The EKF started by the map at `k = N − 1`, sharing the EKF's `Q` and `R`.
+#[derive(Clone, Debug)]
+pub struct Started {
+    /// `P(N−1)` diagonal: `factor` times the map's mean squared error per state on the tuning runs.
+    pub p0: Vec<f64>,
+    /// The factor, chosen on the tuning runs ([`ekf::tune_started`]).
+    pub factor: f64,
+    /// Each state's target.
+    pub state_targets: Vec<usize>,
+}
+
 /// The comparison of a design's observers.
 #[derive(Clone, Debug)]
 pub struct Comparison {
@@ -104,9 +120,8 @@ pub struct Comparison {
     pub ekf: Option<ekf::Tuned>,
     /// The tuned model-corrected map, or why the design cannot have one.
     pub corrected: Result<corrected::Tuned, String>,
-    /// The EKF started by the map: `P(N−1)` diagonal (the map's mean squared error per state on the
-    /// tuning runs) and each state's target; `None` without an EKF or the full state.
-    pub started: Option<(Vec<f64>, Vec<usize>)>,
+    /// The EKF started by the map; `None` without an EKF or the full state.
+    pub started: Option<Started>,
     /// What `observer()` is, and why.
     pub chosen: (ObserverKind, String),
     /// The tuning runs.
@@ -240,9 +255,14 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
                     ),
                     _ => (None, Vec::new(), None, None),
                 };
+                let p95 = |runs: &[Run], estimates: &[Rows]| {
+                    score::percentile_95(&score::per_run_rmse(runs, estimates, t, windows))
+                };
                 Figures {
                     rmse_validation,
                     max_error_validation,
+                    p95_validation: p95(&result.validation.runs, &validation),
+                    p95_tuning: p95(&tuning.runs, &on_tuning),
                     rmse_scenario: errors(one_scenario, on_scenario, t, windows).0,
                     rmse_transient: errors(one_scenario, on_scenario, t, |run| {
                         horizon - 1..horizon.saturating_add(transient).min(run.targets.len())
@@ -306,24 +326,38 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
     let started = match (&tuned, corrected::state_targets(design)) {
         (Some(tuned), Ok(state_targets)) => {
             let map = &observers[0].targets;
-            let p0: Vec<f64> = state_targets.iter().map(|&t| map[t].rmse_tuning.powi(2)).collect();
+            let errors: Vec<f64> = state_targets.iter().map(|&t| map[t].rmse_tuning.powi(2)).collect();
             let filter = crate::plant::kalman::filter_code(code, &tuned.constants);
-            observers.push(judge("ekf_started", cost::of_started(&filter), &|run, _| {
+            let run_started = |p0: &[f64], run: &Run| -> Rows {
                 let map: Vec<Vec<f64>> = map_estimates(result, horizon, run)
                     .iter()
                     .map(<[f64]>::to_vec)
                     .collect();
                 Rows::from(ekf::estimate_started(
                     &filter,
-                    &p0,
+                    p0,
                     &state_targets,
                     horizon - 1,
                     &map,
                     run,
                     code,
                 ))
+            };
+            let scaled = |c: f64| -> Vec<f64> { errors.iter().map(|e| c * e).collect() };
+            let (factor, _) = ekf::tune_started(|c| {
+                let p0 = scaled(c);
+                let estimates: Vec<Rows> = tuning.runs.iter().map(|run| run_started(&p0, run)).collect();
+                score::of_estimates(&tuning.runs, &estimates, &spreads, windows)
+            });
+            let p0 = scaled(factor);
+            observers.push(judge("ekf_started", cost::of_started(&filter), &|run, _| {
+                run_started(&p0, run)
             }));
-            Some((p0, state_targets))
+            Some(Started {
+                p0,
+                factor,
+                state_targets,
+            })
         }
         _ => None,
     };
@@ -340,15 +374,11 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
     })
 }
 
-/// A kind's score on the tuning runs: the mean over targets of RMSE / spread.
-fn score(figures: &ObserverFigures, spreads: &[f64]) -> f64 {
-    figures
-        .targets
-        .iter()
-        .zip(spreads)
-        .map(|(f, s)| f.rmse_tuning / s)
-        .sum::<f64>()
-        / spreads.len() as f64
+/// A kind's [score](score::score) on the tuning runs.
+fn tuning_score(figures: &ObserverFigures, spreads: &[f64]) -> f64 {
+    let pooled: Vec<f64> = figures.targets.iter().map(|f| f.rmse_tuning).collect();
+    let p95: Vec<f64> = figures.targets.iter().map(|f| f.p95_tuning).collect();
+    score::score(&pooled, &p95, spreads)
 }
 
 /// The kinds `observer()` may be, cheapest first, each with the name of its row in
@@ -367,8 +397,8 @@ pub fn row_name(kind: ObserverKind) -> &'static str {
 /// How much worse than the best a cheaper kind's score may be and still be chosen by `auto`.
 pub const CHEAPER_WITHIN: f64 = 0.02;
 
-/// The kind `observer()` is: the spec's, or for `auto` the lowest score on the tuning runs (mean
-/// RMSE / spread) among the kinds within `[budget] instructions` (as [`cost`] predicts them), except
+/// The kind `observer()` is: the spec's, or for `auto` the lowest [score](score::score) on the
+/// tuning runs among the kinds within `[budget] instructions` (as [`cost`] predicts them), except
 /// that a cheaper kind (map, then corrected, then the map-started EKF) within [`CHEAPER_WITHIN`] of
 /// the best is preferred. Errors when the spec asks for a kind the design cannot have or the budget
 /// does not allow.
@@ -383,7 +413,7 @@ pub fn choose(
             observers
                 .iter()
                 .find(|o| o.kind == name)
-                .map(|o| (kind, name, score(o, spreads), o.instructions))
+                .map(|o| (kind, name, tuning_score(o, spreads), o.instructions))
         })
         .collect();
     let budget = design.budget.instructions.map(|b| b as f64);
@@ -430,7 +460,7 @@ pub fn choose(
         })
         .collect();
     let limit = budget.map_or(String::new(), |b| format!(" within `budget.instructions` = {b}"));
-    Ok((kind, format!("`{name}` by `auto`: the lowest tuning score (mean RMSE / spread; {}){limit}, a cheaper kind preferred within {:.0} %", all.join(", "), CHEAPER_WITHIN * 100.0)))
+    Ok((kind, format!("`{name}` by `auto`: the lowest tuning score (pooled RMSE + p95 over runs, per target over its spread; {}){limit}, a cheaper kind preferred within {:.0} %", all.join(", "), CHEAPER_WITHIN * 100.0)))
 }
 
 /// See [`Comparison::chip_model_error`].

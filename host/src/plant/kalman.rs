@@ -10,6 +10,9 @@
 //! predict  (x, P, u)    → (x⁺, P⁺)             the prediction alone (a refused measurement)
 //! ```
 //!
+//! With physical bounds on states (`[model.bounds]`), `x̂(k|k)` and `x⁺` are projected onto them
+//! (`firmware::bounds`, selects), as the library filter does with `Ekf::with_bounds`.
+//!
 //! `P` is read and written as its upper triangle, row by row ([`upper`]): it is symmetric, so the
 //! lower entries would be copies. The filter's constants (`Q`, `R`, the substep `h`) are numbers of
 //! the programs, so the products they take part in fold where they can.
@@ -110,11 +113,13 @@ pub fn filter_code(code: &ModelCode, constants: &EkfConstants) -> FilterCode {
             for i in 0..code.dimensions.outputs {
                 update(&mut b, code, constants.r[i], i, &mut x, &mut p);
             }
+            b.project(&mut x, &code.bounds);
             for &e in &x {
                 b.result(e);
             }
         }
         predict(&mut b, code, constants, &mut x, &mut p);
+        b.project(&mut x, &code.bounds);
         for &e in &x {
             b.result(e);
         }

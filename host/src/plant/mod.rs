@@ -43,6 +43,8 @@ pub struct ModelCode {
     pub parameters: Vec<(String, f64)>,
     /// States, outputs, inputs, targets.
     pub dimensions: Dimensions,
+    /// Each state's physical bounds (`[model.bounds]`), which the filters project their state onto.
+    pub bounds: Vec<crate::spec::Bounds>,
 }
 
 /// How many of each.
@@ -128,6 +130,16 @@ impl ModelCode {
             states: &model.states,
             inputs: &model.inputs,
         };
+        for (state, bounds) in model.states.iter().zip(&design.state_bounds) {
+            for (side, value) in [("min", bounds.min), ("max", bounds.max)] {
+                if let Some(value) = value {
+                    representable(value).map_err(|problem| ModelCodeError {
+                        field: format!("model.bounds.{state}.{side}"),
+                        construct: format!("the bound {value} {problem}"),
+                    })?;
+                }
+            }
+        }
         for (name, value) in &model.parameters {
             representable(*value).map_err(|problem| ModelCodeError {
                 field: format!("model.parameters.{name}"),
@@ -207,6 +219,7 @@ impl ModelCode {
                 inputs: model.inputs.len(),
                 targets: design.targets.len(),
             },
+            bounds: design.state_bounds.clone(),
         })
     }
 

@@ -44,6 +44,11 @@ pub enum Op {
     Binary(Binary, usize, usize),
     /// `f(a)`, `f` one of the expression language's functions (`log` is `ln`).
     Call(&'static str, usize),
+    /// `a`, or `b` where `a` is below it or NaN: a state projected onto its lower bound
+    /// (`firmware::bounds::at_least`, a select).
+    AtLeast(usize, usize),
+    /// `a`, or `b` where `a` is above it (`firmware::bounds::at_most`, a select).
+    AtMost(usize, usize),
 }
 
 /// Operations and the indices of the results, in the order the caller asked for them.
@@ -83,6 +88,8 @@ enum Key {
     Negate(usize),
     Binary(u8, usize, usize),
     Call(&'static str, usize),
+    AtLeast(usize, usize),
+    AtMost(usize, usize),
 }
 
 /// A tree the builder cannot lower.
@@ -251,10 +258,26 @@ impl<'a> Builder<'a> {
                     Some(v) => self.number(crate::spec::ast::call(f, v)),
                     None => self.push(Op::Call(f, map[a])),
                 },
+                Op::AtLeast(a, b) => self.push(Op::AtLeast(map[a], map[b])),
+                Op::AtMost(a, b) => self.push(Op::AtMost(map[a], map[b])),
             };
             map.push(mapped);
         }
         program.results.iter().map(|&r| map[r]).collect()
+    }
+
+    /// `states` projected onto `bounds` (a select per bounded side, nothing for an unbounded one).
+    pub fn project(&mut self, states: &mut [usize], bounds: &[crate::spec::Bounds]) {
+        for (x, b) in states.iter_mut().zip(bounds) {
+            if let Some(min) = b.min {
+                let low = self.number(min);
+                *x = self.push(Op::AtLeast(*x, low));
+            }
+            if let Some(max) = b.max {
+                let high = self.number(max);
+                *x = self.push(Op::AtMost(*x, high));
+            }
+        }
     }
 
     /// The value of operation `op` when it is a number.
@@ -284,6 +307,8 @@ impl<'a> Builder<'a> {
             Op::Negate(a) => Key::Negate(a),
             Op::Binary(b, x, y) => Key::Binary(b as u8, x, y),
             Op::Call(f, a) => Key::Call(f, a),
+            Op::AtLeast(a, b) => Key::AtLeast(a, b),
+            Op::AtMost(a, b) => Key::AtMost(a, b),
         };
         *self.seen.entry(key).or_insert_with(|| {
             self.program.ops.push(op);
@@ -303,7 +328,7 @@ impl Program {
             if needed[i] {
                 match self.ops[i] {
                     Op::Negate(a) | Op::Call(_, a) => needed[a] = true,
-                    Op::Binary(_, a, b) => {
+                    Op::Binary(_, a, b) | Op::AtLeast(a, b) | Op::AtMost(a, b) => {
                         needed[a] = true;
                         needed[b] = true;
                     }
@@ -319,6 +344,8 @@ impl Program {
                     Op::Negate(a) => Op::Negate(renumbered[a]),
                     Op::Call(f, a) => Op::Call(f, renumbered[a]),
                     Op::Binary(b, x, y) => Op::Binary(b, renumbered[x], renumbered[y]),
+                    Op::AtLeast(x, y) => Op::AtLeast(renumbered[x], renumbered[y]),
+                    Op::AtMost(x, y) => Op::AtMost(renumbered[x], renumbered[y]),
                     other => other,
                 };
                 renumbered[i] = ops.len();
@@ -364,6 +391,8 @@ impl Program {
                 Op::Negate(a) => -values[a],
                 Op::Binary(op, a, b) => op.apply(values[a], values[b]),
                 Op::Call(f, a) => crate::spec::ast::call(f, values[a]),
+                Op::AtLeast(a, b) => firmware::bounds::at_least(values[a], values[b]),
+                Op::AtMost(a, b) => firmware::bounds::at_most(values[a], values[b]),
             };
             values.push(value);
         }

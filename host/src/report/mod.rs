@@ -92,12 +92,16 @@ pub struct FiguresReport {
     pub rmse_validation: Option<f64>,
     /// Largest |error| there.
     pub max_error_validation: Option<f64>,
+    /// The 95th percentile over validation runs of each run's RMSE (the tail the pooled RMSE hides).
+    pub p95_validation: Option<f64>,
     /// RMSE over the scenario's windows (the EKF from `scenario.observer_x0`).
     pub rmse_scenario: Option<f64>,
     /// RMSE over the scenario's first 2 time units after the map's first estimate.
     pub rmse_transient: Option<f64>,
     /// RMSE over the tuning runs.
     pub rmse_tuning: Option<f64>,
+    /// The 95th percentile over tuning runs of each run's RMSE.
+    pub p95_tuning: Option<f64>,
     /// RMSE over the mismatch runs (every corner of the uncertain parameters' box; [`MismatchReport`]).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rmse_mismatch: Option<f64>,
@@ -143,17 +147,21 @@ pub struct MismatchReport {
 pub const MISMATCH_PLANTS: &str = "the corners of the box of the uncertain parameters (not drawn): at each, the \
      validation set's number of runs from its own seed, the same initial states, inputs and noise at every corner";
 
-/// The EKF's tuning.
+/// The EKF's tuning ([`crate::observers::ekf`]).
 #[derive(Serialize)]
 pub struct EkfTuning {
-    /// `Q = q · diag(s_i²)`.
-    pub q: f64,
-    /// `P(0) = p · diag(s_i²)`.
-    pub p0: f64,
-    /// Mean normalised RMSE on the tuning runs at the choice.
+    /// `log10(Q_ii / s_i²)` per state (`s_i`: the state's spread over the learning runs).
+    pub log_q: Vec<f64>,
+    /// `log10(P(0)_ii / s_i²)` per state.
+    pub log_p0: Vec<f64>,
+    /// The score on the tuning runs at the choice ([`crate::observers::score`]).
     pub cost: f64,
-    /// Candidates tried.
-    pub candidates: usize,
+    /// The score at the best point of the isotropic grid the search started from.
+    pub grid_cost: f64,
+    /// Score evaluations (grid and Nelder–Mead).
+    pub evaluations: u64,
+    /// The map-started EKF's start covariance over the map's mean squared error per state.
+    pub started_factor: Option<f64>,
     /// `diag(Q)`.
     pub q_diagonal: Vec<f64>,
     /// `diag(P(0))`.
@@ -320,9 +328,11 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
                             FiguresReport {
                                 rmse_validation: finite(f.rmse_validation),
                                 max_error_validation: finite(f.max_error_validation),
+                                p95_validation: finite(f.p95_validation),
                                 rmse_scenario: finite(f.rmse_scenario),
                                 rmse_transient: finite(f.rmse_transient),
                                 rmse_tuning: finite(f.rmse_tuning),
+                                p95_tuning: finite(f.p95_tuning),
                                 rmse_mismatch: f.rmse_mismatch.and_then(finite),
                                 rmse_corners: f.rmse_corners.iter().map(|&v| finite(v)).collect(),
                                 rmse_nominal: f.rmse_nominal.and_then(finite),
@@ -336,10 +346,12 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             })
             .collect(),
         ekf_tuning: comparison.ekf.as_ref().map(|t| EkfTuning {
-            q: t.q,
-            p0: t.p,
+            log_q: t.log_q.clone(),
+            log_p0: t.log_p0.clone(),
             cost: t.cost,
-            candidates: t.candidates,
+            grid_cost: t.grid_cost,
+            evaluations: t.evaluations,
+            started_factor: comparison.started.as_ref().map(|s| s.factor),
             q_diagonal: t.constants.q.clone(),
             p0_diagonal: t.constants.p0.clone(),
             x0: t.constants.x0.clone(),
@@ -407,20 +419,22 @@ pub fn observers_table(report: &Report<'_>) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "| observer | target | RMSE validation | max error validation | RMSE scenario | RMSE transient | RMSE tuning |"
+        "| observer | target | RMSE validation | p95 validation | max error validation | RMSE scenario | RMSE transient | RMSE tuning | p95 tuning |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|");
     for o in &report.observers {
         for (name, f) in in_spec_order(report, o) {
             let _ = writeln!(
                 s,
-                "| {} | {name} | {} | {} | {} | {} | {} |",
+                "| {} | {name} | {} | {} | {} | {} | {} | {} | {} |",
                 o.kind,
                 show(f.rmse_validation),
+                show(f.p95_validation),
                 show(f.max_error_validation),
                 show(f.rmse_scenario),
                 show(f.rmse_transient),
-                show(f.rmse_tuning)
+                show(f.rmse_tuning),
+                show(f.p95_tuning)
             );
         }
     }
@@ -437,8 +451,9 @@ pub fn observers_table(report: &Report<'_>) -> String {
         return s;
     }
     type Pick = fn(&FiguresReport) -> Option<f64>;
-    let figures: [(&str, Pick); 4] = [
+    let figures: [(&str, Pick); 5] = [
         ("validation RMSE", |f| f.rmse_validation),
+        ("validation p95 (per-run RMSE)", |f| f.p95_validation),
         ("validation max error", |f| f.max_error_validation),
         ("scenario RMSE", |f| f.rmse_scenario),
         ("transient RMSE", |f| f.rmse_transient),
@@ -713,15 +728,20 @@ pub fn markdown(report: &Report<'_>) -> String {
             s,
             "\nEKF: the firmware's filter over the model emitted as Rust ({} RK4 step(s) per sample on the chip, {} in the learning simulation; \
              largest one-sample difference between the two over the validation states, relative to each state's spread: {}), \
-             starting at the centre of the state box; Q = {:.3e}·diag(s²), P(0) = {:.3e}·diag(s²) (s: each state's spread over the learning runs), \
-             chosen among {} candidates on {} tuning runs that no figure above but *RMSE tuning* uses.",
+             starting at the centre of the state box; Q = diag({}), P(0) = diag({}), each value per state chosen on {} tuning runs that no figure above but \
+             *RMSE tuning* and *p95 tuning* uses (score {:.4} at an isotropic grid's best point, {:.4} after Nelder–Mead; {} evaluations){}.",
             report.chip_model.chip_substeps,
             report.chip_model.simulation_substeps,
             report.chip_model.max_step_difference_relative.iter().map(|v| format!("{v:.1e}")).collect::<Vec<_>>().join(", "),
-            t.q,
-            t.p0,
-            t.candidates,
-            report.tuning.runs
+            t.q_diagonal.iter().map(|v| format!("{v:.3e}")).collect::<Vec<_>>().join(", "),
+            t.p0_diagonal.iter().map(|v| format!("{v:.3e}")).collect::<Vec<_>>().join(", "),
+            report.tuning.runs,
+            t.grid_cost,
+            t.cost,
+            t.evaluations,
+            t.started_factor.map_or(String::new(), |c| format!(
+                "; the EKF started by the map shares Q and starts with P = {c:.3} × the map's mean squared error per state (tuned factor)"
+            )),
         );
     }
     // Every kind or none: `on-target-report` measures them all at once.

@@ -74,6 +74,8 @@ pub const CORRECTED_BASE: f64 = 93.0;
 pub const EKF_BASE: f64 = 46.0;
 /// What the map-started EKF adds to the EKF in steady state (the window it keeps for its start).
 pub const STARTED_EXTRA: f64 = 8.0;
+/// Instructions of a state's projection onto one bound (a compare, the flags' move and a select).
+pub const PER_SELECT: f64 = 3.0;
 /// Instructions assumed for a function no shipped model calls yet (an over-estimate).
 pub const UNMEASURED_CALL: f64 = 150.0;
 
@@ -98,6 +100,7 @@ pub fn of_program(program: &Program) -> f64 {
             Op::Number(_) | Op::Leaf(_) => 0.0,
             Op::Negate(_) | Op::Binary(..) => PER_OPERATION,
             Op::Call(name, _) => call(name),
+            Op::AtLeast(..) | Op::AtMost(..) => PER_SELECT,
         })
         .sum()
 }

@@ -268,6 +268,34 @@ pub struct Target {
     pub expr: Expression,
 }
 
+/// A state's physical bounds, either side optional (`[model.bounds]`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct Bounds {
+    /// The least value the state can take.
+    pub min: Option<f64>,
+    /// The largest.
+    pub max: Option<f64>,
+}
+
+impl Bounds {
+    /// The lower bound, `-∞` where there is none.
+    pub fn lower(&self) -> f64 {
+        self.min.unwrap_or(f64::NEG_INFINITY)
+    }
+
+    /// The upper bound, `+∞` where there is none.
+    pub fn upper(&self) -> f64 {
+        self.max.unwrap_or(f64::INFINITY)
+    }
+
+    /// `x` projected onto the bounds (`firmware::bounds::project`, entry by entry).
+    pub fn project(bounds: &[Bounds], x: &mut [f64]) {
+        for (x, b) in x.iter_mut().zip(bounds) {
+            *x = firmware::bounds::at_most(firmware::bounds::at_least(*x, b.lower()), b.upper());
+        }
+    }
+}
+
 /// A validated design.
 #[derive(Clone, Debug)]
 pub struct Design {
@@ -287,6 +315,9 @@ pub struct Design {
     pub state_units: Vec<String>,
     /// Each input's unit (`[model.units]`; "" where the spec gives none).
     pub input_units: Vec<String>,
+    /// Each state's physical bounds (`[model.bounds]`; unbounded where the spec gives none): every
+    /// observer that carries the model projects its state onto them.
+    pub state_bounds: Vec<Bounds>,
     /// RK4 steps per sample period.
     pub substeps: usize,
     /// The learning set.

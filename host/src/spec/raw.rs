@@ -73,6 +73,16 @@ pub(super) struct RawModel {
     pub(super) outputs: Vec<RawOutput>,
     #[serde(default)]
     pub(super) units: BTreeMap<String, String>,
+    #[serde(default)]
+    pub(super) bounds: BTreeMap<String, RawBounds>,
+}
+
+/// `[model.bounds]`: a state's physical bounds, one side or both (`X = { min = 0.0 }`).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawBounds {
+    pub(super) min: Option<f64>,
+    pub(super) max: Option<f64>,
 }
 
 /// A parameter: a number (`a = 4.0`), or a nominal value with the range the plant's true value may

@@ -1,0 +1,143 @@
+//! How an observer's errors on a set of runs become one number: the score every tuning criterion and
+//! `auto` minimise.
+//!
+//! A pooled RMSE over runs from random starts is dominated by the many runs where every observer does
+//! well; a filter that converges slowly from a few starts hides there. The score therefore counts the
+//! tail beside the pool. For each target `t` with spread `s_t` (its range over the tuning runs):
+//!
+//! ```text
+//! score = mean_t (RMSE_t + P95_t) / s_t,
+//! ```
+//!
+//! `RMSE_t` the RMSE over every window of every run, `P95_t` the 95th percentile over runs of each
+//! run's own RMSE ([`percentile_95`]). A run whose estimate diverged (NaN) makes the score infinite:
+//! the worst, never a NaN that a search cannot order.
+
+use crate::data::{Rows, Run};
+
+/// Each run's RMSE of target `target` over its samples `window(run)`.
+pub fn per_run_rmse(
+    runs: &[Run],
+    estimates: &[Rows],
+    target: usize,
+    window: impl Fn(&Run) -> std::ops::Range<usize>,
+) -> Vec<f64> {
+    runs.iter()
+        .zip(estimates)
+        .map(|(run, estimate)| {
+            let range = window(run);
+            let count = range.len().max(1) as f64;
+            let sum: f64 = range
+                .map(|k| (estimate[k][target] - run.targets[k][target]).powi(2))
+                .sum();
+            (sum / count).sqrt()
+        })
+        .collect()
+}
+
+/// The 95th percentile of `values`, linearly interpolated between order statistics (position
+/// `0.95 (n − 1)` in the sorted values, the usual "type 7" definition). NaN if any value is NaN or
+/// there are none.
+pub fn percentile_95(values: &[f64]) -> f64 {
+    if values.is_empty() || values.iter().any(|v| v.is_nan()) {
+        return f64::NAN;
+    }
+    let mut sorted = values.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let position = 0.95 * (sorted.len() - 1) as f64;
+    let below = position.floor() as usize;
+    let above = (below + 1).min(sorted.len() - 1);
+    let fraction = position - below as f64;
+    sorted[below] + fraction * (sorted[above] - sorted[below])
+}
+
+/// The score of per-target pooled RMSEs and 95th percentiles, each normalised by its target's spread
+/// (see the module docs); `f64::INFINITY` where it is not finite.
+pub fn score(pooled: &[f64], p95: &[f64], spreads: &[f64]) -> f64 {
+    let mean = pooled
+        .iter()
+        .zip(p95)
+        .zip(spreads)
+        .map(|((r, p), s)| (r + p) / s.max(f64::MIN_POSITIVE))
+        .sum::<f64>()
+        / spreads.len().max(1) as f64;
+    if mean.is_finite() {
+        mean
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// [`score`] of `estimates` of `runs` over samples `window(run)`.
+pub fn of_estimates(
+    runs: &[Run],
+    estimates: &[Rows],
+    spreads: &[f64],
+    window: impl Fn(&Run) -> std::ops::Range<usize> + Copy,
+) -> f64 {
+    let (pooled, p95): (Vec<f64>, Vec<f64>) = (0..spreads.len())
+        .map(|t| {
+            (
+                super::errors(runs, estimates, t, window).0,
+                percentile_95(&per_run_rmse(runs, estimates, t, window)),
+            )
+        })
+        .unzip();
+    score(&pooled, &p95, spreads)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_percentile_interpolates_between_order_statistics() {
+        // 21 values 0, 1, …, 20 in any order: position 0.95 · 20 = 19 exactly.
+        let values: Vec<f64> = (0..21).rev().map(f64::from).collect();
+        assert_eq!(percentile_95(&values), 19.0);
+        // 11 values 0…10: position 9.5, halfway between 9 and 10.
+        let values: Vec<f64> = (0..11).map(f64::from).collect();
+        assert_eq!(percentile_95(&values), 9.5);
+        assert_eq!(percentile_95(&[3.0]), 3.0);
+        assert!(percentile_95(&[1.0, f64::NAN]).is_nan());
+        assert!(percentile_95(&[]).is_nan());
+    }
+
+    #[test]
+    fn the_score_counts_the_tail() {
+        // Two observers with the same pooled RMSE: the one whose error sits in one run scores worse.
+        let spreads = [2.0];
+        let even = score(&[0.1], &[0.1], &spreads);
+        let tail = score(&[0.1], &[0.5], &spreads);
+        assert!((even - 0.1).abs() < 1e-15, "{even}");
+        assert!((tail - 0.3).abs() < 1e-15, "{tail}");
+        assert_eq!(score(&[f64::NAN], &[0.1], &spreads), f64::INFINITY);
+    }
+
+    #[test]
+    fn per_run_rmse_is_each_runs_own() {
+        let rows = |width: usize, value: f64| {
+            let mut rows = Rows::new(width);
+            for _ in 0..4 {
+                rows.push(&vec![value; width]);
+            }
+            rows
+        };
+        let run = || Run {
+            states: rows(1, 0.0),
+            inputs: rows(0, 0.0),
+            measurements: rows(1, 0.0),
+            targets: rows(1, 0.0),
+            parameters: Vec::new(),
+        };
+        let runs = [run(), run()];
+        let mut a = Rows::new(1);
+        let mut b = Rows::new(1);
+        for k in 0..4 {
+            a.push(&[if k >= 2 { 3.0 } else { 100.0 }]);
+            b.push(&[if k >= 2 { 4.0 } else { 100.0 }]);
+        }
+        let rmse = per_run_rmse(&runs, &[a, b], 0, |_| 2..4);
+        assert_eq!(rmse, vec![3.0, 4.0]);
+    }
+}
