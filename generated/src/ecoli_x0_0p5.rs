@@ -60,7 +60,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["g/L", "g/(L h)"];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 2] = [("map", 105), ("ekf", 1286)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 2] = [("map", 105), ("ekf_box", 1286)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -540,7 +540,7 @@ pub const COVARIANCE: usize = 6;
 
 /// The EKF's `Q` diagonal as `gen` chose it (f64): each state's process-noise variance per sample
 /// period, in its unit squared ([`STATE_UNITS`]).
-pub const EKF_Q: [f64; STATES] = [3.223713347353119e-5, 4.95511590866445e-5, 1.4895587640053928e-7];
+pub const EKF_Q: [f64; STATES] = [7.54889004534183e-5, 7.460108922287483e-6, 4.6569416161987e-8];
 
 /// This design's extended Kalman filter, written out for its size by `gen`: the library's
 /// [`firmware::Ekf`] over [`Discrete`] ([`reference_ekf`], same constants), with each sample as
@@ -570,7 +570,7 @@ impl<T: Scalar + Maths> Ekf<T> {
     pub fn new() -> Self {
         Ekf {
             x: [T::literal(0.5, 0.5), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-            p: [T::literal(0.0019632338, 0.0019632339241348255), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(1.0766506, 1.0766506125632276), T::literal(0.0, 0.0), T::literal(0.012436554, 0.012436554204672887)],
+            p: [T::literal(0.0015185641, 0.001518564022043125), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(1.1120771, 1.1120770821203032), T::literal(0.0, 0.0), T::literal(0.036313716, 0.03631371723491785)],
         }
     }
 
@@ -622,11 +622,64 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
     firmware::Ekf::new(
         firmware::Rk4::new(Plant, T::literal(0.2, 0.2)),
         [T::literal(0.5, 0.5), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-        [[T::literal(0.0019632338, 0.0019632339241348255), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(1.0766506, 1.0766506125632276), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.012436554, 0.012436554204672887)]],
-        [[T::literal(3.2237134e-5, 3.223713347353119e-5), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(4.955116e-5, 4.95511590866445e-5), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(1.4895588e-7, 1.4895587640053928e-7)]],
+        [[T::literal(0.0015185641, 0.001518564022043125), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(1.1120771, 1.1120770821203032), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.036313716, 0.03631371723491785)]],
+        [[T::literal(7.54889e-5, 7.54889004534183e-5), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(7.460109e-6, 7.460108922287483e-6), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(4.6569415e-8, 4.6569416161987e-8)]],
         [T::literal(0.1, 0.1), T::literal(20.0, 20.0)],
     )
     .with_bounds([T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(f32::INFINITY, f64::INFINITY), T::literal(f32::INFINITY, f64::INFINITY), T::literal(f32::INFINITY, f64::INFINITY)])
+}
+
+/// The EKF from the centre of the state box ([`Ekf`], the same filter and constants) with the
+/// observers' interface: `push` takes a sample, `estimate` gives the targets of the latest accepted
+/// one (each `Inside`: the filter does not saturate), `reset` starts again. It has an estimate from
+/// the first accepted sample on; a refused sample keeps the previous one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BoxEkfObserver {
+    filter: Ekf<f32>,
+    latest: Option<[Estimate<f32>; TARGETS]>,
+}
+
+impl Default for BoxEkfObserver {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl BoxEkfObserver {
+    /// A fresh observer (the filter at its start), holding no sample yet.
+    pub const fn new() -> Self {
+        BoxEkfObserver {
+            filter: Ekf { x: [0.5, 2.5, 0.15], p: [0.0015185641, 0.0, 0.0, 1.1120771, 0.0, 0.036313716] },
+            latest: None,
+        }
+    }
+
+    /// Takes the sample `(y, u)`: [`Ekf::push`], then the targets of its estimate `x̂(k|k)`.
+    pub fn push(&mut self, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+        let x = self.filter.push(&y, &u)?;
+        let values = targets(&x, &u);
+        let mut latest = [Estimate { value: 0.0, saturation: firmware::Saturation::Inside }; TARGETS];
+        for (e, value) in latest.iter_mut().zip(values) {
+            e.value = value;
+        }
+        self.latest = Some(latest);
+        Ok(())
+    }
+
+    /// The targets of the latest accepted sample; `None` before the first.
+    pub fn estimate(&self) -> Option<[Estimate<f32>; TARGETS]> {
+        self.latest
+    }
+
+    /// Back to the start: the filter at the box centre, no estimate.
+    pub fn reset(&mut self) {
+        *self = Self::new();
+    }
+
+    /// Whether it has an estimate.
+    pub fn is_ready(&self) -> bool {
+        self.latest.is_some()
+    }
 }
 
 /// One sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
@@ -1435,11 +1488,11 @@ fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t800: T = t798 + t799;
     let t801: T = t772 * t727;
     let t802: T = t800 + t801;
-    let t803: T = T::literal(3.2237134e-5, 3.223713347353119e-5);
+    let t803: T = T::literal(7.54889e-5, 7.54889004534183e-5);
     let t804: T = t777 + t803;
-    let t805: T = T::literal(4.955116e-5, 4.95511590866445e-5);
+    let t805: T = T::literal(7.460109e-6, 7.460108922287483e-6);
     let t806: T = t792 + t805;
-    let t807: T = T::literal(1.4895588e-7, 1.4895587640053928e-7);
+    let t807: T = T::literal(4.6569415e-8, 4.6569416161987e-8);
     let t808: T = t802 + t807;
     let t809: T = firmware::bounds::at_least(t668, t11);
     let t810: T = firmware::bounds::at_least(t674, t11);
@@ -2031,11 +2084,11 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t578: T = t576 + t577;
     let t579: T = t550 * t505;
     let t580: T = t578 + t579;
-    let t581: T = T::literal(3.2237134e-5, 3.223713347353119e-5);
+    let t581: T = T::literal(7.54889e-5, 7.54889004534183e-5);
     let t582: T = t555 + t581;
-    let t583: T = T::literal(4.955116e-5, 4.95511590866445e-5);
+    let t583: T = T::literal(7.460109e-6, 7.460108922287483e-6);
     let t584: T = t570 + t583;
-    let t585: T = T::literal(1.4895588e-7, 1.4895587640053928e-7);
+    let t585: T = T::literal(4.6569415e-8, 4.6569416161987e-8);
     let t586: T = t580 + t585;
     let t587: T = firmware::bounds::at_least(t446, t19);
     let t588: T = firmware::bounds::at_least(t452, t19);
@@ -2044,12 +2097,12 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
 }
 
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
-pub const KIND: &str = "map";
+pub const KIND: &str = "ekf_box";
 
-/// This design's observer: the map alone ([`MapObserver`]).
-pub type Observer = MapObserver;
+/// This design's observer: the EKF from the centre of the state box ([`BoxEkfObserver`]).
+pub type Observer = BoxEkfObserver;
 
 /// A fresh [`Observer`], holding no sample yet.
 pub const fn observer() -> Observer {
-    MapObserver::new()
+    BoxEkfObserver::new()
 }

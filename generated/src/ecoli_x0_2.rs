@@ -60,7 +60,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["g/L", "g/(L h)"];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 2] = [("map", 113), ("ekf", 1286)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 2] = [("map", 113), ("ekf_box", 1286)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -986,7 +986,7 @@ pub const COVARIANCE: usize = 6;
 
 /// The EKF's `Q` diagonal as `gen` chose it (f64): each state's process-noise variance per sample
 /// period, in its unit squared ([`STATE_UNITS`]).
-pub const EKF_Q: [f64; STATES] = [1.7890031952986084e-7, 1.8721362696771968e-7, 1.5716330735035282e-8];
+pub const EKF_Q: [f64; STATES] = [1.9341718830239548e-7, 1.8408640680958503e-7, 1.1756116024030325e-8];
 
 /// This design's extended Kalman filter, written out for its size by `gen`: the library's
 /// [`firmware::Ekf`] over [`Discrete`] ([`reference_ekf`], same constants), with each sample as
@@ -1016,7 +1016,7 @@ impl<T: Scalar + Maths> Ekf<T> {
     pub fn new() -> Self {
         Ekf {
             x: [T::literal(2.0, 2.0), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-            p: [T::literal(1.1735072, 1.1735072244358862), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(4.009979, 4.009978952231047), T::literal(0.0, 0.0), T::literal(0.042352118, 0.042352118356681026)],
+            p: [T::literal(1.6277038, 1.6277038134956918), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(3.3963149, 3.3963149562743182), T::literal(0.0, 0.0), T::literal(0.03192519, 0.031925189503478675)],
         }
     }
 
@@ -1068,11 +1068,64 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
     firmware::Ekf::new(
         firmware::Rk4::new(Plant, T::literal(0.2, 0.2)),
         [T::literal(2.0, 2.0), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-        [[T::literal(1.1735072, 1.1735072244358862), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(4.009979, 4.009978952231047), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.042352118, 0.042352118356681026)]],
-        [[T::literal(1.7890032e-7, 1.7890031952986084e-7), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(1.8721363e-7, 1.8721362696771968e-7), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(1.5716331e-8, 1.5716330735035282e-8)]],
+        [[T::literal(1.6277038, 1.6277038134956918), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(3.3963149, 3.3963149562743182), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.03192519, 0.031925189503478675)]],
+        [[T::literal(1.934172e-7, 1.9341718830239548e-7), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(1.840864e-7, 1.8408640680958503e-7), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(1.1756116e-8, 1.1756116024030325e-8)]],
         [T::literal(0.1, 0.1), T::literal(20.0, 20.0)],
     )
     .with_bounds([T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(f32::INFINITY, f64::INFINITY), T::literal(f32::INFINITY, f64::INFINITY), T::literal(f32::INFINITY, f64::INFINITY)])
+}
+
+/// The EKF from the centre of the state box ([`Ekf`], the same filter and constants) with the
+/// observers' interface: `push` takes a sample, `estimate` gives the targets of the latest accepted
+/// one (each `Inside`: the filter does not saturate), `reset` starts again. It has an estimate from
+/// the first accepted sample on; a refused sample keeps the previous one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BoxEkfObserver {
+    filter: Ekf<f32>,
+    latest: Option<[Estimate<f32>; TARGETS]>,
+}
+
+impl Default for BoxEkfObserver {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl BoxEkfObserver {
+    /// A fresh observer (the filter at its start), holding no sample yet.
+    pub const fn new() -> Self {
+        BoxEkfObserver {
+            filter: Ekf { x: [2.0, 2.5, 0.15], p: [1.6277038, 0.0, 0.0, 3.3963149, 0.0, 0.03192519] },
+            latest: None,
+        }
+    }
+
+    /// Takes the sample `(y, u)`: [`Ekf::push`], then the targets of its estimate `x̂(k|k)`.
+    pub fn push(&mut self, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+        let x = self.filter.push(&y, &u)?;
+        let values = targets(&x, &u);
+        let mut latest = [Estimate { value: 0.0, saturation: firmware::Saturation::Inside }; TARGETS];
+        for (e, value) in latest.iter_mut().zip(values) {
+            e.value = value;
+        }
+        self.latest = Some(latest);
+        Ok(())
+    }
+
+    /// The targets of the latest accepted sample; `None` before the first.
+    pub fn estimate(&self) -> Option<[Estimate<f32>; TARGETS]> {
+        self.latest
+    }
+
+    /// Back to the start: the filter at the box centre, no estimate.
+    pub fn reset(&mut self) {
+        *self = Self::new();
+    }
+
+    /// Whether it has an estimate.
+    pub fn is_ready(&self) -> bool {
+        self.latest.is_some()
+    }
 }
 
 /// One sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
@@ -1881,11 +1934,11 @@ fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t800: T = t798 + t799;
     let t801: T = t772 * t727;
     let t802: T = t800 + t801;
-    let t803: T = T::literal(1.7890032e-7, 1.7890031952986084e-7);
+    let t803: T = T::literal(1.934172e-7, 1.9341718830239548e-7);
     let t804: T = t777 + t803;
-    let t805: T = T::literal(1.8721363e-7, 1.8721362696771968e-7);
+    let t805: T = T::literal(1.840864e-7, 1.8408640680958503e-7);
     let t806: T = t792 + t805;
-    let t807: T = T::literal(1.5716331e-8, 1.5716330735035282e-8);
+    let t807: T = T::literal(1.1756116e-8, 1.1756116024030325e-8);
     let t808: T = t802 + t807;
     let t809: T = firmware::bounds::at_least(t668, t11);
     let t810: T = firmware::bounds::at_least(t674, t11);
@@ -2477,11 +2530,11 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t578: T = t576 + t577;
     let t579: T = t550 * t505;
     let t580: T = t578 + t579;
-    let t581: T = T::literal(1.7890032e-7, 1.7890031952986084e-7);
+    let t581: T = T::literal(1.934172e-7, 1.9341718830239548e-7);
     let t582: T = t555 + t581;
-    let t583: T = T::literal(1.8721363e-7, 1.8721362696771968e-7);
+    let t583: T = T::literal(1.840864e-7, 1.8408640680958503e-7);
     let t584: T = t570 + t583;
-    let t585: T = T::literal(1.5716331e-8, 1.5716330735035282e-8);
+    let t585: T = T::literal(1.1756116e-8, 1.1756116024030325e-8);
     let t586: T = t580 + t585;
     let t587: T = firmware::bounds::at_least(t446, t19);
     let t588: T = firmware::bounds::at_least(t452, t19);

@@ -224,12 +224,12 @@ pub fn estimate(
     }
     let mut rows = recording::RowReader::open(design, input)?;
     // A started observer needs every state as a target: say so before fitting anything.
-    if let (ObserverKind::Corrected | ObserverKind::Ekf, Err(why)) =
+    if let (ObserverKind::Corrected | ObserverKind::EkfMap, Err(why)) =
         (kind, crate::observers::corrected::state_targets(design))
     {
         return Err(crate::observers::recorded::RecordedError::Unavailable {
             design: design.name.clone(),
-            kind: if kind == ObserverKind::Ekf { "ekf" } else { "corrected" },
+            kind: kind.name(),
             why,
         }
         .into());

@@ -108,7 +108,8 @@ enum Command {
         #[arg(long, value_name = "FILE")]
         output: PathBuf,
         /// The observer: `auto` (default) is the design's `observer()`, the kind `gen` chose; `map`,
-        /// `corrected` or `ekf` (started by the map) ask for one.
+        /// `corrected`, `ekf_map` (the EKF started by the map) or `ekf_box` (from the box centre) ask
+        /// for one.
         #[arg(long, value_enum, default_value = "auto")]
         kind: KindArg,
         /// The fitted design `gen` saved (design.json in its report folder). Default: the checkout's
@@ -136,7 +137,12 @@ enum KindArg {
     Auto,
     Map,
     Corrected,
-    Ekf,
+    /// The EKF started by the map.
+    #[value(name = "ekf_map")]
+    EkfMap,
+    /// The EKF from the centre of the state box.
+    #[value(name = "ekf_box")]
+    EkfBox,
 }
 
 /// Which design: a shipped one by name, or any spec file.
@@ -397,7 +403,8 @@ fn estimate(
         KindArg::Auto => spec::ObserverKind::Auto,
         KindArg::Map => spec::ObserverKind::Map,
         KindArg::Corrected => spec::ObserverKind::Corrected,
-        KindArg::Ekf => spec::ObserverKind::Ekf,
+        KindArg::EkfMap => spec::ObserverKind::EkfMap,
+        KindArg::EkfBox => spec::ObserverKind::EkfBox,
     };
     let bar = progress_bar(&design);
     let how = commands::Estimation {

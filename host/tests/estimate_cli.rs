@@ -115,7 +115,7 @@ fn paper_scenario_round_trip_matches_the_library() {
 
 #[test]
 fn runs_restart_the_observer_and_refused_samples_leave_no_trace() {
-    for kind in ["map", "corrected", "ekf"] {
+    for kind in ["map", "corrected", "ekf_map"] {
         restart_and_refusal(kind);
     }
 }
@@ -446,7 +446,7 @@ fn a_kind_the_design_cannot_have_is_refused_before_any_fit_and_nothing_is_writte
     let dir = scratch("no-kind");
     let (input, output) = (dir.join("in.csv"), dir.join("out.csv"));
     std::fs::write(&input, "X_meas,L\n0.5,10\n").unwrap();
-    for kind in ["corrected", "ekf"] {
+    for kind in ["corrected", "ekf_map"] {
         let out = host(&[
             "estimate",
             "--design",

@@ -101,8 +101,8 @@ impl Kind {
         match self {
             Kind::Map => "map",
             Kind::Corrected => "corrected",
-            Kind::StartedEkf => "ekf_started",
-            Kind::Ekf => "ekf",
+            Kind::StartedEkf => "ekf_map",
+            Kind::Ekf => "ekf_box",
         }
     }
 
@@ -167,6 +167,15 @@ pub fn chosen_kind(name: &str) -> Option<Kind> {
         };
     }
     for_each_started_observer!(started);
+    // The EKF from the box centre, which every design the host can filter has.
+    macro_rules! boxed {
+        ($design:ident) => {
+            if stringify!($design) == name && generated::$design::KIND == "ekf_box" {
+                chosen = Some(Kind::Ekf);
+            }
+        };
+    }
+    generated::for_each_design!(boxed);
     chosen
 }
 

@@ -17,6 +17,10 @@ fn learning_sets_follow_the_formula() {
 
 #[test]
 fn p_equal_zero_is_a_legitimate_state() {
+    // P = 0 starts half the learning runs, and it is the bound every filter projects P onto
+    // (`[model.bounds]`): the model and its Jacobian must be finite there. The death term reads
+    // `exp(-k_p/max(P, 0.001))`, whose derivative in P is 0 below 0.001; `exp(-k_p/P)` itself would
+    // give 0·∞ = NaN in the Jacobian at P = 0.
     let design = load_relative("host/specs/ecoli_x0_2.toml");
     let model = &design.model;
     let mut environment = Vec::new();
@@ -24,10 +28,24 @@ fn p_equal_zero_is_a_legitimate_state() {
     model.derivative(&[2.0, 3.0, 0.0], &[], &mut environment, &mut dx);
     assert!(dx.iter().all(|v| v.is_finite()), "{dx:?}");
     let death = environment[model.scope().iter().position(|n| *n == "death").unwrap()];
-    assert_eq!(death, 0.0, "k_d exp(-k_p/P) at P = 0 is its limit 0 in f64");
-    // The same limit in f32 with the firmware's maths library.
-    assert_eq!(libm::expf(-0.5f32 / 0.0f32), 0.0);
-    assert_eq!(libm::exp(-0.5f64 / 0.0f64), 0.0);
+    // k_d exp(-500): 7e-219, zero for every purpose (P changes by y_p mu X ~ 0.04 g/L/h).
+    assert!((0.0..1e-200).contains(&death), "{death}");
+    let code = host::plant::ModelCode::new(&design).unwrap();
+    for p in [0.0, 1e-3, 0.5] {
+        let (f, jacobian) = code.derivative(&[2.0, 3.0, p], &[], &mut Vec::new());
+        assert!(
+            f.iter().chain(&jacobian).all(|v: &f64| v.is_finite()),
+            "at P = {p}: {f:?} {jacobian:?}"
+        );
+    }
+    // Without the max, the Jacobian at P = 0 is not finite: the change above is what makes it so.
+    let text = std::fs::read_to_string(integration_tests::workspace_root().join("host/specs/ecoli_x0_2.toml"))
+        .unwrap()
+        .replace("k_d*exp(-k_p/max(P, 0.001))", "k_d*exp(-k_p/P)");
+    let unguarded = integration_tests::design("ecoli_x0_2", &text);
+    let code = host::plant::ModelCode::new(&unguarded).unwrap();
+    let (_, jacobian) = code.derivative(&[2.0, 3.0, 0.0], &[], &mut Vec::new());
+    assert!(jacobian.iter().any(|v: &f64| !v.is_finite()), "{jacobian:?}");
 }
 
 #[test]

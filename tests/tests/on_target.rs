@@ -268,7 +268,7 @@ fn every_observer_on_the_emulated_cortex_m4f() {
     let filters = all
         .filters
         .iter()
-        .map(|(name, filter)| (name, "ekf", filter.phases().unwrap().steady));
+        .map(|(name, filter)| (name, "ekf_box", filter.phases().unwrap().steady));
     for (name, kind, steady) in observers.chain(filters) {
         let measured = on_target::spread(&steady).1 as f64;
         let &(_, prediction) = predicted[name.as_str()]

@@ -29,7 +29,7 @@ fn example_1_passes_every_gate_and_each_gate_bites() {
         matches!(&gates[..], [Gate::EkfBetter { target: a, .. }, Gate::EkfBetter { target: b, .. }] if a == "x1" && b == "x2"),
         "{gates:?}"
     );
-    comparison.chosen.0 = host::spec::ObserverKind::Ekf;
+    comparison.chosen.0 = host::spec::ObserverKind::EkfMap;
 
     // A learning range cut to [-1.5, 1.5] on x1 leaves more than 1 % of the validation windows (x1
     // spans about [-2.3, 2.3]) outside; cut to the range seen it leaves none.
@@ -70,7 +70,7 @@ fn example_1_passes_every_gate_and_each_gate_bites() {
 /// budget no kind fits in, is an error naming the field.
 #[test]
 fn the_observer_kind_is_chosen_within_the_instruction_budget() {
-    use host::spec::ObserverKind::{Auto, Corrected, Ekf, Map};
+    use host::spec::ObserverKind::{Auto, Corrected, EkfMap, Map};
     let (mut design, result, comparison) = example_1();
     let spreads: Vec<f64> = result
         .targets
@@ -87,7 +87,7 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
     };
     // Map 126, corrected 149, map-started EKF 249 (checked against the chip in `on_target`).
     assert_eq!(
-        [predicted("map"), predicted("corrected"), predicted("ekf_started")],
+        [predicted("map"), predicted("corrected"), predicted("ekf_map")],
         [126.0, 149.0, 249.0]
     );
     let choose = |design: &host::spec::Design| host::observers::choose(design, &comparison.observers, &spreads);
@@ -107,12 +107,12 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
         error.contains("budget.instructions") && error.contains("125"),
         "{error}"
     );
-    design.observer = Ekf;
+    design.observer = EkfMap;
     design.budget.instructions = Some(200);
     let error = choose(&design).unwrap_err().to_string();
     assert!(error.contains("observer.kind") && error.contains("~249"), "{error}");
     design.budget.instructions = Some(250);
-    assert_eq!(choose(&design).unwrap().0, Ekf);
+    assert_eq!(choose(&design).unwrap().0, EkfMap);
 }
 
 #[test]

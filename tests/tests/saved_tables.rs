@@ -46,7 +46,8 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         ObserverKind::Auto,
         ObserverKind::Map,
         ObserverKind::Corrected,
-        ObserverKind::Ekf,
+        ObserverKind::EkfMap,
+        ObserverKind::EkfBox,
     ] {
         let out = scratch.join(format!("{kind:?}.csv"));
         let how = Estimation {
@@ -118,10 +119,17 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         d::StartedEkfObserver::estimate,
         d::StartedEkfObserver::new(),
     );
+    let box_ekf = chip(
+        &rows,
+        |o: &mut d::BoxEkfObserver, y| o.push(y, []).is_ok(),
+        d::BoxEkfObserver::estimate,
+        d::BoxEkfObserver::new(),
+    );
     for (kind, expected) in [
         (ObserverKind::Map, map),
         (ObserverKind::Corrected, corrected),
-        (ObserverKind::Ekf, started_ekf),
+        (ObserverKind::EkfMap, started_ekf),
+        (ObserverKind::EkfBox, box_ekf),
     ] {
         let out = scratch.join(format!("{kind:?}-f32.csv"));
         let how = Estimation {

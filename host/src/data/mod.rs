@@ -133,9 +133,33 @@ pub fn validation_set(design: &Design) -> Result<DataSet, SpecError> {
     random_runs(design, &design.validation, "validation", None)
 }
 
-/// The tuning set: runs drawn as the validation set's, from `[tuning]`'s own seed.
+/// Runs from the scenario's initial state in the tuning set ([`tuning_set`]).
+pub const SCENARIO_TUNING_RUNS: usize = 16;
+
+/// The tuning set: runs drawn as the validation set's, from `[tuning]`'s own seed; then, when the
+/// spec declares a `[scenario]`, [`SCENARIO_TUNING_RUNS`] more from the scenario's initial state
+/// (its samples, other inputs, noise and drawn plants than the reported scenario's, from a stream of
+/// the tuning seed), so that every tuning criterion and `auto` see the starts the spec names, where
+/// a filter from the box centre may converge slowly, and not only the random ones.
 pub fn tuning_set(design: &Design) -> Result<DataSet, SpecError> {
-    random_runs(design, &design.tuning, "tuning", None)
+    let mut set = random_runs(design, &design.tuning, "tuning", None)?;
+    if let Some(scenario) = &design.scenario {
+        let mut rng = ChaCha8Rng::seed_from_u64(design.tuning.seed);
+        rng.set_stream(1); // the random runs read stream 0
+        for _ in 0..SCENARIO_TUNING_RUNS {
+            let drawn = uncertain::draw_plant(&design.model, &mut rng);
+            let plant = drawn.as_ref().unwrap_or(&design.model);
+            set.runs.push(simulate_plant(
+                design,
+                plant,
+                &scenario.x0,
+                scenario.samples,
+                &mut rng,
+                "tuning",
+            )?);
+        }
+    }
+    Ok(set)
 }
 
 /// `settings.trajectories` runs, each drawing its plant (unless `fixed` gives it, or no parameter is
@@ -462,8 +486,8 @@ mod tests {
     }
 
     /// The data of designs without uncertain parameters, bit for bit: the fingerprints of the learning,
-    /// validation and tuning sets and of the scenario run (when there is one), recorded on commit
-    /// 8afa2e3, before parameters could have ranges. A change of any number, or of the order in which
+    /// validation and tuning sets (its runs from random starts) and of the scenario run (when there is
+    /// one), recorded on commit 8afa2e3, before parameters could have ranges. A change of any number, or of the order in which
     /// the seeded generator is drawn from, changes them.
     #[test]
     fn data_of_designs_without_uncertainty_are_unchanged() {
@@ -506,15 +530,33 @@ mod tests {
         ];
         for (name, text, expected) in specs {
             let design = crate::spec::parse(Path::new(name), text).unwrap();
-            let sets = [
-                learning_set(&design).unwrap(),
-                validation_set(&design).unwrap(),
-                tuning_set(&design).unwrap(),
-            ];
+            let mut tuning = tuning_set(&design).unwrap();
+            // The runs from the scenario's start, added since: new runs after the recorded ones.
+            let from_scenario = tuning.runs.split_off(design.tuning.trajectories);
+            let sets = [learning_set(&design).unwrap(), validation_set(&design).unwrap(), tuning];
             let mut prints: Vec<u64> = sets.iter().map(fingerprint).collect();
+            assert_eq!(
+                from_scenario.len(),
+                if design.scenario.is_some() {
+                    SCENARIO_TUNING_RUNS
+                } else {
+                    0
+                },
+                "{name}"
+            );
             if let Some(s) = &design.scenario {
                 let mut rng = ChaCha8Rng::seed_from_u64(s.seed);
                 let run = simulate_run(&design, &s.x0, s.samples, &mut rng, "scenario").unwrap();
+                // Each starts where the scenario does, with noise of its own (not the scenario's).
+                for tuning_run in &from_scenario {
+                    assert_eq!(tuning_run.states.iter().next().unwrap(), &s.x0[..], "{name}");
+                    assert_eq!(tuning_run.measurements.len(), s.samples, "{name}");
+                    assert_ne!(
+                        tuning_run.measurements.iter().next(),
+                        run.measurements.iter().next(),
+                        "{name}"
+                    );
+                }
                 prints.push(fingerprint(&DataSet {
                     runs: vec![run],
                     horizon: 1,

@@ -183,16 +183,19 @@ pub fn model_source(design: &Design, code: &ModelCode, observers: &Observers<'_>
     }
     let (ty, what) = match observers.kind {
         ObserverKind::Corrected => ("CorrectedObserver", "the model-corrected map ([`CorrectedObserver`])"),
-        ObserverKind::Ekf => (
+        ObserverKind::EkfMap => (
             "StartedEkfObserver",
             "the EKF started by the map ([`StartedEkfObserver`])",
+        ),
+        ObserverKind::EkfBox => (
+            "BoxEkfObserver",
+            "the EKF from the centre of the state box ([`BoxEkfObserver`])",
         ),
         ObserverKind::Map | ObserverKind::Auto => ("MapObserver", "the map alone ([`MapObserver`])"),
     };
     let kind = match observers.kind {
-        ObserverKind::Corrected => "corrected",
-        ObserverKind::Ekf => "ekf",
-        ObserverKind::Map | ObserverKind::Auto => "map",
+        ObserverKind::Auto => "map",
+        other => other.name(),
     };
     write!(
         text,
@@ -603,6 +606,22 @@ fn model_and_ekf(design: &Design, code: &ModelCode, ekf: Option<&EkfConstants>) 
             .replace("{BOUNDS}", &bounds_call(&code.bounds)?)
     )
     .ok();
+    let f32_list = |what: &str, values: &[f64]| -> Result<String, EmitError> {
+        let entries = values
+            .iter()
+            .enumerate()
+            .map(|(i, v)| super::f32_literal(&format!("{what}[{i}]"), *v))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(list(&entries))
+    };
+    write!(
+        w,
+        "{}",
+        BOX_EKF_TEMPLATE
+            .replace("{X0_F32}", &f32_list("EKF x0", &ekf.x0)?)
+            .replace("{P0_F32}", &f32_list("EKF P0", &upper)?)
+    )
+    .ok();
     writeln!(
         w,
         "\n/// One sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`."
@@ -637,6 +656,62 @@ fn model_and_ekf(design: &Design, code: &ModelCode, ekf: Option<&EkfConstants>) 
 }
 
 /// The design's filter type around its written-out sample (`{…}` filled in by [`model_source`]).
+/// [`Ekf`] as an observer with the map's interface (`{…}` filled in by [`model_and_ekf`]).
+const BOX_EKF_TEMPLATE: &str = r#"
+/// The EKF from the centre of the state box ([`Ekf`], the same filter and constants) with the
+/// observers' interface: `push` takes a sample, `estimate` gives the targets of the latest accepted
+/// one (each `Inside`: the filter does not saturate), `reset` starts again. It has an estimate from
+/// the first accepted sample on; a refused sample keeps the previous one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BoxEkfObserver {
+    filter: Ekf<f32>,
+    latest: Option<[Estimate<f32>; TARGETS]>,
+}
+
+impl Default for BoxEkfObserver {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl BoxEkfObserver {
+    /// A fresh observer (the filter at its start), holding no sample yet.
+    pub const fn new() -> Self {
+        BoxEkfObserver {
+            filter: Ekf { x: {X0_F32}, p: {P0_F32} },
+            latest: None,
+        }
+    }
+
+    /// Takes the sample `(y, u)`: [`Ekf::push`], then the targets of its estimate `x̂(k|k)`.
+    pub fn push(&mut self, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+        let x = self.filter.push(&y, &u)?;
+        let values = targets(&x, &u);
+        let mut latest = [Estimate { value: 0.0, saturation: firmware::Saturation::Inside }; TARGETS];
+        for (e, value) in latest.iter_mut().zip(values) {
+            e.value = value;
+        }
+        self.latest = Some(latest);
+        Ok(())
+    }
+
+    /// The targets of the latest accepted sample; `None` before the first.
+    pub fn estimate(&self) -> Option<[Estimate<f32>; TARGETS]> {
+        self.latest
+    }
+
+    /// Back to the start: the filter at the box centre, no estimate.
+    pub fn reset(&mut self) {
+        *self = Self::new();
+    }
+
+    /// Whether it has an estimate.
+    pub fn is_ready(&self) -> bool {
+        self.latest.is_some()
+    }
+}
+"#;
+
 const EKF_TEMPLATE: &str = r#"
 /// Entries of the EKF's covariance kept: its upper triangle, row by row (it is symmetric).
 pub const COVARIANCE: usize = {TRIANGLE};

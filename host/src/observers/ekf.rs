@@ -13,7 +13,9 @@
 //! ```
 //!
 //! `θ` minimises the [score](super::score) (pooled RMSE and the 95th percentile over runs, per
-//! target, over its spread) on the tuning runs: first on an isotropic decade grid (`a_i = a`,
+//! target, over its spread) on the tuning runs from random starts (the filter that starts at the
+//! box centre is tuned for starts anywhere in the box; `auto` judges it with the others on the runs
+//! from the scenario's start too): first on an isotropic decade grid (`a_i = a`,
 //! `b_i = b`, `a ∈ {−8…0}`, `b ∈ {−3…0}`), then by Nelder–Mead (`argmin`) from the
 //! [`STARTS`] best grid points, each coordinate free. Deterministic: a fixed grid, fixed starts and
 //! iterations, the best by cost and the first of equals. The map-started EKF shares `Q` (one filter
@@ -48,6 +50,8 @@ pub struct Tuned {
     pub grid_cost: f64,
     /// Score evaluations, grid and search.
     pub evaluations: u64,
+    /// The tuning runs it was chosen on.
+    pub runs: usize,
 }
 
 /// Grid points the search starts from.
@@ -238,6 +242,52 @@ pub fn rmse(code: &ModelCode, constants: &EkfConstants, x0: &[f64], data: &DataS
     )
 }
 
+/// The EKF from `constants.x0` (the box centre) over `run`, in `T`, step for step the generated
+/// `Ekf::push` (the written-out programs `filter`): per sample the targets of `x̂(k|k)`, or `None`
+/// where the sample is refused (a non-finite output or input, or a step whose result is not finite,
+/// which is then not taken).
+pub fn estimate_box<T: firmware::Scalar + firmware::Maths>(
+    filter: &crate::plant::kalman::FilterCode,
+    constants: &EkfConstants,
+    run: &Run,
+    code: &ModelCode,
+) -> Vec<Option<Vec<T>>> {
+    let nx = constants.x0.len();
+    let mut x: Vec<T> = constants.x0.iter().map(|&v| T::literal(v as f32, v)).collect();
+    let mut p: Vec<T> = (0..nx)
+        .flat_map(|r| (r..nx).map(move |c| (r, c)))
+        .map(|(r, c)| {
+            if r == c {
+                T::literal(constants.p0[r] as f32, constants.p0[r])
+            } else {
+                T::ZERO
+            }
+        })
+        .collect();
+    let finite = |x: &[T], p: &[T]| x.iter().chain(p).all(|v| v.is_finite());
+    let mut scratch = Vec::new();
+    let mut out = Vec::with_capacity(run.measurements.len());
+    for (y, u) in run.measurements.iter().zip(run.inputs.iter()) {
+        let u: Vec<T> = u.iter().map(|&v| T::literal(v as f32, v)).collect();
+        if !u.iter().all(|v| v.is_finite()) {
+            out.push(None);
+            continue;
+        }
+        let y: Vec<T> = y.iter().map(|&v| T::literal(v as f32, v)).collect();
+        let measured = y.iter().all(|v| v.is_finite());
+        let (estimate, next_x, next_p) = filter.run(&x, &p, measured.then_some(y.as_slice()), &u, &mut scratch);
+        let taken = finite(&next_x, &next_p);
+        if taken {
+            (x, p) = (next_x, next_p);
+        }
+        out.push(match estimate {
+            Some(estimate) if taken => Some(code.targets(&estimate, &u, &mut scratch)),
+            _ => None,
+        });
+    }
+    out
+}
+
 /// The EKF started by the map (the generated `StartedEkf` in `firmware::Started`, step for step,
 /// [`super::started::run`]) in `T`: at sample `first` the map's estimate, from which `(x, P)` is
 /// predicted with `P` = `p0` on the diagonal; then `filter`'s measured samples.
@@ -408,6 +458,7 @@ pub fn tune(
         cost,
         grid_cost,
         evaluations: count.into_inner(),
+        runs: tuning.runs.len(),
     })
 }
 

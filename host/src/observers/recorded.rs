@@ -57,6 +57,14 @@ pub fn estimate(
             out.extend(map);
             continue;
         }
+        if kind == ObserverKind::EkfBox {
+            let boxed = match precision {
+                Precision::F64 => from_box::<f64>(design, tables, code, segment)?,
+                Precision::F32 => from_box::<f32>(design, tables, code, segment)?,
+            };
+            out.extend(boxed);
+            continue;
+        }
         let followed = match precision {
             Precision::F64 => follow::<f64>(design, tables, code, kind, &map, segment)?,
             Precision::F32 => follow::<f32>(design, tables, code, kind, &map, segment)?,
@@ -64,6 +72,39 @@ pub fn estimate(
         out.extend(followed);
     }
     Ok(out)
+}
+
+/// The EKF from the box centre over one run, in `T`, as `BoxEkfObserver` runs it: an estimate from
+/// the first accepted sample, refused samples marked.
+fn from_box<T: firmware::Scalar + firmware::Maths + Into<f64>>(
+    design: &Design,
+    tables: &Tables,
+    code: &ModelCode,
+    segment: &[Row],
+) -> Result<Vec<EstimateRow>, RecordedError> {
+    let constants = tables.ekf.as_ref().ok_or_else(|| RecordedError::Unavailable {
+        design: design.name.clone(),
+        kind: "ekf_box",
+        why: "the model is beyond the sizes the host filters".to_owned(),
+    })?;
+    let run = Run {
+        states: Rows::new(0),
+        inputs: segment.iter().map(|r| r.u.clone()).collect(),
+        measurements: segment.iter().map(|r| r.y.clone()).collect(),
+        targets: Rows::new(tables.maps.len()),
+        parameters: Vec::new(),
+    };
+    let filter = crate::plant::kalman::filter_code(code, constants);
+    Ok(ekf::estimate_box::<T>(&filter, constants, &run, code)
+        .into_iter()
+        .map(|row| match row {
+            Some(values) => EstimateRow {
+                status: Status::Ok,
+                targets: values.into_iter().map(|v| (v.into(), Saturation::Inside)).collect(),
+            },
+            None => EstimateRow::without(Status::Refused),
+        })
+        .collect())
 }
 
 /// The observer `kind` (corrected or map-started EKF) over one run, in `T`, started by the map's rows
@@ -119,7 +160,7 @@ fn follow<T: firmware::Scalar + firmware::Maths + Into<f64>>(
         _ => {
             let (Some(constants), Some((p0, state_targets))) = (&tables.ekf, &tables.started) else {
                 return Err(unavailable(
-                    "ekf",
+                    "ekf_map",
                     "it needs every state as a target and a model the host can filter".to_owned(),
                 ));
             };

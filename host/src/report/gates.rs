@@ -11,7 +11,8 @@
 //!   [`WEAK_FRACTION`] of the target's spread: it barely beats
 //!   predicting the mean, and the target may not be observable from these measurements over N.
 //! * [`Gate::EkfBetter`]: the chosen observer's validation RMSE is more than [`EKF_FACTOR`] times the
-//!   design's EKF's (either start) on some target: the EKF is the better choice for this system. An
+//!   design's best other EKF's (`ekf_box` or `ekf_map`, whichever is not the chosen kind) on some
+//!   target: that EKF is the better choice for this system. An
 //!   EKF the spec's `[budget] instructions` does not allow (as [`crate::search::cost`] predicts it)
 //!   is not a choice, so it does not count.
 
@@ -70,7 +71,7 @@ pub enum Gate {
         chosen: &'static str,
         /// Its validation RMSE.
         rmse: f64,
-        /// The better EKF's (`ekf` from the box centre, or `ekf_started`) kind.
+        /// The better EKF's (`ekf_box` from the box centre, or `ekf_map`) kind.
         ekf: &'static str,
         /// Its validation RMSE.
         ekf_rmse: f64,
@@ -115,8 +116,7 @@ impl fmt::Display for Gate {
             Gate::EkfBetter { target, chosen, rmse, ekf, ekf_rmse } => write!(
                 f,
                 "target `{target}`: the chosen observer (`{chosen}`) has validation RMSE {rmse:.4}, more than {EKF_FACTOR} times \
-                 the EKF's (`{ekf}`: {ekf_rmse:.4}): the EKF is the better choice for this system (`[observer] kind = \"ekf\"`, \
-                 or `auto` with every state a target)"
+                 the EKF's (`{ekf}`: {ekf_rmse:.4}): the EKF is the better choice for this system (`[observer] kind = \"{ekf}\"`)"
             ),
         }
     }
@@ -181,13 +181,14 @@ pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) ->
                 _ => true,
             }
         };
-        let best_ekf = ["ekf", "ekf_started"]
+        // The best peer: either EKF within the budget, other than the kind chosen.
+        let best_ekf = ["ekf_box", "ekf_map"]
             .into_iter()
-            .filter(|kind| affordable(kind))
+            .filter(|&kind| kind != chosen && affordable(kind))
             .filter_map(|kind| rmse_of(kind).map(|v| (kind, v)))
             .min_by(|a, b| a.1.total_cmp(&b.1));
         if let (Some(rmse), Some((ekf, ekf_rmse))) = (rmse_of(chosen), best_ekf) {
-            if chosen != "ekf_started" && rmse > EKF_FACTOR * ekf_rmse {
+            if rmse > EKF_FACTOR * ekf_rmse {
                 failed.push(Gate::EkfBetter {
                     target: name,
                     chosen,

@@ -60,8 +60,8 @@ pub struct OnTarget {
 pub struct Measured {
     /// SHA-256 of `generated/src/<design>.rs` as measured.
     pub source_sha256: String,
-    /// By observer kind, as `report.json` names them (`"map"`, `"corrected"`, `"ekf_started"`,
-    /// `"ekf"`).
+    /// By observer kind, as `report.json` names them (`"map"`, `"corrected"`, `"ekf_map"`,
+    /// `"ekf_box"`).
     pub observers: BTreeMap<String, OnTarget>,
 }
 
@@ -93,8 +93,8 @@ pub const END: &str = "<!-- on-target:end -->";
 const ORDER: [(&str, &str); 4] = [
     ("map", "`map_observer()`"),
     ("corrected", "`CorrectedObserver`"),
-    ("ekf_started", "`StartedEkfObserver`"),
-    ("ekf", "`ekf()`"),
+    ("ekf_map", "`StartedEkfObserver`"),
+    ("ekf_box", "`ekf()`"),
 ];
 
 /// The figures as `report.md` shows them, by kind (as [`Measured::observers`]), between [`BEGIN`]
@@ -190,7 +190,7 @@ mod tests {
         Measured {
             source_sha256: source_hash("fn a() {}"),
             observers: BTreeMap::from([(
-                "ekf".to_owned(),
+                "ekf_box".to_owned(),
                 OnTarget {
                     instructions_median: 241,
                     instructions_max: 241,
@@ -212,7 +212,7 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         std::fs::write(
             dir.join("report.json"),
-            r#"{"observers": [{"kind": "map", "on_target": null}, {"kind": "ekf", "on_target": null}]}"#,
+            r#"{"observers": [{"kind": "map", "on_target": null}, {"kind": "ekf_box", "on_target": null}]}"#,
         )
         .unwrap();
         record(&dir, &sample()).unwrap();

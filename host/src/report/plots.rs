@@ -36,7 +36,7 @@ pub(crate) const SATURATED_LABEL: &str = "saturated (clamped to the learning ran
 fn kind_style(kind: &str) -> (RGBColor, Style, &'static str) {
     match kind {
         "map" => (ESTIMATE_COLOR, Style::Dots, "map F(Z)"),
-        "ekf" => (RGBColor(255, 127, 14), Style::Line, "EKF from x̂(0)"),
+        "ekf_box" => (RGBColor(255, 127, 14), Style::Line, "EKF from x̂(0)"),
         "corrected" => (RGBColor(44, 160, 44), Style::Line, "model-corrected map"),
         _ => (RGBColor(148, 103, 189), Style::Line, "EKF started by the map"),
     }

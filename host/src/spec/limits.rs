@@ -80,7 +80,10 @@ pub(super) fn check_budget(design: &Design) -> Result<(), SpecError> {
             Axis::Fixed(_) => 1.0,
         })
         .product();
-    let scenario = design.scenario.as_ref().map_or(0.0, |s| s.samples as f64);
+    // The scenario, and the tuning runs from its start (`data::SCENARIO_TUNING_RUNS`).
+    let scenario = design.scenario.as_ref().map_or(0.0, |s| {
+        (1 + crate::data::SCENARIO_TUNING_RUNS) as f64 * s.samples as f64
+    });
     let validation = design.validation.trajectories as f64 * design.validation.samples as f64;
     // The mismatch set: the validation runs again at every corner of the parameter box (none when
     // every parameter is known).

@@ -50,7 +50,7 @@ pub enum Normalisation {
 /// Which observer a design's `observer()` is (`[observer] kind`); the report judges every kind the
 /// design can have either way.
 #[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
+#[serde(rename_all = "snake_case")]
 pub enum ObserverKind {
     /// The best on the tuning runs by [`crate::observers::choose`]'s score (default).
     #[default]
@@ -59,8 +59,23 @@ pub enum ObserverKind {
     Map,
     /// The map corrected by the model ([`crate::observers::corrected`]).
     Corrected,
-    /// The EKF started at the map's first estimate.
-    Ekf,
+    /// The EKF started at the map's first estimate (`ekf_map`).
+    EkfMap,
+    /// The EKF started at the centre of the state box (`ekf_box`, the design's `ekf()`).
+    EkfBox,
+}
+
+impl ObserverKind {
+    /// Its name as users type it (spec, `--kind`) and as the report's rows name it.
+    pub fn name(self) -> &'static str {
+        match self {
+            ObserverKind::Auto => "auto",
+            ObserverKind::Map => "map",
+            ObserverKind::Corrected => "corrected",
+            ObserverKind::EkfMap => "ekf_map",
+            ObserverKind::EkfBox => "ekf_box",
+        }
+    }
 }
 
 /// Values of one state for the learning grid and the validation box.
@@ -235,8 +250,9 @@ pub struct Budget {
 pub struct Scenario {
     /// Initial state, in state order.
     pub x0: Vec<f64>,
-    /// Where observers that need an initial guess (the EKF) start, in state order (`observer_x0`;
-    /// default: the centre of the state box).
+    /// The paper's initial guess `x̂(0)` (`observer_x0`), in state order: the report adds the EKF's
+    /// scenario figure from there, beside the one from the box centre where the chip's `ekf()`
+    /// starts.
     pub observer_x0: Option<Vec<f64>>,
     /// Samples.
     pub samples: usize,

@@ -236,8 +236,8 @@ fn host_rows(
     let kind = match kind {
         Kind::Map => ObserverKind::Map,
         Kind::Corrected => ObserverKind::Corrected,
-        Kind::StartedEkf => ObserverKind::Ekf,
-        Kind::Ekf => return Err("the EKF from the box centre is not an `estimate` kind".into()),
+        Kind::StartedEkf => ObserverKind::EkfMap,
+        Kind::Ekf => ObserverKind::EkfBox,
     };
     recorded::estimate(&user.design, &user.tables, code, kind, precision, rows).map_err(|e| e.to_string())
 }
