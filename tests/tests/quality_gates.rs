@@ -21,8 +21,8 @@ fn example_1_passes_every_gate_and_each_gate_bites() {
     let (design, mut result, mut comparison) = example_1();
     assert_eq!(check(&design, &result, &comparison), Vec::new());
 
-    // The map as `observer()`: 0.2424 against the EKF's 0.0801 on x1 (3.0×) and 0.2870 against 0.1220
-    // on x2 (2.35×): both over 2×.
+    // The map as `observer()`: 0.2424 against the EKF from the box centre's 0.0676 on x1 (3.6×) and
+    // 0.2870 against 0.1080 on x2 (2.7×): both over 2×.
     comparison.chosen.0 = host::spec::ObserverKind::Map;
     let gates = check(&design, &result, &comparison);
     assert!(
@@ -57,7 +57,7 @@ fn example_1_passes_every_gate_and_each_gate_bites() {
     (map.r_min, map.r_max) = full;
 
     // An EKF the budget does not allow is no choice, so it does not count: Example 1's EKFs are
-    // predicted at ~241 (`ekf`) and ~249 (`ekf_started`) instructions.
+    // predicted at ~241 (`ekf_box`) and ~249 (`ekf_map`) instructions.
     comparison.chosen.0 = host::spec::ObserverKind::Map;
     let mut budgeted = design.clone();
     budgeted.budget.instructions = Some(200);

@@ -61,7 +61,7 @@ pub const STARTS: usize = 3;
 const ITERATIONS: u64 = 300;
 
 /// The range of each log-space coordinate of `θ`.
-const LOG_RANGE: (f64, f64) = (-12.0, 3.0);
+pub const LOG_RANGE: (f64, f64) = (-12.0, 3.0);
 
 /// Whether the host can run an EKF of this size.
 pub fn supported(code: &ModelCode) -> bool {
