@@ -13,10 +13,13 @@
 //! [`Design`] writes the dot products out as straight-line code.
 //!
 //! ```
-//! let mut observer = generated::vanderpol_sparse::observer();
+//! let mut observer = generated::vanderpol_sparse::observer(); // the kind `gen` chose (`KIND`)
 //! let (y, u) = ([0.0; generated::vanderpol_sparse::OUTPUTS], [0.0; generated::vanderpol_sparse::INPUTS]);
 //! observer.push(y, u).unwrap(); // every sample; a NaN or infinite one is refused
-//! assert!(observer.estimate().is_none()); // until HORIZON samples have arrived
+//! let _latest = observer.estimate(); // `None` until it has an estimate
+//! let mut map = generated::vanderpol_sparse::map_observer();
+//! map.push(y, u).unwrap();
+//! assert!(map.estimate().is_none()); // the map: until HORIZON samples have arrived
 //! ```
 
 use firmware::{Estimate, InverseTable, Knots, Maths, Sample, Scalar, TargetMap};

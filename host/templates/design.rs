@@ -13,10 +13,13 @@
 //! [`Design`] writes the dot products out as straight-line code.
 //!
 //! ```
-//! let mut observer = {{ crate_name }}::{{ name }}::observer();
+//! let mut observer = {{ crate_name }}::{{ name }}::observer(); // the kind `gen` chose (`KIND`)
 //! let (y, u) = ([0.0; {{ crate_name }}::{{ name }}::OUTPUTS], [0.0; {{ crate_name }}::{{ name }}::INPUTS]);
 //! observer.push(y, u).unwrap(); // every sample; a NaN or infinite one is refused
-//! assert!(observer.estimate().is_none()); // until HORIZON samples have arrived
+//! let _latest = observer.estimate(); // `None` until it has an estimate
+//! let mut map = {{ crate_name }}::{{ name }}::map_observer();
+//! map.push(y, u).unwrap();
+//! assert!(map.estimate().is_none()); // the map: until HORIZON samples have arrived
 //! ```
 
 use firmware::{Estimate, InverseTable, Knots, Maths, Sample, Scalar, TargetMap};
