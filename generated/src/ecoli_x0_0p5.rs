@@ -543,7 +543,7 @@ pub const COVARIANCE: usize = 6;
 
 /// The EKF's `Q` diagonal as `gen` chose it (f64): each state's process-noise variance per sample
 /// period, in its unit squared ([`STATE_UNITS`]).
-pub const EKF_Q: [f64; STATES] = [7.54889004534183e-5, 7.460108922287483e-6, 4.6569416161987e-8];
+pub const EKF_Q: [f64; STATES] = [7.471858978370539e-5, 6.06220688209056e-6, 5.175423470368401e-8];
 
 /// This design's extended Kalman filter, written out for its size by `gen`: the library's
 /// [`firmware::Ekf`] over [`Discrete`] ([`reference_ekf`], same constants), with each sample as
@@ -573,7 +573,7 @@ impl<T: Scalar + Maths> Ekf<T> {
     pub fn new() -> Self {
         Ekf {
             x: [T::literal(0.5, 0.5), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-            p: [T::literal(0.0015185641, 0.001518564022043125), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(1.1120771, 1.1120770821203032), T::literal(0.0, 0.0), T::literal(0.036313716, 0.03631371723491785)],
+            p: [T::literal(0.0015244159, 0.0015244159540483404), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(1.1085151, 1.1085151102145452), T::literal(0.0, 0.0), T::literal(0.032774616, 0.03277461471220947)],
         }
     }
 
@@ -625,8 +625,8 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
     firmware::Ekf::new(
         firmware::Rk4::new(Plant, T::literal(0.2, 0.2)),
         [T::literal(0.5, 0.5), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-        [[T::literal(0.0015185641, 0.001518564022043125), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(1.1120771, 1.1120770821203032), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.036313716, 0.03631371723491785)]],
-        [[T::literal(7.54889e-5, 7.54889004534183e-5), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(7.460109e-6, 7.460108922287483e-6), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(4.6569415e-8, 4.6569416161987e-8)]],
+        [[T::literal(0.0015244159, 0.0015244159540483404), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(1.1085151, 1.1085151102145452), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.032774616, 0.03277461471220947)]],
+        [[T::literal(7.471859e-5, 7.471858978370539e-5), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(6.062207e-6, 6.06220688209056e-6), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(5.1754235e-8, 5.175423470368401e-8)]],
         [T::literal(0.1, 0.1), T::literal(20.0, 20.0)],
     )
     .with_bounds([T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(f32::INFINITY, f64::INFINITY), T::literal(f32::INFINITY, f64::INFINITY), T::literal(f32::INFINITY, f64::INFINITY)])
@@ -652,7 +652,7 @@ impl BoxEkfObserver {
     /// A fresh observer (the filter at its start), holding no sample yet.
     pub const fn new() -> Self {
         BoxEkfObserver {
-            filter: Ekf { x: [0.5, 2.5, 0.15], p: [0.0015185641, 0.0, 0.0, 1.1120771, 0.0, 0.036313716] },
+            filter: Ekf { x: [0.5, 2.5, 0.15], p: [0.0015244159, 0.0, 0.0, 1.1085151, 0.0, 0.032774616] },
             latest: None,
         }
     }
@@ -1491,11 +1491,11 @@ fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t800: T = t798 + t799;
     let t801: T = t772 * t727;
     let t802: T = t800 + t801;
-    let t803: T = T::literal(7.54889e-5, 7.54889004534183e-5);
+    let t803: T = T::literal(7.471859e-5, 7.471858978370539e-5);
     let t804: T = t777 + t803;
-    let t805: T = T::literal(7.460109e-6, 7.460108922287483e-6);
+    let t805: T = T::literal(6.062207e-6, 6.06220688209056e-6);
     let t806: T = t792 + t805;
-    let t807: T = T::literal(4.6569415e-8, 4.6569416161987e-8);
+    let t807: T = T::literal(5.1754235e-8, 5.175423470368401e-8);
     let t808: T = t802 + t807;
     let t809: T = firmware::bounds::at_least(t668, t11);
     let t810: T = firmware::bounds::at_least(t674, t11);
@@ -2087,11 +2087,11 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t578: T = t576 + t577;
     let t579: T = t550 * t505;
     let t580: T = t578 + t579;
-    let t581: T = T::literal(7.54889e-5, 7.54889004534183e-5);
+    let t581: T = T::literal(7.471859e-5, 7.471858978370539e-5);
     let t582: T = t555 + t581;
-    let t583: T = T::literal(7.460109e-6, 7.460108922287483e-6);
+    let t583: T = T::literal(6.062207e-6, 6.06220688209056e-6);
     let t584: T = t570 + t583;
-    let t585: T = T::literal(4.6569415e-8, 4.6569416161987e-8);
+    let t585: T = T::literal(5.1754235e-8, 5.175423470368401e-8);
     let t586: T = t580 + t585;
     let t587: T = firmware::bounds::at_least(t446, t19);
     let t588: T = firmware::bounds::at_least(t452, t19);

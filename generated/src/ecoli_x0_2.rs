@@ -989,7 +989,7 @@ pub const COVARIANCE: usize = 6;
 
 /// The EKF's `Q` diagonal as `gen` chose it (f64): each state's process-noise variance per sample
 /// period, in its unit squared ([`STATE_UNITS`]).
-pub const EKF_Q: [f64; STATES] = [1.9341718830239548e-7, 1.8408640680958503e-7, 1.1756116024030325e-8];
+pub const EKF_Q: [f64; STATES] = [1.9352819363904035e-7, 1.8408529706444755e-7, 1.1776406553548216e-8];
 
 /// This design's extended Kalman filter, written out for its size by `gen`: the library's
 /// [`firmware::Ekf`] over [`Discrete`] ([`reference_ekf`], same constants), with each sample as
@@ -1019,7 +1019,7 @@ impl<T: Scalar + Maths> Ekf<T> {
     pub fn new() -> Self {
         Ekf {
             x: [T::literal(2.0, 2.0), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-            p: [T::literal(1.6277038, 1.6277038134956918), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(3.3963149, 3.3963149562743182), T::literal(0.0, 0.0), T::literal(0.03192519, 0.031925189503478675)],
+            p: [T::literal(1.6278049, 1.6278048517735508), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(3.397246, 3.3972458625984308), T::literal(0.0, 0.0), T::literal(0.031897947, 0.031897947902242804)],
         }
     }
 
@@ -1071,8 +1071,8 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
     firmware::Ekf::new(
         firmware::Rk4::new(Plant, T::literal(0.2, 0.2)),
         [T::literal(2.0, 2.0), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-        [[T::literal(1.6277038, 1.6277038134956918), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(3.3963149, 3.3963149562743182), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.03192519, 0.031925189503478675)]],
-        [[T::literal(1.934172e-7, 1.9341718830239548e-7), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(1.840864e-7, 1.8408640680958503e-7), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(1.1756116e-8, 1.1756116024030325e-8)]],
+        [[T::literal(1.6278049, 1.6278048517735508), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(3.397246, 3.3972458625984308), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.031897947, 0.031897947902242804)]],
+        [[T::literal(1.935282e-7, 1.9352819363904035e-7), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(1.840853e-7, 1.8408529706444755e-7), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(1.17764065e-8, 1.1776406553548216e-8)]],
         [T::literal(0.1, 0.1), T::literal(20.0, 20.0)],
     )
     .with_bounds([T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(f32::INFINITY, f64::INFINITY), T::literal(f32::INFINITY, f64::INFINITY), T::literal(f32::INFINITY, f64::INFINITY)])
@@ -1098,7 +1098,7 @@ impl BoxEkfObserver {
     /// A fresh observer (the filter at its start), holding no sample yet.
     pub const fn new() -> Self {
         BoxEkfObserver {
-            filter: Ekf { x: [2.0, 2.5, 0.15], p: [1.6277038, 0.0, 0.0, 3.3963149, 0.0, 0.03192519] },
+            filter: Ekf { x: [2.0, 2.5, 0.15], p: [1.6278049, 0.0, 0.0, 3.397246, 0.0, 0.031897947] },
             latest: None,
         }
     }
@@ -1937,11 +1937,11 @@ fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t800: T = t798 + t799;
     let t801: T = t772 * t727;
     let t802: T = t800 + t801;
-    let t803: T = T::literal(1.934172e-7, 1.9341718830239548e-7);
+    let t803: T = T::literal(1.935282e-7, 1.9352819363904035e-7);
     let t804: T = t777 + t803;
-    let t805: T = T::literal(1.840864e-7, 1.8408640680958503e-7);
+    let t805: T = T::literal(1.840853e-7, 1.8408529706444755e-7);
     let t806: T = t792 + t805;
-    let t807: T = T::literal(1.1756116e-8, 1.1756116024030325e-8);
+    let t807: T = T::literal(1.17764065e-8, 1.1776406553548216e-8);
     let t808: T = t802 + t807;
     let t809: T = firmware::bounds::at_least(t668, t11);
     let t810: T = firmware::bounds::at_least(t674, t11);
@@ -2533,11 +2533,11 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t578: T = t576 + t577;
     let t579: T = t550 * t505;
     let t580: T = t578 + t579;
-    let t581: T = T::literal(1.934172e-7, 1.9341718830239548e-7);
+    let t581: T = T::literal(1.935282e-7, 1.9352819363904035e-7);
     let t582: T = t555 + t581;
-    let t583: T = T::literal(1.840864e-7, 1.8408640680958503e-7);
+    let t583: T = T::literal(1.840853e-7, 1.8408529706444755e-7);
     let t584: T = t570 + t583;
-    let t585: T = T::literal(1.1756116e-8, 1.1756116024030325e-8);
+    let t585: T = T::literal(1.17764065e-8, 1.1776406553548216e-8);
     let t586: T = t580 + t585;
     let t587: T = firmware::bounds::at_least(t446, t19);
     let t588: T = firmware::bounds::at_least(t452, t19);

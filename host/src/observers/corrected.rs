@@ -342,7 +342,7 @@ pub fn tune(setting: &Setting<'_>, tuning: &DataSet, maps: &[Rows], target_sprea
                 }))
                 .collect();
             let solver = NelderMead::new(simplex)
-                .with_sd_tolerance(1e-7)
+                .with_sd_tolerance(1e-5)
                 .expect("a non-negative tolerance");
             let result = Executor::new(criterion, solver)
                 .configure(|state| state.max_iters(ITERATIONS))

@@ -159,7 +159,8 @@ pub enum {status} {{
     Ok = 0,
     /// The sample has a NaN or infinite value and was refused; the observer is unchanged.
     Refused = 1,
-    /// Fewer than `HORIZON` samples since the start: no estimate yet; nothing was written.
+    /// No estimate yet (the map and the observers it starts: fewer than `HORIZON` accepted samples since
+    /// the start; the EKF from the box centre: no accepted sample yet); nothing was written.
     NoEstimateYet = 2,
     /// A null pointer, or storage too small or misaligned: nothing was done.
     BadArgument = 3,
