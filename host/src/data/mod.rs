@@ -133,6 +133,28 @@ pub fn validation_set(design: &Design) -> Result<DataSet, SpecError> {
     random_runs(design, &design.validation, "validation", None)
 }
 
+/// Noise draws of the scenario the report judges every observer on ([`scenario_draws`]).
+pub const SCENARIO_DRAWS: usize = 50;
+
+/// The scenario again, [`SCENARIO_DRAWS`] times on the nominal plant: its initial state and samples,
+/// other inputs and noise (stream 2 of the scenario's seed, never a tuning run's). One run is one
+/// noise realisation; these give the scenario's figure pooled and as its tail. `None` without a
+/// `[scenario]`.
+pub fn scenario_draws(design: &Design) -> Result<Option<DataSet>, SpecError> {
+    let Some(scenario) = &design.scenario else {
+        return Ok(None);
+    };
+    let mut rng = ChaCha8Rng::seed_from_u64(scenario.seed);
+    rng.set_stream(2);
+    let runs = (0..SCENARIO_DRAWS)
+        .map(|_| simulate_plant(design, &design.model, &scenario.x0, scenario.samples, &mut rng, "scenario draws"))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Some(DataSet {
+        runs,
+        horizon: design.map.horizon,
+    }))
+}
+
 /// Runs from the scenario's initial state in the tuning set ([`tuning_set`]).
 pub const SCENARIO_TUNING_RUNS: usize = 16;
 

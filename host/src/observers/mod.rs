@@ -29,6 +29,9 @@ pub struct Figures {
     pub rmse_scenario: f64,
     /// RMSE over the scenario's first [`TRANSIENT_TIME`] time units after the map's first estimate.
     pub rmse_transient: f64,
+    /// RMSE over the windows of the scenario's noise draws (`data::scenario_draws`), and the 95th
+    /// percentile over draws of each draw's RMSE; `None` without a scenario.
+    pub scenario_draws: Option<(f64, f64)>,
     /// RMSE over the tuning runs' windows.
     pub rmse_tuning: f64,
     /// The 95th percentile over tuning runs of each run's RMSE.
@@ -211,6 +214,7 @@ fn mismatch(design: &Design, long_samples: usize) -> Result<Option<(Mismatch, [D
 /// observer on the validation runs, the scenario and (with uncertain parameters) the mismatch runs.
 pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Result<Comparison, SpecError> {
     let tuning = data::tuning_set(design)?;
+    let draws = data::scenario_draws(design)?;
     let horizon = design.map.horizon;
     let start_up = horizon - 1 + corrected::START_UP_HORIZONS * horizon;
     let window = design.validation.samples;
@@ -245,6 +249,7 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         let validation: Vec<Rows> = result.validation.runs.iter().map(|r| estimate(r, false)).collect();
         let scenario = estimate(&result.scenario, true);
         let on_tuning: Vec<Rows> = tuning.runs.iter().map(|r| estimate(r, false)).collect();
+        let on_draws: Option<Vec<Rows>> = draws.as_ref().map(|d| d.runs.iter().map(|r| estimate(r, true)).collect());
         let on = |set: &DataSet| -> Vec<Rows> { set.runs.iter().map(|r| estimate(r, false)).collect() };
         let on_mismatch: Option<[Vec<Rows>; 3]> = mismatch.as_ref().map(|(_, sets)| sets.each_ref().map(on));
         let on_long = on(&long);
@@ -280,6 +285,10 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
                     })
                     .0,
                     rmse_tuning: errors(&tuning.runs, &on_tuning, t, windows).0,
+                    scenario_draws: draws
+                        .as_ref()
+                        .zip(on_draws.as_ref())
+                        .map(|(d, on)| (errors(&d.runs, on, t, windows).0, p95(&d.runs, on))),
                     rmse_mismatch,
                     rmse_corners,
                     rmse_nominal,

@@ -102,6 +102,13 @@ pub struct FiguresReport {
     pub rmse_scenario: Option<f64>,
     /// RMSE over the scenario's first 2 time units after the map's first estimate.
     pub rmse_transient: Option<f64>,
+    /// RMSE over the scenario's noise draws (`data::scenario_draws`), when there is a scenario
+    /// (`null` where a filter diverged).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rmse_scenario_draws: Option<Option<f64>>,
+    /// The 95th percentile over those draws of each draw's RMSE.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub p95_scenario_draws: Option<Option<f64>>,
     /// RMSE over the tuning runs.
     pub rmse_tuning: Option<f64>,
     /// The 95th percentile over tuning runs of each run's RMSE.
@@ -337,6 +344,8 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
                                 p95_validation: finite(f.p95_validation),
                                 rmse_scenario: finite(f.rmse_scenario),
                                 rmse_transient: finite(f.rmse_transient),
+                                rmse_scenario_draws: f.scenario_draws.map(|d| finite(d.0)),
+                                p95_scenario_draws: f.scenario_draws.map(|d| finite(d.1)),
                                 rmse_tuning: finite(f.rmse_tuning),
                                 p95_tuning: finite(f.p95_tuning),
                                 rmse_mismatch: f.rmse_mismatch.and_then(finite),
@@ -446,6 +455,30 @@ pub fn observers_table(report: &Report<'_>) -> String {
             );
         }
     }
+    let draws = report
+        .observers
+        .iter()
+        .any(|o| o.targets.values().any(|f| f.rmse_scenario_draws.is_some()));
+    if draws {
+        let _ = writeln!(
+            s,
+            "\nFrom the scenario's initial state, over {} noise draws of it (every observer from where it starts on the chip):\n",
+            crate::data::SCENARIO_DRAWS
+        );
+        let _ = writeln!(s, "| observer | target | RMSE | p95 |");
+        let _ = writeln!(s, "|---|---|---|---|");
+        for o in &report.observers {
+            for (name, f) in in_spec_order(report, o) {
+                let _ = writeln!(
+                    s,
+                    "| {} | {name} | {} | {} |",
+                    o.kind,
+                    show(f.rmse_scenario_draws.flatten()),
+                    show(f.p95_scenario_draws.flatten())
+                );
+            }
+        }
+    }
     if let Some(m) = &report.mismatch {
         s.push_str(&mismatch_table(report, m));
     }
@@ -459,15 +492,20 @@ pub fn observers_table(report: &Report<'_>) -> String {
         return s;
     }
     type Pick = fn(&FiguresReport) -> Option<f64>;
-    let figures: [(&str, Pick); 5] = [
+    let figures: [(&str, Pick); 7] = [
         ("validation RMSE", |f| f.rmse_validation),
         ("validation p95 (per-run RMSE)", |f| f.p95_validation),
+        ("scenario draws RMSE", |f| f.rmse_scenario_draws.flatten()),
+        ("scenario draws p95", |f| f.p95_scenario_draws.flatten()),
         ("validation max error", |f| f.max_error_validation),
         ("scenario RMSE", |f| f.rmse_scenario),
         ("transient RMSE", |f| f.rmse_transient),
     ];
     let _ = writeln!(s);
     for (label, pick) in figures {
+        if label.starts_with("scenario draws") && !draws {
+            continue;
+        }
         let mut verdicts = Vec::new();
         for name in report.targets.iter().map(|t| t.name) {
             let best = report

@@ -80,9 +80,9 @@ pub(super) fn check_budget(design: &Design) -> Result<(), SpecError> {
             Axis::Fixed(_) => 1.0,
         })
         .product();
-    // The scenario, and the tuning runs from its start (`data::SCENARIO_TUNING_RUNS`).
+    // The scenario, its noise draws and the tuning runs from its start.
     let scenario = design.scenario.as_ref().map_or(0.0, |s| {
-        (1 + crate::data::SCENARIO_TUNING_RUNS) as f64 * s.samples as f64
+        (1 + crate::data::SCENARIO_DRAWS + crate::data::SCENARIO_TUNING_RUNS) as f64 * s.samples as f64
     });
     let validation = design.validation.trajectories as f64 * design.validation.samples as f64;
     // The mismatch set: the validation runs again at every corner of the parameter box (none when
