@@ -147,7 +147,16 @@ pub fn scenario_draws(design: &Design) -> Result<Option<DataSet>, SpecError> {
     let mut rng = ChaCha8Rng::seed_from_u64(scenario.seed);
     rng.set_stream(2);
     let runs = (0..SCENARIO_DRAWS)
-        .map(|_| simulate_plant(design, &design.model, &scenario.x0, scenario.samples, &mut rng, "scenario draws"))
+        .map(|_| {
+            simulate_plant(
+                design,
+                &design.model,
+                &scenario.x0,
+                scenario.samples,
+                &mut rng,
+                "scenario draws",
+            )
+        })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(Some(DataSet {
         runs,

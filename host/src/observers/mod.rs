@@ -249,7 +249,9 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         let validation: Vec<Rows> = result.validation.runs.iter().map(|r| estimate(r, false)).collect();
         let scenario = estimate(&result.scenario, true);
         let on_tuning: Vec<Rows> = tuning.runs.iter().map(|r| estimate(r, false)).collect();
-        let on_draws: Option<Vec<Rows>> = draws.as_ref().map(|d| d.runs.iter().map(|r| estimate(r, true)).collect());
+        let on_draws: Option<Vec<Rows>> = draws
+            .as_ref()
+            .map(|d| d.runs.iter().map(|r| estimate(r, true)).collect());
         let on = |set: &DataSet| -> Vec<Rows> { set.runs.iter().map(|r| estimate(r, false)).collect() };
         let on_mismatch: Option<[Vec<Rows>; 3]> = mismatch.as_ref().map(|(_, sets)| sets.each_ref().map(on));
         let on_long = on(&long);
