@@ -516,6 +516,32 @@ mod tests {
         hash
     }
 
+    #[test]
+    fn scenario_draws_start_where_the_scenario_does_with_noise_of_their_own() {
+        let design =
+            crate::spec::parse(Path::new("vanderpol.toml"), include_str!("../../specs/vanderpol.toml")).unwrap();
+        let draws = scenario_draws(&design).unwrap().expect("Example 1 has a scenario");
+        let scenario = design.scenario.as_ref().unwrap();
+        assert_eq!(draws.runs.len(), SCENARIO_DRAWS);
+        let tuning = tuning_set(&design).unwrap();
+        let mut rng = ChaCha8Rng::seed_from_u64(scenario.seed);
+        let reported = simulate_run(&design, &scenario.x0, scenario.samples, &mut rng, "scenario").unwrap();
+        let first = |run: &Run| run.measurements.iter().next().unwrap()[0].to_bits();
+        let mut seen: Vec<u64> = tuning
+            .runs
+            .iter()
+            .chain(std::iter::once(&reported))
+            .map(first)
+            .collect();
+        for run in &draws.runs {
+            assert_eq!(run.states.iter().next().unwrap(), &scenario.x0[..]);
+            assert_eq!(run.measurements.len(), scenario.samples);
+            // Noise of its own: no other draw, tuning run or the reported scenario shares it.
+            assert!(!seen.contains(&first(run)));
+            seen.push(first(run));
+        }
+    }
+
     /// The data of designs without uncertain parameters, bit for bit: the fingerprints of the learning,
     /// validation and tuning sets (its runs from random starts) and of the scenario run (when there is
     /// one), recorded on commit 8afa2e3, before parameters could have ranges. A change of any number, or of the order in which
