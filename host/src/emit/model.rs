@@ -165,10 +165,7 @@ pub fn model_source(design: &Design, code: &ModelCode, observers: &Observers<'_>
         text.push_str(&corrector(design, code, constants, state_targets)?);
     }
     if let (Some(_), Some((p0, state_targets))) = (observers.ekf, observers.started) {
-        let upper: Vec<f64> = (0..p0.len())
-            .flat_map(|r| (r..p0.len()).map(move |c| (r, c)))
-            .map(|(r, c)| if r == c { p0[r] } else { 0.0 })
-            .collect();
+        let upper = kalman::diagonal_upper(p0);
         let entries = upper
             .iter()
             .enumerate()
@@ -583,10 +580,7 @@ fn model_and_ekf(design: &Design, code: &ModelCode, ekf: Option<&EkfConstants>) 
     };
     let filter = kalman::filter_code(code, ekf);
     let triangle = kalman::triangle(nx);
-    let upper: Vec<f64> = (0..nx)
-        .flat_map(|r| (r..nx).map(move |c| (r, c)))
-        .map(|(r, c)| if r == c { ekf.p0[r] } else { 0.0 })
-        .collect();
+    let upper = kalman::diagonal_upper(&ekf.p0);
     let full: Vec<String> = (0..nx * nx)
         .map(|k| format!("self.p[{}]", kalman::upper(nx, k / nx, k % nx)))
         .collect();

@@ -22,7 +22,8 @@
 //! # Tuning
 //!
 //! `(G, K, K₀, ln T)` minimises the [score](super::score) on the tuning runs (pooled RMSE and the
-//! 95th percentile over runs, per target over its spread), the same criterion as the EKF's, by Nelder–Mead (`argmin`) from a few fixed starts (closed loop: the
+//! 95th percentile over runs, per target over its spread), the same criterion as the EKF's, by
+//! Nelder–Mead (`argmin`) from a few fixed starts (closed loop: the
 //! one-step least-squares criterion is not the closed-loop one), once with `G` free and once with
 //! `G = 0` (no map after the start-up: the chip's steady sample is then the model and `K` alone);
 //! `G = 0` is kept unless `G` free does better by more than

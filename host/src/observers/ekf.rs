@@ -17,8 +17,9 @@
 //! box centre is tuned for starts anywhere in the box; `auto` judges it with the others on the runs
 //! from the scenario's start too): first on an isotropic decade grid (`a_i = a`,
 //! `b_i = b`, `a ∈ {−8…0}`, `b ∈ {−3…0}`), then by Nelder–Mead (`argmin`) from the
-//! [`STARTS`] best grid points, each coordinate free (until the simplex's scores agree within 1e-4). Deterministic: a fixed grid, fixed starts and
-//! iterations, the best by cost and the first of equals. The map-started EKF shares `Q` (one filter
+//! [`STARTS`] best grid points, each coordinate free (until the simplex's scores agree within
+//! 1e-4). Deterministic: a fixed grid, fixed starts and iterations, the best by cost and the first
+//! of equals. The map-started EKF shares `Q` (one filter
 //! on the chip) and scales its own start covariance ([`tune_started`]).
 
 use firmware::{Ekf, Plant, Rk4};
@@ -252,17 +253,11 @@ pub fn estimate_box<T: firmware::Scalar + firmware::Maths>(
     run: &Run,
     code: &ModelCode,
 ) -> Vec<Option<Vec<T>>> {
-    let nx = constants.x0.len();
-    let mut x: Vec<T> = constants.x0.iter().map(|&v| T::literal(v as f32, v)).collect();
-    let mut p: Vec<T> = (0..nx)
-        .flat_map(|r| (r..nx).map(move |c| (r, c)))
-        .map(|(r, c)| {
-            if r == c {
-                T::literal(constants.p0[r] as f32, constants.p0[r])
-            } else {
-                T::ZERO
-            }
-        })
+    let literal = |v: &f64| T::literal(*v as f32, *v);
+    let mut x: Vec<T> = constants.x0.iter().map(literal).collect();
+    let mut p: Vec<T> = crate::plant::kalman::diagonal_upper(&constants.p0)
+        .iter()
+        .map(literal)
         .collect();
     let finite = |x: &[T], p: &[T]| x.iter().chain(p).all(|v| v.is_finite());
     let mut scratch = Vec::new();
@@ -300,16 +295,9 @@ pub fn estimate_started<T: firmware::Scalar + firmware::Maths>(
     run: &Run,
     code: &ModelCode,
 ) -> Vec<Vec<T>> {
-    let nx = p0.len();
-    let upper: Vec<T> = (0..nx)
-        .flat_map(|r| (r..nx).map(move |c| (r, c)))
-        .map(|(r, c)| {
-            if r == c {
-                T::literal(p0[r] as f32, p0[r])
-            } else {
-                T::ZERO
-            }
-        })
+    let upper: Vec<T> = crate::plant::kalman::diagonal_upper(p0)
+        .iter()
+        .map(|&v| T::literal(v as f32, v))
         .collect();
     let finite = |x: &[T], p: &[T]| x.iter().chain(p).all(|v| v.is_finite());
     let scratch = std::cell::RefCell::new(Vec::new());

@@ -353,7 +353,7 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
     let started = match (&tuned, corrected::state_targets(design)) {
         (Some(tuned), Ok(state_targets)) => {
             let map = &observers[0].targets;
-            let errors: Vec<f64> = state_targets.iter().map(|&t| map[t].rmse_tuning.powi(2)).collect();
+            let squared: Vec<f64> = state_targets.iter().map(|&t| map[t].rmse_tuning.powi(2)).collect();
             let filter = crate::plant::kalman::filter_code(code, &tuned.constants);
             let run_started = |p0: &[f64], run: &Run| -> Rows {
                 let map: Vec<Vec<f64>> = map_estimates(result, horizon, run)
@@ -370,7 +370,7 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
                     code,
                 ))
             };
-            let scaled = |c: f64| -> Vec<f64> { errors.iter().map(|e| c * e).collect() };
+            let scaled = |c: f64| -> Vec<f64> { squared.iter().map(|e| c * e).collect() };
             let (factor, _) = ekf::tune_started(|c| {
                 let p0 = scaled(c);
                 let estimates: Vec<Rows> = tuning.runs.iter().map(|run| run_started(&p0, run)).collect();
@@ -409,18 +409,21 @@ fn tuning_score(figures: &ObserverFigures, spreads: &[f64]) -> f64 {
     score::score(&pooled, &p95, spreads)
 }
 
-/// The kinds `observer()` may be, each with the name of its row in [`Comparison::observers`]
+/// The kinds `observer()` may be; each names its row in [`Comparison::observers`]
 /// ([`ObserverKind::name`]).
-pub const KINDS: [(ObserverKind, &str); 4] = [
-    (ObserverKind::Map, "map"),
-    (ObserverKind::Corrected, "corrected"),
-    (ObserverKind::EkfBox, "ekf_box"),
-    (ObserverKind::EkfMap, "ekf_map"),
+pub const KINDS: [ObserverKind; 4] = [
+    ObserverKind::Map,
+    ObserverKind::Corrected,
+    ObserverKind::EkfBox,
+    ObserverKind::EkfMap,
 ];
 
 /// The name of `kind`'s row in [`Comparison::observers`] (`Auto` is not a kind a design has: `map`).
 pub fn row_name(kind: ObserverKind) -> &'static str {
-    KINDS.iter().find(|k| k.0 == kind).map_or("map", |k| k.1)
+    match kind {
+        ObserverKind::Auto => "map",
+        other => other.name(),
+    }
 }
 
 /// How much worse than the best a cheaper kind's score may be and still be chosen by `auto`.
@@ -438,7 +441,8 @@ pub fn choose(
 ) -> Result<(ObserverKind, String), SpecError> {
     let scored: Vec<(ObserverKind, &str, f64, f64)> = KINDS
         .iter()
-        .filter_map(|&(kind, name)| {
+        .map(|&kind| (kind, kind.name()))
+        .filter_map(|(kind, name)| {
             observers
                 .iter()
                 .find(|o| o.kind == name)

@@ -74,6 +74,17 @@ pub fn estimate(
     Ok(out)
 }
 
+/// One run of recorded rows as the observers read it: its outputs and inputs (no truth).
+fn as_run(segment: &[Row], targets: usize) -> Run {
+    Run {
+        states: Rows::new(0),
+        inputs: segment.iter().map(|r| r.u.clone()).collect(),
+        measurements: segment.iter().map(|r| r.y.clone()).collect(),
+        targets: Rows::new(targets),
+        parameters: Vec::new(),
+    }
+}
+
 /// The EKF from the box centre over one run, in `T`, as `BoxEkfObserver` runs it: an estimate from
 /// the first accepted sample, refused samples marked.
 fn from_box<T: firmware::Scalar + firmware::Maths + Into<f64>>(
@@ -87,13 +98,7 @@ fn from_box<T: firmware::Scalar + firmware::Maths + Into<f64>>(
         kind: "ekf_box",
         why: "the model is beyond the sizes the host filters".to_owned(),
     })?;
-    let run = Run {
-        states: Rows::new(0),
-        inputs: segment.iter().map(|r| r.u.clone()).collect(),
-        measurements: segment.iter().map(|r| r.y.clone()).collect(),
-        targets: Rows::new(tables.maps.len()),
-        parameters: Vec::new(),
-    };
+    let run = as_run(segment, tables.maps.len());
     let filter = crate::plant::kalman::filter_code(code, constants);
     Ok(ekf::estimate_box::<T>(&filter, constants, &run, code)
         .into_iter()
@@ -131,13 +136,7 @@ fn follow<T: firmware::Scalar + firmware::Maths + Into<f64>>(
             _ => vec![T::literal(f32::NAN, f64::NAN); targets],
         })
         .collect();
-    let run = Run {
-        states: Rows::new(0),
-        inputs: segment.iter().map(|r| r.u.clone()).collect(),
-        measurements: segment.iter().map(|r| r.y.clone()).collect(),
-        targets: Rows::new(targets),
-        parameters: Vec::new(),
-    };
+    let run = as_run(segment, targets);
     let (estimates, clamps) = match kind {
         ObserverKind::Corrected => {
             let constants = tables.corrected.as_ref().ok_or_else(|| {

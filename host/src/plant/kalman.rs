@@ -85,6 +85,15 @@ impl FilterCode {
     }
 }
 
+/// The upper triangle, row by row, of the diagonal matrix `diag(values)`: how a filter's `P` starts.
+pub fn diagonal_upper(values: &[f64]) -> Vec<f64> {
+    let n = values.len();
+    (0..n)
+        .flat_map(|r| (r..n).map(move |c| (r, c)))
+        .map(|(r, c)| if r == c { values[r] } else { 0.0 })
+        .collect()
+}
+
 /// Entries of the upper triangle of an `n × n` matrix.
 pub fn triangle(n: usize) -> usize {
     n * (n + 1) / 2

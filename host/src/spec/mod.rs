@@ -303,13 +303,6 @@ impl Bounds {
     pub fn upper(&self) -> f64 {
         self.max.unwrap_or(f64::INFINITY)
     }
-
-    /// `x` projected onto the bounds (`firmware::bounds::project`, entry by entry).
-    pub fn project(bounds: &[Bounds], x: &mut [f64]) {
-        for (x, b) in x.iter_mut().zip(bounds) {
-            *x = firmware::bounds::at_most(firmware::bounds::at_least(*x, b.lower()), b.upper());
-        }
-    }
 }
 
 /// A validated design.
