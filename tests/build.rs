@@ -1,14 +1,19 @@
-//! Lists, for the on-target tests, the observers of every generated design that the map starts
-//! (`firmware::Started`): not every design has them, and code that names one a design lacks does not
-//! compile, so the list is read from the generated sources (`generated/src/<design>.rs`, where
-//! `gen` declares each as `pub type CorrectedObserver = …` / `pub type StartedEkfObserver = …`,
-//! host/src/emit/model.rs) and written as a macro, `for_each_started_observer!`, into
-//! `OUT_DIR/started_observers.rs`.
+//! Lists, for the on-target tests, the observers of every generated design that the map starts or
+//! checks (`firmware::Started`, `firmware::Restarted`): not every design has them, and code that
+//! names one a design lacks does not compile, so the list is read from the generated sources
+//! (`generated/src/<design>.rs`, where `gen` declares each as `pub type CorrectedObserver = …`,
+//! `pub type StartedEkfObserver = …`, `pub type RestartedEkfObserver = …`, host/src/emit/model.rs)
+//! and written as a macro, `for_each_started_observer!`, into `OUT_DIR/started_observers.rs`.
 
 use std::path::{Path, PathBuf};
 
-/// The type alias `gen` declares for each kind, and the kind's variant of `on_target::Kind`.
-const STARTED: [(&str, &str); 2] = [("CorrectedObserver", "Corrected"), ("StartedEkfObserver", "StartedEkf")];
+/// The type alias `gen` declares for each kind, the kind's variant of `on_target::Kind`, and the
+/// firmware shell it is.
+const STARTED: [(&str, &str, &str); 3] = [
+    ("CorrectedObserver", "Corrected", "Started"),
+    ("StartedEkfObserver", "StartedEkf", "Started"),
+    ("RestartedEkfObserver", "RestartedEkf", "Restarted"),
+];
 
 fn main() {
     let sources = Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/src");
@@ -30,8 +35,8 @@ fn main() {
     designs.sort();
     let mut calls = String::new();
     for (name, text) in &designs {
-        for (alias, kind) in STARTED {
-            if text.contains(&format!("\npub type {alias} = firmware::Started<")) {
+        for (alias, kind, shell) in STARTED {
+            if text.contains(&format!("\npub type {alias} = firmware::{shell}<")) {
                 calls += &format!("        $callback!({name}, {kind}, {alias});\n");
             }
         }

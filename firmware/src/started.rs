@@ -80,6 +80,36 @@ pub fn clamp<T: Scalar, const NX: usize>(x: &[T; NX], lower: &[T; NX], upper: &[
     out
 }
 
+/// The targets at the follower's `states` and `u`, each state's saturation flag on its target.
+#[inline(always)]
+pub(crate) fn targets_of<T, F, const NX: usize, const NY: usize, const NU: usize, const NT: usize>(
+    states: &[Estimate<T>; NX],
+    u: &[T; NU],
+) -> [Estimate<T>; NT]
+where
+    T: Scalar,
+    F: Follower<T, NX, NY, NU, NT>,
+{
+    let mut x = [T::ZERO; NX];
+    for (x, state) in x.iter_mut().zip(states) {
+        *x = state.value;
+    }
+    let values = F::targets(&x, u);
+    let mut targets = [Estimate {
+        value: T::ZERO,
+        saturation: Saturation::Inside,
+    }; NT];
+    for (target, &value) in targets.iter_mut().zip(&values) {
+        target.value = value;
+    }
+    for (state, &t) in states.iter().zip(&F::STATE_TARGETS) {
+        if let Some(target) = targets.get_mut(t) {
+            target.saturation = state.saturation;
+        }
+    }
+    targets
+}
+
 fn select<V>(condition: bool, a: V, b: V) -> V {
     core::hint::select_unpredictable(condition, a, b)
 }
@@ -155,24 +185,7 @@ where
             (Some(carried), _) => {
                 let (next, states) = F::follow(carried, self.count, start_up, &map, &y, &u).ok_or(RejectedSample)?;
                 self.carried = Some(next);
-                let mut x = [T::ZERO; NX];
-                for (x, state) in x.iter_mut().zip(&states) {
-                    *x = state.value;
-                }
-                let values = F::targets(&x, &u);
-                let mut targets = [Estimate {
-                    value: T::ZERO,
-                    saturation: Saturation::Inside,
-                }; NT];
-                for (target, &value) in targets.iter_mut().zip(&values) {
-                    target.value = value;
-                }
-                for (state, &t) in states.iter().zip(&F::STATE_TARGETS) {
-                    if let Some(target) = targets.get_mut(t) {
-                        target.saturation = state.saturation;
-                    }
-                }
-                self.latest = Some(targets);
+                self.latest = Some(targets_of::<T, F, NX, NY, NU, NT>(&states, &u));
             }
             // Unreachable: without a carried state the map is read, and the window is full here.
             (None, None) => return Ok(()),

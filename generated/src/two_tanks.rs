@@ -63,7 +63,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["cm", "cm"];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 4] = [("map", 186), ("ekf_box", 992), ("corrected", 796), ("ekf_map", 1000)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 5] = [("map", 186), ("ekf_box", 992), ("corrected", 796), ("ekf_map", 1000), ("ekf_restart", 992)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -2063,6 +2063,52 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
 
 /// The EKF started by this design's map.
 pub type StartedEkfObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
+
+/// The check of [`RestartedEkfObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
+/// (no unit).
+pub const RESTART_THRESHOLD: f64 = 8.0;
+/// See [`RESTART_THRESHOLD`]: each state's `e_i²`, the map's mean squared error on the tuning runs,
+/// in its unit squared ([`STATE_UNITS`]).
+pub const RESTART_VARIANCES: [f64; STATES] = [0.11871187132620452, 0.010944762708346205];
+
+/// Whether the filter's prediction `x` with covariance `p` and the map's states `f` disagree:
+/// `d = Σ_i (x_i − f_i)² / (P_ii + e_i²) > τ`, or `d` is NaN. Runs once, at the map's first estimate.
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
+#[inline(always)]
+fn restart_disagrees<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], f: &[T; STATES]) -> bool {
+    const DIAGONAL: [usize; STATES] = [0, 2];
+    let variances: [T; STATES] = [T::literal(0.118711874, 0.11871187132620452), T::literal(0.010944762, 0.010944762708346205)];
+    let mut d = T::ZERO;
+    for i in 0..STATES {
+        let e = x[i] - f[i];
+        d += e * e / (p[DIAGONAL[i]] + variances[i]);
+    }
+    !(d <= T::literal(8.0, 8.0))
+}
+
+impl firmware::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+    const FRESH: ([f32; STATES], [f32; COVARIANCE]) = ([15.0, 15.0], [26.117428, 0.0, 729.1228]);
+
+    #[inline(always)]
+    fn disagrees(carried: &([f32; STATES], [f32; COVARIANCE]), map: &[f32; STATES]) -> bool {
+        restart_disagrees(&carried.0, &carried.1, map)
+    }
+}
+
+impl firmware::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+    const FRESH: ([f64; STATES], [f64; COVARIANCE]) = ([15.0, 15.0], [26.117428554897625, 0.0, 729.122811712909]);
+
+    #[inline(always)]
+    fn disagrees(carried: &([f64; STATES], [f64; COVARIANCE]), map: &[f64; STATES]) -> bool {
+        restart_disagrees(&carried.0, &carried.1, map)
+    }
+}
+
+/// The EKF from the centre of the state box ([`Ekf`]'s start and samples) that checks the map once,
+/// at its first estimate, and restarts from it as [`StartedEkfObserver`] starts when the two disagree
+/// (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's guess-free start where the
+/// box centre is far from the plant.
+pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
 
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
 pub const KIND: &str = "corrected";

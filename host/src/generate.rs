@@ -249,6 +249,7 @@ pub fn design_source(
             .started
             .as_ref()
             .map(|s| (s.p0.as_slice(), s.state_targets.as_slice())),
+        restart: comparison.restart.as_ref(),
         corrected: comparison
             .corrected
             .as_ref()

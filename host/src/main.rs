@@ -108,8 +108,8 @@ enum Command {
         #[arg(long, value_name = "FILE")]
         output: PathBuf,
         /// The observer: `auto` (default) is the design's `observer()`, the kind `gen` chose; `map`,
-        /// `corrected`, `ekf_map` (the EKF started by the map) or `ekf_box` (from the box centre) ask
-        /// for one.
+        /// `corrected`, `ekf_map` (the EKF started by the map), `ekf_box` (from the box centre) or
+        /// `ekf_restart` (from the box centre, restarted by the map) ask for one.
         #[arg(long, value_enum, default_value = "auto")]
         kind: KindArg,
         /// The fitted design `gen` saved (design.json in its report folder). Default: the checkout's
@@ -143,6 +143,9 @@ enum KindArg {
     /// The EKF from the centre of the state box.
     #[value(name = "ekf_box")]
     EkfBox,
+    /// The EKF from the centre of the state box, restarted from the map when they disagree.
+    #[value(name = "ekf_restart")]
+    EkfRestart,
 }
 
 /// Which design: a shipped one by name, or any spec file.
@@ -405,6 +408,7 @@ fn estimate(
         KindArg::Corrected => spec::ObserverKind::Corrected,
         KindArg::EkfMap => spec::ObserverKind::EkfMap,
         KindArg::EkfBox => spec::ObserverKind::EkfBox,
+        KindArg::EkfRestart => spec::ObserverKind::EkfRestart,
     };
     let bar = progress_bar(&design);
     let how = commands::Estimation {

@@ -13,6 +13,7 @@ use serde::{Deserialize, Serialize};
 use crate::fit::maps::FittedMap;
 use crate::fit::DesignResult;
 use crate::generate::Emitted;
+use crate::observers::restart::RestartConstants;
 use crate::observers::Comparison;
 use crate::plant::correction::CorrectionConstants;
 use crate::plant::kalman::EkfConstants;
@@ -49,6 +50,8 @@ pub struct Tables {
     pub ekf: Option<EkfConstants>,
     /// The map-started EKF's `P(N−1)` diagonal and each state's target, when it has one.
     pub started: Option<(Vec<f64>, Vec<usize>)>,
+    /// The restarted EKF's check (`ekf_restart`), when it has one (with `ekf` and `started`).
+    pub restart: Option<RestartConstants>,
 }
 
 /// Why saved tables could not be read or written.
@@ -100,6 +103,7 @@ impl Tables {
             started: comparison
                 .and_then(|c| c.started.as_ref())
                 .map(|s| (s.p0.clone(), s.state_targets.clone())),
+            restart: comparison.and_then(|c| c.restart.clone()),
         }
     }
 

@@ -78,13 +78,15 @@ pub enum Kind {
     Corrected,
     /// The EKF started by the map (`StartedEkfObserver`).
     StartedEkf,
+    /// The EKF from the box centre, restarted by the map (`RestartedEkfObserver`).
+    RestartedEkf,
     /// The EKF from the centre of the state box (`ekf()`, every design).
     Ekf,
 }
 
 impl Kind {
     /// Every kind, in the order the report lists them.
-    pub const ALL: [Kind; 4] = [Kind::Map, Kind::Corrected, Kind::StartedEkf, Kind::Ekf];
+    pub const ALL: [Kind; 5] = [Kind::Map, Kind::Corrected, Kind::StartedEkf, Kind::RestartedEkf, Kind::Ekf];
 
     /// Its name for the on-target program (`ON_TARGET_KIND`, `PROBE_KIND`).
     pub fn chip_name(self) -> &'static str {
@@ -92,6 +94,7 @@ impl Kind {
             Kind::Map => "map",
             Kind::Corrected => "corrected",
             Kind::StartedEkf => "started_ekf",
+            Kind::RestartedEkf => "restarted_ekf",
             Kind::Ekf => "ekf",
         }
     }
@@ -102,6 +105,7 @@ impl Kind {
             Kind::Map => "map",
             Kind::Corrected => "corrected",
             Kind::StartedEkf => "ekf_map",
+            Kind::RestartedEkf => "ekf_restart",
             Kind::Ekf => "ekf_box",
         }
     }
@@ -112,6 +116,7 @@ impl Kind {
             Kind::Map => "map_observer()",
             Kind::Corrected => "CorrectedObserver::new()",
             Kind::StartedEkf => "StartedEkfObserver::new()",
+            Kind::RestartedEkf => "RestartedEkfObserver::new()",
             Kind::Ekf => "ekf()",
         }
     }
@@ -664,20 +669,18 @@ pub fn measure_designs(
         let built = (|| -> Result<Probes, Unavailable> {
             for (name, kinds) in designs {
                 let name = name.as_str();
-                let kinds: Vec<&str> = kinds
-                    .iter()
-                    .filter(|&&k| k != Kind::Ekf)
-                    .map(|k| k.chip_name())
-                    .collect();
-                let elf = program
-                    .build(
-                        "on-target",
-                        &[("ON_TARGET_DESIGN", name), ("ON_TARGET_KIND", &kinds.join(","))],
-                        &format!("runs/{name}.elf"),
-                    )
-                    .map_err(|e| failed(format!("on-target program of {name}: {e}")))?;
-                // The QEMU thread has stopped only after an error, which its result reports.
-                let _ = send.send((name.to_owned(), false, elf));
+                for (group, suffix) in programs(kinds) {
+                    let kinds: Vec<&str> = group.iter().map(|k| k.chip_name()).collect();
+                    let elf = program
+                        .build(
+                            "on-target",
+                            &[("ON_TARGET_DESIGN", name), ("ON_TARGET_KIND", &kinds.join(","))],
+                            &format!("runs/{name}{suffix}.elf"),
+                        )
+                        .map_err(|e| failed(format!("on-target program of {name}: {e}")))?;
+                    // The QEMU thread has stopped only after an error, which its result reports.
+                    let _ = send.send((name.to_owned(), false, elf));
+                }
                 let elf = program
                     .build("ekf", &[("ON_TARGET_DESIGN", name)], &format!("runs/{name}.ekf.elf"))
                     .map_err(|e| failed(format!("EKF program of {name}: {e}")))?;
@@ -728,7 +731,7 @@ pub fn measure_designs(
                 )));
             }
             let mut counts = counts.into_iter();
-            let mut by_kind = BTreeMap::new();
+            let by_kind = all.observers.entry(name.clone()).or_default();
             for mut observer in observers {
                 (observer.instructions, observer.divisions) = counts.by_ref().take(observer.samples.len()).unzip();
                 (observer.flash_bytes, observer.static_ram_bytes) = cost(observer.kind)?;
@@ -736,10 +739,26 @@ pub fn measure_designs(
                     return Err(failed(format!("{name}: one kind ran twice")));
                 }
             }
-            all.observers.insert(name, by_kind);
         }
     }
     Ok(all)
+}
+
+/// The `on-target` programs that measure `kinds` (the EKF from the box centre has a program of its
+/// own, `ekf`), each with its file name's suffix: the map and the observers it starts together, and
+/// the restarted EKF alone, since it shares the filter's code with the map-started EKF and linked
+/// together the compiler would inline it differently ([`same_alone`] checks that it does not).
+fn programs(kinds: &[Kind]) -> Vec<(Vec<Kind>, &'static str)> {
+    let started: Vec<Kind> = kinds
+        .iter()
+        .copied()
+        .filter(|&k| k != Kind::Ekf && k != Kind::RestartedEkf)
+        .collect();
+    let mut programs = vec![(started, "")];
+    if kinds.contains(&Kind::RestartedEkf) {
+        programs.push((vec![Kind::RestartedEkf], ".restarted_ekf"));
+    }
+    programs
 }
 
 /// What the size probes measured: `(flash, static RAM)` added over the baseline per design and
@@ -844,10 +863,13 @@ pub fn instructions_alone(program: &Program, name: &str, kind: Kind) -> Result<V
 /// instructions: the program that runs them together measures what a firmware with one kind runs.
 pub fn same_alone(program: &Program, all: &Measurements) -> Result<(), String> {
     for (name, observers) in &all.observers {
-        if observers.len() < 2 {
-            continue;
-        }
-        for (&kind, observer) in observers {
+        let kinds: Vec<Kind> = observers.keys().copied().collect();
+        let shared: Vec<Kind> = programs(&kinds)
+            .into_iter()
+            .filter(|(group, _)| group.len() > 1)
+            .flat_map(|(group, _)| group)
+            .collect();
+        for (&kind, observer) in observers.iter().filter(|(k, _)| shared.contains(k)) {
             let alone = instructions_alone(program, name, kind).map_err(|e| e.to_string())?;
             if alone != observer.instructions {
                 return Err(format!(
@@ -1084,14 +1106,31 @@ pub fn host_samples(name: &str, kind: Kind) -> Option<Vec<TargetSample>> {
     samples
 }
 
-/// `Follower::START_UP` of a started observer's follower.
-fn follower_start_up<D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize>(
-    _: &Started<f32, D, F, N, NY, NU, NT, NX>,
-) -> usize
+/// The estimates after the first that take the start-up path of an observer the map starts or checks.
+trait StartUp {
+    /// `Follower::START_UP` of a started observer's follower; `N − 1` for the restarted EKF, whose
+    /// estimate number `N` checks the map.
+    const START_UP: usize;
+}
+
+impl<D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> StartUp
+    for Started<f32, D, F, N, NY, NU, NT, NX>
 where
     F: Follower<f32, NX, NY, NU, NT>,
 {
-    F::START_UP
+    const START_UP: usize = F::START_UP;
+}
+
+impl<D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> StartUp
+    for firmware::Restarted<f32, D, F, N, NY, NU, NT, NX>
+where
+    F: firmware::Restart<f32, NX, NY, NU, NT>,
+{
+    const START_UP: usize = N - 1;
+}
+
+fn follower_start_up<O: StartUp>(_: &O) -> usize {
+    O::START_UP
 }
 
 /// The estimates after the first that take the start-up path, for design `name`'s observer of
@@ -1281,6 +1320,36 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
             let (_, ekf_constants) = crate::emitted_constants!($d, &$design);
             let filter = filter_code(&$code, &ekf_constants);
             ekf::estimate_started::<f64>(&filter, &$d::STARTED_P0, &$targets, $first, &$maps, &$run, &$code)
+        }};
+        (@ RestartedEkf, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
+            let (_, mut ekf_constants) = crate::emitted_constants!($d, &$design);
+            // The filter's start as emitted: the box centre and P(0)'s diagonal.
+            let (x0, upper) = <$d::StartedEkf as firmware::Restart<
+                f64,
+                { $d::STATES },
+                { $d::OUTPUTS },
+                { $d::INPUTS },
+                { $d::TARGETS },
+            >>::FRESH;
+            ekf_constants.x0 = x0.to_vec();
+            ekf_constants.p0 = (0..$d::STATES)
+                .map(|i| upper[host::plant::kalman::upper($d::STATES, i, i)])
+                .collect();
+            let filter = filter_code(&$code, &ekf_constants);
+            let restart = host::observers::restart::RestartConstants {
+                threshold: $d::RESTART_THRESHOLD,
+                variances: $d::RESTART_VARIANCES.to_vec(),
+            };
+            host::observers::restart::estimate::<f64>(
+                &filter,
+                &ekf_constants,
+                &$d::STARTED_P0,
+                &restart,
+                &$targets,
+                &$maps,
+                &$run,
+                &$code,
+            )
         }};
     }
     for_each_started_observer!(mirror);

@@ -7,6 +7,7 @@
 pub mod corrected;
 pub mod ekf;
 pub mod recorded;
+pub mod restart;
 pub mod score;
 pub mod started;
 
@@ -74,8 +75,8 @@ pub const TRANSIENT_TIME: f64 = 2.0;
 /// One observer's figures, per target in spec order, and its estimates along the scenarios.
 #[derive(Clone, Debug)]
 pub struct ObserverFigures {
-    /// [`ObserverKind::name`]: `"map"`, `"ekf_box"` (from the box centre), `"corrected"` or
-    /// `"ekf_map"` (started by the map).
+    /// [`ObserverKind::name`]: `"map"`, `"ekf_box"` (from the box centre), `"corrected"`,
+    /// `"ekf_map"` (started by the map) or `"ekf_restart"` (from the box centre, restarted by the map).
     pub kind: &'static str,
     /// Predicted instructions per sample on the chip in steady state ([`crate::search::cost`]).
     pub instructions: f64,
@@ -126,6 +127,8 @@ pub struct Comparison {
     pub corrected: Result<corrected::Tuned, String>,
     /// The EKF started by the map; `None` without an EKF or the full state.
     pub started: Option<Started>,
+    /// The box-started EKF's check against the map ([`restart`]); `None` without `started`.
+    pub restart: Option<restart::RestartConstants>,
     /// What `observer()` is, and why.
     pub chosen: (ObserverKind, String),
     /// The EKF from the box centre started instead at the scenario's `observer_x0` (the paper's
@@ -380,18 +383,60 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
             observers.push(judge("ekf_map", cost::of_started(&filter), &|run, _| {
                 run_started(&p0, run)
             }));
-            Some(Started {
-                p0,
-                factor,
-                state_targets,
-            })
+            Some((
+                Started {
+                    p0,
+                    factor,
+                    state_targets,
+                },
+                squared,
+            ))
         }
         _ => None,
     };
+    // The box-started EKF checked once against the map, restarted from it as `ekf_map` starts.
+    let restart = match (&tuned, &started) {
+        (Some(tuned), Some((started, squared))) => {
+            let filter = crate::plant::kalman::filter_code(code, &tuned.constants);
+            let run_restarted = |constants: &restart::RestartConstants, run: &Run| -> Rows {
+                let map: Vec<Vec<f64>> = map_estimates(result, horizon, run)
+                    .iter()
+                    .map(<[f64]>::to_vec)
+                    .collect();
+                Rows::from(restart::estimate(
+                    &filter,
+                    &tuned.constants,
+                    &started.p0,
+                    constants,
+                    &started.state_targets,
+                    &map,
+                    run,
+                    code,
+                ))
+            };
+            let with = |threshold: f64| restart::RestartConstants {
+                threshold,
+                variances: squared.clone(),
+            };
+            let (threshold, _) = restart::tune(|t| {
+                let constants = with(t);
+                let estimates: Vec<Rows> = tuning.runs.iter().map(|run| run_restarted(&constants, run)).collect();
+                score::of_estimates(&tuning.runs, &estimates, &spreads, windows)
+            });
+            let constants = with(threshold);
+            observers.push(judge("ekf_restart", cost::of_restarted(&filter), &|run, _| {
+                run_restarted(&constants, run)
+            }));
+            Some(constants)
+        }
+        _ => None,
+    };
+    let started = started.map(|(started, _)| started);
     let chosen = choose(design, &observers, &spreads)?;
     Ok(Comparison {
         observers,
         started,
+        restart,
         chosen,
         ekf: tuned,
         corrected,
@@ -411,11 +456,12 @@ fn tuning_score(figures: &ObserverFigures, spreads: &[f64]) -> f64 {
 
 /// The kinds `observer()` may be; each names its row in [`Comparison::observers`]
 /// ([`ObserverKind::name`]).
-pub const KINDS: [ObserverKind; 4] = [
+pub const KINDS: [ObserverKind; 5] = [
     ObserverKind::Map,
     ObserverKind::Corrected,
     ObserverKind::EkfBox,
     ObserverKind::EkfMap,
+    ObserverKind::EkfRestart,
 ];
 
 /// The name of `kind`'s row in [`Comparison::observers`] (`Auto` is not a kind a design has: `map`).

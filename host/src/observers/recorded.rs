@@ -112,8 +112,8 @@ fn from_box<T: firmware::Scalar + firmware::Maths + Into<f64>>(
         .collect())
 }
 
-/// The observer `kind` (corrected or map-started EKF) over one run, in `T`, started by the map's rows
-/// `map`.
+/// The observer `kind` (corrected, map-started or restarted EKF) over one run, in `T`, started or
+/// checked by the map's rows `map`.
 fn follow<T: firmware::Scalar + firmware::Maths + Into<f64>>(
     design: &Design,
     tables: &Tables,
@@ -155,6 +155,28 @@ fn follow<T: firmware::Scalar + firmware::Maths + Into<f64>>(
                 .map(|(&t, (&lo, &hi))| (t, T::literal(lo as f32, lo), T::literal(hi as f32, hi)))
                 .collect();
             (estimates, bounds)
+        }
+        ObserverKind::EkfRestart => {
+            let (Some(constants), Some((p0, state_targets)), Some(restart)) =
+                (&tables.ekf, &tables.started, &tables.restart)
+            else {
+                return Err(unavailable(
+                    "ekf_restart",
+                    "it needs every state as a target and a model the host can filter".to_owned(),
+                ));
+            };
+            let filter = crate::plant::kalman::filter_code(code, constants);
+            let estimates = super::restart::estimate::<T>(
+                &filter,
+                constants,
+                p0,
+                restart,
+                state_targets,
+                &values,
+                &run,
+                code,
+            );
+            (estimates, Vec::new())
         }
         _ => {
             let (Some(constants), Some((p0, state_targets))) = (&tables.ekf, &tables.started) else {

@@ -11,7 +11,7 @@
 //!   [`WEAK_FRACTION`] of the target's spread: it barely beats
 //!   predicting the mean, and the target may not be observable from these measurements over N.
 //! * [`Gate::EkfBetter`]: the chosen observer's validation RMSE is more than [`EKF_FACTOR`] times the
-//!   design's best other EKF's (`ekf_box` or `ekf_map`, whichever is not the chosen kind) on some
+//!   design's best other EKF's (`ekf_box`, `ekf_map` or `ekf_restart`, other than the chosen kind) on some
 //!   target: that EKF is the better choice for this system. An
 //!   EKF the spec's `[budget] instructions` does not allow (as [`crate::search::cost`] predicts it)
 //!   is not a choice, so it does not count.
@@ -71,7 +71,7 @@ pub enum Gate {
         chosen: &'static str,
         /// Its validation RMSE.
         rmse: f64,
-        /// The better EKF's (`ekf_box` from the box centre, or `ekf_map`) kind.
+        /// The better EKF's (`ekf_box` from the box centre, `ekf_map` or `ekf_restart`) kind.
         ekf: &'static str,
         /// Its validation RMSE.
         ekf_rmse: f64,
@@ -181,8 +181,8 @@ pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) ->
                 _ => true,
             }
         };
-        // The best peer: either EKF within the budget, other than the kind chosen.
-        let best_ekf = ["ekf_box", "ekf_map"]
+        // The best peer: any EKF within the budget, other than the kind chosen.
+        let best_ekf = ["ekf_box", "ekf_map", "ekf_restart"]
             .into_iter()
             .filter(|&kind| kind != chosen && affordable(kind))
             .filter_map(|kind| rmse_of(kind).map(|v| (kind, v)))

@@ -80,7 +80,8 @@ pub struct Report<'a> {
 /// One observer's figures.
 #[derive(Serialize)]
 pub struct ObserverReport {
-    /// [`crate::spec::ObserverKind::name`]: `"map"`, `"corrected"`, `"ekf_box"`, `"ekf_map"`.
+    /// [`crate::spec::ObserverKind::name`]: `"map"`, `"corrected"`, `"ekf_box"`, `"ekf_map"`,
+    /// `"ekf_restart"`.
     pub kind: &'static str,
     /// Per target name.
     pub targets: std::collections::BTreeMap<String, FiguresReport>,

@@ -61,7 +61,7 @@ pub struct Measured {
     /// SHA-256 of `generated/src/<design>.rs` as measured.
     pub source_sha256: String,
     /// By observer kind, as `report.json` names them (`"map"`, `"corrected"`, `"ekf_map"`,
-    /// `"ekf_box"`).
+    /// `"ekf_restart"`, `"ekf_box"`).
     pub observers: BTreeMap<String, OnTarget>,
 }
 
@@ -89,11 +89,13 @@ pub const BEGIN: &str = "<!-- on-target:begin -->";
 /// Marks its end.
 pub const END: &str = "<!-- on-target:end -->";
 
-/// The kinds as the section lists them: the map, the observers it starts, the EKF from the centre.
-const ORDER: [(&str, &str); 4] = [
+/// The kinds as the section lists them: the map, the observers it starts or checks, the EKF from
+/// the centre.
+const ORDER: [(&str, &str); 5] = [
     ("map", "`map_observer()`"),
     ("corrected", "`CorrectedObserver`"),
     ("ekf_map", "`StartedEkfObserver`"),
+    ("ekf_restart", "`RestartedEkfObserver`"),
     ("ekf_box", "`ekf()`"),
 ];
 

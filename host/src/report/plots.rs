@@ -38,6 +38,7 @@ fn kind_style(kind: &str) -> (RGBColor, Style, &'static str) {
         "map" => (ESTIMATE_COLOR, Style::Dots, "map F(Z)"),
         "ekf_box" => (RGBColor(255, 127, 14), Style::Line, "EKF from x̂(0)"),
         "corrected" => (RGBColor(44, 160, 44), Style::Line, "model-corrected map"),
+        "ekf_restart" => (RGBColor(140, 86, 75), Style::Line, "EKF restarted by the map"),
         _ => (RGBColor(148, 103, 189), Style::Line, "EKF started by the map"),
     }
 }

@@ -126,6 +126,13 @@ pub fn of_started(filter: &FilterCode) -> f64 {
     of_ekf(filter) + STARTED_EXTRA
 }
 
+/// The box-started EKF checked by the map (`firmware::Restarted`): its steady sample, the EKF's (the
+/// check's flag is a compare and a branch, which the EKF's own finiteness tests pay for; measured
+/// equal to `ekf()` on every shipped design).
+pub fn of_restarted(filter: &FilterCode) -> f64 {
+    of_ekf(filter)
+}
+
 /// A map's predicted cost per sample and in flash.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Cost {

@@ -63,6 +63,9 @@ pub enum ObserverKind {
     EkfMap,
     /// The EKF started at the centre of the state box (`ekf_box`, the design's `ekf()`).
     EkfBox,
+    /// The EKF from the centre of the state box, restarted from the map's first estimate when the
+    /// two disagree (`ekf_restart`, `firmware::Restarted`).
+    EkfRestart,
 }
 
 impl ObserverKind {
@@ -74,6 +77,7 @@ impl ObserverKind {
             ObserverKind::Corrected => "corrected",
             ObserverKind::EkfMap => "ekf_map",
             ObserverKind::EkfBox => "ekf_box",
+            ObserverKind::EkfRestart => "ekf_restart",
         }
     }
 }

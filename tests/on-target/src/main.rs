@@ -1,7 +1,7 @@
 //! Runs the observers of one generated design (chosen by `ON_TARGET_DESIGN` at build time, so that
 //! the program links that design alone) over its recorded sequence on the emulated Cortex-M4F, one
 //! kind after the other (`ON_TARGET_KIND`, comma-separated: `map`, `observer`, `corrected`,
-//! `started_ekf`; the map alone by default), and reports over semihosting:
+//! `started_ekf`, `restarted_ekf`; the map alone by default), and reports over semihosting:
 //!
 //! ```text
 //! KIND <kind> <START_UP>                                           for each kind, then
@@ -12,7 +12,8 @@
 //! ```
 //!
 //! `START_UP` is the number of estimates after the first that take the start-up path (0 for the
-//! map; a follower's `Follower::START_UP`).
+//! map; a follower's `Follower::START_UP`; `N − 1` for the restarted EKF, whose estimate number `N`
+//! is the one that checks the map).
 //!
 //! `push` + `estimate` of every sample runs in [`step`], between `measure_start` and `measure_end`:
 //! two functions the host finds in the ELF and counts executed instructions between (QEMU `-d exec`
@@ -33,7 +34,7 @@ use core::panic::PanicInfo;
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprint, hprintln};
 use generated::firmware;
-use firmware::{Design, Estimate, Follower, Saturation};
+use firmware::{Design, Estimate, Follower, Restart, Saturation};
 
 include!(concat!(env!("OUT_DIR"), "/design.rs"));
 include!(concat!(env!("OUT_DIR"), "/kinds.rs"));
@@ -94,6 +95,25 @@ where
     F: Follower<f32, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
 {
     const START_UP: usize = F::START_UP;
+
+    #[inline(always)]
+    fn take(&mut self, y: [f32; d::OUTPUTS], u: [f32; d::INPUTS]) -> bool {
+        self.push(y, u).is_ok()
+    }
+
+    #[inline(always)]
+    fn latest(&self) -> Estimates {
+        self.estimate()
+    }
+}
+
+impl<D, F, const N: usize, const NX: usize> Observe
+    for firmware::Restarted<f32, D, F, N, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }, NX>
+where
+    D: Design<f32, N, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
+    F: Restart<f32, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
+{
+    const START_UP: usize = N - 1;
 
     #[inline(always)]
     fn take(&mut self, y: [f32; d::OUTPUTS], u: [f32; d::INPUTS]) -> bool {

@@ -115,6 +115,7 @@ fn run() -> Result<String, String> {
                 Kind::Map => "`map_observer()`",
                 Kind::Corrected => "`CorrectedObserver`",
                 Kind::StartedEkf => "`StartedEkfObserver`",
+                Kind::RestartedEkf => "`RestartedEkfObserver`",
                 Kind::Ekf => "`ekf()`",
             };
             let chosen = if chosen == Some(kind) { " = `observer()`" } else { "" };
@@ -124,7 +125,9 @@ fn run() -> Result<String, String> {
                     segments.join(", "),
                     (2 * n_z * targets.len()).to_string(),
                 ),
-                Kind::Corrected | Kind::StartedEkf => (spec.map.horizon.to_string(), "—".to_owned(), "—".to_owned()),
+                Kind::Corrected | Kind::StartedEkf | Kind::RestartedEkf => {
+                    (spec.map.horizon.to_string(), "—".to_owned(), "—".to_owned())
+                }
                 Kind::Ekf => ("—".to_owned(), "—".to_owned(), "—".to_owned()),
             };
             table += &format!(

@@ -92,6 +92,9 @@ impl Crate {
         }
         if self.tables.ekf.is_some() && self.tables.started.is_some() {
             kinds.push(Kind::StartedEkf);
+            if self.tables.restart.is_some() {
+                kinds.push(Kind::RestartedEkf);
+            }
         }
         if self.tables.ekf.is_some() {
             kinds.push(Kind::Ekf);
@@ -237,6 +240,7 @@ fn host_rows(
         Kind::Map => ObserverKind::Map,
         Kind::Corrected => ObserverKind::Corrected,
         Kind::StartedEkf => ObserverKind::EkfMap,
+        Kind::RestartedEkf => ObserverKind::EkfRestart,
         Kind::Ekf => ObserverKind::EkfBox,
     };
     recorded::estimate(&user.design, &user.tables, code, kind, precision, rows).map_err(|e| e.to_string())

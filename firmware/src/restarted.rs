@@ -1,0 +1,210 @@
+//! A filter from the centre of the state box that checks the map once and restarts from it when the
+//! two disagree: the EKF's convergence from a good start, the map's guess-free start from a bad one.
+//!
+//! An EKF started at the box centre converges fast and far when the plant starts near it, and slowly
+//! (or to a wrong branch) from a corner; the map `F(Z)` needs no initial guess but forgets everything
+//! older than `N` samples. [`Restarted`] runs the filter from the first sample (estimates from the
+//! first accepted sample on) and, at the map's first estimate (the `N`-th accepted sample), compares
+//! the filter's prediction `x̂(k|k−1)`, with its covariance `P(k|k−1)`, to the map's states:
+//!
+//! ```text
+//! d = Σ_i (x̂_i − F_i)² / (P_ii + e_i²)        e_i²: the map's mean squared error of state i
+//! d > τ  →  restart: x̂(k) = F(Z), carried on as the map-started filter (Follower::start)
+//! d ≤ τ  →  the filter's usual sample
+//! ```
+//!
+//! `d` is the χ²-like distance of two independent estimates of one state; the threshold `τ` is the
+//! host's, chosen on the tuning runs. The check runs once: afterwards the map is not read and the
+//! window not fed, so every later accepted sample runs the filter's instructions alone.
+
+#![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(d <= τ)` is deliberate: a NaN distance restarts.
+
+use core::marker::PhantomData;
+
+use crate::started::targets_of;
+use crate::window::{Sample, Window};
+use crate::{Design, Estimate, Follower, RejectedSample, Scalar};
+
+/// A [`Follower`] that can also start without the map and check the map once.
+///
+/// Its `follow` is called with `j = 1`, `start_up = false` and zeros for the map (it reads none of
+/// them: `START_UP` is 0 and `STEADY_READS_MAP` false); `start` is its restart from the map.
+pub trait Restart<T: Scalar, const NX: usize, const NY: usize, const NU: usize, const NT: usize>:
+    Follower<T, NX, NY, NU, NT>
+{
+    /// What is carried before the first sample (the filter at the box centre with its `P(0)`); a
+    /// constant, so that an observer can be a `static`'s initial value.
+    const FRESH: Self::Carried;
+
+    /// Whether `carried` (the prediction to the map's first sample) and the map's states `map`
+    /// disagree so much that the filter restarts from the map; a NaN distance must say yes.
+    fn disagrees(carried: &Self::Carried, map: &[T; NX]) -> bool;
+}
+
+/// The filter `F` from the box centre, checked once against the map of design `D` (see the module's
+/// docs): `NT` targets from `NY` outputs and `NU` inputs, `NX` states, the map over `N` samples.
+///
+/// A sample with a NaN or infinite value is refused: no estimate from it, the window does not take
+/// it, and the filter takes one period of its model when the input is finite ([`Follower::predict`]).
+/// A sample whose result is not finite (the model overflowed) is refused too and changes nothing; a
+/// restart whose start is not finite is not taken (the filter goes on).
+pub struct Restarted<T: Scalar, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize>
+where
+    F: Restart<T, NX, NY, NU, NT>,
+{
+    window: Window<T, N, NY, NU>,
+    carried: F::Carried,
+    /// Whether the map has been checked (the window is no longer fed).
+    checked: bool,
+    latest: Option<[Estimate<T>; NT]>,
+    design: PhantomData<fn() -> D>,
+}
+
+impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize>
+    Restarted<T, D, F, N, NY, NU, NT, NX>
+where
+    T: Scalar,
+    D: Design<T, N, NY, NU, NT>,
+    F: Restart<T, NX, NY, NU, NT>,
+{
+    /// The filter at its start, holding no sample.
+    #[must_use]
+    pub const fn new() -> Self {
+        Restarted {
+            window: Window::new(),
+            carried: F::FRESH,
+            checked: false,
+            latest: None,
+            design: PhantomData,
+        }
+    }
+
+    /// Takes the sample of the current instant (see the type's docs).
+    #[inline]
+    pub fn push(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
+        if !D::accepts(&y, &u) {
+            self.lost(&u);
+            return Err(RejectedSample);
+        }
+        if !self.checked && self.check(y, u) {
+            return Ok(());
+        }
+        let (next, states) =
+            F::follow(&self.carried, 1, false, &[T::ZERO; NX], &y, &u).ok_or(RejectedSample)?;
+        self.carried = next;
+        self.latest = Some(targets_of::<T, F, NX, NY, NU, NT>(&states, &u));
+        Ok(())
+    }
+
+    /// Feeds the window; at its first estimate, checks the map and restarts from it when they
+    /// disagree. Returns whether it restarted (the sample is then done). Out of line and cold, so
+    /// that the steady samples' code is laid out as without it.
+    #[cold]
+    #[inline(never)]
+    fn check(&mut self, y: [T; NY], u: [T; NU]) -> bool {
+        self.window.push(Sample { y, u });
+        let Some(window) = self.window.samples() else {
+            return false; // fewer than N samples: the filter alone
+        };
+        self.checked = true;
+        let all = D::estimate(window);
+        let mut map = [T::ZERO; NX];
+        for (m, &t) in map.iter_mut().zip(&F::STATE_TARGETS) {
+            *m = all.get(t).map_or(T::ZERO, |e| e.value);
+        }
+        if !F::disagrees(&self.carried, &map) {
+            return false;
+        }
+        match F::start(&map, &u) {
+            Some(carried) => {
+                self.carried = carried;
+                self.latest = Some(all);
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// Over a refused sample with a finite input: the filter's prediction alone.
+    #[cold]
+    #[inline(never)]
+    fn lost(&mut self, u: &[T; NU]) {
+        if u.iter().all(|v| v.is_finite()) {
+            if let Some(next) = F::predict(&self.carried, u) {
+                self.carried = next;
+            }
+        }
+    }
+
+    /// The latest estimate, one per target, or `None` before the first accepted sample.
+    #[inline]
+    #[must_use]
+    pub fn estimate(&self) -> Option<[Estimate<T>; NT]> {
+        self.latest
+    }
+
+    /// Forgets every sample: the filter back at its start (a new batch or run starts).
+    pub fn reset(&mut self) {
+        *self = Self::new();
+    }
+
+    /// `true` once an estimate is available.
+    #[must_use]
+    pub fn is_ready(&self) -> bool {
+        self.latest.is_some()
+    }
+
+    /// Whether the map has been checked (`N` samples accepted).
+    #[must_use]
+    pub fn is_checked(&self) -> bool {
+        self.checked
+    }
+}
+
+impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> Default
+    for Restarted<T, D, F, N, NY, NU, NT, NX>
+where
+    T: Scalar,
+    D: Design<T, N, NY, NU, NT>,
+    F: Restart<T, NX, NY, NU, NT>,
+{
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> Clone
+    for Restarted<T, D, F, N, NY, NU, NT, NX>
+where
+    T: Scalar,
+    F: Restart<T, NX, NY, NU, NT>,
+{
+    fn clone(&self) -> Self {
+        Restarted {
+            window: self.window.clone(),
+            carried: self.carried,
+            checked: self.checked,
+            latest: self.latest,
+            design: PhantomData,
+        }
+    }
+}
+
+impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> core::fmt::Debug
+    for Restarted<T, D, F, N, NY, NU, NT, NX>
+where
+    T: Scalar,
+    F: Restart<T, NX, NY, NU, NT>,
+{
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Restarted")
+            .field("design", &core::any::type_name::<D>())
+            .field("filter", &core::any::type_name::<F>())
+            .field("checked", &self.checked)
+            .field("latest", &self.latest)
+            .finish()
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,147 @@
+//! The EKF from the box centre, checked once against the map and restarted from it when the two
+//! disagree (kind `ekf_restart`; on the chip `firmware::Restarted` over the design's `StartedEkf`).
+//!
+//! The box-started EKF converges fast from starts near the box centre and slowly from its corners
+//! (Example 1's scenario, `x(0) = (2, 0.5)`: 0.27 / 0.40 against the map-started EKF's 0.04 / 0.05);
+//! the map-started one has no estimate for `N − 1` samples and starts from the map's error. Checked
+//! at the map's first estimate with
+//!
+//! ```text
+//! d = Σ_i (x̂_i(k|k−1) − F_i)² / (P_ii(k|k−1) + e_i²),     restart from F (as `ekf_map` starts) when d > τ,
+//! ```
+//!
+//! `e_i²` the map's mean squared error of state `i` on the tuning runs, the filter keeps its own
+//! estimate when it is consistent with the map's and takes the map's when it is not. `τ` is chosen on
+//! the tuning runs ([`tune`]) from [`THRESHOLDS`].
+
+use firmware::{Maths, Scalar};
+
+use crate::data::Run;
+use crate::plant::kalman::{self, EkfConstants, FilterCode};
+use crate::plant::ModelCode;
+
+/// The check's constants, chosen on the tuning runs.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct RestartConstants {
+    /// `τ`: the filter restarts when the distance exceeds it.
+    pub threshold: f64,
+    /// `e_i²`: the map's mean squared error of each state on the tuning runs.
+    pub variances: Vec<f64>,
+}
+
+/// The thresholds [`tune`] tries: powers of two from 0.5 to 64 (for two states the χ² quantiles of
+/// 0.22 … 1 − 10⁻¹⁴).
+pub const THRESHOLDS: [f64; 8] = [0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0];
+
+/// Whether the prediction `x` with covariance `p` (upper triangle) and the map's states `map` disagree:
+/// `!(d ≤ τ)`, so that a NaN distance restarts. Summed in state order in `T`, as the emitted
+/// `restart_disagrees` sums it.
+pub fn disagrees<T: Scalar>(x: &[T], p: &[T], map: &[T], constants: &RestartConstants) -> bool {
+    let n = x.len();
+    let literal = |v: f64| T::literal(v as f32, v);
+    let mut d = T::ZERO;
+    for i in 0..n {
+        let e = x[i] - map[i];
+        d += e * e / (p[kalman::upper(n, i, i)] + literal(constants.variances[i]));
+    }
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
+    let out = !(d <= literal(constants.threshold));
+    out
+}
+
+/// The observer over `run` in `T`, step for step `firmware::Restarted` with the generated
+/// `StartedEkf`: per sample the targets, NaN where there is none (a refused sample's row). The filter
+/// `filter` starts at `constants.x0` with `P(0)` = `constants.p0`; at the first accepted sample whose
+/// map row `map[k]` is finite it is checked ([`disagrees`]) and, if so, restarted from the map's states
+/// with `P` = `started_p0` on the diagonal, that sample's estimate the map's row. A step whose result is
+/// not finite is refused and changes nothing (the last estimate stays).
+#[allow(clippy::too_many_arguments)]
+pub fn estimate<T: Scalar + Maths>(
+    filter: &FilterCode,
+    constants: &EkfConstants,
+    started_p0: &[f64],
+    restart: &RestartConstants,
+    state_targets: &[usize],
+    map: &[Vec<T>],
+    run: &Run,
+    code: &ModelCode,
+) -> Vec<Vec<T>> {
+    let literal = |v: &f64| T::literal(*v as f32, *v);
+    let finite = |x: &[T], p: &[T]| x.iter().chain(p).all(|v| v.is_finite());
+    let width = code.dimensions.targets;
+    let nan = vec![T::literal(f32::NAN, f64::NAN); width];
+    let started: Vec<T> = kalman::diagonal_upper(started_p0).iter().map(literal).collect();
+    let mut x: Vec<T> = constants.x0.iter().map(literal).collect();
+    let mut p: Vec<T> = kalman::diagonal_upper(&constants.p0).iter().map(literal).collect();
+    let mut checked = false;
+    let mut last = nan.clone();
+    let mut scratch = Vec::new();
+    let mut out = Vec::with_capacity(run.measurements.len());
+    for (k, (y, u)) in run.measurements.iter().zip(run.inputs.iter()).enumerate() {
+        let y: Vec<T> = y.iter().map(literal).collect();
+        let u: Vec<T> = u.iter().map(literal).collect();
+        let inputs_finite = u.iter().all(|v| v.is_finite());
+        if !(inputs_finite && y.iter().all(|v| v.is_finite())) {
+            if inputs_finite {
+                let (_, next_x, next_p) = filter.run(&x, &p, None, &u, &mut scratch);
+                if finite(&next_x, &next_p) {
+                    (x, p) = (next_x, next_p);
+                }
+            }
+            out.push(nan.clone());
+            continue;
+        }
+        let row = map.get(k).filter(|row| row.iter().all(|v| v.is_finite()));
+        if let (false, Some(row)) = (checked, row) {
+            checked = true;
+            let states: Vec<T> = state_targets.iter().map(|&t| row[t]).collect();
+            if disagrees(&x, &p, &states, restart) {
+                let (_, next_x, next_p) = filter.run(&states, &started, None, &u, &mut scratch);
+                if finite(&next_x, &next_p) {
+                    (x, p) = (next_x, next_p);
+                    last.clone_from(row);
+                    out.push(row.clone());
+                    continue;
+                }
+            }
+        }
+        let (estimate, next_x, next_p) = filter.run(&x, &p, Some(&y), &u, &mut scratch);
+        if finite(&next_x, &next_p) {
+            (x, p) = (next_x, next_p);
+            let estimate = estimate.expect("a measured sample has an estimate");
+            last = code.targets(&estimate, &u, &mut scratch);
+        }
+        out.push(last.clone());
+    }
+    out
+}
+
+/// Chooses `τ` from [`THRESHOLDS`]: the lowest `score(τ)`, the first of equals. Returns `(τ, score)`.
+pub fn tune(score: impl Fn(f64) -> f64 + Sync) -> (f64, f64) {
+    use rayon::prelude::*;
+    THRESHOLDS
+        .par_iter()
+        .map(|&t| (t, score(t)))
+        .collect::<Vec<_>>()
+        .into_iter()
+        .fold((THRESHOLDS[0], f64::INFINITY), |best, t| if t.1 < best.1 { t } else { best })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_distance_is_the_sum_of_scaled_squares_and_nan_restarts() {
+        // Two states, P = [[1, 0.5], [0.5, 3]] (upper triangle 1, 0.5, 3), e² = (1, 1):
+        // d = (2 − 0)² / 2 + (1 − 2)² / 4 = 2.25.
+        let constants = |threshold| RestartConstants {
+            threshold,
+            variances: vec![1.0, 1.0],
+        };
+        let (x, p, map) = ([2.0, 1.0], [1.0, 0.5, 3.0], [0.0, 2.0]);
+        assert!(disagrees(&x, &p, &map, &constants(2.24)));
+        assert!(!disagrees(&x, &p, &map, &constants(2.25)));
+        assert!(disagrees(&[f64::NAN, 1.0], &p, &map, &constants(1e9)));
+    }
+}
