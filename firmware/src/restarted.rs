@@ -48,8 +48,16 @@ pub trait Restart<T: Scalar, const NX: usize, const NY: usize, const NU: usize, 
 /// it, and the filter takes one period of its model when the input is finite ([`Follower::predict`]).
 /// A sample whose result is not finite (the model overflowed) is refused too and changes nothing; a
 /// restart whose start is not finite is not taken (the filter goes on).
-pub struct Restarted<T: Scalar, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize>
-where
+pub struct Restarted<
+    T: Scalar,
+    D,
+    F,
+    const N: usize,
+    const NY: usize,
+    const NU: usize,
+    const NT: usize,
+    const NX: usize,
+> where
     F: Restart<T, NX, NY, NU, NT>,
 {
     window: Window<T, N, NY, NU>,
@@ -89,8 +97,7 @@ where
         if !self.checked && self.check(y, u) {
             return Ok(());
         }
-        let (next, states) =
-            F::follow(&self.carried, 1, false, &[T::ZERO; NX], &y, &u).ok_or(RejectedSample)?;
+        let (next, states) = F::follow(&self.carried, 1, false, &[T::ZERO; NX], &y, &u).ok_or(RejectedSample)?;
         self.carried = next;
         self.latest = Some(targets_of::<T, F, NX, NY, NU, NT>(&states, &u));
         Ok(())

@@ -86,7 +86,13 @@ pub enum Kind {
 
 impl Kind {
     /// Every kind, in the order the report lists them.
-    pub const ALL: [Kind; 5] = [Kind::Map, Kind::Corrected, Kind::StartedEkf, Kind::RestartedEkf, Kind::Ekf];
+    pub const ALL: [Kind; 5] = [
+        Kind::Map,
+        Kind::Corrected,
+        Kind::StartedEkf,
+        Kind::RestartedEkf,
+        Kind::Ekf,
+    ];
 
     /// Its name for the on-target program (`ON_TARGET_KIND`, `PROBE_KIND`).
     pub fn chip_name(self) -> &'static str {

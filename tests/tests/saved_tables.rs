@@ -136,7 +136,11 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
     // estimate (sample N − 1) and restarts from it: that estimate is the map's, the one before the
     // box filter's, so both of its paths are compared below.
     let n = d::HORIZON;
-    assert_eq!(restarted_ekf[n - 1], map[n - 1], "no restart at the map's first estimate");
+    assert_eq!(
+        restarted_ekf[n - 1],
+        map[n - 1],
+        "no restart at the map's first estimate"
+    );
     assert_eq!(restarted_ekf[n - 2], box_ekf[n - 2]);
     for (kind, expected) in [
         (ObserverKind::Map, map),

@@ -3,7 +3,9 @@
 //! prints the estimate over semihosting, one line per sample:
 //!
 //! ```text
-//! 0 no estimate yet            until HORIZON samples have arrived
+//! 0 no estimate yet            before the first estimate (the map and the observers it starts:
+//!                              until HORIZON samples have arrived; the EKFs from the box centre
+//!                              estimate from the first sample)
 //! 9 x1=0.14226508 x2=4.250018  one name=value per target, (low) or (high) after a value clamped
 //!                              to the design's learning range
 //! <k> refused                  a NaN or infinite sample: the observer is unchanged

@@ -164,7 +164,7 @@ fn errors(
 }
 
 /// The map's estimate of every target at every sample of `run` (NaN before the window is full).
-fn map_estimates(result: &DesignResult, horizon: usize, run: &Run) -> Rows {
+pub fn map_estimates(result: &DesignResult, horizon: usize, run: &Run) -> Rows {
     let data = DataSet {
         runs: vec![run.clone()],
         horizon,

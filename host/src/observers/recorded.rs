@@ -166,16 +166,8 @@ fn follow<T: firmware::Scalar + firmware::Maths + Into<f64>>(
                 ));
             };
             let filter = crate::plant::kalman::filter_code(code, constants);
-            let estimates = super::restart::estimate::<T>(
-                &filter,
-                constants,
-                p0,
-                restart,
-                state_targets,
-                &values,
-                &run,
-                code,
-            );
+            let estimates =
+                super::restart::estimate::<T>(&filter, constants, p0, restart, state_targets, &values, &run, code);
             (estimates, Vec::new())
         }
         _ => {

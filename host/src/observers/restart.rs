@@ -124,7 +124,10 @@ pub fn tune(score: impl Fn(f64) -> f64 + Sync) -> (f64, f64) {
         .map(|&t| (t, score(t)))
         .collect::<Vec<_>>()
         .into_iter()
-        .fold((THRESHOLDS[0], f64::INFINITY), |best, t| if t.1 < best.1 { t } else { best })
+        .fold(
+            (THRESHOLDS[0], f64::INFINITY),
+            |best, t| if t.1 < best.1 { t } else { best },
+        )
 }
 
 #[cfg(test)]
