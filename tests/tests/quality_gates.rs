@@ -57,7 +57,7 @@ fn example_1_passes_every_gate_and_each_gate_bites() {
     (map.r_min, map.r_max) = full;
 
     // An EKF the budget does not allow is no choice, so it does not count: Example 1's EKFs are
-    // predicted at ~241 (`ekf_box`) and ~249 (`ekf_map`) instructions.
+    // predicted at ~241 (`ekf_box`, `ekf_restart`) and ~249 (`ekf_map`) instructions.
     comparison.chosen.0 = host::spec::ObserverKind::Map;
     let mut budgeted = design.clone();
     budgeted.budget.instructions = Some(200);
@@ -70,7 +70,7 @@ fn example_1_passes_every_gate_and_each_gate_bites() {
 /// budget no kind fits in, is an error naming the field.
 #[test]
 fn the_observer_kind_is_chosen_within_the_instruction_budget() {
-    use host::spec::ObserverKind::{Auto, Corrected, EkfMap, Map};
+    use host::spec::ObserverKind::{Auto, Corrected, EkfMap, EkfRestart, Map};
     let (mut design, result, comparison) = example_1();
     let spreads: Vec<f64> = result
         .targets
@@ -85,16 +85,23 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
             .unwrap()
             .instructions
     };
-    // Map 126, corrected 149, map-started EKF 249 (checked against the chip in `on_target`).
+    // Map 126, corrected 149, map-started EKF 249, restarted EKF 241 (checked against the chip in
+    // `on_target`).
     assert_eq!(
-        [predicted("map"), predicted("corrected"), predicted("ekf_map")],
-        [126.0, 149.0, 249.0]
+        [
+            predicted("map"),
+            predicted("corrected"),
+            predicted("ekf_map"),
+            predicted("ekf_restart")
+        ],
+        [126.0, 149.0, 249.0, 241.0]
     );
     let choose = |design: &host::spec::Design| host::observers::choose(design, &comparison.observers, &spreads);
     design.observer = Auto;
     for (budget, kind) in [
-        (None, Corrected),
-        (Some(300), Corrected),
+        (None, EkfRestart),
+        (Some(300), EkfRestart),
+        (Some(240), Corrected),
         (Some(148), Map),
         (Some(126), Map),
     ] {
