@@ -319,6 +319,7 @@ fn measured_on_the_emulated_board(spec: &Path, out: &Path) {
             "| `map_observer()`",
             "| `CorrectedObserver`",
             "| `StartedEkfObserver`",
+            "| `RestartedEkfObserver`",
             "| `ekf()`"
         ],
         "{section}"
