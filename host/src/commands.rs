@@ -217,14 +217,17 @@ pub fn estimate(
         precision,
         tables,
     } = how;
-    refuse_overwrite(output, &[input, &design.file])?;
+    // The input, the spec and the saved design are read: none of them may be the output.
+    let mut read = vec![input, design.file.as_path()];
+    read.extend(tables);
+    refuse_overwrite(output, &read)?;
     // A device or pipe may never end: only a regular file has a size to read.
     if input.exists() && !std::fs::metadata(input).is_ok_and(|m| m.is_file()) {
         return Err(CommandError::NotAFile { path: input.to_owned() });
     }
     let mut rows = recording::RowReader::open(design, input)?;
     // A started observer needs every state as a target: say so before fitting anything.
-    if let (ObserverKind::Corrected | ObserverKind::EkfMap, Err(why)) =
+    if let (ObserverKind::Corrected | ObserverKind::EkfMap | ObserverKind::EkfRestart, Err(why)) =
         (kind, crate::observers::corrected::state_targets(design))
     {
         return Err(crate::observers::recorded::RecordedError::Unavailable {

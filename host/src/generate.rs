@@ -23,6 +23,9 @@ pub enum GenerateError {
     /// The spec is invalid, or its data or fit failed (the message names the spec field to change).
     #[error(transparent)]
     Spec(#[from] SpecError),
+    /// `gen --spec` would replace a file it did not write (see [`crate::standalone::owned`]).
+    #[error(transparent)]
+    NotOurs(#[from] crate::standalone::owned::NotOurs),
     /// The fitted design cannot be emitted.
     #[error("{}: cannot emit design `{design}`: {source}", file.display())]
     Emit {

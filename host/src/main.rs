@@ -48,6 +48,10 @@ enum Command {
         /// Refuse (write nothing) when a design fails a quality gate, instead of warning.
         #[arg(long)]
         strict: bool,
+        /// With --spec: replace files in the crate's folder that `gen` did not write (or that were
+        /// changed since); without it such a file stops the run, named, before anything is fitted.
+        #[arg(long, requires = "specs")]
+        force: bool,
     },
     /// Runs a design's search over N, n_m and β (the spec's candidates, or with --auto the default
     /// ones) and prints the trade-off front; writes nothing.
@@ -179,11 +183,12 @@ fn main() -> ExitCode {
             reports,
             generated,
             strict,
+            force,
         } => {
             if specs.is_empty() || generated.is_some() {
                 gen(specs, reports, generated, strict)
             } else {
-                gen_standalone(&specs, out, runtime_path, runtime_version, strict)
+                gen_standalone(&specs, out, runtime_path, runtime_version, strict, force)
             }
         }
         Command::Search { design, auto } => search(&design, auto),
@@ -280,6 +285,7 @@ fn gen_standalone(
     runtime_path: Option<PathBuf>,
     runtime_version: Option<String>,
     strict: bool,
+    force: bool,
 ) -> anyhow::Result<()> {
     use host::standalone::{Destination, Runtime};
     let checkout = generate::workspace_root();
@@ -305,6 +311,7 @@ fn gen_standalone(
         out: std::path::absolute(&out)?,
         per_design,
         runtime,
+        force,
     };
     eprintln!(
         "gen: {} spec(s) as standalone crates in {}",

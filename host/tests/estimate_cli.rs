@@ -245,6 +245,25 @@ fn an_output_that_is_an_input_or_a_folder_is_refused_and_the_input_survives() {
     let out = host(&["simulate", "--spec", s(&spec), "--output", s(&dir)]);
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("is a folder"));
+    // estimate --tables design.json --output design.json used to replace the saved design with the
+    // CSV: refused before anything is read, the file unchanged.
+    let tables = dir.join("design.json");
+    std::fs::write(&tables, "{\"saved\": true}\n").unwrap();
+    let out = host(&[
+        "estimate",
+        "--design",
+        "vanderpol",
+        "--input",
+        s(&recording),
+        "--output",
+        s(&tables),
+        "--tables",
+        s(&tables),
+    ]);
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("design.json") && stderr.contains("which writing would destroy"), "{stderr}");
+    assert_eq!(std::fs::read_to_string(&tables).unwrap(), "{\"saved\": true}\n");
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -12,9 +12,13 @@
 //! ```
 //!
 //! The default `<out>` is `target/observers/<name>/` of the checkout. Like `gen`, nothing is written
-//! unless every design fits (and, with `--strict`, passes the quality gates).
+//! unless every design fits (and, with `--strict`, passes the quality gates). Nothing the user wrote
+//! is replaced: every file a crate gets is recorded in its `.gen-files` ([`owned`]), and a run that
+//! would replace a file not recorded there (or changed since) is refused before anything is fitted,
+//! unless `--force`.
 
 pub mod c_library;
+pub mod owned;
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -54,6 +58,8 @@ pub struct Destination {
     pub per_design: bool,
     /// The runtime dependency.
     pub runtime: Runtime,
+    /// Whether files `gen` did not write may be replaced (`--force`; see [`owned`]).
+    pub force: bool,
 }
 
 /// The crate's package name for design `name`.
@@ -83,6 +89,10 @@ pub fn run(
             to.out.clone()
         }
     };
+    // Before anything is fitted: no crate may replace a file `gen` did not write.
+    for (_, design) in &designs {
+        owned::check(&folder_of(&design.name), &design.name, to.force)?;
+    }
     let prepared = prepare_all(
         designs,
         |design| Some(library_name(&design.name)),
@@ -142,6 +152,18 @@ fn write(one: &Prepared, spec: &Path, folder: &Path, runtime: &Runtime) -> Resul
     // The observer last, as `gen` does: a half-written crate never has a new design with old tables.
     let observer = sources.join(format!("{}.rs", design.name));
     let changed = write_if_changed(&observer, &one.emitted.source).map_err(io(&observer))?;
+    // And the list of what it wrote, last.
+    let mut written = owned::fixed_files(&design.name);
+    written.extend(
+        report_files
+            .iter()
+            .chain(&figures)
+            .filter_map(|path| path.strip_prefix(folder).ok().map(Path::to_path_buf)),
+    );
+    let list = folder.join(owned::LIST);
+    owned::Owned::read(folder)
+        .and_then(|owned| owned.record(folder, &written))
+        .map_err(io(&list))?;
     Ok(Outcome {
         name: design.name.clone(),
         folder: folder.to_owned(),
