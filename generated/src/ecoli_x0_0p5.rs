@@ -2109,3 +2109,7 @@ pub type Observer = BoxEkfObserver;
 pub const fn observer() -> Observer {
     BoxEkfObserver::new()
 }
+
+/// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
+/// uses saved tables only beside the observer file written with them.
+pub const TABLES_SHA256: &str = "b183ed70235e1694266d0ac9598d7ae665fef648dbb1489a9b520d6629b2ec62";

@@ -2555,3 +2555,7 @@ pub type Observer = MapObserver;
 pub const fn observer() -> Observer {
     MapObserver::new()
 }
+
+/// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
+/// uses saved tables only beside the observer file written with them.
+pub const TABLES_SHA256: &str = "bd1489d6fc8e2baa252997f9cef186536154821d52df8bcdd3b56f51275bb802";

@@ -2120,3 +2120,7 @@ pub type Observer = CorrectedObserver;
 pub const fn observer() -> Observer {
     CorrectedObserver::new()
 }
+
+/// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
+/// uses saved tables only beside the observer file written with them.
+pub const TABLES_SHA256: &str = "35d513e4ecc0fd9c478b5e03035836768c123c573c9122c07233db8eac16e19d";

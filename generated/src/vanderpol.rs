@@ -1340,3 +1340,7 @@ pub type Observer = RestartedEkfObserver;
 pub const fn observer() -> Observer {
     RestartedEkfObserver::new()
 }
+
+/// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
+/// uses saved tables only beside the observer file written with them.
+pub const TABLES_SHA256: &str = "1b6b1610e929c02b704b3b45054be51e03a79c53b91ab3036d74a2bead003d1a";

@@ -1291,3 +1291,7 @@ pub type Observer = CorrectedObserver;
 pub const fn observer() -> Observer {
     CorrectedObserver::new()
 }
+
+/// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
+/// uses saved tables only beside the observer file written with them.
+pub const TABLES_SHA256: &str = "6b04d1fe7b65f25aeb261a7983472c72aea3eb25f512fdde55f454b6fa0223ae";

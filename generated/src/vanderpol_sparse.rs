@@ -1288,3 +1288,7 @@ pub type Observer = MapObserver;
 pub const fn observer() -> Observer {
     MapObserver::new()
 }
+
+/// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
+/// uses saved tables only beside the observer file written with them.
+pub const TABLES_SHA256: &str = "c05543e5b376e9e3d0a8a9fe4cd2308fa37b75a994d1054a2f7db3127c46174e";

@@ -1359,3 +1359,7 @@ pub type Observer = CorrectedObserver;
 pub const fn observer() -> Observer {
     CorrectedObserver::new()
 }
+
+/// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
+/// uses saved tables only beside the observer file written with them.
+pub const TABLES_SHA256: &str = "a46d2b9ee514b211f9e4552ff57615834f9240c8524d087d299c71debc88babc";

@@ -165,6 +165,24 @@ fn saved_tables(design: &Design, explicit: Option<&Path>) -> Result<Option<(Tabl
                 spec: design.file.clone(),
             });
         }
+        tables.check(design, path)?;
+        // Beside the observer it was written with (a crate's `report/design.json` and
+        // `src/<name>.rs`): that observer must carry these tables' hash.
+        let beside = path
+            .parent()
+            .and_then(Path::parent)
+            .map(|folder| folder.join("src").join(format!("{}.rs", design.name)));
+        if let Some(observer) = beside {
+            if let Ok(text) = std::fs::read_to_string(&observer) {
+                if !tables.written_with(&text) {
+                    return Err(crate::tables::TablesError::OtherObserver {
+                        path: path.to_owned(),
+                        observer,
+                    }
+                    .into());
+                }
+            }
+        }
         return Ok(Some((tables, path.to_owned())));
     }
     let Ok(root) = crate::generate::workspace_root() else {
@@ -184,6 +202,7 @@ fn saved_tables(design: &Design, explicit: Option<&Path>) -> Result<Option<(Tabl
     ] {
         if let Some(tables) = Tables::read(&path)? {
             if tables.belongs_to(design) && tables.matches_observer(&observer) {
+                tables.check(design, &path)?;
                 return Ok(Some((tables, path)));
             }
         }

@@ -261,6 +261,7 @@ pub fn design_source(
             .zip(state_targets.as_deref()),
         kind: comparison.chosen.0,
         instructions: &instructions,
+        tables_sha256: &crate::tables::Tables::new(design, result, Some(&comparison)).tables_sha256,
     };
     let source = emit::design_file(design, result, placement, &code, &observers).map_err(emit_error)?;
     Ok((comparison, source))

@@ -32,6 +32,11 @@ pub struct Tables {
     /// SHA-256 of the observer file emitted with it: tables beside a report are used only while that
     /// file is unchanged (a rebuilt tool that fits differently rewrites it).
     pub source_sha256: String,
+    /// SHA-256 of these tables themselves ([`Tables::content_sha256`]), which the observer file
+    /// emitted with them carries as `TABLES_SHA256`: checked on every read, so that tables edited by
+    /// hand, or from another run than the observer beside them, are never used.
+    #[serde(default)]
+    pub tables_sha256: String,
     /// `N` (as the search chose it, when the spec searches).
     pub horizon: usize,
     /// `n_m`, `β` and the taps kept, for the record.
@@ -73,6 +78,30 @@ pub enum TablesError {
         /// Why.
         source: serde_json::Error,
     },
+    /// The tables do not hash to their `tables_sha256`: edited since `gen` wrote them.
+    #[error("{}: changed since `gen` wrote it (its content does not match its `tables_sha256`); run `gen` again to rewrite it, or leave out --tables to fit for this call", path.display())]
+    Edited {
+        /// The file.
+        path: PathBuf,
+    },
+    /// The observer file beside the tables was emitted with other tables.
+    #[error("{}: these tables were not written with the observer {} (its TABLES_SHA256 differs: one of the two is from another `gen` run, or was interrupted); run `gen` again", path.display(), observer.display())]
+    OtherObserver {
+        /// The tables.
+        path: PathBuf,
+        /// The observer file.
+        observer: PathBuf,
+    },
+    /// The tables do not fit the design (a field edited, or a bug): what is wrong.
+    #[error("{}: `{field}` {problem}; run `gen` again to rewrite it", path.display())]
+    Inconsistent {
+        /// The file.
+        path: PathBuf,
+        /// The field.
+        field: String,
+        /// What is wrong with it.
+        problem: String,
+    },
 }
 
 impl Tables {
@@ -86,7 +115,7 @@ impl Tables {
     /// A fitted `design` (its map settled) as data: the maps of `result` and, when its observers were
     /// compared, their constants and the chosen kind (else the map alone). No observer file yet.
     pub fn new(design: &Design, result: &DesignResult, comparison: Option<&Comparison>) -> Self {
-        Tables {
+        let mut tables = Tables {
             version: env!("CARGO_PKG_VERSION").to_owned(),
             spec_sha256: design.spec_sha256.clone(),
             source_sha256: String::new(),
@@ -104,7 +133,18 @@ impl Tables {
                 .and_then(|c| c.started.as_ref())
                 .map(|s| (s.p0.clone(), s.state_targets.clone())),
             restart: comparison.and_then(|c| c.restart.clone()),
-        }
+            tables_sha256: String::new(),
+        };
+        tables.tables_sha256 = tables.content_sha256();
+        tables
+    }
+
+    /// SHA-256 of the tables' JSON with both hashes left empty: what `tables_sha256` holds.
+    pub fn content_sha256(&self) -> String {
+        let mut content = self.clone();
+        content.source_sha256.clear();
+        content.tables_sha256.clear();
+        sha256(&content.to_json())
     }
 
     /// The JSON text.
@@ -124,12 +164,109 @@ impl Tables {
                 })
             }
         };
-        serde_json::from_str(&text)
-            .map(Some)
-            .map_err(|source| TablesError::Format {
+        let tables: Tables = serde_json::from_str(&text).map_err(|source| TablesError::Format {
+            path: path.to_owned(),
+            source,
+        })?;
+        if tables.tables_sha256 != tables.content_sha256() {
+            return Err(TablesError::Edited { path: path.to_owned() });
+        }
+        Ok(Some(tables))
+    }
+
+    /// Whether `observer` (an emitted design file) was written with these tables: it carries their
+    /// hash as `TABLES_SHA256`.
+    pub fn written_with(&self, observer: &str) -> bool {
+        observer.contains(&format!("pub const TABLES_SHA256: &str = \"{}\";", self.tables_sha256))
+    }
+
+    /// Checks that the tables fit `design` (read from `path`): every length the observers index by
+    /// (maps per target, gains per regressor entry, constants per state and output), and that the
+    /// chosen kind is one the tables hold. A `design.json` edited by hand whose hash was fixed up, or
+    /// a bug, is refused here rather than indexing out of bounds later.
+    pub fn check(&self, design: &Design, path: &Path) -> Result<(), TablesError> {
+        let (nx, ny, nu) = (
+            design.model.states.len(),
+            design.model.outputs.len(),
+            design.model.inputs.len(),
+        );
+        let bad = |field: String, problem: String| {
+            Err(TablesError::Inconsistent {
                 path: path.to_owned(),
-                source,
+                field,
+                problem,
             })
+        };
+        let length = |field: &str, got: usize, want: usize| {
+            if got == want {
+                Ok(())
+            } else {
+                bad(field.to_owned(), format!("has {got} entries, the design needs {want}"))
+            }
+        };
+        if self.horizon < 1 {
+            return bad("horizon".to_owned(), "is 0".to_owned());
+        }
+        length("maps", self.maps.len(), design.targets.len())?;
+        let regressor = self.horizon * (ny + nu);
+        for (t, map) in self.maps.iter().enumerate() {
+            length(&format!("maps[{t}].gains"), map.gains.len(), regressor)?;
+            if !(map.r_min < map.r_max) {
+                return bad(format!("maps[{t}].r_min"), "is not below r_max".to_owned());
+            }
+            if let Some(table) = &map.table {
+                length(&format!("maps[{t}].table.gains"), table.gains.len(), regressor)?;
+                if table.segments.is_empty() {
+                    return bad(format!("maps[{t}].table.segments"), "is empty".to_owned());
+                }
+                if let Some(starts) = &table.starts {
+                    length(&format!("maps[{t}].table.starts"), starts.len(), table.segments.len())?;
+                }
+            }
+        }
+        if let Some(c) = &self.corrected {
+            length("corrected.g", c.g.len(), nx)?;
+            length("corrected.k", c.k.len(), nx * ny)?;
+            length("corrected.k_start", c.k_start.len(), nx * ny)?;
+            length("corrected.lower", c.lower.len(), nx)?;
+            length("corrected.upper", c.upper.len(), nx)?;
+            if c.substeps == 0 {
+                return bad("corrected.substeps".to_owned(), "is 0".to_owned());
+            }
+        }
+        if let Some(e) = &self.ekf {
+            length("ekf.x0", e.x0.len(), nx)?;
+            length("ekf.p0", e.p0.len(), nx)?;
+            length("ekf.q", e.q.len(), nx)?;
+            length("ekf.r", e.r.len(), ny)?;
+            if e.substeps == 0 {
+                return bad("ekf.substeps".to_owned(), "is 0".to_owned());
+            }
+        }
+        if let Some((p0, state_targets)) = &self.started {
+            length("started.0", p0.len(), nx)?;
+            length("started.1", state_targets.len(), nx)?;
+            if let Some(&t) = state_targets.iter().find(|&&t| t >= self.maps.len()) {
+                return bad("started.1".to_owned(), format!("names target {t}, beyond the maps"));
+            }
+        }
+        if let Some(r) = &self.restart {
+            length("restart.variances", r.variances.len(), nx)?;
+        }
+        let held = match self.chosen {
+            ObserverKind::Auto | ObserverKind::Map => true,
+            ObserverKind::Corrected => self.corrected.is_some(),
+            ObserverKind::EkfBox => self.ekf.is_some(),
+            ObserverKind::EkfMap => self.ekf.is_some() && self.started.is_some(),
+            ObserverKind::EkfRestart => self.ekf.is_some() && self.started.is_some() && self.restart.is_some(),
+        };
+        if !held {
+            return bad(
+                "chosen".to_owned(),
+                format!("is `{}`, whose constants are missing", self.chosen.name()),
+            );
+        }
+        Ok(())
     }
 
     /// Whether these tables are `design`'s: the same spec text, read by this version of the tool.
@@ -139,7 +276,8 @@ impl Tables {
 
     /// Whether `observer`, the emitted file these tables were written with, is unchanged.
     pub fn matches_observer(&self, observer: &Path) -> bool {
-        std::fs::read_to_string(observer).is_ok_and(|text| sha256(&text) == self.source_sha256)
+        std::fs::read_to_string(observer)
+            .is_ok_and(|text| sha256(&text) == self.source_sha256 && self.written_with(&text))
     }
 }
 

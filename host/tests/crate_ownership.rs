@@ -46,7 +46,15 @@ fn gen_into(spec_dir: &Path, out: &Path, extra: &[&str]) -> Output {
         .replacen("name = \"vanderpol\"", "name = \"my_oscillator\"", 1);
     std::fs::write(&spec, text).unwrap();
     let firmware = Path::new(env!("CARGO_MANIFEST_DIR")).join("../firmware");
-    let mut args = vec!["gen", "--spec", s(&spec), "--out", s(out), "--runtime-path", s(&firmware)];
+    let mut args = vec![
+        "gen",
+        "--spec",
+        s(&spec),
+        "--out",
+        s(out),
+        "--runtime-path",
+        s(&firmware),
+    ];
     args.extend(extra);
     host(&args)
 }
@@ -84,8 +92,18 @@ fn a_folder_holding_the_users_project_is_refused_and_left_as_it_was() {
     let manifest = std::fs::read_to_string(project.join("Cargo.toml")).unwrap();
     assert!(manifest.contains("my-oscillator-observer"), "{manifest}");
     let list = std::fs::read_to_string(project.join(".gen-files")).unwrap();
-    for file in ["Cargo.toml", "README.md", "src/lib.rs", "src/my_oscillator.rs", "report/report.md", "report/design.json"] {
-        assert!(list.lines().any(|l| l.ends_with(&format!("  {file}"))), "{file} not listed:\n{list}");
+    for file in [
+        "Cargo.toml",
+        "README.md",
+        "src/lib.rs",
+        "src/my_oscillator.rs",
+        "report/report.md",
+        "report/design.json",
+    ] {
+        assert!(
+            list.lines().any(|l| l.ends_with(&format!("  {file}"))),
+            "{file} not listed:\n{list}"
+        );
     }
 
     // Only the report folder holds a file of the user's: refused, naming it.
@@ -95,8 +113,14 @@ fn a_folder_holding_the_users_project_is_refused_and_left_as_it_was() {
     let out = gen_into(&dir, &only_report, &[]);
     assert!(!out.status.success());
     let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(stderr.contains("notes.txt") && stderr.contains("did not write"), "{stderr}");
-    assert_eq!(std::fs::read_to_string(only_report.join("report/notes.txt")).unwrap(), "mine\n");
+    assert!(
+        stderr.contains("notes.txt") && stderr.contains("did not write"),
+        "{stderr}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(only_report.join("report/notes.txt")).unwrap(),
+        "mine\n"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -108,7 +132,11 @@ fn a_file_of_ours_the_user_edited_is_not_replaced() {
     let out = dir.join("crate");
     std::fs::create_dir_all(&out).unwrap();
     std::fs::write(out.join("README.md"), "written by gen\n").unwrap();
-    let sum = Command::new("sha256sum").arg("README.md").current_dir(&out).output().unwrap();
+    let sum = Command::new("sha256sum")
+        .arg("README.md")
+        .current_dir(&out)
+        .output()
+        .unwrap();
     assert!(sum.status.success());
     std::fs::write(out.join(".gen-files"), &sum.stdout).unwrap();
     // Unchanged since: ours to replace (the run goes on to fit; it is not run here). Edited: refused.

@@ -262,7 +262,10 @@ fn an_output_that_is_an_input_or_a_folder_is_refused_and_the_input_survives() {
     ]);
     assert!(!out.status.success());
     let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(stderr.contains("design.json") && stderr.contains("which writing would destroy"), "{stderr}");
+    assert!(
+        stderr.contains("design.json") && stderr.contains("which writing would destroy"),
+        "{stderr}"
+    );
     assert_eq!(std::fs::read_to_string(&tables).unwrap(), "{\"saved\": true}\n");
     let _ = std::fs::remove_dir_all(&dir);
 }

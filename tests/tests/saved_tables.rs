@@ -177,6 +177,48 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         assert_ne!(std::fs::read_to_string(&f64_out).unwrap(), written, "{kind:?}");
     }
 
+    // Tables edited by hand are refused on every read; tables whose hash was fixed up after an edit
+    // that breaks them (fewer maps than targets, an empty K, a short start) are refused by name, not
+    // by a panic.
+    let mut edited = in_memory.clone();
+    edited.maps[0].gains[0] *= 1.01;
+    std::fs::write(&saved, edited.to_json()).unwrap();
+    let error = Tables::read(&saved).unwrap_err().to_string();
+    assert!(
+        error.contains("design.json") && error.contains("changed since"),
+        "{error}"
+    );
+    let breaks: [(&str, fn(&mut Tables)); 3] = [
+        ("`maps`", |t| {
+            t.maps.pop();
+        }),
+        ("`corrected.k`", |t| t.corrected.as_mut().unwrap().k.clear()),
+        ("`started.0`", |t| {
+            t.started.as_mut().unwrap().0.pop();
+        }),
+    ];
+    for (field, edit) in breaks {
+        let mut broken = in_memory.clone();
+        edit(&mut broken);
+        broken.tables_sha256 = broken.content_sha256();
+        std::fs::write(&saved, broken.to_json()).unwrap();
+        let how = Estimation {
+            kind: ObserverKind::EkfMap,
+            precision: Precision::F64,
+            tables: Some(&saved),
+        };
+        let out = scratch.join("broken.csv");
+        let error = commands::estimate(&design, &recording, &out, how, &ProgressBar::hidden())
+            .unwrap_err()
+            .to_string();
+        assert!(
+            error.contains(field) && error.contains("run `gen` again"),
+            "{field}: {error}"
+        );
+        assert!(!out.exists());
+    }
+    std::fs::write(&saved, in_memory.to_json()).unwrap();
+
     // Tables of another spec text (a comment added) are refused, naming both files.
     let edited = scratch.join("vanderpol.toml");
     std::fs::write(&edited, std::fs::read_to_string(&spec).unwrap() + "# edited\n").unwrap();

@@ -133,6 +133,8 @@ pub struct Observers<'a> {
     /// Every observer kind the design has and its predicted instructions per steady sample
     /// ([`crate::search::cost`]), in the report's order.
     pub instructions: &'a [(&'static str, f64)],
+    /// SHA-256 of the tables saved with this file ([`crate::tables::Tables::content_sha256`]).
+    pub tables_sha256: &'a str,
 }
 
 /// `.with_bounds(lower, upper)` for the library filter when a state is bounded (`±∞` on an open
@@ -217,7 +219,12 @@ pub type Observer = {ty};
 pub const fn observer() -> Observer {{
     {ty}::new()
 }}
-"
+
+/// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
+/// uses saved tables only beside the observer file written with them.
+pub const TABLES_SHA256: &str = \"{tables}\";
+",
+        tables = observers.tables_sha256
     )
     .ok();
     Ok(text)

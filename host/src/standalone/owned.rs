@@ -161,7 +161,10 @@ mod tests {
         let owned = Owned::read(&folder).unwrap();
         assert!(owned.may_replace(&folder, &ours).is_ok());
         let error = owned.may_replace(&folder, &theirs).unwrap_err().to_string();
-        assert!(error.contains("README.md") && error.contains("did not write") && error.contains("--force"), "{error}");
+        assert!(
+            error.contains("README.md") && error.contains("did not write") && error.contains("--force"),
+            "{error}"
+        );
         // Edited by the user since: no longer ours to replace.
         std::fs::write(folder.join(&ours), "edited").unwrap();
         let error = owned.may_replace(&folder, &ours).unwrap_err().to_string();

@@ -226,11 +226,17 @@ pub fn measure_crate(folder: &Path) -> Result<String, String> {
     })?;
     host::output::write_if_changed(&readme_path, &readme).map_err(|e| format!("{}: {e}", readme_path.display()))?;
     // What this changed stays the tool's: `gen --spec` may replace it again.
-    let changed: Vec<PathBuf> = ["README.md", "report/on_target.json", "report/report.json", "report/report.md", "report/report.html"]
-        .into_iter()
-        .map(PathBuf::from)
-        .filter(|relative| folder.join(relative).is_file())
-        .collect();
+    let changed: Vec<PathBuf> = [
+        "README.md",
+        "report/on_target.json",
+        "report/report.json",
+        "report/report.md",
+        "report/report.html",
+    ]
+    .into_iter()
+    .map(PathBuf::from)
+    .filter(|relative| folder.join(relative).is_file())
+    .collect();
     let list = folder.join(host::standalone::owned::LIST);
     host::standalone::owned::Owned::read(folder)
         .and_then(|owned| owned.record(folder, &changed))
