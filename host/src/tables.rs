@@ -211,7 +211,7 @@ impl Tables {
         let regressor = self.horizon * (ny + nu);
         for (t, map) in self.maps.iter().enumerate() {
             length(&format!("maps[{t}].gains"), map.gains.len(), regressor)?;
-            if !(map.r_min < map.r_max) {
+            if map.r_min.partial_cmp(&map.r_max) != Some(std::cmp::Ordering::Less) {
                 return bad(format!("maps[{t}].r_min"), "is not below r_max".to_owned());
             }
             if let Some(table) = &map.table {
