@@ -188,7 +188,8 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         error.contains("design.json") && error.contains("changed since"),
         "{error}"
     );
-    let breaks: [(&str, fn(&mut Tables)); 3] = [
+    type Break = fn(&mut Tables);
+    let breaks: [(&str, Break); 3] = [
         ("`maps`", |t| {
             t.maps.pop();
         }),
