@@ -190,6 +190,23 @@ fn bad_recordings_are_refused_with_line_and_column_and_nothing_is_written() {
             vec!["line 3", "column `y`", "`abc`"],
         ),
         ("empty.csv", "time,y\n0,1\n0.1,\n", vec!["line 3", "column `y`"]),
+        // A recording at another sample period than the design's 0.1 s (it used to give 40 times
+        // the error, exit 0), a step back in time, and a time that is not a number.
+        (
+            "fast.csv",
+            "time,y\n0,1\n0.05,1.1\n0.1,1.2\n",
+            vec!["line 3", "column `time`", "0.05 s after", "every 0.1 s"],
+        ),
+        (
+            "back.csv",
+            "t,y\n0,1\n0.1,1.1\n0.05,1.2\n",
+            vec!["line 4", "column `t`", "`0.05`"],
+        ),
+        (
+            "clock.csv",
+            "time,y\n0,1\n12:00,1.1\n",
+            vec!["line 3", "`12:00` is not a finite number"],
+        ),
     ];
     for (name, text, expected) in cases {
         let input = dir.join(name);

@@ -163,6 +163,16 @@ fn an_error_writes_nothing_and_the_inputs_are_never_overwritten() {
     );
     assert!(error.to_string().contains("fix:"));
     assert_eq!(listing(&dir), ["est.csv", "renamed.csv", "run.csv"]);
+    // An input recorded at 0.05 s for the design's 0.1 s, as `estimate` refuses it: named by line.
+    let fast = write(&dir, "fast.csv", &INPUT.replacen("a,0.1,", "a,0.05,", 1));
+    let error = plot(&fast, &estimates, Some(&vanderpol()), None)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        error.contains("line 3, column `time`") && error.contains("every 0.1"),
+        "{error}"
+    );
+    assert_eq!(listing(&dir), ["est.csv", "fast.csv", "renamed.csv", "run.csv"]);
     // A prefix whose SVG would be the input itself.
     let named_svg = write(&dir, "run.svg", INPUT);
     let error = plot(&named_svg, &estimates, None, Some(&dir.join("run"))).unwrap_err();

@@ -3,8 +3,10 @@
 //!
 //! A recording has a header; the columns named after the design's outputs and inputs are read, any
 //! other column is ignored, one row per sample in time order. An optional column `time` (else `t`) is
-//! copied to the estimates as written; without it the time of row `k` is `k τ`. An optional column
-//! `run` splits the file into independent runs: the observer restarts whenever its value changes.
+//! checked against the design's sample period ([`spacing`]: within a run, each time `τ` after the
+//! previous, within 5 %) and copied to the estimates as written; without it the time of row `k` is
+//! `k τ`. An optional column `run` splits the file into independent runs: the observer restarts
+//! whenever its value changes.
 //!
 //! The estimates file has one row per recorded row ([`EstimatesCsv`]): `time`, `run` (when the
 //! recording has one), `status` (`ok`, `refused` for a sample with a NaN or infinite value,
@@ -14,6 +16,7 @@
 
 mod estimate;
 mod read;
+pub mod spacing;
 mod write;
 
 pub use estimate::{

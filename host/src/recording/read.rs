@@ -37,6 +37,18 @@ pub enum RecordingError {
         /// The column.
         column: String,
     },
+    /// A time is not a number, or not the design's sample period after the previous one.
+    #[error("{file}: line {line}, column `{column}`: {source}")]
+    Time {
+        /// The file.
+        file: String,
+        /// Line number (1 is the header).
+        line: u64,
+        /// The time column's name (`time` or `t`).
+        column: String,
+        /// What is wrong.
+        source: super::spacing::SpacingError,
+    },
     /// A cell is not a number, or beyond the range of `f64`.
     #[error("{file}: line {line}, column `{column}`: `{cell}` is not a number within the range of f64")]
     NotANumber {
@@ -79,7 +91,9 @@ pub fn read(design: &Design, path: &Path) -> Result<Vec<Row>, RecordingError> {
 /// Lines are counted by record (the header is line 1): exact for any line ending (`\n`, `\r\n`, `\r`)
 /// as long as no quoted field spans lines. Columns the design does not read may hold anything, even
 /// bytes that are not UTF-8. A needed column named twice is refused, as is a number beyond the range
-/// of `f64` (`1e400`); `nan` and `inf` written as such are kept, and the observer refuses them.
+/// of `f64` (`1e400`), and a time that is not the design's sample period after the previous one of
+/// its run ([`super::spacing`]); `nan` and `inf` written as such are kept, and the observer refuses
+/// them.
 pub struct RowReader {
     reader: csv::Reader<std::fs::File>,
     file: String,
@@ -88,6 +102,7 @@ pub struct RowReader {
     input_columns: Vec<usize>,
     run_column: Option<usize>,
     time_column: Option<usize>,
+    spacing: super::spacing::Spacing,
     record: csv::ByteRecord,
     line: u64,
 }
@@ -152,6 +167,7 @@ impl RowReader {
             input_columns,
             run_column,
             time_column,
+            spacing: super::spacing::Spacing::new(design.tau, &design.time_unit),
             record: csv::ByteRecord::new(),
             line: 1,
         })
@@ -190,9 +206,19 @@ impl RowReader {
             }
             Ok(value)
         };
+        let run = self.run_column.map(text).unwrap_or_default();
+        let time = self.time_column.map(text);
+        if let (Some(cell), Some(c)) = (&time, self.time_column) {
+            self.spacing.check(&run, cell).map_err(|source| RecordingError::Time {
+                file: self.file.clone(),
+                line: self.line,
+                column: self.header[c].clone(),
+                source,
+            })?;
+        }
         Ok(Some(Row {
-            time: self.time_column.map(text),
-            run: self.run_column.map(text).unwrap_or_default(),
+            time,
+            run,
             y: self
                 .output_columns
                 .iter()

@@ -123,6 +123,19 @@ pub enum RecordedPlotError {
     /// The figure could not be drawn or written.
     #[error(transparent)]
     Plot(#[from] PlotError),
+    /// A time of the input is not the design's sample period after the previous one (as `estimate`
+    /// refuses it).
+    #[error("{}: line {line}, column `{column}`: {source}", file.display())]
+    Time {
+        /// The input.
+        file: PathBuf,
+        /// Line (1 is the header).
+        line: u64,
+        /// The time column.
+        column: String,
+        /// What is wrong.
+        source: crate::recording::spacing::SpacingError,
+    },
 }
 
 /// A CSV file as text cells (trimmed), with each row's line number.
@@ -247,6 +260,22 @@ fn figure(input: &Table, estimates: &Table, design: Option<&Design>) -> Result<F
     let time_column = estimates.require("time", ESTIMATES_FIX)?;
     let times = estimates.numbers(time_column)?;
     if let Some(column) = input.column("time").or_else(|| input.column("t")) {
+        // With a design, its times as `estimate` checks them.
+        if let Some(design) = design {
+            let mut spacing = crate::recording::spacing::Spacing::new(design.tau, &design.time_unit);
+            let runs: Vec<&str> = match input.column("run") {
+                Some(run) => input.cells(run).map(|(_, cell)| cell).collect(),
+                None => vec![""; input.rows.len()],
+            };
+            for ((line, cell), run) in input.cells(column).zip(runs) {
+                spacing.check(run, cell).map_err(|source| RecordedPlotError::Time {
+                    file: input.file.clone(),
+                    line,
+                    column: input.header[column].clone(),
+                    source,
+                })?;
+            }
+        }
         for ((line, given), (_, written)) in input.cells(column).zip(estimates.cells(time_column)) {
             if given != written {
                 return Err(RecordedPlotError::OtherTimes {
