@@ -47,7 +47,7 @@ pub enum RecordingError {
         /// The time column's name (`time` or `t`).
         column: String,
         /// What is wrong.
-        source: super::spacing::SpacingError,
+        source: Box<super::spacing::SpacingError>,
     },
     /// A cell is not a number, or beyond the range of `f64`.
     #[error("{file}: line {line}, column `{column}`: `{cell}` is not a number within the range of f64")]
@@ -213,7 +213,7 @@ impl RowReader {
                 file: self.file.clone(),
                 line: self.line,
                 column: self.header[c].clone(),
-                source,
+                source: Box::new(source),
             })?;
         }
         Ok(Some(Row {

@@ -66,7 +66,8 @@ impl Spacing {
         let previous = self.previous.replace((run.to_owned(), cell.to_owned(), time));
         if let Some((previous_run, previous_cell, previous_time)) = previous {
             let step = time - previous_time;
-            if previous_run == run && !((step - self.tau).abs() <= TOLERANCE * self.tau) {
+            // Both times are finite, so the step is a number (an overflow to infinity is refused).
+            if previous_run == run && (step - self.tau).abs() > TOLERANCE * self.tau {
                 return Err(SpacingError::Step {
                     cell: cell.to_owned(),
                     previous: previous_cell,

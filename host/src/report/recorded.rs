@@ -134,7 +134,7 @@ pub enum RecordedPlotError {
         /// The time column.
         column: String,
         /// What is wrong.
-        source: crate::recording::spacing::SpacingError,
+        source: Box<crate::recording::spacing::SpacingError>,
     },
 }
 
@@ -272,7 +272,7 @@ fn figure(input: &Table, estimates: &Table, design: Option<&Design>) -> Result<F
                     file: input.file.clone(),
                     line,
                     column: input.header[column].clone(),
-                    source,
+                    source: Box::new(source),
                 })?;
             }
         }
