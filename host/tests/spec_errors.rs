@@ -148,6 +148,10 @@ const CASES: &[Case] = &[
     case("units_of_an_output", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nunits = { y = \"V\" }")], Exact("model.units.y"), "`unit` field"),
     case("units_of_an_unknown_name", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nunits = { x3 = \"V\" }")], Exact("model.units.x3"), "name a state or an input (x1, x2)"),
     case("units_on_two_lines", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nunits = { x1 = \"c\\nm\" }")], Exact("model.units.x1"), "without line breaks"),
+    case("output_unit_on_two_lines", Vdp, &[Swap("noise_variance = 0.2", "noise_variance = 0.2\nunit = \"V\\n*/\"")], Exact("model.outputs[0].unit"), "without line breaks"),
+    case("target_unit_too_long", Vdp, &[Swap("name = \"x2\"\nexpr = \"x2\"", "name = \"x2\"\nexpr = \"x2\"\nunit = \"a unit that is really a whole sentence\"")], Exact("targets[1].unit"), "at most 32 characters"),
+    case("time_unit_with_a_control_character", Vdp, &[Swap("time_unit = \"s\"", "time_unit = \"s\\u001b[31m\"")], Exact("sampling.time_unit"), "control characters"),
+    case("description_with_a_control_character", Vdp, &[Swap("(paper Example 1)\"", "(paper Example 1)\\u0007\"")], Exact("description"), "plain text"),
     // `[model.bounds]` (validate.rs `bounds`): a state's physical bounds.
     case("bounds_of_an_unknown_state", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nbounds = { x3 = { min = 0.0 } }")], Exact("model.bounds.x3"), "name a state (x1, x2)"),
     case("bounds_with_neither_side", Vdp, &[Swap("states = [\"x1\", \"x2\"]", "states = [\"x1\", \"x2\"]\nbounds = { x1 = {} }")], Exact("model.bounds.x1"), "one side or both"),

@@ -403,6 +403,9 @@ fn is_module_name(name: &str) -> bool {
 /// columns.
 const RESERVED_NAMES: &[&str] = &["time", "t", "run", "status", "saturated"];
 
+/// The longest unit, in characters: a label, not a sentence.
+pub const MAX_LABEL: usize = 32;
+
 /// Prefixes of the per-target columns: `saturated_<target>` in estimates, `truth_<target>` in recordings.
 const RESERVED_PREFIXES: &[&str] = &["saturated_", "truth_"];
 

@@ -27,6 +27,20 @@ impl Validator {
         }
     }
 
+    /// A unit: a short label on one line. Units reach doc comments, the C header, the report's
+    /// Markdown tables and the figures' SVG; each of those escapes what it must, and nothing of more
+    /// than one line or [`MAX_LABEL`] characters is a unit.
+    pub(super) fn label(&self, field: impl Into<String>, text: &str) -> Result<(), SpecError> {
+        if text.chars().any(char::is_control) || text.chars().count() > MAX_LABEL {
+            return Err(self.err(
+                field,
+                "a unit is a short label on one line",
+                format!("write it in at most {MAX_LABEL} characters, without line breaks or control characters (e.g. \"cm\", \"m/s^2\")"),
+            ));
+        }
+        Ok(())
+    }
+
     pub(super) fn identifier(&self, field: &str, name: &str) -> Result<(), SpecError> {
         let mut chars = name.chars();
         let valid = matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_')
@@ -132,6 +146,20 @@ impl Validator {
             ));
         }
         self.at_most("sampling.chip_substeps", raw.sampling.chip_substeps, 64)?;
+        self.label("sampling.time_unit", &raw.sampling.time_unit)?;
+        // The description is prose of any length; line breaks and tabs are kept (doc comments make
+        // them spaces), other control characters are not text.
+        if raw
+            .description
+            .chars()
+            .any(|c| c.is_control() && c != '\n' && c != '\t')
+        {
+            return Err(self.err(
+                "description",
+                "it holds a control character",
+                "write the description as plain text (line breaks and tabs are fine)",
+            ));
+        }
         let targets = self.targets(&raw.targets, &model)?;
         let (state_units, input_units) = self.units(&raw.model.units, &model)?;
         let state_bounds = self.bounds(&raw.model.bounds, &model, &learning)?;
@@ -484,13 +512,7 @@ impl Validator {
                     },
                 ));
             }
-            if unit.chars().any(char::is_control) || unit.chars().count() > 32 {
-                return Err(self.err(
-                    field,
-                    "a unit is a short label on one line",
-                    "write it in at most 32 characters, without line breaks (e.g. \"cm\", \"m/s^2\")",
-                ));
-            }
+            self.label(field, unit)?;
         }
         let unit_of = |name: &String| raw.get(name).cloned().unwrap_or_default();
         Ok((
@@ -578,6 +600,7 @@ impl Validator {
                     "give each target its own name",
                 ));
             }
+            self.label(format!("targets[{i}].unit"), &t.unit)?;
             let expr = Expression::compile(&t.expr, &scope)
                 .map_err(|e| self.err(format!("targets[{i}].expr"), e.to_string(), e.fix()))?;
             targets.push(Target {

@@ -67,6 +67,7 @@ impl Validator {
         }
         for (i, o) in raw.outputs.iter().enumerate() {
             declare(format!("model.outputs[{i}].name"), &o.name)?;
+            self.label(format!("model.outputs[{i}].unit"), &o.unit)?;
             let field = format!("model.outputs[{i}].noise_variance");
             if !(o.noise_variance.is_finite() && o.noise_variance >= 0.0) {
                 return Err(self.err(

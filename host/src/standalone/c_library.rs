@@ -85,6 +85,13 @@ pub fn storage_bound(design: &Design) -> usize {
     (window + follower).div_ceil(8) * 8
 }
 
+/// Spec text for a doc comment that cbindgen copies into a C `/* … */` comment: one line, no code
+/// span's end, and no `*/` or `/*` (which would end the comment, or open one inside it, and let the
+/// rest be read as C).
+fn c_comment(text: &str) -> String {
+    crate::emit::doc_code(text).replace("*/", "* /").replace("/*", "/ *")
+}
+
 /// `c/src/lib.rs`.
 pub fn source(design: &Design) -> String {
     let name = &design.name;
@@ -96,7 +103,7 @@ pub fn source(design: &Design) -> String {
         if unit.is_empty() {
             name.clone()
         } else {
-            format!("{name} ({})", crate::emit::doc_code(unit))
+            format!("{name} ({})", c_comment(unit))
         }
     };
     let outputs: Vec<String> = design
@@ -136,7 +143,8 @@ pub const {upper}_OUTPUTS: usize = {ny};
 pub const {upper}_INPUTS: usize = {nu};
 /// Estimates, in this order: {targets}.
 pub const {upper}_TARGETS: usize = {nt};
-/// Samples before the first estimate.
+/// The map's window, in samples: the map and the observers it starts give no estimate before it (the
+/// EKFs from the box centre estimate from the first sample).
 pub const {upper}_HORIZON: usize = {horizon};
 /// The sample period the design assumes: push one sample every {upper}_SAMPLE_PERIOD {time_unit}.
 pub const {upper}_SAMPLE_PERIOD: f32 = {tau};
@@ -277,7 +285,7 @@ fn panic(_: &core::panic::PanicInfo) -> ! {{
         bound = storage_bound(design),
         outputs = list(&outputs),
         inputs = list(&inputs),
-        time_unit = crate::emit::doc_code(&design.time_unit),
+        time_unit = c_comment(&design.time_unit),
         tau = tau,
         targets = list(&targets),
         ny = design.model.outputs.len(),
