@@ -139,15 +139,33 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
     let library = target_folder().join("release/libmy_oscillator_observer_c.a");
     let program = scratch.join("replay");
     std::fs::write(scratch.join("replay.c"), replay_source()).unwrap();
-    let compiled = Command::new("cc")
-        .args(["-std=c99", "-Wall", "-Werror", "-O1", "-o"])
-        .arg(&program)
-        .arg(scratch.join("replay.c"))
-        .arg("-I")
-        .arg(c.join("include"))
-        .arg(&library)
-        .output()
-        .unwrap();
+    // With AddressSanitizer and UndefinedBehaviorSanitizer where the toolchain has them: a call that
+    // reads or writes beyond the storage the program gave it stops the program.
+    let compile = |sanitizers: &[&str]| {
+        Command::new("cc")
+            .args(["-std=c99", "-Wall", "-Werror", "-O1"])
+            .args(sanitizers)
+            .arg("-o")
+            .arg(&program)
+            .arg(scratch.join("replay.c"))
+            .arg("-I")
+            .arg(c.join("include"))
+            .arg(&library)
+            .output()
+            .unwrap()
+    };
+    let mut compiled = compile(&[
+        "-fsanitize=address,undefined",
+        "-fno-sanitize-recover=all",
+        "-fno-omit-frame-pointer",
+    ]);
+    if !compiled.status.success() {
+        eprintln!(
+            "the C program without sanitizers (cc could not build it with them: {})",
+            String::from_utf8_lossy(&compiled.stderr)
+        );
+        compiled = compile(&[]);
+    }
     assert!(
         compiled.status.success(),
         "cc: {}",
@@ -427,8 +445,19 @@ fn replay_source() -> String {
 
 static const uint32_t samples[{len}][MY_OSCILLATOR_OUTPUTS] = {{ {rows} }};
 static uint8_t storage[MY_OSCILLATOR_STORAGE_SIZE] __attribute__((aligned(MY_OSCILLATOR_STORAGE_ALIGN)));
+static uint8_t zeroed[MY_OSCILLATOR_STORAGE_SIZE] __attribute__((aligned(MY_OSCILLATOR_STORAGE_ALIGN)));
+static uint8_t small[16] __attribute__((aligned(MY_OSCILLATOR_STORAGE_ALIGN)));
 
 int main(void) {{
+    /* Storage `init` never made an observer in (zeroed, or one it refused as too small) is refused by
+       every call, which reads its first 16 bytes and nothing else (the sanitizers watch). */
+    float y0[MY_OSCILLATOR_OUTPUTS] = {{0}};
+    float x0[MY_OSCILLATOR_TARGETS];
+    if (my_oscillator_estimate(zeroed, x0, NULL) != MyOscillatorStatus_NotInitialised) return 5;
+    if (my_oscillator_push(zeroed, y0, NULL) != MyOscillatorStatus_NotInitialised) return 6;
+    if (my_oscillator_init(small, sizeof small) != MyOscillatorStatus_BadArgument) return 7;
+    if (my_oscillator_push(small, y0, NULL) != MyOscillatorStatus_NotInitialised) return 8;
+    if (my_oscillator_estimate(small, x0, NULL) != MyOscillatorStatus_NotInitialised) return 9;
     if (my_oscillator_init(storage, sizeof storage) != MyOscillatorStatus_Ok) return 2;
     if (my_oscillator_storage_size() > sizeof storage) return 3;
     if ((float)MY_OSCILLATOR_SAMPLE_PERIOD != {tau}f) return 4; /* the header states the design's period */

@@ -82,7 +82,21 @@ pub fn storage_bound(design: &Design) -> usize {
     let (nx, nt) = (design.model.states.len(), design.targets.len());
     let window = 2 * 4 * n * (ny + nu) + 2 * 8;
     let follower = 4 * (nx * (nx + 7) + 4 * nt) + 64;
-    (window + follower).div_ceil(8) * 8
+    // The storage's mark and size (`Stored`) before the observer.
+    (MARK_BYTES + window + follower).div_ceil(8) * 8
+}
+
+/// Bytes before the observer in the C storage: the mark that `init` made an observer there, and the
+/// size it was given.
+const MARK_BYTES: usize = 16;
+
+/// The mark of an observer of design `name` in C storage: FNV-1a of the name, never 0, so that
+/// zeroed storage, storage `init` refused, or another design's observer are told apart.
+fn mark(name: &str) -> u64 {
+    let hash = name.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    });
+    hash | 1
 }
 
 /// Spec text for a doc comment that cbindgen copies into a C `/* … */` comment: one line, no code
@@ -149,8 +163,20 @@ pub const {upper}_HORIZON: usize = {horizon};
 /// The sample period the design assumes: push one sample every {upper}_SAMPLE_PERIOD {time_unit}.
 pub const {upper}_SAMPLE_PERIOD: f32 = {tau};
 
-const _: () = assert!(size_of::<design::Observer>() <= {upper}_STORAGE_SIZE);
-const _: () = assert!(align_of::<design::Observer>() <= {upper}_STORAGE_ALIGN);
+/// What `{name}_init` writes into the storage: a mark that an observer of this design is there and
+/// the size it was given, then the observer. Every call checks the mark first.
+#[repr(C)]
+struct Stored {{
+    mark: u64,
+    size: u64,
+    observer: design::Observer,
+}}
+
+/// The mark of this design's observer (never 0: zeroed storage holds none).
+const MARK: u64 = 0x{mark:016x};
+
+const _: () = assert!(size_of::<Stored>() <= {upper}_STORAGE_SIZE);
+const _: () = assert!(align_of::<Stored>() <= {upper}_STORAGE_ALIGN);
 const _: () = assert!(
     design::OUTPUTS == {upper}_OUTPUTS
         && design::INPUTS == {upper}_INPUTS
@@ -172,18 +198,30 @@ pub enum {status} {{
     NoEstimateYet = 2,
     /// A null pointer, or storage too small or misaligned: nothing was done.
     BadArgument = 3,
+    /// The storage holds no observer: `{name}_init` was never called on it, or refused it (or it
+    /// holds another design's); nothing was done.
+    NotInitialised = 4,
 }}
 
-/// The observer in `storage`, or `None` for a null or misaligned pointer.
+/// The observer in `storage`: `BadArgument` for a null or misaligned pointer, `NotInitialised`
+/// when `{name}_init` did not make one there (the mark is not this design's, or the size it was
+/// given is too small).
 ///
 /// # Safety
-/// `storage` holds an observer made by `{name}_init`, used by nothing else during the call.
-unsafe fn observer<'a>(storage: *mut c_void) -> Option<&'a mut design::Observer> {{
-    if storage.is_null() || (storage as usize) % align_of::<design::Observer>() != 0 {{
-        return None;
+/// `storage` points to at least 16 readable bytes; when they hold the mark, to an observer made by
+/// `{name}_init`, used by nothing else during the call.
+unsafe fn observer<'a>(storage: *mut c_void) -> Result<&'a mut design::Observer, {status}> {{
+    if storage.is_null() || (storage as usize) % align_of::<Stored>() != 0 {{
+        return Err({status}::BadArgument);
     }}
-    // SAFETY: non-null and aligned; initialised by `{name}_init` (the caller's contract).
-    Some(unsafe {{ &mut *storage.cast::<design::Observer>() }})
+    let stored = storage.cast::<Stored>();
+    // SAFETY: non-null and aligned; the mark and the size are the storage's first 16 bytes.
+    let (mark, size) = unsafe {{ (core::ptr::addr_of!((*stored).mark).read(), core::ptr::addr_of!((*stored).size).read()) }};
+    if mark != MARK || size < size_of::<Stored>() as u64 {{
+        return Err({status}::NotInitialised);
+    }}
+    // SAFETY: `{name}_init` wrote a whole `Stored` there (the mark says so).
+    Ok(unsafe {{ &mut (*stored).observer }})
 }}
 
 /// Creates a fresh observer (no sample yet) in `storage`, `size` bytes aligned to
@@ -193,14 +231,16 @@ unsafe fn observer<'a>(storage: *mut c_void) -> Option<&'a mut design::Observer>
 /// `storage` points to `size` writable bytes that nothing else uses while the observer lives.
 #[no_mangle]
 pub unsafe extern "C" fn {name}_init(storage: *mut c_void, size: usize) -> {status} {{
-    if storage.is_null()
-        || size < size_of::<design::Observer>()
-        || (storage as usize) % align_of::<design::Observer>() != 0
-    {{
+    if storage.is_null() || size < size_of::<Stored>() || (storage as usize) % align_of::<Stored>() != 0 {{
         return {status}::BadArgument;
     }}
+    let stored = Stored {{
+        mark: MARK,
+        size: size as u64,
+        observer: design::observer(),
+    }};
     // SAFETY: large enough, aligned, and the caller's to write.
-    unsafe {{ storage.cast::<design::Observer>().write(design::observer()) }};
+    unsafe {{ storage.cast::<Stored>().write(stored) }};
     {status}::Ok
 }}
 
@@ -212,8 +252,9 @@ pub unsafe extern "C" fn {name}_init(storage: *mut c_void, size: usize) -> {stat
 #[no_mangle]
 pub unsafe extern "C" fn {name}_push(storage: *mut c_void, y: *const f32, u: *const f32) -> {status} {{
     // SAFETY: the caller's contract.
-    let Some(observer) = (unsafe {{ observer(storage) }}) else {{
-        return {status}::BadArgument;
+    let observer = match unsafe {{ observer(storage) }} {{
+        Ok(observer) => observer,
+        Err(status) => return status,
     }};
     if (y.is_null() && design::OUTPUTS > 0) || (u.is_null() && design::INPUTS > 0) {{
         return {status}::BadArgument;
@@ -243,8 +284,9 @@ pub unsafe extern "C" fn {name}_push(storage: *mut c_void, y: *const f32, u: *co
 #[no_mangle]
 pub unsafe extern "C" fn {name}_estimate(storage: *mut c_void, estimates: *mut f32, saturation: *mut i8) -> {status} {{
     // SAFETY: the caller's contract.
-    let Some(observer) = (unsafe {{ observer(storage) }}) else {{
-        return {status}::BadArgument;
+    let observer = match unsafe {{ observer(storage) }} {{
+        Ok(observer) => observer,
+        Err(status) => return status,
     }};
     if estimates.is_null() {{
         return {status}::BadArgument;
@@ -268,10 +310,10 @@ pub unsafe extern "C" fn {name}_estimate(storage: *mut c_void, estimates: *mut f
     {status}::Ok
 }}
 
-/// Bytes the observer occupies on this target (at most `{upper}_STORAGE_SIZE`).
+/// Bytes the observer occupies on this target with its mark (at most `{upper}_STORAGE_SIZE`).
 #[no_mangle]
 pub extern "C" fn {name}_storage_size() -> usize {{
-    size_of::<design::Observer>()
+    size_of::<Stored>()
 }}
 
 /// The observer's code has no reachable panic (the project's probe proves it for every design);
@@ -292,6 +334,7 @@ fn panic(_: &core::panic::PanicInfo) -> ! {{
         nu = design.model.inputs.len(),
         nt = design.targets.len(),
         horizon = design.map.horizon,
+        mark = mark(name),
     )
 }
 
