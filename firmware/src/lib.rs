@@ -42,7 +42,9 @@
 //!
 //! [`Ekf`] is an extended Kalman filter over any [`Plant`] (one sampling period of the model and its
 //! output, with Jacobians), in plain arrays with sequential scalar updates in Joseph form: the observer
-//! every design is compared with.
+//! every design is compared with. [`Started`] runs a model-based [`Follower`] from the map's first
+//! estimate (the model-corrected map, the map-started EKF); [`Restarted`] runs a filter from the
+//! first sample and checks the map once, restarting from it when the two disagree.
 //!
 //! # Features
 //!

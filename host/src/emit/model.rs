@@ -109,6 +109,17 @@ fn list(items: &[String]) -> String {
     format!("[{}]", items.join(", "))
 }
 
+/// `[a, b, …]` of `values` as `f32` literals (each checked as [`f32_literal`] checks it, named
+/// `what[i]`).
+fn f32_list(what: &str, values: &[f64]) -> Result<String, EmitError> {
+    let entries = values
+        .iter()
+        .enumerate()
+        .map(|(i, v)| f32_literal(&format!("{what}[{i}]"), *v))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(list(&entries))
+}
+
 /// `[[…], …]`: `items` in rows of `width`.
 fn rows(items: &[String], width: usize) -> String {
     if width == 0 {
@@ -235,14 +246,6 @@ pub const TABLES_SHA256: &str = \"{tables}\";
 fn restarted(ekf: &EkfConstants, restart: &RestartConstants) -> Result<String, EmitError> {
     let nx = ekf.x0.len();
     let upper = kalman::diagonal_upper(&ekf.p0);
-    let f32_list = |what: &str, values: &[f64]| -> Result<String, EmitError> {
-        let entries = values
-            .iter()
-            .enumerate()
-            .map(|(i, v)| super::f32_literal(&format!("{what}[{i}]"), *v))
-            .collect::<Result<Vec<_>, _>>()?;
-        Ok(list(&entries))
-    };
     let f64_list = |values: &[f64]| format!("{values:?}");
     let variances = restart
         .variances
@@ -699,14 +702,6 @@ fn model_and_ekf(design: &Design, code: &ModelCode, ekf: Option<&EkfConstants>) 
             .replace("{BOUNDS}", &bounds_call(&code.bounds)?)
     )
     .ok();
-    let f32_list = |what: &str, values: &[f64]| -> Result<String, EmitError> {
-        let entries = values
-            .iter()
-            .enumerate()
-            .map(|(i, v)| super::f32_literal(&format!("{what}[{i}]"), *v))
-            .collect::<Result<Vec<_>, _>>()?;
-        Ok(list(&entries))
-    };
     write!(
         w,
         "{}",

@@ -468,13 +468,7 @@ pub const START_FACTORS: [f64; 9] = [
 /// the map's RMSE of state `i` on the tuning runs: the [`START_FACTORS`] value of lowest `score(c)`,
 /// the first of equals. Returns `(c, score)`.
 pub fn tune_started(score: impl Fn(f64) -> f64 + Sync) -> (f64, f64) {
-    use rayon::prelude::*;
-    START_FACTORS
-        .par_iter()
-        .map(|&c| (c, score(c)))
-        .collect::<Vec<_>>()
-        .into_iter()
-        .fold((1.0, f64::INFINITY), |best, c| if c.1 < best.1 { c } else { best })
+    super::score::lowest(&START_FACTORS, score)
 }
 
 #[cfg(test)]

@@ -118,16 +118,7 @@ pub fn estimate<T: Scalar + Maths>(
 
 /// Chooses `τ` from [`THRESHOLDS`]: the lowest `score(τ)`, the first of equals. Returns `(τ, score)`.
 pub fn tune(score: impl Fn(f64) -> f64 + Sync) -> (f64, f64) {
-    use rayon::prelude::*;
-    THRESHOLDS
-        .par_iter()
-        .map(|&t| (t, score(t)))
-        .collect::<Vec<_>>()
-        .into_iter()
-        .fold(
-            (THRESHOLDS[0], f64::INFINITY),
-            |best, t| if t.1 < best.1 { t } else { best },
-        )
+    super::score::lowest(&THRESHOLDS, score)
 }
 
 #[cfg(test)]

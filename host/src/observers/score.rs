@@ -86,9 +86,33 @@ pub fn of_estimates(
     score(&pooled, &p95, spreads)
 }
 
+/// The candidate of lowest `score` (the first of equals, in `candidates`' order), scored in
+/// parallel, and its score: the one-parameter grid searches of the tuning.
+pub fn lowest(candidates: &[f64], score: impl Fn(f64) -> f64 + Sync) -> (f64, f64) {
+    use rayon::prelude::*;
+    candidates
+        .par_iter()
+        .map(|&c| (c, score(c)))
+        .collect::<Vec<_>>()
+        .into_iter()
+        .fold(
+            (candidates[0], f64::INFINITY),
+            |best, c| if c.1 < best.1 { c } else { best },
+        )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_lowest_candidate_wins_and_the_first_of_equals() {
+        let candidates = [1.0, 2.0, 3.0, 4.0];
+        assert_eq!(lowest(&candidates, |c| (c - 3.0).abs()), (3.0, 0.0));
+        assert_eq!(lowest(&candidates, |c| if c > 1.5 { 0.5 } else { 1.0 }), (2.0, 0.5));
+        // Nothing finite: the first candidate, as the tuning's fallback.
+        assert_eq!(lowest(&candidates, |_| f64::NAN).0, 1.0);
+    }
 
     #[test]
     fn the_percentile_interpolates_between_order_statistics() {
