@@ -23,6 +23,14 @@ pub enum GenerateError {
     /// The spec is invalid, or its data or fit failed (the message names the spec field to change).
     #[error(transparent)]
     Spec(#[from] SpecError),
+    /// `--runtime-path` is not the folder of the `firmware` crate.
+    #[error("{}: --runtime-path: {why}\n  fix: pass the folder of the `firmware` runtime crate (the checkout's firmware/), or --runtime-version <version>", path.display())]
+    Runtime {
+        /// The path given.
+        path: PathBuf,
+        /// What is wrong.
+        why: String,
+    },
     /// `gen --spec` would replace a file it did not write (see [`crate::standalone::owned`]).
     #[error(transparent)]
     NotOurs(#[from] crate::standalone::owned::NotOurs),

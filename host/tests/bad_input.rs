@@ -184,6 +184,35 @@ fn command_line_exits_non_zero_without_panic_and_keeps_earlier_reports() {
         .unwrap();
     assert!(!missing.status.success());
     assert!(String::from_utf8_lossy(&missing.stderr).contains("no/such/spec.toml"));
+    // A runtime path that is not the `firmware` crate (a missing folder, this host crate) is refused
+    // before anything is fitted, and no crate folder is made.
+    let good_spec = dir.join("good.toml");
+    std::fs::write(&good_spec, EXAMPLE).unwrap();
+    let host_crate = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for (runtime, expected) in [
+        (dir.join("no-such-runtime"), "cannot read"),
+        (host_crate.to_path_buf(), "the package `host`, not `firmware`"),
+    ] {
+        let out = dir.join("crate");
+        let output = Command::new(env!("CARGO_BIN_EXE_host"))
+            .args(["gen", "--spec"])
+            .arg(&good_spec)
+            .arg("--out")
+            .arg(&out)
+            .arg("--runtime-path")
+            .arg(&runtime)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            !output.status.success()
+                && stderr.contains("--runtime-path")
+                && stderr.contains(expected)
+                && stderr.contains("fix:"),
+            "{stderr}"
+        );
+        assert!(!out.exists());
+    }
 }
 
 #[test]

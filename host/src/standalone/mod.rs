@@ -40,6 +40,36 @@ pub enum Runtime {
 }
 
 impl Runtime {
+    /// Checks a path runtime: a folder whose `Cargo.toml` is the `firmware` package (a crate that
+    /// depends on anything else would fail to build, later and far from the cause).
+    pub fn check(&self) -> Result<(), GenerateError> {
+        let Runtime::Path(path) = self else {
+            return Ok(());
+        };
+        let wrong = |why: String| GenerateError::Runtime {
+            path: path.clone(),
+            why,
+        };
+        let manifest = path.join("Cargo.toml");
+        let text = std::fs::read_to_string(&manifest)
+            .map_err(|e| wrong(format!("cannot read {}: {e}", manifest.display())))?;
+        let table: toml::Table = text
+            .parse()
+            .map_err(|e| wrong(format!("{} is not a Cargo manifest: {e}", manifest.display())))?;
+        let name = table
+            .get("package")
+            .and_then(|p| p.get("name"))
+            .and_then(toml::Value::as_str);
+        if name != Some("firmware") {
+            return Err(wrong(format!(
+                "{} is the package {}, not `firmware`",
+                manifest.display(),
+                name.map_or("of no name".to_owned(), |n| format!("`{n}`"))
+            )));
+        }
+        Ok(())
+    }
+
     /// The `[dependencies]` line.
     fn dependency(&self) -> String {
         match self {
@@ -89,7 +119,9 @@ pub fn run(
             to.out.clone()
         }
     };
-    // Before anything is fitted: no crate may replace a file `gen` did not write.
+    // Before anything is fitted: the runtime the crates will depend on is the `firmware` crate, and
+    // no crate may replace a file `gen` did not write.
+    to.runtime.check()?;
     for (_, design) in &designs {
         owned::check(&folder_of(&design.name), &design.name, to.force)?;
     }
