@@ -63,6 +63,13 @@ pub fn remove_stale_temporaries(folder: &Path, prefix: &str, suffix: &str) {
     }
 }
 
+/// Lower-case hex SHA-256 of `bytes`: how the tool fingerprints specs, sources, tables and the files
+/// it wrote.
+pub fn sha256_hex(bytes: &[u8]) -> String {
+    use sha2::Digest;
+    sha2::Sha256::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
+}
+
 /// Writes `text` to `path` only if it differs from what is there (keeps timestamps, and so cargo's
 /// rebuilds, quiet when regeneration changes nothing). Returns whether the file changed.
 pub fn write_if_changed(path: &Path, text: &str) -> std::io::Result<bool> {

@@ -283,9 +283,5 @@ impl Tables {
 
 /// Lower-case hex SHA-256 of `text`.
 fn sha256(text: &str) -> String {
-    use sha2::Digest;
-    sha2::Sha256::digest(text.as_bytes())
-        .iter()
-        .map(|b| format!("{b:02x}"))
-        .collect()
+    crate::output::sha256_hex(text.as_bytes())
 }

@@ -16,7 +16,6 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 use serde::{Deserialize, Serialize};
-use sha2::Digest;
 
 /// The file beside `report.json`.
 pub const FILE: &str = "on_target.json";
@@ -67,10 +66,7 @@ pub struct Measured {
 
 /// SHA-256 of a generated source, in hex.
 pub fn source_hash(source: &str) -> String {
-    sha2::Sha256::digest(source.as_bytes())
-        .iter()
-        .map(|b| format!("{b:02x}"))
-        .collect()
+    crate::output::sha256_hex(source.as_bytes())
 }
 
 /// The figures in `folder`'s [`FILE`] when they were measured on `source`; none otherwise (no file,

@@ -14,7 +14,6 @@ mod validate_model;
 use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
-use sha2::Digest;
 
 use crate::spec::expr::Expression;
 use crate::spec::model::{Model, ModelText};
@@ -463,9 +462,6 @@ pub fn parse(path: &Path, text: &str) -> Result<Design, SpecError> {
         path: path.to_owned(),
     }
     .design(raw)?;
-    design.spec_sha256 = sha2::Sha256::digest(text.as_bytes())
-        .iter()
-        .map(|b| format!("{b:02x}"))
-        .collect();
+    design.spec_sha256 = crate::output::sha256_hex(text.as_bytes());
     Ok(design)
 }

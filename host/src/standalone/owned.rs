@@ -14,6 +14,8 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+use crate::output::sha256_hex as sha256;
+
 /// The list's file name in a crate folder.
 pub const LIST: &str = ".gen-files";
 
@@ -133,12 +135,6 @@ pub fn check(folder: &Path, name: &str, force: bool) -> Result<(), crate::genera
         owned.may_replace(folder, relative)?;
     }
     Ok(())
-}
-
-/// The SHA-256 of `bytes`, in hex.
-fn sha256(bytes: &[u8]) -> String {
-    use sha2::Digest;
-    sha2::Sha256::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
 }
 
 #[cfg(test)]
