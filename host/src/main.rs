@@ -318,6 +318,8 @@ fn gen_standalone(
         specs.len(),
         to.out.display()
     );
+    // A crate is replaced by a new folder (standalone::publish): a shell inside the old one would not see it.
+    let inside = host::standalone::publish::holds_current_directory(&to.out);
     let outcomes = host::standalone::run(specs, &to, strict, progress_bar, |spec, prepared| match prepared {
         Ok(prepared) => print_summary(prepared),
         Err(error) => eprintln!("error: {}: {error}", spec.display()),
@@ -329,6 +331,11 @@ fn gen_standalone(
             outcome.folder.display(),
             outcome.report_files[1].display(),
             outcome.figures.len(),
+        );
+    }
+    if inside {
+        eprintln!(
+            "note: the crate folder was replaced whole; a shell inside it still sees the old one until it changes directory (cd \"$PWD\")"
         );
     }
     Ok(())

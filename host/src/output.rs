@@ -47,8 +47,9 @@ pub fn write_atomically_with<E: From<std::io::Error>>(
     Ok(())
 }
 
-/// Removes the files of `folder` named `<prefix><digits><suffix>`: temporaries this tool names after
-/// its process id, left behind when a run was killed.
+/// Removes the files of `folder` named `<prefix><pid><suffix>`: temporaries this tool names after its
+/// process id, left behind when a run was killed. A live process's temporaries are its own (two `gen`
+/// into one folder): only those of processes that are gone are removed.
 pub fn remove_stale_temporaries(folder: &Path, prefix: &str, suffix: &str) {
     let Ok(entries) = std::fs::read_dir(folder) else { return };
     for entry in entries.flatten() {
@@ -56,11 +57,33 @@ pub fn remove_stale_temporaries(folder: &Path, prefix: &str, suffix: &str) {
         let is_stale = name
             .strip_prefix(prefix)
             .and_then(|rest| rest.strip_suffix(suffix))
-            .is_some_and(|pid| !pid.is_empty() && pid.bytes().all(|b| b.is_ascii_digit()));
+            .and_then(pid)
+            .is_some_and(|pid| !process_is_alive(pid));
         if is_stale {
             let _ = std::fs::remove_file(entry.path());
         }
     }
+}
+
+/// A process id written in decimal digits.
+fn pid(digits: &str) -> Option<u32> {
+    digits
+        .bytes()
+        .all(|b| b.is_ascii_digit())
+        .then(|| digits.parse().ok())?
+}
+
+/// Whether `name` is one of [`write_atomically`]'s temporaries (`<file>.tmp<pid>`).
+pub fn is_temporary(name: &str) -> bool {
+    name.rsplit_once(".tmp")
+        .is_some_and(|(_, digits)| pid(digits).is_some())
+}
+
+/// Whether process `pid` is running. Where that cannot be known (no `/proc`), it is taken to be:
+/// a file that may be another run's is never removed.
+pub fn process_is_alive(pid: u32) -> bool {
+    let proc = Path::new("/proc");
+    !proc.join("self").exists() || proc.join(pid.to_string()).exists()
 }
 
 /// Lower-case hex SHA-256 of `bytes`: how the tool fingerprints specs, sources, tables and the files
@@ -94,13 +117,19 @@ mod tests {
         assert!(!write_if_changed(&path, "two").unwrap());
         assert_eq!(std::fs::read_to_string(&path).unwrap(), "two");
         assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
-        // Temporaries of an interrupted run (this tool's names only) are cleaned up by the next write.
-        std::fs::write(dir.join("a.txt.tmp4242"), "stale").unwrap();
+        // Temporaries of an interrupted run (this tool's names, of a process that is gone: above the
+        // largest pid Linux allows) are cleaned up by the next write; a live process's are its own.
+        let live = "a.txt.tmp1"; // process 1 is always running
+        std::fs::write(dir.join("a.txt.tmp4194305"), "stale").unwrap();
         std::fs::write(dir.join("a.txt.tmpx"), "not ours").unwrap();
+        std::fs::write(dir.join(live), "another run's, live").unwrap();
         write_atomically(&path, b"three").unwrap();
-        assert!(!dir.join("a.txt.tmp4242").exists());
+        assert!(!dir.join("a.txt.tmp4194305").exists());
         assert!(dir.join("a.txt.tmpx").exists());
+        assert!(is_temporary("a.txt.tmp4194305") && !is_temporary("a.txt.tmpx") && !is_temporary("a.txt.tmp"));
+        assert!(dir.join(live).exists());
         std::fs::remove_file(dir.join("a.txt.tmpx")).unwrap();
+        std::fs::remove_file(dir.join(live)).unwrap();
         // A failed write (into a missing folder) leaves nothing behind and reports the error.
         assert!(write_atomically(&dir.join("missing").join("b.txt"), b"x").is_err());
         std::fs::remove_dir_all(&dir).unwrap();

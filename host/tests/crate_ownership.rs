@@ -1,13 +1,10 @@
 //! `gen --spec --out DIR` replaces only files it wrote itself: pointed at a folder holding the user's
 //! own files (or files of ours the user edited since), it refuses before fitting anything, names the
-//! file and the fix, and leaves every file as it was.
+//! file and the fix, and leaves every file as it was. And it replaces a crate whole: killed at any
+//! instant, it leaves the old crate or the new one.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
-
-fn host(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_host")).args(args).output().unwrap()
-}
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("host-ownership-{}-{name}", std::process::id()));
@@ -40,10 +37,22 @@ fn files(dir: &Path) -> Vec<(PathBuf, Vec<u8>)> {
 
 /// `gen --spec <Example 1 as my_oscillator> --out <out>`, with the checkout's runtime.
 fn gen_into(spec_dir: &Path, out: &Path, extra: &[&str]) -> Output {
+    gen_with(spec_dir, out, extra, "", &[])
+}
+
+/// [`gen_into`] with environment `env`; with a `version`, the spec's description ends in it and the
+/// validation and tuning runs are 8 (a cheaper fit).
+fn gen_with(spec_dir: &Path, out: &Path, extra: &[&str], version: &str, env: &[(&str, &str)]) -> Output {
     let spec = spec_dir.join("my_oscillator.toml");
-    let text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml"))
+    let mut text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml"))
         .unwrap()
         .replacen("name = \"vanderpol\"", "name = \"my_oscillator\"", 1);
+    if !version.is_empty() {
+        text = text
+            .replacen("(paper Example 1)\"", &format!("(paper Example 1){version}\""), 1)
+            .replacen("\ntrajectories = 64", "\ntrajectories = 8", 1)
+            .replacen("[tuning]", "[tuning]\ntrajectories = 8", 1);
+    }
     std::fs::write(&spec, text).unwrap();
     let firmware = Path::new(env!("CARGO_MANIFEST_DIR")).join("../firmware");
     let mut args = vec![
@@ -56,7 +65,113 @@ fn gen_into(spec_dir: &Path, out: &Path, extra: &[&str]) -> Output {
         s(&firmware),
     ];
     args.extend(extra);
-    host(&args)
+    Command::new(env!("CARGO_BIN_EXE_host"))
+        .args(&args)
+        .envs(env.iter().copied())
+        .output()
+        .unwrap()
+}
+
+/// Copies the tree `from` into `to` (a new folder).
+fn copy_tree(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for entry in std::fs::read_dir(from).unwrap().flatten() {
+        let target = to.join(entry.file_name());
+        if entry.file_type().unwrap().is_dir() {
+            copy_tree(&entry.path(), &target);
+        } else {
+            std::fs::copy(entry.path(), &target).unwrap();
+        }
+    }
+}
+
+#[test]
+fn a_kill_at_every_rename_leaves_the_old_crate_or_the_new_one_whole() {
+    let dir = scratch("kill");
+    let old = dir.join("old");
+    let run = gen_with(&dir, &old, &[], " old", &[]);
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    // The user works in the crate: a build folder and notes of their own, which every state keeps.
+    std::fs::create_dir_all(old.join("target/release")).unwrap();
+    std::fs::write(old.join("target/release/firmware.bin"), "the user's build").unwrap();
+    std::fs::write(old.join("NOTES.md"), "the user's notes").unwrap();
+    let old_files = files(&old);
+    // Every file, relative to the crate, as a run writes it: the report's solver times (which differ
+    // from run to run) and their hash in the list set aside; the list is checked by `sha256sum -c`.
+    let relative = |dir: &Path, all: Vec<(PathBuf, Vec<u8>)>| -> Vec<(PathBuf, Vec<u8>)> {
+        let check = Command::new("sha256sum")
+            .args(["--check", "--quiet", ".gen-files"])
+            .current_dir(dir)
+            .output()
+            .unwrap();
+        assert!(check.status.success(), "{}", String::from_utf8_lossy(&check.stdout));
+        all.into_iter()
+            .map(|(p, b)| {
+                let p = p.strip_prefix(dir).unwrap().to_owned();
+                let text = String::from_utf8_lossy(&b);
+                let b = match p.to_str() {
+                    Some("report/report.json") => text
+                        .lines()
+                        .filter(|l| !l.contains("_time_s\""))
+                        .collect::<String>()
+                        .into_bytes(),
+                    Some(".gen-files") => text
+                        .lines()
+                        .filter(|l| !l.ends_with("  report/report.json"))
+                        .collect::<String>()
+                        .into_bytes(),
+                    _ => b,
+                };
+                (p, b)
+            })
+            .collect()
+    };
+    let old_files = relative(&old, old_files);
+
+    // Killed after the k-th rename that publishes the crate (0: with the new crate staged, before the
+    // first), for k = 0, 1, … until a run is not stopped: every state is recorded.
+    let mut stopped = Vec::new();
+    let new_files = (0..10)
+        .find_map(|k| {
+            let folder = dir.join(format!("k{k}"));
+            copy_tree(&old, &folder);
+            let k_text = k.to_string();
+            let run = gen_with(&dir, &folder, &[], " new", &[("GEN_STOP_AFTER_RENAME", &k_text)]);
+            let state = relative(&folder, files(&folder));
+            if run.status.success() {
+                return Some(state);
+            }
+            assert_eq!(run.status.code(), Some(137), "{}", String::from_utf8_lossy(&run.stderr));
+            stopped.push((k, state));
+            None
+        })
+        .expect("gen was stopped at every one of 10 renames");
+    assert_ne!(new_files, old_files);
+    assert!(!stopped.is_empty(), "the hook never stopped gen");
+    for (k, state) in &stopped {
+        assert!(
+            *state == old_files || *state == new_files,
+            "stopped after rename {k}, the crate is neither the old one nor the new one"
+        );
+    }
+    // Both ends are seen: before the publishing rename the old crate, after it the new one.
+    assert!(stopped.first().is_some_and(|(_, s)| *s == old_files));
+    assert!(stopped.last().is_some_and(|(_, s)| *s == new_files));
+    assert!(new_files.contains(&(PathBuf::from("NOTES.md"), b"the user's notes".to_vec())));
+    // What a killed run leaves beside the crate (its stage) is removed by the next run.
+    let litter = |dir: &Path| {
+        std::fs::read_dir(dir)
+            .unwrap()
+            .flatten()
+            .filter(|e| e.file_name().to_string_lossy().starts_with(".gen-k0."))
+            .count()
+    };
+    assert!(litter(&dir) > 0);
+    let run = gen_with(&dir, &dir.join("k0"), &[], " new", &[]);
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    assert_eq!(relative(&dir.join("k0"), files(&dir.join("k0"))), new_files);
+    assert_eq!(litter(&dir), 0);
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

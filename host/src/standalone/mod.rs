@@ -15,10 +15,12 @@
 //! unless every design fits (and, with `--strict`, passes the quality gates). Nothing the user wrote
 //! is replaced: every file a crate gets is recorded in its `.gen-files` ([`owned`]), and a run that
 //! would replace a file not recorded there (or changed since) is refused before anything is fitted,
-//! unless `--force`.
+//! unless `--force`. A crate is replaced whole ([`publish`]): written into a stage beside it and
+//! swapped in with one rename, so that a run killed at any instant leaves the old crate or the new one.
 
 pub mod c_library;
 pub mod owned;
+pub mod publish;
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -135,15 +137,44 @@ pub fn run(
     )?;
     prepared
         .into_iter()
-        .map(|(path, one)| {
+        .map(|(path, mut one)| {
             let folder = folder_of(&one.emitted.design.name);
-            write(&one, &path, &folder, &to.runtime)
+            let observer = folder.join("src").join(format!("{}.rs", one.emitted.design.name));
+            let changed = std::fs::read_to_string(observer).ok().as_ref() != Some(&one.emitted.source);
+            // Written whole into a stage beside the crate, then swapped in ([`publish`]).
+            let outcome = publish::replace(&folder, |stage| {
+                one.folder = stage.join(owned::REPORT);
+                write(&one, &path, stage, &to.runtime, changed)
+            })?;
+            Ok(outcome.moved(&folder))
         })
         .collect()
 }
 
-/// Writes one crate into `folder`.
-fn write(one: &Prepared, spec: &Path, folder: &Path, runtime: &Runtime) -> Result<Outcome, GenerateError> {
+impl Outcome {
+    /// The outcome with its paths in the stage moved to the crate's `folder`.
+    fn moved(self, folder: &Path) -> Outcome {
+        let stage = self.folder;
+        let to = |path: PathBuf| path.strip_prefix(&stage).map_or(path.clone(), |p| folder.join(p));
+        Outcome {
+            name: self.name,
+            folder: folder.to_owned(),
+            report_files: self.report_files.into_iter().map(to).collect(),
+            figures: self.figures.into_iter().map(to).collect(),
+            observer: to(self.observer),
+            changed: self.changed,
+        }
+    }
+}
+
+/// Writes one crate into `folder` (a fresh stage): its files, the report, and the list of them.
+fn write(
+    one: &Prepared,
+    spec: &Path,
+    folder: &Path,
+    runtime: &Runtime,
+    changed: bool,
+) -> Result<Outcome, GenerateError> {
     let design = &one.emitted.design;
     let io = |path: &Path| {
         let path = path.to_owned();
@@ -181,10 +212,8 @@ fn write(one: &Prepared, spec: &Path, folder: &Path, runtime: &Runtime) -> Resul
     })?;
     let header_path = include.join(format!("{}.h", design.name));
     write_if_changed(&header_path, &header).map_err(io(&header_path))?;
-    // The observer last, as `gen` does: a half-written crate never has a new design with old tables.
     let observer = sources.join(format!("{}.rs", design.name));
-    let changed = write_if_changed(&observer, &one.emitted.source).map_err(io(&observer))?;
-    // And the list of what it wrote, last.
+    write_if_changed(&observer, &one.emitted.source).map_err(io(&observer))?;
     let mut written = owned::fixed_files(&design.name);
     written.extend(
         report_files
@@ -193,9 +222,7 @@ fn write(one: &Prepared, spec: &Path, folder: &Path, runtime: &Runtime) -> Resul
             .filter_map(|path| path.strip_prefix(folder).ok().map(Path::to_path_buf)),
     );
     let list = folder.join(owned::LIST);
-    owned::Owned::read(folder)
-        .and_then(|owned| owned.record(folder, &written))
-        .map_err(io(&list))?;
+    owned::Owned::default().record(folder, &written).map_err(io(&list))?;
     Ok(Outcome {
         name: design.name.clone(),
         folder: folder.to_owned(),
