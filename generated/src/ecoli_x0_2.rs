@@ -59,6 +59,10 @@ pub const INPUT_UNITS: [&str; INPUTS] = [];
 pub const STATE_UNITS: [&str; STATES] = ["g/L", "g/L", "g/L"];
 /// Each target's unit, as `estimate` returns it (the spec's `unit`; "" where it gives none).
 pub const TARGET_UNITS: [&str; TARGETS] = ["g/L", "g/(L h)"];
+/// Member of family `ecoli`: `ecoli::observer()` in `lib.rs` runs the member whose value of output
+/// `X_meas` is nearest its first measured value; this one's is 2.0. (`gen` reads this line when it
+/// rebuilds `lib.rs`, so that regenerating one member keeps the others.)
+pub const FAMILY: (&str, usize, f32) = ("ecoli", 0, 2.0);
 
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds

@@ -276,17 +276,32 @@ pub fn design_source(
 }
 
 /// The text of `generated/src/lib.rs` declaring the design files `present` (sorted here) and the
-/// families among them, as the designs `known` declare them (the first of a name counts).
-pub fn lib_source(known: &[Design], present: &[String]) -> Result<String, GenerateError> {
+/// families among them: those of `designs` (this run's, whose files it writes) as their specs say, and
+/// those of the other files present in `sources` as the files declare (`FAMILY`), so that regenerating
+/// one member of a family keeps the others.
+pub fn lib_source(designs: &[Design], sources: &Path, present: &[String]) -> Result<String, GenerateError> {
     let mut present = present.to_vec();
     present.sort();
-    let mut distinct: Vec<Design> = Vec::new();
-    for design in known {
-        if !distinct.iter().any(|d| d.name == design.name) {
-            distinct.push(design.clone());
-        }
+    let mut members = Vec::new();
+    for design in designs {
+        let member = emit::Member::of(design).map_err(|source| emit::FamilyError::Value {
+            file: design.file.clone(),
+            source,
+        })?;
+        members.extend(member);
     }
-    let families = emit::families(&distinct, &present)?;
+    for name in &present {
+        if designs.iter().any(|d| &d.name == name) {
+            continue;
+        }
+        let file = sources.join(format!("{name}.rs"));
+        let source = std::fs::read_to_string(&file).map_err(|source| GenerateError::Io {
+            path: file.clone(),
+            source,
+        })?;
+        members.extend(emit::Member::declared(name, &source, &file));
+    }
+    let families = emit::families(&members, &present)?;
     emit::lib_file(&present, &families).map_err(|source| GenerateError::Emit {
         file: PathBuf::from("generated/src/lib.rs"),
         design: "lib".to_owned(),
@@ -320,7 +335,7 @@ pub struct Outcome {
 }
 
 /// Runs `gen` on `specs`: every design, then `lib.rs` declaring every design file present afterwards
-/// with the families of `specs` and of the shipped specs. `progress` gives each design its progress bar
+/// with their families ([`lib_source`]). `progress` gives each design its progress bar
 /// and `done` hears of each design as it ends (before anything is written). Writes nothing unless every
 /// design succeeded, and with `strict` unless every design passes the quality gates
 /// ([`reporting::gates`]).
@@ -340,14 +355,9 @@ pub fn run(
             present.push(design.name.clone());
         }
     }
-    // This run's designs first, then the shipped ones that load (their families), when in a checkout.
-    let shipped = shipped_specs().unwrap_or_default();
-    let known: Vec<Design> = designs
-        .iter()
-        .map(|(_, d)| d.clone())
-        .chain(shipped.iter().filter_map(|path| spec::load(path).ok()))
-        .collect();
-    let lib = lib_source(&known, &present)?;
+    // This run's designs as their specs say, the other files present as they declare.
+    let this_run: Vec<Design> = designs.iter().map(|(_, d)| d.clone()).collect();
+    let lib = lib_source(&this_run, &sources, &present)?;
 
     // 2. Fit, emit and report every design in memory.
     let prepared = prepare_all(designs, |_| None, |name| to.reports.join(name), strict, progress, done)?;

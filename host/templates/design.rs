@@ -59,7 +59,7 @@ pub const INPUT_UNITS: [&str; INPUTS] = {{ input_units }};
 pub const STATE_UNITS: [&str; STATES] = {{ state_units }};
 /// Each target's unit, as `estimate` returns it (the spec's `unit`; "" where it gives none).
 pub const TARGET_UNITS: [&str; TARGETS] = {{ target_units }};
-
+{{ family }}
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.

@@ -100,6 +100,38 @@ fn a_design_that_breaks_its_family_writes_nothing() {
 }
 
 #[test]
+fn regenerating_one_member_of_a_family_keeps_the_others() {
+    // `gen --spec a --spec b --generated g`, then `gen --spec a --generated g`: b's spec is not in the
+    // second run, its file is; the family keeps both members (b used to leave it silently).
+    let scratch = Scratch::empty("family-regenerated");
+    let member = |name: &str, value: &str| {
+        scratch.spec(
+            "vanderpol",
+            &format!("{name}.toml"),
+            &[
+                ("name = \"vanderpol\"", &format!("name = \"{name}\"")),
+                ("\ntrajectories = 64", "\ntrajectories = 8"),
+                ("[tuning]", "[tuning]\ntrajectories = 8"),
+                (
+                    "[observer]",
+                    &format!("[family]\nname = \"fam\"\noutput = \"y\"\nvalue = {value}\n\n[observer]"),
+                ),
+            ],
+        )
+    };
+    let (a, b) = (member("fam_a", "1.0"), member("fam_b", "2.5"));
+    scratch.run(&[a.clone(), b]).unwrap();
+    let lib = scratch.root.join("generated/src/lib.rs");
+    let both = std::fs::read_to_string(&lib).unwrap();
+    assert!(
+        both.contains("pub mod fam {") && both.contains("(`fam_a` at 1.0, `fam_b` at 2.5)"),
+        "{both}"
+    );
+    scratch.run(&[a]).unwrap();
+    assert_eq!(std::fs::read_to_string(&lib).unwrap(), both);
+}
+
+#[test]
 fn a_design_named_like_a_family_is_refused_before_anything_is_written() {
     // A design `ecoli` would write ecoli.rs beside the family module `ecoli` of lib.rs.
     let scratch = Scratch::new("family-name");

@@ -35,6 +35,7 @@ fn generated_files_match_a_fresh_generation() {
         lib,
         generate::lib_source(
             &specs.iter().map(|p| host::spec::load(p).unwrap()).collect::<Vec<_>>(),
+            &workspace_root().join("generated/src"),
             &names
         )
         .unwrap(),

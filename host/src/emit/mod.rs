@@ -14,7 +14,7 @@ pub mod precision;
 
 use precision::{check_f32, F32Tables};
 
-pub use families::{families, FamilyError, FamilyModule};
+pub use families::{families, FamilyError, FamilyModule, Member};
 
 use std::path::Path;
 
@@ -279,6 +279,8 @@ struct DesignFile {
     refused: Vec<usize>,
     states: usize,
     state_list: String,
+    /// The `FAMILY` constant of a family's member ([`families::Member::declaration`]), else nothing.
+    family: String,
     model: String,
 }
 
@@ -572,6 +574,10 @@ pub fn design_file(
         refused: refused_samples(result.scenario.measurements.len()),
         states: design.model.states.len(),
         state_list: format!("{:?}", design.model.states),
+        family: match Member::of(design)? {
+            Some(member) => member.declaration(),
+            None => String::new(),
+        },
         predicted: observers
             .instructions
             .iter()

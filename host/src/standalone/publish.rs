@@ -286,7 +286,8 @@ mod tests {
         let dead = dir.join(format!("{STAGE}fresh.4194305"));
         std::fs::create_dir_all(&dead).unwrap();
         replace(&dir.join("fresh"), |stage| {
-            Ok(std::fs::write(stage.join("a"), "a").unwrap())
+            std::fs::write(stage.join("a"), "a").unwrap();
+            Ok(())
         })
         .unwrap();
         assert!(!dead.exists());
