@@ -241,7 +241,7 @@ pub fn estimate(
     read.extend(tables);
     refuse_overwrite(output, &read)?;
     // A device or pipe may never end: only a regular file has a size to read.
-    if input.exists() && !std::fs::metadata(input).is_ok_and(|m| m.is_file()) {
+    if !recording::regular_or_missing(input) {
         return Err(CommandError::NotAFile { path: input.to_owned() });
     }
     let mut rows = recording::RowReader::open(design, input)?;
@@ -286,10 +286,30 @@ pub fn estimate(
     let names: Vec<&str> = design.targets.iter().map(|t| t.name.as_str()).collect();
     let csv = EstimatesCsv::new(&names, rows.has_runs(), design.tau);
     if chosen != ObserverKind::Map {
+        // Row by row, as the map below: memory does not grow with the recording.
         let code = crate::generate::model_code(design)?;
-        let all = recording::read(design, input)?;
-        let estimates = crate::observers::recorded::estimate(design, &tables, &code, chosen, precision, &all)?;
-        output::write_atomically(output, recording::estimates_csv(&csv, &all, &estimates).as_bytes()).map_err(io)?;
+        output::write_atomically_with(output, |out| -> Result<(), Streamed> {
+            std::io::Write::write_all(out, csv.header().as_bytes())?;
+            let mut k = 0;
+            crate::observers::recorded::stream(
+                design,
+                &tables,
+                &code,
+                chosen,
+                precision,
+                || rows.next_row().map_err(Streamed::from),
+                |row, estimate| {
+                    std::io::Write::write_all(out, csv.line(k, row, &estimate).as_bytes())?;
+                    k += 1;
+                    Ok(())
+                },
+            )
+        })
+        .map_err(|e| match e {
+            Streamed::Recording(e) => CommandError::Recording(e),
+            Streamed::Observer(e) => CommandError::Kind(e),
+            Streamed::Io(source) => io(source),
+        })?;
         return Ok(provenance);
     }
     let maps = MapEvaluator::new(&tables.maps, precision).map_err(crate::observers::recorded::RecordedError::from)?;
@@ -302,6 +322,17 @@ pub fn estimate(
         StreamError::Io(source) => io(source),
     })?;
     Ok(provenance)
+}
+
+/// Why streaming an observer's estimates stopped.
+#[derive(Debug, thiserror::Error)]
+enum Streamed {
+    #[error(transparent)]
+    Recording(#[from] recording::RecordingError),
+    #[error(transparent)]
+    Observer(#[from] crate::observers::recorded::RecordedError),
+    #[error(transparent)]
+    Io(#[from] std::io::Error),
 }
 
 /// Refuses an `output` that is a folder or the same file as one of `inputs` (compared as canonical

@@ -163,65 +163,108 @@ pub fn estimate_run<T: Scalar + Maths>(
     map: &[Vec<T>],
     run: &Run,
 ) -> Vec<Vec<T>> {
-    let to_t = |row: &[f64]| row.iter().map(|&v| T::literal(v as f32, v)).collect::<Vec<T>>();
-    let (lower, upper) = (to_t(&constants.lower), to_t(&constants.upper));
-    let blends: Vec<Vec<T>> = constants.blends().iter().map(|row| to_t(row)).collect();
-    let scratch = std::cell::RefCell::new(Vec::new());
-    let no: [T; 0] = [];
-    let predict = |x: &[T], u: &[T]| {
-        let at = Reading {
-            x,
-            u,
-            y: &no,
-            map: &no,
-            blend: &no,
-        };
-        let next = code.run(&code.predict, &at, &mut scratch.borrow_mut());
-        next.iter().all(|v| v.is_finite()).then_some(next)
-    };
-    // `firmware::started::clamp`: NaN to the lower end.
-    let clamp = |raw: &[T]| -> Vec<T> {
-        raw.iter()
-            .zip(lower.iter().zip(&upper))
-            .map(|(&v, (&lo, &hi))| {
-                if v.partial_cmp(&lo).is_none_or(|o| o.is_lt()) {
-                    lo
-                } else if v > hi {
-                    hi
-                } else {
-                    v
-                }
-            })
-            .collect()
-    };
-    super::started::run(
-        setting.first,
-        setting.state_targets,
-        map,
-        run,
-        predict,
-        |predicted: &Vec<T>, j, from_map, y, u| {
-            let blend = blends.get(j.wrapping_sub(1)).map_or(&[][..], Vec::as_slice);
+    let mut observer = CorrectedStep::new(setting, code, constants);
+    map.iter()
+        .zip(run.measurements.iter().zip(run.inputs.iter()))
+        .map(|(row, (y, u))| observer.step(row, y, u))
+        .collect()
+}
+
+/// [`estimate_run`] one sample at a time.
+pub struct CorrectedStep<'a, T> {
+    setting: &'a Setting<'a>,
+    code: &'a CorrectionCode,
+    constants: &'a CorrectionConstants,
+    lower: Vec<T>,
+    upper: Vec<T>,
+    blends: Vec<Vec<T>>,
+    scratch: std::cell::RefCell<Vec<T>>,
+    shell: super::started::Shell<T, Vec<T>>,
+}
+
+impl<'a, T: Scalar + Maths> CorrectedStep<'a, T> {
+    /// Before the first sample of a run.
+    pub fn new(setting: &'a Setting<'a>, code: &'a CorrectionCode, constants: &'a CorrectionConstants) -> Self {
+        let to_t = |row: &[f64]| row.iter().map(|&v| T::literal(v as f32, v)).collect::<Vec<T>>();
+        CorrectedStep {
+            setting,
+            code,
+            constants,
+            lower: to_t(&constants.lower),
+            upper: to_t(&constants.upper),
+            blends: constants.blends().iter().map(|row| to_t(row)).collect(),
+            scratch: std::cell::RefCell::new(Vec::new()),
+            shell: super::started::Shell::new(setting.first, setting.state_targets, setting.code.dimensions.targets),
+        }
+    }
+
+    /// The targets at the sample with outputs `y` and inputs `u`, the map's estimate there `row`.
+    pub fn step(&mut self, row: &[T], y: &[f64], u: &[f64]) -> Vec<T> {
+        let CorrectedStep {
+            setting,
+            code,
+            constants,
+            lower,
+            upper,
+            blends,
+            scratch,
+            shell,
+        } = self;
+        let no: [T; 0] = [];
+        let predict = |x: &[T], u: &[T]| {
             let at = Reading {
-                x: predicted,
+                x,
                 u,
-                y,
-                map: from_map,
-                blend,
+                y: &no,
+                map: &no,
+                blend: &no,
             };
-            let program = if j <= constants.start_up {
-                &code.start_up
-            } else {
-                &code.steady
-            };
-            let x = clamp(&code.run(program, &at, &mut scratch.borrow_mut()));
-            let next = predict(&x, u)?;
-            let targets = setting.code.targets(&x, u, &mut scratch.borrow_mut());
-            Some((next, targets))
-        },
-        // A lost output: the model's period from `x̄` (`Corrector::predict`).
-        |predicted: &Vec<T>, u| predict(predicted, u),
-    )
+            let next = code.run(&code.predict, &at, &mut scratch.borrow_mut());
+            next.iter().all(|v| v.is_finite()).then_some(next)
+        };
+        // `firmware::started::clamp`: NaN to the lower end.
+        let clamp = |raw: &[T]| -> Vec<T> {
+            raw.iter()
+                .zip(lower.iter().zip(upper.iter()))
+                .map(|(&v, (&lo, &hi))| {
+                    if v.partial_cmp(&lo).is_none_or(|o| o.is_lt()) {
+                        lo
+                    } else if v > hi {
+                        hi
+                    } else {
+                        v
+                    }
+                })
+                .collect()
+        };
+        shell.step(
+            row,
+            y,
+            u,
+            &mut |x, u| predict(x, u),
+            &mut |predicted: &Vec<T>, j, from_map, y, u| {
+                let blend = blends.get(j.wrapping_sub(1)).map_or(&[][..], Vec::as_slice);
+                let at = Reading {
+                    x: predicted,
+                    u,
+                    y,
+                    map: from_map,
+                    blend,
+                };
+                let program = if j <= constants.start_up {
+                    &code.start_up
+                } else {
+                    &code.steady
+                };
+                let x = clamp(&code.run(program, &at, &mut scratch.borrow_mut()));
+                let next = predict(&x, u)?;
+                let targets = setting.code.targets(&x, u, &mut scratch.borrow_mut());
+                Some((next, targets))
+            },
+            // A lost output: the model's period from `x̄` (`Corrector::predict`).
+            &mut |predicted: &Vec<T>, u| predict(predicted, u),
+        )
+    }
 }
 
 /// [`estimate_run`] in `f64` over the map's `f64` estimates.

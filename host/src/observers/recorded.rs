@@ -5,9 +5,8 @@
 //! the map's window skips it, a started observer takes the model's period over it when the input is
 //! finite); every change of the `run` column restarts the observer.
 
-use crate::data::{Rows, Run};
 use crate::plant::ModelCode;
-use crate::recording::{self, EstimateRow, MapEvaluator, NoTable, Precision, Row, Status};
+use crate::recording::{self, EstimateRow, MapEvaluator, NoTable, Precision, Row, Status, Window};
 use crate::spec::{Design, ObserverKind};
 use crate::tables::Tables;
 
@@ -45,170 +44,250 @@ pub fn estimate(
     precision: Precision,
     rows: &[Row],
 ) -> Result<Vec<EstimateRow>, RecordedError> {
-    let maps = MapEvaluator::new(&tables.maps, precision)?;
-    let kind = match kind {
-        ObserverKind::Auto => tables.chosen,
-        other => other,
-    };
     let mut out = Vec::with_capacity(rows.len());
-    for segment in rows.chunk_by(|a, b| a.run == b.run) {
-        let map = recording::estimate(&maps, tables.horizon, segment);
-        if kind == ObserverKind::Map {
-            out.extend(map);
-            continue;
-        }
-        if kind == ObserverKind::EkfBox {
-            let boxed = match precision {
-                Precision::F64 => from_box::<f64>(design, tables, code, segment)?,
-                Precision::F32 => from_box::<f32>(design, tables, code, segment)?,
-            };
-            out.extend(boxed);
-            continue;
-        }
-        let followed = match precision {
-            Precision::F64 => follow::<f64>(design, tables, code, kind, &map, segment)?,
-            Precision::F32 => follow::<f32>(design, tables, code, kind, &map, segment)?,
-        };
-        out.extend(followed);
-    }
+    let mut rows = rows.iter();
+    stream(
+        design,
+        tables,
+        code,
+        kind,
+        precision,
+        || Ok::<_, RecordedError>(rows.next().cloned()),
+        |_, estimate| {
+            out.push(estimate);
+            Ok(())
+        },
+    )?;
     Ok(out)
 }
 
-/// One run of recorded rows as the observers read it: its outputs and inputs (no truth).
-fn as_run(segment: &[Row], targets: usize) -> Run {
-    Run {
-        states: Rows::new(0),
-        inputs: segment.iter().map(|r| r.u.clone()).collect(),
-        measurements: segment.iter().map(|r| r.y.clone()).collect(),
-        targets: Rows::new(targets),
-        parameters: Vec::new(),
-    }
-}
-
-/// The EKF from the box centre over one run, in `T`, as `BoxEkfObserver` runs it: an estimate from
-/// the first accepted sample, refused samples marked.
-fn from_box<T: firmware::Scalar + firmware::Maths + Into<f64>>(
-    design: &Design,
-    tables: &Tables,
-    code: &ModelCode,
-    segment: &[Row],
-) -> Result<Vec<EstimateRow>, RecordedError> {
-    let constants = tables.ekf.as_ref().ok_or_else(|| RecordedError::Unavailable {
-        design: design.name.clone(),
-        kind: "ekf_box",
-        why: "the model is beyond the sizes the host filters".to_owned(),
-    })?;
-    let run = as_run(segment, tables.maps.len());
-    let filter = crate::plant::kalman::filter_code(code, constants);
-    Ok(ekf::estimate_box::<T>(&filter, constants, &run, code)
-        .into_iter()
-        .map(|row| match row {
-            Some(values) => EstimateRow {
-                status: Status::Ok,
-                targets: values.into_iter().map(|v| (v.into(), Saturation::Inside)).collect(),
-            },
-            None => EstimateRow::without(Status::Refused),
-        })
-        .collect())
-}
-
-/// The observer `kind` (corrected, map-started or restarted EKF) over one run, in `T`, started or
-/// checked by the map's rows `map`.
-fn follow<T: firmware::Scalar + firmware::Maths + Into<f64>>(
+/// [`estimate`] over rows as `next` reads them, each row's estimate given to `emit` as soon as it is
+/// known: memory of `N` rows and the observer's state, whatever the recording's length.
+pub fn stream<E: From<RecordedError>>(
     design: &Design,
     tables: &Tables,
     code: &ModelCode,
     kind: ObserverKind,
-    map: &[EstimateRow],
-    segment: &[Row],
-) -> Result<Vec<EstimateRow>, RecordedError> {
-    let unavailable = |kind: &'static str, why: String| RecordedError::Unavailable {
-        design: design.name.clone(),
-        kind,
-        why,
+    precision: Precision,
+    next: impl FnMut() -> Result<Option<Row>, E>,
+    emit: impl FnMut(&Row, EstimateRow) -> Result<(), E>,
+) -> Result<(), E> {
+    let kind = match kind {
+        ObserverKind::Auto => tables.chosen,
+        other => other,
     };
-    let targets = tables.maps.len();
-    // NaN where the map has no estimate; an f32 estimate converts back to itself exactly.
-    let values: Vec<Vec<T>> = map
-        .iter()
-        .map(|row| match row.status {
-            Status::Ok => row.targets.iter().map(|&(v, _)| T::literal(v as f32, v)).collect(),
-            _ => vec![T::literal(f32::NAN, f64::NAN); targets],
-        })
-        .collect();
-    let run = as_run(segment, targets);
-    let (estimates, clamps) = match kind {
-        ObserverKind::Corrected => {
-            let constants = tables.corrected.as_ref().ok_or_else(|| {
-                unavailable(
-                    "corrected",
-                    "it needs every state as a target and a model the host can run".to_owned(),
-                )
-            })?;
-            let state_targets = corrected::state_targets(design).map_err(|why| unavailable("corrected", why))?;
-            let setting = corrected::Setting::for_maps(design, tables.horizon, &tables.maps, code, &state_targets);
-            let programs = crate::plant::correction::correction_code(code, constants);
-            let estimates = corrected::estimate_run::<T>(&setting, &programs, constants, &values, &run);
-            let bounds: Vec<(usize, T, T)> = state_targets
-                .iter()
-                .zip(constants.lower.iter().zip(&constants.upper))
-                .map(|(&t, (&lo, &hi))| (t, T::literal(lo as f32, lo), T::literal(hi as f32, hi)))
-                .collect();
-            (estimates, bounds)
+    let setup = Setup::new(design, tables, code, kind)?;
+    match precision {
+        Precision::F64 => setup.stream::<f64, E>(precision, next, emit),
+        Precision::F32 => setup.stream::<f32, E>(precision, next, emit),
+    }
+}
+
+/// What a kind needs besides the map, checked and built once per recording.
+struct Setup<'a> {
+    design: &'a Design,
+    tables: &'a Tables,
+    code: &'a ModelCode,
+    kind: ObserverKind,
+    /// The EKF's written-out programs (the EKF kinds).
+    filter: Option<crate::plant::kalman::FilterCode>,
+    /// The correction's programs (`corrected`).
+    programs: Option<crate::plant::correction::CorrectionCode>,
+    /// The map target of each state (the kinds the map starts or checks).
+    state_targets: Vec<usize>,
+}
+
+/// One run's observer, one sample at a time.
+enum Follower<'s, T> {
+    Map,
+    Box(ekf::BoxStep<'s, T>),
+    Started(ekf::StartedStep<'s, T>),
+    Corrected(corrected::CorrectedStep<'s, T>, Vec<(usize, T, T)>),
+    Restarted(super::restart::RestartStep<'s, T>),
+}
+
+impl<'a> Setup<'a> {
+    fn new(
+        design: &'a Design,
+        tables: &'a Tables,
+        code: &'a ModelCode,
+        kind: ObserverKind,
+    ) -> Result<Self, RecordedError> {
+        let unavailable = |kind: &'static str, why: &str| RecordedError::Unavailable {
+            design: design.name.clone(),
+            kind,
+            why: why.to_owned(),
+        };
+        let filter = |name| {
+            tables
+                .ekf
+                .as_ref()
+                .map(|constants| crate::plant::kalman::filter_code(code, constants))
+                .ok_or_else(|| unavailable(name, "the model is beyond the sizes the host filters"))
+        };
+        let started = |name| {
+            tables
+                .started
+                .as_ref()
+                .map(|(_, targets)| targets.clone())
+                .ok_or_else(|| unavailable(name, "it needs every state as a target and a model the host can filter"))
+        };
+        let mut setup = Setup {
+            design,
+            tables,
+            code,
+            kind,
+            filter: None,
+            programs: None,
+            state_targets: Vec::new(),
+        };
+        match kind {
+            ObserverKind::EkfBox => setup.filter = Some(filter("ekf_box")?),
+            ObserverKind::EkfMap => {
+                setup.filter = Some(filter("ekf_map")?);
+                setup.state_targets = started("ekf_map")?;
+            }
+            ObserverKind::EkfRestart => {
+                setup.filter = Some(filter("ekf_restart")?);
+                setup.state_targets = started("ekf_restart")?;
+                if tables.restart.is_none() {
+                    return Err(unavailable("ekf_restart", "its tables hold no restart threshold"));
+                }
+            }
+            ObserverKind::Corrected => {
+                let why = "it needs every state as a target and a model the host can run";
+                let constants = tables.corrected.as_ref().ok_or_else(|| unavailable("corrected", why))?;
+                setup.state_targets = corrected::state_targets(design).map_err(|why| unavailable("corrected", &why))?;
+                setup.programs = Some(crate::plant::correction::correction_code(code, constants));
+            }
+            _ => {}
         }
-        ObserverKind::EkfRestart => {
-            let (Some(constants), Some((p0, state_targets)), Some(restart)) =
-                (&tables.ekf, &tables.started, &tables.restart)
-            else {
-                return Err(unavailable(
-                    "ekf_restart",
-                    "it needs every state as a target and a model the host can filter".to_owned(),
-                ));
-            };
-            let filter = crate::plant::kalman::filter_code(code, constants);
-            let estimates =
-                super::restart::estimate::<T>(&filter, constants, p0, restart, state_targets, &values, &run, code);
-            (estimates, Vec::new())
+        Ok(setup)
+    }
+
+    /// Runs over the rows `next` reads, in `T` (`precision` for the map's tables).
+    fn stream<T: firmware::Scalar + firmware::Maths + Into<f64>, E: From<RecordedError>>(
+        &self,
+        precision: Precision,
+        mut next: impl FnMut() -> Result<Option<Row>, E>,
+        mut emit: impl FnMut(&Row, EstimateRow) -> Result<(), E>,
+    ) -> Result<(), E> {
+        let maps = MapEvaluator::new(&self.tables.maps, precision).map_err(RecordedError::from)?;
+        let setting = corrected::Setting::for_maps(
+            self.design,
+            self.tables.horizon,
+            &self.tables.maps,
+            self.code,
+            &self.state_targets,
+        );
+        let mut window = Window::new(self.tables.horizon);
+        let mut run: Option<String> = None;
+        let mut follower = self.follower::<T>(&setting);
+        while let Some(row) = next()? {
+            // Every change of the `run` column restarts the observer (the window restarts itself).
+            if run.as_deref() != Some(row.run.as_str()) {
+                follower = self.follower::<T>(&setting);
+                run = Some(row.run.clone());
+            }
+            let map = recording::map_row(&maps, window.push(&row));
+            let estimate = follower.step(map, &row, self.tables.maps.len());
+            emit(&row, estimate)?;
         }
-        _ => {
-            let (Some(constants), Some((p0, state_targets))) = (&tables.ekf, &tables.started) else {
-                return Err(unavailable(
-                    "ekf_map",
-                    "it needs every state as a target and a model the host can filter".to_owned(),
-                ));
-            };
-            let filter = crate::plant::kalman::filter_code(code, constants);
-            let estimates =
-                ekf::estimate_started::<T>(&filter, p0, state_targets, tables.horizon - 1, &values, &run, code);
-            (estimates, Vec::new())
+        Ok(())
+    }
+
+    /// A fresh observer for a new run.
+    fn follower<'s, T: firmware::Scalar + firmware::Maths>(
+        &'s self,
+        setting: &'s corrected::Setting<'s>,
+    ) -> Follower<'s, T> {
+        let literal = |v: f64| T::literal(v as f32, v);
+        let tables = self.tables;
+        match (self.kind, &self.filter, &self.programs) {
+            (ObserverKind::EkfBox, Some(filter), _) => Follower::Box(ekf::BoxStep::new(
+                filter,
+                tables.ekf.as_ref().expect("checked"),
+                self.code,
+            )),
+            (ObserverKind::EkfMap, Some(filter), _) => {
+                let (p0, _) = tables.started.as_ref().expect("checked");
+                Follower::Started(ekf::StartedStep::new(
+                    filter,
+                    p0,
+                    &self.state_targets,
+                    tables.horizon - 1,
+                    self.code,
+                ))
+            }
+            (ObserverKind::EkfRestart, Some(filter), _) => Follower::Restarted(super::restart::RestartStep::new(
+                filter,
+                tables.ekf.as_ref().expect("checked"),
+                &tables.started.as_ref().expect("checked").0,
+                tables.restart.as_ref().expect("checked"),
+                &self.state_targets,
+                self.code,
+            )),
+            (ObserverKind::Corrected, _, Some(programs)) => {
+                let constants = tables.corrected.as_ref().expect("checked");
+                let clamps = self
+                    .state_targets
+                    .iter()
+                    .zip(constants.lower.iter().zip(&constants.upper))
+                    .map(|(&t, (&lo, &hi))| (t, literal(lo), literal(hi)))
+                    .collect();
+                Follower::Corrected(corrected::CorrectedStep::new(setting, programs, constants), clamps)
+            }
+            _ => Follower::Map,
         }
-    };
-    Ok(estimates
-        .into_iter()
-        .zip(segment)
-        .zip(map)
-        .map(|((row, sample), map_row)| {
-            if sample.y.iter().chain(&sample.u).any(|v| !v.is_finite()) {
-                return EstimateRow::without(Status::Refused);
+    }
+}
+
+impl<T: firmware::Scalar + firmware::Maths + Into<f64>> Follower<'_, T> {
+    /// The observer's row for `sample`, the map's row there `map` (of `width` targets).
+    fn step(&mut self, map: EstimateRow, sample: &Row, width: usize) -> EstimateRow {
+        let (y, u) = (sample.y.as_slice(), sample.u.as_slice());
+        // NaN where the map has no estimate; an f32 estimate converts back to itself exactly.
+        let map_values = || -> Vec<T> {
+            match map.status {
+                Status::Ok => map.targets.iter().map(|&(v, _)| T::literal(v as f32, v)).collect(),
+                _ => vec![T::literal(f32::NAN, f64::NAN); width],
             }
-            if row.iter().any(|v| !v.is_finite()) {
-                return EstimateRow::without(Status::NoEstimateYet);
+        };
+        let (row, clamps): (Vec<T>, &[(usize, T, T)]) = match self {
+            Follower::Map => return map,
+            Follower::Box(observer) => {
+                return match observer.step(y, u) {
+                    Some(values) => EstimateRow {
+                        status: Status::Ok,
+                        targets: values.into_iter().map(|v| (v.into(), Saturation::Inside)).collect(),
+                    },
+                    None => EstimateRow::without(Status::Refused),
+                };
             }
-            let values: Vec<f64> = row.into_iter().map(Into::into).collect();
-            // The first estimate is the map's, with its flags.
-            if map_row.status == Status::Ok && map_row.targets.iter().map(|t| t.0).eq(values.iter().copied()) {
-                return map_row.clone();
-            }
-            // Later, the corrected map's clamp sets a state exactly to an end of its box.
-            let saturation = |t: usize| match clamps.iter().find(|&&(s, _, _)| s == t) {
-                Some(&(_, lo, _)) if values[t] == lo.into() => Saturation::Low,
-                Some(&(_, _, hi)) if values[t] == hi.into() => Saturation::High,
-                _ => Saturation::Inside,
-            };
-            EstimateRow {
-                status: Status::Ok,
-                targets: values.iter().enumerate().map(|(t, &v)| (v, saturation(t))).collect(),
-            }
-        })
-        .collect())
+            Follower::Started(observer) => (observer.step(&map_values(), y, u), &[]),
+            Follower::Restarted(observer) => (observer.step(&map_values(), y, u), &[]),
+            Follower::Corrected(observer, clamps) => (observer.step(&map_values(), y, u), clamps),
+        };
+        if y.iter().chain(u).any(|v| !v.is_finite()) {
+            return EstimateRow::without(Status::Refused);
+        }
+        if row.iter().any(|v| !v.is_finite()) {
+            return EstimateRow::without(Status::NoEstimateYet);
+        }
+        let values: Vec<f64> = row.into_iter().map(Into::into).collect();
+        // The first estimate is the map's, with its flags.
+        if map.status == Status::Ok && map.targets.iter().map(|t| t.0).eq(values.iter().copied()) {
+            return map;
+        }
+        // Later, the corrected map's clamp sets a state exactly to an end of its box.
+        let saturation = |t: usize| match clamps.iter().find(|&&(s, _, _)| s == t) {
+            Some(&(_, lo, _)) if values[t] == lo.into() => Saturation::Low,
+            Some(&(_, _, hi)) if values[t] == hi.into() => Saturation::High,
+            _ => Saturation::Inside,
+        };
+        EstimateRow {
+            status: Status::Ok,
+            targets: values.iter().enumerate().map(|(t, &v)| (v, saturation(t))).collect(),
+        }
+    }
 }

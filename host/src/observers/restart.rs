@@ -66,54 +66,96 @@ pub fn estimate<T: Scalar + Maths>(
     run: &Run,
     code: &ModelCode,
 ) -> Vec<Vec<T>> {
-    let literal = |v: &f64| T::literal(*v as f32, *v);
-    let finite = |x: &[T], p: &[T]| x.iter().chain(p).all(|v| v.is_finite());
-    let width = code.dimensions.targets;
-    let nan = vec![T::literal(f32::NAN, f64::NAN); width];
-    let started: Vec<T> = kalman::diagonal_upper(started_p0).iter().map(literal).collect();
-    let mut x: Vec<T> = constants.x0.iter().map(literal).collect();
-    let mut p: Vec<T> = kalman::diagonal_upper(&constants.p0).iter().map(literal).collect();
-    let mut checked = false;
-    let mut last = nan.clone();
-    let mut scratch = Vec::new();
-    let mut out = Vec::with_capacity(run.measurements.len());
-    for (k, (y, u)) in run.measurements.iter().zip(run.inputs.iter()).enumerate() {
+    let mut observer = RestartStep::new(filter, constants, started_p0, restart, state_targets, code);
+    let none = vec![T::literal(f32::NAN, f64::NAN); code.dimensions.targets];
+    run.measurements
+        .iter()
+        .zip(run.inputs.iter())
+        .enumerate()
+        .map(|(k, (y, u))| observer.step(map.get(k).unwrap_or(&none), y, u))
+        .collect()
+}
+
+/// [`estimate`] one sample at a time: what `firmware::Restarted` carries between samples.
+pub struct RestartStep<'a, T> {
+    filter: &'a FilterCode,
+    code: &'a ModelCode,
+    restart: &'a RestartConstants,
+    state_targets: &'a [usize],
+    /// `P` of a restart, its upper triangle.
+    started: Vec<T>,
+    x: Vec<T>,
+    p: Vec<T>,
+    checked: bool,
+    last: Vec<T>,
+    nan: Vec<T>,
+    scratch: Vec<T>,
+}
+
+impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
+    /// At the box centre, before the first sample of a run.
+    pub fn new(
+        filter: &'a FilterCode,
+        constants: &EkfConstants,
+        started_p0: &[f64],
+        restart: &'a RestartConstants,
+        state_targets: &'a [usize],
+        code: &'a ModelCode,
+    ) -> Self {
+        let literal = |v: &f64| T::literal(*v as f32, *v);
+        let nan = vec![T::literal(f32::NAN, f64::NAN); code.dimensions.targets];
+        RestartStep {
+            filter,
+            code,
+            restart,
+            state_targets,
+            started: kalman::diagonal_upper(started_p0).iter().map(literal).collect(),
+            x: constants.x0.iter().map(literal).collect(),
+            p: kalman::diagonal_upper(&constants.p0).iter().map(literal).collect(),
+            checked: false,
+            last: nan.clone(),
+            nan,
+            scratch: Vec::new(),
+        }
+    }
+
+    /// The targets at the sample with outputs `y` and inputs `u`, the map's estimate there `row`
+    /// (NaN where it has none).
+    pub fn step(&mut self, row: &[T], y: &[f64], u: &[f64]) -> Vec<T> {
+        let literal = |v: &f64| T::literal(*v as f32, *v);
+        let finite = |x: &[T], p: &[T]| x.iter().chain(p).all(|v| v.is_finite());
         let y: Vec<T> = y.iter().map(literal).collect();
         let u: Vec<T> = u.iter().map(literal).collect();
         let inputs_finite = u.iter().all(|v| v.is_finite());
         if !(inputs_finite && y.iter().all(|v| v.is_finite())) {
             if inputs_finite {
-                let (_, next_x, next_p) = filter.run(&x, &p, None, &u, &mut scratch);
+                let (_, next_x, next_p) = self.filter.run(&self.x, &self.p, None, &u, &mut self.scratch);
                 if finite(&next_x, &next_p) {
-                    (x, p) = (next_x, next_p);
+                    (self.x, self.p) = (next_x, next_p);
                 }
             }
-            out.push(nan.clone());
-            continue;
+            return self.nan.clone();
         }
-        let row = map.get(k).filter(|row| row.iter().all(|v| v.is_finite()));
-        if let (false, Some(row)) = (checked, row) {
-            checked = true;
-            let states: Vec<T> = state_targets.iter().map(|&t| row[t]).collect();
-            if disagrees(&x, &p, &states, restart) {
-                let (_, next_x, next_p) = filter.run(&states, &started, None, &u, &mut scratch);
+        if !self.checked && row.iter().all(|v| v.is_finite()) {
+            self.checked = true;
+            let states: Vec<T> = self.state_targets.iter().map(|&t| row[t]).collect();
+            if disagrees(&self.x, &self.p, &states, self.restart) {
+                let (_, next_x, next_p) = self.filter.run(&states, &self.started, None, &u, &mut self.scratch);
                 if finite(&next_x, &next_p) {
-                    (x, p) = (next_x, next_p);
-                    last.clone_from(row);
-                    out.push(row.clone());
-                    continue;
+                    (self.x, self.p) = (next_x, next_p);
+                    self.last = row.to_vec();
+                    return row.to_vec();
                 }
             }
         }
-        let (estimate, next_x, next_p) = filter.run(&x, &p, Some(&y), &u, &mut scratch);
+        let (estimate, next_x, next_p) = self.filter.run(&self.x, &self.p, Some(&y), &u, &mut self.scratch);
         if finite(&next_x, &next_p) {
-            (x, p) = (next_x, next_p);
+            (self.x, self.p) = (next_x, next_p);
             let estimate = estimate.expect("a measured sample has an estimate");
-            last = code.targets(&estimate, &u, &mut scratch);
+            self.last = self.code.targets(&estimate, &u, &mut self.scratch);
         }
-        out.push(last.clone());
+        self.last.clone()
     }
-    out
 }
 
 /// Chooses `τ` from [`THRESHOLDS`]: the lowest `score(τ)`, the first of equals. Returns `(τ, score)`.

@@ -28,54 +28,91 @@ pub fn run<T: Scalar, C>(
     mut follow: impl FnMut(&C, usize, &[T], &[T], &[T]) -> Option<(C, Vec<T>)>,
     mut lost: impl FnMut(&C, &[T]) -> Option<C>,
 ) -> Vec<Vec<T>> {
-    let literal = |v: f64| T::literal(v as f32, v);
     let width = map.first().map_or(0, Vec::len);
-    let nan = vec![literal(f64::NAN); width];
-    let mut out: Vec<Vec<T>> = Vec::with_capacity(map.len());
-    let mut carried: Option<C> = None;
-    let mut j = 0;
-    let mut last = nan.clone();
-    for (k, row) in map.iter().enumerate().take(run.measurements.len()) {
-        let refused = run.measurements[k]
-            .iter()
-            .chain(run.inputs[k].iter())
-            .any(|v| !v.is_finite());
-        let u: Vec<T> = run.inputs[k].iter().map(|&v| literal(v)).collect();
+    let mut shell = Shell::new(first, state_targets, width);
+    map.iter()
+        .zip(run.measurements.iter().zip(run.inputs.iter()))
+        .map(|(row, (y, u))| shell.step(row, y, u, &mut start, &mut follow, &mut lost))
+        .collect()
+}
+
+/// [`run`] one sample at a time: what `firmware::Started` carries between samples.
+pub struct Shell<T, C> {
+    first: usize,
+    state_targets: Vec<usize>,
+    /// A row of NaN: no estimate.
+    nan: Vec<T>,
+    carried: Option<C>,
+    /// Samples taken since the start.
+    j: usize,
+    /// Samples seen.
+    k: usize,
+    last: Vec<T>,
+}
+
+impl<T: Scalar, C> Shell<T, C> {
+    /// Before the first sample of a run, for rows of `width` targets.
+    pub fn new(first: usize, state_targets: &[usize], width: usize) -> Self {
+        let nan = vec![T::literal(f32::NAN, f64::NAN); width];
+        Shell {
+            first,
+            state_targets: state_targets.to_vec(),
+            last: nan.clone(),
+            nan,
+            carried: None,
+            j: 0,
+            k: 0,
+        }
+    }
+
+    /// The targets at the next sample (outputs `y`, inputs `u`), given the map's estimate `row` there
+    /// (see [`run`] for `start`, `follow` and `lost`).
+    pub fn step(
+        &mut self,
+        row: &[T],
+        y: &[f64],
+        u: &[f64],
+        start: &mut impl FnMut(&[T], &[T]) -> Option<C>,
+        follow: &mut impl FnMut(&C, usize, &[T], &[T], &[T]) -> Option<(C, Vec<T>)>,
+        lost: &mut impl FnMut(&C, &[T]) -> Option<C>,
+    ) -> Vec<T> {
+        let literal = |v: f64| T::literal(v as f32, v);
+        let k = self.k;
+        self.k += 1;
+        let refused = y.iter().chain(u).any(|v| !v.is_finite());
+        let u: Vec<T> = u.iter().map(|&v| literal(v)).collect();
         if refused {
-            if let Some(c) = carried.as_ref().filter(|_| u.iter().all(|v| v.is_finite())) {
+            if let Some(c) = self.carried.as_ref().filter(|_| u.iter().all(|v| v.is_finite())) {
                 if let Some(next) = lost(c, &u) {
-                    carried = Some(next);
+                    self.carried = Some(next);
                 }
             }
-            out.push(nan.clone());
-            continue;
+            return self.nan.clone();
         }
-        if carried.is_none() && (k < first || row.iter().any(|v| !v.is_finite())) {
-            out.push(nan.clone());
-            continue;
+        if self.carried.is_none() && (k < self.first || row.iter().any(|v| !v.is_finite())) {
+            return self.nan.clone();
         }
-        let y: Vec<T> = run.measurements[k].iter().map(|&v| literal(v)).collect();
-        let states: Vec<T> = state_targets.iter().map(|&t| row[t]).collect();
-        match &carried {
+        let y: Vec<T> = y.iter().map(|&v| literal(v)).collect();
+        let states: Vec<T> = self.state_targets.iter().map(|&t| row[t]).collect();
+        match &self.carried {
             None => match start(&states, &u) {
                 Some(c) => {
-                    carried = Some(c);
-                    j = 1;
-                    last = row.clone();
-                    out.push(row.clone());
+                    self.carried = Some(c);
+                    self.j = 1;
+                    self.last = row.to_vec();
+                    row.to_vec()
                 }
-                None => out.push(last.clone()),
+                None => self.last.clone(),
             },
-            Some(c) => match follow(c, j, &states, &y, &u) {
+            Some(c) => match follow(c, self.j, &states, &y, &u) {
                 Some((next, targets)) => {
-                    carried = Some(next);
-                    j += 1;
-                    last = targets.clone();
-                    out.push(targets);
+                    self.carried = Some(next);
+                    self.j += 1;
+                    self.last.clone_from(&targets);
+                    targets
                 }
-                None => out.push(last.clone()),
+                None => self.last.clone(),
             },
         }
     }
-    out
 }

@@ -196,7 +196,7 @@ pub fn regressors(horizon: usize, rows: &[Row]) -> Vec<Option<Vec<f64>>> {
 }
 
 /// The map's output for one row.
-fn map_row(maps: &MapEvaluator<'_>, step: Step<'_>) -> EstimateRow {
+pub fn map_row(maps: &MapEvaluator<'_>, step: Step<'_>) -> EstimateRow {
     match step {
         Step::Refused => EstimateRow::without(Status::Refused),
         Step::Filling => EstimateRow::without(Status::NoEstimateYet),

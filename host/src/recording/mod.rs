@@ -20,8 +20,8 @@ pub mod spacing;
 mod write;
 
 pub use estimate::{
-    estimate, estimate_streaming, regressors, EstimateRow, MapEvaluator, NoTable, Precision, Status, Step, StreamError,
-    Window,
+    estimate, estimate_streaming, map_row, regressors, EstimateRow, MapEvaluator, NoTable, Precision, Status, Step,
+    StreamError, Window,
 };
-pub use read::{read, RecordingError, Row, RowReader};
+pub use read::{read, regular_or_missing, RecordingError, Row, RowReader};
 pub use write::{estimates_csv, run_csv, time_text, write_run_csv, EstimatesCsv};

@@ -76,6 +76,13 @@ pub struct Row {
     pub u: Vec<f64>,
 }
 
+/// `false` when `path` exists but is not a regular file: a folder, a device such as `/dev/zero` or
+/// a pipe, which may never end (a reader would run until memory is gone) and cannot be read twice. A
+/// missing path passes, so that opening it names the real error.
+pub fn regular_or_missing(path: &Path) -> bool {
+    !path.exists() || std::fs::metadata(path).is_ok_and(|m| m.is_file())
+}
+
 /// Reads the columns `design` needs from `path` (all rows; see [`RowReader`] for the rules).
 pub fn read(design: &Design, path: &Path) -> Result<Vec<Row>, RecordingError> {
     let mut reader = RowReader::open(design, path)?;

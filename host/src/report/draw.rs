@@ -123,6 +123,9 @@ pub(crate) struct Series {
     pub points: Vec<(f64, f64)>,
     pub color: RGBColor,
     pub style: Style,
+    /// Dots only: vertical bands `(x, low, high)` as wide as a dot, standing for a column of dots
+    /// that touch one another (one element instead of hundreds; their end dots are in `points`).
+    pub bands: Vec<(f64, f64, f64)>,
 }
 
 impl Series {
@@ -132,7 +135,14 @@ impl Series {
             points,
             color,
             style,
+            bands: Vec::new(),
         }
+    }
+
+    /// With `bands` (see [`Series::bands`]).
+    pub(crate) fn with_bands(mut self, bands: Vec<(f64, f64, f64)>) -> Self {
+        self.bands = bands;
+        self
     }
 }
 
@@ -271,12 +281,42 @@ fn draw_series<DB: DrawingBackend>(
             .split(|p| !(p.0.is_finite() && p.1.is_finite()))
             .filter(|piece| !piece.is_empty())
             .try_for_each(|piece| {
-                chart
-                    .draw_series(LineSeries::new(piece.iter().copied(), color.stroke_width(width)))
-                    .map(drop)
+                let pixels: Vec<(i32, i32)> = piece.iter().map(|p| chart.backend_coord(p)).collect();
+                let mut start = 0;
+                for end in sharp_turns(&pixels).chain([piece.len() - 1]) {
+                    let part = &piece[start..=end];
+                    chart
+                        .draw_series(LineSeries::new(part.iter().copied(), color.stroke_width(width)))
+                        .map(drop)?;
+                    start = end;
+                }
+                Ok(())
             }),
     }
     .map_err(|e| e.to_string())
+}
+
+/// The vertices of a path (in pixels) where it turns by more than a right angle. plotters fills a
+/// wide line as one polygon, and at such a turn its inner corner lies far from the vertex (at a
+/// hairpin, as a decimated signal goes down and up within a pixel column, across the figure), so
+/// the path is drawn in parts that meet there.
+fn sharp_turns(pixels: &[(i32, i32)]) -> impl Iterator<Item = usize> + '_ {
+    // Each vertex against the next pixel the path moves to (repeated pixels are no move).
+    (1..pixels.len()).filter(move |&i| {
+        let step = |a: (i32, i32), b: (i32, i32)| (i64::from(b.0 - a.0), i64::from(b.1 - a.1));
+        let here = step(pixels[i - 1], pixels[i]);
+        if here == (0, 0) {
+            return false;
+        }
+        let Some(next) = pixels[i + 1..]
+            .iter()
+            .map(|&p| step(pixels[i], p))
+            .find(|s| *s != (0, 0))
+        else {
+            return false;
+        };
+        here.0 * next.0 + here.1 * next.1 < 0
+    })
 }
 
 /// The legend of a panel: one entry per line from `(left, top)`, each swatch drawn by its series'
@@ -372,6 +412,10 @@ fn draw_panel<DB: DrawingBackend>(
         }
     }
     for series in &panel.series {
+        for &(x, low, high) in &series.bands {
+            let band = [(x, low), (x, high)];
+            draw_series(&mut chart, &band, series.color, Style::Line, 2 * DOT_RADIUS as u32)?;
+        }
         draw_series(&mut chart, &series.points, series.color, series.style, LINE_WIDTH)?;
     }
     let (xs, ys) = chart.plotting_area().get_pixel_range();
@@ -509,6 +553,17 @@ mod tests {
         assert!(r.end > 1.07e-3 && r.end < 1.2e-3);
         let flat = range([1.07e-3, 1.07e-3].into_iter(), false);
         assert!(flat.start > 1.0e-3);
+    }
+
+    #[test]
+    fn a_path_is_split_where_it_turns_back_and_nowhere_else() {
+        // Down a pixel column, up again, then on to the next column (a decimated signal).
+        let hairpin = [(10, 50), (10, 200), (10, 200), (10, 80), (11, 70), (12, 60)];
+        assert_eq!(sharp_turns(&hairpin).collect::<Vec<_>>(), [1]);
+        // A smooth curve and a right angle are drawn whole.
+        let smooth = [(0, 0), (10, 5), (20, 8), (30, 8), (40, 5), (50, 0)];
+        assert_eq!(sharp_turns(&smooth).count(), 0);
+        assert_eq!(sharp_turns(&[(0, 0), (10, 0), (10, 10)]).count(), 0);
     }
 
     #[test]

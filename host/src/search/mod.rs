@@ -17,11 +17,18 @@
 //!
 //! The learning and tuning runs are simulated once and shared by every candidate (a run is cut into
 //! windows of any `N`); candidates are fitted in parallel (rayon).
+//!
+//! The search is bounded: [`check_size`] counts the candidates before anything is simulated and
+//! refuses more than the spec's `[search] max_candidates`; while it runs, [`pace`] says how far it
+//! is and how long is left (on the bar on a terminal, as plain lines without one).
 
 pub mod cost;
+pub mod pace;
 pub mod pareto;
 pub mod sparsity;
 
+use std::io::IsTerminal;
+use std::sync::Mutex;
 use std::time::Instant;
 
 use indicatif::ProgressBar;
@@ -94,6 +101,85 @@ fn instructions(c: &Candidate) -> f64 {
     c.cost.map_or(f64::INFINITY, |c| c.instructions)
 }
 
+/// The most candidates a search fits unless the spec's `[search] max_candidates` says otherwise: at
+/// most about ten minutes on this project's 2-core machine whatever the horizon. `vanderpol_searched`
+/// (432 candidates, N ≤ 40, two targets) searches in 4.5 s there in a release build
+/// ([`SECONDS_PER_CANDIDATE`]: 5,000 candidates in about 1 minute); longer horizons and more runs cost
+/// up to ten times more per candidate (0.12 s at N = 160 to 320 over 400 samples: 5,000 in about 10
+/// minutes). A search of 28,500 candidates, which ran for hours without a word, is refused; the
+/// estimate printed after the first few candidates tells how long a larger allowed one takes.
+pub const DEFAULT_MAX_CANDIDATES: usize = 5_000;
+
+/// Wall-clock seconds per candidate of `vanderpol_searched` on this project's 2-core machine
+/// (release: 432 in 4.5 s): the rough estimate a refusal gives before anything is fitted.
+pub const SECONDS_PER_CANDIDATE: f64 = 0.0104;
+
+/// Candidates of `search` for `design`, as the summary and `report.json` count them: every
+/// `(N, n_m, β)`, once per count of taps its regressor of `N·(outputs + inputs)` entries keeps.
+pub fn count(design: &Design, search: &Search) -> usize {
+    let per_sample = design.model.outputs.len() + design.model.inputs.len();
+    let taps: usize = search
+        .horizons
+        .iter()
+        .map(|&n| search.taps.for_regressor(n * per_sample).len())
+        .sum();
+    taps * search.nms.len() * search.betas.len()
+}
+
+/// The number of candidates, or, above the design's `max_candidates`, an error naming the `[map]`
+/// field with the most values, the count, the limit, a rough time and how to raise the limit:
+/// checked when the spec is loaded and again before a search runs (`search --auto` replaces the
+/// spec's candidates).
+pub fn check_size(design: &Design, search: &Search) -> Result<usize, SpecError> {
+    let total = count(design, search);
+    if total <= design.max_candidates {
+        return Ok(total);
+    }
+    let per_sample = design.model.outputs.len() + design.model.inputs.len();
+    let most_taps = search
+        .horizons
+        .iter()
+        .map(|&n| search.taps.for_regressor(n * per_sample).len())
+        .max()
+        .unwrap_or(1);
+    let mut factors = vec![
+        ("map.horizon", search.horizons.len()),
+        ("map.nm", search.nms.len()),
+        ("map.beta", search.betas.len()),
+    ];
+    if !matches!(search.taps, Taps::All) {
+        factors.push(("map.taps", most_taps));
+    }
+    // The first of the fields with the most values (`rev`: `max_by_key` keeps the last maximum).
+    let largest = factors
+        .iter()
+        .rev()
+        .max_by_key(|(_, n)| *n)
+        .map_or("map.horizon", |(field, _)| field);
+    let product = factors
+        .iter()
+        .map(|(field, n)| format!("{n} of `{field}`"))
+        .collect::<Vec<_>>()
+        .join(" × ");
+    let taps_note = if matches!(search.taps, Taps::All) {
+        ""
+    } else {
+        " (tap counts: at most; fewer where N is short)"
+    };
+    Err(design.error(
+        largest,
+        format!(
+            "the search has {total} candidates ({product}{taps_note}), above the limit of {}: at the {:.0} ms per candidate `vanderpol_searched` takes on a 2-core machine that is about {}, and longer horizons take longer",
+            design.max_candidates,
+            SECONDS_PER_CANDIDATE * 1e3,
+            pace::duration(std::time::Duration::from_secs_f64(total as f64 * SECONDS_PER_CANDIDATE)),
+        ),
+        format!(
+            "offer fewer values in `{largest}` (or the other fields above), or raise the limit: `[search]` `max_candidates = {total}`"
+        ),
+    ))
+}
+
 /// Runs the design's search, if it has one, and returns the design with the chosen `N`, `n_m` and `β`
 /// in its [`MapSettings`] (unchanged without a search).
 pub fn settle(mut design: Design, progress: &ProgressBar) -> Result<(Design, Option<Outcome>), SpecError> {
@@ -115,6 +201,15 @@ pub fn settle(mut design: Design, progress: &ProgressBar) -> Result<(Design, Opt
 /// Fits and scores every candidate of `search` (see the module's documentation).
 pub fn run(design: &Design, search: &Search, progress: &ProgressBar) -> Result<Outcome, SpecError> {
     let start = Instant::now();
+    let total = check_size(design, search)?;
+    // Without a terminal the bar is hidden: say the same in plain lines (CI logs, `| tee`).
+    let plain = progress.is_hidden() && !std::io::stderr().is_terminal();
+    if plain {
+        eprintln!(
+            "{}: search: {total} candidates to fit (at most {}, `search.max_candidates`)",
+            design.name, design.max_candidates
+        );
+    }
     progress.set_message(format!("{}: simulating the runs of the search", design.name));
     let learning = data::learning_set(design)?;
     let tuning = data::tuning_set(design)?;
@@ -126,9 +221,11 @@ pub fn run(design: &Design, search: &Search, progress: &ProgressBar) -> Result<O
         .map(|r| r.targets.len().saturating_sub(n_max - 1))
         .sum();
     let all = search.candidates();
-    progress.set_length(all.len() as u64);
+    progress.set_length(total as u64);
     progress.set_position(0);
-    progress.set_message(format!("{}: searching {} candidates", design.name, all.len()));
+    progress.set_message(format!("{}: searching {total} candidates", design.name));
+    let fitting = Instant::now();
+    let pacer = Mutex::new(pace::Pacer::new(total));
     let mut candidates: Vec<Candidate> = all
         .par_iter()
         .map(|&(horizon, nm, beta)| {
@@ -140,7 +237,18 @@ pub fn run(design: &Design, search: &Search, progress: &ProgressBar) -> Result<O
                 ..design.map
             };
             let candidates = candidates_of(design, &settings, &search.taps, &learning, &tuning, n_max, &spreads);
-            progress.inc(1);
+            progress.inc(candidates.len() as u64);
+            let line = pacer
+                .lock()
+                .unwrap_or_else(|poisoned| poisoned.into_inner())
+                .advance(candidates.len(), fitting.elapsed());
+            if let Some(line) = line {
+                if plain {
+                    eprintln!("{}: search: {line}", design.name);
+                } else {
+                    progress.set_message(format!("{}: search: {}", design.name, line.short()));
+                }
+            }
             candidates
         })
         .flatten()

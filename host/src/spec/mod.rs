@@ -346,6 +346,10 @@ pub struct Design {
     pub map: MapSettings,
     /// The design search, when a `[map]` field is `"auto"` or a list.
     pub search: Option<Search>,
+    /// `[search] max_candidates`: the most candidates a search of this design may fit
+    /// ([`crate::search::DEFAULT_MAX_CANDIDATES`] unless the spec raises or lowers it). Kept apart
+    /// from [`Search`] so that `search --auto` honours it on a spec that fixes its `[map]`.
+    pub max_candidates: usize,
     /// `[budget]` (no limit when absent).
     pub budget: Budget,
     /// The quantities to estimate.

@@ -24,6 +24,15 @@ pub(super) struct RawSpec {
     pub(super) family: Option<RawFamily>,
     pub(super) observer: Option<RawObserver>,
     pub(super) budget: Option<RawBudget>,
+    pub(super) search: Option<RawSearch>,
+}
+
+/// `[search]`: how large a design search may be. The value is read as any TOML value so that a
+/// negative, fractional or quoted number is refused by [`super::validate`] with the field's own fix.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawSearch {
+    pub(super) max_candidates: Option<toml::Value>,
 }
 
 /// `[budget]`: what the chosen observer may cost on the chip (every field optional).

@@ -190,6 +190,7 @@ impl Validator {
             chip_substeps: raw.sampling.chip_substeps,
             map,
             search,
+            max_candidates: self.max_candidates(raw.search.as_ref())?,
             budget,
             targets,
             scenario,
@@ -198,6 +199,9 @@ impl Validator {
             spec_sha256: String::new(),
         };
         limits::check_budget(&design)?;
+        if let Some(search) = &design.search {
+            crate::search::check_size(&design, search)?;
+        }
         Ok(design)
     }
 
@@ -384,6 +388,29 @@ impl Validator {
             taps: fixed_taps.flatten(),
         };
         Ok((settings, search))
+    }
+
+    /// `[search] max_candidates`: a whole number ≥ 1, or the default.
+    fn max_candidates(&self, raw: Option<&RawSearch>) -> Result<usize, SpecError> {
+        let default = crate::search::DEFAULT_MAX_CANDIDATES;
+        let fix =
+            format!("set `search.max_candidates` to a whole number ≥ 1 (the default is {default}), or leave it out");
+        match raw.and_then(|r| r.max_candidates.as_ref()) {
+            None => Ok(default),
+            Some(toml::Value::Integer(n)) => match usize::try_from(*n) {
+                Ok(n) if n >= 1 => Ok(n),
+                _ => Err(self.err(
+                    "search.max_candidates",
+                    format!("{n} allows no candidate: a search fits at least one"),
+                    fix,
+                )),
+            },
+            Some(other) => Err(self.err(
+                "search.max_candidates",
+                format!("`{other}` is not a whole number of candidates"),
+                fix,
+            )),
+        }
     }
 
     /// The candidates of one `[map]` field: its value, its list (sorted, without repeats) or `auto`'s.
