@@ -66,6 +66,12 @@ pub enum GenerateError {
         /// Why.
         source: std::io::Error,
     },
+    /// `--out` (or a design's folder in it) is a file.
+    #[error("{}: is a file, not a folder: `gen --spec` writes a crate into the folder --out names\n  fix: choose a folder for --out (a new or empty one)", path.display())]
+    NotAFolder {
+        /// The file.
+        path: PathBuf,
+    },
     /// No checkout around the current folder (needed for the defaults: shipped specs, `generated/`).
     #[error("{}: not inside a checkout (no folder upward holds host/specs/ and generated/Cargo.toml); run from the checkout, or give the paths (--spec FILE instead of --design; for gen also --reports and --generated)", from.display())]
     NoWorkspace {
@@ -186,6 +192,8 @@ pub fn emit_design(
     standalone: Option<&str>,
     progress: &ProgressBar,
 ) -> Result<Emitted, GenerateError> {
+    // What the spec's observer kind rules out is refused before the search and the fit.
+    crate::observers::check_before_fit(&design, &model_code(&design)?)?;
     let (design, search) = crate::search::settle(design, progress)?;
     if search.is_some() {
         progress.set_length(fit::steps(&design));

@@ -218,9 +218,32 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
-            eprintln!("error: {error:#}");
+            eprintln!("error: {}", message(&error));
             ExitCode::FAILURE
         }
+    }
+}
+
+/// The error and its causes, each said once: the tool's errors already quote their cause (an OS error
+/// printed twice read `Not a directory (os error 20): Not a directory (os error 20)`).
+fn message(error: &anyhow::Error) -> String {
+    let mut text = error.to_string();
+    for cause in error.chain().skip(1) {
+        let cause = cause.to_string();
+        if !text.contains(&cause) {
+            text = format!("{text}: {cause}");
+        }
+    }
+    text
+}
+
+/// A design's error, named by its spec unless the error names it already.
+fn of_spec(spec: &std::path::Path, error: &generate::GenerateError) -> String {
+    let (spec, error) = (spec.display().to_string(), error.to_string());
+    if error.contains(&spec) {
+        error
+    } else {
+        format!("{spec}: {error}")
     }
 }
 
@@ -262,7 +285,7 @@ fn gen(specs: Vec<PathBuf>, reports: Option<PathBuf>, generated: Option<PathBuf>
     );
     let outcomes = generate::run(&specs, &to, strict, progress_bar, |spec, prepared| match prepared {
         Ok(prepared) => print_summary(prepared),
-        Err(error) => eprintln!("error: {}: {error}", spec.display()),
+        Err(error) => eprintln!("error: {}", of_spec(spec, error)),
     })?;
     for outcome in &outcomes {
         println!(
@@ -322,7 +345,7 @@ fn gen_standalone(
     let inside = host::standalone::publish::holds_current_directory(&to.out);
     let outcomes = host::standalone::run(specs, &to, strict, progress_bar, |spec, prepared| match prepared {
         Ok(prepared) => print_summary(prepared),
-        Err(error) => eprintln!("error: {}: {error}", spec.display()),
+        Err(error) => eprintln!("error: {}", of_spec(spec, error)),
     })?;
     for outcome in &outcomes {
         println!(

@@ -215,6 +215,74 @@ fn command_line_exits_non_zero_without_panic_and_keeps_earlier_reports() {
     }
 }
 
+/// Refusals that need no fit come before it, and every message says each thing once: the spec's path
+/// (it used to be printed twice), an OS error (twice too), `--out` a file (an OS error on a file of
+/// ours), the spec's `observer.kind` over its budget (refused after fitting before).
+#[test]
+fn refusals_come_before_the_fit_and_say_each_thing_once() {
+    let dir = scratch("once");
+    let run = |args: &[&std::ffi::OsStr]| {
+        let output = Command::new(env!("CARGO_BIN_EXE_host")).args(args).output().unwrap();
+        assert!(!output.status.success());
+        String::from_utf8_lossy(&output.stderr).into_owned()
+    };
+    let os = std::ffi::OsStr::new;
+    // τ below f32's normal range: the spec's error, its path once.
+    let tiny = dir.join("tiny_tau.toml");
+    std::fs::write(&tiny, edited("tau = 0.1", "tau = 1e-50")).unwrap();
+    let stderr = run(&[
+        os("gen"),
+        os("--spec"),
+        tiny.as_os_str(),
+        os("--out"),
+        dir.join("a").as_os_str(),
+    ]);
+    assert_eq!(stderr.matches("tiny_tau.toml").count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("sampling.tau") && stderr.contains("f32") && stderr.contains("fix:"),
+        "{stderr}"
+    );
+    // `--out` names a file.
+    let good = dir.join("good.toml");
+    std::fs::write(&good, EXAMPLE).unwrap();
+    let file = dir.join("a-file");
+    std::fs::write(&file, "mine").unwrap();
+    let stderr = run(&[os("gen"), os("--spec"), good.as_os_str(), os("--out"), file.as_os_str()]);
+    assert!(
+        stderr.contains("is a file, not a folder") && stderr.contains("fix:"),
+        "{stderr}"
+    );
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "mine");
+    // An OS error, once.
+    let stderr = run(&[
+        os("estimate"),
+        os("--spec"),
+        good.as_os_str(),
+        os("--input"),
+        dir.join("missing.csv").as_os_str(),
+        os("--output"),
+        dir.join("out.csv").as_os_str(),
+    ]);
+    assert_eq!(stderr.matches("(os error 2)").count(), 1, "{stderr}");
+    // An EKF kind over the budget: refused with the kind's count before anything is fitted, nothing
+    // written.
+    let over = dir.join("over.toml");
+    let text = edited("kind = \"auto\"", "kind = \"ekf_box\"").replacen(
+        "[observer]",
+        "[budget]\ninstructions = 50\n\n[observer]",
+        1,
+    );
+    std::fs::write(&over, text).unwrap();
+    let out = dir.join("over-crate");
+    let stderr = run(&[os("gen"), os("--spec"), over.as_os_str(), os("--out"), out.as_os_str()]);
+    assert!(
+        stderr.contains("observer.kind") && stderr.contains("`budget.instructions` = 50") && stderr.contains("ekf_box"),
+        "{stderr}"
+    );
+    assert!(!out.exists(), "{stderr}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn bounds_whose_span_overflows() {
     let e = parse_error(&edited("min = -5.0, max = 5.0", "min = -1e308, max = 1e308"));

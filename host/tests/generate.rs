@@ -199,24 +199,22 @@ fn one_failing_design_writes_nothing_for_any_design() {
 
 #[test]
 fn a_sample_period_that_underflows_in_f32_is_refused_naming_the_field() {
-    // τ = 1e-300 used to be emitted as `SAMPLE_PERIOD: f32 = 0.0` with exit 0.
+    // τ = 1e-300 used to be emitted as `SAMPLE_PERIOD: f32 = 0.0` with exit 0, then refused only
+    // once fitted: now when the spec is read, before anything is fitted.
     let scratch = Scratch::empty("underflow");
     let spec = scratch.spec("vanderpol", "vanderpol.toml", &[("tau = 0.1", "tau = 1e-300")]);
-    match scratch.run(&[spec]) {
-        Err(GenerateError::Failed { failed: 1, .. }) => {}
-        other => panic!("expected a failure, got {:?}", other.map(|_| ())),
-    }
-    let design = host::spec::load(&scratch.root.join("vanderpol.toml")).unwrap();
-    let error = match generate::emit_design(
-        design,
-        &scratch.root.join("vanderpol.toml"),
-        None,
-        &ProgressBar::hidden(),
-    ) {
+    let error = match host::spec::load(&spec) {
         Err(e) => e.to_string(),
-        Ok(_) => panic!("τ = 1e-300 was emitted"),
+        Ok(_) => panic!("τ = 1e-300 was accepted"),
     };
-    assert!(error.contains("sampling.tau") && error.contains("f32"), "{error}");
+    assert!(
+        error.contains("vanderpol.toml")
+            && error.contains("sampling.tau")
+            && error.contains("f32")
+            && error.contains("time_unit"),
+        "{error}"
+    );
+    assert!(scratch.run(&[spec]).is_err());
     assert!(scratch.files().is_empty());
 }
 

@@ -1,5 +1,6 @@
 //! Every generated design states the units of what it takes and returns as its spec gives them: the
-//! spec is read here as plain TOML, independently of the host's validator.
+//! spec is read here as plain TOML, independently of the host's validator. And the budget of a spec's
+//! EKF kind is checked before the fit by the count the generated design records.
 
 use integration_tests::workspace_root;
 
@@ -66,4 +67,43 @@ fn generated_units_are_the_specs() {
     // The shipped designs do exercise every kind of unit.
     assert_eq!(generated::two_tanks::INPUT_UNITS, ["V"]);
     assert_eq!(generated::ecoli_x0_2::STATE_UNITS, ["g/L"; 3]);
+}
+
+/// The spec's EKF kind over `budget.instructions` is refused before anything is fitted
+/// (`host::observers::check_before_fit`), by the count the fitted design records: at its recorded
+/// `PREDICTED_INSTRUCTIONS` the kind is allowed, one below it refused, for every shipped design with
+/// an EKF.
+#[test]
+fn an_ekf_kind_over_budget_is_refused_before_the_fit_by_the_count_the_fit_records() {
+    let designs: [(&str, &[(&str, u32)]); 3] = [
+        ("vanderpol", &generated::vanderpol::PREDICTED_INSTRUCTIONS),
+        ("two_tanks", &generated::two_tanks::PREDICTED_INSTRUCTIONS),
+        ("ecoli_x0_2", &generated::ecoli_x0_2::PREDICTED_INSTRUCTIONS),
+    ];
+    let mut checked = 0;
+    for (name, predicted) in designs {
+        let mut design = host::generate::shipped_design(name).unwrap();
+        let code = host::generate::model_code(&design).unwrap();
+        for (kind, instructions) in predicted.iter().copied() {
+            let kind = match kind {
+                "ekf_box" => host::spec::ObserverKind::EkfBox,
+                "ekf_map" => host::spec::ObserverKind::EkfMap,
+                "ekf_restart" => host::spec::ObserverKind::EkfRestart,
+                _ => continue,
+            };
+            design.observer = kind;
+            design.budget.instructions = Some(instructions.into());
+            host::observers::check_before_fit(&design, &code).unwrap_or_else(|e| panic!("{name} {kind:?}: {e}"));
+            design.budget.instructions = Some((instructions - 1).into());
+            let error = host::observers::check_before_fit(&design, &code)
+                .expect_err("one instruction over the budget")
+                .to_string();
+            assert!(
+                error.contains("budget.instructions") && error.contains("observer.kind"),
+                "{error}"
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked >= 6, "only {checked} EKF kinds checked");
 }

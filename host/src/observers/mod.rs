@@ -475,6 +475,66 @@ pub fn row_name(kind: ObserverKind) -> &'static str {
 /// How much worse than the best a cheaper kind's score may be and still be chosen by `auto`.
 pub const CHEAPER_WITHIN: f64 = 0.02;
 
+/// What [`choose`] would refuse of the spec's `observer.kind` that is known before anything is fitted,
+/// refused before the fit rather than minutes after it: a kind the map starts or checks while a state
+/// is not a target, an EKF kind of a model beyond the sizes the host filters, and an EKF kind whose
+/// predicted instructions exceed `budget.instructions`. The EKF's count depends on the model alone:
+/// its tuned constants are all non-zero numbers written into the program, any such ones give it
+/// (the map's and the corrected observer's counts need the fit, and are checked after it).
+pub fn check_before_fit(design: &Design, code: &ModelCode) -> Result<(), SpecError> {
+    let kind = design.observer;
+    let ekf_kind = matches!(
+        kind,
+        ObserverKind::EkfBox | ObserverKind::EkfMap | ObserverKind::EkfRestart
+    );
+    let started = matches!(
+        kind,
+        ObserverKind::Corrected | ObserverKind::EkfMap | ObserverKind::EkfRestart
+    );
+    if (started && corrected::state_targets(design).is_err()) || (ekf_kind && !ekf::supported(code)) {
+        return Err(cannot_have(design));
+    }
+    let Some(budget) = design.budget.instructions.filter(|_| ekf_kind) else {
+        return Ok(());
+    };
+    let states = code.dimensions.states;
+    let theta = vec![0.37f64.log10(); 2 * states];
+    let constants = ekf::constants(design, &ekf::box_centre(design), &vec![1.0; states], &theta);
+    let filter = crate::plant::kalman::filter_code(code, &constants);
+    let instructions = match kind {
+        ObserverKind::EkfBox => cost::of_ekf(&filter),
+        ObserverKind::EkfMap => cost::of_started(&filter),
+        _ => cost::of_restarted(&filter),
+    };
+    if instructions > budget as f64 {
+        return Err(over_budget(design, kind.name(), instructions, budget as f64));
+    }
+    Ok(())
+}
+
+/// `observer.kind` names a kind the design cannot have.
+fn cannot_have(design: &Design) -> SpecError {
+    design.error(
+        "observer.kind",
+        format!(
+            "the design cannot have a `{}` observer: it needs every state as a target and a model the host can filter",
+            design.observer.name()
+        ),
+        "add a target per state (expr = the state's name), or set kind = \"map\" or \"auto\"",
+    )
+}
+
+/// `observer.kind` names a kind over `budget.instructions`.
+fn over_budget(design: &Design, name: &str, instructions: f64, budget: f64) -> SpecError {
+    design.error(
+        "observer.kind",
+        format!(
+            "the `{name}` observer needs ~{instructions:.0} instructions per sample, more than `budget.instructions` = {budget}"
+        ),
+        "raise `budget.instructions`, or set kind = \"auto\" to take the best kind within it",
+    )
+}
+
 /// The kind `observer()` is: the spec's, or for `auto` the lowest [score](score::score) on the
 /// tuning runs among the kinds within `[budget] instructions` (as [`cost`] predicts them), except
 /// that the cheapest kind (fewest predicted instructions) within [`CHEAPER_WITHIN`] of the best is
@@ -499,23 +559,14 @@ pub fn choose(
     let within = |instructions: f64| budget.is_none_or(|b| instructions <= b);
     if design.observer != ObserverKind::Auto {
         return match scored.iter().find(|s| s.0 == design.observer) {
-            Some(&(_, name, _, instructions)) if !within(instructions) => Err(design.error(
-                "observer.kind",
-                format!(
-                    "the `{name}` observer needs ~{instructions:.0} instructions per sample, more than `budget.instructions` = {}",
-                    budget.unwrap_or_default()
-                ),
-                "raise `budget.instructions`, or set kind = \"auto\" to take the best kind within it",
-            )),
+            Some(&(_, name, _, instructions)) if !within(instructions) => {
+                Err(over_budget(design, name, instructions, budget.unwrap_or_default()))
+            }
             Some(&(kind, name, score, instructions)) => Ok((
                 kind,
                 format!("`{name}` as the spec asks (tuning score {score:.4}, ~{instructions:.0} instructions)"),
             )),
-            None => Err(design.error(
-                "observer.kind",
-                format!("the design cannot have a `{}` observer: it needs every state as a target and a model the host can filter", design.observer.name()),
-                "add a target per state (expr = the state's name), or set kind = \"map\" or \"auto\"",
-            )),
+            None => Err(cannot_have(design)),
         };
     }
     let allowed: Vec<&(ObserverKind, &str, f64, f64)> = scored.iter().filter(|s| within(s.3)).collect();

@@ -119,6 +119,18 @@ impl Validator {
         }
         let model = self.model(&raw.model)?;
         let tau = self.positive("sampling.tau", raw.sampling.tau, "the sample period τ")?;
+        // The chip holds τ in f32: checked here, before anything is fitted, not when it is emitted.
+        if (tau as f32).is_subnormal() || tau as f32 == 0.0 || !(tau as f32).is_finite() {
+            return Err(self.err(
+                "sampling.tau",
+                format!(
+                    "the sample period τ = {tau:e} is outside the normal f32 range ({:e} to {:e}): the chip would see 0, ∞ or a value without precision",
+                    f32::MIN_POSITIVE,
+                    f32::MAX
+                ),
+                "rescale it: change `sampling.time_unit` (e.g. from s to µs) and every rate with it",
+            ));
+        }
         if raw.sampling.substeps == 0 {
             return Err(self.err(
                 "sampling.substeps",

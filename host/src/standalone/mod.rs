@@ -125,7 +125,13 @@ pub fn run(
     // no crate may replace a file `gen` did not write.
     to.runtime.check()?;
     for (_, design) in &designs {
-        owned::check(&folder_of(&design.name), &design.name, to.force)?;
+        let folder = folder_of(&design.name);
+        for path in folder.ancestors().take_while(|p| p.starts_with(&to.out)) {
+            if path.exists() && !path.is_dir() {
+                return Err(GenerateError::NotAFolder { path: path.to_owned() });
+            }
+        }
+        owned::check(&folder, &design.name, to.force)?;
     }
     let prepared = prepare_all(
         designs,
