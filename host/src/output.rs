@@ -86,6 +86,14 @@ pub fn process_is_alive(pid: u32) -> bool {
     !proc.join("self").exists() || proc.join(pid.to_string()).exists()
 }
 
+/// A computed value as a reader wants it: at most 10 significant digits, so that rounding noise of
+/// the arithmetic does not show (`63.400000000000006` → `63.4`, `3.0000000000000004` → `3`), in
+/// exponent form outside `1e-4 ..1e9` as [`crate::spec::readable`] writes a spec's values.
+pub fn number(value: f64) -> String {
+    let rounded = format!("{value:.9e}").parse().unwrap_or(value);
+    crate::spec::readable(rounded)
+}
+
 /// Lower-case hex SHA-256 of `bytes`: how the tool fingerprints specs, sources, tables and the files
 /// it wrote.
 pub fn sha256_hex(bytes: &[u8]) -> String {
@@ -106,6 +114,17 @@ pub fn write_if_changed(path: &Path, text: &str) -> std::io::Result<bool> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn computed_numbers_are_shown_without_rounding_noise() {
+        assert_eq!(number(634.0 * 0.1), "63.4");
+        assert_eq!(format!("{}", 634.0 * 0.1), "63.400000000000006"); // what was printed
+        assert_eq!(number(30.0 * 0.1), "3");
+        assert_eq!(number(0.1 + 0.2), "0.3");
+        assert_eq!(number(1.0 / 3.0), "0.3333333333");
+        assert_eq!(number(2.5e-7), "2.5e-7");
+        assert_eq!(number(f64::NAN), "NaN");
+    }
 
     #[test]
     fn replaces_the_file_and_leaves_no_temporary() {

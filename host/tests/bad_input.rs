@@ -122,6 +122,67 @@ fn trajectory_that_blows_up() {
     assert!(e.problem.contains("non-finite"), "{e}");
 }
 
+/// The fit's message for a dependent regressor column `fit::run` gives on `text`.
+fn dependent_column_error(text: &str) -> SpecError {
+    let design = spec::parse(Path::new("bad.toml"), text).unwrap();
+    match host::fit::run(&design, &indicatif::ProgressBar::hidden()) {
+        Err(e) => e,
+        Ok(_) => panic!("the fit should fail"),
+    }
+}
+
+#[test]
+fn too_few_learning_windows_are_named_as_such() {
+    // 4 runs of 11 samples, N = 10: 8 windows for 11 regressor entries. It used to blame the output
+    // for repeating the others and ask for measurement noise it already had.
+    let text = edited("samples = 100\nseed = 1", "samples = 11\nseed = 1").replacen("points = 4 }", "points = 2 }", 2);
+    let e = dependent_column_error(&text);
+    assert_names(&e, "learning", "learning.samples");
+    assert!(
+        e.problem
+            .contains("only 8 learning windows for a regressor of 11 entries"),
+        "{e}"
+    );
+}
+
+#[test]
+fn an_output_the_learning_runs_do_not_move_is_named_as_such() {
+    // A second, noise-free output y2 = x1 of a state held at 1: constant in every window.
+    let text = edited("x1 = \"-x2\"", "x1 = \"0\"")
+        .replacen(
+            "grid.x1 = { min = -2.0, max = 2.0, points = 4 }",
+            "grid.x1 = { value = 1.0 }",
+            1,
+        )
+        .replacen(
+            "noise_variance = 0.2\n",
+            "noise_variance = 0.2\n[[model.outputs]]\nname = \"y2\"\nexpr = \"x1\"\nnoise_variance = 0.0\n",
+            1,
+        )
+        .replacen("[[targets]]\nname = \"x1\"\nexpr = \"x1\"\n", "", 1);
+    let e = dependent_column_error(&text);
+    assert_names(&e, "model.outputs[1]", "settle");
+    assert!(e.problem.contains("it is 1 in every learning window"), "{e}");
+}
+
+#[test]
+fn a_unit_with_markup_is_refused_naming_its_field() {
+    // `m|<b>&` broke the reports' Markdown tables and left a bare `&` in the SVG figures (not XML).
+    for unit in ["m|s", "<b>m</b>", "R&D", "`m`", "m\\\\s"] {
+        let e = parse_error(&edited("time_unit = \"s\"", &format!("time_unit = \"{unit}\"")));
+        assert_names(&e, "sampling.time_unit", "g/(L h)");
+        assert!(e.problem.contains("markup"), "{e}");
+    }
+    // What units do hold is kept.
+    for unit in ["g/(L h)", "m/s^2", "µm", "°C", "1/h"] {
+        spec::parse(
+            Path::new("ok.toml"),
+            &edited("time_unit = \"s\"", &format!("time_unit = \"{unit}\"")),
+        )
+        .unwrap();
+    }
+}
+
 #[test]
 fn infeasible_qp() {
     // The identification QP is feasible by construction (η alone meets every constraint), so an
@@ -136,7 +197,8 @@ fn infeasible_qp() {
     };
     let error = qp::solve(&problem).unwrap_err();
     let design = spec::parse(Path::new("bad.toml"), EXAMPLE).unwrap();
-    let e = host::fit::explain(&design, 0, FitError::Qp(error));
+    let learning = host::data::learning_set(&design).unwrap();
+    let e = host::fit::explain(&design, &learning, 0, FitError::Qp(error));
     assert_names(&e, "map", "map.beta");
     assert!(e.problem.contains("infeasible") && e.problem.contains("`x1`"), "{e}");
 }

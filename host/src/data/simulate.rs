@@ -5,7 +5,7 @@ use crate::spec::model::Model;
 
 /// The first non-finite state of a simulated run.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("the state became non-finite at sample {sample} (t = {time}), x = {state:?}")]
+#[error("the state became non-finite at sample {sample} (t = {}), x = {state:?}", crate::output::number(*time))]
 pub struct BlowUp {
     /// The sample index at which a state component is NaN or infinite.
     pub sample: usize,

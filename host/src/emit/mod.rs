@@ -104,14 +104,14 @@ fn comment_text(text: &str) -> String {
     text.chars().map(|c| if c.is_control() { ' ' } else { c }).collect()
 }
 
-/// Characters Markdown or rustdoc may read as markup: code spans and fences, emphasis, links, HTML,
-/// headings, tables.
-const MARKUP: &str = "\\`*_[]<>#|~";
+/// Characters Markdown or rustdoc may read as markup: code spans and fences, emphasis, links, HTML
+/// and its entities, headings, tables.
+const MARKUP: &str = "\\`*_[]<>#|~&";
 
 /// Spec text for the prose of a doc comment: one line, no leading blanks (an indented code block), and
 /// every markup character escaped with a backslash, so that nothing a spec says can open a code fence
 /// (a doctest that fails), a link or an HTML tag (rustdoc warnings) in the generated crate.
-fn doc_prose(text: &str) -> String {
+pub(crate) fn doc_prose(text: &str) -> String {
     let mut inert = String::new();
     for c in comment_text(text).trim_start().chars() {
         if MARKUP.contains(c) {

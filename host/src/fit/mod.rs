@@ -60,7 +60,7 @@ pub fn run(design: &Design, progress: &ProgressBar) -> Result<DesignResult, Spec
     for (index, target) in design.targets.iter().enumerate() {
         progress.set_message(format!("{}: fitting {}", design.name, target.name));
         let fit = identify::fit(&learning, index, &target.name, &design.map, &odds_ratios)
-            .map_err(|e| explain(design, index, e))?;
+            .map_err(|e| explain(design, &learning, index, e))?;
         let result = TargetResult {
             index,
             learning: evaluate(&learning, index, &fit),
@@ -88,8 +88,8 @@ pub fn scenario(design: &Design, validation: &DataSet) -> Result<Run, SpecError>
     })
 }
 
-/// Turns a fit failure into a message about the spec field to change.
-pub fn explain(design: &Design, index: usize, error: FitError) -> SpecError {
+/// Turns a fit failure on the learning data `learning` into a message about the spec field to change.
+pub fn explain(design: &Design, learning: &DataSet, index: usize, error: FitError) -> SpecError {
     let name = &design.targets[index].name;
     let problem = format!("fitting target `{name}`: {error}");
     match error {
@@ -98,10 +98,13 @@ pub fn explain(design: &Design, index: usize, error: FitError) -> SpecError {
             problem,
             "a target must vary over the learning data: widen `learning.grid` or estimate another quantity",
         ),
-        FitError::DependentRegressor { column } => {
-            let (field, fix) = regressor_column_source(design, column);
-            design.error(field, problem, fix)
-        }
+        FitError::DependentRegressor { column } => match dependent_regressor_cause(design, learning, column) {
+            Some((field, why, fix)) => design.error(field, format!("{problem}: {why}"), fix),
+            None => {
+                let (field, fix) = regressor_column_source(design, column);
+                design.error(field, problem, fix)
+            }
+        },
         FitError::NonFinite => design.error(
             format!("targets[{index}].expr"),
             problem,
@@ -128,6 +131,43 @@ pub fn explain(design: &Design, index: usize, error: FitError) -> SpecError {
             "raise `map.monotonicity_grid` (e.g. to 801), or lower `map.beta` so that the basis bends less sharply",
         ),
     }
+}
+
+/// Why column `column` of the regressor is a combination of the others when the data, not the spec's
+/// outputs, make it so: too few learning windows to tell any columns apart (every column is then
+/// dependent), or an output's column constant over the learning data (a plant that settles, saturates
+/// or is clipped everywhere in the box). `(field, why, fix)`; `None` for the spec field behind the column
+/// ([`regressor_column_source`]).
+fn dependent_regressor_cause(design: &Design, learning: &DataSet, column: usize) -> Option<(String, String, String)> {
+    let windows = learning.window_count();
+    let columns = design.map.horizon * (design.model.outputs.len() + design.model.inputs.len()) + 1;
+    if windows <= columns {
+        return Some((
+            "learning".to_owned(),
+            format!("only {windows} learning windows for a regressor of {columns} entries (the intercept included)"),
+            "raise `learning.samples` or the points of `learning.grid`, or lower `map.horizon`".to_owned(),
+        ));
+    }
+    let mut z = Vec::new();
+    let mut values = learning.windows().map(|w| {
+        learning.regressor(w, &mut z);
+        z.get(column).copied().unwrap_or(f64::NAN)
+    });
+    let first = values.next().unwrap_or(f64::NAN);
+    // An input's column has its own fix (its learning profile), found by the spec field behind it.
+    let output_column = column < design.map.horizon * design.model.outputs.len();
+    if output_column && values.all(|v| v == first) {
+        let (field, _) = regressor_column_source(design, column);
+        return Some((
+            field,
+            format!(
+                "it is {} in every learning window: the learning runs do not move it",
+                crate::output::number(first)
+            ),
+            "check that the plant does not settle, saturate or blow up everywhere in the box: the model, `learning.grid`, `learning.samples`".to_owned(),
+        ));
+    }
+    None
 }
 
 /// The spec field behind column `column` of the regressor (with the intercept as column `n_z`), and

@@ -51,4 +51,19 @@ mod tests {
         assert_eq!(images(&html), ["estimation.png"]);
         assert!(html.contains("alt=\"estimation\""));
     }
+
+    #[test]
+    fn a_spec_description_is_text_in_the_page() {
+        // As the report writes it (`emit::doc_prose`): no tag, no table, no entity of the spec's.
+        let description = "a <script>alert(1)</script> | b & c &lt; *d*";
+        let html = page("t", &format!("# t\n\n{}\n", crate::emit::doc_prose(description)));
+        assert!(
+            !html.contains("<script>") && !html.contains("<table>") && !html.contains("<em>"),
+            "{html}"
+        );
+        assert!(
+            html.contains("<p>a &lt;script&gt;alert(1)&lt;/script&gt; | b &amp; c &amp;lt; *d*</p>"),
+            "{html}"
+        );
+    }
 }

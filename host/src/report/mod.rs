@@ -527,7 +527,7 @@ pub fn observers_table(report: &Report<'_>) -> String {
 /// Every observer's drift over long runs (Markdown).
 fn drift_table(report: &Report<'_>) -> String {
     let long = crate::observers::Drift::WINDOWS * report.validation_samples;
-    let time = |samples: usize| format!("{}", samples as f64 * report.tau);
+    let time = |samples: usize| crate::recording::time_text(samples, report.tau);
     let mut s = format!(
         "\nDrift: RMSE over the first and the last {} {} of {} {} after the start-up (3N estimates after the first), on {} long runs from their own seed{}:\n\n\
          | observer | target | first | last | last / first |{}\n|---|---|---|---|---|{}\n",
@@ -731,7 +731,12 @@ pub fn taps_table(rows: &[crate::search::sparsity::Row], targets: &[&str]) -> St
 
 /// `report.md`.
 pub fn markdown(report: &Report<'_>) -> String {
-    let mut s = format!("# {}\n\n{}\n\n", report.design, report.description);
+    // The description as text: nothing in it is Markdown or HTML of the report's (or its HTML page's).
+    let mut s = format!(
+        "# {}\n\n{}\n\n",
+        report.design,
+        crate::emit::doc_prose(report.description)
+    );
     let m = report.map;
     let _ = writeln!(
         s,

@@ -264,7 +264,7 @@ pub fn run(design: &Design, search: &Search, progress: &ProgressBar) -> Result<O
             format!(
                 "none of the {} candidates is within the budget ({fitted} fitted; the cheapest needs {})",
                 candidates.len(),
-                cheapest(&candidates)
+                cheapest(&candidates, &design.time_unit)
             ),
             "raise `budget.instructions`, `budget.flash` or `budget.first_estimate`, or offer shorter horizons",
         )
@@ -288,7 +288,7 @@ pub fn within(budget: &Budget, cost: &Cost) -> bool {
 }
 
 /// The cheapest fitted candidate's cost, for the message when none is within budget.
-fn cheapest(candidates: &[Candidate]) -> String {
+fn cheapest(candidates: &[Candidate], time_unit: &str) -> String {
     candidates
         .iter()
         .filter(|c| c.score.is_some())
@@ -296,8 +296,10 @@ fn cheapest(candidates: &[Candidate]) -> String {
         .min_by(|a, b| a.instructions.total_cmp(&b.instructions))
         .map_or("nothing: no candidate could be fitted".to_owned(), |c| {
             format!(
-                "{:.0} instructions, {:.0} bytes of flash, a first estimate after {}",
-                c.instructions, c.flash, c.first_estimate
+                "{:.0} instructions, {:.0} bytes of flash, a first estimate after {} {time_unit}",
+                c.instructions,
+                c.flash,
+                crate::output::number(c.first_estimate)
             )
         })
 }

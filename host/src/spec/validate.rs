@@ -7,6 +7,9 @@ use super::limits;
 use super::raw::*;
 use super::*;
 
+/// Characters a unit may not hold: markup of Markdown tables, HTML, SVG and code spans.
+const LABEL_MARKUP: &str = "<>&|`\\\"";
+
 pub(super) struct Validator {
     pub(super) file: String,
     pub(super) path: PathBuf,
@@ -36,6 +39,15 @@ impl Validator {
                 field,
                 "a unit is a short label on one line",
                 format!("write it in at most {MAX_LABEL} characters, without line breaks or control characters (e.g. \"cm\", \"m/s^2\")"),
+            ));
+        }
+        // A unit is shown as it is written in Markdown tables, HTML, SVG (XML) and code comments: none
+        // of their markup characters may appear in it.
+        if let Some(c) = text.chars().find(|c| LABEL_MARKUP.contains(*c)) {
+            return Err(self.err(
+                field,
+                format!("a unit may not hold `{c}`: the reports' tables, HTML and figures would read it as markup"),
+                "write it without < > & | ` \\ \" (e.g. \"g/(L h)\", \"m·s\", \"deg C\")",
             ));
         }
         Ok(())

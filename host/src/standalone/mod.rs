@@ -288,7 +288,7 @@ fn library(design: &Design) -> String {
          #[rustfmt::skip]\n\
          pub mod {name};\n",
         name = design.name,
-        description = design.description.replace('\n', " "),
+        description = crate::emit::doc_prose(&design.description),
         spec = STANDALONE_SPEC,
         version = env!("CARGO_PKG_VERSION"),
     )
@@ -312,7 +312,7 @@ fn readme(one: &Prepared) -> String {
          let _ = estimates[0].value;\n\
          }}\n\
          ```\n\n",
-        design.description,
+        crate::emit::doc_prose(&design.description),
         env!("CARGO_PKG_VERSION"),
     );
     // The report, its first heading dropped (the README has its own), its figures (embedded by the
