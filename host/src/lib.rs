@@ -31,12 +31,13 @@
 //!    ([`emit::precision`]).
 //! 5. [`report`]: JSON and Markdown reports and the paper's figures.
 //!
-//! [`generate`] runs the whole job (`host gen`) into the project's `generated/` crate, [`standalone`]
-//! writes a user's design as a crate of its own (`host gen --spec`), [`search`] chooses `N`, `n_m`, `β`
+//! [`generate`] runs the whole job (`mho gen`) into the project's `generated/` crate, [`standalone`]
+//! writes a user's design as a crate of its own (`mho gen --spec`), [`search`] chooses `N`, `n_m`, `β`
 //! and the taps of `L` within a budget; [`commands`] the `simulate` and `estimate` jobs, with
 //! [`recording`] reading and writing CSV recordings; [`output`] writes files atomically.
 #![warn(missing_docs)]
 
+pub mod cli;
 pub mod commands;
 pub mod data;
 pub mod emit;

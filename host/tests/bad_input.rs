@@ -219,7 +219,7 @@ fn command_line_exits_non_zero_without_panic_and_keeps_earlier_reports() {
     std::fs::write(&earlier, "earlier run").unwrap();
     let spec_path = dir.join("broken.toml");
     std::fs::write(&spec_path, edited("tau = 0.1", "tau = -1")).unwrap();
-    let output = Command::new(env!("CARGO_BIN_EXE_host"))
+    let output = Command::new(env!("CARGO_BIN_EXE_mho"))
         .args(["gen", "--spec"])
         .arg(&spec_path)
         .arg("--reports")
@@ -240,7 +240,7 @@ fn command_line_exits_non_zero_without_panic_and_keeps_earlier_reports() {
         "{stderr}"
     );
     assert_eq!(std::fs::read_to_string(&earlier).unwrap(), "earlier run");
-    let missing = Command::new(env!("CARGO_BIN_EXE_host"))
+    let missing = Command::new(env!("CARGO_BIN_EXE_mho"))
         .args(["gen", "--spec", "no/such/spec.toml"])
         .output()
         .unwrap();
@@ -256,7 +256,7 @@ fn command_line_exits_non_zero_without_panic_and_keeps_earlier_reports() {
         (host_crate.to_path_buf(), "the package `host`, not `firmware`"),
     ] {
         let out = dir.join("crate");
-        let output = Command::new(env!("CARGO_BIN_EXE_host"))
+        let output = Command::new(env!("CARGO_BIN_EXE_mho"))
             .args(["gen", "--spec"])
             .arg(&good_spec)
             .arg("--out")
@@ -284,7 +284,7 @@ fn command_line_exits_non_zero_without_panic_and_keeps_earlier_reports() {
 fn refusals_come_before_the_fit_and_say_each_thing_once() {
     let dir = scratch("once");
     let run = |args: &[&std::ffi::OsStr]| {
-        let output = Command::new(env!("CARGO_BIN_EXE_host")).args(args).output().unwrap();
+        let output = Command::new(env!("CARGO_BIN_EXE_mho")).args(args).output().unwrap();
         assert!(!output.status.success());
         String::from_utf8_lossy(&output.stderr).into_owned()
     };

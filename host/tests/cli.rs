@@ -1,4 +1,4 @@
-//! `host gen` end to end: the report files and the summary a user sees.
+//! `mho gen` end to end: the report files and the summary a user sees.
 
 use std::process::Command;
 
@@ -7,8 +7,8 @@ fn gen_writes_the_report_and_prints_a_summary() {
     let reports = std::env::temp_dir().join(format!("host-cli-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&reports);
     let spec = concat!(env!("CARGO_MANIFEST_DIR"), "/specs/vanderpol.toml");
-    let output = Command::new(env!("CARGO_BIN_EXE_host"))
-        .args(["gen", "--spec", spec, "--reports"])
+    let output = Command::new(env!("CARGO_BIN_EXE_mho"))
+        .args(["gen", "--verbose", "--spec", spec, "--reports"])
         .arg(&reports)
         .arg("--generated")
         .arg(reports.join("generated"))
@@ -16,6 +16,7 @@ fn gen_writes_the_report_and_prints_a_summary() {
         .unwrap();
     let stdout = String::from_utf8_lossy(&output.stdout);
     assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    // With --verbose, the report's tables.
     assert!(
         stdout.contains("n_E = 1456") && stdout.contains("| x1 |") && stdout.contains("| x2 |"),
         "{stdout}"
@@ -23,6 +24,34 @@ fn gen_writes_the_report_and_prints_a_summary() {
 
     let json: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(reports.join("vanderpol/report.json")).unwrap()).unwrap();
+    // The summary: the chosen observer with its validation RMSE as report.json records them, the
+    // map's beside it, and where the report is.
+    let chosen = json["observer"][0].as_str().unwrap();
+    let rmse = |kind: &str| {
+        let observer = json["observers"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|o| o["kind"] == kind)
+            .unwrap();
+        let of = |t: &str| observer["targets"][t]["rmse_validation"].as_f64().unwrap();
+        format!("validation RMSE x1 {:.4}, x2 {:.4}", of("x1"), of("x2"))
+    };
+    let mut lines = stdout.lines();
+    assert!(
+        lines.next().unwrap().starts_with("vanderpol: Van der Pol oscillator"),
+        "{stdout}"
+    );
+    let observer = lines.next().unwrap();
+    assert!(
+        observer.starts_with(&format!("  observer: {chosen} (N = 10), ~")) && observer.ends_with(&rmse(chosen)),
+        "{observer}"
+    );
+    assert_eq!(lines.next().unwrap(), format!("  the map alone: {}", rmse("map")));
+    assert_eq!(
+        lines.next().unwrap(),
+        format!("  report: {}", reports.join("vanderpol/report.md").display())
+    );
     assert_eq!(json["learning"]["windows"], 1456);
     for target in json["targets"].as_array().unwrap() {
         for key in ["rmse_learning", "rmse_validation", "max_error_validation"] {
@@ -92,7 +121,7 @@ fn gen_finds_the_checkout_from_the_current_folder_not_from_where_it_was_built() 
     // checkout the binary was compiled in.
     let copy = minimal_checkout("copy");
     let inside = copy.join("host/specs");
-    let output = Command::new(env!("CARGO_BIN_EXE_host"))
+    let output = Command::new(env!("CARGO_BIN_EXE_mho"))
         .arg("gen")
         .current_dir(&inside)
         .output()
@@ -108,7 +137,7 @@ fn gen_finds_the_checkout_from_the_current_folder_not_from_where_it_was_built() 
     assert!(copy.join("target/designs/vanderpol/report.md").is_file());
     // Outside any checkout, the defaults are an error that says what to do.
     let outside = std::env::temp_dir();
-    let output = Command::new(env!("CARGO_BIN_EXE_host"))
+    let output = Command::new(env!("CARGO_BIN_EXE_mho"))
         .arg("gen")
         .current_dir(&outside)
         .output()
@@ -128,7 +157,7 @@ fn one_broken_shipped_spec_does_not_stop_the_others() {
     )
     .unwrap();
     let run = |design: &str| {
-        Command::new(env!("CARGO_BIN_EXE_host"))
+        Command::new(env!("CARGO_BIN_EXE_mho"))
             .args(["simulate", "--design", design, "--output", "run.csv"])
             .current_dir(&copy)
             .output()

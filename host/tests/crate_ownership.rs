@@ -65,7 +65,7 @@ fn gen_with(spec_dir: &Path, out: &Path, extra: &[&str], version: &str, env: &[(
         s(&firmware),
     ];
     args.extend(extra);
-    Command::new(env!("CARGO_BIN_EXE_host"))
+    Command::new(env!("CARGO_BIN_EXE_mho"))
         .args(&args)
         .envs(env.iter().copied())
         .output()

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 fn host(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_host")).args(args).output().unwrap()
+    Command::new(env!("CARGO_BIN_EXE_mho")).args(args).output().unwrap()
 }
 
 /// A scratch folder of its own per test.

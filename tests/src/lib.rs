@@ -160,14 +160,14 @@ macro_rules! emitted_constants {
     }};
 }
 
-/// The `host` command line as a user runs it: built (in this workspace's debug profile, where the
+/// The `mho` command line (package `host`) as a user runs it: built (in this workspace's debug profile, where the
 /// tests' own copy of the host library already is, so only the binary is linked) on first use.
 pub fn host_command() -> std::process::Command {
     static BUILT: OnceLock<PathBuf> = OnceLock::new();
     let binary = BUILT.get_or_init(|| {
         let root = workspace_root();
         let built = std::process::Command::new(env!("CARGO"))
-            .args(["build", "--offline", "-q", "-p", "host", "--bin", "host"])
+            .args(["build", "--offline", "-q", "-p", "host", "--bin", "mho"])
             .current_dir(&root)
             .output()
             .expect("cargo runs");
@@ -179,7 +179,7 @@ pub fn host_command() -> std::process::Command {
         let target = std::env::var_os("CARGO_TARGET_DIR").map_or_else(|| root.join("target"), PathBuf::from);
         target
             .join("debug")
-            .join(format!("host{}", std::env::consts::EXE_SUFFIX))
+            .join(format!("mho{}", std::env::consts::EXE_SUFFIX))
     });
     std::process::Command::new(binary)
 }

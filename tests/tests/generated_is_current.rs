@@ -1,5 +1,6 @@
 //! The files in `generated/` are exactly what `gen` produces now, producing them is deterministic, and
-//! every shipped design passes the quality gates (what `gen --strict` asks).
+//! every shipped design passes the quality gates (what `gen --strict` asks); the README's figure,
+//! `docs/figures/vanderpol-estimation.svg`, is the one `gen` draws now.
 
 use host::generate;
 use indicatif::ProgressBar;
@@ -28,6 +29,9 @@ fn generated_files_match_a_fresh_generation() {
             "{} is not what `cargo run -p host -- gen` produces now: regenerate and commit it",
             file.display()
         );
+        if name == "vanderpol" {
+            the_readme_figure_is_current(&first);
+        }
         names.push(name);
     }
     let lib = std::fs::read_to_string(workspace_root().join("generated/src/lib.rs")).unwrap();
@@ -40,6 +44,25 @@ fn generated_files_match_a_fresh_generation() {
         )
         .unwrap(),
         "generated/src/lib.rs must declare exactly the shipped designs: regenerate, and delete files of removed specs"
+    );
+}
+
+/// The README's figure, committed as `docs/figures/vanderpol-estimation.svg`, is byte for byte the
+/// `estimation` figure that `gen` draws for the shipped `vanderpol` now: drawn here by `gen`'s own
+/// function from the same fit (into a scratch folder: about 0.2 s beside the fit).
+fn the_readme_figure_is_current(emitted: &generate::Emitted) {
+    let scratch = std::env::temp_dir().join(format!("readme-figure-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&scratch);
+    host::report::plots::draw(&emitted.design, &emitted.result, &emitted.comparison, &scratch).unwrap();
+    let drawn = std::fs::read_to_string(scratch.join("estimation.svg")).unwrap();
+    std::fs::remove_dir_all(&scratch).unwrap();
+    let file = workspace_root().join("docs/figures/vanderpol-estimation.svg");
+    let committed = std::fs::read_to_string(&file).unwrap_or_default();
+    assert!(
+        committed == drawn,
+        "{} is not the figure `cargo run -p host -- gen` draws now: copy target/designs/vanderpol/estimation.svg \
+         there and commit it",
+        file.display()
     );
 }
 

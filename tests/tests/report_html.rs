@@ -1,6 +1,7 @@
 //! `gen`'s report of a design as a page: `report.html` holds the same tables as `report.md`, embeds
 //! the same figures, and every figure it shows is a PNG written beside it (what a browser needs to
-//! render it; `README.md` shows the headless-browser command that was run on it).
+//! render it; `docs/guide.md`, *Reading the report*, shows the headless-browser command that was run
+//! on it).
 
 use host::generate::{self, Destinations};
 use host::report::html;

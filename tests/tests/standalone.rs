@@ -1,10 +1,11 @@
-//! The README's own-system walkthrough, end to end in a temporary folder, as a user types it: `gen
-//! --spec` makes a crate of its own, outside this repository, that builds for the Cortex-M4F and
-//! passes its doc example; its C library, linked into a C program by the system's C compiler and by
-//! `arm-none-eabi-gcc` for the emulated board, gives the Rust observer's numbers bit for bit;
-//! `on-target-report -- --crate` measures it on the emulated board into its own README; `simulate`,
-//! `estimate --precision f32` (the Rust observer's bits again) and `plot` on a recording; and the
-//! repository (`generated/` byte for byte, and `git status`) is left as it was.
+//! The own-system walkthrough (the README's tour and `docs/guide.md`, *Your own system*), end to end
+//! in a temporary folder, as a user types it: `gen --spec` makes a crate of its own, outside this
+//! repository, that builds for the Cortex-M4F and passes its doc example; its C library, linked into
+//! a C program by the system's C compiler and by `arm-none-eabi-gcc` for the emulated board, gives
+//! the Rust observer's numbers bit for bit; `on-target-report -- --crate` measures it on the emulated
+//! board into its own README; `simulate`, `estimate --precision f32` (the Rust observer's bits again)
+//! and `plot` on a recording; and the repository (`generated/` byte for byte, and `git status`) is
+//! left as it was.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -96,7 +97,7 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
     assert!(text.contains("name = \"my_oscillator\""));
     std::fs::write(&spec, &text).unwrap();
     let out = scratch.join("crate");
-    // The README's walkthrough, as a user types it.
+    // The walkthrough of the README's tour, as a user types it.
     host(&[
         "gen",
         "--spec",
@@ -303,9 +304,9 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
 }
 
 /// `on-target-report -- --crate DIR` on the walkthrough's crate: every observer's figures go into the
-/// crate's report and README (never the project's), checked there against the host; `gen --spec`
-/// again writes the same README (the figures are kept while the source is the one measured); and
-/// tables that do not compute what the chip computes are refused, nothing written.
+/// crate's report and README (never the project's `docs/chip.md`), checked there against the host;
+/// `gen --spec` again writes the same README (the figures are kept while the source is the one
+/// measured); and tables that do not compute what the chip computes are refused, nothing written.
 fn measured_on_the_emulated_board(spec: &Path, out: &Path) {
     let report = || {
         Command::new(env!("CARGO_BIN_EXE_on-target-report"))
@@ -502,4 +503,47 @@ fn rust_replay() -> String {
         text.push('\n');
     }
     text
+}
+
+/// The installed tool, anywhere: run from a folder with no checkout above it and given no runtime,
+/// `mho gen --spec` writes a crate that carries the `firmware` runtime (the checkout's sources, byte
+/// for byte) and builds offline for the Cortex-M4F with nothing but the toolchain.
+#[test]
+fn the_tool_writes_a_crate_that_builds_outside_the_checkout() {
+    let dir = std::env::temp_dir().join(format!("mho-anywhere-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    assert!(
+        !dir.ancestors().any(|d| d.join("host/specs").is_dir()),
+        "{} is inside a checkout",
+        dir.display()
+    );
+    // Example 1 with 8 validation and 8 tuning runs: a quicker fit, the same crate layout.
+    let text = integration_tests::spec_text("vanderpol")
+        .replacen("name = \"vanderpol\"", "name = \"plant\"", 1)
+        .replacen("\ntrajectories = 64", "\ntrajectories = 8", 1)
+        .replacen("[tuning]", "[tuning]\ntrajectories = 8", 1);
+    std::fs::write(dir.join("plant.toml"), text).unwrap();
+    let run = integration_tests::host_command()
+        .args(["gen", "--spec", "plant.toml", "--out", "plant-observer"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    let out = dir.join("plant-observer");
+    let manifest = std::fs::read_to_string(out.join("Cargo.toml")).unwrap();
+    assert!(manifest.contains("firmware = { path = \"firmware\" }"), "{manifest}");
+    let root = integration_tests::workspace_root();
+    for file in ["src/lib.rs", "src/map.rs", "src/ekf.rs", "src/restarted.rs"] {
+        assert_eq!(
+            std::fs::read(out.join("firmware").join(file)).unwrap(),
+            std::fs::read(root.join("firmware").join(file)).unwrap(),
+            "firmware/{file}"
+        );
+    }
+    cargo(
+        &out,
+        &["build", "--offline", "--release", "--target", "thumbv7em-none-eabihf"],
+    );
+    let _ = std::fs::remove_dir_all(&dir);
 }

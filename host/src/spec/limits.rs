@@ -5,8 +5,6 @@
 //! The bounds are far above what the method needs (the paper uses N ≤ 10, n_m = 5, a few hundred
 //! runs): they only keep a typo from taking the machine down.
 
-use super::model::Uncertain;
-use super::validate::Validator;
 use super::{Axis, Design, SpecError};
 
 /// Most past samples in the regressor (`map.horizon`).
@@ -32,41 +30,6 @@ pub const MAX_SIMULATION_STEPS: f64 = 1e9;
 /// Most values the simulated runs hold in memory (states, outputs and inputs of every sample of
 /// every run, 8 bytes each: 400 MB).
 pub const MAX_STORED_VALUES: f64 = 5e7;
-
-impl Validator {
-    /// `value ≤ limit`, or an error naming `field`.
-    pub(super) fn at_most(&self, field: &str, value: usize, limit: usize) -> Result<(), SpecError> {
-        if value <= limit {
-            Ok(())
-        } else {
-            Err(self.err(
-                field,
-                format!("{value} is above the limit of {limit}"),
-                format!("set `{field}` to at most {limit} (see host/src/spec/limits.rs)"),
-            ))
-        }
-    }
-}
-
-impl Validator {
-    /// At most [`MAX_UNCERTAIN`] parameters with a range, or an error naming the first one beyond.
-    pub(super) fn at_most_uncertain(&self, uncertain: &[Uncertain]) -> Result<(), SpecError> {
-        match uncertain.get(MAX_UNCERTAIN) {
-            None => Ok(()),
-            Some(first) => Err(self.err(
-                format!("model.parameters.{}", first.name),
-                format!(
-                    "{} parameters have a range: the mismatch runs would simulate the validation runs at each of the 2^{} corners of their box",
-                    uncertain.len(),
-                    uncertain.len()
-                ),
-                format!(
-                    "give at most {MAX_UNCERTAIN} parameters a range `{{ value, min, max }}`, the others a plain number (see host/src/spec/limits.rs)"
-                ),
-            )),
-        }
-    }
-}
 
 /// The work `design` asks of `gen`, against [`MAX_SIMULATION_STEPS`] and [`MAX_STORED_VALUES`]
 /// (in `f64`, so that no product overflows).

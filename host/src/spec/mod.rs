@@ -9,7 +9,11 @@ pub mod limits;
 pub mod model;
 mod raw;
 mod validate;
+mod validate_design;
+mod validate_map;
 mod validate_model;
+mod validate_runs;
+mod validate_states;
 
 use std::path::{Path, PathBuf};
 

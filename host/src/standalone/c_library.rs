@@ -25,7 +25,7 @@ pub const FOLDER: &str = "c";
 /// `c/Cargo.toml`.
 pub fn manifest(design: &Design) -> String {
     format!(
-        "# The C library of the `{name}` observer, emitted by `host gen --spec`. Do not edit: regenerate.\n\
+        "# The C library of the `{name}` observer, emitted by `mho gen --spec`. Do not edit: regenerate.\n\
          # cargo build --release --target thumbv7em-none-eabihf  →  target/thumbv7em-none-eabihf/release/lib{library}_c.a\n\
          [package]\n\
          name = \"{package}-c\"\n\
@@ -139,7 +139,7 @@ pub fn source(design: &Design) -> String {
     format!(
         r#"//! C interface of the `{name}` observer: create it in storage the caller provides, push each
 //! sample, read the estimates; every call returns a status. Header: `include/{name}.h` (cbindgen).
-//! Emitted by `host gen --spec`. Do not edit: regenerate.
+//! Emitted by `mho gen --spec`. Do not edit: regenerate.
 #![no_std]
 
 use core::ffi::c_void;
@@ -346,7 +346,7 @@ pub fn header(design: &Design, source_path: &Path) -> Result<String, cbindgen::E
         include_guard: Some(guard),
         usize_is_size_t: true,
         header: Some(format!(
-            "/* C interface of the `{}` observer, written by cbindgen from c/src/lib.rs (host gen --spec). Do not edit. */",
+            "/* C interface of the `{}` observer, written by cbindgen from c/src/lib.rs (mho gen --spec). Do not edit. */",
             design.name
         )),
         enumeration: cbindgen::EnumConfig {

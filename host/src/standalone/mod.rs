@@ -21,6 +21,7 @@
 pub mod c_library;
 pub mod owned;
 pub mod publish;
+pub mod runtime;
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -35,6 +36,9 @@ use crate::spec::Design;
 /// Where the crate finds the `firmware` runtime.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Runtime {
+    /// The runtime the tool carries ([`runtime`]), written into the crate's `firmware/` folder: the
+    /// default outside the checkout, so that the crate builds with nothing but the toolchain.
+    Embedded,
     /// A path to the `firmware` crate (default: the checkout's `firmware/`, absolute).
     Path(PathBuf),
     /// A version requirement, for a registry that has `firmware`.
@@ -75,6 +79,7 @@ impl Runtime {
     /// The `[dependencies]` line.
     fn dependency(&self) -> String {
         match self {
+            Runtime::Embedded => format!("firmware = {{ path = {:?} }}", runtime::FOLDER),
             Runtime::Path(path) => format!("firmware = {{ path = {:?} }}", path.to_string_lossy()),
             Runtime::Version(version) => format!("firmware = {version:?}"),
         }
@@ -131,7 +136,7 @@ pub fn run(
                 return Err(GenerateError::NotAFolder { path: path.to_owned() });
             }
         }
-        owned::check(&folder, &design.name, to.force)?;
+        owned::check(&folder, &design.name, &to.runtime, to.force)?;
     }
     let prepared = prepare_all(
         designs,
@@ -199,6 +204,15 @@ fn write(
     for (path, text) in &files {
         write_if_changed(path, text).map_err(io(path))?;
     }
+    if runtime == &Runtime::Embedded {
+        for (relative, text) in runtime::files() {
+            let path = folder.join(relative);
+            if let Some(parent) = path.parent() {
+                std::fs::create_dir_all(parent).map_err(io(parent))?;
+            }
+            write_if_changed(&path, &text).map_err(io(&path))?;
+        }
+    }
     let c = folder.join(c_library::FOLDER);
     let c_sources = c.join("src");
     let include = c.join("include");
@@ -220,7 +234,7 @@ fn write(
     write_if_changed(&header_path, &header).map_err(io(&header_path))?;
     let observer = sources.join(format!("{}.rs", design.name));
     write_if_changed(&observer, &one.emitted.source).map_err(io(&observer))?;
-    let mut written = owned::fixed_files(&design.name);
+    let mut written = owned::fixed_files(&design.name, runtime);
     written.extend(
         report_files
             .iter()
@@ -242,7 +256,7 @@ fn write(
 /// `Cargo.toml`.
 fn manifest(design: &Design, runtime: &Runtime) -> String {
     format!(
-        "# The `{name}` observer, emitted by `host gen --spec` (host {version}). Do not edit: regenerate.\n\
+        "# The `{name}` observer, emitted by `mho gen --spec` (mho {version}). Do not edit: regenerate.\n\
          [package]\n\
          name = \"{package}\"\n\
          version = \"0.1.0\"\n\
@@ -278,7 +292,7 @@ fn library(design: &Design) -> String {
     format!(
         "//! The `{name}` observer: {description}\n\
          //!\n\
-         //! Emitted by `host gen --spec` from `{spec}` (host {version}); its accuracy and cost are in\n\
+         //! Emitted by `mho gen --spec` from `{spec}` (mho {version}); its accuracy and cost are in\n\
          //! README.md. Do not edit: change the spec and regenerate.\n\
          #![no_std]\n\
          \n\
@@ -299,7 +313,7 @@ fn readme(one: &Prepared) -> String {
     let design = &one.emitted.design;
     let (name, library) = (&design.name, library_name(&design.name));
     let mut text = format!(
-        "# The `{name}` observer\n\n{}\n\nEmitted by `host gen --spec` from [`{STANDALONE_SPEC}`]({STANDALONE_SPEC}) (host {}). \
+        "# The `{name}` observer\n\n{}\n\nEmitted by `mho gen --spec` from [`{STANDALONE_SPEC}`]({STANDALONE_SPEC}) (mho {}). \
          Do not edit: change the spec and regenerate.\n\n\
          ## Build and use\n\n\
          ```sh\ncargo build --release --target thumbv7em-none-eabihf   # a Cortex-M4F; any target with a float unit works\n```\n\n\

@@ -95,10 +95,14 @@ impl Owned {
     }
 }
 
-/// The files every crate of design `name` has besides its report, relative to the crate.
-pub fn fixed_files(name: &str) -> Vec<PathBuf> {
+/// The files every crate of design `name` with `runtime` has besides its report, relative to the crate.
+pub fn fixed_files(name: &str, runtime: &super::Runtime) -> Vec<PathBuf> {
     let c = Path::new(super::c_library::FOLDER);
-    vec![
+    let embedded = match runtime {
+        super::Runtime::Embedded => super::runtime::files().into_iter().map(|(path, _)| path).collect(),
+        _ => Vec::new(),
+    };
+    let mut files = vec![
         PathBuf::from("Cargo.toml"),
         PathBuf::from(crate::emit::STANDALONE_SPEC),
         PathBuf::from("README.md"),
@@ -107,13 +111,20 @@ pub fn fixed_files(name: &str) -> Vec<PathBuf> {
         c.join("Cargo.toml"),
         c.join("src/lib.rs"),
         c.join("include").join(format!("{name}.h")),
-    ]
+    ];
+    files.extend(embedded);
+    files
 }
 
 /// Checks, before anything is fitted, that writing design `name`'s crate into `folder` replaces no
 /// file `gen` did not write there ([`Owned::may_replace`]): its fixed files and every file of its
 /// report folder. With `force`, nothing is checked.
-pub fn check(folder: &Path, name: &str, force: bool) -> Result<(), crate::generate::GenerateError> {
+pub fn check(
+    folder: &Path,
+    name: &str,
+    runtime: &super::Runtime,
+    force: bool,
+) -> Result<(), crate::generate::GenerateError> {
     if force {
         return Ok(());
     }
@@ -121,7 +132,7 @@ pub fn check(folder: &Path, name: &str, force: bool) -> Result<(), crate::genera
         path: folder.join(LIST),
         source,
     })?;
-    let mut files = fixed_files(name);
+    let mut files = fixed_files(name, runtime);
     if let Ok(entries) = std::fs::read_dir(folder.join(REPORT)) {
         let mut report: Vec<PathBuf> = entries
             .flatten()

@@ -1,6 +1,6 @@
 //! Measures every observer of every generated design on the emulated Cortex-M4F (the map, the
 //! observers the map starts and the EKF from the box centre, whichever the design has), rewrites
-//! the table in the README between `<!-- on-target:begin -->` and `<!-- on-target:end -->`, and
+//! the table in `docs/chip.md` between `<!-- on-target:begin -->` and `<!-- on-target:end -->`, and
 //! records each design's figures beside its report (`target/designs/<design>/on_target.json`, and
 //! `report.json`'s `observers[].on_target`, and the section of `report.md` that shows them):
 //!
@@ -8,9 +8,9 @@
 //! cargo run -p integration-tests --bin on-target-report
 //! ```
 //!
-//! With `--crate DIR`, the same for the standalone crate `host gen --spec` wrote in `DIR` (see
+//! With `--crate DIR`, the same for the standalone crate `mho gen --spec` wrote in `DIR` (see
 //! `integration_tests::on_target::standalone`): its figures go beside its report (`DIR/report/`) and
-//! into its `README.md`, never into the project's.
+//! into its `README.md`, never into the project's docs.
 //!
 //! The map and the observers it starts run one after the other in one program per design; before
 //! anything is written, each of them is also built and run alone, and its counts must be the same.
@@ -26,8 +26,8 @@ use integration_tests::workspace_root;
 const USAGE: &str = "usage: on-target-report [--crate DIR]
 
 Measures the observers on the emulated Cortex-M4F (QEMU mps2-an386) and records the figures:
-  (no argument)   every shipped design: beside its report (target/designs/<name>/) and in README.md
-  --crate DIR     the standalone crate `host gen --spec FILE --out DIR` wrote: in DIR/report/ and DIR/README.md
+  (no argument)   every shipped design: beside its report (target/designs/<name>/) and in docs/chip.md
+  --crate DIR     the standalone crate `mho gen --spec FILE --out DIR` wrote: in DIR/report/ and DIR/README.md
 ";
 
 fn main() -> ExitCode {
@@ -161,13 +161,14 @@ fn run() -> Result<String, String> {
     for (family, flash) in &all.family_flash_bytes {
         table += &format!("| family `{family}` | (its members' maps) | | | | | | | | | | {flash} | | |\n");
     }
-    let readme_path = workspace_root().join("README.md");
-    let readme = std::fs::read_to_string(&readme_path).map_err(|e| e.to_string())?;
+    // The project's page of on-target figures, between its markers.
+    let chip_path = workspace_root().join("docs/chip.md");
+    let chip = std::fs::read_to_string(&chip_path).map_err(|e| format!("{}: {e}", chip_path.display()))?;
     let (begin, end) = ("<!-- on-target:begin -->\n", "<!-- on-target:end -->");
-    let (Some(start), Some(stop)) = (readme.find(begin), readme.find(end)) else {
-        return Err("README.md has no on-target markers".into());
+    let (Some(start), Some(stop)) = (chip.find(begin), chip.find(end)) else {
+        return Err("docs/chip.md has no on-target markers".into());
     };
-    let updated = format!("{}{begin}{table}{}", &readme[..start], &readme[stop..]);
-    host::output::write_if_changed(&readme_path, &updated).map_err(|e| e.to_string())?;
+    let updated = format!("{}{begin}{table}{}", &chip[..start], &chip[stop..]);
+    host::output::write_if_changed(&chip_path, &updated).map_err(|e| e.to_string())?;
     Ok(table)
 }

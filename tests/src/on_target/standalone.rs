@@ -1,4 +1,4 @@
-//! A user's standalone crate (`host gen --spec FILE --out DIR`) on the emulated Cortex-M4F.
+//! A user's standalone crate (`mho gen --spec FILE --out DIR`) on the emulated Cortex-M4F.
 //!
 //! The runners and probes of `tests/on-target/` link the crate in place of the project's
 //! `generated` (both re-export the runtime as `generated::firmware`): a manifest of their own under
@@ -42,7 +42,7 @@ impl Crate {
         let manifest = folder.join("Cargo.toml");
         let text = std::fs::read_to_string(&manifest).map_err(|e| {
             format!(
-                "{}: {e}; --crate takes the folder of a crate `host gen --spec` wrote",
+                "{}: {e}; --crate takes the folder of a crate `mho gen --spec` wrote",
                 manifest.display()
             )
         })?;

@@ -7,6 +7,8 @@ fn fit(data: &DataSet, target: usize, name: &str, settings: &MapSettings) -> Res
     super::fit(data, target, name, settings, &basis_of(settings))
 }
 use crate::data::{Run, Window};
+use crate::spec::Normalisation;
+use nalgebra::{DMatrix, DVector};
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rand_distr::StandardNormal;

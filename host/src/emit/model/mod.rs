@@ -1,0 +1,120 @@
+//! The model of a design written out as Rust: one `let` per operation of its straight-line programs
+//! ([`crate::plant::Program`]), in their order, generic over the firmware's [`firmware::Scalar`] so
+//! that the chip runs it in `f32` and the host's tests in `f64`; and the design's EKF over it.
+//!
+//! Every number is written once for both precisions (`T::literal(f32, f64)`, each rounded here), every
+//! function is the firmware's `Maths::…` (libm), every name a local of the spec's name with a prefix
+//! (`x_` states, `u_` inputs; parameters are constants of module `parameters`), so nothing of the
+//! spec's text is pasted into code.
+//!
+//! One submodule per piece: `rust_text` (literals, lists, a program's `let`s), `plant` (the model and
+//! the EKF), then one per model-based observer kind (`box_ekf`, `started`, `restarted`, `corrected`).
+
+mod box_ekf;
+mod corrected;
+mod plant;
+mod restarted;
+mod rust_text;
+mod started;
+
+use std::fmt::Write;
+
+use crate::emit::EmitError;
+use crate::observers::restart::RestartConstants;
+use crate::plant::correction::CorrectionConstants;
+use crate::plant::kalman::{self, EkfConstants};
+use crate::plant::ModelCode;
+use crate::spec::{Design, ObserverKind};
+use corrected::corrector;
+use plant::model_and_ekf;
+use restarted::restarted;
+use rust_text::{list, literal};
+use started::STARTED_EKF_TEMPLATE;
+
+/// The observers a design file carries besides its map, and which one `observer()` is.
+#[derive(Clone, Copy, Debug)]
+pub struct Observers<'a> {
+    /// The EKF's constants (the peer, and the map-started EKF).
+    pub ekf: Option<&'a EkfConstants>,
+    /// The EKF started by the map: its `P(N−1)` diagonal and each state's target.
+    pub started: Option<(&'a [f64], &'a [usize])>,
+    /// The box-started EKF's check against the map (with `ekf` and `started`).
+    pub restart: Option<&'a RestartConstants>,
+    /// The model-corrected map's constants and each state's target.
+    pub corrected: Option<(&'a CorrectionConstants, &'a [usize])>,
+    /// `observer()`'s kind: `Map`, `Corrected` or `Ekf` (never `Auto`: chosen before).
+    pub kind: ObserverKind,
+    /// Every observer kind the design has and its predicted instructions per steady sample
+    /// ([`crate::search::cost`]), in the report's order.
+    pub instructions: &'a [(&'static str, f64)],
+    /// SHA-256 of the tables saved with this file ([`crate::tables::Tables::content_sha256`]).
+    pub tables_sha256: &'a str,
+}
+
+/// The Rust source of the design's model (`parameters`, `Plant`, `targets`), its EKF (`ekf`), its
+/// model-based followers of the map, and `Observer` / `observer()` of the chosen kind.
+pub fn model_source(design: &Design, code: &ModelCode, observers: &Observers<'_>) -> Result<String, EmitError> {
+    let mut text = model_and_ekf(design, code, observers.ekf)?;
+    if let Some((constants, state_targets)) = observers.corrected {
+        text.push_str(&corrector(design, code, constants, state_targets)?);
+    }
+    if let (Some(_), Some((p0, state_targets))) = (observers.ekf, observers.started) {
+        let upper = kalman::diagonal_upper(p0);
+        let entries = upper
+            .iter()
+            .enumerate()
+            .map(|(i, v)| literal(&format!("map-started EKF P0[{i}]"), *v))
+            .collect::<Result<Vec<_>, _>>()?;
+        text.push_str(
+            &STARTED_EKF_TEMPLATE
+                .replace("{P0}", &list(&entries))
+                .replace("{P0_F64}", &format!("{p0:?}"))
+                .replace("{STATE_TARGETS}", &format!("{state_targets:?}")),
+        );
+    }
+    if let (Some(ekf), Some(_), Some(restart)) = (observers.ekf, observers.started, observers.restart) {
+        text.push_str(&restarted(ekf, restart)?);
+    }
+    let (ty, what) = match observers.kind {
+        ObserverKind::Corrected => ("CorrectedObserver", "the model-corrected map ([`CorrectedObserver`])"),
+        ObserverKind::EkfMap => (
+            "StartedEkfObserver",
+            "the EKF started by the map ([`StartedEkfObserver`])",
+        ),
+        ObserverKind::EkfBox => (
+            "BoxEkfObserver",
+            "the EKF from the centre of the state box ([`BoxEkfObserver`])",
+        ),
+        ObserverKind::EkfRestart => (
+            "RestartedEkfObserver",
+            "the EKF from the centre of the state box, restarted by the map ([`RestartedEkfObserver`])",
+        ),
+        ObserverKind::Map | ObserverKind::Auto => ("MapObserver", "the map alone ([`MapObserver`])"),
+    };
+    let kind = match observers.kind {
+        ObserverKind::Auto => "map",
+        other => other.name(),
+    };
+    write!(
+        text,
+        "
+/// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
+pub const KIND: &str = \"{kind}\";
+
+/// This design's observer: {what}.
+pub type Observer = {ty};
+
+/// A fresh [`Observer`], holding no sample yet.
+pub const fn observer() -> Observer {{
+    {ty}::new()
+}}
+
+/// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
+/// uses saved tables only beside the observer file written with them.
+pub const TABLES_SHA256: &str = \"{tables}\";
+",
+        tables = observers.tables_sha256
+    )
+    .ok();
+    Ok(text)
+}

@@ -1,0 +1,121 @@
+//! The simulated runs besides the learning grid: `[validation]`, `[tuning]` (defaulting from it, with
+//! a seed of its own) and `[scenario]`, each long enough to hold a window.
+
+use std::collections::BTreeMap;
+
+use super::limits;
+use super::raw::*;
+use super::validate::Validator;
+use super::*;
+
+impl Validator {
+    /// One finite value per state, from the table at `field`.
+    fn state_values(&self, field: &str, raw: &BTreeMap<String, f64>, model: &Model) -> Result<Vec<f64>, SpecError> {
+        self.keys_among(
+            field,
+            raw.keys(),
+            &model.states,
+            "a state",
+            "give one initial value per state",
+        )?;
+        model
+            .states
+            .iter()
+            .map(|state| match raw.get(state) {
+                Some(v) if v.is_finite() => Ok(*v),
+                Some(v) => Err(self.err(
+                    format!("{field}.{state}"),
+                    format!("{v} is not finite"),
+                    "give a finite initial value",
+                )),
+                None => Err(self.err(
+                    format!("{field}.{state}"),
+                    format!("no initial value for `{state}`"),
+                    format!("add `{state} = …` to `{field}`"),
+                )),
+            })
+            .collect()
+    }
+
+    pub(super) fn scenario(&self, raw: &RawScenario, model: &Model, horizon: usize) -> Result<Scenario, SpecError> {
+        let x0 = self.state_values("scenario.x0", &raw.x0, model)?;
+        let observer_x0 = raw
+            .observer_x0
+            .as_ref()
+            .map(|values| self.state_values("scenario.observer_x0", values, model))
+            .transpose()?;
+        self.at_most("scenario.samples", raw.samples, limits::MAX_RUN_SAMPLES)?;
+        if raw.samples < horizon {
+            return Err(self.err(
+                "scenario.samples",
+                format!("{} samples hold no window of N = {horizon}", raw.samples),
+                "set `scenario.samples` ≥ `map.horizon`",
+            ));
+        }
+        Ok(Scenario {
+            x0,
+            observer_x0,
+            samples: raw.samples,
+            seed: raw.seed,
+        })
+    }
+
+    /// `[tuning]`, each field defaulting from `[validation]`; the seed must differ from every other.
+    pub(super) fn tuning(
+        &self,
+        raw: Option<&RawTuning>,
+        validation: &Validation,
+        learning: &Learning,
+        scenario: Option<&RawScenario>,
+        horizon: usize,
+    ) -> Result<Validation, SpecError> {
+        let others = [Some(learning.seed), Some(validation.seed), scenario.map(|s| s.seed)];
+        let taken = |seed: u64| others.contains(&Some(seed));
+        let seed = match raw.and_then(|t| t.seed) {
+            Some(seed) if taken(seed) => {
+                return Err(self.err(
+                    "tuning.seed",
+                    format!("seed {seed} is also the learning, validation or scenario seed: the tuning runs would not be new data"),
+                    "choose another seed, or leave it out (a free one is derived from `validation.seed`)",
+                ))
+            }
+            Some(seed) => seed,
+            None => (1..).map(|k| validation.seed.wrapping_add(1000 * k)).find(|s| !taken(*s)).expect("three seeds cannot take them all"),
+        };
+        let raw = RawValidation {
+            trajectories: raw.and_then(|t| t.trajectories).unwrap_or(validation.trajectories),
+            samples: raw.and_then(|t| t.samples).unwrap_or(validation.samples),
+            seed,
+        };
+        self.runs("tuning", &raw, horizon)
+    }
+
+    /// The random runs of section `section` (`validation` or `tuning`).
+    pub(super) fn runs(&self, section: &str, raw: &RawValidation, horizon: usize) -> Result<Validation, SpecError> {
+        if raw.trajectories == 0 {
+            return Err(self.err(
+                format!("{section}.trajectories"),
+                format!("no {section} run"),
+                format!("set `{section}.trajectories` to 1 or more (50 or more is sensible)"),
+            ));
+        }
+        self.at_most(
+            &format!("{section}.trajectories"),
+            raw.trajectories,
+            limits::MAX_TRAJECTORIES,
+        )?;
+        self.at_most(&format!("{section}.samples"), raw.samples, limits::MAX_RUN_SAMPLES)?;
+        if raw.samples < horizon {
+            return Err(self.err(
+                format!("{section}.samples"),
+                format!("runs of {} samples hold no window of N = {horizon}", raw.samples),
+                format!("set `{section}.samples` ≥ `map.horizon`"),
+            ));
+        }
+        Ok(Validation {
+            trajectories: raw.trajectories,
+            samples: raw.samples,
+            seed: raw.seed,
+        })
+    }
+}
