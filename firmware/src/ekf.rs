@@ -29,7 +29,7 @@
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(s > 0)` is deliberate: a NaN must count as no information.
 
-use crate::model::product;
+use crate::matrix::product;
 use crate::Scalar;
 
 /// The plant as the filter sees it: one sampling period of the model and its output, each with its

@@ -27,7 +27,8 @@
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(t >= 0)` is deliberate: a NaN must count as low.
 
-use crate::{Estimate, Saturation, Scalar};
+use crate::estimate::{Estimate, Saturation};
+use crate::Scalar;
 
 /// Where the knots of an [`InverseTable`] are, which decides how a segment is found.
 #[derive(Clone, Copy, Debug, PartialEq)]

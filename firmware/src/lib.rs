@@ -63,12 +63,14 @@
 pub mod basis;
 pub mod bounds;
 pub mod ekf;
+pub mod estimate;
 pub mod family;
 #[cfg(any(test, feature = "reference"))]
 pub mod gamma;
 pub mod inverse;
 pub mod map;
 pub mod maths;
+pub mod matrix;
 pub mod model;
 pub mod observer;
 pub mod restarted;

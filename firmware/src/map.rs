@@ -1,6 +1,7 @@
 //! One target's map `r = Γ⁻¹(Lᵀ Z)` as the chip evaluates it: a projection onto the table
 //! coordinate `t`, then the tabulated inverse ([`InverseTable`]).
 
+pub use crate::estimate::{Estimate, Saturation};
 use crate::{InverseTable, Scalar};
 
 /// The map for one target: `t = offset + Σ_i gains_i z_i`, `r = table(t)`.
@@ -15,35 +16,6 @@ pub struct TargetMap<'a, T> {
     pub offset: T,
     /// `Γ⁻¹` in the coordinate `t`, in the target's units.
     pub inverse: InverseTable<'a, T>,
-}
-
-/// An estimate of one target.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Estimate<T> {
-    /// The estimated value, in the target's units.
-    pub value: T,
-    /// Whether the estimate was clamped to an end of the learning range.
-    pub saturation: Saturation,
-}
-
-/// Which end of the learning range, if any, an estimate was clamped to. The table coordinate `t` is
-/// `0` at `Lᵀ Z = Γ(0)` and `t_max` at `Lᵀ Z = Γ(1)`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Saturation {
-    /// `0 ≤ t ≤ t_max` (`Γ(0) ≤ Lᵀ Z ≤ Γ(1)`): the estimate is inside the learning range.
-    Inside,
-    /// `t < 0` (or `t` is NaN): the estimate is clamped to `r_min`.
-    Low,
-    /// `t > t_max`: the estimate is clamped to `r_max`.
-    High,
-}
-
-impl Saturation {
-    /// `true` when the estimate was clamped to an end of the learning range.
-    #[must_use]
-    pub fn is_saturated(self) -> bool {
-        self != Saturation::Inside
-    }
 }
 
 impl<T: Scalar> TargetMap<'_, T> {

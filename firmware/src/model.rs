@@ -17,6 +17,7 @@
 //!
 //! and the substeps' derivatives multiply. The same number of substeps runs every sample.
 
+pub use crate::matrix::product;
 use crate::{ekf::Plant, Scalar};
 
 /// The continuous-time model with its Jacobians in the state. Generated designs implement it (a unit
@@ -134,19 +135,6 @@ fn identity<T: Scalar, const N: usize>() -> [[T; N]; N] {
         row[i] = T::one();
     }
     m
-}
-
-/// `A B` (also what the host composes substeps with).
-pub fn product<T: Scalar, const N: usize>(a: &[[T; N]; N], b: &[[T; N]; N]) -> [[T; N]; N] {
-    let mut out = [[T::ZERO; N]; N];
-    for (r, out_row) in out.iter_mut().enumerate() {
-        for (c, entry) in out_row.iter_mut().enumerate() {
-            for k in 0..N {
-                *entry += a[r][k] * b[k][c];
-            }
-        }
-    }
-    out
 }
 
 #[cfg(test)]

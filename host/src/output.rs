@@ -1,7 +1,11 @@
 //! Writing output files so that a failure never leaves a half-written one behind.
 
+pub mod format;
+
 use std::io::Write;
 use std::path::{Path, PathBuf};
+
+pub use format::{number, sha256_hex};
 
 /// Writes `bytes` to a temporary file beside `path`, syncs it to disk, then renames it over `path` (and
 /// syncs the folder): a reader never sees a half-written file, a crash leaves the previous one in
@@ -84,21 +88,6 @@ pub fn is_temporary(name: &str) -> bool {
 pub fn process_is_alive(pid: u32) -> bool {
     let proc = Path::new("/proc");
     !proc.join("self").exists() || proc.join(pid.to_string()).exists()
-}
-
-/// A computed value as a reader wants it: at most 10 significant digits, so that rounding noise of
-/// the arithmetic does not show (`63.400000000000006` → `63.4`, `3.0000000000000004` → `3`), in
-/// exponent form outside `1e-4 ..1e9` as [`crate::spec::readable`] writes a spec's values.
-pub fn number(value: f64) -> String {
-    let rounded = format!("{value:.9e}").parse().unwrap_or(value);
-    crate::spec::readable(rounded)
-}
-
-/// Lower-case hex SHA-256 of `bytes`: how the tool fingerprints specs, sources, tables and the files
-/// it wrote.
-pub fn sha256_hex(bytes: &[u8]) -> String {
-    use sha2::Digest;
-    sha2::Sha256::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
 }
 
 /// Writes `text` to `path` only if it differs from what is there (keeps timestamps, and so cargo's

@@ -1,5 +1,6 @@
 //! Shared helpers of the integration tests: the shipped specs and designs built from them.
 
+pub mod chip_table;
 pub mod on_target;
 
 use std::collections::HashMap;

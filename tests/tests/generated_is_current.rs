@@ -1,6 +1,7 @@
 //! The files in `generated/` are exactly what `gen` produces now, producing them is deterministic, and
 //! every shipped design passes the quality gates (what `gen --strict` asks); the README's figure,
-//! `docs/figures/vanderpol-estimation.svg`, is the one `gen` draws now.
+//! `docs/figures/vanderpol-estimation.svg`, is the one `gen` draws now, and its headline table shows
+//! the figures `gen` computes now.
 
 use host::generate;
 use indicatif::ProgressBar;
@@ -31,6 +32,7 @@ fn generated_files_match_a_fresh_generation() {
         );
         if name == "vanderpol" {
             the_readme_figure_is_current(&first);
+            the_readme_table_is_current(&first);
         }
         names.push(name);
     }
@@ -64,6 +66,75 @@ fn the_readme_figure_is_current(emitted: &generate::Emitted) {
          there and commit it",
         file.display()
     );
+}
+
+/// The README's headline table (Example 1) shows what `gen` computes now and what the chip measures:
+/// each observer's validation RMSE and p95, scenario and transient RMSE from the fresh fit (4
+/// decimals), and its instructions per sample from the on-target table of `docs/chip.md` (which the
+/// on-target test holds against the chip).
+fn the_readme_table_is_current(emitted: &generate::Emitted) {
+    let readme = std::fs::read_to_string(workspace_root().join("README.md")).unwrap();
+    let chip = std::fs::read_to_string(workspace_root().join("docs/chip.md")).unwrap();
+    let header = "| observer | RMSE validation x1 / x2 |";
+    let rows: Vec<Vec<String>> = readme[readme.find(header).expect("the headline table")..]
+        .lines()
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| {
+            l.trim_matches('|')
+                .split(" | ")
+                .map(|c| c.replace("**", "").trim().to_owned())
+                .collect()
+        })
+        .collect();
+    // README row order, the kind, and its observer in the chip's table.
+    let kinds = [
+        ("map", "`map_observer()`"),
+        ("ekf_box", "`ekf()`"),
+        ("corrected", "`CorrectedObserver`"),
+        ("ekf_map", "`StartedEkfObserver`"),
+        ("ekf_restart", "`RestartedEkfObserver`"),
+    ];
+    assert_eq!(
+        rows.len(),
+        kinds.len(),
+        "the README's headline table has one row per kind"
+    );
+    for (row, (kind, on_chip)) in rows.iter().zip(kinds) {
+        let figures = emitted
+            .comparison
+            .observers
+            .iter()
+            .find(|o| o.kind == kind)
+            .unwrap_or_else(|| panic!("no {kind}"));
+        let pair = |f: &dyn Fn(&host::observers::Figures) -> f64| {
+            format!("{:.4} / {:.4}", f(&figures.targets[0]), f(&figures.targets[1]))
+        };
+        let expected = [
+            pair(&|f| f.rmse_validation),
+            pair(&|f| f.p95_validation),
+            pair(&|f| f.rmse_scenario),
+            pair(&|f| f.rmse_transient),
+        ];
+        assert_eq!(
+            row[1..5],
+            expected,
+            "README headline table, {kind}: regenerate and copy report.md's figures"
+        );
+        // Every count the README gives is the chip's steady or start-up count for that observer.
+        let chip_row = chip
+            .lines()
+            .find(|l| l.starts_with("| `vanderpol` |") && l.contains(on_chip))
+            .unwrap_or_else(|| panic!("docs/chip.md has no vanderpol {on_chip} row"));
+        let cells: Vec<&str> = chip_row.trim_matches('|').split(" | ").collect();
+        let measured: Vec<&str> = cells[5..7].iter().flat_map(|c| c.split([' ', '/', ','])).collect();
+        for count in row[5].split(|c: char| !c.is_ascii_digit()).filter(|c| !c.is_empty()) {
+            assert!(
+                measured.contains(&count),
+                "README headline table, {kind}: {count} instructions is not in docs/chip.md's {chip_row}"
+            );
+        }
+    }
 }
 
 /// The fixture whose tables have searched knots: `tests/fixtures/vanderpol_beta7.rs`, compiled into the

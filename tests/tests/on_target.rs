@@ -293,6 +293,15 @@ fn every_observer_on_the_emulated_cortex_m4f() {
         on_target::panic_check_catches_a_reachable_panic().unwrap(),
         "the no-panic check did not catch a reachable panic"
     );
+    // The project's page shows what the chip measures now, figure for figure.
+    let (table, _) = integration_tests::chip_table::project_table(&all).unwrap();
+    let path = integration_tests::workspace_root().join(integration_tests::chip_table::PAGE);
+    let page = std::fs::read_to_string(&path).unwrap();
+    assert!(
+        integration_tests::chip_table::with_table(&page, &table).unwrap() == page,
+        "{} does not show what the chip measures now: run `cargo run -p integration-tests --bin on-target-report` and commit it",
+        path.display()
+    );
 }
 
 /// The split into start-up and steady state, on a made-up run: three samples fill the window (the

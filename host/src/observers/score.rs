@@ -15,6 +15,9 @@
 
 use crate::data::{Rows, Run};
 
+/// How much worse than the best a cheaper kind's score may be and still be chosen by `auto`.
+pub const CHEAPER_WITHIN: f64 = 0.02;
+
 /// Each run's RMSE of target `target` over its samples `window(run)`.
 pub fn per_run_rmse(
     runs: &[Run],

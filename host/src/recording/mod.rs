@@ -16,12 +16,13 @@
 
 mod estimate;
 mod read;
+mod row;
 pub mod spacing;
 mod write;
 
 pub use estimate::{
-    estimate, estimate_streaming, map_row, regressors, EstimateRow, MapEvaluator, NoTable, Precision, Status, Step,
-    StreamError, Window,
+    estimate, estimate_streaming, map_row, regressors, MapEvaluator, NoTable, Precision, Step, StreamError, Window,
 };
 pub use read::{read, regular_or_missing, RecordingError, Row, RowReader};
+pub use row::{EstimateRow, Status};
 pub use write::{estimates_csv, run_csv, time_text, write_run_csv, EstimatesCsv};

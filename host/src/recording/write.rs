@@ -3,8 +3,8 @@
 use crate::data::Run;
 use crate::spec::Design;
 
-use super::estimate::{EstimateRow, Status};
 use super::read::Row;
+use super::row::{EstimateRow, Status};
 
 /// `k τ` as the shortest decimal that `τ`'s own decimals allow: `0.3`, not `k as f64 * τ`'s
 /// `0.30000000000000004`. Exact while `k τ`'s rounding error stays below half the last decimal of `τ`

@@ -25,7 +25,9 @@
 pub mod cost;
 pub mod pace;
 pub mod pareto;
+mod size;
 pub mod sparsity;
+mod summary;
 
 use std::io::IsTerminal;
 use std::sync::Mutex;
@@ -40,6 +42,8 @@ use crate::fit::identify;
 use crate::fit::maps::{FittedMap, Tabulation};
 use crate::spec::{Budget, Design, MapSettings, Search, SpecError, Taps};
 pub use cost::Cost;
+pub use size::{check_size, count, DEFAULT_MAX_CANDIDATES, SECONDS_PER_CANDIDATE};
+pub use summary::{short, summary};
 
 /// One candidate of the search, fitted and scored.
 #[derive(Clone, Debug, Serialize)]
@@ -99,85 +103,6 @@ impl Outcome {
 
 fn instructions(c: &Candidate) -> f64 {
     c.cost.map_or(f64::INFINITY, |c| c.instructions)
-}
-
-/// The most candidates a search fits unless the spec's `[search] max_candidates` says otherwise: at
-/// most about ten minutes on this project's 2-core machine whatever the horizon. `vanderpol_searched`
-/// (432 candidates, N ≤ 40, two targets) searches in 4.5 s there in a release build
-/// ([`SECONDS_PER_CANDIDATE`]: 5,000 candidates in about 1 minute); longer horizons and more runs cost
-/// up to ten times more per candidate (0.12 s at N = 160 to 320 over 400 samples: 5,000 in about 10
-/// minutes). A search of 28,500 candidates, which ran for hours without a word, is refused; the
-/// estimate printed after the first few candidates tells how long a larger allowed one takes.
-pub const DEFAULT_MAX_CANDIDATES: usize = 5_000;
-
-/// Wall-clock seconds per candidate of `vanderpol_searched` on this project's 2-core machine
-/// (release: 432 in 4.5 s): the rough estimate a refusal gives before anything is fitted.
-pub const SECONDS_PER_CANDIDATE: f64 = 0.0104;
-
-/// Candidates of `search` for `design`, as the summary and `report.json` count them: every
-/// `(N, n_m, β)`, once per count of taps its regressor of `N·(outputs + inputs)` entries keeps.
-pub fn count(design: &Design, search: &Search) -> usize {
-    let per_sample = design.model.outputs.len() + design.model.inputs.len();
-    let taps: usize = search
-        .horizons
-        .iter()
-        .map(|&n| search.taps.for_regressor(n * per_sample).len())
-        .sum();
-    taps * search.nms.len() * search.betas.len()
-}
-
-/// The number of candidates, or, above the design's `max_candidates`, an error naming the `[map]`
-/// field with the most values, the count, the limit, a rough time and how to raise the limit:
-/// checked when the spec is loaded and again before a search runs (`search --auto` replaces the
-/// spec's candidates).
-pub fn check_size(design: &Design, search: &Search) -> Result<usize, SpecError> {
-    let total = count(design, search);
-    if total <= design.max_candidates {
-        return Ok(total);
-    }
-    let per_sample = design.model.outputs.len() + design.model.inputs.len();
-    let most_taps = search
-        .horizons
-        .iter()
-        .map(|&n| search.taps.for_regressor(n * per_sample).len())
-        .max()
-        .unwrap_or(1);
-    let mut factors = vec![
-        ("map.horizon", search.horizons.len()),
-        ("map.nm", search.nms.len()),
-        ("map.beta", search.betas.len()),
-    ];
-    if !matches!(search.taps, Taps::All) {
-        factors.push(("map.taps", most_taps));
-    }
-    // The first of the fields with the most values (`rev`: `max_by_key` keeps the last maximum).
-    let largest = factors
-        .iter()
-        .rev()
-        .max_by_key(|(_, n)| *n)
-        .map_or("map.horizon", |(field, _)| field);
-    let product = factors
-        .iter()
-        .map(|(field, n)| format!("{n} of `{field}`"))
-        .collect::<Vec<_>>()
-        .join(" × ");
-    let taps_note = if matches!(search.taps, Taps::All) {
-        ""
-    } else {
-        " (tap counts: at most; fewer where N is short)"
-    };
-    Err(design.error(
-        largest,
-        format!(
-            "the search has {total} candidates ({product}{taps_note}), above the limit of {}: at the {:.0} ms per candidate `vanderpol_searched` takes on a 2-core machine that is about {}, and longer horizons take longer",
-            design.max_candidates,
-            SECONDS_PER_CANDIDATE * 1e3,
-            pace::duration(std::time::Duration::from_secs_f64(total as f64 * SECONDS_PER_CANDIDATE)),
-        ),
-        format!(
-            "offer fewer values in `{largest}` (or the other fields above), or raise the limit: `[search]` `max_candidates = {total}`"
-        ),
-    ))
 }
 
 /// Runs the design's search, if it has one, and returns the design with the chosen `N`, `n_m` and `β`
@@ -421,79 +346,4 @@ pub(crate) fn rmse_per_count(maps: &[Vec<FittedMap>], data: &DataSet, from: usiz
     sums.iter()
         .map(|row| row.iter().map(|s| (s / windows as f64).sqrt()).collect())
         .collect()
-}
-
-/// The search in a few lines, as `gen` and `search` print it: what was searched, the front, the choice.
-pub fn summary(design: &Design, outcome: &Outcome) -> String {
-    use std::fmt::Write;
-    let fitted = outcome.candidates.iter().filter(|c| c.score.is_some()).count();
-    let sparse = outcome.candidates.iter().any(|c| c.taps < c.regressor_len);
-    let mut text = format!(
-        "  search: {} candidates (N, n_m, β{}), {fitted} fitted, scored on {} tuning windows in {:.1} s; front (score = mean RMSE / spread on the tuning runs):\n",
-        outcome.candidates.len(),
-        if sparse { ", taps" } else { "" },
-        outcome.windows,
-        outcome.seconds
-    );
-    let unit = &design.time_unit;
-    let front = outcome.front();
-    let at = front
-        .iter()
-        .position(|c| std::ptr::eq(*c, outcome.chosen()))
-        .unwrap_or(0);
-    // A few lines: the cheapest, two either side of the choice, the best score.
-    let best = (0..front.len())
-        .min_by(|&a, &b| {
-            front[a]
-                .score
-                .unwrap_or(f64::INFINITY)
-                .total_cmp(&front[b].score.unwrap_or(f64::INFINITY))
-        })
-        .unwrap_or(0);
-    let mut shown: Vec<usize> = vec![0, best];
-    shown.extend(at.saturating_sub(2)..(at + 3).min(front.len()));
-    shown.sort_unstable();
-    shown.dedup();
-    let mut last = None;
-    for i in shown {
-        if last.is_some_and(|l: usize| i > l + 1) {
-            text.push_str("    …\n");
-        }
-        last = Some(i);
-        let c = front[i];
-        let cost = c.cost.expect("a front candidate has a cost");
-        let mark = match (i == at, c.within_budget) {
-            (true, _) => "  ← chosen",
-            (false, false) => "  (over budget)",
-            _ => "",
-        };
-        let taps = if sparse {
-            format!("  {:>3}/{:<3} taps", c.taps, c.regressor_len)
-        } else {
-            String::new()
-        };
-        let _ = writeln!(
-            text,
-            "    N = {:>3}, n_m = {}, β = {:<4}{taps}  score {:.4}  ~{:.0} instructions  first estimate after {} {unit}  ~{:.0} B flash{mark}",
-            c.horizon,
-            c.nm,
-            c.beta,
-            c.score.expect("a front candidate is scored"),
-            cost.instructions,
-            short(cost.first_estimate),
-            cost.flash,
-        );
-    }
-    let _ = writeln!(
-        text,
-        "    ({} on the front; all of it in report.md, every candidate in report.json)",
-        front.len()
-    );
-    text
-}
-
-/// A delay as tables show it: four decimals at most, trailing zeros dropped (`2.3`, not `2.3000000000000003`).
-pub fn short(value: f64) -> String {
-    let text = format!("{value:.4}");
-    text.trim_end_matches('0').trim_end_matches('.').to_owned()
 }

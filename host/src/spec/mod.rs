@@ -6,8 +6,10 @@
 pub mod ast;
 pub mod expr;
 pub mod limits;
+mod load;
 pub mod model;
 mod raw;
+pub mod search;
 mod validate;
 mod validate_design;
 mod validate_map;
@@ -15,14 +17,15 @@ mod validate_model;
 mod validate_runs;
 mod validate_states;
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use serde::Deserialize;
 
+pub use crate::output::format::readable;
 use crate::spec::expr::Expression;
 use crate::spec::model::{Model, ModelText};
-use raw::RawSpec;
-use validate::Validator;
+pub use load::{load, parse};
+pub use search::{Search, Taps};
 
 /// A problem tied to one field of one spec file (also used for problems found while running it).
 #[derive(Debug, thiserror::Error, PartialEq)]
@@ -168,77 +171,6 @@ pub struct MapSettings {
     pub taps: Option<usize>,
 }
 
-/// The candidates of the design search (`"auto"` or a list in `[map]` `horizon`, `nm` or `beta`):
-/// every combination is fitted and scored on the tuning runs ([`crate::search`]).
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
-pub struct Search {
-    /// Candidates for `N`.
-    pub horizons: Vec<usize>,
-    /// Candidates for `n_m`.
-    pub nms: Vec<usize>,
-    /// Candidates for `β`.
-    pub betas: Vec<f64>,
-    /// Candidates for the taps kept per target.
-    pub taps: Taps,
-}
-
-/// The taps of `L` kept per target, as `[map] taps` asks.
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
-pub enum Taps {
-    /// Every tap (no `taps`).
-    All,
-    /// These counts (sorted, without repeats); a count of at least `n_z` is every tap.
-    Counts(Vec<usize>),
-    /// `"auto"`: [`crate::fit::identify::prune::auto_counts`] of each candidate's regressor.
-    Auto,
-}
-
-impl Taps {
-    /// The counts to fit for a regressor of `regressor_len` entries: distinct, largest first.
-    pub fn for_regressor(&self, regressor_len: usize) -> Vec<usize> {
-        let mut counts = match self {
-            Taps::All => vec![regressor_len],
-            Taps::Counts(counts) => counts.iter().map(|&c| c.min(regressor_len)).collect(),
-            Taps::Auto => crate::fit::identify::prune::auto_counts(regressor_len),
-        };
-        counts.sort_unstable_by(|a, b| b.cmp(a));
-        counts.dedup();
-        counts
-    }
-}
-
-impl Search {
-    /// `N` for `horizon = "auto"`: every horizon from 5 to 40 samples.
-    pub const AUTO_HORIZONS: std::ops::RangeInclusive<usize> = 5..=40;
-    /// `n_m` for `nm = "auto"`.
-    pub const AUTO_NMS: [usize; 3] = [3, 5, 8];
-    /// `β` for `beta = "auto"`.
-    pub const AUTO_BETAS: [f64; 4] = [0.25, 0.5, 1.0, 2.0];
-
-    /// Every field over its `"auto"` candidates.
-    pub fn every_default() -> Self {
-        Search {
-            horizons: Self::AUTO_HORIZONS.collect(),
-            nms: Self::AUTO_NMS.to_vec(),
-            betas: Self::AUTO_BETAS.to_vec(),
-            taps: Taps::All,
-        }
-    }
-
-    /// Every candidate `(N, n_m, β)`, `N` varying slowest.
-    pub fn candidates(&self) -> Vec<(usize, usize, f64)> {
-        let mut all = Vec::new();
-        for &n in &self.horizons {
-            for &nm in &self.nms {
-                for &beta in &self.betas {
-                    all.push((n, nm, beta));
-                }
-            }
-        }
-        all
-    }
-}
-
 /// `[budget]`: what the chosen observer may cost on the chip, as [`crate::search::cost`] predicts it.
 /// The search keeps only candidates within it; `auto` only kinds within it.
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
@@ -380,17 +312,6 @@ impl Design {
     }
 }
 
-/// A number as a message should show it: plain when it reads well, in scientific notation when it
-/// is huge or tiny (`1e308`, not a 309-digit decimal).
-pub fn readable(value: f64) -> String {
-    let size = value.abs();
-    if size != 0.0 && size.is_finite() && !(1e-4..1e9).contains(&size) {
-        format!("{value:e}")
-    } else {
-        format!("{value}")
-    }
-}
-
 /// Module names of `generated/src/` that are not designs: `lib.rs` is the crate root.
 pub const RESERVED_MODULES: &[&str] = &["lib"];
 
@@ -424,52 +345,3 @@ const RUST_KEYWORDS: &[&str] = &[
     "box", "do", "final", "macro", "override", "priv", "try", "typeof", "unsized", "virtual", "yield", "firmware",
     "core", "std",
 ];
-
-// ---------------------------------------------------------------------------------------------------
-// The file as written.
-
-/// Reads, parses and validates a spec file.
-pub fn load(path: &Path) -> Result<Design, SpecError> {
-    let text = std::fs::read_to_string(path).map_err(|e| SpecError {
-        file: path.display().to_string(),
-        field: "(file)".into(),
-        problem: format!("cannot read the file: {e}"),
-        fix: "give the path of an existing, readable design spec (TOML)".into(),
-    })?;
-    parse(path, &text)
-}
-
-/// Parses and validates spec text; `path` is only used in messages and kept in the design.
-pub fn parse(path: &Path, text: &str) -> Result<Design, SpecError> {
-    let file = path.display().to_string();
-    let toml_error = |e: toml::de::Error, path: String| {
-        let line = e
-            .span()
-            .map(|s| format!("(line {})", 1 + text[..s.start].matches('\n').count()))
-            .unwrap_or_else(|| "(document)".into());
-        // A value of the wrong type is named by its field path (serde's path); syntax errors by line.
-        let (field, problem) = if path.is_empty() || path == "." {
-            (line, e.message().trim().to_owned())
-        } else {
-            (path, format!("{} {line}", e.message().trim()))
-        };
-        SpecError {
-            file: file.clone(),
-            field,
-            problem,
-            fix: "correct the TOML there; see host/specs/vanderpol.toml for a complete example".into(),
-        }
-    };
-    let deserializer = toml::Deserializer::parse(text).map_err(|e| toml_error(e, String::new()))?;
-    let raw: RawSpec = serde_path_to_error::deserialize(deserializer).map_err(|e| {
-        let path = e.path().to_string();
-        toml_error(e.into_inner(), path)
-    })?;
-    let mut design = Validator {
-        file,
-        path: path.to_owned(),
-    }
-    .design(raw)?;
-    design.spec_sha256 = crate::output::sha256_hex(text.as_bytes());
-    Ok(design)
-}

@@ -14,6 +14,7 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+pub use crate::generate::NotOurs;
 use crate::output::sha256_hex as sha256;
 
 /// The list's file name in a crate folder.
@@ -21,19 +22,6 @@ pub const LIST: &str = ".gen-files";
 
 /// The report's folder in a crate.
 pub const REPORT: &str = "report";
-
-/// A file the run would replace but did not write (or that changed since).
-#[derive(Debug, thiserror::Error)]
-#[error(
-    "{}: {why}; `gen` would replace it\n  fix: choose another --out folder (an empty or new one), or pass --force to replace it",
-    path.display()
-)]
-pub struct NotOurs {
-    /// The file.
-    pub path: PathBuf,
-    /// Why it is not ours to replace.
-    pub why: &'static str,
-}
 
 /// The files `gen` wrote in a crate folder, by path relative to it, with their content's SHA-256.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]

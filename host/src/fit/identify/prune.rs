@@ -19,27 +19,10 @@
 
 use nalgebra::{DMatrix, DVector};
 
+pub use crate::spec::search::{auto_counts, schedule};
+
 use super::{Fit, FitError, Learning};
 use crate::fit::maps::Tabulation;
-
-/// The supports' sizes at which `μ` is re-fitted: `n_z`, then `⌈¾ c⌉` (at least one fewer) down to 1.
-pub fn schedule(regressor_len: usize) -> Vec<usize> {
-    let mut counts = vec![regressor_len];
-    let mut count = regressor_len;
-    while count > 1 {
-        count = (count - 1).min((3 * count).div_ceil(4));
-        counts.push(count);
-    }
-    counts
-}
-
-/// The counts `taps = "auto"` tries: the schedule's points down to a quarter of the taps.
-pub fn auto_counts(regressor_len: usize) -> Vec<usize> {
-    schedule(regressor_len)
-        .into_iter()
-        .filter(|&c| 4 * c >= regressor_len)
-        .collect()
-}
 
 /// One fit per entry of `counts` (taps kept per target; a count of at least `n_z` is the dense fit),
 /// in the same order, from one elimination path.

@@ -40,6 +40,7 @@
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(x > y)` is deliberate: a NaN must fail the check.
 
+mod error;
 mod proof;
 #[cfg(test)]
 mod tests;
@@ -47,6 +48,7 @@ mod tests;
 use firmware::Gamma;
 use serde::{Deserialize, Serialize};
 
+pub use error::TableError;
 use proof::{node_error, nodes_and_bound, pointwise_curvature, Search};
 
 /// The rows `(a_k, b_k)` of uniform segments through the knots `nodes` (in `η`), for `r ∈ [r_min, r_max]`:
@@ -79,39 +81,6 @@ const MAX_DEPTH: u32 = 40;
 const SEARCHED_BOUND_DEPTH: u32 = 6;
 /// Relative widening of termwise sums for their rounding.
 const ROUNDING_MARGIN: f64 = 1e-13;
-
-/// Why a table could not be certified.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum TableError {
-    /// No positive lower bound of `Γ'` could be proven near `eta`.
-    #[error("Γ' cannot be proven positive near η = {eta} (lower bound {slope_bound:e})")]
-    NotIncreasing {
-        /// Where.
-        eta: f64,
-        /// The best lower bound found there.
-        slope_bound: f64,
-    },
-    /// The proven bound needs more than the allowed segments.
-    #[error("the inverse needs more than {limit} segments for a proven error of {RELATIVE_TOLERANCE:e} of the range")]
-    TooManySegments {
-        /// The limit that was reached.
-        limit: usize,
-    },
-    /// Two knots near `eta` are closer than f64 resolves in `t`: `Γ` is flat there to rounding.
-    #[error("Γ is too flat near η = {eta} for its inverse to be tabulated in double precision")]
-    Unresolvable {
-        /// Where.
-        eta: f64,
-    },
-    /// The dense confirmation found an error above the proven bound: a defect of the proof.
-    #[error("the dense check found an error of {sampled:e} above the proven bound {bound:e}")]
-    BoundViolated {
-        /// The largest error seen.
-        sampled: f64,
-        /// The proven bound.
-        bound: f64,
-    },
-}
 
 /// `Γ⁻¹` as the chip evaluates it (see the module docs), with its certificate.
 #[derive(Clone, Debug, Serialize, Deserialize)]

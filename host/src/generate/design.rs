@@ -1,0 +1,113 @@
+//! One design searched, fitted and emitted in memory: the design's own part of `gen`, before
+//! anything is reported or written.
+
+use std::path::Path;
+
+use indicatif::ProgressBar;
+
+use super::emitted::Emitted;
+use super::error::GenerateError;
+use super::shipped::workspace_root;
+use crate::emit;
+use crate::fit::{self, DesignResult};
+use crate::spec::{Design, SpecError};
+
+/// Searches (when the spec asks), fits and emits `design`, loaded from `spec` (nothing is written):
+/// as a module of the `generated` crate, or with `standalone = Some(crate name)` as the module of a
+/// crate of its own.
+pub fn emit_design(
+    design: Design,
+    spec: &Path,
+    standalone: Option<&str>,
+    progress: &ProgressBar,
+) -> Result<Emitted, GenerateError> {
+    // What the spec's observer kind rules out is refused before the search and the fit.
+    crate::observers::check_before_fit(&design, &model_code(&design)?)?;
+    let (design, search) = crate::search::settle(design, progress)?;
+    if search.is_some() {
+        progress.set_length(fit::steps(&design));
+        progress.set_position(0);
+    }
+    let result = fit::run(&design, progress)?;
+    let taps =
+        crate::search::sparsity::accuracy_vs_taps(&design, &result.learning, &result.validation).map_err(|e| {
+            design.error(
+                "map.taps",
+                format!("a pruned fit failed: {e}"),
+                "offer fewer counts in `map.taps`, or leave it out",
+            )
+        })?;
+    // Relative to the checkout when there is one, so that the text does not depend on where it lives.
+    let spec_path = match workspace_root() {
+        Ok(workspace) => emit::portable_spec_path(spec, &workspace),
+        Err(_) => spec.display().to_string(),
+    };
+    let placement = match standalone {
+        None => emit::Placement::Generated { spec: &spec_path },
+        Some(crate_name) => emit::Placement::Standalone {
+            crate_name,
+            source: &spec_path,
+        },
+    };
+    let (comparison, source) = design_source(&design, &result, &placement, spec, progress)?;
+    Ok(Emitted {
+        design,
+        result,
+        comparison,
+        source,
+        search,
+        taps,
+    })
+}
+
+/// The design's model written as programs, or an error naming the spec field that cannot be.
+pub fn model_code(design: &Design) -> Result<crate::plant::ModelCode, SpecError> {
+    crate::plant::ModelCode::new(design).map_err(|e| {
+        design.error(
+            e.field,
+            format!("the model cannot be written as Rust for the chip: {}", e.construct),
+            "rewrite the expression as the message says",
+        )
+    })
+}
+
+/// The observers of a fitted design compared (the EKF tuned on new runs), and the text of its
+/// `generated/src/<design>.rs`: maps, model and EKF.
+pub fn design_source(
+    design: &Design,
+    result: &DesignResult,
+    placement: &emit::Placement<'_>,
+    spec: &Path,
+    progress: &ProgressBar,
+) -> Result<(crate::observers::Comparison, String), GenerateError> {
+    let code = model_code(design)?;
+    progress.set_message(format!("{}: tuning the EKF", design.name));
+    let comparison = crate::observers::compare(design, result, &code)?;
+    let emit_error = |source| GenerateError::Emit {
+        file: spec.to_owned(),
+        design: design.name.clone(),
+        source,
+    };
+    let state_targets = crate::observers::corrected::state_targets(design).ok();
+    let instructions: Vec<(&'static str, f64)> =
+        comparison.observers.iter().map(|o| (o.kind, o.instructions)).collect();
+    let observers = emit::model::Observers {
+        ekf: comparison.ekf.as_ref().map(|t| &t.constants),
+        started: comparison
+            .started
+            .as_ref()
+            .map(|s| (s.p0.as_slice(), s.state_targets.as_slice())),
+        restart: comparison.restart.as_ref(),
+        corrected: comparison
+            .corrected
+            .as_ref()
+            .ok()
+            .map(|t| &t.constants)
+            .zip(state_targets.as_deref()),
+        kind: comparison.chosen.0,
+        instructions: &instructions,
+        tables_sha256: &crate::tables::Tables::new(design, result, Some(&comparison)).tables_sha256,
+    };
+    let source = emit::design_file(design, result, placement, &code, &observers).map_err(emit_error)?;
+    Ok((comparison, source))
+}

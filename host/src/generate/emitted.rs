@@ -1,0 +1,21 @@
+//! One design fitted and emitted, as a value: what the tables ([`crate::tables`]) are written from, in
+//! a module of its own so that they need not import the `gen` job that makes it.
+
+use crate::fit::DesignResult;
+use crate::spec::Design;
+
+/// One design fitted and emitted, in memory.
+pub struct Emitted {
+    /// The design.
+    pub design: Design,
+    /// Its data, fits and evaluation.
+    pub result: DesignResult,
+    /// Its observers compared (the map and the EKF).
+    pub comparison: crate::observers::Comparison,
+    /// The text of `generated/src/<design>.rs`.
+    pub source: String,
+    /// The design search, when the spec asks for one ([`crate::search`]); `design.map` holds its choice.
+    pub search: Option<crate::search::Outcome>,
+    /// Validation accuracy against the taps kept, when the spec prunes `L` ([`crate::search::sparsity`]).
+    pub taps: Option<Vec<crate::search::sparsity::Row>>,
+}

@@ -1,0 +1,157 @@
+//! Which kind `observer()` is: the spec's, checked before the fit and after it, or for `auto` the
+//! best on the tuning runs within the budget. Kept apart from the comparison that yields the
+//! figures it reads ([`super::compare`]).
+
+use crate::plant::ModelCode;
+use crate::search::cost;
+use crate::spec::{Design, ObserverKind, SpecError};
+
+use super::score::{self, CHEAPER_WITHIN};
+use super::{corrected, ekf, ObserverFigures};
+
+/// A kind's [score](score::score) on the tuning runs.
+fn tuning_score(figures: &ObserverFigures, spreads: &[f64]) -> f64 {
+    let pooled: Vec<f64> = figures.targets.iter().map(|f| f.rmse_tuning).collect();
+    let p95: Vec<f64> = figures.targets.iter().map(|f| f.p95_tuning).collect();
+    score::score(&pooled, &p95, spreads)
+}
+
+/// The kinds `observer()` may be; each names its row in [`Comparison::observers`](super::Comparison::observers)
+/// ([`ObserverKind::name`]).
+pub const KINDS: [ObserverKind; 5] = [
+    ObserverKind::Map,
+    ObserverKind::Corrected,
+    ObserverKind::EkfBox,
+    ObserverKind::EkfMap,
+    ObserverKind::EkfRestart,
+];
+
+/// The name of `kind`'s row in [`Comparison::observers`](super::Comparison::observers) (`Auto` is not a kind a design has: `map`).
+pub fn row_name(kind: ObserverKind) -> &'static str {
+    match kind {
+        ObserverKind::Auto => "map",
+        other => other.name(),
+    }
+}
+
+/// What [`choose`] would refuse of the spec's `observer.kind` that is known before anything is fitted,
+/// refused before the fit rather than minutes after it: a kind the map starts or checks while a state
+/// is not a target, an EKF kind of a model beyond the sizes the host filters, and an EKF kind whose
+/// predicted instructions exceed `budget.instructions`. The EKF's count depends on the model alone:
+/// its tuned constants are all non-zero numbers written into the program, any such ones give it
+/// (the map's and the corrected observer's counts need the fit, and are checked after it).
+pub fn check_before_fit(design: &Design, code: &ModelCode) -> Result<(), SpecError> {
+    let kind = design.observer;
+    let ekf_kind = matches!(
+        kind,
+        ObserverKind::EkfBox | ObserverKind::EkfMap | ObserverKind::EkfRestart
+    );
+    let started = matches!(
+        kind,
+        ObserverKind::Corrected | ObserverKind::EkfMap | ObserverKind::EkfRestart
+    );
+    if (started && corrected::state_targets(design).is_err()) || (ekf_kind && !ekf::supported(code)) {
+        return Err(cannot_have(design));
+    }
+    let Some(budget) = design.budget.instructions.filter(|_| ekf_kind) else {
+        return Ok(());
+    };
+    let states = code.dimensions.states;
+    let theta = vec![0.37f64.log10(); 2 * states];
+    let constants = ekf::constants(design, &ekf::box_centre(design), &vec![1.0; states], &theta);
+    let filter = crate::plant::kalman::filter_code(code, &constants);
+    let instructions = match kind {
+        ObserverKind::EkfBox => cost::of_ekf(&filter),
+        ObserverKind::EkfMap => cost::of_started(&filter),
+        _ => cost::of_restarted(&filter),
+    };
+    if instructions > budget as f64 {
+        return Err(over_budget(design, kind.name(), instructions, budget as f64));
+    }
+    Ok(())
+}
+
+/// `observer.kind` names a kind the design cannot have.
+fn cannot_have(design: &Design) -> SpecError {
+    design.error(
+        "observer.kind",
+        format!(
+            "the design cannot have a `{}` observer: it needs every state as a target and a model the host can filter",
+            design.observer.name()
+        ),
+        "add a target per state (expr = the state's name), or set kind = \"map\" or \"auto\"",
+    )
+}
+
+/// `observer.kind` names a kind over `budget.instructions`.
+fn over_budget(design: &Design, name: &str, instructions: f64, budget: f64) -> SpecError {
+    design.error(
+        "observer.kind",
+        format!(
+            "the `{name}` observer needs ~{instructions:.0} instructions per sample, more than `budget.instructions` = {budget}"
+        ),
+        "raise `budget.instructions`, or set kind = \"auto\" to take the best kind within it",
+    )
+}
+
+/// The kind `observer()` is: the spec's, or for `auto` the lowest [score](score::score) on the
+/// tuning runs among the kinds within `[budget] instructions` (as [`cost`] predicts them), except
+/// that the cheapest kind (fewest predicted instructions) within [`CHEAPER_WITHIN`] of the best is
+/// preferred. Errors when the spec asks for a kind the design cannot have or the budget
+/// does not allow.
+pub fn choose(
+    design: &Design,
+    observers: &[ObserverFigures],
+    spreads: &[f64],
+) -> Result<(ObserverKind, String), SpecError> {
+    let scored: Vec<(ObserverKind, &str, f64, f64)> = KINDS
+        .iter()
+        .map(|&kind| (kind, kind.name()))
+        .filter_map(|(kind, name)| {
+            observers
+                .iter()
+                .find(|o| o.kind == name)
+                .map(|o| (kind, name, tuning_score(o, spreads), o.instructions))
+        })
+        .collect();
+    let budget = design.budget.instructions.map(|b| b as f64);
+    let within = |instructions: f64| budget.is_none_or(|b| instructions <= b);
+    if design.observer != ObserverKind::Auto {
+        return match scored.iter().find(|s| s.0 == design.observer) {
+            Some(&(_, name, _, instructions)) if !within(instructions) => {
+                Err(over_budget(design, name, instructions, budget.unwrap_or_default()))
+            }
+            Some(&(kind, name, score, instructions)) => Ok((
+                kind,
+                format!("`{name}` as the spec asks (tuning score {score:.4}, ~{instructions:.0} instructions)"),
+            )),
+            None => Err(cannot_have(design)),
+        };
+    }
+    let allowed: Vec<&(ObserverKind, &str, f64, f64)> = scored.iter().filter(|s| within(s.3)).collect();
+    let best = allowed.iter().map(|s| s.2).fold(f64::INFINITY, f64::min);
+    let Some(&&(kind, name, _, _)) = allowed
+        .iter()
+        .filter(|s| s.2 <= best * (1.0 + CHEAPER_WITHIN))
+        .min_by(|a, b| a.3.total_cmp(&b.3))
+    else {
+        return Err(design.error(
+            "budget.instructions",
+            format!(
+                "no observer kind fits in {} instructions per sample (the map needs ~{:.0})",
+                budget.unwrap_or_default(),
+                scored.first().map_or(f64::NAN, |s| s.3)
+            ),
+            "raise `budget.instructions`, or shorten the map (`map.horizon`, `map.taps`)",
+        ));
+    };
+    let all: Vec<String> = scored
+        .iter()
+        .map(|&(_, n, s, i)| {
+            let over = if within(i) { "" } else { ", over budget" };
+            format!("{n} {s:.4} at ~{i:.0} instructions{over}")
+        })
+        .collect();
+    let limit = budget.map_or(String::new(), |b| format!(" within `budget.instructions` = {b}"));
+    Ok((kind, format!("`{name}` by `auto`: the lowest tuning score (pooled RMSE + p95 over runs, per target over its spread; {}){limit}, a cheaper kind preferred within {:.0} %", all.join(", "), CHEAPER_WITHIN * 100.0)))
+}

@@ -1,0 +1,135 @@
+//! What the comparison of a design's observers yields: each observer's figures per target, the
+//! plants it is judged on, the tuned constants of every kind. Kept apart from how they are computed
+//! ([`super::compare`]) and how a kind is chosen from them ([`super::choice`]), since the report, the
+//! tables and the emitter read these structs alone.
+
+use crate::data::{DataSet, Rows, Run};
+use crate::spec::ObserverKind;
+
+use super::{corrected, ekf, restart};
+
+/// Errors of one observer on one target.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Figures {
+    /// RMSE over the validation windows.
+    pub rmse_validation: f64,
+    /// Largest |error| over the validation windows.
+    pub max_error_validation: f64,
+    /// The 95th percentile over validation runs of each run's RMSE ([`score::percentile_95`](super::score::percentile_95)).
+    pub p95_validation: f64,
+    /// RMSE over the scenario's windows.
+    pub rmse_scenario: f64,
+    /// RMSE over the scenario's first [`TRANSIENT_TIME`] time units after the map's first estimate.
+    pub rmse_transient: f64,
+    /// RMSE over the windows of the scenario's noise draws (`data::scenario_draws`), and the 95th
+    /// percentile over draws of each draw's RMSE; `None` without a scenario.
+    pub scenario_draws: Option<(f64, f64)>,
+    /// RMSE over the tuning runs' windows.
+    pub rmse_tuning: f64,
+    /// The 95th percentile over tuning runs of each run's RMSE.
+    pub p95_tuning: f64,
+    /// RMSE over the mismatch runs' windows: the validation runs replayed on plants at every corner of
+    /// the box of the uncertain parameters (`data::uncertain::mismatch_set`); `None` when every
+    /// parameter is known.
+    pub rmse_mismatch: Option<f64>,
+    /// The same per corner, in the order of [`Mismatch::corners`].
+    pub rmse_corners: Vec<f64>,
+    /// RMSE over the mismatch runs replayed on the nominal plant (the model's values), when
+    /// parameters are uncertain (`rmse_validation` is then over plants drawn in the box).
+    pub rmse_nominal: Option<f64>,
+    /// Drift over long runs on the nominal plant ([`Drift`]).
+    pub drift: Drift,
+    /// The same on the plant at the last corner ([`Mismatch::scenario`]'s plant).
+    pub drift_mismatch: Option<Drift>,
+}
+
+/// Whether an observer drifts: its RMSE over the first and the last window of
+/// [`Drift::WINDOWS`] after the start-up (`START_UP_HORIZONS · N` estimates after the first, for every
+/// kind), on long runs from their own seed (`data::uncertain::long_set`). A window is as long as a
+/// validation run (`validation.samples`): 10 s and 60 s on Example 1.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Drift {
+    /// RMSE over the first window after the start-up.
+    pub first: f64,
+    /// RMSE over the last window.
+    pub last: f64,
+}
+
+impl Drift {
+    /// Windows after the start-up in a long run.
+    pub const WINDOWS: usize = 6;
+}
+
+/// Length of the transient judged, in the spec's time unit, from the first window.
+pub const TRANSIENT_TIME: f64 = 2.0;
+
+/// One observer's figures, per target in spec order, and its estimates along the scenarios.
+#[derive(Clone, Debug)]
+pub struct ObserverFigures {
+    /// [`ObserverKind::name`]: `"map"`, `"ekf_box"` (from the box centre), `"corrected"`,
+    /// `"ekf_map"` (started by the map) or `"ekf_restart"` (from the box centre, restarted by the map).
+    pub kind: &'static str,
+    /// Predicted instructions per sample on the chip in steady state ([`crate::search::cost`]).
+    pub instructions: f64,
+    /// Per target.
+    pub targets: Vec<Figures>,
+    /// Its estimate of every target at every sample of the scenario (NaN before its first).
+    pub scenario: Rows,
+    /// The same along [`Mismatch::scenario`], when parameters are uncertain.
+    pub mismatch_scenario: Option<Rows>,
+}
+
+/// The plants an observer with uncertain parameters is judged on besides the nominal one.
+#[derive(Clone, Debug)]
+pub struct Mismatch {
+    /// Every corner of the box of the uncertain parameters (`data::uncertain::corners`), the
+    /// parameters in the order of `Model::uncertain`.
+    pub corners: Vec<Vec<f64>>,
+    /// The names of the uncertain parameters, in that order.
+    pub names: Vec<String>,
+    /// Runs per corner (the validation set's count).
+    pub runs_per_corner: usize,
+    /// The nominal values of the uncertain parameters.
+    pub nominal: Vec<f64>,
+    /// The scenario (its initial state, inputs and noise) on the plant at the last corner, every
+    /// uncertain parameter at its `max`.
+    pub scenario: Run,
+}
+
+/// The EKF started by the map at `k = N − 1`, sharing the EKF's `Q` and `R`.
+#[derive(Clone, Debug)]
+pub struct Started {
+    /// `P(N−1)` diagonal: `factor` times the map's mean squared error per state on the tuning runs.
+    pub p0: Vec<f64>,
+    /// The factor, chosen on the tuning runs ([`ekf::tune_started`]).
+    pub factor: f64,
+    /// Each state's target.
+    pub state_targets: Vec<usize>,
+}
+
+/// The comparison of a design's observers.
+#[derive(Clone, Debug)]
+pub struct Comparison {
+    /// The map first, then the EKF when the host could run one.
+    pub observers: Vec<ObserverFigures>,
+    /// The tuned EKF (`None` when the model is beyond the host's sizes, [`ekf::supported`]).
+    pub ekf: Option<ekf::Tuned>,
+    /// The tuned model-corrected map, or why the design cannot have one.
+    pub corrected: Result<corrected::Tuned, String>,
+    /// The EKF started by the map; `None` without an EKF or the full state.
+    pub started: Option<Started>,
+    /// The box-started EKF's check against the map ([`restart`]); `None` without `started`.
+    pub restart: Option<restart::RestartConstants>,
+    /// What `observer()` is, and why.
+    pub chosen: (ObserverKind, String),
+    /// The EKF from the box centre started instead at the scenario's `observer_x0` (the paper's
+    /// `x̂(0)`): that start, and its RMSE per target over the scenario's windows.
+    pub ekf_from_observer_x0: Option<(Vec<f64>, Vec<f64>)>,
+    /// The tuning runs.
+    pub tuning: DataSet,
+    /// The mismatch plants, when parameters are uncertain.
+    pub mismatch: Option<Mismatch>,
+    /// Largest one-sample difference between the chip's model (`chip_substeps`) and the learning
+    /// simulation's (`substeps`) over the validation states, per state, relative to its spread.
+    pub chip_model_error: Vec<f64>,
+}

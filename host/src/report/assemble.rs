@@ -1,0 +1,147 @@
+//! The report assembled from a design's results: the fit, the observers compared on the same data,
+//! and the quality gates, gathered into [`Report`] as `report.json` holds them.
+
+use super::gates;
+use super::schema::{
+    ChipModel, CorrectedTuning, DriftReport, EkfTuning, FiguresReport, LinearReport, MismatchReport, ObserverReport,
+    Report, SetSummary, TargetReport, MISMATCH_PLANTS,
+};
+use crate::fit::evaluate::Evaluation;
+use crate::fit::DesignResult;
+use crate::observers::Comparison;
+use crate::spec::Design;
+
+/// Assembles the report of a run.
+pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a Comparison) -> Report<'a> {
+    let finite = |v: f64| v.is_finite().then_some(v);
+    let drift = |d: crate::observers::Drift| DriftReport {
+        rmse_first: finite(d.first),
+        rmse_last: finite(d.last),
+    };
+    let summary = |set: &crate::data::DataSet, seed| SetSummary {
+        runs: set.runs.len(),
+        windows: set.window_count(),
+        seed,
+    };
+    Report {
+        design: &design.name,
+        description: &design.description,
+        spec: design.file.display().to_string(),
+        tool_version: env!("CARGO_PKG_VERSION"),
+        tau: design.tau,
+        time_unit: &design.time_unit,
+        validation_samples: design.validation.samples,
+        map: &design.map,
+        regressor_len: result.learning.regressor_len(),
+        learning: summary(&result.learning, design.learning.seed),
+        validation: summary(&result.validation, design.validation.seed),
+        targets: result
+            .targets
+            .iter()
+            .map(|t| {
+                let (learning, validation): (&Evaluation, &Evaluation) = (&t.learning, &t.validation);
+                TargetReport {
+                    name: &design.targets[t.index].name,
+                    expr: design.targets[t.index].expr.text(),
+                    rmse_learning: learning.map.rmse,
+                    rmse_validation: validation.map.rmse,
+                    max_error_validation: validation.map.max_error,
+                    saturated_fraction_validation: validation.saturated_fraction,
+                    linear: LinearReport {
+                        rmse_learning: learning.linear.rmse,
+                        rmse_validation: validation.linear.rmse,
+                        max_error_validation: validation.linear.max_error,
+                    },
+                    ratio_to_linear_validation: validation.map.rmse / validation.linear.rmse,
+                    qp: &t.fit.diagnostics,
+                    fitted: &t.fit.map,
+                }
+            })
+            .collect(),
+        tuning: summary(&comparison.tuning, design.tuning.seed),
+        observers: comparison
+            .observers
+            .iter()
+            .map(|o| ObserverReport {
+                kind: o.kind,
+                targets: design
+                    .targets
+                    .iter()
+                    .zip(&o.targets)
+                    .map(|(t, f)| {
+                        (
+                            t.name.clone(),
+                            FiguresReport {
+                                rmse_validation: finite(f.rmse_validation),
+                                max_error_validation: finite(f.max_error_validation),
+                                p95_validation: finite(f.p95_validation),
+                                rmse_scenario: finite(f.rmse_scenario),
+                                rmse_transient: finite(f.rmse_transient),
+                                rmse_scenario_draws: f.scenario_draws.map(|d| finite(d.0)),
+                                p95_scenario_draws: f.scenario_draws.map(|d| finite(d.1)),
+                                rmse_tuning: finite(f.rmse_tuning),
+                                p95_tuning: finite(f.p95_tuning),
+                                rmse_mismatch: f.rmse_mismatch.and_then(finite),
+                                rmse_corners: f.rmse_corners.iter().map(|&v| finite(v)).collect(),
+                                rmse_nominal: f.rmse_nominal.and_then(finite),
+                                drift: drift(f.drift),
+                                drift_mismatch: f.drift_mismatch.map(drift),
+                            },
+                        )
+                    })
+                    .collect(),
+                on_target: None,
+            })
+            .collect(),
+        ekf_tuning: comparison.ekf.as_ref().map(|t| EkfTuning {
+            log_q: t.log_q.clone(),
+            log_p0: t.log_p0.clone(),
+            cost: t.cost,
+            grid_cost: t.grid_cost,
+            evaluations: t.evaluations,
+            runs: t.runs,
+            started_factor: comparison.started.as_ref().map(|s| s.factor),
+            q_diagonal: t.constants.q.clone(),
+            p0_diagonal: t.constants.p0.clone(),
+            x0: t.constants.x0.clone(),
+        }),
+        ekf_from_observer_x0: comparison.ekf_from_observer_x0.clone(),
+        observer: comparison.chosen.clone(),
+        corrected_tuning: match &comparison.corrected {
+            Ok(t) => CorrectedTuning::Tuned {
+                g: t.constants.g.clone(),
+                k: t.constants.k.clone(),
+                k_start: t.constants.k_start.clone(),
+                schedule: t.constants.schedule,
+                start_up: t.constants.start_up,
+                lower: t.constants.lower.clone(),
+                upper: t.constants.upper.clone(),
+                cost: t.cost,
+                start_cost: t.start_cost,
+                evaluations: t.evaluations,
+                cost_with_and_without_map: (t.cost_with_map, t.cost_without_map),
+            },
+            Err(why) => CorrectedTuning::Unavailable {
+                unavailable: why.clone(),
+            },
+        },
+        chip_model: ChipModel {
+            chip_substeps: design.chip_substeps,
+            simulation_substeps: design.substeps,
+            max_step_difference_relative: comparison.chip_model_error.clone(),
+        },
+        quality_gates: gates::check(design, result, comparison)
+            .iter()
+            .map(ToString::to_string)
+            .collect(),
+        mismatch: comparison.mismatch.as_ref().map(|m| MismatchReport {
+            plants: MISMATCH_PLANTS,
+            parameters: m.names.clone(),
+            corners: m.corners.clone(),
+            runs_per_corner: m.runs_per_corner,
+            nominal: m.nominal.clone(),
+        }),
+        search: None,
+        taps: None,
+    }
+}

@@ -1,0 +1,267 @@
+//! The shape of `report.json`: every figure of a design, machine-readable, as serialised (a figure
+//! that is not finite, where a filter diverged, as `null`).
+
+use serde::Serialize;
+
+use super::on_target;
+use crate::fit::identify::Diagnostics;
+use crate::fit::maps::FittedMap;
+use crate::spec::MapSettings;
+
+/// `report.json`.
+#[derive(Serialize)]
+pub struct Report<'a> {
+    /// Design name.
+    pub design: &'a str,
+    /// What it is.
+    pub description: &'a str,
+    /// The spec file.
+    pub spec: String,
+    /// Version of the tool that wrote it.
+    pub tool_version: &'static str,
+    /// Sample period.
+    pub tau: f64,
+    /// Its unit.
+    pub time_unit: &'a str,
+    /// Samples per validation run (a drift window).
+    pub validation_samples: usize,
+    /// Map settings.
+    pub map: &'a MapSettings,
+    /// `n_z`.
+    pub regressor_len: usize,
+    /// Learning set.
+    pub learning: SetSummary,
+    /// Validation set.
+    pub validation: SetSummary,
+    /// One entry per target.
+    pub targets: Vec<TargetReport<'a>>,
+    /// Tuning runs (what the EKF's constants were chosen on; never reported as accuracy).
+    pub tuning: SetSummary,
+    /// Every observer on the same data: the map, then the EKF.
+    pub observers: Vec<ObserverReport>,
+    /// How the EKF was tuned, when the host could run one.
+    pub ekf_tuning: Option<EkfTuning>,
+    /// The EKF from the box centre started instead at the scenario's `observer_x0` (the paper's
+    /// `x̂(0)`): that start, and its scenario RMSE per target in spec order.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ekf_from_observer_x0: Option<(Vec<f64>, Vec<f64>)>,
+    /// How the model-corrected map was tuned, or why the design has none.
+    pub corrected_tuning: CorrectedTuning,
+    /// What the design's `observer()` is (`map`, `corrected` or `ekf`, the map-started EKF), and why.
+    pub observer: (crate::spec::ObserverKind, String),
+    /// The model on the chip against the learning simulation's.
+    pub chip_model: ChipModel,
+    /// The quality gates the design fails ([`gates`](super::gates)), one sentence each; empty when it passes them all.
+    pub quality_gates: Vec<String>,
+    /// The plants of the `rmse_mismatch` figures, when parameters are uncertain.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mismatch: Option<MismatchReport>,
+    /// The design search, when the spec asks for one (every candidate, the front, the choice).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub search: Option<&'a crate::search::Outcome>,
+    /// Validation accuracy against the taps of `L` kept, when the spec prunes it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub taps: Option<&'a [crate::search::sparsity::Row]>,
+}
+
+/// One observer's figures.
+#[derive(Serialize)]
+pub struct ObserverReport {
+    /// [`crate::spec::ObserverKind::name`]: `"map"`, `"corrected"`, `"ekf_box"`, `"ekf_map"`,
+    /// `"ekf_restart"`.
+    pub kind: &'static str,
+    /// Per target name.
+    pub targets: std::collections::BTreeMap<String, FiguresReport>,
+    /// Measured on the emulated Cortex-M4F by `cargo run -p integration-tests --bin on-target-report`
+    /// ([`on_target`]); `null` until the generated source written is measured.
+    pub on_target: Option<on_target::OnTarget>,
+}
+
+/// [`crate::observers::Figures`] as serialised (NaN, where a filter diverged, as `null`).
+#[derive(Serialize)]
+pub struct FiguresReport {
+    /// RMSE over the validation windows.
+    pub rmse_validation: Option<f64>,
+    /// Largest |error| there.
+    pub max_error_validation: Option<f64>,
+    /// The 95th percentile over validation runs of each run's RMSE (the tail the pooled RMSE hides).
+    pub p95_validation: Option<f64>,
+    /// RMSE over the scenario's windows (every observer from where it starts on the chip).
+    pub rmse_scenario: Option<f64>,
+    /// RMSE over the scenario's first 2 time units after the map's first estimate.
+    pub rmse_transient: Option<f64>,
+    /// RMSE over the scenario's noise draws (`data::scenario_draws`), when there is a scenario
+    /// (`null` where a filter diverged).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rmse_scenario_draws: Option<Option<f64>>,
+    /// The 95th percentile over those draws of each draw's RMSE.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub p95_scenario_draws: Option<Option<f64>>,
+    /// RMSE over the tuning runs.
+    pub rmse_tuning: Option<f64>,
+    /// The 95th percentile over tuning runs of each run's RMSE.
+    pub p95_tuning: Option<f64>,
+    /// RMSE over the mismatch runs (every corner of the uncertain parameters' box; [`MismatchReport`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rmse_mismatch: Option<f64>,
+    /// The same per corner, in the order of [`MismatchReport::corners`].
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub rmse_corners: Vec<Option<f64>>,
+    /// RMSE over the mismatch runs replayed on the nominal plant (with uncertain parameters, whose
+    /// `rmse_validation` is over plants drawn in the box).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rmse_nominal: Option<f64>,
+    /// Drift over long runs on the nominal plant ([`crate::observers::Drift`]).
+    pub drift: DriftReport,
+    /// The same on the plant at the last corner of the uncertain parameters' box.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub drift_mismatch: Option<DriftReport>,
+}
+
+/// [`crate::observers::Drift`] as serialised.
+#[derive(Serialize)]
+pub struct DriftReport {
+    /// RMSE over the first window after the start-up.
+    pub rmse_first: Option<f64>,
+    /// RMSE over the last window of the long runs.
+    pub rmse_last: Option<f64>,
+}
+
+/// What the mismatch figures are measured on.
+#[derive(Serialize)]
+pub struct MismatchReport {
+    /// How the plants were chosen.
+    pub plants: &'static str,
+    /// The uncertain parameters.
+    pub parameters: Vec<String>,
+    /// Every corner, the parameters in that order.
+    pub corners: Vec<Vec<f64>>,
+    /// Runs per corner.
+    pub runs_per_corner: usize,
+    /// The nominal values (the model's), in the same order.
+    pub nominal: Vec<f64>,
+}
+
+/// See [`MismatchReport::plants`].
+pub const MISMATCH_PLANTS: &str = "the corners of the box of the uncertain parameters (not drawn): at each, the \
+     validation set's number of runs from its own seed, the same initial states, inputs and noise at every corner";
+
+/// The EKF's tuning ([`crate::observers::ekf`]).
+#[derive(Serialize)]
+pub struct EkfTuning {
+    /// `log10(Q_ii / s_i²)` per state (`s_i`: the state's spread over the learning runs).
+    pub log_q: Vec<f64>,
+    /// `log10(P(0)_ii / s_i²)` per state.
+    pub log_p0: Vec<f64>,
+    /// The score on the tuning runs at the choice ([`crate::observers::score`]).
+    pub cost: f64,
+    /// The score at the best point of the isotropic grid the search started from.
+    pub grid_cost: f64,
+    /// Score evaluations (grid and Nelder–Mead).
+    pub evaluations: u64,
+    /// The tuning runs it was chosen on (those from random starts).
+    pub runs: usize,
+    /// The map-started EKF's start covariance over the map's mean squared error per state.
+    pub started_factor: Option<f64>,
+    /// `diag(Q)`.
+    pub q_diagonal: Vec<f64>,
+    /// `diag(P(0))`.
+    pub p0_diagonal: Vec<f64>,
+    /// `x̂(0)` (centre of the state box).
+    pub x0: Vec<f64>,
+}
+
+/// The model-corrected map's tuning ([`crate::observers::corrected`]).
+#[derive(Serialize)]
+#[serde(untagged)]
+pub enum CorrectedTuning {
+    /// Tuned.
+    Tuned {
+        /// `G` per state, after the start-up.
+        g: Vec<f64>,
+        /// `K`, states × outputs, row by row.
+        k: Vec<f64>,
+        /// `K₀`: the start-up gain, falling to `K` on the blend's schedule.
+        k_start: Vec<f64>,
+        /// `T`: the start-up blend's time constant, in estimates.
+        schedule: f64,
+        /// `J`: estimates that take the start-up blend.
+        start_up: usize,
+        /// Each state's clamp (its map's range), lower ends.
+        lower: Vec<f64>,
+        /// Upper ends.
+        upper: Vec<f64>,
+        /// Mean normalised RMSE on the tuning runs at the choice.
+        cost: f64,
+        /// The same at the best of the search's starts.
+        start_cost: f64,
+        /// Criterion evaluations (Nelder–Mead, every start).
+        evaluations: u64,
+        /// The best criterion with `G` free, and with `G = 0` (no map after the start-up).
+        cost_with_and_without_map: (f64, f64),
+    },
+    /// Not available.
+    Unavailable {
+        /// Why.
+        unavailable: String,
+    },
+}
+
+/// The chip's model against the simulation's.
+#[derive(Serialize)]
+pub struct ChipModel {
+    /// RK4 steps per sample on the chip.
+    pub chip_substeps: usize,
+    /// RK4 steps per sample of the learning simulation.
+    pub simulation_substeps: usize,
+    /// Per state: largest one-sample difference of the two over the validation states, relative to
+    /// the state's spread.
+    pub max_step_difference_relative: Vec<f64>,
+}
+
+/// Size of a data set.
+#[derive(Serialize)]
+pub struct SetSummary {
+    /// Simulated runs.
+    pub runs: usize,
+    /// Windows (`n_E` for the learning set).
+    pub windows: usize,
+    /// Seed.
+    pub seed: u64,
+}
+
+/// One target's figures.
+#[derive(Serialize)]
+pub struct TargetReport<'a> {
+    /// Name.
+    pub name: &'a str,
+    /// `g(x)`.
+    pub expr: &'a str,
+    /// RMSE of the map on the learning windows.
+    pub rmse_learning: f64,
+    /// RMSE of the map on the validation windows.
+    pub rmse_validation: f64,
+    /// Largest error on the validation windows (empirical `ε_x`).
+    pub max_error_validation: f64,
+    /// Fraction of validation windows where `Γ⁻¹` saturated.
+    pub saturated_fraction_validation: f64,
+    /// The linear floor on the same windows.
+    pub linear: LinearReport,
+    /// `rmse_validation / linear.rmse_validation` (below 1: the map beats the floor).
+    pub ratio_to_linear_validation: f64,
+    /// How the QP went.
+    pub qp: &'a Diagnostics,
+    /// The fitted map.
+    pub fitted: &'a FittedMap,
+}
+
+/// The linear floor's figures.
+#[derive(Serialize)]
+pub struct LinearReport {
+    /// RMSE on the learning windows.
+    pub rmse_learning: f64,
+    /// RMSE on the validation windows.
+    pub rmse_validation: f64,
+    /// Largest error on the validation windows.
+    pub max_error_validation: f64,
+}
