@@ -44,11 +44,15 @@ pub fn write_atomically_with<E: From<std::io::Error>>(
         let _ = std::fs::remove_file(&temporary);
     }
     written?;
-    // The rename itself is durable once the folder is synced (best effort: not every platform can).
+    sync_folder(folder);
+    Ok(())
+}
+
+/// Makes the renames in `folder` durable (best effort: not every platform can sync a folder).
+pub fn sync_folder(folder: &Path) {
     if let Ok(dir) = std::fs::File::open(folder) {
         let _ = dir.sync_all();
     }
-    Ok(())
 }
 
 /// Removes the files of `folder` named `<prefix><pid><suffix>`: temporaries this tool names after its

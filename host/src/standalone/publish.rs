@@ -52,7 +52,7 @@ pub fn replace<T>(folder: &Path, build: impl FnOnce(&Path) -> Result<T, Generate
                 let _ = std::fs::set_permissions(&stage, metadata.permissions());
             }
         }
-        sync(&stage);
+        crate::output::sync_folder(&stage);
         Ok(built)
     })();
     let built = match staged {
@@ -72,7 +72,7 @@ pub fn replace<T>(folder: &Path, build: impl FnOnce(&Path) -> Result<T, Generate
         std::fs::rename(&stage, folder).map_err(io(folder))?;
         renames.done();
     }
-    sync(&parent);
+    crate::output::sync_folder(&parent);
     Ok(built)
 }
 
@@ -182,13 +182,6 @@ fn swap(stage: &Path, folder: &Path, renames: &mut Renames) -> std::io::Result<(
     std::fs::rename(stage, folder)?;
     renames.done();
     std::fs::rename(&aside, stage)
-}
-
-/// Makes the renames in `folder` durable (best effort: not every platform can sync a folder).
-fn sync(folder: &Path) {
-    if let Ok(dir) = std::fs::File::open(folder) {
-        let _ = dir.sync_all();
-    }
 }
 
 /// The publication's renames, counted for `GEN_STOP_AFTER_RENAME`.
