@@ -1,0 +1,120 @@
+//! Building the on-target programs (cargo for `thumbv7em-none-eabihf`) and reading their ELFs with
+//! binutils: symbol addresses, sizes, and where the division instructions are.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use super::unavailable::{failed, Unavailable};
+use crate::workspace_root;
+
+/// An on-target program to build: the manifest of its runners and probes (`tests/on-target/`, or
+/// one [`standalone`](super::standalone) writes for a user's crate) and the folder cargo builds into.
+#[derive(Clone, Debug)]
+pub struct Program {
+    /// Its `Cargo.toml`.
+    pub manifest: PathBuf,
+    /// Cargo's `--target-dir`: runners and probes share it, so their dependencies are compiled once.
+    pub target_dir: PathBuf,
+    /// Where the ELFs are kept (`runs/`, `probes/`).
+    pub elves: PathBuf,
+}
+
+impl Program {
+    /// `tests/on-target/`, linking the project's `generated` crate.
+    pub fn project() -> Self {
+        let target_dir = workspace_root().join("target").join("on-target");
+        Program {
+            manifest: workspace_root().join("tests/on-target/Cargo.toml"),
+            elves: target_dir.clone(),
+            target_dir,
+        }
+    }
+
+    /// Builds `bin` in release with `variables` set (the design and kind selections of
+    /// `tests/on-target/build.rs`), and copies the ELF to `copy` (under [`Program::elves`]), so that
+    /// the next build (which writes the same file) leaves it as built.
+    pub(super) fn build(&self, bin: &str, variables: &[(&str, &str)], copy: &str) -> Result<PathBuf, String> {
+        let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+        let mut command = Command::new(cargo);
+        command
+            .current_dir(workspace_root())
+            .args(["build", "--release", "--manifest-path"])
+            .arg(&self.manifest)
+            .args(["--target", "thumbv7em-none-eabihf", "--bin", bin, "--target-dir"])
+            .arg(&self.target_dir);
+        for variable in ["ON_TARGET_DESIGN", "ON_TARGET_KIND", "PROBE_DESIGN", "PROBE_KIND"] {
+            command.env_remove(variable);
+        }
+        command.envs(variables.iter().copied());
+        let output = command.output().map_err(|e| format!("cannot run cargo: {e}"))?;
+        if !output.status.success() {
+            return Err(String::from_utf8_lossy(&output.stderr).into_owned());
+        }
+        let built = self.target_dir.join("thumbv7em-none-eabihf/release").join(bin);
+        let copy = self.elves.join(copy);
+        if let Some(folder) = copy.parent() {
+            std::fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
+        }
+        std::fs::copy(&built, &copy)
+            .map_err(|e| format!("cannot copy {} to {}: {e}", built.display(), copy.display()))?;
+        Ok(copy)
+    }
+}
+
+/// Address of a symbol in an ELF (`arm-none-eabi-nm`).
+pub(super) fn symbol(elf: &Path, name: &str) -> Result<u64, Unavailable> {
+    let output = Command::new("arm-none-eabi-nm")
+        .arg(elf)
+        .output()
+        .map_err(|e| failed(e.to_string()))?;
+    String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .find_map(|l| {
+            let mut parts = l.split_whitespace();
+            let address = parts.next()?;
+            (parts.nth(1)? == name).then(|| u64::from_str_radix(address, 16).ok())?
+        })
+        .ok_or_else(|| failed(format!("no symbol {name} in {}", elf.display())))
+}
+
+/// `(text, data, bss)` of an ELF (`arm-none-eabi-size`, Berkeley format: text includes rodata).
+pub fn sizes(elf: &Path) -> Result<(u64, u64, u64), Unavailable> {
+    let output = Command::new("arm-none-eabi-size")
+        .arg(elf)
+        .output()
+        .map_err(|e| failed(e.to_string()))?;
+    let text = String::from_utf8_lossy(&output.stdout);
+    let numbers: Vec<u64> = text
+        .lines()
+        .nth(1)
+        .unwrap_or("")
+        .split_whitespace()
+        .take(3)
+        .filter_map(|n| n.parse().ok())
+        .collect();
+    match numbers[..] {
+        [text, data, bss] => Ok((text, data, bss)),
+        _ => Err(failed(format!("cannot read the sizes of {}: {text}", elf.display()))),
+    }
+}
+
+/// Addresses of the division and square-root instructions (`VDIV`, `VSQRT`) in an ELF, from
+/// `arm-none-eabi-objdump -d`.
+pub(super) fn division_addresses(elf: &Path) -> Result<std::collections::BTreeSet<u64>, Unavailable> {
+    let output = Command::new("arm-none-eabi-objdump")
+        .arg("-d")
+        .arg(elf)
+        .output()
+        .map_err(|e| failed(format!("arm-none-eabi-objdump: {e}")))?;
+    let text = String::from_utf8_lossy(&output.stdout);
+    Ok(text
+        .lines()
+        .filter_map(|line| {
+            // "     1a4:\teec0 7a80 \tvdiv.f32\ts15, s1, s0"
+            let (address, rest) = line.trim_start().split_once(':')?;
+            let mnemonic = rest.split('\t').nth(2)?.trim();
+            (mnemonic.starts_with("vdiv") || mnemonic.starts_with("vsqrt"))
+                .then(|| u64::from_str_radix(address.trim(), 16).ok())?
+        })
+        .collect())
+}

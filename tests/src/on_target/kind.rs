@@ -1,0 +1,185 @@
+//! The kinds of observer a generated design has, read from the generated code itself (which kinds
+//! its file declares, which one its `observer()` is, how many estimates take the start-up path), so
+//! that the harness measures what the design ships.
+
+use std::any::TypeId;
+
+use firmware::{Follower, Started};
+
+/// A kind of observer a generated design may have.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Kind {
+    /// The paper's map (`map_observer()`, every design).
+    Map,
+    /// The model-corrected map (`CorrectedObserver`).
+    Corrected,
+    /// The EKF started by the map (`StartedEkfObserver`).
+    StartedEkf,
+    /// The EKF from the box centre, restarted by the map (`RestartedEkfObserver`).
+    RestartedEkf,
+    /// The EKF from the centre of the state box (`ekf()`, every design).
+    Ekf,
+}
+
+impl Kind {
+    /// Every kind, in the order the report lists them.
+    pub const ALL: [Kind; 5] = [
+        Kind::Map,
+        Kind::Corrected,
+        Kind::StartedEkf,
+        Kind::RestartedEkf,
+        Kind::Ekf,
+    ];
+
+    /// Its name for the on-target program (`ON_TARGET_KIND`, `PROBE_KIND`).
+    pub fn chip_name(self) -> &'static str {
+        match self {
+            Kind::Map => "map",
+            Kind::Corrected => "corrected",
+            Kind::StartedEkf => "started_ekf",
+            Kind::RestartedEkf => "restarted_ekf",
+            Kind::Ekf => "ekf",
+        }
+    }
+
+    /// Its name in `report.json` (`observers[].kind`) and `on_target.json`.
+    pub fn report_name(self) -> &'static str {
+        match self {
+            Kind::Map => "map",
+            Kind::Corrected => "corrected",
+            Kind::StartedEkf => "ekf_map",
+            Kind::RestartedEkf => "ekf_restart",
+            Kind::Ekf => "ekf_box",
+        }
+    }
+
+    /// How firmware makes one.
+    pub fn api(self) -> &'static str {
+        match self {
+            Kind::Map => "map_observer()",
+            Kind::Corrected => "CorrectedObserver::new()",
+            Kind::StartedEkf => "StartedEkfObserver::new()",
+            Kind::RestartedEkf => "RestartedEkfObserver::new()",
+            Kind::Ekf => "ekf()",
+        }
+    }
+
+    pub(super) fn from_chip_name(name: &str) -> Option<Kind> {
+        Kind::ALL.into_iter().find(|k| k.chip_name() == name)
+    }
+}
+
+/// Every kind design `name` has, in [`Kind::ALL`]'s order: the map, the observers the map starts
+/// that its generated file declares, and the EKF from the centre. Empty for an unknown design.
+pub fn kinds(name: &str) -> Vec<Kind> {
+    let mut kinds = Vec::new();
+    if design_names().contains(&name) {
+        kinds.push(Kind::Map);
+    }
+    macro_rules! started {
+        ($design:ident, $kind:ident, $type:ident) => {
+            if stringify!($design) == name {
+                kinds.push(Kind::$kind);
+            }
+        };
+    }
+    for_each_started_observer!(started);
+    if !kinds.is_empty() {
+        kinds.push(Kind::Ekf);
+    }
+    kinds.sort();
+    kinds
+}
+
+/// The kind of design `name`'s `observer()` (its type compared with each kind's); `None` for an
+/// unknown design, or an `Observer` that is none of the kinds.
+pub fn chosen_kind(name: &str) -> Option<Kind> {
+    let mut chosen = None;
+    macro_rules! map {
+        ($design:ident) => {
+            if stringify!($design) == name
+                && TypeId::of::<generated::$design::Observer>() == TypeId::of::<generated::$design::MapObserver>()
+            {
+                chosen = Some(Kind::Map);
+            }
+        };
+    }
+    generated::for_each_design!(map);
+    macro_rules! started {
+        ($design:ident, $kind:ident, $type:ident) => {
+            if stringify!($design) == name
+                && TypeId::of::<generated::$design::Observer>() == TypeId::of::<generated::$design::$type>()
+            {
+                chosen = Some(Kind::$kind);
+            }
+        };
+    }
+    for_each_started_observer!(started);
+    // The EKF from the box centre, which every design the host can filter has.
+    macro_rules! boxed {
+        ($design:ident) => {
+            if stringify!($design) == name && generated::$design::KIND == "ekf_box" {
+                chosen = Some(Kind::Ekf);
+            }
+        };
+    }
+    generated::for_each_design!(boxed);
+    chosen
+}
+
+/// The generated design modules.
+pub fn design_names() -> Vec<&'static str> {
+    let mut names = Vec::new();
+    macro_rules! push_name {
+        ($name:ident) => {
+            names.push(stringify!($name));
+        };
+    }
+    generated::for_each_design!(push_name);
+    names
+}
+
+/// The estimates after the first that take the start-up path of an observer the map starts or checks.
+trait StartUp {
+    /// `Follower::START_UP` of a started observer's follower; `N − 1` for the restarted EKF, whose
+    /// estimate number `N` checks the map.
+    const START_UP: usize;
+}
+
+impl<D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> StartUp
+    for Started<f32, D, F, N, NY, NU, NT, NX>
+where
+    F: Follower<f32, NX, NY, NU, NT>,
+{
+    const START_UP: usize = F::START_UP;
+}
+
+impl<D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> StartUp
+    for firmware::Restarted<f32, D, F, N, NY, NU, NT, NX>
+where
+    F: firmware::Restart<f32, NX, NY, NU, NT>,
+{
+    const START_UP: usize = N - 1;
+}
+
+fn follower_start_up<O: StartUp>(_: &O) -> usize {
+    O::START_UP
+}
+
+/// The estimates after the first that take the start-up path, for design `name`'s observer of
+/// `kind`, from the generated code (0 for the map and the EKF); `None` for a kind it does not have.
+pub fn start_up(name: &str, kind: Kind) -> Option<usize> {
+    if !kinds(name).contains(&kind) {
+        return None;
+    }
+    let mut start_up = Some(0);
+    macro_rules! started {
+        ($design:ident, $kind:ident, $type:ident) => {
+            if kind == Kind::$kind && stringify!($design) == name {
+                start_up = Some(follower_start_up(&generated::$design::$type::new()));
+            }
+        };
+    }
+    for_each_started_observer!(started);
+    start_up
+}
