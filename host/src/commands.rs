@@ -246,9 +246,8 @@ pub fn estimate(
     }
     let mut rows = recording::RowReader::open(design, input)?;
     // A started observer needs every state as a target: say so before fitting anything.
-    if let (ObserverKind::Corrected | ObserverKind::EkfMap | ObserverKind::EkfRestart, Err(why)) =
-        (kind, crate::observers::corrected::state_targets(design))
-    {
+    let needs_state_targets = kind != ObserverKind::Auto && crate::observers::kind::of(kind).needs.state_targets;
+    if let (true, Err(why)) = (needs_state_targets, crate::observers::corrected::state_targets(design)) {
         return Err(crate::observers::recorded::RecordedError::Unavailable {
             design: design.name.clone(),
             kind: kind.name(),
@@ -259,8 +258,8 @@ pub fn estimate(
     let (mut design, provenance, tables) = match saved_tables(design, tables)? {
         Some((tables, path)) => (design.clone(), Provenance::Saved(path), tables),
         None => {
-            let (design, _) = crate::search::settle(design.clone(), progress)?;
-            let result = fit::run(&design, progress)?;
+            let (design, _, runs) = crate::generate::settle(design.clone(), progress)?;
+            let result = fit::run(&design, runs, progress)?;
             let comparison = if kind == ObserverKind::Map {
                 None
             } else {

@@ -21,7 +21,7 @@ mod emitted;
 mod error;
 mod shipped;
 
-pub use design::{design_source, emit_design, model_code};
+pub use design::{design_source, emit_design, model_code, settle, simulate_and_fit};
 pub use emitted::Emitted;
 pub use error::{GenerateError, NotOurs};
 pub use shipped::{shipped_design, shipped_specs, workspace_root};
@@ -94,7 +94,7 @@ pub fn run(
     specs: &[PathBuf],
     to: &Destinations,
     strict: bool,
-    progress: impl Fn(&Design) -> ProgressBar,
+    progress: impl Fn(&Design) -> ProgressBar + Sync,
     done: impl FnMut(&Path, Result<&Prepared, &GenerateError>),
 ) -> Result<Vec<Outcome>, GenerateError> {
     // 1. Every spec, the names and the families of the generated set afterwards: before any fit.
@@ -145,24 +145,32 @@ pub(crate) fn load_specs(specs: &[PathBuf]) -> Result<Vec<(PathBuf, Design)>, Ge
 }
 
 /// Fits, emits and reports every design in memory ([`prepare`], the crate name from `standalone`,
-/// the report folder from `folder`); `done` hears of each as it ends. Fails, before anything is
-/// written, when one failed or, with `strict`, when one fails a quality gate.
+/// the report folder from `folder`), designs in parallel on the machine's cores; `done` then hears of
+/// each in the order given. Fails, before anything is written, when one failed or, with `strict`,
+/// when one fails a quality gate.
 pub(crate) fn prepare_all(
     designs: Vec<(PathBuf, Design)>,
-    standalone: impl Fn(&Design) -> Option<String>,
-    folder: impl Fn(&str) -> PathBuf,
+    standalone: impl Fn(&Design) -> Option<String> + Sync,
+    folder: impl Fn(&str) -> PathBuf + Sync,
     strict: bool,
-    progress: impl Fn(&Design) -> ProgressBar,
+    progress: impl Fn(&Design) -> ProgressBar + Sync,
     mut done: impl FnMut(&Path, Result<&Prepared, &GenerateError>),
 ) -> Result<Vec<(PathBuf, Prepared)>, GenerateError> {
+    use rayon::prelude::*;
     let total = designs.len();
+    let results: Vec<(PathBuf, Result<Prepared, GenerateError>)> = designs
+        .into_par_iter()
+        .map(|(spec, design)| {
+            let bar = progress(&design);
+            let crate_name = standalone(&design);
+            let one = prepare(design, &spec, crate_name.as_deref(), &folder, &bar);
+            bar.finish_and_clear();
+            (spec, one)
+        })
+        .collect();
     let mut prepared = Vec::new();
     let mut failed = 0;
-    for (spec, design) in designs {
-        let bar = progress(&design);
-        let crate_name = standalone(&design);
-        let one = prepare(design, &spec, crate_name.as_deref(), &folder, &bar);
-        bar.finish_and_clear();
+    for (spec, one) in results {
         match one {
             Ok(one) => {
                 done(&spec, Ok(&one));

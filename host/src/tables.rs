@@ -13,6 +13,7 @@ use serde::{Deserialize, Serialize};
 use crate::fit::maps::FittedMap;
 use crate::fit::DesignResult;
 use crate::generate::Emitted;
+use crate::observers::kind::Constants;
 use crate::observers::restart::RestartConstants;
 use crate::observers::Comparison;
 use crate::plant::correction::CorrectionConstants;
@@ -105,6 +106,18 @@ pub enum TablesError {
 }
 
 impl Tables {
+    /// The first group of constants `kind` runs on that these tables lack (its registry entry's
+    /// [`Needs::constants`](crate::observers::kind::Needs::constants)), if any.
+    pub fn missing(&self, kind: ObserverKind) -> Option<Constants> {
+        let entry = crate::observers::kind::of(kind);
+        entry.needs.constants.iter().copied().find(|c| match c {
+            Constants::Ekf => self.ekf.is_none(),
+            Constants::Started => self.started.is_none(),
+            Constants::Restart => self.restart.is_none(),
+            Constants::Corrected => self.corrected.is_none(),
+        })
+    }
+
     /// What `emitted` is, as data.
     pub fn of(emitted: &Emitted) -> Self {
         let mut tables = Self::new(&emitted.design, &emitted.result, Some(&emitted.comparison));
@@ -253,14 +266,7 @@ impl Tables {
         if let Some(r) = &self.restart {
             length("restart.variances", r.variances.len(), nx)?;
         }
-        let held = match self.chosen {
-            ObserverKind::Auto | ObserverKind::Map => true,
-            ObserverKind::Corrected => self.corrected.is_some(),
-            ObserverKind::EkfBox => self.ekf.is_some(),
-            ObserverKind::EkfMap => self.ekf.is_some() && self.started.is_some(),
-            ObserverKind::EkfRestart => self.ekf.is_some() && self.started.is_some() && self.restart.is_some(),
-        };
-        if !held {
+        if self.missing(self.chosen).is_some() {
             return bad(
                 "chosen".to_owned(),
                 format!("is `{}`, whose constants are missing", self.chosen.name()),

@@ -125,7 +125,7 @@ fn trajectory_that_blows_up() {
 /// The fit's message for a dependent regressor column `fit::run` gives on `text`.
 fn dependent_column_error(text: &str) -> SpecError {
     let design = spec::parse(Path::new("bad.toml"), text).unwrap();
-    match host::fit::run(&design, &indicatif::ProgressBar::hidden()) {
+    match host::generate::simulate_and_fit(&design, &indicatif::ProgressBar::hidden()) {
         Err(e) => e,
         Ok(_) => panic!("the fit should fail"),
     }
@@ -372,6 +372,6 @@ fn constant_input_is_blamed_on_its_profile() {
         1,
     );
     let design = spec::parse(Path::new("bad.toml"), &text).unwrap();
-    let e = host::fit::run(&design, &indicatif::ProgressBar::hidden()).expect_err("must be refused");
+    let e = host::generate::simulate_and_fit(&design, &indicatif::ProgressBar::hidden()).expect_err("must be refused");
     assert_names(&e, "learning.inputs.u", "min < max");
 }

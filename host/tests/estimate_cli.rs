@@ -82,7 +82,7 @@ fn paper_scenario_round_trip_matches_the_library() {
     }
     // From then on, the library estimate on the same window, to the last bit.
     let design = host::spec::load(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/vanderpol.toml"))).unwrap();
-    let result = host::fit::run(&design, &indicatif::ProgressBar::hidden()).unwrap();
+    let result = host::generate::simulate_and_fit(&design, &indicatif::ProgressBar::hidden()).unwrap();
     let y: Vec<f64> = recorded[1..].iter().map(|r| r[3].parse().unwrap()).collect();
     let mut errors = [0.0f64; 2];
     for k in 9..y.len() {
@@ -393,7 +393,7 @@ fn streaming_estimates_equal_the_in_memory_ones() {
     // Two runs, a refused NaN sample and enough rows for windows: `estimate` now streams the file
     // row by row; its text must be what the in-memory path (used by the figures) gives.
     let design = host::spec::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml")).unwrap();
-    let result = host::fit::run(&design, &indicatif::ProgressBar::hidden()).unwrap();
+    let result = host::generate::simulate_and_fit(&design, &indicatif::ProgressBar::hidden()).unwrap();
     let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
     let mut text = String::from("run,y\n");
     for k in 0..40 {
@@ -449,7 +449,7 @@ fn the_chosen_observer_on_the_recorded_scenario_is_the_reports() {
     let table = rows(&std::fs::read_to_string(&estimates).unwrap());
 
     let design = host::spec::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml")).unwrap();
-    let result = host::fit::run(&design, &indicatif::ProgressBar::hidden()).unwrap();
+    let result = host::generate::simulate_and_fit(&design, &indicatif::ProgressBar::hidden()).unwrap();
     let code = host::plant::ModelCode::new(&design).unwrap();
     let comparison = host::observers::compare(&design, &result, &code).unwrap();
     assert_ne!(
@@ -457,7 +457,7 @@ fn the_chosen_observer_on_the_recorded_scenario_is_the_reports() {
         host::spec::ObserverKind::Map,
         "the case checks a started observer"
     );
-    let chosen = host::observers::row_name(comparison.chosen.0);
+    let chosen = host::observers::kind::of(comparison.chosen.0).kind.name();
     let report = comparison.observers.iter().find(|o| o.kind == chosen).unwrap();
     let map = &comparison.observers[0].scenario;
     assert_eq!(table.len(), 1 + report.scenario.len());

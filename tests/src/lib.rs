@@ -9,7 +9,7 @@ use std::sync::{Arc, Mutex, OnceLock};
 
 use host::fit::inverse_table::InverseTable;
 use host::fit::maps::FittedMap;
-use host::fit::{self, DesignResult};
+use host::fit::DesignResult;
 use host::spec::{self, Design};
 
 /// The spec of the test fixture whose tables have searched knots, relative to the workspace; its
@@ -72,7 +72,10 @@ pub fn settled(design: Design) -> Design {
     match known {
         Some(map) => Design { map, ..design },
         None => {
-            let (design, _) = host::search::settle(design, &indicatif::ProgressBar::hidden()).expect("the search runs");
+            let learning = host::data::learning_set(&design).expect("the learning runs simulate");
+            let tuning = host::data::tuning_set(&design).expect("the tuning runs simulate");
+            let bar = indicatif::ProgressBar::hidden();
+            let (design, _) = host::search::settle(design, &learning, &tuning, &bar).expect("the search runs");
             SETTLED
                 .get_or_init(Default::default)
                 .lock()
@@ -119,7 +122,7 @@ pub fn build(design: &Design) -> Arc<DesignResult> {
 
 /// Builds a design without the cache (to show that a build is deterministic).
 pub fn build_fresh(design: &Design) -> DesignResult {
-    fit::run(design, &indicatif::ProgressBar::hidden()).expect("the design builds")
+    host::generate::simulate_and_fit(design, &indicatif::ProgressBar::hidden()).expect("the design builds")
 }
 
 /// The host's constants of a generated design module `$d`'s map-started observers, read back from

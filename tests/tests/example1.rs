@@ -9,9 +9,9 @@ use nalgebra::{DMatrix, DVector};
 fn learning_set_is_the_papers() {
     let d = design("vanderpol", &spec_text("vanderpol"));
     let result = build(&d);
-    assert_eq!(result.learning.runs.len(), 16);
-    assert_eq!(result.learning.window_count(), 16 * (100 - 10 + 1)); // n_E = 1456
-    assert_eq!(result.learning.regressor_len(), 10);
+    assert_eq!(result.runs.learning.runs.len(), 16);
+    assert_eq!(result.runs.learning.window_count(), 16 * (100 - 10 + 1)); // n_E = 1456
+    assert_eq!(result.runs.learning.regressor_len(), 10);
 }
 
 #[test]
@@ -38,8 +38,8 @@ fn shifting_the_target_by_ten_leaves_intercept_estimates_unchanged() {
     let result = build(&d);
     let (plain, shifted) = (&result.targets[0].fit.map, &result.targets[2].fit.map);
     let mut z = Vec::new();
-    for w in result.validation.windows() {
-        result.validation.regressor(w, &mut z);
+    for w in result.runs.validation.windows() {
+        result.runs.validation.regressor(w, &mut z);
         let (a, b) = (plain.estimate(&z), shifted.estimate(&z));
         assert!(
             (b.value - 10.0 - a.value).abs() < 1e-9,
@@ -65,7 +65,7 @@ fn paper_normalisation_makes_x2_linear_least_squares_without_intercept() {
         !result.targets[0].fit.diagnostics.collapsed,
         "x1 is genuinely nonlinear"
     );
-    let learning = &result.learning;
+    let learning = &result.runs.learning;
     let windows: Vec<_> = learning.windows().collect();
     let mut z = Vec::new();
     let mut a = DMatrix::zeros(windows.len(), learning.regressor_len());
@@ -76,8 +76,8 @@ fn paper_normalisation_makes_x2_linear_least_squares_without_intercept() {
     }
     let gains = a.svd(true, true).solve(&b, 1e-14).unwrap();
     let mut compared = 0;
-    for w in result.validation.windows() {
-        result.validation.regressor(w, &mut z);
+    for w in result.runs.validation.windows() {
+        result.runs.validation.regressor(w, &mut z);
         let estimate = x2.fit.map.estimate(&z);
         if !estimate.saturation.is_saturated() {
             let least_squares: f64 = gains.iter().zip(&z).map(|(g, z)| g * z).sum();
@@ -125,9 +125,12 @@ fn steep_bases_keep_gamma_exact_and_get_a_certified_searched_table() {
             map.target,
             table.proven_bound
         );
-        let worst =
-            host::emit::precision::check_f32(table, &host::emit::precision::F32Tables::new(table), &result.validation)
-                .unwrap();
+        let worst = host::emit::precision::check_f32(
+            table,
+            &host::emit::precision::F32Tables::new(table),
+            &result.runs.validation,
+        )
+        .unwrap();
         assert!(worst <= 1.0, "{worst}");
         // A table placed for a 30× looser tolerance keeps its own bound but fails ours: the check bites
         // (on a target whose error is near the tolerance; x2's Γ is almost straight, its bound loose).

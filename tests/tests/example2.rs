@@ -74,7 +74,7 @@ fn family_observer_uses_the_member_of_the_initial_biomass() {
         let design = load_relative(spec);
         let result = build(&design);
         let (mut right, mut runs) = (0, 0);
-        for run in &result.validation.runs {
+        for run in &result.runs.validation.runs {
             let mut family = generated::ecoli::observer();
             let mut own = match expected {
                 0 => FamilyMember::Low(generated::ecoli_x0_0p5::map_observer()),

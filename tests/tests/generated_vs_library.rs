@@ -25,11 +25,11 @@ macro_rules! compare_design {
         assert_eq!(design.name, tables::NAME);
         let result = build(&design);
         let maps: Vec<&FittedMap> = result.targets.iter().map(|t| &t.fit.map).collect();
-        let mut sets = vec![("validation", result.validation.clone())];
+        let mut sets = vec![("validation", result.runs.validation.clone())];
         sets.push((
             "scenario",
             DataSet {
-                runs: vec![result.scenario.clone()],
+                runs: vec![result.runs.scenario.clone()],
                 horizon: design.map.horizon,
             },
         ));
@@ -100,8 +100,8 @@ fn the_tolerance_is_tight_and_a_value_just_beyond_it_is_refused() {
     let result = build(&design);
     let mut z = Vec::new();
     let (mut windows, mut worst_ratio) = (0, 0.0f64);
-    for window in result.validation.windows() {
-        result.validation.regressor(window, &mut z);
+    for window in result.runs.validation.windows() {
+        result.runs.validation.regressor(window, &mut z);
         let z32: Vec<f32> = z.iter().map(|&v| v as f32).collect();
         for (t, map) in result.targets.iter().map(|t| &t.fit.map).enumerate() {
             let table = map.table.as_ref().unwrap();

@@ -45,8 +45,13 @@ fn tuning_never_reads_the_validation_runs_or_the_scenario() {
     let clean = compare(&design, &result, &code).expect("Example 1 compares");
 
     let mut poisoned = (*result).clone();
-    poison(&mut poisoned.validation.runs);
-    poison(std::slice::from_mut(&mut poisoned.scenario));
+    // Every set but the learning and tuning runs (Example 1 has scenario draws; its parameters are
+    // known, so it has no mismatch runs).
+    let runs = &mut poisoned.runs;
+    poison(&mut runs.validation.runs);
+    poison(std::slice::from_mut(&mut runs.scenario));
+    poison(&mut runs.scenario_draws.as_mut().expect("Example 1 has a scenario").runs);
+    poison(&mut runs.long.runs);
     for target in &mut poisoned.targets {
         target.validation.target_spread = f64::NAN;
         target.validation.map.rmse = f64::NAN;
@@ -64,6 +69,8 @@ fn tuning_never_reads_the_validation_runs_or_the_scenario() {
                 c.kind
             );
             assert!(fd.rmse_scenario.is_nan(), "{}", c.kind);
+            assert!(fd.scenario_draws.is_some_and(|(rmse, _)| rmse.is_nan()), "{}", c.kind);
+            assert!(fd.drift.first.is_nan() && fd.drift.last.is_nan(), "{}", c.kind);
             assert_eq!(fc.rmse_tuning.to_bits(), fd.rmse_tuning.to_bits(), "{}", c.kind);
         }
     }
@@ -106,8 +113,8 @@ fn ekf_matches_a_grid_tuned_expert(
     // Uniform over [-2, 2] × [-5, 5]: variances 16/12 and 100/12.
     grid.p0 = vec![16.0 / 12.0 / 4.0, 100.0 / 12.0 / 4.0];
     let centre = host::observers::ekf::box_centre(design);
-    let reference = host::observers::ekf::rmse(code, &grid, &centre, &result.validation).unwrap();
-    let ours = host::observers::ekf::rmse(code, &tuned.constants, &centre, &result.validation).unwrap();
+    let reference = host::observers::ekf::rmse(code, &grid, &centre, &result.runs.validation).unwrap();
+    let ours = host::observers::ekf::rmse(code, &tuned.constants, &centre, &result.runs.validation).unwrap();
     let row = comparison.observers.iter().find(|o| o.kind == "ekf_box").unwrap();
     for t in 0..2 {
         assert_eq!(
@@ -147,7 +154,7 @@ fn the_restarted_ekf_is_its_two_parents_and_wins_both_regimes(
     let bits =
         |rows: &[Vec<f64>]| -> Vec<Vec<u64>> { rows.iter().map(|r| r.iter().map(|v| v.to_bits()).collect()).collect() };
     let mut restarted_somewhere = false;
-    for run in result.validation.runs.iter().take(8) {
+    for run in result.runs.validation.runs.iter().take(8) {
         let map: Vec<Vec<f64>> = map_estimates(result, horizon, run)
             .iter()
             .map(<[f64]>::to_vec)

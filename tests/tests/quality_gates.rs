@@ -75,7 +75,7 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
     let spreads: Vec<f64> = result
         .targets
         .iter()
-        .map(|t| host::fit::evaluate::evaluate(&comparison.tuning, t.index, &t.fit).target_spread)
+        .map(|t| host::fit::evaluate::evaluate(&result.runs.tuning, t.index, &t.fit).target_spread)
         .collect();
     let predicted = |kind: &str| {
         comparison

@@ -4,6 +4,8 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 
+use crate::spec::ObserverKind;
+
 /// Off-line moving-horizon observers for microcontrollers: from a TOML spec of a plant, fits the
 /// map r = Γ⁻¹(Lᵀ Z) of the last N samples, compares it with model-based observers, and writes a
 /// no_std Rust crate (and a C library) for the chip.
@@ -156,8 +158,8 @@ pub struct EstimateArgs {
     /// The observer: `auto` (default) is the design's `observer()`, the kind `gen` chose; `map`,
     /// `corrected`, `ekf_map` (the EKF started by the map), `ekf_box` (from the box centre) or
     /// `ekf_restart` (from the box centre, restarted by the map) ask for one.
-    #[arg(long, value_enum, default_value = "auto")]
-    pub kind: KindArg,
+    #[arg(long, default_value = "auto", value_parser = kind_parser())]
+    pub kind: ObserverKind,
     /// The fitted design `gen` saved (design.json in its report folder). Default: the checkout's
     /// `target/designs/<name>/` or `target/observers/<name>/report/` when they hold this spec's; else
     /// the design is fitted for this call.
@@ -178,24 +180,15 @@ pub enum PrecisionArg {
     F32,
 }
 
-/// `--kind`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum KindArg {
-    /// The kind `gen` chose.
-    Auto,
-    /// The map alone.
-    Map,
-    /// The model-corrected map.
-    Corrected,
-    /// The EKF started by the map.
-    #[value(name = "ekf_map")]
-    EkfMap,
-    /// The EKF from the centre of the state box.
-    #[value(name = "ekf_box")]
-    EkfBox,
-    /// The EKF from the centre of the state box, restarted from the map when they disagree.
-    #[value(name = "ekf_restart")]
-    EkfRestart,
+/// `--kind`: `auto` or a kind of the registry ([`crate::observers::kind::REGISTRY`]).
+fn kind_parser() -> impl clap::builder::TypedValueParser<Value = ObserverKind> {
+    use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+    let kinds = crate::observers::kind::REGISTRY
+        .iter()
+        .map(|k| PossibleValue::new(k.kind.name()).help(k.what));
+    let values = std::iter::once(PossibleValue::new("auto").help("the kind `gen` chose")).chain(kinds);
+    PossibleValuesParser::new(values)
+        .map(|name| crate::observers::kind::named(&name).map_or(ObserverKind::Auto, |k| k.kind))
 }
 
 /// Which design: a shipped one by name, or any spec file.

@@ -26,6 +26,22 @@ pub fn run(args: GenArgs) -> anyhow::Result<()> {
     }
 }
 
+/// One progress bar per design on a terminal, drawn together: designs are prepared in parallel.
+#[derive(Default)]
+struct Bars(indicatif::MultiProgress);
+
+impl Bars {
+    /// A bar for `design` (hidden without a terminal).
+    fn add(&self, design: &crate::spec::Design) -> indicatif::ProgressBar {
+        let bar = super::progress_bar(design);
+        if bar.is_hidden() {
+            bar
+        } else {
+            self.0.add(bar)
+        }
+    }
+}
+
 /// Every spec through the library's job, a summary per design as it ends, then what was written
 /// (nothing, if any design failed).
 fn into_generated(
@@ -58,11 +74,12 @@ fn into_generated(
         to.generated.display(),
         to.reports.display()
     );
+    let bars = Bars::default();
     let outcomes = generate::run(
         &specs,
         &to,
         strict,
-        super::progress_bar,
+        |design| bars.add(design),
         |spec, prepared| match prepared {
             Ok(prepared) => print_summary(prepared, verbose),
             Err(error) => eprintln!("error: {}", super::of_spec(spec, error)),
@@ -121,11 +138,12 @@ fn standalone(
     );
     // A crate is replaced by a new folder (standalone::publish): a shell inside the old one would not see it.
     let inside = crate::standalone::publish::holds_current_directory(&to.out);
+    let bars = Bars::default();
     let outcomes = crate::standalone::run(
         specs,
         &to,
         strict,
-        super::progress_bar,
+        |design| bars.add(design),
         |spec, prepared| match prepared {
             Ok(prepared) => print_summary(prepared, verbose),
             Err(error) => eprintln!("error: {}", super::of_spec(spec, error)),

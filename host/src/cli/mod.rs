@@ -9,7 +9,7 @@ use std::io::IsTerminal;
 use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::{commands, fit, generate, spec};
-use args::{Command, DesignChoice, EstimateArgs, KindArg, PlotArgs, PrecisionArg, SearchArgs, SimulateArgs};
+use args::{Command, DesignChoice, EstimateArgs, PlotArgs, PrecisionArg, SearchArgs, SimulateArgs};
 
 /// Runs a parsed command line.
 pub fn run(command: Command) -> anyhow::Result<()> {
@@ -115,14 +115,7 @@ fn simulate(args: SimulateArgs) -> anyhow::Result<()> {
 /// `estimate`: by the saved design when there is one, else fitted for this call (it says which).
 fn estimate(args: EstimateArgs) -> anyhow::Result<()> {
     let design = args.design.load()?;
-    let kind = match args.kind {
-        KindArg::Auto => spec::ObserverKind::Auto,
-        KindArg::Map => spec::ObserverKind::Map,
-        KindArg::Corrected => spec::ObserverKind::Corrected,
-        KindArg::EkfMap => spec::ObserverKind::EkfMap,
-        KindArg::EkfBox => spec::ObserverKind::EkfBox,
-        KindArg::EkfRestart => spec::ObserverKind::EkfRestart,
-    };
+    let kind = args.kind;
     let bar = progress_bar(&design);
     let how = commands::Estimation {
         kind,

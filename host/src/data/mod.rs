@@ -7,19 +7,21 @@
 //! Noise is added to the outputs only; targets are noise-free functions of the current state.
 
 pub mod rows;
+pub mod runs;
 pub mod simulate;
 pub mod uncertain;
 
 pub use rows::Rows;
+pub use runs::{MismatchRuns, Runs};
 pub use uncertain::{corner_set, corners, mismatch_seed, mismatch_set};
 
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, Normal};
 
-use crate::data::simulate::{BlowUp, Integrator};
+use crate::data::simulate::{input_sequence, BlowUp, Integrator};
 use crate::spec::model::Model;
-use crate::spec::{Axis, Design, InputProfile, SpecError};
+use crate::spec::{Axis, Design, SpecError};
 
 /// One simulated run, one row per sample.
 #[derive(Clone, Debug)]
@@ -367,25 +369,6 @@ fn blow_up_error(at: &RunContext<'_>, e: BlowUp) -> SpecError {
     };
     at.design
         .error("model.derivatives", format!("{} blew up: {e}", at.run()), fix)
-}
-
-/// Piecewise-constant inputs, one vector per sample.
-fn input_sequence(profiles: &[InputProfile], samples: usize, rng: &mut ChaCha8Rng) -> Rows {
-    let mut current = vec![0.0; profiles.len()];
-    let mut inputs = Rows::new(profiles.len());
-    for k in 0..samples {
-        for (value, p) in current.iter_mut().zip(profiles) {
-            if k % p.hold == 0 {
-                *value = if p.min < p.max {
-                    rng.random_range(p.min..=p.max)
-                } else {
-                    p.min
-                };
-            }
-        }
-        inputs.push(&current);
-    }
-    inputs
 }
 
 /// The Cartesian product of the grids, the first varying slowest.

@@ -85,6 +85,29 @@ impl<'a> Integrator<'a> {
     }
 }
 
+/// Piecewise-constant inputs, one vector per sample.
+pub(super) fn input_sequence(
+    profiles: &[crate::spec::InputProfile],
+    samples: usize,
+    rng: &mut rand_chacha::ChaCha8Rng,
+) -> super::Rows {
+    let mut current = vec![0.0; profiles.len()];
+    let mut inputs = super::Rows::new(profiles.len());
+    for k in 0..samples {
+        for (value, p) in current.iter_mut().zip(profiles) {
+            if k % p.hold == 0 {
+                *value = if p.min < p.max {
+                    rand::RngExt::random_range(rng, p.min..=p.max)
+                } else {
+                    p.min
+                };
+            }
+        }
+        inputs.push(&current);
+    }
+    inputs
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

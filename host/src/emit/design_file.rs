@@ -179,10 +179,11 @@ pub fn design_file(
     let outputs: Vec<String> = design.model.outputs.iter().map(|o| o.name.clone()).collect();
     // The chip holds every sample in f32: data beyond its range cannot be what the map is checked on.
     let largest = result
+        .runs
         .validation
         .runs
         .iter()
-        .chain(std::iter::once(&result.scenario))
+        .chain(std::iter::once(&result.runs.scenario))
         .flat_map(|run| run.measurements.iter().chain(&run.inputs).flatten())
         .map(|v| v.abs())
         .filter(|v| v.is_finite())
@@ -210,9 +211,9 @@ pub fn design_file(
         // Rounded once: these f32 values are checked against the f64 map, then printed.
         let rounded = F32Tables::new(table);
         for data in [
-            &result.validation,
+            &result.runs.validation,
             &DataSet {
-                runs: vec![result.scenario.clone()],
+                runs: vec![result.runs.scenario.clone()],
                 horizon: design.map.horizon,
             },
         ] {
@@ -301,14 +302,14 @@ pub fn design_file(
         regressor_len: design.map.horizon * (design.model.outputs.len() + design.model.inputs.len()),
         finite_check: finite_check(design.model.outputs.len(), design.model.inputs.len()),
         targets,
-        recorded_len: result.scenario.measurements.len(),
+        recorded_len: result.runs.scenario.measurements.len(),
         recorded_y: recorded_rows(
             "recorded y",
-            &result.scenario.measurements,
+            &result.runs.scenario.measurements,
             !design.model.outputs.is_empty(),
         )?,
-        recorded_u: recorded_rows("recorded u", &result.scenario.inputs, false)?,
-        refused: refused_samples(result.scenario.measurements.len()),
+        recorded_u: recorded_rows("recorded u", &result.runs.scenario.inputs, false)?,
+        refused: refused_samples(result.runs.scenario.measurements.len()),
         states: design.model.states.len(),
         state_list: format!("{:?}", design.model.states),
         family: match Member::of(design)? {

@@ -10,7 +10,7 @@ pub mod streaming_qr;
 
 use indicatif::ProgressBar;
 
-use crate::data::{self, DataSet, Run};
+use crate::data::{DataSet, Runs};
 use crate::spec::{Design, SpecError};
 use evaluate::{evaluate, Evaluation};
 use identify::{Fit, FitError};
@@ -29,63 +29,39 @@ pub struct TargetResult {
     pub validation: Evaluation,
 }
 
-/// Everything a design produced.
+/// Everything a design produced: its runs and a fit per target.
 #[derive(Clone, Debug)]
 pub struct DesignResult {
-    /// The learning set.
-    pub learning: DataSet,
-    /// The validation set.
-    pub validation: DataSet,
+    /// Every run the design is fitted, tuned and judged on ([`Runs`]).
+    pub runs: Runs,
     /// One result per target, in spec order.
     pub targets: Vec<TargetResult>,
-    /// The estimation run: the spec's `[scenario]`, else the first validation run.
-    pub scenario: Run,
 }
 
 /// Steps [`run`] reports to its progress bar.
 pub fn steps(design: &Design) -> u64 {
-    2 + design.targets.len() as u64
+    design.targets.len() as u64
 }
 
-/// Simulates, fits and evaluates every target of `design`.
-pub fn run(design: &Design, progress: &ProgressBar) -> Result<DesignResult, SpecError> {
-    progress.set_message(format!("{}: simulating learning runs", design.name));
-    let learning = data::learning_set(design)?;
-    progress.inc(1);
-    progress.set_message(format!("{}: simulating validation runs", design.name));
-    let validation = data::validation_set(design)?;
-    progress.inc(1);
+/// Fits every target of `design` on the learning runs of `runs` and evaluates it on the learning and
+/// validation runs; the result keeps the runs for the stages after the fit.
+pub fn run(design: &Design, runs: Runs, progress: &ProgressBar) -> Result<DesignResult, SpecError> {
     let odds_ratios = identify::basis_of(&design.map);
     let mut targets = Vec::new();
     for (index, target) in design.targets.iter().enumerate() {
         progress.set_message(format!("{}: fitting {}", design.name, target.name));
-        let fit = identify::fit(&learning, index, &target.name, &design.map, &odds_ratios)
-            .map_err(|e| explain(design, &learning, index, e))?;
+        let fit = identify::fit(&runs.learning, index, &target.name, &design.map, &odds_ratios)
+            .map_err(|e| explain(design, &runs.learning, index, e))?;
         let result = TargetResult {
             index,
-            learning: evaluate(&learning, index, &fit),
-            validation: evaluate(&validation, index, &fit),
+            learning: evaluate(&runs.learning, index, &fit),
+            validation: evaluate(&runs.validation, index, &fit),
             fit,
         };
         targets.push(result);
         progress.inc(1);
     }
-    let scenario = scenario(design, &validation)?;
-    Ok(DesignResult {
-        learning,
-        validation,
-        targets,
-        scenario,
-    })
-}
-
-/// The estimation run ([`DesignResult::scenario`]): the spec's `[scenario]`, else the first run of
-/// `validation`, the design's validation set.
-pub fn scenario(design: &Design, validation: &DataSet) -> Result<Run, SpecError> {
-    Ok(match data::scenario_run(design, &design.model, "scenario")? {
-        Some(run) => run,
-        None => validation.runs[0].clone(),
-    })
+    Ok(DesignResult { runs, targets })
 }
 
 /// Turns a fit failure on the learning data `learning` into a message about the spec field to change.

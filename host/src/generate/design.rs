@@ -8,6 +8,7 @@ use indicatif::ProgressBar;
 use super::emitted::Emitted;
 use super::error::GenerateError;
 use super::shipped::workspace_root;
+use crate::data::{self, Runs};
 use crate::emit;
 use crate::fit::{self, DesignResult};
 use crate::spec::{Design, SpecError};
@@ -23,14 +24,14 @@ pub fn emit_design(
 ) -> Result<Emitted, GenerateError> {
     // What the spec's observer kind rules out is refused before the search and the fit.
     crate::observers::check_before_fit(&design, &model_code(&design)?)?;
-    let (design, search) = crate::search::settle(design, progress)?;
+    let (design, search, runs) = settle(design, progress)?;
     if search.is_some() {
         progress.set_length(fit::steps(&design));
         progress.set_position(0);
     }
-    let result = fit::run(&design, progress)?;
-    let taps =
-        crate::search::sparsity::accuracy_vs_taps(&design, &result.learning, &result.validation).map_err(|e| {
+    let result = fit::run(&design, runs, progress)?;
+    let taps = crate::search::sparsity::accuracy_vs_taps(&design, &result.runs.learning, &result.runs.validation)
+        .map_err(|e| {
             design.error(
                 "map.taps",
                 format!("a pruned fit failed: {e}"),
@@ -58,6 +59,32 @@ pub fn emit_design(
         search,
         taps,
     })
+}
+
+/// `design` settled by its search (when the spec has one: [`crate::search::settle`]) and every run it
+/// is fitted, tuned and judged on ([`Runs`]), each simulated once: the search's learning and tuning
+/// runs are the fit's and the observers'.
+pub fn settle(
+    design: Design,
+    progress: &ProgressBar,
+) -> Result<(Design, Option<crate::search::Outcome>, Runs), SpecError> {
+    if let Some(search) = &design.search {
+        crate::search::check_size(&design, search)?;
+    }
+    progress.set_message(format!("{}: simulating the runs", design.name));
+    let learning = data::learning_set(&design)?;
+    let tuning = data::tuning_set(&design)?;
+    let (design, search) = crate::search::settle(design, &learning, &tuning, progress)?;
+    let long_samples = crate::observers::Drift::long_samples(&design);
+    let runs = Runs::complete(&design, learning, tuning, long_samples)?;
+    Ok((design, search, runs))
+}
+
+/// The runs of `design` simulated ([`Runs::simulate`]) and its maps fitted on them, at the spec's
+/// map settings as they are (no design search: [`settle`] runs it).
+pub fn simulate_and_fit(design: &Design, progress: &ProgressBar) -> Result<DesignResult, SpecError> {
+    let runs = Runs::simulate(design, crate::observers::Drift::long_samples(design))?;
+    fit::run(design, runs, progress)
 }
 
 /// The design's model written as programs, or an error naming the spec field that cannot be.

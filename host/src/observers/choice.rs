@@ -3,35 +3,16 @@
 //! figures it reads ([`super::compare`]).
 
 use crate::plant::ModelCode;
-use crate::search::cost;
 use crate::spec::{Design, ObserverKind, SpecError};
 
 use super::score::{self, CHEAPER_WITHIN};
-use super::{corrected, ekf, ObserverFigures};
+use super::{corrected, ekf, kind, ObserverFigures};
 
 /// A kind's [score](score::score) on the tuning runs.
 fn tuning_score(figures: &ObserverFigures, spreads: &[f64]) -> f64 {
     let pooled: Vec<f64> = figures.targets.iter().map(|f| f.rmse_tuning).collect();
     let p95: Vec<f64> = figures.targets.iter().map(|f| f.p95_tuning).collect();
     score::score(&pooled, &p95, spreads)
-}
-
-/// The kinds `observer()` may be; each names its row in [`Comparison::observers`](super::Comparison::observers)
-/// ([`ObserverKind::name`]).
-pub const KINDS: [ObserverKind; 5] = [
-    ObserverKind::Map,
-    ObserverKind::Corrected,
-    ObserverKind::EkfBox,
-    ObserverKind::EkfMap,
-    ObserverKind::EkfRestart,
-];
-
-/// The name of `kind`'s row in [`Comparison::observers`](super::Comparison::observers) (`Auto` is not a kind a design has: `map`).
-pub fn row_name(kind: ObserverKind) -> &'static str {
-    match kind {
-        ObserverKind::Auto => "map",
-        other => other.name(),
-    }
 }
 
 /// What [`choose`] would refuse of the spec's `observer.kind` that is known before anything is fitted,
@@ -41,32 +22,24 @@ pub fn row_name(kind: ObserverKind) -> &'static str {
 /// its tuned constants are all non-zero numbers written into the program, any such ones give it
 /// (the map's and the corrected observer's counts need the fit, and are checked after it).
 pub fn check_before_fit(design: &Design, code: &ModelCode) -> Result<(), SpecError> {
-    let kind = design.observer;
-    let ekf_kind = matches!(
-        kind,
-        ObserverKind::EkfBox | ObserverKind::EkfMap | ObserverKind::EkfRestart
-    );
-    let started = matches!(
-        kind,
-        ObserverKind::Corrected | ObserverKind::EkfMap | ObserverKind::EkfRestart
-    );
-    if (started && corrected::state_targets(design).is_err()) || (ekf_kind && !ekf::supported(code)) {
+    if design.observer == ObserverKind::Auto {
+        return Ok(());
+    }
+    let entry = kind::of(design.observer);
+    if (entry.needs.state_targets && corrected::state_targets(design).is_err())
+        || (entry.needs.filter && !ekf::supported(code))
+    {
         return Err(cannot_have(design));
     }
-    let Some(budget) = design.budget.instructions.filter(|_| ekf_kind) else {
+    let (Some(budget), Some(cost)) = (design.budget.instructions, entry.cost_before_fit) else {
         return Ok(());
     };
     let states = code.dimensions.states;
     let theta = vec![0.37f64.log10(); 2 * states];
     let constants = ekf::constants(design, &ekf::box_centre(design), &vec![1.0; states], &theta);
-    let filter = crate::plant::kalman::filter_code(code, &constants);
-    let instructions = match kind {
-        ObserverKind::EkfBox => cost::of_ekf(&filter),
-        ObserverKind::EkfMap => cost::of_started(&filter),
-        _ => cost::of_restarted(&filter),
-    };
+    let instructions = cost(&crate::plant::kalman::filter_code(code, &constants));
     if instructions > budget as f64 {
-        return Err(over_budget(design, kind.name(), instructions, budget as f64));
+        return Err(over_budget(design, entry.kind.name(), instructions, budget as f64));
     }
     Ok(())
 }
@@ -104,9 +77,9 @@ pub fn choose(
     observers: &[ObserverFigures],
     spreads: &[f64],
 ) -> Result<(ObserverKind, String), SpecError> {
-    let scored: Vec<(ObserverKind, &str, f64, f64)> = KINDS
+    let scored: Vec<(ObserverKind, &str, f64, f64)> = kind::REGISTRY
         .iter()
-        .map(|&kind| (kind, kind.name()))
+        .map(|k| (k.kind, k.kind.name()))
         .filter_map(|(kind, name)| {
             observers
                 .iter()

@@ -201,7 +201,7 @@ pub fn rmse(code: &ModelCode, constants: &EkfConstants, x0: &[f64], data: &DataS
     let windows = |run: &Run| data.horizon.saturating_sub(1)..run.targets.len();
     Some(
         (0..code.dimensions.targets)
-            .map(|t| super::errors(&data.runs, &estimates, t, windows).0)
+            .map(|t| super::score::errors(&data.runs, &estimates, t, windows).0)
             .collect(),
     )
 }

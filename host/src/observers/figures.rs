@@ -3,7 +3,7 @@
 //! ([`super::compare`]) and how a kind is chosen from them ([`super::choice`]), since the report, the
 //! tables and the emitter read these structs alone.
 
-use crate::data::{DataSet, Rows, Run};
+use crate::data::{Rows, Run};
 use crate::spec::ObserverKind;
 
 use super::{corrected, ekf, restart};
@@ -58,6 +58,13 @@ pub struct Drift {
 impl Drift {
     /// Windows after the start-up in a long run.
     pub const WINDOWS: usize = 6;
+
+    /// Samples of a long run of `design`: the map's first window, the start-up and [`Drift::WINDOWS`]
+    /// windows.
+    pub fn long_samples(design: &crate::spec::Design) -> usize {
+        let horizon = design.map.horizon;
+        horizon - 1 + super::corrected::START_UP_HORIZONS * horizon + Drift::WINDOWS * design.validation.samples
+    }
 }
 
 /// Length of the transient judged, in the spec's time unit, from the first window.
@@ -125,8 +132,6 @@ pub struct Comparison {
     /// The EKF from the box centre started instead at the scenario's `observer_x0` (the paper's
     /// `x̂(0)`): that start, and its RMSE per target over the scenario's windows.
     pub ekf_from_observer_x0: Option<(Vec<f64>, Vec<f64>)>,
-    /// The tuning runs.
-    pub tuning: DataSet,
     /// The mismatch plants, when parameters are uncertain.
     pub mismatch: Option<Mismatch>,
     /// Largest one-sample difference between the chip's model (`chip_substeps`) and the learning

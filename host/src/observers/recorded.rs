@@ -12,6 +12,7 @@ use crate::tables::Tables;
 
 use firmware::Saturation;
 
+use super::kind::Constants;
 use super::{corrected, ekf};
 
 /// Why a kind cannot run on this design.
@@ -113,56 +114,39 @@ impl<'a> Setup<'a> {
         code: &'a ModelCode,
         kind: ObserverKind,
     ) -> Result<Self, RecordedError> {
-        let unavailable = |kind: &'static str, why: &str| RecordedError::Unavailable {
+        let name = kind.name();
+        let unavailable = |why: &str| RecordedError::Unavailable {
             design: design.name.clone(),
-            kind,
+            kind: name,
             why: why.to_owned(),
         };
-        let filter = |name| {
-            tables
-                .ekf
-                .as_ref()
-                .map(|constants| crate::plant::kalman::filter_code(code, constants))
-                .ok_or_else(|| unavailable(name, "the model is beyond the sizes the host filters"))
+        if let Some(missing) = tables.missing(kind) {
+            return Err(unavailable(missing.why_missing()));
+        }
+        let entry = super::kind::of(kind);
+        let state_targets = if entry.needs.state_targets {
+            corrected::state_targets(design).map_err(|why| unavailable(&why))?
+        } else {
+            Vec::new()
         };
-        let started = |name| {
-            tables
-                .started
-                .as_ref()
-                .map(|(_, targets)| targets.clone())
-                .ok_or_else(|| unavailable(name, "it needs every state as a target and a model the host can filter"))
-        };
-        let mut setup = Setup {
+        let reads = |constants: Constants| entry.needs.constants.contains(&constants);
+        Ok(Setup {
             design,
             tables,
             code,
             kind,
-            filter: None,
-            programs: None,
-            state_targets: Vec::new(),
-        };
-        match kind {
-            ObserverKind::EkfBox => setup.filter = Some(filter("ekf_box")?),
-            ObserverKind::EkfMap => {
-                setup.filter = Some(filter("ekf_map")?);
-                setup.state_targets = started("ekf_map")?;
-            }
-            ObserverKind::EkfRestart => {
-                setup.filter = Some(filter("ekf_restart")?);
-                setup.state_targets = started("ekf_restart")?;
-                if tables.restart.is_none() {
-                    return Err(unavailable("ekf_restart", "its tables hold no restart threshold"));
-                }
-            }
-            ObserverKind::Corrected => {
-                let why = "it needs every state as a target and a model the host can run";
-                let constants = tables.corrected.as_ref().ok_or_else(|| unavailable("corrected", why))?;
-                setup.state_targets = corrected::state_targets(design).map_err(|why| unavailable("corrected", &why))?;
-                setup.programs = Some(crate::plant::correction::correction_code(code, constants));
-            }
-            _ => {}
-        }
-        Ok(setup)
+            filter: tables
+                .ekf
+                .as_ref()
+                .filter(|_| reads(Constants::Ekf))
+                .map(|constants| crate::plant::kalman::filter_code(code, constants)),
+            programs: tables
+                .corrected
+                .as_ref()
+                .filter(|_| reads(Constants::Corrected))
+                .map(|constants| crate::plant::correction::correction_code(code, constants)),
+            state_targets,
+        })
     }
 
     /// Runs over the rows `next` reads, in `T` (`precision` for the map's tables).

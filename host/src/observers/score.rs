@@ -81,7 +81,7 @@ pub fn of_estimates(
     let (pooled, p95): (Vec<f64>, Vec<f64>) = (0..spreads.len())
         .map(|t| {
             (
-                super::errors(runs, estimates, t, window).0,
+                errors(runs, estimates, t, window).0,
                 percentile_95(&per_run_rmse(runs, estimates, t, window)),
             )
         })
@@ -102,6 +102,26 @@ pub fn lowest(candidates: &[f64], score: impl Fn(f64) -> f64 + Sync) -> (f64, f6
             (candidates[0], f64::INFINITY),
             |best, c| if c.1 < best.1 { c } else { best },
         )
+}
+
+/// RMSE and largest |error| of `estimates` (one row per sample of each run) against the runs'
+/// targets, over samples `from(run) .. to(run)`.
+pub fn errors(
+    runs: &[Run],
+    estimates: &[Rows],
+    target: usize,
+    window: impl Fn(&Run) -> std::ops::Range<usize>,
+) -> (f64, f64) {
+    let (mut sum, mut count, mut max) = (0.0, 0usize, 0.0_f64);
+    for (run, estimate) in runs.iter().zip(estimates) {
+        for k in window(run) {
+            let error = estimate[k][target] - run.targets[k][target];
+            sum += error * error;
+            count += 1;
+            max = if error.is_nan() { f64::NAN } else { max.max(error.abs()) };
+        }
+    }
+    ((sum / count.max(1) as f64).sqrt(), max)
 }
 
 #[cfg(test)]

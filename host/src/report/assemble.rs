@@ -32,9 +32,9 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
         time_unit: &design.time_unit,
         validation_samples: design.validation.samples,
         map: &design.map,
-        regressor_len: result.learning.regressor_len(),
-        learning: summary(&result.learning, design.learning.seed),
-        validation: summary(&result.validation, design.validation.seed),
+        regressor_len: result.runs.learning.regressor_len(),
+        learning: summary(&result.runs.learning, design.learning.seed),
+        validation: summary(&result.runs.validation, design.validation.seed),
         targets: result
             .targets
             .iter()
@@ -58,7 +58,8 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
                 }
             })
             .collect(),
-        tuning: summary(&comparison.tuning, design.tuning.seed),
+        tuning: summary(&result.runs.tuning, design.tuning.seed),
+        runs: super::runs::sets(design, &result.runs),
         observers: comparison
             .observers
             .iter()

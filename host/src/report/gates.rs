@@ -20,7 +20,7 @@ use std::fmt;
 
 use crate::fit::evaluate::WEAK_FRACTION;
 use crate::fit::DesignResult;
-use crate::observers::Comparison;
+use crate::observers::{kind, Comparison};
 use crate::spec::Design;
 
 /// How much worse than the linear floor the map may be before [`Gate::BelowLinearFloor`].
@@ -139,8 +139,8 @@ pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) ->
         let range = (t.fit.map.r_min, t.fit.map.r_max);
         let (mut outside, mut windows) = (0usize, 0usize);
         let mut seen = (f64::INFINITY, f64::NEG_INFINITY);
-        for window in result.validation.windows() {
-            let truth = result.validation.target(window, t.index);
+        for window in result.runs.validation.windows() {
+            let truth = result.runs.validation.target(window, t.index);
             seen = (seen.0.min(truth), seen.1.max(truth));
             outside += usize::from(!(range.0..=range.1).contains(&truth));
             windows += 1;
@@ -161,7 +161,7 @@ pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) ->
                 horizon: design.map.horizon,
             });
         }
-        let chosen = crate::observers::row_name(comparison.chosen.0);
+        let chosen = kind::of(comparison.chosen.0).kind.name();
         let rmse_of = |kind: &str| {
             comparison
                 .observers
@@ -182,8 +182,10 @@ pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) ->
             }
         };
         // The best peer: any EKF within the budget, other than the kind chosen.
-        let best_ekf = ["ekf_box", "ekf_map", "ekf_restart"]
-            .into_iter()
+        let best_ekf = kind::REGISTRY
+            .iter()
+            .filter(|k| k.needs.filter)
+            .map(|k| k.kind.name())
             .filter(|&kind| kind != chosen && affordable(kind))
             .filter_map(|kind| rmse_of(kind).map(|v| (kind, v)))
             .min_by(|a, b| a.1.total_cmp(&b.1));

@@ -52,6 +52,11 @@ pub fn markdown(report: &Report<'_>) -> String {
         let names: Vec<&str> = report.targets.iter().map(|t| t.name).collect();
         s.push_str(&taps_table(rows, &names));
     }
+    s.push_str("\n## Runs: which figure comes from which set\n\n");
+    s.push_str(
+        "Each set is simulated once, from its own seed; no figure is computed on runs a constant was chosen on, but those named *tuning* and *learning*.\n\n",
+    );
+    s.push_str(&super::runs::table(&report.runs));
     s.push_str("\n## Observers on the same data\n\n");
     s.push_str(&observers_table(report));
     if let Some(t) = &report.ekf_tuning {

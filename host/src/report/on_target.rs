@@ -85,16 +85,6 @@ pub const BEGIN: &str = "<!-- on-target:begin -->";
 /// Marks its end.
 pub const END: &str = "<!-- on-target:end -->";
 
-/// The kinds as the section lists them: the map, the observers it starts or checks, the EKF from
-/// the centre.
-const ORDER: [(&str, &str); 5] = [
-    ("map", "`map_observer()`"),
-    ("corrected", "`CorrectedObserver`"),
-    ("ekf_map", "`StartedEkfObserver`"),
-    ("ekf_restart", "`RestartedEkfObserver`"),
-    ("ekf_box", "`ekf()`"),
-];
-
 /// The figures as `report.md` shows them, by kind (as [`Measured::observers`]), between [`BEGIN`]
 /// and [`END`]; with none, how to measure them.
 pub fn section(observers: &BTreeMap<String, OnTarget>) -> String {
@@ -112,7 +102,10 @@ pub fn section(observers: &BTreeMap<String, OnTarget>) -> String {
              | observer | instructions per sample, steady (median / max) | start-up: samples, max instructions | VDIV + VSQRT per sample (max) | stack bytes | flash bytes | RAM bytes | max \\|chip − host f64\\| |\n\
              |---|---|---|---|---|---|---|---|\n",
         );
-        for (kind, api) in ORDER {
+        for (kind, api) in crate::observers::kind::REGISTRY
+            .iter()
+            .map(|k| (k.kind.name(), k.measured_as))
+        {
             let Some(o) = observers.get(kind) else { continue };
             let start_up = match (o.start_up_samples, o.start_up_instructions_max) {
                 (Some(samples), Some(max)) => format!("{samples}, {max}"),

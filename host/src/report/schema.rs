@@ -37,6 +37,8 @@ pub struct Report<'a> {
     pub targets: Vec<TargetReport<'a>>,
     /// Tuning runs (what the EKF's constants were chosen on; never reported as accuracy).
     pub tuning: SetSummary,
+    /// Every set of runs, and which figures are computed on it.
+    pub runs: Vec<super::runs::RunSet>,
     /// Every observer on the same data: the map, then the EKF.
     pub observers: Vec<ObserverReport>,
     /// How the EKF was tuned, when the host could run one.

@@ -105,13 +105,18 @@ fn instructions(c: &Candidate) -> f64 {
     c.cost.map_or(f64::INFINITY, |c| c.instructions)
 }
 
-/// Runs the design's search, if it has one, and returns the design with the chosen `N`, `n_m` and `β`
-/// in its [`MapSettings`] (unchanged without a search).
-pub fn settle(mut design: Design, progress: &ProgressBar) -> Result<(Design, Option<Outcome>), SpecError> {
+/// Runs the design's search, if it has one, on the design's `learning` and `tuning` runs, and returns
+/// the design with the chosen `N`, `n_m` and `β` in its [`MapSettings`] (unchanged without a search).
+pub fn settle(
+    mut design: Design,
+    learning: &DataSet,
+    tuning: &DataSet,
+    progress: &ProgressBar,
+) -> Result<(Design, Option<Outcome>), SpecError> {
     let Some(search) = design.search.clone() else {
         return Ok((design, None));
     };
-    let outcome = run(&design, &search, progress)?;
+    let outcome = run_on(&design, &search, learning, tuning, progress)?;
     let chosen = outcome.chosen();
     design.map = MapSettings {
         horizon: chosen.horizon,
@@ -123,8 +128,29 @@ pub fn settle(mut design: Design, progress: &ProgressBar) -> Result<(Design, Opt
     Ok((design, Some(outcome)))
 }
 
-/// Fits and scores every candidate of `search` (see the module's documentation).
+/// Fits and scores every candidate of `search` (see the module's documentation) on the design's
+/// learning and tuning runs, simulated here (`gen` simulates them once for the search and the fit:
+/// [`settle`]).
 pub fn run(design: &Design, search: &Search, progress: &ProgressBar) -> Result<Outcome, SpecError> {
+    check_size(design, search)?;
+    progress.set_message(format!("{}: simulating the runs of the search", design.name));
+    run_on(
+        design,
+        search,
+        &data::learning_set(design)?,
+        &data::tuning_set(design)?,
+        progress,
+    )
+}
+
+/// [`run`] on the design's `learning` and `tuning` runs.
+fn run_on(
+    design: &Design,
+    search: &Search,
+    learning: &DataSet,
+    tuning: &DataSet,
+    progress: &ProgressBar,
+) -> Result<Outcome, SpecError> {
     let start = Instant::now();
     let total = check_size(design, search)?;
     // Without a terminal the bar is hidden: say the same in plain lines (CI logs, `| tee`).
@@ -135,11 +161,8 @@ pub fn run(design: &Design, search: &Search, progress: &ProgressBar) -> Result<O
             design.name, design.max_candidates
         );
     }
-    progress.set_message(format!("{}: simulating the runs of the search", design.name));
-    let learning = data::learning_set(design)?;
-    let tuning = data::tuning_set(design)?;
     let n_max = *search.horizons.iter().max().expect("a search has candidates");
-    let spreads = spreads(&tuning, n_max, design.targets.len());
+    let spreads = spreads(tuning, n_max, design.targets.len());
     let windows = tuning
         .runs
         .iter()
@@ -161,7 +184,7 @@ pub fn run(design: &Design, search: &Search, progress: &ProgressBar) -> Result<O
                 taps: None,
                 ..design.map
             };
-            let candidates = candidates_of(design, &settings, &search.taps, &learning, &tuning, n_max, &spreads);
+            let candidates = candidates_of(design, &settings, &search.taps, learning, tuning, n_max, &spreads);
             progress.inc(candidates.len() as u64);
             let line = pacer
                 .lock()

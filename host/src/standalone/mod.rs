@@ -115,7 +115,7 @@ pub fn run(
     specs: &[PathBuf],
     to: &Destination,
     strict: bool,
-    progress: impl Fn(&Design) -> ProgressBar,
+    progress: impl Fn(&Design) -> ProgressBar + Sync,
     done: impl FnMut(&Path, Result<&Prepared, &GenerateError>),
 ) -> Result<Vec<Outcome>, GenerateError> {
     let designs = load_specs(specs)?;

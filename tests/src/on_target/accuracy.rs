@@ -227,7 +227,7 @@ pub fn compare_with_library(name: &str, measured: &ObserverMeasurement) -> Resul
         .ok_or_else(|| format!("no shipped spec for {name}"))?;
     let design = crate::settled(host::spec::load(&path).map_err(|e| e.to_string())?);
     let result = crate::build(&design);
-    let rows = host::emit::recorded_sequence(&result.scenario);
+    let rows = host::emit::recorded_sequence(&result.runs.scenario);
     if rows.len() != measured.samples.len() {
         return Err(format!(
             "{name}: {} samples on the target, {} recorded",

@@ -183,7 +183,7 @@ pub fn measure_crate(folder: &Path) -> Result<String, String> {
 
     let code = host::generate::model_code(&user.design).map_err(|e| e.to_string())?;
     let validation = host::data::validation_set(&user.design).map_err(|e| e.to_string())?;
-    let scenario = host::fit::scenario(&user.design, &validation).map_err(|e| e.to_string())?;
+    let scenario = host::data::runs::scenario(&user.design, &validation).map_err(|e| e.to_string())?;
     let rows = host::emit::recorded_sequence(&scenario);
 
     let mut observers: BTreeMap<String, OnTarget> = BTreeMap::new();

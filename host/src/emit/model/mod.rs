@@ -75,26 +75,9 @@ pub fn model_source(design: &Design, code: &ModelCode, observers: &Observers<'_>
     if let (Some(ekf), Some(_), Some(restart)) = (observers.ekf, observers.started, observers.restart) {
         text.push_str(&restarted(ekf, restart)?);
     }
-    let (ty, what) = match observers.kind {
-        ObserverKind::Corrected => ("CorrectedObserver", "the model-corrected map ([`CorrectedObserver`])"),
-        ObserverKind::EkfMap => (
-            "StartedEkfObserver",
-            "the EKF started by the map ([`StartedEkfObserver`])",
-        ),
-        ObserverKind::EkfBox => (
-            "BoxEkfObserver",
-            "the EKF from the centre of the state box ([`BoxEkfObserver`])",
-        ),
-        ObserverKind::EkfRestart => (
-            "RestartedEkfObserver",
-            "the EKF from the centre of the state box, restarted by the map ([`RestartedEkfObserver`])",
-        ),
-        ObserverKind::Map | ObserverKind::Auto => ("MapObserver", "the map alone ([`MapObserver`])"),
-    };
-    let kind = match observers.kind {
-        ObserverKind::Auto => "map",
-        other => other.name(),
-    };
+    let entry = crate::observers::kind::of(observers.kind);
+    let (ty, kind) = (entry.observer_type, entry.kind.name());
+    let what = format!("{} ([`{ty}`])", entry.what);
     write!(
         text,
         "

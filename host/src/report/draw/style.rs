@@ -6,7 +6,11 @@ use plotters::prelude::*;
 
 /// Colours shared by the figures, so that "true" and "estimate" look the same everywhere.
 pub(crate) const TRUE_COLOR: RGBColor = RGBColor(31, 119, 180);
-pub(crate) const ESTIMATE_COLOR: RGBColor = RGBColor(214, 39, 40);
+/// The map's colour in its registry entry ([`crate::observers::kind::Kind::colour`]).
+pub(crate) const ESTIMATE_COLOR: RGBColor = {
+    let (r, g, b) = crate::observers::kind::REGISTRY[0].colour;
+    RGBColor(r, g, b)
+};
 pub(crate) const NOISE_COLOR: RGBColor = RGBColor(90, 90, 90);
 pub(crate) const MARK_COLOR: RGBColor = RGBColor(60, 60, 60);
 /// Saturated estimates: a black ring around the estimate's own marker.

@@ -7,22 +7,19 @@ use super::{map_along, saturated_rings, PlotError};
 use crate::data::Run;
 use crate::fit::DesignResult;
 use crate::observers::Comparison;
-use crate::report::draw::{
-    tick, with_unit, write_figure, Figure, Panel, Series, Style, ESTIMATE_COLOR, MARK_COLOR, TRUE_COLOR,
-};
+use crate::report::draw::{tick, with_unit, write_figure, Figure, Panel, Series, Style, MARK_COLOR, TRUE_COLOR};
 use crate::spec::Design;
 use plotters::style::RGBColor;
 
-/// Each observer kind's colour, style and legend label in the estimation figures.
+/// Each observer kind's colour, style and legend label in the estimation figures (its registry
+/// entry's: [`crate::observers::kind::Kind`]).
 fn kind_style(kind: &str) -> (RGBColor, Style, &'static str) {
-    match kind {
-        "map" => (ESTIMATE_COLOR, Style::Dots, "map F(Z)"),
-        "ekf_box" => (RGBColor(255, 127, 14), Style::Line, "EKF from x̂(0)"),
-        "corrected" => (RGBColor(44, 160, 44), Style::Line, "model-corrected map"),
-        "ekf_restart" => (RGBColor(140, 86, 75), Style::Line, "EKF restarted by the map"),
-        _ => (RGBColor(148, 103, 189), Style::Line, "EKF started by the map"),
-    }
+    let entry = crate::observers::kind::named(kind).unwrap_or(&crate::observers::kind::REGISTRY[0]);
+    let (r, g, b) = entry.colour;
+    let style = if entry.dots { Style::Dots } else { Style::Line };
+    (RGBColor(r, g, b), style, entry.legend)
 }
+
 /// The `estimation` figure (or `estimation_mismatch`, on the plant at the last corner of the uncertain
 /// parameters): per target, every observer's estimate against the truth along `run` (the map's
 /// saturated estimates ringed), with the first estimate and the end of the start-up

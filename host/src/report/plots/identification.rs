@@ -14,7 +14,7 @@ use crate::spec::Design;
 /// `identification`: identified against true on the learning windows (saturated ringed), then each
 /// target's `dΓ/dr`, on an axis from 0 so that a straight `Γ` looks straight and says it is linear.
 pub(super) fn identification(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec<PathBuf>, PlotError> {
-    let learning: &DataSet = &result.learning;
+    let learning: &DataSet = &result.runs.learning;
     let count = learning.windows().count();
     let stride = thinning(count, MAX_DOTS);
     let windows: Vec<Window> = learning.windows().step_by(stride).collect();

@@ -110,10 +110,17 @@ pub fn draw(
         path: folder.to_owned(),
         source,
     })?;
-    let mut files = measurements(design, &result.scenario, folder)?;
+    let mut files = measurements(design, &result.runs.scenario, folder)?;
     files.extend(identification(design, result, folder)?);
     // Estimation along the scenario, every observer, and on the mismatch plant.
-    files.extend(estimation(design, result, comparison, &result.scenario, false, folder)?);
+    files.extend(estimation(
+        design,
+        result,
+        comparison,
+        &result.runs.scenario,
+        false,
+        folder,
+    )?);
     if let Some(m) = &comparison.mismatch {
         files.extend(estimation(design, result, comparison, &m.scenario, true, folder)?);
     }

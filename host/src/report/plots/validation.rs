@@ -17,7 +17,7 @@ const BINS: usize = 40;
 /// the time in its run, with the RMSE over the runs at each time, and against the true value, with
 /// the RMSE per bin of it; saturated estimates ringed.
 pub(super) fn validation(design: &Design, result: &DesignResult, folder: &Path) -> Result<Vec<PathBuf>, PlotError> {
-    let set = &result.validation;
+    let set = &result.runs.validation;
     let count = set.window_count();
     let stride = thinning(count, MAX_DOTS);
     let shown = if stride == 1 {

@@ -1,0 +1,247 @@
+//! The bench every kind is tuned and judged on: the design, its fit and runs, its model, the map's
+//! estimates on every run (computed once: every kind after the map reads them), and the constants of
+//! the kinds tuned so far. [`Bench::judge`] gives one kind's figures on every set of runs.
+
+use crate::data::{DataSet, Rows, Run};
+use crate::fit::DesignResult;
+use crate::plant::ModelCode;
+use crate::search::cost::{self, Cost};
+use crate::spec::Design;
+
+use crate::observers::figures::{Drift, Figures, ObserverFigures, Started, TRANSIENT_TIME};
+use crate::observers::restart::RestartConstants;
+use crate::observers::score::{self, errors};
+use crate::observers::{corrected, ekf};
+
+/// See the module's documentation.
+pub struct Bench<'a> {
+    /// The design.
+    pub design: &'a Design,
+    /// Its fit, and every run ([`crate::data::Runs`]).
+    pub result: &'a DesignResult,
+    /// Its model as programs.
+    pub code: &'a ModelCode,
+    /// Each target's spread over the tuning runs: normalises every tuning criterion (the tuning runs
+    /// are the only data any constant is chosen on).
+    pub spreads: Vec<f64>,
+    /// The map's predicted cost.
+    pub map_cost: Cost,
+    /// The figures of the kinds judged so far, in registry order (the map's first).
+    pub observers: Vec<ObserverFigures>,
+    /// The tuned EKF (`None` when the model is beyond the host's sizes, [`ekf::supported`]).
+    pub ekf: Option<ekf::Tuned>,
+    /// The tuned model-corrected map, or why the design cannot have one.
+    pub corrected: Result<corrected::Tuned, String>,
+    /// The EKF started by the map, and the map's mean squared error per state on the tuning runs.
+    pub started: Option<(Started, Vec<f64>)>,
+    /// The box EKF's check against the map.
+    pub restart: Option<RestartConstants>,
+    /// The box EKF from the scenario's `observer_x0` instead: that start, its RMSE per target.
+    pub ekf_from_observer_x0: Option<(Vec<f64>, Vec<f64>)>,
+    /// The map's estimates on every run.
+    maps: MapRows,
+}
+
+/// The map's estimates on every run of [`crate::data::Runs`], set by set.
+struct MapRows {
+    validation: Vec<Rows>,
+    tuning: Vec<Rows>,
+    scenario: Rows,
+    draws: Option<Vec<Rows>>,
+    /// On the corners, the nominal plant and the long runs at the last corner; the mismatch scenario.
+    mismatch: Option<([Vec<Rows>; 3], Rows)>,
+    long: Vec<Rows>,
+}
+
+impl<'a> Bench<'a> {
+    /// The bench of a fitted design, before any kind is tuned.
+    pub fn new(design: &'a Design, result: &'a DesignResult, code: &'a ModelCode) -> Self {
+        let runs = &result.runs;
+        let horizon = design.map.horizon;
+        let on = |set: &DataSet| -> Vec<Rows> { set.runs.iter().map(|r| map_estimates(result, horizon, r)).collect() };
+        let maps = MapRows {
+            validation: on(&runs.validation),
+            tuning: on(&runs.tuning),
+            scenario: map_estimates(result, horizon, &runs.scenario),
+            draws: runs.scenario_draws.as_ref().map(on),
+            mismatch: runs.mismatch.as_ref().map(|m| {
+                (
+                    [on(&m.corners_set), on(&m.nominal_set), on(&m.long)],
+                    map_estimates(result, horizon, &m.scenario),
+                )
+            }),
+            long: on(&runs.long),
+        };
+        let spreads = result
+            .targets
+            .iter()
+            .map(|t| crate::fit::evaluate::evaluate(&runs.tuning, t.index, &t.fit).target_spread)
+            .collect();
+        let fitted: Vec<&crate::fit::maps::FittedMap> = result.targets.iter().map(|t| &t.fit.map).collect();
+        Bench {
+            design,
+            result,
+            code,
+            spreads,
+            map_cost: cost::of_maps(&fitted, horizon, design.tau),
+            observers: Vec::new(),
+            ekf: None,
+            corrected: Err("not tuned".to_owned()),
+            started: None,
+            restart: None,
+            ekf_from_observer_x0: None,
+            maps,
+        }
+    }
+
+    /// The windows every figure is over: from the map's first estimate to the run's end.
+    pub fn windows(&self) -> impl Fn(&Run) -> std::ops::Range<usize> + Copy {
+        let first = self.design.map.horizon - 1;
+        move |run: &Run| first..run.targets.len()
+    }
+
+    /// The tuning runs' map estimates, run by run.
+    pub fn tuning_maps(&self) -> &[Rows] {
+        &self.maps.tuning
+    }
+
+    /// `estimate(run, map, is_scenario)` on every tuning run (`map`: the map's estimates on `run`).
+    pub fn on_tuning(&self, estimate: impl Fn(&Run, &Rows) -> Rows) -> Vec<Rows> {
+        let runs = &self.result.runs.tuning.runs;
+        runs.iter()
+            .zip(&self.maps.tuning)
+            .map(|(r, m)| estimate(r, m))
+            .collect()
+    }
+
+    /// The [score](score::of_estimates) of `estimates`, one per tuning run.
+    pub fn tuning_score(&self, estimates: &[Rows]) -> f64 {
+        score::of_estimates(&self.result.runs.tuning.runs, estimates, &self.spreads, self.windows())
+    }
+
+    /// One kind's figures on every set: `estimate(run, map, is_scenario)` is its estimate of every
+    /// target at every sample of `run` (`map`: the map's estimates on `run`; a scenario's EKF starts
+    /// from `scenario.observer_x0`).
+    pub fn judge(
+        &self,
+        kind: &'static str,
+        instructions: f64,
+        estimate: &dyn Fn(&Run, &Rows, bool) -> Rows,
+    ) -> ObserverFigures {
+        let runs = &self.result.runs;
+        let maps = &self.maps;
+        let horizon = self.design.map.horizon;
+        let windows = self.windows();
+        let on = |set: &DataSet, maps: &[Rows], is_scenario: bool| -> Vec<Rows> {
+            set.runs
+                .iter()
+                .zip(maps)
+                .map(|(r, m)| estimate(r, m, is_scenario))
+                .collect()
+        };
+        let validation = on(&runs.validation, &maps.validation, false);
+        let scenario = estimate(&runs.scenario, &maps.scenario, true);
+        let on_tuning = on(&runs.tuning, &maps.tuning, false);
+        let on_draws: Option<Vec<Rows>> = runs
+            .scenario_draws
+            .as_ref()
+            .zip(maps.draws.as_ref())
+            .map(|(d, m)| on(d, m, true));
+        let on_mismatch: Option<[Vec<Rows>; 3]> =
+            runs.mismatch
+                .as_ref()
+                .zip(maps.mismatch.as_ref())
+                .map(|(m, (on_m, _))| {
+                    [
+                        on(&m.corners_set, &on_m[0], false),
+                        on(&m.nominal_set, &on_m[1], false),
+                        on(&m.long, &on_m[2], false),
+                    ]
+                });
+        let on_long = on(&runs.long, &maps.long, false);
+        let long_samples = Drift::long_samples(self.design);
+        let start_up = horizon - 1 + corrected::START_UP_HORIZONS * horizon;
+        let window = self.design.validation.samples;
+        let drift = |runs: &[Run], estimates: &[Rows], t: usize| Drift {
+            first: errors(runs, estimates, t, |_| start_up..start_up + window).0,
+            last: errors(runs, estimates, t, |_| long_samples - window..long_samples).0,
+        };
+        let transient = (TRANSIENT_TIME / self.design.tau).round() as usize;
+        let one_scenario = std::slice::from_ref(&runs.scenario);
+        let on_scenario = std::slice::from_ref(&scenario);
+        let targets = (0..self.design.targets.len())
+            .map(|t| {
+                let (rmse_validation, max_error_validation) = errors(&runs.validation.runs, &validation, t, windows);
+                let (rmse_mismatch, rmse_corners, rmse_nominal, drift_mismatch) = match (&runs.mismatch, &on_mismatch) {
+                    (Some(m), Some([estimates, on_nominal, on_long])) => (
+                        Some(errors(&m.corners_set.runs, estimates, t, windows).0),
+                        m.corners_set
+                            .runs
+                            .chunks(self.design.validation.trajectories)
+                            .zip(estimates.chunks(self.design.validation.trajectories))
+                            .map(|(runs, estimates)| errors(runs, estimates, t, windows).0)
+                            .collect(),
+                        Some(errors(&m.nominal_set.runs, on_nominal, t, windows).0),
+                        Some(drift(&m.long.runs, on_long, t)),
+                    ),
+                    _ => (None, Vec::new(), None, None),
+                };
+                let p95 = |runs: &[Run], estimates: &[Rows]| {
+                    score::percentile_95(&score::per_run_rmse(runs, estimates, t, windows))
+                };
+                Figures {
+                    rmse_validation,
+                    max_error_validation,
+                    p95_validation: p95(&runs.validation.runs, &validation),
+                    p95_tuning: p95(&runs.tuning.runs, &on_tuning),
+                    rmse_scenario: errors(one_scenario, on_scenario, t, windows).0,
+                    rmse_transient: errors(one_scenario, on_scenario, t, |run| {
+                        horizon - 1..horizon.saturating_add(transient).min(run.targets.len())
+                    })
+                    .0,
+                    rmse_tuning: errors(&runs.tuning.runs, &on_tuning, t, windows).0,
+                    scenario_draws: runs
+                        .scenario_draws
+                        .as_ref()
+                        .zip(on_draws.as_ref())
+                        .map(|(d, on)| (errors(&d.runs, on, t, windows).0, p95(&d.runs, on))),
+                    rmse_mismatch,
+                    rmse_corners,
+                    rmse_nominal,
+                    drift: drift(&runs.long.runs, &on_long, t),
+                    drift_mismatch,
+                }
+            })
+            .collect();
+        ObserverFigures {
+            kind,
+            instructions,
+            targets,
+            mismatch_scenario: runs
+                .mismatch
+                .as_ref()
+                .zip(maps.mismatch.as_ref())
+                .map(|(m, (_, map))| estimate(&m.scenario, map, true)),
+            scenario,
+        }
+    }
+}
+
+/// The map's estimate of every target at every sample of `run` (NaN before the window is full).
+pub fn map_estimates(result: &DesignResult, horizon: usize, run: &Run) -> Rows {
+    let data = DataSet {
+        runs: vec![run.clone()],
+        horizon,
+    };
+    let mut rows = Rows::new(result.targets.len());
+    let mut z = Vec::new();
+    for _ in 0..horizon.saturating_sub(1).min(run.targets.len()) {
+        rows.push(&vec![f64::NAN; result.targets.len()]);
+    }
+    for window in data.windows() {
+        data.regressor(window, &mut z);
+        let values: Vec<f64> = result.targets.iter().map(|t| t.fit.map.estimate(&z).value).collect();
+        rows.push(&values);
+    }
+    rows
+}

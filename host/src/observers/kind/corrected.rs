@@ -1,0 +1,48 @@
+//! `corrected`: the map corrected by one model step ([`crate::observers::corrected`]), its gains
+//! tuned in closed loop on the tuning runs.
+
+use super::{Bench, Constants, Kind, Needs};
+use crate::observers::{corrected, ObserverFigures};
+use crate::search::cost;
+use crate::spec::ObserverKind;
+
+/// See the module's documentation.
+pub const KIND: Kind = Kind {
+    kind: ObserverKind::Corrected,
+    what: "the model-corrected map",
+    observer_type: "CorrectedObserver",
+    measured_as: "`CorrectedObserver`",
+    legend: "model-corrected map",
+    colour: (44, 160, 44),
+    dots: false,
+    needs: Needs {
+        state_targets: true,
+        filter: false,
+        constants: &[Constants::Corrected],
+    },
+    cost_before_fit: None,
+    tune,
+};
+
+/// Tunes the gains on the tuning runs and judges the corrected map; without every state as a
+/// target, records why the design has none.
+fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
+    let state_targets = match corrected::state_targets(bench.design) {
+        Ok(state_targets) => state_targets,
+        Err(why) => {
+            bench.corrected = Err(why);
+            return None;
+        }
+    };
+    let (design, code) = (bench.design, bench.code);
+    let setting = corrected::Setting::for_design(design, bench.result, code, &state_targets);
+    let tuned = corrected::tune(&setting, &bench.result.runs.tuning, bench.tuning_maps(), &bench.spreads);
+    let programs = crate::plant::correction::correction_code(code, &tuned.constants);
+    let figures = bench.judge(
+        "corrected",
+        cost::of_corrected(&programs, &bench.map_cost),
+        &|run, map, _| corrected::estimate_rows(&setting, &programs, &tuned.constants, map, run),
+    );
+    bench.corrected = Ok(tuned);
+    Some(figures)
+}

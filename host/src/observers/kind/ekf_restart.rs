@@ -1,0 +1,63 @@
+//! `ekf_restart`: the EKF from the centre of the state box, checked once against the map's first
+//! estimate and restarted from it as `ekf_map` starts when the two disagree (a χ² threshold tuned on
+//! the tuning runs).
+
+use super::{Bench, Constants, Kind, Needs};
+use crate::data::{Rows, Run};
+use crate::observers::restart::{self, RestartConstants};
+use crate::observers::ObserverFigures;
+use crate::search::cost;
+use crate::spec::ObserverKind;
+
+/// See the module's documentation.
+pub const KIND: Kind = Kind {
+    kind: ObserverKind::EkfRestart,
+    what: "the EKF from the centre of the state box, restarted by the map",
+    observer_type: "RestartedEkfObserver",
+    measured_as: "`RestartedEkfObserver`",
+    legend: "EKF restarted by the map",
+    colour: (140, 86, 75),
+    dots: false,
+    needs: Needs {
+        state_targets: true,
+        filter: true,
+        constants: &[Constants::Ekf, Constants::Started, Constants::Restart],
+    },
+    cost_before_fit: Some(cost::of_restarted),
+    tune,
+};
+
+/// The threshold, chosen on the tuning runs ([`restart::tune`]), the variances the map's on them;
+/// then judged.
+fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
+    let (tuned, (started, squared)) = (bench.ekf.as_ref()?, bench.started.as_ref()?);
+    let filter = crate::plant::kalman::filter_code(bench.code, &tuned.constants);
+    let code = bench.code;
+    let run_restarted = |constants: &RestartConstants, run: &Run, map: &Rows| -> Rows {
+        let map: Vec<Vec<f64>> = map.iter().map(<[f64]>::to_vec).collect();
+        Rows::from(restart::estimate(
+            &filter,
+            &tuned.constants,
+            &started.p0,
+            constants,
+            &started.state_targets,
+            &map,
+            run,
+            code,
+        ))
+    };
+    let with = |threshold: f64| RestartConstants {
+        threshold,
+        variances: squared.clone(),
+    };
+    let (threshold, _) = restart::tune(|t| {
+        let constants = with(t);
+        bench.tuning_score(&bench.on_tuning(|run, map| run_restarted(&constants, run, map)))
+    });
+    let constants = with(threshold);
+    let figures = bench.judge("ekf_restart", cost::of_restarted(&filter), &|run, map, _| {
+        run_restarted(&constants, run, map)
+    });
+    bench.restart = Some(constants);
+    Some(figures)
+}

@@ -1,0 +1,28 @@
+//! `map`: the fitted map `F(Z)` alone, nothing tuned.
+
+use super::{Bench, Kind, Needs};
+use crate::observers::ObserverFigures;
+use crate::spec::ObserverKind;
+
+/// See the module's documentation.
+pub const KIND: Kind = Kind {
+    kind: ObserverKind::Map,
+    what: "the map alone",
+    observer_type: "MapObserver",
+    measured_as: "`map_observer()`",
+    legend: "map F(Z)",
+    colour: (214, 39, 40),
+    dots: true,
+    needs: Needs {
+        state_targets: false,
+        filter: false,
+        constants: &[],
+    },
+    cost_before_fit: None,
+    tune,
+};
+
+/// Judges the map: its estimates are the bench's own.
+fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
+    Some(bench.judge("map", bench.map_cost.instructions, &|_, map, _| map.clone()))
+}

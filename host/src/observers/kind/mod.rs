@@ -1,0 +1,131 @@
+//! What an observer kind is, in one place: one module per kind, each one [`Kind`] entry of
+//! [`REGISTRY`]: its name as users type it (spec, `--kind`, the report's rows), what it needs of a
+//! design, its cost model before the fit, how it is tuned on the tuning runs and judged on the others
+//! ([`Bench`]), the type a design file gives it and how the figures draw it. The comparison
+//! ([`super::compare`]), `auto` ([`super::choose`]), the check before the fit, the saved tables,
+//! `estimate`, the emitter, the on-target section and the figures read the registry; adding a kind is
+//! a module here, its entry in [`REGISTRY`] and its name in [`ObserverKind`] (plus its code on the chip).
+//!
+//! The registry's order is the order kinds are tuned in (a kind may read the constants of the kinds
+//! before it: the EKF started or restarted by the map reuses the box EKF's `Q` and `R`) and the order
+//! of the report's rows.
+
+mod corrected;
+mod ekf_box;
+mod ekf_map;
+mod ekf_restart;
+mod map;
+
+pub use bench::{map_estimates, Bench};
+
+mod bench;
+
+use crate::plant::kalman::FilterCode;
+use crate::spec::ObserverKind;
+
+use super::ObserverFigures;
+
+/// One observer kind (see the module's documentation).
+pub struct Kind {
+    /// Its name ([`ObserverKind::name`]).
+    pub kind: ObserverKind,
+    /// What it is, in a phrase ("the model-corrected map"): the emitted docs, the report.
+    pub what: &'static str,
+    /// The type a design file gives it; `Observer` is this type when `observer()` is this kind.
+    pub observer_type: &'static str,
+    /// What the on-target harness measures of it (the report's on-target section).
+    pub measured_as: &'static str,
+    /// Its legend in the figures.
+    pub legend: &'static str,
+    /// Its colour in the figures (RGB).
+    pub colour: (u8, u8, u8),
+    /// Drawn as dots (else as a line).
+    pub dots: bool,
+    /// What it needs of the design besides the map.
+    pub needs: Needs,
+    /// Its predicted instructions per steady sample from the model alone, before any fit (the EKF
+    /// kinds, whose tuned constants are non-zero literals whatever their values); `None` when the
+    /// count needs the fit ([`crate::search::cost`]).
+    pub cost_before_fit: Option<fn(&FilterCode) -> f64>,
+    /// Tunes it on the tuning runs and judges it on every set ([`Bench::judge`]), recording its
+    /// constants in the bench for the kinds after it; `None` when the design cannot have it.
+    pub tune: fn(&mut Bench<'_>) -> Option<ObserverFigures>,
+}
+
+/// What a kind needs of a design besides the map.
+#[derive(Clone, Copy, Debug)]
+pub struct Needs {
+    /// Every state as a target: the map starts, checks or corrects the model's state.
+    pub state_targets: bool,
+    /// A model the host can filter ([`super::ekf::supported`]).
+    pub filter: bool,
+    /// The tuned constants it runs on, in the saved tables (`design.json`).
+    pub constants: &'static [Constants],
+}
+
+/// A group of tuned constants, as the saved tables hold them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Constants {
+    /// The EKF's `Q`, `R`, `P0` and start (`ekf`).
+    Ekf,
+    /// The map-started EKF's `P(N−1)` and each state's target (`started`).
+    Started,
+    /// The restart's threshold and variances (`restart`).
+    Restart,
+    /// The model-corrected map's gains (`corrected`).
+    Corrected,
+}
+
+impl Constants {
+    /// Why a design's tables may lack them.
+    pub fn why_missing(self) -> &'static str {
+        match self {
+            Constants::Ekf => "the model is beyond the sizes the host filters",
+            Constants::Started => "it needs every state as a target and a model the host can filter",
+            Constants::Restart => "its tables hold no restart threshold",
+            Constants::Corrected => "it needs every state as a target and a model the host can run",
+        }
+    }
+}
+
+/// Every kind, in the order they are tuned and reported.
+pub const REGISTRY: [Kind; 5] = [
+    map::KIND,
+    ekf_box::KIND,
+    corrected::KIND,
+    ekf_map::KIND,
+    ekf_restart::KIND,
+];
+
+/// The entry of `kind` (`Auto` is not a kind a design has: the map's).
+pub fn of(kind: ObserverKind) -> &'static Kind {
+    REGISTRY.iter().find(|k| k.kind == kind).unwrap_or(&REGISTRY[0])
+}
+
+/// The entry named `name` ([`ObserverKind::name`]), if any.
+pub fn named(name: &str) -> Option<&'static Kind> {
+    REGISTRY.iter().find(|k| k.kind.name() == name)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_kind_but_auto_has_one_entry_and_the_map_comes_first() {
+        // Every variant a spec may name, by its serde name; `auto` is a choice, not a kind.
+        for name in ["map", "corrected", "ekf_map", "ekf_box", "ekf_restart"] {
+            let kind: ObserverKind = toml::Value::String(name.to_owned()).try_into().unwrap();
+            assert_eq!(REGISTRY.iter().filter(|k| k.kind == kind).count(), 1, "{name}");
+            assert_eq!(named(name).map(|k| k.kind), Some(kind));
+        }
+        assert_eq!(REGISTRY.len(), 5);
+        assert!(named("auto").is_none());
+        assert_eq!(
+            REGISTRY[0].kind,
+            ObserverKind::Map,
+            "every other kind reads the map's estimates"
+        );
+        assert_eq!(of(ObserverKind::Auto).kind, ObserverKind::Map);
+    }
+}
