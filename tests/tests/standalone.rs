@@ -334,12 +334,13 @@ fn measured_on_the_emulated_board(spec: &Path, out: &Path) {
         .collect();
     assert_eq!(
         rows,
+        // In the order of the observer kinds' registry (`host::observers::kind::REGISTRY`).
         [
             "| `map_observer()`",
+            "| `ekf()`",
             "| `CorrectedObserver`",
             "| `StartedEkfObserver`",
-            "| `RestartedEkfObserver`",
-            "| `ekf()`"
+            "| `RestartedEkfObserver`"
         ],
         "{section}"
     );

@@ -68,7 +68,7 @@ fn over_budget(design: &Design, name: &str, instructions: f64, budget: f64) -> S
 }
 
 /// The kind `observer()` is: the spec's, or for `auto` the lowest [score](score::score) on the
-/// tuning runs among the kinds within `[budget] instructions` (as [`cost`] predicts them), except
+/// tuning runs among the kinds within `[budget] instructions` (as [`cost`](crate::search::cost) predicts them), except
 /// that the cheapest kind (fewest predicted instructions) within [`CHEAPER_WITHIN`] of the best is
 /// preferred. Errors when the spec asks for a kind the design cannot have or the budget
 /// does not allow.

@@ -3,7 +3,7 @@
 //! ([`super::compare`]) and how a kind is chosen from them ([`super::choice`]), since the report, the
 //! tables and the emitter read these structs alone.
 
-use crate::data::{Rows, Run};
+use crate::data::Rows;
 use crate::spec::ObserverKind;
 
 use super::{corrected, ekf, restart};
@@ -32,14 +32,14 @@ pub struct Figures {
     /// the box of the uncertain parameters (`data::uncertain::mismatch_set`); `None` when every
     /// parameter is known.
     pub rmse_mismatch: Option<f64>,
-    /// The same per corner, in the order of [`Mismatch::corners`].
+    /// The same per corner, in the order of [`MismatchRuns::corners`](crate::data::MismatchRuns::corners).
     pub rmse_corners: Vec<f64>,
     /// RMSE over the mismatch runs replayed on the nominal plant (the model's values), when
     /// parameters are uncertain (`rmse_validation` is then over plants drawn in the box).
     pub rmse_nominal: Option<f64>,
     /// Drift over long runs on the nominal plant ([`Drift`]).
     pub drift: Drift,
-    /// The same on the plant at the last corner ([`Mismatch::scenario`]'s plant).
+    /// The same on the plant at the last corner ([`MismatchRuns::scenario`](crate::data::MismatchRuns::scenario)'s plant).
     pub drift_mismatch: Option<Drift>,
 }
 
@@ -82,25 +82,8 @@ pub struct ObserverFigures {
     pub targets: Vec<Figures>,
     /// Its estimate of every target at every sample of the scenario (NaN before its first).
     pub scenario: Rows,
-    /// The same along [`Mismatch::scenario`], when parameters are uncertain.
+    /// The same along [`MismatchRuns::scenario`](crate::data::MismatchRuns::scenario), when parameters are uncertain.
     pub mismatch_scenario: Option<Rows>,
-}
-
-/// The plants an observer with uncertain parameters is judged on besides the nominal one.
-#[derive(Clone, Debug)]
-pub struct Mismatch {
-    /// Every corner of the box of the uncertain parameters (`data::uncertain::corners`), the
-    /// parameters in the order of `Model::uncertain`.
-    pub corners: Vec<Vec<f64>>,
-    /// The names of the uncertain parameters, in that order.
-    pub names: Vec<String>,
-    /// Runs per corner (the validation set's count).
-    pub runs_per_corner: usize,
-    /// The nominal values of the uncertain parameters.
-    pub nominal: Vec<f64>,
-    /// The scenario (its initial state, inputs and noise) on the plant at the last corner, every
-    /// uncertain parameter at its `max`.
-    pub scenario: Run,
 }
 
 /// The EKF started by the map at `k = N − 1`, sharing the EKF's `Q` and `R`.
@@ -132,8 +115,6 @@ pub struct Comparison {
     /// The EKF from the box centre started instead at the scenario's `observer_x0` (the paper's
     /// `x̂(0)`): that start, and its RMSE per target over the scenario's windows.
     pub ekf_from_observer_x0: Option<(Vec<f64>, Vec<f64>)>,
-    /// The mismatch plants, when parameters are uncertain.
-    pub mismatch: Option<Mismatch>,
     /// Largest one-sample difference between the chip's model (`chip_substeps`) and the learning
     /// simulation's (`substeps`) over the validation states, per state, relative to its spread.
     pub chip_model_error: Vec<f64>,

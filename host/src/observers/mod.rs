@@ -15,7 +15,7 @@ pub mod score;
 pub mod started;
 
 pub use choice::{check_before_fit, choose};
-pub use figures::{Comparison, Drift, Figures, Mismatch, ObserverFigures, Started, TRANSIENT_TIME};
+pub use figures::{Comparison, Drift, Figures, ObserverFigures, Started, TRANSIENT_TIME};
 pub use kind::map_estimates;
 pub use score::CHEAPER_WITHIN;
 
@@ -33,13 +33,6 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         }
     }
     let chosen = choose(design, &bench.observers, &bench.spreads)?;
-    let mismatch = result.runs.mismatch.as_ref().map(|m| Mismatch {
-        names: design.model.uncertain.iter().map(|u| u.name.clone()).collect(),
-        runs_per_corner: design.validation.trajectories,
-        nominal: m.nominal.clone(),
-        corners: m.corners.clone(),
-        scenario: m.scenario.clone(),
-    });
     Ok(Comparison {
         observers: bench.observers,
         started: bench.started.map(|(started, _)| started),
@@ -49,7 +42,6 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         corrected: bench.corrected,
         chip_model_error: chip_model_error(design, result),
         ekf_from_observer_x0: bench.ekf_from_observer_x0,
-        mismatch,
     })
 }
 

@@ -135,11 +135,11 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             .iter()
             .map(ToString::to_string)
             .collect(),
-        mismatch: comparison.mismatch.as_ref().map(|m| MismatchReport {
+        mismatch: result.runs.mismatch.as_ref().map(|m| MismatchReport {
             plants: MISMATCH_PLANTS,
-            parameters: m.names.clone(),
+            parameters: design.model.uncertain.iter().map(|u| u.name.clone()).collect(),
             corners: m.corners.clone(),
-            runs_per_corner: m.runs_per_corner,
+            runs_per_corner: design.validation.trajectories,
             nominal: m.nominal.clone(),
         }),
         search: None,

@@ -36,11 +36,14 @@ pub(super) fn estimation(
     let horizon = design.map.horizon;
     let first = (horizon - 1) as f64 * design.tau;
     let start_up = first + (crate::observers::corrected::START_UP_HORIZONS * horizon) as f64 * design.tau;
-    let plant = match (&comparison.mismatch, on_mismatch) {
+    let plant = match (&result.runs.mismatch, on_mismatch) {
         (Some(m), true) => format!(
             " on the plant at {}",
-            m.names
+            design
+                .model
+                .uncertain
                 .iter()
+                .map(|u| &u.name)
                 .zip(m.corners.last().into_iter().flatten())
                 .map(|(n, v)| format!("{n} = {v}"))
                 .collect::<Vec<_>>()

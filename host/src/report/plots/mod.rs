@@ -121,7 +121,7 @@ pub fn draw(
         false,
         folder,
     )?);
-    if let Some(m) = &comparison.mismatch {
+    if let Some(m) = &result.runs.mismatch {
         files.extend(estimation(design, result, comparison, &m.scenario, true, folder)?);
     }
     files.extend(validation(design, result, folder)?);
