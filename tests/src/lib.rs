@@ -1,6 +1,7 @@
 //! Shared helpers of the integration tests: the shipped specs and designs built from them.
 
 pub mod chip_table;
+pub mod doc_numbers;
 pub mod on_target;
 
 use std::collections::HashMap;

@@ -11,6 +11,7 @@ use integration_tests::{build, shipped_specs, workspace_root, SEARCHED_FIXTURE_S
 fn generated_files_match_a_fresh_generation() {
     let specs = shipped_specs();
     let mut names = Vec::new();
+    let mut reports = String::new();
     for path in &specs {
         // `gen`'s own function, twice: the text must not depend on the run.
         let emit = || {
@@ -34,8 +35,10 @@ fn generated_files_match_a_fresh_generation() {
             the_readme_figure_is_current(&first);
             the_readme_table_is_current(&first);
         }
+        reports.push_str(&figures_of(&first));
         names.push(name);
     }
+    the_docs_numbers_are_current(&reports);
     let lib = std::fs::read_to_string(workspace_root().join("generated/src/lib.rs")).unwrap();
     assert_eq!(
         lib,
@@ -46,6 +49,46 @@ fn generated_files_match_a_fresh_generation() {
         )
         .unwrap(),
         "generated/src/lib.rs must declare exactly the shipped designs: regenerate, and delete files of removed specs"
+    );
+}
+
+/// The figures of `emitted`'s report as `gen` writes it: `report.md`, and `report.json` without the
+/// fitted coefficients (thousands of numbers, none quoted, that any figure would match by chance).
+fn figures_of(emitted: &generate::Emitted) -> String {
+    let mut report = host::report::report(&emitted.design, &emitted.result, &emitted.comparison);
+    report.search = emitted.search.as_ref();
+    report.taps = emitted.taps.as_deref();
+    let (json, markdown) = host::report::texts(&report);
+    let mut json: serde_json::Value = serde_json::from_str(&json).unwrap();
+    for target in json["targets"].as_array_mut().unwrap() {
+        target.as_object_mut().unwrap().remove("fitted");
+    }
+    format!("{markdown}\n{json}\n")
+}
+
+/// Every figure with three decimals or more that the README and `docs/` quote is one of a fresh
+/// report (`reports`) or of the on-target table, or is listed as from elsewhere
+/// ([`integration_tests::doc_numbers`]).
+fn the_docs_numbers_are_current(reports: &str) {
+    let read = |name: &str| std::fs::read_to_string(workspace_root().join(name)).unwrap();
+    let docs: Vec<(&str, String)> = [
+        "README.md",
+        "docs/guide.md",
+        "docs/method.md",
+        "docs/chip.md",
+        "docs/benchmarks.md",
+    ]
+    .into_iter()
+    .map(|name| (name, read(name)))
+    .collect();
+    let computed = integration_tests::doc_numbers::roundings(&format!("{reports}\n{}", read("docs/chip.md")));
+    let (unknown, gone) =
+        integration_tests::doc_numbers::stale(&docs, &computed, &read("tests/doc-numbers-elsewhere.txt"));
+    assert!(
+        unknown.is_empty() && gone.is_empty(),
+        "numbers the docs quote that no fresh report holds (update the docs from target/designs/*/report.md, or list \
+         one from elsewhere in tests/doc-numbers-elsewhere.txt with why): {unknown:?}; listed there but no longer \
+         quoted (delete those lines): {gone:?}"
     );
 }
 
