@@ -19,8 +19,9 @@
 //!
 //! 1. [`spec`]: a TOML design (model as expressions, sample time, state box, noise, map settings)
 //!    parsed and validated into a [`spec::Design`]; every problem names the file, field and fix.
-//! 2. [`data`]: learning runs from a grid of initial states and validation runs from fresh random
-//!    ones, simulated by RK4 ([`data::simulate`]), cut into windows `(Z, r)`.
+//! 2. [`data`]: every run of a design simulated once by RK4 ([`data::simulate`]) into one value,
+//!    [`data::Runs`] (learning runs from a grid of initial states; tuning, validation, scenario,
+//!    long and mismatch runs from their own seeds), cut into windows `(Z, r)`.
 //! 3. [`fit`]: per target, the constrained least squares ([`fit::identify`]: streamed QR, elimination
 //!    of `L`, whitening, Clarabel through [`fit::qp`], monotonicity checked on a fine grid), the
 //!    certified table of `Γ⁻¹` ([`fit::inverse_table`]), the fitted map ([`fit::maps`], evaluated by
@@ -29,7 +30,9 @@
 //! 4. [`emit`]: the `generated` crate's Rust source (f32 tables, straight-line code), written only
 //!    after the f32 evaluation is checked against the f64 one on every validation window
 //!    ([`emit::precision`]).
-//! 5. [`report`]: JSON and Markdown reports and the paper's figures.
+//! 5. [`observers`]: every observer kind of the registry ([`observers::kind`]) tuned on the tuning
+//!    runs and judged on the others, and the kind `observer()` is.
+//! 6. [`report`]: JSON and Markdown reports and the paper's figures, each figure's set of runs named.
 //!
 //! [`generate`] runs the whole job (`mho gen`) into the project's `generated/` crate, [`standalone`]
 //! writes a user's design as a crate of its own (`mho gen --spec`), [`search`] chooses `N`, `n_m`, `β`

@@ -1,8 +1,9 @@
-//! Every observer of a design judged on the same data: the fitted map and its peer, an extended Kalman
-//! filter over the model ([`ekf`]), each target's error on the validation runs, the scenario (whole,
-//! and its transient) and the tuning runs. The EKF's constants are chosen on the tuning runs only; the
-//! map's were fitted on the learning runs only, so the validation and scenario figures are on data
-//! neither saw.
+//! Every observer of a design judged on the same data: each kind of the registry ([`kind`]: the map,
+//! the EKF over the model ([`ekf`]) from the box centre, the model-corrected map ([`corrected`]), the
+//! EKF started or restarted by the map) tuned in its order, and each target's error on the validation
+//! runs, the scenario (whole, and its transient), its noise draws, the long and mismatch runs and the
+//! tuning runs. Every constant is chosen on the tuning runs only; the maps were fitted on the learning
+//! runs only, so every other figure is on data neither saw.
 
 pub mod choice;
 pub mod corrected;
