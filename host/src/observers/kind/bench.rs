@@ -105,7 +105,7 @@ impl<'a> Bench<'a> {
         &self.maps.tuning
     }
 
-    /// `estimate(run, map, is_scenario)` on every tuning run (`map`: the map's estimates on `run`).
+    /// `estimate(run, map)` on every tuning run (`map`: the map's estimates on `run`).
     pub fn on_tuning(&self, estimate: impl Fn(&Run, &Rows) -> Rows) -> Vec<Rows> {
         let runs = &self.result.runs.tuning.runs;
         runs.iter()
@@ -119,46 +119,42 @@ impl<'a> Bench<'a> {
         score::of_estimates(&self.result.runs.tuning.runs, estimates, &self.spreads, self.windows())
     }
 
-    /// One kind's figures on every set: `estimate(run, map, is_scenario)` is its estimate of every
-    /// target at every sample of `run` (`map`: the map's estimates on `run`; a scenario's EKF starts
-    /// from `scenario.observer_x0`).
+    /// One kind's figures on every set: `estimate(run, map)` is its estimate of every target at every
+    /// sample of `run` (`map`: the map's estimates on `run`), every run from where the kind starts on
+    /// the chip.
     pub fn judge(
         &self,
         kind: &'static str,
         instructions: f64,
-        estimate: &dyn Fn(&Run, &Rows, bool) -> Rows,
+        estimate: &dyn Fn(&Run, &Rows) -> Rows,
     ) -> ObserverFigures {
         let runs = &self.result.runs;
         let maps = &self.maps;
         let horizon = self.design.map.horizon;
         let windows = self.windows();
-        let on = |set: &DataSet, maps: &[Rows], is_scenario: bool| -> Vec<Rows> {
-            set.runs
-                .iter()
-                .zip(maps)
-                .map(|(r, m)| estimate(r, m, is_scenario))
-                .collect()
+        let on = |set: &DataSet, maps: &[Rows]| -> Vec<Rows> {
+            set.runs.iter().zip(maps).map(|(r, m)| estimate(r, m)).collect()
         };
-        let validation = on(&runs.validation, &maps.validation, false);
-        let scenario = estimate(&runs.scenario, &maps.scenario, true);
-        let on_tuning = on(&runs.tuning, &maps.tuning, false);
+        let validation = on(&runs.validation, &maps.validation);
+        let scenario = estimate(&runs.scenario, &maps.scenario);
+        let on_tuning = on(&runs.tuning, &maps.tuning);
         let on_draws: Option<Vec<Rows>> = runs
             .scenario_draws
             .as_ref()
             .zip(maps.draws.as_ref())
-            .map(|(d, m)| on(d, m, true));
+            .map(|(d, m)| on(d, m));
         let on_mismatch: Option<[Vec<Rows>; 3]> =
             runs.mismatch
                 .as_ref()
                 .zip(maps.mismatch.as_ref())
                 .map(|(m, (on_m, _))| {
                     [
-                        on(&m.corners_set, &on_m[0], false),
-                        on(&m.nominal_set, &on_m[1], false),
-                        on(&m.long, &on_m[2], false),
+                        on(&m.corners_set, &on_m[0]),
+                        on(&m.nominal_set, &on_m[1]),
+                        on(&m.long, &on_m[2]),
                     ]
                 });
-        let on_long = on(&runs.long, &maps.long, false);
+        let on_long = on(&runs.long, &maps.long);
         let long_samples = Drift::long_samples(self.design);
         let start_up = horizon - 1 + corrected::START_UP_HORIZONS * horizon;
         let window = self.design.validation.samples;
@@ -221,7 +217,7 @@ impl<'a> Bench<'a> {
                 .mismatch
                 .as_ref()
                 .zip(maps.mismatch.as_ref())
-                .map(|(m, (_, map))| estimate(&m.scenario, map, true)),
+                .map(|(m, (_, map))| estimate(&m.scenario, map)),
             scenario,
         }
     }

@@ -41,7 +41,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let figures = bench.judge(
         "corrected",
         cost::of_corrected(&programs, &bench.map_cost),
-        &|run, map, _| corrected::estimate_rows(&setting, &programs, &tuned.constants, map, run),
+        &|run, map| corrected::estimate_rows(&setting, &programs, &tuned.constants, map, run),
     );
     bench.corrected = Ok(tuned);
     Some(figures)

@@ -40,7 +40,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let tuned = ekf::tune(design, code, &random, &runs.learning, &bench.spreads)?;
     let centre = ekf::box_centre(design);
     let filter = crate::plant::kalman::filter_code(code, &tuned.constants);
-    let figures = bench.judge("ekf_box", cost::of_ekf(&filter), &|run, _, _| {
+    let figures = bench.judge("ekf_box", cost::of_ekf(&filter), &|run, _| {
         ekf::estimate_run(code, &tuned.constants, &centre, run).expect("size checked by tune")
     });
     if let Some(x0) = design.scenario.as_ref().and_then(|s| s.observer_x0.clone()) {

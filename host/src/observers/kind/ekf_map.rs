@@ -52,7 +52,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
         bench.tuning_score(&bench.on_tuning(|run, map| run_started(&p0, run, map)))
     });
     let p0 = scaled(factor);
-    let figures = bench.judge("ekf_map", cost::of_started(&filter), &|run, map, _| {
+    let figures = bench.judge("ekf_map", cost::of_started(&filter), &|run, map| {
         run_started(&p0, run, map)
     });
     let started = Started {

@@ -55,7 +55,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
         bench.tuning_score(&bench.on_tuning(|run, map| run_restarted(&constants, run, map)))
     });
     let constants = with(threshold);
-    let figures = bench.judge("ekf_restart", cost::of_restarted(&filter), &|run, map, _| {
+    let figures = bench.judge("ekf_restart", cost::of_restarted(&filter), &|run, map| {
         run_restarted(&constants, run, map)
     });
     bench.restart = Some(constants);

@@ -24,5 +24,5 @@ pub const KIND: Kind = Kind {
 
 /// Judges the map: its estimates are the bench's own.
 fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
-    Some(bench.judge("map", bench.map_cost.instructions, &|_, map, _| map.clone()))
+    Some(bench.judge("map", bench.map_cost.instructions, &|_, map| map.clone()))
 }
