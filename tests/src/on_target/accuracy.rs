@@ -71,12 +71,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
     use host::plant::kalman::filter_code;
     use host::plant::ModelCode;
 
-    let path = crate::shipped_specs()
-        .into_iter()
-        .find(|p| host::spec::load(p).is_ok_and(|d| d.name == name))
-        .ok_or_else(|| format!("no shipped spec for {name}"))?;
-    let design = crate::settled(host::spec::load(&path).map_err(|e| e.to_string())?);
-    let result = crate::build(&design);
+    let (design, result) = shipped_build(name)?;
     let code = ModelCode::new(&design).map_err(|e| e.to_string())?;
     let state_targets = corrected::state_targets(&design)?;
     let first = design.map.horizon - 1;
@@ -221,12 +216,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
 /// Compares the target's estimates of design `name` with the host's f64 library estimates on the
 /// same recorded sequence, by [`host::emit::precision::compare`]; returns the largest `|target - host|`.
 pub fn compare_with_library(name: &str, measured: &ObserverMeasurement) -> Result<f64, String> {
-    let path = crate::shipped_specs()
-        .into_iter()
-        .find(|p| host::spec::load(p).is_ok_and(|d| d.name == name))
-        .ok_or_else(|| format!("no shipped spec for {name}"))?;
-    let design = crate::settled(host::spec::load(&path).map_err(|e| e.to_string())?);
-    let result = crate::build(&design);
+    let (design, result) = shipped_build(name)?;
     let rows = host::emit::recorded_sequence(&result.runs.scenario);
     if rows.len() != measured.samples.len() {
         return Err(format!(
@@ -284,4 +274,15 @@ pub fn compare_with_library(name: &str, measured: &ObserverMeasurement) -> Resul
         }
     }
     Ok(largest)
+}
+
+/// The shipped design `name` as `gen` emits it (its search settled) and its build, shared across tests.
+fn shipped_build(name: &str) -> Result<(host::spec::Design, std::sync::Arc<host::fit::DesignResult>), String> {
+    let path = crate::shipped_specs()
+        .into_iter()
+        .find(|p| host::spec::load(p).is_ok_and(|d| d.name == name))
+        .ok_or_else(|| format!("no shipped spec for {name}"))?;
+    let design = crate::settled(host::spec::load(&path).map_err(|e| e.to_string())?);
+    let result = crate::build(&design);
+    Ok((design, result))
 }
