@@ -71,6 +71,7 @@ pub mod inverse;
 pub mod map;
 pub mod maths;
 pub mod matrix;
+pub mod mhe;
 pub mod model;
 pub mod observer;
 pub mod restarted;

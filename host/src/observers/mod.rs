@@ -10,6 +10,8 @@ pub mod corrected;
 pub mod ekf;
 pub mod figures;
 pub mod kind;
+pub mod mhe;
+pub mod particles;
 pub mod recorded;
 pub mod restart;
 pub mod score;

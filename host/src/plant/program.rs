@@ -143,4 +143,66 @@ impl Program {
         }
         self.results.iter().map(|&r| values[r]).collect()
     }
+    /// [`Program::eval`] in `f64` at `count` points at once, one operation for every point before the
+    /// next (the interpreter's dispatch paid once per operation, not once per point: the particle
+    /// filter's propagation): `states[i][p]` is state `i` of point `p`, the inputs are shared, and
+    /// `results[r][p]` receives result `r` at point `p`. Each point's values are bit for bit
+    /// [`Program::eval`]'s.
+    pub fn eval_many(
+        &self,
+        parameters: &[(String, f64)],
+        states: &[Vec<f64>],
+        u: &[f64],
+        values: &mut Vec<f64>,
+        results: &mut [Vec<f64>],
+    ) {
+        let count = states.first().map_or(0, Vec::len);
+        values.clear();
+        values.resize(self.ops.len() * count, 0.0);
+        for (i, op) in self.ops.iter().enumerate() {
+            let (done, rest) = values.split_at_mut(i * count);
+            let out = &mut rest[..count];
+            let column = |a: usize| &done[a * count..(a + 1) * count];
+            match *op {
+                Op::Number(v) => out.fill(v),
+                Op::Leaf(Leaf::Parameter(k)) => out.fill(parameters[k].1),
+                Op::Leaf(Leaf::State(k)) => out.copy_from_slice(&states[k]),
+                Op::Leaf(Leaf::Input(k)) => out.fill(u[k]),
+                Op::Leaf(_) => out.fill(f64::NAN), // a model's program reads no other leaf
+                Op::Negate(a) => out.iter_mut().zip(column(a)).for_each(|(o, &a)| *o = -a),
+                Op::Binary(binary, a, b) => {
+                    for ((o, &a), &b) in out.iter_mut().zip(column(a)).zip(column(b)) {
+                        *o = binary.apply(a, b);
+                    }
+                }
+                Op::Call(f, a) => out
+                    .iter_mut()
+                    .zip(column(a))
+                    .for_each(|(o, &a)| *o = crate::spec::ast::call(f, a)),
+                Op::AtLeast(a, b) => {
+                    for ((o, &a), &b) in out.iter_mut().zip(column(a)).zip(column(b)) {
+                        *o = firmware::bounds::at_least(a, b);
+                    }
+                }
+                Op::AtMost(a, b) => {
+                    for ((o, &a), &b) in out.iter_mut().zip(column(a)).zip(column(b)) {
+                        *o = firmware::bounds::at_most(a, b);
+                    }
+                }
+            }
+        }
+        for (out, &r) in results.iter_mut().zip(&self.results) {
+            out.clear();
+            out.extend_from_slice(&values[r * count..(r + 1) * count]);
+        }
+    }
+
+    /// The program of the first `results` results only, pruned (e.g. `f` without its Jacobian).
+    #[must_use]
+    pub fn first_results(&self, results: usize) -> Program {
+        let mut program = self.clone();
+        program.results.truncate(results);
+        program.prune();
+        program
+    }
 }

@@ -174,3 +174,24 @@ fn what_cannot_be_emitted_is_refused_with_its_field() {
     assert_eq!(error.field, "model.derivatives.c");
     assert!(error.construct.contains("add parentheses"), "{error}");
 }
+
+#[test]
+fn many_points_at_once_are_bit_for_bit_one_at_a_time() {
+    let design = design();
+    let code = ModelCode::new(&design).unwrap();
+    let f = code.derivative.first_results(3);
+    assert!(f.ops.len() < code.derivative.ops.len(), "nothing pruned");
+    let points: Vec<([f64; 3], [f64; 1])> = points().collect();
+    let u = [0.3];
+    let states: Vec<Vec<f64>> = (0..3).map(|i| points.iter().map(|(x, _)| x[i]).collect()).collect();
+    for program in [&f, &code.output, &code.targets] {
+        let mut results = vec![Vec::new(); program.results.len()];
+        program.eval_many(&code.parameters, &states, &u, &mut Vec::new(), &mut results);
+        for (p, (x, _)) in points.iter().enumerate() {
+            let one = program.eval(&code.parameters, x, &u, &mut Vec::new());
+            for (r, value) in one.iter().enumerate() {
+                assert_eq!(results[r][p].to_bits(), value.to_bits(), "point {p}, result {r}");
+            }
+        }
+    }
+}

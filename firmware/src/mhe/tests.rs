@@ -1,0 +1,141 @@
+//! The normal equations against independent truth: on a linear plant one Gauss–Newton step from any
+//! start is the least-squares solution of the stacked observability system (solved by nalgebra's
+//! SVD); on a nonlinear plant the gradient is the finite-difference derivative of the cost. The
+//! Cholesky solve against nalgebra's LU.
+
+use nalgebra::{Matrix2, Matrix3, SMatrix, SVector, Vector2, Vector3};
+
+use super::*;
+
+/// `x⁺ = A x + (0, 0.1 u)`, `y = (x₁, x₁ + x₂)`.
+struct Linear;
+
+fn a() -> Matrix2<f64> {
+    Matrix2::new(1.0, 0.1, -0.2, 0.95)
+}
+
+impl Plant<f64, 2, 2, 1> for Linear {
+    fn step(&self, x: &[f64; 2], u: &[f64; 1]) -> ([f64; 2], [[f64; 2]; 2]) {
+        let m = a();
+        let next = m * Vector2::new(x[0], x[1]) + Vector2::new(0.0, 0.1 * u[0]);
+        ([next[0], next[1]], [[m[(0, 0)], m[(0, 1)]], [m[(1, 0)], m[(1, 1)]]])
+    }
+    fn output(&self, x: &[f64; 2], _: &[f64; 1]) -> ([f64; 2], [[f64; 2]; 2]) {
+        ([x[0], x[0] + x[1]], [[1.0, 0.0], [1.0, 1.0]])
+    }
+}
+
+/// The Van der Pol oscillator of the paper's Example 1, one explicit Euler step of 0.1: nonlinear.
+struct VanDerPol;
+
+impl Plant<f64, 2, 1, 0> for VanDerPol {
+    fn step(&self, x: &[f64; 2], _: &[f64; 0]) -> ([f64; 2], [[f64; 2]; 2]) {
+        let h = 0.1;
+        let (x1, x2) = (x[0], x[1]);
+        (
+            [x1 - h * x2, x2 + h * (4.0 * x1 + (1.0 - x1 * x1) * x2)],
+            [[1.0, -h], [h * (4.0 - 2.0 * x1 * x2), 1.0 + h * (1.0 - x1 * x1)]],
+        )
+    }
+    fn output(&self, x: &[f64; 2], _: &[f64; 0]) -> ([f64; 1], [[f64; 2]; 1]) {
+        ([x[0] + x[1]], [[1.0, 1.0]])
+    }
+}
+
+fn window() -> (Vec<[f64; 2]>, Vec<[f64; 1]>) {
+    let ys = (0..8).map(|k| [(k as f64 * 0.7).sin(), (k as f64 * 0.3).cos()]).collect();
+    let us = (0..8).map(|k| [(k as f64 * 0.5).cos()]).collect();
+    (ys, us)
+}
+
+#[test]
+fn one_step_on_a_linear_plant_is_the_weighted_least_squares_solution() {
+    let (ys, us) = window();
+    let weights = [2.0_f64, 0.5];
+    // The stacked system: y(j) − C Σ_{m<j} A^{j−1−m} B u(m) = C A^j x, rows weighted by √w.
+    let (m, b, c) = (a(), Vector2::new(0.0, 0.1), nalgebra::Matrix2::new(1.0, 0.0, 1.0, 1.0));
+    let mut o = SMatrix::<f64, 16, 2>::zeros();
+    let mut rhs = SVector::<f64, 16>::zeros();
+    let (mut power, mut forced) = (Matrix2::identity(), Vector2::zeros());
+    for (j, y) in ys.iter().enumerate() {
+        if j > 0 {
+            forced = m * forced + b * us[j - 1][0];
+            power = m * power;
+        }
+        let block = c * power;
+        let free = c * forced;
+        for i in 0..2 {
+            let s = weights[i].sqrt();
+            o[(2 * j + i, 0)] = s * block[(i, 0)];
+            o[(2 * j + i, 1)] = s * block[(i, 1)];
+            rhs[2 * j + i] = s * (y[i] - free[i]);
+        }
+    }
+    let expected = o.svd(true, true).solve(&rhs, 1e-14).unwrap();
+    let start = [3.0, -2.0];
+    let normal = normal_equations(&Linear, &start, ys.iter().zip(&us), &weights);
+    let step = solve_cholesky(&normal.matrix, &normal.gradient).unwrap();
+    for i in 0..2 {
+        assert!((start[i] + step[i] - expected[i]).abs() < 1e-10, "{i}: {step:?} {expected}");
+    }
+    // And the cost at the start is the stacked residual's squared norm.
+    let residual = &rhs - &o * Vector2::new(start[0], start[1]);
+    assert!((normal.cost - residual.norm_squared()).abs() < 1e-9 * normal.cost);
+    // The end is the start propagated N − 1 steps.
+    let mut x = start;
+    for u in &us[..us.len() - 1] {
+        x = Linear.step(&x, u).0;
+    }
+    assert_eq!(normal.end, x);
+}
+
+#[test]
+fn the_gradient_is_the_finite_difference_derivative_of_the_cost() {
+    let ys: Vec<[f64; 1]> = (0..10).map(|k| [(k as f64 * 0.4).sin() * 2.0]).collect();
+    let us = [[0.0_f64; 0]; 10];
+    let weights = [1.0 / 0.2];
+    let cost = |x: [f64; 2]| normal_equations(&VanDerPol, &x, ys.iter().zip(&us), &weights).cost;
+    let x = [0.7, -1.3];
+    let normal = normal_equations(&VanDerPol, &x, ys.iter().zip(&us), &weights);
+    for i in 0..2 {
+        let h = 1e-6;
+        let (mut up, mut down) = (x, x);
+        up[i] += h;
+        down[i] -= h;
+        // dC/dx = −2 Σ Jᵀ W r.
+        let numeric = (cost(up) - cost(down)) / (2.0 * h);
+        let analytic = -2.0 * normal.gradient[i];
+        assert!(
+            (numeric - analytic).abs() < 1e-6 * (1.0 + analytic.abs()),
+            "{i}: {numeric} vs {analytic}"
+        );
+    }
+}
+
+#[test]
+fn a_refused_measurement_adds_nothing() {
+    let (mut ys, us) = window();
+    let weights = [1.0, 1.0];
+    let whole = normal_equations(&Linear, &[0.1, 0.2], ys.iter().zip(&us), &weights);
+    let (first, _) = Linear.output(&[0.1, 0.2], &us[0]);
+    ys[0][1] = f64::NAN;
+    let refused = normal_equations(&Linear, &[0.1, 0.2], ys.iter().zip(&us), &weights);
+    let r = window().0[0][1] - first[1];
+    assert!((whole.cost - refused.cost - r * r).abs() < 1e-12);
+    assert!(refused.cost.is_finite() && refused.gradient.iter().all(|v| v.is_finite()));
+}
+
+#[test]
+fn cholesky_solves_as_an_lu_does_and_refuses_an_indefinite_matrix() {
+    let m = Matrix3::new(4.0, 1.0, -0.5, 1.0, 3.0, 0.2, -0.5, 0.2, 2.0);
+    let b = Vector3::new(1.0, -2.0, 0.5);
+    let expected = m.lu().solve(&b).unwrap();
+    let rows: [[f64; 3]; 3] = core::array::from_fn(|r| core::array::from_fn(|c| m[(r, c)]));
+    let x = solve_cholesky(&rows, &[b[0], b[1], b[2]]).unwrap();
+    for i in 0..3 {
+        assert!((x[i] - expected[i]).abs() < 1e-14, "{x:?} {expected}");
+    }
+    let indefinite = [[1.0, 2.0], [2.0, 1.0]];
+    assert_eq!(solve_cholesky(&indefinite, &[1.0, 1.0]), None);
+    assert_eq!(solve_cholesky(&[[f64::NAN]], &[1.0]), None);
+}
