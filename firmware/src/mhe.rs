@@ -85,11 +85,11 @@ where
             }
             let w = weights[i];
             normal.cost += w * residual * residual;
-            for a in 0..NX {
-                let weighted = w * row[a];
+            for (a, &ra) in row.iter().enumerate() {
+                let weighted = w * ra;
                 normal.gradient[a] += weighted * residual;
-                for b in 0..NX {
-                    normal.matrix[a][b] += weighted * row[b];
+                for (entry, &rb) in normal.matrix[a].iter_mut().zip(&row) {
+                    *entry += weighted * rb;
                 }
             }
         }
@@ -108,7 +108,7 @@ fn identity<T: Scalar>(r: usize, c: usize) -> T {
 
 /// `x` with `A x = b` for a symmetric positive definite `A`, by the Cholesky factorisation `A = G Gᵀ`
 /// (`n` square roots and `n` divisions); `None` when a pivot is not positive (or not finite).
-#[allow(clippy::neg_cmp_op_on_partial_ord)] // `!(pivot > 0)`: a NaN pivot is not positive either.
+#[allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)] // the textbook's indices // `!(pivot > 0)`: a NaN pivot is not positive either.
 pub fn solve_cholesky<T: Scalar, const N: usize>(a: &[[T; N]; N], b: &[T; N]) -> Option<[T; N]> {
     let mut g = [[T::ZERO; N]; N];
     let mut inverse_diagonal = [T::ZERO; N];

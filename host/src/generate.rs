@@ -227,6 +227,9 @@ pub struct Prepared {
     pub report: (String, String),
     /// The report's table (Markdown).
     pub table: String,
+    /// Where the observers stand between the on-line MHE and the floor, in sentences
+    /// ([`reporting::references::verdict`]).
+    pub verdict: String,
     /// Learning windows (`n_E`).
     pub learning_windows: usize,
     /// Validation windows.
@@ -258,6 +261,7 @@ pub(crate) fn prepare(
         warnings: reporting::gates::check(&emitted.design, &emitted.result, &emitted.comparison),
         report: reporting::texts(&report),
         table: format!("{}\n{}", reporting::table(&report), reporting::observers_table(&report)),
+        verdict: reporting::references::verdict(&report),
         learning_windows: report.learning.windows,
         validation_windows: report.validation.windows,
         folder,

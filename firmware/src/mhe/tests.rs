@@ -43,7 +43,9 @@ impl Plant<f64, 2, 1, 0> for VanDerPol {
 }
 
 fn window() -> (Vec<[f64; 2]>, Vec<[f64; 1]>) {
-    let ys = (0..8).map(|k| [(k as f64 * 0.7).sin(), (k as f64 * 0.3).cos()]).collect();
+    let ys = (0..8)
+        .map(|k| [(k as f64 * 0.7).sin(), (k as f64 * 0.3).cos()])
+        .collect();
     let us = (0..8).map(|k| [(k as f64 * 0.5).cos()]).collect();
     (ys, us)
 }
@@ -76,10 +78,13 @@ fn one_step_on_a_linear_plant_is_the_weighted_least_squares_solution() {
     let normal = normal_equations(&Linear, &start, ys.iter().zip(&us), &weights);
     let step = solve_cholesky(&normal.matrix, &normal.gradient).unwrap();
     for i in 0..2 {
-        assert!((start[i] + step[i] - expected[i]).abs() < 1e-10, "{i}: {step:?} {expected}");
+        assert!(
+            (start[i] + step[i] - expected[i]).abs() < 1e-10,
+            "{i}: {step:?} {expected}"
+        );
     }
     // And the cost at the start is the stacked residual's squared norm.
-    let residual = &rhs - &o * Vector2::new(start[0], start[1]);
+    let residual = rhs - o * Vector2::new(start[0], start[1]);
     assert!((normal.cost - residual.norm_squared()).abs() < 1e-9 * normal.cost);
     // The end is the start propagated N − 1 steps.
     let mut x = start;

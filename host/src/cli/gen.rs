@@ -198,6 +198,9 @@ fn print_summary(prepared: &generate::Prepared, verbose: bool) {
     if chosen != "map" {
         println!("  the map alone: validation RMSE {}", rmse("map"));
     }
+    for sentence in prepared.verdict.split("\n\n").map(str::trim).filter(|s| !s.is_empty()) {
+        println!("  {sentence}");
+    }
     for warning in &prepared.warnings {
         println!("  warning: {warning}");
     }

@@ -102,6 +102,9 @@ pub struct Started {
 pub struct Comparison {
     /// The map first, then the EKF when the host could run one.
     pub observers: Vec<ObserverFigures>,
+    /// The host-only references: the on-line moving-horizon estimate and the particle floor
+    /// ([`super::references`]); empty when the model is beyond the host's sizes.
+    pub references: Vec<super::references::Reference>,
     /// The tuned EKF (`None` when the model is beyond the host's sizes, [`ekf::supported`]).
     pub ekf: Option<ekf::Tuned>,
     /// The tuned model-corrected map, or why the design cannot have one.

@@ -5,8 +5,10 @@
 //! problem ([`firmware::mhe`]): the start `x` minimising the noise-weighted output error (weights
 //! `1/σ²`), inside the box the learning runs cover (the learning box widened to every learning state,
 //! intersected with the physical bounds), propagated to the window's end by the model the observers
-//! carry (the chip's RK4 substeps); the estimate is the targets at `x(N−1)`. [`solve`] minimises it by
-//! projected Levenberg–Marquardt:
+//! carry (the chip's RK4 substeps); the estimate is the targets at `x(N−1)`, projected onto the same
+//! box (the textbook MHE bounds every state of the window; this bounds the first and the last, as a
+//! chip would: a start on the box's edge may otherwise be carried by a coarse model step far
+//! outside). [`solve`] minimises it by projected Levenberg–Marquardt:
 //!
 //! * the first window of a run from [`starts`] (the box centre and points a quarter inside its
 //!   corners) against local minima, keeping the best;
@@ -28,7 +30,7 @@ use crate::spec::{Axis, Design};
 use super::ekf::{Stepped, MAX_INPUTS, MAX_OUTPUTS, MAX_STATES};
 
 /// The prior's weights tried on the tuning runs (`p`, on states normalised by their spread).
-pub const PRIOR_WEIGHTS: [f64; 7] = [1e-3, 1e-2, 1e-1, 1.0, 1e1, 1e2, 1e3];
+pub const PRIOR_WEIGHTS: [f64; 9] = [1e-3, 1e-2, 1e-1, 1.0, 1e1, 1e2, 1e3, 1e4, 1e5];
 
 /// Whether the prior is on, and its weight.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -242,7 +244,9 @@ impl<'a> Setup<'a> {
                 Some(centre) => {
                     problem.prior = match prior {
                         Prior::None => None,
-                        Prior::Weight(p) => Some((centre, std::array::from_fn(|i| p / (self.spreads[i] * self.spreads[i])))),
+                        Prior::Weight(p) => {
+                            Some((centre, std::array::from_fn(|i| p / (self.spreads[i] * self.spreads[i]))))
+                        }
                     };
                     solve::minimise(&plant, &problem, window, &centre)
                 }
@@ -266,7 +270,8 @@ impl<'a> Setup<'a> {
             solved.seconds.push(clock.elapsed().as_secs_f64());
             solved.iterations.push(best.iterations);
             previous = Some(best.start);
-            solved.rows.push(&self.code.targets(&best.end, &run.inputs[k], &mut scratch));
+            let end = firmware::bounds::project(&best.end, &lower, &upper);
+            solved.rows.push(&self.code.targets(&end, &run.inputs[k], &mut scratch));
         }
         solved
     }
@@ -279,7 +284,10 @@ pub fn tune_prior(setup: &Setup<'_>, tuning: &[Run], score: impl Fn(&[Rows]) -> 
     PRIOR_WEIGHTS
         .iter()
         .map(|&p| {
-            let rows: Vec<Rows> = tuning.par_iter().map(|run| setup.run(Prior::Weight(p), run).rows).collect();
+            let rows: Vec<Rows> = tuning
+                .par_iter()
+                .map(|run| setup.run(Prior::Weight(p), run).rows)
+                .collect();
             (p, score(&rows))
         })
         .min_by(|a, b| a.1.total_cmp(&b.1))

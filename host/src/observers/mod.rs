@@ -13,6 +13,7 @@ pub mod kind;
 pub mod mhe;
 pub mod particles;
 pub mod recorded;
+pub mod references;
 pub mod restart;
 pub mod score;
 pub mod started;
@@ -36,7 +37,9 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         }
     }
     let chosen = choose(design, &bench.observers, &bench.spreads)?;
+    let references = references::measure(&bench);
     Ok(Comparison {
+        references,
         observers: bench.observers,
         started: bench.started.map(|(started, _)| started),
         restart: bench.restart,

@@ -6,7 +6,9 @@
 //! # The filter
 //!
 //! `M` particles are drawn uniformly in the learning box (the prior every run's start is drawn from),
-//! with equal weights. At each sample `(y, u)`:
+//! with equal weights; with uncertain parameters, each particle also draws their values uniformly in
+//! their ranges (as every run's plant does) and carries them as constant coordinates, so that the
+//! floor knows what the runs' plants are drawn from and nothing more. At each sample `(y, u)`:
 //!
 //! ```text
 //! weight     w_p ← w_p · exp(−½ Σ_i (y_i − h_i(x_p, u))² / σ_i²)        (normalised)
@@ -15,7 +17,7 @@
 //!            moved by the kernel x ← a x + (1 − a) m + h L ξ, ξ ~ N(0, I), with m and L Lᵀ the
 //!            cloud's mean and covariance, h = (4 / (M (n + 2)))^(1/(n+4)) ([`bandwidth`]) and
 //!            a = √(1 − h²), projected onto the physical bounds
-//! predict    x_p ← one sampling period of the model (the learning simulation's RK4 substeps)
+//! predict    x_p ← one sampling period of the model the observers carry (the chip's RK4 substeps)
 //! ```
 //!
 //! The plants have no process noise, so resampled particles would otherwise collapse onto a few:
@@ -45,8 +47,14 @@ pub struct Floor<'a> {
     /// `f`, `h` and `r` alone (no Jacobian).
     field: Program,
     output: Program,
-    /// Each state's `(min, max)` in the learning box (a fixed state: its value twice).
+    /// The uncertain parameters (indices into the model's), each a coordinate of the particles after
+    /// the states: the plant's value is unknown within its range, as the runs draw it.
+    uncertain: Vec<usize>,
+    /// Each coordinate's `(min, max)` at the start: the learning box (a fixed state: its value twice),
+    /// then each uncertain parameter's range.
     ranges: Vec<(f64, f64)>,
+    /// Each coordinate's limits after a move: the physical bounds, then each parameter's range.
+    limits: Vec<(f64, f64)>,
     weights: Vec<f64>,
     /// RK4 step and substeps per sample.
     h: f64,
@@ -63,6 +71,7 @@ impl<'a> Floor<'a> {
             code,
             field: code.derivative.first_results(d.states),
             output: code.output.first_results(d.outputs),
+            uncertain: design.model.uncertain.iter().map(|u| u.index).collect(),
             ranges: design
                 .learning
                 .axes
@@ -71,6 +80,13 @@ impl<'a> Floor<'a> {
                     Axis::Range { min, max, .. } => (min, max),
                     Axis::Fixed(value) => (value, value),
                 })
+                .chain(design.model.uncertain.iter().map(|u| (u.min, u.max)))
+                .collect(),
+            limits: code
+                .bounds
+                .iter()
+                .map(|b| (b.lower(), b.upper()))
+                .chain(design.model.uncertain.iter().map(|u| (u.min, u.max)))
                 .collect(),
             weights: design
                 .model
@@ -78,8 +94,8 @@ impl<'a> Floor<'a> {
                 .iter()
                 .map(|o| 1.0 / o.noise_variance.max(1e-300))
                 .collect(),
-            h: design.tau / design.substeps as f64,
-            substeps: design.substeps,
+            h: design.tau / design.chip_substeps as f64,
+            substeps: design.chip_substeps,
             count,
         }
     }
@@ -102,8 +118,13 @@ impl<'a> Floor<'a> {
         let mut targets = vec![Vec::new(); d.targets];
         let mut estimates = Rows::new(d.targets);
         let mut integrator = Stages::new(d.states, m);
+        let n = d.states;
+        let parameters = &self.code.parameters;
         for (y, u) in run.measurements.iter().zip(run.inputs.iter()) {
-            self.output.eval_many(&self.code.parameters, &x, u, &mut values, &mut predicted);
+            let (states, drawn) = x.split_at(n);
+            let varying = self.varying(drawn);
+            self.output
+                .eval_many(parameters, &varying, states, u, &mut values, &mut predicted);
             for (i, (&yi, &w)) in y.iter().zip(&self.weights).enumerate() {
                 if !yi.is_finite() {
                     continue; // a refused sample carries no information
@@ -111,12 +132,16 @@ impl<'a> Floor<'a> {
                 for (lw, &p) in log_weights.iter_mut().zip(&predicted[i]) {
                     let r = yi - p;
                     // A particle whose output is not finite has no weight.
-                    *lw += if r.is_finite() { -0.5 * w * r * r } else { f64::NEG_INFINITY };
+                    *lw += if r.is_finite() {
+                        -0.5 * w * r * r
+                    } else {
+                        f64::NEG_INFINITY
+                    };
                 }
             }
             let top = log_weights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
             if !top.is_finite() {
-                // Every particle lost (none explains the sample): start again from the box.
+                // Every particle lost (none explains the sample): their weights made equal again.
                 log_weights.fill(0.0);
             }
             let top = if top.is_finite() { top } else { 0.0 };
@@ -126,7 +151,9 @@ impl<'a> Floor<'a> {
                 total += *w;
             }
             weights.iter_mut().for_each(|w| *w /= total);
-            self.code.targets.eval_many(&self.code.parameters, &x, u, &mut values, &mut targets);
+            self.code
+                .targets
+                .eval_many(parameters, &varying, states, u, &mut values, &mut targets);
             let row: Vec<f64> = targets
                 .iter()
                 .map(|values| values.iter().zip(&weights).map(|(v, w)| v * w).sum())
@@ -141,9 +168,19 @@ impl<'a> Floor<'a> {
                     *lw = w.ln();
                 }
             }
-            integrator.advance(self, &mut x, u, &mut values);
+            let (states, drawn) = x.split_at_mut(n);
+            integrator.advance(self, states, &self.varying(drawn), u, &mut values);
         }
         estimates
+    }
+
+    /// The uncertain parameters' values at every particle, as [`Program::eval_many`] takes them.
+    fn varying<'c>(&self, drawn: &'c [Vec<f64>]) -> Vec<(usize, &'c [f64])> {
+        self.uncertain
+            .iter()
+            .zip(drawn)
+            .map(|(&k, v)| (k, v.as_slice()))
+            .collect()
     }
 
     /// Systematic resampling, then the regularisation step (see the module's documentation).
@@ -168,7 +205,12 @@ impl<'a> Floor<'a> {
         // The cloud's mean and covariance, and a square root of it (a constant state: a tiny variance).
         let mean: Vec<f64> = x.iter().map(|s| s.iter().sum::<f64>() / m as f64).collect();
         let covariance = nalgebra::DMatrix::from_fn(n, n, |i, j| {
-            let c = x[i].iter().zip(&x[j]).map(|(a, b)| (a - mean[i]) * (b - mean[j])).sum::<f64>() / m as f64;
+            let c = x[i]
+                .iter()
+                .zip(&x[j])
+                .map(|(a, b)| (a - mean[i]) * (b - mean[j]))
+                .sum::<f64>()
+                / m as f64;
             if i == j {
                 c + 1e-24 * (1.0 + mean[i] * mean[i])
             } else {
@@ -181,13 +223,14 @@ impl<'a> Floor<'a> {
         let h = bandwidth(m, n);
         let shrink = (1.0 - h * h).sqrt();
         let mut draw = vec![0.0; n];
+        #[allow(clippy::needless_range_loop)] // particle p of every coordinate
         for p in 0..m {
             draw.iter_mut().for_each(|d| *d = rng.sample::<f64, _>(StandardNormal));
             for i in 0..n {
                 let kick: f64 = (0..=i).map(|j| root[(i, j)] * draw[j]).sum();
                 let moved = shrink * x[i][p] + (1.0 - shrink) * mean[i] + h * kick;
-                let bounds = &self.code.bounds[i];
-                x[i][p] = moved.clamp(bounds.lower(), bounds.upper());
+                let (low, high) = self.limits[i];
+                x[i][p] = moved.clamp(low, high);
             }
         }
     }
@@ -214,32 +257,39 @@ impl Stages {
         }
     }
 
-    /// One sampling period of the model for every particle, in the learning simulation's RK4
-    /// substeps (the truth's own discretisation).
-    fn advance(&mut self, floor: &Floor<'_>, x: &mut [Vec<f64>], u: &[f64], values: &mut Vec<f64>) {
+    /// One sampling period of the model for every particle, in the chip's RK4 substeps (the model
+    /// every observer carries: the floor is that of an observer of this model).
+    fn advance(
+        &mut self,
+        floor: &Floor<'_>,
+        x: &mut [Vec<f64>],
+        varying: &[(usize, &[f64])],
+        u: &[f64],
+        values: &mut Vec<f64>,
+    ) {
         let h = floor.h;
         let parameters = &floor.code.parameters;
         for _ in 0..floor.substeps {
             let [k1, k2, k3, k4] = &mut self.k;
-            floor.field.eval_many(parameters, x, u, values, k1);
+            floor.field.eval_many(parameters, varying, x, u, values, k1);
             for ((probe, x), k) in self.probe.iter_mut().zip(x.iter()).zip(k1.iter()) {
                 for ((p, &x), &k) in probe.iter_mut().zip(x).zip(k) {
                     *p = x + 0.5 * h * k;
                 }
             }
-            floor.field.eval_many(parameters, &self.probe, u, values, k2);
+            floor.field.eval_many(parameters, varying, &self.probe, u, values, k2);
             for ((probe, x), k) in self.probe.iter_mut().zip(x.iter()).zip(k2.iter()) {
                 for ((p, &x), &k) in probe.iter_mut().zip(x).zip(k) {
                     *p = x + 0.5 * h * k;
                 }
             }
-            floor.field.eval_many(parameters, &self.probe, u, values, k3);
+            floor.field.eval_many(parameters, varying, &self.probe, u, values, k3);
             for ((probe, x), k) in self.probe.iter_mut().zip(x.iter()).zip(k3.iter()) {
                 for ((p, &x), &k) in probe.iter_mut().zip(x).zip(k) {
                     *p = x + h * k;
                 }
             }
-            floor.field.eval_many(parameters, &self.probe, u, values, k4);
+            floor.field.eval_many(parameters, varying, &self.probe, u, values, k4);
             for (i, x) in x.iter_mut().enumerate() {
                 for (p, x) in x.iter_mut().enumerate() {
                     *x += h / 6.0 * (k1[i][p] + 2.0 * k2[i][p] + 2.0 * k3[i][p] + k4[i][p]);

@@ -146,11 +146,13 @@ impl Program {
     /// [`Program::eval`] in `f64` at `count` points at once, one operation for every point before the
     /// next (the interpreter's dispatch paid once per operation, not once per point: the particle
     /// filter's propagation): `states[i][p]` is state `i` of point `p`, the inputs are shared, and
-    /// `results[r][p]` receives result `r` at point `p`. Each point's values are bit for bit
-    /// [`Program::eval`]'s.
+    /// `results[r][p]` receives result `r` at point `p`; a parameter listed in `varying` (its index,
+    /// then its value at every point) takes those values instead of its own. Each point's values are
+    /// bit for bit [`Program::eval`]'s with those parameters.
     pub fn eval_many(
         &self,
         parameters: &[(String, f64)],
+        varying: &[(usize, &[f64])],
         states: &[Vec<f64>],
         u: &[f64],
         values: &mut Vec<f64>,
@@ -165,7 +167,10 @@ impl Program {
             let column = |a: usize| &done[a * count..(a + 1) * count];
             match *op {
                 Op::Number(v) => out.fill(v),
-                Op::Leaf(Leaf::Parameter(k)) => out.fill(parameters[k].1),
+                Op::Leaf(Leaf::Parameter(k)) => match varying.iter().find(|(i, _)| *i == k) {
+                    Some((_, values)) => out.copy_from_slice(values),
+                    None => out.fill(parameters[k].1),
+                },
                 Op::Leaf(Leaf::State(k)) => out.copy_from_slice(&states[k]),
                 Op::Leaf(Leaf::Input(k)) => out.fill(u[k]),
                 Op::Leaf(_) => out.fill(f64::NAN), // a model's program reads no other leaf

@@ -186,9 +186,14 @@ fn many_points_at_once_are_bit_for_bit_one_at_a_time() {
     let states: Vec<Vec<f64>> = (0..3).map(|i| points.iter().map(|(x, _)| x[i]).collect()).collect();
     for program in [&f, &code.output, &code.targets] {
         let mut results = vec![Vec::new(); program.results.len()];
-        program.eval_many(&code.parameters, &states, &u, &mut Vec::new(), &mut results);
+        // `w` (index 1) varies from point to point.
+        let w: Vec<f64> = (0..points.len()).map(|p| 1.0 + 0.01 * p as f64).collect();
+        program.eval_many(&code.parameters, &[(1, &w)], &states, &u, &mut Vec::new(), &mut results);
         for (p, (x, _)) in points.iter().enumerate() {
-            let one = program.eval(&code.parameters, x, &u, &mut Vec::new());
+            let mut parameters = code.parameters.clone();
+            assert_eq!(parameters[1].0, "w");
+            parameters[1].1 = w[p];
+            let one = program.eval(&parameters, x, &u, &mut Vec::new());
             for (r, value) in one.iter().enumerate() {
                 assert_eq!(results[r][p].to_bits(), value.to_bits(), "point {p}, result {r}");
             }

@@ -94,6 +94,7 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
                 on_target: None,
             })
             .collect(),
+        references: super::references::assemble(design, comparison),
         ekf_tuning: comparison.ekf.as_ref().map(|t| EkfTuning {
             log_q: t.log_q.clone(),
             log_p0: t.log_p0.clone(),

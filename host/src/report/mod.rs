@@ -9,6 +9,7 @@ mod markdown;
 pub mod on_target;
 pub mod plots;
 pub mod recorded;
+pub mod references;
 pub mod runs;
 mod schema;
 mod tables;

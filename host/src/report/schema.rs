@@ -41,6 +41,8 @@ pub struct Report<'a> {
     pub runs: Vec<super::runs::RunSet>,
     /// Every observer on the same data: the map, then the EKF.
     pub observers: Vec<ObserverReport>,
+    /// The host-only references: the on-line moving-horizon estimate and the particle floor.
+    pub references: Vec<super::references::ReferenceReport>,
     /// How the EKF was tuned, when the host could run one.
     pub ekf_tuning: Option<EkfTuning>,
     /// The EKF from the box centre started instead at the scenario's `observer_x0` (the paper's

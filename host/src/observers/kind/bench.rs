@@ -42,6 +42,17 @@ pub struct Bench<'a> {
     maps: MapRows,
 }
 
+/// One observer's estimates on every set of [`crate::data::Runs`].
+struct Estimates {
+    validation: Vec<Rows>,
+    scenario: Rows,
+    tuning: Vec<Rows>,
+    draws: Option<Vec<Rows>>,
+    /// On the corners, the nominal plant and the long runs at the last corner; the mismatch scenario.
+    mismatch: Option<([Vec<Rows>; 3], Rows)>,
+    long: Vec<Rows>,
+}
+
 /// The map's estimates on every run of [`crate::data::Runs`], set by set.
 struct MapRows {
     validation: Vec<Rows>,
@@ -130,31 +141,107 @@ impl<'a> Bench<'a> {
     ) -> ObserverFigures {
         let runs = &self.result.runs;
         let maps = &self.maps;
-        let horizon = self.design.map.horizon;
-        let windows = self.windows();
         let on = |set: &DataSet, maps: &[Rows]| -> Vec<Rows> {
             set.runs.iter().zip(maps).map(|(r, m)| estimate(r, m)).collect()
         };
-        let validation = on(&runs.validation, &maps.validation);
-        let scenario = estimate(&runs.scenario, &maps.scenario);
-        let on_tuning = on(&runs.tuning, &maps.tuning);
-        let on_draws: Option<Vec<Rows>> = runs
-            .scenario_draws
-            .as_ref()
-            .zip(maps.draws.as_ref())
-            .map(|(d, m)| on(d, m));
-        let on_mismatch: Option<[Vec<Rows>; 3]> =
-            runs.mismatch
+        let estimates = Estimates {
+            validation: on(&runs.validation, &maps.validation),
+            scenario: estimate(&runs.scenario, &maps.scenario),
+            tuning: on(&runs.tuning, &maps.tuning),
+            draws: runs
+                .scenario_draws
+                .as_ref()
+                .zip(maps.draws.as_ref())
+                .map(|(d, m)| on(d, m)),
+            mismatch: runs
+                .mismatch
                 .as_ref()
                 .zip(maps.mismatch.as_ref())
-                .map(|(m, (on_m, _))| {
+                .map(|(m, (on_m, map))| {
+                    (
+                        [
+                            on(&m.corners_set, &on_m[0]),
+                            on(&m.nominal_set, &on_m[1]),
+                            on(&m.long, &on_m[2]),
+                        ],
+                        estimate(&m.scenario, map),
+                    )
+                }),
+            long: on(&runs.long, &maps.long),
+        };
+        self.figures(kind, instructions, estimates)
+    }
+
+    /// A host-only reference's figures ([`super::super::references`]): `estimate(run, stream)` on the
+    /// validation runs, the scenario, its draws and the mismatch runs but the long ones, in parallel
+    /// (`stream`: a number of its own for every run, the same every time: validation run `i` is on
+    /// stream `i`), but for the validation runs when their estimates are given. The tuning and long
+    /// runs' figures are NaN: no reference is tuned on them or judged for drift.
+    pub fn judge_reference(
+        &self,
+        name: &'static str,
+        validation: Option<Vec<Rows>>,
+        estimate: &(dyn Fn(&Run, u64) -> Rows + Sync),
+    ) -> ObserverFigures {
+        use rayon::prelude::*;
+        let runs = &self.result.runs;
+        let on = |set: &DataSet, first: u64| -> Vec<Rows> {
+            set.runs
+                .par_iter()
+                .enumerate()
+                .map(|(i, r)| estimate(r, first + i as u64))
+                .collect()
+        };
+        let skipped = |set: &DataSet| -> Vec<Rows> {
+            set.runs
+                .iter()
+                .map(|r| {
+                    let mut rows = Rows::new(self.design.targets.len());
+                    let nan = vec![f64::NAN; self.design.targets.len()];
+                    (0..r.targets.len()).for_each(|_| rows.push(&nan));
+                    rows
+                })
+                .collect()
+        };
+        // Each set's runs on streams of their own.
+        const SET: u64 = 1 << 32;
+        let estimates = Estimates {
+            validation: validation.unwrap_or_else(|| on(&runs.validation, 0)),
+            scenario: estimate(&runs.scenario, SET),
+            tuning: skipped(&runs.tuning),
+            draws: runs.scenario_draws.as_ref().map(|d| on(d, 2 * SET)),
+            mismatch: runs.mismatch.as_ref().map(|m| {
+                (
                     [
-                        on(&m.corners_set, &on_m[0]),
-                        on(&m.nominal_set, &on_m[1]),
-                        on(&m.long, &on_m[2]),
-                    ]
-                });
-        let on_long = on(&runs.long, &maps.long);
+                        on(&m.corners_set, 3 * SET),
+                        on(&m.nominal_set, 4 * SET),
+                        skipped(&m.long),
+                    ],
+                    estimate(&m.scenario, 5 * SET),
+                )
+            }),
+            long: skipped(&runs.long),
+        };
+        self.figures(name, f64::NAN, estimates)
+    }
+
+    /// The figures of one observer's estimates on every set.
+    fn figures(&self, kind: &'static str, instructions: f64, estimates: Estimates) -> ObserverFigures {
+        let runs = &self.result.runs;
+        let horizon = self.design.map.horizon;
+        let windows = self.windows();
+        let Estimates {
+            validation,
+            scenario,
+            tuning: on_tuning,
+            draws: on_draws,
+            mismatch,
+            long: on_long,
+        } = estimates;
+        let (on_mismatch, mismatch_scenario) = match mismatch {
+            Some((sets, scenario)) => (Some(sets), Some(scenario)),
+            None => (None, None),
+        };
         let long_samples = Drift::long_samples(self.design);
         let start_up = horizon - 1 + corrected::START_UP_HORIZONS * horizon;
         let window = self.design.validation.samples;
@@ -213,11 +300,7 @@ impl<'a> Bench<'a> {
             kind,
             instructions,
             targets,
-            mismatch_scenario: runs
-                .mismatch
-                .as_ref()
-                .zip(maps.mismatch.as_ref())
-                .map(|(m, (_, map))| estimate(&m.scenario, map)),
+            mismatch_scenario,
             scenario,
         }
     }

@@ -94,12 +94,11 @@ where
         let mut matrix = at.matrix;
         let mut gradient = at.gradient;
         for i in 0..NX {
-            let outward = (x[i] <= problem.lower[i] && gradient[i] < 0.0) || (x[i] >= problem.upper[i] && gradient[i] > 0.0);
+            let outward =
+                (x[i] <= problem.lower[i] && gradient[i] < 0.0) || (x[i] >= problem.upper[i] && gradient[i] > 0.0);
             if outward {
-                for j in 0..NX {
-                    matrix[i][j] = 0.0;
-                    matrix[j][i] = 0.0;
-                }
+                matrix[i] = [0.0; NX];
+                matrix.iter_mut().for_each(|row| row[i] = 0.0);
                 matrix[i][i] = 1.0;
                 gradient[i] = 0.0;
             } else {
@@ -248,7 +247,11 @@ mod tests {
                 .min_by(|a, b| a.cost.total_cmp(&b.cost))
                 .unwrap();
             let (grid, grid_cost) = grid_minimum(&problem, &samples);
-            assert!(solved.cost <= grid_cost + 1e-9, "{seed}: {} > grid {grid_cost}", solved.cost);
+            assert!(
+                solved.cost <= grid_cost + 1e-9,
+                "{seed}: {} > grid {grid_cost}",
+                solved.cost
+            );
             for i in 0..2 {
                 assert!(
                     (solved.start[i] - grid[i]).abs() < 0.01 * problem.spreads[i],
@@ -267,11 +270,19 @@ mod tests {
         let free = minimise(&VanDerPol, &problem(None), &samples, &[0.0, 0.0]);
         let centre = [-1.0, 2.0];
         let heavy = minimise(&VanDerPol, &problem(Some((centre, [1e9, 1e9]))), &samples, &[0.0, 0.0]);
-        let light = minimise(&VanDerPol, &problem(Some((centre, [1e-9, 1e-9]))), &samples, &[0.0, 0.0]);
-        for i in 0..2 {
-            assert!((heavy.start[i] - centre[i]).abs() < 1e-6, "{heavy:?}");
+        let light = minimise(
+            &VanDerPol,
+            &problem(Some((centre, [1e-9, 1e-9]))),
+            &samples,
+            &[0.0, 0.0],
+        );
+        for (i, centre) in centre.iter().enumerate() {
+            assert!((heavy.start[i] - centre).abs() < 1e-6, "{heavy:?}");
             assert!((light.start[i] - free.start[i]).abs() < 1e-5, "{light:?} vs {free:?}");
         }
-        assert!((free.start[0] - centre[0]).abs() > 0.1, "the test shows nothing: {free:?}");
+        assert!(
+            (free.start[0] - centre[0]).abs() > 0.1,
+            "the test shows nothing: {free:?}"
+        );
     }
 }

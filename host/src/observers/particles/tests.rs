@@ -21,7 +21,8 @@ expr = "x1"
 noise_variance = 0.09
 [sampling]
 tau = 0.2
-substeps = 2
+substeps = 4
+chip_substeps = 2
 [learning]
 samples = 40
 seed = 1
@@ -72,7 +73,7 @@ fn the_floor_is_the_exact_posterior_mean_on_a_linear_gaussian_system() {
     let design = crate::spec::parse(std::path::Path::new("oscillator.toml"), SPEC).unwrap();
     let code = ModelCode::new(&design).unwrap();
     let data = crate::data::validation_set(&design).unwrap();
-    let a = transition(design.tau, design.substeps);
+    let a = transition(design.tau, design.chip_substeps);
     let floor = Floor::new(&design, &code, 4000);
     let mut worst = 0.0_f64;
     let mut prior_mean_worst = 0.0_f64;
@@ -92,7 +93,10 @@ fn the_floor_is_the_exact_posterior_mean_on_a_linear_gaussian_system() {
     // Within a quarter of a posterior standard deviation (Monte Carlo error and the kernel's blur;
     // measured 0.19 with the moment-keeping kernel, 1.2 with Gordon's roughening, which this rejects).
     assert!(worst < 0.25, "the floor is {worst:.3} posterior sd from the exact mean");
-    assert!(prior_mean_worst > 3.0, "the check cannot tell the floor from no filter: {prior_mean_worst}");
+    assert!(
+        prior_mean_worst > 3.0,
+        "the check cannot tell the floor from no filter: {prior_mean_worst}"
+    );
 }
 
 #[test]

@@ -1,0 +1,166 @@
+//! What every design's observers are measured against, on the host only: the on-line moving-horizon
+//! estimate the map replaces ([`super::mhe`]; without a prior, the paper's problem, and with its prior
+//! weight tuned on the tuning runs) and the particle filter's floor ([`super::particles`]). Neither
+//! runs on the chip; each is judged on the validation runs, the scenario, its draws and the mismatch
+//! runs ([`Bench::judge_reference`]), in parallel.
+
+use std::sync::Mutex;
+
+use super::kind::Bench;
+use super::mhe::{self, Prior};
+use super::particles::Floor;
+use super::score::errors;
+use super::ObserverFigures;
+use crate::data::Rows;
+
+/// The particle count the floor starts its check at.
+pub const FIRST_PARTICLES: usize = 1000;
+/// The most particles the floor is run with.
+pub const MAX_PARTICLES: usize = 8_000;
+/// The floor's count is the first at which doubling it changes no target's validation RMSE by more
+/// than this (relative).
+pub const CONVERGED_WITHIN: f64 = 0.05;
+
+/// One reference's figures and what it took.
+#[derive(Clone, Debug)]
+pub struct Reference {
+    /// What it is, in a phrase.
+    pub what: &'static str,
+    /// Its figures (`kind`: `mhe`, `mhe_prior` or `floor`; no instruction count; tuning and drift NaN).
+    pub figures: ObserverFigures,
+    /// What it took.
+    pub cost: Cost,
+}
+
+/// What a reference took.
+#[derive(Clone, Debug)]
+pub enum Cost {
+    /// The moving-horizon estimate.
+    Solver {
+        /// The prior's weight, tuned on the tuning runs, and the tuning score there; `None` without a prior.
+        prior: Option<(f64, f64)>,
+        /// Windows solved (every set it is judged on).
+        windows: usize,
+        /// Mean and largest seconds per window on the host (one thread's time, runs in parallel).
+        mean_seconds: f64,
+        /// See `mean_seconds`.
+        max_seconds: f64,
+        /// Mean iterations per window (a run's first window: summed over its starts).
+        mean_iterations: f64,
+        /// The starts of a run's first window ([`mhe::starts`]).
+        starts: usize,
+    },
+    /// The particle filter.
+    Particles {
+        /// Particles.
+        count: usize,
+        /// Validation RMSE per target at each count tried, doubling from [`FIRST_PARTICLES`].
+        checked: Vec<(usize, Vec<f64>)>,
+        /// Whether doubling `count` moved no target's RMSE by more than [`CONVERGED_WITHIN`]; when
+        /// not (at [`MAX_PARTICLES`]), the floor is not one on this design and the report says so.
+        converged: bool,
+    },
+}
+
+/// Per-window statistics gathered across threads.
+#[derive(Default)]
+struct Tally {
+    windows: usize,
+    seconds: f64,
+    max_seconds: f64,
+    iterations: usize,
+}
+
+/// The references of the design on `bench`; empty when the model is beyond the host's sizes.
+pub fn measure(bench: &Bench<'_>) -> Vec<Reference> {
+    let (design, code, runs) = (bench.design, bench.code, &bench.result.runs);
+    let Some(setup) = mhe::Setup::new(design, code, &runs.learning) else {
+        return Vec::new();
+    };
+    let mut references = Vec::new();
+    let tuned = mhe::tune_prior(&setup, &runs.tuning.runs, |rows| bench.tuning_score(rows));
+    for (name, what, prior) in [
+        ("mhe", "moving-horizon estimate, on-line", Prior::None),
+        (
+            "mhe_prior",
+            "moving-horizon estimate with prior, on-line",
+            Prior::Weight(tuned.0),
+        ),
+    ] {
+        let tally = Mutex::new(Tally::default());
+        let figures = bench.judge_reference(name, None, &|run, _| {
+            let solved = setup.run(prior, run);
+            let mut t = tally.lock().expect("no panic while held");
+            t.windows += solved.seconds.len();
+            t.seconds += solved.seconds.iter().sum::<f64>();
+            t.max_seconds = solved.seconds.iter().copied().fold(t.max_seconds, f64::max);
+            t.iterations += solved.iterations.iter().sum::<usize>();
+            solved.rows
+        });
+        let t = tally.into_inner().expect("no panic while held");
+        references.push(Reference {
+            what,
+            figures,
+            cost: Cost::Solver {
+                prior: matches!(prior, Prior::Weight(_)).then_some(tuned),
+                windows: t.windows,
+                mean_seconds: t.seconds / t.windows.max(1) as f64,
+                max_seconds: t.max_seconds,
+                mean_iterations: t.iterations as f64 / t.windows.max(1) as f64,
+                starts: mhe::starts(design).len(),
+            },
+        });
+    }
+    references.push(floor(bench));
+    references
+}
+
+/// The particle filter's floor at the first count from [`FIRST_PARTICLES`] whose doubling changes no
+/// target's validation RMSE by more than [`CONVERGED_WITHIN`] (at most [`MAX_PARTICLES`]).
+fn floor(bench: &Bench<'_>) -> Reference {
+    use rayon::prelude::*;
+    let (design, code, runs) = (bench.design, bench.code, &bench.result.runs);
+    // The validation runs' estimates at `count` (on the streams `judge_reference` gives them) and
+    // each target's RMSE.
+    let validation = |count: usize| -> (Vec<Rows>, Vec<f64>) {
+        let floor = Floor::new(design, code, count);
+        let rows: Vec<Rows> = runs
+            .validation
+            .runs
+            .par_iter()
+            .enumerate()
+            .map(|(i, run)| floor.estimate_run(run, i as u64))
+            .collect();
+        let rmse = (0..design.targets.len())
+            .map(|t| errors(&runs.validation.runs, &rows, t, bench.windows()).0)
+            .collect();
+        (rows, rmse)
+    };
+    let mut count = FIRST_PARTICLES;
+    let (mut rows, first) = validation(count);
+    let mut checked = vec![(count, first)];
+    let mut converged = false;
+    while !converged && count < MAX_PARTICLES {
+        let (doubled_rows, doubled) = validation(2 * count);
+        let last = &checked.last().expect("one count").1;
+        converged = last
+            .iter()
+            .zip(&doubled)
+            .all(|(a, b)| (a - b).abs() <= CONVERGED_WITHIN * b.abs());
+        checked.push((2 * count, doubled));
+        if !converged {
+            count *= 2;
+            rows = doubled_rows;
+        }
+    }
+    let floor = Floor::new(design, code, count);
+    Reference {
+        what: "particle filter, floor (not embeddable)",
+        figures: bench.judge_reference("floor", Some(rows), &|run, stream| floor.estimate_run(run, stream)),
+        cost: Cost::Particles {
+            count,
+            checked,
+            converged,
+        },
+    }
+}

@@ -1,0 +1,318 @@
+//! The report's references ([`crate::observers::references`]): the on-line moving-horizon estimate
+//! the map replaces and the particle filter's floor, their figures and what they took
+//! (`references` in `report.json`), and the sentences that place every observer between them.
+
+use std::fmt::Write as _;
+
+use serde::Serialize;
+
+use super::schema::Report;
+use crate::observers::references::{Cost, Reference};
+use crate::observers::Comparison;
+use crate::spec::Design;
+
+/// One reference as `report.json` holds it.
+#[derive(Serialize)]
+pub struct ReferenceReport {
+    /// `mhe`, `mhe_prior` or `floor`.
+    pub name: &'static str,
+    /// What it is.
+    pub what: &'static str,
+    /// Per target name.
+    pub targets: std::collections::BTreeMap<String, ReferenceFigures>,
+    /// The moving-horizon estimate's solver, for `mhe` and `mhe_prior`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub solver: Option<SolverReport>,
+    /// The particle filter's count and its check, for `floor`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub particles: Option<ParticlesReport>,
+}
+
+/// A reference's figures on one target (`null` where not finite). Not on the tuning or long runs.
+#[derive(Serialize)]
+pub struct ReferenceFigures {
+    /// RMSE over the validation windows.
+    pub rmse_validation: Option<f64>,
+    /// The 95th percentile over validation runs of each run's RMSE.
+    pub p95_validation: Option<f64>,
+    /// Largest |error| over the validation windows.
+    pub max_error_validation: Option<f64>,
+    /// RMSE over the scenario's windows.
+    pub rmse_scenario: Option<f64>,
+    /// RMSE over the scenario's noise draws, and their p95, when there is a scenario.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scenario_draws: Option<(Option<f64>, Option<f64>)>,
+    /// RMSE over the mismatch runs, when parameters are uncertain.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rmse_mismatch: Option<f64>,
+}
+
+/// What the moving-horizon estimate took on the host.
+#[derive(Serialize)]
+pub struct SolverReport {
+    /// The prior's weight and its tuning score, when it has one.
+    pub prior: Option<(f64, f64)>,
+    /// Windows solved.
+    pub windows: usize,
+    /// Mean seconds per window (one thread; runs in parallel).
+    pub mean_seconds: f64,
+    /// Largest seconds for one window.
+    pub max_seconds: f64,
+    /// Mean Levenberg–Marquardt iterations per window (a run's first window: summed over its starts).
+    pub mean_iterations: f64,
+    /// The starts of a run's first window.
+    pub starts: usize,
+}
+
+/// The particle filter's count and how it was checked.
+#[derive(Serialize)]
+pub struct ParticlesReport {
+    /// Particles.
+    pub count: usize,
+    /// Validation RMSE per target (spec order) at each count tried.
+    pub checked: Vec<(usize, Vec<f64>)>,
+    /// Whether the last doubling moved no target's RMSE by more than 5 %.
+    pub converged: bool,
+}
+
+/// The references of `comparison` as the report holds them.
+pub fn assemble(design: &Design, comparison: &Comparison) -> Vec<ReferenceReport> {
+    let finite = |v: f64| v.is_finite().then_some(v);
+    comparison
+        .references
+        .iter()
+        .map(|r: &Reference| ReferenceReport {
+            name: r.figures.kind,
+            what: r.what,
+            targets: design
+                .targets
+                .iter()
+                .zip(&r.figures.targets)
+                .map(|(t, f)| {
+                    (
+                        t.name.clone(),
+                        ReferenceFigures {
+                            rmse_validation: finite(f.rmse_validation),
+                            p95_validation: finite(f.p95_validation),
+                            max_error_validation: finite(f.max_error_validation),
+                            rmse_scenario: finite(f.rmse_scenario),
+                            scenario_draws: f.scenario_draws.map(|(a, b)| (finite(a), finite(b))),
+                            rmse_mismatch: f.rmse_mismatch.and_then(finite),
+                        },
+                    )
+                })
+                .collect(),
+            solver: match &r.cost {
+                Cost::Solver {
+                    prior,
+                    windows,
+                    mean_seconds,
+                    max_seconds,
+                    mean_iterations,
+                    starts,
+                } => Some(SolverReport {
+                    prior: *prior,
+                    windows: *windows,
+                    mean_seconds: *mean_seconds,
+                    max_seconds: *max_seconds,
+                    mean_iterations: *mean_iterations,
+                    starts: *starts,
+                }),
+                Cost::Particles { .. } => None,
+            },
+            particles: match &r.cost {
+                Cost::Particles {
+                    count,
+                    checked,
+                    converged,
+                } => Some(ParticlesReport {
+                    count: *count,
+                    checked: checked.clone(),
+                    converged: *converged,
+                }),
+                Cost::Solver { .. } => None,
+            },
+        })
+        .collect()
+}
+
+/// `value`, or "—" where it is not finite.
+fn show(value: Option<f64>) -> String {
+    value.map_or("—".to_owned(), |v| format!("{v:.4}"))
+}
+
+/// Each named observer's validation RMSE per target, in spec order.
+fn validation(report: &Report<'_>, name: &str) -> Option<Vec<f64>> {
+    let names = report.targets.iter().map(|t| t.name);
+    if let Some(o) = report.observers.iter().find(|o| o.kind == name) {
+        return names.map(|t| o.targets[t].rmse_validation).collect();
+    }
+    let r = report.references.iter().find(|r| r.name == name)?;
+    names.map(|t| r.targets[t].rmse_validation).collect()
+}
+
+/// The mean over targets of `a[t] / b[t]`.
+fn mean_ratio(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(a, b)| a / b).sum::<f64>() / a.len() as f64
+}
+
+/// The report's section: the references' table, what they took, and where the observers stand
+/// between them; empty without references.
+pub fn section(report: &Report<'_>) -> String {
+    if report.references.is_empty() {
+        return String::new();
+    }
+    let mut s = String::from("\n## What the map replaces, and the floor\n\n");
+    s.push_str(
+        "Host-only references, on the same validation runs, scenario and mismatch runs as every observer (never tuned on them): \
+         the on-line moving-horizon estimate (MHE) the paper's map approximates, solved to convergence at every window over the same N samples \
+         with the model the observers carry, and a particle filter as the floor no observer of that model beats on average.\n\n",
+    );
+    let draws = report
+        .references
+        .iter()
+        .any(|r| r.targets.values().any(|f| f.scenario_draws.is_some()));
+    let mismatch = report.mismatch.is_some();
+    let _ = writeln!(
+        s,
+        "| reference | target | RMSE validation | p95 validation | max error validation | RMSE scenario |{}{}",
+        if draws {
+            " RMSE scenario draws | p95 scenario draws |"
+        } else {
+            ""
+        },
+        if mismatch { " RMSE mismatch |" } else { "" }
+    );
+    let _ = writeln!(
+        s,
+        "|---|---|---|---|---|---|{}{}",
+        if draws { "---|---|" } else { "" },
+        if mismatch { "---|" } else { "" }
+    );
+    for r in &report.references {
+        for t in report.targets.iter().map(|t| t.name) {
+            let f = &r.targets[t];
+            let _ = write!(
+                s,
+                "| {} | {t} | {} | {} | {} | {} |",
+                r.name,
+                show(f.rmse_validation),
+                show(f.p95_validation),
+                show(f.max_error_validation),
+                show(f.rmse_scenario)
+            );
+            if draws {
+                let (a, b) = f.scenario_draws.unwrap_or((None, None));
+                let _ = write!(s, " {} | {} |", show(a), show(b));
+            }
+            if mismatch {
+                let _ = write!(s, " {} |", show(f.rmse_mismatch));
+            }
+            s.push('\n');
+        }
+    }
+    s.push('\n');
+    for r in &report.references {
+        if let Some(solver) = &r.solver {
+            let _ = writeln!(
+                s,
+                "- `{}`: {}{}; {} windows, {:.2} ms mean and {:.2} ms largest per window on this host, {:.1} Levenberg–Marquardt iterations per window (a run's first window: the sum over its {} starts).",
+                r.name,
+                r.what,
+                solver.prior.map_or(String::new(), |(p, score)| format!(
+                    ", prior weight p = {p} (tuned on the tuning runs: score {score:.4})"
+                )),
+                solver.windows,
+                1e3 * solver.mean_seconds,
+                1e3 * solver.max_seconds,
+                solver.mean_iterations,
+                solver.starts,
+            );
+        }
+        if let Some(particles) = &r.particles {
+            let checked: Vec<String> = particles
+                .checked
+                .iter()
+                .map(|(count, rmse)| {
+                    format!(
+                        "{count}: {}",
+                        rmse.iter().map(|v| format!("{v:.4}")).collect::<Vec<_>>().join(" / ")
+                    )
+                })
+                .collect();
+            let within = 100.0 * crate::observers::references::CONVERGED_WITHIN;
+            let _ = writeln!(
+                s,
+                "- `{}`: {} with {} particles, {} (validation RMSE per target at each count tried: {}).",
+                r.name,
+                r.what,
+                particles.count,
+                if particles.converged {
+                    format!(
+                        "the first count whose doubling moved no target's validation RMSE by more than {within:.0} %"
+                    )
+                } else {
+                    format!(
+                        "the most the host runs: **doubling it still moved a target's validation RMSE by more than {within:.0} %, so on this design it is not a floor** (the likelihood is too narrow for particles drawn from the box)"
+                    )
+                },
+                checked.join("; ")
+            );
+        }
+    }
+    s.push_str(&verdict(report));
+    s
+}
+
+/// Where the observers stand: the best embeddable one against the floor, and the map against the
+/// MHE it replaces (validation RMSE, each target's ratio, averaged over targets).
+pub fn verdict(report: &Report<'_>) -> String {
+    let mut s = String::new();
+    let Some(floor) = validation(report, "floor") else {
+        return s;
+    };
+    let converged = report
+        .references
+        .iter()
+        .find_map(|r| r.particles.as_ref())
+        .is_some_and(|p| p.converged);
+    let floor_word = if converged {
+        "the floor's"
+    } else {
+        "the (unconverged) particle filter's"
+    };
+    let best = report
+        .observers
+        .iter()
+        .filter_map(|o| Some((o.kind, mean_ratio(&validation(report, o.kind)?, &floor))))
+        .filter(|(_, r)| r.is_finite())
+        .min_by(|a, b| a.1.total_cmp(&b.1));
+    if let Some((kind, ratio)) = best {
+        let _ = writeln!(
+            s,
+            "\nBest embeddable observer on the validation runs: `{kind}`, {ratio:.2}× {floor_word} RMSE (mean over targets)."
+        );
+    }
+    let map = validation(report, "map");
+    for name in ["mhe", "mhe_prior"] {
+        let (Some(map), Some(mhe)) = (&map, validation(report, name)) else {
+            continue;
+        };
+        let to_mhe = mean_ratio(map, &mhe);
+        let to_floor = mean_ratio(&mhe, &floor);
+        let place = if !converged {
+            "no floor to place it against on this design"
+        } else if to_mhe >= 1.0 && to_floor >= 1.0 {
+            "between the map and the floor"
+        } else if to_mhe < 1.0 {
+            "worse than the map: without a prior the MHE is the maximum-likelihood start of N samples alone, and where they hardly tell the states apart it fits their noise (its largest errors reach the box's edge), while the map, fitted over the box's runs, returns what those N samples say on average over the learning runs"
+        } else {
+            "better than the floor: the floor's particle count falls short there"
+        };
+        let _ = writeln!(
+            s,
+            "\nThe map against `{name}`, the on-line estimate it replaces: {to_mhe:.2}× its RMSE (mean over targets); `{name}` is {to_floor:.2}× {floor_word}, {place}."
+        );
+    }
+    s
+}
