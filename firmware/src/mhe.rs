@@ -24,8 +24,20 @@
 //! [`normal_equations`] returns the output part of both sides, the cost and `x(N−1)` (the estimate
 //! at the window's end, where the map's estimate is); the prior is the caller's (a diagonal added).
 //! A non-finite measurement contributes nothing (its weight is taken as zero), as a refused sample.
+//!
+//! # On the chip
+//!
+//! [`MovingHorizon`] is the estimator for a microcontroller: the last `N` samples in a [`Window`],
+//! and at every sample a fixed number of Gauss–Newton steps from the previous solution moved one
+//! sample on (`x̄ = f(x̂, u)`, also the prior's centre), each step the normal equations (`N` model
+//! steps with their Jacobians), a Cholesky solve (`L D Lᵀ`: `n` divisions, no square root) and a
+//! projection onto the box; then the solution carried to the window's end (`N − 1` more steps). No
+//! allocation, no panic, the same instructions every sample, refused samples in the window included
+//! (but for a step whose system is not positive definite, which ends the iterations early).
 
-use crate::{Plant, Scalar};
+use crate::bounds::project;
+use crate::window::{Sample, Window};
+use crate::{Plant, RejectedSample, Scalar};
 
 /// The output part of a window's Gauss–Newton system at a start `x` (see the module's documentation).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -72,10 +84,11 @@ where
         held = Some(u);
         let (predicted, h) = plant.output(&state, u);
         for i in 0..NY {
+            // A non-finite measurement weighs nothing: by selects, so that a refused sample in the
+            // window does not change the instructions run.
             let residual = y[i] - predicted[i];
-            if !residual.is_finite() {
-                continue;
-            }
+            let finite = residual.is_finite();
+            let residual = core::hint::select_unpredictable(finite, residual, T::ZERO);
             // J_i = H_i Φ: the sensitivity of output i to the start.
             let mut row = [T::ZERO; NX];
             for (c, entry) in row.iter_mut().enumerate() {
@@ -83,7 +96,7 @@ where
                     *entry += hk * sensitivity[k][c];
                 }
             }
-            let w = weights[i];
+            let w = core::hint::select_unpredictable(finite, weights[i], T::ZERO);
             normal.cost += w * residual * residual;
             for (a, &ra) in row.iter().enumerate() {
                 let weighted = w * ra;
@@ -106,48 +119,192 @@ fn identity<T: Scalar>(r: usize, c: usize) -> T {
     }
 }
 
-/// `x` with `A x = b` for a symmetric positive definite `A`, by the Cholesky factorisation `A = G Gᵀ`
-/// (`n` square roots and `n` divisions); `None` when a pivot is not positive (or not finite).
-#[allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)] // the textbook's indices // `!(pivot > 0)`: a NaN pivot is not positive either.
+/// `x` with `A x = b` for a symmetric positive definite `A`, by the square-root-free Cholesky
+/// factorisation `A = L D Lᵀ` (`L` unit lower triangular, `D` diagonal): `n` divisions and no square
+/// root, so no software `sqrtf` (whose path depends on its argument) on a chip; `None` when a pivot
+/// of `D` is not positive (or not finite).
+#[allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)] // the textbook's indices
 pub fn solve_cholesky<T: Scalar, const N: usize>(a: &[[T; N]; N], b: &[T; N]) -> Option<[T; N]> {
-    let mut g = [[T::ZERO; N]; N];
-    let mut inverse_diagonal = [T::ZERO; N];
-    for r in 0..N {
-        for c in 0..=r {
-            let mut sum = a[r][c];
-            for k in 0..c {
-                sum -= g[r][k] * g[c][k];
+    let mut l = [[T::ZERO; N]; N];
+    let mut d = [T::ZERO; N];
+    let mut inverse_d = [T::ZERO; N];
+    for j in 0..N {
+        let mut pivot = a[j][j];
+        for k in 0..j {
+            pivot -= l[j][k] * l[j][k] * d[k];
+        }
+        if !(pivot > T::ZERO) || !pivot.is_finite() {
+            return None;
+        }
+        d[j] = pivot;
+        inverse_d[j] = T::one() / pivot;
+        for i in j + 1..N {
+            let mut sum = a[i][j];
+            for k in 0..j {
+                sum -= l[i][k] * l[j][k] * d[k];
             }
-            if r == c {
-                if !(sum > T::ZERO) || !sum.is_finite() {
-                    return None;
-                }
-                let root = sum.sqrt();
-                g[r][r] = root;
-                inverse_diagonal[r] = T::one() / root;
-            } else {
-                g[r][c] = sum * inverse_diagonal[c];
-            }
+            l[i][j] = sum * inverse_d[j];
         }
     }
-    // G z = b, then Gᵀ x = z.
+    // L z = b, then Lᵀ x = D⁻¹ z.
     let mut z = [T::ZERO; N];
     for r in 0..N {
         let mut sum = b[r];
         for k in 0..r {
-            sum -= g[r][k] * z[k];
+            sum -= l[r][k] * z[k];
         }
-        z[r] = sum * inverse_diagonal[r];
+        z[r] = sum;
     }
     let mut x = [T::ZERO; N];
     for r in (0..N).rev() {
-        let mut sum = z[r];
+        let mut sum = z[r] * inverse_d[r];
         for k in r + 1..N {
-            sum -= g[k][r] * x[k];
+            sum -= l[k][r] * x[k];
         }
-        x[r] = sum * inverse_diagonal[r];
+        x[r] = sum;
     }
     Some(x)
+}
+
+/// `x(N−1)`: the start `x` carried through the window `samples` (oldest first).
+pub fn propagate<'s, T, P, const NX: usize, const NY: usize, const NU: usize>(
+    plant: &P,
+    x: &[T; NX],
+    samples: impl IntoIterator<Item = &'s [T; NU]>,
+) -> [T; NX]
+where
+    T: Scalar + 's,
+    P: Plant<T, NX, NY, NU>,
+{
+    let mut state = *x;
+    let mut held: Option<&[T; NU]> = None;
+    for u in samples {
+        if let Some(previous) = held {
+            state = plant.step(&state, previous).0;
+        }
+        held = Some(u);
+    }
+    state
+}
+
+/// One window's estimate as [`MovingHorizon`] computes it: `settings.iterations` projected
+/// Gauss–Newton steps from `centre` (the prior's centre too, when `prior`), then the solution carried
+/// to the window's end and projected; returns the start and the end.
+pub fn solve_window<T, P, const NX: usize, const NY: usize, const NU: usize>(
+    plant: &P,
+    settings: &Settings<T, NX, NY>,
+    samples: &[Sample<T, NY, NU>],
+    centre: &[T; NX],
+    prior: bool,
+) -> ([T; NX], [T; NX])
+where
+    T: Scalar,
+    P: Plant<T, NX, NY, NU>,
+{
+    let s = settings;
+    let mut x = *centre;
+    for _ in 0..s.iterations {
+        let mut normal = normal_equations(plant, &x, samples.iter().map(|s| (&s.y, &s.u)), &s.weights);
+        for i in 0..NX {
+            if prior {
+                normal.matrix[i][i] += s.prior[i];
+                normal.gradient[i] -= s.prior[i] * (x[i] - centre[i]);
+            }
+            normal.matrix[i][i] += s.damping * normal.matrix[i][i];
+        }
+        let Some(step) = solve_cholesky(&normal.matrix, &normal.gradient) else {
+            break;
+        };
+        let mut next = x;
+        for (value, delta) in next.iter_mut().zip(step) {
+            *value += delta;
+        }
+        x = project(&next, &s.lower, &s.upper);
+    }
+    let end = propagate::<T, P, NX, NY, NU>(plant, &x, samples.iter().map(|s| &s.u));
+    (x, project(&end, &s.lower, &s.upper))
+}
+
+/// What [`MovingHorizon`] is tuned with.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings<T, const NX: usize, const NY: usize> {
+    /// `1 / σ²` per output.
+    pub weights: [T; NY],
+    /// The prior's weight per state (`p / s²`; zero: none).
+    pub prior: [T; NX],
+    /// Lower bound of each state (the box the start is sought in).
+    pub lower: [T; NX],
+    /// Upper bound of each state.
+    pub upper: [T; NX],
+    /// Where the first window's iterations start.
+    pub start: [T; NX],
+    /// Gauss–Newton steps per sample.
+    pub iterations: usize,
+    /// Levenberg's damping, relative to each diagonal entry: keeps the system positive definite where
+    /// a state barely reaches the outputs.
+    pub damping: T,
+}
+
+/// The moving-horizon estimate on the chip (see the module's documentation).
+#[derive(Clone, Debug)]
+pub struct MovingHorizon<T, P, const NX: usize, const NY: usize, const NU: usize, const N: usize> {
+    plant: P,
+    settings: Settings<T, NX, NY>,
+    window: Window<T, N, NY, NU>,
+    /// The latest window's solution (its start), once there is one.
+    solved: Option<[T; NX]>,
+}
+
+impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const NU: usize, const N: usize>
+    MovingHorizon<T, P, NX, NY, NU, N>
+{
+    /// An estimator of `plant` with `settings`, holding no sample.
+    pub const fn new(plant: P, settings: Settings<T, NX, NY>) -> Self {
+        MovingHorizon {
+            plant,
+            settings,
+            window: Window::new(),
+            solved: None,
+        }
+    }
+
+    /// Forgets every sample and solution.
+    pub fn reset(&mut self) {
+        self.window.clear();
+        self.solved = None;
+    }
+
+    /// Takes the sample `(y, u)` and solves the window it completes: the estimate of the state at
+    /// the newest sample, `None` before `N` samples have arrived. A non-finite input is refused (not
+    /// stored); a non-finite measurement is stored (it weighs nothing) and the window is solved, but
+    /// the sample is reported refused; a solution the model carries to a non-finite state is not
+    /// kept (the previous one stays) and the sample is refused.
+    pub fn push(&mut self, y: &[T; NY], u: &[T; NU]) -> Result<Option<[T; NX]>, RejectedSample> {
+        if !u.iter().all(|v| v.is_finite()) {
+            return Err(RejectedSample);
+        }
+        let s = &self.settings;
+        // The previous solution moved one sample on, under the input of the window's oldest sample
+        // (which this push drops): the warm start, and the prior's centre.
+        let moved = match (self.solved, self.window.samples()) {
+            (Some(x), Some(window)) => Some(project(&self.plant.step(&x, &window[0].u).0, &s.lower, &s.upper)),
+            _ => None,
+        };
+        self.window.push(Sample { y: *y, u: *u });
+        let Some(samples) = self.window.samples() else {
+            return Ok(None);
+        };
+        let (x, end) = solve_window(&self.plant, s, samples, &moved.unwrap_or(s.start), moved.is_some());
+        if !x.iter().chain(&end).all(|v| v.is_finite()) {
+            return Err(RejectedSample);
+        }
+        self.solved = Some(x);
+        if y.iter().all(|v| v.is_finite()) {
+            Ok(Some(end))
+        } else {
+            Err(RejectedSample)
+        }
+    }
 }
 
 #[cfg(test)]

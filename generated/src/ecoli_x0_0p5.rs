@@ -2103,6 +2103,30 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     ([t587, t588, t589], [t582, t560, t565, t584, t575, t586])
 }
 
+/// The moving-horizon estimate on the chip ([`firmware::mhe::MovingHorizon`] over [`Discrete`]): at
+/// every sample, 4 Gauss–Newton step(s) over the last [`HORIZON`] samples from the
+/// previous solution moved one sample on (also the prior's centre), each solved by a Cholesky
+/// factorisation and projected onto the box the learning runs cover; `push` gives the state at the
+/// newest sample. Not `observer()`: the report's `mhe_chip` row gives its accuracy beside the
+/// converged MHE, and the on-target tests its cost.
+pub type MheObserver = firmware::mhe::MovingHorizon<f32, Discrete<f32>, STATES, OUTPUTS, INPUTS, HORIZON>;
+
+/// A fresh moving-horizon estimator in `T` (`mhe::<f32>()`: an [`MheObserver`]).
+pub fn mhe<T: Scalar + Maths>() -> firmware::mhe::MovingHorizon<T, Discrete<T>, STATES, OUTPUTS, INPUTS, HORIZON> {
+    firmware::mhe::MovingHorizon::new(
+        firmware::Rk4::new(Plant, T::literal(0.2, 0.2)),
+        firmware::mhe::Settings {
+            weights: [T::literal(10.0, 10.0), T::literal(0.05, 0.05)],
+            prior: [T::literal(3.0290594, 3.029059354372675), T::literal(0.4, 0.4), T::literal(50.319195, 50.31919346640422)],
+            lower: [T::literal(0.4385543, 0.43855427854201756), T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
+            upper: [T::literal(2.2555175, 2.2555173819551477), T::literal(5.0, 5.0), T::literal(0.4457929, 0.4457929173827226)],
+            start: [T::literal(0.5, 0.5), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
+            iterations: 4,
+            damping: T::literal(1e-6, 1e-6),
+        },
+    )
+}
+
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
 pub const KIND: &str = "ekf_box";
 

@@ -2549,6 +2549,30 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     ([t587, t588, t589], [t582, t560, t565, t584, t575, t586])
 }
 
+/// The moving-horizon estimate on the chip ([`firmware::mhe::MovingHorizon`] over [`Discrete`]): at
+/// every sample, 6 Gauss–Newton step(s) over the last [`HORIZON`] samples from the
+/// previous solution moved one sample on (also the prior's centre), each solved by a Cholesky
+/// factorisation and projected onto the box the learning runs cover; `push` gives the state at the
+/// newest sample. Not `observer()`: the report's `mhe_chip` row gives its accuracy beside the
+/// converged MHE, and the on-target tests its cost.
+pub type MheObserver = firmware::mhe::MovingHorizon<f32, Discrete<f32>, STATES, OUTPUTS, INPUTS, HORIZON>;
+
+/// A fresh moving-horizon estimator in `T` (`mhe::<f32>()`: an [`MheObserver`]).
+pub fn mhe<T: Scalar + Maths>() -> firmware::mhe::MovingHorizon<T, Discrete<T>, STATES, OUTPUTS, INPUTS, HORIZON> {
+    firmware::mhe::MovingHorizon::new(
+        firmware::Rk4::new(Plant, T::literal(0.2, 0.2)),
+        firmware::mhe::Settings {
+            weights: [T::literal(10.0, 10.0), T::literal(0.05, 0.05)],
+            prior: [T::literal(6.9391437, 6.9391436561577455), T::literal(4.0, 4.0), T::literal(199.5936, 199.59359398085078)],
+            lower: [T::literal(1.7542171, 1.7542171141680702), T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
+            upper: [T::literal(5.5503993, 5.550399421582292), T::literal(5.0, 5.0), T::literal(0.7078263, 0.7078263090793144)],
+            start: [T::literal(2.0, 2.0), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
+            iterations: 6,
+            damping: T::literal(1e-6, 1e-6),
+        },
+    )
+}
+
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
 pub const KIND: &str = "map";
 

@@ -2110,6 +2110,30 @@ impl firmware::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
 /// box centre is far from the plant.
 pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
 
+/// The moving-horizon estimate on the chip ([`firmware::mhe::MovingHorizon`] over [`Discrete`]): at
+/// every sample, 1 Gauss–Newton step(s) over the last [`HORIZON`] samples from the
+/// previous solution moved one sample on (also the prior's centre), each solved by a Cholesky
+/// factorisation and projected onto the box the learning runs cover; `push` gives the state at the
+/// newest sample. Not `observer()`: the report's `mhe_chip` row gives its accuracy beside the
+/// converged MHE, and the on-target tests its cost.
+pub type MheObserver = firmware::mhe::MovingHorizon<f32, Discrete<f32>, STATES, OUTPUTS, INPUTS, HORIZON>;
+
+/// A fresh moving-horizon estimator in `T` (`mhe::<f32>()`: an [`MheObserver`]).
+pub fn mhe<T: Scalar + Maths>() -> firmware::mhe::MovingHorizon<T, Discrete<T>, STATES, OUTPUTS, INPUTS, HORIZON> {
+    firmware::mhe::MovingHorizon::new(
+        firmware::Rk4::new(Plant, T::literal(1.0, 1.0)),
+        firmware::mhe::Settings {
+            weights: [T::literal(25.0, 25.0)],
+            prior: [T::literal(2.0840242, 2.084024117767096), T::literal(2.4299614, 2.429961378125026)],
+            lower: [T::literal(4.3011494, 4.3011495275450145), T::literal(4.715646, 4.715646027826667)],
+            upper: [T::literal(26.20642, 26.20642049189526), T::literal(25.001827, 25.001827888818976)],
+            start: [T::literal(15.0, 15.0), T::literal(15.0, 15.0)],
+            iterations: 1,
+            damping: T::literal(1e-6, 1e-6),
+        },
+    )
+}
+
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
 pub const KIND: &str = "corrected";
 

@@ -1349,6 +1349,30 @@ impl firmware::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
 /// box centre is far from the plant.
 pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
 
+/// The moving-horizon estimate on the chip ([`firmware::mhe::MovingHorizon`] over [`Discrete`]): at
+/// every sample, 1 Gauss–Newton step(s) over the last [`HORIZON`] samples from the
+/// previous solution moved one sample on (also the prior's centre), each solved by a Cholesky
+/// factorisation and projected onto the box the learning runs cover; `push` gives the state at the
+/// newest sample. Not `observer()`: the report's `mhe_chip` row gives its accuracy beside the
+/// converged MHE, and the on-target tests its cost.
+pub type MheObserver = firmware::mhe::MovingHorizon<f32, Discrete<f32>, STATES, OUTPUTS, INPUTS, HORIZON>;
+
+/// A fresh moving-horizon estimator in `T` (`mhe::<f32>()`: an [`MheObserver`]).
+pub fn mhe<T: Scalar + Maths>() -> firmware::mhe::MovingHorizon<T, Discrete<T>, STATES, OUTPUTS, INPUTS, HORIZON> {
+    firmware::mhe::MovingHorizon::new(
+        firmware::Rk4::new(Plant, T::literal(0.1, 0.1)),
+        firmware::mhe::Settings {
+            weights: [T::literal(5.0, 5.0)],
+            prior: [T::literal(378.56992, 378.56991353499507), T::literal(64.13714, 64.13713836430894)],
+            lower: [T::literal(-2.5734026, -2.5734027581015964), T::literal(-6.151861, -6.151861022986871)],
+            upper: [T::literal(2.5661693, 2.5661692136490704), T::literal(6.334768, 6.3347680430875855)],
+            start: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
+            iterations: 1,
+            damping: T::literal(1e-6, 1e-6),
+        },
+    )
+}
+
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
 pub const KIND: &str = "corrected";
 

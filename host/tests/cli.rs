@@ -48,6 +48,45 @@ fn gen_writes_the_report_and_prints_a_summary() {
         "{observer}"
     );
     assert_eq!(lines.next().unwrap(), format!("  the map alone: {}", rmse("map")));
+    // Then where the observers stand (issue 32): the best embeddable one against the particle floor,
+    // as report.json's figures give it (each target's RMSE over the floor's, averaged).
+    let validation = |list: &str, key: &str, name: &str| -> Vec<f64> {
+        let entry = json[list].as_array().unwrap().iter().find(|o| o[key] == name).unwrap();
+        ["x1", "x2"]
+            .iter()
+            .map(|t| entry["targets"][*t]["rmse_validation"].as_f64().unwrap())
+            .collect()
+    };
+    let floor = validation("references", "name", "floor");
+    let (best, ratio) = json["observers"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|o| {
+            let kind = o["kind"].as_str().unwrap();
+            let v = validation("observers", "kind", kind);
+            (kind, (v[0] / floor[0] + v[1] / floor[1]) / 2.0)
+        })
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .unwrap();
+    assert_eq!(
+        lines.next().unwrap(),
+        format!("  Best embeddable observer on the validation runs: `{best}`, {ratio:.2}× the floor's RMSE (mean over targets).")
+    );
+    for name in ["mhe", "mhe_prior"] {
+        let line = lines.next().unwrap();
+        assert!(
+            line.starts_with(&format!(
+                "  The map against `{name}`, the on-line estimate it replaces: "
+            )),
+            "{line}"
+        );
+    }
+    let line = lines.next().unwrap();
+    assert!(
+        line.starts_with("  The MHE as the chip would run it (`mhe_chip`"),
+        "{line}"
+    );
     assert_eq!(
         lines.next().unwrap(),
         format!("  report: {}", reports.join("vanderpol/report.md").display())

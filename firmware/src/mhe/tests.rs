@@ -50,11 +50,10 @@ fn window() -> (Vec<[f64; 2]>, Vec<[f64; 1]>) {
     (ys, us)
 }
 
-#[test]
-fn one_step_on_a_linear_plant_is_the_weighted_least_squares_solution() {
-    let (ys, us) = window();
-    let weights = [2.0_f64, 0.5];
-    // The stacked system: y(j) − C Σ_{m<j} A^{j−1−m} B u(m) = C A^j x, rows weighted by √w.
+/// The weighted least-squares start of the window `(ys, us)` of [`Linear`], from the stacked system
+/// `y(j) − C Σ_{m<j} A^{j−1−m} B u(m) = C A^j x` (rows weighted by `√w`), solved by nalgebra's SVD; and
+/// the stacked system's residual at `start`, squared.
+fn least_squares(ys: &[[f64; 2]], us: &[[f64; 1]], weights: [f64; 2], start: [f64; 2]) -> ([f64; 2], f64) {
     let (m, b, c) = (a(), Vector2::new(0.0, 0.1), nalgebra::Matrix2::new(1.0, 0.0, 1.0, 1.0));
     let mut o = SMatrix::<f64, 16, 2>::zeros();
     let mut rhs = SVector::<f64, 16>::zeros();
@@ -73,25 +72,106 @@ fn one_step_on_a_linear_plant_is_the_weighted_least_squares_solution() {
             rhs[2 * j + i] = s * (y[i] - free[i]);
         }
     }
-    let expected = o.svd(true, true).solve(&rhs, 1e-14).unwrap();
+    let solution = o.svd(true, true).solve(&rhs, 1e-14).unwrap();
+    let residual = rhs - o * Vector2::new(start[0], start[1]);
+    ([solution[0], solution[1]], residual.norm_squared())
+}
+
+#[test]
+fn one_step_on_a_linear_plant_is_the_weighted_least_squares_solution() {
+    let (ys, us) = window();
+    let weights = [2.0_f64, 0.5];
     let start = [3.0, -2.0];
+    let (expected, cost) = least_squares(&ys, &us, weights, start);
     let normal = normal_equations(&Linear, &start, ys.iter().zip(&us), &weights);
     let step = solve_cholesky(&normal.matrix, &normal.gradient).unwrap();
     for i in 0..2 {
         assert!(
             (start[i] + step[i] - expected[i]).abs() < 1e-10,
-            "{i}: {step:?} {expected}"
+            "{i}: {step:?} {expected:?}"
         );
     }
     // And the cost at the start is the stacked residual's squared norm.
-    let residual = rhs - o * Vector2::new(start[0], start[1]);
-    assert!((normal.cost - residual.norm_squared()).abs() < 1e-9 * normal.cost);
+    assert!((normal.cost - cost).abs() < 1e-9 * normal.cost);
     // The end is the start propagated N − 1 steps.
     let mut x = start;
     for u in &us[..us.len() - 1] {
         x = Linear.step(&x, u).0;
     }
     assert_eq!(normal.end, x);
+    assert_eq!(propagate::<f64, Linear, 2, 2, 1>(&Linear, &start, us.iter()), x);
+}
+
+#[test]
+fn the_chip_estimator_on_a_linear_plant_gives_every_window_s_least_squares_end() {
+    // One Gauss–Newton step, no damping, no prior: exact on a linear plant whatever the warm start.
+    let settings = Settings {
+        weights: [2.0, 0.5],
+        prior: [0.0; 2],
+        lower: [f64::NEG_INFINITY; 2],
+        upper: [f64::INFINITY; 2],
+        start: [0.0; 2],
+        iterations: 1,
+        damping: 0.0,
+    };
+    let mut estimator: MovingHorizon<f64, Linear, 2, 2, 1, 8> = MovingHorizon::new(Linear, settings);
+    let ys: Vec<[f64; 2]> = (0..30)
+        .map(|k| [(k as f64 * 0.7).sin(), (k as f64 * 0.3).cos()])
+        .collect();
+    let us: Vec<[f64; 1]> = (0..30).map(|k| [(k as f64 * 0.5).cos()]).collect();
+    for k in 0..30 {
+        let estimate = estimator.push(&ys[k], &us[k]).unwrap();
+        if k < 7 {
+            assert_eq!(estimate, None);
+            continue;
+        }
+        let (start, _) = least_squares(&ys[k - 7..=k], &us[k - 7..=k], settings.weights, [0.0; 2]);
+        let end = propagate::<f64, Linear, 2, 2, 1>(&Linear, &start, us[k - 7..=k].iter());
+        let estimate = estimate.unwrap();
+        for i in 0..2 {
+            assert!((estimate[i] - end[i]).abs() < 1e-9, "{k}: {estimate:?} vs {end:?}");
+        }
+    }
+    // A non-finite input is refused and not stored; a non-finite measurement is refused but solved.
+    assert_eq!(estimator.push(&[0.0, 0.0], &[f64::NAN]), Err(RejectedSample));
+    assert_eq!(estimator.push(&[f64::NAN, 0.0], &[0.0]), Err(RejectedSample));
+    assert!(estimator.push(&[0.1, 0.2], &[0.0]).unwrap().is_some());
+}
+
+#[test]
+fn a_heavy_prior_holds_the_chip_estimator_on_the_model_s_prediction() {
+    // With a prior far heavier than the data, every window after the first starts where the model
+    // carries the previous solution: the estimate is the first window's end, simulated on.
+    let settings = Settings {
+        weights: [1.0, 1.0],
+        prior: [1e12; 2],
+        lower: [f64::NEG_INFINITY; 2],
+        upper: [f64::INFINITY; 2],
+        start: [0.0; 2],
+        iterations: 2,
+        damping: 0.0,
+    };
+    let mut estimator: MovingHorizon<f64, Linear, 2, 2, 1, 8> = MovingHorizon::new(Linear, settings);
+    let (ys, us) = window();
+    let mut previous_end = None;
+    for k in 0..8 {
+        previous_end = estimator.push(&ys[k], &us[k]).unwrap();
+    }
+    let (mut simulated, mut held) = (previous_end.unwrap(), us[7]);
+    for k in 0..10 {
+        // Measurements far from the model's: the data pull, the prior holds.
+        let u = [0.3 * k as f64];
+        simulated = Linear.step(&simulated, &held).0;
+        held = u;
+        let estimate = estimator.push(&[5.0, -5.0], &u).unwrap().unwrap();
+        for i in 0..2 {
+            let scale = 1.0 + simulated[i].abs();
+            assert!(
+                (estimate[i] - simulated[i]).abs() < 1e-6 * scale,
+                "{k}: {estimate:?} {simulated:?}"
+            );
+        }
+    }
 }
 
 #[test]

@@ -66,24 +66,26 @@ pub fn state_spreads(data: &DataSet, states: usize) -> Vec<f64> {
 
 /// One sampling period of the model in `substeps` RK4 steps: the firmware's one-step [`Rk4`] composed
 /// (the chip's `Rk4<_, _, CHIP_SUBSTEPS>` does the same products in the same order).
-pub(crate) struct Stepped<'a> {
-    pub(crate) step: Rk4<f64, Compiled<'a, f64>, 1>,
+pub(crate) struct Stepped<'a, T = f64> {
+    pub(crate) step: Rk4<T, Compiled<'a, T>, 1>,
     pub(crate) substeps: usize,
 }
 
-impl<const NX: usize, const NY: usize, const NU: usize> Plant<f64, NX, NY, NU> for Stepped<'_> {
-    fn step(&self, x: &[f64; NX], u: &[f64; NU]) -> ([f64; NX], [[f64; NX]; NX]) {
-        let (mut x, mut jacobian) = Plant::<f64, NX, NY, NU>::step(&self.step, x, u);
+impl<T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize, const NU: usize> Plant<T, NX, NY, NU>
+    for Stepped<'_, T>
+{
+    fn step(&self, x: &[T; NX], u: &[T; NU]) -> ([T; NX], [[T; NX]; NX]) {
+        let (mut x, mut jacobian) = Plant::<T, NX, NY, NU>::step(&self.step, x, u);
         for _ in 1..self.substeps {
-            let (next, d) = Plant::<f64, NX, NY, NU>::step(&self.step, &x, u);
+            let (next, d) = Plant::<T, NX, NY, NU>::step(&self.step, &x, u);
             x = next;
             jacobian = firmware::model::product(&d, &jacobian);
         }
         (x, jacobian)
     }
 
-    fn output(&self, x: &[f64; NX], u: &[f64; NU]) -> ([f64; NY], [[f64; NX]; NY]) {
-        Plant::<f64, NX, NY, NU>::output(&self.step, x, u)
+    fn output(&self, x: &[T; NX], u: &[T; NU]) -> ([T; NY], [[T; NX]; NY]) {
+        Plant::<T, NX, NY, NU>::output(&self.step, x, u)
     }
 }
 

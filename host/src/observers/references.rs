@@ -50,6 +50,15 @@ pub enum Cost {
         /// The starts of a run's first window ([`mhe::starts`]).
         starts: usize,
     },
+    /// The chip's estimator ([`firmware::mhe::MovingHorizon`]), run in `f32` as the chip runs it.
+    Chip {
+        /// Its constants (the prior's weight: `mhe_prior`'s).
+        constants: mhe::ChipConstants,
+        /// Its tuning score at each iteration count tried, and the converged MHE's with the same prior.
+        scores: Vec<(usize, f64)>,
+        /// See `scores`.
+        converged_score: f64,
+    },
     /// The particle filter.
     Particles {
         /// Particles.
@@ -111,8 +120,45 @@ pub fn measure(bench: &Bench<'_>) -> Vec<Reference> {
             },
         });
     }
+    references.push(chip(bench, &setup, tuned));
     references.push(floor(bench));
     references
+}
+
+/// The chip's estimator with `mhe_prior`'s weight: the fewest iterations of
+/// [`mhe::CHIP_ITERATIONS`] whose tuning score is within [`mhe::CHIP_WITHIN`] of the converged
+/// MHE's (`tuned`: the weight and that score), judged in `f32`.
+fn chip(bench: &Bench<'_>, setup: &mhe::Setup<'_>, tuned: (f64, f64)) -> Reference {
+    use rayon::prelude::*;
+    let tuning = &bench.result.runs.tuning.runs;
+    let mut scores = Vec::new();
+    let mut chosen = None;
+    for iterations in mhe::CHIP_ITERATIONS {
+        let constants = setup.chip_constants(tuned.0, iterations);
+        let rows: Vec<Rows> = tuning
+            .par_iter()
+            .map(|run| setup.chip_run::<f32>(&constants, run))
+            .collect();
+        let score = bench.tuning_score(&rows);
+        scores.push((iterations, score));
+        if score <= (1.0 + mhe::CHIP_WITHIN) * tuned.1 {
+            chosen = Some(constants);
+            break;
+        }
+    }
+    let constants = chosen.unwrap_or_else(|| {
+        let last = *mhe::CHIP_ITERATIONS.last().expect("counts to try");
+        setup.chip_constants(tuned.0, last)
+    });
+    Reference {
+        what: "moving-horizon estimate on the chip (fixed Gauss–Newton steps, f32)",
+        figures: bench.judge_reference("mhe_chip", None, &|run, _| setup.chip_run::<f32>(&constants, run)),
+        cost: Cost::Chip {
+            constants: constants.clone(),
+            scores,
+            converged_score: tuned.1,
+        },
+    }
 }
 
 /// The particle filter's floor at the first count from [`FIRST_PARTICLES`] whose doubling changes no

@@ -23,6 +23,9 @@ pub struct ReferenceReport {
     /// The moving-horizon estimate's solver, for `mhe` and `mhe_prior`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub solver: Option<SolverReport>,
+    /// The chip estimator's iterations and their check, for `mhe_chip`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub chip: Option<ChipReport>,
     /// The particle filter's count and its check, for `floor`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub particles: Option<ParticlesReport>,
@@ -62,6 +65,17 @@ pub struct SolverReport {
     pub mean_iterations: f64,
     /// The starts of a run's first window.
     pub starts: usize,
+}
+
+/// The chip estimator's constants and how its iteration count was chosen.
+#[derive(Serialize)]
+pub struct ChipReport {
+    /// Its constants.
+    pub constants: crate::observers::mhe::ChipConstants,
+    /// Its tuning score at each iteration count tried.
+    pub scores: Vec<(usize, f64)>,
+    /// The converged MHE's with the same prior.
+    pub converged_score: f64,
 }
 
 /// The particle filter's count and how it was checked.
@@ -118,7 +132,19 @@ pub fn assemble(design: &Design, comparison: &Comparison) -> Vec<ReferenceReport
                     mean_iterations: *mean_iterations,
                     starts: *starts,
                 }),
-                Cost::Particles { .. } => None,
+                _ => None,
+            },
+            chip: match &r.cost {
+                Cost::Chip {
+                    constants,
+                    scores,
+                    converged_score,
+                } => Some(ChipReport {
+                    constants: constants.clone(),
+                    scores: scores.clone(),
+                    converged_score: *converged_score,
+                }),
+                _ => None,
             },
             particles: match &r.cost {
                 Cost::Particles {
@@ -130,7 +156,7 @@ pub fn assemble(design: &Design, comparison: &Comparison) -> Vec<ReferenceReport
                     checked: checked.clone(),
                     converged: *converged,
                 }),
-                Cost::Solver { .. } => None,
+                _ => None,
             },
         })
         .collect()
@@ -229,6 +255,18 @@ pub fn section(report: &Report<'_>) -> String {
                 solver.starts,
             );
         }
+        if let Some(chip) = &r.chip {
+            let _ = writeln!(
+                s,
+                "- `{}`: {}, {} Gauss–Newton step(s) per sample from the previous solution, `mhe_prior`'s weight, the fewest of those tried whose tuning score is within {:.0} % of the converged MHE's ({:.4}; tried: {}); the chip's arithmetic, run on the host in f32.",
+                r.name,
+                r.what,
+                chip.constants.iterations,
+                100.0 * crate::observers::mhe::CHIP_WITHIN,
+                chip.converged_score,
+                chip.scores.iter().map(|(k, v)| format!("{k}: {v:.4}")).collect::<Vec<_>>().join(", ")
+            );
+        }
         if let Some(particles) = &r.particles {
             let checked: Vec<String> = particles
                 .checked
@@ -312,6 +350,13 @@ pub fn verdict(report: &Report<'_>) -> String {
         let _ = writeln!(
             s,
             "\nThe map against `{name}`, the on-line estimate it replaces: {to_mhe:.2}× its RMSE (mean over targets); `{name}` is {to_floor:.2}× {floor_word}, {place}."
+        );
+    }
+    if let (Some(chip), Some(converged)) = (validation(report, "mhe_chip"), validation(report, "mhe_prior")) {
+        let _ = writeln!(
+            s,
+            "\nThe MHE as the chip would run it (`mhe_chip`, `mhe()` of the design file: fixed Gauss–Newton steps in f32): {:.2}× the converged `mhe_prior`'s RMSE (mean over targets); its cost on the chip: docs/chip.md.",
+            mean_ratio(&chip, &converged)
         );
     }
     s

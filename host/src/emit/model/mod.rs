@@ -8,10 +8,12 @@
 //! spec's text is pasted into code.
 //!
 //! One submodule per piece: `rust_text` (literals, lists, a program's `let`s), `plant` (the model and
-//! the EKF), then one per model-based observer kind (`box_ekf`, `started`, `restarted`, `corrected`).
+//! the EKF), then one per model-based observer kind (`box_ekf`, `started`, `restarted`, `corrected`) and the
+//! chip's moving-horizon estimator (`mhe`).
 
 mod box_ekf;
 mod corrected;
+mod mhe;
 mod plant;
 mod restarted;
 mod rust_text;
@@ -42,6 +44,9 @@ pub struct Observers<'a> {
     pub restart: Option<&'a RestartConstants>,
     /// The model-corrected map's constants and each state's target.
     pub corrected: Option<(&'a CorrectionConstants, &'a [usize])>,
+    /// The chip's moving-horizon estimator's constants and the model's RK4 substep, when the host
+    /// could run one.
+    pub mhe: Option<(&'a crate::observers::mhe::ChipConstants, f64)>,
     /// `observer()`'s kind: `Map`, `Corrected` or `Ekf` (never `Auto`: chosen before).
     pub kind: ObserverKind,
     /// Every observer kind the design has and its predicted instructions per steady sample
@@ -74,6 +79,9 @@ pub fn model_source(design: &Design, code: &ModelCode, observers: &Observers<'_>
     }
     if let (Some(ekf), Some(_), Some(restart)) = (observers.ekf, observers.started, observers.restart) {
         text.push_str(&restarted(ekf, restart)?);
+    }
+    if let Some((constants, h)) = observers.mhe {
+        text.push_str(&mhe::mhe(constants, h)?);
     }
     let entry = crate::observers::kind::of(observers.kind);
     let (ty, kind) = (entry.observer_type, entry.kind.name());
