@@ -16,7 +16,7 @@ use crate::data::Rows;
 /// The particle count the floor starts its check at.
 pub const FIRST_PARTICLES: usize = 1000;
 /// The most particles the floor is run with.
-pub const MAX_PARTICLES: usize = 8_000;
+pub const MAX_PARTICLES: usize = 4_000;
 /// The floor's count is the first at which doubling it changes no target's validation RMSE by more
 /// than this (relative).
 pub const CONVERGED_WITHIN: f64 = 0.05;
