@@ -103,8 +103,8 @@ pub struct Comparison {
     /// The map first, then the EKF when the host could run one.
     pub observers: Vec<ObserverFigures>,
     /// The host-only references: the on-line moving-horizon estimate and the particle floor
-    /// ([`super::references`]); empty when the model is beyond the host's sizes.
-    pub references: Vec<super::references::Reference>,
+    /// (`observers::references`); empty when the model is beyond the host's sizes.
+    pub references: Vec<Reference>,
     /// The tuned EKF (`None` when the model is beyond the host's sizes, [`ekf::supported`]).
     pub ekf: Option<ekf::Tuned>,
     /// The tuned model-corrected map, or why the design cannot have one.
@@ -121,4 +121,54 @@ pub struct Comparison {
     /// Largest one-sample difference between the chip's model (`chip_substeps`) and the learning
     /// simulation's (`substeps`) over the validation states, per state, relative to its spread.
     pub chip_model_error: Vec<f64>,
+}
+
+/// One reference's figures and what it took.
+#[derive(Clone, Debug)]
+pub struct Reference {
+    /// What it is, in a phrase.
+    pub what: &'static str,
+    /// Its figures (`kind`: `mhe`, `mhe_prior` or `floor`; no instruction count; tuning and drift NaN).
+    pub figures: ObserverFigures,
+    /// What it took.
+    pub cost: Cost,
+}
+
+/// What a reference took.
+#[derive(Clone, Debug)]
+pub enum Cost {
+    /// The moving-horizon estimate.
+    Solver {
+        /// The prior's weight, tuned on the tuning runs, and the tuning score there; `None` without a prior.
+        prior: Option<(f64, f64)>,
+        /// Windows solved (every set it is judged on).
+        windows: usize,
+        /// Mean and largest seconds per window on the host (one thread's time, runs in parallel).
+        mean_seconds: f64,
+        /// See `mean_seconds`.
+        max_seconds: f64,
+        /// Mean iterations per window (a run's first window: summed over its starts).
+        mean_iterations: f64,
+        /// The starts of a run's first window ([`super::mhe::starts`]).
+        starts: usize,
+    },
+    /// The chip's estimator ([`firmware::mhe::MovingHorizon`]), run in `f32` as the chip runs it.
+    Chip {
+        /// Its constants (the prior's weight: `mhe_prior`'s).
+        constants: super::mhe::ChipConstants,
+        /// Its tuning score at each iteration count tried, and the converged MHE's with the same prior.
+        scores: Vec<(usize, f64)>,
+        /// See `scores`.
+        converged_score: f64,
+    },
+    /// The particle filter.
+    Particles {
+        /// Particles.
+        count: usize,
+        /// Validation RMSE per target at each count tried, doubling from the first count (`references::FIRST_PARTICLES`).
+        checked: Vec<(usize, Vec<f64>)>,
+        /// Whether doubling `count` moved no target's RMSE by more than `references::CONVERGED_WITHIN`;
+        /// when not (at the cap), the floor is not one on this design and the report says so.
+        converged: bool,
+    },
 }

@@ -6,11 +6,11 @@
 
 use std::sync::Mutex;
 
+pub use super::figures::{Cost, Reference};
 use super::kind::Bench;
 use super::mhe::{self, Prior};
 use super::particles::Floor;
 use super::score::errors;
-use super::ObserverFigures;
 use crate::data::Rows;
 
 /// The particle count the floor starts its check at.
@@ -20,56 +20,6 @@ pub const MAX_PARTICLES: usize = 4_000;
 /// The floor's count is the first at which doubling it changes no target's validation RMSE by more
 /// than this (relative).
 pub const CONVERGED_WITHIN: f64 = 0.05;
-
-/// One reference's figures and what it took.
-#[derive(Clone, Debug)]
-pub struct Reference {
-    /// What it is, in a phrase.
-    pub what: &'static str,
-    /// Its figures (`kind`: `mhe`, `mhe_prior` or `floor`; no instruction count; tuning and drift NaN).
-    pub figures: ObserverFigures,
-    /// What it took.
-    pub cost: Cost,
-}
-
-/// What a reference took.
-#[derive(Clone, Debug)]
-pub enum Cost {
-    /// The moving-horizon estimate.
-    Solver {
-        /// The prior's weight, tuned on the tuning runs, and the tuning score there; `None` without a prior.
-        prior: Option<(f64, f64)>,
-        /// Windows solved (every set it is judged on).
-        windows: usize,
-        /// Mean and largest seconds per window on the host (one thread's time, runs in parallel).
-        mean_seconds: f64,
-        /// See `mean_seconds`.
-        max_seconds: f64,
-        /// Mean iterations per window (a run's first window: summed over its starts).
-        mean_iterations: f64,
-        /// The starts of a run's first window ([`mhe::starts`]).
-        starts: usize,
-    },
-    /// The chip's estimator ([`firmware::mhe::MovingHorizon`]), run in `f32` as the chip runs it.
-    Chip {
-        /// Its constants (the prior's weight: `mhe_prior`'s).
-        constants: mhe::ChipConstants,
-        /// Its tuning score at each iteration count tried, and the converged MHE's with the same prior.
-        scores: Vec<(usize, f64)>,
-        /// See `scores`.
-        converged_score: f64,
-    },
-    /// The particle filter.
-    Particles {
-        /// Particles.
-        count: usize,
-        /// Validation RMSE per target at each count tried, doubling from [`FIRST_PARTICLES`].
-        checked: Vec<(usize, Vec<f64>)>,
-        /// Whether doubling `count` moved no target's RMSE by more than [`CONVERGED_WITHIN`]; when
-        /// not (at [`MAX_PARTICLES`]), the floor is not one on this design and the report says so.
-        converged: bool,
-    },
-}
 
 /// Per-window statistics gathered across threads.
 #[derive(Default)]

@@ -42,7 +42,7 @@ pub struct Report<'a> {
     /// Every observer on the same data: the map, then the EKF.
     pub observers: Vec<ObserverReport>,
     /// The host-only references: the on-line moving-horizon estimate and the particle floor.
-    pub references: Vec<super::references::ReferenceReport>,
+    pub references: Vec<ReferenceReport>,
     /// How the EKF was tuned, when the host could run one.
     pub ekf_tuning: Option<EkfTuning>,
     /// The EKF from the box centre started instead at the scenario's `observer_x0` (the paper's
@@ -268,4 +268,82 @@ pub struct LinearReport {
     pub rmse_validation: f64,
     /// Largest error on the validation windows.
     pub max_error_validation: f64,
+}
+
+/// One reference as `report.json` holds it.
+#[derive(Serialize)]
+pub struct ReferenceReport {
+    /// `mhe`, `mhe_prior` or `floor`.
+    pub name: &'static str,
+    /// What it is.
+    pub what: &'static str,
+    /// Per target name.
+    pub targets: std::collections::BTreeMap<String, ReferenceFigures>,
+    /// The moving-horizon estimate's solver, for `mhe` and `mhe_prior`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub solver: Option<SolverReport>,
+    /// The chip estimator's iterations and their check, for `mhe_chip`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub chip: Option<ChipReport>,
+    /// The particle filter's count and its check, for `floor`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub particles: Option<ParticlesReport>,
+}
+
+/// A reference's figures on one target (`null` where not finite). Not on the tuning or long runs.
+#[derive(Serialize)]
+pub struct ReferenceFigures {
+    /// RMSE over the validation windows.
+    pub rmse_validation: Option<f64>,
+    /// The 95th percentile over validation runs of each run's RMSE.
+    pub p95_validation: Option<f64>,
+    /// Largest |error| over the validation windows.
+    pub max_error_validation: Option<f64>,
+    /// RMSE over the scenario's windows.
+    pub rmse_scenario: Option<f64>,
+    /// RMSE over the scenario's noise draws, and their p95, when there is a scenario.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scenario_draws: Option<(Option<f64>, Option<f64>)>,
+    /// RMSE over the mismatch runs, when parameters are uncertain.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rmse_mismatch: Option<f64>,
+}
+
+/// What the moving-horizon estimate took on the host.
+#[derive(Serialize)]
+pub struct SolverReport {
+    /// The prior's weight and its tuning score, when it has one.
+    pub prior: Option<(f64, f64)>,
+    /// Windows solved.
+    pub windows: usize,
+    /// Mean seconds per window (one thread; runs in parallel).
+    pub mean_seconds: f64,
+    /// Largest seconds for one window.
+    pub max_seconds: f64,
+    /// Mean Levenberg–Marquardt iterations per window (a run's first window: summed over its starts).
+    pub mean_iterations: f64,
+    /// The starts of a run's first window.
+    pub starts: usize,
+}
+
+/// The chip estimator's constants and how its iteration count was chosen.
+#[derive(Serialize)]
+pub struct ChipReport {
+    /// Its constants.
+    pub constants: crate::observers::mhe::ChipConstants,
+    /// Its tuning score at each iteration count tried.
+    pub scores: Vec<(usize, f64)>,
+    /// The converged MHE's with the same prior.
+    pub converged_score: f64,
+}
+
+/// The particle filter's count and how it was checked.
+#[derive(Serialize)]
+pub struct ParticlesReport {
+    /// Particles.
+    pub count: usize,
+    /// Validation RMSE per target (spec order) at each count tried.
+    pub checked: Vec<(usize, Vec<f64>)>,
+    /// Whether the last doubling moved no target's RMSE by more than 5 %.
+    pub converged: bool,
 }
