@@ -316,10 +316,12 @@ pub struct SolverReport {
     pub prior: Option<(f64, f64)>,
     /// Windows solved.
     pub windows: usize,
-    /// Mean seconds per window (one thread; runs in parallel).
-    pub mean_seconds: f64,
+    /// Mean seconds per window on the host (one thread; runs in parallel). Like the QP's
+    /// `solve_time_s`, it differs from run to run, so `report.md` does not show it: its text is the
+    /// same every run.
+    pub mean_time_s: f64,
     /// Largest seconds for one window.
-    pub max_seconds: f64,
+    pub max_time_s: f64,
     /// Mean Levenberg–Marquardt iterations per window (a run's first window: summed over its starts).
     pub mean_iterations: f64,
     /// The starts of a run's first window.
