@@ -89,6 +89,42 @@ impl<T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize, co
     }
 }
 
+/// Calls macro `$sized` with every (states, outputs) pair the host instantiates its filters and
+/// moving-horizon estimators for (up to [`MAX_STATES`] × [`MAX_OUTPUTS`]), as `(NX, NY)` literals:
+/// each caller matches the model's sizes against them to pick its const-generic instance.
+macro_rules! host_sizes {
+    ($sized:ident) => {
+        $sized!(
+            (1, 1),
+            (1, 2),
+            (1, 3),
+            (1, 4),
+            (2, 1),
+            (2, 2),
+            (2, 3),
+            (2, 4),
+            (3, 1),
+            (3, 2),
+            (3, 3),
+            (3, 4),
+            (4, 1),
+            (4, 2),
+            (4, 3),
+            (4, 4),
+            (5, 1),
+            (5, 2),
+            (5, 3),
+            (5, 4),
+            (6, 1),
+            (6, 2),
+            (6, 3),
+            (6, 4)
+        )
+    };
+}
+pub(crate) use host_sizes;
+const _: () = assert!(MAX_STATES == 6 && MAX_OUTPUTS == 4, "host_sizes! lists these sizes");
+
 /// The targets estimated at every sample of `run` by the EKF with `constants` started at `x0`.
 /// `None` when the model is larger than the host's instantiations ([`supported`]).
 pub fn estimate_run(code: &ModelCode, constants: &EkfConstants, x0: &[f64], run: &Run) -> Option<Rows> {
@@ -103,32 +139,7 @@ pub fn estimate_run(code: &ModelCode, constants: &EkfConstants, x0: &[f64], run:
     if code.dimensions.inputs > MAX_INPUTS {
         return None;
     }
-    sized!(
-        (1, 1),
-        (1, 2),
-        (1, 3),
-        (1, 4),
-        (2, 1),
-        (2, 2),
-        (2, 3),
-        (2, 4),
-        (3, 1),
-        (3, 2),
-        (3, 3),
-        (3, 4),
-        (4, 1),
-        (4, 2),
-        (4, 3),
-        (4, 4),
-        (5, 1),
-        (5, 2),
-        (5, 3),
-        (5, 4),
-        (6, 1),
-        (6, 2),
-        (6, 3),
-        (6, 4)
-    )
+    crate::observers::ekf::host_sizes!(sized)
 }
 
 fn run_sized<const NX: usize, const NY: usize>(

@@ -30,7 +30,7 @@ use crate::data::{DataSet, Rows, Run};
 use crate::plant::{Compiled, ModelCode};
 use crate::spec::{Axis, Design};
 
-use super::ekf::{Stepped, MAX_INPUTS, MAX_OUTPUTS, MAX_STATES};
+use super::ekf::{Stepped, MAX_INPUTS};
 
 /// The prior's weights tried first on the tuning runs (`p`, on states normalised by their spread),
 /// every second decade from 10⁻² to 10⁴; then the decades either side of the best ([`tune_prior`]).
@@ -170,33 +170,7 @@ impl<'a> Setup<'a> {
                 }
             };
         }
-        const _: () = assert!(MAX_STATES == 6 && MAX_OUTPUTS == 4);
-        sized!(
-            (1, 1),
-            (1, 2),
-            (1, 3),
-            (1, 4),
-            (2, 1),
-            (2, 2),
-            (2, 3),
-            (2, 4),
-            (3, 1),
-            (3, 2),
-            (3, 3),
-            (3, 4),
-            (4, 1),
-            (4, 2),
-            (4, 3),
-            (4, 4),
-            (5, 1),
-            (5, 2),
-            (5, 3),
-            (5, 4),
-            (6, 1),
-            (6, 2),
-            (6, 3),
-            (6, 4)
-        )
+        crate::observers::ekf::host_sizes!(sized)
     }
 
     fn run_sized<const NX: usize, const NY: usize>(&self, prior: Prior, run: &Run) -> Solved {

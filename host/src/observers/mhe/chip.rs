@@ -62,32 +62,7 @@ impl Setup<'_> {
                 }
             };
         }
-        sized!(
-            (1, 1),
-            (1, 2),
-            (1, 3),
-            (1, 4),
-            (2, 1),
-            (2, 2),
-            (2, 3),
-            (2, 4),
-            (3, 1),
-            (3, 2),
-            (3, 3),
-            (3, 4),
-            (4, 1),
-            (4, 2),
-            (4, 3),
-            (4, 4),
-            (5, 1),
-            (5, 2),
-            (5, 3),
-            (5, 4),
-            (6, 1),
-            (6, 2),
-            (6, 3),
-            (6, 4)
-        )
+        crate::observers::ekf::host_sizes!(sized)
     }
 
     fn chip_sized<T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize>(
