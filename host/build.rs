@@ -25,6 +25,8 @@ fn main() {
     println!("cargo:rerun-if-changed={}", src.display());
     let mut files = Vec::new();
     sources(&src, &mut files);
+    // In the order of their paths as text (`src/mhe.rs` before `src/mhe/observer.rs`).
+    files.sort_by_key(|path| path.to_string_lossy().into_owned());
     let mut text = String::from("/// The runtime's library sources: (path relative to its folder, content).\npub const FILES: &[(&str, &str)] = &[\n");
     for path in &files {
         println!("cargo:rerun-if-changed={}", path.display());

@@ -9,10 +9,11 @@ use std::path::{Path, PathBuf};
 
 /// The type alias `gen` declares for each kind, the kind's variant of `on_target::Kind`, and the
 /// firmware shell it is.
-const STARTED: [(&str, &str, &str); 3] = [
+const STARTED: [(&str, &str, &str); 4] = [
     ("CorrectedObserver", "Corrected", "Started"),
     ("StartedEkfObserver", "StartedEkf", "Started"),
     ("RestartedEkfObserver", "RestartedEkf", "Restarted"),
+    ("MheObserver", "Mhe", "mhe::Observer"),
 ];
 
 fn main() {

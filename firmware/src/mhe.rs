@@ -27,7 +27,7 @@
 //!
 //! # On the chip
 //!
-//! [`MovingHorizon`] is the estimator for a microcontroller: the last `N` samples in a [`Window`],
+//! [`Observer`] is the estimator for a microcontroller: the last `N` samples in a [`Window`](crate::Window),
 //! and at every sample a fixed number of Gauss–Newton steps from the previous solution moved one
 //! sample on (`x̄ = f(x̂, u)`, also the prior's centre), each step the normal equations (`N` model
 //! steps with their Jacobians), a Cholesky solve (`L D Lᵀ`: `n` divisions, no square root) and a
@@ -36,8 +36,8 @@
 //! (but for a step whose system is not positive definite, which ends the iterations early).
 
 use crate::bounds::project;
-use crate::window::{Sample, Window};
-use crate::{Plant, RejectedSample, Scalar};
+use crate::window::Sample;
+use crate::{Plant, Scalar};
 
 /// The output part of a window's Gauss–Newton system at a start `x` (see the module's documentation).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -187,7 +187,7 @@ where
     state
 }
 
-/// One window's estimate as [`MovingHorizon`] computes it: `settings.iterations` projected
+/// One window's estimate as [`Observer`] computes it: `settings.iterations` projected
 /// Gauss–Newton steps from `centre` (the prior's centre too, when `prior`), then the solution carried
 /// to the window's end and projected; returns the start and the end.
 pub fn solve_window<T, P, const NX: usize, const NY: usize, const NU: usize>(
@@ -225,7 +225,7 @@ where
     (x, project(&end, &s.lower, &s.upper))
 }
 
-/// What [`MovingHorizon`] is tuned with.
+/// What [`Observer`] is tuned with.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings<T, const NX: usize, const NY: usize> {
     /// `1 / σ²` per output.
@@ -245,67 +245,8 @@ pub struct Settings<T, const NX: usize, const NY: usize> {
     pub damping: T,
 }
 
-/// The moving-horizon estimate on the chip (see the module's documentation).
-#[derive(Clone, Debug)]
-pub struct MovingHorizon<T, P, const NX: usize, const NY: usize, const NU: usize, const N: usize> {
-    plant: P,
-    settings: Settings<T, NX, NY>,
-    window: Window<T, N, NY, NU>,
-    /// The latest window's solution (its start), once there is one.
-    solved: Option<[T; NX]>,
-}
-
-impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const NU: usize, const N: usize>
-    MovingHorizon<T, P, NX, NY, NU, N>
-{
-    /// An estimator of `plant` with `settings`, holding no sample.
-    pub const fn new(plant: P, settings: Settings<T, NX, NY>) -> Self {
-        MovingHorizon {
-            plant,
-            settings,
-            window: Window::new(),
-            solved: None,
-        }
-    }
-
-    /// Forgets every sample and solution.
-    pub fn reset(&mut self) {
-        self.window.clear();
-        self.solved = None;
-    }
-
-    /// Takes the sample `(y, u)` and solves the window it completes: the estimate of the state at
-    /// the newest sample, `None` before `N` samples have arrived. A non-finite input is refused (not
-    /// stored); a non-finite measurement is stored (it weighs nothing) and the window is solved, but
-    /// the sample is reported refused; a solution the model carries to a non-finite state is not
-    /// kept (the previous one stays) and the sample is refused.
-    pub fn push(&mut self, y: &[T; NY], u: &[T; NU]) -> Result<Option<[T; NX]>, RejectedSample> {
-        if !u.iter().all(|v| v.is_finite()) {
-            return Err(RejectedSample);
-        }
-        let s = &self.settings;
-        // The previous solution moved one sample on, under the input of the window's oldest sample
-        // (which this push drops): the warm start, and the prior's centre.
-        let moved = match (self.solved, self.window.samples()) {
-            (Some(x), Some(window)) => Some(project(&self.plant.step(&x, &window[0].u).0, &s.lower, &s.upper)),
-            _ => None,
-        };
-        self.window.push(Sample { y: *y, u: *u });
-        let Some(samples) = self.window.samples() else {
-            return Ok(None);
-        };
-        let (x, end) = solve_window(&self.plant, s, samples, &moved.unwrap_or(s.start), moved.is_some());
-        if !x.iter().chain(&end).all(|v| v.is_finite()) {
-            return Err(RejectedSample);
-        }
-        self.solved = Some(x);
-        if y.iter().all(|v| v.is_finite()) {
-            Ok(Some(end))
-        } else {
-            Err(RejectedSample)
-        }
-    }
-}
+mod observer;
+pub use observer::{Horizon, Observer};
 
 #[cfg(test)]
 mod tests;

@@ -57,6 +57,11 @@ impl<T: Scalar, M, const SUBSTEPS: usize> Rk4<T, M, SUBSTEPS> {
     pub fn model(&self) -> &M {
         &self.model
     }
+
+    /// `h`, the width of one substep.
+    pub fn h(&self) -> T {
+        self.h
+    }
 }
 
 impl<T: Scalar, M: Model<T, NX, NY, NU>, const NX: usize, const NY: usize, const NU: usize, const SUBSTEPS: usize>

@@ -63,7 +63,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["cm", "cm"];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 5] = [("map", 186), ("ekf_box", 992), ("corrected", 796), ("ekf_map", 1000), ("ekf_restart", 992)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 6] = [("map", 186), ("ekf_box", 992), ("corrected", 796), ("ekf_map", 1000), ("ekf_restart", 992), ("mhe", 37719)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -2110,18 +2110,22 @@ impl firmware::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
 /// box centre is far from the plant.
 pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
 
-/// The moving-horizon estimate on the chip ([`firmware::mhe::MovingHorizon`] over [`Discrete`]): at
-/// every sample, 1 Gauss–Newton step(s) over the last [`HORIZON`] samples from the
-/// previous solution moved one sample on (also the prior's centre), each solved by a Cholesky
-/// factorisation and projected onto the box the learning runs cover; `push` gives the state at the
-/// newest sample. Not `observer()`: the report's `mhe_chip` row gives its accuracy beside the
-/// converged MHE, and the on-target tests its cost.
-pub type MheObserver = firmware::mhe::MovingHorizon<f32, Discrete<f32>, STATES, OUTPUTS, INPUTS, HORIZON>;
+/// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
+/// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
+/// learning runs cover, the first window's start, 1 Gauss–Newton step(s) per sample and
+/// Levenberg's damping.
+pub struct Mhe;
 
-/// A fresh moving-horizon estimator in `T` (`mhe::<f32>()`: an [`MheObserver`]).
-pub fn mhe<T: Scalar + Maths>() -> firmware::mhe::MovingHorizon<T, Discrete<T>, STATES, OUTPUTS, INPUTS, HORIZON> {
-    firmware::mhe::MovingHorizon::new(
-        firmware::Rk4::new(Plant, T::literal(1.0, 1.0)),
+impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {
+    type Plant = Discrete<T>;
+
+    #[inline(always)]
+    fn plant() -> Discrete<T> {
+        firmware::Rk4::new(Plant, T::literal(1.0, 1.0))
+    }
+
+    #[inline(always)]
+    fn settings() -> firmware::mhe::Settings<T, STATES, OUTPUTS> {
         firmware::mhe::Settings {
             weights: [T::literal(25.0, 25.0)],
             prior: [T::literal(2.0840242, 2.084024117767096), T::literal(2.4299614, 2.429961378125026)],
@@ -2130,9 +2134,22 @@ pub fn mhe<T: Scalar + Maths>() -> firmware::mhe::MovingHorizon<T, Discrete<T>, 
             start: [T::literal(15.0, 15.0), T::literal(15.0, 15.0)],
             iterations: 1,
             damping: T::literal(1e-6, 1e-6),
-        },
-    )
+        }
+    }
+
+    #[inline(always)]
+    fn targets(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {
+        targets(x, u)
+    }
 }
+
+/// The moving-horizon estimate on the chip ([`firmware::mhe::Observer`] over [`Discrete`], kind
+/// `mhe`): at every sample, 1 Gauss–Newton step(s) over the last [`HORIZON`] samples from
+/// the previous solution moved one sample on (also the prior's centre), each solved by a Cholesky
+/// factorisation (`L D Lᵀ`, no square root) and projected onto the box the learning runs cover;
+/// `estimate` gives the targets at the newest sample. The paper's on-line observer, which the map
+/// replaces: the report gives its accuracy beside the converged MHE's, docs/chip.md its cost.
+pub type MheObserver = firmware::mhe::Observer<f32, Mhe, STATES, OUTPUTS, INPUTS, HORIZON, TARGETS>;
 
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
 pub const KIND: &str = "corrected";
@@ -2147,4 +2164,4 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "35d513e4ecc0fd9c478b5e03035836768c123c573c9122c07233db8eac16e19d";
+pub const TABLES_SHA256: &str = "fc5efe28c433813a9ded69381302a46f24dd4844d857f7d373b43acc336dd42e";

@@ -14,6 +14,7 @@ use crate::fit::maps::FittedMap;
 use crate::fit::DesignResult;
 use crate::generate::Emitted;
 use crate::observers::kind::Constants;
+use crate::observers::mhe::ChipConstants;
 use crate::observers::restart::RestartConstants;
 use crate::observers::Comparison;
 use crate::plant::correction::CorrectionConstants;
@@ -58,6 +59,9 @@ pub struct Tables {
     pub started: Option<(Vec<f64>, Vec<usize>)>,
     /// The restarted EKF's check (`ekf_restart`), when it has one (with `ekf` and `started`).
     pub restart: Option<RestartConstants>,
+    /// The moving-horizon observer's constants (`mhe`), when it has one.
+    #[serde(default)]
+    pub mhe: Option<ChipConstants>,
 }
 
 /// Why saved tables could not be read or written.
@@ -115,6 +119,7 @@ impl Tables {
             Constants::Started => self.started.is_none(),
             Constants::Restart => self.restart.is_none(),
             Constants::Corrected => self.corrected.is_none(),
+            Constants::Mhe => self.mhe.is_none(),
         })
     }
 
@@ -146,6 +151,7 @@ impl Tables {
                 .and_then(|c| c.started.as_ref())
                 .map(|s| (s.p0.clone(), s.state_targets.clone())),
             restart: comparison.and_then(|c| c.restart.clone()),
+            mhe: comparison.and_then(|c| c.mhe.as_ref()).map(|t| t.constants.clone()),
             tables_sha256: String::new(),
         };
         tables.tables_sha256 = tables.content_sha256();
@@ -265,6 +271,20 @@ impl Tables {
         }
         if let Some(r) = &self.restart {
             length("restart.variances", r.variances.len(), nx)?;
+        }
+        if let Some(m) = &self.mhe {
+            length("mhe.weights", m.weights.len(), ny)?;
+            for (field, values) in [
+                ("prior", &m.prior),
+                ("lower", &m.lower),
+                ("upper", &m.upper),
+                ("start", &m.start),
+            ] {
+                length(&format!("mhe.{field}"), values.len(), nx)?;
+            }
+            if m.substeps == 0 || m.iterations == 0 {
+                return bad("mhe.iterations".to_owned(), "or `mhe.substeps` is 0".to_owned());
+            }
         }
         if self.missing(self.chosen).is_some() {
             return bad(

@@ -73,7 +73,7 @@ fn gen_writes_the_report_and_prints_a_summary() {
         lines.next().unwrap(),
         format!("  Best embeddable observer on the validation runs: `{best}`, {ratio:.2}× the floor's RMSE (mean over targets).")
     );
-    for name in ["mhe", "mhe_prior"] {
+    for name in ["mhe_host", "mhe_host_prior"] {
         let line = lines.next().unwrap();
         assert!(
             line.starts_with(&format!(
@@ -83,9 +83,26 @@ fn gen_writes_the_report_and_prints_a_summary() {
         );
     }
     let line = lines.next().unwrap();
-    assert!(
-        line.starts_with("  The MHE as the chip would run it (`mhe_chip`"),
-        "{line}"
+    assert!(line.starts_with("  The MHE as the chip runs it (`mhe`"), "{line}");
+    // What the map saves: the two kinds' predicted counts in report.json, and their ratio.
+    let predicted = |kind: &str| -> f64 {
+        json["observers"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|o| o["kind"] == kind)
+            .unwrap()["predicted_instructions"]
+            .as_f64()
+            .unwrap()
+    };
+    let (map, mhe) = (predicted("map"), predicted("mhe"));
+    assert!(mhe > 50.0 * map, "{map} {mhe}");
+    assert_eq!(
+        lines.next().unwrap(),
+        format!(
+            "  What the map saves on the chip: ~{map:.0} instructions per estimate against the chip MHE's ~{mhe:.0} ({:.0}× fewer; predicted by the cost model, measured in docs/chip.md).",
+            mhe / map
+        )
     );
     assert_eq!(
         lines.next().unwrap(),

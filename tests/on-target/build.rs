@@ -6,12 +6,13 @@ use std::path::PathBuf;
 
 /// An observer kind the runner and the probe know: its name in `ON_TARGET_KIND` / `PROBE_KIND` and
 /// the expression, in the design's module, that makes a fresh one.
-const KINDS: [(&str, &str); 5] = [
+const KINDS: [(&str, &str); 6] = [
     ("map", "map_observer()"),
     ("observer", "observer()"),
     ("corrected", "CorrectedObserver::new()"),
     ("started_ekf", "StartedEkfObserver::new()"),
     ("restarted_ekf", "RestartedEkfObserver::new()"),
+    ("mhe", "MheObserver::new()"),
 ];
 
 fn main() {
@@ -25,7 +26,7 @@ fn main() {
     // filter from the box centre) link the one design named by ON_TARGET_DESIGN (design.rs).
     // ON_TARGET_KIND lists, comma-separated, the observers `on-target` runs one after the other, each
     // over the whole recorded sequence (kinds.rs, which `ekf` does not read): `map` (the default),
-    // `observer` (the design's chosen kind), `corrected`, `started_ekf`, `restarted_ekf`.
+    // `observer` (the design's chosen kind), `corrected`, `started_ekf`, `restarted_ekf`, `mhe`.
     println!("cargo:rerun-if-env-changed=ON_TARGET_DESIGN");
     println!("cargo:rerun-if-env-changed=ON_TARGET_KIND");
     let requested = std::env::var("ON_TARGET_KIND").unwrap_or_default();

@@ -78,6 +78,7 @@ pub fn project_table(all: &Measurements) -> Result<(String, Vec<(String, Measure
                 Kind::StartedEkf => "`StartedEkfObserver`",
                 Kind::RestartedEkf => "`RestartedEkfObserver`",
                 Kind::Ekf => "`ekf()`",
+                Kind::Mhe => "`MheObserver`",
             };
             let chosen = if chosen == Some(kind) { " = `observer()`" } else { "" };
             let (horizon, segments, floor) = match kind {
@@ -86,7 +87,7 @@ pub fn project_table(all: &Measurements) -> Result<(String, Vec<(String, Measure
                     segments.join(", "),
                     (2 * n_z * targets.len()).to_string(),
                 ),
-                Kind::Corrected | Kind::StartedEkf | Kind::RestartedEkf => {
+                Kind::Corrected | Kind::StartedEkf | Kind::RestartedEkf | Kind::Mhe => {
                     (spec.map.horizon.to_string(), "—".to_owned(), "—".to_owned())
                 }
                 Kind::Ekf => ("—".to_owned(), "—".to_owned(), "—".to_owned()),

@@ -137,6 +137,7 @@ fn the_readme_table_is_current(emitted: &generate::Emitted) {
         ("corrected", "`CorrectedObserver`"),
         ("ekf_map", "`StartedEkfObserver`"),
         ("ekf_restart", "`RestartedEkfObserver`"),
+        ("mhe", "`MheObserver`"),
     ];
     assert_eq!(
         rows.len(),

@@ -1,11 +1,13 @@
-//! The chip's moving-horizon estimator as a design file instantiates it
-//! (`firmware::mhe::MovingHorizon` over the emitted `Discrete` model, its window, its warm start) against
-//! the host's run of the same arithmetic (`Setup::chip_run`: the model's programs, the run's samples as
-//! slices) with the same constants, over the design's recorded sequence: the same bits in `f32`, so
-//! that the report's `mhe_chip` figures are what the chip computes. A second prior weight and
-//! iteration count than the shipped ones, so that the check is of the arithmetic, not of one choice.
+//! The chip's moving-horizon observer as a design file instantiates it (`firmware::mhe::Observer` over
+//! the emitted `Discrete` model and targets, its window, its warm start) against the host's run of
+//! the same arithmetic (`Setup::chip_run`: the model's programs, the run's samples as slices) with the
+//! same constants, over the design's recorded sequence: the same bits in `f32`, so that the report's
+//! `mhe` figures are what the chip computes. Another prior weight and step count than the shipped
+//! ones, so that the check is of the arithmetic, not of one choice.
 
-use firmware::mhe::{MovingHorizon, Settings};
+use std::sync::OnceLock;
+
+use firmware::mhe::{Horizon, Observer, Settings};
 use host::data::{Rows, Run};
 use host::observers::mhe::Setup;
 use host::plant::ModelCode;
@@ -48,38 +50,56 @@ macro_rules! check_mhe {
             };
             let host = setup.chip_run::<f32>(&constants, &run);
 
-            let h = design.tau / design.chip_substeps as f64;
-            let mut chip: MovingHorizon<
+            // The design file's model and targets with these constants.
+            struct Other;
+            static SETTINGS: OnceLock<(Settings<f32, { d::STATES }, { d::OUTPUTS }>, f32)> = OnceLock::new();
+            impl Horizon<f32, { d::STATES }, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }> for Other {
+                type Plant = d::Discrete<f32>;
+                fn plant() -> d::Discrete<f32> {
+                    firmware::Rk4::new(d::Plant, SETTINGS.get().expect("set").1)
+                }
+                fn settings() -> Settings<f32, { d::STATES }, { d::OUTPUTS }> {
+                    SETTINGS.get().expect("set").0
+                }
+                fn targets(x: &[f32; d::STATES], u: &[f32; d::INPUTS]) -> [f32; d::TARGETS] {
+                    d::targets(x, u)
+                }
+            }
+            let settings = Settings {
+                weights: array(&constants.weights),
+                prior: array(&constants.prior),
+                lower: array(&constants.lower),
+                upper: array(&constants.upper),
+                start: array(&constants.start),
+                iterations: constants.iterations,
+                damping: constants.damping as f32,
+            };
+            SETTINGS.get_or_init(|| (settings, constants.h as f32));
+            let mut chip: Observer<
                 f32,
-                d::Discrete<f32>,
+                Other,
                 { d::STATES },
                 { d::OUTPUTS },
                 { d::INPUTS },
                 { d::HORIZON },
-            > = MovingHorizon::new(
-                firmware::Rk4::new(d::Plant, h as f32),
-                Settings {
-                    weights: array(&constants.weights),
-                    prior: array(&constants.prior),
-                    lower: array(&constants.lower),
-                    upper: array(&constants.upper),
-                    start: array(&constants.start),
-                    iterations: constants.iterations,
-                    damping: constants.damping as f32,
-                },
-            );
+                { d::TARGETS },
+            > = Observer::new();
             let mut compared = 0;
             for (k, (y, u)) in d::RECORDED_Y.iter().zip(&d::RECORDED_U).enumerate() {
                 // The recording refuses some samples (non-finite values): refused on both sides.
-                match chip.push(y, u) {
-                    Err(_) | Ok(None) => assert!(host[k].iter().all(|v| v.is_nan()), "sample {k}"),
-                    Ok(Some(x)) => {
-                        let ours: Vec<u32> = d::targets(&x, u).iter().map(|v| v.to_bits()).collect();
-                        let theirs: Vec<u32> = host[k].iter().map(|&v| (v as f32).to_bits()).collect();
-                        assert_eq!(ours, theirs, "sample {k}");
-                        compared += 1;
-                    }
+                if chip.push(*y, *u).is_err() || chip.estimate().is_none() {
+                    assert!(host[k].iter().all(|v| v.is_nan()), "sample {k}");
+                    continue;
                 }
+                let ours: Vec<u32> = chip
+                    .estimate()
+                    .unwrap()
+                    .iter()
+                    .map(|e| e.value.to_bits())
+                    .collect();
+                let theirs: Vec<u32> = host[k].iter().map(|&v| (v as f32).to_bits()).collect();
+                assert_eq!(ours, theirs, "sample {k}");
+                compared += 1;
             }
             assert!(compared > d::RECORDED_LEN / 2, "{compared} estimates compared");
         }

@@ -1,6 +1,7 @@
 //! Every generated design states the units of what it takes and returns as its spec gives them: the
 //! spec is read here as plain TOML, independently of the host's validator. And the budget of a spec's
-//! EKF kind is checked before the fit by the count the generated design records.
+//! EKF kind is checked before the fit by the count the generated design records; the C library's
+//! storage holds every kind.
 
 use integration_tests::workspace_root;
 
@@ -106,4 +107,30 @@ fn an_ekf_kind_over_budget_is_refused_before_the_fit_by_the_count_the_fit_record
         }
     }
     assert!(checked >= 6, "only {checked} EKF kinds checked");
+}
+
+/// The C library's storage (`STORAGE_SIZE`, [`storage_bound`](host::standalone::c_library::storage_bound))
+/// holds every observer kind of every shipped design after its mark: an emitted C crate checks only
+/// its own `Observer` when it compiles, and a spec may name any kind.
+#[test]
+fn the_c_storage_bound_holds_every_kind_of_every_design() {
+    use host::standalone::c_library::{storage_bound, MARK_BYTES};
+    let mut checked = 0;
+    macro_rules! holds {
+        ($design:ident, $kind:ident, $type:ident) => {{
+            let design = host::generate::shipped_design(stringify!($design)).unwrap();
+            let size = std::mem::size_of::<generated::$design::$type>();
+            let bound = storage_bound(&design);
+            assert!(
+                MARK_BYTES + size <= bound,
+                "{} {}: {size} B after a {MARK_BYTES} B mark, bound {bound} B",
+                stringify!($design),
+                stringify!($type)
+            );
+            checked += 1;
+        }};
+    }
+    integration_tests::for_each_started_observer!(holds);
+    // Every design the host can filter has the moving-horizon observer.
+    assert!(checked >= 7, "{checked} observers checked");
 }

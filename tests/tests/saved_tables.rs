@@ -15,7 +15,12 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
     let design = host::spec::load(&spec).unwrap();
     let emitted = host::generate::emit_design(design.clone(), &spec, None, &ProgressBar::hidden()).unwrap();
     let in_memory = Tables::of(&emitted);
-    assert!(in_memory.corrected.is_some() && in_memory.ekf.is_some() && in_memory.started.is_some());
+    assert!(
+        in_memory.corrected.is_some()
+            && in_memory.ekf.is_some()
+            && in_memory.started.is_some()
+            && in_memory.mhe.is_some()
+    );
 
     let scratch = std::env::temp_dir().join(format!("saved-tables-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&scratch);
@@ -49,6 +54,7 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         ObserverKind::EkfMap,
         ObserverKind::EkfBox,
         ObserverKind::EkfRestart,
+        ObserverKind::Mhe,
     ] {
         let out = scratch.join(format!("{kind:?}.csv"));
         let how = Estimation {
@@ -132,6 +138,12 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         d::RestartedEkfObserver::estimate,
         d::RestartedEkfObserver::new(),
     );
+    let mhe = chip(
+        &rows,
+        |o: &mut d::MheObserver, y| o.push(y, []).is_ok(),
+        d::MheObserver::estimate,
+        d::MheObserver::new(),
+    );
     // From x(0) = (2, 0.5) (the paper's scenario) the filter from the box centre disagrees with the map at its first
     // estimate (sample N − 1) and restarts from it: that estimate is the map's, the one before the
     // box filter's, so both of its paths are compared below.
@@ -148,6 +160,7 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         (ObserverKind::EkfMap, started_ekf),
         (ObserverKind::EkfBox, box_ekf),
         (ObserverKind::EkfRestart, restarted_ekf),
+        (ObserverKind::Mhe, mhe),
     ] {
         let out = scratch.join(format!("{kind:?}-f32.csv"));
         let how = Estimation {

@@ -340,7 +340,8 @@ fn measured_on_the_emulated_board(spec: &Path, out: &Path) {
             "| `ekf()`",
             "| `CorrectedObserver`",
             "| `StartedEkfObserver`",
-            "| `RestartedEkfObserver`"
+            "| `RestartedEkfObserver`",
+            "| `MheObserver`"
         ],
         "{section}"
     );

@@ -6,6 +6,7 @@
 use nalgebra::{Matrix2, Matrix3, SMatrix, SVector, Vector2, Vector3};
 
 use super::*;
+use crate::RejectedSample;
 
 /// `x⁺ = A x + (0, 0.1 u)`, `y = (x₁, x₁ + x₂)`.
 struct Linear;
@@ -102,68 +103,102 @@ fn one_step_on_a_linear_plant_is_the_weighted_least_squares_solution() {
     assert_eq!(propagate::<f64, Linear, 2, 2, 1>(&Linear, &start, us.iter()), x);
 }
 
+/// The chip observer over [`Linear`] with `SETTINGS` (its targets: the state).
+struct OnLinear<const HEAVY: bool>;
+
+impl<const HEAVY: bool> Horizon<f64, 2, 2, 1, 2> for OnLinear<HEAVY> {
+    type Plant = Linear;
+    fn plant() -> Linear {
+        Linear
+    }
+    fn settings() -> Settings<f64, 2, 2> {
+        if HEAVY {
+            // A prior far heavier than the data.
+            Settings {
+                weights: [1.0, 1.0],
+                prior: [1e12; 2],
+                lower: [f64::NEG_INFINITY; 2],
+                upper: [f64::INFINITY; 2],
+                start: [0.0; 2],
+                iterations: 2,
+                damping: 0.0,
+            }
+        } else {
+            // One Gauss–Newton step, no damping, no prior: exact on a linear plant whatever the start.
+            Settings {
+                weights: [2.0, 0.5],
+                prior: [0.0; 2],
+                lower: [f64::NEG_INFINITY; 2],
+                upper: [f64::INFINITY; 2],
+                start: [0.0; 2],
+                iterations: 1,
+                damping: 0.0,
+            }
+        }
+    }
+    fn targets(x: &[f64; 2], _: &[f64; 1]) -> [f64; 2] {
+        *x
+    }
+}
+
+fn values(estimate: Option<[crate::Estimate<f64>; 2]>) -> Option<[f64; 2]> {
+    estimate.map(|e| e.map(|e| e.value))
+}
+
 #[test]
 fn the_chip_estimator_on_a_linear_plant_gives_every_window_s_least_squares_end() {
-    // One Gauss–Newton step, no damping, no prior: exact on a linear plant whatever the warm start.
-    let settings = Settings {
-        weights: [2.0, 0.5],
-        prior: [0.0; 2],
-        lower: [f64::NEG_INFINITY; 2],
-        upper: [f64::INFINITY; 2],
-        start: [0.0; 2],
-        iterations: 1,
-        damping: 0.0,
-    };
-    let mut estimator: MovingHorizon<f64, Linear, 2, 2, 1, 8> = MovingHorizon::new(Linear, settings);
+    let mut estimator: Observer<f64, OnLinear<false>, 2, 2, 1, 8, 2> = Observer::new();
+    let weights = OnLinear::<false>::settings().weights;
     let ys: Vec<[f64; 2]> = (0..30)
         .map(|k| [(k as f64 * 0.7).sin(), (k as f64 * 0.3).cos()])
         .collect();
     let us: Vec<[f64; 1]> = (0..30).map(|k| [(k as f64 * 0.5).cos()]).collect();
     for k in 0..30 {
-        let estimate = estimator.push(&ys[k], &us[k]).unwrap();
+        estimator.push(ys[k], us[k]).unwrap();
+        let estimate = values(estimator.estimate());
         if k < 7 {
             assert_eq!(estimate, None);
             continue;
         }
-        let (start, _) = least_squares(&ys[k - 7..=k], &us[k - 7..=k], settings.weights, [0.0; 2]);
+        let (start, _) = least_squares(&ys[k - 7..=k], &us[k - 7..=k], weights, [0.0; 2]);
         let end = propagate::<f64, Linear, 2, 2, 1>(&Linear, &start, us[k - 7..=k].iter());
         let estimate = estimate.unwrap();
         for i in 0..2 {
             assert!((estimate[i] - end[i]).abs() < 1e-9, "{k}: {estimate:?} vs {end:?}");
         }
     }
-    // A non-finite input is refused and not stored; a non-finite measurement is refused but solved.
-    assert_eq!(estimator.push(&[0.0, 0.0], &[f64::NAN]), Err(RejectedSample));
-    assert_eq!(estimator.push(&[f64::NAN, 0.0], &[0.0]), Err(RejectedSample));
-    assert!(estimator.push(&[0.1, 0.2], &[0.0]).unwrap().is_some());
+    // A non-finite input is refused and not stored; a non-finite measurement is refused but solved;
+    // a refused sample leaves the latest estimate.
+    let latest = estimator.estimate();
+    let solved = estimator.solution();
+    assert_eq!(estimator.push([0.0, 0.0], [f64::NAN]), Err(RejectedSample));
+    assert_eq!((estimator.estimate(), estimator.solution()), (latest, solved));
+    assert_eq!(estimator.push([f64::NAN, 0.0], [0.0]), Err(RejectedSample));
+    assert_eq!(estimator.estimate(), latest);
+    assert_ne!(estimator.solution(), solved);
+    assert!(estimator.push([0.1, 0.2], [0.0]).is_ok());
+    assert_ne!(estimator.estimate(), latest);
+    estimator.reset();
+    assert!(!estimator.is_ready() && estimator.solution().is_none());
 }
 
 #[test]
 fn a_heavy_prior_holds_the_chip_estimator_on_the_model_s_prediction() {
     // With a prior far heavier than the data, every window after the first starts where the model
     // carries the previous solution: the estimate is the first window's end, simulated on.
-    let settings = Settings {
-        weights: [1.0, 1.0],
-        prior: [1e12; 2],
-        lower: [f64::NEG_INFINITY; 2],
-        upper: [f64::INFINITY; 2],
-        start: [0.0; 2],
-        iterations: 2,
-        damping: 0.0,
-    };
-    let mut estimator: MovingHorizon<f64, Linear, 2, 2, 1, 8> = MovingHorizon::new(Linear, settings);
+    let mut estimator: Observer<f64, OnLinear<true>, 2, 2, 1, 8, 2> = Observer::new();
     let (ys, us) = window();
-    let mut previous_end = None;
     for k in 0..8 {
-        previous_end = estimator.push(&ys[k], &us[k]).unwrap();
+        estimator.push(ys[k], us[k]).unwrap();
     }
-    let (mut simulated, mut held) = (previous_end.unwrap(), us[7]);
+    let (mut simulated, mut held) = (values(estimator.estimate()).unwrap(), us[7]);
     for k in 0..10 {
         // Measurements far from the model's: the data pull, the prior holds.
         let u = [0.3 * k as f64];
         simulated = Linear.step(&simulated, &held).0;
         held = u;
-        let estimate = estimator.push(&[5.0, -5.0], &u).unwrap().unwrap();
+        estimator.push([5.0, -5.0], u).unwrap();
+        let estimate = values(estimator.estimate()).unwrap();
         for i in 0..2 {
             let scale = 1.0 + simulated[i].abs();
             assert!(

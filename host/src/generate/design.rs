@@ -131,12 +131,7 @@ pub fn design_source(
             .ok()
             .map(|t| &t.constants)
             .zip(state_targets.as_deref()),
-        mhe: comparison.references.iter().find_map(|r| match &r.cost {
-            crate::observers::references::Cost::Chip { constants, .. } => {
-                Some((constants, design.tau / design.chip_substeps as f64))
-            }
-            _ => None,
-        }),
+        mhe: comparison.mhe.as_ref().map(|t| &t.constants),
         kind: comparison.chosen.0,
         instructions: &instructions,
         tables_sha256: &crate::tables::Tables::new(design, result, Some(&comparison)).tables_sha256,

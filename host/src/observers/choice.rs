@@ -46,13 +46,21 @@ pub fn check_before_fit(design: &Design, code: &ModelCode) -> Result<(), SpecErr
 
 /// `observer.kind` names a kind the design cannot have.
 fn cannot_have(design: &Design) -> SpecError {
+    let (needs, fix) = if kind::of(design.observer).needs.state_targets {
+        (
+            "every state as a target and a model the host can filter",
+            "add a target per state (expr = the state's name), or set kind = \"map\" or \"auto\"",
+        )
+    } else {
+        ("a model the host can filter", "set kind = \"map\" or \"auto\"")
+    };
     design.error(
         "observer.kind",
         format!(
-            "the design cannot have a `{}` observer: it needs every state as a target and a model the host can filter",
+            "the design cannot have a `{}` observer: it needs {needs}",
             design.observer.name()
         ),
-        "add a target per state (expr = the state's name), or set kind = \"map\" or \"auto\"",
+        fix,
     )
 }
 
@@ -68,7 +76,8 @@ fn over_budget(design: &Design, name: &str, instructions: f64, budget: f64) -> S
 }
 
 /// The kind `observer()` is: the spec's, or for `auto` the lowest [score](score::score) on the
-/// tuning runs among the kinds within `[budget] instructions` (as [`cost`](crate::search::cost) predicts them), except
+/// tuning runs among the kinds within `[budget] instructions` (as [`cost`](crate::search::cost) predicts them;
+/// the moving-horizon estimate only when that budget is set), except
 /// that the cheapest kind (fewest predicted instructions) within [`CHEAPER_WITHIN`] of the best is
 /// preferred. Errors when the spec asks for a kind the design cannot have or the budget
 /// does not allow.
@@ -101,7 +110,11 @@ pub fn choose(
             None => Err(cannot_have(design)),
         };
     }
-    let allowed: Vec<&(ObserverKind, &str, f64, f64)> = scored.iter().filter(|s| within(s.3)).collect();
+    // The on-line estimate is what the map exists to avoid: `auto` takes it only when the spec sets a
+    // budget that allows it.
+    let offered =
+        |kind: ObserverKind, instructions: f64| within(instructions) && (kind != ObserverKind::Mhe || budget.is_some());
+    let allowed: Vec<&(ObserverKind, &str, f64, f64)> = scored.iter().filter(|s| offered(s.0, s.3)).collect();
     let best = allowed.iter().map(|s| s.2).fold(f64::INFINITY, f64::min);
     let Some(&&(kind, name, _, _)) = allowed
         .iter()
@@ -120,8 +133,14 @@ pub fn choose(
     };
     let all: Vec<String> = scored
         .iter()
-        .map(|&(_, n, s, i)| {
-            let over = if within(i) { "" } else { ", over budget" };
+        .map(|&(k, n, s, i)| {
+            let over = if !within(i) {
+                ", over budget"
+            } else if !offered(k, i) {
+                ", not offered without `budget.instructions`"
+            } else {
+                ""
+            };
             format!("{n} {s:.4} at ~{i:.0} instructions{over}")
         })
         .collect();

@@ -113,6 +113,9 @@ pub struct Comparison {
     pub started: Option<Started>,
     /// The box-started EKF's check against the map ([`restart`]); `None` without `started`.
     pub restart: Option<restart::RestartConstants>,
+    /// The moving-horizon observer on the chip (kind `mhe`); `None` when the model is beyond the
+    /// host's sizes.
+    pub mhe: Option<super::mhe::ChipTuned>,
     /// What `observer()` is, and why.
     pub chosen: (ObserverKind, String),
     /// The EKF from the box centre started instead at the scenario's `observer_x0` (the paper's
@@ -128,7 +131,7 @@ pub struct Comparison {
 pub struct Reference {
     /// What it is, in a phrase.
     pub what: &'static str,
-    /// Its figures (`kind`: `mhe`, `mhe_prior` or `floor`; no instruction count; tuning and drift NaN).
+    /// Its figures (`kind`: `mhe_host`, `mhe_host_prior` or `floor`; no instruction count; tuning and drift NaN).
     pub figures: ObserverFigures,
     /// What it took.
     pub cost: Cost,
@@ -151,15 +154,6 @@ pub enum Cost {
         mean_iterations: f64,
         /// The starts of a run's first window ([`super::mhe::starts`]).
         starts: usize,
-    },
-    /// The chip's estimator ([`firmware::mhe::MovingHorizon`]), run in `f32` as the chip runs it.
-    Chip {
-        /// Its constants (the prior's weight: `mhe_prior`'s).
-        constants: super::mhe::ChipConstants,
-        /// Its tuning score at each iteration count tried, and the converged MHE's with the same prior.
-        scores: Vec<(usize, f64)>,
-        /// See `scores`.
-        converged_score: f64,
     },
     /// The particle filter.
     Particles {

@@ -20,7 +20,7 @@
 pub mod chip;
 pub mod solve;
 
-pub use chip::{ChipConstants, CHIP_DAMPING, CHIP_ITERATIONS, CHIP_WITHIN};
+pub use chip::{ChipConstants, ChipTuned, CHIP_DAMPING, CHIP_ITERATIONS, CHIP_WITHIN};
 
 use std::time::Instant;
 

@@ -1,6 +1,6 @@
 //! Every observer of a design judged on the same data: each kind of the registry ([`kind`]: the map,
 //! the EKF over the model ([`ekf`]) from the box centre, the model-corrected map ([`corrected`]), the
-//! EKF started or restarted by the map) tuned in its order, and each target's error on the validation
+//! EKF started or restarted by the map, the moving-horizon estimate on the chip) tuned in its order, and each target's error on the validation
 //! runs, the scenario (whole, and its transient), its noise draws, the long and mismatch runs and the
 //! tuning runs. Every constant is chosen on the tuning runs only; the maps were fitted on the learning
 //! runs only, so every other figure is on data neither saw.
@@ -43,6 +43,7 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         observers: bench.observers,
         started: bench.started.map(|(started, _)| started),
         restart: bench.restart,
+        mhe: bench.mhe,
         chosen,
         ekf: bench.ekf,
         corrected: bench.corrected,

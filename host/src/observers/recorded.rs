@@ -105,6 +105,7 @@ enum Follower<'s, T> {
     Started(ekf::StartedStep<'s, T>),
     Corrected(corrected::CorrectedStep<'s, T>, Vec<(usize, T, T)>),
     Restarted(super::restart::RestartStep<'s, T>),
+    Mhe(Box<dyn super::mhe::chip::ChipStep + 's>),
 }
 
 impl<'a> Setup<'a> {
@@ -221,6 +222,11 @@ impl<'a> Setup<'a> {
                     .collect();
                 Follower::Corrected(corrected::CorrectedStep::new(setting, programs, constants), clamps)
             }
+            (ObserverKind::Mhe, _, _) => Follower::Mhe(super::mhe::chip::chip_stepper::<T>(
+                self.code,
+                tables.horizon,
+                tables.mhe.as_ref().expect("checked"),
+            )),
             _ => Follower::Map,
         }
     }
@@ -246,6 +252,16 @@ impl<T: firmware::Scalar + firmware::Maths + Into<f64>> Follower<'_, T> {
                         targets: values.into_iter().map(|v| (v.into(), Saturation::Inside)).collect(),
                     },
                     None => EstimateRow::without(Status::Refused),
+                };
+            }
+            Follower::Mhe(observer) => {
+                return match observer.step(y, u) {
+                    Some(values) => EstimateRow {
+                        status: Status::Ok,
+                        targets: values.into_iter().map(|v| (v, Saturation::Inside)).collect(),
+                    },
+                    None if y.iter().chain(u).any(|v| !v.is_finite()) => EstimateRow::without(Status::Refused),
+                    None => EstimateRow::without(Status::NoEstimateYet),
                 };
             }
             Follower::Started(observer) => (observer.step(&map_values(), y, u), &[]),

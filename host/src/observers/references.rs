@@ -1,6 +1,7 @@
 //! What every design's observers are measured against, on the host only: the on-line moving-horizon
-//! estimate the map replaces ([`super::mhe`]; without a prior, the paper's problem, and with its prior
-//! weight tuned on the tuning runs) and the particle filter's floor ([`super::particles`]). Neither
+//! estimate the map replaces solved to convergence ([`super::mhe`]; without a prior, the paper's
+//! problem, and with the prior weight the `mhe` kind tuned on the tuning runs) and the particle
+//! filter's floor ([`super::particles`]). Neither
 //! runs on the chip; each is judged on the validation runs, the scenario, its draws and the mismatch
 //! runs ([`Bench::judge_reference`]), in parallel.
 
@@ -33,15 +34,15 @@ struct Tally {
 /// The references of the design on `bench`; empty when the model is beyond the host's sizes.
 pub fn measure(bench: &Bench<'_>) -> Vec<Reference> {
     let (design, code, runs) = (bench.design, bench.code, &bench.result.runs);
-    let Some(setup) = mhe::Setup::new(design, code, &runs.learning) else {
+    let (Some(setup), Some(chip)) = (mhe::Setup::new(design, code, &runs.learning), &bench.mhe) else {
         return Vec::new();
     };
     let mut references = Vec::new();
-    let tuned = mhe::tune_prior(&setup, &runs.tuning.runs, |rows| bench.tuning_score(rows));
+    let tuned = chip.prior;
     for (name, what, prior) in [
-        ("mhe", "moving-horizon estimate, on-line", Prior::None),
+        ("mhe_host", "moving-horizon estimate, on-line", Prior::None),
         (
-            "mhe_prior",
+            "mhe_host_prior",
             "moving-horizon estimate with prior, on-line",
             Prior::Weight(tuned.0),
         ),
@@ -70,45 +71,8 @@ pub fn measure(bench: &Bench<'_>) -> Vec<Reference> {
             },
         });
     }
-    references.push(chip(bench, &setup, tuned));
     references.push(floor(bench));
     references
-}
-
-/// The chip's estimator with `mhe_prior`'s weight: the fewest iterations of
-/// [`mhe::CHIP_ITERATIONS`] whose tuning score is within [`mhe::CHIP_WITHIN`] of the converged
-/// MHE's (`tuned`: the weight and that score), judged in `f32`.
-fn chip(bench: &Bench<'_>, setup: &mhe::Setup<'_>, tuned: (f64, f64)) -> Reference {
-    use rayon::prelude::*;
-    let tuning = &bench.result.runs.tuning.runs;
-    let mut scores = Vec::new();
-    let mut chosen = None;
-    for iterations in mhe::CHIP_ITERATIONS {
-        let constants = setup.chip_constants(tuned.0, iterations);
-        let rows: Vec<Rows> = tuning
-            .par_iter()
-            .map(|run| setup.chip_run::<f32>(&constants, run))
-            .collect();
-        let score = bench.tuning_score(&rows);
-        scores.push((iterations, score));
-        if score <= (1.0 + mhe::CHIP_WITHIN) * tuned.1 {
-            chosen = Some(constants);
-            break;
-        }
-    }
-    let constants = chosen.unwrap_or_else(|| {
-        let last = *mhe::CHIP_ITERATIONS.last().expect("counts to try");
-        setup.chip_constants(tuned.0, last)
-    });
-    Reference {
-        what: "moving-horizon estimate on the chip (fixed Gauss–Newton steps, f32)",
-        figures: bench.judge_reference("mhe_chip", None, &|run, _| setup.chip_run::<f32>(&constants, run)),
-        cost: Cost::Chip {
-            constants: constants.clone(),
-            scores,
-            converged_score: tuned.1,
-        },
-    }
 }
 
 /// The particle filter's floor at the first count from [`FIRST_PARTICLES`] whose doubling changes no

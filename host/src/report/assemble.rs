@@ -65,6 +65,7 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             .iter()
             .map(|o| ObserverReport {
                 kind: o.kind,
+                predicted_instructions: o.instructions,
                 targets: design
                     .targets
                     .iter()
@@ -95,6 +96,7 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             })
             .collect(),
         references: super::references::assemble(design, comparison),
+        mhe_tuning: comparison.mhe.as_ref().map(super::references::mhe_tuning),
         ekf_tuning: comparison.ekf.as_ref().map(|t| EkfTuning {
             log_q: t.log_q.clone(),
             log_p0: t.log_p0.clone(),

@@ -5,6 +5,7 @@
 use std::fmt::Write as _;
 
 use super::schema::{ChipReport, ParticlesReport, ReferenceFigures, ReferenceReport, Report, SolverReport};
+use crate::observers::mhe::ChipTuned;
 use crate::observers::references::{Cost, Reference};
 use crate::observers::Comparison;
 use crate::spec::Design;
@@ -54,18 +55,6 @@ pub fn assemble(design: &Design, comparison: &Comparison) -> Vec<ReferenceReport
                 }),
                 _ => None,
             },
-            chip: match &r.cost {
-                Cost::Chip {
-                    constants,
-                    scores,
-                    converged_score,
-                } => Some(ChipReport {
-                    constants: constants.clone(),
-                    scores: scores.clone(),
-                    converged_score: *converged_score,
-                }),
-                _ => None,
-            },
             particles: match &r.cost {
                 Cost::Particles {
                     count,
@@ -80,6 +69,16 @@ pub fn assemble(design: &Design, comparison: &Comparison) -> Vec<ReferenceReport
             },
         })
         .collect()
+}
+
+/// How the `mhe` kind was tuned, as the report holds it.
+pub fn mhe_tuning(tuned: &ChipTuned) -> ChipReport {
+    ChipReport {
+        constants: tuned.constants.clone(),
+        prior_weight: tuned.prior.0,
+        scores: tuned.scores.clone(),
+        converged_score: tuned.prior.1,
+    }
 }
 
 /// `value`, or "—" where it is not finite.
@@ -173,18 +172,6 @@ pub fn section(report: &Report<'_>) -> String {
                 solver.starts,
             );
         }
-        if let Some(chip) = &r.chip {
-            let _ = writeln!(
-                s,
-                "- `{}`: {}, {} Gauss–Newton step(s) per sample from the previous solution, `mhe_prior`'s weight, the fewest of those tried whose tuning score is within {:.0} % of the converged MHE's ({:.4}; tried: {}); the chip's arithmetic, run on the host in f32.",
-                r.name,
-                r.what,
-                chip.constants.iterations,
-                100.0 * crate::observers::mhe::CHIP_WITHIN,
-                chip.converged_score,
-                chip.scores.iter().map(|(k, v)| format!("{k}: {v:.4}")).collect::<Vec<_>>().join(", ")
-            );
-        }
         if let Some(particles) = &r.particles {
             let checked: Vec<String> = particles
                 .checked
@@ -215,6 +202,16 @@ pub fn section(report: &Report<'_>) -> String {
                 checked.join("; ")
             );
         }
+    }
+    if let Some(chip) = &report.mhe_tuning {
+        let _ = writeln!(
+            s,
+            "- `mhe` (the observer kind, `MheObserver`): {} Gauss–Newton step(s) per sample from the previous solution, `mhe_host_prior`'s weight, the fewest of those tried whose tuning score is within {:.0} % of the converged MHE's ({:.4}; tried: {}); its row is with the observers', the chip's arithmetic run on the host in f32.",
+            chip.constants.iterations,
+            100.0 * crate::observers::mhe::CHIP_WITHIN,
+            chip.converged_score,
+            chip.scores.iter().map(|(k, v)| format!("{k}: {v:.4}")).collect::<Vec<_>>().join(", ")
+        );
     }
     s.push_str(&verdict(report));
     s
@@ -250,7 +247,7 @@ pub fn verdict(report: &Report<'_>) -> String {
         );
     }
     let map = validation(report, "map");
-    for name in ["mhe", "mhe_prior"] {
+    for name in ["mhe_host", "mhe_host_prior"] {
         let (Some(map), Some(mhe)) = (&map, validation(report, name)) else {
             continue;
         };
@@ -270,11 +267,23 @@ pub fn verdict(report: &Report<'_>) -> String {
             "\nThe map against `{name}`, the on-line estimate it replaces: {to_mhe:.2}× its RMSE (mean over targets); `{name}` is {to_floor:.2}× {floor_word}, {place}."
         );
     }
-    if let (Some(chip), Some(converged)) = (validation(report, "mhe_chip"), validation(report, "mhe_prior")) {
+    if let (Some(chip), Some(converged)) = (validation(report, "mhe"), validation(report, "mhe_host_prior")) {
         let _ = writeln!(
             s,
-            "\nThe MHE as the chip would run it (`mhe_chip`, `mhe()` of the design file: fixed Gauss–Newton steps in f32): {:.2}× the converged `mhe_prior`'s RMSE (mean over targets); its cost on the chip: docs/chip.md.",
+            "\nThe MHE as the chip runs it (`mhe`, `MheObserver`: fixed Gauss–Newton steps in f32): {:.2}× the converged `mhe_host_prior`'s RMSE (mean over targets).",
             mean_ratio(&chip, &converged)
+        );
+    }
+    if let (Some(map), Some(mhe)) = (
+        report.observers.iter().find(|o| o.kind == "map"),
+        report.observers.iter().find(|o| o.kind == "mhe"),
+    ) {
+        let _ = writeln!(
+            s,
+            "\nWhat the map saves on the chip: ~{:.0} instructions per estimate against the chip MHE's ~{:.0} ({:.0}× fewer; predicted by the cost model, measured in docs/chip.md).",
+            map.predicted_instructions,
+            mhe.predicted_instructions,
+            mhe.predicted_instructions / map.predicted_instructions
         );
     }
     s

@@ -45,6 +45,8 @@ pub struct Report<'a> {
     pub references: Vec<ReferenceReport>,
     /// How the EKF was tuned, when the host could run one.
     pub ekf_tuning: Option<EkfTuning>,
+    /// How the moving-horizon observer on the chip (`mhe`) was tuned, when the host could run one.
+    pub mhe_tuning: Option<ChipReport>,
     /// The EKF from the box centre started instead at the scenario's `observer_x0` (the paper's
     /// `x̂(0)`): that start, and its scenario RMSE per target in spec order.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -72,8 +74,11 @@ pub struct Report<'a> {
 #[derive(Serialize)]
 pub struct ObserverReport {
     /// [`crate::spec::ObserverKind::name`]: `"map"`, `"corrected"`, `"ekf_box"`, `"ekf_map"`,
-    /// `"ekf_restart"`.
+    /// `"ekf_restart"`, `"mhe"`.
     pub kind: &'static str,
+    /// Instructions per steady sample on the Cortex-M4F as the cost model predicts them
+    /// ([`crate::search::cost`]; measured: `on_target`).
+    pub predicted_instructions: f64,
     /// Per target name.
     pub targets: std::collections::BTreeMap<String, FiguresReport>,
     /// Measured on the emulated Cortex-M4F by `cargo run -p integration-tests --bin on-target-report`
@@ -273,18 +278,15 @@ pub struct LinearReport {
 /// One reference as `report.json` holds it.
 #[derive(Serialize)]
 pub struct ReferenceReport {
-    /// `mhe`, `mhe_prior` or `floor`.
+    /// `mhe_host`, `mhe_host_prior` or `floor`.
     pub name: &'static str,
     /// What it is.
     pub what: &'static str,
     /// Per target name.
     pub targets: std::collections::BTreeMap<String, ReferenceFigures>,
-    /// The moving-horizon estimate's solver, for `mhe` and `mhe_prior`.
+    /// The moving-horizon estimate's solver, for `mhe_host` and `mhe_host_prior`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub solver: Option<SolverReport>,
-    /// The chip estimator's iterations and their check, for `mhe_chip`.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub chip: Option<ChipReport>,
     /// The particle filter's count and its check, for `floor`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub particles: Option<ParticlesReport>,
@@ -328,12 +330,14 @@ pub struct SolverReport {
     pub starts: usize,
 }
 
-/// The chip estimator's constants and how its iteration count was chosen.
+/// The chip's moving-horizon observer's constants and how they were chosen.
 #[derive(Serialize)]
 pub struct ChipReport {
     /// Its constants.
     pub constants: crate::observers::mhe::ChipConstants,
-    /// Its tuning score at each iteration count tried.
+    /// The prior's weight `p`, tuned with the converged estimate on the tuning runs.
+    pub prior_weight: f64,
+    /// Its tuning score at each Gauss–Newton step count tried.
     pub scores: Vec<(usize, f64)>,
     /// The converged MHE's with the same prior.
     pub converged_score: f64,

@@ -133,6 +133,34 @@ pub fn of_restarted(filter: &FilterCode) -> f64 {
     of_ekf(filter)
 }
 
+/// The moving-horizon observer's instructions per model step of its window that do not depend on the
+/// model's arithmetic (the RK4 stages' and the sensitivities' bookkeeping, the window's loads).
+pub const MHE_PER_STEP: f64 = 659.0;
+/// Its instructions per `n³` (the sensitivities' `n × n` products) of a model step.
+pub const MHE_PER_CUBE: f64 = 55.5;
+/// Its instructions per operation of the model's programs in a model step ([`of_program`]).
+pub const MHE_PER_OPERATION: f64 = 0.902;
+
+/// The moving-horizon observer's steady sample ([`firmware::mhe::Observer`], `iterations` Gauss–Newton
+/// steps over windows of `horizon` samples, `substeps` RK4 steps per sample):
+///
+/// ```text
+/// instructions ≈ (iterations + 1)·horizon · (MHE_PER_STEP + MHE_PER_CUBE·n³ + MHE_PER_OPERATION·ops)
+/// ops = 4·substeps·(derivative program) + (output program)
+/// ```
+///
+/// `(iterations + 1)·horizon` model steps with their Jacobians: `iterations` passes over the window
+/// for the normal equations, and one to carry the solution to the window's end. It is generic code
+/// with loops (not written out as the EKF is), so a step costs far more than its arithmetic. The three
+/// constants were fitted to the three shipped models (Van der Pol, two tanks, E. coli: one
+/// measurement each); `tests/tests/on_target.rs` holds all seven shipped designs, with their
+/// different steps and horizons, to [`TOLERANCE`].
+pub fn of_mhe(code: &crate::plant::ModelCode, horizon: usize, iterations: usize, substeps: usize) -> f64 {
+    let n = code.dimensions.states as f64;
+    let ops = 4.0 * substeps as f64 * of_program(&code.derivative) + of_program(&code.output);
+    ((iterations + 1) * horizon) as f64 * (MHE_PER_STEP + MHE_PER_CUBE * n * n * n + MHE_PER_OPERATION * ops)
+}
+
 /// A map's predicted cost per sample and in flash.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Cost {

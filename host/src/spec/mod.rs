@@ -72,6 +72,10 @@ pub enum ObserverKind {
     /// The EKF from the centre of the state box, restarted from the map's first estimate when the
     /// two disagree (`ekf_restart`, `firmware::Restarted`).
     EkfRestart,
+    /// The moving-horizon estimate with a fixed number of Gauss–Newton steps per sample (`mhe`,
+    /// `firmware::mhe::Observer`): the on-line observer the map replaces, offered to `auto` only
+    /// within `budget.instructions`.
+    Mhe,
 }
 
 impl ObserverKind {
@@ -84,6 +88,7 @@ impl ObserverKind {
             ObserverKind::EkfMap => "ekf_map",
             ObserverKind::EkfBox => "ekf_box",
             ObserverKind::EkfRestart => "ekf_restart",
+            ObserverKind::Mhe => "mhe",
         }
     }
 }

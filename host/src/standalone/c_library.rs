@@ -88,7 +88,7 @@ pub fn storage_bound(design: &Design) -> usize {
 
 /// Bytes before the observer in the C storage: the mark that `init` made an observer there, and the
 /// size it was given.
-const MARK_BYTES: usize = 16;
+pub const MARK_BYTES: usize = 16;
 
 /// The mark of an observer of design `name` in C storage: FNV-1a of the name, never 0, so that
 /// zeroed storage, storage `init` refused, or another design's observer are told apart.

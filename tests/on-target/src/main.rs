@@ -1,7 +1,7 @@
 //! Runs the observers of one generated design (chosen by `ON_TARGET_DESIGN` at build time, so that
 //! the program links that design alone) over its recorded sequence on the emulated Cortex-M4F, one
 //! kind after the other (`ON_TARGET_KIND`, comma-separated: `map`, `observer`, `corrected`,
-//! `started_ekf`, `restarted_ekf`; the map alone by default), and reports over semihosting:
+//! `started_ekf`, `restarted_ekf`, `mhe`; the map alone by default), and reports over semihosting:
 //!
 //! ```text
 //! KIND <kind> <START_UP>                                           for each kind, then
@@ -114,6 +114,24 @@ where
     F: Restart<f32, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
 {
     const START_UP: usize = N - 1;
+
+    #[inline(always)]
+    fn take(&mut self, y: [f32; d::OUTPUTS], u: [f32; d::INPUTS]) -> bool {
+        self.push(y, u).is_ok()
+    }
+
+    #[inline(always)]
+    fn latest(&self) -> Estimates {
+        self.estimate()
+    }
+}
+
+impl<H, const NX: usize, const N: usize> Observe
+    for firmware::mhe::Observer<f32, H, NX, { d::OUTPUTS }, { d::INPUTS }, N, { d::TARGETS }>
+where
+    H: firmware::mhe::Horizon<f32, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
+{
+    const START_UP: usize = 0;
 
     #[inline(always)]
     fn take(&mut self, y: [f32; d::OUTPUTS], u: [f32; d::INPUTS]) -> bool {

@@ -59,9 +59,9 @@ pub fn ekf_largest_difference(what: &str, measured: &EkfMeasurement, host: &[Opt
     Ok(largest)
 }
 
-/// The largest `|target − host|` of design `name`'s observer that the map starts, measured on the
-/// chip (f32), against the host's mirror of the same observer in f64 (`host::observers`) started by
-/// the library's f64 map, over the same recorded sequence (the mirror runs the accepted samples: a
+/// The largest `|target − host|` of design `name`'s observer that the map starts (or of its
+/// moving-horizon observer), measured on the chip (f32), against the host's mirror of the same
+/// observer in f64 (`host::observers`) started by the library's f64 map, over the same recorded sequence (the mirror runs the accepted samples: a
 /// refused one changes nothing). An error for a kind the design does not have, or when the two do
 /// not estimate at the same samples.
 pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> Result<f64, String> {
@@ -73,7 +73,11 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
 
     let (design, result) = shipped_build(name)?;
     let code = ModelCode::new(&design).map_err(|e| e.to_string())?;
-    let state_targets = corrected::state_targets(&design)?;
+    // The moving-horizon observer needs no state as a target.
+    let state_targets = match measured.kind {
+        Kind::Mhe => Vec::new(),
+        _ => corrected::state_targets(&design)?,
+    };
     let first = design.map.horizon - 1;
     let widen = |values: &[f32]| values.iter().map(|&v| f64::from(v)).collect::<Vec<f64>>();
     let mut host: Option<Vec<Vec<f64>>> = None;
@@ -122,6 +126,28 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
                 );
             }
         };
+        (@ Mhe, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
+            // The host's mirror in f64 with the constants the design file carries.
+            use firmware::mhe::Horizon;
+            let settings = <$d::Mhe as Horizon<f64, { $d::STATES }, { $d::OUTPUTS }, { $d::INPUTS }, { $d::TARGETS }>>::settings();
+            let plant = <$d::Mhe as Horizon<f64, { $d::STATES }, { $d::OUTPUTS }, { $d::INPUTS }, { $d::TARGETS }>>::plant();
+            let constants = host::observers::mhe::ChipConstants {
+                weights: settings.weights.to_vec(),
+                prior: settings.prior.to_vec(),
+                lower: settings.lower.to_vec(),
+                upper: settings.upper.to_vec(),
+                start: settings.start.to_vec(),
+                iterations: settings.iterations,
+                damping: settings.damping,
+                h: plant.h(),
+                substeps: $d::CHIP_SUBSTEPS,
+            };
+            let _ = (&$targets, $first, &$maps);
+            host::observers::mhe::chip::chip_run::<f64>(&$code, $d::HORIZON, &constants, &$run)
+                .iter()
+                .map(<[f64]>::to_vec)
+                .collect::<Vec<Vec<f64>>>()
+        }};
         (@ Corrected, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
             let (constants, _) = crate::emitted_constants!($d, &$design);
             let setting = corrected::Setting {

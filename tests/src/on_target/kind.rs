@@ -19,16 +19,19 @@ pub enum Kind {
     RestartedEkf,
     /// The EKF from the centre of the state box (`ekf()`, every design).
     Ekf,
+    /// The moving-horizon estimate with fixed Gauss–Newton steps (`MheObserver`).
+    Mhe,
 }
 
 impl Kind {
     /// Every kind, in the order the report lists them.
-    pub const ALL: [Kind; 5] = [
+    pub const ALL: [Kind; 6] = [
         Kind::Map,
         Kind::Corrected,
         Kind::StartedEkf,
         Kind::RestartedEkf,
         Kind::Ekf,
+        Kind::Mhe,
     ];
 
     /// Its name for the on-target program (`ON_TARGET_KIND`, `PROBE_KIND`).
@@ -39,6 +42,7 @@ impl Kind {
             Kind::StartedEkf => "started_ekf",
             Kind::RestartedEkf => "restarted_ekf",
             Kind::Ekf => "ekf",
+            Kind::Mhe => "mhe",
         }
     }
 
@@ -50,6 +54,7 @@ impl Kind {
             Kind::StartedEkf => "ekf_map",
             Kind::RestartedEkf => "ekf_restart",
             Kind::Ekf => "ekf_box",
+            Kind::Mhe => "mhe",
         }
     }
 
@@ -61,6 +66,7 @@ impl Kind {
             Kind::StartedEkf => "StartedEkfObserver::new()",
             Kind::RestartedEkf => "RestartedEkfObserver::new()",
             Kind::Ekf => "ekf()",
+            Kind::Mhe => "MheObserver::new()",
         }
     }
 
@@ -160,6 +166,14 @@ where
     F: firmware::Restart<f32, NX, NY, NU, NT>,
 {
     const START_UP: usize = N - 1;
+}
+
+impl<H, const NX: usize, const NY: usize, const NU: usize, const N: usize, const NT: usize> StartUp
+    for firmware::mhe::Observer<f32, H, NX, NY, NU, N, NT>
+where
+    H: firmware::mhe::Horizon<f32, NX, NY, NU, NT>,
+{
+    const START_UP: usize = 0;
 }
 
 fn follower_start_up<O: StartUp>(_: &O) -> usize {

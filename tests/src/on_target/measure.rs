@@ -132,16 +132,20 @@ pub fn measure_designs(
 /// The `on-target` programs that measure `kinds` (the EKF from the box centre has a program of its
 /// own, `ekf`), each with its file name's suffix: the map and the observers it starts together, and
 /// the restarted EKF alone, since it shares the filter's code with the map-started EKF and linked
-/// together the compiler would inline it differently ([`same_alone`] checks that it does not).
+/// together the compiler would inline it differently ([`same_alone`] checks that it does not), and the
+/// moving-horizon observer alone (it shares the model's code with the others).
 fn programs(kinds: &[Kind]) -> Vec<(Vec<Kind>, &'static str)> {
     let started: Vec<Kind> = kinds
         .iter()
         .copied()
-        .filter(|&k| k != Kind::Ekf && k != Kind::RestartedEkf)
+        .filter(|&k| k != Kind::Ekf && k != Kind::RestartedEkf && k != Kind::Mhe)
         .collect();
     let mut programs = vec![(started, "")];
     if kinds.contains(&Kind::RestartedEkf) {
         programs.push((vec![Kind::RestartedEkf], ".restarted_ekf"));
+    }
+    if kinds.contains(&Kind::Mhe) {
+        programs.push((vec![Kind::Mhe], ".mhe"));
     }
     programs
 }

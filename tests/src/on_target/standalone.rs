@@ -99,6 +99,9 @@ impl Crate {
         if self.tables.ekf.is_some() {
             kinds.push(Kind::Ekf);
         }
+        if self.tables.mhe.is_some() {
+            kinds.push(Kind::Mhe);
+        }
         kinds
     }
 
@@ -258,6 +261,7 @@ fn host_rows(
         Kind::StartedEkf => ObserverKind::EkfMap,
         Kind::RestartedEkf => ObserverKind::EkfRestart,
         Kind::Ekf => ObserverKind::EkfBox,
+        Kind::Mhe => ObserverKind::Mhe,
     };
     recorded::estimate(&user.design, &user.tables, code, kind, precision, rows).map_err(|e| e.to_string())
 }

@@ -1,14 +1,14 @@
-//! The moving-horizon estimate on the chip (`MheObserver`, `mhe()`): the firmware's
-//! [`firmware::mhe::MovingHorizon`] over the design's `Discrete` model, with the constants `gen`
-//! chose (`observers::references`): the same code the host runs in `f32` for the report's
-//! `mhe_chip` row, so that the chip's estimates are the report's, bit for bit.
+//! The moving-horizon estimate on the chip (`MheObserver`, kind `mhe`): the firmware's
+//! [`firmware::mhe::Observer`] over the design's `Discrete` model, with the constants `gen` chose
+//! (`observers::kind::mhe`): the same code the host runs in `f32` for the report's `mhe` row, so that
+//! the chip's estimates are the report's, bit for bit.
 
 use super::rust_text::{list, literal};
 use crate::emit::EmitError;
 use crate::observers::mhe::ChipConstants;
 
-/// The text of `MheObserver` and `mhe()` with `constants` (`h`: the model's RK4 substep).
-pub(super) fn mhe(constants: &ChipConstants, h: f64) -> Result<String, EmitError> {
+/// The text of `Mhe` and `MheObserver` with `constants`.
+pub(super) fn mhe(constants: &ChipConstants) -> Result<String, EmitError> {
     let values = |what: &str, values: &[f64]| -> Result<String, EmitError> {
         let items = values
             .iter()
@@ -19,18 +19,22 @@ pub(super) fn mhe(constants: &ChipConstants, h: f64) -> Result<String, EmitError
     };
     Ok(format!(
         "
-/// The moving-horizon estimate on the chip ([`firmware::mhe::MovingHorizon`] over [`Discrete`]): at
-/// every sample, {iterations} Gauss–Newton step(s) over the last [`HORIZON`] samples from the
-/// previous solution moved one sample on (also the prior's centre), each solved by a Cholesky
-/// factorisation and projected onto the box the learning runs cover; `push` gives the state at the
-/// newest sample. Not `observer()`: the report's `mhe_chip` row gives its accuracy beside the
-/// converged MHE, and the on-target tests its cost.
-pub type MheObserver = firmware::mhe::MovingHorizon<f32, Discrete<f32>, STATES, OUTPUTS, INPUTS, HORIZON>;
+/// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
+/// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
+/// learning runs cover, the first window's start, {iterations} Gauss–Newton step(s) per sample and
+/// Levenberg's damping.
+pub struct Mhe;
 
-/// A fresh moving-horizon estimator in `T` (`mhe::<f32>()`: an [`MheObserver`]).
-pub fn mhe<T: Scalar + Maths>() -> firmware::mhe::MovingHorizon<T, Discrete<T>, STATES, OUTPUTS, INPUTS, HORIZON> {{
-    firmware::mhe::MovingHorizon::new(
-        firmware::Rk4::new(Plant, {h}),
+impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {{
+    type Plant = Discrete<T>;
+
+    #[inline(always)]
+    fn plant() -> Discrete<T> {{
+        firmware::Rk4::new(Plant, {h})
+    }}
+
+    #[inline(always)]
+    fn settings() -> firmware::mhe::Settings<T, STATES, OUTPUTS> {{
         firmware::mhe::Settings {{
             weights: {weights},
             prior: {prior},
@@ -39,12 +43,25 @@ pub fn mhe<T: Scalar + Maths>() -> firmware::mhe::MovingHorizon<T, Discrete<T>, 
             start: {start},
             iterations: {iterations},
             damping: {damping},
-        }},
-    )
+        }}
+    }}
+
+    #[inline(always)]
+    fn targets(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {{
+        targets(x, u)
+    }}
 }}
+
+/// The moving-horizon estimate on the chip ([`firmware::mhe::Observer`] over [`Discrete`], kind
+/// `mhe`): at every sample, {iterations} Gauss–Newton step(s) over the last [`HORIZON`] samples from
+/// the previous solution moved one sample on (also the prior's centre), each solved by a Cholesky
+/// factorisation (`L D Lᵀ`, no square root) and projected onto the box the learning runs cover;
+/// `estimate` gives the targets at the newest sample. The paper's on-line observer, which the map
+/// replaces: the report gives its accuracy beside the converged MHE's, docs/chip.md its cost.
+pub type MheObserver = firmware::mhe::Observer<f32, Mhe, STATES, OUTPUTS, INPUTS, HORIZON, TARGETS>;
 ",
         iterations = constants.iterations,
-        h = literal("chip MHE substep", h)?,
+        h = literal("chip MHE substep", constants.h)?,
         weights = values("weights", &constants.weights)?,
         prior = values("prior", &constants.prior)?,
         lower = values("lower", &constants.lower)?,

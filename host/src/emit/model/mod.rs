@@ -44,9 +44,8 @@ pub struct Observers<'a> {
     pub restart: Option<&'a RestartConstants>,
     /// The model-corrected map's constants and each state's target.
     pub corrected: Option<(&'a CorrectionConstants, &'a [usize])>,
-    /// The chip's moving-horizon estimator's constants and the model's RK4 substep, when the host
-    /// could run one.
-    pub mhe: Option<(&'a crate::observers::mhe::ChipConstants, f64)>,
+    /// The chip's moving-horizon observer's constants, when the host could run one.
+    pub mhe: Option<&'a crate::observers::mhe::ChipConstants>,
     /// `observer()`'s kind: `Map`, `Corrected` or `Ekf` (never `Auto`: chosen before).
     pub kind: ObserverKind,
     /// Every observer kind the design has and its predicted instructions per steady sample
@@ -80,8 +79,8 @@ pub fn model_source(design: &Design, code: &ModelCode, observers: &Observers<'_>
     if let (Some(ekf), Some(_), Some(restart)) = (observers.ekf, observers.started, observers.restart) {
         text.push_str(&restarted(ekf, restart)?);
     }
-    if let Some((constants, h)) = observers.mhe {
-        text.push_str(&mhe::mhe(constants, h)?);
+    if let Some(constants) = observers.mhe {
+        text.push_str(&mhe::mhe(constants)?);
     }
     let entry = crate::observers::kind::of(observers.kind);
     let (ty, kind) = (entry.observer_type, entry.kind.name());

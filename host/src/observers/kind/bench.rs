@@ -36,6 +36,8 @@ pub struct Bench<'a> {
     pub started: Option<(Started, Vec<f64>)>,
     /// The box EKF's check against the map.
     pub restart: Option<RestartConstants>,
+    /// The moving-horizon observer on the chip (`None` when the model is beyond the host's sizes).
+    pub mhe: Option<crate::observers::mhe::ChipTuned>,
     /// The box EKF from the scenario's `observer_x0` instead: that start, its RMSE per target.
     pub ekf_from_observer_x0: Option<(Vec<f64>, Vec<f64>)>,
     /// The map's estimates on every run.
@@ -100,6 +102,7 @@ impl<'a> Bench<'a> {
             corrected: Err("not tuned".to_owned()),
             started: None,
             restart: None,
+            mhe: None,
             ekf_from_observer_x0: None,
             maps,
         }
@@ -132,17 +135,18 @@ impl<'a> Bench<'a> {
 
     /// One kind's figures on every set: `estimate(run, map)` is its estimate of every target at every
     /// sample of `run` (`map`: the map's estimates on `run`), every run from where the kind starts on
-    /// the chip.
+    /// the chip; the runs of a set in parallel.
     pub fn judge(
         &self,
         kind: &'static str,
         instructions: f64,
-        estimate: &dyn Fn(&Run, &Rows) -> Rows,
+        estimate: &(dyn Fn(&Run, &Rows) -> Rows + Sync),
     ) -> ObserverFigures {
+        use rayon::prelude::*;
         let runs = &self.result.runs;
         let maps = &self.maps;
         let on = |set: &DataSet, maps: &[Rows]| -> Vec<Rows> {
-            set.runs.iter().zip(maps).map(|(r, m)| estimate(r, m)).collect()
+            set.runs.par_iter().zip(maps).map(|(r, m)| estimate(r, m)).collect()
         };
         let estimates = Estimates {
             validation: on(&runs.validation, &maps.validation),

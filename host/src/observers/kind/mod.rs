@@ -15,6 +15,7 @@ mod ekf_box;
 mod ekf_map;
 mod ekf_restart;
 mod map;
+mod mhe;
 
 pub use bench::{map_estimates, Bench};
 
@@ -74,6 +75,8 @@ pub enum Constants {
     Restart,
     /// The model-corrected map's gains (`corrected`).
     Corrected,
+    /// The moving-horizon observer's weights, prior, box, start and steps (`mhe`).
+    Mhe,
 }
 
 impl Constants {
@@ -84,17 +87,19 @@ impl Constants {
             Constants::Started => "it needs every state as a target and a model the host can filter",
             Constants::Restart => "its tables hold no restart threshold",
             Constants::Corrected => "it needs every state as a target and a model the host can run",
+            Constants::Mhe => "the model is beyond the sizes the host runs a moving-horizon estimate for",
         }
     }
 }
 
 /// Every kind, in the order they are tuned and reported.
-pub const REGISTRY: [Kind; 5] = [
+pub const REGISTRY: [Kind; 6] = [
     map::KIND,
     ekf_box::KIND,
     corrected::KIND,
     ekf_map::KIND,
     ekf_restart::KIND,
+    mhe::KIND,
 ];
 
 /// The entry of `kind` (`Auto` is not a kind a design has: the map's).
@@ -114,12 +119,12 @@ mod tests {
     #[test]
     fn every_kind_but_auto_has_one_entry_and_the_map_comes_first() {
         // Every variant a spec may name, by its serde name; `auto` is a choice, not a kind.
-        for name in ["map", "corrected", "ekf_map", "ekf_box", "ekf_restart"] {
+        for name in ["map", "corrected", "ekf_map", "ekf_box", "ekf_restart", "mhe"] {
             let kind: ObserverKind = toml::Value::String(name.to_owned()).try_into().unwrap();
             assert_eq!(REGISTRY.iter().filter(|k| k.kind == kind).count(), 1, "{name}");
             assert_eq!(named(name).map(|k| k.kind), Some(kind));
         }
-        assert_eq!(REGISTRY.len(), 5);
+        assert_eq!(REGISTRY.len(), 6);
         assert!(named("auto").is_none());
         assert_eq!(
             REGISTRY[0].kind,

@@ -1,16 +1,16 @@
-//! The moving-horizon estimate as the chip runs it ([`firmware::mhe::MovingHorizon`]): its
+//! The moving-horizon estimate as the chip runs it ([`firmware::mhe::Observer`]): its
 //! constants for a design, and the host's run of the same arithmetic in `f32` or `f64` over a run
-//! (the report's `mhe_chip` row; `tests/tests/generated_mhe.rs` checks it against the emitted
-//! `mhe()`, bit for bit).
+//! (the report's `mhe` row; `tests/tests/generated_mhe.rs` checks it against the emitted
+//! `MheObserver`, bit for bit).
 
 use firmware::{Plant, Rk4};
 
 use super::Setup;
 use crate::data::{Rows, Run};
 use crate::observers::ekf::{Stepped, MAX_INPUTS};
-use crate::plant::Compiled;
+use crate::plant::{Compiled, ModelCode};
 
-/// Gauss–Newton steps per sample the chip's estimator ([`firmware::mhe::MovingHorizon`]) may take:
+/// Gauss–Newton steps per sample the chip's estimator ([`firmware::mhe::Observer`]) may take:
 /// the fewest whose tuning score is within [`CHIP_WITHIN`] of the converged MHE's with the same prior.
 pub const CHIP_ITERATIONS: [usize; 5] = [1, 2, 3, 4, 6];
 /// See [`CHIP_ITERATIONS`].
@@ -35,6 +35,21 @@ pub struct ChipConstants {
     pub iterations: usize,
     /// Levenberg's damping.
     pub damping: f64,
+    /// The model's RK4 step, `tau / substeps`.
+    pub h: f64,
+    /// RK4 steps per sample (`chip_substeps`).
+    pub substeps: usize,
+}
+
+/// The chip estimator as `gen` tuned it (the `mhe` kind, [`crate::observers::kind`]).
+#[derive(Clone, Debug)]
+pub struct ChipTuned {
+    /// The prior's weight `p`, tuned with the converged estimate, and that estimate's tuning score.
+    pub prior: (f64, f64),
+    /// The constants the chip runs on (`iterations`: the fewest within [`CHIP_WITHIN`]).
+    pub constants: ChipConstants,
+    /// The tuning score at each step count tried.
+    pub scores: Vec<(usize, f64)>,
 }
 
 impl Setup<'_> {
@@ -48,97 +63,141 @@ impl Setup<'_> {
             start: self.starts[0].clone(),
             iterations,
             damping: CHIP_DAMPING,
+            h: self.h,
+            substeps: self.substeps,
         }
     }
 
     /// The chip estimator's estimates of every target at every sample of `run`, in `T` exactly as
-    /// the firmware computes them ([`firmware::mhe::solve_window`] over the model's programs).
+    /// the firmware computes them ([`chip_run`]).
     pub fn chip_run<T: firmware::Scalar + firmware::Maths>(&self, constants: &ChipConstants, run: &Run) -> Rows {
-        macro_rules! sized {
-            ($(($nx:literal, $ny:literal)),*) => {
-                match (self.code.dimensions.states, self.code.dimensions.outputs) {
-                    $(($nx, $ny) => self.chip_sized::<T, $nx, $ny>(constants, run),)*
-                    _ => unreachable!("sizes checked by Setup::new"),
-                }
-            };
-        }
-        crate::observers::ekf::host_sizes!(sized)
+        chip_run::<T>(self.code, self.horizon, constants, run)
     }
+}
 
-    fn chip_sized<T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize>(
-        &self,
-        constants: &ChipConstants,
-        run: &Run,
-    ) -> Rows {
-        use firmware::mhe::{solve_window, Settings};
-        use firmware::Sample;
+/// The estimates of every target at every sample of `run` of the chip's moving-horizon observer of a
+/// model `code` (windows of `horizon` samples) with `constants`, in `T` exactly as
+/// [`firmware::mhe::Observer`] computes them ([`chip_stepper`]): NaN where it gives none or refuses the
+/// sample.
+pub fn chip_run<T: firmware::Scalar + firmware::Maths>(
+    code: &ModelCode,
+    horizon: usize,
+    constants: &ChipConstants,
+    run: &Run,
+) -> Rows {
+    let mut stepper = chip_stepper::<T>(code, horizon, constants);
+    let mut rows = Rows::new(code.dimensions.targets);
+    let nan = vec![f64::NAN; code.dimensions.targets];
+    for (y, u) in run.measurements.iter().zip(run.inputs.iter()) {
+        rows.push(stepper.step(y, u).as_deref().unwrap_or(&nan));
+    }
+    rows
+}
+
+/// The chip's moving-horizon observer on the host, one sample at a time ([`chip_stepper`]).
+pub trait ChipStep {
+    /// Takes the sample `(y, u)`: the targets at it, or `None` where the chip gives no estimate yet
+    /// or refuses the sample.
+    fn step(&mut self, y: &[f64], u: &[f64]) -> Option<Vec<f64>>;
+}
+
+/// A fresh [`ChipStep`] in `T` of the model `code` with `constants` over windows of `horizon` samples.
+pub fn chip_stepper<'a, T: firmware::Scalar + firmware::Maths + 'a>(
+    code: &'a ModelCode,
+    horizon: usize,
+    constants: &ChipConstants,
+) -> Box<dyn ChipStep + 'a> {
+    macro_rules! sized {
+        ($(($nx:literal, $ny:literal)),*) => {
+            match (code.dimensions.states, code.dimensions.outputs) {
+                $(($nx, $ny) => Box::new(Stepper::<T, $nx, $ny>::new(code, horizon, constants)),)*
+                _ => unreachable!("sizes checked by Setup::new and the saved tables"),
+            }
+        };
+    }
+    crate::observers::ekf::host_sizes!(sized)
+}
+
+/// [`firmware::mhe::Observer`]'s state, with the constants as values.
+struct Stepper<'a, T, const NX: usize, const NY: usize> {
+    code: &'a ModelCode,
+    horizon: usize,
+    plant: Stepped<'a, T>,
+    settings: firmware::mhe::Settings<T, NX, NY>,
+    /// The samples stored, the newest last (the window: the last `horizon`).
+    stored: std::collections::VecDeque<firmware::Sample<T, NY, MAX_INPUTS>>,
+    solved: Option<[T; NX]>,
+    scratch: Vec<T>,
+}
+
+impl<'a, T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize> Stepper<'a, T, NX, NY> {
+    fn new(code: &'a ModelCode, horizon: usize, constants: &ChipConstants) -> Self {
         let literal = |v: f64| T::literal(v as f32, v);
-        let plant = Stepped {
-            step: Rk4::new(Compiled::<T>::new(self.code), literal(self.h)),
-            substeps: self.substeps,
-        };
         let array = |v: &[f64]| -> [T; NX] { std::array::from_fn(|i| literal(v[i])) };
-        let settings: Settings<T, NX, NY> = Settings {
-            weights: std::array::from_fn(|i| literal(constants.weights[i])),
-            prior: array(&constants.prior),
-            lower: array(&constants.lower),
-            upper: array(&constants.upper),
-            start: array(&constants.start),
-            iterations: constants.iterations,
-            damping: literal(constants.damping),
-        };
-        let n = self.horizon;
-        let targets = self.code.dimensions.targets;
-        let mut rows = Rows::new(targets);
-        let nan = vec![f64::NAN; targets];
-        // `MovingHorizon::push`, sample by sample: a sample with a non-finite input is not stored; the
-        // window is the last `n` stored; the previous solution moves on under the dropped sample's input.
-        let mut stored: Vec<Sample<T, NY, MAX_INPUTS>> = Vec::new();
-        let mut solved: Option<[T; NX]> = None;
-        let mut scratch = Vec::new();
-        for (y, u) in run.measurements.iter().zip(run.inputs.iter()) {
-            let sample = Sample {
-                y: std::array::from_fn(|i| literal(y[i])),
-                u: std::array::from_fn(|i| if i < u.len() { literal(u[i]) } else { T::ZERO }),
-            };
-            if !sample.u.iter().all(|v| v.is_finite()) {
-                rows.push(&nan);
-                continue;
-            }
-            let moved = solved.filter(|_| stored.len() >= n).map(|x| {
-                let next = Plant::<T, NX, NY, MAX_INPUTS>::step(&plant, &x, &stored[stored.len() - n].u).0;
-                firmware::bounds::project(&next, &settings.lower, &settings.upper)
-            });
-            stored.push(sample);
-            if stored.len() < n {
-                rows.push(&nan);
-                continue;
-            }
-            let window = &stored[stored.len() - n..];
-            let (x, end) = solve_window(
-                &plant,
-                &settings,
-                window,
-                &moved.unwrap_or(settings.start),
-                moved.is_some(),
-            );
-            if !x.iter().chain(&end).all(|v| v.is_finite()) {
-                rows.push(&nan);
-                continue;
-            }
-            solved = Some(x);
-            if !sample.y.iter().all(|v| v.is_finite()) {
-                rows.push(&nan); // refused: solved, but reported refused
-                continue;
-            }
-            let values: Vec<f64> = self
-                .code
-                .targets(&end, &sample.u, &mut scratch)
-                .iter()
-                .map(|v| v.to_subset().expect("a real"))
-                .collect();
-            rows.push(&values);
+        Stepper {
+            code,
+            horizon,
+            plant: Stepped {
+                step: Rk4::new(Compiled::<T>::new(code), literal(constants.h)),
+                substeps: constants.substeps,
+            },
+            settings: firmware::mhe::Settings {
+                weights: std::array::from_fn(|i| literal(constants.weights[i])),
+                prior: array(&constants.prior),
+                lower: array(&constants.lower),
+                upper: array(&constants.upper),
+                start: array(&constants.start),
+                iterations: constants.iterations,
+                damping: literal(constants.damping),
+            },
+            stored: std::collections::VecDeque::with_capacity(horizon + 1),
+            solved: None,
+            scratch: Vec::new(),
         }
-        rows
+    }
+}
+
+impl<T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize> ChipStep for Stepper<'_, T, NX, NY> {
+    /// `firmware::mhe::Observer::push`: a sample with a non-finite input is not stored; the window is
+    /// the last `horizon` stored; the previous solution moves on under the dropped sample's input.
+    fn step(&mut self, y: &[f64], u: &[f64]) -> Option<Vec<f64>> {
+        use firmware::mhe::solve_window;
+        let literal = |v: f64| T::literal(v as f32, v);
+        let sample = firmware::Sample {
+            y: std::array::from_fn(|i| literal(y[i])),
+            u: std::array::from_fn(|i| if i < u.len() { literal(u[i]) } else { T::ZERO }),
+        };
+        if !sample.u.iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        let (n, s) = (self.horizon, &self.settings);
+        let moved = self.solved.filter(|_| self.stored.len() == n).map(|x| {
+            let next = Plant::<T, NX, NY, MAX_INPUTS>::step(&self.plant, &x, &self.stored[0].u).0;
+            firmware::bounds::project(&next, &s.lower, &s.upper)
+        });
+        self.stored.push_back(sample);
+        if self.stored.len() > n {
+            self.stored.pop_front();
+        }
+        if self.stored.len() < n {
+            return None;
+        }
+        let window: Vec<firmware::Sample<T, NY, MAX_INPUTS>> = self.stored.iter().copied().collect();
+        let (x, end) = solve_window(&self.plant, s, &window, &moved.unwrap_or(s.start), moved.is_some());
+        if !x.iter().chain(&end).all(|v| v.is_finite()) {
+            return None;
+        }
+        self.solved = Some(x);
+        if !sample.y.iter().all(|v| v.is_finite()) {
+            return None; // refused: solved, but reported refused
+        }
+        let values: Vec<f64> = self
+            .code
+            .targets(&end, &sample.u, &mut self.scratch)
+            .iter()
+            .map(|v| v.to_subset().expect("a real"))
+            .collect();
+        // Targets the model overflows in are refused.
+        values.iter().all(|v| v.is_finite()).then_some(values)
     }
 }

@@ -1,0 +1,156 @@
+//! The moving-horizon estimate as an observer kind: the last `N` samples, the previous solution, and
+//! at every sample [`solve_window`] from that solution moved one sample on, with the interface every
+//! observer has (`push`, `estimate`, `reset`). A design provides the model, the constants and its
+//! targets through [`Horizon`], so that `new` is `const` and the constants are folded into the code.
+
+use core::marker::PhantomData;
+
+use super::{solve_window, Settings};
+use crate::bounds::project;
+use crate::window::{Sample, Window};
+use crate::{Estimate, Plant, RejectedSample, Saturation, Scalar};
+
+/// What a design gives its moving-horizon observer.
+pub trait Horizon<T: Scalar, const NX: usize, const NY: usize, const NU: usize, const NT: usize> {
+    /// The model the windows are solved with (the design's RK4 step and its Jacobian).
+    type Plant: Plant<T, NX, NY, NU>;
+    /// That model.
+    fn plant() -> Self::Plant;
+    /// The constants `gen` chose: weights, prior, box, first start, iterations, damping.
+    fn settings() -> Settings<T, NX, NY>;
+    /// The targets at state `x` and input `u`.
+    fn targets(x: &[T; NX], u: &[T; NU]) -> [T; NT];
+}
+
+/// The moving-horizon observer of design `H`: `NT` targets from `NY` outputs and `NU` inputs, `NX`
+/// states, windows of `N` samples (see the [module's](super) documentation for the maths).
+///
+/// Every accepted sample runs [`solve_window`]: `settings().iterations` Gauss–Newton steps from the
+/// previous solution moved one sample on (the prior's centre too), then the solution carried to the
+/// newest sample. Memory is fixed (the window, the previous solution, the latest estimate); once the
+/// window is full every sample runs the same instructions. A sample with a non-finite input is
+/// refused and not stored; one with a non-finite measurement is stored (it weighs nothing), solved
+/// and refused; a solution the model carries to a non-finite value is not kept. A refused sample
+/// leaves the latest estimate as it was. The estimate is a state inside the box, so its targets
+/// carry no saturation flag (each is `Inside`).
+pub struct Observer<T, H, const NX: usize, const NY: usize, const NU: usize, const N: usize, const NT: usize> {
+    window: Window<T, N, NY, NU>,
+    /// The latest window's solution (its start), once there is one.
+    solved: Option<[T; NX]>,
+    latest: Option<[Estimate<T>; NT]>,
+    design: PhantomData<fn() -> H>,
+}
+
+impl<T, H, const NX: usize, const NY: usize, const NU: usize, const N: usize, const NT: usize>
+    Observer<T, H, NX, NY, NU, N, NT>
+where
+    T: Scalar,
+    H: Horizon<T, NX, NY, NU, NT>,
+{
+    /// An observer holding no sample.
+    #[must_use]
+    pub const fn new() -> Self {
+        Observer {
+            window: Window::new(),
+            solved: None,
+            latest: None,
+            design: PhantomData,
+        }
+    }
+
+    /// Takes the sample of the current instant (see the type's documentation).
+    #[inline]
+    pub fn push(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
+        if !u.iter().all(|v| v.is_finite()) {
+            return Err(RejectedSample);
+        }
+        let (plant, s) = (H::plant(), H::settings());
+        // The previous solution moved one sample on, under the input of the window's oldest sample
+        // (which this push drops): the warm start, and the prior's centre.
+        let moved = match (self.solved, self.window.samples()) {
+            (Some(x), Some(window)) => Some(project(&plant.step(&x, &window[0].u).0, &s.lower, &s.upper)),
+            _ => None,
+        };
+        self.window.push(Sample { y, u });
+        let Some(samples) = self.window.samples() else {
+            return Ok(()); // fewer than N samples: no estimate yet
+        };
+        let (x, end) = solve_window(&plant, &s, samples, &moved.unwrap_or(s.start), moved.is_some());
+        if !x.iter().chain(&end).all(|v| v.is_finite()) {
+            return Err(RejectedSample);
+        }
+        self.solved = Some(x);
+        let values = H::targets(&end, &u);
+        if !y.iter().chain(&values).all(|v| v.is_finite()) {
+            return Err(RejectedSample);
+        }
+        let mut latest = [Estimate {
+            value: T::ZERO,
+            saturation: Saturation::Inside,
+        }; NT];
+        for (estimate, value) in latest.iter_mut().zip(values) {
+            estimate.value = value;
+        }
+        self.latest = Some(latest);
+        Ok(())
+    }
+
+    /// The latest estimate, one per target, or `None` before the first.
+    #[inline]
+    #[must_use]
+    pub fn estimate(&self) -> Option<[Estimate<T>; NT]> {
+        self.latest
+    }
+
+    /// The state at the latest window's start, once a window was solved.
+    #[must_use]
+    pub fn solution(&self) -> Option<[T; NX]> {
+        self.solved
+    }
+
+    /// Forgets every sample and solution (a new batch or run starts).
+    pub fn reset(&mut self) {
+        *self = Self::new();
+    }
+
+    /// `true` once an estimate is available.
+    #[must_use]
+    pub fn is_ready(&self) -> bool {
+        self.latest.is_some()
+    }
+}
+
+impl<T, H, const NX: usize, const NY: usize, const NU: usize, const N: usize, const NT: usize> Default
+    for Observer<T, H, NX, NY, NU, N, NT>
+where
+    T: Scalar,
+    H: Horizon<T, NX, NY, NU, NT>,
+{
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T: Scalar, H, const NX: usize, const NY: usize, const NU: usize, const N: usize, const NT: usize> Clone
+    for Observer<T, H, NX, NY, NU, N, NT>
+{
+    fn clone(&self) -> Self {
+        Observer {
+            window: self.window.clone(),
+            solved: self.solved,
+            latest: self.latest,
+            design: PhantomData,
+        }
+    }
+}
+
+impl<T: Scalar, H, const NX: usize, const NY: usize, const NU: usize, const N: usize, const NT: usize> core::fmt::Debug
+    for Observer<T, H, NX, NY, NU, N, NT>
+{
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("mhe::Observer")
+            .field("solved", &self.solved)
+            .field("latest", &self.latest)
+            .finish_non_exhaustive()
+    }
+}

@@ -1,0 +1,67 @@
+//! `mhe`: the moving-horizon estimate as the chip runs it (the design's `MheObserver`,
+//! [`firmware::mhe::Observer`]): the prior's weight tuned on the tuning runs with the converged
+//! estimate ([`mhe::tune_prior`]), then the fewest Gauss–Newton steps per sample of
+//! [`mhe::CHIP_ITERATIONS`] whose tuning score is within [`mhe::CHIP_WITHIN`] of the converged
+//! estimate's; judged in `f32`, the chip's arithmetic. `auto` offers it only within
+//! `budget.instructions` ([`crate::observers::choose`]).
+
+use super::{Bench, Constants, Kind, Needs};
+use crate::data::Rows;
+use crate::observers::mhe::{self, ChipTuned};
+use crate::observers::ObserverFigures;
+use crate::search::cost;
+use crate::spec::ObserverKind;
+
+/// See the module's documentation.
+pub const KIND: Kind = Kind {
+    kind: ObserverKind::Mhe,
+    what: "the moving-horizon estimate with fixed Gauss–Newton steps",
+    observer_type: "MheObserver",
+    measured_as: "`MheObserver`",
+    legend: "MHE on the chip",
+    colour: (23, 190, 207),
+    dots: false,
+    needs: Needs {
+        state_targets: false,
+        filter: true,
+        constants: &[Constants::Mhe],
+    },
+    cost_before_fit: None,
+    tune,
+};
+
+/// The prior's weight and the steps, chosen on the tuning runs; then judged in `f32`.
+fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
+    use rayon::prelude::*;
+    let (design, code, runs) = (bench.design, bench.code, &bench.result.runs);
+    let setup = mhe::Setup::new(design, code, &runs.learning)?;
+    let tuning = &runs.tuning.runs;
+    let prior = mhe::tune_prior(&setup, tuning, |rows| bench.tuning_score(rows));
+    let mut scores = Vec::new();
+    let mut chosen = None;
+    for iterations in mhe::CHIP_ITERATIONS {
+        let constants = setup.chip_constants(prior.0, iterations);
+        let rows: Vec<Rows> = tuning
+            .par_iter()
+            .map(|run| setup.chip_run::<f32>(&constants, run))
+            .collect();
+        let score = bench.tuning_score(&rows);
+        scores.push((iterations, score));
+        if score <= (1.0 + mhe::CHIP_WITHIN) * prior.1 {
+            chosen = Some(constants);
+            break;
+        }
+    }
+    let constants = chosen.unwrap_or_else(|| {
+        let last = *mhe::CHIP_ITERATIONS.last().expect("counts to try");
+        setup.chip_constants(prior.0, last)
+    });
+    let instructions = cost::of_mhe(code, design.map.horizon, constants.iterations, constants.substeps);
+    let figures = bench.judge("mhe", instructions, &|run, _| setup.chip_run::<f32>(&constants, run));
+    bench.mhe = Some(ChipTuned {
+        prior,
+        constants,
+        scores,
+    });
+    Some(figures)
+}
