@@ -60,6 +60,10 @@ pub fn lib_source(designs: &[Design], sources: &Path, present: &[String]) -> Res
     })
 }
 
+/// The folder of the `generated` crate that holds every shipped design's C99 source (`<name>.h`,
+/// `<name>.c`, [`crate::emit::c_source`]): C for firmware without a Rust toolchain.
+pub const C_FOLDER: &str = "c";
+
 /// Where `gen` writes.
 #[derive(Clone, Debug)]
 pub struct Destinations {
@@ -304,6 +308,16 @@ pub(crate) fn write_report(one: &Prepared) -> Result<(Vec<PathBuf>, Vec<PathBuf>
 fn write(one: Prepared, to: &Destinations) -> Result<Outcome, GenerateError> {
     let (report_files, figures) = write_report(&one)?;
     let (folder, design, source) = (one.folder, one.emitted.design, one.emitted.source);
+    // The C99 source first: the Rust file, written last, is what marks the design as generated.
+    let c_folder = to.generated.join(C_FOLDER);
+    std::fs::create_dir_all(&c_folder).map_err(|source| GenerateError::Io {
+        path: c_folder.clone(),
+        source,
+    })?;
+    for (extension, text) in [("h", &one.emitted.c_source.header), ("c", &one.emitted.c_source.source)] {
+        let path = c_folder.join(format!("{}.{extension}", design.name));
+        output::write_if_changed(&path, text).map_err(|source| GenerateError::Io { path, source })?;
+    }
     let observer = to.generated.join("src").join(format!("{}.rs", design.name));
     let changed = output::write_if_changed(&observer, &source).map_err(|source| GenerateError::Io {
         path: observer.clone(),

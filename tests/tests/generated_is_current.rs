@@ -1,4 +1,4 @@
-//! The files in `generated/` are exactly what `gen` produces now, producing them is deterministic, and
+//! The files in `generated/` (the Rust design files and their C99 source) are exactly what `gen` produces now, producing them is deterministic, and
 //! every shipped design passes the quality gates (what `gen --strict` asks); the README's figure,
 //! `docs/figures/vanderpol-estimation.svg`, is the one `gen` draws now, and its headline table shows
 //! the figures `gen` computes now.
@@ -31,6 +31,16 @@ fn generated_files_match_a_fresh_generation() {
             "{} is not what `cargo run -p host -- gen` produces now: regenerate and commit it",
             file.display()
         );
+        // Its C99 source (`generated/c/`), the same way.
+        assert_eq!(first.c_source, second.c_source, "C of {name} is not deterministic");
+        for (extension, text) in [("h", &first.c_source.header), ("c", &first.c_source.source)] {
+            let file = workspace_root().join("generated/c").join(format!("{name}.{extension}"));
+            assert!(
+                std::fs::read_to_string(&file).unwrap_or_default() == *text,
+                "{} is not what `cargo run -p host -- gen` produces now: regenerate and commit it",
+                file.display()
+            );
+        }
         if name == "vanderpol" {
             the_readme_figure_is_current(&first);
             the_readme_table_is_current(&first);
@@ -39,6 +49,21 @@ fn generated_files_match_a_fresh_generation() {
         names.push(name);
     }
     the_docs_numbers_are_current(&reports);
+    // `generated/c/` holds the shipped designs' C and nothing else.
+    let mut c_files: Vec<String> = std::fs::read_dir(workspace_root().join("generated/c"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    c_files.sort();
+    let mut expected: Vec<String> = names
+        .iter()
+        .flat_map(|n| [format!("{n}.c"), format!("{n}.h")])
+        .collect();
+    expected.sort();
+    assert_eq!(
+        c_files, expected,
+        "generated/c/ must hold exactly the shipped designs' C: delete files of removed specs"
+    );
     let lib = std::fs::read_to_string(workspace_root().join("generated/src/lib.rs")).unwrap();
     assert_eq!(
         lib,

@@ -87,26 +87,20 @@ fn taps_note(gains: &[f32]) -> String {
     }
 }
 
-/// `+ GAINS_<upper>[i] * w[…].y[…]` for every regressor entry with a non-zero gain, in regressor
-/// order, one per line: the window `w` is oldest first, so lag `l` is `w[N - 1 - l]`. Pruned taps
-/// (gain exactly 0) are left out, as [`firmware::estimate_by_loops`] skips them.
+/// `+ GAINS_<upper>[i] * w[…].y[…]` for every term of the dot product ([`super::terms::dot_terms`]),
+/// one per line.
 fn dot_lines(upper: &str, gains: &[f32], horizon: usize, outputs: usize, inputs: usize) -> String {
-    let mut lines = Vec::new();
-    let mut i = 0;
-    for (count, field) in [(outputs, "y"), (inputs, "u")] {
-        for lag in 0..horizon {
-            for m in 0..count {
-                if gains[i] != 0.0 {
-                    lines.push(format!(
-                        "                    + GAINS_{upper}[{i}] * w[{}].{field}[{m}]",
-                        horizon - 1 - lag
-                    ));
-                }
-                i += 1;
-            }
-        }
-    }
-    lines.join("\n")
+    super::terms::dot_terms(gains, horizon, outputs, inputs)
+        .iter()
+        .map(|t| {
+            let field = if t.input { "u" } else { "y" };
+            format!(
+                "                    + GAINS_{upper}[{}] * w[{}].{field}[{}]",
+                t.gain, t.sample, t.entry
+            )
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
 }
 
 /// A `[&str; _]` literal of units.

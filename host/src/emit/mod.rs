@@ -13,6 +13,7 @@
 //! `doc_text` makes spec text safe for doc comments, `recorded` gives the recorded sequence a design
 //! carries, `placement` where a file lives, and [`precision`] checks the f32 tables.
 
+pub mod c_source;
 mod design_file;
 mod doc_text;
 pub mod families;
@@ -21,6 +22,7 @@ pub mod model;
 mod placement;
 pub mod precision;
 mod recorded;
+pub mod terms;
 
 pub use design_file::design_file;
 pub use doc_text::name_list;

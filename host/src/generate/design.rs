@@ -51,11 +51,17 @@ pub fn emit_design(
         },
     };
     let (comparison, source) = design_source(&design, &result, &placement, spec, progress)?;
+    let c_source = emit::c_source::c_source(&design, &result).map_err(|source| GenerateError::Emit {
+        file: spec.to_owned(),
+        design: design.name.clone(),
+        source,
+    })?;
     Ok(Emitted {
         design,
         result,
         comparison,
         source,
+        c_source,
         search,
         taps,
     })

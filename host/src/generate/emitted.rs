@@ -14,6 +14,8 @@ pub struct Emitted {
     pub comparison: crate::observers::Comparison,
     /// The text of `generated/src/<design>.rs`.
     pub source: String,
+    /// The design's map in C99 (`generated/c/<design>.h`, `.c`).
+    pub c_source: crate::emit::c_source::CSource,
     /// The design search, when the spec asks for one ([`crate::search`]); `design.map` holds its choice.
     pub search: Option<crate::search::Outcome>,
     /// Validation accuracy against the taps kept, when the spec prunes `L` ([`crate::search::sparsity`]).

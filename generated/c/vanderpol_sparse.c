@@ -1,0 +1,104 @@
+/* The `vanderpol_sparse` observer in C99, emitted by `mho gen`. Do not edit: regenerate. */
+#include "vanderpol_sparse.h"
+
+/* `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+static const float GAINS_0[19] = {
+    0.0f, 0.0f, 0.0f, 0.0f,
+    0.0f, -0.024965525f, 0.0f, 0.0f,
+    -0.023485338f, 0.0f, -0.017927244f, 0.0f,
+    -0.019214869f, -0.022770798f, -0.025959969f, 0.0f,
+    0.0f, 0.0f, 0.0f
+};
+static const float SEGMENTS_0[1][2] = {
+    { -2.0616221f, 4.1232443f }
+};
+
+/* `x2`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+static const float GAINS_1[19] = {
+    0.03106531f, 0.027483545f, 0.022598177f, 0.0f,
+    0.0f, 0.0f, 0.0f, 0.0f,
+    0.0f, 0.020445434f, 0.0f, 0.010715283f,
+    0.0f, 0.0f, 0.0f, 0.0f,
+    -0.015461479f, 0.0f, 0.0f
+};
+static const float SEGMENTS_1[1][2] = {
+    { -4.6765766f, 9.353153f }
+};
+
+/* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */
+static int is_finite(float v) {
+    return (v - v) == 0.0f;
+}
+
+/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
+static unsigned uniform_segment(float t, unsigned count) {
+    unsigned k = 0u;
+    if (t >= (float)count) {
+        k = count - 1u;
+    } else if (t >= 1.0f) {
+        k = (unsigned)t;
+    }
+    return k < count - 1u ? k : count - 1u;
+}
+
+/* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above t_max. */
+static void evaluate(float t, const float *segment, float start, float t_max, float r_min, float r_max,
+                     float *value, vanderpol_sparse_saturation *saturation) {
+    const float inside = segment[0] + segment[1] * (t - start);
+    const int low = !(t >= 0.0f);
+    const int high = t > t_max;
+    *value = (low || high) ? (low ? r_min : r_max) : inside;
+    *saturation = (low || high) ? (low ? VANDERPOL_SPARSE_LOW : VANDERPOL_SPARSE_HIGH) : VANDERPOL_SPARSE_INSIDE;
+}
+
+void vanderpol_sparse_map_init(vanderpol_sparse_map *observer) {
+    observer->next = 0u;
+    observer->filled = 0u;
+}
+
+vanderpol_sparse_status vanderpol_sparse_map_push(vanderpol_sparse_map *observer, const float *y, const float *u) {
+    unsigned i;
+    unsigned slot;
+    int finite = 1;
+    for (i = 0u; i < VANDERPOL_SPARSE_OUTPUTS; ++i) {
+        finite &= is_finite(y[i]);
+    }
+    if (!finite) {
+        return VANDERPOL_SPARSE_REFUSED;
+    }
+    slot = observer->next;
+    for (i = 0u; i < VANDERPOL_SPARSE_OUTPUTS; ++i) {
+        observer->y[slot][i] = y[i];
+        observer->y[slot + VANDERPOL_SPARSE_HORIZON][i] = y[i];
+    }
+    (void)u;
+    observer->next = slot + 1u >= VANDERPOL_SPARSE_HORIZON ? 0u : slot + 1u;
+    observer->filled = observer->filled >= VANDERPOL_SPARSE_HORIZON ? VANDERPOL_SPARSE_HORIZON : observer->filled + 1u;
+    return VANDERPOL_SPARSE_OK;
+}
+
+vanderpol_sparse_status vanderpol_sparse_map_estimate(const vanderpol_sparse_map *observer, float *values, vanderpol_sparse_saturation *saturation) {
+    const unsigned next = observer->next;
+    if (observer->filled < VANDERPOL_SPARSE_HORIZON) {
+        return VANDERPOL_SPARSE_NO_ESTIMATE_YET;
+    }
+    const float t_0 = 0.50028557f
+        + GAINS_0[5] * observer->y[next + 13u][0]
+        + GAINS_0[8] * observer->y[next + 10u][0]
+        + GAINS_0[10] * observer->y[next + 8u][0]
+        + GAINS_0[12] * observer->y[next + 6u][0]
+        + GAINS_0[13] * observer->y[next + 5u][0]
+        + GAINS_0[14] * observer->y[next + 4u][0];
+    const unsigned k_0 = uniform_segment(t_0, 1u);
+    evaluate(t_0, SEGMENTS_0[k_0], 0.0f, 1.0f, -2.0616221f, 2.0616221f, &values[0], &saturation[0]);
+    const float t_1 = 0.5003894f
+        + GAINS_1[0] * observer->y[next + 18u][0]
+        + GAINS_1[1] * observer->y[next + 17u][0]
+        + GAINS_1[2] * observer->y[next + 16u][0]
+        + GAINS_1[9] * observer->y[next + 9u][0]
+        + GAINS_1[11] * observer->y[next + 7u][0]
+        + GAINS_1[16] * observer->y[next + 2u][0];
+    const unsigned k_1 = uniform_segment(t_1, 1u);
+    evaluate(t_1, SEGMENTS_1[k_1], 0.0f, 1.0f, -4.6765766f, 4.6765766f, &values[1], &saturation[1]);
+    return VANDERPOL_SPARSE_OK;
+}

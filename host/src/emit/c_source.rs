@@ -1,0 +1,276 @@
+//! A design's map as portable C99 source (`<name>.h`, `<name>.c`): the same f32 tables as the Rust
+//! design file ([`super::precision::F32Tables`]), the dot product summed term by term in the Rust
+//! file's order ([`super::terms::dot_terms`]) and the certified `Γ⁻¹` table evaluated as
+//! `firmware::InverseTable::evaluate` does, saturation flags included; so that with
+//! `-ffp-contract=off` the C observer gives the Rust observer's bits.
+//!
+//! C99 with `float` only: no `malloc`, no recursion, no VLA, no global mutable state, no `<math.h>`
+//! (a value is finite when `v - v == 0`). The observer lives in a struct the caller allocates
+//! (`<name>_map`); `<name>_map_init`, `_push`, `_estimate` are the map's `new`, `push` and `estimate`.
+
+use super::precision::F32Tables;
+use super::terms::dot_terms;
+use super::EmitError;
+use crate::fit::DesignResult;
+use crate::spec::Design;
+
+/// The header and the source of a design.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CSource {
+    /// `<name>.h`.
+    pub header: String,
+    /// `<name>.c`.
+    pub source: String,
+}
+
+/// A C `float` literal of `value`: the shortest decimal that round-trips, with `f`.
+fn float(what: &str, value: f32) -> Result<String, EmitError> {
+    Ok(format!("{}f", super::f32_literal(what, f64::from(value))?))
+}
+
+/// `{ a, b, … }` of `values`, four per line.
+fn floats(what: &str, values: &[f32]) -> Result<String, EmitError> {
+    let items = values
+        .iter()
+        .enumerate()
+        .map(|(i, &v)| float(&format!("{what}[{i}]"), v))
+        .collect::<Result<Vec<_>, _>>()?;
+    let lines: Vec<String> = items.chunks(4).map(|c| format!("    {}", c.join(", "))).collect();
+    Ok(format!("{{\n{}\n}}", lines.join(",\n")))
+}
+
+/// The C source of `design`'s map (its targets' tables in `result`).
+pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitError> {
+    let name = &design.name;
+    let upper = name.to_uppercase();
+    let (n, ny, nu, nt) = (
+        design.map.horizon,
+        design.model.outputs.len(),
+        design.model.inputs.len(),
+        design.targets.len(),
+    );
+    let mut tables = String::new();
+    let mut estimates = String::new();
+    for (t, target) in result.targets.iter().enumerate() {
+        let label = &design.targets[target.index].name;
+        let Some(table) = target.fit.map.table.as_ref() else {
+            return Err(EmitError::NoTable { target: label.clone() });
+        };
+        let rounded = F32Tables::new(table);
+        let what = |field: &str| format!("target `{label}` {field}");
+        let segments = rounded
+            .segments
+            .iter()
+            .enumerate()
+            .map(|(k, [a, b])| {
+                Ok(format!(
+                    "    {{ {}, {} }}",
+                    float(&what(&format!("segments[{k}].a")), *a)?,
+                    float(&what(&format!("segments[{k}].b")), *b)?
+                ))
+            })
+            .collect::<Result<Vec<_>, EmitError>>()?;
+        tables += &format!(
+            "\n/* `{label}`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */\n\
+             static const float GAINS_{t}[{}] = {};\n\
+             static const float SEGMENTS_{t}[{}][2] = {{\n{}\n}};\n",
+            rounded.gains.len(),
+            floats(&what("gains"), &rounded.gains)?,
+            rounded.segments.len(),
+            segments.join(",\n"),
+        );
+        let terms: String = dot_terms(&rounded.gains, n, ny, nu)
+            .iter()
+            .map(|term| {
+                let field = if term.input { "u" } else { "y" };
+                format!(
+                    "\n        + GAINS_{t}[{}] * observer->{field}[next + {}u][{}]",
+                    term.gain, term.sample, term.entry
+                )
+            })
+            .collect();
+        let count = rounded.segments.len();
+        let (search, start) = match &rounded.starts {
+            None => (
+                format!("    const unsigned k_{t} = uniform_segment(t_{t}, {count}u);\n"),
+                "0.0f".to_owned(),
+            ),
+            Some(starts) => {
+                tables += &format!(
+                    "static const float STARTS_{t}[{}] = {};\n",
+                    starts.len(),
+                    floats(&what("starts"), starts)?
+                );
+                // `firmware::search_step` for every step of `firmware::search_halves`, then the clamp
+                // of `evaluate_segment`.
+                let steps: String = firmware::search_halves(starts.len())
+                    .map(|half| {
+                        format!("    k_{t} = (STARTS_{t}[k_{t} + {half}u] <= t_{t}) ? k_{t} + {half}u : k_{t};\n")
+                    })
+                    .collect();
+                (
+                    format!(
+                        "    unsigned k_{t} = 0u;\n{steps}    k_{t} = k_{t} < {last}u ? k_{t} : {last}u;\n",
+                        last = count - 1
+                    ),
+                    format!("STARTS_{t}[k_{t}]"),
+                )
+            }
+        };
+        estimates += &format!(
+            "    const float t_{t} = {offset}{terms};\n{search}    evaluate(t_{t}, SEGMENTS_{t}[k_{t}], {start}, {t_max}, {r_min}, {r_max}, &values[{t}], &saturation[{t}]);\n",
+            offset = float(&what("offset"), rounded.offset)?,
+            t_max = float(&what("t_max"), rounded.t_max)?,
+            r_min = float(&what("r_min"), rounded.r_min)?,
+            r_max = float(&what("r_max"), rounded.r_max)?,
+        );
+    }
+    let inputs_field = if nu > 0 {
+        format!("    float u[2u * {upper}_HORIZON][{upper}_INPUTS];\n")
+    } else {
+        String::new()
+    };
+    let header = format!(
+        "/* The `{name}` observer in C99, emitted by `mho gen` from the same tables as the Rust design file.\n\
+         \x20* Do not edit: regenerate. Build with -ffp-contract=off (no fused multiply-add) to get the Rust\n\
+         \x20* observer's bits. */\n\
+         #ifndef {upper}_H\n\
+         #define {upper}_H\n\
+         \n\
+         #define {upper}_OUTPUTS {ny}u\n\
+         #define {upper}_INPUTS {nu}u\n\
+         #define {upper}_TARGETS {nt}u\n\
+         /* The map's window, in samples: no estimate before it is full. */\n\
+         #define {upper}_HORIZON {n}u\n\
+         \n\
+         /* What push and estimate return. */\n\
+         typedef enum {{\n\
+         \x20   {upper}_OK = 0,\n\
+         \x20   /* The sample has a NaN or infinite value and was refused; the observer is unchanged. */\n\
+         \x20   {upper}_REFUSED = 1,\n\
+         \x20   /* Fewer than {upper}_HORIZON accepted samples since init. */\n\
+         \x20   {upper}_NO_ESTIMATE_YET = 2\n\
+         }} {name}_status;\n\
+         \n\
+         /* Where an estimate lies against the map's range: inside, or held at its low or high end. */\n\
+         typedef enum {{\n\
+         \x20   {upper}_INSIDE = 0,\n\
+         \x20   {upper}_LOW = 1,\n\
+         \x20   {upper}_HIGH = 2\n\
+         }} {name}_saturation;\n\
+         \n\
+         /* The map observer: the last {upper}_HORIZON samples, each stored twice so that the window is\n\
+         \x20* always contiguous. Allocate it anywhere (no heap is used) and call {name}_map_init. */\n\
+         typedef struct {{\n\
+         \x20   float y[2u * {upper}_HORIZON][{upper}_OUTPUTS];\n\
+         {inputs_field}\
+         \x20   unsigned next;\n\
+         \x20   unsigned filled;\n\
+         }} {name}_map;\n\
+         \n\
+         /* Empties the window (a fresh observer, or a new run). */\n\
+         void {name}_map_init({name}_map *observer);\n\
+         \n\
+         /* Takes the sample of the current instant: y[{upper}_OUTPUTS] and u[{upper}_INPUTS] (u may be\n\
+         \x20* NULL when there is no input). {upper}_OK, or {upper}_REFUSED for a NaN or infinite value. */\n\
+         {name}_status {name}_map_push({name}_map *observer, const float *y, const float *u);\n\
+         \n\
+         /* The estimate of every target from the last {upper}_HORIZON samples into values[{upper}_TARGETS]\n\
+         \x20* and saturation[{upper}_TARGETS]; {upper}_NO_ESTIMATE_YET (nothing written) before the window is full. */\n\
+         {name}_status {name}_map_estimate(const {name}_map *observer, float *values, {name}_saturation *saturation);\n\
+         \n\
+         #endif\n"
+    );
+    let store_inputs = if nu > 0 {
+        format!(
+            "    for (i = 0u; i < {upper}_INPUTS; ++i) {{\n\
+             \x20       observer->u[slot][i] = u[i];\n\
+             \x20       observer->u[slot + {upper}_HORIZON][i] = u[i];\n\
+             \x20   }}\n"
+        )
+    } else {
+        "    (void)u;\n".to_owned()
+    };
+    let check_inputs = if nu > 0 {
+        format!(
+            "    for (i = 0u; i < {upper}_INPUTS; ++i) {{\n\
+             \x20       finite &= is_finite(u[i]);\n\
+             \x20   }}\n"
+        )
+    } else {
+        String::new()
+    };
+    // Only where a table is uniform: an unused static function is a warning.
+    let uniform = if estimates.contains("uniform_segment(") {
+        "/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */\n\
+         static unsigned uniform_segment(float t, unsigned count) {\n\
+         \x20   unsigned k = 0u;\n\
+         \x20   if (t >= (float)count) {\n\
+         \x20       k = count - 1u;\n\
+         \x20   } else if (t >= 1.0f) {\n\
+         \x20       k = (unsigned)t;\n\
+         \x20   }\n\
+         \x20   return k < count - 1u ? k : count - 1u;\n\
+         }\n\
+         \n"
+    } else {
+        ""
+    };
+    let source = format!(
+        "/* The `{name}` observer in C99, emitted by `mho gen`. Do not edit: regenerate. */\n\
+         #include \"{name}.h\"\n\
+         {tables}\n\
+         /* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */\n\
+         static int is_finite(float v) {{\n\
+         \x20   return (v - v) == 0.0f;\n\
+         }}\n\
+         \n\
+         {uniform}\
+         /* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above t_max. */\n\
+         static void evaluate(float t, const float *segment, float start, float t_max, float r_min, float r_max,\n\
+         \x20                    float *value, {name}_saturation *saturation) {{\n\
+         \x20   const float inside = segment[0] + segment[1] * (t - start);\n\
+         \x20   const int low = !(t >= 0.0f);\n\
+         \x20   const int high = t > t_max;\n\
+         \x20   *value = (low || high) ? (low ? r_min : r_max) : inside;\n\
+         \x20   *saturation = (low || high) ? (low ? {upper}_LOW : {upper}_HIGH) : {upper}_INSIDE;\n\
+         }}\n\
+         \n\
+         void {name}_map_init({name}_map *observer) {{\n\
+         \x20   observer->next = 0u;\n\
+         \x20   observer->filled = 0u;\n\
+         }}\n\
+         \n\
+         {name}_status {name}_map_push({name}_map *observer, const float *y, const float *u) {{\n\
+         \x20   unsigned i;\n\
+         \x20   unsigned slot;\n\
+         \x20   int finite = 1;\n\
+         \x20   for (i = 0u; i < {upper}_OUTPUTS; ++i) {{\n\
+         \x20       finite &= is_finite(y[i]);\n\
+         \x20   }}\n\
+         {check_inputs}\
+         \x20   if (!finite) {{\n\
+         \x20       return {upper}_REFUSED;\n\
+         \x20   }}\n\
+         \x20   slot = observer->next;\n\
+         \x20   for (i = 0u; i < {upper}_OUTPUTS; ++i) {{\n\
+         \x20       observer->y[slot][i] = y[i];\n\
+         \x20       observer->y[slot + {upper}_HORIZON][i] = y[i];\n\
+         \x20   }}\n\
+         {store_inputs}\
+         \x20   observer->next = slot + 1u >= {upper}_HORIZON ? 0u : slot + 1u;\n\
+         \x20   observer->filled = observer->filled >= {upper}_HORIZON ? {upper}_HORIZON : observer->filled + 1u;\n\
+         \x20   return {upper}_OK;\n\
+         }}\n\
+         \n\
+         {name}_status {name}_map_estimate(const {name}_map *observer, float *values, {name}_saturation *saturation) {{\n\
+         \x20   const unsigned next = observer->next;\n\
+         \x20   if (observer->filled < {upper}_HORIZON) {{\n\
+         \x20       return {upper}_NO_ESTIMATE_YET;\n\
+         \x20   }}\n\
+         {estimates}\
+         \x20   return {upper}_OK;\n\
+         }}\n"
+    );
+    Ok(CSource { header, source })
+}
