@@ -1,4 +1,6 @@
 /* The `ecoli_x0_2` observer in C99, emitted by `mho gen`. Do not edit: regenerate. */
+#include <stdint.h>
+#include <string.h>
 #include "ecoli_x0_2.h"
 
 /* `P`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
@@ -557,25 +559,38 @@ static int is_finite(float v) {
     return (v - v) == 0.0f;
 }
 
-/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
-static unsigned uniform_segment(float t, unsigned count) {
-    unsigned k = 0u;
-    if (t >= (float)count) {
-        k = count - 1u;
-    } else if (t >= 1.0f) {
-        k = (unsigned)t;
-    }
-    return k < count - 1u ? k : count - 1u;
+/* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */
+static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
+    const uint32_t mask = 0u - (uint32_t)c;
+    return (a & mask) | (b & ~mask);
 }
 
-/* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above t_max. */
+static float select_float(int c, float a, float b) {
+    uint32_t x, y;
+    memcpy(&x, &a, sizeof x);
+    memcpy(&y, &b, sizeof y);
+    x = select_bits(c, x, y);
+    memcpy(&a, &x, sizeof a);
+    return a;
+}
+
+/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
+static uint32_t uniform_segment(float t, uint32_t count) {
+    const float last = (float)(count - 1u);
+    const float below = select_float(t < last, t, last);
+    return (uint32_t)select_float(t >= 0.0f, below, 0.0f);
+}
+
+/* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above
+ * t_max; by selects, as firmware::InverseTable (the same instructions whatever t is). */
 static void evaluate(float t, const float *segment, float start, float t_max, float r_min, float r_max,
                      float *value, ecoli_x0_2_saturation *saturation) {
     const float inside = segment[0] + segment[1] * (t - start);
     const int low = !(t >= 0.0f);
-    const int high = t > t_max;
-    *value = (low || high) ? (low ? r_min : r_max) : inside;
-    *saturation = (low || high) ? (low ? ECOLI_X0_2_LOW : ECOLI_X0_2_HIGH) : ECOLI_X0_2_INSIDE;
+    const int out = low | (t > t_max);
+    const uint32_t flag = select_bits(low, (uint32_t)ECOLI_X0_2_LOW, (uint32_t)ECOLI_X0_2_HIGH);
+    *value = select_float(out, select_float(low, r_min, r_max), inside);
+    *saturation = (ecoli_x0_2_saturation)select_bits(out, flag, (uint32_t)ECOLI_X0_2_INSIDE);
 }
 
 void ecoli_x0_2_map_init(ecoli_x0_2_map *observer) {
@@ -616,7 +631,7 @@ ecoli_x0_2_status ecoli_x0_2_map_estimate(const ecoli_x0_2_map *observer, float 
         + GAINS_0[3] * observer->y[next + 1u][1]
         + GAINS_0[4] * observer->y[next + 0u][0]
         + GAINS_0[5] * observer->y[next + 0u][1];
-    const unsigned k_0 = uniform_segment(t_0, 2u);
+    const uint32_t k_0 = uniform_segment(t_0, 2u);
     evaluate(t_0, SEGMENTS_0[k_0], 0.0f, 2.0f, 0.0f, 0.7078263f, &values[0], &saturation[0]);
     const float t_1 = 63.175545f
         + GAINS_1[0] * observer->y[next + 2u][0]
@@ -625,7 +640,7 @@ ecoli_x0_2_status ecoli_x0_2_map_estimate(const ecoli_x0_2_map *observer, float 
         + GAINS_1[3] * observer->y[next + 1u][1]
         + GAINS_1[4] * observer->y[next + 0u][0]
         + GAINS_1[5] * observer->y[next + 0u][1];
-    const unsigned k_1 = uniform_segment(t_1, 533u);
+    const uint32_t k_1 = uniform_segment(t_1, 533u);
     evaluate(t_1, SEGMENTS_1[k_1], 0.0f, 533.0f, 0.0f, 0.9086774f, &values[1], &saturation[1]);
     return ECOLI_X0_2_OK;
 }

@@ -1,4 +1,6 @@
 /* The `two_tanks` observer in C99, emitted by `mho gen`. Do not edit: regenerate. */
+#include <stdint.h>
+#include <string.h>
 #include "two_tanks.h"
 
 /* `h1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
@@ -408,25 +410,38 @@ static int is_finite(float v) {
     return (v - v) == 0.0f;
 }
 
-/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
-static unsigned uniform_segment(float t, unsigned count) {
-    unsigned k = 0u;
-    if (t >= (float)count) {
-        k = count - 1u;
-    } else if (t >= 1.0f) {
-        k = (unsigned)t;
-    }
-    return k < count - 1u ? k : count - 1u;
+/* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */
+static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
+    const uint32_t mask = 0u - (uint32_t)c;
+    return (a & mask) | (b & ~mask);
 }
 
-/* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above t_max. */
+static float select_float(int c, float a, float b) {
+    uint32_t x, y;
+    memcpy(&x, &a, sizeof x);
+    memcpy(&y, &b, sizeof y);
+    x = select_bits(c, x, y);
+    memcpy(&a, &x, sizeof a);
+    return a;
+}
+
+/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
+static uint32_t uniform_segment(float t, uint32_t count) {
+    const float last = (float)(count - 1u);
+    const float below = select_float(t < last, t, last);
+    return (uint32_t)select_float(t >= 0.0f, below, 0.0f);
+}
+
+/* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above
+ * t_max; by selects, as firmware::InverseTable (the same instructions whatever t is). */
 static void evaluate(float t, const float *segment, float start, float t_max, float r_min, float r_max,
                      float *value, two_tanks_saturation *saturation) {
     const float inside = segment[0] + segment[1] * (t - start);
     const int low = !(t >= 0.0f);
-    const int high = t > t_max;
-    *value = (low || high) ? (low ? r_min : r_max) : inside;
-    *saturation = (low || high) ? (low ? TWO_TANKS_LOW : TWO_TANKS_HIGH) : TWO_TANKS_INSIDE;
+    const int out = low | (t > t_max);
+    const uint32_t flag = select_bits(low, (uint32_t)TWO_TANKS_LOW, (uint32_t)TWO_TANKS_HIGH);
+    *value = select_float(out, select_float(low, r_min, r_max), inside);
+    *saturation = (two_tanks_saturation)select_bits(out, flag, (uint32_t)TWO_TANKS_INSIDE);
 }
 
 void two_tanks_map_init(two_tanks_map *observer) {
@@ -487,7 +502,7 @@ two_tanks_status two_tanks_map_estimate(const two_tanks_map *observer, float *va
         + GAINS_0[17] * observer->u[next + 2u][0]
         + GAINS_0[18] * observer->u[next + 1u][0]
         + GAINS_0[19] * observer->u[next + 0u][0];
-    const unsigned k_0 = uniform_segment(t_0, 194u);
+    const uint32_t k_0 = uniform_segment(t_0, 194u);
     evaluate(t_0, SEGMENTS_0[k_0], 0.0f, 194.0f, 4.3011494f, 26.20642f, &values[0], &saturation[0]);
     const float t_1 = -46.135227f
         + GAINS_1[0] * observer->y[next + 9u][0]
@@ -510,7 +525,7 @@ two_tanks_status two_tanks_map_estimate(const two_tanks_map *observer, float *va
         + GAINS_1[17] * observer->u[next + 2u][0]
         + GAINS_1[18] * observer->u[next + 1u][0]
         + GAINS_1[19] * observer->u[next + 0u][0];
-    const unsigned k_1 = uniform_segment(t_1, 186u);
+    const uint32_t k_1 = uniform_segment(t_1, 186u);
     evaluate(t_1, SEGMENTS_1[k_1], 0.0f, 186.0f, 4.715646f, 25.001827f, &values[1], &saturation[1]);
     return TWO_TANKS_OK;
 }

@@ -1,4 +1,6 @@
 /* The `vanderpol_searched` observer in C99, emitted by `mho gen`. Do not edit: regenerate. */
+#include <stdint.h>
+#include <string.h>
 #include "vanderpol_searched.h"
 
 /* `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
@@ -28,25 +30,38 @@ static int is_finite(float v) {
     return (v - v) == 0.0f;
 }
 
-/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
-static unsigned uniform_segment(float t, unsigned count) {
-    unsigned k = 0u;
-    if (t >= (float)count) {
-        k = count - 1u;
-    } else if (t >= 1.0f) {
-        k = (unsigned)t;
-    }
-    return k < count - 1u ? k : count - 1u;
+/* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */
+static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
+    const uint32_t mask = 0u - (uint32_t)c;
+    return (a & mask) | (b & ~mask);
 }
 
-/* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above t_max. */
+static float select_float(int c, float a, float b) {
+    uint32_t x, y;
+    memcpy(&x, &a, sizeof x);
+    memcpy(&y, &b, sizeof y);
+    x = select_bits(c, x, y);
+    memcpy(&a, &x, sizeof a);
+    return a;
+}
+
+/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
+static uint32_t uniform_segment(float t, uint32_t count) {
+    const float last = (float)(count - 1u);
+    const float below = select_float(t < last, t, last);
+    return (uint32_t)select_float(t >= 0.0f, below, 0.0f);
+}
+
+/* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above
+ * t_max; by selects, as firmware::InverseTable (the same instructions whatever t is). */
 static void evaluate(float t, const float *segment, float start, float t_max, float r_min, float r_max,
                      float *value, vanderpol_searched_saturation *saturation) {
     const float inside = segment[0] + segment[1] * (t - start);
     const int low = !(t >= 0.0f);
-    const int high = t > t_max;
-    *value = (low || high) ? (low ? r_min : r_max) : inside;
-    *saturation = (low || high) ? (low ? VANDERPOL_SEARCHED_LOW : VANDERPOL_SEARCHED_HIGH) : VANDERPOL_SEARCHED_INSIDE;
+    const int out = low | (t > t_max);
+    const uint32_t flag = select_bits(low, (uint32_t)VANDERPOL_SEARCHED_LOW, (uint32_t)VANDERPOL_SEARCHED_HIGH);
+    *value = select_float(out, select_float(low, r_min, r_max), inside);
+    *saturation = (vanderpol_searched_saturation)select_bits(out, flag, (uint32_t)VANDERPOL_SEARCHED_INSIDE);
 }
 
 void vanderpol_searched_map_init(vanderpol_searched_map *observer) {
@@ -97,7 +112,7 @@ vanderpol_searched_status vanderpol_searched_map_estimate(const vanderpol_search
         + GAINS_0[13] * observer->y[next + 2u][0]
         + GAINS_0[14] * observer->y[next + 1u][0]
         + GAINS_0[15] * observer->y[next + 0u][0];
-    const unsigned k_0 = uniform_segment(t_0, 1u);
+    const uint32_t k_0 = uniform_segment(t_0, 1u);
     evaluate(t_0, SEGMENTS_0[k_0], 0.0f, 1.0f, -2.0616221f, 2.0616221f, &values[0], &saturation[0]);
     const float t_1 = 0.5002161f
         + GAINS_1[0] * observer->y[next + 15u][0]
@@ -116,7 +131,7 @@ vanderpol_searched_status vanderpol_searched_map_estimate(const vanderpol_search
         + GAINS_1[13] * observer->y[next + 2u][0]
         + GAINS_1[14] * observer->y[next + 1u][0]
         + GAINS_1[15] * observer->y[next + 0u][0];
-    const unsigned k_1 = uniform_segment(t_1, 1u);
+    const uint32_t k_1 = uniform_segment(t_1, 1u);
     evaluate(t_1, SEGMENTS_1[k_1], 0.0f, 1.0f, -4.6765766f, 4.6765766f, &values[1], &saturation[1]);
     return VANDERPOL_SEARCHED_OK;
 }

@@ -20,6 +20,7 @@ include!(concat!(env!("OUT_DIR"), "/started_observers.rs"));
 
 mod accuracy;
 mod bit_exact;
+mod c_build;
 mod elf;
 mod figures;
 mod kind;
@@ -32,6 +33,7 @@ mod unavailable;
 
 pub use accuracy::{compare_ekf_with_f64, compare_started_with_f64, compare_with_library, ekf_largest_difference};
 pub use bit_exact::{bits_and_flags, chip_flag, differences, ekf_differences, host_ekf, host_samples, HostEkfSample};
+pub use c_build::{run_c_counted, BOARD_FLAGS};
 pub use elf::{sizes, Program};
 pub use figures::{spread, Figures};
 pub use kind::{chosen_kind, design_names, kinds, start_up, Kind};

@@ -23,7 +23,9 @@ const FLAGS: [&str; 10] = [
 ];
 
 /// A C program that runs design `name`'s map over `ys` and `us` (each value as its f32 bits) and
-/// prints per sample `<push status> <estimate status> [<bits> <flag>]…`.
+/// prints per sample `<push status> <estimate status> [<bits> <flag>]…`, then `DONE`. Each sample's
+/// `push` + `estimate` runs between the markers `measure_start` and `measure_end`, as in the Rust
+/// runners, so that the emulated board counts its instructions.
 fn harness(name: &str, ys: &[Vec<u32>], us: &[Vec<u32>], outputs: usize, inputs: usize, targets: usize) -> String {
     let upper = name.to_uppercase();
     let rows = |rows: &[Vec<u32>], width: usize| -> String {
@@ -43,6 +45,20 @@ fn harness(name: &str, ys: &[Vec<u32>], us: &[Vec<u32>], outputs: usize, inputs:
          static const unsigned int U[{len}][{wu}] = {{\n{u}\n}};\n\
          static float as_float(unsigned int bits) {{ float f; memcpy(&f, &bits, sizeof f); return f; }}\n\
          static unsigned int as_bits(float f) {{ unsigned int b; memcpy(&b, &f, sizeof b); return b; }}\n\
+         void measure_start(void);\n\
+         void measure_end(void);\n\
+         __attribute__((noinline)) void measure_start(void) {{ __asm__ volatile(\"nop\"); }}\n\
+         __attribute__((noinline)) void measure_end(void) {{ __asm__ volatile(\"nop\"); __asm__ volatile(\"nop\"); }}\n\
+         /* One sample, what a firmware does every period. */\n\
+         __attribute__((noinline)) static {name}_status step({name}_map *observer, const float *y, const float *u,\n\
+         \x20                                             float *values, {name}_saturation *flags, {name}_status *estimated) {{\n\
+         \x20   {name}_status pushed;\n\
+         \x20   measure_start();\n\
+         \x20   pushed = {name}_map_push(observer, y, u);\n\
+         \x20   *estimated = {name}_map_estimate(observer, values, flags);\n\
+         \x20   measure_end();\n\
+         \x20   return pushed;\n\
+         }}\n\
          int main(void) {{\n\
          \x20   {name}_map observer;\n\
          \x20   unsigned k, i;\n\
@@ -53,14 +69,15 @@ fn harness(name: &str, ys: &[Vec<u32>], us: &[Vec<u32>], outputs: usize, inputs:
          \x20       {name}_status pushed, estimated;\n\
          \x20       for (i = 0u; i < {wy}u; ++i) y[i] = as_float(Y[k][i]);\n\
          \x20       for (i = 0u; i < {wu}u; ++i) u[i] = as_float(U[k][i]);\n\
-         \x20       pushed = {name}_map_push(&observer, y, {inputs_arg});\n\
-         \x20       estimated = {name}_map_estimate(&observer, values, flags);\n\
+         \x20       /* Without inputs the design ignores `u` (NULL would do). */\n\
+         \x20       pushed = step(&observer, y, u, values, flags, &estimated);\n\
          \x20       printf(\"%d %d\", (int)pushed, (int)estimated);\n\
          \x20       if (estimated == {upper}_OK) {{\n\
          \x20           for (i = 0u; i < {targets}u; ++i) printf(\" %08x %d\", as_bits(values[i]), (int)flags[i]);\n\
          \x20       }}\n\
          \x20       printf(\"\\n\");\n\
          \x20   }}\n\
+         \x20   printf(\"DONE\\n\");\n\
          \x20   return 0;\n\
          }}\n",
         len = ys.len(),
@@ -68,8 +85,6 @@ fn harness(name: &str, ys: &[Vec<u32>], us: &[Vec<u32>], outputs: usize, inputs:
         wu = inputs.max(1),
         y = rows(ys, outputs),
         u = rows(us, inputs),
-        // Without inputs the design ignores `u` (NULL would do).
-        inputs_arg = "u",
     )
 }
 
@@ -134,6 +149,7 @@ fn compile_and_run(compiler: &str, dir: &Path, c: &Path, name: &str) -> Option<V
         String::from_utf8(run.stdout)
             .unwrap()
             .lines()
+            .filter(|l| *l != "DONE")
             .map(str::to_owned)
             .collect(),
     )
@@ -235,4 +251,90 @@ fn searched_knots_in_c_give_the_rust_bits() {
     let ran = check!(crate::vanderpol_beta7, "vanderpol_beta7", &dir, &dir);
     let _ = std::fs::remove_dir_all(&dir);
     assert!(!ran.is_empty() || std::env::var_os("CI").is_none());
+}
+
+/// Every shipped design's C map built by `arm-none-eabi-gcc -Os` for the Cortex-M4F and run on the
+/// emulated board gives the Rust bits too, in a constant count of instructions per steady sample and
+/// no division; Example 1's count is printed beside the Rust build's (docs/chip.md, `on-target-report`).
+#[test]
+fn every_designs_c_map_on_the_emulated_cortex_m4f_gives_the_rust_bits() {
+    use integration_tests::on_target::{run_c_counted, Unavailable};
+    let dir = scratch("board");
+    let c = workspace_root().join("generated/c");
+    let mut counts = Vec::new();
+    macro_rules! on_board {
+        ($design:ident) => {{
+            use generated::$design as d;
+            let name = stringify!($design);
+            // The harness and the expected lines, as on the host.
+            let _ = check!(generated::$design, name, &dir, &c);
+            let expected = rust_lines(
+                &d::RECORDED_Y.iter().map(|y| y.to_vec()).collect::<Vec<_>>(),
+                &d::RECORDED_U.iter().map(|u| u.to_vec()).collect::<Vec<_>>(),
+                d::map_observer(),
+                |o, y, u| o.push(y.try_into().unwrap(), u.try_into().unwrap()).is_ok(),
+                |o| {
+                    o.estimate()
+                        .map(|e| e.iter().map(|e| (e.value, e.saturation)).collect())
+                },
+            );
+            let sources = [c.join(format!("{name}.c")), dir.join(format!("{name}_harness.c"))];
+            let sources: Vec<&Path> = sources.iter().map(|p| p.as_path()).collect();
+            let mut flags: Vec<&str> = FLAGS[..9].to_vec();
+            flags.push("-Os");
+            match run_c_counted(&sources, &c, &flags, &dir.join(format!("{name}.elf"))) {
+                Err(missing @ Unavailable::Missing { .. }) if std::env::var_os("CI").is_none() => {
+                    eprintln!("skipped the C maps on the emulated board: {missing}");
+                    return;
+                }
+                Err(e) => panic!("{name}: {e}"),
+                Ok((text, measured)) => {
+                    let lines: Vec<&str> = text
+                        .lines()
+                        .filter(|l| l.starts_with(|c: char| c.is_ascii_digit()))
+                        .collect();
+                    assert_eq!(lines, expected, "{name} on the board: C, then Rust");
+                    assert_eq!(measured.len(), expected.len(), "{name}: one count per sample");
+                    // Once the window is full, every accepted sample takes one path; no division.
+                    let steady: Vec<u64> = measured
+                        .iter()
+                        .zip(&expected)
+                        .skip(d::HORIZON)
+                        .filter(|(_, l)| l.starts_with("0 "))
+                        .map(|(&(n, _), _)| n)
+                        .collect();
+                    let (least, most) = (steady.iter().min().unwrap(), steady.iter().max().unwrap());
+                    assert_eq!(least, most, "{name}: the steady path varies: {steady:?}");
+                    assert!(
+                        measured.iter().all(|&(_, d)| d == 0),
+                        "{name}: a division or square root"
+                    );
+                    counts.push((name, *most));
+                }
+            }
+        }};
+    }
+    generated::for_each_design!(on_board);
+    let _ = std::fs::remove_dir_all(&dir);
+    println!("C map, -Os, instructions per steady sample: {counts:?}");
+    // Example 1: the C build against the Rust build's count in the on-target table.
+    let chip = std::fs::read_to_string(workspace_root().join("docs/chip.md")).unwrap();
+    let row = chip
+        .lines()
+        .find(|l| l.starts_with("| `vanderpol` | `map_observer()`"))
+        .expect("docs/chip.md has Example 1's map");
+    let rust: u64 = row
+        .split(" | ")
+        .nth(5)
+        .unwrap()
+        .split(" / ")
+        .nth(1)
+        .unwrap()
+        .parse()
+        .unwrap();
+    let (_, c_count) = counts.iter().find(|(n, _)| *n == "vanderpol").expect("Example 1 ran");
+    // Not yet within the issue's 10 %: the C selects are integer masks (gcc turns a `?:` on floats into
+    // a branch, which would make the count depend on the data), where Rust's `select_unpredictable`
+    // gives IT-block moves; and push and estimate are two calls into another translation unit.
+    println!("Example 1's map per steady sample: C (-Os) {c_count}, Rust {rust} instructions");
 }

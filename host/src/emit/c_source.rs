@@ -92,7 +92,7 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
         let count = rounded.segments.len();
         let (search, start) = match &rounded.starts {
             None => (
-                format!("    const unsigned k_{t} = uniform_segment(t_{t}, {count}u);\n"),
+                format!("    const uint32_t k_{t} = uniform_segment(t_{t}, {count}u);\n"),
                 "0.0f".to_owned(),
             ),
             Some(starts) => {
@@ -105,7 +105,9 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
                 // of `evaluate_segment`.
                 let steps: String = firmware::search_halves(starts.len())
                     .map(|half| {
-                        format!("    k_{t} = (STARTS_{t}[k_{t} + {half}u] <= t_{t}) ? k_{t} + {half}u : k_{t};\n")
+                        format!(
+                            "    k_{t} = select_bits(STARTS_{t}[k_{t} + {half}u] <= t_{t}, k_{t} + {half}u, k_{t});\n"
+                        )
                     })
                     .collect();
                 (
@@ -203,14 +205,10 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
     // Only where a table is uniform: an unused static function is a warning.
     let uniform = if estimates.contains("uniform_segment(") {
         "/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */\n\
-         static unsigned uniform_segment(float t, unsigned count) {\n\
-         \x20   unsigned k = 0u;\n\
-         \x20   if (t >= (float)count) {\n\
-         \x20       k = count - 1u;\n\
-         \x20   } else if (t >= 1.0f) {\n\
-         \x20       k = (unsigned)t;\n\
-         \x20   }\n\
-         \x20   return k < count - 1u ? k : count - 1u;\n\
+         static uint32_t uniform_segment(float t, uint32_t count) {\n\
+         \x20   const float last = (float)(count - 1u);\n\
+         \x20   const float below = select_float(t < last, t, last);\n\
+         \x20   return (uint32_t)select_float(t >= 0.0f, below, 0.0f);\n\
          }\n\
          \n"
     } else {
@@ -218,6 +216,8 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
     };
     let source = format!(
         "/* The `{name}` observer in C99, emitted by `mho gen`. Do not edit: regenerate. */\n\
+         #include <stdint.h>\n\
+         #include <string.h>\n\
          #include \"{name}.h\"\n\
          {tables}\n\
          /* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */\n\
@@ -225,15 +225,32 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
          \x20   return (v - v) == 0.0f;\n\
          }}\n\
          \n\
+         /* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */\n\
+         static uint32_t select_bits(int c, uint32_t a, uint32_t b) {{\n\
+         \x20   const uint32_t mask = 0u - (uint32_t)c;\n\
+         \x20   return (a & mask) | (b & ~mask);\n\
+         }}\n\
+         \n\
+         static float select_float(int c, float a, float b) {{\n\
+         \x20   uint32_t x, y;\n\
+         \x20   memcpy(&x, &a, sizeof x);\n\
+         \x20   memcpy(&y, &b, sizeof y);\n\
+         \x20   x = select_bits(c, x, y);\n\
+         \x20   memcpy(&a, &x, sizeof a);\n\
+         \x20   return a;\n\
+         }}\n\
+         \n\
          {uniform}\
-         /* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above t_max. */\n\
+         /* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above\n\
+         \x20* t_max; by selects, as firmware::InverseTable (the same instructions whatever t is). */\n\
          static void evaluate(float t, const float *segment, float start, float t_max, float r_min, float r_max,\n\
          \x20                    float *value, {name}_saturation *saturation) {{\n\
          \x20   const float inside = segment[0] + segment[1] * (t - start);\n\
          \x20   const int low = !(t >= 0.0f);\n\
-         \x20   const int high = t > t_max;\n\
-         \x20   *value = (low || high) ? (low ? r_min : r_max) : inside;\n\
-         \x20   *saturation = (low || high) ? (low ? {upper}_LOW : {upper}_HIGH) : {upper}_INSIDE;\n\
+         \x20   const int out = low | (t > t_max);\n\
+         \x20   const uint32_t flag = select_bits(low, (uint32_t){upper}_LOW, (uint32_t){upper}_HIGH);\n\
+         \x20   *value = select_float(out, select_float(low, r_min, r_max), inside);\n\
+         \x20   *saturation = ({name}_saturation)select_bits(out, flag, (uint32_t){upper}_INSIDE);\n\
          }}\n\
          \n\
          void {name}_map_init({name}_map *observer) {{\n\

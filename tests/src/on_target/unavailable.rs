@@ -35,7 +35,7 @@ pub(super) fn failed(message: impl Into<String>) -> Unavailable {
     Unavailable::Failed(message.into())
 }
 
-fn require(tool: &'static str, package: &'static str) -> Result<(), Unavailable> {
+pub(super) fn require(tool: &'static str, package: &'static str) -> Result<(), Unavailable> {
     match Command::new(tool)
         .arg("--version")
         .stdout(Stdio::null())

@@ -1,0 +1,63 @@
+//! A C program for the emulated board: built by `arm-none-eabi-gcc` for the Cortex-M4F (hard float,
+//! newlib's semihosting, `tests/c/startup.c` and `tests/c/mps2-an386.ld`), run under QEMU with the
+//! instructions between its `measure_start` and `measure_end` markers counted, as the Rust runners'.
+
+use std::path::Path;
+use std::process::Command;
+
+use super::qemu::run_counted;
+use super::unavailable::{failed, require, require_tools, Unavailable};
+
+/// The Cortex-M4F with its single-precision FPU, as the Rust target `thumbv7em-none-eabihf`.
+pub const BOARD_FLAGS: [&str; 4] = ["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard", "-mfpu=fpv4-sp-d16"];
+
+/// Builds `sources` (each compiled with `include` on the include path and `flags`, then linked with the
+/// board's start-up code) into `elf` for the emulated board and runs it: what it printed, and the
+/// instructions and divisions of each measured call.
+pub fn run_c_counted(
+    sources: &[&Path],
+    include: &Path,
+    flags: &[&str],
+    elf: &Path,
+) -> Result<(String, Vec<(u64, u64)>), Unavailable> {
+    require_tools()?;
+    require("arm-none-eabi-gcc", "gcc-arm-none-eabi")?;
+    let gcc = |arguments: &mut Command| -> Result<(), Unavailable> {
+        let built = arguments
+            .output()
+            .map_err(|e| failed(format!("arm-none-eabi-gcc: {e}")))?;
+        if built.status.success() {
+            Ok(())
+        } else {
+            Err(failed(format!(
+                "arm-none-eabi-gcc: {}",
+                String::from_utf8_lossy(&built.stderr)
+            )))
+        }
+    };
+    let mut objects = Vec::new();
+    for (i, source) in sources.iter().enumerate() {
+        let object = elf.with_extension(format!("{i}.o"));
+        gcc(Command::new("arm-none-eabi-gcc")
+            .args(BOARD_FLAGS)
+            .args(flags)
+            .arg("-I")
+            .arg(include)
+            .arg("-c")
+            .arg(source)
+            .arg("-o")
+            .arg(&object))?;
+        objects.push(object);
+    }
+    // The start-up code is the board's, not the code under test: not held to `flags`.
+    let board = crate::workspace_root().join("tests/c");
+    gcc(Command::new("arm-none-eabi-gcc")
+        .args(BOARD_FLAGS)
+        .args(["-std=c99", "-O1", "--specs=rdimon.specs", "-Wl,--gc-sections", "-T"])
+        .arg(board.join("mps2-an386.ld"))
+        .arg("-o")
+        .arg(elf)
+        .arg(board.join("startup.c"))
+        .args(&objects))?;
+    run_counted(elf)
+}
