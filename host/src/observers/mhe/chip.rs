@@ -182,8 +182,8 @@ impl<T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize> Ch
         if self.stored.len() < n {
             return None;
         }
-        let window: Vec<firmware::Sample<T, NY, MAX_INPUTS>> = self.stored.iter().copied().collect();
-        let (x, end) = solve_window(&self.plant, s, &window, &moved.unwrap_or(s.start), moved.is_some());
+        let window = self.stored.make_contiguous();
+        let (x, end) = solve_window(&self.plant, s, window, &moved.unwrap_or(s.start), moved.is_some());
         if !x.iter().chain(&end).all(|v| v.is_finite()) {
             return None;
         }
