@@ -1,25 +1,30 @@
-/* The `ecoli_x0_0p5` observer in C99, emitted by `mho gen` from the same tables as the Rust design file.
- * Do not edit: regenerate. Build with -ffp-contract=off (no fused multiply-add) to get the Rust
- * observer's bits. */
+/* The `ecoli_x0_0p5` observers in C99, emitted by `mho gen` from the same tables and programs as the
+ * Rust design file. Do not edit: regenerate. Build with -ffp-contract=off (no fused
+ * multiply-add) to get the Rust observers' bits. Every observer lives in a struct you allocate
+ * (no heap); call its _init first, then _push every sample and _estimate when you need it. */
 #ifndef ECOLI_X0_0P5_H
 #define ECOLI_X0_0P5_H
 
 #define ECOLI_X0_0P5_OUTPUTS 2u
 #define ECOLI_X0_0P5_INPUTS 0u
 #define ECOLI_X0_0P5_TARGETS 2u
-/* The map's window, in samples: no estimate before it is full. */
+/* The map's window, in samples: no map estimate before it is full. */
 #define ECOLI_X0_0P5_HORIZON 3u
+#define ECOLI_X0_0P5_STATES 3u
+/* Entries of a filter's covariance kept: its upper triangle. */
+#define ECOLI_X0_0P5_COVARIANCE 6u
 
 /* What push and estimate return. */
 typedef enum {
     ECOLI_X0_0P5_OK = 0,
-    /* The sample has a NaN or infinite value and was refused; the observer is unchanged. */
+    /* The sample was refused: a NaN or infinite value (or a filter step whose result is not
+     * finite); the latest estimate is unchanged. */
     ECOLI_X0_0P5_REFUSED = 1,
-    /* Fewer than ECOLI_X0_0P5_HORIZON accepted samples since init. */
+    /* No estimate yet (the map: fewer than ECOLI_X0_0P5_HORIZON accepted samples since init). */
     ECOLI_X0_0P5_NO_ESTIMATE_YET = 2
 } ecoli_x0_0p5_status;
 
-/* Where an estimate lies against the map's range: inside, or held at its low or high end. */
+/* Where an estimate lies against its range: inside, or held at its low or high end. */
 typedef enum {
     ECOLI_X0_0P5_INSIDE = 0,
     ECOLI_X0_0P5_LOW = 1,
@@ -38,11 +43,33 @@ typedef struct {
 void ecoli_x0_0p5_map_init(ecoli_x0_0p5_map *observer);
 
 /* Takes the sample of the current instant: y[ECOLI_X0_0P5_OUTPUTS] and u[ECOLI_X0_0P5_INPUTS] (u may be
- * NULL when there is no input). ECOLI_X0_0P5_OK, or ECOLI_X0_0P5_REFUSED for a NaN or infinite value. */
+ * NULL when there is no input). ECOLI_X0_0P5_OK, or ECOLI_X0_0P5_REFUSED for a NaN or infinite value
+ * (the observer is unchanged). */
 ecoli_x0_0p5_status ecoli_x0_0p5_map_push(ecoli_x0_0p5_map *observer, const float *y, const float *u);
 
 /* The estimate of every target from the last ECOLI_X0_0P5_HORIZON samples into values[ECOLI_X0_0P5_TARGETS]
  * and saturation[ECOLI_X0_0P5_TARGETS]; ECOLI_X0_0P5_NO_ESTIMATE_YET (nothing written) before the window is full. */
 ecoli_x0_0p5_status ecoli_x0_0p5_map_estimate(const ecoli_x0_0p5_map *observer, float *values, ecoli_x0_0p5_saturation *saturation);
+
+/* The EKF from the centre of the state box (kind ekf_box, the Rust BoxEkfObserver): an estimate
+ * from the first accepted sample; a sample with a non-finite output is refused and only predicted. */
+typedef struct {
+    float x[ECOLI_X0_0P5_STATES];
+    float p[ECOLI_X0_0P5_COVARIANCE];
+    float values[ECOLI_X0_0P5_TARGETS];
+    ecoli_x0_0p5_saturation flags[ECOLI_X0_0P5_TARGETS];
+    int ready;
+} ecoli_x0_0p5_ekf_box;
+
+void ecoli_x0_0p5_ekf_box_init(ecoli_x0_0p5_ekf_box *observer);
+ecoli_x0_0p5_status ecoli_x0_0p5_ekf_box_push(ecoli_x0_0p5_ekf_box *observer, const float *y, const float *u);
+ecoli_x0_0p5_status ecoli_x0_0p5_ekf_box_estimate(const ecoli_x0_0p5_ekf_box *observer, float *values, ecoli_x0_0p5_saturation *saturation);
+
+/* This design's observer, of the kind `gen` chose or the spec named: ekf_box. */
+#define ECOLI_X0_0P5_KIND "ekf_box"
+typedef ecoli_x0_0p5_ekf_box ecoli_x0_0p5_observer;
+#define ecoli_x0_0p5_observer_init ecoli_x0_0p5_ekf_box_init
+#define ecoli_x0_0p5_observer_push ecoli_x0_0p5_ekf_box_push
+#define ecoli_x0_0p5_observer_estimate ecoli_x0_0p5_ekf_box_estimate
 
 #endif

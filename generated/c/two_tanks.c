@@ -1,7 +1,41 @@
-/* The `two_tanks` observer in C99, emitted by `mho gen`. Do not edit: regenerate. */
+/* The `two_tanks` observers in C99, emitted by `mho gen`. Do not edit: regenerate. */
 #include <stdint.h>
 #include <string.h>
+#include <math.h>
 #include "two_tanks.h"
+
+/* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */
+static int is_finite(float v) {
+    return (v - v) == 0.0f;
+}
+
+/* 1 when every output and input of a sample is finite (u is not read without inputs). */
+static int accepts(const float *y, const float *u) {
+    unsigned i;
+    int finite = 1;
+    for (i = 0u; i < TWO_TANKS_OUTPUTS; ++i) {
+        finite &= is_finite(y[i]);
+    }
+    for (i = 0u; i < TWO_TANKS_INPUTS; ++i) {
+        finite &= is_finite(u[i]);
+    }
+    return finite;
+}
+
+/* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */
+static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
+    const uint32_t mask = 0u - (uint32_t)c;
+    return (a & mask) | (b & ~mask);
+}
+
+static float select_float(int c, float a, float b) {
+    uint32_t x, y;
+    memcpy(&x, &a, sizeof x);
+    memcpy(&y, &b, sizeof y);
+    x = select_bits(c, x, y);
+    memcpy(&a, &x, sizeof a);
+    return a;
+}
 
 /* `h1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[20] = {
@@ -405,26 +439,6 @@ static const float SEGMENTS_1[186][2] = {
     { 4.7087693f, 0.109102465f }
 };
 
-/* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */
-static int is_finite(float v) {
-    return (v - v) == 0.0f;
-}
-
-/* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */
-static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
-    const uint32_t mask = 0u - (uint32_t)c;
-    return (a & mask) | (b & ~mask);
-}
-
-static float select_float(int c, float a, float b) {
-    uint32_t x, y;
-    memcpy(&x, &a, sizeof x);
-    memcpy(&y, &b, sizeof y);
-    x = select_bits(c, x, y);
-    memcpy(&a, &x, sizeof a);
-    return a;
-}
-
 /* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
 static uint32_t uniform_segment(float t, uint32_t count) {
     const float last = (float)(count - 1u);
@@ -444,43 +458,9 @@ static void evaluate(float t, const float *segment, float start, float t_max, fl
     *saturation = (two_tanks_saturation)select_bits(out, flag, (uint32_t)TWO_TANKS_INSIDE);
 }
 
-void two_tanks_map_init(two_tanks_map *observer) {
-    observer->next = 0u;
-    observer->filled = 0u;
-}
-
-two_tanks_status two_tanks_map_push(two_tanks_map *observer, const float *y, const float *u) {
-    unsigned i;
-    unsigned slot;
-    int finite = 1;
-    for (i = 0u; i < TWO_TANKS_OUTPUTS; ++i) {
-        finite &= is_finite(y[i]);
-    }
-    for (i = 0u; i < TWO_TANKS_INPUTS; ++i) {
-        finite &= is_finite(u[i]);
-    }
-    if (!finite) {
-        return TWO_TANKS_REFUSED;
-    }
-    slot = observer->next;
-    for (i = 0u; i < TWO_TANKS_OUTPUTS; ++i) {
-        observer->y[slot][i] = y[i];
-        observer->y[slot + TWO_TANKS_HORIZON][i] = y[i];
-    }
-    for (i = 0u; i < TWO_TANKS_INPUTS; ++i) {
-        observer->u[slot][i] = u[i];
-        observer->u[slot + TWO_TANKS_HORIZON][i] = u[i];
-    }
-    observer->next = slot + 1u >= TWO_TANKS_HORIZON ? 0u : slot + 1u;
-    observer->filled = observer->filled >= TWO_TANKS_HORIZON ? TWO_TANKS_HORIZON : observer->filled + 1u;
-    return TWO_TANKS_OK;
-}
-
-two_tanks_status two_tanks_map_estimate(const two_tanks_map *observer, float *values, two_tanks_saturation *saturation) {
+/* Every target's estimate from a full window. */
+static void estimate_window(const two_tanks_map *observer, float *values, two_tanks_saturation *saturation) {
     const unsigned next = observer->next;
-    if (observer->filled < TWO_TANKS_HORIZON) {
-        return TWO_TANKS_NO_ESTIMATE_YET;
-    }
     const float t_0 = -60.96606f
         + GAINS_0[0] * observer->y[next + 9u][0]
         + GAINS_0[1] * observer->y[next + 8u][0]
@@ -527,5 +507,1162 @@ two_tanks_status two_tanks_map_estimate(const two_tanks_map *observer, float *va
         + GAINS_1[19] * observer->u[next + 0u][0];
     const uint32_t k_1 = uniform_segment(t_1, 186u);
     evaluate(t_1, SEGMENTS_1[k_1], 0.0f, 186.0f, 4.715646f, 25.001827f, &values[1], &saturation[1]);
+}
+
+void two_tanks_map_init(two_tanks_map *observer) {
+    observer->next = 0u;
+    observer->filled = 0u;
+}
+
+two_tanks_status two_tanks_map_push(two_tanks_map *observer, const float *y, const float *u) {
+    unsigned i;
+    unsigned slot;
+    if (!accepts(y, u)) {
+        return TWO_TANKS_REFUSED;
+    }
+    slot = observer->next;
+    for (i = 0u; i < TWO_TANKS_OUTPUTS; ++i) {
+        observer->y[slot][i] = y[i];
+        observer->y[slot + TWO_TANKS_HORIZON][i] = y[i];
+    }
+    for (i = 0u; i < TWO_TANKS_INPUTS; ++i) {
+        observer->u[slot][i] = u[i];
+        observer->u[slot + TWO_TANKS_HORIZON][i] = u[i];
+    }
+    observer->next = slot + 1u >= TWO_TANKS_HORIZON ? 0u : slot + 1u;
+    observer->filled = observer->filled >= TWO_TANKS_HORIZON ? TWO_TANKS_HORIZON : observer->filled + 1u;
     return TWO_TANKS_OK;
 }
+
+two_tanks_status two_tanks_map_estimate(const two_tanks_map *observer, float *values, two_tanks_saturation *saturation) {
+    if (observer->filled < TWO_TANKS_HORIZON) {
+        return TWO_TANKS_NO_ESTIMATE_YET;
+    }
+    estimate_window(observer, values, saturation);
+    return TWO_TANKS_OK;
+}
+
+/* 1 with the sign of v (NaN stays NaN), as firmware::Maths::signum. */
+static float signum(float v) {
+    return select_float(v != v, v, copysignf(1.0f, v));
+}
+
+
+/* 1 when every input is finite. */
+static int inputs_finite(const float *u) {
+    unsigned i;
+    int finite = 1;
+    for (i = 0u; i < TWO_TANKS_INPUTS; ++i) {
+        finite &= is_finite(u[i]);
+    }
+    return finite;
+}
+
+/* 1 when the n values from v are finite. */
+static int all_finite(const float *v, unsigned n) {
+    unsigned i;
+    int finite = 1;
+    for (i = 0u; i < n; ++i) {
+        finite &= is_finite(v[i]);
+    }
+    return finite;
+}
+
+/* The targets at state x and input u. */
+static void targets(const float *x, const float *u, float *out) {
+    (void)x;
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    out[0] = t0;
+    out[1] = t1;
+}
+
+/* One EKF sample with its measurement: out = (x(k|k), x+, P+) from (x, P), as the Rust file's ekf_measured. */
+static void ekf_measured(const float *x, const float *p, const float *y, const float *u, float *out) {
+    (void)x;
+    (void)p;
+    (void)y;
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = p[0];
+    const float t3 = p[1];
+    const float t4 = p[2];
+    const float t5 = 1.0f;
+    const float t6 = 0.04f;
+    const float t7 = t6 + t4;
+    const float t8 = t5 / t7;
+    const float t9 = t3 * t8;
+    const float t10 = t4 * t8;
+    const float t11 = y[0];
+    const float t12 = t11 - t1;
+    const float t13 = t9 * t12;
+    const float t14 = t0 + t13;
+    const float t15 = t10 * t12;
+    const float t16 = t1 + t15;
+    const float t17 = -t9;
+    const float t18 = t5 - t10;
+    const float t19 = t17 * t3;
+    const float t20 = t2 + t19;
+    const float t21 = t17 * t4;
+    const float t22 = t3 + t21;
+    const float t23 = t18 * t4;
+    const float t24 = t22 * t17;
+    const float t25 = t20 + t24;
+    const float t26 = t22 * t18;
+    const float t27 = t23 * t18;
+    const float t28 = t9 * t6;
+    const float t29 = t28 * t9;
+    const float t30 = t25 + t29;
+    const float t31 = t28 * t10;
+    const float t32 = t26 + t31;
+    const float t33 = t10 * t6;
+    const float t34 = t33 * t10;
+    const float t35 = t27 + t34;
+    const float t36 = 2.0f;
+    const float t37 = 6.0f;
+    const float t38 = t5 / t36;
+    const float t39 = t5 / t37;
+    const float t40 = 0.178f /* a1 */;
+    const float t41 = 981.0f /* g */;
+    const float t42 = t36 * t41;
+    const float t43 = fabsf(t14);
+    const float t44 = t42 * t43;
+    const float t45 = sqrtf(t44);
+    const float t46 = t40 * t45;
+    const float t47 = 0.5f;
+    const float t48 = t47 / t45;
+    const float t49 = signum(t14);
+    const float t50 = t42 * t49;
+    const float t51 = t48 * t50;
+    const float t52 = t40 * t51;
+    const float t53 = 0.178f /* a2 */;
+    const float t54 = fabsf(t16);
+    const float t55 = t42 * t54;
+    const float t56 = sqrtf(t55);
+    const float t57 = t53 * t56;
+    const float t58 = t47 / t56;
+    const float t59 = signum(t16);
+    const float t60 = t42 * t59;
+    const float t61 = t58 * t60;
+    const float t62 = t53 * t61;
+    const float t63 = 3.3f /* k */;
+    const float t64 = u[0];
+    const float t65 = t63 * t64;
+    const float t66 = t65 - t46;
+    const float t67 = 15.5f /* A1 */;
+    const float t68 = t66 / t67;
+    const float t69 = -1.0f;
+    const float t70 = t69 / t67;
+    const float t71 = t70 * t52;
+    const float t72 = t46 - t57;
+    const float t73 = 15.5f /* A2 */;
+    const float t74 = t72 / t73;
+    const float t75 = t5 / t73;
+    const float t76 = t75 * t52;
+    const float t77 = t69 / t73;
+    const float t78 = t77 * t62;
+    const float t79 = t38 * t68;
+    const float t80 = t14 + t79;
+    const float t81 = t38 * t74;
+    const float t82 = t16 + t81;
+    const float t83 = t38 * t71;
+    const float t84 = t5 + t83;
+    const float t85 = t38 * t76;
+    const float t86 = t38 * t78;
+    const float t87 = t5 + t86;
+    const float t88 = fabsf(t80);
+    const float t89 = t42 * t88;
+    const float t90 = sqrtf(t89);
+    const float t91 = t40 * t90;
+    const float t92 = t47 / t90;
+    const float t93 = signum(t80);
+    const float t94 = t42 * t93;
+    const float t95 = t92 * t94;
+    const float t96 = t40 * t95;
+    const float t97 = fabsf(t82);
+    const float t98 = t42 * t97;
+    const float t99 = sqrtf(t98);
+    const float t100 = t53 * t99;
+    const float t101 = t47 / t99;
+    const float t102 = signum(t82);
+    const float t103 = t42 * t102;
+    const float t104 = t101 * t103;
+    const float t105 = t53 * t104;
+    const float t106 = t65 - t91;
+    const float t107 = t106 / t67;
+    const float t108 = t70 * t96;
+    const float t109 = t91 - t100;
+    const float t110 = t109 / t73;
+    const float t111 = t75 * t96;
+    const float t112 = t77 * t105;
+    const float t113 = t108 * t84;
+    const float t114 = t111 * t84;
+    const float t115 = t112 * t85;
+    const float t116 = t114 + t115;
+    const float t117 = t112 * t87;
+    const float t118 = t38 * t107;
+    const float t119 = t14 + t118;
+    const float t120 = t38 * t110;
+    const float t121 = t16 + t120;
+    const float t122 = t38 * t113;
+    const float t123 = t5 + t122;
+    const float t124 = t38 * t116;
+    const float t125 = t38 * t117;
+    const float t126 = t5 + t125;
+    const float t127 = fabsf(t119);
+    const float t128 = t42 * t127;
+    const float t129 = sqrtf(t128);
+    const float t130 = t40 * t129;
+    const float t131 = t47 / t129;
+    const float t132 = signum(t119);
+    const float t133 = t42 * t132;
+    const float t134 = t131 * t133;
+    const float t135 = t40 * t134;
+    const float t136 = fabsf(t121);
+    const float t137 = t42 * t136;
+    const float t138 = sqrtf(t137);
+    const float t139 = t53 * t138;
+    const float t140 = t47 / t138;
+    const float t141 = signum(t121);
+    const float t142 = t42 * t141;
+    const float t143 = t140 * t142;
+    const float t144 = t53 * t143;
+    const float t145 = t65 - t130;
+    const float t146 = t145 / t67;
+    const float t147 = t70 * t135;
+    const float t148 = t130 - t139;
+    const float t149 = t148 / t73;
+    const float t150 = t75 * t135;
+    const float t151 = t77 * t144;
+    const float t152 = t147 * t123;
+    const float t153 = t150 * t123;
+    const float t154 = t151 * t124;
+    const float t155 = t153 + t154;
+    const float t156 = t151 * t126;
+    const float t157 = t14 + t146;
+    const float t158 = t16 + t149;
+    const float t159 = t5 + t152;
+    const float t160 = t5 + t156;
+    const float t161 = fabsf(t157);
+    const float t162 = t42 * t161;
+    const float t163 = sqrtf(t162);
+    const float t164 = t40 * t163;
+    const float t165 = t47 / t163;
+    const float t166 = signum(t157);
+    const float t167 = t42 * t166;
+    const float t168 = t165 * t167;
+    const float t169 = t40 * t168;
+    const float t170 = fabsf(t158);
+    const float t171 = t42 * t170;
+    const float t172 = sqrtf(t171);
+    const float t173 = t53 * t172;
+    const float t174 = t47 / t172;
+    const float t175 = signum(t158);
+    const float t176 = t42 * t175;
+    const float t177 = t174 * t176;
+    const float t178 = t53 * t177;
+    const float t179 = t65 - t164;
+    const float t180 = t179 / t67;
+    const float t181 = t70 * t169;
+    const float t182 = t164 - t173;
+    const float t183 = t182 / t73;
+    const float t184 = t75 * t169;
+    const float t185 = t77 * t178;
+    const float t186 = t181 * t159;
+    const float t187 = t184 * t159;
+    const float t188 = t185 * t155;
+    const float t189 = t187 + t188;
+    const float t190 = t185 * t160;
+    const float t191 = t107 + t146;
+    const float t192 = t36 * t191;
+    const float t193 = t68 + t192;
+    const float t194 = t193 + t180;
+    const float t195 = t39 * t194;
+    const float t196 = t14 + t195;
+    const float t197 = t110 + t149;
+    const float t198 = t36 * t197;
+    const float t199 = t74 + t198;
+    const float t200 = t199 + t183;
+    const float t201 = t39 * t200;
+    const float t202 = t16 + t201;
+    const float t203 = t113 + t152;
+    const float t204 = t36 * t203;
+    const float t205 = t71 + t204;
+    const float t206 = t205 + t186;
+    const float t207 = t39 * t206;
+    const float t208 = t5 + t207;
+    const float t209 = t116 + t155;
+    const float t210 = t36 * t209;
+    const float t211 = t76 + t210;
+    const float t212 = t211 + t189;
+    const float t213 = t39 * t212;
+    const float t214 = t117 + t156;
+    const float t215 = t36 * t214;
+    const float t216 = t78 + t215;
+    const float t217 = t216 + t190;
+    const float t218 = t39 * t217;
+    const float t219 = t5 + t218;
+    const float t220 = t208 * t30;
+    const float t221 = t208 * t32;
+    const float t222 = t213 * t30;
+    const float t223 = t219 * t32;
+    const float t224 = t222 + t223;
+    const float t225 = t213 * t32;
+    const float t226 = t219 * t35;
+    const float t227 = t225 + t226;
+    const float t228 = t220 * t208;
+    const float t229 = t220 * t213;
+    const float t230 = t221 * t219;
+    const float t231 = t229 + t230;
+    const float t232 = t224 * t213;
+    const float t233 = t227 * t219;
+    const float t234 = t232 + t233;
+    const float t235 = 0.067493826f;
+    const float t236 = t228 + t235;
+    const float t237 = 6.6152475e-6f;
+    const float t238 = t234 + t237;
+    out[0] = t14;
+    out[1] = t16;
+    out[2] = t196;
+    out[3] = t202;
+    out[4] = t236;
+    out[5] = t231;
+    out[6] = t238;
+}
+
+/* One EKF sample without its measurement: out = (x+, P+) from (x, P), as the Rust file's ekf_unmeasured. */
+static void ekf_unmeasured(const float *x, const float *p, const float *u, float *out) {
+    (void)x;
+    (void)p;
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = p[0];
+    const float t3 = p[1];
+    const float t4 = p[2];
+    const float t5 = 1.0f;
+    const float t6 = 2.0f;
+    const float t7 = 6.0f;
+    const float t8 = t5 / t6;
+    const float t9 = t5 / t7;
+    const float t10 = 0.178f /* a1 */;
+    const float t11 = 981.0f /* g */;
+    const float t12 = t6 * t11;
+    const float t13 = fabsf(t0);
+    const float t14 = t12 * t13;
+    const float t15 = sqrtf(t14);
+    const float t16 = t10 * t15;
+    const float t17 = 0.5f;
+    const float t18 = t17 / t15;
+    const float t19 = signum(t0);
+    const float t20 = t12 * t19;
+    const float t21 = t18 * t20;
+    const float t22 = t10 * t21;
+    const float t23 = 0.178f /* a2 */;
+    const float t24 = fabsf(t1);
+    const float t25 = t12 * t24;
+    const float t26 = sqrtf(t25);
+    const float t27 = t23 * t26;
+    const float t28 = t17 / t26;
+    const float t29 = signum(t1);
+    const float t30 = t12 * t29;
+    const float t31 = t28 * t30;
+    const float t32 = t23 * t31;
+    const float t33 = 3.3f /* k */;
+    const float t34 = u[0];
+    const float t35 = t33 * t34;
+    const float t36 = t35 - t16;
+    const float t37 = 15.5f /* A1 */;
+    const float t38 = t36 / t37;
+    const float t39 = -1.0f;
+    const float t40 = t39 / t37;
+    const float t41 = t40 * t22;
+    const float t42 = t16 - t27;
+    const float t43 = 15.5f /* A2 */;
+    const float t44 = t42 / t43;
+    const float t45 = t5 / t43;
+    const float t46 = t45 * t22;
+    const float t47 = t39 / t43;
+    const float t48 = t47 * t32;
+    const float t49 = t8 * t38;
+    const float t50 = t0 + t49;
+    const float t51 = t8 * t44;
+    const float t52 = t1 + t51;
+    const float t53 = t8 * t41;
+    const float t54 = t5 + t53;
+    const float t55 = t8 * t46;
+    const float t56 = t8 * t48;
+    const float t57 = t5 + t56;
+    const float t58 = fabsf(t50);
+    const float t59 = t12 * t58;
+    const float t60 = sqrtf(t59);
+    const float t61 = t10 * t60;
+    const float t62 = t17 / t60;
+    const float t63 = signum(t50);
+    const float t64 = t12 * t63;
+    const float t65 = t62 * t64;
+    const float t66 = t10 * t65;
+    const float t67 = fabsf(t52);
+    const float t68 = t12 * t67;
+    const float t69 = sqrtf(t68);
+    const float t70 = t23 * t69;
+    const float t71 = t17 / t69;
+    const float t72 = signum(t52);
+    const float t73 = t12 * t72;
+    const float t74 = t71 * t73;
+    const float t75 = t23 * t74;
+    const float t76 = t35 - t61;
+    const float t77 = t76 / t37;
+    const float t78 = t40 * t66;
+    const float t79 = t61 - t70;
+    const float t80 = t79 / t43;
+    const float t81 = t45 * t66;
+    const float t82 = t47 * t75;
+    const float t83 = t78 * t54;
+    const float t84 = t81 * t54;
+    const float t85 = t82 * t55;
+    const float t86 = t84 + t85;
+    const float t87 = t82 * t57;
+    const float t88 = t8 * t77;
+    const float t89 = t0 + t88;
+    const float t90 = t8 * t80;
+    const float t91 = t1 + t90;
+    const float t92 = t8 * t83;
+    const float t93 = t5 + t92;
+    const float t94 = t8 * t86;
+    const float t95 = t8 * t87;
+    const float t96 = t5 + t95;
+    const float t97 = fabsf(t89);
+    const float t98 = t12 * t97;
+    const float t99 = sqrtf(t98);
+    const float t100 = t10 * t99;
+    const float t101 = t17 / t99;
+    const float t102 = signum(t89);
+    const float t103 = t12 * t102;
+    const float t104 = t101 * t103;
+    const float t105 = t10 * t104;
+    const float t106 = fabsf(t91);
+    const float t107 = t12 * t106;
+    const float t108 = sqrtf(t107);
+    const float t109 = t23 * t108;
+    const float t110 = t17 / t108;
+    const float t111 = signum(t91);
+    const float t112 = t12 * t111;
+    const float t113 = t110 * t112;
+    const float t114 = t23 * t113;
+    const float t115 = t35 - t100;
+    const float t116 = t115 / t37;
+    const float t117 = t40 * t105;
+    const float t118 = t100 - t109;
+    const float t119 = t118 / t43;
+    const float t120 = t45 * t105;
+    const float t121 = t47 * t114;
+    const float t122 = t117 * t93;
+    const float t123 = t120 * t93;
+    const float t124 = t121 * t94;
+    const float t125 = t123 + t124;
+    const float t126 = t121 * t96;
+    const float t127 = t0 + t116;
+    const float t128 = t1 + t119;
+    const float t129 = t5 + t122;
+    const float t130 = t5 + t126;
+    const float t131 = fabsf(t127);
+    const float t132 = t12 * t131;
+    const float t133 = sqrtf(t132);
+    const float t134 = t10 * t133;
+    const float t135 = t17 / t133;
+    const float t136 = signum(t127);
+    const float t137 = t12 * t136;
+    const float t138 = t135 * t137;
+    const float t139 = t10 * t138;
+    const float t140 = fabsf(t128);
+    const float t141 = t12 * t140;
+    const float t142 = sqrtf(t141);
+    const float t143 = t23 * t142;
+    const float t144 = t17 / t142;
+    const float t145 = signum(t128);
+    const float t146 = t12 * t145;
+    const float t147 = t144 * t146;
+    const float t148 = t23 * t147;
+    const float t149 = t35 - t134;
+    const float t150 = t149 / t37;
+    const float t151 = t40 * t139;
+    const float t152 = t134 - t143;
+    const float t153 = t152 / t43;
+    const float t154 = t45 * t139;
+    const float t155 = t47 * t148;
+    const float t156 = t151 * t129;
+    const float t157 = t154 * t129;
+    const float t158 = t155 * t125;
+    const float t159 = t157 + t158;
+    const float t160 = t155 * t130;
+    const float t161 = t77 + t116;
+    const float t162 = t6 * t161;
+    const float t163 = t38 + t162;
+    const float t164 = t163 + t150;
+    const float t165 = t9 * t164;
+    const float t166 = t0 + t165;
+    const float t167 = t80 + t119;
+    const float t168 = t6 * t167;
+    const float t169 = t44 + t168;
+    const float t170 = t169 + t153;
+    const float t171 = t9 * t170;
+    const float t172 = t1 + t171;
+    const float t173 = t83 + t122;
+    const float t174 = t6 * t173;
+    const float t175 = t41 + t174;
+    const float t176 = t175 + t156;
+    const float t177 = t9 * t176;
+    const float t178 = t5 + t177;
+    const float t179 = t86 + t125;
+    const float t180 = t6 * t179;
+    const float t181 = t46 + t180;
+    const float t182 = t181 + t159;
+    const float t183 = t9 * t182;
+    const float t184 = t87 + t126;
+    const float t185 = t6 * t184;
+    const float t186 = t48 + t185;
+    const float t187 = t186 + t160;
+    const float t188 = t9 * t187;
+    const float t189 = t5 + t188;
+    const float t190 = t178 * t2;
+    const float t191 = t178 * t3;
+    const float t192 = t183 * t2;
+    const float t193 = t189 * t3;
+    const float t194 = t192 + t193;
+    const float t195 = t183 * t3;
+    const float t196 = t189 * t4;
+    const float t197 = t195 + t196;
+    const float t198 = t190 * t178;
+    const float t199 = t190 * t183;
+    const float t200 = t191 * t189;
+    const float t201 = t199 + t200;
+    const float t202 = t194 * t183;
+    const float t203 = t197 * t189;
+    const float t204 = t202 + t203;
+    const float t205 = 0.067493826f;
+    const float t206 = t198 + t205;
+    const float t207 = 6.6152475e-6f;
+    const float t208 = t204 + t207;
+    out[0] = t166;
+    out[1] = t172;
+    out[2] = t206;
+    out[3] = t201;
+    out[4] = t208;
+}
+
+/* The EKF's start: the centre of the state box and P(0)'s upper triangle. */
+static const float EKF_X0[TWO_TANKS_STATES] = {
+    15.0f, 15.0f
+};
+static const float EKF_P0[TWO_TANKS_COVARIANCE] = {
+    26.117428f, 0.0f, 729.1228f
+};
+
+/* The EKF's prediction alone (a lost output), taken when finite: StartedEkf::predict. */
+static void ekf_predict(float *x, float *p, const float *u) {
+    float out[TWO_TANKS_STATES + TWO_TANKS_COVARIANCE];
+    ekf_unmeasured(x, p, u, out);
+    if (all_finite(out, TWO_TANKS_STATES + TWO_TANKS_COVARIANCE)) {
+        memcpy(x, out, TWO_TANKS_STATES * sizeof *x);
+        memcpy(p, out + TWO_TANKS_STATES, TWO_TANKS_COVARIANCE * sizeof *p);
+    }
+}
+
+/* The EKF's sample with its measurement, taken when finite (1, the estimate x(k|k) in
+ * `estimate`): StartedEkf::follow. */
+static int ekf_measure(float *x, float *p, const float *y, const float *u, float *estimate) {
+    float out[2u * TWO_TANKS_STATES + TWO_TANKS_COVARIANCE];
+    ekf_measured(x, p, y, u, out);
+    if (!all_finite(out + TWO_TANKS_STATES, TWO_TANKS_STATES + TWO_TANKS_COVARIANCE)) {
+        return 0;
+    }
+    memcpy(estimate, out, TWO_TANKS_STATES * sizeof *x);
+    memcpy(x, out + TWO_TANKS_STATES, TWO_TANKS_STATES * sizeof *x);
+    memcpy(p, out + 2u * TWO_TANKS_STATES, TWO_TANKS_COVARIANCE * sizeof *p);
+    return 1;
+}
+
+void two_tanks_ekf_box_init(two_tanks_ekf_box *o) {
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->ready = 0;
+}
+
+two_tanks_status two_tanks_ekf_box_push(two_tanks_ekf_box *o, const float *y, const float *u) {
+    float estimate[TWO_TANKS_STATES];
+    unsigned i;
+    if (!inputs_finite(u)) {
+        return TWO_TANKS_REFUSED;
+    }
+    if (!accepts(y, u)) {
+        ekf_predict(o->x, o->p, u);
+        return TWO_TANKS_REFUSED;
+    }
+    if (!ekf_measure(o->x, o->p, y, u, estimate)) {
+        return TWO_TANKS_REFUSED;
+    }
+    targets(estimate, u, o->values);
+    for (i = 0u; i < TWO_TANKS_TARGETS; ++i) {
+        o->flags[i] = TWO_TANKS_INSIDE;
+    }
+    o->ready = 1;
+    return TWO_TANKS_OK;
+}
+
+two_tanks_status two_tanks_ekf_box_estimate(const two_tanks_ekf_box *o, float *values, two_tanks_saturation *saturation) {
+    if (!o->ready) {
+        return TWO_TANKS_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return TWO_TANKS_OK;
+}
+
+/* P(N-1)'s upper triangle of the EKF the map starts. */
+static const float STARTED_P0[TWO_TANKS_COVARIANCE] = {
+    0.118711874f, 0.0f, 0.010944762f
+};
+
+/* Each state's map estimate, from the map's targets. */
+static void started_ekf_map_states(const float *all, float *map) {
+    map[0] = all[0];
+    map[1] = all[1];
+}
+
+/* The targets of a follower's states, flagged with their states' saturation. */
+static void started_ekf_targets_of(const float *states, const two_tanks_saturation *state_flags, const float *u,
+                                float *values, two_tanks_saturation *flags) {
+    (void)state_flags;
+    targets(states, u, values);
+    flags[0] = TWO_TANKS_INSIDE;
+    flags[1] = TWO_TANKS_INSIDE;
+    flags[0] = state_flags[0];
+    flags[1] = state_flags[1];
+}
+
+/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite. */
+static int started_ekf_start(const float *first, const float *u, float *x, float *p) {
+    float out[TWO_TANKS_STATES + TWO_TANKS_COVARIANCE];
+    ekf_unmeasured(first, STARTED_P0, u, out);
+    if (!all_finite(out, TWO_TANKS_STATES + TWO_TANKS_COVARIANCE)) {
+        return 0;
+    }
+    memcpy(x, out, TWO_TANKS_STATES * sizeof *x);
+    memcpy(p, out + TWO_TANKS_STATES, TWO_TANKS_COVARIANCE * sizeof *p);
+    return 1;
+}
+
+/* StartedEkf::follow: the EKF's sample, every state inside. */
+static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, const float *map, const float *y,
+                              const float *u, float *states, two_tanks_saturation *flags) {
+    unsigned i;
+    (void)j;
+    (void)start_up;
+    (void)map;
+    for (i = 0u; i < TWO_TANKS_STATES; ++i) {
+        flags[i] = TWO_TANKS_INSIDE;
+    }
+    return ekf_measure(x, p, y, u, states);
+}
+
+void two_tanks_ekf_map_init(two_tanks_ekf_map *o) {
+    two_tanks_map_init(&o->window);
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->count = 0u;
+    o->started = 0;
+    o->ready = 0;
+}
+
+two_tanks_status two_tanks_ekf_map_push(two_tanks_ekf_map *o, const float *y, const float *u) {
+    const int start_up = o->count <= 0u;
+    float all[TWO_TANKS_TARGETS], map[TWO_TANKS_STATES], states[TWO_TANKS_STATES];
+    two_tanks_saturation all_flags[TWO_TANKS_TARGETS], state_flags[TWO_TANKS_STATES];
+    int estimated = 0;
+    if (!accepts(y, u)) {
+        if (o->started && inputs_finite(u)) {
+            ekf_predict(o->x, o->p, u);
+        }
+        return TWO_TANKS_REFUSED;
+    }
+    memset(map, 0, sizeof map);
+    if (start_up) {
+        (void)two_tanks_map_push(&o->window, y, u);
+        if (o->window.filled < TWO_TANKS_HORIZON) {
+            return TWO_TANKS_OK;
+        }
+        estimate_window(&o->window, all, all_flags);
+        started_ekf_map_states(all, map);
+        estimated = 1;
+    }
+    if (!o->started && estimated) {
+        if (!started_ekf_start(map, u, o->x, o->p)) {
+            return TWO_TANKS_REFUSED;
+        }
+        o->started = 1;
+        memcpy(o->values, all, sizeof all);
+        memcpy(o->flags, all_flags, sizeof all_flags);
+    } else if (o->started) {
+        if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
+            return TWO_TANKS_REFUSED;
+        }
+        started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
+    } else {
+        return TWO_TANKS_OK;
+    }
+    o->ready = 1;
+    o->count = start_up ? o->count + 1u : o->count;
+    return TWO_TANKS_OK;
+}
+
+two_tanks_status two_tanks_ekf_map_estimate(const two_tanks_ekf_map *o, float *values, two_tanks_saturation *saturation) {
+    if (!o->ready) {
+        return TWO_TANKS_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return TWO_TANKS_OK;
+}
+
+/* Whether the filter's prediction x (covariance p) and the map's states f disagree:
+ * d = sum_i (x_i - f_i)^2 / (P_ii + e_i^2) > threshold, or d is NaN (restart_disagrees). */
+static int restart_disagrees(const float *x, const float *p, const float *f) {
+    float d = 0.0f;
+    float e;
+    e = x[0] - f[0];
+    d += e * e / (p[0] + 0.118711874f);
+    e = x[1] - f[1];
+    d += e * e / (p[2] + 0.010944762f);
+    return !(d <= 8.0f);
+}
+
+/* Restarted::check, at the map's first estimate: 1 when the filter restarted from the map. */
+static int restart_check(two_tanks_ekf_restart *o, const float *y, const float *u) {
+    float all[TWO_TANKS_TARGETS], map[TWO_TANKS_STATES];
+    two_tanks_saturation all_flags[TWO_TANKS_TARGETS];
+    (void)two_tanks_map_push(&o->window, y, u);
+    if (o->window.filled < TWO_TANKS_HORIZON) {
+        return 0;
+    }
+    o->checked = 1;
+    estimate_window(&o->window, all, all_flags);
+    started_ekf_map_states(all, map);
+    if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
+        return 0;
+    }
+    memcpy(o->values, all, sizeof all);
+    memcpy(o->flags, all_flags, sizeof all_flags);
+    o->ready = 1;
+    return 1;
+}
+
+void two_tanks_ekf_restart_init(two_tanks_ekf_restart *o) {
+    two_tanks_map_init(&o->window);
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->checked = 0;
+    o->ready = 0;
+}
+
+two_tanks_status two_tanks_ekf_restart_push(two_tanks_ekf_restart *o, const float *y, const float *u) {
+    float states[TWO_TANKS_STATES];
+    two_tanks_saturation state_flags[TWO_TANKS_STATES];
+    if (!accepts(y, u)) {
+        if (inputs_finite(u)) {
+            ekf_predict(o->x, o->p, u);
+        }
+        return TWO_TANKS_REFUSED;
+    }
+    if (!o->checked && restart_check(o, y, u)) {
+        return TWO_TANKS_OK;
+    }
+    if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
+        return TWO_TANKS_REFUSED;
+    }
+    started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
+    o->ready = 1;
+    return TWO_TANKS_OK;
+}
+
+two_tanks_status two_tanks_ekf_restart_estimate(const two_tanks_ekf_restart *o, float *values, two_tanks_saturation *saturation) {
+    if (!o->ready) {
+        return TWO_TANKS_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return TWO_TANKS_OK;
+}
+
+/* The start-up schedule, j = 1 … 30: the blends g_j per state, then the gains K_j (states x
+ * outputs, row by row). */
+static const float CORRECTED_BLENDS[30][4] = {
+{
+    0.005700584f, 0.005700584f, 0.52523804f, 0.03538546f
+},
+{
+    0.0028584395f, 0.0028584395f, 0.5254738f, 0.036577273f
+},
+{
+    0.0019074437f, 0.0019074437f, 0.52555263f, 0.036976058f
+},
+{
+    0.0014312653f, 0.0014312653f, 0.52559215f, 0.037175737f
+},
+{
+    0.0011453402f, 0.0011453402f, 0.5256159f, 0.037295636f
+},
+{
+    0.0009546323f, 0.0009546323f, 0.52563167f, 0.037375607f
+},
+{
+    0.0008183679f, 0.0008183679f, 0.525643f, 0.03743275f
+},
+{
+    0.00071614515f, 0.00071614515f, 0.52565145f, 0.037475616f
+},
+{
+    0.0006366241f, 0.0006366241f, 0.5256581f, 0.03750896f
+},
+{
+    0.0005729982f, 0.0005729982f, 0.5256633f, 0.03753564f
+},
+{
+    0.0005209346f, 0.0005209346f, 0.52566767f, 0.03755747f
+},
+{
+    0.0004775441f, 0.0004775441f, 0.52567124f, 0.03757567f
+},
+{
+    0.00044082612f, 0.00044082612f, 0.5256743f, 0.037591066f
+},
+{
+    0.00040935143f, 0.00040935143f, 0.5256769f, 0.037604265f
+},
+{
+    0.00038207177f, 0.00038207177f, 0.5256792f, 0.0376157f
+},
+{
+    0.00035820084f, 0.00035820084f, 0.52568114f, 0.03762571f
+},
+{
+    0.00033713732f, 0.00033713732f, 0.52568287f, 0.037634544f
+},
+{
+    0.00031841343f, 0.00031841343f, 0.5256845f, 0.037642397f
+},
+{
+    0.00030165986f, 0.00030165986f, 0.52568585f, 0.037649423f
+},
+{
+    0.0002865812f, 0.0002865812f, 0.5256871f, 0.037655745f
+},
+{
+    0.0002729382f, 0.0002729382f, 0.52568823f, 0.037661467f
+},
+{
+    0.00026053516f, 0.00026053516f, 0.52568924f, 0.037666667f
+},
+{
+    0.00024921037f, 0.00024921037f, 0.5256902f, 0.037671417f
+},
+{
+    0.00023882907f, 0.00023882907f, 0.52569103f, 0.037675768f
+},
+{
+    0.0002292781f, 0.0002292781f, 0.52569187f, 0.037679777f
+},
+{
+    0.00022046166f, 0.00022046166f, 0.5256926f, 0.037683472f
+},
+{
+    0.00021229814f, 0.00021229814f, 0.52569324f, 0.037686896f
+},
+{
+    0.00020471762f, 0.00020471762f, 0.5256939f, 0.037690073f
+},
+{
+    0.00019765979f, 0.00019765979f, 0.5256945f, 0.037693035f
+},
+{
+    0.00019107238f, 0.00019107238f, 0.525695f, 0.037695795f
+}
+};
+static const float CORRECTED_NO_BLEND[4] = { 0.0f };
+/* The clamp of each state: its map's learning range. */
+static const float CORRECTED_LOWER[TWO_TANKS_STATES] = {
+    4.3011494f, 4.715646f
+};
+static const float CORRECTED_UPPER[TWO_TANKS_STATES] = {
+    26.20642f, 25.001827f
+};
+
+/* One sampling period of the model from x, the value alone: out = x+ (corrected_predict). */
+static void corrected_predict(const float *x, const float *u, float *out) {
+    (void)x;
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = 1.0f;
+    const float t3 = 2.0f;
+    const float t4 = 6.0f;
+    const float t5 = t2 / t3;
+    const float t6 = t2 / t4;
+    const float t7 = 0.178f /* a1 */;
+    const float t8 = 981.0f /* g */;
+    const float t9 = t3 * t8;
+    const float t10 = fabsf(t0);
+    const float t11 = t9 * t10;
+    const float t12 = sqrtf(t11);
+    const float t13 = t7 * t12;
+    const float t14 = 0.178f /* a2 */;
+    const float t15 = fabsf(t1);
+    const float t16 = t9 * t15;
+    const float t17 = sqrtf(t16);
+    const float t18 = t14 * t17;
+    const float t19 = 3.3f /* k */;
+    const float t20 = u[0];
+    const float t21 = t19 * t20;
+    const float t22 = t21 - t13;
+    const float t23 = 15.5f /* A1 */;
+    const float t24 = t22 / t23;
+    const float t25 = t13 - t18;
+    const float t26 = 15.5f /* A2 */;
+    const float t27 = t25 / t26;
+    const float t28 = t5 * t24;
+    const float t29 = t0 + t28;
+    const float t30 = t5 * t27;
+    const float t31 = t1 + t30;
+    const float t32 = fabsf(t29);
+    const float t33 = t9 * t32;
+    const float t34 = sqrtf(t33);
+    const float t35 = t7 * t34;
+    const float t36 = fabsf(t31);
+    const float t37 = t9 * t36;
+    const float t38 = sqrtf(t37);
+    const float t39 = t14 * t38;
+    const float t40 = t21 - t35;
+    const float t41 = t40 / t23;
+    const float t42 = t35 - t39;
+    const float t43 = t42 / t26;
+    const float t44 = t5 * t41;
+    const float t45 = t0 + t44;
+    const float t46 = t5 * t43;
+    const float t47 = t1 + t46;
+    const float t48 = fabsf(t45);
+    const float t49 = t9 * t48;
+    const float t50 = sqrtf(t49);
+    const float t51 = t7 * t50;
+    const float t52 = fabsf(t47);
+    const float t53 = t9 * t52;
+    const float t54 = sqrtf(t53);
+    const float t55 = t14 * t54;
+    const float t56 = t21 - t51;
+    const float t57 = t56 / t23;
+    const float t58 = t51 - t55;
+    const float t59 = t58 / t26;
+    const float t60 = t0 + t57;
+    const float t61 = t1 + t59;
+    const float t62 = fabsf(t60);
+    const float t63 = t9 * t62;
+    const float t64 = sqrtf(t63);
+    const float t65 = t7 * t64;
+    const float t66 = fabsf(t61);
+    const float t67 = t9 * t66;
+    const float t68 = sqrtf(t67);
+    const float t69 = t14 * t68;
+    const float t70 = t21 - t65;
+    const float t71 = t70 / t23;
+    const float t72 = t65 - t69;
+    const float t73 = t72 / t26;
+    const float t74 = t41 + t57;
+    const float t75 = t3 * t74;
+    const float t76 = t24 + t75;
+    const float t77 = t76 + t71;
+    const float t78 = t6 * t77;
+    const float t79 = t0 + t78;
+    const float t80 = t43 + t59;
+    const float t81 = t3 * t80;
+    const float t82 = t27 + t81;
+    const float t83 = t82 + t73;
+    const float t84 = t6 * t83;
+    const float t85 = t1 + t84;
+    out[0] = t79;
+    out[1] = t85;
+}
+
+/* The correction during the start-up, g = (blends g_j, gains K_j): x before its clamp. */
+static void corrected_start_up(const float *x, const float *y, const float *u, const float *f, const float *g, float *out) {
+    (void)x;
+    (void)y;
+    (void)u;
+    (void)f;
+    (void)g;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = y[0];
+    const float t3 = t2 - t1;
+    const float t4 = g[0];
+    const float t5 = f[0];
+    const float t6 = t5 - t0;
+    const float t7 = t4 * t6;
+    const float t8 = t0 + t7;
+    const float t9 = g[2];
+    const float t10 = t9 * t3;
+    const float t11 = t8 + t10;
+    const float t12 = g[1];
+    const float t13 = f[1];
+    const float t14 = t13 - t1;
+    const float t15 = t12 * t14;
+    const float t16 = t1 + t15;
+    const float t17 = g[3];
+    const float t18 = t17 * t3;
+    const float t19 = t16 + t18;
+    out[0] = t11;
+    out[1] = t19;
+}
+
+/* The correction after the start-up: x before its clamp. */
+static void corrected_steady(const float *x, const float *y, const float *u, const float *f, float *out) {
+    (void)x;
+    (void)y;
+    (void)u;
+    (void)f;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = y[0];
+    const float t3 = t2 - t1;
+    const float t4 = 0.5257109f;
+    const float t5 = t4 * t3;
+    const float t6 = t0 + t5;
+    const float t7 = 0.03777592f;
+    const float t8 = t7 * t3;
+    const float t9 = t1 + t8;
+    out[0] = t6;
+    out[1] = t9;
+}
+
+/* Each state's map estimate, from the map's targets. */
+static void corrected_map_states(const float *all, float *map) {
+    map[0] = all[0];
+    map[1] = all[1];
+}
+
+/* The targets of a follower's states, flagged with their states' saturation. */
+static void corrected_targets_of(const float *states, const two_tanks_saturation *state_flags, const float *u,
+                                float *values, two_tanks_saturation *flags) {
+    (void)state_flags;
+    targets(states, u, values);
+    flags[0] = TWO_TANKS_INSIDE;
+    flags[1] = TWO_TANKS_INSIDE;
+    flags[0] = state_flags[0];
+    flags[1] = state_flags[1];
+}
+
+/* Corrector::start: the model's period from the map's first estimate, taken when finite. */
+static int corrected_start(const float *first, const float *u, float *x) {
+    float next[TWO_TANKS_STATES];
+    corrected_predict(first, u, next);
+    if (!all_finite(next, TWO_TANKS_STATES)) {
+        return 0;
+    }
+    memcpy(x, next, sizeof next);
+    return 1;
+}
+
+/* Corrector::follow: the correction of the prediction x (the start-up's blend and gain, or
+ * G's), clamped to the states' ranges by selects, then the model's period from it. */
+static int corrected_follow(float *x, unsigned j, int start_up, const float *f, const float *y, const float *u,
+                            float *states, two_tanks_saturation *flags) {
+    float raw[TWO_TANKS_STATES], next[TWO_TANKS_STATES];
+    unsigned i;
+    if (start_up) {
+        corrected_start_up(x, y, u, f, (j >= 1u && j <= 30u) ? CORRECTED_BLENDS[j - 1u] : CORRECTED_NO_BLEND, raw);
+    } else {
+        corrected_steady(x, y, u, f, raw);
+    }
+    for (i = 0u; i < TWO_TANKS_STATES; ++i) {
+        const int low = !(raw[i] >= CORRECTED_LOWER[i]);
+        const int out = low | (raw[i] > CORRECTED_UPPER[i]);
+        const float edge = select_float(low, CORRECTED_LOWER[i], CORRECTED_UPPER[i]);
+        const uint32_t flag = select_bits(low, (uint32_t)TWO_TANKS_LOW, (uint32_t)TWO_TANKS_HIGH);
+        states[i] = select_float(out, edge, raw[i]);
+        flags[i] = (two_tanks_saturation)select_bits(out, flag, (uint32_t)TWO_TANKS_INSIDE);
+    }
+    corrected_predict(states, u, next);
+    if (!all_finite(next, TWO_TANKS_STATES)) {
+        return 0;
+    }
+    memcpy(x, next, sizeof next);
+    return 1;
+}
+
+/* Corrector::predict: a lost output, the model's period from x (no correction). */
+static void corrected_lost(float *x, const float *u) {
+    float next[TWO_TANKS_STATES];
+    corrected_predict(x, u, next);
+    if (all_finite(next, TWO_TANKS_STATES)) {
+        memcpy(x, next, sizeof next);
+    }
+}
+
+void two_tanks_corrected_init(two_tanks_corrected *o) {
+    two_tanks_map_init(&o->window);
+    memset(o->x, 0, sizeof o->x);
+    o->count = 0u;
+    o->started = 0;
+    o->ready = 0;
+}
+
+two_tanks_status two_tanks_corrected_push(two_tanks_corrected *o, const float *y, const float *u) {
+    const int start_up = o->count <= 30u;
+    float all[TWO_TANKS_TARGETS], map[TWO_TANKS_STATES], states[TWO_TANKS_STATES];
+    two_tanks_saturation all_flags[TWO_TANKS_TARGETS], state_flags[TWO_TANKS_STATES];
+    int estimated = 0;
+    if (!accepts(y, u)) {
+        if (o->started && inputs_finite(u)) {
+            corrected_lost(o->x, u);
+        }
+        return TWO_TANKS_REFUSED;
+    }
+    memset(map, 0, sizeof map);
+    if (start_up) {
+        (void)two_tanks_map_push(&o->window, y, u);
+        if (o->window.filled < TWO_TANKS_HORIZON) {
+            return TWO_TANKS_OK;
+        }
+        estimate_window(&o->window, all, all_flags);
+        corrected_map_states(all, map);
+        estimated = 1;
+    }
+    if (!o->started && estimated) {
+        if (!corrected_start(map, u, o->x)) {
+            return TWO_TANKS_REFUSED;
+        }
+        o->started = 1;
+        memcpy(o->values, all, sizeof all);
+        memcpy(o->flags, all_flags, sizeof all_flags);
+    } else if (o->started) {
+        if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
+            return TWO_TANKS_REFUSED;
+        }
+        corrected_targets_of(states, state_flags, u, o->values, o->flags);
+    } else {
+        return TWO_TANKS_OK;
+    }
+    o->ready = 1;
+    o->count = start_up ? o->count + 1u : o->count;
+    return TWO_TANKS_OK;
+}
+
+two_tanks_status two_tanks_corrected_estimate(const two_tanks_corrected *o, float *values, two_tanks_saturation *saturation) {
+    if (!o->ready) {
+        return TWO_TANKS_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return TWO_TANKS_OK;
+}
+

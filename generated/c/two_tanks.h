@@ -1,25 +1,30 @@
-/* The `two_tanks` observer in C99, emitted by `mho gen` from the same tables as the Rust design file.
- * Do not edit: regenerate. Build with -ffp-contract=off (no fused multiply-add) to get the Rust
- * observer's bits. */
+/* The `two_tanks` observers in C99, emitted by `mho gen` from the same tables and programs as the
+ * Rust design file. Do not edit: regenerate. Build with -ffp-contract=off (no fused
+ * multiply-add) to get the Rust observers' bits. Every observer lives in a struct you allocate
+ * (no heap); call its _init first, then _push every sample and _estimate when you need it. */
 #ifndef TWO_TANKS_H
 #define TWO_TANKS_H
 
 #define TWO_TANKS_OUTPUTS 1u
 #define TWO_TANKS_INPUTS 1u
 #define TWO_TANKS_TARGETS 2u
-/* The map's window, in samples: no estimate before it is full. */
+/* The map's window, in samples: no map estimate before it is full. */
 #define TWO_TANKS_HORIZON 10u
+#define TWO_TANKS_STATES 2u
+/* Entries of a filter's covariance kept: its upper triangle. */
+#define TWO_TANKS_COVARIANCE 3u
 
 /* What push and estimate return. */
 typedef enum {
     TWO_TANKS_OK = 0,
-    /* The sample has a NaN or infinite value and was refused; the observer is unchanged. */
+    /* The sample was refused: a NaN or infinite value (or a filter step whose result is not
+     * finite); the latest estimate is unchanged. */
     TWO_TANKS_REFUSED = 1,
-    /* Fewer than TWO_TANKS_HORIZON accepted samples since init. */
+    /* No estimate yet (the map: fewer than TWO_TANKS_HORIZON accepted samples since init). */
     TWO_TANKS_NO_ESTIMATE_YET = 2
 } two_tanks_status;
 
-/* Where an estimate lies against the map's range: inside, or held at its low or high end. */
+/* Where an estimate lies against its range: inside, or held at its low or high end. */
 typedef enum {
     TWO_TANKS_INSIDE = 0,
     TWO_TANKS_LOW = 1,
@@ -39,11 +44,82 @@ typedef struct {
 void two_tanks_map_init(two_tanks_map *observer);
 
 /* Takes the sample of the current instant: y[TWO_TANKS_OUTPUTS] and u[TWO_TANKS_INPUTS] (u may be
- * NULL when there is no input). TWO_TANKS_OK, or TWO_TANKS_REFUSED for a NaN or infinite value. */
+ * NULL when there is no input). TWO_TANKS_OK, or TWO_TANKS_REFUSED for a NaN or infinite value
+ * (the observer is unchanged). */
 two_tanks_status two_tanks_map_push(two_tanks_map *observer, const float *y, const float *u);
 
 /* The estimate of every target from the last TWO_TANKS_HORIZON samples into values[TWO_TANKS_TARGETS]
  * and saturation[TWO_TANKS_TARGETS]; TWO_TANKS_NO_ESTIMATE_YET (nothing written) before the window is full. */
 two_tanks_status two_tanks_map_estimate(const two_tanks_map *observer, float *values, two_tanks_saturation *saturation);
+
+/* The EKF from the centre of the state box (kind ekf_box, the Rust BoxEkfObserver): an estimate
+ * from the first accepted sample; a sample with a non-finite output is refused and only predicted. */
+typedef struct {
+    float x[TWO_TANKS_STATES];
+    float p[TWO_TANKS_COVARIANCE];
+    float values[TWO_TANKS_TARGETS];
+    two_tanks_saturation flags[TWO_TANKS_TARGETS];
+    int ready;
+} two_tanks_ekf_box;
+
+void two_tanks_ekf_box_init(two_tanks_ekf_box *observer);
+two_tanks_status two_tanks_ekf_box_push(two_tanks_ekf_box *observer, const float *y, const float *u);
+two_tanks_status two_tanks_ekf_box_estimate(const two_tanks_ekf_box *observer, float *values, two_tanks_saturation *saturation);
+
+/* The EKF started at the map's first estimate (kind ekf_map, the Rust StartedEkfObserver). */
+typedef struct {
+    two_tanks_map window;
+    float x[TWO_TANKS_STATES];
+    float p[TWO_TANKS_COVARIANCE];
+    unsigned count;
+    int started;
+    float values[TWO_TANKS_TARGETS];
+    two_tanks_saturation flags[TWO_TANKS_TARGETS];
+    int ready;
+} two_tanks_ekf_map;
+
+void two_tanks_ekf_map_init(two_tanks_ekf_map *observer);
+two_tanks_status two_tanks_ekf_map_push(two_tanks_ekf_map *observer, const float *y, const float *u);
+two_tanks_status two_tanks_ekf_map_estimate(const two_tanks_ekf_map *observer, float *values, two_tanks_saturation *saturation);
+
+/* The EKF from the box centre that checks the map once, at its first estimate, and restarts
+ * from it where the two disagree (kind ekf_restart, the Rust RestartedEkfObserver). */
+typedef struct {
+    two_tanks_map window;
+    float x[TWO_TANKS_STATES];
+    float p[TWO_TANKS_COVARIANCE];
+    int checked;
+    float values[TWO_TANKS_TARGETS];
+    two_tanks_saturation flags[TWO_TANKS_TARGETS];
+    int ready;
+} two_tanks_ekf_restart;
+
+void two_tanks_ekf_restart_init(two_tanks_ekf_restart *observer);
+two_tanks_status two_tanks_ekf_restart_push(two_tanks_ekf_restart *observer, const float *y, const float *u);
+two_tanks_status two_tanks_ekf_restart_estimate(const two_tanks_ekf_restart *observer, float *values, two_tanks_saturation *saturation);
+
+/* The model-corrected map (kind corrected, the Rust CorrectedObserver): the map's first estimate,
+ * then the model's prediction corrected by the output and, during the start-up, blended with the
+ * map; each state clamped to its learning range (flagged LOW or HIGH). */
+typedef struct {
+    two_tanks_map window;
+    float x[TWO_TANKS_STATES];
+    unsigned count;
+    int started;
+    float values[TWO_TANKS_TARGETS];
+    two_tanks_saturation flags[TWO_TANKS_TARGETS];
+    int ready;
+} two_tanks_corrected;
+
+void two_tanks_corrected_init(two_tanks_corrected *observer);
+two_tanks_status two_tanks_corrected_push(two_tanks_corrected *observer, const float *y, const float *u);
+two_tanks_status two_tanks_corrected_estimate(const two_tanks_corrected *observer, float *values, two_tanks_saturation *saturation);
+
+/* This design's observer, of the kind `gen` chose or the spec named: corrected. */
+#define TWO_TANKS_KIND "corrected"
+typedef two_tanks_corrected two_tanks_observer;
+#define two_tanks_observer_init two_tanks_corrected_init
+#define two_tanks_observer_push two_tanks_corrected_push
+#define two_tanks_observer_estimate two_tanks_corrected_estimate
 
 #endif

@@ -1,7 +1,38 @@
-/* The `vanderpol_sparse` observer in C99, emitted by `mho gen`. Do not edit: regenerate. */
+/* The `vanderpol_sparse` observers in C99, emitted by `mho gen`. Do not edit: regenerate. */
 #include <stdint.h>
 #include <string.h>
 #include "vanderpol_sparse.h"
+
+/* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */
+static int is_finite(float v) {
+    return (v - v) == 0.0f;
+}
+
+/* 1 when every output and input of a sample is finite (u is not read without inputs). */
+static int accepts(const float *y, const float *u) {
+    unsigned i;
+    int finite = 1;
+    for (i = 0u; i < VANDERPOL_SPARSE_OUTPUTS; ++i) {
+        finite &= is_finite(y[i]);
+    }
+    (void)u;
+    return finite;
+}
+
+/* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */
+static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
+    const uint32_t mask = 0u - (uint32_t)c;
+    return (a & mask) | (b & ~mask);
+}
+
+static float select_float(int c, float a, float b) {
+    uint32_t x, y;
+    memcpy(&x, &a, sizeof x);
+    memcpy(&y, &b, sizeof y);
+    x = select_bits(c, x, y);
+    memcpy(&a, &x, sizeof a);
+    return a;
+}
 
 /* `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[19] = {
@@ -27,26 +58,6 @@ static const float SEGMENTS_1[1][2] = {
     { -4.6765766f, 9.353153f }
 };
 
-/* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */
-static int is_finite(float v) {
-    return (v - v) == 0.0f;
-}
-
-/* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */
-static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
-    const uint32_t mask = 0u - (uint32_t)c;
-    return (a & mask) | (b & ~mask);
-}
-
-static float select_float(int c, float a, float b) {
-    uint32_t x, y;
-    memcpy(&x, &a, sizeof x);
-    memcpy(&y, &b, sizeof y);
-    x = select_bits(c, x, y);
-    memcpy(&a, &x, sizeof a);
-    return a;
-}
-
 /* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
 static uint32_t uniform_segment(float t, uint32_t count) {
     const float last = (float)(count - 1u);
@@ -66,37 +77,9 @@ static void evaluate(float t, const float *segment, float start, float t_max, fl
     *saturation = (vanderpol_sparse_saturation)select_bits(out, flag, (uint32_t)VANDERPOL_SPARSE_INSIDE);
 }
 
-void vanderpol_sparse_map_init(vanderpol_sparse_map *observer) {
-    observer->next = 0u;
-    observer->filled = 0u;
-}
-
-vanderpol_sparse_status vanderpol_sparse_map_push(vanderpol_sparse_map *observer, const float *y, const float *u) {
-    unsigned i;
-    unsigned slot;
-    int finite = 1;
-    for (i = 0u; i < VANDERPOL_SPARSE_OUTPUTS; ++i) {
-        finite &= is_finite(y[i]);
-    }
-    if (!finite) {
-        return VANDERPOL_SPARSE_REFUSED;
-    }
-    slot = observer->next;
-    for (i = 0u; i < VANDERPOL_SPARSE_OUTPUTS; ++i) {
-        observer->y[slot][i] = y[i];
-        observer->y[slot + VANDERPOL_SPARSE_HORIZON][i] = y[i];
-    }
-    (void)u;
-    observer->next = slot + 1u >= VANDERPOL_SPARSE_HORIZON ? 0u : slot + 1u;
-    observer->filled = observer->filled >= VANDERPOL_SPARSE_HORIZON ? VANDERPOL_SPARSE_HORIZON : observer->filled + 1u;
-    return VANDERPOL_SPARSE_OK;
-}
-
-vanderpol_sparse_status vanderpol_sparse_map_estimate(const vanderpol_sparse_map *observer, float *values, vanderpol_sparse_saturation *saturation) {
+/* Every target's estimate from a full window. */
+static void estimate_window(const vanderpol_sparse_map *observer, float *values, vanderpol_sparse_saturation *saturation) {
     const unsigned next = observer->next;
-    if (observer->filled < VANDERPOL_SPARSE_HORIZON) {
-        return VANDERPOL_SPARSE_NO_ESTIMATE_YET;
-    }
     const float t_0 = 0.50028557f
         + GAINS_0[5] * observer->y[next + 13u][0]
         + GAINS_0[8] * observer->y[next + 10u][0]
@@ -115,5 +98,1128 @@ vanderpol_sparse_status vanderpol_sparse_map_estimate(const vanderpol_sparse_map
         + GAINS_1[16] * observer->y[next + 2u][0];
     const uint32_t k_1 = uniform_segment(t_1, 1u);
     evaluate(t_1, SEGMENTS_1[k_1], 0.0f, 1.0f, -4.6765766f, 4.6765766f, &values[1], &saturation[1]);
+}
+
+void vanderpol_sparse_map_init(vanderpol_sparse_map *observer) {
+    observer->next = 0u;
+    observer->filled = 0u;
+}
+
+vanderpol_sparse_status vanderpol_sparse_map_push(vanderpol_sparse_map *observer, const float *y, const float *u) {
+    unsigned i;
+    unsigned slot;
+    if (!accepts(y, u)) {
+        return VANDERPOL_SPARSE_REFUSED;
+    }
+    slot = observer->next;
+    for (i = 0u; i < VANDERPOL_SPARSE_OUTPUTS; ++i) {
+        observer->y[slot][i] = y[i];
+        observer->y[slot + VANDERPOL_SPARSE_HORIZON][i] = y[i];
+    }
+    (void)u;
+    observer->next = slot + 1u >= VANDERPOL_SPARSE_HORIZON ? 0u : slot + 1u;
+    observer->filled = observer->filled >= VANDERPOL_SPARSE_HORIZON ? VANDERPOL_SPARSE_HORIZON : observer->filled + 1u;
     return VANDERPOL_SPARSE_OK;
 }
+
+vanderpol_sparse_status vanderpol_sparse_map_estimate(const vanderpol_sparse_map *observer, float *values, vanderpol_sparse_saturation *saturation) {
+    if (observer->filled < VANDERPOL_SPARSE_HORIZON) {
+        return VANDERPOL_SPARSE_NO_ESTIMATE_YET;
+    }
+    estimate_window(observer, values, saturation);
+    return VANDERPOL_SPARSE_OK;
+}
+
+
+/* 1 when every input is finite. */
+static int inputs_finite(const float *u) {
+    (void)u;
+    return 1;
+}
+
+/* 1 when the n values from v are finite. */
+static int all_finite(const float *v, unsigned n) {
+    unsigned i;
+    int finite = 1;
+    for (i = 0u; i < n; ++i) {
+        finite &= is_finite(v[i]);
+    }
+    return finite;
+}
+
+/* The targets at state x and input u. */
+static void targets(const float *x, const float *u, float *out) {
+    (void)x;
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    out[0] = t0;
+    out[1] = t1;
+}
+
+/* One EKF sample with its measurement: out = (x(k|k), x+, P+) from (x, P), as the Rust file's ekf_measured. */
+static void ekf_measured(const float *x, const float *p, const float *y, const float *u, float *out) {
+    (void)x;
+    (void)p;
+    (void)y;
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = p[0];
+    const float t3 = p[1];
+    const float t4 = p[2];
+    const float t5 = t0 + t1;
+    const float t6 = 1.0f;
+    const float t7 = t2 + t3;
+    const float t8 = t3 + t4;
+    const float t9 = 0.2f;
+    const float t10 = t9 + t7;
+    const float t11 = t10 + t8;
+    const float t12 = t6 / t11;
+    const float t13 = t7 * t12;
+    const float t14 = t8 * t12;
+    const float t15 = y[0];
+    const float t16 = t15 - t5;
+    const float t17 = t13 * t16;
+    const float t18 = t0 + t17;
+    const float t19 = t14 * t16;
+    const float t20 = t1 + t19;
+    const float t21 = t6 - t13;
+    const float t22 = -t13;
+    const float t23 = -t14;
+    const float t24 = t6 - t14;
+    const float t25 = t21 * t2;
+    const float t26 = t22 * t3;
+    const float t27 = t25 + t26;
+    const float t28 = t21 * t3;
+    const float t29 = t22 * t4;
+    const float t30 = t28 + t29;
+    const float t31 = t23 * t2;
+    const float t32 = t24 * t3;
+    const float t33 = t31 + t32;
+    const float t34 = t23 * t3;
+    const float t35 = t24 * t4;
+    const float t36 = t34 + t35;
+    const float t37 = t27 * t21;
+    const float t38 = t30 * t22;
+    const float t39 = t37 + t38;
+    const float t40 = t27 * t23;
+    const float t41 = t30 * t24;
+    const float t42 = t40 + t41;
+    const float t43 = t33 * t23;
+    const float t44 = t36 * t24;
+    const float t45 = t43 + t44;
+    const float t46 = t13 * t9;
+    const float t47 = t46 * t13;
+    const float t48 = t39 + t47;
+    const float t49 = t46 * t14;
+    const float t50 = t42 + t49;
+    const float t51 = t14 * t9;
+    const float t52 = t51 * t14;
+    const float t53 = t45 + t52;
+    const float t54 = 0.1f;
+    const float t55 = 2.0f;
+    const float t56 = 6.0f;
+    const float t57 = t54 / t55;
+    const float t58 = t54 / t56;
+    const float t59 = -t20;
+    const float t60 = -1.0f;
+    const float t61 = 4.0f;
+    const float t62 = t61 * t18;
+    const float t63 = t18 * t18;
+    const float t64 = t6 - t63;
+    const float t65 = t64 * t20;
+    const float t66 = t62 + t65;
+    const float t67 = t55 * t18;
+    const float t68 = -t67;
+    const float t69 = t68 * t20;
+    const float t70 = t61 + t69;
+    const float t71 = t57 * t59;
+    const float t72 = t18 + t71;
+    const float t73 = t57 * t66;
+    const float t74 = t20 + t73;
+    const float t75 = -t57;
+    const float t76 = t57 * t70;
+    const float t77 = t57 * t64;
+    const float t78 = t6 + t77;
+    const float t79 = -t74;
+    const float t80 = t61 * t72;
+    const float t81 = t72 * t72;
+    const float t82 = t6 - t81;
+    const float t83 = t82 * t74;
+    const float t84 = t80 + t83;
+    const float t85 = t55 * t72;
+    const float t86 = -t85;
+    const float t87 = t86 * t74;
+    const float t88 = t61 + t87;
+    const float t89 = -t76;
+    const float t90 = -t78;
+    const float t91 = t82 * t76;
+    const float t92 = t88 + t91;
+    const float t93 = t88 * t75;
+    const float t94 = t82 * t78;
+    const float t95 = t93 + t94;
+    const float t96 = t57 * t79;
+    const float t97 = t18 + t96;
+    const float t98 = t57 * t84;
+    const float t99 = t20 + t98;
+    const float t100 = t57 * t89;
+    const float t101 = t6 + t100;
+    const float t102 = t57 * t90;
+    const float t103 = t57 * t92;
+    const float t104 = t57 * t95;
+    const float t105 = t6 + t104;
+    const float t106 = -t99;
+    const float t107 = t61 * t97;
+    const float t108 = t97 * t97;
+    const float t109 = t6 - t108;
+    const float t110 = t109 * t99;
+    const float t111 = t107 + t110;
+    const float t112 = t55 * t97;
+    const float t113 = -t112;
+    const float t114 = t113 * t99;
+    const float t115 = t61 + t114;
+    const float t116 = -t103;
+    const float t117 = -t105;
+    const float t118 = t115 * t101;
+    const float t119 = t109 * t103;
+    const float t120 = t118 + t119;
+    const float t121 = t115 * t102;
+    const float t122 = t109 * t105;
+    const float t123 = t121 + t122;
+    const float t124 = t54 * t106;
+    const float t125 = t18 + t124;
+    const float t126 = t54 * t111;
+    const float t127 = t20 + t126;
+    const float t128 = t54 * t116;
+    const float t129 = t6 + t128;
+    const float t130 = t54 * t117;
+    const float t131 = t54 * t120;
+    const float t132 = t54 * t123;
+    const float t133 = t6 + t132;
+    const float t134 = -t127;
+    const float t135 = t61 * t125;
+    const float t136 = t125 * t125;
+    const float t137 = t6 - t136;
+    const float t138 = t137 * t127;
+    const float t139 = t135 + t138;
+    const float t140 = t55 * t125;
+    const float t141 = -t140;
+    const float t142 = t141 * t127;
+    const float t143 = t61 + t142;
+    const float t144 = -t131;
+    const float t145 = -t133;
+    const float t146 = t143 * t129;
+    const float t147 = t137 * t131;
+    const float t148 = t146 + t147;
+    const float t149 = t143 * t130;
+    const float t150 = t137 * t133;
+    const float t151 = t149 + t150;
+    const float t152 = t79 + t106;
+    const float t153 = t55 * t152;
+    const float t154 = t59 + t153;
+    const float t155 = t154 + t134;
+    const float t156 = t58 * t155;
+    const float t157 = t18 + t156;
+    const float t158 = t84 + t111;
+    const float t159 = t55 * t158;
+    const float t160 = t66 + t159;
+    const float t161 = t160 + t139;
+    const float t162 = t58 * t161;
+    const float t163 = t20 + t162;
+    const float t164 = t89 + t116;
+    const float t165 = t55 * t164;
+    const float t166 = t165 + t144;
+    const float t167 = t58 * t166;
+    const float t168 = t6 + t167;
+    const float t169 = t90 + t117;
+    const float t170 = t55 * t169;
+    const float t171 = t60 + t170;
+    const float t172 = t171 + t145;
+    const float t173 = t58 * t172;
+    const float t174 = t92 + t120;
+    const float t175 = t55 * t174;
+    const float t176 = t70 + t175;
+    const float t177 = t176 + t148;
+    const float t178 = t58 * t177;
+    const float t179 = t95 + t123;
+    const float t180 = t55 * t179;
+    const float t181 = t64 + t180;
+    const float t182 = t181 + t151;
+    const float t183 = t58 * t182;
+    const float t184 = t6 + t183;
+    const float t185 = t168 * t48;
+    const float t186 = t173 * t50;
+    const float t187 = t185 + t186;
+    const float t188 = t168 * t50;
+    const float t189 = t173 * t53;
+    const float t190 = t188 + t189;
+    const float t191 = t178 * t48;
+    const float t192 = t184 * t50;
+    const float t193 = t191 + t192;
+    const float t194 = t178 * t50;
+    const float t195 = t184 * t53;
+    const float t196 = t194 + t195;
+    const float t197 = t187 * t168;
+    const float t198 = t190 * t173;
+    const float t199 = t197 + t198;
+    const float t200 = t187 * t178;
+    const float t201 = t190 * t184;
+    const float t202 = t200 + t201;
+    const float t203 = t193 * t178;
+    const float t204 = t196 * t184;
+    const float t205 = t203 + t204;
+    const float t206 = 4.104298e-5f;
+    const float t207 = t199 + t206;
+    const float t208 = 0.00076428615f;
+    const float t209 = t205 + t208;
+    out[0] = t18;
+    out[1] = t20;
+    out[2] = t157;
+    out[3] = t163;
+    out[4] = t207;
+    out[5] = t202;
+    out[6] = t209;
+}
+
+/* One EKF sample without its measurement: out = (x+, P+) from (x, P), as the Rust file's ekf_unmeasured. */
+static void ekf_unmeasured(const float *x, const float *p, const float *u, float *out) {
+    (void)x;
+    (void)p;
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = p[0];
+    const float t3 = p[1];
+    const float t4 = p[2];
+    const float t5 = 0.1f;
+    const float t6 = 2.0f;
+    const float t7 = 6.0f;
+    const float t8 = t5 / t6;
+    const float t9 = t5 / t7;
+    const float t10 = -t1;
+    const float t11 = -1.0f;
+    const float t12 = 4.0f;
+    const float t13 = t12 * t0;
+    const float t14 = 1.0f;
+    const float t15 = t0 * t0;
+    const float t16 = t14 - t15;
+    const float t17 = t16 * t1;
+    const float t18 = t13 + t17;
+    const float t19 = t6 * t0;
+    const float t20 = -t19;
+    const float t21 = t20 * t1;
+    const float t22 = t12 + t21;
+    const float t23 = t8 * t10;
+    const float t24 = t0 + t23;
+    const float t25 = t8 * t18;
+    const float t26 = t1 + t25;
+    const float t27 = -t8;
+    const float t28 = t8 * t22;
+    const float t29 = t8 * t16;
+    const float t30 = t14 + t29;
+    const float t31 = -t26;
+    const float t32 = t12 * t24;
+    const float t33 = t24 * t24;
+    const float t34 = t14 - t33;
+    const float t35 = t34 * t26;
+    const float t36 = t32 + t35;
+    const float t37 = t6 * t24;
+    const float t38 = -t37;
+    const float t39 = t38 * t26;
+    const float t40 = t12 + t39;
+    const float t41 = -t28;
+    const float t42 = -t30;
+    const float t43 = t34 * t28;
+    const float t44 = t40 + t43;
+    const float t45 = t40 * t27;
+    const float t46 = t34 * t30;
+    const float t47 = t45 + t46;
+    const float t48 = t8 * t31;
+    const float t49 = t0 + t48;
+    const float t50 = t8 * t36;
+    const float t51 = t1 + t50;
+    const float t52 = t8 * t41;
+    const float t53 = t14 + t52;
+    const float t54 = t8 * t42;
+    const float t55 = t8 * t44;
+    const float t56 = t8 * t47;
+    const float t57 = t14 + t56;
+    const float t58 = -t51;
+    const float t59 = t12 * t49;
+    const float t60 = t49 * t49;
+    const float t61 = t14 - t60;
+    const float t62 = t61 * t51;
+    const float t63 = t59 + t62;
+    const float t64 = t6 * t49;
+    const float t65 = -t64;
+    const float t66 = t65 * t51;
+    const float t67 = t12 + t66;
+    const float t68 = -t55;
+    const float t69 = -t57;
+    const float t70 = t67 * t53;
+    const float t71 = t61 * t55;
+    const float t72 = t70 + t71;
+    const float t73 = t67 * t54;
+    const float t74 = t61 * t57;
+    const float t75 = t73 + t74;
+    const float t76 = t5 * t58;
+    const float t77 = t0 + t76;
+    const float t78 = t5 * t63;
+    const float t79 = t1 + t78;
+    const float t80 = t5 * t68;
+    const float t81 = t14 + t80;
+    const float t82 = t5 * t69;
+    const float t83 = t5 * t72;
+    const float t84 = t5 * t75;
+    const float t85 = t14 + t84;
+    const float t86 = -t79;
+    const float t87 = t12 * t77;
+    const float t88 = t77 * t77;
+    const float t89 = t14 - t88;
+    const float t90 = t89 * t79;
+    const float t91 = t87 + t90;
+    const float t92 = t6 * t77;
+    const float t93 = -t92;
+    const float t94 = t93 * t79;
+    const float t95 = t12 + t94;
+    const float t96 = -t83;
+    const float t97 = -t85;
+    const float t98 = t95 * t81;
+    const float t99 = t89 * t83;
+    const float t100 = t98 + t99;
+    const float t101 = t95 * t82;
+    const float t102 = t89 * t85;
+    const float t103 = t101 + t102;
+    const float t104 = t31 + t58;
+    const float t105 = t6 * t104;
+    const float t106 = t10 + t105;
+    const float t107 = t106 + t86;
+    const float t108 = t9 * t107;
+    const float t109 = t0 + t108;
+    const float t110 = t36 + t63;
+    const float t111 = t6 * t110;
+    const float t112 = t18 + t111;
+    const float t113 = t112 + t91;
+    const float t114 = t9 * t113;
+    const float t115 = t1 + t114;
+    const float t116 = t41 + t68;
+    const float t117 = t6 * t116;
+    const float t118 = t117 + t96;
+    const float t119 = t9 * t118;
+    const float t120 = t14 + t119;
+    const float t121 = t42 + t69;
+    const float t122 = t6 * t121;
+    const float t123 = t11 + t122;
+    const float t124 = t123 + t97;
+    const float t125 = t9 * t124;
+    const float t126 = t44 + t72;
+    const float t127 = t6 * t126;
+    const float t128 = t22 + t127;
+    const float t129 = t128 + t100;
+    const float t130 = t9 * t129;
+    const float t131 = t47 + t75;
+    const float t132 = t6 * t131;
+    const float t133 = t16 + t132;
+    const float t134 = t133 + t103;
+    const float t135 = t9 * t134;
+    const float t136 = t14 + t135;
+    const float t137 = t120 * t2;
+    const float t138 = t125 * t3;
+    const float t139 = t137 + t138;
+    const float t140 = t120 * t3;
+    const float t141 = t125 * t4;
+    const float t142 = t140 + t141;
+    const float t143 = t130 * t2;
+    const float t144 = t136 * t3;
+    const float t145 = t143 + t144;
+    const float t146 = t130 * t3;
+    const float t147 = t136 * t4;
+    const float t148 = t146 + t147;
+    const float t149 = t139 * t120;
+    const float t150 = t142 * t125;
+    const float t151 = t149 + t150;
+    const float t152 = t139 * t130;
+    const float t153 = t142 * t136;
+    const float t154 = t152 + t153;
+    const float t155 = t145 * t130;
+    const float t156 = t148 * t136;
+    const float t157 = t155 + t156;
+    const float t158 = 4.104298e-5f;
+    const float t159 = t151 + t158;
+    const float t160 = 0.00076428615f;
+    const float t161 = t157 + t160;
+    out[0] = t109;
+    out[1] = t115;
+    out[2] = t159;
+    out[3] = t154;
+    out[4] = t161;
+}
+
+/* The EKF's start: the centre of the state box and P(0)'s upper triangle. */
+static const float EKF_X0[VANDERPOL_SPARSE_STATES] = {
+    0.0f, 0.0f
+};
+static const float EKF_P0[VANDERPOL_SPARSE_COVARIANCE] = {
+    0.10246995f, 0.0f, 0.25946823f
+};
+
+/* The EKF's prediction alone (a lost output), taken when finite: StartedEkf::predict. */
+static void ekf_predict(float *x, float *p, const float *u) {
+    float out[VANDERPOL_SPARSE_STATES + VANDERPOL_SPARSE_COVARIANCE];
+    ekf_unmeasured(x, p, u, out);
+    if (all_finite(out, VANDERPOL_SPARSE_STATES + VANDERPOL_SPARSE_COVARIANCE)) {
+        memcpy(x, out, VANDERPOL_SPARSE_STATES * sizeof *x);
+        memcpy(p, out + VANDERPOL_SPARSE_STATES, VANDERPOL_SPARSE_COVARIANCE * sizeof *p);
+    }
+}
+
+/* The EKF's sample with its measurement, taken when finite (1, the estimate x(k|k) in
+ * `estimate`): StartedEkf::follow. */
+static int ekf_measure(float *x, float *p, const float *y, const float *u, float *estimate) {
+    float out[2u * VANDERPOL_SPARSE_STATES + VANDERPOL_SPARSE_COVARIANCE];
+    ekf_measured(x, p, y, u, out);
+    if (!all_finite(out + VANDERPOL_SPARSE_STATES, VANDERPOL_SPARSE_STATES + VANDERPOL_SPARSE_COVARIANCE)) {
+        return 0;
+    }
+    memcpy(estimate, out, VANDERPOL_SPARSE_STATES * sizeof *x);
+    memcpy(x, out + VANDERPOL_SPARSE_STATES, VANDERPOL_SPARSE_STATES * sizeof *x);
+    memcpy(p, out + 2u * VANDERPOL_SPARSE_STATES, VANDERPOL_SPARSE_COVARIANCE * sizeof *p);
+    return 1;
+}
+
+void vanderpol_sparse_ekf_box_init(vanderpol_sparse_ekf_box *o) {
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->ready = 0;
+}
+
+vanderpol_sparse_status vanderpol_sparse_ekf_box_push(vanderpol_sparse_ekf_box *o, const float *y, const float *u) {
+    float estimate[VANDERPOL_SPARSE_STATES];
+    unsigned i;
+    if (!inputs_finite(u)) {
+        return VANDERPOL_SPARSE_REFUSED;
+    }
+    if (!accepts(y, u)) {
+        ekf_predict(o->x, o->p, u);
+        return VANDERPOL_SPARSE_REFUSED;
+    }
+    if (!ekf_measure(o->x, o->p, y, u, estimate)) {
+        return VANDERPOL_SPARSE_REFUSED;
+    }
+    targets(estimate, u, o->values);
+    for (i = 0u; i < VANDERPOL_SPARSE_TARGETS; ++i) {
+        o->flags[i] = VANDERPOL_SPARSE_INSIDE;
+    }
+    o->ready = 1;
+    return VANDERPOL_SPARSE_OK;
+}
+
+vanderpol_sparse_status vanderpol_sparse_ekf_box_estimate(const vanderpol_sparse_ekf_box *o, float *values, vanderpol_sparse_saturation *saturation) {
+    if (!o->ready) {
+        return VANDERPOL_SPARSE_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return VANDERPOL_SPARSE_OK;
+}
+
+/* P(N-1)'s upper triangle of the EKF the map starts. */
+static const float STARTED_P0[VANDERPOL_SPARSE_COVARIANCE] = {
+    0.05449569f, 0.0f, 0.2009122f
+};
+
+/* Each state's map estimate, from the map's targets. */
+static void started_ekf_map_states(const float *all, float *map) {
+    map[0] = all[0];
+    map[1] = all[1];
+}
+
+/* The targets of a follower's states, flagged with their states' saturation. */
+static void started_ekf_targets_of(const float *states, const vanderpol_sparse_saturation *state_flags, const float *u,
+                                float *values, vanderpol_sparse_saturation *flags) {
+    (void)state_flags;
+    targets(states, u, values);
+    flags[0] = VANDERPOL_SPARSE_INSIDE;
+    flags[1] = VANDERPOL_SPARSE_INSIDE;
+    flags[0] = state_flags[0];
+    flags[1] = state_flags[1];
+}
+
+/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite. */
+static int started_ekf_start(const float *first, const float *u, float *x, float *p) {
+    float out[VANDERPOL_SPARSE_STATES + VANDERPOL_SPARSE_COVARIANCE];
+    ekf_unmeasured(first, STARTED_P0, u, out);
+    if (!all_finite(out, VANDERPOL_SPARSE_STATES + VANDERPOL_SPARSE_COVARIANCE)) {
+        return 0;
+    }
+    memcpy(x, out, VANDERPOL_SPARSE_STATES * sizeof *x);
+    memcpy(p, out + VANDERPOL_SPARSE_STATES, VANDERPOL_SPARSE_COVARIANCE * sizeof *p);
+    return 1;
+}
+
+/* StartedEkf::follow: the EKF's sample, every state inside. */
+static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, const float *map, const float *y,
+                              const float *u, float *states, vanderpol_sparse_saturation *flags) {
+    unsigned i;
+    (void)j;
+    (void)start_up;
+    (void)map;
+    for (i = 0u; i < VANDERPOL_SPARSE_STATES; ++i) {
+        flags[i] = VANDERPOL_SPARSE_INSIDE;
+    }
+    return ekf_measure(x, p, y, u, states);
+}
+
+void vanderpol_sparse_ekf_map_init(vanderpol_sparse_ekf_map *o) {
+    vanderpol_sparse_map_init(&o->window);
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->count = 0u;
+    o->started = 0;
+    o->ready = 0;
+}
+
+vanderpol_sparse_status vanderpol_sparse_ekf_map_push(vanderpol_sparse_ekf_map *o, const float *y, const float *u) {
+    const int start_up = o->count <= 0u;
+    float all[VANDERPOL_SPARSE_TARGETS], map[VANDERPOL_SPARSE_STATES], states[VANDERPOL_SPARSE_STATES];
+    vanderpol_sparse_saturation all_flags[VANDERPOL_SPARSE_TARGETS], state_flags[VANDERPOL_SPARSE_STATES];
+    int estimated = 0;
+    if (!accepts(y, u)) {
+        if (o->started && inputs_finite(u)) {
+            ekf_predict(o->x, o->p, u);
+        }
+        return VANDERPOL_SPARSE_REFUSED;
+    }
+    memset(map, 0, sizeof map);
+    if (start_up) {
+        (void)vanderpol_sparse_map_push(&o->window, y, u);
+        if (o->window.filled < VANDERPOL_SPARSE_HORIZON) {
+            return VANDERPOL_SPARSE_OK;
+        }
+        estimate_window(&o->window, all, all_flags);
+        started_ekf_map_states(all, map);
+        estimated = 1;
+    }
+    if (!o->started && estimated) {
+        if (!started_ekf_start(map, u, o->x, o->p)) {
+            return VANDERPOL_SPARSE_REFUSED;
+        }
+        o->started = 1;
+        memcpy(o->values, all, sizeof all);
+        memcpy(o->flags, all_flags, sizeof all_flags);
+    } else if (o->started) {
+        if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
+            return VANDERPOL_SPARSE_REFUSED;
+        }
+        started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
+    } else {
+        return VANDERPOL_SPARSE_OK;
+    }
+    o->ready = 1;
+    o->count = start_up ? o->count + 1u : o->count;
+    return VANDERPOL_SPARSE_OK;
+}
+
+vanderpol_sparse_status vanderpol_sparse_ekf_map_estimate(const vanderpol_sparse_ekf_map *o, float *values, vanderpol_sparse_saturation *saturation) {
+    if (!o->ready) {
+        return VANDERPOL_SPARSE_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return VANDERPOL_SPARSE_OK;
+}
+
+/* Whether the filter's prediction x (covariance p) and the map's states f disagree:
+ * d = sum_i (x_i - f_i)^2 / (P_ii + e_i^2) > threshold, or d is NaN (restart_disagrees). */
+static int restart_disagrees(const float *x, const float *p, const float *f) {
+    float d = 0.0f;
+    float e;
+    e = x[0] - f[0];
+    d += e * e / (p[0] + 0.01723305f);
+    e = x[1] - f[1];
+    d += e * e / (p[2] + 0.063534014f);
+    return !(d <= 1.0f);
+}
+
+/* Restarted::check, at the map's first estimate: 1 when the filter restarted from the map. */
+static int restart_check(vanderpol_sparse_ekf_restart *o, const float *y, const float *u) {
+    float all[VANDERPOL_SPARSE_TARGETS], map[VANDERPOL_SPARSE_STATES];
+    vanderpol_sparse_saturation all_flags[VANDERPOL_SPARSE_TARGETS];
+    (void)vanderpol_sparse_map_push(&o->window, y, u);
+    if (o->window.filled < VANDERPOL_SPARSE_HORIZON) {
+        return 0;
+    }
+    o->checked = 1;
+    estimate_window(&o->window, all, all_flags);
+    started_ekf_map_states(all, map);
+    if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
+        return 0;
+    }
+    memcpy(o->values, all, sizeof all);
+    memcpy(o->flags, all_flags, sizeof all_flags);
+    o->ready = 1;
+    return 1;
+}
+
+void vanderpol_sparse_ekf_restart_init(vanderpol_sparse_ekf_restart *o) {
+    vanderpol_sparse_map_init(&o->window);
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->checked = 0;
+    o->ready = 0;
+}
+
+vanderpol_sparse_status vanderpol_sparse_ekf_restart_push(vanderpol_sparse_ekf_restart *o, const float *y, const float *u) {
+    float states[VANDERPOL_SPARSE_STATES];
+    vanderpol_sparse_saturation state_flags[VANDERPOL_SPARSE_STATES];
+    if (!accepts(y, u)) {
+        if (inputs_finite(u)) {
+            ekf_predict(o->x, o->p, u);
+        }
+        return VANDERPOL_SPARSE_REFUSED;
+    }
+    if (!o->checked && restart_check(o, y, u)) {
+        return VANDERPOL_SPARSE_OK;
+    }
+    if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
+        return VANDERPOL_SPARSE_REFUSED;
+    }
+    started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
+    o->ready = 1;
+    return VANDERPOL_SPARSE_OK;
+}
+
+vanderpol_sparse_status vanderpol_sparse_ekf_restart_estimate(const vanderpol_sparse_ekf_restart *o, float *values, vanderpol_sparse_saturation *saturation) {
+    if (!o->ready) {
+        return VANDERPOL_SPARSE_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return VANDERPOL_SPARSE_OK;
+}
+
+/* The start-up schedule, j = 1 … 57: the blends g_j per state, then the gains K_j (states x
+ * outputs, row by row). */
+static const float CORRECTED_BLENDS[57][4] = {
+{
+    0.25633332f, 0.25633332f, 0.20042007f, 0.41345128f
+},
+{
+    0.14700821f, 0.14700821f, 0.12209259f, 0.25892508f
+},
+{
+    0.10305548f, 0.10305548f, 0.09060205f, 0.19679984f
+},
+{
+    0.0793356f, 0.0793356f, 0.073607616f, 0.16327286f
+},
+{
+    0.06449178f, 0.06449178f, 0.06297256f, 0.14229178f
+},
+{
+    0.054327093f, 0.054327093f, 0.055689927f, 0.12792444f
+},
+{
+    0.046930306f, 0.046930306f, 0.0503904f, 0.117469415f
+},
+{
+    0.04130633f, 0.04130633f, 0.046361025f, 0.10952018f
+},
+{
+    0.036886033f, 0.036886033f, 0.04319404f, 0.10327228f
+},
+{
+    0.033320334f, 0.033320334f, 0.04063935f, 0.09823233f
+},
+{
+    0.030383246f, 0.030383246f, 0.038535032f, 0.09408089f
+},
+{
+    0.027922006f, 0.027922006f, 0.036771644f, 0.09060203f
+},
+{
+    0.025829637f, 0.025829637f, 0.03527254f, 0.08764456f
+},
+{
+    0.024028996f, 0.024028996f, 0.033982445f, 0.08509944f
+},
+{
+    0.022463048f, 0.022463048f, 0.0328605f, 0.08288603f
+},
+{
+    0.021088714f, 0.021088714f, 0.031875838f, 0.08094348f
+},
+{
+    0.019872854f, 0.019872854f, 0.03100472f, 0.079224914f
+},
+{
+    0.018789552f, 0.018789552f, 0.030228572f, 0.077693716f
+},
+{
+    0.017818248f, 0.017818248f, 0.02953267f, 0.07632082f
+},
+{
+    0.01694243f, 0.01694243f, 0.028905177f, 0.07508289f
+},
+{
+    0.016148677f, 0.016148677f, 0.02833648f, 0.07396095f
+},
+{
+    0.015425969f, 0.015425969f, 0.027818687f, 0.07293944f
+},
+{
+    0.014765178f, 0.014765178f, 0.027345253f, 0.072005436f
+},
+{
+    0.014158673f, 0.014158673f, 0.026910715f, 0.07114817f
+},
+{
+    0.013600028f, 0.013600028f, 0.026510466f, 0.07035855f
+},
+{
+    0.013083794f, 0.013083794f, 0.026140604f, 0.06962888f
+},
+{
+    0.012605317f, 0.012605317f, 0.025797792f, 0.068952575f
+},
+{
+    0.012160602f, 0.012160602f, 0.02547917f, 0.068323985f
+},
+{
+    0.011746196f, 0.011746196f, 0.025182264f, 0.06773824f
+},
+{
+    0.011359104f, 0.011359104f, 0.024904925f, 0.0671911f
+},
+{
+    0.0109967105f, 0.0109967105f, 0.024645284f, 0.06667888f
+},
+{
+    0.010656726f, 0.010656726f, 0.024401698f, 0.06619833f
+},
+{
+    0.010337133f, 0.010337133f, 0.024172721f, 0.06574659f
+},
+{
+    0.010036151f, 0.010036151f, 0.023957077f, 0.06532117f
+},
+{
+    0.0097522f, 0.0097522f, 0.023753637f, 0.064919814f
+},
+{
+    0.009483875f, 0.009483875f, 0.023561392f, 0.06454055f
+},
+{
+    0.00922992f, 0.00922992f, 0.023379443f, 0.064181596f
+},
+{
+    0.00898921f, 0.00898921f, 0.023206983f, 0.063841365f
+},
+{
+    0.008760737f, 0.008760737f, 0.02304329f, 0.06351843f
+},
+{
+    0.00854359f, 0.00854359f, 0.022887712f, 0.0632115f
+},
+{
+    0.008336946f, 0.008336946f, 0.02273966f, 0.06291942f
+},
+{
+    0.008140064f, 0.008140064f, 0.0225986f, 0.06264114f
+},
+{
+    0.007952265f, 0.007952265f, 0.02246405f, 0.06237569f
+},
+{
+    0.007772937f, 0.007772937f, 0.022335568f, 0.06212222f
+},
+{
+    0.007601518f, 0.007601518f, 0.022212751f, 0.061879925f
+},
+{
+    0.007437497f, 0.007437497f, 0.022095237f, 0.06164809f
+},
+{
+    0.007280404f, 0.007280404f, 0.021982687f, 0.061426044f
+},
+{
+    0.0071298108f, 0.0071298108f, 0.021874791f, 0.061213188f
+},
+{
+    0.0069853207f, 0.0069853207f, 0.021771269f, 0.061008956f
+},
+{
+    0.006846571f, 0.006846571f, 0.02167186f, 0.06081284f
+},
+{
+    0.0067132255f, 0.0067132255f, 0.021576323f, 0.06062436f
+},
+{
+    0.006584975f, 0.006584975f, 0.021484436f, 0.060443085f
+},
+{
+    0.0064615333f, 0.0064615333f, 0.021395994f, 0.060268607f
+},
+{
+    0.006342634f, 0.006342634f, 0.021310808f, 0.060100548f
+},
+{
+    0.0062280316f, 0.0062280316f, 0.021228699f, 0.05993856f
+},
+{
+    0.006117497f, 0.006117497f, 0.021149505f, 0.059782326f
+},
+{
+    0.006010818f, 0.006010818f, 0.021073073f, 0.05963154f
+}
+};
+static const float CORRECTED_NO_BLEND[4] = { 0.0f };
+/* The clamp of each state: its map's learning range. */
+static const float CORRECTED_LOWER[VANDERPOL_SPARSE_STATES] = {
+    -2.0616221f, -4.6765766f
+};
+static const float CORRECTED_UPPER[VANDERPOL_SPARSE_STATES] = {
+    2.0616221f, 4.6765766f
+};
+
+/* One sampling period of the model from x, the value alone: out = x+ (corrected_predict). */
+static void corrected_predict(const float *x, const float *u, float *out) {
+    (void)x;
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = 0.1f;
+    const float t3 = 2.0f;
+    const float t4 = 6.0f;
+    const float t5 = t2 / t3;
+    const float t6 = t2 / t4;
+    const float t7 = -t1;
+    const float t8 = 4.0f;
+    const float t9 = t8 * t0;
+    const float t10 = 1.0f;
+    const float t11 = t0 * t0;
+    const float t12 = t10 - t11;
+    const float t13 = t12 * t1;
+    const float t14 = t9 + t13;
+    const float t15 = t5 * t7;
+    const float t16 = t0 + t15;
+    const float t17 = t5 * t14;
+    const float t18 = t1 + t17;
+    const float t19 = -t18;
+    const float t20 = t8 * t16;
+    const float t21 = t16 * t16;
+    const float t22 = t10 - t21;
+    const float t23 = t22 * t18;
+    const float t24 = t20 + t23;
+    const float t25 = t5 * t19;
+    const float t26 = t0 + t25;
+    const float t27 = t5 * t24;
+    const float t28 = t1 + t27;
+    const float t29 = -t28;
+    const float t30 = t8 * t26;
+    const float t31 = t26 * t26;
+    const float t32 = t10 - t31;
+    const float t33 = t32 * t28;
+    const float t34 = t30 + t33;
+    const float t35 = t2 * t29;
+    const float t36 = t0 + t35;
+    const float t37 = t2 * t34;
+    const float t38 = t1 + t37;
+    const float t39 = -t38;
+    const float t40 = t8 * t36;
+    const float t41 = t36 * t36;
+    const float t42 = t10 - t41;
+    const float t43 = t42 * t38;
+    const float t44 = t40 + t43;
+    const float t45 = t19 + t29;
+    const float t46 = t3 * t45;
+    const float t47 = t7 + t46;
+    const float t48 = t47 + t39;
+    const float t49 = t6 * t48;
+    const float t50 = t0 + t49;
+    const float t51 = t24 + t34;
+    const float t52 = t3 * t51;
+    const float t53 = t14 + t52;
+    const float t54 = t53 + t44;
+    const float t55 = t6 * t54;
+    const float t56 = t1 + t55;
+    out[0] = t50;
+    out[1] = t56;
+}
+
+/* The correction during the start-up, g = (blends g_j, gains K_j): x before its clamp. */
+static void corrected_start_up(const float *x, const float *y, const float *u, const float *f, const float *g, float *out) {
+    (void)x;
+    (void)y;
+    (void)u;
+    (void)f;
+    (void)g;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = t0 + t1;
+    const float t3 = y[0];
+    const float t4 = t3 - t2;
+    const float t5 = g[0];
+    const float t6 = f[0];
+    const float t7 = t6 - t0;
+    const float t8 = t5 * t7;
+    const float t9 = t0 + t8;
+    const float t10 = g[2];
+    const float t11 = t10 * t4;
+    const float t12 = t9 + t11;
+    const float t13 = g[1];
+    const float t14 = f[1];
+    const float t15 = t14 - t1;
+    const float t16 = t13 * t15;
+    const float t17 = t1 + t16;
+    const float t18 = g[3];
+    const float t19 = t18 * t4;
+    const float t20 = t17 + t19;
+    out[0] = t12;
+    out[1] = t20;
+}
+
+/* The correction after the start-up: x before its clamp. */
+static void corrected_steady(const float *x, const float *y, const float *u, const float *f, float *out) {
+    (void)x;
+    (void)y;
+    (void)u;
+    (void)f;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = t0 + t1;
+    const float t3 = y[0];
+    const float t4 = t3 - t2;
+    const float t5 = 0.01676654f;
+    const float t6 = t5 * t4;
+    const float t7 = t0 + t6;
+    const float t8 = 0.051135518f;
+    const float t9 = t8 * t4;
+    const float t10 = t1 + t9;
+    out[0] = t7;
+    out[1] = t10;
+}
+
+/* Each state's map estimate, from the map's targets. */
+static void corrected_map_states(const float *all, float *map) {
+    map[0] = all[0];
+    map[1] = all[1];
+}
+
+/* The targets of a follower's states, flagged with their states' saturation. */
+static void corrected_targets_of(const float *states, const vanderpol_sparse_saturation *state_flags, const float *u,
+                                float *values, vanderpol_sparse_saturation *flags) {
+    (void)state_flags;
+    targets(states, u, values);
+    flags[0] = VANDERPOL_SPARSE_INSIDE;
+    flags[1] = VANDERPOL_SPARSE_INSIDE;
+    flags[0] = state_flags[0];
+    flags[1] = state_flags[1];
+}
+
+/* Corrector::start: the model's period from the map's first estimate, taken when finite. */
+static int corrected_start(const float *first, const float *u, float *x) {
+    float next[VANDERPOL_SPARSE_STATES];
+    corrected_predict(first, u, next);
+    if (!all_finite(next, VANDERPOL_SPARSE_STATES)) {
+        return 0;
+    }
+    memcpy(x, next, sizeof next);
+    return 1;
+}
+
+/* Corrector::follow: the correction of the prediction x (the start-up's blend and gain, or
+ * G's), clamped to the states' ranges by selects, then the model's period from it. */
+static int corrected_follow(float *x, unsigned j, int start_up, const float *f, const float *y, const float *u,
+                            float *states, vanderpol_sparse_saturation *flags) {
+    float raw[VANDERPOL_SPARSE_STATES], next[VANDERPOL_SPARSE_STATES];
+    unsigned i;
+    if (start_up) {
+        corrected_start_up(x, y, u, f, (j >= 1u && j <= 57u) ? CORRECTED_BLENDS[j - 1u] : CORRECTED_NO_BLEND, raw);
+    } else {
+        corrected_steady(x, y, u, f, raw);
+    }
+    for (i = 0u; i < VANDERPOL_SPARSE_STATES; ++i) {
+        const int low = !(raw[i] >= CORRECTED_LOWER[i]);
+        const int out = low | (raw[i] > CORRECTED_UPPER[i]);
+        const float edge = select_float(low, CORRECTED_LOWER[i], CORRECTED_UPPER[i]);
+        const uint32_t flag = select_bits(low, (uint32_t)VANDERPOL_SPARSE_LOW, (uint32_t)VANDERPOL_SPARSE_HIGH);
+        states[i] = select_float(out, edge, raw[i]);
+        flags[i] = (vanderpol_sparse_saturation)select_bits(out, flag, (uint32_t)VANDERPOL_SPARSE_INSIDE);
+    }
+    corrected_predict(states, u, next);
+    if (!all_finite(next, VANDERPOL_SPARSE_STATES)) {
+        return 0;
+    }
+    memcpy(x, next, sizeof next);
+    return 1;
+}
+
+/* Corrector::predict: a lost output, the model's period from x (no correction). */
+static void corrected_lost(float *x, const float *u) {
+    float next[VANDERPOL_SPARSE_STATES];
+    corrected_predict(x, u, next);
+    if (all_finite(next, VANDERPOL_SPARSE_STATES)) {
+        memcpy(x, next, sizeof next);
+    }
+}
+
+void vanderpol_sparse_corrected_init(vanderpol_sparse_corrected *o) {
+    vanderpol_sparse_map_init(&o->window);
+    memset(o->x, 0, sizeof o->x);
+    o->count = 0u;
+    o->started = 0;
+    o->ready = 0;
+}
+
+vanderpol_sparse_status vanderpol_sparse_corrected_push(vanderpol_sparse_corrected *o, const float *y, const float *u) {
+    const int start_up = o->count <= 57u;
+    float all[VANDERPOL_SPARSE_TARGETS], map[VANDERPOL_SPARSE_STATES], states[VANDERPOL_SPARSE_STATES];
+    vanderpol_sparse_saturation all_flags[VANDERPOL_SPARSE_TARGETS], state_flags[VANDERPOL_SPARSE_STATES];
+    int estimated = 0;
+    if (!accepts(y, u)) {
+        if (o->started && inputs_finite(u)) {
+            corrected_lost(o->x, u);
+        }
+        return VANDERPOL_SPARSE_REFUSED;
+    }
+    memset(map, 0, sizeof map);
+    if (start_up) {
+        (void)vanderpol_sparse_map_push(&o->window, y, u);
+        if (o->window.filled < VANDERPOL_SPARSE_HORIZON) {
+            return VANDERPOL_SPARSE_OK;
+        }
+        estimate_window(&o->window, all, all_flags);
+        corrected_map_states(all, map);
+        estimated = 1;
+    }
+    if (!o->started && estimated) {
+        if (!corrected_start(map, u, o->x)) {
+            return VANDERPOL_SPARSE_REFUSED;
+        }
+        o->started = 1;
+        memcpy(o->values, all, sizeof all);
+        memcpy(o->flags, all_flags, sizeof all_flags);
+    } else if (o->started) {
+        if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
+            return VANDERPOL_SPARSE_REFUSED;
+        }
+        corrected_targets_of(states, state_flags, u, o->values, o->flags);
+    } else {
+        return VANDERPOL_SPARSE_OK;
+    }
+    o->ready = 1;
+    o->count = start_up ? o->count + 1u : o->count;
+    return VANDERPOL_SPARSE_OK;
+}
+
+vanderpol_sparse_status vanderpol_sparse_corrected_estimate(const vanderpol_sparse_corrected *o, float *values, vanderpol_sparse_saturation *saturation) {
+    if (!o->ready) {
+        return VANDERPOL_SPARSE_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return VANDERPOL_SPARSE_OK;
+}
+

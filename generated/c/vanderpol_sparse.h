@@ -1,25 +1,30 @@
-/* The `vanderpol_sparse` observer in C99, emitted by `mho gen` from the same tables as the Rust design file.
- * Do not edit: regenerate. Build with -ffp-contract=off (no fused multiply-add) to get the Rust
- * observer's bits. */
+/* The `vanderpol_sparse` observers in C99, emitted by `mho gen` from the same tables and programs as the
+ * Rust design file. Do not edit: regenerate. Build with -ffp-contract=off (no fused
+ * multiply-add) to get the Rust observers' bits. Every observer lives in a struct you allocate
+ * (no heap); call its _init first, then _push every sample and _estimate when you need it. */
 #ifndef VANDERPOL_SPARSE_H
 #define VANDERPOL_SPARSE_H
 
 #define VANDERPOL_SPARSE_OUTPUTS 1u
 #define VANDERPOL_SPARSE_INPUTS 0u
 #define VANDERPOL_SPARSE_TARGETS 2u
-/* The map's window, in samples: no estimate before it is full. */
+/* The map's window, in samples: no map estimate before it is full. */
 #define VANDERPOL_SPARSE_HORIZON 19u
+#define VANDERPOL_SPARSE_STATES 2u
+/* Entries of a filter's covariance kept: its upper triangle. */
+#define VANDERPOL_SPARSE_COVARIANCE 3u
 
 /* What push and estimate return. */
 typedef enum {
     VANDERPOL_SPARSE_OK = 0,
-    /* The sample has a NaN or infinite value and was refused; the observer is unchanged. */
+    /* The sample was refused: a NaN or infinite value (or a filter step whose result is not
+     * finite); the latest estimate is unchanged. */
     VANDERPOL_SPARSE_REFUSED = 1,
-    /* Fewer than VANDERPOL_SPARSE_HORIZON accepted samples since init. */
+    /* No estimate yet (the map: fewer than VANDERPOL_SPARSE_HORIZON accepted samples since init). */
     VANDERPOL_SPARSE_NO_ESTIMATE_YET = 2
 } vanderpol_sparse_status;
 
-/* Where an estimate lies against the map's range: inside, or held at its low or high end. */
+/* Where an estimate lies against its range: inside, or held at its low or high end. */
 typedef enum {
     VANDERPOL_SPARSE_INSIDE = 0,
     VANDERPOL_SPARSE_LOW = 1,
@@ -38,11 +43,82 @@ typedef struct {
 void vanderpol_sparse_map_init(vanderpol_sparse_map *observer);
 
 /* Takes the sample of the current instant: y[VANDERPOL_SPARSE_OUTPUTS] and u[VANDERPOL_SPARSE_INPUTS] (u may be
- * NULL when there is no input). VANDERPOL_SPARSE_OK, or VANDERPOL_SPARSE_REFUSED for a NaN or infinite value. */
+ * NULL when there is no input). VANDERPOL_SPARSE_OK, or VANDERPOL_SPARSE_REFUSED for a NaN or infinite value
+ * (the observer is unchanged). */
 vanderpol_sparse_status vanderpol_sparse_map_push(vanderpol_sparse_map *observer, const float *y, const float *u);
 
 /* The estimate of every target from the last VANDERPOL_SPARSE_HORIZON samples into values[VANDERPOL_SPARSE_TARGETS]
  * and saturation[VANDERPOL_SPARSE_TARGETS]; VANDERPOL_SPARSE_NO_ESTIMATE_YET (nothing written) before the window is full. */
 vanderpol_sparse_status vanderpol_sparse_map_estimate(const vanderpol_sparse_map *observer, float *values, vanderpol_sparse_saturation *saturation);
+
+/* The EKF from the centre of the state box (kind ekf_box, the Rust BoxEkfObserver): an estimate
+ * from the first accepted sample; a sample with a non-finite output is refused and only predicted. */
+typedef struct {
+    float x[VANDERPOL_SPARSE_STATES];
+    float p[VANDERPOL_SPARSE_COVARIANCE];
+    float values[VANDERPOL_SPARSE_TARGETS];
+    vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
+    int ready;
+} vanderpol_sparse_ekf_box;
+
+void vanderpol_sparse_ekf_box_init(vanderpol_sparse_ekf_box *observer);
+vanderpol_sparse_status vanderpol_sparse_ekf_box_push(vanderpol_sparse_ekf_box *observer, const float *y, const float *u);
+vanderpol_sparse_status vanderpol_sparse_ekf_box_estimate(const vanderpol_sparse_ekf_box *observer, float *values, vanderpol_sparse_saturation *saturation);
+
+/* The EKF started at the map's first estimate (kind ekf_map, the Rust StartedEkfObserver). */
+typedef struct {
+    vanderpol_sparse_map window;
+    float x[VANDERPOL_SPARSE_STATES];
+    float p[VANDERPOL_SPARSE_COVARIANCE];
+    unsigned count;
+    int started;
+    float values[VANDERPOL_SPARSE_TARGETS];
+    vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
+    int ready;
+} vanderpol_sparse_ekf_map;
+
+void vanderpol_sparse_ekf_map_init(vanderpol_sparse_ekf_map *observer);
+vanderpol_sparse_status vanderpol_sparse_ekf_map_push(vanderpol_sparse_ekf_map *observer, const float *y, const float *u);
+vanderpol_sparse_status vanderpol_sparse_ekf_map_estimate(const vanderpol_sparse_ekf_map *observer, float *values, vanderpol_sparse_saturation *saturation);
+
+/* The EKF from the box centre that checks the map once, at its first estimate, and restarts
+ * from it where the two disagree (kind ekf_restart, the Rust RestartedEkfObserver). */
+typedef struct {
+    vanderpol_sparse_map window;
+    float x[VANDERPOL_SPARSE_STATES];
+    float p[VANDERPOL_SPARSE_COVARIANCE];
+    int checked;
+    float values[VANDERPOL_SPARSE_TARGETS];
+    vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
+    int ready;
+} vanderpol_sparse_ekf_restart;
+
+void vanderpol_sparse_ekf_restart_init(vanderpol_sparse_ekf_restart *observer);
+vanderpol_sparse_status vanderpol_sparse_ekf_restart_push(vanderpol_sparse_ekf_restart *observer, const float *y, const float *u);
+vanderpol_sparse_status vanderpol_sparse_ekf_restart_estimate(const vanderpol_sparse_ekf_restart *observer, float *values, vanderpol_sparse_saturation *saturation);
+
+/* The model-corrected map (kind corrected, the Rust CorrectedObserver): the map's first estimate,
+ * then the model's prediction corrected by the output and, during the start-up, blended with the
+ * map; each state clamped to its learning range (flagged LOW or HIGH). */
+typedef struct {
+    vanderpol_sparse_map window;
+    float x[VANDERPOL_SPARSE_STATES];
+    unsigned count;
+    int started;
+    float values[VANDERPOL_SPARSE_TARGETS];
+    vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
+    int ready;
+} vanderpol_sparse_corrected;
+
+void vanderpol_sparse_corrected_init(vanderpol_sparse_corrected *observer);
+vanderpol_sparse_status vanderpol_sparse_corrected_push(vanderpol_sparse_corrected *observer, const float *y, const float *u);
+vanderpol_sparse_status vanderpol_sparse_corrected_estimate(const vanderpol_sparse_corrected *observer, float *values, vanderpol_sparse_saturation *saturation);
+
+/* This design's observer, of the kind `gen` chose or the spec named: map. */
+#define VANDERPOL_SPARSE_KIND "map"
+typedef vanderpol_sparse_map vanderpol_sparse_observer;
+#define vanderpol_sparse_observer_init vanderpol_sparse_map_init
+#define vanderpol_sparse_observer_push vanderpol_sparse_map_push
+#define vanderpol_sparse_observer_estimate vanderpol_sparse_map_estimate
 
 #endif

@@ -1,7 +1,38 @@
-/* The `vanderpol_uncertain` observer in C99, emitted by `mho gen`. Do not edit: regenerate. */
+/* The `vanderpol_uncertain` observers in C99, emitted by `mho gen`. Do not edit: regenerate. */
 #include <stdint.h>
 #include <string.h>
 #include "vanderpol_uncertain.h"
+
+/* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */
+static int is_finite(float v) {
+    return (v - v) == 0.0f;
+}
+
+/* 1 when every output and input of a sample is finite (u is not read without inputs). */
+static int accepts(const float *y, const float *u) {
+    unsigned i;
+    int finite = 1;
+    for (i = 0u; i < VANDERPOL_UNCERTAIN_OUTPUTS; ++i) {
+        finite &= is_finite(y[i]);
+    }
+    (void)u;
+    return finite;
+}
+
+/* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */
+static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
+    const uint32_t mask = 0u - (uint32_t)c;
+    return (a & mask) | (b & ~mask);
+}
+
+static float select_float(int c, float a, float b) {
+    uint32_t x, y;
+    memcpy(&x, &a, sizeof x);
+    memcpy(&y, &b, sizeof y);
+    x = select_bits(c, x, y);
+    memcpy(&a, &x, sizeof a);
+    return a;
+}
 
 /* `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[10] = {
@@ -122,26 +153,6 @@ static const float SEGMENTS_1[2][2] = {
     { -4.701727f, 4.7665486f }
 };
 
-/* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */
-static int is_finite(float v) {
-    return (v - v) == 0.0f;
-}
-
-/* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */
-static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
-    const uint32_t mask = 0u - (uint32_t)c;
-    return (a & mask) | (b & ~mask);
-}
-
-static float select_float(int c, float a, float b) {
-    uint32_t x, y;
-    memcpy(&x, &a, sizeof x);
-    memcpy(&y, &b, sizeof y);
-    x = select_bits(c, x, y);
-    memcpy(&a, &x, sizeof a);
-    return a;
-}
-
 /* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
 static uint32_t uniform_segment(float t, uint32_t count) {
     const float last = (float)(count - 1u);
@@ -161,37 +172,9 @@ static void evaluate(float t, const float *segment, float start, float t_max, fl
     *saturation = (vanderpol_uncertain_saturation)select_bits(out, flag, (uint32_t)VANDERPOL_UNCERTAIN_INSIDE);
 }
 
-void vanderpol_uncertain_map_init(vanderpol_uncertain_map *observer) {
-    observer->next = 0u;
-    observer->filled = 0u;
-}
-
-vanderpol_uncertain_status vanderpol_uncertain_map_push(vanderpol_uncertain_map *observer, const float *y, const float *u) {
-    unsigned i;
-    unsigned slot;
-    int finite = 1;
-    for (i = 0u; i < VANDERPOL_UNCERTAIN_OUTPUTS; ++i) {
-        finite &= is_finite(y[i]);
-    }
-    if (!finite) {
-        return VANDERPOL_UNCERTAIN_REFUSED;
-    }
-    slot = observer->next;
-    for (i = 0u; i < VANDERPOL_UNCERTAIN_OUTPUTS; ++i) {
-        observer->y[slot][i] = y[i];
-        observer->y[slot + VANDERPOL_UNCERTAIN_HORIZON][i] = y[i];
-    }
-    (void)u;
-    observer->next = slot + 1u >= VANDERPOL_UNCERTAIN_HORIZON ? 0u : slot + 1u;
-    observer->filled = observer->filled >= VANDERPOL_UNCERTAIN_HORIZON ? VANDERPOL_UNCERTAIN_HORIZON : observer->filled + 1u;
-    return VANDERPOL_UNCERTAIN_OK;
-}
-
-vanderpol_uncertain_status vanderpol_uncertain_map_estimate(const vanderpol_uncertain_map *observer, float *values, vanderpol_uncertain_saturation *saturation) {
+/* Every target's estimate from a full window. */
+static void estimate_window(const vanderpol_uncertain_map *observer, float *values, vanderpol_uncertain_saturation *saturation) {
     const unsigned next = observer->next;
-    if (observer->filled < VANDERPOL_UNCERTAIN_HORIZON) {
-        return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
-    }
     const float t_0 = 54.02016f
         + GAINS_0[0] * observer->y[next + 9u][0]
         + GAINS_0[1] * observer->y[next + 8u][0]
@@ -218,5 +201,1049 @@ vanderpol_uncertain_status vanderpol_uncertain_map_estimate(const vanderpol_unce
         + GAINS_1[9] * observer->y[next + 0u][0];
     const uint32_t k_1 = uniform_segment(t_1, 2u);
     evaluate(t_1, SEGMENTS_1[k_1], 0.0f, 2.0f, -4.7017317f, 4.83137f, &values[1], &saturation[1]);
+}
+
+void vanderpol_uncertain_map_init(vanderpol_uncertain_map *observer) {
+    observer->next = 0u;
+    observer->filled = 0u;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_map_push(vanderpol_uncertain_map *observer, const float *y, const float *u) {
+    unsigned i;
+    unsigned slot;
+    if (!accepts(y, u)) {
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    slot = observer->next;
+    for (i = 0u; i < VANDERPOL_UNCERTAIN_OUTPUTS; ++i) {
+        observer->y[slot][i] = y[i];
+        observer->y[slot + VANDERPOL_UNCERTAIN_HORIZON][i] = y[i];
+    }
+    (void)u;
+    observer->next = slot + 1u >= VANDERPOL_UNCERTAIN_HORIZON ? 0u : slot + 1u;
+    observer->filled = observer->filled >= VANDERPOL_UNCERTAIN_HORIZON ? VANDERPOL_UNCERTAIN_HORIZON : observer->filled + 1u;
     return VANDERPOL_UNCERTAIN_OK;
 }
+
+vanderpol_uncertain_status vanderpol_uncertain_map_estimate(const vanderpol_uncertain_map *observer, float *values, vanderpol_uncertain_saturation *saturation) {
+    if (observer->filled < VANDERPOL_UNCERTAIN_HORIZON) {
+        return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
+    }
+    estimate_window(observer, values, saturation);
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+
+/* 1 when every input is finite. */
+static int inputs_finite(const float *u) {
+    (void)u;
+    return 1;
+}
+
+/* 1 when the n values from v are finite. */
+static int all_finite(const float *v, unsigned n) {
+    unsigned i;
+    int finite = 1;
+    for (i = 0u; i < n; ++i) {
+        finite &= is_finite(v[i]);
+    }
+    return finite;
+}
+
+/* The targets at state x and input u. */
+static void targets(const float *x, const float *u, float *out) {
+    (void)x;
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    out[0] = t0;
+    out[1] = t1;
+}
+
+/* One EKF sample with its measurement: out = (x(k|k), x+, P+) from (x, P), as the Rust file's ekf_measured. */
+static void ekf_measured(const float *x, const float *p, const float *y, const float *u, float *out) {
+    (void)x;
+    (void)p;
+    (void)y;
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = p[0];
+    const float t3 = p[1];
+    const float t4 = p[2];
+    const float t5 = t0 + t1;
+    const float t6 = 1.0f;
+    const float t7 = t2 + t3;
+    const float t8 = t3 + t4;
+    const float t9 = 0.2f;
+    const float t10 = t9 + t7;
+    const float t11 = t10 + t8;
+    const float t12 = t6 / t11;
+    const float t13 = t7 * t12;
+    const float t14 = t8 * t12;
+    const float t15 = y[0];
+    const float t16 = t15 - t5;
+    const float t17 = t13 * t16;
+    const float t18 = t0 + t17;
+    const float t19 = t14 * t16;
+    const float t20 = t1 + t19;
+    const float t21 = t6 - t13;
+    const float t22 = -t13;
+    const float t23 = -t14;
+    const float t24 = t6 - t14;
+    const float t25 = t21 * t2;
+    const float t26 = t22 * t3;
+    const float t27 = t25 + t26;
+    const float t28 = t21 * t3;
+    const float t29 = t22 * t4;
+    const float t30 = t28 + t29;
+    const float t31 = t23 * t2;
+    const float t32 = t24 * t3;
+    const float t33 = t31 + t32;
+    const float t34 = t23 * t3;
+    const float t35 = t24 * t4;
+    const float t36 = t34 + t35;
+    const float t37 = t27 * t21;
+    const float t38 = t30 * t22;
+    const float t39 = t37 + t38;
+    const float t40 = t27 * t23;
+    const float t41 = t30 * t24;
+    const float t42 = t40 + t41;
+    const float t43 = t33 * t23;
+    const float t44 = t36 * t24;
+    const float t45 = t43 + t44;
+    const float t46 = t13 * t9;
+    const float t47 = t46 * t13;
+    const float t48 = t39 + t47;
+    const float t49 = t46 * t14;
+    const float t50 = t42 + t49;
+    const float t51 = t14 * t9;
+    const float t52 = t51 * t14;
+    const float t53 = t45 + t52;
+    const float t54 = 0.1f;
+    const float t55 = 2.0f;
+    const float t56 = 6.0f;
+    const float t57 = t54 / t55;
+    const float t58 = t54 / t56;
+    const float t59 = -t20;
+    const float t60 = -1.0f;
+    const float t61 = 4.0f /* a */;
+    const float t62 = t61 * t18;
+    const float t63 = 1.0f /* b */;
+    const float t64 = t18 * t18;
+    const float t65 = t63 - t64;
+    const float t66 = t65 * t20;
+    const float t67 = t62 + t66;
+    const float t68 = t55 * t18;
+    const float t69 = -t68;
+    const float t70 = t69 * t20;
+    const float t71 = t61 + t70;
+    const float t72 = t57 * t59;
+    const float t73 = t18 + t72;
+    const float t74 = t57 * t67;
+    const float t75 = t20 + t74;
+    const float t76 = -t57;
+    const float t77 = t57 * t71;
+    const float t78 = t57 * t65;
+    const float t79 = t6 + t78;
+    const float t80 = -t75;
+    const float t81 = t61 * t73;
+    const float t82 = t73 * t73;
+    const float t83 = t63 - t82;
+    const float t84 = t83 * t75;
+    const float t85 = t81 + t84;
+    const float t86 = t55 * t73;
+    const float t87 = -t86;
+    const float t88 = t87 * t75;
+    const float t89 = t61 + t88;
+    const float t90 = -t77;
+    const float t91 = -t79;
+    const float t92 = t83 * t77;
+    const float t93 = t89 + t92;
+    const float t94 = t89 * t76;
+    const float t95 = t83 * t79;
+    const float t96 = t94 + t95;
+    const float t97 = t57 * t80;
+    const float t98 = t18 + t97;
+    const float t99 = t57 * t85;
+    const float t100 = t20 + t99;
+    const float t101 = t57 * t90;
+    const float t102 = t6 + t101;
+    const float t103 = t57 * t91;
+    const float t104 = t57 * t93;
+    const float t105 = t57 * t96;
+    const float t106 = t6 + t105;
+    const float t107 = -t100;
+    const float t108 = t61 * t98;
+    const float t109 = t98 * t98;
+    const float t110 = t63 - t109;
+    const float t111 = t110 * t100;
+    const float t112 = t108 + t111;
+    const float t113 = t55 * t98;
+    const float t114 = -t113;
+    const float t115 = t114 * t100;
+    const float t116 = t61 + t115;
+    const float t117 = -t104;
+    const float t118 = -t106;
+    const float t119 = t116 * t102;
+    const float t120 = t110 * t104;
+    const float t121 = t119 + t120;
+    const float t122 = t116 * t103;
+    const float t123 = t110 * t106;
+    const float t124 = t122 + t123;
+    const float t125 = t54 * t107;
+    const float t126 = t18 + t125;
+    const float t127 = t54 * t112;
+    const float t128 = t20 + t127;
+    const float t129 = t54 * t117;
+    const float t130 = t6 + t129;
+    const float t131 = t54 * t118;
+    const float t132 = t54 * t121;
+    const float t133 = t54 * t124;
+    const float t134 = t6 + t133;
+    const float t135 = -t128;
+    const float t136 = t61 * t126;
+    const float t137 = t126 * t126;
+    const float t138 = t63 - t137;
+    const float t139 = t138 * t128;
+    const float t140 = t136 + t139;
+    const float t141 = t55 * t126;
+    const float t142 = -t141;
+    const float t143 = t142 * t128;
+    const float t144 = t61 + t143;
+    const float t145 = -t132;
+    const float t146 = -t134;
+    const float t147 = t144 * t130;
+    const float t148 = t138 * t132;
+    const float t149 = t147 + t148;
+    const float t150 = t144 * t131;
+    const float t151 = t138 * t134;
+    const float t152 = t150 + t151;
+    const float t153 = t80 + t107;
+    const float t154 = t55 * t153;
+    const float t155 = t59 + t154;
+    const float t156 = t155 + t135;
+    const float t157 = t58 * t156;
+    const float t158 = t18 + t157;
+    const float t159 = t85 + t112;
+    const float t160 = t55 * t159;
+    const float t161 = t67 + t160;
+    const float t162 = t161 + t140;
+    const float t163 = t58 * t162;
+    const float t164 = t20 + t163;
+    const float t165 = t90 + t117;
+    const float t166 = t55 * t165;
+    const float t167 = t166 + t145;
+    const float t168 = t58 * t167;
+    const float t169 = t6 + t168;
+    const float t170 = t91 + t118;
+    const float t171 = t55 * t170;
+    const float t172 = t60 + t171;
+    const float t173 = t172 + t146;
+    const float t174 = t58 * t173;
+    const float t175 = t93 + t121;
+    const float t176 = t55 * t175;
+    const float t177 = t71 + t176;
+    const float t178 = t177 + t149;
+    const float t179 = t58 * t178;
+    const float t180 = t96 + t124;
+    const float t181 = t55 * t180;
+    const float t182 = t65 + t181;
+    const float t183 = t182 + t152;
+    const float t184 = t58 * t183;
+    const float t185 = t6 + t184;
+    const float t186 = t169 * t48;
+    const float t187 = t174 * t50;
+    const float t188 = t186 + t187;
+    const float t189 = t169 * t50;
+    const float t190 = t174 * t53;
+    const float t191 = t189 + t190;
+    const float t192 = t179 * t48;
+    const float t193 = t185 * t50;
+    const float t194 = t192 + t193;
+    const float t195 = t179 * t50;
+    const float t196 = t185 * t53;
+    const float t197 = t195 + t196;
+    const float t198 = t188 * t169;
+    const float t199 = t191 * t174;
+    const float t200 = t198 + t199;
+    const float t201 = t188 * t179;
+    const float t202 = t191 * t185;
+    const float t203 = t201 + t202;
+    const float t204 = t194 * t179;
+    const float t205 = t197 * t185;
+    const float t206 = t204 + t205;
+    const float t207 = 0.00095958455f;
+    const float t208 = t200 + t207;
+    const float t209 = 0.02396009f;
+    const float t210 = t206 + t209;
+    out[0] = t18;
+    out[1] = t20;
+    out[2] = t158;
+    out[3] = t164;
+    out[4] = t208;
+    out[5] = t203;
+    out[6] = t210;
+}
+
+/* One EKF sample without its measurement: out = (x+, P+) from (x, P), as the Rust file's ekf_unmeasured. */
+static void ekf_unmeasured(const float *x, const float *p, const float *u, float *out) {
+    (void)x;
+    (void)p;
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = p[0];
+    const float t3 = p[1];
+    const float t4 = p[2];
+    const float t5 = 0.1f;
+    const float t6 = 2.0f;
+    const float t7 = 6.0f;
+    const float t8 = t5 / t6;
+    const float t9 = t5 / t7;
+    const float t10 = -t1;
+    const float t11 = -1.0f;
+    const float t12 = 4.0f /* a */;
+    const float t13 = t12 * t0;
+    const float t14 = 1.0f /* b */;
+    const float t15 = t0 * t0;
+    const float t16 = t14 - t15;
+    const float t17 = t16 * t1;
+    const float t18 = t13 + t17;
+    const float t19 = t6 * t0;
+    const float t20 = -t19;
+    const float t21 = t20 * t1;
+    const float t22 = t12 + t21;
+    const float t23 = t8 * t10;
+    const float t24 = t0 + t23;
+    const float t25 = t8 * t18;
+    const float t26 = t1 + t25;
+    const float t27 = 1.0f;
+    const float t28 = -t8;
+    const float t29 = t8 * t22;
+    const float t30 = t8 * t16;
+    const float t31 = t27 + t30;
+    const float t32 = -t26;
+    const float t33 = t12 * t24;
+    const float t34 = t24 * t24;
+    const float t35 = t14 - t34;
+    const float t36 = t35 * t26;
+    const float t37 = t33 + t36;
+    const float t38 = t6 * t24;
+    const float t39 = -t38;
+    const float t40 = t39 * t26;
+    const float t41 = t12 + t40;
+    const float t42 = -t29;
+    const float t43 = -t31;
+    const float t44 = t35 * t29;
+    const float t45 = t41 + t44;
+    const float t46 = t41 * t28;
+    const float t47 = t35 * t31;
+    const float t48 = t46 + t47;
+    const float t49 = t8 * t32;
+    const float t50 = t0 + t49;
+    const float t51 = t8 * t37;
+    const float t52 = t1 + t51;
+    const float t53 = t8 * t42;
+    const float t54 = t27 + t53;
+    const float t55 = t8 * t43;
+    const float t56 = t8 * t45;
+    const float t57 = t8 * t48;
+    const float t58 = t27 + t57;
+    const float t59 = -t52;
+    const float t60 = t12 * t50;
+    const float t61 = t50 * t50;
+    const float t62 = t14 - t61;
+    const float t63 = t62 * t52;
+    const float t64 = t60 + t63;
+    const float t65 = t6 * t50;
+    const float t66 = -t65;
+    const float t67 = t66 * t52;
+    const float t68 = t12 + t67;
+    const float t69 = -t56;
+    const float t70 = -t58;
+    const float t71 = t68 * t54;
+    const float t72 = t62 * t56;
+    const float t73 = t71 + t72;
+    const float t74 = t68 * t55;
+    const float t75 = t62 * t58;
+    const float t76 = t74 + t75;
+    const float t77 = t5 * t59;
+    const float t78 = t0 + t77;
+    const float t79 = t5 * t64;
+    const float t80 = t1 + t79;
+    const float t81 = t5 * t69;
+    const float t82 = t27 + t81;
+    const float t83 = t5 * t70;
+    const float t84 = t5 * t73;
+    const float t85 = t5 * t76;
+    const float t86 = t27 + t85;
+    const float t87 = -t80;
+    const float t88 = t12 * t78;
+    const float t89 = t78 * t78;
+    const float t90 = t14 - t89;
+    const float t91 = t90 * t80;
+    const float t92 = t88 + t91;
+    const float t93 = t6 * t78;
+    const float t94 = -t93;
+    const float t95 = t94 * t80;
+    const float t96 = t12 + t95;
+    const float t97 = -t84;
+    const float t98 = -t86;
+    const float t99 = t96 * t82;
+    const float t100 = t90 * t84;
+    const float t101 = t99 + t100;
+    const float t102 = t96 * t83;
+    const float t103 = t90 * t86;
+    const float t104 = t102 + t103;
+    const float t105 = t32 + t59;
+    const float t106 = t6 * t105;
+    const float t107 = t10 + t106;
+    const float t108 = t107 + t87;
+    const float t109 = t9 * t108;
+    const float t110 = t0 + t109;
+    const float t111 = t37 + t64;
+    const float t112 = t6 * t111;
+    const float t113 = t18 + t112;
+    const float t114 = t113 + t92;
+    const float t115 = t9 * t114;
+    const float t116 = t1 + t115;
+    const float t117 = t42 + t69;
+    const float t118 = t6 * t117;
+    const float t119 = t118 + t97;
+    const float t120 = t9 * t119;
+    const float t121 = t27 + t120;
+    const float t122 = t43 + t70;
+    const float t123 = t6 * t122;
+    const float t124 = t11 + t123;
+    const float t125 = t124 + t98;
+    const float t126 = t9 * t125;
+    const float t127 = t45 + t73;
+    const float t128 = t6 * t127;
+    const float t129 = t22 + t128;
+    const float t130 = t129 + t101;
+    const float t131 = t9 * t130;
+    const float t132 = t48 + t76;
+    const float t133 = t6 * t132;
+    const float t134 = t16 + t133;
+    const float t135 = t134 + t104;
+    const float t136 = t9 * t135;
+    const float t137 = t27 + t136;
+    const float t138 = t121 * t2;
+    const float t139 = t126 * t3;
+    const float t140 = t138 + t139;
+    const float t141 = t121 * t3;
+    const float t142 = t126 * t4;
+    const float t143 = t141 + t142;
+    const float t144 = t131 * t2;
+    const float t145 = t137 * t3;
+    const float t146 = t144 + t145;
+    const float t147 = t131 * t3;
+    const float t148 = t137 * t4;
+    const float t149 = t147 + t148;
+    const float t150 = t140 * t121;
+    const float t151 = t143 * t126;
+    const float t152 = t150 + t151;
+    const float t153 = t140 * t131;
+    const float t154 = t143 * t137;
+    const float t155 = t153 + t154;
+    const float t156 = t146 * t131;
+    const float t157 = t149 * t137;
+    const float t158 = t156 + t157;
+    const float t159 = 0.00095958455f;
+    const float t160 = t152 + t159;
+    const float t161 = 0.02396009f;
+    const float t162 = t158 + t161;
+    out[0] = t110;
+    out[1] = t116;
+    out[2] = t160;
+    out[3] = t155;
+    out[4] = t162;
+}
+
+/* The EKF's start: the centre of the state box and P(0)'s upper triangle. */
+static const float EKF_X0[VANDERPOL_UNCERTAIN_STATES] = {
+    0.0f, 0.0f
+};
+static const float EKF_P0[VANDERPOL_UNCERTAIN_COVARIANCE] = {
+    0.22153471f, 0.0f, 0.78878015f
+};
+
+/* The EKF's prediction alone (a lost output), taken when finite: StartedEkf::predict. */
+static void ekf_predict(float *x, float *p, const float *u) {
+    float out[VANDERPOL_UNCERTAIN_STATES + VANDERPOL_UNCERTAIN_COVARIANCE];
+    ekf_unmeasured(x, p, u, out);
+    if (all_finite(out, VANDERPOL_UNCERTAIN_STATES + VANDERPOL_UNCERTAIN_COVARIANCE)) {
+        memcpy(x, out, VANDERPOL_UNCERTAIN_STATES * sizeof *x);
+        memcpy(p, out + VANDERPOL_UNCERTAIN_STATES, VANDERPOL_UNCERTAIN_COVARIANCE * sizeof *p);
+    }
+}
+
+/* The EKF's sample with its measurement, taken when finite (1, the estimate x(k|k) in
+ * `estimate`): StartedEkf::follow. */
+static int ekf_measure(float *x, float *p, const float *y, const float *u, float *estimate) {
+    float out[2u * VANDERPOL_UNCERTAIN_STATES + VANDERPOL_UNCERTAIN_COVARIANCE];
+    ekf_measured(x, p, y, u, out);
+    if (!all_finite(out + VANDERPOL_UNCERTAIN_STATES, VANDERPOL_UNCERTAIN_STATES + VANDERPOL_UNCERTAIN_COVARIANCE)) {
+        return 0;
+    }
+    memcpy(estimate, out, VANDERPOL_UNCERTAIN_STATES * sizeof *x);
+    memcpy(x, out + VANDERPOL_UNCERTAIN_STATES, VANDERPOL_UNCERTAIN_STATES * sizeof *x);
+    memcpy(p, out + 2u * VANDERPOL_UNCERTAIN_STATES, VANDERPOL_UNCERTAIN_COVARIANCE * sizeof *p);
+    return 1;
+}
+
+void vanderpol_uncertain_ekf_box_init(vanderpol_uncertain_ekf_box *o) {
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->ready = 0;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_ekf_box_push(vanderpol_uncertain_ekf_box *o, const float *y, const float *u) {
+    float estimate[VANDERPOL_UNCERTAIN_STATES];
+    unsigned i;
+    if (!inputs_finite(u)) {
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    if (!accepts(y, u)) {
+        ekf_predict(o->x, o->p, u);
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    if (!ekf_measure(o->x, o->p, y, u, estimate)) {
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    targets(estimate, u, o->values);
+    for (i = 0u; i < VANDERPOL_UNCERTAIN_TARGETS; ++i) {
+        o->flags[i] = VANDERPOL_UNCERTAIN_INSIDE;
+    }
+    o->ready = 1;
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_ekf_box_estimate(const vanderpol_uncertain_ekf_box *o, float *values, vanderpol_uncertain_saturation *saturation) {
+    if (!o->ready) {
+        return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+/* P(N-1)'s upper triangle of the EKF the map starts. */
+static const float STARTED_P0[VANDERPOL_UNCERTAIN_COVARIANCE] = {
+    0.01985737f, 0.0f, 0.02691191f
+};
+
+/* Each state's map estimate, from the map's targets. */
+static void started_ekf_map_states(const float *all, float *map) {
+    map[0] = all[0];
+    map[1] = all[1];
+}
+
+/* The targets of a follower's states, flagged with their states' saturation. */
+static void started_ekf_targets_of(const float *states, const vanderpol_uncertain_saturation *state_flags, const float *u,
+                                float *values, vanderpol_uncertain_saturation *flags) {
+    (void)state_flags;
+    targets(states, u, values);
+    flags[0] = VANDERPOL_UNCERTAIN_INSIDE;
+    flags[1] = VANDERPOL_UNCERTAIN_INSIDE;
+    flags[0] = state_flags[0];
+    flags[1] = state_flags[1];
+}
+
+/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite. */
+static int started_ekf_start(const float *first, const float *u, float *x, float *p) {
+    float out[VANDERPOL_UNCERTAIN_STATES + VANDERPOL_UNCERTAIN_COVARIANCE];
+    ekf_unmeasured(first, STARTED_P0, u, out);
+    if (!all_finite(out, VANDERPOL_UNCERTAIN_STATES + VANDERPOL_UNCERTAIN_COVARIANCE)) {
+        return 0;
+    }
+    memcpy(x, out, VANDERPOL_UNCERTAIN_STATES * sizeof *x);
+    memcpy(p, out + VANDERPOL_UNCERTAIN_STATES, VANDERPOL_UNCERTAIN_COVARIANCE * sizeof *p);
+    return 1;
+}
+
+/* StartedEkf::follow: the EKF's sample, every state inside. */
+static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, const float *map, const float *y,
+                              const float *u, float *states, vanderpol_uncertain_saturation *flags) {
+    unsigned i;
+    (void)j;
+    (void)start_up;
+    (void)map;
+    for (i = 0u; i < VANDERPOL_UNCERTAIN_STATES; ++i) {
+        flags[i] = VANDERPOL_UNCERTAIN_INSIDE;
+    }
+    return ekf_measure(x, p, y, u, states);
+}
+
+void vanderpol_uncertain_ekf_map_init(vanderpol_uncertain_ekf_map *o) {
+    vanderpol_uncertain_map_init(&o->window);
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->count = 0u;
+    o->started = 0;
+    o->ready = 0;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_ekf_map_push(vanderpol_uncertain_ekf_map *o, const float *y, const float *u) {
+    const int start_up = o->count <= 0u;
+    float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES], states[VANDERPOL_UNCERTAIN_STATES];
+    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS], state_flags[VANDERPOL_UNCERTAIN_STATES];
+    int estimated = 0;
+    if (!accepts(y, u)) {
+        if (o->started && inputs_finite(u)) {
+            ekf_predict(o->x, o->p, u);
+        }
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    memset(map, 0, sizeof map);
+    if (start_up) {
+        (void)vanderpol_uncertain_map_push(&o->window, y, u);
+        if (o->window.filled < VANDERPOL_UNCERTAIN_HORIZON) {
+            return VANDERPOL_UNCERTAIN_OK;
+        }
+        estimate_window(&o->window, all, all_flags);
+        started_ekf_map_states(all, map);
+        estimated = 1;
+    }
+    if (!o->started && estimated) {
+        if (!started_ekf_start(map, u, o->x, o->p)) {
+            return VANDERPOL_UNCERTAIN_REFUSED;
+        }
+        o->started = 1;
+        memcpy(o->values, all, sizeof all);
+        memcpy(o->flags, all_flags, sizeof all_flags);
+    } else if (o->started) {
+        if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
+            return VANDERPOL_UNCERTAIN_REFUSED;
+        }
+        started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
+    } else {
+        return VANDERPOL_UNCERTAIN_OK;
+    }
+    o->ready = 1;
+    o->count = start_up ? o->count + 1u : o->count;
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_ekf_map_estimate(const vanderpol_uncertain_ekf_map *o, float *values, vanderpol_uncertain_saturation *saturation) {
+    if (!o->ready) {
+        return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+/* Whether the filter's prediction x (covariance p) and the map's states f disagree:
+ * d = sum_i (x_i - f_i)^2 / (P_ii + e_i^2) > threshold, or d is NaN (restart_disagrees). */
+static int restart_disagrees(const float *x, const float *p, const float *f) {
+    float d = 0.0f;
+    float e;
+    e = x[0] - f[0];
+    d += e * e / (p[0] + 0.06279452f);
+    e = x[1] - f[1];
+    d += e * e / (p[2] + 0.08510294f);
+    return !(d <= 2.0f);
+}
+
+/* Restarted::check, at the map's first estimate: 1 when the filter restarted from the map. */
+static int restart_check(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
+    float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES];
+    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS];
+    (void)vanderpol_uncertain_map_push(&o->window, y, u);
+    if (o->window.filled < VANDERPOL_UNCERTAIN_HORIZON) {
+        return 0;
+    }
+    o->checked = 1;
+    estimate_window(&o->window, all, all_flags);
+    started_ekf_map_states(all, map);
+    if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
+        return 0;
+    }
+    memcpy(o->values, all, sizeof all);
+    memcpy(o->flags, all_flags, sizeof all_flags);
+    o->ready = 1;
+    return 1;
+}
+
+void vanderpol_uncertain_ekf_restart_init(vanderpol_uncertain_ekf_restart *o) {
+    vanderpol_uncertain_map_init(&o->window);
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->checked = 0;
+    o->ready = 0;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_push(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
+    float states[VANDERPOL_UNCERTAIN_STATES];
+    vanderpol_uncertain_saturation state_flags[VANDERPOL_UNCERTAIN_STATES];
+    if (!accepts(y, u)) {
+        if (inputs_finite(u)) {
+            ekf_predict(o->x, o->p, u);
+        }
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    if (!o->checked && restart_check(o, y, u)) {
+        return VANDERPOL_UNCERTAIN_OK;
+    }
+    if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
+    o->ready = 1;
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_estimate(const vanderpol_uncertain_ekf_restart *o, float *values, vanderpol_uncertain_saturation *saturation) {
+    if (!o->ready) {
+        return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+/* The start-up schedule, j = 1 … 30: the blends g_j per state, then the gains K_j (states x
+ * outputs, row by row). */
+static const float CORRECTED_BLENDS[30][4] = {
+{
+    0.27245793f, 0.27245793f, 0.08151674f, 0.3052261f
+},
+{
+    0.15771422f, 0.15771422f, 0.07158352f, 0.3317225f
+},
+{
+    0.11097703f, 0.11097703f, 0.06753753f, 0.34251496f
+},
+{
+    0.0856079f, 0.0856079f, 0.06534135f, 0.34837314f
+},
+{
+    0.06967934f, 0.06967934f, 0.06396244f, 0.35205135f
+},
+{
+    0.058748376f, 0.058748376f, 0.06301616f, 0.3545755f
+},
+{
+    0.050781943f, 0.050781943f, 0.062326513f, 0.3564151f
+},
+{
+    0.04471806f, 0.04471806f, 0.06180157f, 0.35781536f
+},
+{
+    0.039947875f, 0.039947875f, 0.06138862f, 0.35891688f
+},
+{
+    0.036097288f, 0.036097288f, 0.06105528f, 0.35980606f
+},
+{
+    0.032923758f, 0.032923758f, 0.06078055f, 0.3605389f
+},
+{
+    0.030263143f, 0.030263143f, 0.060550224f, 0.36115327f
+},
+{
+    0.028000392f, 0.028000392f, 0.06035434f, 0.36167577f
+},
+{
+    0.02605247f, 0.02605247f, 0.06018571f, 0.3621256f
+},
+{
+    0.024357943f, 0.024357943f, 0.060039017f, 0.36251688f
+},
+{
+    0.02287039f, 0.02287039f, 0.05991024f, 0.36286038f
+},
+{
+    0.02155407f, 0.02155407f, 0.05979629f, 0.36316437f
+},
+{
+    0.020381026f, 0.020381026f, 0.05969474f, 0.36343524f
+},
+{
+    0.019329075f, 0.019329075f, 0.059603676f, 0.36367816f
+},
+{
+    0.018380385f, 0.018380385f, 0.05952155f, 0.3638972f
+},
+{
+    0.017520463f, 0.017520463f, 0.059447106f, 0.36409578f
+},
+{
+    0.016737407f, 0.016737407f, 0.059379317f, 0.36427662f
+},
+{
+    0.016021354f, 0.016021354f, 0.059317328f, 0.36444196f
+},
+{
+    0.015364054f, 0.015364054f, 0.059260428f, 0.36459374f
+},
+{
+    0.014758562f, 0.014758562f, 0.05920801f, 0.36473358f
+},
+{
+    0.014198984f, 0.014198984f, 0.05915957f, 0.36486277f
+},
+{
+    0.01368029f, 0.01368029f, 0.059114665f, 0.36498255f
+},
+{
+    0.013198157f, 0.013198157f, 0.05907293f, 0.3650939f
+},
+{
+    0.0127488505f, 0.0127488505f, 0.059034035f, 0.36519763f
+},
+{
+    0.012329128f, 0.012329128f, 0.058997698f, 0.36529458f
+}
+};
+static const float CORRECTED_NO_BLEND[4] = { 0.0f };
+/* The clamp of each state: its map's learning range. */
+static const float CORRECTED_LOWER[VANDERPOL_UNCERTAIN_STATES] = {
+    -2.4087043f, -4.7017317f
+};
+static const float CORRECTED_UPPER[VANDERPOL_UNCERTAIN_STATES] = {
+    2.3542836f, 4.83137f
+};
+
+/* One sampling period of the model from x, the value alone: out = x+ (corrected_predict). */
+static void corrected_predict(const float *x, const float *u, float *out) {
+    (void)x;
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = 0.1f;
+    const float t3 = 2.0f;
+    const float t4 = 6.0f;
+    const float t5 = t2 / t3;
+    const float t6 = t2 / t4;
+    const float t7 = -t1;
+    const float t8 = 4.0f /* a */;
+    const float t9 = t8 * t0;
+    const float t10 = 1.0f /* b */;
+    const float t11 = t0 * t0;
+    const float t12 = t10 - t11;
+    const float t13 = t12 * t1;
+    const float t14 = t9 + t13;
+    const float t15 = t5 * t7;
+    const float t16 = t0 + t15;
+    const float t17 = t5 * t14;
+    const float t18 = t1 + t17;
+    const float t19 = -t18;
+    const float t20 = t8 * t16;
+    const float t21 = t16 * t16;
+    const float t22 = t10 - t21;
+    const float t23 = t22 * t18;
+    const float t24 = t20 + t23;
+    const float t25 = t5 * t19;
+    const float t26 = t0 + t25;
+    const float t27 = t5 * t24;
+    const float t28 = t1 + t27;
+    const float t29 = -t28;
+    const float t30 = t8 * t26;
+    const float t31 = t26 * t26;
+    const float t32 = t10 - t31;
+    const float t33 = t32 * t28;
+    const float t34 = t30 + t33;
+    const float t35 = t2 * t29;
+    const float t36 = t0 + t35;
+    const float t37 = t2 * t34;
+    const float t38 = t1 + t37;
+    const float t39 = -t38;
+    const float t40 = t8 * t36;
+    const float t41 = t36 * t36;
+    const float t42 = t10 - t41;
+    const float t43 = t42 * t38;
+    const float t44 = t40 + t43;
+    const float t45 = t19 + t29;
+    const float t46 = t3 * t45;
+    const float t47 = t7 + t46;
+    const float t48 = t47 + t39;
+    const float t49 = t6 * t48;
+    const float t50 = t0 + t49;
+    const float t51 = t24 + t34;
+    const float t52 = t3 * t51;
+    const float t53 = t14 + t52;
+    const float t54 = t53 + t44;
+    const float t55 = t6 * t54;
+    const float t56 = t1 + t55;
+    out[0] = t50;
+    out[1] = t56;
+}
+
+/* The correction during the start-up, g = (blends g_j, gains K_j): x before its clamp. */
+static void corrected_start_up(const float *x, const float *y, const float *u, const float *f, const float *g, float *out) {
+    (void)x;
+    (void)y;
+    (void)u;
+    (void)f;
+    (void)g;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = t0 + t1;
+    const float t3 = y[0];
+    const float t4 = t3 - t2;
+    const float t5 = g[0];
+    const float t6 = f[0];
+    const float t7 = t6 - t0;
+    const float t8 = t5 * t7;
+    const float t9 = t0 + t8;
+    const float t10 = g[2];
+    const float t11 = t10 * t4;
+    const float t12 = t9 + t11;
+    const float t13 = g[1];
+    const float t14 = f[1];
+    const float t15 = t14 - t1;
+    const float t16 = t13 * t15;
+    const float t17 = t1 + t16;
+    const float t18 = g[3];
+    const float t19 = t18 * t4;
+    const float t20 = t17 + t19;
+    out[0] = t12;
+    out[1] = t20;
+}
+
+/* The correction after the start-up: x before its clamp. */
+static void corrected_steady(const float *x, const float *y, const float *u, const float *f, float *out) {
+    (void)x;
+    (void)y;
+    (void)u;
+    (void)f;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = t0 + t1;
+    const float t3 = y[0];
+    const float t4 = t3 - t2;
+    const float t5 = 0.05793038f;
+    const float t6 = t5 * t4;
+    const float t7 = t0 + t6;
+    const float t8 = 0.3681416f;
+    const float t9 = t8 * t4;
+    const float t10 = t1 + t9;
+    out[0] = t7;
+    out[1] = t10;
+}
+
+/* Each state's map estimate, from the map's targets. */
+static void corrected_map_states(const float *all, float *map) {
+    map[0] = all[0];
+    map[1] = all[1];
+}
+
+/* The targets of a follower's states, flagged with their states' saturation. */
+static void corrected_targets_of(const float *states, const vanderpol_uncertain_saturation *state_flags, const float *u,
+                                float *values, vanderpol_uncertain_saturation *flags) {
+    (void)state_flags;
+    targets(states, u, values);
+    flags[0] = VANDERPOL_UNCERTAIN_INSIDE;
+    flags[1] = VANDERPOL_UNCERTAIN_INSIDE;
+    flags[0] = state_flags[0];
+    flags[1] = state_flags[1];
+}
+
+/* Corrector::start: the model's period from the map's first estimate, taken when finite. */
+static int corrected_start(const float *first, const float *u, float *x) {
+    float next[VANDERPOL_UNCERTAIN_STATES];
+    corrected_predict(first, u, next);
+    if (!all_finite(next, VANDERPOL_UNCERTAIN_STATES)) {
+        return 0;
+    }
+    memcpy(x, next, sizeof next);
+    return 1;
+}
+
+/* Corrector::follow: the correction of the prediction x (the start-up's blend and gain, or
+ * G's), clamped to the states' ranges by selects, then the model's period from it. */
+static int corrected_follow(float *x, unsigned j, int start_up, const float *f, const float *y, const float *u,
+                            float *states, vanderpol_uncertain_saturation *flags) {
+    float raw[VANDERPOL_UNCERTAIN_STATES], next[VANDERPOL_UNCERTAIN_STATES];
+    unsigned i;
+    if (start_up) {
+        corrected_start_up(x, y, u, f, (j >= 1u && j <= 30u) ? CORRECTED_BLENDS[j - 1u] : CORRECTED_NO_BLEND, raw);
+    } else {
+        corrected_steady(x, y, u, f, raw);
+    }
+    for (i = 0u; i < VANDERPOL_UNCERTAIN_STATES; ++i) {
+        const int low = !(raw[i] >= CORRECTED_LOWER[i]);
+        const int out = low | (raw[i] > CORRECTED_UPPER[i]);
+        const float edge = select_float(low, CORRECTED_LOWER[i], CORRECTED_UPPER[i]);
+        const uint32_t flag = select_bits(low, (uint32_t)VANDERPOL_UNCERTAIN_LOW, (uint32_t)VANDERPOL_UNCERTAIN_HIGH);
+        states[i] = select_float(out, edge, raw[i]);
+        flags[i] = (vanderpol_uncertain_saturation)select_bits(out, flag, (uint32_t)VANDERPOL_UNCERTAIN_INSIDE);
+    }
+    corrected_predict(states, u, next);
+    if (!all_finite(next, VANDERPOL_UNCERTAIN_STATES)) {
+        return 0;
+    }
+    memcpy(x, next, sizeof next);
+    return 1;
+}
+
+/* Corrector::predict: a lost output, the model's period from x (no correction). */
+static void corrected_lost(float *x, const float *u) {
+    float next[VANDERPOL_UNCERTAIN_STATES];
+    corrected_predict(x, u, next);
+    if (all_finite(next, VANDERPOL_UNCERTAIN_STATES)) {
+        memcpy(x, next, sizeof next);
+    }
+}
+
+void vanderpol_uncertain_corrected_init(vanderpol_uncertain_corrected *o) {
+    vanderpol_uncertain_map_init(&o->window);
+    memset(o->x, 0, sizeof o->x);
+    o->count = 0u;
+    o->started = 0;
+    o->ready = 0;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_corrected_push(vanderpol_uncertain_corrected *o, const float *y, const float *u) {
+    const int start_up = o->count <= 30u;
+    float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES], states[VANDERPOL_UNCERTAIN_STATES];
+    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS], state_flags[VANDERPOL_UNCERTAIN_STATES];
+    int estimated = 0;
+    if (!accepts(y, u)) {
+        if (o->started && inputs_finite(u)) {
+            corrected_lost(o->x, u);
+        }
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    memset(map, 0, sizeof map);
+    if (start_up) {
+        (void)vanderpol_uncertain_map_push(&o->window, y, u);
+        if (o->window.filled < VANDERPOL_UNCERTAIN_HORIZON) {
+            return VANDERPOL_UNCERTAIN_OK;
+        }
+        estimate_window(&o->window, all, all_flags);
+        corrected_map_states(all, map);
+        estimated = 1;
+    }
+    if (!o->started && estimated) {
+        if (!corrected_start(map, u, o->x)) {
+            return VANDERPOL_UNCERTAIN_REFUSED;
+        }
+        o->started = 1;
+        memcpy(o->values, all, sizeof all);
+        memcpy(o->flags, all_flags, sizeof all_flags);
+    } else if (o->started) {
+        if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
+            return VANDERPOL_UNCERTAIN_REFUSED;
+        }
+        corrected_targets_of(states, state_flags, u, o->values, o->flags);
+    } else {
+        return VANDERPOL_UNCERTAIN_OK;
+    }
+    o->ready = 1;
+    o->count = start_up ? o->count + 1u : o->count;
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_corrected_estimate(const vanderpol_uncertain_corrected *o, float *values, vanderpol_uncertain_saturation *saturation) {
+    if (!o->ready) {
+        return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return VANDERPOL_UNCERTAIN_OK;
+}
+

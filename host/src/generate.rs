@@ -61,7 +61,7 @@ pub fn lib_source(designs: &[Design], sources: &Path, present: &[String]) -> Res
 }
 
 /// The folder of the `generated` crate that holds every shipped design's C99 source (`<name>.h`,
-/// `<name>.c`, [`crate::emit::c_source`]): C for firmware without a Rust toolchain.
+/// `<name>.c`, [`crate::emit::c`]): C for firmware without a Rust toolchain.
 pub const C_FOLDER: &str = "c";
 
 /// Where `gen` writes.

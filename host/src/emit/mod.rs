@@ -13,7 +13,7 @@
 //! `doc_text` makes spec text safe for doc comments, `recorded` gives the recorded sequence a design
 //! carries, `placement` where a file lives, and [`precision`] checks the f32 tables.
 
-pub mod c_source;
+pub mod c;
 mod design_file;
 mod doc_text;
 pub mod families;

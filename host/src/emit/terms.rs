@@ -1,5 +1,5 @@
 //! The map's dot product as a list of terms, the one order both emitted languages sum in (the Rust
-//! design file, [`super::c_source`]): `offset`, then `g_i z_i` for every regressor entry with a
+//! design file, [`super::c`]): `offset`, then `g_i z_i` for every regressor entry with a
 //! non-zero gain, in regressor order (every output of lag 0, 1, … N−1, then every input), each added
 //! to the sum of the ones before, so that Rust and C round alike.
 

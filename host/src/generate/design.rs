@@ -50,12 +50,7 @@ pub fn emit_design(
             source: &spec_path,
         },
     };
-    let (comparison, source) = design_source(&design, &result, &placement, spec, progress)?;
-    let c_source = emit::c_source::c_source(&design, &result).map_err(|source| GenerateError::Emit {
-        file: spec.to_owned(),
-        design: design.name.clone(),
-        source,
-    })?;
+    let (comparison, source, c_source) = design_source(&design, &result, &placement, spec, progress)?;
     Ok(Emitted {
         design,
         result,
@@ -104,15 +99,15 @@ pub fn model_code(design: &Design) -> Result<crate::plant::ModelCode, SpecError>
     })
 }
 
-/// The observers of a fitted design compared (the EKF tuned on new runs), and the text of its
-/// `generated/src/<design>.rs`: maps, model and EKF.
+/// The observers of a fitted design compared (the EKF tuned on new runs), the text of its
+/// `generated/src/<design>.rs` (maps, model and the model-based observers) and its C source.
 pub fn design_source(
     design: &Design,
     result: &DesignResult,
     placement: &emit::Placement<'_>,
     spec: &Path,
     progress: &ProgressBar,
-) -> Result<(crate::observers::Comparison, String), GenerateError> {
+) -> Result<(crate::observers::Comparison, String, emit::c::CSource), GenerateError> {
     let code = model_code(design)?;
     progress.set_message(format!("{}: tuning the EKF", design.name));
     let comparison = crate::observers::compare(design, result, &code)?;
@@ -143,5 +138,6 @@ pub fn design_source(
         tables_sha256: &crate::tables::Tables::new(design, result, Some(&comparison)).tables_sha256,
     };
     let source = emit::design_file(design, result, placement, &code, &observers).map_err(emit_error)?;
-    Ok((comparison, source))
+    let c_source = emit::c::c_source(design, result, Some((&code, &observers))).map_err(emit_error)?;
+    Ok((comparison, source, c_source))
 }

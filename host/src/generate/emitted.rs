@@ -15,7 +15,7 @@ pub struct Emitted {
     /// The text of `generated/src/<design>.rs`.
     pub source: String,
     /// The design's map in C99 (`generated/c/<design>.h`, `.c`).
-    pub c_source: crate::emit::c_source::CSource,
+    pub c_source: crate::emit::c::CSource,
     /// The design search, when the spec asks for one ([`crate::search`]); `design.map` holds its choice.
     pub search: Option<crate::search::Outcome>,
     /// Validation accuracy against the taps kept, when the spec prunes `L` ([`crate::search::sparsity`]).

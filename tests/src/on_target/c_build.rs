@@ -58,6 +58,7 @@ pub fn run_c_counted(
         .arg("-o")
         .arg(elf)
         .arg(board.join("startup.c"))
-        .args(&objects))?;
+        .args(&objects)
+        .arg("-lm"))?;
     run_counted(elf)
 }

@@ -77,6 +77,32 @@ pub(super) fn symbol(elf: &Path, name: &str) -> Result<u64, Unavailable> {
         .ok_or_else(|| failed(format!("no symbol {name} in {}", elf.display())))
 }
 
+/// Every defined symbol of an object or an ELF with a size, and its size in bytes
+/// (`arm-none-eabi-nm -S --defined-only`).
+pub(super) fn symbol_sizes(file: &Path) -> Result<std::collections::BTreeMap<String, u64>, Unavailable> {
+    let output = Command::new("arm-none-eabi-nm")
+        .args(["-S", "--defined-only"])
+        .arg(file)
+        .output()
+        .map_err(|e| failed(format!("arm-none-eabi-nm: {e}")))?;
+    if !output.status.success() {
+        return Err(failed(format!(
+            "arm-none-eabi-nm {}: {}",
+            file.display(),
+            String::from_utf8_lossy(&output.stderr)
+        )));
+    }
+    Ok(String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .filter_map(|line| {
+            // "00000000 00000010 t is_finite"
+            let mut fields = line.split_whitespace();
+            let (_, size, _, name) = (fields.next()?, fields.next()?, fields.next()?, fields.next()?);
+            Some((name.to_owned(), u64::from_str_radix(size, 16).ok()?))
+        })
+        .collect())
+}
+
 /// `(text, data, bss)` of an ELF (`arm-none-eabi-size`, Berkeley format: text includes rodata).
 pub fn sizes(elf: &Path) -> Result<(u64, u64, u64), Unavailable> {
     let output = Command::new("arm-none-eabi-size")

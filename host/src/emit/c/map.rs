@@ -1,53 +1,37 @@
-//! A design's map as portable C99 source (`<name>.h`, `<name>.c`): the same f32 tables as the Rust
-//! design file ([`super::precision::F32Tables`]), the dot product summed term by term in the Rust
-//! file's order ([`super::terms::dot_terms`]) and the certified `Γ⁻¹` table evaluated as
-//! `firmware::InverseTable::evaluate` does, saturation flags included; so that with
-//! `-ffp-contract=off` the C observer gives the Rust observer's bits.
-//!
-//! C99 with `float` only: no `malloc`, no recursion, no VLA, no global mutable state, no `<math.h>`
-//! (a value is finite when `v - v == 0`). The observer lives in a struct the caller allocates
-//! (`<name>_map`); `<name>_map_init`, `_push`, `_estimate` are the map's `new`, `push` and `estimate`.
+//! The map in C (`<name>_map`): the same f32 tables as the Rust design file
+//! ([`crate::emit::precision::F32Tables`]), the dot product summed term by term in the Rust file's
+//! order ([`crate::emit::terms::dot_terms`]) and the certified `Γ⁻¹` table evaluated as
+//! `firmware::InverseTable::evaluate` does, saturation flags included. The observer is the last `N`
+//! samples, each stored twice so that the window is always contiguous (as `firmware::Window`).
 
-use super::precision::F32Tables;
-use super::terms::dot_terms;
-use super::EmitError;
+use super::{float, floats};
+use crate::emit::precision::F32Tables;
+use crate::emit::terms::dot_terms;
+use crate::emit::EmitError;
 use crate::fit::DesignResult;
 use crate::spec::Design;
 
-/// The header and the source of a design.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct CSource {
-    /// `<name>.h`.
+/// The map's part of the header (its struct and functions) and of the source (its tables and code).
+pub(super) struct MapC {
+    /// `<name>_map` and its functions' prototypes.
     pub header: String,
-    /// `<name>.c`.
+    /// The tables, the table's evaluation, `estimate_window` and the three functions.
     pub source: String,
 }
 
-/// A C `float` literal of `value`: the shortest decimal that round-trips, with `f`.
-fn float(what: &str, value: f32) -> Result<String, EmitError> {
-    Ok(format!("{}f", super::f32_literal(what, f64::from(value))?))
+/// `values` in f64 (exactly), for [`floats`].
+fn widen(values: &[f32]) -> Vec<f64> {
+    values.iter().map(|&v| f64::from(v)).collect()
 }
 
-/// `{ a, b, … }` of `values`, four per line.
-fn floats(what: &str, values: &[f32]) -> Result<String, EmitError> {
-    let items = values
-        .iter()
-        .enumerate()
-        .map(|(i, &v)| float(&format!("{what}[{i}]"), v))
-        .collect::<Result<Vec<_>, _>>()?;
-    let lines: Vec<String> = items.chunks(4).map(|c| format!("    {}", c.join(", "))).collect();
-    Ok(format!("{{\n{}\n}}", lines.join(",\n")))
-}
-
-/// The C source of `design`'s map (its targets' tables in `result`).
-pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitError> {
+/// The C of `design`'s map (its targets' tables in `result`).
+pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitError> {
     let name = &design.name;
     let upper = name.to_uppercase();
-    let (n, ny, nu, nt) = (
+    let (n, ny, nu) = (
         design.map.horizon,
         design.model.outputs.len(),
         design.model.inputs.len(),
-        design.targets.len(),
     );
     let mut tables = String::new();
     let mut estimates = String::new();
@@ -65,8 +49,8 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
             .map(|(k, [a, b])| {
                 Ok(format!(
                     "    {{ {}, {} }}",
-                    float(&what(&format!("segments[{k}].a")), *a)?,
-                    float(&what(&format!("segments[{k}].b")), *b)?
+                    float(&what(&format!("segments[{k}].a")), f64::from(*a))?,
+                    float(&what(&format!("segments[{k}].b")), f64::from(*b))?
                 ))
             })
             .collect::<Result<Vec<_>, EmitError>>()?;
@@ -75,7 +59,7 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
              static const float GAINS_{t}[{}] = {};\n\
              static const float SEGMENTS_{t}[{}][2] = {{\n{}\n}};\n",
             rounded.gains.len(),
-            floats(&what("gains"), &rounded.gains)?,
+            floats(&what("gains"), &widen(&rounded.gains))?,
             rounded.segments.len(),
             segments.join(",\n"),
         );
@@ -99,7 +83,7 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
                 tables += &format!(
                     "static const float STARTS_{t}[{}] = {};\n",
                     starts.len(),
-                    floats(&what("starts"), starts)?
+                    floats(&what("starts"), &widen(starts))?
                 );
                 // `firmware::search_step` for every step of `firmware::search_halves`, then the clamp
                 // of `evaluate_segment`.
@@ -121,10 +105,10 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
         };
         estimates += &format!(
             "    const float t_{t} = {offset}{terms};\n{search}    evaluate(t_{t}, SEGMENTS_{t}[k_{t}], {start}, {t_max}, {r_min}, {r_max}, &values[{t}], &saturation[{t}]);\n",
-            offset = float(&what("offset"), rounded.offset)?,
-            t_max = float(&what("t_max"), rounded.t_max)?,
-            r_min = float(&what("r_min"), rounded.r_min)?,
-            r_max = float(&what("r_max"), rounded.r_max)?,
+            offset = float(&what("offset"), f64::from(rounded.offset))?,
+            t_max = float(&what("t_max"), f64::from(rounded.t_max))?,
+            r_min = float(&what("r_min"), f64::from(rounded.r_min))?,
+            r_max = float(&what("r_max"), f64::from(rounded.r_max))?,
         );
     }
     let inputs_field = if nu > 0 {
@@ -133,35 +117,7 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
         String::new()
     };
     let header = format!(
-        "/* The `{name}` observer in C99, emitted by `mho gen` from the same tables as the Rust design file.\n\
-         \x20* Do not edit: regenerate. Build with -ffp-contract=off (no fused multiply-add) to get the Rust\n\
-         \x20* observer's bits. */\n\
-         #ifndef {upper}_H\n\
-         #define {upper}_H\n\
-         \n\
-         #define {upper}_OUTPUTS {ny}u\n\
-         #define {upper}_INPUTS {nu}u\n\
-         #define {upper}_TARGETS {nt}u\n\
-         /* The map's window, in samples: no estimate before it is full. */\n\
-         #define {upper}_HORIZON {n}u\n\
-         \n\
-         /* What push and estimate return. */\n\
-         typedef enum {{\n\
-         \x20   {upper}_OK = 0,\n\
-         \x20   /* The sample has a NaN or infinite value and was refused; the observer is unchanged. */\n\
-         \x20   {upper}_REFUSED = 1,\n\
-         \x20   /* Fewer than {upper}_HORIZON accepted samples since init. */\n\
-         \x20   {upper}_NO_ESTIMATE_YET = 2\n\
-         }} {name}_status;\n\
-         \n\
-         /* Where an estimate lies against the map's range: inside, or held at its low or high end. */\n\
-         typedef enum {{\n\
-         \x20   {upper}_INSIDE = 0,\n\
-         \x20   {upper}_LOW = 1,\n\
-         \x20   {upper}_HIGH = 2\n\
-         }} {name}_saturation;\n\
-         \n\
-         /* The map observer: the last {upper}_HORIZON samples, each stored twice so that the window is\n\
+        "/* The map observer: the last {upper}_HORIZON samples, each stored twice so that the window is\n\
          \x20* always contiguous. Allocate it anywhere (no heap is used) and call {name}_map_init. */\n\
          typedef struct {{\n\
          \x20   float y[2u * {upper}_HORIZON][{upper}_OUTPUTS];\n\
@@ -174,14 +130,14 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
          void {name}_map_init({name}_map *observer);\n\
          \n\
          /* Takes the sample of the current instant: y[{upper}_OUTPUTS] and u[{upper}_INPUTS] (u may be\n\
-         \x20* NULL when there is no input). {upper}_OK, or {upper}_REFUSED for a NaN or infinite value. */\n\
+         \x20* NULL when there is no input). {upper}_OK, or {upper}_REFUSED for a NaN or infinite value\n\
+         \x20* (the observer is unchanged). */\n\
          {name}_status {name}_map_push({name}_map *observer, const float *y, const float *u);\n\
          \n\
          /* The estimate of every target from the last {upper}_HORIZON samples into values[{upper}_TARGETS]\n\
          \x20* and saturation[{upper}_TARGETS]; {upper}_NO_ESTIMATE_YET (nothing written) before the window is full. */\n\
          {name}_status {name}_map_estimate(const {name}_map *observer, float *values, {name}_saturation *saturation);\n\
-         \n\
-         #endif\n"
+         \n"
     );
     let store_inputs = if nu > 0 {
         format!(
@@ -192,15 +148,6 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
         )
     } else {
         "    (void)u;\n".to_owned()
-    };
-    let check_inputs = if nu > 0 {
-        format!(
-            "    for (i = 0u; i < {upper}_INPUTS; ++i) {{\n\
-             \x20       finite &= is_finite(u[i]);\n\
-             \x20   }}\n"
-        )
-    } else {
-        String::new()
     };
     // Only where a table is uniform: an unused static function is a warning.
     let uniform = if estimates.contains("uniform_segment(") {
@@ -215,31 +162,7 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
         ""
     };
     let source = format!(
-        "/* The `{name}` observer in C99, emitted by `mho gen`. Do not edit: regenerate. */\n\
-         #include <stdint.h>\n\
-         #include <string.h>\n\
-         #include \"{name}.h\"\n\
-         {tables}\n\
-         /* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */\n\
-         static int is_finite(float v) {{\n\
-         \x20   return (v - v) == 0.0f;\n\
-         }}\n\
-         \n\
-         /* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */\n\
-         static uint32_t select_bits(int c, uint32_t a, uint32_t b) {{\n\
-         \x20   const uint32_t mask = 0u - (uint32_t)c;\n\
-         \x20   return (a & mask) | (b & ~mask);\n\
-         }}\n\
-         \n\
-         static float select_float(int c, float a, float b) {{\n\
-         \x20   uint32_t x, y;\n\
-         \x20   memcpy(&x, &a, sizeof x);\n\
-         \x20   memcpy(&y, &b, sizeof y);\n\
-         \x20   x = select_bits(c, x, y);\n\
-         \x20   memcpy(&a, &x, sizeof a);\n\
-         \x20   return a;\n\
-         }}\n\
-         \n\
+        "{tables}\n\
          {uniform}\
          /* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above\n\
          \x20* t_max; by selects, as firmware::InverseTable (the same instructions whatever t is). */\n\
@@ -253,6 +176,12 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
          \x20   *saturation = ({name}_saturation)select_bits(out, flag, (uint32_t){upper}_INSIDE);\n\
          }}\n\
          \n\
+         /* Every target's estimate from a full window. */\n\
+         static void estimate_window(const {name}_map *observer, float *values, {name}_saturation *saturation) {{\n\
+         \x20   const unsigned next = observer->next;\n\
+         {estimates}\
+         }}\n\
+         \n\
          void {name}_map_init({name}_map *observer) {{\n\
          \x20   observer->next = 0u;\n\
          \x20   observer->filled = 0u;\n\
@@ -261,12 +190,7 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
          {name}_status {name}_map_push({name}_map *observer, const float *y, const float *u) {{\n\
          \x20   unsigned i;\n\
          \x20   unsigned slot;\n\
-         \x20   int finite = 1;\n\
-         \x20   for (i = 0u; i < {upper}_OUTPUTS; ++i) {{\n\
-         \x20       finite &= is_finite(y[i]);\n\
-         \x20   }}\n\
-         {check_inputs}\
-         \x20   if (!finite) {{\n\
+         \x20   if (!accepts(y, u)) {{\n\
          \x20       return {upper}_REFUSED;\n\
          \x20   }}\n\
          \x20   slot = observer->next;\n\
@@ -281,13 +205,12 @@ pub fn c_source(design: &Design, result: &DesignResult) -> Result<CSource, EmitE
          }}\n\
          \n\
          {name}_status {name}_map_estimate(const {name}_map *observer, float *values, {name}_saturation *saturation) {{\n\
-         \x20   const unsigned next = observer->next;\n\
          \x20   if (observer->filled < {upper}_HORIZON) {{\n\
          \x20       return {upper}_NO_ESTIMATE_YET;\n\
          \x20   }}\n\
-         {estimates}\
+         \x20   estimate_window(observer, values, saturation);\n\
          \x20   return {upper}_OK;\n\
-         }}\n"
+         }}\n\n"
     );
-    Ok(CSource { header, source })
+    Ok(MapC { header, source })
 }

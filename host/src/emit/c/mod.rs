@@ -1,0 +1,189 @@
+//! A design's observers as portable C99 source (`<name>.h`, `<name>.c`): the map
+//! ([`map`]) and every model-based kind the Rust design file has ([`filters`], [`corrected`]),
+//! emitted from the same f32 tables and the same straight-line programs ([`program`]) as the Rust
+//! file, operation for operation, so that with `-ffp-contract=off` the C observer gives the Rust
+//! observer's bits (up to the C library's functions where the model calls one: `<math.h>`'s `expf`
+//! is not `libm`'s).
+//!
+//! C99 with `float` only: no `malloc`, no recursion, no VLA, no global mutable state; `<math.h>` only
+//! where the model calls a function; a value is finite when `v - v == 0`. Each kind is a struct the
+//! caller allocates (`<name>_<kind>`) with `_init`, `_push` and `_estimate`, the Rust observer's
+//! `new`, `push` and `estimate`; `<name>_observer` names the design's chosen kind. The moving-horizon
+//! kind (`mhe`) is generic Rust code over the design's sizes and has no C form.
+
+mod corrected;
+mod filters;
+mod map;
+mod program;
+mod started;
+
+use super::model::Observers;
+use super::EmitError;
+use crate::fit::DesignResult;
+use crate::plant::ModelCode;
+use crate::spec::Design;
+
+/// The header and the source of a design.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CSource {
+    /// `<name>.h`.
+    pub header: String,
+    /// `<name>.c`.
+    pub source: String,
+}
+
+/// A C `float` literal of `value` rounded to f32: the shortest decimal that round-trips, with `f`.
+fn float(what: &str, value: f64) -> Result<String, EmitError> {
+    Ok(format!("{}f", super::f32_literal(what, value)?))
+}
+
+/// `{ a, b, … }` of `values` (each rounded to f32), four per line.
+fn floats(what: &str, values: &[f64]) -> Result<String, EmitError> {
+    let items = values
+        .iter()
+        .enumerate()
+        .map(|(i, &v)| float(&format!("{what}[{i}]"), v))
+        .collect::<Result<Vec<_>, _>>()?;
+    let lines: Vec<String> = items.chunks(4).map(|c| format!("    {}", c.join(", "))).collect();
+    Ok(format!("{{\n{}\n}}", lines.join(",\n")))
+}
+
+/// The C source of `design`: its map (tables in `result`) and, given its model's programs and the
+/// observers the Rust file has, every model-based kind but `mhe`.
+pub fn c_source(
+    design: &Design,
+    result: &DesignResult,
+    model: Option<(&ModelCode, &Observers<'_>)>,
+) -> Result<CSource, EmitError> {
+    let name = &design.name;
+    let upper = name.to_uppercase();
+    let (n, ny, nu, nt) = (
+        design.map.horizon,
+        design.model.outputs.len(),
+        design.model.inputs.len(),
+        design.targets.len(),
+    );
+    let map = map::map(design, result)?;
+    let kinds = match model {
+        Some((code, observers)) => filters::kinds(design, code, observers)?,
+        None => filters::Kinds::default(),
+    };
+    let chosen = model.map(|(_, o)| o.kind.name());
+    let alias = match chosen {
+        Some(kind) if kind == "map" || kinds.names.contains(&kind) => format!(
+            "/* This design's observer, of the kind `gen` chose or the spec named: {kind}. */\n\
+             #define {upper}_KIND \"{kind}\"\n\
+             typedef {name}_{kind} {name}_observer;\n\
+             #define {name}_observer_init {name}_{kind}_init\n\
+             #define {name}_observer_push {name}_{kind}_push\n\
+             #define {name}_observer_estimate {name}_{kind}_estimate\n\n"
+        ),
+        Some(kind) => format!(
+            "/* This design's observer is of kind {kind}, which has no C form: use the Rust crate. */\n\
+             #define {upper}_KIND \"{kind}\"\n\n"
+        ),
+        None => String::new(),
+    };
+    let sizes = match model {
+        Some((code, _)) => format!(
+            "#define {upper}_STATES {nx}u\n\
+             /* Entries of a filter's covariance kept: its upper triangle. */\n\
+             #define {upper}_COVARIANCE {cov}u\n",
+            nx = code.dimensions.states,
+            cov = crate::plant::kalman::triangle(code.dimensions.states)
+        ),
+        None => String::new(),
+    };
+    let header = format!(
+        "/* The `{name}` observers in C99, emitted by `mho gen` from the same tables and programs as the\n\
+         \x20* Rust design file. Do not edit: regenerate. Build with -ffp-contract=off (no fused\n\
+         \x20* multiply-add) to get the Rust observers' bits. Every observer lives in a struct you allocate\n\
+         \x20* (no heap); call its _init first, then _push every sample and _estimate when you need it. */\n\
+         #ifndef {upper}_H\n\
+         #define {upper}_H\n\
+         \n\
+         #define {upper}_OUTPUTS {ny}u\n\
+         #define {upper}_INPUTS {nu}u\n\
+         #define {upper}_TARGETS {nt}u\n\
+         /* The map's window, in samples: no map estimate before it is full. */\n\
+         #define {upper}_HORIZON {n}u\n\
+         {sizes}\
+         \n\
+         /* What push and estimate return. */\n\
+         typedef enum {{\n\
+         \x20   {upper}_OK = 0,\n\
+         \x20   /* The sample was refused: a NaN or infinite value (or a filter step whose result is not\n\
+         \x20    * finite); the latest estimate is unchanged. */\n\
+         \x20   {upper}_REFUSED = 1,\n\
+         \x20   /* No estimate yet (the map: fewer than {upper}_HORIZON accepted samples since init). */\n\
+         \x20   {upper}_NO_ESTIMATE_YET = 2\n\
+         }} {name}_status;\n\
+         \n\
+         /* Where an estimate lies against its range: inside, or held at its low or high end. */\n\
+         typedef enum {{\n\
+         \x20   {upper}_INSIDE = 0,\n\
+         \x20   {upper}_LOW = 1,\n\
+         \x20   {upper}_HIGH = 2\n\
+         }} {name}_saturation;\n\
+         \n\
+         {map_header}\
+         {kinds_header}\
+         {alias}\
+         #endif\n",
+        map_header = map.header,
+        kinds_header = kinds.header,
+    );
+    let math = if kinds.needs_math { "#include <math.h>\n" } else { "" };
+    let inputs_check = if nu > 0 {
+        format!(
+            "    for (i = 0u; i < {upper}_INPUTS; ++i) {{\n\
+             \x20       finite &= is_finite(u[i]);\n\
+             \x20   }}\n"
+        )
+    } else {
+        "    (void)u;\n".to_owned()
+    };
+    let source = format!(
+        "/* The `{name}` observers in C99, emitted by `mho gen`. Do not edit: regenerate. */\n\
+         #include <stdint.h>\n\
+         #include <string.h>\n\
+         {math}\
+         #include \"{name}.h\"\n\
+         \n\
+         /* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */\n\
+         static int is_finite(float v) {{\n\
+         \x20   return (v - v) == 0.0f;\n\
+         }}\n\
+         \n\
+         /* 1 when every output and input of a sample is finite (u is not read without inputs). */\n\
+         static int accepts(const float *y, const float *u) {{\n\
+         \x20   unsigned i;\n\
+         \x20   int finite = 1;\n\
+         \x20   for (i = 0u; i < {upper}_OUTPUTS; ++i) {{\n\
+         \x20       finite &= is_finite(y[i]);\n\
+         \x20   }}\n\
+         {inputs_check}\
+         \x20   return finite;\n\
+         }}\n\
+         \n\
+         /* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */\n\
+         static uint32_t select_bits(int c, uint32_t a, uint32_t b) {{\n\
+         \x20   const uint32_t mask = 0u - (uint32_t)c;\n\
+         \x20   return (a & mask) | (b & ~mask);\n\
+         }}\n\
+         \n\
+         static float select_float(int c, float a, float b) {{\n\
+         \x20   uint32_t x, y;\n\
+         \x20   memcpy(&x, &a, sizeof x);\n\
+         \x20   memcpy(&y, &b, sizeof y);\n\
+         \x20   x = select_bits(c, x, y);\n\
+         \x20   memcpy(&a, &x, sizeof a);\n\
+         \x20   return a;\n\
+         }}\n\
+         {map_source}\
+         {kinds_source}",
+        map_source = map.source,
+        kinds_source = kinds.source,
+    );
+    Ok(CSource { header, source })
+}

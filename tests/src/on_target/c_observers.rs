@@ -1,0 +1,211 @@
+//! The generated C observers (`generated/c/<name>.h`, `.c`) run over a design's recorded sequence:
+//! the C program that does it ([`c_harness`]), the Rust observer's lines it must print
+//! ([`rust_lines`]), and the run on the emulated board ([`run_c_observer`]) with its instructions per
+//! sample, flash, RAM and stack.
+
+use std::path::Path;
+
+use super::c_build::run_c_counted;
+use super::elf::symbol_sizes;
+use super::unavailable::{failed, Unavailable};
+
+/// Warnings are errors; no fused multiply-add, no fast maths: IEEE single precision as Rust computes.
+/// The optimisation level is the caller's.
+pub const STRICT_C_FLAGS: [&str; 9] = [
+    "-std=c99",
+    "-Wall",
+    "-Wextra",
+    "-Wpedantic",
+    "-Wconversion",
+    "-Wdouble-promotion",
+    "-Werror",
+    "-ffp-contract=off",
+    "-fno-fast-math",
+];
+
+/// Words of stack the board harness paints below `main`'s frame before each sample.
+const PAINTED_WORDS: usize = 2048;
+
+/// A C program that runs observer `<name>_<kind>` over `ys` and `us` (each value as its f32 bits) and
+/// prints per sample `<push status> <estimate status> [<bits> <flag>]…`, then `RAM <bytes>`, `STACK
+/// <bytes>` (on the board: the deepest painted word a sample reached) and `DONE`. Each sample's
+/// `push` + `estimate` runs between the markers `measure_start` and `measure_end`, as in the Rust
+/// runners, so that the emulated board counts its instructions.
+pub fn c_harness(name: &str, kind: &str, ys: &[Vec<u32>], us: &[Vec<u32>], shape: (usize, usize, usize)) -> String {
+    let (outputs, inputs, targets) = shape;
+    let ty = format!("{name}_{kind}");
+    let rows = |rows: &[Vec<u32>], width: usize| -> String {
+        rows.iter()
+            .map(|row| {
+                let cells: Vec<String> = (0..width.max(1))
+                    .map(|i| format!("0x{:08x}u", row.get(i).copied().unwrap_or(0)))
+                    .collect();
+                format!("    {{{}}}", cells.join(", "))
+            })
+            .collect::<Vec<_>>()
+            .join(",\n")
+    };
+    format!(
+        "#include <stdio.h>\n#include <string.h>\n#include <stdint.h>\n#include \"{name}.h\"\n\
+         static const unsigned int Y[{len}][{wy}] = {{\n{y}\n}};\n\
+         static const unsigned int U[{len}][{wu}] = {{\n{u}\n}};\n\
+         static float as_float(unsigned int bits) {{ float f; memcpy(&f, &bits, sizeof f); return f; }}\n\
+         static unsigned int as_bits(float f) {{ unsigned int b; memcpy(&b, &f, sizeof b); return b; }}\n\
+         void measure_start(void);\n\
+         void measure_end(void);\n\
+         __attribute__((noinline)) void measure_start(void) {{ __asm__ volatile(\"nop\"); }}\n\
+         __attribute__((noinline)) void measure_end(void) {{ __asm__ volatile(\"nop\"); __asm__ volatile(\"nop\"); }}\n\
+         #ifdef __arm__\n\
+         #pragma GCC diagnostic ignored \"-Wuninitialized\"\n\
+         #pragma GCC diagnostic ignored \"-Wmaybe-uninitialized\"\n\
+         #pragma GCC diagnostic ignored \"-Wunused-but-set-variable\"\n\
+         /* Stack: paint and read back the same frame (same locals) below main's, where `step` runs. */\n\
+         __attribute__((noinline)) static void paint(void) {{\n\
+         \x20   volatile uint32_t region[{painted}];\n\
+         \x20   unsigned i;\n\
+         \x20   for (i = 0u; i < {painted}u; ++i) region[i] = 0xA5A55A5Au;\n\
+         }}\n\
+         __attribute__((noinline)) static unsigned deepest(void) {{\n\
+         \x20   volatile uint32_t region[{painted}];\n\
+         \x20   unsigned i = 0u;\n\
+         \x20   while (i < {painted}u && region[i] == 0xA5A55A5Au) ++i;\n\
+         \x20   return ({painted}u - i) * 4u;\n\
+         }}\n\
+         #else\n\
+         static void paint(void) {{}}\n\
+         static unsigned deepest(void) {{ return 0u; }}\n\
+         #endif\n\
+         /* One sample, what a firmware does every period. */\n\
+         __attribute__((noinline)) static {name}_status step({ty} *observer, const float *y, const float *u,\n\
+         \x20                                             float *values, {name}_saturation *flags, {name}_status *estimated) {{\n\
+         \x20   {name}_status pushed;\n\
+         \x20   measure_start();\n\
+         \x20   pushed = {ty}_push(observer, y, u);\n\
+         \x20   *estimated = {ty}_estimate(observer, values, flags);\n\
+         \x20   measure_end();\n\
+         \x20   return pushed;\n\
+         }}\n\
+         int main(void) {{\n\
+         \x20   static {ty} observer;\n\
+         \x20   unsigned k, i, stack = 0u;\n\
+         \x20   {ty}_init(&observer);\n\
+         \x20   for (k = 0u; k < {len}u; ++k) {{\n\
+         \x20       float y[{wy}], u[{wu}], values[{targets}u];\n\
+         \x20       {name}_saturation flags[{targets}u];\n\
+         \x20       {name}_status pushed, estimated;\n\
+         \x20       unsigned depth;\n\
+         \x20       for (i = 0u; i < {wy}u; ++i) y[i] = as_float(Y[k][i]);\n\
+         \x20       for (i = 0u; i < {wu}u; ++i) u[i] = as_float(U[k][i]);\n\
+         \x20       paint();\n\
+         \x20       /* Without inputs the design ignores `u` (NULL would do). */\n\
+         \x20       pushed = step(&observer, y, u, values, flags, &estimated);\n\
+         \x20       depth = deepest();\n\
+         \x20       stack = depth > stack ? depth : stack;\n\
+         \x20       printf(\"%d %d\", (int)pushed, (int)estimated);\n\
+         \x20       if (estimated == 0) {{\n\
+         \x20           for (i = 0u; i < {targets}u; ++i) printf(\" %08x %d\", as_bits(values[i]), (int)flags[i]);\n\
+         \x20       }}\n\
+         \x20       printf(\"\\n\");\n\
+         \x20   }}\n\
+         \x20   printf(\"RAM %u\\nSTACK %u\\nDONE\\n\", (unsigned)sizeof observer, stack);\n\
+         \x20   return 0;\n\
+         }}\n",
+        len = ys.len(),
+        wy = outputs.max(1),
+        wu = inputs.max(1),
+        y = rows(ys, outputs),
+        u = rows(us, inputs),
+        painted = PAINTED_WORDS,
+    )
+}
+
+/// The lines of a harness's output that are samples (those [`c_harness`] prints first).
+pub fn sample_lines(text: &str) -> Vec<String> {
+    text.lines()
+        .filter(|l| l.starts_with(|c: char| c.is_ascii_digit()))
+        .map(str::to_owned)
+        .collect()
+}
+
+/// What a Rust observer gives over the same sequence, printed as [`c_harness`] prints it.
+pub fn rust_lines<O>(
+    ys: &[Vec<f32>],
+    us: &[Vec<f32>],
+    mut observer: O,
+    push: impl Fn(&mut O, &[f32], &[f32]) -> bool,
+    estimate: impl Fn(&O) -> Option<Vec<(f32, firmware::Saturation)>>,
+) -> Vec<String> {
+    ys.iter()
+        .zip(us)
+        .map(|(y, u)| {
+            let pushed = if push(&mut observer, y, u) { 0 } else { 1 };
+            match estimate(&observer) {
+                None => format!("{pushed} 2"),
+                Some(estimates) => {
+                    let cells: String = estimates
+                        .iter()
+                        .map(|(v, s)| format!(" {:08x} {}", v.to_bits(), flag_number(*s)))
+                        .collect();
+                    format!("{pushed} 0{cells}")
+                }
+            }
+        })
+        .collect()
+}
+
+/// A saturation flag as the C enum's value.
+fn flag_number(saturation: firmware::Saturation) -> u8 {
+    match saturation {
+        firmware::Saturation::Inside => 0,
+        firmware::Saturation::Low => 1,
+        firmware::Saturation::High => 2,
+    }
+}
+
+/// One C observer on the emulated board.
+#[derive(Clone, Debug)]
+pub struct CBoardRun {
+    /// The sample lines it printed.
+    pub lines: Vec<String>,
+    /// Instructions and divisions (`VDIV`, `VSQRT`) of each sample's `push` + `estimate`.
+    pub counts: Vec<(u64, u64)>,
+    /// Bytes of code and tables of the design's C file that the program keeps.
+    pub flash_bytes: u64,
+    /// `sizeof` the observer.
+    pub ram_bytes: u64,
+    /// The deepest a sample's `push` + `estimate` reached below the caller's frame.
+    pub stack_bytes: u64,
+}
+
+/// Builds `<c>/<name>.c` with `harness` (the text of [`c_harness`]) in `dir` by `arm-none-eabi-gcc
+/// -Os` under [`STRICT_C_FLAGS`] for the Cortex-M4F, and runs it on the emulated board.
+pub fn run_c_observer(name: &str, kind: &str, harness: &str, c: &Path, dir: &Path) -> Result<CBoardRun, Unavailable> {
+    let harness_path = dir.join(format!("{name}_{kind}_board.c"));
+    std::fs::write(&harness_path, harness).map_err(|e| failed(format!("{}: {e}", harness_path.display())))?;
+    let observer = c.join(format!("{name}.c"));
+    let mut flags: Vec<&str> = STRICT_C_FLAGS.to_vec();
+    flags.extend(["-Os", "-ffunction-sections", "-fdata-sections"]);
+    let elf = dir.join(format!("{name}_{kind}.elf"));
+    let (text, counts) = run_c_counted(&[observer.as_path(), harness_path.as_path()], c, &flags, &elf)?;
+    let number = |key: &str| -> Result<u64, Unavailable> {
+        text.lines()
+            .find_map(|l| l.strip_prefix(key)?.trim().parse().ok())
+            .ok_or_else(|| failed(format!("{name}_{kind}: no `{key}` line in:\n{text}")))
+    };
+    // The observer's object is the first compiled (`run_c_counted` names it `<elf>.0.o`): its symbols
+    // that the linker kept are the C observer's flash.
+    let ours = symbol_sizes(&elf.with_extension("0.o"))?;
+    let kept = symbol_sizes(&elf)?;
+    let flash_bytes = kept
+        .iter()
+        .filter(|(symbol, _)| ours.contains_key(*symbol))
+        .map(|(_, size)| size)
+        .sum();
+    Ok(CBoardRun {
+        lines: sample_lines(&text),
+        counts,
+        flash_bytes,
+        ram_bytes: number("RAM")?,
+        stack_bytes: number("STACK")?,
+    })
+}
