@@ -4,9 +4,16 @@
 #include <math.h>
 #include "ecoli_x0_0p5.h"
 
-/* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */
+/* The bits of v (memcpy: no aliasing, no conversion). */
+static uint32_t bits_of(float v) {
+    uint32_t x;
+    memcpy(&x, &v, sizeof x);
+    return x;
+}
+
+/* 1 when v is finite: its exponent is not all ones (an integer test, as Rust's is_finite). */
 static int is_finite(float v) {
-    return (v - v) == 0.0f;
+    return (bits_of(v) & 0x7fffffffu) < 0x7f800000u;
 }
 
 /* 1 when every output and input of a sample is finite (u is not read without inputs). */
@@ -20,6 +27,12 @@ static int accepts(const float *y, const float *u) {
     return finite;
 }
 
+/* c ? a : b, one select per statement: compilers make it a conditional move (an IT block on
+ * Thumb-2), where a chain of them on one condition may become a branch. */
+static float choose_float(int c, float a, float b) {
+    return c ? a : b;
+}
+
 /* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */
 static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
     const uint32_t mask = 0u - (uint32_t)c;
@@ -27,13 +40,11 @@ static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
 }
 
 static float select_float(int c, float a, float b) {
-    uint32_t x, y;
-    memcpy(&x, &a, sizeof x);
-    memcpy(&y, &b, sizeof y);
-    x = select_bits(c, x, y);
+    uint32_t x = select_bits(c, bits_of(a), bits_of(b));
     memcpy(&a, &x, sizeof a);
     return a;
 }
+
 
 /* `P`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[6] = {
@@ -140,46 +151,31 @@ static const float SEGMENTS_1[1][2] = {
     { 0.0f, 0.43531778f }
 };
 
-/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
+/* floor(t) for 0 <= t, at most count - 1: a uniform table's segment. Any other t (negative, NaN,
+ * infinite) gives some segment, whose value evaluate replaces by r_min or r_max. The clamp is an
+ * unsigned minimum of the bits of |t|, which are ordered as the values: the conversion is always
+ * defined, and the same instructions run whatever t is. */
 static uint32_t uniform_segment(float t, uint32_t count) {
-    const float last = (float)(count - 1u);
-    const float below = select_float(t < last, t, last);
-    return (uint32_t)select_float(t >= 0.0f, below, 0.0f);
+    const uint32_t magnitude = bits_of(t) & 0x7fffffffu;
+    const uint32_t last = bits_of((float)(count - 1u));
+    const uint32_t least = magnitude < last ? magnitude : last;
+    float clamped;
+    memcpy(&clamped, &least, sizeof clamped);
+    return (uint32_t)clamped;
 }
 
 /* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above
- * t_max; by selects, as firmware::InverseTable (the same instructions whatever t is). */
+ * t_max (t_max >= 0: never both); as firmware::InverseTable, by one select per statement, which
+ * compilers make a conditional move (an IT block on Thumb-2): the same instructions whatever t is. */
 static void evaluate(float t, const float *segment, float start, float t_max, float r_min, float r_max,
                      float *value, ecoli_x0_0p5_saturation *saturation) {
-    const float inside = segment[0] + segment[1] * (t - start);
     const int low = !(t >= 0.0f);
-    const int out = low | (t > t_max);
-    const uint32_t flag = select_bits(low, (uint32_t)ECOLI_X0_0P5_LOW, (uint32_t)ECOLI_X0_0P5_HIGH);
-    *value = select_float(out, select_float(low, r_min, r_max), inside);
-    *saturation = (ecoli_x0_0p5_saturation)select_bits(out, flag, (uint32_t)ECOLI_X0_0P5_INSIDE);
-}
-
-/* Every target's estimate from a full window. */
-static void estimate_window(const ecoli_x0_0p5_map *observer, float *values, ecoli_x0_0p5_saturation *saturation) {
-    const unsigned next = observer->next;
-    const float t_0 = 26.752401f
-        + GAINS_0[0] * observer->y[next + 2u][0]
-        + GAINS_0[1] * observer->y[next + 2u][1]
-        + GAINS_0[2] * observer->y[next + 1u][0]
-        + GAINS_0[3] * observer->y[next + 1u][1]
-        + GAINS_0[4] * observer->y[next + 0u][0]
-        + GAINS_0[5] * observer->y[next + 0u][1];
-    const uint32_t k_0 = uniform_segment(t_0, 88u);
-    evaluate(t_0, SEGMENTS_0[k_0], 0.0f, 88.0f, 0.0f, 0.4457929f, &values[0], &saturation[0]);
-    const float t_1 = 0.022176465f
-        + GAINS_1[0] * observer->y[next + 2u][0]
-        + GAINS_1[1] * observer->y[next + 2u][1]
-        + GAINS_1[2] * observer->y[next + 1u][0]
-        + GAINS_1[3] * observer->y[next + 1u][1]
-        + GAINS_1[4] * observer->y[next + 0u][0]
-        + GAINS_1[5] * observer->y[next + 0u][1];
-    const uint32_t k_1 = uniform_segment(t_1, 1u);
-    evaluate(t_1, SEGMENTS_1[k_1], 0.0f, 1.0f, 0.0f, 0.43531778f, &values[1], &saturation[1]);
+    const int high = t > t_max;
+    float r = segment[0] + segment[1] * (t - start);
+    r = choose_float(high, r_max, r);
+    r = choose_float(low, r_min, r);
+    *value = r;
+    *saturation = (ecoli_x0_0p5_saturation)((unsigned)low | (unsigned)high << 1);
 }
 
 void ecoli_x0_0p5_map_init(ecoli_x0_0p5_map *observer) {
@@ -190,7 +186,11 @@ void ecoli_x0_0p5_map_init(ecoli_x0_0p5_map *observer) {
 ecoli_x0_0p5_status ecoli_x0_0p5_map_push(ecoli_x0_0p5_map *observer, const float *y, const float *u) {
     unsigned i;
     unsigned slot;
-    if (!accepts(y, u)) {
+    int finite = 1;
+    for (i = 0u; i < ECOLI_X0_0P5_OUTPUTS; ++i) {
+        finite &= is_finite(y[i]);
+    }
+    if (!finite) {
         return ECOLI_X0_0P5_REFUSED;
     }
     slot = observer->next;
@@ -200,15 +200,32 @@ ecoli_x0_0p5_status ecoli_x0_0p5_map_push(ecoli_x0_0p5_map *observer, const floa
     }
     (void)u;
     observer->next = slot + 1u >= ECOLI_X0_0P5_HORIZON ? 0u : slot + 1u;
-    observer->filled = observer->filled >= ECOLI_X0_0P5_HORIZON ? ECOLI_X0_0P5_HORIZON : observer->filled + 1u;
+    observer->filled += (unsigned)(observer->filled < ECOLI_X0_0P5_HORIZON);
     return ECOLI_X0_0P5_OK;
 }
 
 ecoli_x0_0p5_status ecoli_x0_0p5_map_estimate(const ecoli_x0_0p5_map *observer, float *values, ecoli_x0_0p5_saturation *saturation) {
+    const unsigned next = observer->next;
     if (observer->filled < ECOLI_X0_0P5_HORIZON) {
         return ECOLI_X0_0P5_NO_ESTIMATE_YET;
     }
-    estimate_window(observer, values, saturation);
+    const float t_0 = 26.752401f
+        + GAINS_0[0] * observer->y[next + 2u][0]
+        + GAINS_0[1] * observer->y[next + 2u][1]
+        + GAINS_0[2] * observer->y[next + 1u][0]
+        + GAINS_0[3] * observer->y[next + 1u][1]
+        + GAINS_0[4] * observer->y[next + 0u][0]
+        + GAINS_0[5] * observer->y[next + 0u][1];
+    const float t_1 = 0.022176465f
+        + GAINS_1[0] * observer->y[next + 2u][0]
+        + GAINS_1[1] * observer->y[next + 2u][1]
+        + GAINS_1[2] * observer->y[next + 1u][0]
+        + GAINS_1[3] * observer->y[next + 1u][1]
+        + GAINS_1[4] * observer->y[next + 0u][0]
+        + GAINS_1[5] * observer->y[next + 0u][1];
+    const uint32_t k_0 = uniform_segment(t_0, 88u);
+    evaluate(t_0, SEGMENTS_0[k_0], 0.0f, 88.0f, 0.0f, 0.4457929f, &values[0], &saturation[0]);
+    evaluate(t_1, SEGMENTS_1[0], 0.0f, 1.0f, 0.0f, 0.43531778f, &values[1], &saturation[1]);
     return ECOLI_X0_0P5_OK;
 }
 

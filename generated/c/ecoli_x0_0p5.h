@@ -5,6 +5,8 @@
 #ifndef ECOLI_X0_0P5_H
 #define ECOLI_X0_0P5_H
 
+#include <stddef.h>
+
 #define ECOLI_X0_0P5_OUTPUTS 2u
 #define ECOLI_X0_0P5_INPUTS 0u
 #define ECOLI_X0_0P5_TARGETS 2u

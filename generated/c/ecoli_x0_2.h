@@ -5,6 +5,8 @@
 #ifndef ECOLI_X0_2_H
 #define ECOLI_X0_2_H
 
+#include <stddef.h>
+
 #define ECOLI_X0_2_OUTPUTS 2u
 #define ECOLI_X0_2_INPUTS 0u
 #define ECOLI_X0_2_TARGETS 2u

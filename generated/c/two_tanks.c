@@ -4,9 +4,16 @@
 #include <math.h>
 #include "two_tanks.h"
 
-/* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */
+/* The bits of v (memcpy: no aliasing, no conversion). */
+static uint32_t bits_of(float v) {
+    uint32_t x;
+    memcpy(&x, &v, sizeof x);
+    return x;
+}
+
+/* 1 when v is finite: its exponent is not all ones (an integer test, as Rust's is_finite). */
 static int is_finite(float v) {
-    return (v - v) == 0.0f;
+    return (bits_of(v) & 0x7fffffffu) < 0x7f800000u;
 }
 
 /* 1 when every output and input of a sample is finite (u is not read without inputs). */
@@ -22,6 +29,12 @@ static int accepts(const float *y, const float *u) {
     return finite;
 }
 
+/* c ? a : b, one select per statement: compilers make it a conditional move (an IT block on
+ * Thumb-2), where a chain of them on one condition may become a branch. */
+static float choose_float(int c, float a, float b) {
+    return c ? a : b;
+}
+
 /* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */
 static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
     const uint32_t mask = 0u - (uint32_t)c;
@@ -29,13 +42,11 @@ static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
 }
 
 static float select_float(int c, float a, float b) {
-    uint32_t x, y;
-    memcpy(&x, &a, sizeof x);
-    memcpy(&y, &b, sizeof y);
-    x = select_bits(c, x, y);
+    uint32_t x = select_bits(c, bits_of(a), bits_of(b));
     memcpy(&a, &x, sizeof a);
     return a;
 }
+
 
 /* `h1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[20] = {
@@ -439,28 +450,70 @@ static const float SEGMENTS_1[186][2] = {
     { 4.7087693f, 0.109102465f }
 };
 
-/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
+/* floor(t) for 0 <= t, at most count - 1: a uniform table's segment. Any other t (negative, NaN,
+ * infinite) gives some segment, whose value evaluate replaces by r_min or r_max. The clamp is an
+ * unsigned minimum of the bits of |t|, which are ordered as the values: the conversion is always
+ * defined, and the same instructions run whatever t is. */
 static uint32_t uniform_segment(float t, uint32_t count) {
-    const float last = (float)(count - 1u);
-    const float below = select_float(t < last, t, last);
-    return (uint32_t)select_float(t >= 0.0f, below, 0.0f);
+    const uint32_t magnitude = bits_of(t) & 0x7fffffffu;
+    const uint32_t last = bits_of((float)(count - 1u));
+    const uint32_t least = magnitude < last ? magnitude : last;
+    float clamped;
+    memcpy(&clamped, &least, sizeof clamped);
+    return (uint32_t)clamped;
 }
 
 /* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above
- * t_max; by selects, as firmware::InverseTable (the same instructions whatever t is). */
+ * t_max (t_max >= 0: never both); as firmware::InverseTable, by one select per statement, which
+ * compilers make a conditional move (an IT block on Thumb-2): the same instructions whatever t is. */
 static void evaluate(float t, const float *segment, float start, float t_max, float r_min, float r_max,
                      float *value, two_tanks_saturation *saturation) {
-    const float inside = segment[0] + segment[1] * (t - start);
     const int low = !(t >= 0.0f);
-    const int out = low | (t > t_max);
-    const uint32_t flag = select_bits(low, (uint32_t)TWO_TANKS_LOW, (uint32_t)TWO_TANKS_HIGH);
-    *value = select_float(out, select_float(low, r_min, r_max), inside);
-    *saturation = (two_tanks_saturation)select_bits(out, flag, (uint32_t)TWO_TANKS_INSIDE);
+    const int high = t > t_max;
+    float r = segment[0] + segment[1] * (t - start);
+    r = choose_float(high, r_max, r);
+    r = choose_float(low, r_min, r);
+    *value = r;
+    *saturation = (two_tanks_saturation)((unsigned)low | (unsigned)high << 1);
 }
 
-/* Every target's estimate from a full window. */
-static void estimate_window(const two_tanks_map *observer, float *values, two_tanks_saturation *saturation) {
+void two_tanks_map_init(two_tanks_map *observer) {
+    observer->next = 0u;
+    observer->filled = 0u;
+}
+
+two_tanks_status two_tanks_map_push(two_tanks_map *observer, const float *y, const float *u) {
+    unsigned i;
+    unsigned slot;
+    int finite = 1;
+    for (i = 0u; i < TWO_TANKS_OUTPUTS; ++i) {
+        finite &= is_finite(y[i]);
+    }
+    for (i = 0u; i < TWO_TANKS_INPUTS; ++i) {
+        finite &= is_finite(u[i]);
+    }
+    if (!finite) {
+        return TWO_TANKS_REFUSED;
+    }
+    slot = observer->next;
+    for (i = 0u; i < TWO_TANKS_OUTPUTS; ++i) {
+        observer->y[slot][i] = y[i];
+        observer->y[slot + TWO_TANKS_HORIZON][i] = y[i];
+    }
+    for (i = 0u; i < TWO_TANKS_INPUTS; ++i) {
+        observer->u[slot][i] = u[i];
+        observer->u[slot + TWO_TANKS_HORIZON][i] = u[i];
+    }
+    observer->next = slot + 1u >= TWO_TANKS_HORIZON ? 0u : slot + 1u;
+    observer->filled += (unsigned)(observer->filled < TWO_TANKS_HORIZON);
+    return TWO_TANKS_OK;
+}
+
+two_tanks_status two_tanks_map_estimate(const two_tanks_map *observer, float *values, two_tanks_saturation *saturation) {
     const unsigned next = observer->next;
+    if (observer->filled < TWO_TANKS_HORIZON) {
+        return TWO_TANKS_NO_ESTIMATE_YET;
+    }
     const float t_0 = -60.96606f
         + GAINS_0[0] * observer->y[next + 9u][0]
         + GAINS_0[1] * observer->y[next + 8u][0]
@@ -482,8 +535,6 @@ static void estimate_window(const two_tanks_map *observer, float *values, two_ta
         + GAINS_0[17] * observer->u[next + 2u][0]
         + GAINS_0[18] * observer->u[next + 1u][0]
         + GAINS_0[19] * observer->u[next + 0u][0];
-    const uint32_t k_0 = uniform_segment(t_0, 194u);
-    evaluate(t_0, SEGMENTS_0[k_0], 0.0f, 194.0f, 4.3011494f, 26.20642f, &values[0], &saturation[0]);
     const float t_1 = -46.135227f
         + GAINS_1[0] * observer->y[next + 9u][0]
         + GAINS_1[1] * observer->y[next + 8u][0]
@@ -505,40 +556,10 @@ static void estimate_window(const two_tanks_map *observer, float *values, two_ta
         + GAINS_1[17] * observer->u[next + 2u][0]
         + GAINS_1[18] * observer->u[next + 1u][0]
         + GAINS_1[19] * observer->u[next + 0u][0];
+    const uint32_t k_0 = uniform_segment(t_0, 194u);
+    evaluate(t_0, SEGMENTS_0[k_0], 0.0f, 194.0f, 4.3011494f, 26.20642f, &values[0], &saturation[0]);
     const uint32_t k_1 = uniform_segment(t_1, 186u);
     evaluate(t_1, SEGMENTS_1[k_1], 0.0f, 186.0f, 4.715646f, 25.001827f, &values[1], &saturation[1]);
-}
-
-void two_tanks_map_init(two_tanks_map *observer) {
-    observer->next = 0u;
-    observer->filled = 0u;
-}
-
-two_tanks_status two_tanks_map_push(two_tanks_map *observer, const float *y, const float *u) {
-    unsigned i;
-    unsigned slot;
-    if (!accepts(y, u)) {
-        return TWO_TANKS_REFUSED;
-    }
-    slot = observer->next;
-    for (i = 0u; i < TWO_TANKS_OUTPUTS; ++i) {
-        observer->y[slot][i] = y[i];
-        observer->y[slot + TWO_TANKS_HORIZON][i] = y[i];
-    }
-    for (i = 0u; i < TWO_TANKS_INPUTS; ++i) {
-        observer->u[slot][i] = u[i];
-        observer->u[slot + TWO_TANKS_HORIZON][i] = u[i];
-    }
-    observer->next = slot + 1u >= TWO_TANKS_HORIZON ? 0u : slot + 1u;
-    observer->filled = observer->filled >= TWO_TANKS_HORIZON ? TWO_TANKS_HORIZON : observer->filled + 1u;
-    return TWO_TANKS_OK;
-}
-
-two_tanks_status two_tanks_map_estimate(const two_tanks_map *observer, float *values, two_tanks_saturation *saturation) {
-    if (observer->filled < TWO_TANKS_HORIZON) {
-        return TWO_TANKS_NO_ESTIMATE_YET;
-    }
-    estimate_window(observer, values, saturation);
     return TWO_TANKS_OK;
 }
 
@@ -1194,7 +1215,7 @@ two_tanks_status two_tanks_ekf_map_push(two_tanks_ekf_map *o, const float *y, co
         if (o->window.filled < TWO_TANKS_HORIZON) {
             return TWO_TANKS_OK;
         }
-        estimate_window(&o->window, all, all_flags);
+        (void)two_tanks_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         estimated = 1;
     }
@@ -1248,7 +1269,7 @@ static int restart_check(two_tanks_ekf_restart *o, const float *y, const float *
         return 0;
     }
     o->checked = 1;
-    estimate_window(&o->window, all, all_flags);
+    (void)two_tanks_map_estimate(&o->window, all, all_flags);
     started_ekf_map_states(all, map);
     if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
         return 0;
@@ -1633,7 +1654,7 @@ two_tanks_status two_tanks_corrected_push(two_tanks_corrected *o, const float *y
         if (o->window.filled < TWO_TANKS_HORIZON) {
             return TWO_TANKS_OK;
         }
-        estimate_window(&o->window, all, all_flags);
+        (void)two_tanks_map_estimate(&o->window, all, all_flags);
         corrected_map_states(all, map);
         estimated = 1;
     }

@@ -5,6 +5,8 @@
 #ifndef TWO_TANKS_H
 #define TWO_TANKS_H
 
+#include <stddef.h>
+
 #define TWO_TANKS_OUTPUTS 1u
 #define TWO_TANKS_INPUTS 1u
 #define TWO_TANKS_TARGETS 2u

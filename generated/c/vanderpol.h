@@ -5,6 +5,8 @@
 #ifndef VANDERPOL_H
 #define VANDERPOL_H
 
+#include <stddef.h>
+
 #define VANDERPOL_OUTPUTS 1u
 #define VANDERPOL_INPUTS 0u
 #define VANDERPOL_TARGETS 2u

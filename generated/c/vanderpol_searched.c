@@ -3,9 +3,16 @@
 #include <string.h>
 #include "vanderpol_searched.h"
 
-/* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */
+/* The bits of v (memcpy: no aliasing, no conversion). */
+static uint32_t bits_of(float v) {
+    uint32_t x;
+    memcpy(&x, &v, sizeof x);
+    return x;
+}
+
+/* 1 when v is finite: its exponent is not all ones (an integer test, as Rust's is_finite). */
 static int is_finite(float v) {
-    return (v - v) == 0.0f;
+    return (bits_of(v) & 0x7fffffffu) < 0x7f800000u;
 }
 
 /* 1 when every output and input of a sample is finite (u is not read without inputs). */
@@ -19,6 +26,12 @@ static int accepts(const float *y, const float *u) {
     return finite;
 }
 
+/* c ? a : b, one select per statement: compilers make it a conditional move (an IT block on
+ * Thumb-2), where a chain of them on one condition may become a branch. */
+static float choose_float(int c, float a, float b) {
+    return c ? a : b;
+}
+
 /* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */
 static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
     const uint32_t mask = 0u - (uint32_t)c;
@@ -26,13 +39,11 @@ static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
 }
 
 static float select_float(int c, float a, float b) {
-    uint32_t x, y;
-    memcpy(&x, &a, sizeof x);
-    memcpy(&y, &b, sizeof y);
-    x = select_bits(c, x, y);
+    uint32_t x = select_bits(c, bits_of(a), bits_of(b));
     memcpy(&a, &x, sizeof a);
     return a;
 }
+
 
 /* `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[16] = {
@@ -56,28 +67,51 @@ static const float SEGMENTS_1[1][2] = {
     { -4.6765766f, 9.353153f }
 };
 
-/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
-static uint32_t uniform_segment(float t, uint32_t count) {
-    const float last = (float)(count - 1u);
-    const float below = select_float(t < last, t, last);
-    return (uint32_t)select_float(t >= 0.0f, below, 0.0f);
-}
-
 /* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above
- * t_max; by selects, as firmware::InverseTable (the same instructions whatever t is). */
+ * t_max (t_max >= 0: never both); as firmware::InverseTable, by one select per statement, which
+ * compilers make a conditional move (an IT block on Thumb-2): the same instructions whatever t is. */
 static void evaluate(float t, const float *segment, float start, float t_max, float r_min, float r_max,
                      float *value, vanderpol_searched_saturation *saturation) {
-    const float inside = segment[0] + segment[1] * (t - start);
     const int low = !(t >= 0.0f);
-    const int out = low | (t > t_max);
-    const uint32_t flag = select_bits(low, (uint32_t)VANDERPOL_SEARCHED_LOW, (uint32_t)VANDERPOL_SEARCHED_HIGH);
-    *value = select_float(out, select_float(low, r_min, r_max), inside);
-    *saturation = (vanderpol_searched_saturation)select_bits(out, flag, (uint32_t)VANDERPOL_SEARCHED_INSIDE);
+    const int high = t > t_max;
+    float r = segment[0] + segment[1] * (t - start);
+    r = choose_float(high, r_max, r);
+    r = choose_float(low, r_min, r);
+    *value = r;
+    *saturation = (vanderpol_searched_saturation)((unsigned)low | (unsigned)high << 1);
 }
 
-/* Every target's estimate from a full window. */
-static void estimate_window(const vanderpol_searched_map *observer, float *values, vanderpol_searched_saturation *saturation) {
+void vanderpol_searched_map_init(vanderpol_searched_map *observer) {
+    observer->next = 0u;
+    observer->filled = 0u;
+}
+
+vanderpol_searched_status vanderpol_searched_map_push(vanderpol_searched_map *observer, const float *y, const float *u) {
+    unsigned i;
+    unsigned slot;
+    int finite = 1;
+    for (i = 0u; i < VANDERPOL_SEARCHED_OUTPUTS; ++i) {
+        finite &= is_finite(y[i]);
+    }
+    if (!finite) {
+        return VANDERPOL_SEARCHED_REFUSED;
+    }
+    slot = observer->next;
+    for (i = 0u; i < VANDERPOL_SEARCHED_OUTPUTS; ++i) {
+        observer->y[slot][i] = y[i];
+        observer->y[slot + VANDERPOL_SEARCHED_HORIZON][i] = y[i];
+    }
+    (void)u;
+    observer->next = slot + 1u >= VANDERPOL_SEARCHED_HORIZON ? 0u : slot + 1u;
+    observer->filled += (unsigned)(observer->filled < VANDERPOL_SEARCHED_HORIZON);
+    return VANDERPOL_SEARCHED_OK;
+}
+
+vanderpol_searched_status vanderpol_searched_map_estimate(const vanderpol_searched_map *observer, float *values, vanderpol_searched_saturation *saturation) {
     const unsigned next = observer->next;
+    if (observer->filled < VANDERPOL_SEARCHED_HORIZON) {
+        return VANDERPOL_SEARCHED_NO_ESTIMATE_YET;
+    }
     const float t_0 = 0.5003434f
         + GAINS_0[0] * observer->y[next + 15u][0]
         + GAINS_0[1] * observer->y[next + 14u][0]
@@ -95,8 +129,6 @@ static void estimate_window(const vanderpol_searched_map *observer, float *value
         + GAINS_0[13] * observer->y[next + 2u][0]
         + GAINS_0[14] * observer->y[next + 1u][0]
         + GAINS_0[15] * observer->y[next + 0u][0];
-    const uint32_t k_0 = uniform_segment(t_0, 1u);
-    evaluate(t_0, SEGMENTS_0[k_0], 0.0f, 1.0f, -2.0616221f, 2.0616221f, &values[0], &saturation[0]);
     const float t_1 = 0.5002161f
         + GAINS_1[0] * observer->y[next + 15u][0]
         + GAINS_1[1] * observer->y[next + 14u][0]
@@ -114,37 +146,8 @@ static void estimate_window(const vanderpol_searched_map *observer, float *value
         + GAINS_1[13] * observer->y[next + 2u][0]
         + GAINS_1[14] * observer->y[next + 1u][0]
         + GAINS_1[15] * observer->y[next + 0u][0];
-    const uint32_t k_1 = uniform_segment(t_1, 1u);
-    evaluate(t_1, SEGMENTS_1[k_1], 0.0f, 1.0f, -4.6765766f, 4.6765766f, &values[1], &saturation[1]);
-}
-
-void vanderpol_searched_map_init(vanderpol_searched_map *observer) {
-    observer->next = 0u;
-    observer->filled = 0u;
-}
-
-vanderpol_searched_status vanderpol_searched_map_push(vanderpol_searched_map *observer, const float *y, const float *u) {
-    unsigned i;
-    unsigned slot;
-    if (!accepts(y, u)) {
-        return VANDERPOL_SEARCHED_REFUSED;
-    }
-    slot = observer->next;
-    for (i = 0u; i < VANDERPOL_SEARCHED_OUTPUTS; ++i) {
-        observer->y[slot][i] = y[i];
-        observer->y[slot + VANDERPOL_SEARCHED_HORIZON][i] = y[i];
-    }
-    (void)u;
-    observer->next = slot + 1u >= VANDERPOL_SEARCHED_HORIZON ? 0u : slot + 1u;
-    observer->filled = observer->filled >= VANDERPOL_SEARCHED_HORIZON ? VANDERPOL_SEARCHED_HORIZON : observer->filled + 1u;
-    return VANDERPOL_SEARCHED_OK;
-}
-
-vanderpol_searched_status vanderpol_searched_map_estimate(const vanderpol_searched_map *observer, float *values, vanderpol_searched_saturation *saturation) {
-    if (observer->filled < VANDERPOL_SEARCHED_HORIZON) {
-        return VANDERPOL_SEARCHED_NO_ESTIMATE_YET;
-    }
-    estimate_window(observer, values, saturation);
+    evaluate(t_0, SEGMENTS_0[0], 0.0f, 1.0f, -2.0616221f, 2.0616221f, &values[0], &saturation[0]);
+    evaluate(t_1, SEGMENTS_1[0], 0.0f, 1.0f, -4.6765766f, 4.6765766f, &values[1], &saturation[1]);
     return VANDERPOL_SEARCHED_OK;
 }
 
@@ -715,7 +718,7 @@ vanderpol_searched_status vanderpol_searched_ekf_map_push(vanderpol_searched_ekf
         if (o->window.filled < VANDERPOL_SEARCHED_HORIZON) {
             return VANDERPOL_SEARCHED_OK;
         }
-        estimate_window(&o->window, all, all_flags);
+        (void)vanderpol_searched_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         estimated = 1;
     }
@@ -769,7 +772,7 @@ static int restart_check(vanderpol_searched_ekf_restart *o, const float *y, cons
         return 0;
     }
     o->checked = 1;
-    estimate_window(&o->window, all, all_flags);
+    (void)vanderpol_searched_map_estimate(&o->window, all, all_flags);
     started_ekf_map_states(all, map);
     if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
         return 0;
@@ -1181,7 +1184,7 @@ vanderpol_searched_status vanderpol_searched_corrected_push(vanderpol_searched_c
         if (o->window.filled < VANDERPOL_SEARCHED_HORIZON) {
             return VANDERPOL_SEARCHED_OK;
         }
-        estimate_window(&o->window, all, all_flags);
+        (void)vanderpol_searched_map_estimate(&o->window, all, all_flags);
         corrected_map_states(all, map);
         estimated = 1;
     }

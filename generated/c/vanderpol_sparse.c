@@ -3,9 +3,16 @@
 #include <string.h>
 #include "vanderpol_sparse.h"
 
-/* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */
+/* The bits of v (memcpy: no aliasing, no conversion). */
+static uint32_t bits_of(float v) {
+    uint32_t x;
+    memcpy(&x, &v, sizeof x);
+    return x;
+}
+
+/* 1 when v is finite: its exponent is not all ones (an integer test, as Rust's is_finite). */
 static int is_finite(float v) {
-    return (v - v) == 0.0f;
+    return (bits_of(v) & 0x7fffffffu) < 0x7f800000u;
 }
 
 /* 1 when every output and input of a sample is finite (u is not read without inputs). */
@@ -19,6 +26,12 @@ static int accepts(const float *y, const float *u) {
     return finite;
 }
 
+/* c ? a : b, one select per statement: compilers make it a conditional move (an IT block on
+ * Thumb-2), where a chain of them on one condition may become a branch. */
+static float choose_float(int c, float a, float b) {
+    return c ? a : b;
+}
+
 /* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */
 static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
     const uint32_t mask = 0u - (uint32_t)c;
@@ -26,13 +39,11 @@ static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
 }
 
 static float select_float(int c, float a, float b) {
-    uint32_t x, y;
-    memcpy(&x, &a, sizeof x);
-    memcpy(&y, &b, sizeof y);
-    x = select_bits(c, x, y);
+    uint32_t x = select_bits(c, bits_of(a), bits_of(b));
     memcpy(&a, &x, sizeof a);
     return a;
 }
+
 
 /* `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[19] = {
@@ -58,46 +69,18 @@ static const float SEGMENTS_1[1][2] = {
     { -4.6765766f, 9.353153f }
 };
 
-/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
-static uint32_t uniform_segment(float t, uint32_t count) {
-    const float last = (float)(count - 1u);
-    const float below = select_float(t < last, t, last);
-    return (uint32_t)select_float(t >= 0.0f, below, 0.0f);
-}
-
 /* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above
- * t_max; by selects, as firmware::InverseTable (the same instructions whatever t is). */
+ * t_max (t_max >= 0: never both); as firmware::InverseTable, by one select per statement, which
+ * compilers make a conditional move (an IT block on Thumb-2): the same instructions whatever t is. */
 static void evaluate(float t, const float *segment, float start, float t_max, float r_min, float r_max,
                      float *value, vanderpol_sparse_saturation *saturation) {
-    const float inside = segment[0] + segment[1] * (t - start);
     const int low = !(t >= 0.0f);
-    const int out = low | (t > t_max);
-    const uint32_t flag = select_bits(low, (uint32_t)VANDERPOL_SPARSE_LOW, (uint32_t)VANDERPOL_SPARSE_HIGH);
-    *value = select_float(out, select_float(low, r_min, r_max), inside);
-    *saturation = (vanderpol_sparse_saturation)select_bits(out, flag, (uint32_t)VANDERPOL_SPARSE_INSIDE);
-}
-
-/* Every target's estimate from a full window. */
-static void estimate_window(const vanderpol_sparse_map *observer, float *values, vanderpol_sparse_saturation *saturation) {
-    const unsigned next = observer->next;
-    const float t_0 = 0.50028557f
-        + GAINS_0[5] * observer->y[next + 13u][0]
-        + GAINS_0[8] * observer->y[next + 10u][0]
-        + GAINS_0[10] * observer->y[next + 8u][0]
-        + GAINS_0[12] * observer->y[next + 6u][0]
-        + GAINS_0[13] * observer->y[next + 5u][0]
-        + GAINS_0[14] * observer->y[next + 4u][0];
-    const uint32_t k_0 = uniform_segment(t_0, 1u);
-    evaluate(t_0, SEGMENTS_0[k_0], 0.0f, 1.0f, -2.0616221f, 2.0616221f, &values[0], &saturation[0]);
-    const float t_1 = 0.5003894f
-        + GAINS_1[0] * observer->y[next + 18u][0]
-        + GAINS_1[1] * observer->y[next + 17u][0]
-        + GAINS_1[2] * observer->y[next + 16u][0]
-        + GAINS_1[9] * observer->y[next + 9u][0]
-        + GAINS_1[11] * observer->y[next + 7u][0]
-        + GAINS_1[16] * observer->y[next + 2u][0];
-    const uint32_t k_1 = uniform_segment(t_1, 1u);
-    evaluate(t_1, SEGMENTS_1[k_1], 0.0f, 1.0f, -4.6765766f, 4.6765766f, &values[1], &saturation[1]);
+    const int high = t > t_max;
+    float r = segment[0] + segment[1] * (t - start);
+    r = choose_float(high, r_max, r);
+    r = choose_float(low, r_min, r);
+    *value = r;
+    *saturation = (vanderpol_sparse_saturation)((unsigned)low | (unsigned)high << 1);
 }
 
 void vanderpol_sparse_map_init(vanderpol_sparse_map *observer) {
@@ -108,7 +91,11 @@ void vanderpol_sparse_map_init(vanderpol_sparse_map *observer) {
 vanderpol_sparse_status vanderpol_sparse_map_push(vanderpol_sparse_map *observer, const float *y, const float *u) {
     unsigned i;
     unsigned slot;
-    if (!accepts(y, u)) {
+    int finite = 1;
+    for (i = 0u; i < VANDERPOL_SPARSE_OUTPUTS; ++i) {
+        finite &= is_finite(y[i]);
+    }
+    if (!finite) {
         return VANDERPOL_SPARSE_REFUSED;
     }
     slot = observer->next;
@@ -118,15 +105,31 @@ vanderpol_sparse_status vanderpol_sparse_map_push(vanderpol_sparse_map *observer
     }
     (void)u;
     observer->next = slot + 1u >= VANDERPOL_SPARSE_HORIZON ? 0u : slot + 1u;
-    observer->filled = observer->filled >= VANDERPOL_SPARSE_HORIZON ? VANDERPOL_SPARSE_HORIZON : observer->filled + 1u;
+    observer->filled += (unsigned)(observer->filled < VANDERPOL_SPARSE_HORIZON);
     return VANDERPOL_SPARSE_OK;
 }
 
 vanderpol_sparse_status vanderpol_sparse_map_estimate(const vanderpol_sparse_map *observer, float *values, vanderpol_sparse_saturation *saturation) {
+    const unsigned next = observer->next;
     if (observer->filled < VANDERPOL_SPARSE_HORIZON) {
         return VANDERPOL_SPARSE_NO_ESTIMATE_YET;
     }
-    estimate_window(observer, values, saturation);
+    const float t_0 = 0.50028557f
+        + GAINS_0[5] * observer->y[next + 13u][0]
+        + GAINS_0[8] * observer->y[next + 10u][0]
+        + GAINS_0[10] * observer->y[next + 8u][0]
+        + GAINS_0[12] * observer->y[next + 6u][0]
+        + GAINS_0[13] * observer->y[next + 5u][0]
+        + GAINS_0[14] * observer->y[next + 4u][0];
+    const float t_1 = 0.5003894f
+        + GAINS_1[0] * observer->y[next + 18u][0]
+        + GAINS_1[1] * observer->y[next + 17u][0]
+        + GAINS_1[2] * observer->y[next + 16u][0]
+        + GAINS_1[9] * observer->y[next + 9u][0]
+        + GAINS_1[11] * observer->y[next + 7u][0]
+        + GAINS_1[16] * observer->y[next + 2u][0];
+    evaluate(t_0, SEGMENTS_0[0], 0.0f, 1.0f, -2.0616221f, 2.0616221f, &values[0], &saturation[0]);
+    evaluate(t_1, SEGMENTS_1[0], 0.0f, 1.0f, -4.6765766f, 4.6765766f, &values[1], &saturation[1]);
     return VANDERPOL_SPARSE_OK;
 }
 
@@ -697,7 +700,7 @@ vanderpol_sparse_status vanderpol_sparse_ekf_map_push(vanderpol_sparse_ekf_map *
         if (o->window.filled < VANDERPOL_SPARSE_HORIZON) {
             return VANDERPOL_SPARSE_OK;
         }
-        estimate_window(&o->window, all, all_flags);
+        (void)vanderpol_sparse_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         estimated = 1;
     }
@@ -751,7 +754,7 @@ static int restart_check(vanderpol_sparse_ekf_restart *o, const float *y, const 
         return 0;
     }
     o->checked = 1;
-    estimate_window(&o->window, all, all_flags);
+    (void)vanderpol_sparse_map_estimate(&o->window, all, all_flags);
     started_ekf_map_states(all, map);
     if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
         return 0;
@@ -1190,7 +1193,7 @@ vanderpol_sparse_status vanderpol_sparse_corrected_push(vanderpol_sparse_correct
         if (o->window.filled < VANDERPOL_SPARSE_HORIZON) {
             return VANDERPOL_SPARSE_OK;
         }
-        estimate_window(&o->window, all, all_flags);
+        (void)vanderpol_sparse_map_estimate(&o->window, all, all_flags);
         corrected_map_states(all, map);
         estimated = 1;
     }

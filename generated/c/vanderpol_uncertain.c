@@ -3,9 +3,16 @@
 #include <string.h>
 #include "vanderpol_uncertain.h"
 
-/* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */
+/* The bits of v (memcpy: no aliasing, no conversion). */
+static uint32_t bits_of(float v) {
+    uint32_t x;
+    memcpy(&x, &v, sizeof x);
+    return x;
+}
+
+/* 1 when v is finite: its exponent is not all ones (an integer test, as Rust's is_finite). */
 static int is_finite(float v) {
-    return (v - v) == 0.0f;
+    return (bits_of(v) & 0x7fffffffu) < 0x7f800000u;
 }
 
 /* 1 when every output and input of a sample is finite (u is not read without inputs). */
@@ -19,6 +26,12 @@ static int accepts(const float *y, const float *u) {
     return finite;
 }
 
+/* c ? a : b, one select per statement: compilers make it a conditional move (an IT block on
+ * Thumb-2), where a chain of them on one condition may become a branch. */
+static float choose_float(int c, float a, float b) {
+    return c ? a : b;
+}
+
 /* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */
 static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
     const uint32_t mask = 0u - (uint32_t)c;
@@ -26,13 +39,11 @@ static uint32_t select_bits(int c, uint32_t a, uint32_t b) {
 }
 
 static float select_float(int c, float a, float b) {
-    uint32_t x, y;
-    memcpy(&x, &a, sizeof x);
-    memcpy(&y, &b, sizeof y);
-    x = select_bits(c, x, y);
+    uint32_t x = select_bits(c, bits_of(a), bits_of(b));
     memcpy(&a, &x, sizeof a);
     return a;
 }
+
 
 /* `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[10] = {
@@ -153,28 +164,64 @@ static const float SEGMENTS_1[2][2] = {
     { -4.701727f, 4.7665486f }
 };
 
-/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */
+/* floor(t) for 0 <= t, at most count - 1: a uniform table's segment. Any other t (negative, NaN,
+ * infinite) gives some segment, whose value evaluate replaces by r_min or r_max. The clamp is an
+ * unsigned minimum of the bits of |t|, which are ordered as the values: the conversion is always
+ * defined, and the same instructions run whatever t is. */
 static uint32_t uniform_segment(float t, uint32_t count) {
-    const float last = (float)(count - 1u);
-    const float below = select_float(t < last, t, last);
-    return (uint32_t)select_float(t >= 0.0f, below, 0.0f);
+    const uint32_t magnitude = bits_of(t) & 0x7fffffffu;
+    const uint32_t last = bits_of((float)(count - 1u));
+    const uint32_t least = magnitude < last ? magnitude : last;
+    float clamped;
+    memcpy(&clamped, &least, sizeof clamped);
+    return (uint32_t)clamped;
 }
 
 /* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above
- * t_max; by selects, as firmware::InverseTable (the same instructions whatever t is). */
+ * t_max (t_max >= 0: never both); as firmware::InverseTable, by one select per statement, which
+ * compilers make a conditional move (an IT block on Thumb-2): the same instructions whatever t is. */
 static void evaluate(float t, const float *segment, float start, float t_max, float r_min, float r_max,
                      float *value, vanderpol_uncertain_saturation *saturation) {
-    const float inside = segment[0] + segment[1] * (t - start);
     const int low = !(t >= 0.0f);
-    const int out = low | (t > t_max);
-    const uint32_t flag = select_bits(low, (uint32_t)VANDERPOL_UNCERTAIN_LOW, (uint32_t)VANDERPOL_UNCERTAIN_HIGH);
-    *value = select_float(out, select_float(low, r_min, r_max), inside);
-    *saturation = (vanderpol_uncertain_saturation)select_bits(out, flag, (uint32_t)VANDERPOL_UNCERTAIN_INSIDE);
+    const int high = t > t_max;
+    float r = segment[0] + segment[1] * (t - start);
+    r = choose_float(high, r_max, r);
+    r = choose_float(low, r_min, r);
+    *value = r;
+    *saturation = (vanderpol_uncertain_saturation)((unsigned)low | (unsigned)high << 1);
 }
 
-/* Every target's estimate from a full window. */
-static void estimate_window(const vanderpol_uncertain_map *observer, float *values, vanderpol_uncertain_saturation *saturation) {
+void vanderpol_uncertain_map_init(vanderpol_uncertain_map *observer) {
+    observer->next = 0u;
+    observer->filled = 0u;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_map_push(vanderpol_uncertain_map *observer, const float *y, const float *u) {
+    unsigned i;
+    unsigned slot;
+    int finite = 1;
+    for (i = 0u; i < VANDERPOL_UNCERTAIN_OUTPUTS; ++i) {
+        finite &= is_finite(y[i]);
+    }
+    if (!finite) {
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    slot = observer->next;
+    for (i = 0u; i < VANDERPOL_UNCERTAIN_OUTPUTS; ++i) {
+        observer->y[slot][i] = y[i];
+        observer->y[slot + VANDERPOL_UNCERTAIN_HORIZON][i] = y[i];
+    }
+    (void)u;
+    observer->next = slot + 1u >= VANDERPOL_UNCERTAIN_HORIZON ? 0u : slot + 1u;
+    observer->filled += (unsigned)(observer->filled < VANDERPOL_UNCERTAIN_HORIZON);
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_map_estimate(const vanderpol_uncertain_map *observer, float *values, vanderpol_uncertain_saturation *saturation) {
     const unsigned next = observer->next;
+    if (observer->filled < VANDERPOL_UNCERTAIN_HORIZON) {
+        return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
+    }
     const float t_0 = 54.02016f
         + GAINS_0[0] * observer->y[next + 9u][0]
         + GAINS_0[1] * observer->y[next + 8u][0]
@@ -186,8 +233,6 @@ static void estimate_window(const vanderpol_uncertain_map *observer, float *valu
         + GAINS_0[7] * observer->y[next + 2u][0]
         + GAINS_0[8] * observer->y[next + 1u][0]
         + GAINS_0[9] * observer->y[next + 0u][0];
-    const uint32_t k_0 = uniform_segment(t_0, 99u);
-    evaluate(t_0, SEGMENTS_0[k_0], 0.0f, 99.0f, -2.4087043f, 2.3542836f, &values[0], &saturation[0]);
     const float t_1 = 0.9872462f
         + GAINS_1[0] * observer->y[next + 9u][0]
         + GAINS_1[1] * observer->y[next + 8u][0]
@@ -199,37 +244,10 @@ static void estimate_window(const vanderpol_uncertain_map *observer, float *valu
         + GAINS_1[7] * observer->y[next + 2u][0]
         + GAINS_1[8] * observer->y[next + 1u][0]
         + GAINS_1[9] * observer->y[next + 0u][0];
+    const uint32_t k_0 = uniform_segment(t_0, 99u);
+    evaluate(t_0, SEGMENTS_0[k_0], 0.0f, 99.0f, -2.4087043f, 2.3542836f, &values[0], &saturation[0]);
     const uint32_t k_1 = uniform_segment(t_1, 2u);
     evaluate(t_1, SEGMENTS_1[k_1], 0.0f, 2.0f, -4.7017317f, 4.83137f, &values[1], &saturation[1]);
-}
-
-void vanderpol_uncertain_map_init(vanderpol_uncertain_map *observer) {
-    observer->next = 0u;
-    observer->filled = 0u;
-}
-
-vanderpol_uncertain_status vanderpol_uncertain_map_push(vanderpol_uncertain_map *observer, const float *y, const float *u) {
-    unsigned i;
-    unsigned slot;
-    if (!accepts(y, u)) {
-        return VANDERPOL_UNCERTAIN_REFUSED;
-    }
-    slot = observer->next;
-    for (i = 0u; i < VANDERPOL_UNCERTAIN_OUTPUTS; ++i) {
-        observer->y[slot][i] = y[i];
-        observer->y[slot + VANDERPOL_UNCERTAIN_HORIZON][i] = y[i];
-    }
-    (void)u;
-    observer->next = slot + 1u >= VANDERPOL_UNCERTAIN_HORIZON ? 0u : slot + 1u;
-    observer->filled = observer->filled >= VANDERPOL_UNCERTAIN_HORIZON ? VANDERPOL_UNCERTAIN_HORIZON : observer->filled + 1u;
-    return VANDERPOL_UNCERTAIN_OK;
-}
-
-vanderpol_uncertain_status vanderpol_uncertain_map_estimate(const vanderpol_uncertain_map *observer, float *values, vanderpol_uncertain_saturation *saturation) {
-    if (observer->filled < VANDERPOL_UNCERTAIN_HORIZON) {
-        return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
-    }
-    estimate_window(observer, values, saturation);
     return VANDERPOL_UNCERTAIN_OK;
 }
 
@@ -802,7 +820,7 @@ vanderpol_uncertain_status vanderpol_uncertain_ekf_map_push(vanderpol_uncertain_
         if (o->window.filled < VANDERPOL_UNCERTAIN_HORIZON) {
             return VANDERPOL_UNCERTAIN_OK;
         }
-        estimate_window(&o->window, all, all_flags);
+        (void)vanderpol_uncertain_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         estimated = 1;
     }
@@ -856,7 +874,7 @@ static int restart_check(vanderpol_uncertain_ekf_restart *o, const float *y, con
         return 0;
     }
     o->checked = 1;
-    estimate_window(&o->window, all, all_flags);
+    (void)vanderpol_uncertain_map_estimate(&o->window, all, all_flags);
     started_ekf_map_states(all, map);
     if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
         return 0;
@@ -1214,7 +1232,7 @@ vanderpol_uncertain_status vanderpol_uncertain_corrected_push(vanderpol_uncertai
         if (o->window.filled < VANDERPOL_UNCERTAIN_HORIZON) {
             return VANDERPOL_UNCERTAIN_OK;
         }
-        estimate_window(&o->window, all, all_flags);
+        (void)vanderpol_uncertain_map_estimate(&o->window, all, all_flags);
         corrected_map_states(all, map);
         estimated = 1;
     }

@@ -131,3 +131,39 @@ pub fn with_table(page: &str, table: &str) -> Result<String, String> {
     };
     Ok(format!("{}{begin}{table}{}", &page[..start], &page[stop..]))
 }
+
+/// Where the C table starts and ends in [`PAGE`].
+const C_MARKERS: (&str, &str) = ("<!-- c-on-target:begin -->\n", "<!-- c-on-target:end -->");
+
+/// `page` with the C table (`on_target::c_table`) between its markers.
+pub fn with_c_table(page: &str, table: &str) -> Result<String, String> {
+    let (begin, end) = C_MARKERS;
+    let (Some(start), Some(stop)) = (page.find(begin), page.find(end)) else {
+        return Err(format!("{PAGE} has no C on-target markers"));
+    };
+    Ok(format!("{}{begin}{table}{}", &page[..start], &page[stop..]))
+}
+
+/// The C table as `page` shows it (between its markers).
+pub fn c_table_of(page: &str) -> Option<&str> {
+    let (begin, end) = C_MARKERS;
+    let start = page.find(begin)? + begin.len();
+    Some(&page[start..page.find(end)?])
+}
+
+/// The median instructions per steady sample of design `name`'s Rust observer of `kind`, as the
+/// on-target table of `page` gives it.
+pub fn rust_median(page: &str, name: &str, kind: Kind) -> Option<u64> {
+    let observer = match kind {
+        Kind::Map => "map_observer()",
+        Kind::Ekf => "ekf()",
+        Kind::Corrected => "CorrectedObserver",
+        Kind::StartedEkf => "StartedEkfObserver",
+        Kind::RestartedEkf => "RestartedEkfObserver",
+        Kind::Mhe => "MheObserver",
+    };
+    let row = page
+        .lines()
+        .find(|l| l.starts_with(&format!("| `{name}` | `{observer}`")))?;
+    row.split(" | ").nth(5)?.split(" / ").nth(1)?.trim().parse().ok()
+}

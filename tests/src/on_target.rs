@@ -21,6 +21,7 @@ include!(concat!(env!("OUT_DIR"), "/started_observers.rs"));
 mod accuracy;
 mod bit_exact;
 mod c_build;
+mod c_cases;
 mod c_observers;
 mod elf;
 mod figures;
@@ -35,6 +36,9 @@ mod unavailable;
 pub use accuracy::{compare_ekf_with_f64, compare_started_with_f64, compare_with_library, ekf_largest_difference};
 pub use bit_exact::{bits_and_flags, chip_flag, differences, ekf_differences, host_ekf, host_samples, HostEkfSample};
 pub use c_build::{run_c_counted, BOARD_FLAGS};
+pub use c_cases::{
+    c_table, compare, extended, inexact, run_shipped_on_board, shipped_cases, Case, INEXACT, LIBM_TOLERANCE,
+};
 pub use c_observers::{c_harness, run_c_observer, rust_lines, sample_lines, CBoardRun, STRICT_C_FLAGS};
 pub use elf::{sizes, Program};
 pub use figures::{spread, Figures};

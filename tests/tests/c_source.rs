@@ -1,158 +1,42 @@
 //! Every shipped design's observers as C99 source (`generated/c/<name>.h`, `.c`, issue 33): every
 //! kind but `mhe` compiles without a warning under strict flags, with the system's `cc` and with
 //! `clang` when it is installed, and run over the design's recorded sequence (refused samples
-//! included) gives, sample for sample, the Rust observer's acceptance, estimate bits and saturation
-//! flags, on the host and on the emulated Cortex-M4F; where the model calls a `<math.h>` function that
-//! is not correctly rounded (E. coli's `expf`), the estimates are held to [`LIBM_TOLERANCE`] instead.
+//! included, then samples that saturate every table both ways) gives, sample for sample, the Rust
+//! observer's acceptance, estimate bits and saturation flags, on the host and on the emulated
+//! Cortex-M4F; where the model calls a `<math.h>` function that is not correctly rounded (E. coli's
+//! `expf`), the estimates are held to `LIBM_TOLERANCE` instead.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use integration_tests::on_target::{c_harness, run_c_observer, rust_lines, sample_lines, Unavailable, STRICT_C_FLAGS};
+use integration_tests::chip_table;
+use integration_tests::on_target::{
+    c_table, compare, inexact, run_c_observer, run_shipped_on_board, sample_lines, shipped_cases, Case, Unavailable,
+    STRICT_C_FLAGS,
+};
 use integration_tests::workspace_root;
 
-/// `<math.h>` functions whose result may differ by an ulp between C libraries and Rust's `libm`
-/// (the correctly rounded `sqrtf`, `fabsf`, `floorf`, `fminf`, … give the same bits everywhere).
-const INEXACT: [&str; 17] = [
-    "expf(", "logf(", "log2f(", "log10f(", "powf(", "sinf(", "cosf(", "tanf(", "asinf(", "acosf(", "atanf(", "atan2f(",
-    "sinhf(", "coshf(", "tanhf(", "cbrtf(", "asinhf(",
-];
-
-/// Where a design's C calls an [`INEXACT`] function: the largest |C − Rust| of an estimate allowed.
-/// The same bound `on_target.rs` holds the chip's f32 followers to against the host's f64 (measured
-/// there at most 9e-6); newlib's and glibc's `expf` against Rust's `libm` measure far below it (the
-/// test prints the figure).
-const LIBM_TOLERANCE: f32 = 1e-3;
-
-/// One observer of a design: the C names, the sequence, and the Rust observer's lines.
-struct Case {
-    name: &'static str,
-    kind: &'static str,
-    ys: Vec<Vec<u32>>,
-    us: Vec<Vec<u32>>,
-    shape: (usize, usize, usize),
-    horizon: usize,
-    expected: Vec<String>,
-}
-
-impl Case {
-    fn harness(&self) -> String {
-        c_harness(self.name, self.kind, &self.ys, &self.us, self.shape)
-    }
-}
-
-/// The case of observer `$observer` (kind `$kind`) of design module `$d`.
-macro_rules! case {
-    ($d:path, $name:expr, $kind:expr, $observer:expr) => {{
-        use $d as d;
-        let ys: Vec<Vec<f32>> = d::RECORDED_Y.iter().map(|y| y.to_vec()).collect();
-        let us: Vec<Vec<f32>> = d::RECORDED_U.iter().map(|u| u.to_vec()).collect();
-        let bits = |rows: &[Vec<f32>]| -> Vec<Vec<u32>> {
-            rows.iter().map(|r| r.iter().map(|v| v.to_bits()).collect()).collect()
-        };
-        let expected = rust_lines(
-            &ys,
-            &us,
-            $observer,
-            |o, y, u| o.push(y.try_into().unwrap(), u.try_into().unwrap()).is_ok(),
-            |o| {
-                o.estimate()
-                    .map(|e| e.iter().map(|e| (e.value, e.saturation)).collect())
-            },
-        );
-        Case {
-            name: $name,
-            kind: $kind,
-            ys: bits(&ys),
-            us: bits(&us),
-            shape: (d::OUTPUTS, d::INPUTS, d::TARGETS),
-            horizon: d::HORIZON,
-            expected,
-        }
-    }};
-}
-
-/// Every C observer of every shipped design: the map, the EKF from the box centre, and the observers
-/// the map starts or checks (all but the moving-horizon one, which has no C form).
-fn shipped_cases() -> Vec<Case> {
-    let mut cases = Vec::new();
-    macro_rules! design {
-        ($design:ident) => {{
-            use generated::$design as m;
-            cases.push(case!(generated::$design, stringify!($design), "map", m::map_observer()));
-            cases.push(case!(
-                generated::$design,
-                stringify!($design),
-                "ekf_box",
-                m::BoxEkfObserver::new()
-            ));
-        }};
-    }
-    generated::for_each_design!(design);
-    macro_rules! started {
-        ($design:ident, Mhe, $type:ident) => {};
-        ($design:ident, $kind:ident, $type:ident) => {{
-            let kind = integration_tests::on_target::Kind::$kind.report_name();
-            cases.push(case!(
-                generated::$design,
-                stringify!($design),
-                kind,
-                generated::$design::$type::new()
-            ));
-        }};
-    }
-    integration_tests::for_each_started_observer!(started);
-    cases
-}
-
-/// Whether design `name`'s C in `c` calls an [`INEXACT`] function.
-fn inexact(c: &Path, name: &str) -> bool {
-    let source = std::fs::read_to_string(c.join(format!("{name}.c"))).unwrap();
-    INEXACT.iter().any(|f| source.contains(f))
-}
-
-/// `c` against `rust`, line by line: the same bits, or with `tolerant` the same statuses and flags
-/// and every estimate within [`LIBM_TOLERANCE`]; the largest difference.
-fn compare(what: &str, c: &[String], rust: &[String], tolerant: bool) -> f32 {
-    assert_eq!(c.len(), rust.len(), "{what}: lines");
-    let mut largest = 0.0f32;
-    for (k, (c, rust)) in c.iter().zip(rust).enumerate() {
-        if !tolerant {
-            assert_eq!(c, rust, "{what} sample {k}: C, then Rust");
-            continue;
-        }
-        let (a, b): (Vec<&str>, Vec<&str>) = (c.split(' ').collect(), rust.split(' ').collect());
-        assert_eq!(a.len(), b.len(), "{what} sample {k}: {c} against {rust}");
-        for (i, (x, y)) in a.iter().zip(&b).enumerate() {
-            if i >= 2 && i % 2 == 0 {
-                let value = |hex: &str| f32::from_bits(u32::from_str_radix(hex, 16).unwrap());
-                let difference = (value(x) - value(y)).abs();
-                assert!(difference <= LIBM_TOLERANCE, "{what} sample {k}: {c} against {rust}");
-                largest = largest.max(difference);
-            } else {
-                assert_eq!(x, y, "{what} sample {k}: {c} against {rust}");
-            }
-        }
-    }
-    largest
-}
-
 #[test]
-fn the_tolerant_comparison_bites() {
+fn the_comparison_bites() {
     let rust = vec!["0 0 3f800000 0".to_owned()];
-    // 1 + 2^-10 is within the tolerance; 1.0039 is not; a flag or a status never may differ.
-    assert!(compare("within", &["0 0 3f800400 0".to_owned()], &rust, true) > 0.0);
-    for wrong in ["0 0 3f808000 0", "0 0 3f800000 2", "1 0 3f800000 0"] {
-        let caught = std::panic::catch_unwind(|| compare("beyond", &[wrong.to_owned()], &rust, true));
-        assert!(caught.is_err(), "{wrong} passed");
+    // 1 + 2^-10 is within the tolerance where a C library's function may differ, not otherwise;
+    // 1.0039 never is; a flag or a status never may differ.
+    assert!(compare("within", &["0 0 3f800400 0".to_owned()], &rust, true).unwrap() > 0.0);
+    assert!(compare("exact", &["0 0 3f800400 0".to_owned()], &rust, false).is_err());
+    for wrong in ["0 0 3f808000 0", "0 0 3f800000 2", "1 0 3f800000 0", "0 2"] {
+        assert!(
+            compare("beyond", &[wrong.to_owned()], &rust, true).is_err(),
+            "{wrong} passed"
+        );
     }
 }
 
-/// Compiles `harness` with design `name`'s C in `c` by `compiler` at `-O2`, and runs it; `None` when
-/// the compiler is not installed.
-fn compile_and_run(compiler: &str, dir: &Path, c: &Path, name: &str, kind: &str, harness: &str) -> Option<Vec<String>> {
+/// Compiles `case`'s harness with its design's C in `c` by `compiler` at `-O2`, and runs it; `None`
+/// when the compiler is not installed.
+fn compile_and_run(compiler: &str, dir: &Path, c: &Path, case: &Case) -> Option<Vec<String>> {
+    let (name, kind) = (case.name, case.kind);
     let source = dir.join(format!("{name}_{kind}_harness.c"));
-    std::fs::write(&source, harness).unwrap();
+    std::fs::write(&source, case.harness()).unwrap();
     let exe = dir.join(format!("{name}_{kind}-{compiler}"));
     let built = Command::new(compiler)
         .args(STRICT_C_FLAGS)
@@ -194,16 +78,15 @@ fn check_on_host(cases: &[Case], c: &Path, dir: &Path) -> Vec<String> {
             case.name
         );
         let tolerant = inexact(c, case.name);
-        let harness = case.harness();
-        let cc = compile_and_run("cc", dir, c, case.name, case.kind, &harness);
+        let cc = compile_and_run("cc", dir, c, case);
         if cc.is_none() && std::env::var_os("CI").is_some() {
             panic!("CI needs a C compiler (cc)");
         }
-        let clang = compile_and_run("clang", dir, c, case.name, case.kind, &harness);
+        let clang = compile_and_run("clang", dir, c, case);
         for (compiler, lines) in [("cc", cc), ("clang", clang)] {
             let Some(lines) = lines else { continue };
             let what = format!("{} {} ({compiler})", case.name, case.kind);
-            let largest = compare(&what, &lines, &case.expected, tolerant);
+            let largest = compare(&what, &lines, &case.expected, tolerant).unwrap_or_else(|e| panic!("{e}"));
             ran.push(if tolerant {
                 format!("{what} within {largest:e}")
             } else {
@@ -221,8 +104,8 @@ fn every_designs_c_observers_compile_without_warnings_and_give_the_rust_bits() {
     let ran = check_on_host(&cases, &workspace_root().join("generated/c"), &dir);
     let _ = std::fs::remove_dir_all(&dir);
     println!("C against Rust: {}", ran.join(", "));
-    // The map and the box EKF of 7 designs, and their 10 observers the map starts or checks.
-    assert!(cases.len() >= 24, "{}", cases.len());
+    // The map and the box EKF of 7 designs, and their 15 observers the map starts or checks.
+    assert!(cases.len() >= 29, "{}", cases.len());
     assert!(ran.len() >= cases.len() || std::env::var_os("CI").is_none(), "{ran:?}");
 }
 
@@ -243,7 +126,7 @@ fn searched_knots_in_c_give_the_rust_bits() {
     let dir = scratch("searched");
     std::fs::write(dir.join("vanderpol_beta7.h"), &c.header).unwrap();
     std::fs::write(dir.join("vanderpol_beta7.c"), &c.source).unwrap();
-    let case = case!(
+    let case = integration_tests::c_case!(
         crate::vanderpol_beta7,
         "vanderpol_beta7",
         "map",
@@ -255,53 +138,241 @@ fn searched_knots_in_c_give_the_rust_bits() {
 }
 
 /// Every shipped design's C observers built by `arm-none-eabi-gcc -Os` for the Cortex-M4F and run on
-/// the emulated board give the Rust bits too (or, with `expf`, estimates within [`LIBM_TOLERANCE`]);
-/// the map in a constant count of instructions per steady sample and no division. The counts, flash,
-/// RAM and stack are the C rows of docs/chip.md (`on-target-report`).
+/// the emulated board give the Rust bits too (or, with `expf`, estimates within `LIBM_TOLERANCE`);
+/// the map in a constant count of instructions per steady sample, saturated or not, and no division;
+/// and docs/chip.md's C table is what they measure (`cargo run -p integration-tests --bin
+/// on-target-report` writes it).
 #[test]
 fn every_designs_c_observers_on_the_emulated_cortex_m4f_give_the_rust_bits() {
     let dir = scratch("board");
     let c = workspace_root().join("generated/c");
-    let mut figures = Vec::new();
-    for case in shipped_cases() {
-        let what = format!("{} {} on the board", case.name, case.kind);
-        let run = match run_c_observer(case.name, case.kind, &case.harness(), &c, &dir) {
-            Err(missing @ Unavailable::Missing { .. }) if std::env::var_os("CI").is_none() => {
-                eprintln!("skipped the C observers on the emulated board: {missing}");
-                return;
-            }
-            Err(e) => panic!("{what}: {e}"),
-            Ok(run) => run,
-        };
-        let largest = compare(&what, &run.lines, &case.expected, inexact(&c, case.name));
-        assert_eq!(run.counts.len(), case.expected.len(), "{what}: one count per sample");
-        if case.kind == "map" {
-            // Once the window is full, every accepted sample takes one path; no division.
-            let steady: Vec<u64> = run
-                .counts
-                .iter()
-                .zip(&case.expected)
-                .skip(case.horizon)
-                .filter(|(_, l)| l.starts_with("0 "))
-                .map(|(&(n, _), _)| n)
-                .collect();
-            let (least, most) = (steady.iter().min().unwrap(), steady.iter().max().unwrap());
-            assert_eq!(least, most, "{what}: the steady path varies: {steady:?}");
-            assert!(
-                run.counts.iter().all(|&(_, d)| d == 0),
-                "{what}: a division or square root"
-            );
+    let runs = match run_shipped_on_board(&c, &dir) {
+        Err(missing @ Unavailable::Missing { .. }) if std::env::var_os("CI").is_none() => {
+            eprintln!("skipped the C observers on the emulated board: {missing}");
+            return;
         }
+        Err(e) => panic!("{e}"),
+        Ok(runs) => runs,
+    };
+    let _ = std::fs::remove_dir_all(&dir);
+    for (case, run, _) in &runs {
+        let what = format!("{} {} on the board", case.name, case.kind);
+        assert_eq!(run.counts.len(), case.expected.len(), "{what}: one count per sample");
         assert!(
             run.flash_bytes > 0 && run.ram_bytes > 0 && run.stack_bytes > 0,
             "{what}: {run:?}"
         );
-        let most = run.counts.iter().skip(case.horizon).map(|c| c.0).max().unwrap();
-        figures.push(format!(
-            "{} {}: ≤{most} instructions, {} B flash, {} B RAM, {} B stack, max |C − Rust| {largest:e}",
-            case.name, case.kind, run.flash_bytes, run.ram_bytes, run.stack_bytes
-        ));
+        if case.kind != "map" {
+            continue;
+        }
+        // The sequence takes every table to both ends.
+        let flags: Vec<&str> = case
+            .expected
+            .iter()
+            .flat_map(|l| l.split(' ').skip(3).step_by(2))
+            .collect();
+        assert!(
+            flags.contains(&"1") && flags.contains(&"2"),
+            "{what}: no saturation both ways"
+        );
+        // Once the window is full, every accepted sample takes one path; no division.
+        let steady: Vec<u64> = run
+            .counts
+            .iter()
+            .zip(&case.expected)
+            .skip(case.horizon)
+            .filter(|(_, l)| l.starts_with("0 "))
+            .map(|(&(n, _), _)| n)
+            .collect();
+        let (least, most) = (steady.iter().min().unwrap(), steady.iter().max().unwrap());
+        assert_eq!(least, most, "{what}: the steady path varies: {steady:?}");
+        assert!(
+            run.counts.iter().all(|&(_, d)| d == 0),
+            "{what}: a division or square root"
+        );
     }
+    let page = std::fs::read_to_string(workspace_root().join(chip_table::PAGE)).unwrap();
+    // Example 1's map built with `-flto`, as a C firmware's release build may be: within 10 % of the
+    // Rust build's instructions per sample (the same bits).
+    let (case, run, _) = runs
+        .iter()
+        .find(|(case, _, _)| case.name == "vanderpol" && case.kind == "map")
+        .expect("Example 1's map ran");
+    let dir = scratch("board-lto");
+    let linked = run_c_observer(case.name, case.kind, &case.harness(), &c, &dir, true).unwrap();
     let _ = std::fs::remove_dir_all(&dir);
-    println!("C observers on the emulated Cortex-M4F (-Os):\n{}", figures.join("\n"));
+    assert_eq!(linked.lines, case.expected, "Example 1's map with -flto");
+    let steady = |counts: &[(u64, u64)]| counts[case.horizon..case.recorded].iter().map(|c| c.0).max().unwrap();
+    let rust = chip_table::rust_median(&page, "vanderpol", integration_tests::on_target::Kind::Map).unwrap();
+    println!(
+        "Example 1's map per steady sample: C {} (-Os), {} (-Os -flto); Rust {rust}",
+        steady(&run.counts),
+        steady(&linked.counts)
+    );
+    assert!(
+        steady(&linked.counts) as f64 <= 1.10 * rust as f64,
+        "Example 1's C map with -flto: {} instructions against Rust's {rust}",
+        steady(&linked.counts)
+    );
+    let table = c_table(&runs, &|name, kind| chip_table::rust_median(&page, name, kind)).unwrap();
+    println!("{table}");
+    assert_eq!(
+        chip_table::c_table_of(&page),
+        Some(table.as_str()),
+        "docs/chip.md's C table is not what the board measures: run `cargo run -p integration-tests --bin on-target-report`"
+    );
+}
+
+/// The commands of the first `sh` block of `markdown`, each joined across its continuation lines.
+fn shell_commands(markdown: &str) -> Vec<String> {
+    let block = markdown
+        .split("```sh\n")
+        .nth(1)
+        .and_then(|b| b.split("```").next())
+        .unwrap_or("");
+    block
+        .replace("\\\n", " ")
+        .lines()
+        .map(|l| l.split_whitespace().collect::<Vec<_>>().join(" "))
+        .filter(|l| !l.is_empty())
+        .collect()
+}
+
+/// `examples/c/` on the emulated board, built and run by the commands its README gives: every line it
+/// prints is the Rust `generated::vanderpol::observer()` over the same samples, which are the
+/// recording's (`examples/board/data/run.csv`) rounded to f32.
+#[test]
+fn the_c_example_runs_on_the_emulated_board_as_the_rust_observer() {
+    let root = workspace_root();
+    let readme = std::fs::read_to_string(root.join("examples/c/README.md")).unwrap();
+    let commands = shell_commands(&readme);
+    assert_eq!(commands.len(), 2, "{commands:?}");
+    let tools = ["arm-none-eabi-gcc", "qemu-system-arm"];
+    if tools.iter().any(|t| Command::new(t).arg("--version").output().is_err()) {
+        assert!(std::env::var_os("CI").is_none(), "CI needs {tools:?}");
+        eprintln!("skipped the C example: {tools:?} not installed");
+        return;
+    }
+    std::fs::create_dir_all(root.join("target")).unwrap();
+    let built = Command::new("sh")
+        .arg("-c")
+        .arg(&commands[0])
+        .current_dir(&root)
+        .output()
+        .unwrap();
+    assert!(
+        built.status.success(),
+        "{}: {}",
+        commands[0],
+        String::from_utf8_lossy(&built.stderr)
+    );
+    let run = Command::new("timeout")
+        .args(["120", "sh", "-c", &commands[1]])
+        .current_dir(&root)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&run.stdout);
+    assert!(run.status.success() && text.contains("DONE"), "{}: {text}", commands[1]);
+    // The samples main.c replays: the recording's y column in f32.
+    let main = std::fs::read_to_string(root.join("examples/c/main.c")).unwrap();
+    let array = main
+        .split("RECORDED[SAMPLES] = {")
+        .nth(1)
+        .unwrap()
+        .split("};")
+        .next()
+        .unwrap();
+    let samples: Vec<f32> = array
+        .split(',')
+        .map(|v| v.trim().trim_end_matches('f').parse().unwrap())
+        .collect();
+    let csv = std::fs::read_to_string(root.join("examples/board/data/run.csv")).unwrap();
+    let recorded: Vec<f32> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.rsplit(',').next().unwrap().parse::<f64>().unwrap() as f32)
+        .collect();
+    assert_eq!(
+        samples, recorded,
+        "examples/c/main.c does not replay examples/board/data/run.csv"
+    );
+    let mut observer = generated::vanderpol::observer();
+    let expected: Vec<String> = samples
+        .iter()
+        .enumerate()
+        .map(|(k, &y)| {
+            if observer.push([y], []).is_err() {
+                return format!("{k} refused");
+            }
+            match observer.estimate() {
+                None => format!("{k} no estimate yet"),
+                Some(estimates) => {
+                    let cells: String = estimates
+                        .iter()
+                        .map(|e| {
+                            let flag = match e.saturation {
+                                firmware::Saturation::Inside => "",
+                                firmware::Saturation::Low => " (low)",
+                                firmware::Saturation::High => " (high)",
+                            };
+                            format!(" {}{flag}", e.value)
+                        })
+                        .collect();
+                    format!("{k}{cells}")
+                }
+            }
+        })
+        .collect();
+    // The C prints 9 significant digits, Rust the shortest that reads back: compare the f32 they read as.
+    let read = |line: &str| -> Vec<String> {
+        line.split(' ')
+            .map(|w| {
+                w.parse::<f32>()
+                    .map_or(w.to_owned(), |v| format!("{:08x}", v.to_bits()))
+            })
+            .collect()
+    };
+    let lines: Vec<&str> = text
+        .lines()
+        .filter(|l| l.starts_with(|c: char| c.is_ascii_digit()))
+        .collect();
+    assert_eq!(lines.len(), expected.len(), "{text}");
+    for (c, rust) in lines.iter().zip(&expected) {
+        assert_eq!(read(c), read(rust), "C {c}, Rust {rust}");
+    }
+    assert!(
+        expected.iter().filter(|l| l.contains('.')).count() >= 40,
+        "{expected:?}"
+    );
+}
+
+/// The README's C example compiles under the strict flags against the shipped C, as the unit of a
+/// firmware that includes it.
+#[test]
+fn the_readmes_c_example_compiles() {
+    let root = workspace_root();
+    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
+    let example = readme
+        .split("```c\n")
+        .nth(1)
+        .and_then(|b| b.split("```").next())
+        .unwrap();
+    assert!(example.lines().count() <= 15, "{example}");
+    let dir = scratch("readme");
+    let source = dir.join("firmware.c");
+    std::fs::write(&source, example).unwrap();
+    let Ok(built) = Command::new("cc")
+        .args(STRICT_C_FLAGS)
+        .args(["-O2", "-c", "-I"])
+        .arg(root.join("generated/c"))
+        .arg(&source)
+        .arg("-o")
+        .arg(dir.join("firmware.o"))
+        .output()
+    else {
+        assert!(std::env::var_os("CI").is_none(), "CI needs a C compiler (cc)");
+        return;
+    };
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(built.status.success(), "{}", String::from_utf8_lossy(&built.stderr));
 }

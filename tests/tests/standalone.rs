@@ -134,6 +134,23 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
     );
     cargo(&out, &["test", "--offline", "--doc"]);
 
+    // Its observers as C99 source (the route without a Rust toolchain) compile without a warning
+    // under the strict flags (their bits: `c_source.rs`, on the shipped designs).
+    let sources: Vec<PathBuf> = std::fs::read_dir(out.join("c-source"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "c"))
+        .collect();
+    assert_eq!(sources.len(), 1, "{sources:?}");
+    let built = Command::new("cc")
+        .args(integration_tests::on_target::STRICT_C_FLAGS)
+        .args(["-O2", "-c", "-o"])
+        .arg(scratch.join("c-source.o"))
+        .arg(&sources[0])
+        .output()
+        .unwrap();
+    assert!(built.status.success(), "cc: {}", String::from_utf8_lossy(&built.stderr));
+
     // Its C library, linked into a C program by the system's compiler: the Rust observer's bits.
     let c = out.join("c");
     cargo(&c, &["build", "--offline", "--release"]);

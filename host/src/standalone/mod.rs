@@ -234,6 +234,13 @@ fn write(
     write_if_changed(&header_path, &header).map_err(io(&header_path))?;
     let observer = sources.join(format!("{}.rs", design.name));
     write_if_changed(&observer, &one.emitted.source).map_err(io(&observer))?;
+    // The observers as C99 source, the C route without a Rust toolchain.
+    let c_source = folder.join(C_SOURCE_FOLDER);
+    std::fs::create_dir_all(&c_source).map_err(io(&c_source))?;
+    for (extension, text) in [("h", &one.emitted.c_source.header), ("c", &one.emitted.c_source.source)] {
+        let path = c_source.join(format!("{}.{extension}", design.name));
+        write_if_changed(&path, text).map_err(io(&path))?;
+    }
     let mut written = owned::fixed_files(&design.name, runtime);
     written.extend(
         report_files
@@ -308,6 +315,9 @@ fn library(design: &Design) -> String {
     )
 }
 
+/// The crate's folder of the observers as C99 source (`<name>.h`, `<name>.c`, [`crate::emit::c`]).
+pub const C_SOURCE_FOLDER: &str = "c-source";
+
 /// `README.md`: how to build and use the crate, then the report with its figures.
 fn readme(one: &Prepared) -> String {
     let design = &one.emitted.design;
@@ -325,9 +335,22 @@ fn readme(one: &Prepared) -> String {
          // one per target, in {library}::{name}::TARGET_NAMES order\n    \
          let _ = estimates[0].value;\n\
          }}\n\
-         ```\n\n",
+         ```\n\n\
+         ## From C: two routes\n\n\
+         - **C source, no Rust toolchain** (`{C_SOURCE_FOLDER}/{name}.h`, `{name}.c`): add both files to your C build \
+         (any C99 compiler: gcc, clang, IAR, Keil, a vendor IDE) and build them with `-ffp-contract=off` (or your \
+         compiler's switch that forbids fused multiply-add), which gives the Rust observer's bits. Each kind is a \
+         struct you allocate: `{name}_observer observer; {name}_observer_init(&observer);`, then \
+         `{name}_observer_push(&observer, y, u)` every sample and `{name}_observer_estimate(&observer, values, flags)`; \
+         `{name}_map`, `{name}_ekf_box`, … are the other kinds. Choose it unless something below applies.\n\
+         - **The Rust static library** (`{c}/`): `cd {c} && cargo build --release --target thumbv7em-none-eabihf` \
+         gives `lib{library}_c.a` and `{c}/include/{name}.h` (`{name}_init(storage, size)`, `{name}_push`, \
+         `{name}_estimate` over storage of `STORAGE_SIZE` bytes). Choose it when the observer is of a kind that has no \
+         C source (`mhe`), or when you want exactly the code the on-target figures measure for the Rust build; it \
+         needs a Rust toolchain with your target, and your build links a Rust archive.\n\n",
         crate::emit::doc_prose(&design.description),
         env!("CARGO_PKG_VERSION"),
+        c = c_library::FOLDER,
     );
     // The report, its first heading dropped (the README has its own), its figures (embedded by the
     // report, beside it in report/) linked from here.

@@ -99,6 +99,8 @@ pub fn fixed_files(name: &str, runtime: &super::Runtime) -> Vec<PathBuf> {
         c.join("Cargo.toml"),
         c.join("src/lib.rs"),
         c.join("include").join(format!("{name}.h")),
+        Path::new(super::C_SOURCE_FOLDER).join(format!("{name}.h")),
+        Path::new(super::C_SOURCE_FOLDER).join(format!("{name}.c")),
     ];
     files.extend(embedded);
     files

@@ -1,6 +1,8 @@
 //! Measures every observer of every generated design on the emulated Cortex-M4F (the map, the
 //! observers the map starts and the EKF from the box centre, whichever the design has), rewrites
-//! the table in `docs/chip.md` between `<!-- on-target:begin -->` and `<!-- on-target:end -->`, and
+//! the table in `docs/chip.md` between `<!-- on-target:begin -->` and `<!-- on-target:end -->` (and
+//! the C build of every observer, `generated/c/`, between `<!-- c-on-target:begin -->` and
+//! `<!-- c-on-target:end -->`), and
 //! records each design's figures beside its report (`target/designs/<design>/on_target.json`, and
 //! `report.json`'s `observers[].on_target`, and the section of `report.md` that shows them):
 //!
@@ -65,6 +67,14 @@ fn run() -> Result<String, String> {
     // The project's page of on-target figures, between its markers.
     let path = workspace_root().join(chip_table::PAGE);
     let page = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-    host::output::write_if_changed(&path, &chip_table::with_table(&page, &table)?).map_err(|e| e.to_string())?;
-    Ok(table)
+    let page = chip_table::with_table(&page, &table)?;
+    // The C build of every observer beside the Rust one, in the same page.
+    let scratch = workspace_root().join("target/on-target-c");
+    std::fs::create_dir_all(&scratch).map_err(|e| format!("{}: {e}", scratch.display()))?;
+    let runs =
+        on_target::run_shipped_on_board(&workspace_root().join("generated/c"), &scratch).map_err(|e| e.to_string())?;
+    let c_table = on_target::c_table(&runs, &|name, kind| chip_table::rust_median(&page, name, kind))?;
+    let page = chip_table::with_c_table(&page, &c_table)?;
+    host::output::write_if_changed(&path, &page).map_err(|e| e.to_string())?;
+    Ok(format!("{table}\n{c_table}"))
 }

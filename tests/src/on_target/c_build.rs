@@ -49,11 +49,18 @@ pub fn run_c_counted(
             .arg(&object))?;
         objects.push(object);
     }
-    // The start-up code is the board's, not the code under test: not held to `flags`.
+    // The start-up code is the board's, not the code under test: not held to `flags`. With `-flto`
+    // the code is compiled at the link, which then takes the observer's optimisation and IEEE flags.
     let board = crate::workspace_root().join("tests/c");
+    let link: &[&str] = if flags.contains(&"-flto") {
+        &["-flto", "-Os", "-ffp-contract=off", "-fno-fast-math"]
+    } else {
+        &["-O1"]
+    };
     gcc(Command::new("arm-none-eabi-gcc")
         .args(BOARD_FLAGS)
-        .args(["-std=c99", "-O1", "--specs=rdimon.specs", "-Wl,--gc-sections", "-T"])
+        .args(link)
+        .args(["-std=c99", "--specs=rdimon.specs", "-Wl,--gc-sections", "-T"])
         .arg(board.join("mps2-an386.ld"))
         .arg("-o")
         .arg(elf)

@@ -178,13 +178,24 @@ pub struct CBoardRun {
 }
 
 /// Builds `<c>/<name>.c` with `harness` (the text of [`c_harness`]) in `dir` by `arm-none-eabi-gcc
-/// -Os` under [`STRICT_C_FLAGS`] for the Cortex-M4F, and runs it on the emulated board.
-pub fn run_c_observer(name: &str, kind: &str, harness: &str, c: &Path, dir: &Path) -> Result<CBoardRun, Unavailable> {
+/// -Os` under [`STRICT_C_FLAGS`] for the Cortex-M4F (with `lto`, also `-flto`: the observer's
+/// functions then inlined into the caller's), and runs it on the emulated board.
+pub fn run_c_observer(
+    name: &str,
+    kind: &str,
+    harness: &str,
+    c: &Path,
+    dir: &Path,
+    lto: bool,
+) -> Result<CBoardRun, Unavailable> {
     let harness_path = dir.join(format!("{name}_{kind}_board.c"));
     std::fs::write(&harness_path, harness).map_err(|e| failed(format!("{}: {e}", harness_path.display())))?;
     let observer = c.join(format!("{name}.c"));
     let mut flags: Vec<&str> = STRICT_C_FLAGS.to_vec();
     flags.extend(["-Os", "-ffunction-sections", "-fdata-sections"]);
+    if lto {
+        flags.push("-flto");
+    }
     let elf = dir.join(format!("{name}_{kind}.elf"));
     let (text, counts) = run_c_counted(&[observer.as_path(), harness_path.as_path()], c, &flags, &elf)?;
     let number = |key: &str| -> Result<u64, Unavailable> {

@@ -303,7 +303,7 @@ fn restarted(name: &str, nx: usize, variances: &[f64], threshold: f64) -> Result
          \x20       return 0;\n\
          \x20   }}\n\
          \x20   o->checked = 1;\n\
-         \x20   estimate_window(&o->window, all, all_flags);\n\
+         \x20   (void){name}_map_estimate(&o->window, all, all_flags);\n\
          \x20   started_ekf_map_states(all, map);\n\
          \x20   if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {{\n\
          \x20       return 0;\n\

@@ -15,7 +15,7 @@ use crate::spec::Design;
 pub(super) struct MapC {
     /// `<name>_map` and its functions' prototypes.
     pub header: String,
-    /// The tables, the table's evaluation, `estimate_window` and the three functions.
+    /// The tables, the table's evaluation and the three functions.
     pub source: String,
 }
 
@@ -34,7 +34,9 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
         design.model.inputs.len(),
     );
     let mut tables = String::new();
-    let mut estimates = String::new();
+    // Every projection first, then every table: the window is read once (a store to `values` could
+    // alias it, which makes the compiler read it again for each target).
+    let (mut projections, mut estimates) = (String::new(), String::new());
     for (t, target) in result.targets.iter().enumerate() {
         let label = &design.targets[target.index].name;
         let Some(table) = target.fit.map.table.as_ref() else {
@@ -74,9 +76,12 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
             })
             .collect();
         let count = rounded.segments.len();
-        let (search, start) = match &rounded.starts {
+        let (search, segment, start) = match &rounded.starts {
+            // One segment: nothing to look up.
+            None if count == 1 => (String::new(), format!("SEGMENTS_{t}[0]"), "0.0f".to_owned()),
             None => (
                 format!("    const uint32_t k_{t} = uniform_segment(t_{t}, {count}u);\n"),
+                format!("SEGMENTS_{t}[k_{t}]"),
                 "0.0f".to_owned(),
             ),
             Some(starts) => {
@@ -99,13 +104,17 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
                         "    unsigned k_{t} = 0u;\n{steps}    k_{t} = k_{t} < {last}u ? k_{t} : {last}u;\n",
                         last = count - 1
                     ),
+                    format!("SEGMENTS_{t}[k_{t}]"),
                     format!("STARTS_{t}[k_{t}]"),
                 )
             }
         };
+        projections += &format!(
+            "    const float t_{t} = {offset}{terms};\n",
+            offset = float(&what("offset"), f64::from(rounded.offset))?
+        );
         estimates += &format!(
-            "    const float t_{t} = {offset}{terms};\n{search}    evaluate(t_{t}, SEGMENTS_{t}[k_{t}], {start}, {t_max}, {r_min}, {r_max}, &values[{t}], &saturation[{t}]);\n",
-            offset = float(&what("offset"), f64::from(rounded.offset))?,
+            "{search}    evaluate(t_{t}, {segment}, {start}, {t_max}, {r_min}, {r_max}, &values[{t}], &saturation[{t}]);\n",
             t_max = float(&what("t_max"), f64::from(rounded.t_max))?,
             r_min = float(&what("r_min"), f64::from(rounded.r_min))?,
             r_max = float(&what("r_max"), f64::from(rounded.r_max))?,
@@ -149,13 +158,30 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
     } else {
         "    (void)u;\n".to_owned()
     };
-    // Only where a table is uniform: an unused static function is a warning.
+    // The check written out here rather than a call of `accepts`, which the compiler keeps out of line
+    // where the followers call it too (about 10 instructions more per sample).
+    let check_inputs = if nu > 0 {
+        format!(
+            "    for (i = 0u; i < {upper}_INPUTS; ++i) {{\n\
+             \x20       finite &= is_finite(u[i]);\n\
+             \x20   }}\n"
+        )
+    } else {
+        String::new()
+    };
+    // Only where a table of more than one segment is uniform: an unused static function is a warning.
     let uniform = if estimates.contains("uniform_segment(") {
-        "/* floor(t) for t >= 0 (0 for NaN and negatives), at most count - 1: a uniform table's segment. */\n\
+        "/* floor(t) for 0 <= t, at most count - 1: a uniform table's segment. Any other t (negative, NaN,\n\
+         \x20* infinite) gives some segment, whose value evaluate replaces by r_min or r_max. The clamp is an\n\
+         \x20* unsigned minimum of the bits of |t|, which are ordered as the values: the conversion is always\n\
+         \x20* defined, and the same instructions run whatever t is. */\n\
          static uint32_t uniform_segment(float t, uint32_t count) {\n\
-         \x20   const float last = (float)(count - 1u);\n\
-         \x20   const float below = select_float(t < last, t, last);\n\
-         \x20   return (uint32_t)select_float(t >= 0.0f, below, 0.0f);\n\
+         \x20   const uint32_t magnitude = bits_of(t) & 0x7fffffffu;\n\
+         \x20   const uint32_t last = bits_of((float)(count - 1u));\n\
+         \x20   const uint32_t least = magnitude < last ? magnitude : last;\n\
+         \x20   float clamped;\n\
+         \x20   memcpy(&clamped, &least, sizeof clamped);\n\
+         \x20   return (uint32_t)clamped;\n\
          }\n\
          \n"
     } else {
@@ -165,21 +191,17 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
         "{tables}\n\
          {uniform}\
          /* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above\n\
-         \x20* t_max; by selects, as firmware::InverseTable (the same instructions whatever t is). */\n\
+         \x20* t_max (t_max >= 0: never both); as firmware::InverseTable, by one select per statement, which\n\
+         \x20* compilers make a conditional move (an IT block on Thumb-2): the same instructions whatever t is. */\n\
          static void evaluate(float t, const float *segment, float start, float t_max, float r_min, float r_max,\n\
          \x20                    float *value, {name}_saturation *saturation) {{\n\
-         \x20   const float inside = segment[0] + segment[1] * (t - start);\n\
          \x20   const int low = !(t >= 0.0f);\n\
-         \x20   const int out = low | (t > t_max);\n\
-         \x20   const uint32_t flag = select_bits(low, (uint32_t){upper}_LOW, (uint32_t){upper}_HIGH);\n\
-         \x20   *value = select_float(out, select_float(low, r_min, r_max), inside);\n\
-         \x20   *saturation = ({name}_saturation)select_bits(out, flag, (uint32_t){upper}_INSIDE);\n\
-         }}\n\
-         \n\
-         /* Every target's estimate from a full window. */\n\
-         static void estimate_window(const {name}_map *observer, float *values, {name}_saturation *saturation) {{\n\
-         \x20   const unsigned next = observer->next;\n\
-         {estimates}\
+         \x20   const int high = t > t_max;\n\
+         \x20   float r = segment[0] + segment[1] * (t - start);\n\
+         \x20   r = choose_float(high, r_max, r);\n\
+         \x20   r = choose_float(low, r_min, r);\n\
+         \x20   *value = r;\n\
+         \x20   *saturation = ({name}_saturation)((unsigned)low | (unsigned)high << 1);\n\
          }}\n\
          \n\
          void {name}_map_init({name}_map *observer) {{\n\
@@ -190,7 +212,12 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
          {name}_status {name}_map_push({name}_map *observer, const float *y, const float *u) {{\n\
          \x20   unsigned i;\n\
          \x20   unsigned slot;\n\
-         \x20   if (!accepts(y, u)) {{\n\
+         \x20   int finite = 1;\n\
+         \x20   for (i = 0u; i < {upper}_OUTPUTS; ++i) {{\n\
+         \x20       finite &= is_finite(y[i]);\n\
+         \x20   }}\n\
+         {check_inputs}\
+         \x20   if (!finite) {{\n\
          \x20       return {upper}_REFUSED;\n\
          \x20   }}\n\
          \x20   slot = observer->next;\n\
@@ -200,15 +227,17 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
          \x20   }}\n\
          {store_inputs}\
          \x20   observer->next = slot + 1u >= {upper}_HORIZON ? 0u : slot + 1u;\n\
-         \x20   observer->filled = observer->filled >= {upper}_HORIZON ? {upper}_HORIZON : observer->filled + 1u;\n\
+         \x20   observer->filled += (unsigned)(observer->filled < {upper}_HORIZON);\n\
          \x20   return {upper}_OK;\n\
          }}\n\
          \n\
          {name}_status {name}_map_estimate(const {name}_map *observer, float *values, {name}_saturation *saturation) {{\n\
+         \x20   const unsigned next = observer->next;\n\
          \x20   if (observer->filled < {upper}_HORIZON) {{\n\
          \x20       return {upper}_NO_ESTIMATE_YET;\n\
          \x20   }}\n\
-         \x20   estimate_window(observer, values, saturation);\n\
+         {projections}\
+         {estimates}\
          \x20   return {upper}_OK;\n\
          }}\n\n"
     );

@@ -1,15 +1,15 @@
 //! A design's observers as portable C99 source (`<name>.h`, `<name>.c`): the map
-//! ([`map`]) and every model-based kind the Rust design file has ([`filters`], [`corrected`]),
-//! emitted from the same f32 tables and the same straight-line programs ([`program`]) as the Rust
+//! (`map`) and every model-based kind the Rust design file has (`filters`, `corrected`),
+//! emitted from the same f32 tables and the same straight-line programs (`program`) as the Rust
 //! file, operation for operation, so that with `-ffp-contract=off` the C observer gives the Rust
 //! observer's bits (up to the C library's functions where the model calls one: `<math.h>`'s `expf`
 //! is not `libm`'s).
 //!
 //! C99 with `float` only: no `malloc`, no recursion, no VLA, no global mutable state; `<math.h>` only
-//! where the model calls a function; a value is finite when `v - v == 0`. Each kind is a struct the
-//! caller allocates (`<name>_<kind>`) with `_init`, `_push` and `_estimate`, the Rust observer's
-//! `new`, `push` and `estimate`; `<name>_observer` names the design's chosen kind. The moving-horizon
-//! kind (`mhe`) is generic Rust code over the design's sizes and has no C form.
+//! where the model calls a function; a value is finite when its exponent bits are not all ones. Each
+//! kind is a struct the caller allocates (`<name>_<kind>`) with `_init`, `_push` and `_estimate`, the
+//! Rust observer's `new`, `push` and `estimate`; `<name>_observer` names the design's chosen kind. The
+//! moving-horizon kind (`mhe`) is generic Rust code over the design's sizes and has no C form.
 
 mod corrected;
 mod filters;
@@ -102,6 +102,8 @@ pub fn c_source(
          #ifndef {upper}_H\n\
          #define {upper}_H\n\
          \n\
+         #include <stddef.h>\n\
+         \n\
          #define {upper}_OUTPUTS {ny}u\n\
          #define {upper}_INPUTS {nu}u\n\
          #define {upper}_TARGETS {nt}u\n\
@@ -143,6 +145,25 @@ pub fn c_source(
     } else {
         "    (void)u;\n".to_owned()
     };
+    let body = format!("{}{}", map.source, kinds.source);
+    // Only where a follower checks a sample (an unused static function is a warning).
+    let accepts = if body.contains("accepts(") {
+        format!(
+            "/* 1 when every output and input of a sample is finite (u is not read without inputs). */\n\
+             static int accepts(const float *y, const float *u) {{\n\
+             \x20   unsigned i;\n\
+             \x20   int finite = 1;\n\
+             \x20   for (i = 0u; i < {upper}_OUTPUTS; ++i) {{\n\
+             \x20       finite &= is_finite(y[i]);\n\
+             \x20   }}\n\
+             {inputs_check}\
+             \x20   return finite;\n\
+             }}\n\
+             \n"
+        )
+    } else {
+        String::new()
+    };
     let source = format!(
         "/* The `{name}` observers in C99, emitted by `mho gen`. Do not edit: regenerate. */\n\
          #include <stdint.h>\n\
@@ -150,40 +171,51 @@ pub fn c_source(
          {math}\
          #include \"{name}.h\"\n\
          \n\
-         /* 1 when v is finite: NaN - NaN and inf - inf are NaN, which equals nothing. */\n\
+         /* The bits of v (memcpy: no aliasing, no conversion). */\n\
+         static uint32_t bits_of(float v) {{\n\
+         \x20   uint32_t x;\n\
+         \x20   memcpy(&x, &v, sizeof x);\n\
+         \x20   return x;\n\
+         }}\n\
+         \n\
+         /* 1 when v is finite: its exponent is not all ones (an integer test, as Rust's is_finite). */\n\
          static int is_finite(float v) {{\n\
-         \x20   return (v - v) == 0.0f;\n\
+         \x20   return (bits_of(v) & 0x7fffffffu) < 0x7f800000u;\n\
          }}\n\
          \n\
-         /* 1 when every output and input of a sample is finite (u is not read without inputs). */\n\
-         static int accepts(const float *y, const float *u) {{\n\
-         \x20   unsigned i;\n\
-         \x20   int finite = 1;\n\
-         \x20   for (i = 0u; i < {upper}_OUTPUTS; ++i) {{\n\
-         \x20       finite &= is_finite(y[i]);\n\
-         \x20   }}\n\
-         {inputs_check}\
-         \x20   return finite;\n\
-         }}\n\
-         \n\
-         /* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */\n\
-         static uint32_t select_bits(int c, uint32_t a, uint32_t b) {{\n\
-         \x20   const uint32_t mask = 0u - (uint32_t)c;\n\
-         \x20   return (a & mask) | (b & ~mask);\n\
-         }}\n\
-         \n\
-         static float select_float(int c, float a, float b) {{\n\
-         \x20   uint32_t x, y;\n\
-         \x20   memcpy(&x, &a, sizeof x);\n\
-         \x20   memcpy(&y, &b, sizeof y);\n\
-         \x20   x = select_bits(c, x, y);\n\
-         \x20   memcpy(&a, &x, sizeof a);\n\
-         \x20   return a;\n\
-         }}\n\
-         {map_source}\
-         {kinds_source}",
-        map_source = map.source,
-        kinds_source = kinds.source,
+         {accepts}\
+         {selects}\
+         {body}",
+        selects = selects(&body),
     );
     Ok(CSource { header, source })
+}
+
+/// The select helpers `body` calls (an unused static function is a warning): `choose_float`, one
+/// `?:` per statement, which compilers make a conditional move; `select_bits` and `select_float`, by
+/// masks, where a chain of selects on one condition would become a branch.
+fn selects(body: &str) -> String {
+    let mut text = String::new();
+    if body.contains("choose_float(") {
+        text += "/* c ? a : b, one select per statement: compilers make it a conditional move (an IT block on\n\
+                 \x20* Thumb-2), where a chain of them on one condition may become a branch. */\n\
+                 static float choose_float(int c, float a, float b) {\n\
+                 \x20   return c ? a : b;\n\
+                 }\n\n";
+    }
+    if body.contains("select_bits(") || body.contains("select_float(") {
+        text += "/* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */\n\
+                 static uint32_t select_bits(int c, uint32_t a, uint32_t b) {\n\
+                 \x20   const uint32_t mask = 0u - (uint32_t)c;\n\
+                 \x20   return (a & mask) | (b & ~mask);\n\
+                 }\n\n";
+    }
+    if body.contains("select_float(") {
+        text += "static float select_float(int c, float a, float b) {\n\
+                 \x20   uint32_t x = select_bits(c, bits_of(a), bits_of(b));\n\
+                 \x20   memcpy(&a, &x, sizeof a);\n\
+                 \x20   return a;\n\
+                 }\n\n";
+    }
+    text
 }

@@ -104,7 +104,7 @@ pub(super) fn observer(f: &Follower<'_>, init_carried: &str) -> String {
          \x20       if (o->window.filled < {upper}_HORIZON) {{\n\
          \x20           return {upper}_OK;\n\
          \x20       }}\n\
-         \x20       estimate_window(&o->window, all, all_flags);\n\
+         \x20       (void){name}_map_estimate(&o->window, all, all_flags);\n\
          \x20       {prefix}_map_states(all, map);\n\
          \x20       estimated = 1;\n\
          \x20   }}\n\
