@@ -67,6 +67,25 @@ void ecoli_x0_0p5_ekf_box_init(ecoli_x0_0p5_ekf_box *observer);
 ecoli_x0_0p5_status ecoli_x0_0p5_ekf_box_push(ecoli_x0_0p5_ekf_box *observer, const float *y, const float *u);
 ecoli_x0_0p5_status ecoli_x0_0p5_ekf_box_estimate(const ecoli_x0_0p5_ekf_box *observer, float *values, ecoli_x0_0p5_saturation *saturation);
 
+/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 4 Gauss-Newton
+ * step(s) over the last ECOLI_X0_0P5_HORIZON samples from the previous solution moved one sample on, each
+ * solved by an L D L^T factorisation and projected onto the learning box. Thousands of instructions
+ * per sample (docs/chip.md): the on-line estimate the map replaces. */
+typedef struct {
+    float y[2u * ECOLI_X0_0P5_HORIZON][ECOLI_X0_0P5_OUTPUTS];
+    unsigned next;
+    unsigned filled;
+    float solved[ECOLI_X0_0P5_STATES];
+    int has_solved;
+    float values[ECOLI_X0_0P5_TARGETS];
+    ecoli_x0_0p5_saturation flags[ECOLI_X0_0P5_TARGETS];
+    int ready;
+} ecoli_x0_0p5_mhe;
+
+void ecoli_x0_0p5_mhe_init(ecoli_x0_0p5_mhe *observer);
+ecoli_x0_0p5_status ecoli_x0_0p5_mhe_push(ecoli_x0_0p5_mhe *observer, const float *y, const float *u);
+ecoli_x0_0p5_status ecoli_x0_0p5_mhe_estimate(const ecoli_x0_0p5_mhe *observer, float *values, ecoli_x0_0p5_saturation *saturation);
+
 /* This design's observer, of the kind `gen` chose or the spec named: ekf_box. */
 #define ECOLI_X0_0P5_KIND "ekf_box"
 typedef ecoli_x0_0p5_ekf_box ecoli_x0_0p5_observer;

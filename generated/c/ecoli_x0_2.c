@@ -2222,3 +2222,464 @@ ecoli_x0_2_status ecoli_x0_2_ekf_box_estimate(const ecoli_x0_2_ekf_box *o, float
     return ECOLI_X0_2_OK;
 }
 
+/* The model's derivative f(x, u), then its Jacobian row by row (the Rust file's Plant::derivative). */
+static void model_derivative(const float *x, const float *u, float *out) {
+    (void)x;
+    (void)u;
+    const float t0 = 0.2f /* mu_m */;
+    const float t1 = x[1];
+    const float t2 = 0.1f /* k_s */;
+    const float t3 = t2 + t1;
+    const float t4 = t1 / t3;
+    const float t5 = t0 * t4;
+    const float t6 = 0.0f;
+    const float t7 = 1.0f;
+    const float t8 = t7 / t3;
+    const float t9 = t3 * t3;
+    const float t10 = t1 / t9;
+    const float t11 = t8 - t10;
+    const float t12 = t0 * t11;
+    const float t13 = 0.1f /* k_d */;
+    const float t14 = 0.5f /* k_p */;
+    const float t15 = -t14;
+    const float t16 = x[2];
+    const float t17 = 0.001f;
+    const float t18 = fmaxf(t16, t17);
+    const float t19 = t15 / t18;
+    const float t20 = expf(t19);
+    const float t21 = t13 * t20;
+    const float t22 = 0.5f;
+    const float t23 = -0.5f;
+    const float t24 = t17 - t16;
+    const float t25 = signum(t24);
+    const float t26 = t23 * t25;
+    const float t27 = t22 + t26;
+    const float t28 = t15 * t27;
+    const float t29 = t18 * t18;
+    const float t30 = t28 / t29;
+    const float t31 = -t30;
+    const float t32 = t20 * t31;
+    const float t33 = t13 * t32;
+    const float t34 = x[0];
+    const float t35 = t5 * t34;
+    const float t36 = t21 * t34;
+    const float t37 = t35 - t36;
+    const float t38 = t5 - t21;
+    const float t39 = t34 * t6;
+    const float t40 = t38 + t39;
+    const float t41 = -t34;
+    const float t42 = t41 * t6;
+    const float t43 = t40 + t42;
+    const float t44 = t34 * t12;
+    const float t45 = t44 + t42;
+    const float t46 = t41 * t33;
+    const float t47 = t39 + t46;
+    const float t48 = 1.0f /* y_s */;
+    const float t49 = t48 * t5;
+    const float t50 = t49 * t34;
+    const float t51 = t6 - t50;
+    const float t52 = 0.05f /* k_m */;
+    const float t53 = t52 * t34;
+    const float t54 = 0.01f /* ks_m */;
+    const float t55 = t1 + t54;
+    const float t56 = t1 / t55;
+    const float t57 = t53 * t56;
+    const float t58 = t51 - t57;
+    const float t59 = -t49;
+    const float t60 = t52 * t56;
+    const float t61 = t59 - t60;
+    const float t62 = t48 * t34;
+    const float t63 = -t62;
+    const float t64 = t63 * t6;
+    const float t65 = t61 + t64;
+    const float t66 = t7 / t55;
+    const float t67 = t55 * t55;
+    const float t68 = t1 / t67;
+    const float t69 = t66 - t68;
+    const float t70 = t53 * t69;
+    const float t71 = -t70;
+    const float t72 = t63 * t12;
+    const float t73 = t71 + t72;
+    const float t74 = 0.2f /* y_p */;
+    const float t75 = t74 * t5;
+    const float t76 = 1.0f /* I */;
+    const float t77 = 0.5f /* k_I */;
+    const float t78 = t76 + t77;
+    const float t79 = t76 / t78;
+    const float t80 = t75 * t79;
+    const float t81 = t80 * t34;
+    const float t82 = t21 * t16;
+    const float t83 = t81 - t82;
+    const float t84 = t74 * t79;
+    const float t85 = t84 * t34;
+    const float t86 = t85 * t6;
+    const float t87 = t80 + t86;
+    const float t88 = -t16;
+    const float t89 = t88 * t6;
+    const float t90 = t87 + t89;
+    const float t91 = t85 * t12;
+    const float t92 = t91 + t89;
+    const float t93 = -t21;
+    const float t94 = t93 + t86;
+    const float t95 = t88 * t33;
+    const float t96 = t94 + t95;
+    out[0] = t37;
+    out[1] = t58;
+    out[2] = t83;
+    out[3] = t43;
+    out[4] = t45;
+    out[5] = t47;
+    out[6] = t65;
+    out[7] = t73;
+    out[8] = t64;
+    out[9] = t90;
+    out[10] = t92;
+    out[11] = t96;
+}
+
+/* The model's outputs h(x, u), then their Jacobian row by row (the Rust file's Plant::output). */
+static void model_output(const float *x, const float *u, float *out) {
+    (void)x;
+    (void)u;
+    const float t0 = 0.2f /* mu_m */;
+    const float t1 = x[1];
+    const float t2 = 0.1f /* k_s */;
+    const float t3 = t2 + t1;
+    const float t4 = t1 / t3;
+    const float t5 = t0 * t4;
+    const float t6 = 0.0f;
+    const float t7 = 1.0f;
+    const float t8 = t7 / t3;
+    const float t9 = t3 * t3;
+    const float t10 = t1 / t9;
+    const float t11 = t8 - t10;
+    const float t12 = t0 * t11;
+    const float t13 = x[2];
+    const float t14 = x[0];
+    const float t15 = 5000.0f /* y_l */;
+    const float t16 = t15 * t5;
+    const float t17 = 1.0f /* I */;
+    const float t18 = 1.0f /* k_l */;
+    const float t19 = t17 + t18;
+    const float t20 = t17 / t19;
+    const float t21 = t16 * t20;
+    const float t22 = t21 * t14;
+    const float t23 = t22 * t13;
+    const float t24 = t21 * t13;
+    const float t25 = t15 * t20;
+    const float t26 = t25 * t14;
+    const float t27 = t26 * t13;
+    const float t28 = t27 * t6;
+    const float t29 = t24 + t28;
+    const float t30 = t27 * t12;
+    const float t31 = t22 + t28;
+    out[0] = t14;
+    out[1] = t23;
+    out[2] = t7;
+    out[3] = t6;
+    out[4] = t6;
+    out[5] = t29;
+    out[6] = t30;
+    out[7] = t31;
+}
+
+/* The moving-horizon estimate's constants: the outputs' weights 1 / sigma^2, the prior's weight per
+ * state, the learning box, the first window's start, Levenberg's damping, the RK4 substep. */
+static const float MHE_WEIGHTS[ECOLI_X0_2_OUTPUTS] = {
+    10.0f, 0.05f
+};
+static const float MHE_PRIOR[ECOLI_X0_2_STATES] = {
+    6.9391437f, 4.0f, 199.5936f
+};
+static const float MHE_LOWER[ECOLI_X0_2_STATES] = {
+    1.7542171f, 0.0f, 0.0f
+};
+static const float MHE_UPPER[ECOLI_X0_2_STATES] = {
+    5.5503993f, 5.0f, 0.7078263f
+};
+static const float MHE_START[ECOLI_X0_2_STATES] = {
+    2.0f, 2.5f, 0.15f
+};
+static const float MHE_DAMPING = 1e-6f;
+static const float MHE_H = 0.2f;
+#define MHE_ITERATIONS 6u
+#define MHE_SUBSTEPS 1u
+#define MHE_NX ECOLI_X0_2_STATES
+#define MHE_NY ECOLI_X0_2_OUTPUTS
+/* The window's sample k (oldest first) of the observer o: its inputs. */
+#define MHE_U(k) NULL
+
+/* firmware::matrix::product: out = a b, each entry summed from 0 in k's order. */
+static void mhe_product(float (*a)[MHE_NX], float (*b)[MHE_NX], float (*out)[MHE_NX]) {
+    unsigned r, c, k;
+    for (r = 0u; r < MHE_NX; ++r) {
+        for (c = 0u; c < MHE_NX; ++c) {
+            float entry = 0.0f;
+            for (k = 0u; k < MHE_NX; ++k) {
+                entry += a[r][k] * b[k][c];
+            }
+            out[r][c] = entry;
+        }
+    }
+}
+
+/* The derivative k and its Jacobian d at x. */
+static void mhe_derivative(const float *x, const float *u, float *k, float (*d)[MHE_NX]) {
+    float out[MHE_NX + MHE_NX * MHE_NX];
+    unsigned i, j;
+    model_derivative(x, u, out);
+    for (i = 0u; i < MHE_NX; ++i) {
+        k[i] = out[i];
+        for (j = 0u; j < MHE_NX; ++j) {
+            d[i][j] = out[MHE_NX + i * MHE_NX + j];
+        }
+    }
+}
+
+/* Rk4::stage: the derivative at x + w k, and its Jacobian times (I + w d). */
+static void mhe_stage(const float *x, const float *k, float (*d)[MHE_NX], float w, const float *u, float *value,
+                      float (*jacobian)[MHE_NX]) {
+    float point[MHE_NX];
+    float moved[MHE_NX][MHE_NX], a[MHE_NX][MHE_NX];
+    unsigned i, j;
+    for (i = 0u; i < MHE_NX; ++i) {
+        point[i] = x[i] + w * k[i];
+        for (j = 0u; j < MHE_NX; ++j) {
+            moved[i][j] = (i == j ? 1.0f : 0.0f) + w * d[i][j];
+        }
+    }
+    mhe_derivative(point, u, value, a);
+    mhe_product(a, moved, jacobian);
+}
+
+/* Rk4::substep: one classical RK4 step of MHE_H from x, with its Jacobian. */
+static void mhe_substep(const float *x, const float *u, float *next, float (*jacobian)[MHE_NX]) {
+    const float two = 1.0f + 1.0f;
+    const float half = MHE_H / two;
+    const float sixth = MHE_H / (two + two + two);
+    float k1[MHE_NX], k2[MHE_NX], k3[MHE_NX], k4[MHE_NX];
+    float d1[MHE_NX][MHE_NX], d2[MHE_NX][MHE_NX], d3[MHE_NX][MHE_NX], d4[MHE_NX][MHE_NX];
+    unsigned i, j;
+    mhe_derivative(x, u, k1, d1);
+    mhe_stage(x, k1, d1, half, u, k2, d2);
+    mhe_stage(x, k2, d2, half, u, k3, d3);
+    mhe_stage(x, k3, d3, MHE_H, u, k4, d4);
+    for (i = 0u; i < MHE_NX; ++i) {
+        next[i] = x[i] + sixth * (k1[i] + two * (k2[i] + k3[i]) + k4[i]);
+        for (j = 0u; j < MHE_NX; ++j) {
+            jacobian[i][j] = (i == j ? 1.0f : 0.0f) + sixth * (d1[i][j] + two * (d2[i][j] + d3[i][j]) + d4[i][j]);
+        }
+    }
+}
+
+/* Rk4::step: one sampling period (MHE_SUBSTEPS substeps, their Jacobians composed). */
+static void mhe_step(const float *x, const float *u, float *next, float (*jacobian)[MHE_NX]) {
+    unsigned s;
+    mhe_substep(x, u, next, jacobian);
+    for (s = 1u; s < MHE_SUBSTEPS; ++s) {
+        float from[MHE_NX];
+        float d[MHE_NX][MHE_NX], composed[MHE_NX][MHE_NX];
+        memcpy(from, next, sizeof from);
+        mhe_substep(from, u, next, d);
+        mhe_product(d, jacobian, composed);
+        memcpy(jacobian, composed, sizeof composed);
+    }
+}
+
+/* firmware::bounds::project onto the learning box: at_least, then at_most, by selects. */
+static void mhe_project(const float *x, float *out) {
+    unsigned i;
+    for (i = 0u; i < MHE_NX; ++i) {
+        const float above = select_float(!(x[i] >= MHE_LOWER[i]), MHE_LOWER[i], x[i]);
+        out[i] = select_float(above > MHE_UPPER[i], MHE_UPPER[i], above);
+    }
+}
+
+/* firmware::mhe::normal_equations over the window of o from x: J^T W J and J^T W r (a non-finite
+ * residual weighs nothing). */
+static void mhe_normal(const ecoli_x0_2_mhe *o, const float *x, float (*matrix)[MHE_NX], float *gradient) {
+    float state[MHE_NX];
+    float sensitivity[MHE_NX][MHE_NX];
+    unsigned k, i, a, b, c, m;
+    memcpy(state, x, sizeof state);
+    for (a = 0u; a < MHE_NX; ++a) {
+        gradient[a] = 0.0f;
+        for (b = 0u; b < MHE_NX; ++b) {
+            matrix[a][b] = 0.0f;
+            sensitivity[a][b] = a == b ? 1.0f : 0.0f;
+        }
+    }
+    for (k = 0u; k < ECOLI_X0_2_HORIZON; ++k) {
+        const float *y = o->y[o->next + k];
+        float out[MHE_NY + MHE_NY * MHE_NX];
+        if (k > 0u) {
+            float next[MHE_NX];
+            float f[MHE_NX][MHE_NX], composed[MHE_NX][MHE_NX];
+            mhe_step(state, MHE_U(k - 1u), next, f);
+            memcpy(state, next, sizeof state);
+            mhe_product(f, sensitivity, composed);
+            memcpy(sensitivity, composed, sizeof composed);
+        }
+        model_output(state, MHE_U(k), out);
+        for (i = 0u; i < MHE_NY; ++i) {
+            const float raw = y[i] - out[i];
+            const int finite = is_finite(raw);
+            const float residual = select_float(finite, raw, 0.0f);
+            const float w = select_float(finite, MHE_WEIGHTS[i], 0.0f);
+            float row[MHE_NX];
+            for (c = 0u; c < MHE_NX; ++c) {
+                row[c] = 0.0f;
+                for (m = 0u; m < MHE_NX; ++m) {
+                    row[c] += out[MHE_NY + i * MHE_NX + m] * sensitivity[m][c];
+                }
+            }
+            for (a = 0u; a < MHE_NX; ++a) {
+                const float weighted = w * row[a];
+                gradient[a] += weighted * residual;
+                for (b = 0u; b < MHE_NX; ++b) {
+                    matrix[a][b] += weighted * row[b];
+                }
+            }
+        }
+    }
+}
+
+/* firmware::mhe::solve_cholesky: a x = b by a = L D L^T (no square root); 0 where a pivot is not
+ * positive and finite. */
+static int mhe_cholesky(float (*a)[MHE_NX], const float *b, float *x) {
+    float l[MHE_NX][MHE_NX], d[MHE_NX], inverse_d[MHE_NX], z[MHE_NX];
+    unsigned i, j, k, r;
+    memset(l, 0, sizeof l);
+    for (j = 0u; j < MHE_NX; ++j) {
+        float pivot = a[j][j];
+        for (k = 0u; k < j; ++k) {
+            pivot -= l[j][k] * l[j][k] * d[k];
+        }
+        if (!(pivot > 0.0f) || !is_finite(pivot)) {
+            return 0;
+        }
+        d[j] = pivot;
+        inverse_d[j] = 1.0f / pivot;
+        for (i = j + 1u; i < MHE_NX; ++i) {
+            float sum = a[i][j];
+            for (k = 0u; k < j; ++k) {
+                sum -= l[i][k] * l[j][k] * d[k];
+            }
+            l[i][j] = sum * inverse_d[j];
+        }
+    }
+    for (r = 0u; r < MHE_NX; ++r) {
+        float sum = b[r];
+        for (k = 0u; k < r; ++k) {
+            sum -= l[r][k] * z[k];
+        }
+        z[r] = sum;
+    }
+    for (r = MHE_NX; r-- > 0u;) {
+        float sum = z[r] * inverse_d[r];
+        for (k = r + 1u; k < MHE_NX; ++k) {
+            sum -= l[k][r] * x[k];
+        }
+        x[r] = sum;
+    }
+    return 1;
+}
+
+/* firmware::mhe::solve_window: MHE_ITERATIONS damped Gauss-Newton steps from centre (with the prior
+ * around it when `prior`), each projected; the solution x and the state at the newest sample. */
+static void mhe_solve_window(const ecoli_x0_2_mhe *o, const float *centre, int prior, float *solution, float *end) {
+    float x[MHE_NX], state[MHE_NX];
+    unsigned n, i, k;
+    memcpy(x, centre, sizeof x);
+    for (n = 0u; n < MHE_ITERATIONS; ++n) {
+        float matrix[MHE_NX][MHE_NX];
+        float gradient[MHE_NX], step[MHE_NX], next[MHE_NX];
+        mhe_normal(o, x, matrix, gradient);
+        for (i = 0u; i < MHE_NX; ++i) {
+            if (prior) {
+                matrix[i][i] += MHE_PRIOR[i];
+                gradient[i] -= MHE_PRIOR[i] * (x[i] - centre[i]);
+            }
+            matrix[i][i] += MHE_DAMPING * matrix[i][i];
+        }
+        if (!mhe_cholesky(matrix, gradient, step)) {
+            break;
+        }
+        for (i = 0u; i < MHE_NX; ++i) {
+            next[i] = x[i] + step[i];
+        }
+        mhe_project(next, x);
+    }
+    memcpy(solution, x, sizeof x);
+    memcpy(state, x, sizeof state);
+    for (k = 1u; k < ECOLI_X0_2_HORIZON; ++k) {
+        float next[MHE_NX];
+        float f[MHE_NX][MHE_NX];
+        mhe_step(state, MHE_U(k - 1u), next, f);
+        memcpy(state, next, sizeof state);
+    }
+    mhe_project(state, end);
+}
+
+void ecoli_x0_2_mhe_init(ecoli_x0_2_mhe *o) {
+    o->next = 0u;
+    o->filled = 0u;
+    o->has_solved = 0;
+    o->ready = 0;
+}
+
+ecoli_x0_2_status ecoli_x0_2_mhe_push(ecoli_x0_2_mhe *o, const float *y, const float *u) {
+    float moved[MHE_NX], x[MHE_NX], end[MHE_NX], values[ECOLI_X0_2_TARGETS];
+    int has_moved = 0;
+    unsigned i, slot;
+    if (!inputs_finite(u)) {
+        return ECOLI_X0_2_REFUSED;
+    }
+    /* The previous solution moved one sample on: the prior's centre and the first iterate. */
+    if (o->has_solved && o->filled >= ECOLI_X0_2_HORIZON) {
+        const unsigned k = 0u;
+        float next[MHE_NX];
+        float f[MHE_NX][MHE_NX];
+        (void)k;
+        mhe_step(o->solved, MHE_U(k), next, f);
+        mhe_project(next, moved);
+        has_moved = 1;
+    }
+    /* The window keeps the sample as it is: a non-finite output weighs nothing. */
+    slot = o->next;
+    for (i = 0u; i < ECOLI_X0_2_OUTPUTS; ++i) {
+        o->y[slot][i] = y[i];
+        o->y[slot + ECOLI_X0_2_HORIZON][i] = y[i];
+    }
+    o->next = slot + 1u >= ECOLI_X0_2_HORIZON ? 0u : slot + 1u;
+    o->filled += (unsigned)(o->filled < ECOLI_X0_2_HORIZON);
+    if (o->filled < ECOLI_X0_2_HORIZON) {
+        return ECOLI_X0_2_OK;
+    }
+    mhe_solve_window(o, has_moved ? moved : MHE_START, has_moved, x, end);
+    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX)) {
+        return ECOLI_X0_2_REFUSED;
+    }
+    memcpy(o->solved, x, sizeof x);
+    o->has_solved = 1;
+    targets(end, u, values);
+    if (!all_finite(y, ECOLI_X0_2_OUTPUTS) || !all_finite(values, ECOLI_X0_2_TARGETS)) {
+        return ECOLI_X0_2_REFUSED;
+    }
+    memcpy(o->values, values, sizeof values);
+    for (i = 0u; i < ECOLI_X0_2_TARGETS; ++i) {
+        o->flags[i] = ECOLI_X0_2_INSIDE;
+    }
+    o->ready = 1;
+    return ECOLI_X0_2_OK;
+}
+
+ecoli_x0_2_status ecoli_x0_2_mhe_estimate(const ecoli_x0_2_mhe *o, float *values, ecoli_x0_2_saturation *saturation) {
+    if (!o->ready) {
+        return ECOLI_X0_2_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return ECOLI_X0_2_OK;
+}
+

@@ -67,6 +67,25 @@ void ecoli_x0_2_ekf_box_init(ecoli_x0_2_ekf_box *observer);
 ecoli_x0_2_status ecoli_x0_2_ekf_box_push(ecoli_x0_2_ekf_box *observer, const float *y, const float *u);
 ecoli_x0_2_status ecoli_x0_2_ekf_box_estimate(const ecoli_x0_2_ekf_box *observer, float *values, ecoli_x0_2_saturation *saturation);
 
+/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 6 Gauss-Newton
+ * step(s) over the last ECOLI_X0_2_HORIZON samples from the previous solution moved one sample on, each
+ * solved by an L D L^T factorisation and projected onto the learning box. Thousands of instructions
+ * per sample (docs/chip.md): the on-line estimate the map replaces. */
+typedef struct {
+    float y[2u * ECOLI_X0_2_HORIZON][ECOLI_X0_2_OUTPUTS];
+    unsigned next;
+    unsigned filled;
+    float solved[ECOLI_X0_2_STATES];
+    int has_solved;
+    float values[ECOLI_X0_2_TARGETS];
+    ecoli_x0_2_saturation flags[ECOLI_X0_2_TARGETS];
+    int ready;
+} ecoli_x0_2_mhe;
+
+void ecoli_x0_2_mhe_init(ecoli_x0_2_mhe *observer);
+ecoli_x0_2_status ecoli_x0_2_mhe_push(ecoli_x0_2_mhe *observer, const float *y, const float *u);
+ecoli_x0_2_status ecoli_x0_2_mhe_estimate(const ecoli_x0_2_mhe *observer, float *values, ecoli_x0_2_saturation *saturation);
+
 /* This design's observer, of the kind `gen` chose or the spec named: map. */
 #define ECOLI_X0_2_KIND "map"
 typedef ecoli_x0_2_map ecoli_x0_2_observer;

@@ -117,6 +117,26 @@ void two_tanks_corrected_init(two_tanks_corrected *observer);
 two_tanks_status two_tanks_corrected_push(two_tanks_corrected *observer, const float *y, const float *u);
 two_tanks_status two_tanks_corrected_estimate(const two_tanks_corrected *observer, float *values, two_tanks_saturation *saturation);
 
+/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 1 Gauss-Newton
+ * step(s) over the last TWO_TANKS_HORIZON samples from the previous solution moved one sample on, each
+ * solved by an L D L^T factorisation and projected onto the learning box. Thousands of instructions
+ * per sample (docs/chip.md): the on-line estimate the map replaces. */
+typedef struct {
+    float y[2u * TWO_TANKS_HORIZON][TWO_TANKS_OUTPUTS];
+    float u[2u * TWO_TANKS_HORIZON][TWO_TANKS_INPUTS];
+    unsigned next;
+    unsigned filled;
+    float solved[TWO_TANKS_STATES];
+    int has_solved;
+    float values[TWO_TANKS_TARGETS];
+    two_tanks_saturation flags[TWO_TANKS_TARGETS];
+    int ready;
+} two_tanks_mhe;
+
+void two_tanks_mhe_init(two_tanks_mhe *observer);
+two_tanks_status two_tanks_mhe_push(two_tanks_mhe *observer, const float *y, const float *u);
+two_tanks_status two_tanks_mhe_estimate(const two_tanks_mhe *observer, float *values, two_tanks_saturation *saturation);
+
 /* This design's observer, of the kind `gen` chose or the spec named: corrected. */
 #define TWO_TANKS_KIND "corrected"
 typedef two_tanks_corrected two_tanks_observer;

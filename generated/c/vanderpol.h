@@ -116,6 +116,25 @@ void vanderpol_corrected_init(vanderpol_corrected *observer);
 vanderpol_status vanderpol_corrected_push(vanderpol_corrected *observer, const float *y, const float *u);
 vanderpol_status vanderpol_corrected_estimate(const vanderpol_corrected *observer, float *values, vanderpol_saturation *saturation);
 
+/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 2 Gauss-Newton
+ * step(s) over the last VANDERPOL_HORIZON samples from the previous solution moved one sample on, each
+ * solved by an L D L^T factorisation and projected onto the learning box. Thousands of instructions
+ * per sample (docs/chip.md): the on-line estimate the map replaces. */
+typedef struct {
+    float y[2u * VANDERPOL_HORIZON][VANDERPOL_OUTPUTS];
+    unsigned next;
+    unsigned filled;
+    float solved[VANDERPOL_STATES];
+    int has_solved;
+    float values[VANDERPOL_TARGETS];
+    vanderpol_saturation flags[VANDERPOL_TARGETS];
+    int ready;
+} vanderpol_mhe;
+
+void vanderpol_mhe_init(vanderpol_mhe *observer);
+vanderpol_status vanderpol_mhe_push(vanderpol_mhe *observer, const float *y, const float *u);
+vanderpol_status vanderpol_mhe_estimate(const vanderpol_mhe *observer, float *values, vanderpol_saturation *saturation);
+
 /* This design's observer, of the kind `gen` chose or the spec named: ekf_restart. */
 #define VANDERPOL_KIND "ekf_restart"
 typedef vanderpol_ekf_restart vanderpol_observer;

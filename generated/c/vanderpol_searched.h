@@ -116,6 +116,25 @@ void vanderpol_searched_corrected_init(vanderpol_searched_corrected *observer);
 vanderpol_searched_status vanderpol_searched_corrected_push(vanderpol_searched_corrected *observer, const float *y, const float *u);
 vanderpol_searched_status vanderpol_searched_corrected_estimate(const vanderpol_searched_corrected *observer, float *values, vanderpol_searched_saturation *saturation);
 
+/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 3 Gauss-Newton
+ * step(s) over the last VANDERPOL_SEARCHED_HORIZON samples from the previous solution moved one sample on, each
+ * solved by an L D L^T factorisation and projected onto the learning box. Thousands of instructions
+ * per sample (docs/chip.md): the on-line estimate the map replaces. */
+typedef struct {
+    float y[2u * VANDERPOL_SEARCHED_HORIZON][VANDERPOL_SEARCHED_OUTPUTS];
+    unsigned next;
+    unsigned filled;
+    float solved[VANDERPOL_SEARCHED_STATES];
+    int has_solved;
+    float values[VANDERPOL_SEARCHED_TARGETS];
+    vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
+    int ready;
+} vanderpol_searched_mhe;
+
+void vanderpol_searched_mhe_init(vanderpol_searched_mhe *observer);
+vanderpol_searched_status vanderpol_searched_mhe_push(vanderpol_searched_mhe *observer, const float *y, const float *u);
+vanderpol_searched_status vanderpol_searched_mhe_estimate(const vanderpol_searched_mhe *observer, float *values, vanderpol_searched_saturation *saturation);
+
 /* This design's observer, of the kind `gen` chose or the spec named: corrected. */
 #define VANDERPOL_SEARCHED_KIND "corrected"
 typedef vanderpol_searched_corrected vanderpol_searched_observer;

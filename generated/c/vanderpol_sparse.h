@@ -116,6 +116,25 @@ void vanderpol_sparse_corrected_init(vanderpol_sparse_corrected *observer);
 vanderpol_sparse_status vanderpol_sparse_corrected_push(vanderpol_sparse_corrected *observer, const float *y, const float *u);
 vanderpol_sparse_status vanderpol_sparse_corrected_estimate(const vanderpol_sparse_corrected *observer, float *values, vanderpol_sparse_saturation *saturation);
 
+/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 3 Gauss-Newton
+ * step(s) over the last VANDERPOL_SPARSE_HORIZON samples from the previous solution moved one sample on, each
+ * solved by an L D L^T factorisation and projected onto the learning box. Thousands of instructions
+ * per sample (docs/chip.md): the on-line estimate the map replaces. */
+typedef struct {
+    float y[2u * VANDERPOL_SPARSE_HORIZON][VANDERPOL_SPARSE_OUTPUTS];
+    unsigned next;
+    unsigned filled;
+    float solved[VANDERPOL_SPARSE_STATES];
+    int has_solved;
+    float values[VANDERPOL_SPARSE_TARGETS];
+    vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
+    int ready;
+} vanderpol_sparse_mhe;
+
+void vanderpol_sparse_mhe_init(vanderpol_sparse_mhe *observer);
+vanderpol_sparse_status vanderpol_sparse_mhe_push(vanderpol_sparse_mhe *observer, const float *y, const float *u);
+vanderpol_sparse_status vanderpol_sparse_mhe_estimate(const vanderpol_sparse_mhe *observer, float *values, vanderpol_sparse_saturation *saturation);
+
 /* This design's observer, of the kind `gen` chose or the spec named: map. */
 #define VANDERPOL_SPARSE_KIND "map"
 typedef vanderpol_sparse_map vanderpol_sparse_observer;

@@ -1265,3 +1265,345 @@ vanderpol_uncertain_status vanderpol_uncertain_corrected_estimate(const vanderpo
     return VANDERPOL_UNCERTAIN_OK;
 }
 
+/* The model's derivative f(x, u), then its Jacobian row by row (the Rust file's Plant::derivative). */
+static void model_derivative(const float *x, const float *u, float *out) {
+    (void)x;
+    (void)u;
+    const float t0 = x[1];
+    const float t1 = -t0;
+    const float t2 = -0.0f;
+    const float t3 = -1.0f;
+    const float t4 = 4.0f /* a */;
+    const float t5 = x[0];
+    const float t6 = t4 * t5;
+    const float t7 = 1.0f /* b */;
+    const float t8 = t5 * t5;
+    const float t9 = t7 - t8;
+    const float t10 = t9 * t0;
+    const float t11 = t6 + t10;
+    const float t12 = 2.0f;
+    const float t13 = t12 * t5;
+    const float t14 = -t13;
+    const float t15 = t14 * t0;
+    const float t16 = t4 + t15;
+    out[0] = t1;
+    out[1] = t11;
+    out[2] = t2;
+    out[3] = t3;
+    out[4] = t16;
+    out[5] = t9;
+}
+
+/* The model's outputs h(x, u), then their Jacobian row by row (the Rust file's Plant::output). */
+static void model_output(const float *x, const float *u, float *out) {
+    (void)x;
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = t0 + t1;
+    const float t3 = 1.0f;
+    out[0] = t2;
+    out[1] = t3;
+    out[2] = t3;
+}
+
+/* The moving-horizon estimate's constants: the outputs' weights 1 / sigma^2, the prior's weight per
+ * state, the learning box, the first window's start, Levenberg's damping, the RK4 substep. */
+static const float MHE_WEIGHTS[VANDERPOL_UNCERTAIN_OUTPUTS] = {
+    5.0f
+};
+static const float MHE_PRIOR[VANDERPOL_UNCERTAIN_STATES] = {
+    378.56992f, 64.13714f
+};
+static const float MHE_LOWER[VANDERPOL_UNCERTAIN_STATES] = {
+    -2.5734026f, -6.151861f
+};
+static const float MHE_UPPER[VANDERPOL_UNCERTAIN_STATES] = {
+    2.5661693f, 6.334768f
+};
+static const float MHE_START[VANDERPOL_UNCERTAIN_STATES] = {
+    0.0f, 0.0f
+};
+static const float MHE_DAMPING = 1e-6f;
+static const float MHE_H = 0.1f;
+#define MHE_ITERATIONS 1u
+#define MHE_SUBSTEPS 1u
+#define MHE_NX VANDERPOL_UNCERTAIN_STATES
+#define MHE_NY VANDERPOL_UNCERTAIN_OUTPUTS
+/* The window's sample k (oldest first) of the observer o: its inputs. */
+#define MHE_U(k) NULL
+
+/* firmware::matrix::product: out = a b, each entry summed from 0 in k's order. */
+static void mhe_product(float (*a)[MHE_NX], float (*b)[MHE_NX], float (*out)[MHE_NX]) {
+    unsigned r, c, k;
+    for (r = 0u; r < MHE_NX; ++r) {
+        for (c = 0u; c < MHE_NX; ++c) {
+            float entry = 0.0f;
+            for (k = 0u; k < MHE_NX; ++k) {
+                entry += a[r][k] * b[k][c];
+            }
+            out[r][c] = entry;
+        }
+    }
+}
+
+/* The derivative k and its Jacobian d at x. */
+static void mhe_derivative(const float *x, const float *u, float *k, float (*d)[MHE_NX]) {
+    float out[MHE_NX + MHE_NX * MHE_NX];
+    unsigned i, j;
+    model_derivative(x, u, out);
+    for (i = 0u; i < MHE_NX; ++i) {
+        k[i] = out[i];
+        for (j = 0u; j < MHE_NX; ++j) {
+            d[i][j] = out[MHE_NX + i * MHE_NX + j];
+        }
+    }
+}
+
+/* Rk4::stage: the derivative at x + w k, and its Jacobian times (I + w d). */
+static void mhe_stage(const float *x, const float *k, float (*d)[MHE_NX], float w, const float *u, float *value,
+                      float (*jacobian)[MHE_NX]) {
+    float point[MHE_NX];
+    float moved[MHE_NX][MHE_NX], a[MHE_NX][MHE_NX];
+    unsigned i, j;
+    for (i = 0u; i < MHE_NX; ++i) {
+        point[i] = x[i] + w * k[i];
+        for (j = 0u; j < MHE_NX; ++j) {
+            moved[i][j] = (i == j ? 1.0f : 0.0f) + w * d[i][j];
+        }
+    }
+    mhe_derivative(point, u, value, a);
+    mhe_product(a, moved, jacobian);
+}
+
+/* Rk4::substep: one classical RK4 step of MHE_H from x, with its Jacobian. */
+static void mhe_substep(const float *x, const float *u, float *next, float (*jacobian)[MHE_NX]) {
+    const float two = 1.0f + 1.0f;
+    const float half = MHE_H / two;
+    const float sixth = MHE_H / (two + two + two);
+    float k1[MHE_NX], k2[MHE_NX], k3[MHE_NX], k4[MHE_NX];
+    float d1[MHE_NX][MHE_NX], d2[MHE_NX][MHE_NX], d3[MHE_NX][MHE_NX], d4[MHE_NX][MHE_NX];
+    unsigned i, j;
+    mhe_derivative(x, u, k1, d1);
+    mhe_stage(x, k1, d1, half, u, k2, d2);
+    mhe_stage(x, k2, d2, half, u, k3, d3);
+    mhe_stage(x, k3, d3, MHE_H, u, k4, d4);
+    for (i = 0u; i < MHE_NX; ++i) {
+        next[i] = x[i] + sixth * (k1[i] + two * (k2[i] + k3[i]) + k4[i]);
+        for (j = 0u; j < MHE_NX; ++j) {
+            jacobian[i][j] = (i == j ? 1.0f : 0.0f) + sixth * (d1[i][j] + two * (d2[i][j] + d3[i][j]) + d4[i][j]);
+        }
+    }
+}
+
+/* Rk4::step: one sampling period (MHE_SUBSTEPS substeps, their Jacobians composed). */
+static void mhe_step(const float *x, const float *u, float *next, float (*jacobian)[MHE_NX]) {
+    unsigned s;
+    mhe_substep(x, u, next, jacobian);
+    for (s = 1u; s < MHE_SUBSTEPS; ++s) {
+        float from[MHE_NX];
+        float d[MHE_NX][MHE_NX], composed[MHE_NX][MHE_NX];
+        memcpy(from, next, sizeof from);
+        mhe_substep(from, u, next, d);
+        mhe_product(d, jacobian, composed);
+        memcpy(jacobian, composed, sizeof composed);
+    }
+}
+
+/* firmware::bounds::project onto the learning box: at_least, then at_most, by selects. */
+static void mhe_project(const float *x, float *out) {
+    unsigned i;
+    for (i = 0u; i < MHE_NX; ++i) {
+        const float above = select_float(!(x[i] >= MHE_LOWER[i]), MHE_LOWER[i], x[i]);
+        out[i] = select_float(above > MHE_UPPER[i], MHE_UPPER[i], above);
+    }
+}
+
+/* firmware::mhe::normal_equations over the window of o from x: J^T W J and J^T W r (a non-finite
+ * residual weighs nothing). */
+static void mhe_normal(const vanderpol_uncertain_mhe *o, const float *x, float (*matrix)[MHE_NX], float *gradient) {
+    float state[MHE_NX];
+    float sensitivity[MHE_NX][MHE_NX];
+    unsigned k, i, a, b, c, m;
+    memcpy(state, x, sizeof state);
+    for (a = 0u; a < MHE_NX; ++a) {
+        gradient[a] = 0.0f;
+        for (b = 0u; b < MHE_NX; ++b) {
+            matrix[a][b] = 0.0f;
+            sensitivity[a][b] = a == b ? 1.0f : 0.0f;
+        }
+    }
+    for (k = 0u; k < VANDERPOL_UNCERTAIN_HORIZON; ++k) {
+        const float *y = o->y[o->next + k];
+        float out[MHE_NY + MHE_NY * MHE_NX];
+        if (k > 0u) {
+            float next[MHE_NX];
+            float f[MHE_NX][MHE_NX], composed[MHE_NX][MHE_NX];
+            mhe_step(state, MHE_U(k - 1u), next, f);
+            memcpy(state, next, sizeof state);
+            mhe_product(f, sensitivity, composed);
+            memcpy(sensitivity, composed, sizeof composed);
+        }
+        model_output(state, MHE_U(k), out);
+        for (i = 0u; i < MHE_NY; ++i) {
+            const float raw = y[i] - out[i];
+            const int finite = is_finite(raw);
+            const float residual = select_float(finite, raw, 0.0f);
+            const float w = select_float(finite, MHE_WEIGHTS[i], 0.0f);
+            float row[MHE_NX];
+            for (c = 0u; c < MHE_NX; ++c) {
+                row[c] = 0.0f;
+                for (m = 0u; m < MHE_NX; ++m) {
+                    row[c] += out[MHE_NY + i * MHE_NX + m] * sensitivity[m][c];
+                }
+            }
+            for (a = 0u; a < MHE_NX; ++a) {
+                const float weighted = w * row[a];
+                gradient[a] += weighted * residual;
+                for (b = 0u; b < MHE_NX; ++b) {
+                    matrix[a][b] += weighted * row[b];
+                }
+            }
+        }
+    }
+}
+
+/* firmware::mhe::solve_cholesky: a x = b by a = L D L^T (no square root); 0 where a pivot is not
+ * positive and finite. */
+static int mhe_cholesky(float (*a)[MHE_NX], const float *b, float *x) {
+    float l[MHE_NX][MHE_NX], d[MHE_NX], inverse_d[MHE_NX], z[MHE_NX];
+    unsigned i, j, k, r;
+    memset(l, 0, sizeof l);
+    for (j = 0u; j < MHE_NX; ++j) {
+        float pivot = a[j][j];
+        for (k = 0u; k < j; ++k) {
+            pivot -= l[j][k] * l[j][k] * d[k];
+        }
+        if (!(pivot > 0.0f) || !is_finite(pivot)) {
+            return 0;
+        }
+        d[j] = pivot;
+        inverse_d[j] = 1.0f / pivot;
+        for (i = j + 1u; i < MHE_NX; ++i) {
+            float sum = a[i][j];
+            for (k = 0u; k < j; ++k) {
+                sum -= l[i][k] * l[j][k] * d[k];
+            }
+            l[i][j] = sum * inverse_d[j];
+        }
+    }
+    for (r = 0u; r < MHE_NX; ++r) {
+        float sum = b[r];
+        for (k = 0u; k < r; ++k) {
+            sum -= l[r][k] * z[k];
+        }
+        z[r] = sum;
+    }
+    for (r = MHE_NX; r-- > 0u;) {
+        float sum = z[r] * inverse_d[r];
+        for (k = r + 1u; k < MHE_NX; ++k) {
+            sum -= l[k][r] * x[k];
+        }
+        x[r] = sum;
+    }
+    return 1;
+}
+
+/* firmware::mhe::solve_window: MHE_ITERATIONS damped Gauss-Newton steps from centre (with the prior
+ * around it when `prior`), each projected; the solution x and the state at the newest sample. */
+static void mhe_solve_window(const vanderpol_uncertain_mhe *o, const float *centre, int prior, float *solution, float *end) {
+    float x[MHE_NX], state[MHE_NX];
+    unsigned n, i, k;
+    memcpy(x, centre, sizeof x);
+    for (n = 0u; n < MHE_ITERATIONS; ++n) {
+        float matrix[MHE_NX][MHE_NX];
+        float gradient[MHE_NX], step[MHE_NX], next[MHE_NX];
+        mhe_normal(o, x, matrix, gradient);
+        for (i = 0u; i < MHE_NX; ++i) {
+            if (prior) {
+                matrix[i][i] += MHE_PRIOR[i];
+                gradient[i] -= MHE_PRIOR[i] * (x[i] - centre[i]);
+            }
+            matrix[i][i] += MHE_DAMPING * matrix[i][i];
+        }
+        if (!mhe_cholesky(matrix, gradient, step)) {
+            break;
+        }
+        for (i = 0u; i < MHE_NX; ++i) {
+            next[i] = x[i] + step[i];
+        }
+        mhe_project(next, x);
+    }
+    memcpy(solution, x, sizeof x);
+    memcpy(state, x, sizeof state);
+    for (k = 1u; k < VANDERPOL_UNCERTAIN_HORIZON; ++k) {
+        float next[MHE_NX];
+        float f[MHE_NX][MHE_NX];
+        mhe_step(state, MHE_U(k - 1u), next, f);
+        memcpy(state, next, sizeof state);
+    }
+    mhe_project(state, end);
+}
+
+void vanderpol_uncertain_mhe_init(vanderpol_uncertain_mhe *o) {
+    o->next = 0u;
+    o->filled = 0u;
+    o->has_solved = 0;
+    o->ready = 0;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_mhe_push(vanderpol_uncertain_mhe *o, const float *y, const float *u) {
+    float moved[MHE_NX], x[MHE_NX], end[MHE_NX], values[VANDERPOL_UNCERTAIN_TARGETS];
+    int has_moved = 0;
+    unsigned i, slot;
+    if (!inputs_finite(u)) {
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    /* The previous solution moved one sample on: the prior's centre and the first iterate. */
+    if (o->has_solved && o->filled >= VANDERPOL_UNCERTAIN_HORIZON) {
+        const unsigned k = 0u;
+        float next[MHE_NX];
+        float f[MHE_NX][MHE_NX];
+        (void)k;
+        mhe_step(o->solved, MHE_U(k), next, f);
+        mhe_project(next, moved);
+        has_moved = 1;
+    }
+    /* The window keeps the sample as it is: a non-finite output weighs nothing. */
+    slot = o->next;
+    for (i = 0u; i < VANDERPOL_UNCERTAIN_OUTPUTS; ++i) {
+        o->y[slot][i] = y[i];
+        o->y[slot + VANDERPOL_UNCERTAIN_HORIZON][i] = y[i];
+    }
+    o->next = slot + 1u >= VANDERPOL_UNCERTAIN_HORIZON ? 0u : slot + 1u;
+    o->filled += (unsigned)(o->filled < VANDERPOL_UNCERTAIN_HORIZON);
+    if (o->filled < VANDERPOL_UNCERTAIN_HORIZON) {
+        return VANDERPOL_UNCERTAIN_OK;
+    }
+    mhe_solve_window(o, has_moved ? moved : MHE_START, has_moved, x, end);
+    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX)) {
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    memcpy(o->solved, x, sizeof x);
+    o->has_solved = 1;
+    targets(end, u, values);
+    if (!all_finite(y, VANDERPOL_UNCERTAIN_OUTPUTS) || !all_finite(values, VANDERPOL_UNCERTAIN_TARGETS)) {
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    memcpy(o->values, values, sizeof values);
+    for (i = 0u; i < VANDERPOL_UNCERTAIN_TARGETS; ++i) {
+        o->flags[i] = VANDERPOL_UNCERTAIN_INSIDE;
+    }
+    o->ready = 1;
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_mhe_estimate(const vanderpol_uncertain_mhe *o, float *values, vanderpol_uncertain_saturation *saturation) {
+    if (!o->ready) {
+        return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return VANDERPOL_UNCERTAIN_OK;
+}
+

@@ -116,6 +116,25 @@ void vanderpol_uncertain_corrected_init(vanderpol_uncertain_corrected *observer)
 vanderpol_uncertain_status vanderpol_uncertain_corrected_push(vanderpol_uncertain_corrected *observer, const float *y, const float *u);
 vanderpol_uncertain_status vanderpol_uncertain_corrected_estimate(const vanderpol_uncertain_corrected *observer, float *values, vanderpol_uncertain_saturation *saturation);
 
+/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 1 Gauss-Newton
+ * step(s) over the last VANDERPOL_UNCERTAIN_HORIZON samples from the previous solution moved one sample on, each
+ * solved by an L D L^T factorisation and projected onto the learning box. Thousands of instructions
+ * per sample (docs/chip.md): the on-line estimate the map replaces. */
+typedef struct {
+    float y[2u * VANDERPOL_UNCERTAIN_HORIZON][VANDERPOL_UNCERTAIN_OUTPUTS];
+    unsigned next;
+    unsigned filled;
+    float solved[VANDERPOL_UNCERTAIN_STATES];
+    int has_solved;
+    float values[VANDERPOL_UNCERTAIN_TARGETS];
+    vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
+    int ready;
+} vanderpol_uncertain_mhe;
+
+void vanderpol_uncertain_mhe_init(vanderpol_uncertain_mhe *observer);
+vanderpol_uncertain_status vanderpol_uncertain_mhe_push(vanderpol_uncertain_mhe *observer, const float *y, const float *u);
+vanderpol_uncertain_status vanderpol_uncertain_mhe_estimate(const vanderpol_uncertain_mhe *observer, float *values, vanderpol_uncertain_saturation *saturation);
+
 /* This design's observer, of the kind `gen` chose or the spec named: corrected. */
 #define VANDERPOL_UNCERTAIN_KIND "corrected"
 typedef vanderpol_uncertain_corrected vanderpol_uncertain_observer;

@@ -345,9 +345,9 @@ fn readme(one: &Prepared) -> String {
          `{name}_map`, `{name}_ekf_box`, … are the other kinds. Choose it unless something below applies.\n\
          - **The Rust static library** (`{c}/`): `cd {c} && cargo build --release --target thumbv7em-none-eabihf` \
          gives `lib{library}_c.a` and `{c}/include/{name}.h` (`{name}_init(storage, size)`, `{name}_push`, \
-         `{name}_estimate` over storage of `STORAGE_SIZE` bytes). Choose it when the observer is of a kind that has no \
-         C source (`mhe`), or when you want exactly the code the on-target figures measure for the Rust build; it \
-         needs a Rust toolchain with your target, and your build links a Rust archive.\n\n",
+         `{name}_estimate` over storage of `STORAGE_SIZE` bytes, every call checking its arguments). Choose it when you \
+         want exactly the code the Rust rows of the on-target figures measure, or calls that check the storage they \
+         are given; it needs a Rust toolchain with your target, and your build links a Rust archive.\n\n",
         crate::emit::doc_prose(&design.description),
         env!("CARGO_PKG_VERSION"),
         c = c_library::FOLDER,

@@ -1,12 +1,13 @@
 //! The model-based kinds in C: the model's programs as functions ([`super::program`]), then the
 //! EKF from the box centre (`ekf_box`, the Rust file's `BoxEkfObserver`), the EKF the map starts
 //! (`ekf_map`, `StartedEkfObserver`), the box EKF the map checks once (`ekf_restart`,
-//! `RestartedEkfObserver`) and the model-corrected map (`corrected`, [`super::corrected`]), each
-//! with the Rust observer's steps in the same order.
+//! `RestartedEkfObserver`), the model-corrected map (`corrected`, [`super::corrected`]) and the
+//! moving-horizon estimate (`mhe`, [`super::mhe`]), each with the Rust observer's steps in the same
+//! order.
 
 use super::program::{function, helpers, needs_math};
 use super::started::{self, map_states, targets_of, Follower};
-use super::{corrected, float, floats};
+use super::{corrected, float, floats, mhe};
 use crate::emit::model::Observers;
 use crate::emit::EmitError;
 use crate::plant::correction;
@@ -27,7 +28,7 @@ pub(super) struct Kinds {
     pub needs_math: bool,
 }
 
-/// Every model-based kind `observers` has, but `mhe`.
+/// Every model-based kind `observers` has.
 pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>) -> Result<Kinds, EmitError> {
     let name = design.name.as_str();
     let upper = name.to_uppercase();
@@ -43,7 +44,10 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
     if let Some(c) = &correction {
         programs.extend([&c.predict, &c.start_up, &c.steady]);
     }
-    if observers.ekf.is_none() && observers.corrected.is_none() {
+    if observers.mhe.is_some() {
+        programs.extend([&code.derivative, &code.output]);
+    }
+    if observers.ekf.is_none() && observers.corrected.is_none() && observers.mhe.is_none() {
         return Ok(Kinds::default());
     }
     let mut kinds = Kinds {
@@ -141,6 +145,12 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
         kinds.header += &header;
         kinds.source += &source;
         kinds.names.push("corrected");
+    }
+    if let Some(constants) = observers.mhe {
+        let (header, source) = mhe::mhe(name, code, constants, design.chip_substeps)?;
+        kinds.header += &header;
+        kinds.source += &source;
+        kinds.names.push("mhe");
     }
     Ok(kinds)
 }

@@ -8,12 +8,12 @@
 //! C99 with `float` only: no `malloc`, no recursion, no VLA, no global mutable state; `<math.h>` only
 //! where the model calls a function; a value is finite when its exponent bits are not all ones. Each
 //! kind is a struct the caller allocates (`<name>_<kind>`) with `_init`, `_push` and `_estimate`, the
-//! Rust observer's `new`, `push` and `estimate`; `<name>_observer` names the design's chosen kind. The
-//! moving-horizon kind (`mhe`) is generic Rust code over the design's sizes and has no C form.
+//! Rust observer's `new`, `push` and `estimate`; `<name>_observer` names the design's chosen kind.
 
 mod corrected;
 mod filters;
 mod map;
+mod mhe;
 mod program;
 mod started;
 
@@ -49,7 +49,7 @@ fn floats(what: &str, values: &[f64]) -> Result<String, EmitError> {
 }
 
 /// The C source of `design`: its map (tables in `result`) and, given its model's programs and the
-/// observers the Rust file has, every model-based kind but `mhe`.
+/// observers the Rust file has, every model-based kind.
 pub fn c_source(
     design: &Design,
     result: &DesignResult,
