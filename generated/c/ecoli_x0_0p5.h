@@ -6,6 +6,7 @@
 #define ECOLI_X0_0P5_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #define ECOLI_X0_0P5_OUTPUTS 2u
 #define ECOLI_X0_0P5_INPUTS 0u
@@ -92,5 +93,43 @@ typedef ecoli_x0_0p5_ekf_box ecoli_x0_0p5_observer;
 #define ecoli_x0_0p5_observer_init ecoli_x0_0p5_ekf_box_init
 #define ecoli_x0_0p5_observer_push ecoli_x0_0p5_ekf_box_push
 #define ecoli_x0_0p5_observer_estimate ecoli_x0_0p5_ekf_box_estimate
+
+/* The Rust static library's interface (c/include/ecoli_x0_0p5.h of a crate `mho gen --spec` writes) over
+ * ecoli_x0_0p5_observer: the same calls and statuses, so that a firmware moves between the two routes
+ * without a change. The observer lives in storage you provide, ECOLI_X0_0P5_STORAGE_SIZE bytes aligned to
+ * ECOLI_X0_0P5_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
+ * checks them first. */
+#define ECOLI_X0_0P5_STORAGE_ALIGN 8u
+/* The sample period the design assumes, in its time unit. */
+#define ECOLI_X0_0P5_SAMPLE_PERIOD 0.2f
+typedef struct {
+    uint64_t mark;
+    uint64_t size;
+    ecoli_x0_0p5_observer observer;
+} ecoli_x0_0p5_stored;
+#define ECOLI_X0_0P5_STORAGE_SIZE sizeof(ecoli_x0_0p5_stored)
+
+typedef enum {
+    /* Done. */
+    EcoliX00p5Status_Ok = 0,
+    /* The sample was refused; see ECOLI_X0_0P5_REFUSED. */
+    EcoliX00p5Status_Refused = 1,
+    /* No estimate yet; nothing was written. */
+    EcoliX00p5Status_NoEstimateYet = 2,
+    /* A null pointer, or storage too small or misaligned: nothing was done. */
+    EcoliX00p5Status_BadArgument = 3,
+    /* The storage holds no observer of this design (ecoli_x0_0p5_init never made one there). */
+    EcoliX00p5Status_NotInitialised = 4
+} EcoliX00p5Status;
+
+/* A fresh observer in storage of `size` bytes; call it again to reset. */
+EcoliX00p5Status ecoli_x0_0p5_init(void *storage, size_t size);
+/* ecoli_x0_0p5_observer_push on the observer in storage. */
+EcoliX00p5Status ecoli_x0_0p5_push(void *storage, const float *y, const float *u);
+/* The estimates into estimates[ECOLI_X0_0P5_TARGETS] and, unless saturation is NULL, whether each was
+ * clamped (-1 below its range, 0 inside, 1 above). */
+EcoliX00p5Status ecoli_x0_0p5_estimate(void *storage, float *estimates, int8_t *saturation);
+/* Bytes the observer occupies with its mark. */
+size_t ecoli_x0_0p5_storage_size(void);
 
 #endif

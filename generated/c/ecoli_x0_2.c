@@ -2562,7 +2562,8 @@ static int mhe_cholesky(float (*a)[MHE_NX], const float *b, float *x) {
         inverse_d[j] = 1.0f / pivot;
         for (i = j + 1u; i < MHE_NX; ++i) {
             float sum = a[i][j];
-            for (k = 0u; k < j; ++k) {
+            /* k < MHE_NX always holds: said for gcc -O1, which otherwise warns of an access beyond l. */
+            for (k = 0u; k < j && k < MHE_NX; ++k) {
                 sum -= l[i][k] * l[j][k] * d[k];
             }
             l[i][j] = sum * inverse_d[j];
@@ -2683,3 +2684,66 @@ ecoli_x0_2_status ecoli_x0_2_mhe_estimate(const ecoli_x0_2_mhe *o, float *values
     return ECOLI_X0_2_OK;
 }
 
+/* The mark of this design's observer in storage (never 0: zeroed storage holds none). */
+#define STORAGE_MARK 0x684b4e04220eb967ull
+
+/* The observer in storage: EcoliX02Status_BadArgument for a null or misaligned pointer,
+ * EcoliX02Status_NotInitialised where ecoli_x0_2_init did not make one (it reads the first 16 bytes only). */
+static EcoliX02Status stored_observer(void *storage, ecoli_x0_2_observer **observer) {
+    ecoli_x0_2_stored *stored = (ecoli_x0_2_stored *)storage;
+    if (storage == NULL || (uintptr_t)storage % ECOLI_X0_2_STORAGE_ALIGN != 0u) {
+        return EcoliX02Status_BadArgument;
+    }
+    if (stored->mark != STORAGE_MARK || stored->size < (uint64_t)sizeof(ecoli_x0_2_stored)) {
+        return EcoliX02Status_NotInitialised;
+    }
+    *observer = &stored->observer;
+    return EcoliX02Status_Ok;
+}
+
+EcoliX02Status ecoli_x0_2_init(void *storage, size_t size) {
+    ecoli_x0_2_stored *stored = (ecoli_x0_2_stored *)storage;
+    if (storage == NULL || size < sizeof(ecoli_x0_2_stored) || (uintptr_t)storage % ECOLI_X0_2_STORAGE_ALIGN != 0u) {
+        return EcoliX02Status_BadArgument;
+    }
+    stored->mark = STORAGE_MARK;
+    stored->size = (uint64_t)size;
+    ecoli_x0_2_observer_init(&stored->observer);
+    return EcoliX02Status_Ok;
+}
+
+EcoliX02Status ecoli_x0_2_push(void *storage, const float *y, const float *u) {
+    ecoli_x0_2_observer *observer = NULL;
+    const EcoliX02Status found = stored_observer(storage, &observer);
+    if (found != EcoliX02Status_Ok) {
+        return found;
+    }
+    if (y == NULL) {
+        return EcoliX02Status_BadArgument;
+    }
+    return ecoli_x0_2_observer_push(observer, y, u) == ECOLI_X0_2_OK ? EcoliX02Status_Ok : EcoliX02Status_Refused;
+}
+
+EcoliX02Status ecoli_x0_2_estimate(void *storage, float *estimates, int8_t *saturation) {
+    ecoli_x0_2_observer *observer = NULL;
+    ecoli_x0_2_saturation flags[ECOLI_X0_2_TARGETS];
+    unsigned i;
+    const EcoliX02Status found = stored_observer(storage, &observer);
+    if (found != EcoliX02Status_Ok) {
+        return found;
+    }
+    if (estimates == NULL) {
+        return EcoliX02Status_BadArgument;
+    }
+    if (ecoli_x0_2_observer_estimate(observer, estimates, flags) != ECOLI_X0_2_OK) {
+        return EcoliX02Status_NoEstimateYet;
+    }
+    for (i = 0u; saturation != NULL && i < ECOLI_X0_2_TARGETS; ++i) {
+        saturation[i] = (int8_t)(flags[i] == ECOLI_X0_2_LOW ? -1 : flags[i] == ECOLI_X0_2_HIGH ? 1 : 0);
+    }
+    return EcoliX02Status_Ok;
+}
+
+size_t ecoli_x0_2_storage_size(void) {
+    return sizeof(ecoli_x0_2_stored);
+}

@@ -6,6 +6,7 @@
 #define ECOLI_X0_2_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #define ECOLI_X0_2_OUTPUTS 2u
 #define ECOLI_X0_2_INPUTS 0u
@@ -92,5 +93,43 @@ typedef ecoli_x0_2_map ecoli_x0_2_observer;
 #define ecoli_x0_2_observer_init ecoli_x0_2_map_init
 #define ecoli_x0_2_observer_push ecoli_x0_2_map_push
 #define ecoli_x0_2_observer_estimate ecoli_x0_2_map_estimate
+
+/* The Rust static library's interface (c/include/ecoli_x0_2.h of a crate `mho gen --spec` writes) over
+ * ecoli_x0_2_observer: the same calls and statuses, so that a firmware moves between the two routes
+ * without a change. The observer lives in storage you provide, ECOLI_X0_2_STORAGE_SIZE bytes aligned to
+ * ECOLI_X0_2_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
+ * checks them first. */
+#define ECOLI_X0_2_STORAGE_ALIGN 8u
+/* The sample period the design assumes, in its time unit. */
+#define ECOLI_X0_2_SAMPLE_PERIOD 0.2f
+typedef struct {
+    uint64_t mark;
+    uint64_t size;
+    ecoli_x0_2_observer observer;
+} ecoli_x0_2_stored;
+#define ECOLI_X0_2_STORAGE_SIZE sizeof(ecoli_x0_2_stored)
+
+typedef enum {
+    /* Done. */
+    EcoliX02Status_Ok = 0,
+    /* The sample was refused; see ECOLI_X0_2_REFUSED. */
+    EcoliX02Status_Refused = 1,
+    /* No estimate yet; nothing was written. */
+    EcoliX02Status_NoEstimateYet = 2,
+    /* A null pointer, or storage too small or misaligned: nothing was done. */
+    EcoliX02Status_BadArgument = 3,
+    /* The storage holds no observer of this design (ecoli_x0_2_init never made one there). */
+    EcoliX02Status_NotInitialised = 4
+} EcoliX02Status;
+
+/* A fresh observer in storage of `size` bytes; call it again to reset. */
+EcoliX02Status ecoli_x0_2_init(void *storage, size_t size);
+/* ecoli_x0_2_observer_push on the observer in storage. */
+EcoliX02Status ecoli_x0_2_push(void *storage, const float *y, const float *u);
+/* The estimates into estimates[ECOLI_X0_2_TARGETS] and, unless saturation is NULL, whether each was
+ * clamped (-1 below its range, 0 inside, 1 above). */
+EcoliX02Status ecoli_x0_2_estimate(void *storage, float *estimates, int8_t *saturation);
+/* Bytes the observer occupies with its mark. */
+size_t ecoli_x0_2_storage_size(void);
 
 #endif

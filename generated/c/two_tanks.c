@@ -1939,7 +1939,8 @@ static int mhe_cholesky(float (*a)[MHE_NX], const float *b, float *x) {
         inverse_d[j] = 1.0f / pivot;
         for (i = j + 1u; i < MHE_NX; ++i) {
             float sum = a[i][j];
-            for (k = 0u; k < j; ++k) {
+            /* k < MHE_NX always holds: said for gcc -O1, which otherwise warns of an access beyond l. */
+            for (k = 0u; k < j && k < MHE_NX; ++k) {
                 sum -= l[i][k] * l[j][k] * d[k];
             }
             l[i][j] = sum * inverse_d[j];
@@ -2064,3 +2065,66 @@ two_tanks_status two_tanks_mhe_estimate(const two_tanks_mhe *o, float *values, t
     return TWO_TANKS_OK;
 }
 
+/* The mark of this design's observer in storage (never 0: zeroed storage holds none). */
+#define STORAGE_MARK 0x491c647d9c035b4bull
+
+/* The observer in storage: TwoTanksStatus_BadArgument for a null or misaligned pointer,
+ * TwoTanksStatus_NotInitialised where two_tanks_init did not make one (it reads the first 16 bytes only). */
+static TwoTanksStatus stored_observer(void *storage, two_tanks_observer **observer) {
+    two_tanks_stored *stored = (two_tanks_stored *)storage;
+    if (storage == NULL || (uintptr_t)storage % TWO_TANKS_STORAGE_ALIGN != 0u) {
+        return TwoTanksStatus_BadArgument;
+    }
+    if (stored->mark != STORAGE_MARK || stored->size < (uint64_t)sizeof(two_tanks_stored)) {
+        return TwoTanksStatus_NotInitialised;
+    }
+    *observer = &stored->observer;
+    return TwoTanksStatus_Ok;
+}
+
+TwoTanksStatus two_tanks_init(void *storage, size_t size) {
+    two_tanks_stored *stored = (two_tanks_stored *)storage;
+    if (storage == NULL || size < sizeof(two_tanks_stored) || (uintptr_t)storage % TWO_TANKS_STORAGE_ALIGN != 0u) {
+        return TwoTanksStatus_BadArgument;
+    }
+    stored->mark = STORAGE_MARK;
+    stored->size = (uint64_t)size;
+    two_tanks_observer_init(&stored->observer);
+    return TwoTanksStatus_Ok;
+}
+
+TwoTanksStatus two_tanks_push(void *storage, const float *y, const float *u) {
+    two_tanks_observer *observer = NULL;
+    const TwoTanksStatus found = stored_observer(storage, &observer);
+    if (found != TwoTanksStatus_Ok) {
+        return found;
+    }
+    if (y == NULL || u == NULL) {
+        return TwoTanksStatus_BadArgument;
+    }
+    return two_tanks_observer_push(observer, y, u) == TWO_TANKS_OK ? TwoTanksStatus_Ok : TwoTanksStatus_Refused;
+}
+
+TwoTanksStatus two_tanks_estimate(void *storage, float *estimates, int8_t *saturation) {
+    two_tanks_observer *observer = NULL;
+    two_tanks_saturation flags[TWO_TANKS_TARGETS];
+    unsigned i;
+    const TwoTanksStatus found = stored_observer(storage, &observer);
+    if (found != TwoTanksStatus_Ok) {
+        return found;
+    }
+    if (estimates == NULL) {
+        return TwoTanksStatus_BadArgument;
+    }
+    if (two_tanks_observer_estimate(observer, estimates, flags) != TWO_TANKS_OK) {
+        return TwoTanksStatus_NoEstimateYet;
+    }
+    for (i = 0u; saturation != NULL && i < TWO_TANKS_TARGETS; ++i) {
+        saturation[i] = (int8_t)(flags[i] == TWO_TANKS_LOW ? -1 : flags[i] == TWO_TANKS_HIGH ? 1 : 0);
+    }
+    return TwoTanksStatus_Ok;
+}
+
+size_t two_tanks_storage_size(void) {
+    return sizeof(two_tanks_stored);
+}

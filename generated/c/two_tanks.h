@@ -6,6 +6,7 @@
 #define TWO_TANKS_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #define TWO_TANKS_OUTPUTS 1u
 #define TWO_TANKS_INPUTS 1u
@@ -143,5 +144,43 @@ typedef two_tanks_corrected two_tanks_observer;
 #define two_tanks_observer_init two_tanks_corrected_init
 #define two_tanks_observer_push two_tanks_corrected_push
 #define two_tanks_observer_estimate two_tanks_corrected_estimate
+
+/* The Rust static library's interface (c/include/two_tanks.h of a crate `mho gen --spec` writes) over
+ * two_tanks_observer: the same calls and statuses, so that a firmware moves between the two routes
+ * without a change. The observer lives in storage you provide, TWO_TANKS_STORAGE_SIZE bytes aligned to
+ * TWO_TANKS_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
+ * checks them first. */
+#define TWO_TANKS_STORAGE_ALIGN 8u
+/* The sample period the design assumes, in its time unit. */
+#define TWO_TANKS_SAMPLE_PERIOD 1.0f
+typedef struct {
+    uint64_t mark;
+    uint64_t size;
+    two_tanks_observer observer;
+} two_tanks_stored;
+#define TWO_TANKS_STORAGE_SIZE sizeof(two_tanks_stored)
+
+typedef enum {
+    /* Done. */
+    TwoTanksStatus_Ok = 0,
+    /* The sample was refused; see TWO_TANKS_REFUSED. */
+    TwoTanksStatus_Refused = 1,
+    /* No estimate yet; nothing was written. */
+    TwoTanksStatus_NoEstimateYet = 2,
+    /* A null pointer, or storage too small or misaligned: nothing was done. */
+    TwoTanksStatus_BadArgument = 3,
+    /* The storage holds no observer of this design (two_tanks_init never made one there). */
+    TwoTanksStatus_NotInitialised = 4
+} TwoTanksStatus;
+
+/* A fresh observer in storage of `size` bytes; call it again to reset. */
+TwoTanksStatus two_tanks_init(void *storage, size_t size);
+/* two_tanks_observer_push on the observer in storage. */
+TwoTanksStatus two_tanks_push(void *storage, const float *y, const float *u);
+/* The estimates into estimates[TWO_TANKS_TARGETS] and, unless saturation is NULL, whether each was
+ * clamped (-1 below its range, 0 inside, 1 above). */
+TwoTanksStatus two_tanks_estimate(void *storage, float *estimates, int8_t *saturation);
+/* Bytes the observer occupies with its mark. */
+size_t two_tanks_storage_size(void);
 
 #endif

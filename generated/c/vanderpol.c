@@ -1475,7 +1475,8 @@ static int mhe_cholesky(float (*a)[MHE_NX], const float *b, float *x) {
         inverse_d[j] = 1.0f / pivot;
         for (i = j + 1u; i < MHE_NX; ++i) {
             float sum = a[i][j];
-            for (k = 0u; k < j; ++k) {
+            /* k < MHE_NX always holds: said for gcc -O1, which otherwise warns of an access beyond l. */
+            for (k = 0u; k < j && k < MHE_NX; ++k) {
                 sum -= l[i][k] * l[j][k] * d[k];
             }
             l[i][j] = sum * inverse_d[j];
@@ -1596,3 +1597,66 @@ vanderpol_status vanderpol_mhe_estimate(const vanderpol_mhe *o, float *values, v
     return VANDERPOL_OK;
 }
 
+/* The mark of this design's observer in storage (never 0: zeroed storage holds none). */
+#define STORAGE_MARK 0x8ca663582afa35e5ull
+
+/* The observer in storage: VanderpolStatus_BadArgument for a null or misaligned pointer,
+ * VanderpolStatus_NotInitialised where vanderpol_init did not make one (it reads the first 16 bytes only). */
+static VanderpolStatus stored_observer(void *storage, vanderpol_observer **observer) {
+    vanderpol_stored *stored = (vanderpol_stored *)storage;
+    if (storage == NULL || (uintptr_t)storage % VANDERPOL_STORAGE_ALIGN != 0u) {
+        return VanderpolStatus_BadArgument;
+    }
+    if (stored->mark != STORAGE_MARK || stored->size < (uint64_t)sizeof(vanderpol_stored)) {
+        return VanderpolStatus_NotInitialised;
+    }
+    *observer = &stored->observer;
+    return VanderpolStatus_Ok;
+}
+
+VanderpolStatus vanderpol_init(void *storage, size_t size) {
+    vanderpol_stored *stored = (vanderpol_stored *)storage;
+    if (storage == NULL || size < sizeof(vanderpol_stored) || (uintptr_t)storage % VANDERPOL_STORAGE_ALIGN != 0u) {
+        return VanderpolStatus_BadArgument;
+    }
+    stored->mark = STORAGE_MARK;
+    stored->size = (uint64_t)size;
+    vanderpol_observer_init(&stored->observer);
+    return VanderpolStatus_Ok;
+}
+
+VanderpolStatus vanderpol_push(void *storage, const float *y, const float *u) {
+    vanderpol_observer *observer = NULL;
+    const VanderpolStatus found = stored_observer(storage, &observer);
+    if (found != VanderpolStatus_Ok) {
+        return found;
+    }
+    if (y == NULL) {
+        return VanderpolStatus_BadArgument;
+    }
+    return vanderpol_observer_push(observer, y, u) == VANDERPOL_OK ? VanderpolStatus_Ok : VanderpolStatus_Refused;
+}
+
+VanderpolStatus vanderpol_estimate(void *storage, float *estimates, int8_t *saturation) {
+    vanderpol_observer *observer = NULL;
+    vanderpol_saturation flags[VANDERPOL_TARGETS];
+    unsigned i;
+    const VanderpolStatus found = stored_observer(storage, &observer);
+    if (found != VanderpolStatus_Ok) {
+        return found;
+    }
+    if (estimates == NULL) {
+        return VanderpolStatus_BadArgument;
+    }
+    if (vanderpol_observer_estimate(observer, estimates, flags) != VANDERPOL_OK) {
+        return VanderpolStatus_NoEstimateYet;
+    }
+    for (i = 0u; saturation != NULL && i < VANDERPOL_TARGETS; ++i) {
+        saturation[i] = (int8_t)(flags[i] == VANDERPOL_LOW ? -1 : flags[i] == VANDERPOL_HIGH ? 1 : 0);
+    }
+    return VanderpolStatus_Ok;
+}
+
+size_t vanderpol_storage_size(void) {
+    return sizeof(vanderpol_stored);
+}

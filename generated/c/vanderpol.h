@@ -6,6 +6,7 @@
 #define VANDERPOL_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #define VANDERPOL_OUTPUTS 1u
 #define VANDERPOL_INPUTS 0u
@@ -141,5 +142,43 @@ typedef vanderpol_ekf_restart vanderpol_observer;
 #define vanderpol_observer_init vanderpol_ekf_restart_init
 #define vanderpol_observer_push vanderpol_ekf_restart_push
 #define vanderpol_observer_estimate vanderpol_ekf_restart_estimate
+
+/* The Rust static library's interface (c/include/vanderpol.h of a crate `mho gen --spec` writes) over
+ * vanderpol_observer: the same calls and statuses, so that a firmware moves between the two routes
+ * without a change. The observer lives in storage you provide, VANDERPOL_STORAGE_SIZE bytes aligned to
+ * VANDERPOL_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
+ * checks them first. */
+#define VANDERPOL_STORAGE_ALIGN 8u
+/* The sample period the design assumes, in its time unit. */
+#define VANDERPOL_SAMPLE_PERIOD 0.1f
+typedef struct {
+    uint64_t mark;
+    uint64_t size;
+    vanderpol_observer observer;
+} vanderpol_stored;
+#define VANDERPOL_STORAGE_SIZE sizeof(vanderpol_stored)
+
+typedef enum {
+    /* Done. */
+    VanderpolStatus_Ok = 0,
+    /* The sample was refused; see VANDERPOL_REFUSED. */
+    VanderpolStatus_Refused = 1,
+    /* No estimate yet; nothing was written. */
+    VanderpolStatus_NoEstimateYet = 2,
+    /* A null pointer, or storage too small or misaligned: nothing was done. */
+    VanderpolStatus_BadArgument = 3,
+    /* The storage holds no observer of this design (vanderpol_init never made one there). */
+    VanderpolStatus_NotInitialised = 4
+} VanderpolStatus;
+
+/* A fresh observer in storage of `size` bytes; call it again to reset. */
+VanderpolStatus vanderpol_init(void *storage, size_t size);
+/* vanderpol_observer_push on the observer in storage. */
+VanderpolStatus vanderpol_push(void *storage, const float *y, const float *u);
+/* The estimates into estimates[VANDERPOL_TARGETS] and, unless saturation is NULL, whether each was
+ * clamped (-1 below its range, 0 inside, 1 above). */
+VanderpolStatus vanderpol_estimate(void *storage, float *estimates, int8_t *saturation);
+/* Bytes the observer occupies with its mark. */
+size_t vanderpol_storage_size(void);
 
 #endif

@@ -1438,7 +1438,8 @@ static int mhe_cholesky(float (*a)[MHE_NX], const float *b, float *x) {
         inverse_d[j] = 1.0f / pivot;
         for (i = j + 1u; i < MHE_NX; ++i) {
             float sum = a[i][j];
-            for (k = 0u; k < j; ++k) {
+            /* k < MHE_NX always holds: said for gcc -O1, which otherwise warns of an access beyond l. */
+            for (k = 0u; k < j && k < MHE_NX; ++k) {
                 sum -= l[i][k] * l[j][k] * d[k];
             }
             l[i][j] = sum * inverse_d[j];
@@ -1559,3 +1560,66 @@ vanderpol_searched_status vanderpol_searched_mhe_estimate(const vanderpol_search
     return VANDERPOL_SEARCHED_OK;
 }
 
+/* The mark of this design's observer in storage (never 0: zeroed storage holds none). */
+#define STORAGE_MARK 0xf060ee5a20f09da5ull
+
+/* The observer in storage: VanderpolSearchedStatus_BadArgument for a null or misaligned pointer,
+ * VanderpolSearchedStatus_NotInitialised where vanderpol_searched_init did not make one (it reads the first 16 bytes only). */
+static VanderpolSearchedStatus stored_observer(void *storage, vanderpol_searched_observer **observer) {
+    vanderpol_searched_stored *stored = (vanderpol_searched_stored *)storage;
+    if (storage == NULL || (uintptr_t)storage % VANDERPOL_SEARCHED_STORAGE_ALIGN != 0u) {
+        return VanderpolSearchedStatus_BadArgument;
+    }
+    if (stored->mark != STORAGE_MARK || stored->size < (uint64_t)sizeof(vanderpol_searched_stored)) {
+        return VanderpolSearchedStatus_NotInitialised;
+    }
+    *observer = &stored->observer;
+    return VanderpolSearchedStatus_Ok;
+}
+
+VanderpolSearchedStatus vanderpol_searched_init(void *storage, size_t size) {
+    vanderpol_searched_stored *stored = (vanderpol_searched_stored *)storage;
+    if (storage == NULL || size < sizeof(vanderpol_searched_stored) || (uintptr_t)storage % VANDERPOL_SEARCHED_STORAGE_ALIGN != 0u) {
+        return VanderpolSearchedStatus_BadArgument;
+    }
+    stored->mark = STORAGE_MARK;
+    stored->size = (uint64_t)size;
+    vanderpol_searched_observer_init(&stored->observer);
+    return VanderpolSearchedStatus_Ok;
+}
+
+VanderpolSearchedStatus vanderpol_searched_push(void *storage, const float *y, const float *u) {
+    vanderpol_searched_observer *observer = NULL;
+    const VanderpolSearchedStatus found = stored_observer(storage, &observer);
+    if (found != VanderpolSearchedStatus_Ok) {
+        return found;
+    }
+    if (y == NULL) {
+        return VanderpolSearchedStatus_BadArgument;
+    }
+    return vanderpol_searched_observer_push(observer, y, u) == VANDERPOL_SEARCHED_OK ? VanderpolSearchedStatus_Ok : VanderpolSearchedStatus_Refused;
+}
+
+VanderpolSearchedStatus vanderpol_searched_estimate(void *storage, float *estimates, int8_t *saturation) {
+    vanderpol_searched_observer *observer = NULL;
+    vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
+    unsigned i;
+    const VanderpolSearchedStatus found = stored_observer(storage, &observer);
+    if (found != VanderpolSearchedStatus_Ok) {
+        return found;
+    }
+    if (estimates == NULL) {
+        return VanderpolSearchedStatus_BadArgument;
+    }
+    if (vanderpol_searched_observer_estimate(observer, estimates, flags) != VANDERPOL_SEARCHED_OK) {
+        return VanderpolSearchedStatus_NoEstimateYet;
+    }
+    for (i = 0u; saturation != NULL && i < VANDERPOL_SEARCHED_TARGETS; ++i) {
+        saturation[i] = (int8_t)(flags[i] == VANDERPOL_SEARCHED_LOW ? -1 : flags[i] == VANDERPOL_SEARCHED_HIGH ? 1 : 0);
+    }
+    return VanderpolSearchedStatus_Ok;
+}
+
+size_t vanderpol_searched_storage_size(void) {
+    return sizeof(vanderpol_searched_stored);
+}

@@ -6,6 +6,7 @@
 #define VANDERPOL_SEARCHED_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #define VANDERPOL_SEARCHED_OUTPUTS 1u
 #define VANDERPOL_SEARCHED_INPUTS 0u
@@ -141,5 +142,43 @@ typedef vanderpol_searched_corrected vanderpol_searched_observer;
 #define vanderpol_searched_observer_init vanderpol_searched_corrected_init
 #define vanderpol_searched_observer_push vanderpol_searched_corrected_push
 #define vanderpol_searched_observer_estimate vanderpol_searched_corrected_estimate
+
+/* The Rust static library's interface (c/include/vanderpol_searched.h of a crate `mho gen --spec` writes) over
+ * vanderpol_searched_observer: the same calls and statuses, so that a firmware moves between the two routes
+ * without a change. The observer lives in storage you provide, VANDERPOL_SEARCHED_STORAGE_SIZE bytes aligned to
+ * VANDERPOL_SEARCHED_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
+ * checks them first. */
+#define VANDERPOL_SEARCHED_STORAGE_ALIGN 8u
+/* The sample period the design assumes, in its time unit. */
+#define VANDERPOL_SEARCHED_SAMPLE_PERIOD 0.1f
+typedef struct {
+    uint64_t mark;
+    uint64_t size;
+    vanderpol_searched_observer observer;
+} vanderpol_searched_stored;
+#define VANDERPOL_SEARCHED_STORAGE_SIZE sizeof(vanderpol_searched_stored)
+
+typedef enum {
+    /* Done. */
+    VanderpolSearchedStatus_Ok = 0,
+    /* The sample was refused; see VANDERPOL_SEARCHED_REFUSED. */
+    VanderpolSearchedStatus_Refused = 1,
+    /* No estimate yet; nothing was written. */
+    VanderpolSearchedStatus_NoEstimateYet = 2,
+    /* A null pointer, or storage too small or misaligned: nothing was done. */
+    VanderpolSearchedStatus_BadArgument = 3,
+    /* The storage holds no observer of this design (vanderpol_searched_init never made one there). */
+    VanderpolSearchedStatus_NotInitialised = 4
+} VanderpolSearchedStatus;
+
+/* A fresh observer in storage of `size` bytes; call it again to reset. */
+VanderpolSearchedStatus vanderpol_searched_init(void *storage, size_t size);
+/* vanderpol_searched_observer_push on the observer in storage. */
+VanderpolSearchedStatus vanderpol_searched_push(void *storage, const float *y, const float *u);
+/* The estimates into estimates[VANDERPOL_SEARCHED_TARGETS] and, unless saturation is NULL, whether each was
+ * clamped (-1 below its range, 0 inside, 1 above). */
+VanderpolSearchedStatus vanderpol_searched_estimate(void *storage, float *estimates, int8_t *saturation);
+/* Bytes the observer occupies with its mark. */
+size_t vanderpol_searched_storage_size(void);
 
 #endif

@@ -1447,7 +1447,8 @@ static int mhe_cholesky(float (*a)[MHE_NX], const float *b, float *x) {
         inverse_d[j] = 1.0f / pivot;
         for (i = j + 1u; i < MHE_NX; ++i) {
             float sum = a[i][j];
-            for (k = 0u; k < j; ++k) {
+            /* k < MHE_NX always holds: said for gcc -O1, which otherwise warns of an access beyond l. */
+            for (k = 0u; k < j && k < MHE_NX; ++k) {
                 sum -= l[i][k] * l[j][k] * d[k];
             }
             l[i][j] = sum * inverse_d[j];
@@ -1568,3 +1569,66 @@ vanderpol_sparse_status vanderpol_sparse_mhe_estimate(const vanderpol_sparse_mhe
     return VANDERPOL_SPARSE_OK;
 }
 
+/* The mark of this design's observer in storage (never 0: zeroed storage holds none). */
+#define STORAGE_MARK 0x19a78b3901da6189ull
+
+/* The observer in storage: VanderpolSparseStatus_BadArgument for a null or misaligned pointer,
+ * VanderpolSparseStatus_NotInitialised where vanderpol_sparse_init did not make one (it reads the first 16 bytes only). */
+static VanderpolSparseStatus stored_observer(void *storage, vanderpol_sparse_observer **observer) {
+    vanderpol_sparse_stored *stored = (vanderpol_sparse_stored *)storage;
+    if (storage == NULL || (uintptr_t)storage % VANDERPOL_SPARSE_STORAGE_ALIGN != 0u) {
+        return VanderpolSparseStatus_BadArgument;
+    }
+    if (stored->mark != STORAGE_MARK || stored->size < (uint64_t)sizeof(vanderpol_sparse_stored)) {
+        return VanderpolSparseStatus_NotInitialised;
+    }
+    *observer = &stored->observer;
+    return VanderpolSparseStatus_Ok;
+}
+
+VanderpolSparseStatus vanderpol_sparse_init(void *storage, size_t size) {
+    vanderpol_sparse_stored *stored = (vanderpol_sparse_stored *)storage;
+    if (storage == NULL || size < sizeof(vanderpol_sparse_stored) || (uintptr_t)storage % VANDERPOL_SPARSE_STORAGE_ALIGN != 0u) {
+        return VanderpolSparseStatus_BadArgument;
+    }
+    stored->mark = STORAGE_MARK;
+    stored->size = (uint64_t)size;
+    vanderpol_sparse_observer_init(&stored->observer);
+    return VanderpolSparseStatus_Ok;
+}
+
+VanderpolSparseStatus vanderpol_sparse_push(void *storage, const float *y, const float *u) {
+    vanderpol_sparse_observer *observer = NULL;
+    const VanderpolSparseStatus found = stored_observer(storage, &observer);
+    if (found != VanderpolSparseStatus_Ok) {
+        return found;
+    }
+    if (y == NULL) {
+        return VanderpolSparseStatus_BadArgument;
+    }
+    return vanderpol_sparse_observer_push(observer, y, u) == VANDERPOL_SPARSE_OK ? VanderpolSparseStatus_Ok : VanderpolSparseStatus_Refused;
+}
+
+VanderpolSparseStatus vanderpol_sparse_estimate(void *storage, float *estimates, int8_t *saturation) {
+    vanderpol_sparse_observer *observer = NULL;
+    vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
+    unsigned i;
+    const VanderpolSparseStatus found = stored_observer(storage, &observer);
+    if (found != VanderpolSparseStatus_Ok) {
+        return found;
+    }
+    if (estimates == NULL) {
+        return VanderpolSparseStatus_BadArgument;
+    }
+    if (vanderpol_sparse_observer_estimate(observer, estimates, flags) != VANDERPOL_SPARSE_OK) {
+        return VanderpolSparseStatus_NoEstimateYet;
+    }
+    for (i = 0u; saturation != NULL && i < VANDERPOL_SPARSE_TARGETS; ++i) {
+        saturation[i] = (int8_t)(flags[i] == VANDERPOL_SPARSE_LOW ? -1 : flags[i] == VANDERPOL_SPARSE_HIGH ? 1 : 0);
+    }
+    return VanderpolSparseStatus_Ok;
+}
+
+size_t vanderpol_sparse_storage_size(void) {
+    return sizeof(vanderpol_sparse_stored);
+}

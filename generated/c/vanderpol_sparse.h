@@ -6,6 +6,7 @@
 #define VANDERPOL_SPARSE_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #define VANDERPOL_SPARSE_OUTPUTS 1u
 #define VANDERPOL_SPARSE_INPUTS 0u
@@ -141,5 +142,43 @@ typedef vanderpol_sparse_map vanderpol_sparse_observer;
 #define vanderpol_sparse_observer_init vanderpol_sparse_map_init
 #define vanderpol_sparse_observer_push vanderpol_sparse_map_push
 #define vanderpol_sparse_observer_estimate vanderpol_sparse_map_estimate
+
+/* The Rust static library's interface (c/include/vanderpol_sparse.h of a crate `mho gen --spec` writes) over
+ * vanderpol_sparse_observer: the same calls and statuses, so that a firmware moves between the two routes
+ * without a change. The observer lives in storage you provide, VANDERPOL_SPARSE_STORAGE_SIZE bytes aligned to
+ * VANDERPOL_SPARSE_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
+ * checks them first. */
+#define VANDERPOL_SPARSE_STORAGE_ALIGN 8u
+/* The sample period the design assumes, in its time unit. */
+#define VANDERPOL_SPARSE_SAMPLE_PERIOD 0.1f
+typedef struct {
+    uint64_t mark;
+    uint64_t size;
+    vanderpol_sparse_observer observer;
+} vanderpol_sparse_stored;
+#define VANDERPOL_SPARSE_STORAGE_SIZE sizeof(vanderpol_sparse_stored)
+
+typedef enum {
+    /* Done. */
+    VanderpolSparseStatus_Ok = 0,
+    /* The sample was refused; see VANDERPOL_SPARSE_REFUSED. */
+    VanderpolSparseStatus_Refused = 1,
+    /* No estimate yet; nothing was written. */
+    VanderpolSparseStatus_NoEstimateYet = 2,
+    /* A null pointer, or storage too small or misaligned: nothing was done. */
+    VanderpolSparseStatus_BadArgument = 3,
+    /* The storage holds no observer of this design (vanderpol_sparse_init never made one there). */
+    VanderpolSparseStatus_NotInitialised = 4
+} VanderpolSparseStatus;
+
+/* A fresh observer in storage of `size` bytes; call it again to reset. */
+VanderpolSparseStatus vanderpol_sparse_init(void *storage, size_t size);
+/* vanderpol_sparse_observer_push on the observer in storage. */
+VanderpolSparseStatus vanderpol_sparse_push(void *storage, const float *y, const float *u);
+/* The estimates into estimates[VANDERPOL_SPARSE_TARGETS] and, unless saturation is NULL, whether each was
+ * clamped (-1 below its range, 0 inside, 1 above). */
+VanderpolSparseStatus vanderpol_sparse_estimate(void *storage, float *estimates, int8_t *saturation);
+/* Bytes the observer occupies with its mark. */
+size_t vanderpol_sparse_storage_size(void);
 
 #endif

@@ -1486,7 +1486,8 @@ static int mhe_cholesky(float (*a)[MHE_NX], const float *b, float *x) {
         inverse_d[j] = 1.0f / pivot;
         for (i = j + 1u; i < MHE_NX; ++i) {
             float sum = a[i][j];
-            for (k = 0u; k < j; ++k) {
+            /* k < MHE_NX always holds: said for gcc -O1, which otherwise warns of an access beyond l. */
+            for (k = 0u; k < j && k < MHE_NX; ++k) {
                 sum -= l[i][k] * l[j][k] * d[k];
             }
             l[i][j] = sum * inverse_d[j];
@@ -1607,3 +1608,66 @@ vanderpol_uncertain_status vanderpol_uncertain_mhe_estimate(const vanderpol_unce
     return VANDERPOL_UNCERTAIN_OK;
 }
 
+/* The mark of this design's observer in storage (never 0: zeroed storage holds none). */
+#define STORAGE_MARK 0x30357733908387b1ull
+
+/* The observer in storage: VanderpolUncertainStatus_BadArgument for a null or misaligned pointer,
+ * VanderpolUncertainStatus_NotInitialised where vanderpol_uncertain_init did not make one (it reads the first 16 bytes only). */
+static VanderpolUncertainStatus stored_observer(void *storage, vanderpol_uncertain_observer **observer) {
+    vanderpol_uncertain_stored *stored = (vanderpol_uncertain_stored *)storage;
+    if (storage == NULL || (uintptr_t)storage % VANDERPOL_UNCERTAIN_STORAGE_ALIGN != 0u) {
+        return VanderpolUncertainStatus_BadArgument;
+    }
+    if (stored->mark != STORAGE_MARK || stored->size < (uint64_t)sizeof(vanderpol_uncertain_stored)) {
+        return VanderpolUncertainStatus_NotInitialised;
+    }
+    *observer = &stored->observer;
+    return VanderpolUncertainStatus_Ok;
+}
+
+VanderpolUncertainStatus vanderpol_uncertain_init(void *storage, size_t size) {
+    vanderpol_uncertain_stored *stored = (vanderpol_uncertain_stored *)storage;
+    if (storage == NULL || size < sizeof(vanderpol_uncertain_stored) || (uintptr_t)storage % VANDERPOL_UNCERTAIN_STORAGE_ALIGN != 0u) {
+        return VanderpolUncertainStatus_BadArgument;
+    }
+    stored->mark = STORAGE_MARK;
+    stored->size = (uint64_t)size;
+    vanderpol_uncertain_observer_init(&stored->observer);
+    return VanderpolUncertainStatus_Ok;
+}
+
+VanderpolUncertainStatus vanderpol_uncertain_push(void *storage, const float *y, const float *u) {
+    vanderpol_uncertain_observer *observer = NULL;
+    const VanderpolUncertainStatus found = stored_observer(storage, &observer);
+    if (found != VanderpolUncertainStatus_Ok) {
+        return found;
+    }
+    if (y == NULL) {
+        return VanderpolUncertainStatus_BadArgument;
+    }
+    return vanderpol_uncertain_observer_push(observer, y, u) == VANDERPOL_UNCERTAIN_OK ? VanderpolUncertainStatus_Ok : VanderpolUncertainStatus_Refused;
+}
+
+VanderpolUncertainStatus vanderpol_uncertain_estimate(void *storage, float *estimates, int8_t *saturation) {
+    vanderpol_uncertain_observer *observer = NULL;
+    vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
+    unsigned i;
+    const VanderpolUncertainStatus found = stored_observer(storage, &observer);
+    if (found != VanderpolUncertainStatus_Ok) {
+        return found;
+    }
+    if (estimates == NULL) {
+        return VanderpolUncertainStatus_BadArgument;
+    }
+    if (vanderpol_uncertain_observer_estimate(observer, estimates, flags) != VANDERPOL_UNCERTAIN_OK) {
+        return VanderpolUncertainStatus_NoEstimateYet;
+    }
+    for (i = 0u; saturation != NULL && i < VANDERPOL_UNCERTAIN_TARGETS; ++i) {
+        saturation[i] = (int8_t)(flags[i] == VANDERPOL_UNCERTAIN_LOW ? -1 : flags[i] == VANDERPOL_UNCERTAIN_HIGH ? 1 : 0);
+    }
+    return VanderpolUncertainStatus_Ok;
+}
+
+size_t vanderpol_uncertain_storage_size(void) {
+    return sizeof(vanderpol_uncertain_stored);
+}

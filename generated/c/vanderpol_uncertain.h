@@ -6,6 +6,7 @@
 #define VANDERPOL_UNCERTAIN_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #define VANDERPOL_UNCERTAIN_OUTPUTS 1u
 #define VANDERPOL_UNCERTAIN_INPUTS 0u
@@ -141,5 +142,43 @@ typedef vanderpol_uncertain_corrected vanderpol_uncertain_observer;
 #define vanderpol_uncertain_observer_init vanderpol_uncertain_corrected_init
 #define vanderpol_uncertain_observer_push vanderpol_uncertain_corrected_push
 #define vanderpol_uncertain_observer_estimate vanderpol_uncertain_corrected_estimate
+
+/* The Rust static library's interface (c/include/vanderpol_uncertain.h of a crate `mho gen --spec` writes) over
+ * vanderpol_uncertain_observer: the same calls and statuses, so that a firmware moves between the two routes
+ * without a change. The observer lives in storage you provide, VANDERPOL_UNCERTAIN_STORAGE_SIZE bytes aligned to
+ * VANDERPOL_UNCERTAIN_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
+ * checks them first. */
+#define VANDERPOL_UNCERTAIN_STORAGE_ALIGN 8u
+/* The sample period the design assumes, in its time unit. */
+#define VANDERPOL_UNCERTAIN_SAMPLE_PERIOD 0.1f
+typedef struct {
+    uint64_t mark;
+    uint64_t size;
+    vanderpol_uncertain_observer observer;
+} vanderpol_uncertain_stored;
+#define VANDERPOL_UNCERTAIN_STORAGE_SIZE sizeof(vanderpol_uncertain_stored)
+
+typedef enum {
+    /* Done. */
+    VanderpolUncertainStatus_Ok = 0,
+    /* The sample was refused; see VANDERPOL_UNCERTAIN_REFUSED. */
+    VanderpolUncertainStatus_Refused = 1,
+    /* No estimate yet; nothing was written. */
+    VanderpolUncertainStatus_NoEstimateYet = 2,
+    /* A null pointer, or storage too small or misaligned: nothing was done. */
+    VanderpolUncertainStatus_BadArgument = 3,
+    /* The storage holds no observer of this design (vanderpol_uncertain_init never made one there). */
+    VanderpolUncertainStatus_NotInitialised = 4
+} VanderpolUncertainStatus;
+
+/* A fresh observer in storage of `size` bytes; call it again to reset. */
+VanderpolUncertainStatus vanderpol_uncertain_init(void *storage, size_t size);
+/* vanderpol_uncertain_observer_push on the observer in storage. */
+VanderpolUncertainStatus vanderpol_uncertain_push(void *storage, const float *y, const float *u);
+/* The estimates into estimates[VANDERPOL_UNCERTAIN_TARGETS] and, unless saturation is NULL, whether each was
+ * clamped (-1 below its range, 0 inside, 1 above). */
+VanderpolUncertainStatus vanderpol_uncertain_estimate(void *storage, float *estimates, int8_t *saturation);
+/* Bytes the observer occupies with its mark. */
+size_t vanderpol_uncertain_storage_size(void);
 
 #endif

@@ -198,6 +198,31 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
         printed.lines().any(|l| l.split(' ').nth(1) == Some("1")),
         "no refused sample"
     );
+    // The same program against the C source instead of the library (no Rust toolchain): the same
+    // calls, statuses and checks, the same bits.
+    let from_source = scratch.join("replay-source");
+    let built = Command::new("cc")
+        .args(["-std=c99", "-Wall", "-Werror", "-O1", "-ffp-contract=off", "-o"])
+        .arg(&from_source)
+        .arg(scratch.join("replay.c"))
+        .arg(&sources[0])
+        .arg("-I")
+        .arg(out.join("c-source"))
+        .arg("-lm")
+        .output()
+        .unwrap();
+    assert!(built.status.success(), "cc: {}", String::from_utf8_lossy(&built.stderr));
+    let run = Command::new(&from_source).output().unwrap();
+    assert!(
+        run.status.success(),
+        "replay (C source): {}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert_eq!(
+        String::from_utf8(run.stdout).unwrap(),
+        printed,
+        "the C source against the library"
+    );
 
     // The same C program for the Cortex-M4F, by arm-none-eabi-gcc against the library built for
     // thumbv7em, on the emulated board (semihosting prints): the same bits.

@@ -58,18 +58,6 @@ pub fn manifest(design: &Design) -> String {
     )
 }
 
-/// `MyDesign` for `my_design`: the prefix of the C types.
-fn camel(name: &str) -> String {
-    name.split('_')
-        .map(|part| {
-            let mut chars = part.chars();
-            chars.next().map_or(String::new(), |first| {
-                first.to_ascii_uppercase().to_string() + chars.as_str()
-            })
-        })
-        .collect()
-}
-
 /// Bytes the observer of `design` needs at most on any target: the window (`N` samples of `f32`
 /// outputs and inputs, twice, and two indices), the follower's state, covariance and start-up
 /// constants, and slack for indices and padding.
@@ -90,15 +78,6 @@ pub fn storage_bound(design: &Design) -> usize {
 /// size it was given.
 pub const MARK_BYTES: usize = 16;
 
-/// The mark of an observer of design `name` in C storage: FNV-1a of the name, never 0, so that
-/// zeroed storage, storage `init` refused, or another design's observer are told apart.
-fn mark(name: &str) -> u64 {
-    let hash = name.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
-    });
-    hash | 1
-}
-
 /// Spec text for a doc comment that cbindgen copies into a C `/* … */` comment: one line, no code
 /// span's end, and no `*/` or `/*` (which would end the comment, or open one inside it, and let the
 /// rest be read as C).
@@ -110,7 +89,7 @@ fn c_comment(text: &str) -> String {
 pub fn source(design: &Design) -> String {
     let name = &design.name;
     let upper = name.to_uppercase();
-    let status = format!("{}Status", camel(name));
+    let status = crate::emit::c::status_name(name);
     let list = crate::emit::name_list;
     // `name (unit)`, as the docs list them.
     let with_unit = |name: &String, unit: &String| {
@@ -334,7 +313,7 @@ fn panic(_: &core::panic::PanicInfo) -> ! {{
         nu = design.model.inputs.len(),
         nt = design.targets.len(),
         horizon = design.map.horizon,
-        mark = mark(name),
+        mark = crate::emit::c::mark(name),
     )
 }
 

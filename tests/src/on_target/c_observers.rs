@@ -11,8 +11,9 @@ use super::unavailable::{failed, Unavailable};
 
 /// Warnings are errors; no fused multiply-add, no fast maths: IEEE single precision as Rust computes.
 /// The optimisation level is the caller's.
-pub const STRICT_C_FLAGS: [&str; 9] = [
+pub const STRICT_C_FLAGS: [&str; 10] = [
     "-std=c99",
+    "-Wvla",
     "-Wall",
     "-Wextra",
     "-Wpedantic",

@@ -256,7 +256,8 @@ static int mhe_cholesky(float (*a)[MHE_NX], const float *b, float *x) {
         inverse_d[j] = 1.0f / pivot;
         for (i = j + 1u; i < MHE_NX; ++i) {
             float sum = a[i][j];
-            for (k = 0u; k < j; ++k) {
+            /* k < MHE_NX always holds: said for gcc -O1, which otherwise warns of an access beyond l. */
+            for (k = 0u; k < j && k < MHE_NX; ++k) {
                 sum -= l[i][k] * l[j][k] * d[k];
             }
             l[i][j] = sum * inverse_d[j];

@@ -16,6 +16,9 @@ mod map;
 mod mhe;
 mod program;
 mod started;
+mod storage;
+
+pub use storage::{mark, status_name};
 
 use super::model::Observers;
 use super::EmitError;
@@ -69,6 +72,12 @@ pub fn c_source(
         None => filters::Kinds::default(),
     };
     let chosen = model.map(|(_, o)| o.kind.name());
+    let (interface_header, interface_source) = match chosen {
+        Some(kind) if kind == "map" || kinds.names.contains(&kind) => {
+            storage::storage_interface(name, nu, &float("sampling.tau", design.tau)?)
+        }
+        _ => (String::new(), String::new()),
+    };
     let alias = match chosen {
         Some(kind) if kind == "map" || kinds.names.contains(&kind) => format!(
             "/* This design's observer, of the kind `gen` chose or the spec named: {kind}. */\n\
@@ -103,6 +112,7 @@ pub fn c_source(
          #define {upper}_H\n\
          \n\
          #include <stddef.h>\n\
+         #include <stdint.h>\n\
          \n\
          #define {upper}_OUTPUTS {ny}u\n\
          #define {upper}_INPUTS {nu}u\n\
@@ -131,6 +141,7 @@ pub fn c_source(
          {map_header}\
          {kinds_header}\
          {alias}\
+         {interface_header}\
          #endif\n",
         map_header = map.header,
         kinds_header = kinds.header,
@@ -145,7 +156,7 @@ pub fn c_source(
     } else {
         "    (void)u;\n".to_owned()
     };
-    let body = format!("{}{}", map.source, kinds.source);
+    let body = format!("{}{}{interface_source}", map.source, kinds.source);
     // Only where a follower checks a sample (an unused static function is a warning).
     let accepts = if body.contains("accepts(") {
         format!(

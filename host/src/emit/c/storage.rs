@@ -1,0 +1,140 @@
+//! The Rust static library's C interface (`c/include/<name>.h` of a crate `gen --spec` writes,
+//! `crate::standalone::c_library`) over the C source's chosen kind: the same calls, statuses, storage
+//! mark and checks, so that a firmware moves between the two C routes without changing a line.
+
+/// The C name of design `name`'s status enum: `my_design` → `MyDesignStatus` (as cbindgen names the
+/// Rust library's, `{Enum}_{Variant}` for its values).
+pub fn status_name(name: &str) -> String {
+    let camel: String = name
+        .split('_')
+        .map(|part| {
+            let mut chars = part.chars();
+            chars.next().map_or(String::new(), |first| {
+                first.to_ascii_uppercase().to_string() + chars.as_str()
+            })
+        })
+        .collect();
+    format!("{camel}Status")
+}
+
+/// The mark of an observer of design `name` in C storage: FNV-1a of the name, never 0, so that
+/// zeroed storage, storage `init` refused, or another design's observer are told apart.
+pub fn mark(name: &str) -> u64 {
+    let hash = name.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    });
+    hash | 1
+}
+
+/// The header's and the source's parts of the interface (`tau`: the sample period, as a C literal).
+pub(super) fn storage_interface(name: &str, inputs: usize, tau: &str) -> (String, String) {
+    let upper = name.to_uppercase();
+    let status = status_name(name);
+    let header = format!(
+        "/* The Rust static library's interface (c/include/{name}.h of a crate `mho gen --spec` writes) over\n \
+         * {name}_observer: the same calls and statuses, so that a firmware moves between the two routes\n \
+         * without a change. The observer lives in storage you provide, {upper}_STORAGE_SIZE bytes aligned to\n \
+         * {upper}_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call\n \
+         * checks them first. */\n\
+         #define {upper}_STORAGE_ALIGN 8u\n\
+         /* The sample period the design assumes, in its time unit. */\n\
+         #define {upper}_SAMPLE_PERIOD {tau}\n\
+         typedef struct {{\n\
+         \x20   uint64_t mark;\n\
+         \x20   uint64_t size;\n\
+         \x20   {name}_observer observer;\n\
+         }} {name}_stored;\n\
+         #define {upper}_STORAGE_SIZE sizeof({name}_stored)\n\
+         \n\
+         typedef enum {{\n\
+         \x20   /* Done. */\n\
+         \x20   {status}_Ok = 0,\n\
+         \x20   /* The sample was refused; see {upper}_REFUSED. */\n\
+         \x20   {status}_Refused = 1,\n\
+         \x20   /* No estimate yet; nothing was written. */\n\
+         \x20   {status}_NoEstimateYet = 2,\n\
+         \x20   /* A null pointer, or storage too small or misaligned: nothing was done. */\n\
+         \x20   {status}_BadArgument = 3,\n\
+         \x20   /* The storage holds no observer of this design ({name}_init never made one there). */\n\
+         \x20   {status}_NotInitialised = 4\n\
+         }} {status};\n\
+         \n\
+         /* A fresh observer in storage of `size` bytes; call it again to reset. */\n\
+         {status} {name}_init(void *storage, size_t size);\n\
+         /* {name}_observer_push on the observer in storage. */\n\
+         {status} {name}_push(void *storage, const float *y, const float *u);\n\
+         /* The estimates into estimates[{upper}_TARGETS] and, unless saturation is NULL, whether each was\n \
+         * clamped (-1 below its range, 0 inside, 1 above). */\n\
+         {status} {name}_estimate(void *storage, float *estimates, int8_t *saturation);\n\
+         /* Bytes the observer occupies with its mark. */\n\
+         size_t {name}_storage_size(void);\n\n"
+    );
+    let inputs_check = if inputs > 0 { " || u == NULL" } else { "" };
+    let source = format!(
+        "/* The mark of this design's observer in storage (never 0: zeroed storage holds none). */\n\
+         #define STORAGE_MARK 0x{mark:016x}ull\n\
+         \n\
+         /* The observer in storage: {status}_BadArgument for a null or misaligned pointer,\n\
+         \x20* {status}_NotInitialised where {name}_init did not make one (it reads the first 16 bytes only). */\n\
+         static {status} stored_observer(void *storage, {name}_observer **observer) {{\n\
+         \x20   {name}_stored *stored = ({name}_stored *)storage;\n\
+         \x20   if (storage == NULL || (uintptr_t)storage % {upper}_STORAGE_ALIGN != 0u) {{\n\
+         \x20       return {status}_BadArgument;\n\
+         \x20   }}\n\
+         \x20   if (stored->mark != STORAGE_MARK || stored->size < (uint64_t)sizeof({name}_stored)) {{\n\
+         \x20       return {status}_NotInitialised;\n\
+         \x20   }}\n\
+         \x20   *observer = &stored->observer;\n\
+         \x20   return {status}_Ok;\n\
+         }}\n\
+         \n\
+         {status} {name}_init(void *storage, size_t size) {{\n\
+         \x20   {name}_stored *stored = ({name}_stored *)storage;\n\
+         \x20   if (storage == NULL || size < sizeof({name}_stored) || (uintptr_t)storage % {upper}_STORAGE_ALIGN != 0u) {{\n\
+         \x20       return {status}_BadArgument;\n\
+         \x20   }}\n\
+         \x20   stored->mark = STORAGE_MARK;\n\
+         \x20   stored->size = (uint64_t)size;\n\
+         \x20   {name}_observer_init(&stored->observer);\n\
+         \x20   return {status}_Ok;\n\
+         }}\n\
+         \n\
+         {status} {name}_push(void *storage, const float *y, const float *u) {{\n\
+         \x20   {name}_observer *observer = NULL;\n\
+         \x20   const {status} found = stored_observer(storage, &observer);\n\
+         \x20   if (found != {status}_Ok) {{\n\
+         \x20       return found;\n\
+         \x20   }}\n\
+         \x20   if (y == NULL{inputs_check}) {{\n\
+         \x20       return {status}_BadArgument;\n\
+         \x20   }}\n\
+         \x20   return {name}_observer_push(observer, y, u) == {upper}_OK ? {status}_Ok : {status}_Refused;\n\
+         }}\n\
+         \n\
+         {status} {name}_estimate(void *storage, float *estimates, int8_t *saturation) {{\n\
+         \x20   {name}_observer *observer = NULL;\n\
+         \x20   {name}_saturation flags[{upper}_TARGETS];\n\
+         \x20   unsigned i;\n\
+         \x20   const {status} found = stored_observer(storage, &observer);\n\
+         \x20   if (found != {status}_Ok) {{\n\
+         \x20       return found;\n\
+         \x20   }}\n\
+         \x20   if (estimates == NULL) {{\n\
+         \x20       return {status}_BadArgument;\n\
+         \x20   }}\n\
+         \x20   if ({name}_observer_estimate(observer, estimates, flags) != {upper}_OK) {{\n\
+         \x20       return {status}_NoEstimateYet;\n\
+         \x20   }}\n\
+         \x20   for (i = 0u; saturation != NULL && i < {upper}_TARGETS; ++i) {{\n\
+         \x20       saturation[i] = (int8_t)(flags[i] == {upper}_LOW ? -1 : flags[i] == {upper}_HIGH ? 1 : 0);\n\
+         \x20   }}\n\
+         \x20   return {status}_Ok;\n\
+         }}\n\
+         \n\
+         size_t {name}_storage_size(void) {{\n\
+         \x20   return sizeof({name}_stored);\n\
+         }}\n",
+        mark = mark(name),
+    );
+    (header, source)
+}
