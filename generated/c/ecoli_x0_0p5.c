@@ -2,7 +2,18 @@
 #include <stdint.h>
 #include <string.h>
 #include <math.h>
+#include <float.h>
 #include "ecoli_x0_0p5.h"
+
+/* The Rust observer's bits need every float operation rounded on its own: no fused multiply-add
+ * (gcc: -ffp-contract=off, the default of its ISO modes such as -std=c99; other compilers follow
+ * the standard pragma below), no -ffast-math, and float evaluated as float. */
+#if !defined(__GNUC__) || defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
+#error "float arithmetic must be evaluated in float (FLT_EVAL_METHOD 0), e.g. SSE rather than the x87"
+#endif
 
 /* The bits of v (memcpy: no aliasing, no conversion). */
 static uint32_t bits_of(float v) {
@@ -229,9 +240,55 @@ ecoli_x0_0p5_status ecoli_x0_0p5_map_estimate(const ecoli_x0_0p5_map *observer, 
     return ECOLI_X0_0P5_OK;
 }
 
-/* 1 with the sign of v (NaN stays NaN), as firmware::Maths::signum. */
+/* 1 with the sign of v (NaN stays NaN), as firmware::Maths::signum; NaN told by its bits. */
 static float signum(float v) {
-    return select_float(v != v, v, copysignf(1.0f, v));
+    return select_float((bits_of(v) & 0x7fffffffu) > 0x7f800000u, v, copysignf(1.0f, v));
+}
+
+/* e^x in float as Rust's libm computes it (FreeBSD e_expf.c, Sun Microsystems 1993: "Permission
+* to use, copy, modify, and distribute this software is freely granted, provided that this notice is
+* preserved"), operation for operation: C libraries' expf differ from it in the last bit. */
+static float libm_expf(float x) {
+static const float HALF[2] = {0.5f, -0.5f};
+const float ln2_hi = 6.9314575195e-01f, ln2_lo = 1.4286067653e-06f, inv_ln2 = 1.4426950216e+00f;
+const float p1 = 1.6666625440e-1f, p2 = -2.7667332906e-3f;
+const uint32_t sign = bits_of(x) >> 31;
+const uint32_t hx = bits_of(x) & 0x7fffffffu;
+float hi, lo, xx, c, y, x1p127;
+int32_t k;
+const uint32_t x1p127_bits = 0x7f000000u;
+memcpy(&x1p127, &x1p127_bits, sizeof x1p127);
+if (hx >= 0x42aeac50u) { /* |x| >= 87.33655 or NaN */
+if (hx > 0x7f800000u) {
+return x;
+}
+if (hx >= 0x42b17218u && sign == 0u) { /* overflow */
+return x * x1p127;
+}
+if (sign != 0u && hx >= 0x42cff1b5u) { /* underflow */
+return 0.0f;
+}
+}
+if (hx > 0x3eb17218u) { /* |x| > ln2 / 2: argument reduction */
+if (hx > 0x3f851592u) {
+k = (int32_t)(inv_ln2 * x + HALF[sign]);
+} else {
+k = 1 - (int32_t)sign - (int32_t)sign;
+}
+hi = x - (float)k * ln2_hi;
+lo = (float)k * ln2_lo;
+x = hi - lo;
+} else if (hx > 0x39000000u) { /* |x| > 2^-14 */
+k = 0;
+hi = x;
+lo = 0.0f;
+} else {
+return 1.0f + x;
+}
+xx = x * x;
+c = x - xx * (p1 + xx * p2);
+y = 1.0f + (x * c / (2.0f - c) - lo + hi);
+return k == 0 ? y : scalbnf(y, (int)k);
 }
 
 
@@ -253,7 +310,6 @@ static int all_finite(const float *v, unsigned n) {
 
 /* The targets at state x and input u. */
 static void targets(const float *x, const float *u, float *out) {
-    (void)x;
     (void)u;
     const float t0 = 0.2f /* mu_m */;
     const float t1 = x[1];
@@ -270,9 +326,6 @@ static void targets(const float *x, const float *u, float *out) {
 
 /* One EKF sample with its measurement: out = (x(k|k), x+, P+) from (x, P), as the Rust file's ekf_measured. */
 static void ekf_measured(const float *x, const float *p, const float *y, const float *u, float *out) {
-    (void)x;
-    (void)p;
-    (void)y;
     (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
@@ -529,7 +582,7 @@ static void ekf_measured(const float *x, const float *p, const float *y, const f
     const float t252 = 0.001f;
     const float t253 = fmaxf(t235, t252);
     const float t254 = t251 / t253;
-    const float t255 = expf(t254);
+    const float t255 = libm_expf(t254);
     const float t256 = t249 * t255;
     const float t257 = 0.5f;
     const float t258 = -0.5f;
@@ -617,7 +670,7 @@ static void ekf_measured(const float *x, const float *p, const float *y, const f
     const float t340 = t9 * t339;
     const float t341 = fmaxf(t321, t252);
     const float t342 = t251 / t341;
-    const float t343 = expf(t342);
+    const float t343 = libm_expf(t342);
     const float t344 = t249 * t343;
     const float t345 = t252 - t321;
     const float t346 = signum(t345);
@@ -729,7 +782,7 @@ static void ekf_measured(const float *x, const float *p, const float *y, const f
     const float t452 = t9 * t451;
     const float t453 = fmaxf(t432, t252);
     const float t454 = t251 / t453;
-    const float t455 = expf(t454);
+    const float t455 = libm_expf(t454);
     const float t456 = t249 * t455;
     const float t457 = t252 - t432;
     const float t458 = signum(t457);
@@ -847,7 +900,7 @@ static void ekf_measured(const float *x, const float *p, const float *y, const f
     const float t570 = t9 * t569;
     const float t571 = fmaxf(t550, t252);
     const float t572 = t251 / t571;
-    const float t573 = expf(t572);
+    const float t573 = libm_expf(t572);
     const float t574 = t249 * t573;
     const float t575 = t252 - t550;
     const float t576 = signum(t575);
@@ -1102,8 +1155,6 @@ static void ekf_measured(const float *x, const float *p, const float *y, const f
 
 /* One EKF sample without its measurement: out = (x+, P+) from (x, P), as the Rust file's ekf_unmeasured. */
 static void ekf_unmeasured(const float *x, const float *p, const float *u, float *out) {
-    (void)x;
-    (void)p;
     (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
@@ -1137,7 +1188,7 @@ static void ekf_unmeasured(const float *x, const float *p, const float *u, float
     const float t29 = 0.001f;
     const float t30 = fmaxf(t2, t29);
     const float t31 = t28 / t30;
-    const float t32 = expf(t31);
+    const float t32 = libm_expf(t31);
     const float t33 = t26 * t32;
     const float t34 = 0.5f;
     const float t35 = -0.5f;
@@ -1226,7 +1277,7 @@ static void ekf_unmeasured(const float *x, const float *p, const float *u, float
     const float t118 = t14 * t117;
     const float t119 = fmaxf(t99, t29);
     const float t120 = t28 / t119;
-    const float t121 = expf(t120);
+    const float t121 = libm_expf(t120);
     const float t122 = t26 * t121;
     const float t123 = t29 - t99;
     const float t124 = signum(t123);
@@ -1338,7 +1389,7 @@ static void ekf_unmeasured(const float *x, const float *p, const float *u, float
     const float t230 = t14 * t229;
     const float t231 = fmaxf(t210, t29);
     const float t232 = t28 / t231;
-    const float t233 = expf(t232);
+    const float t233 = libm_expf(t232);
     const float t234 = t26 * t233;
     const float t235 = t29 - t210;
     const float t236 = signum(t235);
@@ -1456,7 +1507,7 @@ static void ekf_unmeasured(const float *x, const float *p, const float *u, float
     const float t348 = t14 * t347;
     const float t349 = fmaxf(t328, t29);
     const float t350 = t28 / t349;
-    const float t351 = expf(t350);
+    const float t351 = libm_expf(t350);
     const float t352 = t26 * t351;
     const float t353 = t29 - t328;
     const float t354 = signum(t353);
@@ -1777,7 +1828,6 @@ ecoli_x0_0p5_status ecoli_x0_0p5_ekf_box_estimate(const ecoli_x0_0p5_ekf_box *o,
 
 /* The model's derivative f(x, u), then its Jacobian row by row (the Rust file's Plant::derivative). */
 static void model_derivative(const float *x, const float *u, float *out) {
-    (void)x;
     (void)u;
     const float t0 = 0.2f /* mu_m */;
     const float t1 = x[1];
@@ -1799,7 +1849,7 @@ static void model_derivative(const float *x, const float *u, float *out) {
     const float t17 = 0.001f;
     const float t18 = fmaxf(t16, t17);
     const float t19 = t15 / t18;
-    const float t20 = expf(t19);
+    const float t20 = libm_expf(t19);
     const float t21 = t13 * t20;
     const float t22 = 0.5f;
     const float t23 = -0.5f;
@@ -1892,7 +1942,6 @@ static void model_derivative(const float *x, const float *u, float *out) {
 
 /* The model's outputs h(x, u), then their Jacobian row by row (the Rust file's Plant::output). */
 static void model_output(const float *x, const float *u, float *out) {
-    (void)x;
     (void)u;
     const float t0 = 0.2f /* mu_m */;
     const float t1 = x[1];
@@ -1959,8 +2008,8 @@ static const float MHE_H = 0.2f;
 #define MHE_SUBSTEPS 1u
 #define MHE_NX ECOLI_X0_0P5_STATES
 #define MHE_NY ECOLI_X0_0P5_OUTPUTS
-/* The window's sample k (oldest first) of the observer o: its inputs. */
-#define MHE_U(k) NULL
+/* The inputs of the window's sample k (oldest first) of the observer o. */
+#define MHE_U(o, k) NULL
 
 /* firmware::matrix::product: out = a b, each entry summed from 0 in k's order. */
 static void mhe_product(float (*a)[MHE_NX], float (*b)[MHE_NX], float (*out)[MHE_NX]) {
@@ -2068,12 +2117,12 @@ static void mhe_normal(const ecoli_x0_0p5_mhe *o, const float *x, float (*matrix
         if (k > 0u) {
             float next[MHE_NX];
             float f[MHE_NX][MHE_NX], composed[MHE_NX][MHE_NX];
-            mhe_step(state, MHE_U(k - 1u), next, f);
+            mhe_step(state, MHE_U(o, k - 1u), next, f);
             memcpy(state, next, sizeof state);
             mhe_product(f, sensitivity, composed);
             memcpy(sensitivity, composed, sizeof composed);
         }
-        model_output(state, MHE_U(k), out);
+        model_output(state, MHE_U(o, k), out);
         for (i = 0u; i < MHE_NY; ++i) {
             const float raw = y[i] - out[i];
             const int finite = is_finite(raw);
@@ -2169,7 +2218,7 @@ static void mhe_solve_window(const ecoli_x0_0p5_mhe *o, const float *centre, int
     for (k = 1u; k < ECOLI_X0_0P5_HORIZON; ++k) {
         float next[MHE_NX];
         float f[MHE_NX][MHE_NX];
-        mhe_step(state, MHE_U(k - 1u), next, f);
+        mhe_step(state, MHE_U(o, k - 1u), next, f);
         memcpy(state, next, sizeof state);
     }
     mhe_project(state, end);
@@ -2191,11 +2240,9 @@ ecoli_x0_0p5_status ecoli_x0_0p5_mhe_push(ecoli_x0_0p5_mhe *o, const float *y, c
     }
     /* The previous solution moved one sample on: the prior's centre and the first iterate. */
     if (o->has_solved && o->filled >= ECOLI_X0_0P5_HORIZON) {
-        const unsigned k = 0u;
         float next[MHE_NX];
         float f[MHE_NX][MHE_NX];
-        (void)k;
-        mhe_step(o->solved, MHE_U(k), next, f);
+        mhe_step(o->solved, MHE_U(o, 0u), next, f);
         mhe_project(next, moved);
         has_moved = 1;
     }
@@ -2227,6 +2274,12 @@ ecoli_x0_0p5_status ecoli_x0_0p5_mhe_push(ecoli_x0_0p5_mhe *o, const float *y, c
     o->ready = 1;
     return ECOLI_X0_0P5_OK;
 }
+
+#undef MHE_ITERATIONS
+#undef MHE_SUBSTEPS
+#undef MHE_NX
+#undef MHE_NY
+#undef MHE_U
 
 ecoli_x0_0p5_status ecoli_x0_0p5_mhe_estimate(const ecoli_x0_0p5_mhe *o, float *values, ecoli_x0_0p5_saturation *saturation) {
     if (!o->ready) {
@@ -2300,3 +2353,5 @@ EcoliX00p5Status ecoli_x0_0p5_estimate(void *storage, float *estimates, int8_t *
 size_t ecoli_x0_0p5_storage_size(void) {
     return sizeof(ecoli_x0_0p5_stored);
 }
+
+#undef STORAGE_MARK

@@ -8,14 +8,14 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define ECOLI_X0_2_OUTPUTS 2u
-#define ECOLI_X0_2_INPUTS 0u
-#define ECOLI_X0_2_TARGETS 2u
+#define ECOLI_X0_2_OUTPUTS 2
+#define ECOLI_X0_2_INPUTS 0
+#define ECOLI_X0_2_TARGETS 2
 /* The map's window, in samples: no map estimate before it is full. */
-#define ECOLI_X0_2_HORIZON 3u
-#define ECOLI_X0_2_STATES 3u
+#define ECOLI_X0_2_HORIZON 3
+#define ECOLI_X0_2_STATES 3
 /* Entries of a filter's covariance kept: its upper triangle. */
-#define ECOLI_X0_2_COVARIANCE 6u
+#define ECOLI_X0_2_COVARIANCE 6
 
 /* What push and estimate return. */
 typedef enum {
@@ -99,15 +99,17 @@ typedef ecoli_x0_2_map ecoli_x0_2_observer;
  * without a change. The observer lives in storage you provide, ECOLI_X0_2_STORAGE_SIZE bytes aligned to
  * ECOLI_X0_2_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
  * checks them first. */
-#define ECOLI_X0_2_STORAGE_ALIGN 8u
+#define ECOLI_X0_2_STORAGE_ALIGN 8
 /* The sample period the design assumes, in its time unit. */
-#define ECOLI_X0_2_SAMPLE_PERIOD 0.2f
+#define ECOLI_X0_2_SAMPLE_PERIOD 0.2
 typedef struct {
     uint64_t mark;
     uint64_t size;
     ecoli_x0_2_observer observer;
 } ecoli_x0_2_stored;
-#define ECOLI_X0_2_STORAGE_SIZE sizeof(ecoli_x0_2_stored)
+#define ECOLI_X0_2_STORAGE_SIZE 296
+/* Does not compile where the observer would not fit in ECOLI_X0_2_STORAGE_SIZE bytes. */
+typedef char ecoli_x0_2_storage_fits[sizeof(ecoli_x0_2_stored) <= ECOLI_X0_2_STORAGE_SIZE ? 1 : -1];
 
 typedef enum {
     /* Done. */

@@ -2,7 +2,18 @@
 #include <stdint.h>
 #include <string.h>
 #include <math.h>
+#include <float.h>
 #include "two_tanks.h"
+
+/* The Rust observer's bits need every float operation rounded on its own: no fused multiply-add
+ * (gcc: -ffp-contract=off, the default of its ISO modes such as -std=c99; other compilers follow
+ * the standard pragma below), no -ffast-math, and float evaluated as float. */
+#if !defined(__GNUC__) || defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
+#error "float arithmetic must be evaluated in float (FLT_EVAL_METHOD 0), e.g. SSE rather than the x87"
+#endif
 
 /* The bits of v (memcpy: no aliasing, no conversion). */
 static uint32_t bits_of(float v) {
@@ -563,9 +574,9 @@ two_tanks_status two_tanks_map_estimate(const two_tanks_map *observer, float *va
     return TWO_TANKS_OK;
 }
 
-/* 1 with the sign of v (NaN stays NaN), as firmware::Maths::signum. */
+/* 1 with the sign of v (NaN stays NaN), as firmware::Maths::signum; NaN told by its bits. */
 static float signum(float v) {
-    return select_float(v != v, v, copysignf(1.0f, v));
+    return select_float((bits_of(v) & 0x7fffffffu) > 0x7f800000u, v, copysignf(1.0f, v));
 }
 
 
@@ -591,7 +602,6 @@ static int all_finite(const float *v, unsigned n) {
 
 /* The targets at state x and input u. */
 static void targets(const float *x, const float *u, float *out) {
-    (void)x;
     (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
@@ -601,10 +611,6 @@ static void targets(const float *x, const float *u, float *out) {
 
 /* One EKF sample with its measurement: out = (x(k|k), x+, P+) from (x, P), as the Rust file's ekf_measured. */
 static void ekf_measured(const float *x, const float *p, const float *y, const float *u, float *out) {
-    (void)x;
-    (void)p;
-    (void)y;
-    (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
     const float t2 = p[0];
@@ -855,9 +861,6 @@ static void ekf_measured(const float *x, const float *p, const float *y, const f
 
 /* One EKF sample without its measurement: out = (x+, P+) from (x, P), as the Rust file's ekf_unmeasured. */
 static void ekf_unmeasured(const float *x, const float *p, const float *u, float *out) {
-    (void)x;
-    (void)p;
-    (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
     const float t2 = p[0];
@@ -1156,7 +1159,6 @@ static void started_ekf_map_states(const float *all, float *map) {
 /* The targets of a follower's states, flagged with their states' saturation. */
 static void started_ekf_targets_of(const float *states, const two_tanks_saturation *state_flags, const float *u,
                                 float *values, two_tanks_saturation *flags) {
-    (void)state_flags;
     targets(states, u, values);
     flags[0] = TWO_TANKS_INSIDE;
     flags[1] = TWO_TANKS_INSIDE;
@@ -1422,8 +1424,6 @@ static const float CORRECTED_UPPER[TWO_TANKS_STATES] = {
 
 /* One sampling period of the model from x, the value alone: out = x+ (corrected_predict). */
 static void corrected_predict(const float *x, const float *u, float *out) {
-    (void)x;
-    (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
     const float t2 = 1.0f;
@@ -1516,11 +1516,7 @@ static void corrected_predict(const float *x, const float *u, float *out) {
 
 /* The correction during the start-up, g = (blends g_j, gains K_j): x before its clamp. */
 static void corrected_start_up(const float *x, const float *y, const float *u, const float *f, const float *g, float *out) {
-    (void)x;
-    (void)y;
     (void)u;
-    (void)f;
-    (void)g;
     const float t0 = x[0];
     const float t1 = x[1];
     const float t2 = y[0];
@@ -1547,8 +1543,6 @@ static void corrected_start_up(const float *x, const float *y, const float *u, c
 
 /* The correction after the start-up: x before its clamp. */
 static void corrected_steady(const float *x, const float *y, const float *u, const float *f, float *out) {
-    (void)x;
-    (void)y;
     (void)u;
     (void)f;
     const float t0 = x[0];
@@ -1574,7 +1568,6 @@ static void corrected_map_states(const float *all, float *map) {
 /* The targets of a follower's states, flagged with their states' saturation. */
 static void corrected_targets_of(const float *states, const two_tanks_saturation *state_flags, const float *u,
                                 float *values, two_tanks_saturation *flags) {
-    (void)state_flags;
     targets(states, u, values);
     flags[0] = TWO_TANKS_INSIDE;
     flags[1] = TWO_TANKS_INSIDE;
@@ -1689,8 +1682,6 @@ two_tanks_status two_tanks_corrected_estimate(const two_tanks_corrected *o, floa
 
 /* The model's derivative f(x, u), then its Jacobian row by row (the Rust file's Plant::derivative). */
 static void model_derivative(const float *x, const float *u, float *out) {
-    (void)x;
-    (void)u;
     const float t0 = 0.178f /* a1 */;
     const float t1 = 2.0f;
     const float t2 = 981.0f /* g */;
@@ -1750,7 +1741,6 @@ static void model_derivative(const float *x, const float *u, float *out) {
 
 /* The model's outputs h(x, u), then their Jacobian row by row (the Rust file's Plant::output). */
 static void model_output(const float *x, const float *u, float *out) {
-    (void)x;
     (void)u;
     const float t0 = 0.0f;
     const float t1 = x[1];
@@ -1783,8 +1773,8 @@ static const float MHE_H = 1.0f;
 #define MHE_SUBSTEPS 1u
 #define MHE_NX TWO_TANKS_STATES
 #define MHE_NY TWO_TANKS_OUTPUTS
-/* The window's sample k (oldest first) of the observer o: its inputs. */
-#define MHE_U(k) o->u[o->next + (k)]
+/* The inputs of the window's sample k (oldest first) of the observer o. */
+#define MHE_U(o, k) (o)->u[(o)->next + (k)]
 
 /* firmware::matrix::product: out = a b, each entry summed from 0 in k's order. */
 static void mhe_product(float (*a)[MHE_NX], float (*b)[MHE_NX], float (*out)[MHE_NX]) {
@@ -1892,12 +1882,12 @@ static void mhe_normal(const two_tanks_mhe *o, const float *x, float (*matrix)[M
         if (k > 0u) {
             float next[MHE_NX];
             float f[MHE_NX][MHE_NX], composed[MHE_NX][MHE_NX];
-            mhe_step(state, MHE_U(k - 1u), next, f);
+            mhe_step(state, MHE_U(o, k - 1u), next, f);
             memcpy(state, next, sizeof state);
             mhe_product(f, sensitivity, composed);
             memcpy(sensitivity, composed, sizeof composed);
         }
-        model_output(state, MHE_U(k), out);
+        model_output(state, MHE_U(o, k), out);
         for (i = 0u; i < MHE_NY; ++i) {
             const float raw = y[i] - out[i];
             const int finite = is_finite(raw);
@@ -1993,7 +1983,7 @@ static void mhe_solve_window(const two_tanks_mhe *o, const float *centre, int pr
     for (k = 1u; k < TWO_TANKS_HORIZON; ++k) {
         float next[MHE_NX];
         float f[MHE_NX][MHE_NX];
-        mhe_step(state, MHE_U(k - 1u), next, f);
+        mhe_step(state, MHE_U(o, k - 1u), next, f);
         memcpy(state, next, sizeof state);
     }
     mhe_project(state, end);
@@ -2015,11 +2005,9 @@ two_tanks_status two_tanks_mhe_push(two_tanks_mhe *o, const float *y, const floa
     }
     /* The previous solution moved one sample on: the prior's centre and the first iterate. */
     if (o->has_solved && o->filled >= TWO_TANKS_HORIZON) {
-        const unsigned k = 0u;
         float next[MHE_NX];
         float f[MHE_NX][MHE_NX];
-        (void)k;
-        mhe_step(o->solved, MHE_U(k), next, f);
+        mhe_step(o->solved, MHE_U(o, 0u), next, f);
         mhe_project(next, moved);
         has_moved = 1;
     }
@@ -2055,6 +2043,12 @@ two_tanks_status two_tanks_mhe_push(two_tanks_mhe *o, const float *y, const floa
     o->ready = 1;
     return TWO_TANKS_OK;
 }
+
+#undef MHE_ITERATIONS
+#undef MHE_SUBSTEPS
+#undef MHE_NX
+#undef MHE_NY
+#undef MHE_U
 
 two_tanks_status two_tanks_mhe_estimate(const two_tanks_mhe *o, float *values, two_tanks_saturation *saturation) {
     if (!o->ready) {
@@ -2128,3 +2122,5 @@ TwoTanksStatus two_tanks_estimate(void *storage, float *estimates, int8_t *satur
 size_t two_tanks_storage_size(void) {
     return sizeof(two_tanks_stored);
 }
+
+#undef STORAGE_MARK

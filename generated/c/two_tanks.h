@@ -8,14 +8,14 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define TWO_TANKS_OUTPUTS 1u
-#define TWO_TANKS_INPUTS 1u
-#define TWO_TANKS_TARGETS 2u
+#define TWO_TANKS_OUTPUTS 1
+#define TWO_TANKS_INPUTS 1
+#define TWO_TANKS_TARGETS 2
 /* The map's window, in samples: no map estimate before it is full. */
-#define TWO_TANKS_HORIZON 10u
-#define TWO_TANKS_STATES 2u
+#define TWO_TANKS_HORIZON 10
+#define TWO_TANKS_STATES 2
 /* Entries of a filter's covariance kept: its upper triangle. */
-#define TWO_TANKS_COVARIANCE 3u
+#define TWO_TANKS_COVARIANCE 3
 
 /* What push and estimate return. */
 typedef enum {
@@ -150,15 +150,17 @@ typedef two_tanks_corrected two_tanks_observer;
  * without a change. The observer lives in storage you provide, TWO_TANKS_STORAGE_SIZE bytes aligned to
  * TWO_TANKS_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
  * checks them first. */
-#define TWO_TANKS_STORAGE_ALIGN 8u
+#define TWO_TANKS_STORAGE_ALIGN 8
 /* The sample period the design assumes, in its time unit. */
-#define TWO_TANKS_SAMPLE_PERIOD 1.0f
+#define TWO_TANKS_SAMPLE_PERIOD 1.0
 typedef struct {
     uint64_t mark;
     uint64_t size;
     two_tanks_observer observer;
 } two_tanks_stored;
-#define TWO_TANKS_STORAGE_SIZE sizeof(two_tanks_stored)
+#define TWO_TANKS_STORAGE_SIZE 360
+/* Does not compile where the observer would not fit in TWO_TANKS_STORAGE_SIZE bytes. */
+typedef char two_tanks_storage_fits[sizeof(two_tanks_stored) <= TWO_TANKS_STORAGE_SIZE ? 1 : -1];
 
 typedef enum {
     /* Done. */

@@ -1,7 +1,18 @@
 /* The `vanderpol_sparse` observers in C99, emitted by `mho gen`. Do not edit: regenerate. */
 #include <stdint.h>
 #include <string.h>
+#include <float.h>
 #include "vanderpol_sparse.h"
+
+/* The Rust observer's bits need every float operation rounded on its own: no fused multiply-add
+ * (gcc: -ffp-contract=off, the default of its ISO modes such as -std=c99; other compilers follow
+ * the standard pragma below), no -ffast-math, and float evaluated as float. */
+#if !defined(__GNUC__) || defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
+#error "float arithmetic must be evaluated in float (FLT_EVAL_METHOD 0), e.g. SSE rather than the x87"
+#endif
 
 /* The bits of v (memcpy: no aliasing, no conversion). */
 static uint32_t bits_of(float v) {
@@ -152,7 +163,6 @@ static int all_finite(const float *v, unsigned n) {
 
 /* The targets at state x and input u. */
 static void targets(const float *x, const float *u, float *out) {
-    (void)x;
     (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
@@ -162,9 +172,6 @@ static void targets(const float *x, const float *u, float *out) {
 
 /* One EKF sample with its measurement: out = (x(k|k), x+, P+) from (x, P), as the Rust file's ekf_measured. */
 static void ekf_measured(const float *x, const float *p, const float *y, const float *u, float *out) {
-    (void)x;
-    (void)p;
-    (void)y;
     (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
@@ -387,8 +394,6 @@ static void ekf_measured(const float *x, const float *p, const float *y, const f
 
 /* One EKF sample without its measurement: out = (x+, P+) from (x, P), as the Rust file's ekf_unmeasured. */
 static void ekf_unmeasured(const float *x, const float *p, const float *u, float *out) {
-    (void)x;
-    (void)p;
     (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
@@ -641,7 +646,6 @@ static void started_ekf_map_states(const float *all, float *map) {
 /* The targets of a follower's states, flagged with their states' saturation. */
 static void started_ekf_targets_of(const float *states, const vanderpol_sparse_saturation *state_flags, const float *u,
                                 float *values, vanderpol_sparse_saturation *flags) {
-    (void)state_flags;
     targets(states, u, values);
     flags[0] = VANDERPOL_SPARSE_INSIDE;
     flags[1] = VANDERPOL_SPARSE_INSIDE;
@@ -988,7 +992,6 @@ static const float CORRECTED_UPPER[VANDERPOL_SPARSE_STATES] = {
 
 /* One sampling period of the model from x, the value alone: out = x+ (corrected_predict). */
 static void corrected_predict(const float *x, const float *u, float *out) {
-    (void)x;
     (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
@@ -1053,11 +1056,7 @@ static void corrected_predict(const float *x, const float *u, float *out) {
 
 /* The correction during the start-up, g = (blends g_j, gains K_j): x before its clamp. */
 static void corrected_start_up(const float *x, const float *y, const float *u, const float *f, const float *g, float *out) {
-    (void)x;
-    (void)y;
     (void)u;
-    (void)f;
-    (void)g;
     const float t0 = x[0];
     const float t1 = x[1];
     const float t2 = t0 + t1;
@@ -1085,8 +1084,6 @@ static void corrected_start_up(const float *x, const float *y, const float *u, c
 
 /* The correction after the start-up: x before its clamp. */
 static void corrected_steady(const float *x, const float *y, const float *u, const float *f, float *out) {
-    (void)x;
-    (void)y;
     (void)u;
     (void)f;
     const float t0 = x[0];
@@ -1113,7 +1110,6 @@ static void corrected_map_states(const float *all, float *map) {
 /* The targets of a follower's states, flagged with their states' saturation. */
 static void corrected_targets_of(const float *states, const vanderpol_sparse_saturation *state_flags, const float *u,
                                 float *values, vanderpol_sparse_saturation *flags) {
-    (void)state_flags;
     targets(states, u, values);
     flags[0] = VANDERPOL_SPARSE_INSIDE;
     flags[1] = VANDERPOL_SPARSE_INSIDE;
@@ -1228,7 +1224,6 @@ vanderpol_sparse_status vanderpol_sparse_corrected_estimate(const vanderpol_spar
 
 /* The model's derivative f(x, u), then its Jacobian row by row (the Rust file's Plant::derivative). */
 static void model_derivative(const float *x, const float *u, float *out) {
-    (void)x;
     (void)u;
     const float t0 = x[1];
     const float t1 = -t0;
@@ -1257,7 +1252,6 @@ static void model_derivative(const float *x, const float *u, float *out) {
 
 /* The model's outputs h(x, u), then their Jacobian row by row (the Rust file's Plant::output). */
 static void model_output(const float *x, const float *u, float *out) {
-    (void)x;
     (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
@@ -1291,8 +1285,8 @@ static const float MHE_H = 0.1f;
 #define MHE_SUBSTEPS 1u
 #define MHE_NX VANDERPOL_SPARSE_STATES
 #define MHE_NY VANDERPOL_SPARSE_OUTPUTS
-/* The window's sample k (oldest first) of the observer o: its inputs. */
-#define MHE_U(k) NULL
+/* The inputs of the window's sample k (oldest first) of the observer o. */
+#define MHE_U(o, k) NULL
 
 /* firmware::matrix::product: out = a b, each entry summed from 0 in k's order. */
 static void mhe_product(float (*a)[MHE_NX], float (*b)[MHE_NX], float (*out)[MHE_NX]) {
@@ -1400,12 +1394,12 @@ static void mhe_normal(const vanderpol_sparse_mhe *o, const float *x, float (*ma
         if (k > 0u) {
             float next[MHE_NX];
             float f[MHE_NX][MHE_NX], composed[MHE_NX][MHE_NX];
-            mhe_step(state, MHE_U(k - 1u), next, f);
+            mhe_step(state, MHE_U(o, k - 1u), next, f);
             memcpy(state, next, sizeof state);
             mhe_product(f, sensitivity, composed);
             memcpy(sensitivity, composed, sizeof composed);
         }
-        model_output(state, MHE_U(k), out);
+        model_output(state, MHE_U(o, k), out);
         for (i = 0u; i < MHE_NY; ++i) {
             const float raw = y[i] - out[i];
             const int finite = is_finite(raw);
@@ -1501,7 +1495,7 @@ static void mhe_solve_window(const vanderpol_sparse_mhe *o, const float *centre,
     for (k = 1u; k < VANDERPOL_SPARSE_HORIZON; ++k) {
         float next[MHE_NX];
         float f[MHE_NX][MHE_NX];
-        mhe_step(state, MHE_U(k - 1u), next, f);
+        mhe_step(state, MHE_U(o, k - 1u), next, f);
         memcpy(state, next, sizeof state);
     }
     mhe_project(state, end);
@@ -1523,11 +1517,9 @@ vanderpol_sparse_status vanderpol_sparse_mhe_push(vanderpol_sparse_mhe *o, const
     }
     /* The previous solution moved one sample on: the prior's centre and the first iterate. */
     if (o->has_solved && o->filled >= VANDERPOL_SPARSE_HORIZON) {
-        const unsigned k = 0u;
         float next[MHE_NX];
         float f[MHE_NX][MHE_NX];
-        (void)k;
-        mhe_step(o->solved, MHE_U(k), next, f);
+        mhe_step(o->solved, MHE_U(o, 0u), next, f);
         mhe_project(next, moved);
         has_moved = 1;
     }
@@ -1559,6 +1551,12 @@ vanderpol_sparse_status vanderpol_sparse_mhe_push(vanderpol_sparse_mhe *o, const
     o->ready = 1;
     return VANDERPOL_SPARSE_OK;
 }
+
+#undef MHE_ITERATIONS
+#undef MHE_SUBSTEPS
+#undef MHE_NX
+#undef MHE_NY
+#undef MHE_U
 
 vanderpol_sparse_status vanderpol_sparse_mhe_estimate(const vanderpol_sparse_mhe *o, float *values, vanderpol_sparse_saturation *saturation) {
     if (!o->ready) {
@@ -1632,3 +1630,5 @@ VanderpolSparseStatus vanderpol_sparse_estimate(void *storage, float *estimates,
 size_t vanderpol_sparse_storage_size(void) {
     return sizeof(vanderpol_sparse_stored);
 }
+
+#undef STORAGE_MARK

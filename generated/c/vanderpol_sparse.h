@@ -8,14 +8,14 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define VANDERPOL_SPARSE_OUTPUTS 1u
-#define VANDERPOL_SPARSE_INPUTS 0u
-#define VANDERPOL_SPARSE_TARGETS 2u
+#define VANDERPOL_SPARSE_OUTPUTS 1
+#define VANDERPOL_SPARSE_INPUTS 0
+#define VANDERPOL_SPARSE_TARGETS 2
 /* The map's window, in samples: no map estimate before it is full. */
-#define VANDERPOL_SPARSE_HORIZON 19u
-#define VANDERPOL_SPARSE_STATES 2u
+#define VANDERPOL_SPARSE_HORIZON 19
+#define VANDERPOL_SPARSE_STATES 2
 /* Entries of a filter's covariance kept: its upper triangle. */
-#define VANDERPOL_SPARSE_COVARIANCE 3u
+#define VANDERPOL_SPARSE_COVARIANCE 3
 
 /* What push and estimate return. */
 typedef enum {
@@ -148,15 +148,17 @@ typedef vanderpol_sparse_map vanderpol_sparse_observer;
  * without a change. The observer lives in storage you provide, VANDERPOL_SPARSE_STORAGE_SIZE bytes aligned to
  * VANDERPOL_SPARSE_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
  * checks them first. */
-#define VANDERPOL_SPARSE_STORAGE_ALIGN 8u
+#define VANDERPOL_SPARSE_STORAGE_ALIGN 8
 /* The sample period the design assumes, in its time unit. */
-#define VANDERPOL_SPARSE_SAMPLE_PERIOD 0.1f
+#define VANDERPOL_SPARSE_SAMPLE_PERIOD 0.1
 typedef struct {
     uint64_t mark;
     uint64_t size;
     vanderpol_sparse_observer observer;
 } vanderpol_sparse_stored;
-#define VANDERPOL_SPARSE_STORAGE_SIZE sizeof(vanderpol_sparse_stored)
+#define VANDERPOL_SPARSE_STORAGE_SIZE 352
+/* Does not compile where the observer would not fit in VANDERPOL_SPARSE_STORAGE_SIZE bytes. */
+typedef char vanderpol_sparse_storage_fits[sizeof(vanderpol_sparse_stored) <= VANDERPOL_SPARSE_STORAGE_SIZE ? 1 : -1];
 
 typedef enum {
     /* Done. */

@@ -1,7 +1,18 @@
 /* The `vanderpol_uncertain` observers in C99, emitted by `mho gen`. Do not edit: regenerate. */
 #include <stdint.h>
 #include <string.h>
+#include <float.h>
 #include "vanderpol_uncertain.h"
+
+/* The Rust observer's bits need every float operation rounded on its own: no fused multiply-add
+ * (gcc: -ffp-contract=off, the default of its ISO modes such as -std=c99; other compilers follow
+ * the standard pragma below), no -ffast-math, and float evaluated as float. */
+#if !defined(__GNUC__) || defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
+#error "float arithmetic must be evaluated in float (FLT_EVAL_METHOD 0), e.g. SSE rather than the x87"
+#endif
 
 /* The bits of v (memcpy: no aliasing, no conversion). */
 static uint32_t bits_of(float v) {
@@ -270,7 +281,6 @@ static int all_finite(const float *v, unsigned n) {
 
 /* The targets at state x and input u. */
 static void targets(const float *x, const float *u, float *out) {
-    (void)x;
     (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
@@ -280,9 +290,6 @@ static void targets(const float *x, const float *u, float *out) {
 
 /* One EKF sample with its measurement: out = (x(k|k), x+, P+) from (x, P), as the Rust file's ekf_measured. */
 static void ekf_measured(const float *x, const float *p, const float *y, const float *u, float *out) {
-    (void)x;
-    (void)p;
-    (void)y;
     (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
@@ -506,8 +513,6 @@ static void ekf_measured(const float *x, const float *p, const float *y, const f
 
 /* One EKF sample without its measurement: out = (x+, P+) from (x, P), as the Rust file's ekf_unmeasured. */
 static void ekf_unmeasured(const float *x, const float *p, const float *u, float *out) {
-    (void)x;
-    (void)p;
     (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
@@ -761,7 +766,6 @@ static void started_ekf_map_states(const float *all, float *map) {
 /* The targets of a follower's states, flagged with their states' saturation. */
 static void started_ekf_targets_of(const float *states, const vanderpol_uncertain_saturation *state_flags, const float *u,
                                 float *values, vanderpol_uncertain_saturation *flags) {
-    (void)state_flags;
     targets(states, u, values);
     flags[0] = VANDERPOL_UNCERTAIN_INSIDE;
     flags[1] = VANDERPOL_UNCERTAIN_INSIDE;
@@ -1027,7 +1031,6 @@ static const float CORRECTED_UPPER[VANDERPOL_UNCERTAIN_STATES] = {
 
 /* One sampling period of the model from x, the value alone: out = x+ (corrected_predict). */
 static void corrected_predict(const float *x, const float *u, float *out) {
-    (void)x;
     (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
@@ -1092,11 +1095,7 @@ static void corrected_predict(const float *x, const float *u, float *out) {
 
 /* The correction during the start-up, g = (blends g_j, gains K_j): x before its clamp. */
 static void corrected_start_up(const float *x, const float *y, const float *u, const float *f, const float *g, float *out) {
-    (void)x;
-    (void)y;
     (void)u;
-    (void)f;
-    (void)g;
     const float t0 = x[0];
     const float t1 = x[1];
     const float t2 = t0 + t1;
@@ -1124,8 +1123,6 @@ static void corrected_start_up(const float *x, const float *y, const float *u, c
 
 /* The correction after the start-up: x before its clamp. */
 static void corrected_steady(const float *x, const float *y, const float *u, const float *f, float *out) {
-    (void)x;
-    (void)y;
     (void)u;
     (void)f;
     const float t0 = x[0];
@@ -1152,7 +1149,6 @@ static void corrected_map_states(const float *all, float *map) {
 /* The targets of a follower's states, flagged with their states' saturation. */
 static void corrected_targets_of(const float *states, const vanderpol_uncertain_saturation *state_flags, const float *u,
                                 float *values, vanderpol_uncertain_saturation *flags) {
-    (void)state_flags;
     targets(states, u, values);
     flags[0] = VANDERPOL_UNCERTAIN_INSIDE;
     flags[1] = VANDERPOL_UNCERTAIN_INSIDE;
@@ -1267,7 +1263,6 @@ vanderpol_uncertain_status vanderpol_uncertain_corrected_estimate(const vanderpo
 
 /* The model's derivative f(x, u), then its Jacobian row by row (the Rust file's Plant::derivative). */
 static void model_derivative(const float *x, const float *u, float *out) {
-    (void)x;
     (void)u;
     const float t0 = x[1];
     const float t1 = -t0;
@@ -1296,7 +1291,6 @@ static void model_derivative(const float *x, const float *u, float *out) {
 
 /* The model's outputs h(x, u), then their Jacobian row by row (the Rust file's Plant::output). */
 static void model_output(const float *x, const float *u, float *out) {
-    (void)x;
     (void)u;
     const float t0 = x[0];
     const float t1 = x[1];
@@ -1330,8 +1324,8 @@ static const float MHE_H = 0.1f;
 #define MHE_SUBSTEPS 1u
 #define MHE_NX VANDERPOL_UNCERTAIN_STATES
 #define MHE_NY VANDERPOL_UNCERTAIN_OUTPUTS
-/* The window's sample k (oldest first) of the observer o: its inputs. */
-#define MHE_U(k) NULL
+/* The inputs of the window's sample k (oldest first) of the observer o. */
+#define MHE_U(o, k) NULL
 
 /* firmware::matrix::product: out = a b, each entry summed from 0 in k's order. */
 static void mhe_product(float (*a)[MHE_NX], float (*b)[MHE_NX], float (*out)[MHE_NX]) {
@@ -1439,12 +1433,12 @@ static void mhe_normal(const vanderpol_uncertain_mhe *o, const float *x, float (
         if (k > 0u) {
             float next[MHE_NX];
             float f[MHE_NX][MHE_NX], composed[MHE_NX][MHE_NX];
-            mhe_step(state, MHE_U(k - 1u), next, f);
+            mhe_step(state, MHE_U(o, k - 1u), next, f);
             memcpy(state, next, sizeof state);
             mhe_product(f, sensitivity, composed);
             memcpy(sensitivity, composed, sizeof composed);
         }
-        model_output(state, MHE_U(k), out);
+        model_output(state, MHE_U(o, k), out);
         for (i = 0u; i < MHE_NY; ++i) {
             const float raw = y[i] - out[i];
             const int finite = is_finite(raw);
@@ -1540,7 +1534,7 @@ static void mhe_solve_window(const vanderpol_uncertain_mhe *o, const float *cent
     for (k = 1u; k < VANDERPOL_UNCERTAIN_HORIZON; ++k) {
         float next[MHE_NX];
         float f[MHE_NX][MHE_NX];
-        mhe_step(state, MHE_U(k - 1u), next, f);
+        mhe_step(state, MHE_U(o, k - 1u), next, f);
         memcpy(state, next, sizeof state);
     }
     mhe_project(state, end);
@@ -1562,11 +1556,9 @@ vanderpol_uncertain_status vanderpol_uncertain_mhe_push(vanderpol_uncertain_mhe 
     }
     /* The previous solution moved one sample on: the prior's centre and the first iterate. */
     if (o->has_solved && o->filled >= VANDERPOL_UNCERTAIN_HORIZON) {
-        const unsigned k = 0u;
         float next[MHE_NX];
         float f[MHE_NX][MHE_NX];
-        (void)k;
-        mhe_step(o->solved, MHE_U(k), next, f);
+        mhe_step(o->solved, MHE_U(o, 0u), next, f);
         mhe_project(next, moved);
         has_moved = 1;
     }
@@ -1598,6 +1590,12 @@ vanderpol_uncertain_status vanderpol_uncertain_mhe_push(vanderpol_uncertain_mhe 
     o->ready = 1;
     return VANDERPOL_UNCERTAIN_OK;
 }
+
+#undef MHE_ITERATIONS
+#undef MHE_SUBSTEPS
+#undef MHE_NX
+#undef MHE_NY
+#undef MHE_U
 
 vanderpol_uncertain_status vanderpol_uncertain_mhe_estimate(const vanderpol_uncertain_mhe *o, float *values, vanderpol_uncertain_saturation *saturation) {
     if (!o->ready) {
@@ -1671,3 +1669,5 @@ VanderpolUncertainStatus vanderpol_uncertain_estimate(void *storage, float *esti
 size_t vanderpol_uncertain_storage_size(void) {
     return sizeof(vanderpol_uncertain_stored);
 }
+
+#undef STORAGE_MARK

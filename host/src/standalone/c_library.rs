@@ -58,25 +58,7 @@ pub fn manifest(design: &Design) -> String {
     )
 }
 
-/// Bytes the observer of `design` needs at most on any target: the window (`N` samples of `f32`
-/// outputs and inputs, twice, and two indices), the follower's state, covariance and start-up
-/// constants, and slack for indices and padding.
-pub fn storage_bound(design: &Design) -> usize {
-    let (n, ny, nu) = (
-        design.map.horizon,
-        design.model.outputs.len(),
-        design.model.inputs.len(),
-    );
-    let (nx, nt) = (design.model.states.len(), design.targets.len());
-    let window = 2 * 4 * n * (ny + nu) + 2 * 8;
-    let follower = 4 * (nx * (nx + 7) + 4 * nt) + 64;
-    // The storage's mark and size (`Stored`) before the observer.
-    (MARK_BYTES + window + follower).div_ceil(8) * 8
-}
-
-/// Bytes before the observer in the C storage: the mark that `init` made an observer there, and the
-/// size it was given.
-pub const MARK_BYTES: usize = 16;
+pub use crate::emit::c::{storage_bound, MARK_BYTES};
 
 /// Spec text for a doc comment that cbindgen copies into a C `/* … */` comment: one line, no code
 /// span's end, and no `*/` or `/*` (which would end the comment, or open one inside it, and let the

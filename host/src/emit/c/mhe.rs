@@ -41,7 +41,7 @@ pub(super) fn mhe(
             format!(
                 "    for (i = 0u; i < {upper}_INPUTS; ++i) {{\n        o->u[slot][i] = u[i];\n        o->u[slot + {upper}_HORIZON][i] = u[i];\n    }}\n"
             ),
-            "o->u[o->next + (k)]",
+            "(o)->u[(o)->next + (k)]",
         )
     } else {
         (String::new(), String::new(), "NULL")
@@ -100,8 +100,8 @@ static const float MHE_H = @H@;
 #define MHE_SUBSTEPS @SUBSTEPS@u
 #define MHE_NX @UPPER@_STATES
 #define MHE_NY @UPPER@_OUTPUTS
-/* The window's sample k (oldest first) of the observer o: its inputs. */
-#define MHE_U(k) @U_AT@
+/* The inputs of the window's sample k (oldest first) of the observer o. */
+#define MHE_U(o, k) @U_AT@
 
 /* firmware::matrix::product: out = a b, each entry summed from 0 in k's order. */
 static void mhe_product(float (*a)[MHE_NX], float (*b)[MHE_NX], float (*out)[MHE_NX]) {
@@ -209,12 +209,12 @@ static void mhe_normal(const @NAME@_mhe *o, const float *x, float (*matrix)[MHE_
         if (k > 0u) {
             float next[MHE_NX];
             float f[MHE_NX][MHE_NX], composed[MHE_NX][MHE_NX];
-            mhe_step(state, MHE_U(k - 1u), next, f);
+            mhe_step(state, MHE_U(o, k - 1u), next, f);
             memcpy(state, next, sizeof state);
             mhe_product(f, sensitivity, composed);
             memcpy(sensitivity, composed, sizeof composed);
         }
-        model_output(state, MHE_U(k), out);
+        model_output(state, MHE_U(o, k), out);
         for (i = 0u; i < MHE_NY; ++i) {
             const float raw = y[i] - out[i];
             const int finite = is_finite(raw);
@@ -310,7 +310,7 @@ static void mhe_solve_window(const @NAME@_mhe *o, const float *centre, int prior
     for (k = 1u; k < @UPPER@_HORIZON; ++k) {
         float next[MHE_NX];
         float f[MHE_NX][MHE_NX];
-        mhe_step(state, MHE_U(k - 1u), next, f);
+        mhe_step(state, MHE_U(o, k - 1u), next, f);
         memcpy(state, next, sizeof state);
     }
     mhe_project(state, end);
@@ -332,11 +332,9 @@ void @NAME@_mhe_init(@NAME@_mhe *o) {
     }
     /* The previous solution moved one sample on: the prior's centre and the first iterate. */
     if (o->has_solved && o->filled >= @UPPER@_HORIZON) {
-        const unsigned k = 0u;
         float next[MHE_NX];
         float f[MHE_NX][MHE_NX];
-        (void)k;
-        mhe_step(o->solved, MHE_U(k), next, f);
+        mhe_step(o->solved, MHE_U(o, 0u), next, f);
         mhe_project(next, moved);
         has_moved = 1;
     }
@@ -368,5 +366,11 @@ void @NAME@_mhe_init(@NAME@_mhe *o) {
     o->ready = 1;
     return @UPPER@_OK;
 }
+
+#undef MHE_ITERATIONS
+#undef MHE_SUBSTEPS
+#undef MHE_NX
+#undef MHE_NY
+#undef MHE_U
 
 "#;

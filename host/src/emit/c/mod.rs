@@ -1,9 +1,11 @@
-//! A design's observers as portable C99 source (`<name>.h`, `<name>.c`): the map
-//! (`map`) and every model-based kind the Rust design file has (`filters`, `corrected`),
-//! emitted from the same f32 tables and the same straight-line programs (`program`) as the Rust
-//! file, operation for operation, so that with `-ffp-contract=off` the C observer gives the Rust
-//! observer's bits (up to the C library's functions where the model calls one: `<math.h>`'s `expf`
-//! is not `libm`'s).
+//! A design's observers as portable C99 source (`<name>.h`, `<name>.c`), emitted from the same f32
+//! tables and the same straight-line programs as the Rust design file, operation for operation, so
+//! that without fused multiply-add the C observer gives the Rust observer's bits. One module per
+//! piece: `map` (the map), `program` (a program as a C function, the model's functions: `exp` as
+//! libm computes it, the correctly rounded ones from `<math.h>`; others would come from the C
+//! library, within an ulp of Rust's), `filters` (the EKF kinds), `started` (what the observers the
+//! map starts share), `corrected`, `mhe`, and `storage` (the Rust static library's interface over the
+//! chosen kind).
 //!
 //! C99 with `float` only: no `malloc`, no recursion, no VLA, no global mutable state; `<math.h>` only
 //! where the model calls a function; a value is finite when its exponent bits are not all ones. Each
@@ -18,7 +20,7 @@ mod program;
 mod started;
 mod storage;
 
-pub use storage::{mark, status_name};
+pub use storage::{mark, status_name, storage_bound, MARK_BYTES};
 
 use super::model::Observers;
 use super::EmitError;
@@ -73,9 +75,7 @@ pub fn c_source(
     };
     let chosen = model.map(|(_, o)| o.kind.name());
     let (interface_header, interface_source) = match chosen {
-        Some(kind) if kind == "map" || kinds.names.contains(&kind) => {
-            storage::storage_interface(name, nu, &float("sampling.tau", design.tau)?)
-        }
+        Some(kind) if kind == "map" || kinds.names.contains(&kind) => storage::storage_interface(design),
         _ => (String::new(), String::new()),
     };
     let alias = match chosen {
@@ -95,9 +95,9 @@ pub fn c_source(
     };
     let sizes = match model {
         Some((code, _)) => format!(
-            "#define {upper}_STATES {nx}u\n\
+            "#define {upper}_STATES {nx}\n\
              /* Entries of a filter's covariance kept: its upper triangle. */\n\
-             #define {upper}_COVARIANCE {cov}u\n",
+             #define {upper}_COVARIANCE {cov}\n",
             nx = code.dimensions.states,
             cov = crate::plant::kalman::triangle(code.dimensions.states)
         ),
@@ -114,11 +114,11 @@ pub fn c_source(
          #include <stddef.h>\n\
          #include <stdint.h>\n\
          \n\
-         #define {upper}_OUTPUTS {ny}u\n\
-         #define {upper}_INPUTS {nu}u\n\
-         #define {upper}_TARGETS {nt}u\n\
+         #define {upper}_OUTPUTS {ny}\n\
+         #define {upper}_INPUTS {nu}\n\
+         #define {upper}_TARGETS {nt}\n\
          /* The map's window, in samples: no map estimate before it is full. */\n\
-         #define {upper}_HORIZON {n}u\n\
+         #define {upper}_HORIZON {n}\n\
          {sizes}\
          \n\
          /* What push and estimate return. */\n\
@@ -180,7 +180,18 @@ pub fn c_source(
          #include <stdint.h>\n\
          #include <string.h>\n\
          {math}\
+         #include <float.h>\n\
          #include \"{name}.h\"\n\
+         \n\
+         /* The Rust observer's bits need every float operation rounded on its own: no fused multiply-add\n\
+         \x20* (gcc: -ffp-contract=off, the default of its ISO modes such as -std=c99; other compilers follow\n\
+         \x20* the standard pragma below), no -ffast-math, and float evaluated as float. */\n\
+         #if !defined(__GNUC__) || defined(__clang__)\n\
+         #pragma STDC FP_CONTRACT OFF\n\
+         #endif\n\
+         #if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0\n\
+         #error \"float arithmetic must be evaluated in float (FLT_EVAL_METHOD 0), e.g. SSE rather than the x87\"\n\
+         #endif\n\
          \n\
          /* The bits of v (memcpy: no aliasing, no conversion). */\n\
          static uint32_t bits_of(float v) {{\n\

@@ -34,11 +34,16 @@ pub(super) fn targets_of(name: &str, prefix: &str, state_targets: &[usize], targ
         .filter(|(_, &t)| t < targets)
         .map(|(i, &t)| format!("    flags[{t}] = state_flags[{i}];\n"))
         .collect();
+    let unused = if flagged.is_empty() {
+        "    (void)state_flags;\n"
+    } else {
+        ""
+    };
     format!(
         "/* The targets of a follower's states, flagged with their states' saturation. */\n\
          static void {prefix}_targets_of(const float *states, const {name}_saturation *state_flags, const float *u,\n\
          \x20                               float *values, {name}_saturation *flags) {{\n\
-         \x20   (void)state_flags;\n\
+         {unused}\
          \x20   targets(states, u, values);\n\
          {inside}{flagged}}}\n\n"
     )

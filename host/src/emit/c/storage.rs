@@ -2,6 +2,29 @@
 //! `crate::standalone::c_library`) over the C source's chosen kind: the same calls, statuses, storage
 //! mark and checks, so that a firmware moves between the two C routes without changing a line.
 
+use crate::spec::Design;
+
+/// Bytes the observer of `design` needs at most on any target: the window (`N` samples of `f32`
+/// outputs and inputs, twice, and two indices), the follower's state, covariance and start-up
+/// constants, and slack for indices and padding. Both routes state it as `<NAME>_STORAGE_SIZE`; each
+/// checks when it compiles that its observer fits.
+pub fn storage_bound(design: &Design) -> usize {
+    let (n, ny, nu) = (
+        design.map.horizon,
+        design.model.outputs.len(),
+        design.model.inputs.len(),
+    );
+    let (nx, nt) = (design.model.states.len(), design.targets.len());
+    let window = 2 * 4 * n * (ny + nu) + 2 * 8;
+    let follower = 4 * (nx * (nx + 7) + 4 * nt) + 64;
+    // The storage's mark and size before the observer.
+    (MARK_BYTES + window + follower).div_ceil(8) * 8
+}
+
+/// Bytes before the observer in the C storage: the mark that `init` made an observer there, and the
+/// size it was given.
+pub const MARK_BYTES: usize = 16;
+
 /// The C name of design `name`'s status enum: `my_design` → `MyDesignStatus` (as cbindgen names the
 /// Rust library's, `{Enum}_{Variant}` for its values).
 pub fn status_name(name: &str) -> String {
@@ -26,9 +49,14 @@ pub fn mark(name: &str) -> u64 {
     hash | 1
 }
 
-/// The header's and the source's parts of the interface (`tau`: the sample period, as a C literal).
-pub(super) fn storage_interface(name: &str, inputs: usize, tau: &str) -> (String, String) {
+/// The header's and the source's parts of the interface for `design`.
+pub(super) fn storage_interface(design: &Design) -> (String, String) {
+    let name = design.name.as_str();
+    let inputs = design.model.inputs.len();
     let upper = name.to_uppercase();
+    // As cbindgen prints the library's `f32` constant, and its bound.
+    let tau = format!("{:?}", design.tau as f32);
+    let bound = storage_bound(design);
     let status = status_name(name);
     let header = format!(
         "/* The Rust static library's interface (c/include/{name}.h of a crate `mho gen --spec` writes) over\n \
@@ -36,7 +64,7 @@ pub(super) fn storage_interface(name: &str, inputs: usize, tau: &str) -> (String
          * without a change. The observer lives in storage you provide, {upper}_STORAGE_SIZE bytes aligned to\n \
          * {upper}_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call\n \
          * checks them first. */\n\
-         #define {upper}_STORAGE_ALIGN 8u\n\
+         #define {upper}_STORAGE_ALIGN 8\n\
          /* The sample period the design assumes, in its time unit. */\n\
          #define {upper}_SAMPLE_PERIOD {tau}\n\
          typedef struct {{\n\
@@ -44,7 +72,9 @@ pub(super) fn storage_interface(name: &str, inputs: usize, tau: &str) -> (String
          \x20   uint64_t size;\n\
          \x20   {name}_observer observer;\n\
          }} {name}_stored;\n\
-         #define {upper}_STORAGE_SIZE sizeof({name}_stored)\n\
+         #define {upper}_STORAGE_SIZE {bound}\n\
+         /* Does not compile where the observer would not fit in {upper}_STORAGE_SIZE bytes. */\n\
+         typedef char {name}_storage_fits[sizeof({name}_stored) <= {upper}_STORAGE_SIZE ? 1 : -1];\n\
          \n\
          typedef enum {{\n\
          \x20   /* Done. */\n\
@@ -133,7 +163,9 @@ pub(super) fn storage_interface(name: &str, inputs: usize, tau: &str) -> (String
          \n\
          size_t {name}_storage_size(void) {{\n\
          \x20   return sizeof({name}_stored);\n\
-         }}\n",
+         }}\n\
+         \n\
+         #undef STORAGE_MARK\n",
         mark = mark(name),
     );
     (header, source)
