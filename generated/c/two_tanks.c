@@ -1575,7 +1575,8 @@ static void corrected_targets_of(const float *states, const two_tanks_saturation
     flags[1] = state_flags[1];
 }
 
-/* Corrector::start: the model's period from the map's first estimate, taken when finite. */
+/* Corrector::start: the model's period from the map's first estimate (or from the states after
+ * a correction), taken into x when finite. */
 static int corrected_start(const float *first, const float *u, float *x) {
     float next[TWO_TANKS_STATES];
     corrected_predict(first, u, next);
@@ -1590,7 +1591,7 @@ static int corrected_start(const float *first, const float *u, float *x) {
  * G's), clamped to the states' ranges by selects, then the model's period from it. */
 static int corrected_follow(float *x, unsigned j, int start_up, const float *f, const float *y, const float *u,
                             float *states, two_tanks_saturation *flags) {
-    float raw[TWO_TANKS_STATES], next[TWO_TANKS_STATES];
+    float raw[TWO_TANKS_STATES];
     unsigned i;
     if (start_up) {
         corrected_start_up(x, y, u, f, (j >= 1u && j <= 30u) ? CORRECTED_BLENDS[j - 1u] : CORRECTED_NO_BLEND, raw);
@@ -1605,21 +1606,12 @@ static int corrected_follow(float *x, unsigned j, int start_up, const float *f, 
         states[i] = select_float(out, edge, raw[i]);
         flags[i] = (two_tanks_saturation)select_bits(out, flag, (uint32_t)TWO_TANKS_INSIDE);
     }
-    corrected_predict(states, u, next);
-    if (!all_finite(next, TWO_TANKS_STATES)) {
-        return 0;
-    }
-    memcpy(x, next, sizeof next);
-    return 1;
+    return corrected_start(states, u, x);
 }
 
 /* Corrector::predict: a lost output, the model's period from x (no correction). */
 static void corrected_lost(float *x, const float *u) {
-    float next[TWO_TANKS_STATES];
-    corrected_predict(x, u, next);
-    if (all_finite(next, TWO_TANKS_STATES)) {
-        memcpy(x, next, sizeof next);
-    }
+    (void)corrected_start(x, u, x);
 }
 
 void two_tanks_corrected_init(two_tanks_corrected *o) {

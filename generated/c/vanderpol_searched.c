@@ -1108,7 +1108,8 @@ static void corrected_targets_of(const float *states, const vanderpol_searched_s
     flags[1] = state_flags[1];
 }
 
-/* Corrector::start: the model's period from the map's first estimate, taken when finite. */
+/* Corrector::start: the model's period from the map's first estimate (or from the states after
+ * a correction), taken into x when finite. */
 static int corrected_start(const float *first, const float *u, float *x) {
     float next[VANDERPOL_SEARCHED_STATES];
     corrected_predict(first, u, next);
@@ -1123,7 +1124,7 @@ static int corrected_start(const float *first, const float *u, float *x) {
  * G's), clamped to the states' ranges by selects, then the model's period from it. */
 static int corrected_follow(float *x, unsigned j, int start_up, const float *f, const float *y, const float *u,
                             float *states, vanderpol_searched_saturation *flags) {
-    float raw[VANDERPOL_SEARCHED_STATES], next[VANDERPOL_SEARCHED_STATES];
+    float raw[VANDERPOL_SEARCHED_STATES];
     unsigned i;
     if (start_up) {
         corrected_start_up(x, y, u, f, (j >= 1u && j <= 48u) ? CORRECTED_BLENDS[j - 1u] : CORRECTED_NO_BLEND, raw);
@@ -1138,21 +1139,12 @@ static int corrected_follow(float *x, unsigned j, int start_up, const float *f, 
         states[i] = select_float(out, edge, raw[i]);
         flags[i] = (vanderpol_searched_saturation)select_bits(out, flag, (uint32_t)VANDERPOL_SEARCHED_INSIDE);
     }
-    corrected_predict(states, u, next);
-    if (!all_finite(next, VANDERPOL_SEARCHED_STATES)) {
-        return 0;
-    }
-    memcpy(x, next, sizeof next);
-    return 1;
+    return corrected_start(states, u, x);
 }
 
 /* Corrector::predict: a lost output, the model's period from x (no correction). */
 static void corrected_lost(float *x, const float *u) {
-    float next[VANDERPOL_SEARCHED_STATES];
-    corrected_predict(x, u, next);
-    if (all_finite(next, VANDERPOL_SEARCHED_STATES)) {
-        memcpy(x, next, sizeof next);
-    }
+    (void)corrected_start(x, u, x);
 }
 
 void vanderpol_searched_corrected_init(vanderpol_searched_corrected *o) {

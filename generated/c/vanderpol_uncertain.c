@@ -1156,7 +1156,8 @@ static void corrected_targets_of(const float *states, const vanderpol_uncertain_
     flags[1] = state_flags[1];
 }
 
-/* Corrector::start: the model's period from the map's first estimate, taken when finite. */
+/* Corrector::start: the model's period from the map's first estimate (or from the states after
+ * a correction), taken into x when finite. */
 static int corrected_start(const float *first, const float *u, float *x) {
     float next[VANDERPOL_UNCERTAIN_STATES];
     corrected_predict(first, u, next);
@@ -1171,7 +1172,7 @@ static int corrected_start(const float *first, const float *u, float *x) {
  * G's), clamped to the states' ranges by selects, then the model's period from it. */
 static int corrected_follow(float *x, unsigned j, int start_up, const float *f, const float *y, const float *u,
                             float *states, vanderpol_uncertain_saturation *flags) {
-    float raw[VANDERPOL_UNCERTAIN_STATES], next[VANDERPOL_UNCERTAIN_STATES];
+    float raw[VANDERPOL_UNCERTAIN_STATES];
     unsigned i;
     if (start_up) {
         corrected_start_up(x, y, u, f, (j >= 1u && j <= 30u) ? CORRECTED_BLENDS[j - 1u] : CORRECTED_NO_BLEND, raw);
@@ -1186,21 +1187,12 @@ static int corrected_follow(float *x, unsigned j, int start_up, const float *f, 
         states[i] = select_float(out, edge, raw[i]);
         flags[i] = (vanderpol_uncertain_saturation)select_bits(out, flag, (uint32_t)VANDERPOL_UNCERTAIN_INSIDE);
     }
-    corrected_predict(states, u, next);
-    if (!all_finite(next, VANDERPOL_UNCERTAIN_STATES)) {
-        return 0;
-    }
-    memcpy(x, next, sizeof next);
-    return 1;
+    return corrected_start(states, u, x);
 }
 
 /* Corrector::predict: a lost output, the model's period from x (no correction). */
 static void corrected_lost(float *x, const float *u) {
-    float next[VANDERPOL_UNCERTAIN_STATES];
-    corrected_predict(x, u, next);
-    if (all_finite(next, VANDERPOL_UNCERTAIN_STATES)) {
-        memcpy(x, next, sizeof next);
-    }
+    (void)corrected_start(x, u, x);
 }
 
 void vanderpol_uncertain_corrected_init(vanderpol_uncertain_corrected *o) {

@@ -86,7 +86,8 @@ pub(super) fn corrected(
     source += &format!(
         "{map_states}\
          {targets_of}\
-         /* Corrector::start: the model's period from the map's first estimate, taken when finite. */\n\
+         /* Corrector::start: the model's period from the map's first estimate (or from the states after\n\
+         \x20* a correction), taken into x when finite. */\n\
          static int corrected_start(const float *first, const float *u, float *x) {{\n\
          \x20   float next[{upper}_STATES];\n\
          \x20   corrected_predict(first, u, next);\n\
@@ -101,7 +102,7 @@ pub(super) fn corrected(
          \x20* G's), clamped to the states' ranges by selects, then the model's period from it. */\n\
          static int corrected_follow(float *x, unsigned j, int start_up, const float *f, const float *y, const float *u,\n\
          \x20                           float *states, {name}_saturation *flags) {{\n\
-         \x20   float raw[{upper}_STATES], next[{upper}_STATES];\n\
+         \x20   float raw[{upper}_STATES];\n\
          \x20   unsigned i;\n\
          \x20   if (start_up) {{\n\
          \x20       corrected_start_up(x, y, u, f, {row}, raw);\n\
@@ -116,21 +117,12 @@ pub(super) fn corrected(
          \x20       states[i] = select_float(out, edge, raw[i]);\n\
          \x20       flags[i] = ({name}_saturation)select_bits(out, flag, (uint32_t){upper}_INSIDE);\n\
          \x20   }}\n\
-         \x20   corrected_predict(states, u, next);\n\
-         \x20   if (!all_finite(next, {upper}_STATES)) {{\n\
-         \x20       return 0;\n\
-         \x20   }}\n\
-         \x20   memcpy(x, next, sizeof next);\n\
-         \x20   return 1;\n\
+         \x20   return corrected_start(states, u, x);\n\
          }}\n\
          \n\
          /* Corrector::predict: a lost output, the model's period from x (no correction). */\n\
          static void corrected_lost(float *x, const float *u) {{\n\
-         \x20   float next[{upper}_STATES];\n\
-         \x20   corrected_predict(x, u, next);\n\
-         \x20   if (all_finite(next, {upper}_STATES)) {{\n\
-         \x20       memcpy(x, next, sizeof next);\n\
-         \x20   }}\n\
+         \x20   (void)corrected_start(x, u, x);\n\
          }}\n\
          \n\
          {observer}",
