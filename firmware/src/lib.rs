@@ -65,6 +65,7 @@ pub mod bounds;
 pub mod ekf;
 pub mod estimate;
 pub mod family;
+pub mod fixed;
 #[cfg(any(test, feature = "reference"))]
 pub mod gamma;
 pub mod inverse;
@@ -81,6 +82,7 @@ pub mod window;
 
 pub use ekf::{Ekf, Plant};
 pub use family::{FamilyObserver, Member};
+pub use fixed::{FixedDesign, FixedMap, FixedTable};
 #[cfg(any(test, feature = "reference"))]
 pub use gamma::{Gamma, Inverse};
 pub use inverse::{search_halves, search_step, InverseTable, Knots};
@@ -91,4 +93,4 @@ pub use observer::{estimate_by_loops, Design, Observer, RejectedSample};
 pub use restarted::{Restart, Restarted};
 pub use scalar::Scalar;
 pub use started::{Follower, Started};
-pub use window::{Sample, Window};
+pub use window::{Sample, Stored, Window};

@@ -2,8 +2,10 @@
 
 use nalgebra::RealField;
 
+use crate::window::Stored;
+
 /// A floating-point scalar the observer can run in: `f32` on the microcontroller, `f64` on the host.
-pub trait Scalar: RealField + Copy {
+pub trait Scalar: RealField + Copy + Stored {
     /// Bisection steps of the exact reference inverse [`crate::Gamma::inverse`]: enough to resolve
     /// `η ∈ [0, 1]` to the type's precision (`2^-24` for `f32`, `2^-52` for `f64`). Only with the
     /// `reference` feature. It has a default, `f64`'s 52, which suits any type no finer than `f64`
@@ -11,9 +13,6 @@ pub trait Scalar: RealField + Copy {
     /// cannot break an implementation written without it.
     #[cfg(any(test, feature = "reference"))]
     const BISECTION_STEPS: u32 = 52;
-
-    /// `0`, usable in `const` contexts (an empty window is filled with it).
-    const ZERO: Self;
 
     /// Converts an `f64` constant (rounding to nearest). Only with the `reference` feature: the chip's
     /// constants arrive already rounded, in the generated tables.
@@ -38,7 +37,6 @@ pub trait Scalar: RealField + Copy {
 impl Scalar for f32 {
     #[cfg(any(test, feature = "reference"))]
     const BISECTION_STEPS: u32 = 24;
-    const ZERO: Self = 0.0;
     #[inline(always)]
     fn literal(single: f32, _: f64) -> Self {
         single
@@ -52,7 +50,6 @@ impl Scalar for f32 {
 impl Scalar for f64 {
     #[cfg(any(test, feature = "reference"))]
     const BISECTION_STEPS: u32 = 52;
-    const ZERO: Self = 0.0;
     #[inline(always)]
     fn literal(_: f32, double: f64) -> Self {
         double

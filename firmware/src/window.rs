@@ -5,7 +5,24 @@
 //! the write position `next` is. A push is two stores per value and an index update; nothing is
 //! shifted, and the dot products read the window at fixed offsets.
 
-use crate::Scalar;
+/// What a window can hold: a copyable value with a zero to fill an empty window with (the floats of
+/// [`crate::Scalar`], and the raw integer samples of the fixed-point map, [`crate::fixed`]).
+pub trait Stored: Copy {
+    /// The value an empty window holds.
+    const ZERO: Self;
+}
+
+impl Stored for f32 {
+    const ZERO: Self = 0.0;
+}
+
+impl Stored for f64 {
+    const ZERO: Self = 0.0;
+}
+
+impl Stored for i32 {
+    const ZERO: Self = 0;
+}
 
 /// One sampling instant: the measured outputs and the applied inputs.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -26,7 +43,7 @@ pub struct Window<T, const N: usize, const NY: usize, const NU: usize> {
     filled: usize,
 }
 
-impl<T: Scalar, const N: usize, const NY: usize, const NU: usize> Window<T, N, NY, NU> {
+impl<T: Stored, const N: usize, const NY: usize, const NU: usize> Window<T, N, NY, NU> {
     /// An empty window.
     #[must_use]
     pub const fn new() -> Self {
@@ -79,7 +96,7 @@ impl<T: Scalar, const N: usize, const NY: usize, const NU: usize> Window<T, N, N
     }
 }
 
-impl<T: Scalar, const N: usize, const NY: usize, const NU: usize> Default for Window<T, N, NY, NU> {
+impl<T: Stored, const N: usize, const NY: usize, const NU: usize> Default for Window<T, N, NY, NU> {
     fn default() -> Self {
         Self::new()
     }

@@ -240,6 +240,194 @@ ecoli_x0_0p5_status ecoli_x0_0p5_map_estimate(const ecoli_x0_0p5_map *observer, 
     return ECOLI_X0_0P5_OK;
 }
 
+
+/* `P` in integers: gains in regressor order (2^-20 per count), then (A_k, B_k) in its LSB. */
+static const int32_t FIXED_GAINS_0[6] = { -1034, -11192, -1103, 2554, -791, 16425 };
+static const int32_t FIXED_SEGMENTS_0[88][2] = {
+    { 0, 52413 },
+    { 52413, 52432 },
+    { 104845, 52460 },
+    { 157304, 52470 },
+    { 209774, 52470 },
+    { 262244, 52467 },
+    { 314711, 52464 },
+    { 367175, 52461 },
+    { 419636, 52460 },
+    { 472096, 52459 },
+    { 524555, 52459 },
+    { 577014, 52460 },
+    { 629474, 52462 },
+    { 681936, 52463 },
+    { 734399, 52465 },
+    { 786864, 52466 },
+    { 839331, 52468 },
+    { 891798, 52469 },
+    { 944267, 52470 },
+    { 996737, 52470 },
+    { 1049208, 52471 },
+    { 1101678, 52471 },
+    { 1154149, 52470 },
+    { 1206619, 52470 },
+    { 1259089, 52469 },
+    { 1311557, 52468 },
+    { 1364025, 52466 },
+    { 1416491, 52465 },
+    { 1468956, 52464 },
+    { 1521420, 52462 },
+    { 1573882, 52461 },
+    { 1626343, 52460 },
+    { 1678804, 52460 },
+    { 1731264, 52459 },
+    { 1783723, 52459 },
+    { 1836182, 52460 },
+    { 1888642, 52461 },
+    { 1941103, 52462 },
+    { 1993565, 52463 },
+    { 2046028, 52465 },
+    { 2098493, 52467 },
+    { 2150961, 52469 },
+    { 2203430, 52470 },
+    { 2255900, 52471 },
+    { 2308371, 52469 },
+    { 2360840, 52464 },
+    { 2413304, 52455 },
+    { 2465759, 52440 },
+    { 2518199, 52416 },
+    { 2570616, 52380 },
+    { 2622996, 52327 },
+    { 2675323, 52252 },
+    { 2727575, 52146 },
+    { 2779721, 51999 },
+    { 2831720, 51797 },
+    { 2883517, 51523 },
+    { 2935039, 51154 },
+    { 2986194, 50663 },
+    { 3036856, 50015 },
+    { 3086871, 49170 },
+    { 3136042, 48087 },
+    { 3184128, 46721 },
+    { 3230850, 45041 },
+    { 3275890, 43029 },
+    { 3318920, 40699 },
+    { 3359619, 38097 },
+    { 3397716, 35302 },
+    { 3433017, 32413 },
+    { 3465431, 29536 },
+    { 3494967, 26762 },
+    { 3521728, 24159 },
+    { 3545888, 21771 },
+    { 3567658, 19614 },
+    { 3587273, 17689 },
+    { 3604962, 15985 },
+    { 3620947, 14481 },
+    { 3635428, 13159 },
+    { 3648587, 11995 },
+    { 3660581, 10970 },
+    { 3671551, 10065 },
+    { 3681617, 9265 },
+    { 3690882, 8555 },
+    { 3699437, 7924 },
+    { 3707361, 7359 },
+    { 3714720, 6854 },
+    { 3721574, 6399 },
+    { 3727973, 5990 },
+    { 3733963, 5619 }
+};
+
+/* `muX` in integers: gains in regressor order (2^-27 per count), then (A_k, B_k) in its LSB. */
+static const int32_t FIXED_GAINS_1[6] = { 2241, 23317, 2299, 1542, 1755, -19828 };
+static const int32_t FIXED_SEGMENTS_1[1][2] = {
+    { 0, 57058 }
+};
+
+/* Signed right shifts must be arithmetic (implementation-defined in C99; so on gcc, clang, armcc
+ * and IAR): checked at compile time. */
+typedef char fixed_shifts_are_arithmetic[((-8) >> 1) == -4 ? 1 : -1];
+
+/* a - b and a * b modulo 2^32 (no signed overflow, which C leaves undefined). */
+static int32_t wrapping_sub(int32_t a, int32_t b) {
+    return (int32_t)((uint32_t)a - (uint32_t)b);
+}
+
+static int32_t wrapping_mul(int32_t a, int32_t b) {
+    return (int32_t)((uint32_t)a * (uint32_t)b);
+}
+
+/* min <= v <= max, as one unsigned comparison. */
+static int in_range(int32_t v, int32_t min, int32_t max) {
+    return (uint32_t)v - (uint32_t)min <= (uint32_t)max - (uint32_t)min;
+}
+
+/* firmware::fixed::FixedTable::evaluate_with: the segment and the position in it by shifts, the
+ * saturation by sign masks (no branch: the same instructions whatever t is). */
+static void fixed_evaluate(int32_t t, const int32_t segments[][2], int32_t last, unsigned f, unsigned dropped,
+                           unsigned p, int32_t t_max, int32_t r_min, int32_t r_max, int32_t *value,
+                           ecoli_x0_0p5_saturation *saturation) {
+    const int32_t low = t >> 31;
+    const int32_t high = wrapping_sub(t_max, t) >> 31;
+    int32_t k = (t >> f) & ~low;
+    const int32_t over = last - k;
+    int32_t position;
+    int32_t inside;
+    int32_t edge;
+    k += over & (over >> 31);
+    position = wrapping_sub(t, (int32_t)((uint32_t)k << f)) >> dropped;
+    inside = (int32_t)((uint32_t)segments[k][0] + (uint32_t)(wrapping_mul(segments[k][1], position) >> p));
+    edge = r_max ^ ((r_min ^ r_max) & low);
+    *value = inside ^ ((inside ^ edge) & (low | high));
+    *saturation = (ecoli_x0_0p5_saturation)((unsigned)(low & 1) | ((unsigned)(high & ~low) & 2u));
+}
+
+void ecoli_x0_0p5_fixed_init(ecoli_x0_0p5_fixed *observer) {
+    observer->next = 0u;
+    observer->filled = 0u;
+}
+
+ecoli_x0_0p5_status ecoli_x0_0p5_fixed_push(ecoli_x0_0p5_fixed *observer, const int32_t *y, const int32_t *u) {
+    unsigned i;
+    unsigned slot;
+    int inside = 1;
+    inside &= in_range(y[0], -32767, 32767);
+    inside &= in_range(y[1], -32767, 32767);
+    if (!inside) {
+        return ECOLI_X0_0P5_REFUSED;
+    }
+    slot = observer->next;
+    for (i = 0u; i < ECOLI_X0_0P5_OUTPUTS; ++i) {
+        observer->y[slot][i] = y[i];
+        observer->y[slot + ECOLI_X0_0P5_HORIZON][i] = y[i];
+    }
+    (void)u;
+    observer->next = slot + 1u >= ECOLI_X0_0P5_HORIZON ? 0u : slot + 1u;
+    observer->filled += (unsigned)(observer->filled < ECOLI_X0_0P5_HORIZON);
+    return ECOLI_X0_0P5_OK;
+}
+
+/* The sums are in int32_t: every stored sample is in range, where the proof says they fit. */
+ecoli_x0_0p5_status ecoli_x0_0p5_fixed_estimate(const ecoli_x0_0p5_fixed *observer, int32_t *values, ecoli_x0_0p5_saturation *saturation) {
+    const unsigned next = observer->next;
+    if (observer->filled < ECOLI_X0_0P5_HORIZON) {
+        return ECOLI_X0_0P5_NO_ESTIMATE_YET;
+    }
+    const int32_t t_0 = 28051925
+        + FIXED_GAINS_0[0] * observer->y[next + 2u][0]
+        + FIXED_GAINS_0[1] * observer->y[next + 2u][1]
+        + FIXED_GAINS_0[2] * observer->y[next + 1u][0]
+        + FIXED_GAINS_0[3] * observer->y[next + 1u][1]
+        + FIXED_GAINS_0[4] * observer->y[next + 0u][0]
+        + FIXED_GAINS_0[5] * observer->y[next + 0u][1];
+    const int32_t t_1 = 2976475
+        + FIXED_GAINS_1[0] * observer->y[next + 2u][0]
+        + FIXED_GAINS_1[1] * observer->y[next + 2u][1]
+        + FIXED_GAINS_1[2] * observer->y[next + 1u][0]
+        + FIXED_GAINS_1[3] * observer->y[next + 1u][1]
+        + FIXED_GAINS_1[4] * observer->y[next + 0u][0]
+        + FIXED_GAINS_1[5] * observer->y[next + 0u][1];
+    fixed_evaluate(t_0, FIXED_SEGMENTS_0, 87, 20u, 5u, 15u, 92274688, 0, 3739582, &values[0], &saturation[0]);
+    fixed_evaluate(t_1, FIXED_SEGMENTS_1, 0, 27u, 12u, 15u, 134217728, 0, 57058, &values[1], &saturation[1]);
+    return ECOLI_X0_0P5_OK;
+}
+
 /* 1 with the sign of v (NaN stays NaN), as firmware::Maths::signum; NaN told by its bits. */
 static float signum(float v) {
     return select_float((bits_of(v) & 0x7fffffffu) > 0x7f800000u, v, copysignf(1.0f, v));

@@ -54,6 +54,32 @@ ecoli_x0_2_status ecoli_x0_2_map_push(ecoli_x0_2_map *observer, const float *y, 
  * and saturation[ECOLI_X0_2_TARGETS]; ECOLI_X0_2_NO_ESTIMATE_YET (nothing written) before the window is full. */
 ecoli_x0_2_status ecoli_x0_2_map_estimate(const ecoli_x0_2_map *observer, float *values, ecoli_x0_2_saturation *saturation);
 
+/* The map in integers, for chips without an FPU: raw converter counts in, each estimate an
+ * integer in its target's LSB out, no float operation. Samples (a sample with a value outside
+ * its range is refused: the proof that no sum overflows holds there):
+ * y[0] (`X_meas`): raw in [-32767, 32767], value = 0.0 + 0.00048828125 * raw
+ * y[1] (`L`): raw in [-32767, 32767], value = 0.0 + 0.125 * raw
+ * Estimates (value = integer * LSB, in the target's unit):
+ * estimate 0 (`P`): LSB 2^-17, proven |fixed - f64 map| <= 1.765e-4
+ * estimate 1 (`muX`): LSB 2^-24, proven |fixed - f64 map| <= 3.651e-4
+ * Allocate it anywhere (no heap is used) and call ecoli_x0_2_fixed_init. */
+typedef struct {
+    int32_t y[2u * ECOLI_X0_2_HORIZON][ECOLI_X0_2_OUTPUTS];
+    unsigned next;
+    unsigned filled;
+} ecoli_x0_2_fixed;
+
+/* Empties the window. */
+void ecoli_x0_2_fixed_init(ecoli_x0_2_fixed *observer);
+
+/* Takes the raw sample of the current instant (u may be NULL when there is no input): ECOLI_X0_2_OK,
+ * or ECOLI_X0_2_REFUSED for a value outside its range (the observer is unchanged). */
+ecoli_x0_2_status ecoli_x0_2_fixed_push(ecoli_x0_2_fixed *observer, const int32_t *y, const int32_t *u);
+
+/* Every target's estimate (in its LSB) into values[ECOLI_X0_2_TARGETS] and saturation[ECOLI_X0_2_TARGETS];
+ * ECOLI_X0_2_NO_ESTIMATE_YET (nothing written) before the window is full. */
+ecoli_x0_2_status ecoli_x0_2_fixed_estimate(const ecoli_x0_2_fixed *observer, int32_t *values, ecoli_x0_2_saturation *saturation);
+
 /* The EKF from the centre of the state box (kind ekf_box, the Rust BoxEkfObserver): an estimate
  * from the first accepted sample; a sample with a non-finite output is refused and only predicted. */
 typedef struct {

@@ -55,6 +55,33 @@ two_tanks_status two_tanks_map_push(two_tanks_map *observer, const float *y, con
  * and saturation[TWO_TANKS_TARGETS]; TWO_TANKS_NO_ESTIMATE_YET (nothing written) before the window is full. */
 two_tanks_status two_tanks_map_estimate(const two_tanks_map *observer, float *values, two_tanks_saturation *saturation);
 
+/* The map in integers, for chips without an FPU: raw converter counts in, each estimate an
+ * integer in its target's LSB out, no float operation. Samples (a sample with a value outside
+ * its range is refused: the proof that no sum overflows holds there):
+ * y[0] (`y`): raw in [-32767, 32767], value = 0.0 + 0.001953125 * raw
+ * u[0] (`u`): raw in [-32767, 32767], value = 0.0 + 0.0009765625 * raw
+ * Estimates (value = integer * LSB, in the target's unit):
+ * estimate 0 (`h1`): LSB 2^-19, proven |fixed - f64 map| <= 4.159e-2
+ * estimate 1 (`h2`): LSB 2^-19, proven |fixed - f64 map| <= 2.051e-2
+ * Allocate it anywhere (no heap is used) and call two_tanks_fixed_init. */
+typedef struct {
+    int32_t y[2u * TWO_TANKS_HORIZON][TWO_TANKS_OUTPUTS];
+    int32_t u[2u * TWO_TANKS_HORIZON][TWO_TANKS_INPUTS];
+    unsigned next;
+    unsigned filled;
+} two_tanks_fixed;
+
+/* Empties the window. */
+void two_tanks_fixed_init(two_tanks_fixed *observer);
+
+/* Takes the raw sample of the current instant (u may be NULL when there is no input): TWO_TANKS_OK,
+ * or TWO_TANKS_REFUSED for a value outside its range (the observer is unchanged). */
+two_tanks_status two_tanks_fixed_push(two_tanks_fixed *observer, const int32_t *y, const int32_t *u);
+
+/* Every target's estimate (in its LSB) into values[TWO_TANKS_TARGETS] and saturation[TWO_TANKS_TARGETS];
+ * TWO_TANKS_NO_ESTIMATE_YET (nothing written) before the window is full. */
+two_tanks_status two_tanks_fixed_estimate(const two_tanks_fixed *observer, int32_t *values, two_tanks_saturation *saturation);
+
 /* The EKF from the centre of the state box (kind ekf_box, the Rust BoxEkfObserver): an estimate
  * from the first accepted sample; a sample with a non-finite output is refused and only predicted. */
 typedef struct {

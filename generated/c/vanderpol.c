@@ -254,6 +254,205 @@ vanderpol_status vanderpol_map_estimate(const vanderpol_map *observer, float *va
 }
 
 
+/* `x1` in integers: gains in regressor order (2^-22 per count), then (A_k, B_k) in its LSB. */
+static const int32_t FIXED_GAINS_0[10] = { 84476, 14331, -18381, -25134, -22651, -7959, 3941, 8570, -12809, -75037 };
+static const int32_t FIXED_SEGMENTS_0[92][2] = {
+    { -1264393, 8750 },
+    { -1255643, 9103 },
+    { -1246541, 9489 },
+    { -1237052, 9911 },
+    { -1227142, 10373 },
+    { -1216769, 10881 },
+    { -1205888, 11439 },
+    { -1194449, 12055 },
+    { -1182394, 12735 },
+    { -1169659, 13487 },
+    { -1156172, 14320 },
+    { -1141853, 15243 },
+    { -1126610, 16266 },
+    { -1110344, 17400 },
+    { -1092944, 18653 },
+    { -1074291, 20031 },
+    { -1054261, 21536 },
+    { -1032725, 23163 },
+    { -1009562, 24897 },
+    { -984665, 26708 },
+    { -957957, 28555 },
+    { -929402, 30379 },
+    { -899023, 32116 },
+    { -866907, 33702 },
+    { -833205, 35086 },
+    { -798119, 36238 },
+    { -761881, 37149 },
+    { -724732, 37836 },
+    { -686897, 38327 },
+    { -648569, 38661 },
+    { -609908, 38874 },
+    { -571035, 38999 },
+    { -532036, 39065 },
+    { -492971, 39093 },
+    { -453878, 39100 },
+    { -414778, 39095 },
+    { -375683, 39087 },
+    { -336596, 39080 },
+    { -297517, 39075 },
+    { -258442, 39074 },
+    { -219367, 39077 },
+    { -180291, 39081 },
+    { -141209, 39087 },
+    { -102122, 39093 },
+    { -63029, 39097 },
+    { -23932, 39099 },
+    { 15167, 39099 },
+    { 54267, 39096 },
+    { 93363, 39091 },
+    { 132454, 39085 },
+    { 171539, 39079 },
+    { 210618, 39073 },
+    { 249691, 39070 },
+    { 288762, 39071 },
+    { 327833, 39076 },
+    { 366908, 39084 },
+    { 405992, 39093 },
+    { 445085, 39099 },
+    { 484184, 39095 },
+    { 523279, 39068 },
+    { 562347, 39002 },
+    { 601349, 38872 },
+    { 640221, 38647 },
+    { 678868, 38289 },
+    { 717157, 37755 },
+    { 754911, 37001 },
+    { 791912, 35995 },
+    { 827907, 34720 },
+    { 862627, 33188 },
+    { 895816, 31440 },
+    { 927256, 29541 },
+    { 956797, 27567 },
+    { 984364, 25592 },
+    { 1009956, 23677 },
+    { 1033633, 21868 },
+    { 1055501, 20189 },
+    { 1075690, 18653 },
+    { 1094343, 17259 },
+    { 1111602, 16002 },
+    { 1127604, 14872 },
+    { 1142475, 13857 },
+    { 1156332, 12945 },
+    { 1169277, 12126 },
+    { 1181403, 11388 },
+    { 1192791, 10722 },
+    { 1203513, 10119 },
+    { 1213631, 9571 },
+    { 1223203, 9074 },
+    { 1232276, 8619 },
+    { 1240895, 8204 },
+    { 1249099, 7822 },
+    { 1256921, 7472 }
+};
+
+/* `x2` in integers: gains in regressor order (2^-28 per count), then (A_k, B_k) in its LSB. */
+static const int32_t FIXED_GAINS_1[10] = { 46935, 43584, 26858, 10943, -453, -5057, -4746, 1168, 12259, 28449 };
+static const int32_t FIXED_SEGMENTS_1[1][2] = {
+    { -19155, 38311 }
+};
+
+/* Signed right shifts must be arithmetic (implementation-defined in C99; so on gcc, clang, armcc
+ * and IAR): checked at compile time. */
+typedef char fixed_shifts_are_arithmetic[((-8) >> 1) == -4 ? 1 : -1];
+
+/* a - b and a * b modulo 2^32 (no signed overflow, which C leaves undefined). */
+static int32_t wrapping_sub(int32_t a, int32_t b) {
+    return (int32_t)((uint32_t)a - (uint32_t)b);
+}
+
+static int32_t wrapping_mul(int32_t a, int32_t b) {
+    return (int32_t)((uint32_t)a * (uint32_t)b);
+}
+
+/* min <= v <= max, as one unsigned comparison. */
+static int in_range(int32_t v, int32_t min, int32_t max) {
+    return (uint32_t)v - (uint32_t)min <= (uint32_t)max - (uint32_t)min;
+}
+
+/* firmware::fixed::FixedTable::evaluate_with: the segment and the position in it by shifts, the
+ * saturation by sign masks (no branch: the same instructions whatever t is). */
+static void fixed_evaluate(int32_t t, const int32_t segments[][2], int32_t last, unsigned f, unsigned dropped,
+                           unsigned p, int32_t t_max, int32_t r_min, int32_t r_max, int32_t *value,
+                           vanderpol_saturation *saturation) {
+    const int32_t low = t >> 31;
+    const int32_t high = wrapping_sub(t_max, t) >> 31;
+    int32_t k = (t >> f) & ~low;
+    const int32_t over = last - k;
+    int32_t position;
+    int32_t inside;
+    int32_t edge;
+    k += over & (over >> 31);
+    position = wrapping_sub(t, (int32_t)((uint32_t)k << f)) >> dropped;
+    inside = (int32_t)((uint32_t)segments[k][0] + (uint32_t)(wrapping_mul(segments[k][1], position) >> p));
+    edge = r_max ^ ((r_min ^ r_max) & low);
+    *value = inside ^ ((inside ^ edge) & (low | high));
+    *saturation = (vanderpol_saturation)((unsigned)(low & 1) | ((unsigned)(high & ~low) & 2u));
+}
+
+void vanderpol_fixed_init(vanderpol_fixed *observer) {
+    observer->next = 0u;
+    observer->filled = 0u;
+}
+
+vanderpol_status vanderpol_fixed_push(vanderpol_fixed *observer, const int32_t *y, const int32_t *u) {
+    unsigned i;
+    unsigned slot;
+    int inside = 1;
+    inside &= in_range(y[0], 0, 4095);
+    if (!inside) {
+        return VANDERPOL_REFUSED;
+    }
+    slot = observer->next;
+    for (i = 0u; i < VANDERPOL_OUTPUTS; ++i) {
+        observer->y[slot][i] = y[i];
+        observer->y[slot + VANDERPOL_HORIZON][i] = y[i];
+    }
+    (void)u;
+    observer->next = slot + 1u >= VANDERPOL_HORIZON ? 0u : slot + 1u;
+    observer->filled += (unsigned)(observer->filled < VANDERPOL_HORIZON);
+    return VANDERPOL_OK;
+}
+
+/* The sums are in int32_t: every stored sample is in range, where the proof says they fit. */
+vanderpol_status vanderpol_fixed_estimate(const vanderpol_fixed *observer, int32_t *values, vanderpol_saturation *saturation) {
+    const unsigned next = observer->next;
+    if (observer->filled < VANDERPOL_HORIZON) {
+        return VANDERPOL_NO_ESTIMATE_YET;
+    }
+    const int32_t t_0 = 294886287
+        + FIXED_GAINS_0[0] * observer->y[next + 9u][0]
+        + FIXED_GAINS_0[1] * observer->y[next + 8u][0]
+        + FIXED_GAINS_0[2] * observer->y[next + 7u][0]
+        + FIXED_GAINS_0[3] * observer->y[next + 6u][0]
+        + FIXED_GAINS_0[4] * observer->y[next + 5u][0]
+        + FIXED_GAINS_0[5] * observer->y[next + 4u][0]
+        + FIXED_GAINS_0[6] * observer->y[next + 3u][0]
+        + FIXED_GAINS_0[7] * observer->y[next + 2u][0]
+        + FIXED_GAINS_0[8] * observer->y[next + 1u][0]
+        + FIXED_GAINS_0[9] * observer->y[next + 0u][0];
+    const int32_t t_1 = -193370221
+        + FIXED_GAINS_1[0] * observer->y[next + 9u][0]
+        + FIXED_GAINS_1[1] * observer->y[next + 8u][0]
+        + FIXED_GAINS_1[2] * observer->y[next + 7u][0]
+        + FIXED_GAINS_1[3] * observer->y[next + 6u][0]
+        + FIXED_GAINS_1[4] * observer->y[next + 5u][0]
+        + FIXED_GAINS_1[5] * observer->y[next + 4u][0]
+        + FIXED_GAINS_1[6] * observer->y[next + 3u][0]
+        + FIXED_GAINS_1[7] * observer->y[next + 2u][0]
+        + FIXED_GAINS_1[8] * observer->y[next + 1u][0]
+        + FIXED_GAINS_1[9] * observer->y[next + 0u][0];
+    fixed_evaluate(t_0, FIXED_SEGMENTS_0, 91, 22u, 7u, 15u, 385875968, -1264393, 1264393, &values[0], &saturation[0]);
+    fixed_evaluate(t_1, FIXED_SEGMENTS_1, 0, 28u, 13u, 15u, 268435456, -19155, 19155, &values[1], &saturation[1]);
+    return VANDERPOL_OK;
+}
+
+
 /* 1 when every input is finite. */
 static int inputs_finite(const float *u) {
     (void)u;

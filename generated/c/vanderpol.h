@@ -54,6 +54,31 @@ vanderpol_status vanderpol_map_push(vanderpol_map *observer, const float *y, con
  * and saturation[VANDERPOL_TARGETS]; VANDERPOL_NO_ESTIMATE_YET (nothing written) before the window is full. */
 vanderpol_status vanderpol_map_estimate(const vanderpol_map *observer, float *values, vanderpol_saturation *saturation);
 
+/* The map in integers, for chips without an FPU: raw converter counts in, each estimate an
+ * integer in its target's LSB out, no float operation. Samples (a sample with a value outside
+ * its range is refused: the proof that no sum overflows holds there):
+ * y[0] (`y`): raw in [0, 4095], value = -10.24 + 0.005 * raw
+ * Estimates (value = integer * LSB, in the target's unit):
+ * estimate 0 (`x1`): LSB 2^-19, proven |fixed - f64 map| <= 6.486e-4
+ * estimate 1 (`x2`): LSB 2^-12, proven |fixed - f64 map| <= 2.087e-3
+ * Allocate it anywhere (no heap is used) and call vanderpol_fixed_init. */
+typedef struct {
+    int32_t y[2u * VANDERPOL_HORIZON][VANDERPOL_OUTPUTS];
+    unsigned next;
+    unsigned filled;
+} vanderpol_fixed;
+
+/* Empties the window. */
+void vanderpol_fixed_init(vanderpol_fixed *observer);
+
+/* Takes the raw sample of the current instant (u may be NULL when there is no input): VANDERPOL_OK,
+ * or VANDERPOL_REFUSED for a value outside its range (the observer is unchanged). */
+vanderpol_status vanderpol_fixed_push(vanderpol_fixed *observer, const int32_t *y, const int32_t *u);
+
+/* Every target's estimate (in its LSB) into values[VANDERPOL_TARGETS] and saturation[VANDERPOL_TARGETS];
+ * VANDERPOL_NO_ESTIMATE_YET (nothing written) before the window is full. */
+vanderpol_status vanderpol_fixed_estimate(const vanderpol_fixed *observer, int32_t *values, vanderpol_saturation *saturation);
+
 /* The EKF from the centre of the state box (kind ekf_box, the Rust BoxEkfObserver): an estimate
  * from the first accepted sample; a sample with a non-finite output is refused and only predicted. */
 typedef struct {

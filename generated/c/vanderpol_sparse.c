@@ -145,6 +145,106 @@ vanderpol_sparse_status vanderpol_sparse_map_estimate(const vanderpol_sparse_map
 }
 
 
+/* `x1` in integers: gains in regressor order (2^-29 per count), then (A_k, B_k) in its LSB. */
+static const int32_t FIXED_GAINS_0[19] = { 0, 0, 0, 0, 0, -6545, 0, 0, -6157, 0, -4700, 0, -5037, -5969, -6805, 0, 0, 0, 0 };
+static const int32_t FIXED_SEGMENTS_0[1][2] = {
+    { -16889, 33778 }
+};
+
+/* `x2` in integers: gains in regressor order (2^-29 per count), then (A_k, B_k) in its LSB. */
+static const int32_t FIXED_GAINS_1[19] = { 8144, 7205, 5924, 0, 0, 0, 0, 0, 0, 5360, 0, 2809, 0, 0, 0, 0, -4053, 0, 0 };
+static const int32_t FIXED_SEGMENTS_1[1][2] = {
+    { -19155, 38311 }
+};
+
+/* Signed right shifts must be arithmetic (implementation-defined in C99; so on gcc, clang, armcc
+ * and IAR): checked at compile time. */
+typedef char fixed_shifts_are_arithmetic[((-8) >> 1) == -4 ? 1 : -1];
+
+/* a - b and a * b modulo 2^32 (no signed overflow, which C leaves undefined). */
+static int32_t wrapping_sub(int32_t a, int32_t b) {
+    return (int32_t)((uint32_t)a - (uint32_t)b);
+}
+
+static int32_t wrapping_mul(int32_t a, int32_t b) {
+    return (int32_t)((uint32_t)a * (uint32_t)b);
+}
+
+/* min <= v <= max, as one unsigned comparison. */
+static int in_range(int32_t v, int32_t min, int32_t max) {
+    return (uint32_t)v - (uint32_t)min <= (uint32_t)max - (uint32_t)min;
+}
+
+/* firmware::fixed::FixedTable::evaluate_with: the segment and the position in it by shifts, the
+ * saturation by sign masks (no branch: the same instructions whatever t is). */
+static void fixed_evaluate(int32_t t, const int32_t segments[][2], int32_t last, unsigned f, unsigned dropped,
+                           unsigned p, int32_t t_max, int32_t r_min, int32_t r_max, int32_t *value,
+                           vanderpol_sparse_saturation *saturation) {
+    const int32_t low = t >> 31;
+    const int32_t high = wrapping_sub(t_max, t) >> 31;
+    int32_t k = (t >> f) & ~low;
+    const int32_t over = last - k;
+    int32_t position;
+    int32_t inside;
+    int32_t edge;
+    k += over & (over >> 31);
+    position = wrapping_sub(t, (int32_t)((uint32_t)k << f)) >> dropped;
+    inside = (int32_t)((uint32_t)segments[k][0] + (uint32_t)(wrapping_mul(segments[k][1], position) >> p));
+    edge = r_max ^ ((r_min ^ r_max) & low);
+    *value = inside ^ ((inside ^ edge) & (low | high));
+    *saturation = (vanderpol_sparse_saturation)((unsigned)(low & 1) | ((unsigned)(high & ~low) & 2u));
+}
+
+void vanderpol_sparse_fixed_init(vanderpol_sparse_fixed *observer) {
+    observer->next = 0u;
+    observer->filled = 0u;
+}
+
+vanderpol_sparse_status vanderpol_sparse_fixed_push(vanderpol_sparse_fixed *observer, const int32_t *y, const int32_t *u) {
+    unsigned i;
+    unsigned slot;
+    int inside = 1;
+    inside &= in_range(y[0], -32767, 32767);
+    if (!inside) {
+        return VANDERPOL_SPARSE_REFUSED;
+    }
+    slot = observer->next;
+    for (i = 0u; i < VANDERPOL_SPARSE_OUTPUTS; ++i) {
+        observer->y[slot][i] = y[i];
+        observer->y[slot + VANDERPOL_SPARSE_HORIZON][i] = y[i];
+    }
+    (void)u;
+    observer->next = slot + 1u >= VANDERPOL_SPARSE_HORIZON ? 0u : slot + 1u;
+    observer->filled += (unsigned)(observer->filled < VANDERPOL_SPARSE_HORIZON);
+    return VANDERPOL_SPARSE_OK;
+}
+
+/* The sums are in int32_t: every stored sample is in range, where the proof says they fit. */
+vanderpol_sparse_status vanderpol_sparse_fixed_estimate(const vanderpol_sparse_fixed *observer, int32_t *values, vanderpol_sparse_saturation *saturation) {
+    const unsigned next = observer->next;
+    if (observer->filled < VANDERPOL_SPARSE_HORIZON) {
+        return VANDERPOL_SPARSE_NO_ESTIMATE_YET;
+    }
+    const int32_t t_0 = 268588758
+        + FIXED_GAINS_0[5] * observer->y[next + 13u][0]
+        + FIXED_GAINS_0[8] * observer->y[next + 10u][0]
+        + FIXED_GAINS_0[10] * observer->y[next + 8u][0]
+        + FIXED_GAINS_0[12] * observer->y[next + 6u][0]
+        + FIXED_GAINS_0[13] * observer->y[next + 5u][0]
+        + FIXED_GAINS_0[14] * observer->y[next + 4u][0];
+    const int32_t t_1 = 268644515
+        + FIXED_GAINS_1[0] * observer->y[next + 18u][0]
+        + FIXED_GAINS_1[1] * observer->y[next + 17u][0]
+        + FIXED_GAINS_1[2] * observer->y[next + 16u][0]
+        + FIXED_GAINS_1[9] * observer->y[next + 9u][0]
+        + FIXED_GAINS_1[11] * observer->y[next + 7u][0]
+        + FIXED_GAINS_1[16] * observer->y[next + 2u][0];
+    fixed_evaluate(t_0, FIXED_SEGMENTS_0, 0, 29u, 14u, 15u, 536870912, -16889, 16889, &values[0], &saturation[0]);
+    fixed_evaluate(t_1, FIXED_SEGMENTS_1, 0, 29u, 14u, 15u, 536870912, -19155, 19155, &values[1], &saturation[1]);
+    return VANDERPOL_SPARSE_OK;
+}
+
+
 /* 1 when every input is finite. */
 static int inputs_finite(const float *u) {
     (void)u;

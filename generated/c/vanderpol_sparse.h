@@ -54,6 +54,31 @@ vanderpol_sparse_status vanderpol_sparse_map_push(vanderpol_sparse_map *observer
  * and saturation[VANDERPOL_SPARSE_TARGETS]; VANDERPOL_SPARSE_NO_ESTIMATE_YET (nothing written) before the window is full. */
 vanderpol_sparse_status vanderpol_sparse_map_estimate(const vanderpol_sparse_map *observer, float *values, vanderpol_sparse_saturation *saturation);
 
+/* The map in integers, for chips without an FPU: raw converter counts in, each estimate an
+ * integer in its target's LSB out, no float operation. Samples (a sample with a value outside
+ * its range is refused: the proof that no sum overflows holds there):
+ * y[0] (`y`): raw in [-32767, 32767], value = 0.0 + 0.00048828125 * raw
+ * Estimates (value = integer * LSB, in the target's unit):
+ * estimate 0 (`x1`): LSB 2^-13, proven |fixed - f64 map| <= 8.854e-4
+ * estimate 1 (`x2`): LSB 2^-12, proven |fixed - f64 map| <= 1.841e-3
+ * Allocate it anywhere (no heap is used) and call vanderpol_sparse_fixed_init. */
+typedef struct {
+    int32_t y[2u * VANDERPOL_SPARSE_HORIZON][VANDERPOL_SPARSE_OUTPUTS];
+    unsigned next;
+    unsigned filled;
+} vanderpol_sparse_fixed;
+
+/* Empties the window. */
+void vanderpol_sparse_fixed_init(vanderpol_sparse_fixed *observer);
+
+/* Takes the raw sample of the current instant (u may be NULL when there is no input): VANDERPOL_SPARSE_OK,
+ * or VANDERPOL_SPARSE_REFUSED for a value outside its range (the observer is unchanged). */
+vanderpol_sparse_status vanderpol_sparse_fixed_push(vanderpol_sparse_fixed *observer, const int32_t *y, const int32_t *u);
+
+/* Every target's estimate (in its LSB) into values[VANDERPOL_SPARSE_TARGETS] and saturation[VANDERPOL_SPARSE_TARGETS];
+ * VANDERPOL_SPARSE_NO_ESTIMATE_YET (nothing written) before the window is full. */
+vanderpol_sparse_status vanderpol_sparse_fixed_estimate(const vanderpol_sparse_fixed *observer, int32_t *values, vanderpol_sparse_saturation *saturation);
+
 /* The EKF from the centre of the state box (kind ekf_box, the Rust BoxEkfObserver): an estimate
  * from the first accepted sample; a sample with a non-finite output is refused and only predicted. */
 typedef struct {

@@ -263,6 +263,213 @@ vanderpol_uncertain_status vanderpol_uncertain_map_estimate(const vanderpol_unce
 }
 
 
+/* `x1` in integers: gains in regressor order (2^-22 per count), then (A_k, B_k) in its LSB. */
+static const int32_t FIXED_GAINS_0[10] = { 9304, 1595, -2155, -2831, -2504, -309, 516, 689, -1452, -8169 };
+static const int32_t FIXED_SEGMENTS_0[99][2] = {
+    { -1262855, 4724 },
+    { -1258131, 4936 },
+    { -1253195, 5165 },
+    { -1248030, 5414 },
+    { -1242616, 5685 },
+    { -1236930, 5981 },
+    { -1230949, 6304 },
+    { -1224645, 6659 },
+    { -1217986, 7050 },
+    { -1210936, 7481 },
+    { -1203455, 7959 },
+    { -1195496, 8491 },
+    { -1187005, 9083 },
+    { -1177922, 9746 },
+    { -1168175, 10490 },
+    { -1157686, 11326 },
+    { -1146359, 12268 },
+    { -1134091, 13330 },
+    { -1120761, 14525 },
+    { -1106237, 15865 },
+    { -1090372, 17358 },
+    { -1073014, 19004 },
+    { -1054010, 20789 },
+    { -1033221, 22681 },
+    { -1010541, 24626 },
+    { -985915, 26551 },
+    { -959364, 28372 },
+    { -930992, 30009 },
+    { -900984, 31403 },
+    { -869580, 32528 },
+    { -837053, 33388 },
+    { -803665, 34013 },
+    { -769652, 34444 },
+    { -735207, 34727 },
+    { -700480, 34902 },
+    { -665578, 35001 },
+    { -630578, 35051 },
+    { -595527, 35071 },
+    { -560456, 35073 },
+    { -525383, 35067 },
+    { -490316, 35059 },
+    { -455257, 35051 },
+    { -420207, 35045 },
+    { -385161, 35043 },
+    { -350118, 35044 },
+    { -315074, 35047 },
+    { -280027, 35051 },
+    { -244976, 35057 },
+    { -209919, 35062 },
+    { -174857, 35067 },
+    { -139789, 35071 },
+    { -104718, 35073 },
+    { -69645, 35073 },
+    { -34572, 35072 },
+    { 500, 35069 },
+    { 35570, 35065 },
+    { 70635, 35060 },
+    { 105695, 35056 },
+    { 140751, 35052 },
+    { 175802, 35049 },
+    { 210851, 35048 },
+    { 245900, 35049 },
+    { 280949, 35053 },
+    { 316002, 35059 },
+    { 351061, 35065 },
+    { 386126, 35071 },
+    { 421197, 35073 },
+    { 456271, 35068 },
+    { 491339, 35049 },
+    { 526388, 35010 },
+    { 561398, 34938 },
+    { 596336, 34822 },
+    { 631159, 34647 },
+    { 665805, 34392 },
+    { 700198, 34039 },
+    { 734237, 33566 },
+    { 767803, 32955 },
+    { 800758, 32191 },
+    { 832949, 31267 },
+    { 864215, 30187 },
+    { 894403, 28968 },
+    { 923371, 27636 },
+    { 951007, 26224 },
+    { 977231, 24771 },
+    { 1002002, 23312 },
+    { 1025313, 21879 },
+    { 1047192, 20498 },
+    { 1067690, 19186 },
+    { 1086876, 17954 },
+    { 1104830, 16808 },
+    { 1121638, 15748 },
+    { 1137387, 14773 },
+    { 1152160, 13878 },
+    { 1166038, 13059 },
+    { 1179097, 12308 },
+    { 1191406, 11622 },
+    { 1203027, 10993 },
+    { 1214020, 10416 },
+    { 1224436, 9887 }
+};
+
+/* `x2` in integers: gains in regressor order (2^-28 per count), then (A_k, B_k) in its LSB. */
+static const int32_t FIXED_GAINS_1[10] = { 8693, 8192, 5308, 2356, 105, -1021, -934, -100, 2173, 5814 };
+static const int32_t FIXED_SEGMENTS_1[2][2] = {
+    { -38517, 39048 },
+    { 531, 39048 }
+};
+
+/* Signed right shifts must be arithmetic (implementation-defined in C99; so on gcc, clang, armcc
+ * and IAR): checked at compile time. */
+typedef char fixed_shifts_are_arithmetic[((-8) >> 1) == -4 ? 1 : -1];
+
+/* a - b and a * b modulo 2^32 (no signed overflow, which C leaves undefined). */
+static int32_t wrapping_sub(int32_t a, int32_t b) {
+    return (int32_t)((uint32_t)a - (uint32_t)b);
+}
+
+static int32_t wrapping_mul(int32_t a, int32_t b) {
+    return (int32_t)((uint32_t)a * (uint32_t)b);
+}
+
+/* min <= v <= max, as one unsigned comparison. */
+static int in_range(int32_t v, int32_t min, int32_t max) {
+    return (uint32_t)v - (uint32_t)min <= (uint32_t)max - (uint32_t)min;
+}
+
+/* firmware::fixed::FixedTable::evaluate_with: the segment and the position in it by shifts, the
+ * saturation by sign masks (no branch: the same instructions whatever t is). */
+static void fixed_evaluate(int32_t t, const int32_t segments[][2], int32_t last, unsigned f, unsigned dropped,
+                           unsigned p, int32_t t_max, int32_t r_min, int32_t r_max, int32_t *value,
+                           vanderpol_uncertain_saturation *saturation) {
+    const int32_t low = t >> 31;
+    const int32_t high = wrapping_sub(t_max, t) >> 31;
+    int32_t k = (t >> f) & ~low;
+    const int32_t over = last - k;
+    int32_t position;
+    int32_t inside;
+    int32_t edge;
+    k += over & (over >> 31);
+    position = wrapping_sub(t, (int32_t)((uint32_t)k << f)) >> dropped;
+    inside = (int32_t)((uint32_t)segments[k][0] + (uint32_t)(wrapping_mul(segments[k][1], position) >> p));
+    edge = r_max ^ ((r_min ^ r_max) & low);
+    *value = inside ^ ((inside ^ edge) & (low | high));
+    *saturation = (vanderpol_uncertain_saturation)((unsigned)(low & 1) | ((unsigned)(high & ~low) & 2u));
+}
+
+void vanderpol_uncertain_fixed_init(vanderpol_uncertain_fixed *observer) {
+    observer->next = 0u;
+    observer->filled = 0u;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_fixed_push(vanderpol_uncertain_fixed *observer, const int32_t *y, const int32_t *u) {
+    unsigned i;
+    unsigned slot;
+    int inside = 1;
+    inside &= in_range(y[0], -32767, 32767);
+    if (!inside) {
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    slot = observer->next;
+    for (i = 0u; i < VANDERPOL_UNCERTAIN_OUTPUTS; ++i) {
+        observer->y[slot][i] = y[i];
+        observer->y[slot + VANDERPOL_UNCERTAIN_HORIZON][i] = y[i];
+    }
+    (void)u;
+    observer->next = slot + 1u >= VANDERPOL_UNCERTAIN_HORIZON ? 0u : slot + 1u;
+    observer->filled += (unsigned)(observer->filled < VANDERPOL_UNCERTAIN_HORIZON);
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+/* The sums are in int32_t: every stored sample is in range, where the proof says they fit. */
+vanderpol_uncertain_status vanderpol_uncertain_fixed_estimate(const vanderpol_uncertain_fixed *observer, int32_t *values, vanderpol_uncertain_saturation *saturation) {
+    const unsigned next = observer->next;
+    if (observer->filled < VANDERPOL_UNCERTAIN_HORIZON) {
+        return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
+    }
+    const int32_t t_0 = 226576983
+        + FIXED_GAINS_0[0] * observer->y[next + 9u][0]
+        + FIXED_GAINS_0[1] * observer->y[next + 8u][0]
+        + FIXED_GAINS_0[2] * observer->y[next + 7u][0]
+        + FIXED_GAINS_0[3] * observer->y[next + 6u][0]
+        + FIXED_GAINS_0[4] * observer->y[next + 5u][0]
+        + FIXED_GAINS_0[5] * observer->y[next + 4u][0]
+        + FIXED_GAINS_0[6] * observer->y[next + 3u][0]
+        + FIXED_GAINS_0[7] * observer->y[next + 2u][0]
+        + FIXED_GAINS_0[8] * observer->y[next + 1u][0]
+        + FIXED_GAINS_0[9] * observer->y[next + 0u][0];
+    const int32_t t_1 = 265011886
+        + FIXED_GAINS_1[0] * observer->y[next + 9u][0]
+        + FIXED_GAINS_1[1] * observer->y[next + 8u][0]
+        + FIXED_GAINS_1[2] * observer->y[next + 7u][0]
+        + FIXED_GAINS_1[3] * observer->y[next + 6u][0]
+        + FIXED_GAINS_1[4] * observer->y[next + 5u][0]
+        + FIXED_GAINS_1[5] * observer->y[next + 4u][0]
+        + FIXED_GAINS_1[6] * observer->y[next + 3u][0]
+        + FIXED_GAINS_1[7] * observer->y[next + 2u][0]
+        + FIXED_GAINS_1[8] * observer->y[next + 1u][0]
+        + FIXED_GAINS_1[9] * observer->y[next + 0u][0];
+    fixed_evaluate(t_0, FIXED_SEGMENTS_0, 98, 22u, 7u, 15u, 415236096, -1262855, 1234323, &values[0], &saturation[0]);
+    fixed_evaluate(t_1, FIXED_SEGMENTS_1, 1, 28u, 13u, 15u, 536870912, -38517, 39579, &values[1], &saturation[1]);
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+
 /* 1 when every input is finite. */
 static int inputs_finite(const float *u) {
     (void)u;

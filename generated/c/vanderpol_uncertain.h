@@ -54,6 +54,31 @@ vanderpol_uncertain_status vanderpol_uncertain_map_push(vanderpol_uncertain_map 
  * and saturation[VANDERPOL_UNCERTAIN_TARGETS]; VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET (nothing written) before the window is full. */
 vanderpol_uncertain_status vanderpol_uncertain_map_estimate(const vanderpol_uncertain_map *observer, float *values, vanderpol_uncertain_saturation *saturation);
 
+/* The map in integers, for chips without an FPU: raw converter counts in, each estimate an
+ * integer in its target's LSB out, no float operation. Samples (a sample with a value outside
+ * its range is refused: the proof that no sum overflows holds there):
+ * y[0] (`y`): raw in [-32767, 32767], value = 0.0 + 0.00048828125 * raw
+ * Estimates (value = integer * LSB, in the target's unit):
+ * estimate 0 (`x1`): LSB 2^-19, proven |fixed - f64 map| <= 2.133e-3
+ * estimate 1 (`x2`): LSB 2^-13, proven |fixed - f64 map| <= 2.604e-3
+ * Allocate it anywhere (no heap is used) and call vanderpol_uncertain_fixed_init. */
+typedef struct {
+    int32_t y[2u * VANDERPOL_UNCERTAIN_HORIZON][VANDERPOL_UNCERTAIN_OUTPUTS];
+    unsigned next;
+    unsigned filled;
+} vanderpol_uncertain_fixed;
+
+/* Empties the window. */
+void vanderpol_uncertain_fixed_init(vanderpol_uncertain_fixed *observer);
+
+/* Takes the raw sample of the current instant (u may be NULL when there is no input): VANDERPOL_UNCERTAIN_OK,
+ * or VANDERPOL_UNCERTAIN_REFUSED for a value outside its range (the observer is unchanged). */
+vanderpol_uncertain_status vanderpol_uncertain_fixed_push(vanderpol_uncertain_fixed *observer, const int32_t *y, const int32_t *u);
+
+/* Every target's estimate (in its LSB) into values[VANDERPOL_UNCERTAIN_TARGETS] and saturation[VANDERPOL_UNCERTAIN_TARGETS];
+ * VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET (nothing written) before the window is full. */
+vanderpol_uncertain_status vanderpol_uncertain_fixed_estimate(const vanderpol_uncertain_fixed *observer, int32_t *values, vanderpol_uncertain_saturation *saturation);
+
 /* The EKF from the centre of the state box (kind ekf_box, the Rust BoxEkfObserver): an estimate
  * from the first accepted sample; a sample with a non-finite output is refused and only predicted. */
 typedef struct {

@@ -21,8 +21,8 @@ mod emitted;
 mod error;
 mod shipped;
 
-pub use design::{design_source, emit_design, model_code, settle, simulate_and_fit};
-pub use emitted::Emitted;
+pub use design::{design_source, emit_design, fixed_point, model_code, settle, simulate_and_fit};
+pub use emitted::{Emitted, Fixed};
 pub use error::{GenerateError, NotOurs};
 pub use shipped::{shipped_design, shipped_specs, workspace_root};
 
@@ -257,6 +257,10 @@ pub(crate) fn prepare(
     let mut report = reporting::report(&emitted.design, &emitted.result, &emitted.comparison);
     report.search = emitted.search.as_ref();
     report.taps = emitted.taps.as_deref();
+    report.fixed_point = emitted
+        .fixed
+        .as_ref()
+        .map(|fixed| reporting::fixed_point::of(&emitted.design, &emitted.result, fixed));
     let measured = reporting::on_target::recorded(&folder, &emitted.source);
     for observer in &mut report.observers {
         observer.on_target = measured.get(observer.kind).cloned();

@@ -45,6 +45,7 @@ pub mod commands;
 pub mod data;
 pub mod emit;
 pub mod fit;
+pub mod fixed_point;
 pub mod generate;
 pub mod observers;
 pub mod output;

@@ -200,4 +200,4 @@ pub static RECORDED_U: [[f32; INPUTS]; RECORDED_LEN] = [
 ];
 {%- endif %}
 
-{{ model }}
+{{ model }}{{ fixed }}

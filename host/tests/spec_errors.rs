@@ -343,6 +343,14 @@ const CASES: &[Case] = &[
     case("scenario_x0_missing", Vdp, &[Swap("x0 = { x1 = 2.0, x2 = 0.5 }", "x0 = { x1 = 2.0 }")], Exact("scenario.x0.x2"), "`x2 = …` to `scenario.x0`"),
     case("scenario_shorter_than_horizon", Vdp, &[Swap("samples = 101", "samples = 9")], Exact("scenario.samples"), "≥ `map.horizon`"),
     case("scenario_shorter_than_horizon_ecoli", E05, &[Swap("samples = 40\nseed = 13", "samples = 2\nseed = 13")], Exact("scenario.samples"), "≥ `map.horizon`"),
+
+    // ---- validate_chip.rs: `[chip]` and its raw scalings.
+    case("chip_raw_of_no_signal", Vdp, &[Swap("raw.y = {", "raw.z = {")], Exact("chip.raw.z"), "outputs or inputs (y)"),
+    case("chip_raw_with_float_arithmetic", Vdp, &[Swap("arithmetic = \"fixed\"", "arithmetic = \"float\"")], Exact("chip.raw.y"), "arithmetic = \"fixed\""),
+    case("chip_raw_scale_zero", Vdp, &[Swap("scale = 0.005", "scale = 0.0")], Exact("chip.raw.y.scale"), "positive"),
+    case("chip_raw_offset_nan", Vdp, &[Swap("offset = -10.24", "offset = nan")], Exact("chip.raw.y.offset"), "value at a raw reading of 0"),
+    case("chip_raw_beyond_24_bits", Vdp, &[Swap("max = 4095", "max = 16777217")], Exact("chip.raw.y.max"), "at most 24 bits"),
+    case("chip_raw_empty_range", Vdp, &[Swap("min = 0, max = 4095", "min = 4095, max = 4095")], Exact("chip.raw.y.max"), "`min` below `max`"),
 ];
 
 /// Applies the case's edits; each find-string must occur exactly once in the text it edits.

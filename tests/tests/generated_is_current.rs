@@ -213,7 +213,7 @@ fn the_readme_table_is_current(emitted: &generate::Emitted) {
 fn the_searched_knot_fixture_is_current() {
     let path = workspace_root().join(SEARCHED_FIXTURE_SPEC);
     let design = host::spec::load(&path).unwrap();
-    let (_, text, _) = generate::design_source(
+    let (_, text, _, _) = generate::design_source(
         &design,
         &build(&design),
         &host::emit::Placement::Generated {

@@ -159,6 +159,8 @@ struct DesignFile {
     /// The `FAMILY` constant of a family's member ([`super::families::Member::declaration`]), else nothing.
     family: String,
     model: String,
+    /// The integer map's section ([`super::fixed`]), or nothing.
+    fixed: String,
 }
 
 /// The text of `generated/src/<design>.rs` (or of a standalone crate's module, as `placement` says).
@@ -320,6 +322,9 @@ pub fn design_file(
         // Last: the maps' checks above (data beyond f32, the sample period) name the cause where the
         // EKF's constants, derived from the same data, would only fail to be stored.
         model: model::model_source(design, code, observers)?.trim_end().to_owned(),
+        fixed: observers.fixed.map_or(String::new(), |fixed| {
+            super::fixed::fixed_source(design, fixed, &super::recorded_sequence(&result.runs.scenario))
+        }),
     };
     file.render().map(|text| text + "\n").map_err(EmitError::from)
 }

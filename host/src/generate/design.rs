@@ -5,7 +5,7 @@ use std::path::Path;
 
 use indicatif::ProgressBar;
 
-use super::emitted::Emitted;
+use super::emitted::{Emitted, Fixed};
 use super::error::GenerateError;
 use super::shipped::workspace_root;
 use crate::data::{self, Runs};
@@ -50,13 +50,14 @@ pub fn emit_design(
             source: &spec_path,
         },
     };
-    let (comparison, source, c_source) = design_source(&design, &result, &placement, spec, progress)?;
+    let (comparison, source, c_source, fixed) = design_source(&design, &result, &placement, spec, progress)?;
     Ok(Emitted {
         design,
         result,
         comparison,
         source,
         c_source,
+        fixed,
         search,
         taps,
     })
@@ -99,16 +100,42 @@ pub fn model_code(design: &Design) -> Result<crate::plant::ModelCode, SpecError>
     })
 }
 
+/// The map of a fitted design in integers and its validation figures, when its spec asks for it
+/// (`[chip] arithmetic = "fixed"`), or an error naming `[chip]` when the map cannot be.
+pub fn fixed_point(design: &Design, result: &DesignResult) -> Result<Option<Fixed>, SpecError> {
+    let Some(spec) = &design.fixed else { return Ok(None) };
+    let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
+    let point = crate::fixed_point::quantise(design, spec, &result.runs.learning, &maps)
+        .map_err(|e| design.error("chip.arithmetic", e.to_string(), e.fix()))?;
+    let validation = crate::fixed_point::compare(&point, &maps, &result.runs.validation);
+    // The proof is checked on every validation window of every design: a window beyond it is a bug.
+    for (target, figures) in point.targets.iter().zip(&validation.targets) {
+        if let Some(window) = figures.beyond_bound.first() {
+            return Err(design.error(
+                "chip.arithmetic",
+                format!(
+                    "the fixed-point map is beyond its proven bound {:.3e} on validation window {window} (a bug in the tool)",
+                    target.bound.total()
+                ),
+                "report it; set `arithmetic = \"float\"` meanwhile",
+            ));
+        }
+    }
+    Ok(Some(Fixed { point, validation }))
+}
+
 /// The observers of a fitted design compared (the EKF tuned on new runs), the text of its
-/// `generated/src/<design>.rs` (maps, model and the model-based observers) and its C source.
+/// `generated/src/<design>.rs` (maps, model and the model-based observers), its C source and its
+/// map in integers (when the spec asks for it).
 pub fn design_source(
     design: &Design,
     result: &DesignResult,
     placement: &emit::Placement<'_>,
     spec: &Path,
     progress: &ProgressBar,
-) -> Result<(crate::observers::Comparison, String, emit::c::CSource), GenerateError> {
+) -> Result<(crate::observers::Comparison, String, emit::c::CSource, Option<Fixed>), GenerateError> {
     let code = model_code(design)?;
+    let fixed = fixed_point(design, result)?;
     progress.set_message(format!("{}: tuning the EKF", design.name));
     let comparison = crate::observers::compare(design, result, &code)?;
     let emit_error = |source| GenerateError::Emit {
@@ -136,8 +163,9 @@ pub fn design_source(
         kind: comparison.chosen.0,
         instructions: &instructions,
         tables_sha256: &crate::tables::Tables::new(design, result, Some(&comparison)).tables_sha256,
+        fixed: fixed.as_ref().map(|f| &f.point),
     };
     let source = emit::design_file(design, result, placement, &code, &observers).map_err(emit_error)?;
     let c_source = emit::c::c_source(design, result, Some((&code, &observers))).map_err(emit_error)?;
-    Ok((comparison, source, c_source))
+    Ok((comparison, source, c_source, fixed))
 }

@@ -147,5 +147,6 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
         }),
         search: None,
         taps: None,
+        fixed_point: None,
     }
 }

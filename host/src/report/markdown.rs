@@ -97,6 +97,9 @@ pub fn markdown(report: &Report<'_>) -> String {
         .collect();
     s.push_str("\n## On the emulated Cortex-M4F\n\n");
     s.push_str(&on_target::section(&measured));
+    if let Some(fixed) = &report.fixed_point {
+        s.push_str(&super::fixed_point::section(fixed));
+    }
     s.push_str(
         "\n*ratio*: validation RMSE of the map over that of the plain linear least-squares map `Lᵀ Z + c` on the same data \
          (below 1: the nonlinear map beats the floor). *max error validation* is the paper's empirical ε_x. \

@@ -68,6 +68,9 @@ pub struct Report<'a> {
     /// Validation accuracy against the taps of `L` kept, when the spec prunes it.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub taps: Option<&'a [crate::search::sparsity::Row]>,
+    /// The map in integers, when the spec asks for it (`[chip] arithmetic = "fixed"`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fixed_point: Option<super::fixed_point::FixedPointReport>,
 }
 
 /// One observer's figures.

@@ -11,6 +11,7 @@ pub mod model;
 mod raw;
 pub mod search;
 mod validate;
+mod validate_chip;
 mod validate_design;
 mod validate_map;
 mod validate_model;
@@ -301,8 +302,34 @@ pub struct Design {
     pub family: Option<Family>,
     /// `[observer] kind`.
     pub observer: ObserverKind,
+    /// `[chip] arithmetic = "fixed"`: the integer map is emitted too, with these raw scalings.
+    pub fixed: Option<FixedSpec>,
     /// SHA-256 of the spec text, in hex (provenance of generated files).
     pub spec_sha256: String,
+}
+
+/// What `[chip] arithmetic = "fixed"` asks for: each output's and input's raw scaling, as declared or
+/// (`None`) left to the default Q format ([`crate::fixed_point`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct FixedSpec {
+    /// One per output, in the model's order.
+    pub outputs: Vec<Option<RawScale>>,
+    /// One per input, in the model's order.
+    pub inputs: Vec<Option<RawScale>>,
+}
+
+/// How a raw integer sample maps to the model's unit: `value = offset + scale · raw`, raw in
+/// `[min, max]` (a sample outside is refused on the chip).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct RawScale {
+    /// Model units per count.
+    pub scale: f64,
+    /// The value at raw 0.
+    pub offset: f64,
+    /// The smallest raw value the converter gives.
+    pub min: i32,
+    /// The largest.
+    pub max: i32,
 }
 
 impl Design {

@@ -25,6 +25,40 @@ pub(super) struct RawSpec {
     pub(super) observer: Option<RawObserver>,
     pub(super) budget: Option<RawBudget>,
     pub(super) search: Option<RawSearch>,
+    pub(super) chip: Option<RawChip>,
+}
+
+/// `[chip]`: the arithmetic the chip computes the map in, and (for `"fixed"`) each signal's raw
+/// integer scaling by name (`[chip.raw.<output or input>]`).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawChip {
+    #[serde(default)]
+    pub(super) arithmetic: Arithmetic,
+    #[serde(default)]
+    pub(super) raw: BTreeMap<String, RawScaling>,
+}
+
+/// `[chip] arithmetic`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub(super) enum Arithmetic {
+    /// `f32` only (the default).
+    #[default]
+    Float,
+    /// Also the integer map ([`super::FixedSpec`]).
+    Fixed,
+}
+
+/// `[chip.raw.<signal>]`: `value = offset + scale · raw` for raw in `[min, max]`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawScaling {
+    pub(super) scale: f64,
+    #[serde(default)]
+    pub(super) offset: f64,
+    pub(super) min: i64,
+    pub(super) max: i64,
 }
 
 /// `[search]`: how large a design search may be. The value is read as any TOML value so that a

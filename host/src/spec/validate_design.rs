@@ -41,6 +41,7 @@ impl Validator {
         self.at_most("sampling.substeps", raw.sampling.substeps, limits::MAX_SUBSTEPS)?;
         let (map, search) = self.map(&raw.map)?;
         let budget = self.budget(raw.budget.as_ref())?;
+        let fixed = self.chip(raw.chip.as_ref(), &model)?;
         let learning = self.learning(&raw.learning, &model, map.horizon)?;
         let validation = self.runs("validation", &raw.validation, map.horizon)?;
         let tuning = self.tuning(
@@ -108,6 +109,7 @@ impl Validator {
             scenario,
             family,
             observer: raw.observer.map(|o| o.kind).unwrap_or_default(),
+            fixed,
             spec_sha256: String::new(),
         };
         limits::check_budget(&design)?;

@@ -14,6 +14,7 @@
 
 mod corrected;
 mod filters;
+mod fixed;
 mod map;
 mod mhe;
 mod program;
@@ -69,6 +70,13 @@ pub fn c_source(
         design.targets.len(),
     );
     let map = map::map(design, result)?;
+    let integer = match model.and_then(|(_, observers)| observers.fixed) {
+        Some(point) => fixed::fixed(design, point),
+        None => fixed::FixedC {
+            header: String::new(),
+            source: String::new(),
+        },
+    };
     let kinds = match model {
         Some((code, observers)) => filters::kinds(design, code, observers)?,
         None => filters::Kinds::default(),
@@ -139,11 +147,13 @@ pub fn c_source(
          }} {name}_saturation;\n\
          \n\
          {map_header}\
+         {fixed_header}\
          {kinds_header}\
          {alias}\
          {interface_header}\
          #endif\n",
         map_header = map.header,
+        fixed_header = integer.header,
         kinds_header = kinds.header,
     );
     let math = if kinds.needs_math { "#include <math.h>\n" } else { "" };
@@ -156,7 +166,7 @@ pub fn c_source(
     } else {
         "    (void)u;\n".to_owned()
     };
-    let body = format!("{}{}{interface_source}", map.source, kinds.source);
+    let body = format!("{}{}{}{interface_source}", map.source, integer.source, kinds.source);
     // Only where a follower checks a sample (an unused static function is a warning).
     let accepts = if body.contains("accepts(") {
         format!(

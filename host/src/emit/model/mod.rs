@@ -53,6 +53,8 @@ pub struct Observers<'a> {
     pub instructions: &'a [(&'static str, f64)],
     /// SHA-256 of the tables saved with this file ([`crate::tables::Tables::content_sha256`]).
     pub tables_sha256: &'a str,
+    /// The map in integers, when the spec asks for it (`[chip] arithmetic = "fixed"`).
+    pub fixed: Option<&'a crate::fixed_point::FixedPoint>,
 }
 
 /// The Rust source of the design's model (`parameters`, `Plant`, `targets`), its EKF (`ekf`), its

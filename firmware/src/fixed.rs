@@ -1,0 +1,381 @@
+//! The map in integer arithmetic, for chips without an FPU (Cortex-M0/M0+, many RISC-V parts), where
+//! every `f32` operation is a library routine of tens of instructions.
+//!
+//! Samples arrive as raw integers (ADC counts, or a Q format): signal `s`'s value in the model's unit
+//! is `offset_s + scale_s · raw`, and the design declares each signal's raw range. The host folds the
+//! scales and offsets into the gains, rounds them to `F` fractional bits and proves, for every sample
+//! in the declared ranges, that nothing below overflows 32 bits:
+//!
+//! ```text
+//! t = C + Σ_i G_i raw_i                       t in units of 2^-F of the table coordinate, exact
+//! k = min(max(t >> F, 0), K − 1)              the segment (t's integer part, clamped)
+//! f = t − (k << F)                            the position in it, in [0, 2^F] inside the table
+//! r = A_k + ((B_k · (f >> (F − P))) >> P)     in the target's LSB: A_k the value at knot k, B_k the
+//!                                             slope per unit of t, both rounded to that LSB
+//! ```
+//!
+//! saturated, as the float map is, to `r_min` below `t = 0` and `r_max` above `t_max = K << F`, with
+//! the flag saying so. Everything is shifts, adds and 32-bit multiplies; the saturation and the clamp
+//! are sign masks (`x >> 31`), not branches, so every accepted sample runs the same instructions.
+//! How far `r` may be from the f64 map (gain rounding times the inputs' range, the `P`-bit position,
+//! the rounded table, plus the table's own proven distance to `Γ⁻¹`) is proven on the host and stated
+//! in each generated design.
+//!
+//! A sample is refused ([`OutOfRange`]) when a value is outside its declared raw range: the overflow
+//! proof holds only there (the float map's NaN check becomes this range check).
+
+use core::marker::PhantomData;
+
+use crate::estimate::{Estimate, Saturation};
+use crate::window::{Sample, Window};
+
+/// The tabulated inverse of one target in integers (see the module docs for the formula).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FixedTable<'a> {
+    /// `(A_k, B_k)` of the `K` segments, in the target's LSB (and LSB per unit of `t`).
+    pub segments: &'a [[i32; 2]],
+    /// `F`: fractional bits of `t`.
+    pub fraction_bits: u32,
+    /// `F − P`: bits of the position in the segment dropped before the product.
+    pub dropped_bits: u32,
+    /// `P`: bits of the position the slope is multiplied by.
+    pub product_bits: u32,
+    /// `K << F`: above it the estimate saturates high.
+    pub t_max: i32,
+    /// The estimate below `t = 0`, in the target's LSB.
+    pub r_min: i32,
+    /// The estimate above `t_max`, in the target's LSB.
+    pub r_max: i32,
+}
+
+/// One target's map in integers: `t = offset + Σ_i gains_i raw_i`, `r = table(t)`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FixedMap<'a> {
+    /// One gain per regressor entry (in regressor order, newest sample first), in 2^-F per count.
+    pub gains: &'a [i32],
+    /// `C`: the scales' offsets and `−Γ(0)` folded in, in 2^-F.
+    pub offset: i32,
+    /// `Γ⁻¹` in integers.
+    pub table: FixedTable<'a>,
+}
+
+impl FixedTable<'_> {
+    /// `r(t)` in the target's LSB, saturated outside `[0, t_max]` (which the flag says), by sign masks
+    /// rather than branches. Wrapping arithmetic: the host's proof keeps every in-range sample from
+    /// wrapping, and no input can make this panic.
+    #[inline(always)]
+    #[must_use]
+    pub fn evaluate(&self, t: i32) -> Estimate<i32> {
+        let last = (self.segments.len() as i32).wrapping_sub(1);
+        self.evaluate_with(t, last)
+    }
+
+    /// [`FixedTable::evaluate`] with `K − 1` given (generated code writes it as a constant).
+    #[inline(always)]
+    #[must_use]
+    pub fn evaluate_with(&self, t: i32, last: i32) -> Estimate<i32> {
+        let low = t >> 31; // −1 when t < 0
+        let high = self.t_max.wrapping_sub(t) >> 31; // −1 when t > t_max
+        let k = (t >> self.fraction_bits) & !low;
+        let over = last.wrapping_sub(k);
+        let k = k.wrapping_add(over & (over >> 31)); // min(k, K − 1)
+        let position = t.wrapping_sub(k << self.fraction_bits) >> self.dropped_bits;
+        // `k` is in [0, K − 1] here; `get` keeps a panic path out regardless.
+        let [a, b] = self.segments.get(k as usize).copied().unwrap_or([self.r_min, 0]);
+        let inside = a.wrapping_add(b.wrapping_mul(position) >> self.product_bits);
+        let edge = self.r_max ^ ((self.r_min ^ self.r_max) & low);
+        let outside = low | high;
+        Estimate {
+            value: inside ^ ((inside ^ edge) & outside),
+            saturation: flag(low, high),
+        }
+    }
+}
+
+/// The saturation of masks `low` and `high` (each 0 or −1), by a table lookup rather than a branch.
+/// Both are −1 only for a `t` so far below 0 that `t_max − t` wraps (outside the proven range): low,
+/// as the value is.
+#[inline(always)]
+#[must_use]
+pub fn flag(low: i32, high: i32) -> Saturation {
+    const FLAGS: [Saturation; 4] = [Saturation::Inside, Saturation::Low, Saturation::High, Saturation::Low];
+    FLAGS[((low & 1) | (high & 2)) as usize & 3]
+}
+
+impl FixedMap<'_> {
+    /// `t = offset + Σ_i gains_i raw_i` in regressor order, skipping pruned taps (gain 0).
+    #[must_use]
+    pub fn project(&self, regressor: &[i32]) -> i32 {
+        let mut sum = self.offset;
+        for (&g, &z) in self.gains.iter().zip(regressor) {
+            if g != 0 {
+                sum = sum.wrapping_add(g.wrapping_mul(z));
+            }
+        }
+        sum
+    }
+
+    /// The estimate from a regressor of raw samples.
+    #[must_use]
+    pub fn estimate(&self, regressor: &[i32]) -> Estimate<i32> {
+        self.table.evaluate(self.project(regressor))
+    }
+}
+
+/// `|offset| + Σ_i |gains_i| M_i + t_max` with `M_i` the largest raw magnitude of regressor entry
+/// `i` (its signal's range; the regressor is `N` samples of `ranges.len()` signals, outputs and then
+/// inputs as [`FixedDesign`] lays them out, `outputs` of them outputs): no partial sum, product or
+/// `t_max − t` of [`FixedMap::estimate`] can overflow 32 bits while this is at most `2³¹ − 1`. A
+/// `const fn`, so that a generated design checks its own proof at compile time.
+#[must_use]
+pub const fn reach(map: &FixedMap<'_>, horizon: usize, outputs: &[[i32; 2]], inputs: &[[i32; 2]]) -> i64 {
+    let mut sum = (map.offset as i64).abs() + map.table.t_max as i64;
+    let mut i = 0;
+    while i < map.gains.len() {
+        let range = if i < horizon * outputs.len() {
+            outputs[i % outputs.len()]
+        } else {
+            inputs[(i - horizon * outputs.len()) % inputs.len()]
+        };
+        let magnitude = if (range[0] as i64).abs() > (range[1] as i64).abs() {
+            (range[0] as i64).abs()
+        } else {
+            (range[1] as i64).abs()
+        };
+        sum += (map.gains[i] as i64).abs() * magnitude;
+        i += 1;
+    }
+    sum
+}
+
+/// A sample was refused because a value is outside its declared raw range; the observer is unchanged.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct OutOfRange;
+
+impl core::fmt::Display for OutOfRange {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str("sample refused: a value is outside its declared raw range (the observer is unchanged)")
+    }
+}
+
+impl core::error::Error for OutOfRange {}
+
+/// A fixed-point design: `NT` integer maps of the last `N` raw samples of `NY` outputs and `NU`
+/// inputs. Generated designs override [`FixedDesign::estimate`] and [`FixedDesign::accepts`] with the
+/// same sums and checks written out.
+pub trait FixedDesign<const N: usize, const NY: usize, const NU: usize, const NT: usize> {
+    /// Every target's map, gains laid out as the float map's.
+    const MAPS: [FixedMap<'static>; NT];
+    /// Each output's raw range `[min, max]`.
+    const OUTPUT_RANGES: [[i32; 2]; NY];
+    /// Each input's raw range `[min, max]`.
+    const INPUT_RANGES: [[i32; 2]; NU];
+
+    /// The estimates from the last `N` samples, oldest first.
+    #[inline(always)]
+    #[must_use]
+    fn estimate(window: &[Sample<i32, NY, NU>; N]) -> [Estimate<i32>; NT] {
+        estimate_by_loops(&Self::MAPS, window)
+    }
+
+    /// Whether every value is in its declared range.
+    #[inline(always)]
+    #[must_use]
+    fn accepts(y: &[i32; NY], u: &[i32; NU]) -> bool {
+        let mut inside = true;
+        for (&v, [min, max]) in y
+            .iter()
+            .zip(Self::OUTPUT_RANGES)
+            .chain(u.iter().zip(Self::INPUT_RANGES))
+        {
+            inside &= in_range(v, min, max);
+        }
+        inside
+    }
+}
+
+/// `min ≤ v ≤ max`, as one unsigned comparison.
+#[inline(always)]
+#[must_use]
+pub fn in_range(v: i32, min: i32, max: i32) -> bool {
+    (v.wrapping_sub(min) as u32) <= (max.wrapping_sub(min) as u32)
+}
+
+/// Every map's estimate from a window (oldest first), summing in regressor order as
+/// [`FixedMap::project`] does (integers: any order gives the same bits).
+#[must_use]
+pub fn estimate_by_loops<const N: usize, const NY: usize, const NU: usize, const NT: usize>(
+    maps: &[FixedMap<'_>; NT],
+    window: &[Sample<i32, NY, NU>; N],
+) -> [Estimate<i32>; NT] {
+    maps.each_ref().map(|map| {
+        let (output_gains, input_gains) = map.gains.split_at_checked(N * NY).unwrap_or((map.gains, &[]));
+        let mut sum = map.offset;
+        for (gains, sample) in output_gains.chunks_exact(NY.max(1)).zip(window.iter().rev()) {
+            for (&g, &y) in gains.iter().zip(&sample.y) {
+                sum = sum.wrapping_add(g.wrapping_mul(y));
+            }
+        }
+        for (gains, sample) in input_gains.chunks_exact(NU.max(1)).zip(window.iter().rev()) {
+            for (&g, &u) in gains.iter().zip(&sample.u) {
+                sum = sum.wrapping_add(g.wrapping_mul(u));
+            }
+        }
+        map.table.evaluate(sum)
+    })
+}
+
+/// The fixed-point observer of design `D`: the last `N` raw samples (stored twice, as the float
+/// observer's [`Window`]) and one integer estimate per target.
+pub struct Observer<D, const N: usize, const NY: usize, const NU: usize, const NT: usize> {
+    window: Window<i32, N, NY, NU>,
+    design: PhantomData<fn() -> D>,
+}
+
+impl<D: FixedDesign<N, NY, NU, NT>, const N: usize, const NY: usize, const NU: usize, const NT: usize>
+    Observer<D, N, NY, NU, NT>
+{
+    /// An observer with no samples yet.
+    #[must_use]
+    pub const fn new() -> Self {
+        Observer {
+            window: Window::new(),
+            design: PhantomData,
+        }
+    }
+
+    /// Takes one sample of raw outputs and inputs; refuses it, unchanged, when a value is outside its
+    /// declared range.
+    #[inline(always)]
+    pub fn push(&mut self, y: [i32; NY], u: [i32; NU]) -> Result<(), OutOfRange> {
+        if !D::accepts(&y, &u) {
+            return Err(OutOfRange);
+        }
+        self.window.push(Sample { y, u });
+        Ok(())
+    }
+
+    /// The estimates (target LSB) from the last `N` samples; `None` until `N` have arrived.
+    #[inline(always)]
+    #[must_use]
+    pub fn estimate(&self) -> Option<[Estimate<i32>; NT]> {
+        self.window.samples().map(D::estimate)
+    }
+
+    /// Forgets every sample.
+    pub fn reset(&mut self) {
+        self.window.clear();
+    }
+}
+
+impl<D: FixedDesign<N, NY, NU, NT>, const N: usize, const NY: usize, const NU: usize, const NT: usize> Default
+    for Observer<D, N, NY, NU, NT>
+{
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// r = t² on t ∈ [0, 3] (knots 0, 1, 2, 3) with F = 8, P = 4, the LSB of r 2^-6:
+    /// A_k = k² · 64, B_k = (2k + 1) · 64.
+    const SQUARE: FixedTable<'static> = FixedTable {
+        segments: &[[0, 64], [64, 192], [256, 320]],
+        fraction_bits: 8,
+        dropped_bits: 4,
+        product_bits: 4,
+        t_max: 3 << 8,
+        r_min: 0,
+        r_max: 9 << 6,
+    };
+
+    /// The chord of t² through the knots, in exact arithmetic (the table's closed form).
+    fn chord(t: f64) -> f64 {
+        let k = t.floor().clamp(0.0, 2.0);
+        k * k + (2.0 * k + 1.0) * (t - k)
+    }
+
+    #[test]
+    fn hits_the_knots_and_saturates_with_the_flag() {
+        for k in 0..=3 {
+            let e = SQUARE.evaluate(k << 8);
+            assert_eq!((e.value, e.saturation), (k * k * 64, Saturation::Inside), "k = {k}");
+        }
+        assert_eq!(
+            (SQUARE.evaluate(-1).value, SQUARE.evaluate(-1).saturation),
+            (0, Saturation::Low)
+        );
+        assert_eq!(SQUARE.evaluate(i32::MIN).saturation, Saturation::Low);
+        let above = SQUARE.evaluate((3 << 8) + 1);
+        assert_eq!((above.value, above.saturation), (9 << 6, Saturation::High));
+        assert_eq!(SQUARE.evaluate(i32::MAX).saturation, Saturation::High);
+    }
+
+    proptest! {
+        /// Inside, the result is the chord at t truncated to P = 4 bits of position, then floored to
+        /// the LSB: within one LSB plus the slope times 2^-P of the exact chord, never above it.
+        #[test]
+        fn is_the_chord_within_the_truncations(t in 0i32..=(3 << 8)) {
+            let exact = chord(f64::from(t) / 256.0) * 64.0;
+            let got = f64::from(SQUARE.evaluate(t).value);
+            prop_assert!(got <= exact + 1e-9 && got >= exact - 1.0 - 320.0 / 16.0, "t = {t}: {got} vs {exact}");
+        }
+    }
+
+    #[test]
+    fn the_reach_adds_every_gain_times_its_signals_largest_magnitude() {
+        // N = 2, one output in [−3, 2] and one input in [0, 5]: z = (y(k), y(k−1), u(k), u(k−1)).
+        let map = FixedMap {
+            gains: &[1, -2, 3, 0],
+            offset: -7,
+            table: SQUARE,
+        };
+        assert_eq!(reach(&map, 2, &[[-3, 2]], &[[0, 5]]), 7 + (3 << 8) + 3 + 2 * 3 + 3 * 5);
+    }
+
+    #[test]
+    fn the_range_check_is_inclusive_and_refuses_wrapped_values() {
+        assert!(in_range(0, 0, 4095) && in_range(4095, 0, 4095) && in_range(-5, -5, 5));
+        assert!(!in_range(-1, 0, 4095) && !in_range(4096, 0, 4095) && !in_range(i32::MIN, -5, 5));
+        assert!(in_range(i32::MIN, i32::MIN, i32::MAX) && in_range(i32::MAX, i32::MIN, i32::MAX));
+    }
+
+    struct Mean;
+    impl FixedDesign<2, 1, 0, 1> for Mean {
+        // t = 2^-8 (128 y(k) + 128 y(k−1)): the mean of the counts, K = 1 segment on [0, 1] of r = 100 t.
+        const MAPS: [FixedMap<'static>; 1] = [FixedMap {
+            gains: &[128, 128],
+            offset: 0,
+            table: FixedTable {
+                segments: &[[0, 100]],
+                fraction_bits: 8,
+                dropped_bits: 0,
+                product_bits: 8,
+                t_max: 256,
+                r_min: 0,
+                r_max: 100,
+            },
+        }];
+        const OUTPUT_RANGES: [[i32; 2]; 1] = [[0, 1]];
+        const INPUT_RANGES: [[i32; 2]; 0] = [];
+    }
+
+    #[test]
+    fn the_observer_refuses_out_of_range_samples_and_waits_for_n() {
+        let mut observer: Observer<Mean, 2, 1, 0, 1> = Observer::new();
+        observer.push([1], []).unwrap();
+        assert!(observer.estimate().is_none());
+        assert_eq!(observer.push([2], []), Err(OutOfRange));
+        observer.push([0], []).unwrap();
+        // mean 0.5 ⇒ t = 128 ⇒ r = 100 · 128 >> 8 = 50.
+        assert_eq!(observer.estimate().unwrap()[0].value, 50);
+        let regressor = [0, 1];
+        assert_eq!(Mean::MAPS[0].estimate(&regressor), observer.estimate().unwrap()[0]);
+        observer.reset();
+        assert!(observer.estimate().is_none());
+    }
+}

@@ -1,0 +1,183 @@
+//! The integer map of a design that asks for it (`[chip] arithmetic = "fixed"`) as Rust: the raw
+//! ranges and scalings, each target's integers with its proven bound and its overflow proof (checked
+//! again by the compiler, [`firmware::fixed::reach`]), the design for [`firmware::fixed::Observer`]
+//! with the range check and the dot products written out, and the recorded sequence in raw counts.
+
+use crate::fixed_point::{raw_rows, FixedPoint};
+use crate::spec::{Design, RawScale};
+
+/// The section appended to the design's module.
+pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::recording::Row]) -> String {
+    let (n, ny, nu) = (design.map.horizon, fixed.outputs.len(), fixed.inputs.len());
+    let ranges = |scales: &[RawScale]| {
+        let cells: Vec<String> = scales.iter().map(|s| format!("[{}, {}]", s.min, s.max)).collect();
+        format!("[{}]", cells.join(", "))
+    };
+    let pairs = |scales: &[RawScale]| {
+        let cells: Vec<String> = scales
+            .iter()
+            .map(|s| format!("({:?}, {:?})", s.scale, s.offset))
+            .collect();
+        format!("[{}]", cells.join(", "))
+    };
+    let mut text = format!(
+        "\n\n// The map in integers (`[chip] arithmetic = \"fixed\"`), for chips without an FPU: see\n\
+         // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.\n\n\
+         /// Each output's raw range `[min, max]`, as [`fixed_observer`] takes it: a sample outside is refused.\n\
+         pub const RAW_OUTPUT_RANGES: [[i32; 2]; OUTPUTS] = {};\n\
+         /// Each input's raw range `[min, max]`.\n\
+         pub const RAW_INPUT_RANGES: [[i32; 2]; INPUTS] = {};\n\
+         /// Each output's `(scale, offset)`: its value in [`OUTPUT_UNITS`] is `offset + scale · raw` (the\n\
+         /// spec's `[chip.raw]`, or the default 16-bit Q format). Not read on the chip: the gains hold it.\n\
+         pub const RAW_OUTPUT_SCALES: [(f64, f64); OUTPUTS] = {};\n\
+         /// Each input's `(scale, offset)`, in [`INPUT_UNITS`].\n\
+         pub const RAW_INPUT_SCALES: [(f64, f64); INPUTS] = {};\n\
+         /// Each target's LSB: an integer estimate `e` is `e · FIXED_LSB[t]` in [`TARGET_UNITS`].\n\
+         pub const FIXED_LSB: [f64; TARGETS] = [{}];\n\
+         /// Each target's proven `|fixed-point estimate − f64 map|`, in [`TARGET_UNITS`] (see its map).\n\
+         pub const FIXED_BOUND: [f64; TARGETS] = [{}];\n",
+        ranges(&fixed.outputs),
+        ranges(&fixed.inputs),
+        pairs(&fixed.outputs),
+        pairs(&fixed.inputs),
+        fixed
+            .targets
+            .iter()
+            .map(|t| format!("{:?}", t.lsb()))
+            .collect::<Vec<_>>()
+            .join(", "),
+        fixed
+            .targets
+            .iter()
+            .map(|t| format!("{:.3e}", t.bound.total()))
+            .collect::<Vec<_>>()
+            .join(", "),
+    );
+    let mut maps = Vec::new();
+    let mut dots = Vec::new();
+    for (target, spec_target) in fixed.targets.iter().zip(&design.targets) {
+        let upper = spec_target.name.to_uppercase();
+        let range = (f64::from(target.r_max) - f64::from(target.r_min)) * target.lsb();
+        let b = &target.bound;
+        let gains: Vec<String> = target.gains.iter().map(|g| format!("    {g},")).collect();
+        let segments: Vec<String> = target
+            .segments
+            .iter()
+            .map(|[a, b]| format!("    [{a}, {b}],"))
+            .collect();
+        text += &format!(
+            "\n/// Gains of `{name}` in integers: the float gains times each signal's scale, times 2^{f}, rounded.\n\
+             const FIXED_GAINS_{upper}: [i32; REGRESSOR_LEN] = [\n{gains}\n];\n\n\
+             /// `(A_k, B_k)`: `{name}` at knot `k` and its slope per unit of `t`, in its LSB 2^{minus}{r}.\n\
+             #[rustfmt::skip]\n\
+             const FIXED_SEGMENTS_{upper}: [[i32; 2]; {k}] = [\n{segments}\n];\n\n\
+             /// `{name}` in integers: `t` in 2^-{f}, position {p} bits, LSB 2^{minus}{r}. Proven: |fixed − f64 map| ≤ {total:.3e}\n\
+             /// ({share:.3} % of the range: the table's {table:.2e}, the gains' rounding {gains_term:.2e}, the\n\
+             /// integer table {evaluation:.2e}). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =\n\
+             /// {reach} ≤ 2³¹ − 1, checked below at compile time.\n\
+             pub const FIXED_MAP_{upper}: firmware::FixedMap<'static> = firmware::FixedMap {{\n    \
+                 gains: &FIXED_GAINS_{upper},\n    offset: {offset},\n    table: firmware::FixedTable {{\n        \
+                 segments: &FIXED_SEGMENTS_{upper},\n        fraction_bits: {f},\n        dropped_bits: {dropped},\n        \
+                 product_bits: {p},\n        t_max: {t_max},\n        r_min: {r_min},\n        r_max: {r_max},\n    }},\n}};\n\n\
+             const _: () = assert!(\n    firmware::fixed::reach(&FIXED_MAP_{upper}, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64\n);\n",
+            name = spec_target.name,
+            gains = gains.join("\n"),
+            segments = segments.join("\n"),
+            k = target.segments.len(),
+            f = target.fraction_bits,
+            p = target.product_bits,
+            dropped = target.fraction_bits - target.product_bits,
+            minus = if target.lsb_bits >= 0 { "-" } else { "" },
+            r = target.lsb_bits.abs(),
+            total = b.total(),
+            share = 100.0 * b.total() / range,
+            table = b.table,
+            gains_term = b.gains,
+            evaluation = b.evaluation,
+            reach = target.reach,
+            offset = target.offset,
+            t_max = target.t_max(),
+            r_min = target.r_min,
+            r_max = target.r_max,
+        );
+        maps.push(format!("FIXED_MAP_{upper}"));
+        let nonzero: Vec<f32> = target.gains.iter().map(|&g| g as f32).collect();
+        let terms: String = super::terms::dot_terms(&nonzero, n, ny, nu)
+            .iter()
+            .map(|t| {
+                let field = if t.input { "u" } else { "y" };
+                format!(
+                    "\n                    .wrapping_add(FIXED_GAINS_{upper}[{}].wrapping_mul(w[{}].{field}[{}]))",
+                    t.gain, t.sample, t.entry
+                )
+            })
+            .collect();
+        dots.push(format!(
+            "            FIXED_MAP_{upper}.table.evaluate_with(\n                FIXED_MAP_{upper}\n                    .offset{terms},\n                {},\n            ),",
+            target.segments.len() - 1
+        ));
+    }
+    let checks: Vec<String> = fixed
+        .outputs
+        .iter()
+        .enumerate()
+        .map(|(i, s)| format!("firmware::fixed::in_range(y[{i}], {}, {})", s.min, s.max))
+        .chain(
+            fixed
+                .inputs
+                .iter()
+                .enumerate()
+                .map(|(i, s)| format!("firmware::fixed::in_range(u[{i}], {}, {})", s.min, s.max)),
+        )
+        .collect();
+    let unused = match (ny, nu) {
+        (0, 0) => "let _ = (y, u);\n        ",
+        (_, 0) => "let _ = u;\n        ",
+        (0, _) => "let _ = y;\n        ",
+        _ => "",
+    };
+    let rows = |rows: Vec<Vec<i32>>| {
+        rows.iter()
+            .map(|row| {
+                format!(
+                    "    [{}],",
+                    row.iter().map(i32::to_string).collect::<Vec<_>>().join(", ")
+                )
+            })
+            .collect::<Vec<_>>()
+            .join("\n")
+    };
+    let y: Vec<Vec<f64>> = recorded.iter().map(|r| r.y.clone()).collect();
+    let u: Vec<Vec<f64>> = recorded.iter().map(|r| r.u.clone()).collect();
+    text += &format!(
+        "\n/// This design in integers, for [`firmware::fixed::Observer`]: the range check and the dot products\n\
+         /// written out.\n\
+         pub struct Fixed;\n\n\
+         impl firmware::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {{\n    \
+             const MAPS: [firmware::FixedMap<'static>; TARGETS] = [{maps}];\n    \
+             const OUTPUT_RANGES: [[i32; 2]; OUTPUTS] = RAW_OUTPUT_RANGES;\n    \
+             const INPUT_RANGES: [[i32; 2]; INPUTS] = RAW_INPUT_RANGES;\n\n    \
+             #[inline(always)]\n    \
+             fn accepts(y: &[i32; OUTPUTS], u: &[i32; INPUTS]) -> bool {{\n        {unused}{checks}\n    }}\n\n    \
+             #[inline(always)]\n    \
+             fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {{\n        [\n{dots}\n        ]\n    }}\n}}\n\n\
+         /// The fixed-point observer: raw counts in ([`RAW_OUTPUT_RANGES`]), estimates in [`FIXED_LSB`] out.\n\
+         pub type FixedObserver = firmware::fixed::Observer<Fixed, HORIZON, OUTPUTS, INPUTS, TARGETS>;\n\n\
+         /// A fixed-point observer with no samples yet.\n\
+         #[must_use]\n\
+         pub const fn fixed_observer() -> FixedObserver {{\n    FixedObserver::new()\n}}\n\n\
+         /// [`RECORDED_Y`] in raw counts (rounded and clamped as a converter would); its refused samples are\n\
+         /// `max + 1`, out of range, so that the fixed-point observer refuses them too.\n\
+         #[rustfmt::skip]\n\
+         pub const RECORDED_RAW_Y: [[i32; OUTPUTS]; RECORDED_LEN] = [\n{raw_y}\n];\n\n\
+         /// [`RECORDED_U`] in raw counts.\n\
+         #[rustfmt::skip]\n\
+         pub const RECORDED_RAW_U: [[i32; INPUTS]; RECORDED_LEN] = [\n{raw_u}\n];",
+        maps = maps.join(", "),
+        checks = if checks.is_empty() { "true".to_owned() } else { checks.join(" & ") },
+        dots = dots.join("\n"),
+        raw_y = rows(raw_rows(&y, &fixed.outputs)),
+        raw_u = rows(raw_rows(&u, &fixed.inputs)),
+    );
+    text
+}
