@@ -8,15 +8,16 @@
 //!
 //! ```text
 //! t = C + Σ_i G_i raw_i                       t in units of 2^-F of the table coordinate, exact
-//! k = min(max(t >> F, 0), K − 1)              the segment (t's integer part, clamped)
-//! f = t − (k << F)                            the position in it, in [0, 2^F] inside the table
+//! t ← min(max(t, 0), t_last)                 clamped to the table
+//! k = t >> F,  f = t − (k << F)               the segment and the position in it, f < 2^F
 //! r = A_k + ((B_k · (f >> (F − P))) >> P)     in the target's LSB: A_k the value at knot k, B_k the
 //!                                             slope per unit of t, both rounded to that LSB
 //! ```
 //!
-//! saturated, as the float map is, to `r_min` below `t = 0` and `r_max` above `t_max = K << F`, with
-//! the flag saying so. Everything is shifts, adds and 32-bit multiplies; the saturation and the clamp
-//! are sign masks (`x >> 31`), not branches, so every accepted sample runs the same instructions.
+//! with `t` first clamped to the table, `[0, t_last = (K << F) − 1]`: outside it the estimate is the
+//! table's first or last value (the learning range's ends, to within the bound) and the flag says it
+//! saturated, as the float map's does. Everything is shifts, adds and 32-bit multiplies; the clamp is
+//! sign masks (`x >> 31`), not branches, so every accepted sample runs the same instructions.
 //! How far `r` may be from the f64 map (gain rounding times the inputs' range, the `P`-bit position,
 //! the rounded table, plus the table's own proven distance to `Γ⁻¹`) is proven on the host and stated
 //! in each generated design.
@@ -40,12 +41,8 @@ pub struct FixedTable<'a> {
     pub dropped_bits: u32,
     /// `P`: bits of the position the slope is multiplied by.
     pub product_bits: u32,
-    /// `K << F`: above it the estimate saturates high.
-    pub t_max: i32,
-    /// The estimate below `t = 0`, in the target's LSB.
-    pub r_min: i32,
-    /// The estimate above `t_max`, in the target's LSB.
-    pub r_max: i32,
+    /// `(K << F) − 1`, the last `t` of the table: from `K << F` on, the estimate saturates high.
+    pub t_last: i32,
 }
 
 /// One target's map in integers: `t = offset + Σ_i gains_i raw_i`, `r = table(t)`.
@@ -60,41 +57,30 @@ pub struct FixedMap<'a> {
 }
 
 impl FixedTable<'_> {
-    /// `r(t)` in the target's LSB, saturated outside `[0, t_max]` (which the flag says), by sign masks
-    /// rather than branches. Wrapping arithmetic: the host's proof keeps every in-range sample from
-    /// wrapping, and no input can make this panic.
+    /// `r(t)` in the target's LSB: `t` is clamped to `[0, t_last]` by sign masks (no branch), so a
+    /// saturated estimate is the table's first or last value, which the flag says. Wrapping
+    /// arithmetic: the host's proof keeps every in-range sample from wrapping, and no input can make
+    /// this panic.
     #[inline(always)]
     #[must_use]
     pub fn evaluate(&self, t: i32) -> Estimate<i32> {
-        let last = (self.segments.len() as i32).wrapping_sub(1);
-        self.evaluate_with(t, last)
-    }
-
-    /// [`FixedTable::evaluate`] with `K − 1` given (generated code writes it as a constant).
-    #[inline(always)]
-    #[must_use]
-    pub fn evaluate_with(&self, t: i32, last: i32) -> Estimate<i32> {
         let low = t >> 31; // −1 when t < 0
-        let high = self.t_max.wrapping_sub(t) >> 31; // −1 when t > t_max
-        let k = (t >> self.fraction_bits) & !low;
-        let over = last.wrapping_sub(k);
-        let k = k.wrapping_add(over & (over >> 31)); // min(k, K − 1)
+        let high = self.t_last.wrapping_sub(t) >> 31 & !low; // −1 when t > t_last (and not low)
+        let t = t & !low;
+        let t = t ^ ((t ^ self.t_last) & high);
+        let k = t >> self.fraction_bits; // in [0, K − 1]
         let position = t.wrapping_sub(k << self.fraction_bits) >> self.dropped_bits;
-        // `k` is in [0, K − 1] here; `get` keeps a panic path out regardless.
-        let [a, b] = self.segments.get(k as usize).copied().unwrap_or([self.r_min, 0]);
-        let inside = a.wrapping_add(b.wrapping_mul(position) >> self.product_bits);
-        let edge = self.r_max ^ ((self.r_min ^ self.r_max) & low);
-        let outside = low | high;
+        // `get` cannot fail for `t` in [0, t_last]; it keeps a panic path out regardless.
+        let [a, b] = self.segments.get(k as usize).copied().unwrap_or([0, 0]);
         Estimate {
-            value: inside ^ ((inside ^ edge) & outside),
+            value: a.wrapping_add(b.wrapping_mul(position) >> self.product_bits),
             saturation: flag(low, high),
         }
     }
 }
 
-/// The saturation of masks `low` and `high` (each 0 or −1), by a table lookup rather than a branch.
-/// Both are −1 only for a `t` so far below 0 that `t_max − t` wraps (outside the proven range): low,
-/// as the value is.
+/// The saturation of masks `low` and `high` (each 0 or −1, not both), by a table lookup rather than
+/// a branch.
 #[inline(always)]
 #[must_use]
 pub fn flag(low: i32, high: i32) -> Saturation {
@@ -122,14 +108,14 @@ impl FixedMap<'_> {
     }
 }
 
-/// `|offset| + Σ_i |gains_i| M_i + t_max` with `M_i` the largest raw magnitude of regressor entry
+/// `|offset| + Σ_i |gains_i| M_i + t_max` (`t_max = t_last + 1`) with `M_i` the largest raw magnitude of regressor entry
 /// `i` (its signal's range; the regressor is `N` samples of `ranges.len()` signals, outputs and then
 /// inputs as [`FixedDesign`] lays them out, `outputs` of them outputs): no partial sum, product or
-/// `t_max − t` of [`FixedMap::estimate`] can overflow 32 bits while this is at most `2³¹ − 1`. A
+/// `t_last − t` of [`FixedMap::estimate`] can overflow 32 bits while this is at most `2³¹ − 1`. A
 /// `const fn`, so that a generated design checks its own proof at compile time.
 #[must_use]
 pub const fn reach(map: &FixedMap<'_>, horizon: usize, outputs: &[[i32; 2]], inputs: &[[i32; 2]]) -> i64 {
-    let mut sum = (map.offset as i64).abs() + map.table.t_max as i64;
+    let mut sum = (map.offset as i64).abs() + map.table.t_last as i64 + 1;
     let mut i = 0;
     while i < map.gains.len() {
         let range = if i < horizon * outputs.len() {
@@ -288,9 +274,7 @@ mod tests {
         fraction_bits: 8,
         dropped_bits: 4,
         product_bits: 4,
-        t_max: 3 << 8,
-        r_min: 0,
-        r_max: 9 << 6,
+        t_last: (3 << 8) - 1,
     };
 
     /// The chord of t² through the knots, in exact arithmetic (the table's closed form).
@@ -300,26 +284,29 @@ mod tests {
     }
 
     #[test]
-    fn hits_the_knots_and_saturates_with_the_flag() {
-        for k in 0..=3 {
+    fn hits_the_knots_and_saturates_at_the_tables_ends_with_the_flag() {
+        for k in 0..3 {
             let e = SQUARE.evaluate(k << 8);
             assert_eq!((e.value, e.saturation), (k * k * 64, Saturation::Inside), "k = {k}");
         }
-        assert_eq!(
-            (SQUARE.evaluate(-1).value, SQUARE.evaluate(-1).saturation),
-            (0, Saturation::Low)
-        );
-        assert_eq!(SQUARE.evaluate(i32::MIN).saturation, Saturation::Low);
-        let above = SQUARE.evaluate((3 << 8) + 1);
-        assert_eq!((above.value, above.saturation), (9 << 6, Saturation::High));
-        assert_eq!(SQUARE.evaluate(i32::MAX).saturation, Saturation::High);
+        // The last t of the table: position 255 >> 4 = 15 of 16, so 256 + 320 · 15 / 16 = 556.
+        let last = SQUARE.evaluate((3 << 8) - 1);
+        assert_eq!((last.value, last.saturation), (556, Saturation::Inside));
+        for t in [-1, -(1 << 20), i32::MIN] {
+            let e = SQUARE.evaluate(t);
+            assert_eq!((e.value, e.saturation), (0, Saturation::Low), "t = {t}");
+        }
+        for t in [3 << 8, (3 << 8) + 1, i32::MAX] {
+            let e = SQUARE.evaluate(t);
+            assert_eq!((e.value, e.saturation), (556, Saturation::High), "t = {t}");
+        }
     }
 
     proptest! {
         /// Inside, the result is the chord at t truncated to P = 4 bits of position, then floored to
         /// the LSB: within one LSB plus the slope times 2^-P of the exact chord, never above it.
         #[test]
-        fn is_the_chord_within_the_truncations(t in 0i32..=(3 << 8)) {
+        fn is_the_chord_within_the_truncations(t in 0i32..(3 << 8)) {
             let exact = chord(f64::from(t) / 256.0) * 64.0;
             let got = f64::from(SQUARE.evaluate(t).value);
             prop_assert!(got <= exact + 1e-9 && got >= exact - 1.0 - 320.0 / 16.0, "t = {t}: {got} vs {exact}");
@@ -355,9 +342,7 @@ mod tests {
                 fraction_bits: 8,
                 dropped_bits: 0,
                 product_bits: 8,
-                t_max: 256,
-                r_min: 0,
-                r_max: 100,
+                t_last: 255,
             },
         }];
         const OUTPUT_RANGES: [[i32; 2]; 1] = [[0, 1]];

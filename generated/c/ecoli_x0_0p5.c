@@ -344,13 +344,9 @@ static const int32_t FIXED_SEGMENTS_1[1][2] = {
  * and IAR): checked at compile time. */
 typedef char fixed_shifts_are_arithmetic[((-8) >> 1) == -4 ? 1 : -1];
 
-/* a - b and a * b modulo 2^32 (no signed overflow, which C leaves undefined). */
+/* a - b modulo 2^32 (no signed overflow, which C leaves undefined): t_last - t for any t. */
 static int32_t wrapping_sub(int32_t a, int32_t b) {
     return (int32_t)((uint32_t)a - (uint32_t)b);
-}
-
-static int32_t wrapping_mul(int32_t a, int32_t b) {
-    return (int32_t)((uint32_t)a * (uint32_t)b);
 }
 
 /* min <= v <= max, as one unsigned comparison. */
@@ -358,24 +354,20 @@ static int in_range(int32_t v, int32_t min, int32_t max) {
     return (uint32_t)v - (uint32_t)min <= (uint32_t)max - (uint32_t)min;
 }
 
-/* firmware::fixed::FixedTable::evaluate_with: the segment and the position in it by shifts, the
- * saturation by sign masks (no branch: the same instructions whatever t is). */
-static void fixed_evaluate(int32_t t, const int32_t segments[][2], int32_t last, unsigned f, unsigned dropped,
-                           unsigned p, int32_t t_max, int32_t r_min, int32_t r_max, int32_t *value,
-                           ecoli_x0_0p5_saturation *saturation) {
+/* firmware::fixed::FixedTable::evaluate: t clamped to the table [0, t_last] by sign masks (no
+ * branch: the same instructions whatever t is), then the segment and the position in it by shifts. */
+static void fixed_evaluate(int32_t t, const int32_t segments[][2], unsigned f, unsigned dropped, unsigned p,
+                           int32_t t_last, int32_t *value, ecoli_x0_0p5_saturation *saturation) {
     const int32_t low = t >> 31;
-    const int32_t high = wrapping_sub(t_max, t) >> 31;
-    int32_t k = (t >> f) & ~low;
-    const int32_t over = last - k;
+    const int32_t high = (wrapping_sub(t_last, t) >> 31) & ~low;
+    int32_t k;
     int32_t position;
-    int32_t inside;
-    int32_t edge;
-    k += over & (over >> 31);
-    position = wrapping_sub(t, (int32_t)((uint32_t)k << f)) >> dropped;
-    inside = (int32_t)((uint32_t)segments[k][0] + (uint32_t)(wrapping_mul(segments[k][1], position) >> p));
-    edge = r_max ^ ((r_min ^ r_max) & low);
-    *value = inside ^ ((inside ^ edge) & (low | high));
-    *saturation = (ecoli_x0_0p5_saturation)((unsigned)(low & 1) | ((unsigned)(high & ~low) & 2u));
+    t &= ~low;
+    t ^= (t ^ t_last) & high;
+    k = t >> f;
+    position = (t - (int32_t)((uint32_t)k << f)) >> dropped;
+    *value = segments[k][0] + ((segments[k][1] * position) >> p);
+    *saturation = (ecoli_x0_0p5_saturation)((unsigned)(low & 1) | ((unsigned)high & 2u));
 }
 
 void ecoli_x0_0p5_fixed_init(ecoli_x0_0p5_fixed *observer) {
@@ -409,22 +401,40 @@ ecoli_x0_0p5_status ecoli_x0_0p5_fixed_estimate(const ecoli_x0_0p5_fixed *observ
     if (observer->filled < ECOLI_X0_0P5_HORIZON) {
         return ECOLI_X0_0P5_NO_ESTIMATE_YET;
     }
-    const int32_t t_0 = 28051925
-        + FIXED_GAINS_0[0] * observer->y[next + 2u][0]
-        + FIXED_GAINS_0[1] * observer->y[next + 2u][1]
-        + FIXED_GAINS_0[2] * observer->y[next + 1u][0]
-        + FIXED_GAINS_0[3] * observer->y[next + 1u][1]
-        + FIXED_GAINS_0[4] * observer->y[next + 0u][0]
-        + FIXED_GAINS_0[5] * observer->y[next + 0u][1];
-    const int32_t t_1 = 2976475
-        + FIXED_GAINS_1[0] * observer->y[next + 2u][0]
-        + FIXED_GAINS_1[1] * observer->y[next + 2u][1]
-        + FIXED_GAINS_1[2] * observer->y[next + 1u][0]
-        + FIXED_GAINS_1[3] * observer->y[next + 1u][1]
-        + FIXED_GAINS_1[4] * observer->y[next + 0u][0]
-        + FIXED_GAINS_1[5] * observer->y[next + 0u][1];
-    fixed_evaluate(t_0, FIXED_SEGMENTS_0, 87, 20u, 5u, 15u, 92274688, 0, 3739582, &values[0], &saturation[0]);
-    fixed_evaluate(t_1, FIXED_SEGMENTS_1, 0, 27u, 12u, 15u, 134217728, 0, 57058, &values[1], &saturation[1]);
+    int32_t t_0 = 28051925;
+    int32_t t_1 = 2976475;
+    {
+        const int32_t z = observer->y[next + 2u][0];
+        t_0 += FIXED_GAINS_0[0] * z;
+        t_1 += FIXED_GAINS_1[0] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 2u][1];
+        t_0 += FIXED_GAINS_0[1] * z;
+        t_1 += FIXED_GAINS_1[1] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 1u][0];
+        t_0 += FIXED_GAINS_0[2] * z;
+        t_1 += FIXED_GAINS_1[2] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 1u][1];
+        t_0 += FIXED_GAINS_0[3] * z;
+        t_1 += FIXED_GAINS_1[3] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 0u][0];
+        t_0 += FIXED_GAINS_0[4] * z;
+        t_1 += FIXED_GAINS_1[4] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 0u][1];
+        t_0 += FIXED_GAINS_0[5] * z;
+        t_1 += FIXED_GAINS_1[5] * z;
+    }
+    fixed_evaluate(t_0, FIXED_SEGMENTS_0, 20u, 5u, 15u, 92274687, &values[0], &saturation[0]);
+    fixed_evaluate(t_1, FIXED_SEGMENTS_1, 27u, 12u, 15u, 134217727, &values[1], &saturation[1]);
     return ECOLI_X0_0P5_OK;
 }
 

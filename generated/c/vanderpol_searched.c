@@ -179,13 +179,9 @@ static const int32_t FIXED_SEGMENTS_1[1][2] = {
  * and IAR): checked at compile time. */
 typedef char fixed_shifts_are_arithmetic[((-8) >> 1) == -4 ? 1 : -1];
 
-/* a - b and a * b modulo 2^32 (no signed overflow, which C leaves undefined). */
+/* a - b modulo 2^32 (no signed overflow, which C leaves undefined): t_last - t for any t. */
 static int32_t wrapping_sub(int32_t a, int32_t b) {
     return (int32_t)((uint32_t)a - (uint32_t)b);
-}
-
-static int32_t wrapping_mul(int32_t a, int32_t b) {
-    return (int32_t)((uint32_t)a * (uint32_t)b);
 }
 
 /* min <= v <= max, as one unsigned comparison. */
@@ -193,24 +189,20 @@ static int in_range(int32_t v, int32_t min, int32_t max) {
     return (uint32_t)v - (uint32_t)min <= (uint32_t)max - (uint32_t)min;
 }
 
-/* firmware::fixed::FixedTable::evaluate_with: the segment and the position in it by shifts, the
- * saturation by sign masks (no branch: the same instructions whatever t is). */
-static void fixed_evaluate(int32_t t, const int32_t segments[][2], int32_t last, unsigned f, unsigned dropped,
-                           unsigned p, int32_t t_max, int32_t r_min, int32_t r_max, int32_t *value,
-                           vanderpol_searched_saturation *saturation) {
+/* firmware::fixed::FixedTable::evaluate: t clamped to the table [0, t_last] by sign masks (no
+ * branch: the same instructions whatever t is), then the segment and the position in it by shifts. */
+static void fixed_evaluate(int32_t t, const int32_t segments[][2], unsigned f, unsigned dropped, unsigned p,
+                           int32_t t_last, int32_t *value, vanderpol_searched_saturation *saturation) {
     const int32_t low = t >> 31;
-    const int32_t high = wrapping_sub(t_max, t) >> 31;
-    int32_t k = (t >> f) & ~low;
-    const int32_t over = last - k;
+    const int32_t high = (wrapping_sub(t_last, t) >> 31) & ~low;
+    int32_t k;
     int32_t position;
-    int32_t inside;
-    int32_t edge;
-    k += over & (over >> 31);
-    position = wrapping_sub(t, (int32_t)((uint32_t)k << f)) >> dropped;
-    inside = (int32_t)((uint32_t)segments[k][0] + (uint32_t)(wrapping_mul(segments[k][1], position) >> p));
-    edge = r_max ^ ((r_min ^ r_max) & low);
-    *value = inside ^ ((inside ^ edge) & (low | high));
-    *saturation = (vanderpol_searched_saturation)((unsigned)(low & 1) | ((unsigned)(high & ~low) & 2u));
+    t &= ~low;
+    t ^= (t ^ t_last) & high;
+    k = t >> f;
+    position = (t - (int32_t)((uint32_t)k << f)) >> dropped;
+    *value = segments[k][0] + ((segments[k][1] * position) >> p);
+    *saturation = (vanderpol_searched_saturation)((unsigned)(low & 1) | ((unsigned)high & 2u));
 }
 
 void vanderpol_searched_fixed_init(vanderpol_searched_fixed *observer) {
@@ -243,42 +235,90 @@ vanderpol_searched_status vanderpol_searched_fixed_estimate(const vanderpol_sear
     if (observer->filled < VANDERPOL_SEARCHED_HORIZON) {
         return VANDERPOL_SEARCHED_NO_ESTIMATE_YET;
     }
-    const int32_t t_0 = 134309904
-        + FIXED_GAINS_0[0] * observer->y[next + 15u][0]
-        + FIXED_GAINS_0[1] * observer->y[next + 14u][0]
-        + FIXED_GAINS_0[2] * observer->y[next + 13u][0]
-        + FIXED_GAINS_0[3] * observer->y[next + 12u][0]
-        + FIXED_GAINS_0[4] * observer->y[next + 11u][0]
-        + FIXED_GAINS_0[5] * observer->y[next + 10u][0]
-        + FIXED_GAINS_0[6] * observer->y[next + 9u][0]
-        + FIXED_GAINS_0[7] * observer->y[next + 8u][0]
-        + FIXED_GAINS_0[8] * observer->y[next + 7u][0]
-        + FIXED_GAINS_0[9] * observer->y[next + 6u][0]
-        + FIXED_GAINS_0[10] * observer->y[next + 5u][0]
-        + FIXED_GAINS_0[11] * observer->y[next + 4u][0]
-        + FIXED_GAINS_0[12] * observer->y[next + 3u][0]
-        + FIXED_GAINS_0[13] * observer->y[next + 2u][0]
-        + FIXED_GAINS_0[14] * observer->y[next + 1u][0]
-        + FIXED_GAINS_0[15] * observer->y[next + 0u][0];
-    const int32_t t_1 = 268551496
-        + FIXED_GAINS_1[0] * observer->y[next + 15u][0]
-        + FIXED_GAINS_1[1] * observer->y[next + 14u][0]
-        + FIXED_GAINS_1[2] * observer->y[next + 13u][0]
-        + FIXED_GAINS_1[3] * observer->y[next + 12u][0]
-        + FIXED_GAINS_1[4] * observer->y[next + 11u][0]
-        + FIXED_GAINS_1[5] * observer->y[next + 10u][0]
-        + FIXED_GAINS_1[6] * observer->y[next + 9u][0]
-        + FIXED_GAINS_1[7] * observer->y[next + 8u][0]
-        + FIXED_GAINS_1[8] * observer->y[next + 7u][0]
-        + FIXED_GAINS_1[9] * observer->y[next + 6u][0]
-        + FIXED_GAINS_1[10] * observer->y[next + 5u][0]
-        + FIXED_GAINS_1[11] * observer->y[next + 4u][0]
-        + FIXED_GAINS_1[12] * observer->y[next + 3u][0]
-        + FIXED_GAINS_1[13] * observer->y[next + 2u][0]
-        + FIXED_GAINS_1[14] * observer->y[next + 1u][0]
-        + FIXED_GAINS_1[15] * observer->y[next + 0u][0];
-    fixed_evaluate(t_0, FIXED_SEGMENTS_0, 0, 28u, 13u, 15u, 268435456, -16889, 16889, &values[0], &saturation[0]);
-    fixed_evaluate(t_1, FIXED_SEGMENTS_1, 0, 29u, 14u, 15u, 536870912, -19155, 19155, &values[1], &saturation[1]);
+    int32_t t_0 = 134309904;
+    int32_t t_1 = 268551496;
+    {
+        const int32_t z = observer->y[next + 15u][0];
+        t_0 += FIXED_GAINS_0[0] * z;
+        t_1 += FIXED_GAINS_1[0] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 14u][0];
+        t_0 += FIXED_GAINS_0[1] * z;
+        t_1 += FIXED_GAINS_1[1] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 13u][0];
+        t_0 += FIXED_GAINS_0[2] * z;
+        t_1 += FIXED_GAINS_1[2] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 12u][0];
+        t_0 += FIXED_GAINS_0[3] * z;
+        t_1 += FIXED_GAINS_1[3] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 11u][0];
+        t_0 += FIXED_GAINS_0[4] * z;
+        t_1 += FIXED_GAINS_1[4] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 10u][0];
+        t_0 += FIXED_GAINS_0[5] * z;
+        t_1 += FIXED_GAINS_1[5] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 9u][0];
+        t_0 += FIXED_GAINS_0[6] * z;
+        t_1 += FIXED_GAINS_1[6] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 8u][0];
+        t_0 += FIXED_GAINS_0[7] * z;
+        t_1 += FIXED_GAINS_1[7] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 7u][0];
+        t_0 += FIXED_GAINS_0[8] * z;
+        t_1 += FIXED_GAINS_1[8] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 6u][0];
+        t_0 += FIXED_GAINS_0[9] * z;
+        t_1 += FIXED_GAINS_1[9] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 5u][0];
+        t_0 += FIXED_GAINS_0[10] * z;
+        t_1 += FIXED_GAINS_1[10] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 4u][0];
+        t_0 += FIXED_GAINS_0[11] * z;
+        t_1 += FIXED_GAINS_1[11] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 3u][0];
+        t_0 += FIXED_GAINS_0[12] * z;
+        t_1 += FIXED_GAINS_1[12] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 2u][0];
+        t_0 += FIXED_GAINS_0[13] * z;
+        t_1 += FIXED_GAINS_1[13] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 1u][0];
+        t_0 += FIXED_GAINS_0[14] * z;
+        t_1 += FIXED_GAINS_1[14] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 0u][0];
+        t_0 += FIXED_GAINS_0[15] * z;
+        t_1 += FIXED_GAINS_1[15] * z;
+    }
+    fixed_evaluate(t_0, FIXED_SEGMENTS_0, 28u, 13u, 15u, 268435455, &values[0], &saturation[0]);
+    fixed_evaluate(t_1, FIXED_SEGMENTS_1, 29u, 14u, 15u, 536870911, &values[1], &saturation[1]);
     return VANDERPOL_SEARCHED_OK;
 }
 

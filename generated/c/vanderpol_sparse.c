@@ -161,13 +161,9 @@ static const int32_t FIXED_SEGMENTS_1[1][2] = {
  * and IAR): checked at compile time. */
 typedef char fixed_shifts_are_arithmetic[((-8) >> 1) == -4 ? 1 : -1];
 
-/* a - b and a * b modulo 2^32 (no signed overflow, which C leaves undefined). */
+/* a - b modulo 2^32 (no signed overflow, which C leaves undefined): t_last - t for any t. */
 static int32_t wrapping_sub(int32_t a, int32_t b) {
     return (int32_t)((uint32_t)a - (uint32_t)b);
-}
-
-static int32_t wrapping_mul(int32_t a, int32_t b) {
-    return (int32_t)((uint32_t)a * (uint32_t)b);
 }
 
 /* min <= v <= max, as one unsigned comparison. */
@@ -175,24 +171,20 @@ static int in_range(int32_t v, int32_t min, int32_t max) {
     return (uint32_t)v - (uint32_t)min <= (uint32_t)max - (uint32_t)min;
 }
 
-/* firmware::fixed::FixedTable::evaluate_with: the segment and the position in it by shifts, the
- * saturation by sign masks (no branch: the same instructions whatever t is). */
-static void fixed_evaluate(int32_t t, const int32_t segments[][2], int32_t last, unsigned f, unsigned dropped,
-                           unsigned p, int32_t t_max, int32_t r_min, int32_t r_max, int32_t *value,
-                           vanderpol_sparse_saturation *saturation) {
+/* firmware::fixed::FixedTable::evaluate: t clamped to the table [0, t_last] by sign masks (no
+ * branch: the same instructions whatever t is), then the segment and the position in it by shifts. */
+static void fixed_evaluate(int32_t t, const int32_t segments[][2], unsigned f, unsigned dropped, unsigned p,
+                           int32_t t_last, int32_t *value, vanderpol_sparse_saturation *saturation) {
     const int32_t low = t >> 31;
-    const int32_t high = wrapping_sub(t_max, t) >> 31;
-    int32_t k = (t >> f) & ~low;
-    const int32_t over = last - k;
+    const int32_t high = (wrapping_sub(t_last, t) >> 31) & ~low;
+    int32_t k;
     int32_t position;
-    int32_t inside;
-    int32_t edge;
-    k += over & (over >> 31);
-    position = wrapping_sub(t, (int32_t)((uint32_t)k << f)) >> dropped;
-    inside = (int32_t)((uint32_t)segments[k][0] + (uint32_t)(wrapping_mul(segments[k][1], position) >> p));
-    edge = r_max ^ ((r_min ^ r_max) & low);
-    *value = inside ^ ((inside ^ edge) & (low | high));
-    *saturation = (vanderpol_sparse_saturation)((unsigned)(low & 1) | ((unsigned)(high & ~low) & 2u));
+    t &= ~low;
+    t ^= (t ^ t_last) & high;
+    k = t >> f;
+    position = (t - (int32_t)((uint32_t)k << f)) >> dropped;
+    *value = segments[k][0] + ((segments[k][1] * position) >> p);
+    *saturation = (vanderpol_sparse_saturation)((unsigned)(low & 1) | ((unsigned)high & 2u));
 }
 
 void vanderpol_sparse_fixed_init(vanderpol_sparse_fixed *observer) {
@@ -225,22 +217,58 @@ vanderpol_sparse_status vanderpol_sparse_fixed_estimate(const vanderpol_sparse_f
     if (observer->filled < VANDERPOL_SPARSE_HORIZON) {
         return VANDERPOL_SPARSE_NO_ESTIMATE_YET;
     }
-    const int32_t t_0 = 268588758
-        + FIXED_GAINS_0[5] * observer->y[next + 13u][0]
-        + FIXED_GAINS_0[8] * observer->y[next + 10u][0]
-        + FIXED_GAINS_0[10] * observer->y[next + 8u][0]
-        + FIXED_GAINS_0[12] * observer->y[next + 6u][0]
-        + FIXED_GAINS_0[13] * observer->y[next + 5u][0]
-        + FIXED_GAINS_0[14] * observer->y[next + 4u][0];
-    const int32_t t_1 = 268644515
-        + FIXED_GAINS_1[0] * observer->y[next + 18u][0]
-        + FIXED_GAINS_1[1] * observer->y[next + 17u][0]
-        + FIXED_GAINS_1[2] * observer->y[next + 16u][0]
-        + FIXED_GAINS_1[9] * observer->y[next + 9u][0]
-        + FIXED_GAINS_1[11] * observer->y[next + 7u][0]
-        + FIXED_GAINS_1[16] * observer->y[next + 2u][0];
-    fixed_evaluate(t_0, FIXED_SEGMENTS_0, 0, 29u, 14u, 15u, 536870912, -16889, 16889, &values[0], &saturation[0]);
-    fixed_evaluate(t_1, FIXED_SEGMENTS_1, 0, 29u, 14u, 15u, 536870912, -19155, 19155, &values[1], &saturation[1]);
+    int32_t t_0 = 268588758;
+    int32_t t_1 = 268644515;
+    {
+        const int32_t z = observer->y[next + 18u][0];
+        t_1 += FIXED_GAINS_1[0] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 17u][0];
+        t_1 += FIXED_GAINS_1[1] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 16u][0];
+        t_1 += FIXED_GAINS_1[2] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 13u][0];
+        t_0 += FIXED_GAINS_0[5] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 10u][0];
+        t_0 += FIXED_GAINS_0[8] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 9u][0];
+        t_1 += FIXED_GAINS_1[9] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 8u][0];
+        t_0 += FIXED_GAINS_0[10] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 7u][0];
+        t_1 += FIXED_GAINS_1[11] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 6u][0];
+        t_0 += FIXED_GAINS_0[12] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 5u][0];
+        t_0 += FIXED_GAINS_0[13] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 4u][0];
+        t_0 += FIXED_GAINS_0[14] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 2u][0];
+        t_1 += FIXED_GAINS_1[16] * z;
+    }
+    fixed_evaluate(t_0, FIXED_SEGMENTS_0, 29u, 14u, 15u, 536870911, &values[0], &saturation[0]);
+    fixed_evaluate(t_1, FIXED_SEGMENTS_1, 29u, 14u, 15u, 536870911, &values[1], &saturation[1]);
     return VANDERPOL_SPARSE_OK;
 }
 

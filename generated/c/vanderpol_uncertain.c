@@ -378,13 +378,9 @@ static const int32_t FIXED_SEGMENTS_1[2][2] = {
  * and IAR): checked at compile time. */
 typedef char fixed_shifts_are_arithmetic[((-8) >> 1) == -4 ? 1 : -1];
 
-/* a - b and a * b modulo 2^32 (no signed overflow, which C leaves undefined). */
+/* a - b modulo 2^32 (no signed overflow, which C leaves undefined): t_last - t for any t. */
 static int32_t wrapping_sub(int32_t a, int32_t b) {
     return (int32_t)((uint32_t)a - (uint32_t)b);
-}
-
-static int32_t wrapping_mul(int32_t a, int32_t b) {
-    return (int32_t)((uint32_t)a * (uint32_t)b);
 }
 
 /* min <= v <= max, as one unsigned comparison. */
@@ -392,24 +388,20 @@ static int in_range(int32_t v, int32_t min, int32_t max) {
     return (uint32_t)v - (uint32_t)min <= (uint32_t)max - (uint32_t)min;
 }
 
-/* firmware::fixed::FixedTable::evaluate_with: the segment and the position in it by shifts, the
- * saturation by sign masks (no branch: the same instructions whatever t is). */
-static void fixed_evaluate(int32_t t, const int32_t segments[][2], int32_t last, unsigned f, unsigned dropped,
-                           unsigned p, int32_t t_max, int32_t r_min, int32_t r_max, int32_t *value,
-                           vanderpol_uncertain_saturation *saturation) {
+/* firmware::fixed::FixedTable::evaluate: t clamped to the table [0, t_last] by sign masks (no
+ * branch: the same instructions whatever t is), then the segment and the position in it by shifts. */
+static void fixed_evaluate(int32_t t, const int32_t segments[][2], unsigned f, unsigned dropped, unsigned p,
+                           int32_t t_last, int32_t *value, vanderpol_uncertain_saturation *saturation) {
     const int32_t low = t >> 31;
-    const int32_t high = wrapping_sub(t_max, t) >> 31;
-    int32_t k = (t >> f) & ~low;
-    const int32_t over = last - k;
+    const int32_t high = (wrapping_sub(t_last, t) >> 31) & ~low;
+    int32_t k;
     int32_t position;
-    int32_t inside;
-    int32_t edge;
-    k += over & (over >> 31);
-    position = wrapping_sub(t, (int32_t)((uint32_t)k << f)) >> dropped;
-    inside = (int32_t)((uint32_t)segments[k][0] + (uint32_t)(wrapping_mul(segments[k][1], position) >> p));
-    edge = r_max ^ ((r_min ^ r_max) & low);
-    *value = inside ^ ((inside ^ edge) & (low | high));
-    *saturation = (vanderpol_uncertain_saturation)((unsigned)(low & 1) | ((unsigned)(high & ~low) & 2u));
+    t &= ~low;
+    t ^= (t ^ t_last) & high;
+    k = t >> f;
+    position = (t - (int32_t)((uint32_t)k << f)) >> dropped;
+    *value = segments[k][0] + ((segments[k][1] * position) >> p);
+    *saturation = (vanderpol_uncertain_saturation)((unsigned)(low & 1) | ((unsigned)high & 2u));
 }
 
 void vanderpol_uncertain_fixed_init(vanderpol_uncertain_fixed *observer) {
@@ -442,30 +434,60 @@ vanderpol_uncertain_status vanderpol_uncertain_fixed_estimate(const vanderpol_un
     if (observer->filled < VANDERPOL_UNCERTAIN_HORIZON) {
         return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
     }
-    const int32_t t_0 = 226576983
-        + FIXED_GAINS_0[0] * observer->y[next + 9u][0]
-        + FIXED_GAINS_0[1] * observer->y[next + 8u][0]
-        + FIXED_GAINS_0[2] * observer->y[next + 7u][0]
-        + FIXED_GAINS_0[3] * observer->y[next + 6u][0]
-        + FIXED_GAINS_0[4] * observer->y[next + 5u][0]
-        + FIXED_GAINS_0[5] * observer->y[next + 4u][0]
-        + FIXED_GAINS_0[6] * observer->y[next + 3u][0]
-        + FIXED_GAINS_0[7] * observer->y[next + 2u][0]
-        + FIXED_GAINS_0[8] * observer->y[next + 1u][0]
-        + FIXED_GAINS_0[9] * observer->y[next + 0u][0];
-    const int32_t t_1 = 265011886
-        + FIXED_GAINS_1[0] * observer->y[next + 9u][0]
-        + FIXED_GAINS_1[1] * observer->y[next + 8u][0]
-        + FIXED_GAINS_1[2] * observer->y[next + 7u][0]
-        + FIXED_GAINS_1[3] * observer->y[next + 6u][0]
-        + FIXED_GAINS_1[4] * observer->y[next + 5u][0]
-        + FIXED_GAINS_1[5] * observer->y[next + 4u][0]
-        + FIXED_GAINS_1[6] * observer->y[next + 3u][0]
-        + FIXED_GAINS_1[7] * observer->y[next + 2u][0]
-        + FIXED_GAINS_1[8] * observer->y[next + 1u][0]
-        + FIXED_GAINS_1[9] * observer->y[next + 0u][0];
-    fixed_evaluate(t_0, FIXED_SEGMENTS_0, 98, 22u, 7u, 15u, 415236096, -1262855, 1234323, &values[0], &saturation[0]);
-    fixed_evaluate(t_1, FIXED_SEGMENTS_1, 1, 28u, 13u, 15u, 536870912, -38517, 39579, &values[1], &saturation[1]);
+    int32_t t_0 = 226576983;
+    int32_t t_1 = 265011886;
+    {
+        const int32_t z = observer->y[next + 9u][0];
+        t_0 += FIXED_GAINS_0[0] * z;
+        t_1 += FIXED_GAINS_1[0] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 8u][0];
+        t_0 += FIXED_GAINS_0[1] * z;
+        t_1 += FIXED_GAINS_1[1] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 7u][0];
+        t_0 += FIXED_GAINS_0[2] * z;
+        t_1 += FIXED_GAINS_1[2] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 6u][0];
+        t_0 += FIXED_GAINS_0[3] * z;
+        t_1 += FIXED_GAINS_1[3] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 5u][0];
+        t_0 += FIXED_GAINS_0[4] * z;
+        t_1 += FIXED_GAINS_1[4] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 4u][0];
+        t_0 += FIXED_GAINS_0[5] * z;
+        t_1 += FIXED_GAINS_1[5] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 3u][0];
+        t_0 += FIXED_GAINS_0[6] * z;
+        t_1 += FIXED_GAINS_1[6] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 2u][0];
+        t_0 += FIXED_GAINS_0[7] * z;
+        t_1 += FIXED_GAINS_1[7] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 1u][0];
+        t_0 += FIXED_GAINS_0[8] * z;
+        t_1 += FIXED_GAINS_1[8] * z;
+    }
+    {
+        const int32_t z = observer->y[next + 0u][0];
+        t_0 += FIXED_GAINS_0[9] * z;
+        t_1 += FIXED_GAINS_1[9] * z;
+    }
+    fixed_evaluate(t_0, FIXED_SEGMENTS_0, 22u, 7u, 15u, 415236095, &values[0], &saturation[0]);
+    fixed_evaluate(t_1, FIXED_SEGMENTS_1, 28u, 13u, 15u, 536870911, &values[1], &saturation[1]);
     return VANDERPOL_UNCERTAIN_OK;
 }
 

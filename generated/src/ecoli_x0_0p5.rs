@@ -2281,7 +2281,7 @@ const FIXED_SEGMENTS_P: [[i32; 2]; 88] = [
 
 /// `P` in integers: `t` in 2^-20, position 15 bits, LSB 2^-23. Proven: |fixed − f64 map| ≤ 3.066e-4
 /// (0.069 % of the range: the table's 4.41e-5, the gains' rounding 2.62e-4, the
-/// integer table 4.29e-7). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
+/// integer table 4.35e-7). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
 /// 1204881546 ≤ 2³¹ − 1, checked below at compile time.
 pub const FIXED_MAP_P: firmware::FixedMap<'static> = firmware::FixedMap {
     gains: &FIXED_GAINS_P,
@@ -2291,9 +2291,7 @@ pub const FIXED_MAP_P: firmware::FixedMap<'static> = firmware::FixedMap {
         fraction_bits: 20,
         dropped_bits: 5,
         product_bits: 15,
-        t_max: 92274688,
-        r_min: 0,
-        r_max: 3739582,
+        t_last: 92274687,
     },
 };
 
@@ -2329,9 +2327,7 @@ pub const FIXED_MAP_MUX: firmware::FixedMap<'static> = firmware::FixedMap {
         fraction_bits: 27,
         dropped_bits: 12,
         product_bits: 15,
-        t_max: 134217728,
-        r_min: 0,
-        r_max: 57058,
+        t_last: 134217727,
     },
 };
 
@@ -2356,29 +2352,29 @@ impl firmware::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {
 
     #[inline(always)]
     fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {
+        let t0 = FIXED_MAP_P.offset;
+        let t1 = FIXED_MAP_MUX.offset;
+        let z = w[2].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_P[0].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_MUX[0].wrapping_mul(z));
+        let z = w[2].y[1];
+        let t0 = t0.wrapping_add(FIXED_GAINS_P[1].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_MUX[1].wrapping_mul(z));
+        let z = w[1].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_P[2].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_MUX[2].wrapping_mul(z));
+        let z = w[1].y[1];
+        let t0 = t0.wrapping_add(FIXED_GAINS_P[3].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_MUX[3].wrapping_mul(z));
+        let z = w[0].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_P[4].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_MUX[4].wrapping_mul(z));
+        let z = w[0].y[1];
+        let t0 = t0.wrapping_add(FIXED_GAINS_P[5].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_MUX[5].wrapping_mul(z));
         [
-            FIXED_MAP_P.table.evaluate_with(
-                FIXED_MAP_P
-                    .offset
-                    .wrapping_add(FIXED_GAINS_P[0].wrapping_mul(w[2].y[0]))
-                    .wrapping_add(FIXED_GAINS_P[1].wrapping_mul(w[2].y[1]))
-                    .wrapping_add(FIXED_GAINS_P[2].wrapping_mul(w[1].y[0]))
-                    .wrapping_add(FIXED_GAINS_P[3].wrapping_mul(w[1].y[1]))
-                    .wrapping_add(FIXED_GAINS_P[4].wrapping_mul(w[0].y[0]))
-                    .wrapping_add(FIXED_GAINS_P[5].wrapping_mul(w[0].y[1])),
-                87,
-            ),
-            FIXED_MAP_MUX.table.evaluate_with(
-                FIXED_MAP_MUX
-                    .offset
-                    .wrapping_add(FIXED_GAINS_MUX[0].wrapping_mul(w[2].y[0]))
-                    .wrapping_add(FIXED_GAINS_MUX[1].wrapping_mul(w[2].y[1]))
-                    .wrapping_add(FIXED_GAINS_MUX[2].wrapping_mul(w[1].y[0]))
-                    .wrapping_add(FIXED_GAINS_MUX[3].wrapping_mul(w[1].y[1]))
-                    .wrapping_add(FIXED_GAINS_MUX[4].wrapping_mul(w[0].y[0]))
-                    .wrapping_add(FIXED_GAINS_MUX[5].wrapping_mul(w[0].y[1])),
-                0,
-            ),
+            FIXED_MAP_P.table.evaluate(t0),
+            FIXED_MAP_MUX.table.evaluate(t1),
         ]
     }
 }

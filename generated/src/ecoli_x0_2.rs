@@ -2651,9 +2651,7 @@ pub const FIXED_MAP_P: firmware::FixedMap<'static> = firmware::FixedMap {
         fraction_bits: 27,
         dropped_bits: 12,
         product_bits: 15,
-        t_max: 268435456,
-        r_min: 0,
-        r_max: 92776,
+        t_last: 268435455,
     },
 };
 
@@ -3211,7 +3209,7 @@ const FIXED_SEGMENTS_MUX: [[i32; 2]; 533] = [
 
 /// `muX` in integers: `t` in 2^-18, position 15 bits, LSB 2^-24. Proven: |fixed − f64 map| ≤ 3.651e-4
 /// (0.040 % of the range: the table's 9.02e-5, the gains' rounding 2.75e-4, the
-/// integer table 1.83e-7). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
+/// integer table 1.91e-7). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
 /// 1112555970 ≤ 2³¹ − 1, checked below at compile time.
 pub const FIXED_MAP_MUX: firmware::FixedMap<'static> = firmware::FixedMap {
     gains: &FIXED_GAINS_MUX,
@@ -3221,9 +3219,7 @@ pub const FIXED_MAP_MUX: firmware::FixedMap<'static> = firmware::FixedMap {
         fraction_bits: 18,
         dropped_bits: 3,
         product_bits: 15,
-        t_max: 139722752,
-        r_min: 0,
-        r_max: 15245077,
+        t_last: 139722751,
     },
 };
 
@@ -3248,29 +3244,29 @@ impl firmware::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {
 
     #[inline(always)]
     fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {
+        let t0 = FIXED_MAP_P.offset;
+        let t1 = FIXED_MAP_MUX.offset;
+        let z = w[2].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_P[0].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_MUX[0].wrapping_mul(z));
+        let z = w[2].y[1];
+        let t0 = t0.wrapping_add(FIXED_GAINS_P[1].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_MUX[1].wrapping_mul(z));
+        let z = w[1].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_P[2].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_MUX[2].wrapping_mul(z));
+        let z = w[1].y[1];
+        let t0 = t0.wrapping_add(FIXED_GAINS_P[3].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_MUX[3].wrapping_mul(z));
+        let z = w[0].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_P[4].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_MUX[4].wrapping_mul(z));
+        let z = w[0].y[1];
+        let t0 = t0.wrapping_add(FIXED_GAINS_P[5].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_MUX[5].wrapping_mul(z));
         [
-            FIXED_MAP_P.table.evaluate_with(
-                FIXED_MAP_P
-                    .offset
-                    .wrapping_add(FIXED_GAINS_P[0].wrapping_mul(w[2].y[0]))
-                    .wrapping_add(FIXED_GAINS_P[1].wrapping_mul(w[2].y[1]))
-                    .wrapping_add(FIXED_GAINS_P[2].wrapping_mul(w[1].y[0]))
-                    .wrapping_add(FIXED_GAINS_P[3].wrapping_mul(w[1].y[1]))
-                    .wrapping_add(FIXED_GAINS_P[4].wrapping_mul(w[0].y[0]))
-                    .wrapping_add(FIXED_GAINS_P[5].wrapping_mul(w[0].y[1])),
-                1,
-            ),
-            FIXED_MAP_MUX.table.evaluate_with(
-                FIXED_MAP_MUX
-                    .offset
-                    .wrapping_add(FIXED_GAINS_MUX[0].wrapping_mul(w[2].y[0]))
-                    .wrapping_add(FIXED_GAINS_MUX[1].wrapping_mul(w[2].y[1]))
-                    .wrapping_add(FIXED_GAINS_MUX[2].wrapping_mul(w[1].y[0]))
-                    .wrapping_add(FIXED_GAINS_MUX[3].wrapping_mul(w[1].y[1]))
-                    .wrapping_add(FIXED_GAINS_MUX[4].wrapping_mul(w[0].y[0]))
-                    .wrapping_add(FIXED_GAINS_MUX[5].wrapping_mul(w[0].y[1])),
-                532,
-            ),
+            FIXED_MAP_P.table.evaluate(t0),
+            FIXED_MAP_MUX.table.evaluate(t1),
         ]
     }
 }

@@ -2408,7 +2408,7 @@ const FIXED_SEGMENTS_H1: [[i32; 2]; 194] = [
 
 /// `h1` in integers: `t` in 2^-19, position 15 bits, LSB 2^-19. Proven: |fixed − f64 map| ≤ 4.159e-2
 /// (0.190 % of the range: the table's 2.18e-3, the gains' rounding 3.94e-2, the
-/// integer table 7.59e-6). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
+/// integer table 7.83e-6). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
 /// 1172455080 ≤ 2³¹ − 1, checked below at compile time.
 pub const FIXED_MAP_H1: firmware::FixedMap<'static> = firmware::FixedMap {
     gains: &FIXED_GAINS_H1,
@@ -2418,9 +2418,7 @@ pub const FIXED_MAP_H1: firmware::FixedMap<'static> = firmware::FixedMap {
         fraction_bits: 19,
         dropped_bits: 4,
         product_bits: 15,
-        t_max: 101711872,
-        r_min: 2255041,
-        r_max: 13739712,
+        t_last: 101711871,
     },
 };
 
@@ -2645,7 +2643,7 @@ const FIXED_SEGMENTS_H2: [[i32; 2]; 186] = [
 
 /// `h2` in integers: `t` in 2^-20, position 15 bits, LSB 2^-19. Proven: |fixed − f64 map| ≤ 2.051e-2
 /// (0.101 % of the range: the table's 2.02e-3, the gains' rounding 1.85e-2, the
-/// integer table 7.16e-6). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
+/// integer table 7.27e-6). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
 /// 1084179881 ≤ 2³¹ − 1, checked below at compile time.
 pub const FIXED_MAP_H2: firmware::FixedMap<'static> = firmware::FixedMap {
     gains: &FIXED_GAINS_H2,
@@ -2655,9 +2653,7 @@ pub const FIXED_MAP_H2: firmware::FixedMap<'static> = firmware::FixedMap {
         fraction_bits: 20,
         dropped_bits: 5,
         product_bits: 15,
-        t_max: 195035136,
-        r_min: 2472357,
-        r_max: 13108158,
+        t_last: 195035135,
     },
 };
 
@@ -2681,57 +2677,71 @@ impl firmware::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {
 
     #[inline(always)]
     fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {
+        let t0 = FIXED_MAP_H1.offset;
+        let t1 = FIXED_MAP_H2.offset;
+        let z = w[9].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[0].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[0].wrapping_mul(z));
+        let z = w[8].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[1].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[1].wrapping_mul(z));
+        let z = w[7].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[2].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[2].wrapping_mul(z));
+        let z = w[6].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[3].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[3].wrapping_mul(z));
+        let z = w[5].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[4].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[4].wrapping_mul(z));
+        let z = w[4].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[5].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[5].wrapping_mul(z));
+        let z = w[3].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[6].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[6].wrapping_mul(z));
+        let z = w[2].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[7].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[7].wrapping_mul(z));
+        let z = w[1].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[8].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[8].wrapping_mul(z));
+        let z = w[0].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[9].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[9].wrapping_mul(z));
+        let z = w[9].u[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[10].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[10].wrapping_mul(z));
+        let z = w[8].u[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[11].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[11].wrapping_mul(z));
+        let z = w[7].u[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[12].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[12].wrapping_mul(z));
+        let z = w[6].u[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[13].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[13].wrapping_mul(z));
+        let z = w[5].u[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[14].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[14].wrapping_mul(z));
+        let z = w[4].u[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[15].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[15].wrapping_mul(z));
+        let z = w[3].u[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[16].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[16].wrapping_mul(z));
+        let z = w[2].u[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[17].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[17].wrapping_mul(z));
+        let z = w[1].u[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[18].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[18].wrapping_mul(z));
+        let z = w[0].u[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_H1[19].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_H2[19].wrapping_mul(z));
         [
-            FIXED_MAP_H1.table.evaluate_with(
-                FIXED_MAP_H1
-                    .offset
-                    .wrapping_add(FIXED_GAINS_H1[0].wrapping_mul(w[9].y[0]))
-                    .wrapping_add(FIXED_GAINS_H1[1].wrapping_mul(w[8].y[0]))
-                    .wrapping_add(FIXED_GAINS_H1[2].wrapping_mul(w[7].y[0]))
-                    .wrapping_add(FIXED_GAINS_H1[3].wrapping_mul(w[6].y[0]))
-                    .wrapping_add(FIXED_GAINS_H1[4].wrapping_mul(w[5].y[0]))
-                    .wrapping_add(FIXED_GAINS_H1[5].wrapping_mul(w[4].y[0]))
-                    .wrapping_add(FIXED_GAINS_H1[6].wrapping_mul(w[3].y[0]))
-                    .wrapping_add(FIXED_GAINS_H1[7].wrapping_mul(w[2].y[0]))
-                    .wrapping_add(FIXED_GAINS_H1[8].wrapping_mul(w[1].y[0]))
-                    .wrapping_add(FIXED_GAINS_H1[9].wrapping_mul(w[0].y[0]))
-                    .wrapping_add(FIXED_GAINS_H1[10].wrapping_mul(w[9].u[0]))
-                    .wrapping_add(FIXED_GAINS_H1[11].wrapping_mul(w[8].u[0]))
-                    .wrapping_add(FIXED_GAINS_H1[12].wrapping_mul(w[7].u[0]))
-                    .wrapping_add(FIXED_GAINS_H1[13].wrapping_mul(w[6].u[0]))
-                    .wrapping_add(FIXED_GAINS_H1[14].wrapping_mul(w[5].u[0]))
-                    .wrapping_add(FIXED_GAINS_H1[15].wrapping_mul(w[4].u[0]))
-                    .wrapping_add(FIXED_GAINS_H1[16].wrapping_mul(w[3].u[0]))
-                    .wrapping_add(FIXED_GAINS_H1[17].wrapping_mul(w[2].u[0]))
-                    .wrapping_add(FIXED_GAINS_H1[18].wrapping_mul(w[1].u[0]))
-                    .wrapping_add(FIXED_GAINS_H1[19].wrapping_mul(w[0].u[0])),
-                193,
-            ),
-            FIXED_MAP_H2.table.evaluate_with(
-                FIXED_MAP_H2
-                    .offset
-                    .wrapping_add(FIXED_GAINS_H2[0].wrapping_mul(w[9].y[0]))
-                    .wrapping_add(FIXED_GAINS_H2[1].wrapping_mul(w[8].y[0]))
-                    .wrapping_add(FIXED_GAINS_H2[2].wrapping_mul(w[7].y[0]))
-                    .wrapping_add(FIXED_GAINS_H2[3].wrapping_mul(w[6].y[0]))
-                    .wrapping_add(FIXED_GAINS_H2[4].wrapping_mul(w[5].y[0]))
-                    .wrapping_add(FIXED_GAINS_H2[5].wrapping_mul(w[4].y[0]))
-                    .wrapping_add(FIXED_GAINS_H2[6].wrapping_mul(w[3].y[0]))
-                    .wrapping_add(FIXED_GAINS_H2[7].wrapping_mul(w[2].y[0]))
-                    .wrapping_add(FIXED_GAINS_H2[8].wrapping_mul(w[1].y[0]))
-                    .wrapping_add(FIXED_GAINS_H2[9].wrapping_mul(w[0].y[0]))
-                    .wrapping_add(FIXED_GAINS_H2[10].wrapping_mul(w[9].u[0]))
-                    .wrapping_add(FIXED_GAINS_H2[11].wrapping_mul(w[8].u[0]))
-                    .wrapping_add(FIXED_GAINS_H2[12].wrapping_mul(w[7].u[0]))
-                    .wrapping_add(FIXED_GAINS_H2[13].wrapping_mul(w[6].u[0]))
-                    .wrapping_add(FIXED_GAINS_H2[14].wrapping_mul(w[5].u[0]))
-                    .wrapping_add(FIXED_GAINS_H2[15].wrapping_mul(w[4].u[0]))
-                    .wrapping_add(FIXED_GAINS_H2[16].wrapping_mul(w[3].u[0]))
-                    .wrapping_add(FIXED_GAINS_H2[17].wrapping_mul(w[2].u[0]))
-                    .wrapping_add(FIXED_GAINS_H2[18].wrapping_mul(w[1].u[0]))
-                    .wrapping_add(FIXED_GAINS_H2[19].wrapping_mul(w[0].u[0])),
-                185,
-            ),
+            FIXED_MAP_H1.table.evaluate(t0),
+            FIXED_MAP_H2.table.evaluate(t1),
         ]
     }
 }

@@ -1542,7 +1542,7 @@ const FIXED_SEGMENTS_X1: [[i32; 2]; 99] = [
 
 /// `x1` in integers: `t` in 2^-22, position 15 bits, LSB 2^-19. Proven: |fixed − f64 map| ≤ 2.133e-3
 /// (0.045 % of the range: the table's 4.72e-4, the gains' rounding 1.66e-3, the
-/// integer table 5.86e-6). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
+/// integer table 5.87e-6). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
 /// 1609225987 ≤ 2³¹ − 1, checked below at compile time.
 pub const FIXED_MAP_X1: firmware::FixedMap<'static> = firmware::FixedMap {
     gains: &FIXED_GAINS_X1,
@@ -1552,9 +1552,7 @@ pub const FIXED_MAP_X1: firmware::FixedMap<'static> = firmware::FixedMap {
         fraction_bits: 22,
         dropped_bits: 7,
         product_bits: 15,
-        t_max: 415236096,
-        r_min: -1262855,
-        r_max: 1234323,
+        t_last: 415236095,
     },
 };
 
@@ -1595,9 +1593,7 @@ pub const FIXED_MAP_X2: firmware::FixedMap<'static> = firmware::FixedMap {
         fraction_bits: 28,
         dropped_bits: 13,
         product_bits: 15,
-        t_max: 536870912,
-        r_min: -38517,
-        r_max: 39579,
+        t_last: 536870911,
     },
 };
 
@@ -1622,37 +1618,41 @@ impl firmware::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {
 
     #[inline(always)]
     fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {
+        let t0 = FIXED_MAP_X1.offset;
+        let t1 = FIXED_MAP_X2.offset;
+        let z = w[9].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_X1[0].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_X2[0].wrapping_mul(z));
+        let z = w[8].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_X1[1].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_X2[1].wrapping_mul(z));
+        let z = w[7].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_X1[2].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_X2[2].wrapping_mul(z));
+        let z = w[6].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_X1[3].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_X2[3].wrapping_mul(z));
+        let z = w[5].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_X1[4].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_X2[4].wrapping_mul(z));
+        let z = w[4].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_X1[5].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_X2[5].wrapping_mul(z));
+        let z = w[3].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_X1[6].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_X2[6].wrapping_mul(z));
+        let z = w[2].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_X1[7].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_X2[7].wrapping_mul(z));
+        let z = w[1].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_X1[8].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_X2[8].wrapping_mul(z));
+        let z = w[0].y[0];
+        let t0 = t0.wrapping_add(FIXED_GAINS_X1[9].wrapping_mul(z));
+        let t1 = t1.wrapping_add(FIXED_GAINS_X2[9].wrapping_mul(z));
         [
-            FIXED_MAP_X1.table.evaluate_with(
-                FIXED_MAP_X1
-                    .offset
-                    .wrapping_add(FIXED_GAINS_X1[0].wrapping_mul(w[9].y[0]))
-                    .wrapping_add(FIXED_GAINS_X1[1].wrapping_mul(w[8].y[0]))
-                    .wrapping_add(FIXED_GAINS_X1[2].wrapping_mul(w[7].y[0]))
-                    .wrapping_add(FIXED_GAINS_X1[3].wrapping_mul(w[6].y[0]))
-                    .wrapping_add(FIXED_GAINS_X1[4].wrapping_mul(w[5].y[0]))
-                    .wrapping_add(FIXED_GAINS_X1[5].wrapping_mul(w[4].y[0]))
-                    .wrapping_add(FIXED_GAINS_X1[6].wrapping_mul(w[3].y[0]))
-                    .wrapping_add(FIXED_GAINS_X1[7].wrapping_mul(w[2].y[0]))
-                    .wrapping_add(FIXED_GAINS_X1[8].wrapping_mul(w[1].y[0]))
-                    .wrapping_add(FIXED_GAINS_X1[9].wrapping_mul(w[0].y[0])),
-                98,
-            ),
-            FIXED_MAP_X2.table.evaluate_with(
-                FIXED_MAP_X2
-                    .offset
-                    .wrapping_add(FIXED_GAINS_X2[0].wrapping_mul(w[9].y[0]))
-                    .wrapping_add(FIXED_GAINS_X2[1].wrapping_mul(w[8].y[0]))
-                    .wrapping_add(FIXED_GAINS_X2[2].wrapping_mul(w[7].y[0]))
-                    .wrapping_add(FIXED_GAINS_X2[3].wrapping_mul(w[6].y[0]))
-                    .wrapping_add(FIXED_GAINS_X2[4].wrapping_mul(w[5].y[0]))
-                    .wrapping_add(FIXED_GAINS_X2[5].wrapping_mul(w[4].y[0]))
-                    .wrapping_add(FIXED_GAINS_X2[6].wrapping_mul(w[3].y[0]))
-                    .wrapping_add(FIXED_GAINS_X2[7].wrapping_mul(w[2].y[0]))
-                    .wrapping_add(FIXED_GAINS_X2[8].wrapping_mul(w[1].y[0]))
-                    .wrapping_add(FIXED_GAINS_X2[9].wrapping_mul(w[0].y[0])),
-                1,
-            ),
+            FIXED_MAP_X1.table.evaluate(t0),
+            FIXED_MAP_X2.table.evaluate(t1),
         ]
     }
 }

@@ -54,10 +54,10 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
             .join(", "),
     );
     let mut maps = Vec::new();
-    let mut dots = Vec::new();
+    let mut uppers: Vec<String> = Vec::new();
     for (target, spec_target) in fixed.targets.iter().zip(&design.targets) {
         let upper = spec_target.name.to_uppercase();
-        let range = (f64::from(target.r_max) - f64::from(target.r_min)) * target.lsb();
+        let range = target.range;
         let b = &target.bound;
         let gains: Vec<String> = target.gains.iter().map(|g| format!("    {g},")).collect();
         let segments: Vec<String> = target
@@ -78,7 +78,7 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
              pub const FIXED_MAP_{upper}: firmware::FixedMap<'static> = firmware::FixedMap {{\n    \
                  gains: &FIXED_GAINS_{upper},\n    offset: {offset},\n    table: firmware::FixedTable {{\n        \
                  segments: &FIXED_SEGMENTS_{upper},\n        fraction_bits: {f},\n        dropped_bits: {dropped},\n        \
-                 product_bits: {p},\n        t_max: {t_max},\n        r_min: {r_min},\n        r_max: {r_max},\n    }},\n}};\n\n\
+                 product_bits: {p},\n        t_last: {t_last},\n    }},\n}};\n\n\
              const _: () = assert!(\n    firmware::fixed::reach(&FIXED_MAP_{upper}, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64\n);\n",
             name = spec_target.name,
             gains = gains.join("\n"),
@@ -96,27 +96,32 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
             evaluation = b.evaluation,
             reach = target.reach,
             offset = target.offset,
-            t_max = target.t_max(),
-            r_min = target.r_min,
-            r_max = target.r_max,
+            t_last = target.t_last(),
         );
         maps.push(format!("FIXED_MAP_{upper}"));
-        let nonzero: Vec<f32> = target.gains.iter().map(|&g| g as f32).collect();
-        let terms: String = super::terms::dot_terms(&nonzero, n, ny, nu)
-            .iter()
-            .map(|t| {
-                let field = if t.input { "u" } else { "y" };
-                format!(
-                    "\n                    .wrapping_add(FIXED_GAINS_{upper}[{}].wrapping_mul(w[{}].{field}[{}]))",
-                    t.gain, t.sample, t.entry
-                )
-            })
-            .collect();
-        dots.push(format!(
-            "            FIXED_MAP_{upper}.table.evaluate_with(\n                FIXED_MAP_{upper}\n                    .offset{terms},\n                {},\n            ),",
-            target.segments.len() - 1
-        ));
+        uppers.push(upper);
     }
+    // Every target's sum in one pass over the window: each sample read once and multiplied by every
+    // target's gain (integer sums: any order gives the same bits), which keeps the samples in
+    // registers on a Cortex-M0 instead of spilling them for the next target.
+    let mut dots = String::new();
+    for (field, sample, entry, gains) in interleaved(fixed, n, ny, nu) {
+        dots += &format!("        let z = w[{sample}].{field}[{entry}];\n");
+        for (t, gain) in gains {
+            let upper = &uppers[t];
+            dots += &format!("        let t{t} = t{t}.wrapping_add(FIXED_GAINS_{upper}[{gain}].wrapping_mul(z));\n");
+        }
+    }
+    let starts: String = uppers
+        .iter()
+        .enumerate()
+        .map(|(t, upper)| format!("        let t{t} = FIXED_MAP_{upper}.offset;\n"))
+        .collect();
+    let tables: Vec<String> = uppers
+        .iter()
+        .enumerate()
+        .map(|(t, upper)| format!("            FIXED_MAP_{upper}.table.evaluate(t{t}),"))
+        .collect();
     let checks: Vec<String> = fixed
         .outputs
         .iter()
@@ -160,7 +165,7 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
              #[inline(always)]\n    \
              fn accepts(y: &[i32; OUTPUTS], u: &[i32; INPUTS]) -> bool {{\n        {unused}{checks}\n    }}\n\n    \
              #[inline(always)]\n    \
-             fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {{\n        [\n{dots}\n        ]\n    }}\n}}\n\n\
+             fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {{\n{starts}{dots}        [\n{tables}\n        ]\n    }}\n}}\n\n\
          /// The fixed-point observer: raw counts in ([`RAW_OUTPUT_RANGES`]), estimates in [`FIXED_LSB`] out.\n\
          pub type FixedObserver = firmware::fixed::Observer<Fixed, HORIZON, OUTPUTS, INPUTS, TARGETS>;\n\n\
          /// A fixed-point observer with no samples yet.\n\
@@ -175,9 +180,36 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
          pub const RECORDED_RAW_U: [[i32; INPUTS]; RECORDED_LEN] = [\n{raw_u}\n];",
         maps = maps.join(", "),
         checks = if checks.is_empty() { "true".to_owned() } else { checks.join(" & ") },
-        dots = dots.join("\n"),
+        tables = tables.join("\n"),
         raw_y = rows(raw_rows(&y, &fixed.outputs)),
         raw_u = rows(raw_rows(&u, &fixed.inputs)),
     );
     text
+}
+
+/// The window's entries in regressor order, each with every target's non-zero gain on it:
+/// `(field "y" or "u", sample of the window (oldest first), entry, [(target, gain index)])`.
+pub(super) fn interleaved(
+    fixed: &FixedPoint,
+    horizon: usize,
+    outputs: usize,
+    inputs: usize,
+) -> Vec<(&'static str, usize, usize, Vec<(usize, usize)>)> {
+    let mut entries: Vec<(&'static str, usize, usize, Vec<(usize, usize)>)> = Vec::new();
+    for (t, target) in fixed.targets.iter().enumerate() {
+        let nonzero: Vec<f32> = target.gains.iter().map(|&g| g as f32).collect();
+        for term in super::terms::dot_terms(&nonzero, horizon, outputs, inputs) {
+            let field = if term.input { "u" } else { "y" };
+            match entries
+                .iter_mut()
+                .find(|(f, s, e, _)| (*f, *s, *e) == (field, term.sample, term.entry))
+            {
+                Some((_, _, _, gains)) => gains.push((t, term.gain)),
+                None => entries.push((field, term.sample, term.entry, vec![(t, term.gain)])),
+            }
+        }
+    }
+    // Regressor order: outputs before inputs, newest sample first.
+    entries.sort_by_key(|(field, sample, entry, _)| (*field == "u", std::cmp::Reverse(*sample), *entry));
+    entries
 }

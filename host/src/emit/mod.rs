@@ -17,7 +17,7 @@ pub mod c;
 mod design_file;
 mod doc_text;
 pub mod families;
-mod fixed;
+pub(crate) mod fixed;
 mod lib_file;
 pub mod model;
 mod placement;

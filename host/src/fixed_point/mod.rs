@@ -22,7 +22,7 @@
 //! which bounds every partial sum, every product and `t_max − t` of the chip's code: no in-range
 //! sample can overflow 32 bits (the emitted Rust checks the inequality again at compile time). The
 //! target's LSB `2^−R` and the position bits `P ≤ F` are the pair that minimises the evaluation term of
-//! the bound below while `|A_k| + |B_k|`, `|B_k| 2^P`, `|r_min|` and `|r_max|` (in LSB) fit in 31 bits.
+//! the bound below while `|A_k| + |B_k|`, `|B_k| 2^P` and `|r_min|`, `|r_max|` (in LSB) fit in 31 bits.
 //!
 //! # The bound ([`Bound`])
 //!
@@ -33,7 +33,9 @@
 //! * gains: `L (Σ_i |G_i − Gq_i 2^−F| M_i + |C − Cq 2^−F|)`, the exact rounding of the integers
 //!   times the declared ranges (the sum itself is exact in integers);
 //! * evaluation: `2^−R` for `A_k` and `B_k` rounded to the LSB (half each), `2^−R` for the floor of
-//!   the product's shift, and `(L + 2^−R) 2^−P` for the position truncated to `P` bits;
+//!   the product's shift, `(L + 2^−R) 2^−P` for the position truncated to `P` bits, and for a
+//!   saturated estimate (the table's end values) `L 2^−F` (the last `t` is one `2^−F` short of the
+//!   last knot) plus the float table's ends against `r_min`, `r_max` (their f64 rounding);
 //!
 //! plus a margin of `10⁻¹²` of the terms for the host's own f64 rounding.
 
@@ -113,10 +115,8 @@ pub struct FixedTarget {
     pub product_bits: u32,
     /// `R`: the LSB is `2^−R` target units.
     pub lsb_bits: i32,
-    /// `r_min` in LSB.
-    pub r_min: i32,
-    /// `r_max` in LSB.
-    pub r_max: i32,
+    /// The learning range `r_max − r_min`, target units (what the bound is measured against).
+    pub range: f64,
     /// `|Cq| + Σ |Gq_i| M_i + K 2^F`: at most `2³¹ − 1`, the overflow proof.
     pub reach: i64,
     /// The proven distance to the f64 map.
@@ -147,9 +147,9 @@ impl FixedTarget {
         2f64.powi(-self.lsb_bits)
     }
 
-    /// `K << F`.
-    pub fn t_max(&self) -> i32 {
-        (self.segments.len() as i32) << self.fraction_bits
+    /// `(K << F) − 1`, the last `t` of the table.
+    pub fn t_last(&self) -> i32 {
+        ((self.segments.len() as i32) << self.fraction_bits) - 1
     }
 
     /// The firmware's view: what the chip runs.
@@ -162,9 +162,7 @@ impl FixedTarget {
                 fraction_bits: self.fraction_bits,
                 dropped_bits: self.fraction_bits - self.product_bits,
                 product_bits: self.product_bits,
-                t_max: self.t_max(),
-                r_min: self.r_min,
-                r_max: self.r_max,
+                t_last: self.t_last(),
             },
         }
     }
@@ -317,6 +315,13 @@ fn target(
         .collect();
     let slope = knots.iter().map(|[_, b]| b.abs()).fold(0.0, f64::max);
     let (lsb_bits, product_bits, evaluation) = formats(&knots, table.r_min, table.r_max, slope, f);
+    // Saturated, the chip gives the table's ends: the float table's own ends against r_min and r_max
+    // (exact but for rounding), and t_last one 2^-F short of the last knot.
+    let last = knots.last().expect("a table has a segment");
+    let ends = (knots[0][0] - table.r_min)
+        .abs()
+        .max((last[0] + last[1] - table.r_max).abs())
+        + slope / unit;
     let lsb = 2f64.powi(lsb_bits);
     let rounding: f64 = g
         .iter()
@@ -336,13 +341,12 @@ fn target(
         fraction_bits: f as u32,
         product_bits,
         lsb_bits,
-        r_min: (table.r_min * lsb).round() as i32,
-        r_max: (table.r_max * lsb).round() as i32,
+        range: table.r_max - table.r_min,
         reach: reach as i64,
         bound: Bound {
             table: table.proven_bound,
             gains: slope * (rounding + 1e-12 * terms),
-            evaluation: evaluation * (1.0 + 1e-12),
+            evaluation: (evaluation + ends) * (1.0 + 1e-12),
         },
     })
 }

@@ -45,6 +45,8 @@ pub struct FixedTargetReport {
     pub bound_evaluation: f64,
     /// Their sum.
     pub bound: f64,
+    /// The bound in percent of the learning range `r_max − r_min`.
+    pub bound_percent_of_range: f64,
     /// Largest `|fixed − f64 map|` over the validation windows.
     pub largest_difference_validation: f64,
     /// RMSE against the true target over the validation windows (samples as converter counts).
@@ -78,6 +80,7 @@ pub fn of(design: &Design, result: &DesignResult, fixed: &Fixed) -> FixedPointRe
                 bound_gains: target.bound.gains,
                 bound_evaluation: target.bound.evaluation,
                 bound: target.bound.total(),
+                bound_percent_of_range: 100.0 * target.bound.total() / (fit.fit.map.r_max - fit.fit.map.r_min),
                 largest_difference_validation: figures.largest_difference,
                 rmse_validation: figures.rmse,
                 max_error_validation: figures.max_error,
@@ -104,12 +107,12 @@ pub fn section(report: &FixedPointReport) -> String {
         report.windows,
         report.clamped
     );
-    s.push_str("| target | F / P / LSB | proven \\|fixed − f64 map\\| (table + gains + integer table) | largest on validation | RMSE validation (float map) | max error validation |\n");
-    s.push_str("|---|---|---|---|---|---|\n");
+    s.push_str("| target | F / P / LSB | proven \\|fixed − f64 map\\| (table + gains + integer table) | of the range | largest on validation | RMSE validation (float map) | max error validation |\n");
+    s.push_str("|---|---|---|---|---|---|---|\n");
     for t in &report.targets {
         let _ = writeln!(
             s,
-            "| {} | {} / {} / 2^{} | {:.2e} ({:.1e} + {:.1e} + {:.1e}) | {:.2e} | {:.4} ({:.4}) | {:.4} |",
+            "| {} | {} / {} / 2^{} | {:.2e} ({:.1e} + {:.1e} + {:.1e}) | {:.3} % | {:.2e} | {:.4} ({:.4}) | {:.4} |",
             t.name,
             t.fraction_bits,
             t.product_bits,
@@ -118,6 +121,7 @@ pub fn section(report: &FixedPointReport) -> String {
             t.bound_table,
             t.bound_gains,
             t.bound_evaluation,
+            t.bound_percent_of_range,
             t.largest_difference_validation,
             t.rmse_validation,
             t.rmse_validation_float,

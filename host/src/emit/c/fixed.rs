@@ -77,28 +77,22 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
             k = target.segments.len(),
             segments = segments.join(",\n"),
         );
-        let nonzero: Vec<f32> = target.gains.iter().map(|&g| g as f32).collect();
-        let terms: String = crate::emit::terms::dot_terms(&nonzero, n, ny, nu)
-            .iter()
-            .map(|term| {
-                let field = if term.input { "u" } else { "y" };
-                format!(
-                    "\n        + FIXED_GAINS_{t}[{}] * observer->{field}[next + {}u][{}]",
-                    term.gain, term.sample, term.entry
-                )
-            })
-            .collect();
-        projections += &format!("    const int32_t t_{t} = {}{terms};\n", target.offset);
+        projections += &format!("    int32_t t_{t} = {};\n", target.offset);
         estimates += &format!(
-            "    fixed_evaluate(t_{t}, FIXED_SEGMENTS_{t}, {last}, {f}u, {dropped}u, {p}u, {t_max}, {r_min}, {r_max}, &values[{t}], &saturation[{t}]);\n",
-            last = target.segments.len() - 1,
+            "    fixed_evaluate(t_{t}, FIXED_SEGMENTS_{t}, {f}u, {dropped}u, {p}u, {t_last}, &values[{t}], &saturation[{t}]);\n",
             f = target.fraction_bits,
             dropped = target.fraction_bits - target.product_bits,
             p = target.product_bits,
-            t_max = target.t_max(),
-            r_min = target.r_min,
-            r_max = target.r_max,
+            t_last = target.t_last(),
         );
+    }
+    // Every target's sum in one pass, each sample read once (as the Rust file does).
+    for (field, sample, entry, gains) in crate::emit::fixed::interleaved(fixed, n, ny, nu) {
+        projections += &format!("    {{\n        const int32_t z = observer->{field}[next + {sample}u][{entry}];\n");
+        for (t, gain) in gains {
+            projections += &format!("        t_{t} += FIXED_GAINS_{t}[{gain}] * z;\n");
+        }
+        projections += "    }\n";
     }
     let inputs_field = if nu > 0 {
         format!("    int32_t u[2u * {upper}_HORIZON][{upper}_INPUTS];\n")
@@ -148,13 +142,9 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
          \x20* and IAR): checked at compile time. */\n\
          typedef char fixed_shifts_are_arithmetic[((-8) >> 1) == -4 ? 1 : -1];\n\
          \n\
-         /* a - b and a * b modulo 2^32 (no signed overflow, which C leaves undefined). */\n\
+         /* a - b modulo 2^32 (no signed overflow, which C leaves undefined): t_last - t for any t. */\n\
          static int32_t wrapping_sub(int32_t a, int32_t b) {{\n\
          \x20   return (int32_t)((uint32_t)a - (uint32_t)b);\n\
-         }}\n\
-         \n\
-         static int32_t wrapping_mul(int32_t a, int32_t b) {{\n\
-         \x20   return (int32_t)((uint32_t)a * (uint32_t)b);\n\
          }}\n\
          \n\
          /* min <= v <= max, as one unsigned comparison. */\n\
@@ -162,24 +152,20 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
          \x20   return (uint32_t)v - (uint32_t)min <= (uint32_t)max - (uint32_t)min;\n\
          }}\n\
          \n\
-         /* firmware::fixed::FixedTable::evaluate_with: the segment and the position in it by shifts, the\n\
-         \x20* saturation by sign masks (no branch: the same instructions whatever t is). */\n\
-         static void fixed_evaluate(int32_t t, const int32_t segments[][2], int32_t last, unsigned f, unsigned dropped,\n\
-         \x20                          unsigned p, int32_t t_max, int32_t r_min, int32_t r_max, int32_t *value,\n\
-         \x20                          {name}_saturation *saturation) {{\n\
+         /* firmware::fixed::FixedTable::evaluate: t clamped to the table [0, t_last] by sign masks (no\n\
+         \x20* branch: the same instructions whatever t is), then the segment and the position in it by shifts. */\n\
+         static void fixed_evaluate(int32_t t, const int32_t segments[][2], unsigned f, unsigned dropped, unsigned p,\n\
+         \x20                          int32_t t_last, int32_t *value, {name}_saturation *saturation) {{\n\
          \x20   const int32_t low = t >> 31;\n\
-         \x20   const int32_t high = wrapping_sub(t_max, t) >> 31;\n\
-         \x20   int32_t k = (t >> f) & ~low;\n\
-         \x20   const int32_t over = last - k;\n\
+         \x20   const int32_t high = (wrapping_sub(t_last, t) >> 31) & ~low;\n\
+         \x20   int32_t k;\n\
          \x20   int32_t position;\n\
-         \x20   int32_t inside;\n\
-         \x20   int32_t edge;\n\
-         \x20   k += over & (over >> 31);\n\
-         \x20   position = wrapping_sub(t, (int32_t)((uint32_t)k << f)) >> dropped;\n\
-         \x20   inside = (int32_t)((uint32_t)segments[k][0] + (uint32_t)(wrapping_mul(segments[k][1], position) >> p));\n\
-         \x20   edge = r_max ^ ((r_min ^ r_max) & low);\n\
-         \x20   *value = inside ^ ((inside ^ edge) & (low | high));\n\
-         \x20   *saturation = ({name}_saturation)((unsigned)(low & 1) | ((unsigned)(high & ~low) & 2u));\n\
+         \x20   t &= ~low;\n\
+         \x20   t ^= (t ^ t_last) & high;\n\
+         \x20   k = t >> f;\n\
+         \x20   position = (t - (int32_t)((uint32_t)k << f)) >> dropped;\n\
+         \x20   *value = segments[k][0] + ((segments[k][1] * position) >> p);\n\
+         \x20   *saturation = ({name}_saturation)((unsigned)(low & 1) | ((unsigned)high & 2u));\n\
          }}\n\
          \n\
          void {name}_fixed_init({name}_fixed *observer) {{\n\
