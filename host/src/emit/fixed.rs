@@ -105,7 +105,13 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
     // target's gain (integer sums: any order gives the same bits), which keeps the samples in
     // registers on a Cortex-M0 instead of spilling them for the next target.
     let mut dots = String::new();
-    for (field, sample, entry, gains) in interleaved(fixed, n, ny, nu) {
+    for Entry {
+        field,
+        sample,
+        entry,
+        gains,
+    } in interleaved(fixed, n, ny, nu)
+    {
         dots += &format!("        let z = w[{sample}].{field}[{entry}];\n");
         for (t, gain) in gains {
             let upper = &uppers[t];
@@ -187,29 +193,40 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
     text
 }
 
-/// The window's entries in regressor order, each with every target's non-zero gain on it:
-/// `(field "y" or "u", sample of the window (oldest first), entry, [(target, gain index)])`.
-pub(super) fn interleaved(
-    fixed: &FixedPoint,
-    horizon: usize,
-    outputs: usize,
-    inputs: usize,
-) -> Vec<(&'static str, usize, usize, Vec<(usize, usize)>)> {
-    let mut entries: Vec<(&'static str, usize, usize, Vec<(usize, usize)>)> = Vec::new();
+/// One value of the window and every target's non-zero gain on it.
+pub(super) struct Entry {
+    /// `"y"` or `"u"`.
+    pub field: &'static str,
+    /// The sample of the window, oldest first.
+    pub sample: usize,
+    /// Which output or input.
+    pub entry: usize,
+    /// `(target, gain index)`.
+    pub gains: Vec<(usize, usize)>,
+}
+
+/// The window's values in regressor order, each with every target's non-zero gain on it.
+pub(super) fn interleaved(fixed: &FixedPoint, horizon: usize, outputs: usize, inputs: usize) -> Vec<Entry> {
+    let mut entries: Vec<Entry> = Vec::new();
     for (t, target) in fixed.targets.iter().enumerate() {
         let nonzero: Vec<f32> = target.gains.iter().map(|&g| g as f32).collect();
         for term in super::terms::dot_terms(&nonzero, horizon, outputs, inputs) {
             let field = if term.input { "u" } else { "y" };
             match entries
                 .iter_mut()
-                .find(|(f, s, e, _)| (*f, *s, *e) == (field, term.sample, term.entry))
+                .find(|e| (e.field, e.sample, e.entry) == (field, term.sample, term.entry))
             {
-                Some((_, _, _, gains)) => gains.push((t, term.gain)),
-                None => entries.push((field, term.sample, term.entry, vec![(t, term.gain)])),
+                Some(e) => e.gains.push((t, term.gain)),
+                None => entries.push(Entry {
+                    field,
+                    sample: term.sample,
+                    entry: term.entry,
+                    gains: vec![(t, term.gain)],
+                }),
             }
         }
     }
     // Regressor order: outputs before inputs, newest sample first.
-    entries.sort_by_key(|(field, sample, entry, _)| (*field == "u", std::cmp::Reverse(*sample), *entry));
+    entries.sort_by_key(|e| (e.field == "u", std::cmp::Reverse(e.sample), e.entry));
     entries
 }

@@ -87,7 +87,13 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
         );
     }
     // Every target's sum in one pass, each sample read once (as the Rust file does).
-    for (field, sample, entry, gains) in crate::emit::fixed::interleaved(fixed, n, ny, nu) {
+    for crate::emit::fixed::Entry {
+        field,
+        sample,
+        entry,
+        gains,
+    } in crate::emit::fixed::interleaved(fixed, n, ny, nu)
+    {
         projections += &format!("    {{\n        const int32_t z = observer->{field}[next + {sample}u][{entry}];\n");
         for (t, gain) in gains {
             projections += &format!("        t_{t} += FIXED_GAINS_{t}[{gain}] * z;\n");
