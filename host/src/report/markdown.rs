@@ -97,9 +97,6 @@ pub fn markdown(report: &Report<'_>) -> String {
         .collect();
     s.push_str("\n## On the emulated Cortex-M4F\n\n");
     s.push_str(&on_target::section(&measured));
-    if let Some(fixed) = &report.fixed_point {
-        s.push_str(&super::fixed_point::section(fixed));
-    }
     s.push_str(
         "\n*ratio*: validation RMSE of the map over that of the plain linear least-squares map `Lᵀ Z + c` on the same data \
          (below 1: the nonlinear map beats the floor). *max error validation* is the paper's empirical ε_x. \
@@ -108,6 +105,9 @@ pub fn markdown(report: &Report<'_>) -> String {
          inverting Γ; *proven table error*: its proven largest distance to the exact Γ⁻¹ (target units, at most 1e-4 of \
          the learning range); every estimate in this report uses that table, as the chip does. Full figures and the fitted coefficients: `report.json`.\n",
     );
+    if let Some(fixed) = &report.fixed_point {
+        s.push_str(&super::fixed_point::section(fixed));
+    }
     s.push_str(&figures(report));
     s
 }
