@@ -64,8 +64,10 @@ impl FixedTable<'_> {
     #[inline(always)]
     #[must_use]
     pub fn evaluate(&self, t: i32) -> Estimate<i32> {
-        let low = t >> 31; // −1 when t < 0
-        let high = self.t_last.wrapping_sub(t) >> 31 & !low; // −1 when t > t_last (and not low)
+        // The masks pass through `black_box`: otherwise the compiler turns them back into comparisons
+        // and, on a core without conditional execution (Cortex-M0), into branches.
+        let low = core::hint::black_box(t >> 31); // −1 when t < 0
+        let high = core::hint::black_box(self.t_last.wrapping_sub(t) >> 31) & !low; // −1 when t > t_last
         let t = t & !low;
         let t = t ^ ((t ^ self.t_last) & high);
         let k = t >> self.fraction_bits; // in [0, K − 1]

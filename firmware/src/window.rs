@@ -68,8 +68,12 @@ impl<T: Stored, const N: usize, const NY: usize, const NU: usize> Window<T, N, N
             *a = sample;
             *b = sample;
         }
-        self.next = if slot + 1 >= N { 0 } else { slot + 1 };
-        self.filled = if self.filled >= N { N } else { self.filled + 1 };
+        // By sign masks rather than comparisons: the same instructions at every write position, also
+        // on cores without conditional execution (Cortex-M0). `slot < N` and `filled <= N` hold.
+        let stays = ((N - 1 - slot) as isize).wrapping_neg() >> (isize::BITS - 1); // −1 unless slot = N − 1
+        self.next = (slot + 1) & stays as usize;
+        let full = ((N - 1) as isize - self.filled as isize) >> (isize::BITS - 1); // −1 once filled = N
+        self.filled = self.filled.wrapping_add(1).wrapping_add(full as usize);
     }
 
     /// Forgets every sample.

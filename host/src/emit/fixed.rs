@@ -101,28 +101,22 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
         maps.push(format!("FIXED_MAP_{upper}"));
         uppers.push(upper);
     }
-    // Every target's sum in one pass over the window: each sample read once and multiplied by every
-    // target's gain (integer sums: any order gives the same bits), which keeps the samples in
-    // registers on a Cortex-M0 instead of spilling them for the next target.
+    // Each target's sum over the window in regressor order (integers: any order gives the same bits).
     let mut dots = String::new();
-    for Entry {
-        field,
-        sample,
-        entry,
-        gains,
-    } in interleaved(fixed, n, ny, nu)
-    {
-        dots += &format!("        let z = w[{sample}].{field}[{entry}];\n");
-        for (t, gain) in gains {
-            let upper = &uppers[t];
-            dots += &format!("        let t{t} = t{t}.wrapping_add(FIXED_GAINS_{upper}[{gain}].wrapping_mul(z));\n");
-        }
+    for (t, (target, upper)) in fixed.targets.iter().zip(&uppers).enumerate() {
+        let nonzero: Vec<f32> = target.gains.iter().map(|&g| g as f32).collect();
+        let terms: String = super::terms::dot_terms(&nonzero, n, ny, nu)
+            .iter()
+            .map(|term| {
+                let field = if term.input { "u" } else { "y" };
+                format!(
+                    "\n            .wrapping_add(FIXED_GAINS_{upper}[{}].wrapping_mul(w[{}].{field}[{}]))",
+                    term.gain, term.sample, term.entry
+                )
+            })
+            .collect();
+        dots += &format!("        let t{t} = FIXED_MAP_{upper}\n            .offset{terms};\n");
     }
-    let starts: String = uppers
-        .iter()
-        .enumerate()
-        .map(|(t, upper)| format!("        let t{t} = FIXED_MAP_{upper}.offset;\n"))
-        .collect();
     let tables: Vec<String> = uppers
         .iter()
         .enumerate()
@@ -171,7 +165,7 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
              #[inline(always)]\n    \
              fn accepts(y: &[i32; OUTPUTS], u: &[i32; INPUTS]) -> bool {{\n        {unused}{checks}\n    }}\n\n    \
              #[inline(always)]\n    \
-             fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {{\n{starts}{dots}        [\n{tables}\n        ]\n    }}\n}}\n\n\
+             fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {{\n{dots}        [\n{tables}\n        ]\n    }}\n}}\n\n\
          /// The fixed-point observer: raw counts in ([`RAW_OUTPUT_RANGES`]), estimates in [`FIXED_LSB`] out.\n\
          pub type FixedObserver = firmware::fixed::Observer<Fixed, HORIZON, OUTPUTS, INPUTS, TARGETS>;\n\n\
          /// A fixed-point observer with no samples yet.\n\
