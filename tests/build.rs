@@ -3,7 +3,8 @@
 //! names one a design lacks does not compile, so the list is read from the generated sources
 //! (`generated/src/<design>.rs`, where `gen` declares each as `pub type CorrectedObserver = …`,
 //! `pub type StartedEkfObserver = …`, `pub type RestartedEkfObserver = …`, host/src/emit/model.rs)
-//! and written as a macro, `for_each_started_observer!`, into `OUT_DIR/started_observers.rs`.
+//! and written as a macro, `for_each_started_observer!`, into `OUT_DIR/started_observers.rs`; with it
+//! `for_each_fixed_observer!`, the designs whose source has the integer observer (`fixed_observer()`).
 
 use std::path::{Path, PathBuf};
 
@@ -45,6 +46,16 @@ fn main() {
     let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));
     let text = format!(
         "/// Invokes `$callback!(design, kind, Type)` for every observer of a generated design that the\n/// map starts (`firmware::Started`): `kind` is its [`crate::on_target::Kind`] variant, `Type` its alias in the\n/// design's module. Written by `tests/build.rs` from the generated sources.\n#[macro_export]\nmacro_rules! for_each_started_observer {{\n    ($callback:ident) => {{\n{calls}    }};\n}}\n"
+    );
+    // The integer observer, where the design has one (`gen` writes `pub fn fixed_observer(`, or
+    // `pub const fn`).
+    let fixed: String = designs
+        .iter()
+        .filter(|(_, text)| text.contains("pub fn fixed_observer(") || text.contains("pub const fn fixed_observer("))
+        .map(|(name, _)| format!("        $callback!({name});\n"))
+        .collect();
+    let text = format!(
+        "{text}\n/// Invokes `$callback!(design)` for every generated design with an integer observer\n/// (`fixed_observer()`). Written by `tests/build.rs` from the generated sources.\n#[macro_export]\nmacro_rules! for_each_fixed_observer {{\n    ($callback:ident) => {{\n{fixed}    }};\n}}\n"
     );
     std::fs::write(out.join("started_observers.rs"), text).expect("write started_observers.rs");
 }

@@ -1,32 +1,62 @@
-//! Puts memory.x where the linker finds it, passes cortex-m-rt's linker script to this program's
-//! binaries only (not through global rustflags), and writes the runners' and the size probe's design
-//! selection.
+//! Puts the emulated board's memory.x where the linker finds it, passes cortex-m-rt's linker script
+//! to this program's binaries only (not through global rustflags), and writes the board's stack
+//! paint and the runners' and the size probe's design selection.
 
 use std::path::PathBuf;
 
 /// An observer kind the runner and the probe know: its name in `ON_TARGET_KIND` / `PROBE_KIND` and
 /// the expression, in the design's module, that makes a fresh one.
-const KINDS: [(&str, &str); 6] = [
+const KINDS: [(&str, &str); 7] = [
     ("map", "map_observer()"),
     ("observer", "observer()"),
     ("corrected", "CorrectedObserver::new()"),
     ("started_ekf", "StartedEkfObserver::new()"),
     ("restarted_ekf", "RestartedEkfObserver::new()"),
     ("mhe", "MheObserver::new()"),
+    ("fixed", "fixed_observer()"),
 ];
+
+/// The integer observer: it takes the raw recorded sequence (`RECORDED_RAW_Y`, `RECORDED_RAW_U`,
+/// `i32`) and its type is not named here, so the runner drives it through closures.
+const FIXED: &str = "fixed";
+
+/// The emulated board of each target, by its memory: the Cortex-M4F board (QEMU `mps2-an386`,
+/// 4 MiB of each) and the Cortex-M0 one (QEMU `microbit`, nRF51: 256 KiB of flash, 16 KiB of RAM);
+/// the memory layouts are compiled in, so that a runner written for a user's crate (whose manifest
+/// lives elsewhere) links the same.
+fn board(target: &str) -> (&'static str, &'static str, usize, usize) {
+    if target.starts_with("thumbv6m") {
+        // 16 KiB of RAM hold the results (at most 200 samples of ~24 bytes), the runner's frames and
+        // the paint below them: 4 KiB each, ten times the deepest a soft-float sample reached.
+        ("microbit", include_str!("memory/microbit.x"), 4096, 4096)
+    } else {
+        ("mps2-an386", include_str!("memory/mps2-an386.x"), 4096, 8192)
+    }
+}
 
 fn main() {
     let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));
-    std::fs::copy("memory.x", out.join("memory.x")).expect("copy memory.x");
+    let target = std::env::var("TARGET").unwrap_or_default();
+    let (board, memory, painted, ekf_painted) = board(&target);
+    std::fs::write(out.join("memory.x"), memory).expect("write memory.x");
     println!("cargo:rustc-link-search={}", out.display());
     println!("cargo:rustc-link-arg-bins=-Tlink.x");
-    println!("cargo:rerun-if-changed=memory.x");
+    println!("cargo:rerun-if-changed=memory");
+    // Bytes of stack the runners paint below their frame (`main.rs`, `bin/ekf.rs`).
+    std::fs::write(
+        out.join("board.rs"),
+        format!(
+            "/// The board this program is built for.\n#[allow(dead_code)]\nconst BOARD: &str = \"{board}\";\n/// Bytes of stack painted below the stack pointer of `run` (`on-target`).\n#[allow(dead_code)]\nconst PAINTED: usize = {painted};\n/// Bytes of stack painted below the stack pointer of `main` (`ekf`).\n#[allow(dead_code)]\nconst EKF_PAINTED: usize = {ekf_painted};\n"
+        ),
+    )
+    .expect("write board.rs");
 
     // The runners (`on-target` for the observers that estimate from the map's window, `ekf` for the
     // filter from the box centre) link the one design named by ON_TARGET_DESIGN (design.rs).
     // ON_TARGET_KIND lists, comma-separated, the observers `on-target` runs one after the other, each
     // over the whole recorded sequence (kinds.rs, which `ekf` does not read): `map` (the default),
-    // `observer` (the design's chosen kind), `corrected`, `started_ekf`, `restarted_ekf`, `mhe`.
+    // `observer` (the design's chosen kind), `corrected`, `started_ekf`, `restarted_ekf`, `mhe`,
+    // `fixed` (the integer observer, over the raw sequence).
     println!("cargo:rerun-if-env-changed=ON_TARGET_DESIGN");
     println!("cargo:rerun-if-env-changed=ON_TARGET_KIND");
     let requested = std::env::var("ON_TARGET_KIND").unwrap_or_default();
@@ -48,7 +78,13 @@ fn main() {
     let runs: String = kinds
         .iter()
         .filter(|_| !runner.is_empty())
-        .map(|(name, fresh)| format!("    run(\"{name}\", d::{fresh});\n"))
+        .map(|&(name, fresh)| {
+            if name == FIXED {
+                format!("    run(\"{name}\", Driven::new(d::{fresh}, |o, y, u| o.push(y, u).is_ok(), |o| o.estimate()), &d::RECORDED_RAW_Y, &d::RECORDED_RAW_U);\n")
+            } else {
+                format!("    run(\"{name}\", d::{fresh}, &d::RECORDED_Y, &d::RECORDED_U);\n")
+            }
+        })
         .collect();
     let kinds = format!("/// Runs every observer this program measures (ON_TARGET_KIND), one after the other.\nfn run_all() {{\n{runs}}}\n");
     std::fs::write(out.join("kinds.rs"), kinds).expect("write kinds.rs");
@@ -75,8 +111,9 @@ fn main() {
         } else {
             kind(&probe_kind, "PROBE_KIND")
         };
+        let zero = if name == FIXED { "0i32" } else { "0.0f32" };
         format!(
-            "/// Pushes samples into `{design}`'s {name} observer and estimates, forever.\nfn probe() -> ! {{\n    use generated::{design} as d;\n    let mut observer = d::{fresh};\n    loop {{\n        let y = core::hint::black_box([0.0f32; d::OUTPUTS]);\n        let u = core::hint::black_box([0.0f32; d::INPUTS]);\n        let _ = core::hint::black_box(observer.push(y, u));\n        core::hint::black_box(observer.estimate());\n        if core::hint::black_box(false) {{\n            observer.reset();\n        }}\n    }}\n}}\n"
+            "/// Pushes samples into `{design}`'s {name} observer and estimates, forever.\nfn probe() -> ! {{\n    use generated::{design} as d;\n    let mut observer = d::{fresh};\n    loop {{\n        let y = core::hint::black_box([{zero}; d::OUTPUTS]);\n        let u = core::hint::black_box([{zero}; d::INPUTS]);\n        let _ = core::hint::black_box(observer.push(y, u));\n        core::hint::black_box(observer.estimate());\n        if core::hint::black_box(false) {{\n            observer.reset();\n        }}\n    }}\n}}\n"
         )
     };
     std::fs::write(out.join("probe_design.rs"), probe).expect("write probe_design.rs");

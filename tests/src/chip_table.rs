@@ -14,12 +14,13 @@ pub const PAGE: &str = "docs/chip.md";
 /// Where the table starts and ends in [`PAGE`].
 const MARKERS: (&str, &str) = ("<!-- on-target:begin -->\n", "<!-- on-target:end -->");
 
-/// The table (Markdown) of every shipped design's observers in `all`, and each design's figures to
-/// record beside its report.
+/// The table (Markdown) of every shipped design's observers in `all` (on the Cortex-M4F), and each
+/// design's figures to record beside its report.
 pub fn project_table(all: &Measurements) -> Result<(String, Vec<(String, Measured)>), String> {
+    let clock = all.board.clock_mhz();
     let mut recorded = Vec::new();
-    let mut table = String::from(
-        "| design | observer | targets | N | segments per target | instructions per sample, steady (min / median / max) | start-up: samples, max instructions | first estimate | dot-product floor | VDIV + VSQRT per sample (max) | stack bytes | flash bytes | RAM bytes | max \\|target − host f64\\| |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+    let mut table = format!(
+        "| design | observer | targets | N | segments per target | instructions per sample, steady (min / median / max) | start-up: samples, max instructions | estimated cycles, steady (median / max) | µs per sample at {clock:.0} MHz (median) | first estimate | dot-product floor | VDIV + VSQRT per sample (max) | stack bytes | flash bytes | RAM bytes | max \\|target − host f64\\| |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for name in on_target::design_names() {
         let spec = crate::shipped_specs()
@@ -44,10 +45,7 @@ pub fn project_table(all: &Measurements) -> Result<(String, Vec<(String, Measure
 
         let mut rows: BTreeMap<Kind, Figures> = BTreeMap::new();
         for (&kind, observer) in all.observers.get(name).into_iter().flatten() {
-            let largest = match kind {
-                Kind::Map => on_target::compare_with_library(name, observer)?,
-                _ => on_target::compare_started_with_f64(name, observer)?,
-            };
+            let largest = largest_difference(name, kind, observer)?;
             rows.insert(
                 kind,
                 Figures::of_observer(observer, largest).map_err(|e| format!("{name} {}: {e}", kind.api()))?,
@@ -72,14 +70,9 @@ pub fn project_table(all: &Measurements) -> Result<(String, Vec<(String, Measure
 
         for (&kind, row) in &rows {
             let (min, median, max) = on_target::spread(&row.phases.steady);
-            let observer = match kind {
-                Kind::Map => "`map_observer()`",
-                Kind::Corrected => "`CorrectedObserver`",
-                Kind::StartedEkf => "`StartedEkfObserver`",
-                Kind::RestartedEkf => "`RestartedEkfObserver`",
-                Kind::Ekf => "`ekf()`",
-                Kind::Mhe => "`MheObserver`",
-            };
+            let (_, cycles, cycles_max) = on_target::spread(&row.cycles.steady);
+            let time = all.board.microseconds(cycles);
+            let observer = format!("`{}`", row_name(kind));
             let chosen = if chosen == Some(kind) { " = `observer()`" } else { "" };
             let (horizon, segments, floor) = match kind {
                 Kind::Map => (
@@ -87,13 +80,13 @@ pub fn project_table(all: &Measurements) -> Result<(String, Vec<(String, Measure
                     segments.join(", "),
                     (2 * n_z * targets.len()).to_string(),
                 ),
-                Kind::Corrected | Kind::StartedEkf | Kind::RestartedEkf | Kind::Mhe => {
+                Kind::Corrected | Kind::StartedEkf | Kind::RestartedEkf | Kind::Mhe | Kind::Fixed => {
                     (spec.map.horizon.to_string(), "—".to_owned(), "—".to_owned())
                 }
                 Kind::Ekf => ("—".to_owned(), "—".to_owned(), "—".to_owned()),
             };
             table += &format!(
-                "| `{name}` | {observer}{chosen} | {} | {horizon} | {segments} | {min} / {median} / {max} | {}, {} | {} | {floor} | {} | {} | {} | {} | {:.1e} |\n",
+                "| `{name}` | {observer}{chosen} | {} | {horizon} | {segments} | {min} / {median} / {max} | {}, {} | {cycles} / {cycles_max} | {time:.2} | {} | {floor} | {} | {} | {} | {} | {} |\n",
                 targets.join(", "),
                 row.phases.start_up_samples,
                 row.phases.start_up_max,
@@ -102,7 +95,7 @@ pub fn project_table(all: &Measurements) -> Result<(String, Vec<(String, Measure
                 row.stack_bytes,
                 row.flash_bytes,
                 row.ram_bytes,
-                row.largest,
+                largest_shown(row.largest),
             );
         }
 
@@ -118,7 +111,7 @@ pub fn project_table(all: &Measurements) -> Result<(String, Vec<(String, Measure
         recorded.push((name.to_owned(), measured));
     }
     for (family, flash) in &all.family_flash_bytes {
-        table += &format!("| family `{family}` | (its members' maps) | | | | | | | | | | {flash} | | |\n");
+        table += &format!("| family `{family}` | (its members' maps) | | | | | | | | | | | | {flash} | | |\n");
     }
     Ok((table, recorded))
 }
@@ -154,16 +147,106 @@ pub fn c_table_of(page: &str) -> Option<&str> {
 /// The median instructions per steady sample of design `name`'s Rust observer of `kind`, as the
 /// on-target table of `page` gives it.
 pub fn rust_median(page: &str, name: &str, kind: Kind) -> Option<u64> {
-    let observer = match kind {
+    let row = page
+        .lines()
+        .find(|l| l.starts_with(&format!("| `{name}` | `{}`", row_name(kind))))?;
+    row.split(" | ").nth(5)?.split(" / ").nth(1)?.trim().parse().ok()
+}
+
+/// How the tables name an observer of `kind`.
+fn row_name(kind: Kind) -> &'static str {
+    match kind {
         Kind::Map => "map_observer()",
         Kind::Ekf => "ekf()",
         Kind::Corrected => "CorrectedObserver",
         Kind::StartedEkf => "StartedEkfObserver",
         Kind::RestartedEkf => "RestartedEkfObserver",
         Kind::Mhe => "MheObserver",
+        Kind::Fixed => "fixed_observer()",
+    }
+}
+
+/// The largest `|chip − host f64|` of design `name`'s observer of `kind`: the map against the host
+/// library, the others against the host's f64 mirror; NaN for the integer observer, whose only
+/// truth is the host's run of the same integer code (bit for bit, checked by the on-target test).
+fn largest_difference(name: &str, kind: Kind, observer: &on_target::ObserverMeasurement) -> Result<f64, String> {
+    match kind {
+        Kind::Map => on_target::compare_with_library(name, observer),
+        Kind::Fixed => Ok(f64::NAN),
+        _ => on_target::compare_started_with_f64(name, observer),
+    }
+}
+
+/// A largest difference as the tables show it (`—` where there is no f64 truth).
+fn largest_shown(largest: f64) -> String {
+    if largest.is_nan() {
+        "— (bits of the host's `i32` run)".to_owned()
+    } else {
+        format!("{largest:.1e}")
+    }
+}
+
+/// Where the Cortex-M0 table starts and ends in [`PAGE`].
+const M0_MARKERS: (&str, &str) = ("<!-- m0-on-target:begin -->\n", "<!-- m0-on-target:end -->");
+
+/// The Cortex-M0 table (Markdown) of every shipped design's observers in `all` (the map and the
+/// EKF from the box centre in software floating point, the integer observer where a design has
+/// one), each beside its median instructions on the Cortex-M4F (`m4f_median`: from the Cortex-M4F
+/// table, [`rust_median`]).
+pub fn m0_table(all: &Measurements, m4f_median: &dyn Fn(&str, Kind) -> Option<u64>) -> Result<String, String> {
+    let clock = all.board.clock_mhz();
+    let mut table = format!(
+        "| design | observer | instructions per sample, steady (min / median / max) | start-up: samples, max instructions | estimated Cortex-M0+ cycles, steady (median / max) | µs per sample at {clock:.0} MHz (median) | Cortex-M4F instructions (median) | stack bytes | flash bytes | RAM bytes |\n|---|---|---|---|---|---|---|---|---|---|\n",
+    );
+    for name in on_target::design_names() {
+        let mut rows: BTreeMap<Kind, (Figures, Option<u64>)> = BTreeMap::new();
+        let median = |figures: &Figures| on_target::spread(&figures.phases.steady).1;
+        for (&kind, observer) in all.observers.get(name).into_iter().flatten() {
+            // Bit for bit the host's f32 run (the on-target test checks it), as the Cortex-M4F's are:
+            // its distance to f64 is the Cortex-M4F row's.
+            let figures = Figures::of_observer(observer, f64::NAN)
+                .map_err(|e| format!("{name} {} on the Cortex-M0: {e}", kind.api()))?;
+            rows.insert(kind, (figures, m4f_median(name, kind)));
+        }
+        let filter = all
+            .filters
+            .get(name)
+            .ok_or_else(|| format!("no EKF measured on the Cortex-M0 for {name}"))?;
+        let figures =
+            Figures::of_filter(filter, f64::NAN).map_err(|e| format!("{name} ekf() on the Cortex-M0: {e}"))?;
+        rows.insert(Kind::Ekf, (figures, m4f_median(name, Kind::Ekf)));
+        let expected = on_target::m0_kinds(name);
+        if !rows.keys().copied().eq(expected.iter().copied()) {
+            return Err(format!(
+                "{name}: measured {:?} on the Cortex-M0, the design has {expected:?}",
+                rows.keys().collect::<Vec<_>>()
+            ));
+        }
+        for (&kind, (row, on_m4f)) in &rows {
+            let (min, _, max) = on_target::spread(&row.phases.steady);
+            let (_, cycles, cycles_max) = on_target::spread(&row.cycles.steady);
+            table += &format!(
+                "| `{name}` | `{}` | {min} / {} / {max} | {}, {} | {cycles} / {cycles_max} | {:.2} | {} | {} | {} | {} |\n",
+                row_name(kind),
+                median(row),
+                row.phases.start_up_samples,
+                row.phases.start_up_max,
+                all.board.microseconds(cycles),
+                on_m4f.map_or("—".to_owned(), |n| n.to_string()),
+                row.stack_bytes,
+                row.flash_bytes,
+                row.ram_bytes,
+            );
+        }
+    }
+    Ok(table)
+}
+
+/// `page` with the Cortex-M0 table ([`m0_table`]) between its markers.
+pub fn with_m0_table(page: &str, table: &str) -> Result<String, String> {
+    let (begin, end) = M0_MARKERS;
+    let (Some(start), Some(stop)) = (page.find(begin), page.find(end)) else {
+        return Err(format!("{PAGE} has no Cortex-M0 on-target markers"));
     };
-    let row = page
-        .lines()
-        .find(|l| l.starts_with(&format!("| `{name}` | `{observer}`")))?;
-    row.split(" | ").nth(5)?.split(" / ").nth(1)?.trim().parse().ok()
+    Ok(format!("{}{begin}{table}{}", &page[..start], &page[stop..]))
 }

@@ -20,6 +20,9 @@ use serde::{Deserialize, Serialize};
 /// The file beside `report.json`.
 pub const FILE: &str = "on_target.json";
 
+/// The clock the section states a sample's time at, in MHz: a common Cortex-M4F top speed.
+pub const CLOCK_MHZ: f64 = 80.0;
+
 /// One observer's cost on the emulated Cortex-M4F, per sample.
 ///
 /// The start-up is every sample of the recorded sequence up to and including the estimate that
@@ -32,6 +35,14 @@ pub struct OnTarget {
     pub instructions_median: u64,
     /// Largest instructions of a steady sample.
     pub instructions_max: u64,
+    /// Median estimated cycles of a steady sample: each executed instruction's cycles by the core's
+    /// published timing (zero wait states; `integration-tests`' `on_target/timing.rs`); `None` in
+    /// figures recorded before cycles were estimated.
+    #[serde(default)]
+    pub cycles_median: Option<u64>,
+    /// Largest estimated cycles of a steady sample; `None` as above.
+    #[serde(default)]
+    pub cycles_max: Option<u64>,
     /// Largest instructions of a start-up sample; `None` in figures recorded before the start-up was
     /// measured.
     #[serde(default)]
@@ -97,10 +108,11 @@ pub fn section(observers: &BTreeMap<String, OnTarget>) -> String {
     } else {
         s.push_str(
             "On the emulated Cortex-M4F (QEMU `mps2-an386`), over the design's recorded sequence: instructions executed by `push` + `estimate` \
-             per sample (not cycles), the start-up up to the estimate that ends it, flash and RAM added to a program, \
+             per sample, the cycles they take by the Cortex-M4's published timing (zero wait states, a taken branch 3 cycles) and that time at 80 MHz, \
+             the start-up up to the estimate that ends it, flash and RAM added to a program, \
              and the largest difference between the chip's `f32` estimates and the host library's `f64` ones.\n\n\
-             | observer | instructions per sample, steady (median / max) | start-up: samples, max instructions | VDIV + VSQRT per sample (max) | stack bytes | flash bytes | RAM bytes | max \\|chip − host f64\\| |\n\
-             |---|---|---|---|---|---|---|---|\n",
+             | observer | instructions per sample, steady (median / max) | estimated cycles, steady (median / max) | µs per sample at 80 MHz (median) | start-up: samples, max instructions | VDIV + VSQRT per sample (max) | stack bytes | flash bytes | RAM bytes | max \\|chip − host f64\\| |\n\
+             |---|---|---|---|---|---|---|---|---|---|\n",
         );
         for (kind, api) in crate::observers::kind::REGISTRY
             .iter()
@@ -114,8 +126,12 @@ pub fn section(observers: &BTreeMap<String, OnTarget>) -> String {
             let largest = o
                 .largest_difference
                 .map_or("not measured".to_owned(), |d| format!("{d:.1e}"));
+            let (cycles, time) = match (o.cycles_median, o.cycles_max) {
+                (Some(median), Some(max)) => (format!("{median} / {max}"), format!("{:.2}", median as f64 / CLOCK_MHZ)),
+                _ => ("not estimated".to_owned(), "—".to_owned()),
+            };
             s.push_str(&format!(
-                "| {api} | {} / {} | {start_up} | {} | {} | {} | {} | {largest} |\n",
+                "| {api} | {} / {} | {cycles} | {time} | {start_up} | {} | {} | {} | {} | {largest} |\n",
                 o.instructions_median, o.instructions_max, o.divisions, o.stack_bytes, o.flash_bytes, o.ram_bytes
             ));
         }
@@ -185,6 +201,8 @@ mod tests {
                 OnTarget {
                     instructions_median: 241,
                     instructions_max: 241,
+                    cycles_median: Some(400),
+                    cycles_max: Some(404),
                     start_up_instructions_max: Some(336),
                     start_up_samples: Some(10),
                     divisions: 1,
@@ -225,7 +243,7 @@ mod tests {
         let after = splice(&before, &measured).unwrap();
         assert_eq!(after, format!("# r\n\ntext\n{measured}\nafter\n"));
         assert!(
-            after.contains("| `ekf()` | 241 / 241 | 10, 336 | 1 | 200 | 900 | 20 | 3.5e-6 |"),
+            after.contains("| `ekf()` | 241 / 241 | 400 / 404 | 5.00 | 10, 336 | 1 | 200 | 900 | 20 | 3.5e-6 |"),
             "{after}"
         );
         assert_eq!(
@@ -266,6 +284,7 @@ mod tests {
         let figures = recorded(&dir, "fn a() {}");
         assert_eq!(figures["map"].instructions_max, 126);
         assert_eq!(figures["map"].start_up_instructions_max, None);
+        assert_eq!(figures["map"].cycles_median, None);
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -1,8 +1,9 @@
 //! Measures every observer of every generated design on the emulated Cortex-M4F (the map, the
-//! observers the map starts and the EKF from the box centre, whichever the design has), rewrites
-//! the table in `docs/chip.md` between `<!-- on-target:begin -->` and `<!-- on-target:end -->` (and
-//! the C build of every observer, `generated/c/`, between `<!-- c-on-target:begin -->` and
-//! `<!-- c-on-target:end -->`), and
+//! observers the map starts and the EKF from the box centre, whichever the design has) and the map
+//! and the EKF on the emulated Cortex-M0, rewrites the table in `docs/chip.md` between
+//! `<!-- on-target:begin -->` and `<!-- on-target:end -->` (the Cortex-M0's between
+//! `<!-- m0-on-target:begin -->` and `<!-- m0-on-target:end -->`, and the C build of every observer,
+//! `generated/c/`, between `<!-- c-on-target:begin -->` and `<!-- c-on-target:end -->`), and
 //! records each design's figures beside its report (`target/designs/<design>/on_target.json`, and
 //! `report.json`'s `observers[].on_target`, and the section of `report.md` that shows them):
 //!
@@ -25,7 +26,8 @@ use integration_tests::{chip_table, workspace_root};
 
 const USAGE: &str = "usage: on-target-report [--crate DIR]
 
-Measures the observers on the emulated Cortex-M4F (QEMU mps2-an386) and records the figures:
+Measures the observers on the emulated Cortex-M4F (QEMU mps2-an386) and Cortex-M0 (QEMU microbit)
+and records the figures:
   (no argument)   every shipped design: beside its report (target/designs/<name>/) and in docs/chip.md
   --crate DIR     the standalone crate `mho gen --spec FILE --out DIR` wrote: in DIR/report/ and DIR/README.md
 ";
@@ -56,8 +58,8 @@ fn main() -> ExitCode {
 fn run() -> Result<String, String> {
     let all = on_target::measure().map_err(|e| e.to_string())?;
     let program = on_target::Program::project();
-    on_target::same_alone(&program, &all)?;
-    let (table, recorded) = chip_table::project_table(&all)?;
+    on_target::same_alone(&program, &all.m4f)?;
+    let (table, recorded) = chip_table::project_table(&all.m4f)?;
     // Beside each design's report, which `gen` wrote there (and fills in again while the source is
     // the one measured).
     for (name, measured) in &recorded {
@@ -68,6 +70,9 @@ fn run() -> Result<String, String> {
     let path = workspace_root().join(chip_table::PAGE);
     let page = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
     let page = chip_table::with_table(&page, &table)?;
+    // The Cortex-M0's, beside the Cortex-M4F's medians as the page now gives them.
+    let m0_table = chip_table::m0_table(&all.m0, &|name, kind| chip_table::rust_median(&page, name, kind))?;
+    let page = chip_table::with_m0_table(&page, &m0_table)?;
     // The C build of every observer beside the Rust one, in the same page.
     let scratch = workspace_root().join("target/on-target-c");
     std::fs::create_dir_all(&scratch).map_err(|e| format!("{}: {e}", scratch.display()))?;
@@ -76,5 +81,5 @@ fn run() -> Result<String, String> {
     let c_table = on_target::c_table(&runs, &|name, kind| chip_table::rust_median(&page, name, kind))?;
     let page = chip_table::with_c_table(&page, &c_table)?;
     host::output::write_if_changed(&path, &page).map_err(|e| e.to_string())?;
-    Ok(format!("{table}\n{c_table}"))
+    Ok(format!("{table}\n{m0_table}\n{c_table}"))
 }

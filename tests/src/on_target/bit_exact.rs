@@ -57,7 +57,8 @@ pub fn chip_flag(saturation: Saturation) -> char {
 }
 
 /// Runs design `name`'s observer of `kind` on the host in f32, over the recorded sequence the chip
-/// runs (`RECORDED_Y`, `RECORDED_U`): per sample whether `push` accepted it and what `estimate`
+/// runs (`RECORDED_Y`, `RECORDED_U`; the integer observer in `i32` over `RECORDED_RAW_Y`,
+/// `RECORDED_RAW_U`): per sample whether `push` accepted it and what `estimate`
 /// gave, as the chip reports them. `None` for the EKF from the box centre (see [`host_ekf`]), an
 /// unknown design or a kind the design does not have.
 pub fn host_samples(name: &str, kind: Kind) -> Option<Vec<TargetSample>> {
@@ -92,6 +93,32 @@ pub fn host_samples(name: &str, kind: Kind) -> Option<Vec<TargetSample>> {
         };
     }
     for_each_started_observer!(started);
+    // The integer observer, over the raw sequence: a value printed as its `i32` taken as `u32` (the
+    // macro is unused while no design has one).
+    #[allow(unused_macros)]
+    macro_rules! fixed {
+        ($design:ident) => {
+            if kind == Kind::Fixed && stringify!($design) == name {
+                use generated::$design as d;
+                let mut observer = d::fixed_observer();
+                samples = Some(
+                    d::RECORDED_RAW_Y
+                        .iter()
+                        .zip(&d::RECORDED_RAW_U)
+                        .map(|(y, u)| TargetSample {
+                            accepted: observer.push(*y, *u).is_ok(),
+                            estimates: observer.estimate().map(|e| {
+                                e.iter()
+                                    .map(|e| (e.value as u32, chip_flag(e.saturation)))
+                                    .collect()
+                            }),
+                        })
+                        .collect::<Vec<_>>(),
+                );
+            }
+        };
+    }
+    for_each_fixed_observer!(fixed);
     samples
 }
 

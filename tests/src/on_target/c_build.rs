@@ -5,21 +5,22 @@
 use std::path::Path;
 use std::process::Command;
 
-use super::qemu::run_counted;
+use super::board::Board;
+use super::qemu::{run_counted, Count};
 use super::unavailable::{failed, require, require_tools, Unavailable};
 
 /// The Cortex-M4F with its single-precision FPU, as the Rust target `thumbv7em-none-eabihf`.
 pub const BOARD_FLAGS: [&str; 4] = ["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard", "-mfpu=fpv4-sp-d16"];
 
 /// Builds `sources` (each compiled with `include` on the include path and `flags`, then linked with the
-/// board's start-up code) into `elf` for the emulated board and runs it: what it printed, and the
-/// instructions and divisions of each measured call.
+/// board's start-up code) into `elf` for the emulated board and runs it: what it printed, and what
+/// each measured call executed.
 pub fn run_c_counted(
     sources: &[&Path],
     include: &Path,
     flags: &[&str],
     elf: &Path,
-) -> Result<(String, Vec<(u64, u64)>), Unavailable> {
+) -> Result<(String, Vec<Count>), Unavailable> {
     require_tools()?;
     require("arm-none-eabi-gcc", "gcc-arm-none-eabi")?;
     let gcc = |arguments: &mut Command| -> Result<(), Unavailable> {
@@ -67,5 +68,5 @@ pub fn run_c_counted(
         .arg(board.join("startup.c"))
         .args(&objects)
         .arg("-lm"))?;
-    run_counted(elf)
+    run_counted(Board::Mps2An386, elf)
 }

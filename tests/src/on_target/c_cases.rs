@@ -6,7 +6,7 @@ use std::path::Path;
 
 use super::c_observers::{c_harness, run_c_observer, CBoardRun};
 use super::unavailable::Unavailable;
-use super::{phases, spread, Kind};
+use super::{phases, spread, Board, Kind};
 
 /// `<math.h>` functions whose result may differ by an ulp between C libraries and Rust's `libm`
 /// (the correctly rounded `sqrtf`, `fabsf`, `floorf`, `fminf`, … give the same bits everywhere, and
@@ -233,14 +233,15 @@ pub fn run_shipped_on_board(c: &Path, dir: &Path) -> Result<Vec<(Case, CBoardRun
 }
 
 /// The C table of `docs/chip.md`: each C observer's instructions per sample over the recorded
-/// sequence once started (min / median / max, [`phases`]), the Rust build's median beside it, its
+/// sequence once started (min / median / max, [`phases`]), their estimated cycles and time at
+/// 80 MHz ([`super::timing`]), the Rust build's median beside it, its
 /// divisions, stack, flash and RAM, and its largest difference to the Rust observer.
 pub fn c_table(
     runs: &[(Case, CBoardRun, f32)],
     rust_medians: &dyn Fn(&str, Kind) -> Option<u64>,
 ) -> Result<String, String> {
     let mut table = String::from(
-        "| design | C observer | instructions per sample, steady (min / median / max) | Rust build (median) | VDIV + VSQRT per sample (max) | stack bytes | flash bytes | RAM bytes | max \\|C − Rust\\| |\n|---|---|---|---|---|---|---|---|---|\n",
+        "| design | C observer | instructions per sample, steady (min / median / max) | estimated cycles, steady (median / max) | µs per sample at 80 MHz (median) | Rust build (median) | VDIV + VSQRT per sample (max) | stack bytes | flash bytes | RAM bytes | max \\|C − Rust\\| |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for (case, run, largest) in runs {
         let what = format!("{} {}", case.name, case.kind);
@@ -254,10 +255,19 @@ pub fn c_table(
             .map_err(|e| format!("{what}: {e}"))?
             .steady;
         let (min, median, max) = spread(&steady);
+        let cycles = run
+            .cycles
+            .get(..case.recorded)
+            .ok_or_else(|| format!("{what}: no cycles"))?;
+        let cycles = phases(cycles, &accepted, &estimated, start_up)
+            .map_err(|e| format!("{what}: {e}"))?
+            .steady;
+        let (_, cycles, cycles_max) = spread(&cycles);
+        let time = Board::Mps2An386.microseconds(cycles);
         let divisions = run.counts[..case.recorded].iter().map(|c| c.1).max().unwrap_or(0);
         let rust = rust_medians(case.name, kind).map_or("—".to_owned(), |n| n.to_string());
         table += &format!(
-            "| `{}` | `{}_{}` | {min} / {median} / {max} | {rust} | {divisions} | {} | {} | {} | {} |\n",
+            "| `{}` | `{}_{}` | {min} / {median} / {max} | {cycles} / {cycles_max} | {time:.2} | {rust} | {divisions} | {} | {} | {} | {} |\n",
             case.name,
             case.name,
             case.kind,

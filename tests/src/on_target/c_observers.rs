@@ -170,6 +170,8 @@ pub struct CBoardRun {
     pub lines: Vec<String>,
     /// Instructions and divisions (`VDIV`, `VSQRT`) of each sample's `push` + `estimate`.
     pub counts: Vec<(u64, u64)>,
+    /// Estimated Cortex-M4F cycles of each sample's `push` + `estimate` ([`super::timing`]).
+    pub cycles: Vec<u64>,
     /// Bytes of code and tables of the design's C file that the program keeps.
     pub flash_bytes: u64,
     /// `sizeof` the observer.
@@ -215,7 +217,8 @@ pub fn run_c_observer(
         .sum();
     Ok(CBoardRun {
         lines: sample_lines(&text),
-        counts,
+        cycles: counts.iter().map(|c| c.cycles).collect(),
+        counts: counts.iter().map(|c| (c.instructions, c.divisions)).collect(),
         flash_bytes,
         ram_bytes: number("RAM")?,
         stack_bytes: number("STACK")?,

@@ -1,9 +1,12 @@
-//! Building the on-target programs (cargo for `thumbv7em-none-eabihf`) and reading their ELFs with
-//! binutils: symbol addresses, sizes, and where the division instructions are.
+//! Building the on-target programs (cargo for the board's target) and reading their ELFs with
+//! binutils: symbol addresses, sizes, and the disassembly (each instruction's mnemonic and size).
 
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use super::board::Board;
+use super::timing::{parse_disassembly, Instruction};
 use super::unavailable::{failed, Unavailable};
 use crate::workspace_root;
 
@@ -30,17 +33,24 @@ impl Program {
         }
     }
 
-    /// Builds `bin` in release with `variables` set (the design and kind selections of
-    /// `tests/on-target/build.rs`), and copies the ELF to `copy` (under [`Program::elves`]), so that
-    /// the next build (which writes the same file) leaves it as built.
-    pub(super) fn build(&self, bin: &str, variables: &[(&str, &str)], copy: &str) -> Result<PathBuf, String> {
+    /// Builds `bin` in release for `board` with `variables` set (the design and kind selections of
+    /// `tests/on-target/build.rs`), and copies the ELF to `copy` (under [`Program::elves`] and the
+    /// board's [`Board::folder`]), so that the next build (which writes the same file) leaves it as
+    /// built.
+    pub(super) fn build(
+        &self,
+        board: Board,
+        bin: &str,
+        variables: &[(&str, &str)],
+        copy: &str,
+    ) -> Result<PathBuf, String> {
         let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
         let mut command = Command::new(cargo);
         command
             .current_dir(workspace_root())
             .args(["build", "--release", "--manifest-path"])
             .arg(&self.manifest)
-            .args(["--target", "thumbv7em-none-eabihf", "--bin", bin, "--target-dir"])
+            .args(["--target", board.target(), "--bin", bin, "--target-dir"])
             .arg(&self.target_dir);
         for variable in ["ON_TARGET_DESIGN", "ON_TARGET_KIND", "PROBE_DESIGN", "PROBE_KIND"] {
             command.env_remove(variable);
@@ -50,8 +60,8 @@ impl Program {
         if !output.status.success() {
             return Err(String::from_utf8_lossy(&output.stderr).into_owned());
         }
-        let built = self.target_dir.join("thumbv7em-none-eabihf/release").join(bin);
-        let copy = self.elves.join(copy);
+        let built = self.target_dir.join(board.target()).join("release").join(bin);
+        let copy = self.elves.join(board.folder()).join(copy);
         if let Some(folder) = copy.parent() {
             std::fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
         }
@@ -124,23 +134,19 @@ pub fn sizes(elf: &Path) -> Result<(u64, u64, u64), Unavailable> {
     }
 }
 
-/// Addresses of the division and square-root instructions (`VDIV`, `VSQRT`) in an ELF, from
-/// `arm-none-eabi-objdump -d`.
-pub(super) fn division_addresses(elf: &Path) -> Result<std::collections::BTreeSet<u64>, Unavailable> {
+/// Every instruction of an ELF by address (`arm-none-eabi-objdump -d`).
+pub(super) fn disassembly(elf: &Path) -> Result<BTreeMap<u64, Instruction>, Unavailable> {
     let output = Command::new("arm-none-eabi-objdump")
         .arg("-d")
         .arg(elf)
         .output()
         .map_err(|e| failed(format!("arm-none-eabi-objdump: {e}")))?;
-    let text = String::from_utf8_lossy(&output.stdout);
-    Ok(text
-        .lines()
-        .filter_map(|line| {
-            // "     1a4:\teec0 7a80 \tvdiv.f32\ts15, s1, s0"
-            let (address, rest) = line.trim_start().split_once(':')?;
-            let mnemonic = rest.split('\t').nth(2)?.trim();
-            (mnemonic.starts_with("vdiv") || mnemonic.starts_with("vsqrt"))
-                .then(|| u64::from_str_radix(address.trim(), 16).ok())?
-        })
-        .collect())
+    if !output.status.success() {
+        return Err(failed(format!(
+            "arm-none-eabi-objdump -d {}: {}",
+            elf.display(),
+            String::from_utf8_lossy(&output.stderr)
+        )));
+    }
+    Ok(parse_disassembly(&String::from_utf8_lossy(&output.stdout)))
 }

@@ -8,6 +8,8 @@ use super::measurement::{EkfMeasurement, ObserverMeasurement, Phases};
 pub struct Figures {
     /// Its instructions split into start-up and steady state.
     pub phases: Phases,
+    /// Its estimated cycles split the same way ([`super::timing`]).
+    pub cycles: Phases,
     /// Most `VDIV` + `VSQRT` of a sample.
     pub divisions: u64,
     /// Deepest stack use of a sample, in bytes.
@@ -25,6 +27,7 @@ impl Figures {
     pub fn of_observer(observer: &ObserverMeasurement, largest: f64) -> Result<Self, String> {
         Ok(Figures {
             phases: observer.phases()?,
+            cycles: observer.cycle_phases()?,
             divisions: observer.divisions.iter().copied().max().unwrap_or(0),
             stack_bytes: observer.stack_bytes as u64,
             flash_bytes: observer.flash_bytes,
@@ -37,6 +40,7 @@ impl Figures {
     pub fn of_filter(filter: &EkfMeasurement, largest: f64) -> Result<Self, String> {
         Ok(Figures {
             phases: filter.phases()?,
+            cycles: filter.cycle_phases()?,
             divisions: filter.divisions.iter().copied().max().unwrap_or(0),
             stack_bytes: filter.stack_bytes as u64,
             flash_bytes: filter.flash_bytes,
@@ -48,16 +52,20 @@ impl Figures {
     /// As recorded beside a report.
     pub fn on_target(&self) -> host::report::on_target::OnTarget {
         let (_, median, max) = spread(&self.phases.steady);
+        let (_, cycles_median, cycles_max) = spread(&self.cycles.steady);
         host::report::on_target::OnTarget {
             instructions_median: median,
             instructions_max: max,
+            cycles_median: Some(cycles_median),
+            cycles_max: Some(cycles_max),
             start_up_instructions_max: Some(self.phases.start_up_max),
             start_up_samples: Some(self.phases.start_up_samples as u64),
             divisions: self.divisions,
             flash_bytes: self.flash_bytes,
             ram_bytes: self.ram_bytes,
             stack_bytes: self.stack_bytes,
-            largest_difference: Some(self.largest),
+            // NaN where there is no f64 truth (the integer observer).
+            largest_difference: (!self.largest.is_nan()).then_some(self.largest),
         }
     }
 }
@@ -70,4 +78,18 @@ pub fn spread(values: &[u64]) -> (u64, u64, u64) {
         return (0, 0, 0);
     }
     (sorted[0], sorted[sorted.len() / 2], sorted[sorted.len() - 1])
+}
+
+/// Checks that every sample's estimated cycles lie between its instructions (every instruction takes
+/// at least one cycle) and 19 times them (the slowest entry of the tables: an `LDM` of 16 registers
+/// that loads the PC); panics naming `what` and the sample otherwise.
+pub fn check_cycles(what: &str, instructions: &[u64], cycles: &[u64]) {
+    assert_eq!(
+        instructions.len(),
+        cycles.len(),
+        "{what}: one cycle estimate per sample"
+    );
+    for (k, (&n, &c)) in instructions.iter().zip(cycles).enumerate() {
+        assert!(n <= c && c <= 19 * n, "{what} sample {k}: {n} instructions, {c} cycles");
+    }
 }

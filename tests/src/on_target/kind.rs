@@ -21,17 +21,21 @@ pub enum Kind {
     Ekf,
     /// The moving-horizon estimate with fixed Gauss–Newton steps (`MheObserver`).
     Mhe,
+    /// The integer map (`fixed_observer()`, where the design has one): `i32` in and out, over the
+    /// raw recorded sequence (`RECORDED_RAW_Y`, `RECORDED_RAW_U`).
+    Fixed,
 }
 
 impl Kind {
     /// Every kind, in the order the report lists them.
-    pub const ALL: [Kind; 6] = [
+    pub const ALL: [Kind; 7] = [
         Kind::Map,
         Kind::Corrected,
         Kind::StartedEkf,
         Kind::RestartedEkf,
         Kind::Ekf,
         Kind::Mhe,
+        Kind::Fixed,
     ];
 
     /// Its name for the on-target program (`ON_TARGET_KIND`, `PROBE_KIND`).
@@ -43,6 +47,7 @@ impl Kind {
             Kind::RestartedEkf => "restarted_ekf",
             Kind::Ekf => "ekf",
             Kind::Mhe => "mhe",
+            Kind::Fixed => "fixed",
         }
     }
 
@@ -55,6 +60,7 @@ impl Kind {
             Kind::RestartedEkf => "ekf_restart",
             Kind::Ekf => "ekf_box",
             Kind::Mhe => "mhe",
+            Kind::Fixed => "fixed",
         }
     }
 
@@ -67,6 +73,7 @@ impl Kind {
             Kind::RestartedEkf => "RestartedEkfObserver::new()",
             Kind::Ekf => "ekf()",
             Kind::Mhe => "MheObserver::new()",
+            Kind::Fixed => "fixed_observer()",
         }
     }
 
@@ -93,8 +100,32 @@ pub fn kinds(name: &str) -> Vec<Kind> {
     if !kinds.is_empty() {
         kinds.push(Kind::Ekf);
     }
+    kinds.extend(has_fixed(name).then_some(Kind::Fixed));
     kinds.sort();
     kinds
+}
+
+/// Whether design `name`'s generated file has the integer observer (`fixed_observer()`).
+// With no design having one, the macro is never invoked and the list never grows.
+#[allow(unused_macros, unused_mut)]
+pub fn has_fixed(name: &str) -> bool {
+    let mut designs: Vec<&str> = Vec::new();
+    macro_rules! fixed {
+        ($design:ident) => {
+            designs.push(stringify!($design));
+        };
+    }
+    for_each_fixed_observer!(fixed);
+    designs.contains(&name)
+}
+
+/// The kinds of design `name` that run on the emulated Cortex-M0 (software floating point): the
+/// map, the EKF from the box centre, and the integer observer where the design has one.
+pub fn m0_kinds(name: &str) -> Vec<Kind> {
+    kinds(name)
+        .into_iter()
+        .filter(|k| matches!(k, Kind::Map | Kind::Ekf | Kind::Fixed))
+        .collect()
 }
 
 /// The kind of design `name`'s `observer()` (its type compared with each kind's); `None` for an

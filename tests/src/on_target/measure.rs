@@ -5,10 +5,11 @@
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 
+use super::board::Board;
 use super::elf::{sizes, Program};
-use super::kind::{design_names, kinds, Kind};
-use super::measurement::Measurements;
-use super::qemu::run_counted;
+use super::kind::{design_names, kinds, m0_kinds, Kind};
+use super::measurement::{Boards, Measurements};
+use super::qemu::{run_counted, Count};
 use super::semihosting::{parse, parse_ekf};
 use super::unavailable::{failed, require_tools, Unavailable};
 
@@ -16,26 +17,47 @@ use super::unavailable::{failed, require_tools, Unavailable};
 type Built = (String, bool, PathBuf);
 
 /// What QEMU reported for a [`Built`] program: the design, whether it is the EKF's, what the program
-/// printed and the instructions and divisions of each measured call.
-type Ran = (String, bool, String, Vec<(u64, u64)>);
+/// printed and what each measured call executed.
+type Ran = (String, bool, String, Vec<Count>);
 
-/// Builds and runs, per design, two programs on the emulated chip: one that runs the map and every
-/// observer the map starts ([`kinds`]) one after the other, and one that runs the EKF from the box
-/// centre; then the size probes (one per design and kind, the families, a baseline). QEMU runs on a
-/// second thread while cargo builds the next program. `Err(Unavailable::Missing)` when QEMU or
-/// binutils are missing.
-pub fn measure() -> Result<Measurements, Unavailable> {
-    let designs: Vec<(String, Vec<Kind>)> = design_names()
-        .into_iter()
-        .map(|name| (name.to_owned(), kinds(name)))
-        .collect();
-    measure_designs(&Program::project(), &designs, &generated::FAMILIES)
+/// Builds and runs, per design, the programs on the emulated Cortex-M4F: one that runs the map and
+/// every observer the map starts ([`kinds`]) one after the other, and one that runs the EKF from the
+/// box centre; then the size probes (one per design and kind, the families, a baseline). Then the
+/// same on the emulated Cortex-M0 for the kinds it runs ([`m0_kinds`]: the map and the EKF in
+/// software floating point, and the integer observer). QEMU runs on a second thread while cargo
+/// builds the next program. `Err(Unavailable::Missing)` when QEMU or binutils are missing.
+pub fn measure() -> Result<Boards, Unavailable> {
+    Ok(Boards {
+        m4f: measure_board(Board::Mps2An386)?,
+        m0: measure_board(Board::Microbit)?,
+    })
 }
 
-/// [`measure`] of `designs` (each with its kinds, the EKF from the centre among them) and
-/// `families` (probes only) as `program` links them.
+/// [`measure`] on one board: every kind of every design and the families on the Cortex-M4F, the
+/// kinds it runs ([`m0_kinds`]) on the Cortex-M0.
+pub fn measure_board(board: Board) -> Result<Measurements, Unavailable> {
+    let families: &[&str] = match board {
+        Board::Mps2An386 => &generated::FAMILIES,
+        Board::Microbit => &[],
+    };
+    let designs: Vec<(String, Vec<Kind>)> = design_names()
+        .into_iter()
+        .map(|name| {
+            let kinds = match board {
+                Board::Mps2An386 => kinds(name),
+                Board::Microbit => m0_kinds(name),
+            };
+            (name.to_owned(), kinds)
+        })
+        .collect();
+    measure_designs(&Program::project(), board, &designs, families)
+}
+
+/// [`measure`] on `board` of `designs` (each with its kinds, the EKF from the centre among them)
+/// and `families` (probes only) as `program` links them.
 pub fn measure_designs(
     program: &Program,
+    board: Board,
     designs: &[(String, Vec<Kind>)],
     families: &[&str],
 ) -> Result<Measurements, Unavailable> {
@@ -46,7 +68,7 @@ pub fn measure_designs(
             receive
                 .into_iter()
                 .map(|(name, ekf, elf)| {
-                    let (text, counts) = run_counted(&elf)?;
+                    let (text, counts) = run_counted(board, &elf)?;
                     Ok((name, ekf, text, counts))
                 })
                 .collect()
@@ -58,6 +80,7 @@ pub fn measure_designs(
                     let kinds: Vec<&str> = group.iter().map(|k| k.chip_name()).collect();
                     let elf = program
                         .build(
+                            board,
                             "on-target",
                             &[("ON_TARGET_DESIGN", name), ("ON_TARGET_KIND", &kinds.join(","))],
                             &format!("runs/{name}{suffix}.elf"),
@@ -67,12 +90,17 @@ pub fn measure_designs(
                     let _ = send.send((name.to_owned(), false, elf));
                 }
                 let elf = program
-                    .build("ekf", &[("ON_TARGET_DESIGN", name)], &format!("runs/{name}.ekf.elf"))
+                    .build(
+                        board,
+                        "ekf",
+                        &[("ON_TARGET_DESIGN", name)],
+                        &format!("runs/{name}.ekf.elf"),
+                    )
                     .map_err(|e| failed(format!("EKF program of {name}: {e}")))?;
                 let _ = send.send((name.to_owned(), true, elf));
             }
             drop(send);
-            probe_all(program, designs, families)
+            probe_all(program, board, designs, families)
         })();
         let ran = qemu
             .join()
@@ -82,6 +110,7 @@ pub fn measure_designs(
     let (ran, probes) = (ran?, probes?);
 
     let mut all = Measurements {
+        board,
         family_flash_bytes: probes.families,
         ..Measurements::default()
     };
@@ -102,7 +131,7 @@ pub fn measure_designs(
                     filter.samples.len()
                 )));
             }
-            (filter.instructions, filter.divisions) = counts.into_iter().unzip();
+            (filter.instructions, filter.divisions, filter.cycles) = split(counts);
             (filter.flash_bytes, filter.static_ram_bytes) = cost(Kind::Ekf)?;
             all.filters.insert(name, filter);
         } else {
@@ -118,7 +147,8 @@ pub fn measure_designs(
             let mut counts = counts.into_iter();
             let by_kind = all.observers.entry(name.clone()).or_default();
             for mut observer in observers {
-                (observer.instructions, observer.divisions) = counts.by_ref().take(observer.samples.len()).unzip();
+                (observer.instructions, observer.divisions, observer.cycles) =
+                    split(counts.by_ref().take(observer.samples.len()).collect());
                 (observer.flash_bytes, observer.static_ram_bytes) = cost(observer.kind)?;
                 if by_kind.insert(observer.kind, observer).is_some() {
                     return Err(failed(format!("{name}: one kind ran twice")));
@@ -127,6 +157,13 @@ pub fn measure_designs(
         }
     }
     Ok(all)
+}
+
+/// Instructions, divisions and cycles of each call, apart.
+fn split(counts: Vec<Count>) -> (Vec<u64>, Vec<u64>, Vec<u64>) {
+    let instructions = counts.iter().map(|c| c.instructions).collect();
+    let divisions = counts.iter().map(|c| c.divisions).collect();
+    (instructions, divisions, counts.iter().map(|c| c.cycles).collect())
 }
 
 /// The `on-target` programs that measure `kinds` (the EKF from the box centre has a program of its
@@ -157,11 +194,16 @@ struct Probes {
     families: BTreeMap<String, u64>,
 }
 
-/// Builds the baseline probe, one probe per design and kind, and one per family.
-fn probe_all(program: &Program, designs: &[(String, Vec<Kind>)], families: &[&str]) -> Result<Probes, Unavailable> {
+/// Builds the baseline probe, one probe per design and kind, and one per family, for `board`.
+fn probe_all(
+    program: &Program,
+    board: Board,
+    designs: &[(String, Vec<Kind>)],
+    families: &[&str],
+) -> Result<Probes, Unavailable> {
     let baseline = sizes(
         &program
-            .build("probe", &[], "probes/baseline.elf")
+            .build(board, "probe", &[], "probes/baseline.elf")
             .map_err(|e| failed(format!("baseline probe: {e}")))?,
     )?;
     let mut kinds = BTreeMap::new();
@@ -169,6 +211,7 @@ fn probe_all(program: &Program, designs: &[(String, Vec<Kind>)], families: &[&st
         for &kind in design_kinds {
             let probe = program
                 .build(
+                    board,
                     "probe",
                     &[("PROBE_DESIGN", name), ("PROBE_KIND", kind.chip_name())],
                     &format!("probes/{name}.{}.elf", kind.chip_name()),
@@ -190,7 +233,12 @@ fn probe_all(program: &Program, designs: &[(String, Vec<Kind>)], families: &[&st
     let mut family_flash = BTreeMap::new();
     for &family in families {
         let probe = program
-            .build("probe", &[("PROBE_DESIGN", family)], &format!("probes/{family}.elf"))
+            .build(
+                board,
+                "probe",
+                &[("PROBE_DESIGN", family)],
+                &format!("probes/{family}.elf"),
+            )
             .map_err(|e| failed(format!("probe of family {family}: {e}")))?;
         let (text, data, _) = sizes(&probe)?;
         family_flash.insert(family.to_owned(), (text + data).saturating_sub(baseline.0 + baseline.1));
@@ -211,13 +259,14 @@ pub fn instructions_alone(program: &Program, name: &str, kind: Kind) -> Result<V
     }
     let elf = program
         .build(
+            Board::Mps2An386,
             "on-target",
             &[("ON_TARGET_DESIGN", name), ("ON_TARGET_KIND", kind.chip_name())],
             &format!("runs/{name}.{}.elf", kind.chip_name()),
         )
         .map_err(|e| failed(format!("on-target program of {name}'s {} alone: {e}", kind.api())))?;
-    let (_, counts) = run_counted(&elf)?;
-    Ok(counts.into_iter().map(|(n, _)| n).collect())
+    let (_, counts) = run_counted(Board::Mps2An386, &elf)?;
+    Ok(counts.into_iter().map(|c| c.instructions).collect())
 }
 
 /// Checks that every kind of every design that ran with others counts, built alone, the same
@@ -247,6 +296,7 @@ pub fn same_alone(program: &Program, all: &Measurements) -> Result<(), String> {
 /// Builds the probe that indexes out of bounds: it must fail to link, naming the missing symbol.
 pub fn panic_check_catches_a_reachable_panic() -> Result<bool, Unavailable> {
     match Program::project().build(
+        Board::Mps2An386,
         "probe",
         &[("PROBE_DESIGN", "__reachable_panic")],
         "probes/reachable_panic.elf",

@@ -4,6 +4,7 @@
 
 use std::collections::BTreeMap;
 
+use super::board::Board;
 use super::kind::Kind;
 
 /// One sample as the target reported it (or the host computed it).
@@ -30,6 +31,8 @@ pub struct ObserverMeasurement {
     pub instructions: Vec<u64>,
     /// `VDIV` and `VSQRT` instructions executed per sample.
     pub divisions: Vec<u64>,
+    /// Estimated cycles of `push` + `estimate` per sample ([`super::timing`]).
+    pub cycles: Vec<u64>,
     /// Deepest stack use of `push` + `estimate` (the call to them included), in bytes.
     pub stack_bytes: usize,
     /// `size_of` the observer on the target, in bytes.
@@ -43,13 +46,22 @@ pub struct ObserverMeasurement {
 impl ObserverMeasurement {
     /// The instructions split into start-up and steady state ([`phases`]).
     pub fn phases(&self) -> Result<Phases, String> {
+        self.split(&self.instructions)
+    }
+
+    /// The estimated cycles split the same way.
+    pub fn cycle_phases(&self) -> Result<Phases, String> {
+        self.split(&self.cycles)
+    }
+
+    fn split(&self, per_sample: &[u64]) -> Result<Phases, String> {
         let accepted: Vec<bool> = self.samples.iter().map(|s| s.accepted).collect();
         let estimated: Vec<bool> = self
             .samples
             .iter()
             .map(|s| s.accepted && s.estimates.is_some())
             .collect();
-        phases(&self.instructions, &accepted, &estimated, self.start_up)
+        phases(per_sample, &accepted, &estimated, self.start_up)
     }
 }
 
@@ -119,9 +131,21 @@ pub fn phases(instructions: &[u64], accepted: &[bool], estimated: &[bool], start
     })
 }
 
-/// Everything measured on the target.
+/// Everything measured on both emulated boards.
+#[derive(Clone, Debug, Default)]
+pub struct Boards {
+    /// On the Cortex-M4F (QEMU `mps2-an386`): every kind of every design.
+    pub m4f: Measurements,
+    /// On the Cortex-M0 (QEMU `microbit`, software floating point): each design's map and EKF
+    /// from the box centre (and its integer observer, where it has one).
+    pub m0: Measurements,
+}
+
+/// Everything measured on one target.
 #[derive(Clone, Debug, Default)]
 pub struct Measurements {
+    /// The board it ran on.
+    pub board: Board,
     /// Per design, its map and the observers the map starts, by kind.
     pub observers: BTreeMap<String, BTreeMap<Kind, ObserverMeasurement>>,
     /// Per design, its EKF from the box centre.
@@ -157,6 +181,8 @@ pub struct EkfMeasurement {
     pub instructions: Vec<u64>,
     /// `VDIV` and `VSQRT` instructions executed per sample.
     pub divisions: Vec<u64>,
+    /// Estimated cycles of `push` + `targets` per sample ([`super::timing`]).
+    pub cycles: Vec<u64>,
     /// Deepest stack use of `push` + `targets` (the call to them included), in bytes.
     pub stack_bytes: usize,
     /// `size_of` the filter on the target, in bytes.
@@ -173,5 +199,11 @@ impl EkfMeasurement {
     pub fn phases(&self) -> Result<Phases, String> {
         let accepted: Vec<bool> = self.samples.iter().map(EkfSample::accepted).collect();
         phases(&self.instructions, &accepted, &accepted, 0)
+    }
+
+    /// The estimated cycles split the same way.
+    pub fn cycle_phases(&self) -> Result<Phases, String> {
+        let accepted: Vec<bool> = self.samples.iter().map(EkfSample::accepted).collect();
+        phases(&self.cycles, &accepted, &accepted, 0)
     }
 }

@@ -1,13 +1,27 @@
-//! Running a program on the emulated board (QEMU `mps2-an386`, semihosting) and counting, from an
-//! execution trace, the instructions between the runner's `measure_start` and `measure_end` markers.
+//! Running a program on an emulated board (QEMU `mps2-an386` or `microbit`, semihosting) and
+//! counting, from an execution trace, the instructions between the runner's `measure_start` and
+//! `measure_end` markers, and their estimated cycles ([`super::timing`]).
 
 use std::ffi::OsStr;
 use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use super::elf::{division_addresses, symbol};
+use super::board::Board;
+use super::elf::{disassembly, symbol};
+use super::timing::{Core, Instruction, Timer};
 use super::unavailable::{failed, Unavailable};
+
+/// What one measured call executed: instructions, of them `VDIV` + `VSQRT`, and the estimated cycles.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Count {
+    /// Instructions executed (the markers' included).
+    pub instructions: u64,
+    /// `VDIV` and `VSQRT` among them.
+    pub divisions: u64,
+    /// Their estimated cycles on the board's core.
+    pub cycles: u64,
+}
 
 /// The QEMU option that makes every translation block one instruction (renamed in QEMU 8.1).
 fn one_instruction_per_block() -> Result<Vec<&'static str>, Unavailable> {
@@ -30,8 +44,9 @@ fn one_instruction_per_block() -> Result<Vec<&'static str>, Unavailable> {
     })
 }
 
-/// Runs `elf` under QEMU with semihosting and an execution trace in `trace`; returns what it printed.
-fn run_qemu(elf: &Path, trace: &Path, timeout: Duration) -> Result<String, Unavailable> {
+/// Runs `elf` on `board` under QEMU with semihosting and an execution trace in `trace`; returns what
+/// it printed.
+fn run_qemu(board: Board, elf: &Path, trace: &Path, timeout: Duration) -> Result<String, Unavailable> {
     let mut tracing: Vec<&OsStr> = one_instruction_per_block()?.into_iter().map(OsStr::new).collect();
     tracing.extend([
         OsStr::new("-d"),
@@ -39,7 +54,7 @@ fn run_qemu(elf: &Path, trace: &Path, timeout: Duration) -> Result<String, Unava
         OsStr::new("-D"),
         trace.as_os_str(),
     ]);
-    let (status, text) = qemu(elf, &tracing, &trace.with_extension("out"), timeout)?;
+    let (status, text) = qemu(board, elf, &tracing, &trace.with_extension("out"), timeout)?;
     if !status.success() || !text.contains("DONE") {
         return Err(failed(format!("the on-target program failed ({status}):\n{text}")));
     }
@@ -50,7 +65,7 @@ fn run_qemu(elf: &Path, trace: &Path, timeout: Duration) -> Result<String, Unava
 /// its output in `output`; returns what it printed. An error when it exits with a failure (a
 /// semihosting `EXIT_FAILURE`, as a panic handler does) or does not finish within `timeout`.
 pub fn run_on_emulator(elf: &Path, output: &Path, timeout: Duration) -> Result<String, Unavailable> {
-    let (status, text) = qemu(elf, &[], output, timeout)?;
+    let (status, text) = qemu(Board::Mps2An386, elf, &[], output, timeout)?;
     if !status.success() {
         return Err(failed(format!(
             "{} failed on the emulator ({status}):\n{text}",
@@ -60,10 +75,11 @@ pub fn run_on_emulator(elf: &Path, output: &Path, timeout: Duration) -> Result<S
     Ok(text)
 }
 
-/// Runs `elf` under QEMU with semihosting and the `extra` options; returns its exit status and what
-/// it printed. Output goes to `output`, a file, not a pipe (QEMU can hang when a pipe closes early),
-/// and a run that does not finish within `timeout` is killed.
+/// Runs `elf` on `board` under QEMU with semihosting and the `extra` options; returns its exit status
+/// and what it printed. Output goes to `output`, a file, not a pipe (QEMU can hang when a pipe closes
+/// early), and a run that does not finish within `timeout` is killed.
 fn qemu(
+    board: Board,
     elf: &Path,
     extra: &[&OsStr],
     output: &Path,
@@ -74,17 +90,8 @@ fn qemu(
     }
     let stdout = std::fs::File::create(output).map_err(|e| failed(e.to_string()))?;
     let mut child = Command::new("qemu-system-arm")
-        .args([
-            "-machine",
-            "mps2-an386",
-            "-cpu",
-            "cortex-m4",
-            "-nographic",
-            "-monitor",
-            "none",
-            "-serial",
-            "none",
-        ])
+        .args(board.machine())
+        .args(["-nographic", "-monitor", "none", "-serial", "none"])
         .args(["-semihosting-config", "enable=on,target=native"])
         .args(extra)
         .arg("-kernel")
@@ -110,51 +117,60 @@ fn qemu(
     Ok((status, text))
 }
 
-/// Instructions, and of them divisions, executed from each entry of `start` to the following entry
-/// of `end`, from a QEMU `-d exec` trace with one instruction per block (each `Trace` line is one
-/// executed instruction).
-fn count_between(
-    trace: &Path,
+/// What each call from an entry of `start` to the following entry of `end` executed ([`Count`]),
+/// from a QEMU `-d exec` trace with one instruction per block (each `Trace` line is one executed
+/// instruction); `code` is the ELF's disassembly, whose mnemonics give each instruction's cycles on
+/// `core`, and the next traced address whether it branched.
+pub fn count_between(
+    trace: impl std::io::BufRead,
     start: u64,
     end: u64,
-    divisions: &std::collections::BTreeSet<u64>,
-) -> Result<Vec<(u64, u64)>, Unavailable> {
-    use std::io::BufRead;
-    let file = std::fs::File::open(trace).map_err(|e| failed(e.to_string()))?;
-    let (mut counts, mut current) = (Vec::new(), None);
-    for line in std::io::BufReader::new(file).lines() {
-        let line = line.map_err(|e| failed(e.to_string()))?;
+    core: Core,
+    code: &std::collections::BTreeMap<u64, Instruction>,
+) -> Result<Vec<Count>, String> {
+    let (mut counts, mut current): (Vec<Count>, Option<Count>) = (Vec::new(), None);
+    let mut timer = Timer::new(core, code);
+    for line in trace.lines() {
+        let line = line.map_err(|e| e.to_string())?;
         let Some(fields) = line.strip_prefix("Trace ").and_then(|l| l.split('[').nth(1)) else {
             continue;
         };
         let Some(pc) = fields.split('/').nth(1).and_then(|pc| u64::from_str_radix(pc, 16).ok()) else {
             continue;
         };
+        // The instruction before this one, if it was measured, is timed now that its successor shows
+        // whether it branched.
+        let counted = current.is_some() && pc != start && pc != end;
+        let before = timer.next(pc, counted)?;
+        if let Some(count) = current.as_mut() {
+            count.cycles += before;
+        }
         if pc == start {
-            current = Some((0, 0));
+            current = Some(Count::default());
         } else if pc == end {
-            if let Some(n) = current.take() {
-                counts.push(n);
-            }
-        } else if let Some((n, d)) = current.as_mut() {
-            *n += 1;
-            *d += u64::from(divisions.contains(&pc));
+            counts.extend(current.take());
+        } else if let Some(count) = current.as_mut() {
+            count.instructions += 1;
+            count.divisions += u64::from(code.get(&pc).is_some_and(Instruction::is_division));
         }
     }
     Ok(counts)
 }
 
-/// Runs `elf` under QEMU with an execution trace beside it and returns what it printed, and the
-/// instructions and divisions of each measured call.
-pub(super) fn run_counted(elf: &Path) -> Result<(String, Vec<(u64, u64)>), Unavailable> {
+/// Runs `elf` on `board` under QEMU with an execution trace beside it and returns what it printed,
+/// and what each measured call executed.
+pub(super) fn run_counted(board: Board, elf: &Path) -> Result<(String, Vec<Count>), Unavailable> {
     let trace = elf.with_extension("trace");
-    let text = run_qemu(elf, &trace, Duration::from_secs(300))?;
+    let text = run_qemu(board, elf, &trace, Duration::from_secs(300))?;
+    let file = std::fs::File::open(&trace).map_err(|e| failed(format!("{}: {e}", trace.display())))?;
     let counts = count_between(
-        &trace,
+        std::io::BufReader::new(file),
         symbol(elf, "measure_start")?,
         symbol(elf, "measure_end")?,
-        &division_addresses(elf)?,
-    )?;
+        board.core(),
+        &disassembly(elf)?,
+    )
+    .map_err(|e| failed(format!("{}: {e}", elf.display())))?;
     let _ = std::fs::remove_file(&trace);
     Ok((text, counts))
 }

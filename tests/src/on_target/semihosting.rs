@@ -22,6 +22,7 @@ pub(super) fn parse(text: &str) -> Result<Vec<ObserverMeasurement>, Unavailable>
                 samples: Vec::new(),
                 instructions: Vec::new(),
                 divisions: Vec::new(),
+                cycles: Vec::new(),
                 stack_bytes: 0,
                 observer_bytes: 0,
                 flash_bytes: 0,

@@ -19,7 +19,7 @@ use host::report::on_target::{self as figures, Measured, OnTarget};
 use host::spec::{Design, ObserverKind};
 use host::tables::Tables;
 
-use super::{chip_flag, EkfMeasurement, Figures, Kind, ObserverMeasurement, Program};
+use super::{chip_flag, Board, EkfMeasurement, Figures, Kind, ObserverMeasurement, Program};
 use crate::workspace_root;
 
 /// A generated crate as the harness reads it.
@@ -106,8 +106,8 @@ impl Crate {
     }
 
     /// The on-target program linking this crate: `tests/on-target/Cargo.toml` with the crate as its
-    /// `generated` and absolute paths to the shared sources, written with `memory.x` and the
-    /// project's lock file into `target/on-target/crates/<name>/`; built into the project's
+    /// `generated` and absolute paths to the shared sources (its build script holds the memory
+    /// layouts), written with the project's lock file into `target/on-target/crates/<name>/`; built into the project's
     /// `target/on-target/` (its dependencies are compiled once for every program).
     pub fn program(&self) -> Result<Program, String> {
         let source = workspace_root().join("tests/on-target");
@@ -162,7 +162,6 @@ impl Crate {
                 self.folder.display()
             ),
         )?;
-        write("memory.x", &read("memory.x")?)?;
         write("Cargo.lock", &read("Cargo.lock")?)?;
         let target_dir = workspace_root().join("target").join("on-target");
         Ok(Program {
@@ -181,7 +180,8 @@ pub fn measure_crate(folder: &Path) -> Result<String, String> {
     let name = user.design.name.clone();
     let program = user.program()?;
     let kinds = user.kinds();
-    let all = super::measure_designs(&program, &[(name.clone(), kinds.clone())], &[]).map_err(|e| e.to_string())?;
+    let all = super::measure_designs(&program, Board::Mps2An386, &[(name.clone(), kinds.clone())], &[])
+        .map_err(|e| e.to_string())?;
     super::same_alone(&program, &all)?;
 
     let code = host::generate::model_code(&user.design).map_err(|e| e.to_string())?;
@@ -262,6 +262,7 @@ fn host_rows(
         Kind::RestartedEkf => ObserverKind::EkfRestart,
         Kind::Ekf => ObserverKind::EkfBox,
         Kind::Mhe => ObserverKind::Mhe,
+        Kind::Fixed => return Err("a standalone crate's integer observer is not measured on the chip".to_owned()),
     };
     recorded::estimate(&user.design, &user.tables, code, kind, precision, rows).map_err(|e| e.to_string())
 }

@@ -1,6 +1,7 @@
 //! Runs one generated design's extended Kalman filter (chosen by `ON_TARGET_DESIGN` at build time, so
 //! that the program links that design alone) over its recorded sequence on the emulated Cortex-M4F,
-//! the map observer's peer, measured the same way (see `main.rs`), and reports over semihosting:
+//! the map observer's peer, measured the same way (see `main.rs`; on the emulated Cortex-M0 too, soft
+//! float), and reports over semihosting:
 //!
 //! ```text
 //! K <k> <accepted 0|1> [<target bits hex>…] X <state bits hex>…     one line per sample
@@ -23,10 +24,11 @@ use core::panic::PanicInfo;
 
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprint, hprintln};
-use generated::firmware;
 use firmware::RejectedSample;
+use generated::firmware;
 
 include!(concat!(env!("OUT_DIR"), "/design.rs"));
+include!(concat!(env!("OUT_DIR"), "/board.rs"));
 
 /// Marks the start of a measured `push` + `targets`.
 #[inline(never)]
@@ -44,8 +46,6 @@ pub extern "C" fn measure_end() {
     cortex_m::asm::nop();
 }
 
-/// Bytes of stack painted below the stack pointer of `main`.
-const PAINTED: usize = 8192;
 const PAINT: u32 = 0xA5A5_5A5A;
 
 type Targets = Result<[f32; d::TARGETS], RejectedSample>;
@@ -66,7 +66,7 @@ fn main() -> ! {
     let mut results: [(Targets, [f32; d::STATES]); d::RECORDED_LEN] =
         [(Err(RejectedSample), [0.0; d::STATES]); d::RECORDED_LEN];
     let top = cortex_m::register::msp::read() as usize;
-    for address in (top - PAINTED..top).step_by(4) {
+    for address in (top - EKF_PAINTED..top).step_by(4) {
         // SAFETY: below the stack pointer, inside RAM, not in use: nothing runs but this loop.
         unsafe { core::ptr::write_volatile(address as *mut u32, PAINT) };
     }
@@ -74,7 +74,7 @@ fn main() -> ! {
         let targets = step(&mut filter, y, u);
         *result = (targets, filter.state());
     }
-    let deepest = (top - PAINTED..top)
+    let deepest = (top - EKF_PAINTED..top)
         .step_by(4)
         // SAFETY: the same painted words, read back.
         .find(|&address| unsafe { core::ptr::read_volatile(address as *const u32) } != PAINT)
