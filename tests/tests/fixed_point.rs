@@ -187,9 +187,14 @@ macro_rules! run_generated_and_loops {
     }};
 }
 
+/// Per sample: accepted, and every target's `(value, flag)` once there is an estimate.
 type Outcome = Vec<(bool, Option<Vec<(i32, firmware::Saturation)>>)>;
+/// Raw samples `(y, u)`.
+type Samples = Vec<(Vec<i32>, Vec<i32>)>;
+/// A design's name, its samples, the generated code's outcome and the library loops'.
+type Run = (&'static str, Samples, Outcome, Outcome);
 
-fn every_design() -> Vec<(&'static str, Vec<(Vec<i32>, Vec<i32>)>, Outcome, Outcome)> {
+fn every_design() -> Vec<Run> {
     run_generated_and_loops!(
         vanderpol,
         vanderpol_searched,
