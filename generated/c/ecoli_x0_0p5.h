@@ -60,8 +60,8 @@ ecoli_x0_0p5_status ecoli_x0_0p5_map_estimate(const ecoli_x0_0p5_map *observer, 
  * y[0] (`X_meas`): raw in [-32767, 32767], value = 0.0 + 0.000244140625 * raw
  * y[1] (`L`): raw in [-32767, 32767], value = 0.0 + 0.03125 * raw
  * Estimates (value = integer * LSB, in the target's unit):
- * estimate 0 (`P`): LSB 2^-23, proven |fixed - f64 map| <= 3.066e-4
- * estimate 1 (`muX`): LSB 2^-17, proven |fixed - f64 map| <= 2.841e-4
+ * estimate 0 (`P`): LSB 2^-23, proven |fixed - f64 map| <= 3.07e-4
+ * estimate 1 (`muX`): LSB 2^-17, proven |fixed - f64 map| <= 2.85e-4
  * Allocate it anywhere (no heap is used) and call ecoli_x0_0p5_fixed_init. */
 typedef struct {
     int32_t y[2u * ECOLI_X0_0P5_HORIZON][ECOLI_X0_0P5_OUTPUTS];

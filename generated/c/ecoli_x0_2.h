@@ -60,8 +60,8 @@ ecoli_x0_2_status ecoli_x0_2_map_estimate(const ecoli_x0_2_map *observer, float 
  * y[0] (`X_meas`): raw in [-32767, 32767], value = 0.0 + 0.00048828125 * raw
  * y[1] (`L`): raw in [-32767, 32767], value = 0.0 + 0.125 * raw
  * Estimates (value = integer * LSB, in the target's unit):
- * estimate 0 (`P`): LSB 2^-17, proven |fixed - f64 map| <= 1.765e-4
- * estimate 1 (`muX`): LSB 2^-24, proven |fixed - f64 map| <= 3.651e-4
+ * estimate 0 (`P`): LSB 2^-17, proven |fixed - f64 map| <= 1.77e-4
+ * estimate 1 (`muX`): LSB 2^-24, proven |fixed - f64 map| <= 3.66e-4
  * Allocate it anywhere (no heap is used) and call ecoli_x0_2_fixed_init. */
 typedef struct {
     int32_t y[2u * ECOLI_X0_2_HORIZON][ECOLI_X0_2_OUTPUTS];

@@ -61,8 +61,8 @@ two_tanks_status two_tanks_map_estimate(const two_tanks_map *observer, float *va
  * y[0] (`y`): raw in [-32767, 32767], value = 0.0 + 0.001953125 * raw
  * u[0] (`u`): raw in [-32767, 32767], value = 0.0 + 0.0009765625 * raw
  * Estimates (value = integer * LSB, in the target's unit):
- * estimate 0 (`h1`): LSB 2^-19, proven |fixed - f64 map| <= 4.159e-2
- * estimate 1 (`h2`): LSB 2^-19, proven |fixed - f64 map| <= 2.051e-2
+ * estimate 0 (`h1`): LSB 2^-19, proven |fixed - f64 map| <= 4.16e-2
+ * estimate 1 (`h2`): LSB 2^-19, proven |fixed - f64 map| <= 2.06e-2
  * Allocate it anywhere (no heap is used) and call two_tanks_fixed_init. */
 typedef struct {
     int32_t y[2u * TWO_TANKS_HORIZON][TWO_TANKS_OUTPUTS];

@@ -59,8 +59,8 @@ vanderpol_status vanderpol_map_estimate(const vanderpol_map *observer, float *va
  * its range is refused: the proof that no sum overflows holds there):
  * y[0] (`y`): raw in [0, 4095], value = -10.24 + 0.005 * raw
  * Estimates (value = integer * LSB, in the target's unit):
- * estimate 0 (`x1`): LSB 2^-19, proven |fixed - f64 map| <= 6.487e-4
- * estimate 1 (`x2`): LSB 2^-12, proven |fixed - f64 map| <= 2.087e-3
+ * estimate 0 (`x1`): LSB 2^-19, proven |fixed - f64 map| <= 6.49e-4
+ * estimate 1 (`x2`): LSB 2^-12, proven |fixed - f64 map| <= 2.09e-3
  * Allocate it anywhere (no heap is used) and call vanderpol_fixed_init. */
 typedef struct {
     int32_t y[2u * VANDERPOL_HORIZON][VANDERPOL_OUTPUTS];

@@ -59,8 +59,8 @@ vanderpol_searched_status vanderpol_searched_map_estimate(const vanderpol_search
  * its range is refused: the proof that no sum overflows holds there):
  * y[0] (`y`): raw in [-32767, 32767], value = 0.0 + 0.00048828125 * raw
  * Estimates (value = integer * LSB, in the target's unit):
- * estimate 0 (`x1`): LSB 2^-13, proven |fixed - f64 map| <= 2.056e-3
- * estimate 1 (`x2`): LSB 2^-12, proven |fixed - f64 map| <= 3.016e-3
+ * estimate 0 (`x1`): LSB 2^-13, proven |fixed - f64 map| <= 2.06e-3
+ * estimate 1 (`x2`): LSB 2^-12, proven |fixed - f64 map| <= 3.02e-3
  * Allocate it anywhere (no heap is used) and call vanderpol_searched_fixed_init. */
 typedef struct {
     int32_t y[2u * VANDERPOL_SEARCHED_HORIZON][VANDERPOL_SEARCHED_OUTPUTS];

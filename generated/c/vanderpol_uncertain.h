@@ -59,8 +59,8 @@ vanderpol_uncertain_status vanderpol_uncertain_map_estimate(const vanderpol_unce
  * its range is refused: the proof that no sum overflows holds there):
  * y[0] (`y`): raw in [-32767, 32767], value = 0.0 + 0.00048828125 * raw
  * Estimates (value = integer * LSB, in the target's unit):
- * estimate 0 (`x1`): LSB 2^-19, proven |fixed - f64 map| <= 2.133e-3
- * estimate 1 (`x2`): LSB 2^-13, proven |fixed - f64 map| <= 2.604e-3
+ * estimate 0 (`x1`): LSB 2^-19, proven |fixed - f64 map| <= 2.14e-3
+ * estimate 1 (`x2`): LSB 2^-13, proven |fixed - f64 map| <= 2.61e-3
  * Allocate it anywhere (no heap is used) and call vanderpol_uncertain_fixed_init. */
 typedef struct {
     int32_t y[2u * VANDERPOL_UNCERTAIN_HORIZON][VANDERPOL_UNCERTAIN_OUTPUTS];

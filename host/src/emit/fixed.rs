@@ -49,7 +49,7 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
         fixed
             .targets
             .iter()
-            .map(|t| format!("{:.3e}", t.bound.total()))
+            .map(|t| format!("{:.2e}", t.stated_bound()))
             .collect::<Vec<_>>()
             .join(", "),
     );
@@ -71,7 +71,7 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
              /// `(A_k, B_k)`: `{name}` at knot `k` and its slope per unit of `t`, in its LSB 2^{minus}{r}.\n\
              #[rustfmt::skip]\n\
              const FIXED_SEGMENTS_{upper}: [[i32; 2]; {k}] = [\n{segments}\n];\n\n\
-             /// `{name}` in integers: `t` in 2^-{f}, position {p} bits, LSB 2^{minus}{r}. Proven: |fixed − f64 map| ≤ {total:.3e}\n\
+             /// `{name}` in integers: `t` in 2^-{f}, position {p} bits, LSB 2^{minus}{r}. Proven: |fixed − f64 map| ≤ {total:.2e}\n\
              /// ({share:.3} % of the range: the table's {table:.2e}, the gains' rounding {gains_term:.2e}, the\n\
              /// integer table {evaluation:.2e}). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =\n\
              /// {reach} ≤ 2³¹ − 1, checked below at compile time.\n\
@@ -89,7 +89,7 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
             dropped = target.fraction_bits - target.product_bits,
             minus = if target.lsb_bits >= 0 { "-" } else { "" },
             r = target.lsb_bits.abs(),
-            total = b.total(),
+            total = target.stated_bound(),
             share = 100.0 * b.total() / range,
             table = b.table,
             gains_term = b.gains,
@@ -172,7 +172,9 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
          #[must_use]\n\
          pub const fn fixed_observer() -> FixedObserver {{\n    FixedObserver::new()\n}}\n\n\
          /// [`RECORDED_Y`] in raw counts (rounded and clamped as a converter would); its refused samples are\n\
-         /// `max + 1`, out of range, so that the fixed-point observer refuses them too.\n\
+         /// `max + 1`, out of range, so that the fixed-point observer refuses them too, and its last `2 N`\n\
+         /// samples are every signal's raw minimum, then maximum, so that whoever runs it sees the tables\n\
+         /// saturate (and can check that the chip takes the same instructions then).\n\
          #[rustfmt::skip]\n\
          pub const RECORDED_RAW_Y: [[i32; OUTPUTS]; RECORDED_LEN] = [\n{raw_y}\n];\n\n\
          /// [`RECORDED_U`] in raw counts.\n\
@@ -181,8 +183,8 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
         maps = maps.join(", "),
         checks = if checks.is_empty() { "true".to_owned() } else { checks.join(" & ") },
         tables = tables.join("\n"),
-        raw_y = rows(raw_rows(&y, &fixed.outputs)),
-        raw_u = rows(raw_rows(&u, &fixed.inputs)),
+        raw_y = rows(saturating_end(raw_rows(&y, &fixed.outputs), &fixed.outputs, n)),
+        raw_u = rows(saturating_end(raw_rows(&u, &fixed.inputs), &fixed.inputs, n)),
     );
     text
 }
@@ -223,4 +225,21 @@ pub(super) fn interleaved(fixed: &FixedPoint, horizon: usize, outputs: usize, in
     // Regressor order: outputs before inputs, newest sample first.
     entries.sort_by_key(|e| (e.field == "u", std::cmp::Reverse(e.sample), e.entry));
     entries
+}
+
+/// `rows` with its last `2 N` samples replaced by every signal's raw minimum (`N` samples), then its
+/// maximum (`N`), when at least `N` samples of the recording are left before them; a refused sample
+/// among them stays as it is.
+fn saturating_end(mut rows: Vec<Vec<i32>>, scales: &[RawScale], horizon: usize) -> Vec<Vec<i32>> {
+    let len = rows.len();
+    if len >= 3 * horizon {
+        for (k, row) in rows.iter_mut().enumerate().skip(len - 2 * horizon) {
+            // The refused samples stay: every consumer checks them.
+            if row.iter().zip(scales).all(|(v, s)| (s.min..=s.max).contains(v)) {
+                let high = k >= len - horizon;
+                *row = scales.iter().map(|s| if high { s.max } else { s.min }).collect();
+            }
+        }
+    }
+    rows
 }

@@ -67,6 +67,12 @@ pub enum FixedError {
         /// The target.
         target: String,
     },
+    /// The map has no certified table (the emitter says why).
+    #[error("target `{target}`: the map has no certified table of Γ⁻¹ to put in integers")]
+    NoTable {
+        /// The target.
+        target: String,
+    },
     /// No number of fractional bits keeps the sum within 32 bits.
     #[error("target `{target}`: the gains times the declared raw ranges reach {reach:.3e} in the table coordinate, beyond a 32-bit sum even with no fractional bit")]
     NoRoom {
@@ -84,6 +90,7 @@ impl FixedError {
             FixedError::SearchedKnots { .. } => {
                 "lower `map.beta` or `map.nm` until the table is uniform, or set `[chip] arithmetic = \"float\"`"
             }
+            FixedError::NoTable { .. } => "lower `map.beta` (or `map.nm`) until the map has a table",
             FixedError::NoRoom { .. } => "narrow the `[chip.raw]` ranges (`min`, `max`) to what the converters give",
         }
     }
@@ -142,6 +149,24 @@ impl Bound {
 }
 
 impl FixedTarget {
+    /// The bound as emitted files and reports state it: rounded *up* to three significant digits,
+    /// so that the figure a user reads is never below the proven one.
+    pub fn stated_bound(&self) -> f64 {
+        let total = self.bound.total();
+        if total.is_nan() || total <= 0.0 || total.is_infinite() {
+            return total;
+        }
+        let scale = 10f64.powi(2 - total.log10().floor() as i32);
+        let stated = (total * scale).ceil() / scale;
+        // Printed with three significant digits, as the emitters do; parsed back, never below.
+        let printed: f64 = format!("{stated:.2e}").parse().unwrap_or(stated);
+        if printed >= total {
+            printed
+        } else {
+            stated * (1.0 + 1e-12)
+        }
+    }
+
     /// The target's LSB in target units, `2^−R`.
     pub fn lsb(&self) -> f64 {
         2f64.powi(-self.lsb_bits)
@@ -264,7 +289,12 @@ pub fn quantise(
     let targets = maps
         .iter()
         .map(|map| {
-            let table = map.table.as_ref().expect("emitted maps have a table");
+            // A map without a table is refused by the emitter with its own message.
+            let Some(table) = map.table.as_ref() else {
+                return Err(FixedError::NoTable {
+                    target: map.target.clone(),
+                });
+            };
             if table.starts.is_some() {
                 return Err(FixedError::SearchedKnots {
                     target: map.target.clone(),

@@ -43,7 +43,7 @@ pub struct FixedTargetReport {
     pub bound_gains: f64,
     /// The table in integers.
     pub bound_evaluation: f64,
-    /// Their sum.
+    /// Their sum, rounded up to the three digits the report shows.
     pub bound: f64,
     /// The bound in percent of the learning range `r_max − r_min`.
     pub bound_percent_of_range: f64,
@@ -79,7 +79,7 @@ pub fn of(design: &Design, result: &DesignResult, fixed: &Fixed) -> FixedPointRe
                 bound_table: target.bound.table,
                 bound_gains: target.bound.gains,
                 bound_evaluation: target.bound.evaluation,
-                bound: target.bound.total(),
+                bound: target.stated_bound(),
                 bound_percent_of_range: 100.0 * target.bound.total() / (fit.fit.map.r_max - fit.fit.map.r_min),
                 largest_difference_validation: figures.largest_difference,
                 rmse_validation: figures.rmse,

@@ -55,10 +55,10 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
     let (mut tables, mut projections, mut estimates) = (String::new(), String::new(), String::new());
     for (t, (target, spec_target)) in fixed.targets.iter().zip(&design.targets).enumerate() {
         targets += &format!(
-            "\x20* estimate {t} (`{}`): LSB 2^{}, proven |fixed - f64 map| <= {:.3e}\n",
+            "\x20* estimate {t} (`{}`): LSB 2^{}, proven |fixed - f64 map| <= {:.2e}\n",
             spec_target.name,
             -target.lsb_bits,
-            target.bound.total()
+            target.stated_bound()
         );
         let gains: Vec<String> = target.gains.iter().map(i32::to_string).collect();
         let segments: Vec<String> = target
