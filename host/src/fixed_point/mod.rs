@@ -40,6 +40,7 @@
 //! plus a margin of `10⁻¹²` of the terms for the host's own f64 rounding.
 
 mod evaluate;
+mod raw;
 
 use firmware::fixed::{FixedMap, FixedTable};
 
@@ -48,6 +49,7 @@ use crate::fit::maps::FittedMap;
 use crate::spec::{Design, FixedSpec, RawScale};
 
 pub use evaluate::{compare, Comparison, TargetComparison};
+pub use raw::{default_scale, raw_rows, scalings, to_raw};
 
 /// Raw magnitude of the default Q format.
 pub const DEFAULT_RAW: i32 = 32_767;
@@ -191,81 +193,6 @@ impl FixedTarget {
             },
         }
     }
-}
-
-/// The scaling of every output and input: as declared, or the default Q format from `learning`.
-pub fn scalings(spec: &FixedSpec, learning: &DataSet) -> (Vec<RawScale>, Vec<RawScale>) {
-    let largest = |column: usize, inputs: bool| {
-        learning
-            .runs
-            .iter()
-            .flat_map(|run| {
-                if inputs {
-                    run.inputs.iter()
-                } else {
-                    run.measurements.iter()
-                }
-            })
-            .map(|row| row[column].abs())
-            .filter(|v| v.is_finite())
-            .fold(0.0, f64::max)
-    };
-    let resolve = |declared: &Option<RawScale>, column: usize, inputs: bool| {
-        declared.unwrap_or_else(|| default_scale(largest(column, inputs)))
-    };
-    (
-        spec.outputs
-            .iter()
-            .enumerate()
-            .map(|(i, d)| resolve(d, i, false))
-            .collect(),
-        spec.inputs
-            .iter()
-            .enumerate()
-            .map(|(i, d)| resolve(d, i, true))
-            .collect(),
-    )
-}
-
-/// The default Q format for a signal whose largest learning magnitude is `largest`.
-pub fn default_scale(largest: f64) -> RawScale {
-    let cover = if largest > 0.0 { DEFAULT_HEADROOM * largest } else { 1.0 };
-    // The largest q with 32767 · 2^−q ≥ cover.
-    let q = (f64::from(DEFAULT_RAW) / cover).log2().floor() as i32;
-    RawScale {
-        scale: 2f64.powi(-q),
-        offset: 0.0,
-        min: -DEFAULT_RAW,
-        max: DEFAULT_RAW,
-    }
-}
-
-/// The raw count a converter with `scale` gives for `value`: rounded, clamped to its range (a
-/// converter saturates); `None` for a non-finite value.
-pub fn to_raw(value: f64, scale: &RawScale) -> Option<i32> {
-    let raw = ((value - scale.offset) / scale.scale).round();
-    if raw.is_nan() {
-        return None;
-    }
-    Some(raw.clamp(f64::from(scale.min), f64::from(scale.max)) as i32)
-}
-
-/// The raw counts of a recorded sequence (rows of values, [`crate::emit::recorded_sequence`]'s): each
-/// value converted by its signal's scaling ([`to_raw`]); a non-finite value (the sequence's refused
-/// samples) becomes `max + 1`, out of range, so that the integer observer refuses it as the float
-/// one refuses the NaN.
-pub fn raw_rows(rows: &[Vec<f64>], scales: &[RawScale]) -> Vec<Vec<i32>> {
-    rows.iter()
-        .map(|row| {
-            row.iter()
-                .zip(scales)
-                .map(|(&v, s)| match v.is_finite() {
-                    true => to_raw(v, s).unwrap_or(s.max),
-                    false => s.max + 1,
-                })
-                .collect()
-        })
-        .collect()
 }
 
 /// Every target's integer map for `design` (whose spec asks for it), from its fitted `maps`.
