@@ -1,6 +1,6 @@
 //! The map in integers in C (`<name>_fixed`), for a design whose spec asks for it: the same integers
 //! as the Rust design file ([`crate::fixed_point::FixedPoint`]) and the operations of
-//! `firmware::fixed::FixedTable::evaluate_with`, so that both give the same bits. The window holds
+//! `firmware::fixed::FixedTable::evaluate`, so that both give the same bits. The window holds
 //! raw counts (each stored twice, as `firmware::Window`); a sample outside its declared range is
 //! refused, which is what keeps the sums within 32 bits (the proof is in the Rust file and the
 //! report).
