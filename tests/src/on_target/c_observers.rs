@@ -24,12 +24,12 @@ pub const STRICT_C_FLAGS: [&str; 10] = [
     "-fno-fast-math",
 ];
 
-/// Words of stack the board harness paints below `main`'s frame before each sample.
+/// Words of stack the board harness paints below `main`'s frame before the samples run.
 const PAINTED_WORDS: usize = 2048;
 
 /// A C program that runs observer `<name>_<kind>` over `ys` and `us` (each value as its f32 bits) and
 /// prints per sample `<push status> <estimate status> [<bits> <flag>]…`, then `RAM <bytes>`, `STACK
-/// <bytes>` (on the board: the deepest painted word a sample reached) and `DONE`. Each sample's
+/// <bytes>` (on the board: the deepest painted word any sample reached) and `DONE`. Each sample's
 /// `push` + `estimate` runs between the markers `measure_start` and `measure_end`, as in the Rust
 /// runners, so that the emulated board counts its instructions.
 pub fn c_harness(name: &str, kind: &str, ys: &[Vec<u32>], us: &[Vec<u32>], shape: (usize, usize, usize)) -> String {
@@ -88,23 +88,26 @@ pub fn c_harness(name: &str, kind: &str, ys: &[Vec<u32>], us: &[Vec<u32>], shape
          }}\n\
          int main(void) {{\n\
          \x20   static {ty} observer;\n\
-         \x20   unsigned k, i, stack = 0u;\n\
+         \x20   static {name}_status pushed[{len}u], estimated[{len}u];\n\
+         \x20   static float values[{len}u][{targets}u];\n\
+         \x20   static {name}_saturation flags[{len}u][{targets}u];\n\
+         \x20   unsigned k, i, stack;\n\
          \x20   {ty}_init(&observer);\n\
+         \x20   /* Nothing but `step` runs between the paint and the read-back (the results are printed\n\
+         \x20      after): the deepest word changed is the deepest any sample went. */\n\
+         \x20   paint();\n\
          \x20   for (k = 0u; k < {len}u; ++k) {{\n\
-         \x20       float y[{wy}], u[{wu}], values[{targets}u];\n\
-         \x20       {name}_saturation flags[{targets}u];\n\
-         \x20       {name}_status pushed, estimated;\n\
-         \x20       unsigned depth;\n\
+         \x20       float y[{wy}], u[{wu}];\n\
          \x20       for (i = 0u; i < {wy}u; ++i) y[i] = as_float(Y[k][i]);\n\
          \x20       for (i = 0u; i < {wu}u; ++i) u[i] = as_float(U[k][i]);\n\
-         \x20       paint();\n\
          \x20       /* Without inputs the design ignores `u` (NULL would do). */\n\
-         \x20       pushed = step(&observer, y, u, values, flags, &estimated);\n\
-         \x20       depth = deepest();\n\
-         \x20       stack = depth > stack ? depth : stack;\n\
-         \x20       printf(\"%d %d\", (int)pushed, (int)estimated);\n\
-         \x20       if (estimated == 0) {{\n\
-         \x20           for (i = 0u; i < {targets}u; ++i) printf(\" %08x %d\", as_bits(values[i]), (int)flags[i]);\n\
+         \x20       pushed[k] = step(&observer, y, u, values[k], flags[k], &estimated[k]);\n\
+         \x20   }}\n\
+         \x20   stack = deepest();\n\
+         \x20   for (k = 0u; k < {len}u; ++k) {{\n\
+         \x20       printf(\"%d %d\", (int)pushed[k], (int)estimated[k]);\n\
+         \x20       if (estimated[k] == 0) {{\n\
+         \x20           for (i = 0u; i < {targets}u; ++i) printf(\" %08x %d\", as_bits(values[k][i]), (int)flags[k][i]);\n\
          \x20       }}\n\
          \x20       printf(\"\\n\");\n\
          \x20   }}\n\

@@ -130,8 +130,12 @@ pub fn count_between(
 ) -> Result<Vec<Count>, String> {
     let (mut counts, mut current): (Vec<Count>, Option<Count>) = (Vec::new(), None);
     let mut timer = Timer::new(core, code);
-    for line in trace.lines() {
-        let line = line.map_err(|e| e.to_string())?;
+    let (mut trace, mut line) = (trace, String::new());
+    loop {
+        line.clear();
+        if trace.read_line(&mut line).map_err(|e| e.to_string())? == 0 {
+            break;
+        }
         let Some(fields) = line.strip_prefix("Trace ").and_then(|l| l.split('[').nth(1)) else {
             continue;
         };
@@ -141,7 +145,7 @@ pub fn count_between(
         // The instruction before this one, if it was measured, is timed now that its successor shows
         // whether it branched.
         let counted = current.is_some() && pc != start && pc != end;
-        let before = timer.next(pc, counted)?;
+        let (before, division) = timer.next(pc, counted)?;
         if let Some(count) = current.as_mut() {
             count.cycles += before;
         }
@@ -151,7 +155,7 @@ pub fn count_between(
             counts.extend(current.take());
         } else if let Some(count) = current.as_mut() {
             count.instructions += 1;
-            count.divisions += u64::from(code.get(&pc).is_some_and(Instruction::is_division));
+            count.divisions += u64::from(division);
         }
     }
     Ok(counts)

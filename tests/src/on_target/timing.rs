@@ -28,7 +28,7 @@
 //! the M4 estimate is an upper bound there), and an instruction an `IT` block skips costs what it
 //! would executed (the trace does not say whether its condition held).
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 
 /// A core whose timing this file holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -280,7 +280,19 @@ pub fn cycles(core: Core, instruction: &Instruction, taken: bool) -> Result<u64,
 pub struct Timer<'a> {
     core: Core,
     code: &'a BTreeMap<u64, Instruction>,
-    pending: Option<(u64, &'a Instruction)>,
+    pending: Option<(u64, Cost)>,
+    /// Each executed address's cost, worked out from its mnemonic once: a trace runs the same few
+    /// hundred instructions millions of times.
+    costs: HashMap<u64, Cost>,
+}
+
+/// An instruction's cycles not taken and taken, its size, and whether it is a `VDIV`/`VSQRT`.
+#[derive(Clone, Copy, Debug)]
+struct Cost {
+    not_taken: u64,
+    taken: u64,
+    size: u64,
+    division: bool,
 }
 
 impl<'a> Timer<'a> {
@@ -290,33 +302,46 @@ impl<'a> Timer<'a> {
             core,
             code,
             pending: None,
+            costs: HashMap::new(),
         }
     }
 
     /// Records that `pc` is the next traced address, to be timed when `timed`; returns the cycles of
     /// the timed instruction traced just before it (0 when there is none), which this address shows
-    /// taken or not.
-    pub fn next(&mut self, pc: u64, timed: bool) -> Result<u64, String> {
-        let before = self.finish(Some(pc))?;
-        if timed {
-            let instruction = self
-                .code
-                .get(&pc)
-                .ok_or_else(|| format!("traced address {pc:#x} is no instruction of the disassembly"))?;
-            self.pending = Some((pc, instruction));
+    /// taken or not, and whether `pc` is a `VDIV`/`VSQRT` (when timed).
+    pub fn next(&mut self, pc: u64, timed: bool) -> Result<(u64, bool), String> {
+        let before = self.finish(Some(pc));
+        if !timed {
+            return Ok((before, false));
         }
-        Ok(before)
+        let cost = match self.costs.get(&pc) {
+            Some(&cost) => cost,
+            None => {
+                let instruction = self
+                    .code
+                    .get(&pc)
+                    .ok_or_else(|| format!("traced address {pc:#x} is no instruction of the disassembly"))?;
+                let cost = Cost {
+                    not_taken: cycles(self.core, instruction, false)?,
+                    taken: cycles(self.core, instruction, true)?,
+                    size: instruction.size,
+                    division: instruction.is_division(),
+                };
+                self.costs.insert(pc, cost);
+                cost
+            }
+        };
+        self.pending = Some((pc, cost));
+        Ok((before, cost.division))
     }
 
     /// The cycles of the last instruction recorded, taken when `next` is not the address after it;
     /// with no next address (the trace ended), as not taken.
-    pub fn finish(&mut self, next: Option<u64>) -> Result<u64, String> {
+    pub fn finish(&mut self, next: Option<u64>) -> u64 {
         match self.pending.take() {
-            Some((pc, instruction)) => {
-                let taken = next.is_some_and(|next| next != pc + instruction.size);
-                cycles(self.core, instruction, taken)
-            }
-            None => Ok(0),
+            Some((pc, cost)) if next.is_some_and(|next| next != pc + cost.size) => cost.taken,
+            Some((_, cost)) => cost.not_taken,
+            None => 0,
         }
     }
 }
@@ -441,16 +466,17 @@ mod tests {
         ]);
         for (core, taken) in [(Core::CortexM4F, 3), (Core::CortexM0Plus, 2)] {
             let mut timer = Timer::new(core, &code);
-            assert_eq!(timer.next(0x100, true), Ok(0));
-            assert_eq!(timer.next(0x102, true), Ok(1), "{core:?}: beq falls through");
-            assert_eq!(timer.next(0x104, true), Ok(1), "{core:?}: adds");
-            assert_eq!(timer.next(0x100, true), Ok(taken), "{core:?}: b back");
-            assert_eq!(timer.next(0x120, false), Ok(taken), "{core:?}: beq taken");
+            let mut next = |pc, timed| timer.next(pc, timed).map(|(cycles, _)| cycles);
+            assert_eq!(next(0x100, true), Ok(0));
+            assert_eq!(next(0x102, true), Ok(1), "{core:?}: beq falls through");
+            assert_eq!(next(0x104, true), Ok(1), "{core:?}: adds");
+            assert_eq!(next(0x100, true), Ok(taken), "{core:?}: b back");
+            assert_eq!(next(0x120, false), Ok(taken), "{core:?}: beq taken");
             // The trace's end: nothing pending, nothing more.
-            assert_eq!(timer.finish(None), Ok(0));
+            assert_eq!(timer.finish(None), 0);
             let mut timer = Timer::new(core, &code);
             timer.next(0x100, true).unwrap();
-            assert_eq!(timer.finish(None), Ok(1), "{core:?}: the trace ends after the beq");
+            assert_eq!(timer.finish(None), 1, "{core:?}: the trace ends after the beq");
         }
         // An address outside the disassembly is an error, not a guess.
         assert!(Timer::new(Core::CortexM4F, &code).next(0x200, true).is_err());
