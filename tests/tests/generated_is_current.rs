@@ -1,7 +1,7 @@
-//! The files in `generated/` (the Rust design files and their C99 source) are exactly what `gen` produces now, producing them is deterministic, and
-//! every shipped design passes the quality gates (what `gen --strict` asks); the README's figure,
-//! `docs/figures/vanderpol-estimation.svg`, is the one `gen` draws now, and its headline table shows
-//! the figures `gen` computes now.
+//! The files in `generated/` (the Rust design files and their C99 source) are exactly what `gen`
+//! produces now, producing them is deterministic, and every shipped design passes the quality gates
+//! (what `gen --strict` asks); the README's figure, `docs/figures/vanderpol-estimation.svg`, is the
+//! one `gen` draws now, and its headline table shows the figures `gen` computes now.
 
 use host::generate;
 use indicatif::ProgressBar;
@@ -13,17 +13,23 @@ fn generated_files_match_a_fresh_generation() {
     let mut names = Vec::new();
     let mut reports = String::new();
     for path in &specs {
-        // `gen`'s own function, twice: the text must not depend on the run.
+        // `gen`'s own function. Example 1's twice in this process: the text must not depend on the
+        // run. Every design's is compared with the committed files below, written by an earlier run
+        // (of `gen`, on another machine): the same check across runs, at half the time.
         let emit = || {
             let design = host::spec::load(path).unwrap();
             generate::emit_design(design, path, None, &ProgressBar::hidden()).unwrap()
         };
-        let (first, second) = (emit(), emit());
+        let first = emit();
         let name = first.design.name.clone();
+        let second = (name == "vanderpol").then(emit);
         // `gen --strict` on the shipped specs: every one passes the quality gates.
         let gates = host::report::gates::check(&first.design, &first.result, &first.comparison);
         assert!(gates.is_empty(), "{name} fails quality gates: {gates:?}");
-        assert_eq!(first.source, second.source, "generation of {name} is not deterministic");
+        if let Some(second) = &second {
+            assert_eq!(first.source, second.source, "generation of {name} is not deterministic");
+            assert_eq!(first.c_source, second.c_source, "C of {name} is not deterministic");
+        }
         let file = workspace_root().join("generated/src").join(format!("{name}.rs"));
         let committed = std::fs::read_to_string(&file).unwrap_or_default();
         assert!(
@@ -32,7 +38,6 @@ fn generated_files_match_a_fresh_generation() {
             file.display()
         );
         // Its C99 source (`generated/c/`), the same way.
-        assert_eq!(first.c_source, second.c_source, "C of {name} is not deterministic");
         for (extension, text) in [("h", &first.c_source.header), ("c", &first.c_source.source)] {
             let file = workspace_root().join("generated/c").join(format!("{name}.{extension}"));
             assert!(
