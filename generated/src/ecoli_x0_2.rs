@@ -3244,25 +3244,30 @@ impl firmware::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {
 
     #[inline(always)]
     fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {
-        let t0 = FIXED_MAP_P
-            .offset
-            .wrapping_add(FIXED_GAINS_P[0].wrapping_mul(w[2].y[0]))
-            .wrapping_add(FIXED_GAINS_P[1].wrapping_mul(w[2].y[1]))
-            .wrapping_add(FIXED_GAINS_P[2].wrapping_mul(w[1].y[0]))
-            .wrapping_add(FIXED_GAINS_P[3].wrapping_mul(w[1].y[1]))
-            .wrapping_add(FIXED_GAINS_P[4].wrapping_mul(w[0].y[0]))
-            .wrapping_add(FIXED_GAINS_P[5].wrapping_mul(w[0].y[1]));
-        let t1 = FIXED_MAP_MUX
-            .offset
-            .wrapping_add(FIXED_GAINS_MUX[0].wrapping_mul(w[2].y[0]))
-            .wrapping_add(FIXED_GAINS_MUX[1].wrapping_mul(w[2].y[1]))
-            .wrapping_add(FIXED_GAINS_MUX[2].wrapping_mul(w[1].y[0]))
-            .wrapping_add(FIXED_GAINS_MUX[3].wrapping_mul(w[1].y[1]))
-            .wrapping_add(FIXED_GAINS_MUX[4].wrapping_mul(w[0].y[0]))
-            .wrapping_add(FIXED_GAINS_MUX[5].wrapping_mul(w[0].y[1]));
+        let mut t0 = FIXED_MAP_P.offset;
+        let mut t1 = FIXED_MAP_MUX.offset;
+        let z = w[2].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_P[0].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_MUX[0].wrapping_mul(z));
+        let z = w[2].y[1];
+        t0 = t0.wrapping_add(FIXED_GAINS_P[1].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_MUX[1].wrapping_mul(z));
+        let z = w[1].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_P[2].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_MUX[2].wrapping_mul(z));
+        let z = w[1].y[1];
+        t0 = t0.wrapping_add(FIXED_GAINS_P[3].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_MUX[3].wrapping_mul(z));
+        let z = w[0].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_P[4].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_MUX[4].wrapping_mul(z));
+        let z = w[0].y[1];
+        t0 = t0.wrapping_add(FIXED_GAINS_P[5].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_MUX[5].wrapping_mul(z));
+        let signs = core::hint::black_box([FIXED_MAP_P.table.signs(t0), FIXED_MAP_MUX.table.signs(t1)]);
         [
-            FIXED_MAP_P.table.evaluate(t0),
-            FIXED_MAP_MUX.table.evaluate(t1),
+            FIXED_MAP_P.table.clamped(t0, signs[0]),
+            FIXED_MAP_MUX.table.clamped(t1, signs[1]),
         ]
     }
 }

@@ -2677,53 +2677,72 @@ impl firmware::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {
 
     #[inline(always)]
     fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {
-        let t0 = FIXED_MAP_H1
-            .offset
-            .wrapping_add(FIXED_GAINS_H1[0].wrapping_mul(w[9].y[0]))
-            .wrapping_add(FIXED_GAINS_H1[1].wrapping_mul(w[8].y[0]))
-            .wrapping_add(FIXED_GAINS_H1[2].wrapping_mul(w[7].y[0]))
-            .wrapping_add(FIXED_GAINS_H1[3].wrapping_mul(w[6].y[0]))
-            .wrapping_add(FIXED_GAINS_H1[4].wrapping_mul(w[5].y[0]))
-            .wrapping_add(FIXED_GAINS_H1[5].wrapping_mul(w[4].y[0]))
-            .wrapping_add(FIXED_GAINS_H1[6].wrapping_mul(w[3].y[0]))
-            .wrapping_add(FIXED_GAINS_H1[7].wrapping_mul(w[2].y[0]))
-            .wrapping_add(FIXED_GAINS_H1[8].wrapping_mul(w[1].y[0]))
-            .wrapping_add(FIXED_GAINS_H1[9].wrapping_mul(w[0].y[0]))
-            .wrapping_add(FIXED_GAINS_H1[10].wrapping_mul(w[9].u[0]))
-            .wrapping_add(FIXED_GAINS_H1[11].wrapping_mul(w[8].u[0]))
-            .wrapping_add(FIXED_GAINS_H1[12].wrapping_mul(w[7].u[0]))
-            .wrapping_add(FIXED_GAINS_H1[13].wrapping_mul(w[6].u[0]))
-            .wrapping_add(FIXED_GAINS_H1[14].wrapping_mul(w[5].u[0]))
-            .wrapping_add(FIXED_GAINS_H1[15].wrapping_mul(w[4].u[0]))
-            .wrapping_add(FIXED_GAINS_H1[16].wrapping_mul(w[3].u[0]))
-            .wrapping_add(FIXED_GAINS_H1[17].wrapping_mul(w[2].u[0]))
-            .wrapping_add(FIXED_GAINS_H1[18].wrapping_mul(w[1].u[0]))
-            .wrapping_add(FIXED_GAINS_H1[19].wrapping_mul(w[0].u[0]));
-        let t1 = FIXED_MAP_H2
-            .offset
-            .wrapping_add(FIXED_GAINS_H2[0].wrapping_mul(w[9].y[0]))
-            .wrapping_add(FIXED_GAINS_H2[1].wrapping_mul(w[8].y[0]))
-            .wrapping_add(FIXED_GAINS_H2[2].wrapping_mul(w[7].y[0]))
-            .wrapping_add(FIXED_GAINS_H2[3].wrapping_mul(w[6].y[0]))
-            .wrapping_add(FIXED_GAINS_H2[4].wrapping_mul(w[5].y[0]))
-            .wrapping_add(FIXED_GAINS_H2[5].wrapping_mul(w[4].y[0]))
-            .wrapping_add(FIXED_GAINS_H2[6].wrapping_mul(w[3].y[0]))
-            .wrapping_add(FIXED_GAINS_H2[7].wrapping_mul(w[2].y[0]))
-            .wrapping_add(FIXED_GAINS_H2[8].wrapping_mul(w[1].y[0]))
-            .wrapping_add(FIXED_GAINS_H2[9].wrapping_mul(w[0].y[0]))
-            .wrapping_add(FIXED_GAINS_H2[10].wrapping_mul(w[9].u[0]))
-            .wrapping_add(FIXED_GAINS_H2[11].wrapping_mul(w[8].u[0]))
-            .wrapping_add(FIXED_GAINS_H2[12].wrapping_mul(w[7].u[0]))
-            .wrapping_add(FIXED_GAINS_H2[13].wrapping_mul(w[6].u[0]))
-            .wrapping_add(FIXED_GAINS_H2[14].wrapping_mul(w[5].u[0]))
-            .wrapping_add(FIXED_GAINS_H2[15].wrapping_mul(w[4].u[0]))
-            .wrapping_add(FIXED_GAINS_H2[16].wrapping_mul(w[3].u[0]))
-            .wrapping_add(FIXED_GAINS_H2[17].wrapping_mul(w[2].u[0]))
-            .wrapping_add(FIXED_GAINS_H2[18].wrapping_mul(w[1].u[0]))
-            .wrapping_add(FIXED_GAINS_H2[19].wrapping_mul(w[0].u[0]));
+        let mut t0 = FIXED_MAP_H1.offset;
+        let mut t1 = FIXED_MAP_H2.offset;
+        let z = w[9].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[0].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[0].wrapping_mul(z));
+        let z = w[8].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[1].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[1].wrapping_mul(z));
+        let z = w[7].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[2].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[2].wrapping_mul(z));
+        let z = w[6].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[3].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[3].wrapping_mul(z));
+        let z = w[5].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[4].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[4].wrapping_mul(z));
+        let z = w[4].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[5].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[5].wrapping_mul(z));
+        let z = w[3].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[6].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[6].wrapping_mul(z));
+        let z = w[2].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[7].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[7].wrapping_mul(z));
+        let z = w[1].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[8].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[8].wrapping_mul(z));
+        let z = w[0].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[9].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[9].wrapping_mul(z));
+        let z = w[9].u[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[10].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[10].wrapping_mul(z));
+        let z = w[8].u[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[11].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[11].wrapping_mul(z));
+        let z = w[7].u[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[12].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[12].wrapping_mul(z));
+        let z = w[6].u[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[13].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[13].wrapping_mul(z));
+        let z = w[5].u[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[14].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[14].wrapping_mul(z));
+        let z = w[4].u[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[15].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[15].wrapping_mul(z));
+        let z = w[3].u[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[16].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[16].wrapping_mul(z));
+        let z = w[2].u[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[17].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[17].wrapping_mul(z));
+        let z = w[1].u[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[18].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[18].wrapping_mul(z));
+        let z = w[0].u[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_H1[19].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_H2[19].wrapping_mul(z));
+        let signs = core::hint::black_box([FIXED_MAP_H1.table.signs(t0), FIXED_MAP_H2.table.signs(t1)]);
         [
-            FIXED_MAP_H1.table.evaluate(t0),
-            FIXED_MAP_H2.table.evaluate(t1),
+            FIXED_MAP_H1.table.clamped(t0, signs[0]),
+            FIXED_MAP_H2.table.clamped(t1, signs[1]),
         ]
     }
 }

@@ -1591,33 +1591,42 @@ impl firmware::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {
 
     #[inline(always)]
     fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {
-        let t0 = FIXED_MAP_X1
-            .offset
-            .wrapping_add(FIXED_GAINS_X1[0].wrapping_mul(w[9].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[1].wrapping_mul(w[8].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[2].wrapping_mul(w[7].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[3].wrapping_mul(w[6].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[4].wrapping_mul(w[5].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[5].wrapping_mul(w[4].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[6].wrapping_mul(w[3].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[7].wrapping_mul(w[2].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[8].wrapping_mul(w[1].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[9].wrapping_mul(w[0].y[0]));
-        let t1 = FIXED_MAP_X2
-            .offset
-            .wrapping_add(FIXED_GAINS_X2[0].wrapping_mul(w[9].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[1].wrapping_mul(w[8].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[2].wrapping_mul(w[7].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[3].wrapping_mul(w[6].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[4].wrapping_mul(w[5].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[5].wrapping_mul(w[4].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[6].wrapping_mul(w[3].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[7].wrapping_mul(w[2].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[8].wrapping_mul(w[1].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[9].wrapping_mul(w[0].y[0]));
+        let mut t0 = FIXED_MAP_X1.offset;
+        let mut t1 = FIXED_MAP_X2.offset;
+        let z = w[9].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[0].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[0].wrapping_mul(z));
+        let z = w[8].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[1].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[1].wrapping_mul(z));
+        let z = w[7].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[2].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[2].wrapping_mul(z));
+        let z = w[6].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[3].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[3].wrapping_mul(z));
+        let z = w[5].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[4].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[4].wrapping_mul(z));
+        let z = w[4].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[5].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[5].wrapping_mul(z));
+        let z = w[3].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[6].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[6].wrapping_mul(z));
+        let z = w[2].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[7].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[7].wrapping_mul(z));
+        let z = w[1].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[8].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[8].wrapping_mul(z));
+        let z = w[0].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[9].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[9].wrapping_mul(z));
+        let signs = core::hint::black_box([FIXED_MAP_X1.table.signs(t0), FIXED_MAP_X2.table.signs(t1)]);
         [
-            FIXED_MAP_X1.table.evaluate(t0),
-            FIXED_MAP_X2.table.evaluate(t1),
+            FIXED_MAP_X1.table.clamped(t0, signs[0]),
+            FIXED_MAP_X2.table.clamped(t1, signs[1]),
         ]
     }
 }

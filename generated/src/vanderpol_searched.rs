@@ -1463,45 +1463,60 @@ impl firmware::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {
 
     #[inline(always)]
     fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {
-        let t0 = FIXED_MAP_X1
-            .offset
-            .wrapping_add(FIXED_GAINS_X1[0].wrapping_mul(w[15].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[1].wrapping_mul(w[14].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[2].wrapping_mul(w[13].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[3].wrapping_mul(w[12].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[4].wrapping_mul(w[11].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[5].wrapping_mul(w[10].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[6].wrapping_mul(w[9].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[7].wrapping_mul(w[8].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[8].wrapping_mul(w[7].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[9].wrapping_mul(w[6].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[10].wrapping_mul(w[5].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[11].wrapping_mul(w[4].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[12].wrapping_mul(w[3].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[13].wrapping_mul(w[2].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[14].wrapping_mul(w[1].y[0]))
-            .wrapping_add(FIXED_GAINS_X1[15].wrapping_mul(w[0].y[0]));
-        let t1 = FIXED_MAP_X2
-            .offset
-            .wrapping_add(FIXED_GAINS_X2[0].wrapping_mul(w[15].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[1].wrapping_mul(w[14].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[2].wrapping_mul(w[13].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[3].wrapping_mul(w[12].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[4].wrapping_mul(w[11].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[5].wrapping_mul(w[10].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[6].wrapping_mul(w[9].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[7].wrapping_mul(w[8].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[8].wrapping_mul(w[7].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[9].wrapping_mul(w[6].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[10].wrapping_mul(w[5].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[11].wrapping_mul(w[4].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[12].wrapping_mul(w[3].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[13].wrapping_mul(w[2].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[14].wrapping_mul(w[1].y[0]))
-            .wrapping_add(FIXED_GAINS_X2[15].wrapping_mul(w[0].y[0]));
+        let mut t0 = FIXED_MAP_X1.offset;
+        let mut t1 = FIXED_MAP_X2.offset;
+        let z = w[15].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[0].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[0].wrapping_mul(z));
+        let z = w[14].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[1].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[1].wrapping_mul(z));
+        let z = w[13].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[2].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[2].wrapping_mul(z));
+        let z = w[12].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[3].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[3].wrapping_mul(z));
+        let z = w[11].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[4].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[4].wrapping_mul(z));
+        let z = w[10].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[5].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[5].wrapping_mul(z));
+        let z = w[9].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[6].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[6].wrapping_mul(z));
+        let z = w[8].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[7].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[7].wrapping_mul(z));
+        let z = w[7].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[8].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[8].wrapping_mul(z));
+        let z = w[6].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[9].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[9].wrapping_mul(z));
+        let z = w[5].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[10].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[10].wrapping_mul(z));
+        let z = w[4].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[11].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[11].wrapping_mul(z));
+        let z = w[3].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[12].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[12].wrapping_mul(z));
+        let z = w[2].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[13].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[13].wrapping_mul(z));
+        let z = w[1].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[14].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[14].wrapping_mul(z));
+        let z = w[0].y[0];
+        t0 = t0.wrapping_add(FIXED_GAINS_X1[15].wrapping_mul(z));
+        t1 = t1.wrapping_add(FIXED_GAINS_X2[15].wrapping_mul(z));
+        let signs = core::hint::black_box([FIXED_MAP_X1.table.signs(t0), FIXED_MAP_X2.table.signs(t1)]);
         [
-            FIXED_MAP_X1.table.evaluate(t0),
-            FIXED_MAP_X2.table.evaluate(t1),
+            FIXED_MAP_X1.table.clamped(t0, signs[0]),
+            FIXED_MAP_X2.table.clamped(t1, signs[1]),
         ]
     }
 }

@@ -101,27 +101,47 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
         maps.push(format!("FIXED_MAP_{upper}"));
         uppers.push(upper);
     }
-    // Each target's sum over the window in regressor order (integers: any order gives the same bits).
+    // Every target's sum over the window, interleaved: each window value is loaded once and added
+    // to every target that weighs it, so that no core with few registers (the Cortex-M0 has 8 low
+    // ones) holds one target's values for the next (integers: any order gives the same bits).
+    let entries = interleaved(fixed, n, ny, nu);
+    let weighed = |t: usize| entries.iter().any(|e| e.gains.iter().any(|&(g, _)| g == t));
     let mut dots = String::new();
-    for (t, (target, upper)) in fixed.targets.iter().zip(&uppers).enumerate() {
-        let nonzero: Vec<f32> = target.gains.iter().map(|&g| g as f32).collect();
-        let terms: String = super::terms::dot_terms(&nonzero, n, ny, nu)
-            .iter()
-            .map(|term| {
-                let field = if term.input { "u" } else { "y" };
-                format!(
-                    "\n            .wrapping_add(FIXED_GAINS_{upper}[{}].wrapping_mul(w[{}].{field}[{}]))",
-                    term.gain, term.sample, term.entry
-                )
-            })
-            .collect();
-        dots += &format!("        let t{t} = FIXED_MAP_{upper}\n            .offset{terms};\n");
+    for (t, upper) in uppers.iter().enumerate() {
+        let mutable = if weighed(t) { "mut " } else { "" };
+        dots += &format!("        let {mutable}t{t} = FIXED_MAP_{upper}.offset;\n");
     }
-    let tables: Vec<String> = uppers
+    for Entry {
+        field,
+        sample,
+        entry,
+        gains,
+    } in &entries
+    {
+        dots += &format!("        let z = w[{sample}].{field}[{entry}];\n");
+        for (t, gain) in gains {
+            dots += &format!(
+                "        t{t} = t{t}.wrapping_add(FIXED_GAINS_{}[{gain}].wrapping_mul(z));\n",
+                uppers[*t]
+            );
+        }
+    }
+    // Every target's clamp signs through one `black_box` (FixedTable::signs says why), then the tables.
+    let masks: Vec<String> = uppers
         .iter()
         .enumerate()
-        .map(|(t, upper)| format!("            FIXED_MAP_{upper}.table.evaluate(t{t}),"))
+        .map(|(t, upper)| format!("FIXED_MAP_{upper}.table.signs(t{t})"))
         .collect();
+    let clamped: Vec<String> = uppers
+        .iter()
+        .enumerate()
+        .map(|(t, upper)| format!("            FIXED_MAP_{upper}.table.clamped(t{t}, signs[{t}]),"))
+        .collect();
+    let tables = format!(
+        "        let signs = core::hint::black_box([{}]);\n        [\n{}\n        ]",
+        masks.join(", "),
+        clamped.join("\n")
+    );
     let checks: Vec<String> = fixed
         .outputs
         .iter()
@@ -165,7 +185,7 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
              #[inline(always)]\n    \
              fn accepts(y: &[i32; OUTPUTS], u: &[i32; INPUTS]) -> bool {{\n        {unused}{checks}\n    }}\n\n    \
              #[inline(always)]\n    \
-             fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {{\n{dots}        [\n{tables}\n        ]\n    }}\n}}\n\n\
+             fn estimate(w: &[Sample<i32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<i32>; TARGETS] {{\n{dots}{tables}\n    }}\n}}\n\n\
          /// The fixed-point observer: raw counts in ([`RAW_OUTPUT_RANGES`]), estimates in [`FIXED_LSB`] out.\n\
          pub type FixedObserver = firmware::fixed::Observer<Fixed, HORIZON, OUTPUTS, INPUTS, TARGETS>;\n\n\
          /// A fixed-point observer with no samples yet.\n\
@@ -182,7 +202,7 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
          pub const RECORDED_RAW_U: [[i32; INPUTS]; RECORDED_LEN] = [\n{raw_u}\n];",
         maps = maps.join(", "),
         checks = if checks.is_empty() { "true".to_owned() } else { checks.join(" & ") },
-        tables = tables.join("\n"),
+        tables = tables,
         raw_y = rows(saturating_end(raw_rows(&y, &fixed.outputs), &fixed.outputs, n)),
         raw_u = rows(saturating_end(raw_rows(&u, &fixed.inputs), &fixed.inputs, n)),
     );

@@ -27,23 +27,12 @@
 
 use core::marker::PhantomData;
 
-use crate::estimate::{Estimate, Saturation};
+use crate::estimate::Estimate;
 use crate::window::{Sample, Window};
 
-/// The tabulated inverse of one target in integers (see the module docs for the formula).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct FixedTable<'a> {
-    /// `(A_k, B_k)` of the `K` segments, in the target's LSB (and LSB per unit of `t`).
-    pub segments: &'a [[i32; 2]],
-    /// `F`: fractional bits of `t`.
-    pub fraction_bits: u32,
-    /// `F − P`: bits of the position in the segment dropped before the product.
-    pub dropped_bits: u32,
-    /// `P`: bits of the position the slope is multiplied by.
-    pub product_bits: u32,
-    /// `(K << F) − 1`, the last `t` of the table: from `K << F` on, the estimate saturates high.
-    pub t_last: i32,
-}
+mod table;
+
+pub use table::{flag, FixedTable};
 
 /// One target's map in integers: `t = offset + Σ_i gains_i raw_i`, `r = table(t)`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -54,40 +43,6 @@ pub struct FixedMap<'a> {
     pub offset: i32,
     /// `Γ⁻¹` in integers.
     pub table: FixedTable<'a>,
-}
-
-impl FixedTable<'_> {
-    /// `r(t)` in the target's LSB: `t` is clamped to `[0, t_last]` by sign masks (no branch), so a
-    /// saturated estimate is the table's first or last value, which the flag says. Wrapping
-    /// arithmetic: the host's proof keeps every in-range sample from wrapping, and no input can make
-    /// this panic.
-    #[inline(always)]
-    #[must_use]
-    pub fn evaluate(&self, t: i32) -> Estimate<i32> {
-        // The masks pass through `black_box`: otherwise the compiler turns them back into comparisons
-        // and, on a core without conditional execution (Cortex-M0), into branches.
-        let low = core::hint::black_box(t >> 31); // −1 when t < 0
-        let high = core::hint::black_box(self.t_last.wrapping_sub(t) >> 31) & !low; // −1 when t > t_last
-        let t = t & !low;
-        let t = t ^ ((t ^ self.t_last) & high);
-        let k = t >> self.fraction_bits; // in [0, K − 1]
-        let position = t.wrapping_sub(k << self.fraction_bits) >> self.dropped_bits;
-        // `get` cannot fail for `t` in [0, t_last]; it keeps a panic path out regardless.
-        let [a, b] = self.segments.get(k as usize).copied().unwrap_or([0, 0]);
-        Estimate {
-            value: a.wrapping_add(b.wrapping_mul(position) >> self.product_bits),
-            saturation: flag(low, high),
-        }
-    }
-}
-
-/// The saturation of masks `low` and `high` (each 0 or −1, not both), by a table lookup rather than
-/// a branch.
-#[inline(always)]
-#[must_use]
-pub fn flag(low: i32, high: i32) -> Saturation {
-    const FLAGS: [Saturation; 4] = [Saturation::Inside, Saturation::Low, Saturation::High, Saturation::Low];
-    FLAGS[((low & 1) | (high & 2)) as usize & 3]
 }
 
 impl FixedMap<'_> {
@@ -266,54 +221,8 @@ impl<D: FixedDesign<N, NY, NU, NT>, const N: usize, const NY: usize, const NU: u
 
 #[cfg(test)]
 mod tests {
+    use super::table::tests::SQUARE;
     use super::*;
-    use proptest::prelude::*;
-
-    /// r = t² on t ∈ [0, 3] (knots 0, 1, 2, 3) with F = 8, P = 4, the LSB of r 2^-6:
-    /// A_k = k² · 64, B_k = (2k + 1) · 64.
-    const SQUARE: FixedTable<'static> = FixedTable {
-        segments: &[[0, 64], [64, 192], [256, 320]],
-        fraction_bits: 8,
-        dropped_bits: 4,
-        product_bits: 4,
-        t_last: (3 << 8) - 1,
-    };
-
-    /// The chord of t² through the knots, in exact arithmetic (the table's closed form).
-    fn chord(t: f64) -> f64 {
-        let k = t.floor().clamp(0.0, 2.0);
-        k * k + (2.0 * k + 1.0) * (t - k)
-    }
-
-    #[test]
-    fn hits_the_knots_and_saturates_at_the_tables_ends_with_the_flag() {
-        for k in 0..3 {
-            let e = SQUARE.evaluate(k << 8);
-            assert_eq!((e.value, e.saturation), (k * k * 64, Saturation::Inside), "k = {k}");
-        }
-        // The last t of the table: position 255 >> 4 = 15 of 16, so 256 + 320 · 15 / 16 = 556.
-        let last = SQUARE.evaluate((3 << 8) - 1);
-        assert_eq!((last.value, last.saturation), (556, Saturation::Inside));
-        for t in [-1, -(1 << 20), i32::MIN] {
-            let e = SQUARE.evaluate(t);
-            assert_eq!((e.value, e.saturation), (0, Saturation::Low), "t = {t}");
-        }
-        for t in [3 << 8, (3 << 8) + 1, i32::MAX] {
-            let e = SQUARE.evaluate(t);
-            assert_eq!((e.value, e.saturation), (556, Saturation::High), "t = {t}");
-        }
-    }
-
-    proptest! {
-        /// Inside, the result is the chord at t truncated to P = 4 bits of position, then floored to
-        /// the LSB: within one LSB plus the slope times 2^-P of the exact chord, never above it.
-        #[test]
-        fn is_the_chord_within_the_truncations(t in 0i32..(3 << 8)) {
-            let exact = chord(f64::from(t) / 256.0) * 64.0;
-            let got = f64::from(SQUARE.evaluate(t).value);
-            prop_assert!(got <= exact + 1e-9 && got >= exact - 1.0 - 320.0 / 16.0, "t = {t}: {got} vs {exact}");
-        }
-    }
 
     #[test]
     fn the_reach_adds_every_gain_times_its_signals_largest_magnitude() {
