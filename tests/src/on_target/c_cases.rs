@@ -28,9 +28,11 @@ pub struct Case {
     pub name: &'static str,
     /// The kind, as the C names it (`<name>_<kind>`).
     pub kind: &'static str,
-    /// Outputs per sample, as f32 bits.
+    /// The C type of its values: `float`, or the integer map's `int32_t`.
+    pub scalar: &'static str,
+    /// Outputs per sample, as the bits of `scalar`.
     pub ys: Vec<Vec<u32>>,
-    /// Inputs per sample, as f32 bits.
+    /// Inputs per sample, as the bits of `scalar`.
     pub us: Vec<Vec<u32>>,
     /// Outputs, inputs, targets.
     pub shape: (usize, usize, usize),
@@ -45,7 +47,7 @@ pub struct Case {
 impl Case {
     /// Its C program ([`c_harness`]).
     pub fn harness(&self) -> String {
-        c_harness(self.name, self.kind, &self.ys, &self.us, self.shape)
+        c_harness(self.name, self.kind, self.scalar, &self.ys, &self.us, self.shape)
     }
 }
 
@@ -108,6 +110,7 @@ macro_rules! c_case {
         $crate::on_target::Case {
             name: $name,
             kind: $kind,
+            scalar: "float",
             ys: bits(&ys),
             us: bits(&us),
             shape: (d::OUTPUTS, d::INPUTS, d::TARGETS),
@@ -152,9 +155,49 @@ pub fn shipped_cases() -> Vec<Case> {
         }};
     }
     for_each_started_observer!(started);
+    // The integer map over the recorded raw sequence, which ends with every table saturated both ways
+    // and has its refused samples (`RECORDED_RAW_*`).
+    macro_rules! fixed {
+        ($design:ident) => {{
+            use generated::$design as d;
+            let (ys, us) = (rows(&d::RECORDED_RAW_Y), rows(&d::RECORDED_RAW_U));
+            let expected = super::rust_lines(
+                &ys,
+                &us,
+                d::fixed_observer(),
+                |o, y, u| o.push(y.try_into().unwrap(), u.try_into().unwrap()).is_ok(),
+                |o| {
+                    o.estimate()
+                        .map(|e| e.iter().map(|e| (e.value, e.saturation)).collect())
+                },
+            );
+            let bits = |rows: &[Vec<i32>]| -> Vec<Vec<u32>> {
+                rows.iter()
+                    .map(|r| r.iter().map(|&v| super::CValue::bits(v)).collect())
+                    .collect()
+            };
+            cases.push(Case {
+                name: stringify!($design),
+                kind: Kind::Fixed.report_name(),
+                scalar: "int32_t",
+                ys: bits(&ys),
+                us: bits(&us),
+                shape: (d::OUTPUTS, d::INPUTS, d::TARGETS),
+                horizon: d::HORIZON,
+                recorded: d::RECORDED_LEN,
+                expected,
+            });
+        }};
+    }
+    for_each_fixed_observer!(fixed);
     let order = |c: &Case| (c.name, kind_of(c.kind).map_or(usize::MAX, |k| k as usize));
     cases.sort_by_key(order);
     cases
+}
+
+/// Fixed-width rows as vectors.
+fn rows<const W: usize>(rows: &[[i32; W]]) -> Vec<Vec<i32>> {
+    rows.iter().map(|r| r.to_vec()).collect()
 }
 
 /// The [`Kind`] a C kind is.

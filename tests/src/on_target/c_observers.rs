@@ -27,12 +27,20 @@ pub const STRICT_C_FLAGS: [&str; 10] = [
 /// Words of stack the board harness paints below `main`'s frame before the samples run.
 const PAINTED_WORDS: usize = 2048;
 
-/// A C program that runs observer `<name>_<kind>` over `ys` and `us` (each value as its f32 bits) and
-/// prints per sample `<push status> <estimate status> [<bits> <flag>]…`, then `RAM <bytes>`, `STACK
+/// A C program that runs observer `<name>_<kind>` over `ys` and `us` (each value as the 32 bits of its
+/// C type `scalar`: `float`, or the integer map's `int32_t`) and prints per sample `<push status>
+/// <estimate status> [<bits> <flag>]…`, then `RAM <bytes>`, `STACK
 /// <bytes>` (on the board: the deepest painted word any sample reached) and `DONE`. Each sample's
 /// `push` + `estimate` runs between the markers `measure_start` and `measure_end`, as in the Rust
 /// runners, so that the emulated board counts its instructions.
-pub fn c_harness(name: &str, kind: &str, ys: &[Vec<u32>], us: &[Vec<u32>], shape: (usize, usize, usize)) -> String {
+pub fn c_harness(
+    name: &str,
+    kind: &str,
+    scalar: &str,
+    ys: &[Vec<u32>],
+    us: &[Vec<u32>],
+    shape: (usize, usize, usize),
+) -> String {
     let (outputs, inputs, targets) = shape;
     let ty = format!("{name}_{kind}");
     let rows = |rows: &[Vec<u32>], width: usize| -> String {
@@ -50,8 +58,8 @@ pub fn c_harness(name: &str, kind: &str, ys: &[Vec<u32>], us: &[Vec<u32>], shape
         "#include <stdio.h>\n#include <string.h>\n#include <stdint.h>\n#include \"{name}.h\"\n\
          static const unsigned int Y[{len}][{wy}] = {{\n{y}\n}};\n\
          static const unsigned int U[{len}][{wu}] = {{\n{u}\n}};\n\
-         static float as_float(unsigned int bits) {{ float f; memcpy(&f, &bits, sizeof f); return f; }}\n\
-         static unsigned int as_bits(float f) {{ unsigned int b; memcpy(&b, &f, sizeof b); return b; }}\n\
+         static {scalar} from_bits(unsigned int bits) {{ {scalar} v; memcpy(&v, &bits, sizeof v); return v; }}\n\
+         static unsigned int to_bits({scalar} v) {{ unsigned int b; memcpy(&b, &v, sizeof b); return b; }}\n\
          void measure_start(void);\n\
          void measure_end(void);\n\
          __attribute__((noinline)) void measure_start(void) {{ __asm__ volatile(\"nop\"); }}\n\
@@ -77,8 +85,8 @@ pub fn c_harness(name: &str, kind: &str, ys: &[Vec<u32>], us: &[Vec<u32>], shape
          static unsigned deepest(void) {{ return 0u; }}\n\
          #endif\n\
          /* One sample, what a firmware does every period. */\n\
-         __attribute__((noinline)) static {name}_status step({ty} *observer, const float *y, const float *u,\n\
-         \x20                                             float *values, {name}_saturation *flags, {name}_status *estimated) {{\n\
+         __attribute__((noinline)) static {name}_status step({ty} *observer, const {scalar} *y, const {scalar} *u,\n\
+         \x20                                             {scalar} *values, {name}_saturation *flags, {name}_status *estimated) {{\n\
          \x20   {name}_status pushed;\n\
          \x20   measure_start();\n\
          \x20   pushed = {ty}_push(observer, y, u);\n\
@@ -89,7 +97,7 @@ pub fn c_harness(name: &str, kind: &str, ys: &[Vec<u32>], us: &[Vec<u32>], shape
          int main(void) {{\n\
          \x20   static {ty} observer;\n\
          \x20   static {name}_status pushed[{len}u], estimated[{len}u];\n\
-         \x20   static float values[{len}u][{targets}u];\n\
+         \x20   static {scalar} values[{len}u][{targets}u];\n\
          \x20   static {name}_saturation flags[{len}u][{targets}u];\n\
          \x20   unsigned k, i, stack;\n\
          \x20   {ty}_init(&observer);\n\
@@ -97,9 +105,9 @@ pub fn c_harness(name: &str, kind: &str, ys: &[Vec<u32>], us: &[Vec<u32>], shape
          \x20      after): the deepest word changed is the deepest any sample went. */\n\
          \x20   paint();\n\
          \x20   for (k = 0u; k < {len}u; ++k) {{\n\
-         \x20       float y[{wy}], u[{wu}];\n\
-         \x20       for (i = 0u; i < {wy}u; ++i) y[i] = as_float(Y[k][i]);\n\
-         \x20       for (i = 0u; i < {wu}u; ++i) u[i] = as_float(U[k][i]);\n\
+         \x20       {scalar} y[{wy}], u[{wu}];\n\
+         \x20       for (i = 0u; i < {wy}u; ++i) y[i] = from_bits(Y[k][i]);\n\
+         \x20       for (i = 0u; i < {wu}u; ++i) u[i] = from_bits(U[k][i]);\n\
          \x20       /* Without inputs the design ignores `u` (NULL would do). */\n\
          \x20       pushed[k] = step(&observer, y, u, values[k], flags[k], &estimated[k]);\n\
          \x20   }}\n\
@@ -107,7 +115,7 @@ pub fn c_harness(name: &str, kind: &str, ys: &[Vec<u32>], us: &[Vec<u32>], shape
          \x20   for (k = 0u; k < {len}u; ++k) {{\n\
          \x20       printf(\"%d %d\", (int)pushed[k], (int)estimated[k]);\n\
          \x20       if (estimated[k] == 0) {{\n\
-         \x20           for (i = 0u; i < {targets}u; ++i) printf(\" %08x %d\", as_bits(values[k][i]), (int)flags[k][i]);\n\
+         \x20           for (i = 0u; i < {targets}u; ++i) printf(\" %08x %d\", to_bits(values[k][i]), (int)flags[k][i]);\n\
          \x20       }}\n\
          \x20       printf(\"\\n\");\n\
          \x20   }}\n\
@@ -131,13 +139,35 @@ pub fn sample_lines(text: &str) -> Vec<String> {
         .collect()
 }
 
+/// A value of the C observers: `float`, or the integer map's `int32_t`; the harness prints its bits.
+pub trait CValue: Copy {
+    /// Its C type.
+    const C_TYPE: &'static str;
+    /// Its 32 bits.
+    fn bits(self) -> u32;
+}
+
+impl CValue for f32 {
+    const C_TYPE: &'static str = "float";
+    fn bits(self) -> u32 {
+        self.to_bits()
+    }
+}
+
+impl CValue for i32 {
+    const C_TYPE: &'static str = "int32_t";
+    fn bits(self) -> u32 {
+        self as u32
+    }
+}
+
 /// What a Rust observer gives over the same sequence, printed as [`c_harness`] prints it.
-pub fn rust_lines<O>(
-    ys: &[Vec<f32>],
-    us: &[Vec<f32>],
+pub fn rust_lines<O, V: CValue>(
+    ys: &[Vec<V>],
+    us: &[Vec<V>],
     mut observer: O,
-    push: impl Fn(&mut O, &[f32], &[f32]) -> bool,
-    estimate: impl Fn(&O) -> Option<Vec<(f32, firmware::Saturation)>>,
+    push: impl Fn(&mut O, &[V], &[V]) -> bool,
+    estimate: impl Fn(&O) -> Option<Vec<(V, firmware::Saturation)>>,
 ) -> Vec<String> {
     ys.iter()
         .zip(us)
@@ -148,7 +178,7 @@ pub fn rust_lines<O>(
                 Some(estimates) => {
                     let cells: String = estimates
                         .iter()
-                        .map(|(v, s)| format!(" {:08x} {}", v.to_bits(), flag_number(*s)))
+                        .map(|(v, s)| format!(" {:08x} {}", v.bits(), flag_number(*s)))
                         .collect();
                     format!("{pushed} 0{cells}")
                 }
