@@ -8,7 +8,7 @@ pub mod mirrors;
 pub mod tuning;
 
 pub use mirrors::{estimate_box, estimate_started, BoxStep, StartedStep};
-pub use tuning::{tune, tune_started, Tuned, STARTS, START_FACTORS};
+pub use tuning::{tune, tune_started, tune_with, Estimator, Tuned, STARTS, START_FACTORS};
 
 use firmware::{Ekf, Plant, Rk4};
 

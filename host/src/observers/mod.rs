@@ -17,6 +17,7 @@ pub mod references;
 pub mod restart;
 pub mod score;
 pub mod started;
+pub mod ukf;
 
 pub use choice::{check_before_fit, choose};
 pub use figures::{Comparison, Drift, Figures, ObserverFigures, Started, TRANSIENT_TIME};

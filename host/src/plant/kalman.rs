@@ -221,7 +221,7 @@ fn predict(b: &mut Builder<'_>, code: &ModelCode, constants: &EkfConstants, x: &
 }
 
 /// One RK4 step of width `h` and its derivative in `x` (`firmware::Rk4::substep`).
-fn substep(b: &mut Builder<'_>, code: &ModelCode, h: f64, x: &[usize]) -> (Vec<usize>, Vec<Vec<usize>>) {
+pub(super) fn substep(b: &mut Builder<'_>, code: &ModelCode, h: f64, x: &[usize]) -> (Vec<usize>, Vec<Vec<usize>>) {
     let nx = x.len();
     // The library's `h / 2` and `h / 6`, computed at construction in the filter's precision.
     let width = b.number(h);

@@ -19,6 +19,7 @@
 pub mod correction;
 pub mod kalman;
 pub mod program;
+pub mod unscented;
 
 use firmware::{Maths, Scalar};
 

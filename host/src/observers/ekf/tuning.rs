@@ -23,7 +23,7 @@
 //! of equals. The map-started EKF shares `Q` (one filter
 //! on the chip) and scales its own start covariance ([`tune_started`]).
 
-use crate::data::DataSet;
+use crate::data::{DataSet, Rows};
 use crate::plant::kalman::EkfConstants;
 use crate::plant::ModelCode;
 use crate::spec::Design;
@@ -55,9 +55,21 @@ pub const STARTS: usize = 2;
 /// Nelder–Mead iterations per start.
 const ITERATIONS: u64 = 150;
 
-/// The score of the EKF with `constants` from the box centre on `data` (windows `k ≥ N − 1`).
-fn score(code: &ModelCode, constants: &EkfConstants, centre: &[f64], data: &DataSet, target_spreads: &[f64]) -> f64 {
-    let estimates = estimates(code, constants, centre, data).expect("size checked");
+/// A filter's estimates of every run of a data set, with given constants, from a given start: the
+/// EKF's ([`super::estimates`]) or the UKF's ([`crate::observers::ukf::estimates`]), which share
+/// their constants and this search.
+pub type Estimator = fn(&ModelCode, &EkfConstants, &[f64], &DataSet) -> Option<Vec<Rows>>;
+
+/// The score of the filter with `constants` from the box centre on `data` (windows `k ≥ N − 1`).
+fn score(
+    estimator: Estimator,
+    code: &ModelCode,
+    constants: &EkfConstants,
+    centre: &[f64],
+    data: &DataSet,
+    target_spreads: &[f64],
+) -> f64 {
+    let estimates = estimator(code, constants, centre, data).expect("size checked");
     crate::observers::score::of_estimates(&data.runs, &estimates, target_spreads, |run| {
         data.horizon.saturating_sub(1)..run.targets.len()
     })
@@ -66,6 +78,7 @@ fn score(code: &ModelCode, constants: &EkfConstants, centre: &[f64], data: &Data
 /// The tuning criterion as `argmin` sees it: `θ` to the score.
 #[derive(Clone, Copy)]
 struct Criterion<'a> {
+    estimator: Estimator,
     design: &'a Design,
     code: &'a ModelCode,
     centre: &'a [f64],
@@ -79,7 +92,14 @@ impl Criterion<'_> {
     fn at(&self, theta: &[f64]) -> f64 {
         self.count.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let constants = constants(self.design, self.centre, self.spreads, theta);
-        let score = score(self.code, &constants, self.centre, self.data, self.target_spreads);
+        let score = score(
+            self.estimator,
+            self.code,
+            &constants,
+            self.centre,
+            self.data,
+            self.target_spreads,
+        );
         // Nelder–Mead must be able to order a diverging candidate: the worst, not infinity.
         score.min(1e30)
     }
@@ -94,9 +114,21 @@ impl argmin::core::CostFunction for Criterion<'_> {
     }
 }
 
-/// Chooses `Q` and `P(0)` on `tuning` (see the module docs). `target_spreads` normalises each
-/// target's errors.
+/// Chooses the EKF's `Q` and `P(0)` on `tuning` (see the module docs). `target_spreads` normalises
+/// each target's errors.
 pub fn tune(
+    design: &Design,
+    code: &ModelCode,
+    tuning: &DataSet,
+    learning: &DataSet,
+    target_spreads: &[f64],
+) -> Option<Tuned> {
+    tune_with(estimates, design, code, tuning, learning, target_spreads)
+}
+
+/// [`tune`] for the filter whose estimates `estimator` gives.
+pub fn tune_with(
+    estimator: Estimator,
     design: &Design,
     code: &ModelCode,
     tuning: &DataSet,
@@ -114,6 +146,7 @@ pub fn tune(
     let spreads = state_spreads(learning, nx);
     let count = std::sync::atomic::AtomicU64::new(0);
     let criterion = Criterion {
+        estimator,
         design,
         code,
         centre: &centre,

@@ -183,6 +183,14 @@ impl<'a> Builder<'a> {
         self.binary(Binary::Mul, a, b)
     }
 
+    /// `f(a)`, `f` one of the expression language's functions (folded on a number).
+    pub fn call(&mut self, f: &'static str, a: usize) -> usize {
+        match self.known(a) {
+            Some(v) => self.number(crate::spec::ast::call(f, v)),
+            None => self.push(Op::Call(f, a)),
+        }
+    }
+
     /// `Σ aᵢ bᵢ` in order, starting from `start` (zero terms fold away).
     pub fn dot(&mut self, start: usize, a: &[usize], b: &[usize]) -> usize {
         a.iter().zip(b).fold(start, |sum, (&a, &b)| {

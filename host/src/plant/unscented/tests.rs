@@ -1,0 +1,199 @@
+//! The written-out UKF against a second implementation written here from the formulas (nalgebra's
+//! Cholesky, the library's RK4 step and output of the same model), on Example 1; against the Kalman
+//! filter (the EKF's programs) on a linear model, where the two must agree to rounding; and its
+//! pivot floor on an indefinite `P`.
+
+use std::path::Path;
+
+use firmware::{Plant, Rk4};
+use nalgebra::{SMatrix, SVector};
+
+use super::*;
+use crate::observers::ekf::Stepped;
+use crate::plant::kalman::filter_code;
+use crate::plant::Compiled;
+
+type Matrix2 = SMatrix<f64, 2, 2>;
+type Vector2 = SVector<f64, 2>;
+
+fn constants(substeps: usize) -> EkfConstants {
+    EkfConstants {
+        x0: vec![0.0; 2],
+        p0: vec![1.0; 2],
+        q: vec![1e-3, 2e-3],
+        r: vec![0.2],
+        substeps,
+        h: 0.1 / substeps as f64,
+    }
+}
+
+fn triangle(p: &Matrix2) -> Vec<f64> {
+    vec![p[(0, 0)], p[(0, 1)], p[(1, 1)]]
+}
+
+/// Example 1's weights from the formulas: n = 2, α = 1, β = 2, κ = 3 − n = 1, λ = α²(n + κ) − n = 1.
+const SPREAD: f64 = 1.732_050_807_568_877_2; // √(n + λ) = √3
+const MEAN0: f64 = 1.0 / 3.0; // λ / (n + λ)
+const COVARIANCE0: f64 = 1.0 / 3.0 + 2.0; // + 1 − α² + β
+const REST: f64 = 1.0 / 6.0; // 1 / (2 (n + λ))
+
+/// One UKF sample of a model with two states, one output and no input, from the formulas; `plant`
+/// steps a whole sample (every substep).
+fn reference(
+    plant: &impl Plant<f64, 2, 1, 0>,
+    constants: &EkfConstants,
+    x: Vector2,
+    p: Matrix2,
+    y: Option<f64>,
+) -> (Option<Vector2>, Vector2, Matrix2) {
+    let sigma = |x: Vector2, p: Matrix2| -> [Vector2; 5] {
+        let l = p.cholesky().expect("positive definite").l();
+        [
+            x,
+            x + SPREAD * l.column(0),
+            x + SPREAD * l.column(1),
+            x - SPREAD * l.column(0),
+            x - SPREAD * l.column(1),
+        ]
+    };
+    let w = |i: usize, zero: f64| if i == 0 { zero } else { REST };
+    let (mut x, mut p) = (x, p);
+    let estimate = y.map(|y| {
+        let points = sigma(x, p);
+        let outputs: Vec<f64> = points.iter().map(|s| plant.output(&[s[0], s[1]], &[]).0[0]).collect();
+        let predicted: f64 = outputs.iter().enumerate().map(|(i, o)| w(i, MEAN0) * o).sum();
+        let s: f64 = outputs
+            .iter()
+            .enumerate()
+            .map(|(i, o)| w(i, COVARIANCE0) * (o - predicted).powi(2))
+            .sum::<f64>()
+            + constants.r[0];
+        let c: Vector2 = points
+            .iter()
+            .zip(&outputs)
+            .enumerate()
+            .map(|(i, (point, o))| w(i, COVARIANCE0) * (point - x) * (o - predicted))
+            .sum();
+        let k = c / s;
+        x += k * (y - predicted);
+        p -= k * s * k.transpose();
+        x
+    });
+    let moved: Vec<Vector2> = sigma(x, p)
+        .iter()
+        .map(|point| Vector2::from(plant.step(&[point[0], point[1]], &[]).0))
+        .collect();
+    let next: Vector2 = moved.iter().enumerate().map(|(i, m)| w(i, MEAN0) * m).sum();
+    let mut covariance: Matrix2 = moved
+        .iter()
+        .enumerate()
+        .map(|(i, m)| w(i, COVARIANCE0) * (m - next) * (m - next).transpose())
+        .sum();
+    covariance += Matrix2::from_diagonal(&Vector2::new(constants.q[0], constants.q[1]));
+    (estimate, next, covariance)
+}
+
+/// Largest |a − b| relative to max(1, |b|).
+fn gap(a: &[f64], b: &[f64]) -> f64 {
+    assert_eq!(a.len(), b.len());
+    a.iter()
+        .zip(b)
+        .map(|(a, b)| (a - b).abs() / b.abs().max(1.0))
+        .fold(0.0, f64::max)
+}
+
+fn example_1() -> ModelCode {
+    ModelCode::new(&crate::spec::load(Path::new("specs/vanderpol.toml")).unwrap()).unwrap()
+}
+
+#[test]
+fn the_weights_are_the_scaled_transforms() {
+    let (spread, mean0, covariance0, rest) = weights(2);
+    assert!(gap(&[spread, mean0, covariance0, rest], &[SPREAD, MEAN0, COVARIANCE0, REST]) < 1e-15);
+    // Five states: κ = 0, λ = 0, so W₀ᵐ = 0, W₀ᶜ = 2 and the others 1/10 about x ± √5 Lᵢ.
+    let (spread, mean0, covariance0, rest) = weights(5);
+    assert!(gap(&[spread, mean0, covariance0, rest], &[5f64.sqrt(), 0.0, 2.0, 0.1]) < 1e-15);
+    for n in 1..8 {
+        let (_, mean0, _, rest) = weights(n);
+        assert!(
+            (mean0 + 2.0 * n as f64 * rest - 1.0).abs() < 1e-14,
+            "n = {n}: the mean's weights sum to 1"
+        );
+    }
+}
+
+#[test]
+fn the_written_out_sample_is_the_formulas_on_example_1() {
+    let code = example_1();
+    for substeps in [1, 3] {
+        let constants = constants(substeps);
+        let written = unscented_code(&code, &constants);
+        let plant = Stepped {
+            step: Rk4::new(Compiled::new(&code), constants.h),
+            substeps,
+        };
+        let (mut x, mut p) = (Vector2::new(1.5, -2.0), Matrix2::new(0.8, 0.3, 0.3, 2.5));
+        for k in 0..40 {
+            // A measurement at most samples, a refused one now and then.
+            let y = (k % 7 != 3).then(|| (0.37 * k as f64).sin() * 2.0);
+            let (estimate, next, covariance) = written.run(
+                x.as_slice(),
+                &triangle(&p),
+                y.as_ref().map(std::slice::from_ref),
+                &[],
+                &mut Vec::new(),
+            );
+            let (expected_estimate, expected_next, expected_covariance) = reference(&plant, &constants, x, p, y);
+            let what = format!("{substeps} substeps, sample {k}");
+            assert_eq!(estimate.is_some(), expected_estimate.is_some(), "{what}");
+            if let (Some(a), Some(b)) = (&estimate, expected_estimate) {
+                assert!(gap(a, b.as_slice()) < 1e-11, "{what}: x̂ {a:?} against {b:?}");
+            }
+            assert!(gap(&next, expected_next.as_slice()) < 1e-11, "{what}: x⁺");
+            assert!(gap(&covariance, &triangle(&expected_covariance)) < 1e-11, "{what}: P⁺");
+            x = Vector2::from_column_slice(&next);
+            p = Matrix2::new(covariance[0], covariance[1], covariance[1], covariance[2]);
+        }
+    }
+}
+
+#[test]
+fn on_a_linear_model_it_is_the_kalman_filter() {
+    // Example 1 with a linear x2' and a linear output: RK4 is then a linear map A and the sigma points
+    // carry P exactly through it (A P Aᵀ + Q), and through the output (H P Hᵀ + R, P Hᵀ): the UKF is
+    // the Kalman filter, which the EKF's programs are on a linear model.
+    let text = std::fs::read_to_string("specs/vanderpol.toml").unwrap();
+    let linear = text.replace("x2 = \"4*x1 + (1 - x1^2)*x2\"", "x2 = \"4*x1 - 0.5*x2\"");
+    assert_ne!(linear, text, "the derivative to replace");
+    let design = crate::spec::parse(Path::new("linear.toml"), &linear).unwrap();
+    let code = ModelCode::new(&design).unwrap();
+    let constants = constants(2);
+    let (unscented, kalman) = (unscented_code(&code, &constants), filter_code(&code, &constants));
+    let (mut x, mut p) = (vec![1.0, -1.0], vec![2.0, 0.5, 1.0]);
+    let mut worst = 0.0f64;
+    for k in 0..60 {
+        let y = [(0.21 * k as f64).cos()];
+        let measured = (k % 5 != 2).then_some(&y[..]);
+        let (a, next, covariance) = unscented.run(&x, &p, measured, &[], &mut Vec::new());
+        let (b, expected_next, expected_covariance) = kalman.run(&x, &p, measured, &[], &mut Vec::new());
+        if let (Some(a), Some(b)) = (&a, &b) {
+            worst = worst.max(gap(a, b));
+        }
+        worst = worst
+            .max(gap(&next, &expected_next))
+            .max(gap(&covariance, &expected_covariance));
+        (x, p) = (next, covariance);
+    }
+    assert!(worst < 1e-12, "the UKF and the Kalman filter differ by {worst:e}");
+}
+
+#[test]
+fn an_indefinite_covariance_still_gives_finite_sigma_points() {
+    // [[1, 2], [2, 1]] has eigenvalues 3 and −1: the second pivot is 1 − 4 = −3, whose square root is
+    // NaN without the floor.
+    let code = example_1();
+    let written = unscented_code(&code, &constants(1));
+    let (estimate, next, covariance) = written.run(&[0.5, 0.5], &[1.0, 2.0, 1.0], Some(&[1.0]), &[], &mut Vec::new());
+    let all: Vec<f64> = estimate.unwrap().into_iter().chain(next).chain(covariance).collect();
+    assert!(all.iter().all(|v| v.is_finite()), "{all:?}");
+}
