@@ -132,16 +132,7 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
          {name}_status {name}_fixed_estimate(const {name}_fixed *observer, int32_t *values, {name}_saturation *saturation);\n\
          \n"
     );
-    let store_inputs = if nu > 0 {
-        format!(
-            "    for (i = 0u; i < {upper}_INPUTS; ++i) {{\n\
-             \x20       observer->u[slot][i] = u[i];\n\
-             \x20       observer->u[slot + {upper}_HORIZON][i] = u[i];\n\
-             \x20   }}\n"
-        )
-    } else {
-        "    (void)u;\n".to_owned()
-    };
+    let store = super::map::window_store(&upper, nu);
     let source = format!(
         "{tables}\n\
          /* Signed right shifts must be arithmetic (implementation-defined in C99; so on gcc, clang, armcc\n\
@@ -187,15 +178,7 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
          \x20   if (!inside) {{\n\
          \x20       return {upper}_REFUSED;\n\
          \x20   }}\n\
-         \x20   slot = observer->next;\n\
-         \x20   for (i = 0u; i < {upper}_OUTPUTS; ++i) {{\n\
-         \x20       observer->y[slot][i] = y[i];\n\
-         \x20       observer->y[slot + {upper}_HORIZON][i] = y[i];\n\
-         \x20   }}\n\
-         {store_inputs}\
-         \x20   observer->next = slot + 1u >= {upper}_HORIZON ? 0u : slot + 1u;\n\
-         \x20   observer->filled += (unsigned)(observer->filled < {upper}_HORIZON);\n\
-         \x20   return {upper}_OK;\n\
+         {store}\
          }}\n\
          \n\
          /* The sums are in int32_t: every stored sample is in range, where the proof says they fit. */\n\

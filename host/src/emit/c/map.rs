@@ -148,16 +148,7 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
          {name}_status {name}_map_estimate(const {name}_map *observer, float *values, {name}_saturation *saturation);\n\
          \n"
     );
-    let store_inputs = if nu > 0 {
-        format!(
-            "    for (i = 0u; i < {upper}_INPUTS; ++i) {{\n\
-             \x20       observer->u[slot][i] = u[i];\n\
-             \x20       observer->u[slot + {upper}_HORIZON][i] = u[i];\n\
-             \x20   }}\n"
-        )
-    } else {
-        "    (void)u;\n".to_owned()
-    };
+    let store = window_store(&upper, nu);
     // The check written out here rather than a call of `accepts`, which the compiler keeps out of line
     // where the followers call it too (about 10 instructions more per sample).
     let check_inputs = if nu > 0 {
@@ -220,15 +211,7 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
          \x20   if (!finite) {{\n\
          \x20       return {upper}_REFUSED;\n\
          \x20   }}\n\
-         \x20   slot = observer->next;\n\
-         \x20   for (i = 0u; i < {upper}_OUTPUTS; ++i) {{\n\
-         \x20       observer->y[slot][i] = y[i];\n\
-         \x20       observer->y[slot + {upper}_HORIZON][i] = y[i];\n\
-         \x20   }}\n\
-         {store_inputs}\
-         \x20   observer->next = slot + 1u >= {upper}_HORIZON ? 0u : slot + 1u;\n\
-         \x20   observer->filled += (unsigned)(observer->filled < {upper}_HORIZON);\n\
-         \x20   return {upper}_OK;\n\
+         {store}\
          }}\n\
          \n\
          {name}_status {name}_map_estimate(const {name}_map *observer, float *values, {name}_saturation *saturation) {{\n\
@@ -242,4 +225,31 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
          }}\n\n"
     );
     Ok(MapC { header, source })
+}
+
+/// The end of a map's `_push` (the float map's and the integer map's): the accepted sample stored
+/// twice in the window (so that the last N are contiguous from `next`), the write position and the
+/// count moved on, and `OK` returned.
+pub(super) fn window_store(upper: &str, nu: usize) -> String {
+    let store_inputs = if nu > 0 {
+        format!(
+            "    for (i = 0u; i < {upper}_INPUTS; ++i) {{\n\
+             \x20       observer->u[slot][i] = u[i];\n\
+             \x20       observer->u[slot + {upper}_HORIZON][i] = u[i];\n\
+             \x20   }}\n"
+        )
+    } else {
+        "    (void)u;\n".to_owned()
+    };
+    format!(
+        "    slot = observer->next;\n\
+         \x20   for (i = 0u; i < {upper}_OUTPUTS; ++i) {{\n\
+         \x20       observer->y[slot][i] = y[i];\n\
+         \x20       observer->y[slot + {upper}_HORIZON][i] = y[i];\n\
+         \x20   }}\n\
+         {store_inputs}\
+         \x20   observer->next = slot + 1u >= {upper}_HORIZON ? 0u : slot + 1u;\n\
+         \x20   observer->filled += (unsigned)(observer->filled < {upper}_HORIZON);\n\
+         \x20   return {upper}_OK;\n"
+    )
 }
