@@ -107,6 +107,26 @@ pub fn upper(n: usize, r: usize, c: usize) -> usize {
 
 /// Writes one sample of the EKF of `code` with `constants` as programs.
 pub fn filter_code(code: &ModelCode, constants: &EkfConstants) -> FilterCode {
+    filter_programs(
+        code,
+        |b, x, p| {
+            for i in 0..code.dimensions.outputs {
+                update(b, code, constants.r[i], i, x, p);
+            }
+        },
+        |b, x, p| predict(b, code, constants, x, p),
+    )
+}
+
+/// The two programs of one sample of a filter of `code` (the EKF's, the UKF's): the state and the
+/// covariance's upper triangle read as leaves; with a measurement, `update` and the projection onto
+/// the bounds, whose state is the first result; then `predict`, the projection, and `x⁺` and `P⁺`'s
+/// upper triangle as results.
+pub(super) fn filter_programs(
+    code: &ModelCode,
+    update: impl Fn(&mut Builder<'_>, &mut Vec<usize>, &mut [Vec<usize>]),
+    predict: impl Fn(&mut Builder<'_>, &mut Vec<usize>, &mut [Vec<usize>]),
+) -> FilterCode {
     let build = |measured: bool| {
         let nx = code.dimensions.states;
         let mut b = Builder::new(Names {
@@ -119,15 +139,13 @@ pub fn filter_code(code: &ModelCode, constants: &EkfConstants) -> FilterCode {
             .map(|r| (0..nx).map(|c| b.leaf(Leaf::Covariance(upper(nx, r, c)))).collect())
             .collect();
         if measured {
-            for i in 0..code.dimensions.outputs {
-                update(&mut b, code, constants.r[i], i, &mut x, &mut p);
-            }
+            update(&mut b, &mut x, &mut p);
             b.project(&mut x, &code.bounds);
             for &e in &x {
                 b.result(e);
             }
         }
-        predict(&mut b, code, constants, &mut x, &mut p);
+        predict(&mut b, &mut x, &mut p);
         b.project(&mut x, &code.bounds);
         for &e in &x {
             b.result(e);

@@ -29,13 +29,13 @@
 //! slightly indefinite still gives finite sigma points. With physical bounds (`[model.bounds]`), the
 //! sigma points, `x̂` and `x⁺` are projected onto them, as the EKF projects its state.
 //!
-//! `P` is read and written as its upper triangle, row by row ([`upper`]); only `r ≤ c` is computed
-//! and mirrored, so `P⁺` is symmetric by construction.
+//! `P` is read and written as its upper triangle, row by row ([`super::kalman::upper`]); only
+//! `r ≤ c` is computed and mirrored, so `P⁺` is symmetric by construction.
 
 use crate::spec::ast::Binary;
 
-use super::kalman::{substep, upper, EkfConstants, FilterCode};
-use super::program::{Builder, Leaf, Names};
+use super::kalman::{filter_programs, substep, EkfConstants, FilterCode};
+use super::program::{Builder, Leaf};
 use super::ModelCode;
 
 /// The scheme's α.
@@ -65,44 +65,11 @@ pub fn weights(n: usize) -> (f64, f64, f64, f64) {
 /// Writes one sample of the UKF of `code` with `constants` (the EKF's: `Q`, `R`, the RK4 substeps;
 /// `x0` and `p0` are the start, not part of a sample) as programs.
 pub fn unscented_code(code: &ModelCode, constants: &EkfConstants) -> FilterCode {
-    let build = |measured: bool| {
-        let nx = code.dimensions.states;
-        let mut b = Builder::new(Names {
-            parameters: &code.parameters,
-            states: &[],
-            inputs: &[],
-        });
-        let mut x: Vec<usize> = (0..nx).map(|i| b.leaf(Leaf::State(i))).collect();
-        let mut p: Vec<Vec<usize>> = (0..nx)
-            .map(|r| (0..nx).map(|c| b.leaf(Leaf::Covariance(upper(nx, r, c)))).collect())
-            .collect();
-        if measured {
-            update(&mut b, code, &constants.r, &mut x, &mut p);
-            b.project(&mut x, &code.bounds);
-            for &e in &x {
-                b.result(e);
-            }
-        }
-        predict(&mut b, code, constants, &mut x, &mut p);
-        b.project(&mut x, &code.bounds);
-        for &e in &x {
-            b.result(e);
-        }
-        for (r, row) in p.iter().enumerate() {
-            for &entry in &row[r..] {
-                b.result(entry);
-            }
-        }
-        let mut program = b.finish();
-        program.prune();
-        program
-    };
-    FilterCode {
-        measured: build(true),
-        unmeasured: build(false),
-        parameters: code.parameters.clone(),
-        states: code.dimensions.states,
-    }
+    filter_programs(
+        code,
+        |b, x, p| update(b, code, &constants.r, x, p),
+        |b, x, p| predict(b, code, constants, x, p),
+    )
 }
 
 /// The sigma points of `(x, P)`, each projected onto the bounds: `x`, then `x + c Lᵢ` for every
