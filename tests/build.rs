@@ -4,7 +4,8 @@
 //! (`generated/src/<design>.rs`, where `gen` declares each as `pub type CorrectedObserver = …`,
 //! `pub type StartedEkfObserver = …`, `pub type RestartedEkfObserver = …`, host/src/emit/model.rs)
 //! and written as a macro, `for_each_started_observer!`, into `OUT_DIR/started_observers.rs`; with it
-//! `for_each_fixed_observer!`, the designs whose source has the integer observer (`fixed_observer()`).
+//! `for_each_fixed_observer!`, the designs whose source has the integer observer (`fixed_observer()`),
+//! and `for_each_ukf_observer!`, those with the unscented Kalman filter (`UkfObserver`).
 
 use std::path::{Path, PathBuf};
 
@@ -56,6 +57,15 @@ fn main() {
         .collect();
     let text = format!(
         "{text}\n/// Invokes `$callback!(design)` for every generated design with an integer observer\n/// (`fixed_observer()`). Written by `tests/build.rs` from the generated sources.\n#[macro_export]\nmacro_rules! for_each_fixed_observer {{\n    ($callback:ident) => {{\n{fixed}    }};\n}}\n"
+    );
+    // The UKF from the box centre, where the design has one (`pub struct UkfObserver`).
+    let ukf: String = designs
+        .iter()
+        .filter(|(_, text)| text.contains("\npub struct UkfObserver {"))
+        .map(|(name, _)| format!("        $callback!({name});\n"))
+        .collect();
+    let text = format!(
+        "{text}\n/// Invokes `$callback!(design)` for every generated design with an unscented Kalman filter\n/// (`UkfObserver`). Written by `tests/build.rs` from the generated sources.\n#[macro_export]\nmacro_rules! for_each_ukf_observer {{\n    ($callback:ident) => {{\n{ukf}    }};\n}}\n"
     );
     std::fs::write(out.join("started_observers.rs"), text).expect("write started_observers.rs");
 }

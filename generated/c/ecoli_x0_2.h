@@ -94,6 +94,21 @@ void ecoli_x0_2_ekf_box_init(ecoli_x0_2_ekf_box *observer);
 ecoli_x0_2_status ecoli_x0_2_ekf_box_push(ecoli_x0_2_ekf_box *observer, const float *y, const float *u);
 ecoli_x0_2_status ecoli_x0_2_ekf_box_estimate(const ecoli_x0_2_ekf_box *observer, float *values, ecoli_x0_2_saturation *saturation);
 
+/* The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust
+ * UkfObserver): an estimate from the first accepted sample; a sample with a non-finite output
+ * is refused and only predicted. */
+typedef struct {
+    float x[ECOLI_X0_2_STATES];
+    float p[ECOLI_X0_2_COVARIANCE];
+    float values[ECOLI_X0_2_TARGETS];
+    ecoli_x0_2_saturation flags[ECOLI_X0_2_TARGETS];
+    int ready;
+} ecoli_x0_2_ukf_box;
+
+void ecoli_x0_2_ukf_box_init(ecoli_x0_2_ukf_box *observer);
+ecoli_x0_2_status ecoli_x0_2_ukf_box_push(ecoli_x0_2_ukf_box *observer, const float *y, const float *u);
+ecoli_x0_2_status ecoli_x0_2_ukf_box_estimate(const ecoli_x0_2_ukf_box *observer, float *values, ecoli_x0_2_saturation *saturation);
+
 /* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 6 Gauss-Newton
  * step(s) over the last ECOLI_X0_2_HORIZON samples from the previous solution moved one sample on, each
  * solved by an L D L^T factorisation and projected onto the learning box. Thousands of instructions
@@ -113,12 +128,12 @@ void ecoli_x0_2_mhe_init(ecoli_x0_2_mhe *observer);
 ecoli_x0_2_status ecoli_x0_2_mhe_push(ecoli_x0_2_mhe *observer, const float *y, const float *u);
 ecoli_x0_2_status ecoli_x0_2_mhe_estimate(const ecoli_x0_2_mhe *observer, float *values, ecoli_x0_2_saturation *saturation);
 
-/* This design's observer, of the kind `gen` chose or the spec named: map. */
-#define ECOLI_X0_2_KIND "map"
-typedef ecoli_x0_2_map ecoli_x0_2_observer;
-#define ecoli_x0_2_observer_init ecoli_x0_2_map_init
-#define ecoli_x0_2_observer_push ecoli_x0_2_map_push
-#define ecoli_x0_2_observer_estimate ecoli_x0_2_map_estimate
+/* This design's observer, of the kind `gen` chose or the spec named: ukf_box. */
+#define ECOLI_X0_2_KIND "ukf_box"
+typedef ecoli_x0_2_ukf_box ecoli_x0_2_observer;
+#define ecoli_x0_2_observer_init ecoli_x0_2_ukf_box_init
+#define ecoli_x0_2_observer_push ecoli_x0_2_ukf_box_push
+#define ecoli_x0_2_observer_estimate ecoli_x0_2_ukf_box_estimate
 
 /* The Rust static library's interface (c/include/ecoli_x0_2.h of a crate `mho gen --spec` writes) over
  * ecoli_x0_2_observer: the same calls and statuses, so that a firmware moves between the two routes

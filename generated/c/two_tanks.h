@@ -128,6 +128,21 @@ void two_tanks_ekf_restart_init(two_tanks_ekf_restart *observer);
 two_tanks_status two_tanks_ekf_restart_push(two_tanks_ekf_restart *observer, const float *y, const float *u);
 two_tanks_status two_tanks_ekf_restart_estimate(const two_tanks_ekf_restart *observer, float *values, two_tanks_saturation *saturation);
 
+/* The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust
+ * UkfObserver): an estimate from the first accepted sample; a sample with a non-finite output
+ * is refused and only predicted. */
+typedef struct {
+    float x[TWO_TANKS_STATES];
+    float p[TWO_TANKS_COVARIANCE];
+    float values[TWO_TANKS_TARGETS];
+    two_tanks_saturation flags[TWO_TANKS_TARGETS];
+    int ready;
+} two_tanks_ukf_box;
+
+void two_tanks_ukf_box_init(two_tanks_ukf_box *observer);
+two_tanks_status two_tanks_ukf_box_push(two_tanks_ukf_box *observer, const float *y, const float *u);
+two_tanks_status two_tanks_ukf_box_estimate(const two_tanks_ukf_box *observer, float *values, two_tanks_saturation *saturation);
+
 /* The model-corrected map (kind corrected, the Rust CorrectedObserver): the map's first estimate,
  * then the model's prediction corrected by the output and, during the start-up, blended with the
  * map; each state clamped to its learning range (flagged LOW or HIGH). */

@@ -125,6 +125,21 @@ void vanderpol_ekf_restart_init(vanderpol_ekf_restart *observer);
 vanderpol_status vanderpol_ekf_restart_push(vanderpol_ekf_restart *observer, const float *y, const float *u);
 vanderpol_status vanderpol_ekf_restart_estimate(const vanderpol_ekf_restart *observer, float *values, vanderpol_saturation *saturation);
 
+/* The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust
+ * UkfObserver): an estimate from the first accepted sample; a sample with a non-finite output
+ * is refused and only predicted. */
+typedef struct {
+    float x[VANDERPOL_STATES];
+    float p[VANDERPOL_COVARIANCE];
+    float values[VANDERPOL_TARGETS];
+    vanderpol_saturation flags[VANDERPOL_TARGETS];
+    int ready;
+} vanderpol_ukf_box;
+
+void vanderpol_ukf_box_init(vanderpol_ukf_box *observer);
+vanderpol_status vanderpol_ukf_box_push(vanderpol_ukf_box *observer, const float *y, const float *u);
+vanderpol_status vanderpol_ukf_box_estimate(const vanderpol_ukf_box *observer, float *values, vanderpol_saturation *saturation);
+
 /* The model-corrected map (kind corrected, the Rust CorrectedObserver): the map's first estimate,
  * then the model's prediction corrected by the output and, during the start-up, blended with the
  * map; each state clamped to its learning range (flagged LOW or HIGH). */
@@ -161,12 +176,12 @@ void vanderpol_mhe_init(vanderpol_mhe *observer);
 vanderpol_status vanderpol_mhe_push(vanderpol_mhe *observer, const float *y, const float *u);
 vanderpol_status vanderpol_mhe_estimate(const vanderpol_mhe *observer, float *values, vanderpol_saturation *saturation);
 
-/* This design's observer, of the kind `gen` chose or the spec named: ekf_restart. */
-#define VANDERPOL_KIND "ekf_restart"
-typedef vanderpol_ekf_restart vanderpol_observer;
-#define vanderpol_observer_init vanderpol_ekf_restart_init
-#define vanderpol_observer_push vanderpol_ekf_restart_push
-#define vanderpol_observer_estimate vanderpol_ekf_restart_estimate
+/* This design's observer, of the kind `gen` chose or the spec named: ukf_box. */
+#define VANDERPOL_KIND "ukf_box"
+typedef vanderpol_ukf_box vanderpol_observer;
+#define vanderpol_observer_init vanderpol_ukf_box_init
+#define vanderpol_observer_push vanderpol_ukf_box_push
+#define vanderpol_observer_estimate vanderpol_ukf_box_estimate
 
 /* The Rust static library's interface (c/include/vanderpol.h of a crate `mho gen --spec` writes) over
  * vanderpol_observer: the same calls and statuses, so that a firmware moves between the two routes

@@ -125,6 +125,21 @@ void vanderpol_searched_ekf_restart_init(vanderpol_searched_ekf_restart *observe
 vanderpol_searched_status vanderpol_searched_ekf_restart_push(vanderpol_searched_ekf_restart *observer, const float *y, const float *u);
 vanderpol_searched_status vanderpol_searched_ekf_restart_estimate(const vanderpol_searched_ekf_restart *observer, float *values, vanderpol_searched_saturation *saturation);
 
+/* The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust
+ * UkfObserver): an estimate from the first accepted sample; a sample with a non-finite output
+ * is refused and only predicted. */
+typedef struct {
+    float x[VANDERPOL_SEARCHED_STATES];
+    float p[VANDERPOL_SEARCHED_COVARIANCE];
+    float values[VANDERPOL_SEARCHED_TARGETS];
+    vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
+    int ready;
+} vanderpol_searched_ukf_box;
+
+void vanderpol_searched_ukf_box_init(vanderpol_searched_ukf_box *observer);
+vanderpol_searched_status vanderpol_searched_ukf_box_push(vanderpol_searched_ukf_box *observer, const float *y, const float *u);
+vanderpol_searched_status vanderpol_searched_ukf_box_estimate(const vanderpol_searched_ukf_box *observer, float *values, vanderpol_searched_saturation *saturation);
+
 /* The model-corrected map (kind corrected, the Rust CorrectedObserver): the map's first estimate,
  * then the model's prediction corrected by the output and, during the start-up, blended with the
  * map; each state clamped to its learning range (flagged LOW or HIGH). */

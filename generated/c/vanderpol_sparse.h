@@ -125,6 +125,21 @@ void vanderpol_sparse_ekf_restart_init(vanderpol_sparse_ekf_restart *observer);
 vanderpol_sparse_status vanderpol_sparse_ekf_restart_push(vanderpol_sparse_ekf_restart *observer, const float *y, const float *u);
 vanderpol_sparse_status vanderpol_sparse_ekf_restart_estimate(const vanderpol_sparse_ekf_restart *observer, float *values, vanderpol_sparse_saturation *saturation);
 
+/* The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust
+ * UkfObserver): an estimate from the first accepted sample; a sample with a non-finite output
+ * is refused and only predicted. */
+typedef struct {
+    float x[VANDERPOL_SPARSE_STATES];
+    float p[VANDERPOL_SPARSE_COVARIANCE];
+    float values[VANDERPOL_SPARSE_TARGETS];
+    vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
+    int ready;
+} vanderpol_sparse_ukf_box;
+
+void vanderpol_sparse_ukf_box_init(vanderpol_sparse_ukf_box *observer);
+vanderpol_sparse_status vanderpol_sparse_ukf_box_push(vanderpol_sparse_ukf_box *observer, const float *y, const float *u);
+vanderpol_sparse_status vanderpol_sparse_ukf_box_estimate(const vanderpol_sparse_ukf_box *observer, float *values, vanderpol_sparse_saturation *saturation);
+
 /* The model-corrected map (kind corrected, the Rust CorrectedObserver): the map's first estimate,
  * then the model's prediction corrected by the output and, during the start-up, blended with the
  * map; each state clamped to its learning range (flagged LOW or HIGH). */

@@ -125,6 +125,21 @@ void vanderpol_uncertain_ekf_restart_init(vanderpol_uncertain_ekf_restart *obser
 vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_push(vanderpol_uncertain_ekf_restart *observer, const float *y, const float *u);
 vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_estimate(const vanderpol_uncertain_ekf_restart *observer, float *values, vanderpol_uncertain_saturation *saturation);
 
+/* The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust
+ * UkfObserver): an estimate from the first accepted sample; a sample with a non-finite output
+ * is refused and only predicted. */
+typedef struct {
+    float x[VANDERPOL_UNCERTAIN_STATES];
+    float p[VANDERPOL_UNCERTAIN_COVARIANCE];
+    float values[VANDERPOL_UNCERTAIN_TARGETS];
+    vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
+    int ready;
+} vanderpol_uncertain_ukf_box;
+
+void vanderpol_uncertain_ukf_box_init(vanderpol_uncertain_ukf_box *observer);
+vanderpol_uncertain_status vanderpol_uncertain_ukf_box_push(vanderpol_uncertain_ukf_box *observer, const float *y, const float *u);
+vanderpol_uncertain_status vanderpol_uncertain_ukf_box_estimate(const vanderpol_uncertain_ukf_box *observer, float *values, vanderpol_uncertain_saturation *saturation);
+
 /* The model-corrected map (kind corrected, the Rust CorrectedObserver): the map's first estimate,
  * then the model's prediction corrected by the output and, during the start-up, blended with the
  * map; each state clamped to its learning range (flagged LOW or HIGH). */
@@ -161,12 +176,12 @@ void vanderpol_uncertain_mhe_init(vanderpol_uncertain_mhe *observer);
 vanderpol_uncertain_status vanderpol_uncertain_mhe_push(vanderpol_uncertain_mhe *observer, const float *y, const float *u);
 vanderpol_uncertain_status vanderpol_uncertain_mhe_estimate(const vanderpol_uncertain_mhe *observer, float *values, vanderpol_uncertain_saturation *saturation);
 
-/* This design's observer, of the kind `gen` chose or the spec named: corrected. */
-#define VANDERPOL_UNCERTAIN_KIND "corrected"
-typedef vanderpol_uncertain_corrected vanderpol_uncertain_observer;
-#define vanderpol_uncertain_observer_init vanderpol_uncertain_corrected_init
-#define vanderpol_uncertain_observer_push vanderpol_uncertain_corrected_push
-#define vanderpol_uncertain_observer_estimate vanderpol_uncertain_corrected_estimate
+/* This design's observer, of the kind `gen` chose or the spec named: ekf_restart. */
+#define VANDERPOL_UNCERTAIN_KIND "ekf_restart"
+typedef vanderpol_uncertain_ekf_restart vanderpol_uncertain_observer;
+#define vanderpol_uncertain_observer_init vanderpol_uncertain_ekf_restart_init
+#define vanderpol_uncertain_observer_push vanderpol_uncertain_ekf_restart_push
+#define vanderpol_uncertain_observer_estimate vanderpol_uncertain_ekf_restart_estimate
 
 /* The Rust static library's interface (c/include/vanderpol_uncertain.h of a crate `mho gen --spec` writes) over
  * vanderpol_uncertain_observer: the same calls and statuses, so that a firmware moves between the two routes

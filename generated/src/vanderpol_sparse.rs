@@ -63,7 +63,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["", ""];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 6] = [("map", 97), ("ekf_box", 241), ("corrected", 149), ("ekf_map", 249), ("ekf_restart", 241), ("mhe", 86639)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 97), ("ekf_box", 241), ("ukf_box", 431), ("corrected", 149), ("ekf_map", 249), ("ekf_restart", 241), ("mhe", 86639)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -539,7 +539,7 @@ impl BoxEkfObserver {
 }
 
 /// One sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
-#[allow(unused_variables, non_snake_case, clippy::type_complexity)]
+#[allow(unused_variables, non_snake_case, clippy::type_complexity, clippy::approx_constant)]
 fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {
     let x_x1: T = x[0];
     let x_x2: T = x[1];
@@ -755,7 +755,7 @@ fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
 }
 
 /// One sample without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`.
-#[allow(unused_variables, non_snake_case)]
+#[allow(unused_variables, non_snake_case, clippy::approx_constant)]
 fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[T; INPUTS]) -> ([T; STATES], [T; COVARIANCE]) {
     let x_x1: T = x[0];
     let x_x2: T = x[1];
@@ -920,6 +920,785 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t160: T = T::literal(0.00076428615, 0.0007642861698330361);
     let t161: T = t157 + t160;
     ([t109, t115], [t159, t154, t161])
+}
+
+/// The UKF's `Q` diagonal as `gen` chose it (f64), tuned on its own: each state's process-noise
+/// variance per sample period, in its unit squared ([`STATE_UNITS`]).
+pub const UKF_Q: [f64; STATES] = [3.4578666416114866e-6, 0.0005082780421745359];
+
+/// This design's unscented Kalman filter, written out for its size by `gen`: the scaled unscented
+/// transform (Wan & van der Merwe; α = 1.0, β = 0.0, κ = 0.0), `2n + 1` sigma points from
+/// the Cholesky factor of `P` (each pivot floored: `P` stays positive definite), every one through
+/// [`Discrete`], projected onto the model's bounds; each measured sample one joint update of every
+/// output (`K = C S⁻¹` through the Cholesky factor of `S`, no inverse), `P` kept as its upper
+/// triangle. It starts at the centre of the state box with `P(0)` and `Q` diagonal as chosen by
+/// `gen` on the tuning runs (its own, by the EKF's search), `R` the outputs' noise variances.
+///
+/// A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u` changes
+/// nothing; a sample whose result is not finite is not taken.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ukf<T = f32> {
+    /// `x̂`: after a sample, the prediction to the next one.
+    x: [T; STATES],
+    /// The upper triangle of `P`.
+    p: [T; COVARIANCE],
+}
+
+impl<T: Scalar + Maths> Default for Ukf<T> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T: Scalar + Maths> Ukf<T> {
+    /// A fresh filter.
+    pub fn new() -> Self {
+        Ukf {
+            x: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
+            p: [T::literal(2.1275058, 2.127505737491765), T::literal(0.0, 0.0), T::literal(160.73163, 160.73162979226564)],
+        }
+    }
+
+    /// The current estimate (after a sample, the prediction to the next one).
+    pub fn state(&self) -> [T; STATES] {
+        self.x
+    }
+
+    /// The current covariance `P`.
+    pub fn covariance(&self) -> [[T; STATES]; STATES] {
+        [[self.p[0], self.p[1]], [self.p[1], self.p[2]]]
+    }
+
+    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
+    /// type's docs). The same operations run for every accepted sample.
+    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
+        if !u.iter().all(|v| v.is_finite()) {
+            return Err(firmware::RejectedSample);
+        }
+        if y.iter().all(|v| v.is_finite()) {
+            let (estimate, x, p) = ukf_measured(&self.x, &self.p, y, u);
+            if finite(&x, &p) {
+                (self.x, self.p) = (x, p);
+                return Ok(estimate);
+            }
+        } else {
+            let (x, p) = ukf_unmeasured(&self.x, &self.p, u);
+            if finite(&x, &p) {
+                (self.x, self.p) = (x, p);
+            }
+        }
+        Err(firmware::RejectedSample)
+    }
+}
+
+/// A fresh UKF in `f32`, as the chip runs it.
+pub fn ukf() -> Ukf {
+    Ukf::new()
+}
+
+/// The UKF from the centre of the state box ([`Ukf`], the same filter and constants) with the
+/// observers' interface: `push` takes a sample, `estimate` gives the targets of the latest accepted
+/// one (each `Inside`: the filter does not saturate), `reset` starts again. It has an estimate from
+/// the first accepted sample on; a refused sample keeps the previous one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct UkfObserver {
+    filter: Ukf<f32>,
+    latest: Option<[Estimate<f32>; TARGETS]>,
+}
+
+impl Default for UkfObserver {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl UkfObserver {
+    /// A fresh observer (the filter at its start), holding no sample yet.
+    pub const fn new() -> Self {
+        UkfObserver {
+            filter: Ukf { x: [0.0, 0.0], p: [2.1275058, 0.0, 160.73163] },
+            latest: None,
+        }
+    }
+
+    /// Takes the sample `(y, u)`: [`Ukf::push`], then the targets of its estimate `x̂(k|k)`.
+    pub fn push(&mut self, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+        let x = self.filter.push(&y, &u)?;
+        let values = targets(&x, &u);
+        let mut latest = [Estimate { value: 0.0, saturation: firmware::Saturation::Inside }; TARGETS];
+        for (e, value) in latest.iter_mut().zip(values) {
+            e.value = value;
+        }
+        self.latest = Some(latest);
+        Ok(())
+    }
+
+    /// The targets of the latest accepted sample; `None` before the first.
+    pub fn estimate(&self) -> Option<[Estimate<f32>; TARGETS]> {
+        self.latest
+    }
+
+    /// Back to the start: the filter at the box centre, no estimate.
+    pub fn reset(&mut self) {
+        *self = Self::new();
+    }
+
+    /// Whether it has an estimate.
+    pub fn is_ready(&self) -> bool {
+        self.latest.is_some()
+    }
+}
+
+/// One UKF sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
+#[allow(unused_variables, non_snake_case, clippy::type_complexity, clippy::approx_constant)]
+fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {
+    let x_x1: T = x[0];
+    let x_x2: T = x[1];
+    let cov0: T = p[0];
+    let cov1: T = p[1];
+    let cov2: T = p[2];
+    let t5: T = T::literal(1.0, 1.0);
+    let t6: T = T::literal(1.1920929e-7, 1.1920928955078125e-7);
+    let t7: T = Maths::abs(cov0);
+    let t8: T = t6 * t7;
+    let t9: T = T::literal(1.1754944e-38, 1.1754943508222875e-38);
+    let t10: T = t8 + t9;
+    let t11: T = firmware::bounds::at_least(cov0, t10);
+    let t12: T = Maths::sqrt(t11);
+    let t13: T = t5 / t12;
+    let t14: T = cov1 * t13;
+    let t15: T = t14 * t14;
+    let t16: T = cov2 - t15;
+    let t17: T = Maths::abs(cov2);
+    let t18: T = t6 * t17;
+    let t19: T = t18 + t9;
+    let t20: T = firmware::bounds::at_least(t16, t19);
+    let t21: T = Maths::sqrt(t20);
+    let t22: T = T::literal(1.4142135, 1.4142135623730951);
+    let t23: T = t22 * t12;
+    let t24: T = x_x1 + t23;
+    let t25: T = t22 * t14;
+    let t26: T = x_x2 + t25;
+    let t27: T = t22 * t21;
+    let t28: T = x_x2 + t27;
+    let t29: T = T::literal(-1.4142135, -1.4142135623730951);
+    let t30: T = t29 * t12;
+    let t31: T = x_x1 + t30;
+    let t32: T = t29 * t14;
+    let t33: T = x_x2 + t32;
+    let t34: T = t29 * t21;
+    let t35: T = x_x2 + t34;
+    let t36: T = t24 + t26;
+    let t37: T = x_x1 + t28;
+    let t38: T = t31 + t33;
+    let t39: T = x_x1 + t35;
+    let t40: T = T::literal(0.25, 0.25);
+    let t41: T = t36 + t37;
+    let t42: T = t41 + t38;
+    let t43: T = t42 + t39;
+    let t44: T = t40 * t43;
+    let t45: T = t36 - t44;
+    let t46: T = t37 - t44;
+    let t47: T = t38 - t44;
+    let t48: T = t39 - t44;
+    let t49: T = t24 - x_x1;
+    let t50: T = t26 - x_x2;
+    let t51: T = t28 - x_x2;
+    let t52: T = t31 - x_x1;
+    let t53: T = t33 - x_x2;
+    let t54: T = t35 - x_x2;
+    let t55: T = t45 * t45;
+    let t56: T = t46 * t46;
+    let t57: T = t55 + t56;
+    let t58: T = t47 * t47;
+    let t59: T = t57 + t58;
+    let t60: T = t48 * t48;
+    let t61: T = t59 + t60;
+    let t62: T = t40 * t61;
+    let t63: T = T::literal(0.2, 0.2);
+    let t64: T = t62 + t63;
+    let t65: T = t49 * t45;
+    let t66: T = t52 * t47;
+    let t67: T = t65 + t66;
+    let t68: T = t40 * t67;
+    let t69: T = t50 * t45;
+    let t70: T = t51 * t46;
+    let t71: T = t69 + t70;
+    let t72: T = t53 * t47;
+    let t73: T = t71 + t72;
+    let t74: T = t54 * t48;
+    let t75: T = t73 + t74;
+    let t76: T = t40 * t75;
+    let t77: T = Maths::abs(t64);
+    let t78: T = t6 * t77;
+    let t79: T = t78 + t9;
+    let t80: T = firmware::bounds::at_least(t64, t79);
+    let t81: T = Maths::sqrt(t80);
+    let t82: T = t5 / t81;
+    let t83: T = t68 * t82;
+    let t84: T = t83 * t82;
+    let t85: T = t76 * t82;
+    let t86: T = t85 * t82;
+    let y_y: T = y[0];
+    let t88: T = y_y - t44;
+    let t89: T = t84 * t88;
+    let t90: T = x_x1 + t89;
+    let t91: T = t86 * t88;
+    let t92: T = x_x2 + t91;
+    let t93: T = t68 * t84;
+    let t94: T = cov0 - t93;
+    let t95: T = t68 * t86;
+    let t96: T = cov1 - t95;
+    let t97: T = t76 * t86;
+    let t98: T = cov2 - t97;
+    let t99: T = Maths::abs(t94);
+    let t100: T = t6 * t99;
+    let t101: T = t100 + t9;
+    let t102: T = firmware::bounds::at_least(t94, t101);
+    let t103: T = Maths::sqrt(t102);
+    let t104: T = t5 / t103;
+    let t105: T = t96 * t104;
+    let t106: T = t105 * t105;
+    let t107: T = t98 - t106;
+    let t108: T = Maths::abs(t98);
+    let t109: T = t6 * t108;
+    let t110: T = t109 + t9;
+    let t111: T = firmware::bounds::at_least(t107, t110);
+    let t112: T = Maths::sqrt(t111);
+    let t113: T = t22 * t103;
+    let t114: T = t90 + t113;
+    let t115: T = t22 * t105;
+    let t116: T = t92 + t115;
+    let t117: T = t22 * t112;
+    let t118: T = t92 + t117;
+    let t119: T = t29 * t103;
+    let t120: T = t90 + t119;
+    let t121: T = t29 * t105;
+    let t122: T = t92 + t121;
+    let t123: T = t29 * t112;
+    let t124: T = t92 + t123;
+    let t125: T = T::literal(0.1, 0.1);
+    let t126: T = T::literal(2.0, 2.0);
+    let t127: T = T::literal(6.0, 6.0);
+    let t128: T = t125 / t126;
+    let t129: T = t125 / t127;
+    let t130: T = -t116;
+    let t131: T = T::literal(4.0, 4.0);
+    let t132: T = t131 * t114;
+    let t133: T = t114 * t114;
+    let t134: T = t5 - t133;
+    let t135: T = t134 * t116;
+    let t136: T = t132 + t135;
+    let t137: T = t128 * t130;
+    let t138: T = t114 + t137;
+    let t139: T = t128 * t136;
+    let t140: T = t116 + t139;
+    let t141: T = -t140;
+    let t142: T = t131 * t138;
+    let t143: T = t138 * t138;
+    let t144: T = t5 - t143;
+    let t145: T = t144 * t140;
+    let t146: T = t142 + t145;
+    let t147: T = t128 * t141;
+    let t148: T = t114 + t147;
+    let t149: T = t128 * t146;
+    let t150: T = t116 + t149;
+    let t151: T = -t150;
+    let t152: T = t131 * t148;
+    let t153: T = t148 * t148;
+    let t154: T = t5 - t153;
+    let t155: T = t154 * t150;
+    let t156: T = t152 + t155;
+    let t157: T = t125 * t151;
+    let t158: T = t114 + t157;
+    let t159: T = t125 * t156;
+    let t160: T = t116 + t159;
+    let t161: T = -t160;
+    let t162: T = t131 * t158;
+    let t163: T = t158 * t158;
+    let t164: T = t5 - t163;
+    let t165: T = t164 * t160;
+    let t166: T = t162 + t165;
+    let t167: T = t141 + t151;
+    let t168: T = t126 * t167;
+    let t169: T = t130 + t168;
+    let t170: T = t169 + t161;
+    let t171: T = t129 * t170;
+    let t172: T = t114 + t171;
+    let t173: T = t146 + t156;
+    let t174: T = t126 * t173;
+    let t175: T = t136 + t174;
+    let t176: T = t175 + t166;
+    let t177: T = t129 * t176;
+    let t178: T = t116 + t177;
+    let t179: T = -t118;
+    let t180: T = t131 * t90;
+    let t181: T = t90 * t90;
+    let t182: T = t5 - t181;
+    let t183: T = t182 * t118;
+    let t184: T = t180 + t183;
+    let t185: T = t128 * t179;
+    let t186: T = t90 + t185;
+    let t187: T = t128 * t184;
+    let t188: T = t118 + t187;
+    let t189: T = -t188;
+    let t190: T = t131 * t186;
+    let t191: T = t186 * t186;
+    let t192: T = t5 - t191;
+    let t193: T = t192 * t188;
+    let t194: T = t190 + t193;
+    let t195: T = t128 * t189;
+    let t196: T = t90 + t195;
+    let t197: T = t128 * t194;
+    let t198: T = t118 + t197;
+    let t199: T = -t198;
+    let t200: T = t131 * t196;
+    let t201: T = t196 * t196;
+    let t202: T = t5 - t201;
+    let t203: T = t202 * t198;
+    let t204: T = t200 + t203;
+    let t205: T = t125 * t199;
+    let t206: T = t90 + t205;
+    let t207: T = t125 * t204;
+    let t208: T = t118 + t207;
+    let t209: T = -t208;
+    let t210: T = t131 * t206;
+    let t211: T = t206 * t206;
+    let t212: T = t5 - t211;
+    let t213: T = t212 * t208;
+    let t214: T = t210 + t213;
+    let t215: T = t189 + t199;
+    let t216: T = t126 * t215;
+    let t217: T = t179 + t216;
+    let t218: T = t217 + t209;
+    let t219: T = t129 * t218;
+    let t220: T = t90 + t219;
+    let t221: T = t194 + t204;
+    let t222: T = t126 * t221;
+    let t223: T = t184 + t222;
+    let t224: T = t223 + t214;
+    let t225: T = t129 * t224;
+    let t226: T = t118 + t225;
+    let t227: T = -t122;
+    let t228: T = t131 * t120;
+    let t229: T = t120 * t120;
+    let t230: T = t5 - t229;
+    let t231: T = t230 * t122;
+    let t232: T = t228 + t231;
+    let t233: T = t128 * t227;
+    let t234: T = t120 + t233;
+    let t235: T = t128 * t232;
+    let t236: T = t122 + t235;
+    let t237: T = -t236;
+    let t238: T = t131 * t234;
+    let t239: T = t234 * t234;
+    let t240: T = t5 - t239;
+    let t241: T = t240 * t236;
+    let t242: T = t238 + t241;
+    let t243: T = t128 * t237;
+    let t244: T = t120 + t243;
+    let t245: T = t128 * t242;
+    let t246: T = t122 + t245;
+    let t247: T = -t246;
+    let t248: T = t131 * t244;
+    let t249: T = t244 * t244;
+    let t250: T = t5 - t249;
+    let t251: T = t250 * t246;
+    let t252: T = t248 + t251;
+    let t253: T = t125 * t247;
+    let t254: T = t120 + t253;
+    let t255: T = t125 * t252;
+    let t256: T = t122 + t255;
+    let t257: T = -t256;
+    let t258: T = t131 * t254;
+    let t259: T = t254 * t254;
+    let t260: T = t5 - t259;
+    let t261: T = t260 * t256;
+    let t262: T = t258 + t261;
+    let t263: T = t237 + t247;
+    let t264: T = t126 * t263;
+    let t265: T = t227 + t264;
+    let t266: T = t265 + t257;
+    let t267: T = t129 * t266;
+    let t268: T = t120 + t267;
+    let t269: T = t242 + t252;
+    let t270: T = t126 * t269;
+    let t271: T = t232 + t270;
+    let t272: T = t271 + t262;
+    let t273: T = t129 * t272;
+    let t274: T = t122 + t273;
+    let t275: T = -t124;
+    let t276: T = t182 * t124;
+    let t277: T = t180 + t276;
+    let t278: T = t128 * t275;
+    let t279: T = t90 + t278;
+    let t280: T = t128 * t277;
+    let t281: T = t124 + t280;
+    let t282: T = -t281;
+    let t283: T = t131 * t279;
+    let t284: T = t279 * t279;
+    let t285: T = t5 - t284;
+    let t286: T = t285 * t281;
+    let t287: T = t283 + t286;
+    let t288: T = t128 * t282;
+    let t289: T = t90 + t288;
+    let t290: T = t128 * t287;
+    let t291: T = t124 + t290;
+    let t292: T = -t291;
+    let t293: T = t131 * t289;
+    let t294: T = t289 * t289;
+    let t295: T = t5 - t294;
+    let t296: T = t295 * t291;
+    let t297: T = t293 + t296;
+    let t298: T = t125 * t292;
+    let t299: T = t90 + t298;
+    let t300: T = t125 * t297;
+    let t301: T = t124 + t300;
+    let t302: T = -t301;
+    let t303: T = t131 * t299;
+    let t304: T = t299 * t299;
+    let t305: T = t5 - t304;
+    let t306: T = t305 * t301;
+    let t307: T = t303 + t306;
+    let t308: T = t282 + t292;
+    let t309: T = t126 * t308;
+    let t310: T = t275 + t309;
+    let t311: T = t310 + t302;
+    let t312: T = t129 * t311;
+    let t313: T = t90 + t312;
+    let t314: T = t287 + t297;
+    let t315: T = t126 * t314;
+    let t316: T = t277 + t315;
+    let t317: T = t316 + t307;
+    let t318: T = t129 * t317;
+    let t319: T = t124 + t318;
+    let t320: T = t172 + t220;
+    let t321: T = t320 + t268;
+    let t322: T = t321 + t313;
+    let t323: T = t40 * t322;
+    let t324: T = t178 + t226;
+    let t325: T = t324 + t274;
+    let t326: T = t325 + t319;
+    let t327: T = t40 * t326;
+    let t328: T = t172 - t323;
+    let t329: T = t178 - t327;
+    let t330: T = t220 - t323;
+    let t331: T = t226 - t327;
+    let t332: T = t268 - t323;
+    let t333: T = t274 - t327;
+    let t334: T = t313 - t323;
+    let t335: T = t319 - t327;
+    let t336: T = t328 * t328;
+    let t337: T = t330 * t330;
+    let t338: T = t336 + t337;
+    let t339: T = t332 * t332;
+    let t340: T = t338 + t339;
+    let t341: T = t334 * t334;
+    let t342: T = t340 + t341;
+    let t343: T = t40 * t342;
+    let t344: T = t328 * t329;
+    let t345: T = t330 * t331;
+    let t346: T = t344 + t345;
+    let t347: T = t332 * t333;
+    let t348: T = t346 + t347;
+    let t349: T = t334 * t335;
+    let t350: T = t348 + t349;
+    let t351: T = t40 * t350;
+    let t352: T = t329 * t329;
+    let t353: T = t331 * t331;
+    let t354: T = t352 + t353;
+    let t355: T = t333 * t333;
+    let t356: T = t354 + t355;
+    let t357: T = t335 * t335;
+    let t358: T = t356 + t357;
+    let t359: T = t40 * t358;
+    let t360: T = T::literal(3.4578666e-6, 3.4578666416114866e-6);
+    let t361: T = t343 + t360;
+    let t362: T = T::literal(0.000508278, 0.0005082780421745359);
+    let t363: T = t359 + t362;
+    ([t90, t92], [t323, t327], [t361, t351, t363])
+}
+
+/// One UKF sample without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`.
+#[allow(unused_variables, non_snake_case, clippy::approx_constant)]
+fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[T; INPUTS]) -> ([T; STATES], [T; COVARIANCE]) {
+    let x_x1: T = x[0];
+    let x_x2: T = x[1];
+    let cov0: T = p[0];
+    let cov1: T = p[1];
+    let cov2: T = p[2];
+    let t5: T = T::literal(1.0, 1.0);
+    let t6: T = T::literal(1.1920929e-7, 1.1920928955078125e-7);
+    let t7: T = Maths::abs(cov0);
+    let t8: T = t6 * t7;
+    let t9: T = T::literal(1.1754944e-38, 1.1754943508222875e-38);
+    let t10: T = t8 + t9;
+    let t11: T = firmware::bounds::at_least(cov0, t10);
+    let t12: T = Maths::sqrt(t11);
+    let t13: T = t5 / t12;
+    let t14: T = cov1 * t13;
+    let t15: T = t14 * t14;
+    let t16: T = cov2 - t15;
+    let t17: T = Maths::abs(cov2);
+    let t18: T = t6 * t17;
+    let t19: T = t18 + t9;
+    let t20: T = firmware::bounds::at_least(t16, t19);
+    let t21: T = Maths::sqrt(t20);
+    let t22: T = T::literal(1.4142135, 1.4142135623730951);
+    let t23: T = t22 * t12;
+    let t24: T = x_x1 + t23;
+    let t25: T = t22 * t14;
+    let t26: T = x_x2 + t25;
+    let t27: T = t22 * t21;
+    let t28: T = x_x2 + t27;
+    let t29: T = T::literal(-1.4142135, -1.4142135623730951);
+    let t30: T = t29 * t12;
+    let t31: T = x_x1 + t30;
+    let t32: T = t29 * t14;
+    let t33: T = x_x2 + t32;
+    let t34: T = t29 * t21;
+    let t35: T = x_x2 + t34;
+    let t36: T = T::literal(0.1, 0.1);
+    let t37: T = T::literal(2.0, 2.0);
+    let t38: T = T::literal(6.0, 6.0);
+    let t39: T = t36 / t37;
+    let t40: T = t36 / t38;
+    let t41: T = -t26;
+    let t42: T = T::literal(4.0, 4.0);
+    let t43: T = t42 * t24;
+    let t44: T = t24 * t24;
+    let t45: T = t5 - t44;
+    let t46: T = t45 * t26;
+    let t47: T = t43 + t46;
+    let t48: T = t39 * t41;
+    let t49: T = t24 + t48;
+    let t50: T = t39 * t47;
+    let t51: T = t26 + t50;
+    let t52: T = -t51;
+    let t53: T = t42 * t49;
+    let t54: T = t49 * t49;
+    let t55: T = t5 - t54;
+    let t56: T = t55 * t51;
+    let t57: T = t53 + t56;
+    let t58: T = t39 * t52;
+    let t59: T = t24 + t58;
+    let t60: T = t39 * t57;
+    let t61: T = t26 + t60;
+    let t62: T = -t61;
+    let t63: T = t42 * t59;
+    let t64: T = t59 * t59;
+    let t65: T = t5 - t64;
+    let t66: T = t65 * t61;
+    let t67: T = t63 + t66;
+    let t68: T = t36 * t62;
+    let t69: T = t24 + t68;
+    let t70: T = t36 * t67;
+    let t71: T = t26 + t70;
+    let t72: T = -t71;
+    let t73: T = t42 * t69;
+    let t74: T = t69 * t69;
+    let t75: T = t5 - t74;
+    let t76: T = t75 * t71;
+    let t77: T = t73 + t76;
+    let t78: T = t52 + t62;
+    let t79: T = t37 * t78;
+    let t80: T = t41 + t79;
+    let t81: T = t80 + t72;
+    let t82: T = t40 * t81;
+    let t83: T = t24 + t82;
+    let t84: T = t57 + t67;
+    let t85: T = t37 * t84;
+    let t86: T = t47 + t85;
+    let t87: T = t86 + t77;
+    let t88: T = t40 * t87;
+    let t89: T = t26 + t88;
+    let t90: T = -t28;
+    let t91: T = t42 * x_x1;
+    let t92: T = x_x1 * x_x1;
+    let t93: T = t5 - t92;
+    let t94: T = t93 * t28;
+    let t95: T = t91 + t94;
+    let t96: T = t39 * t90;
+    let t97: T = x_x1 + t96;
+    let t98: T = t39 * t95;
+    let t99: T = t28 + t98;
+    let t100: T = -t99;
+    let t101: T = t42 * t97;
+    let t102: T = t97 * t97;
+    let t103: T = t5 - t102;
+    let t104: T = t103 * t99;
+    let t105: T = t101 + t104;
+    let t106: T = t39 * t100;
+    let t107: T = x_x1 + t106;
+    let t108: T = t39 * t105;
+    let t109: T = t28 + t108;
+    let t110: T = -t109;
+    let t111: T = t42 * t107;
+    let t112: T = t107 * t107;
+    let t113: T = t5 - t112;
+    let t114: T = t113 * t109;
+    let t115: T = t111 + t114;
+    let t116: T = t36 * t110;
+    let t117: T = x_x1 + t116;
+    let t118: T = t36 * t115;
+    let t119: T = t28 + t118;
+    let t120: T = -t119;
+    let t121: T = t42 * t117;
+    let t122: T = t117 * t117;
+    let t123: T = t5 - t122;
+    let t124: T = t123 * t119;
+    let t125: T = t121 + t124;
+    let t126: T = t100 + t110;
+    let t127: T = t37 * t126;
+    let t128: T = t90 + t127;
+    let t129: T = t128 + t120;
+    let t130: T = t40 * t129;
+    let t131: T = x_x1 + t130;
+    let t132: T = t105 + t115;
+    let t133: T = t37 * t132;
+    let t134: T = t95 + t133;
+    let t135: T = t134 + t125;
+    let t136: T = t40 * t135;
+    let t137: T = t28 + t136;
+    let t138: T = -t33;
+    let t139: T = t42 * t31;
+    let t140: T = t31 * t31;
+    let t141: T = t5 - t140;
+    let t142: T = t141 * t33;
+    let t143: T = t139 + t142;
+    let t144: T = t39 * t138;
+    let t145: T = t31 + t144;
+    let t146: T = t39 * t143;
+    let t147: T = t33 + t146;
+    let t148: T = -t147;
+    let t149: T = t42 * t145;
+    let t150: T = t145 * t145;
+    let t151: T = t5 - t150;
+    let t152: T = t151 * t147;
+    let t153: T = t149 + t152;
+    let t154: T = t39 * t148;
+    let t155: T = t31 + t154;
+    let t156: T = t39 * t153;
+    let t157: T = t33 + t156;
+    let t158: T = -t157;
+    let t159: T = t42 * t155;
+    let t160: T = t155 * t155;
+    let t161: T = t5 - t160;
+    let t162: T = t161 * t157;
+    let t163: T = t159 + t162;
+    let t164: T = t36 * t158;
+    let t165: T = t31 + t164;
+    let t166: T = t36 * t163;
+    let t167: T = t33 + t166;
+    let t168: T = -t167;
+    let t169: T = t42 * t165;
+    let t170: T = t165 * t165;
+    let t171: T = t5 - t170;
+    let t172: T = t171 * t167;
+    let t173: T = t169 + t172;
+    let t174: T = t148 + t158;
+    let t175: T = t37 * t174;
+    let t176: T = t138 + t175;
+    let t177: T = t176 + t168;
+    let t178: T = t40 * t177;
+    let t179: T = t31 + t178;
+    let t180: T = t153 + t163;
+    let t181: T = t37 * t180;
+    let t182: T = t143 + t181;
+    let t183: T = t182 + t173;
+    let t184: T = t40 * t183;
+    let t185: T = t33 + t184;
+    let t186: T = -t35;
+    let t187: T = t93 * t35;
+    let t188: T = t91 + t187;
+    let t189: T = t39 * t186;
+    let t190: T = x_x1 + t189;
+    let t191: T = t39 * t188;
+    let t192: T = t35 + t191;
+    let t193: T = -t192;
+    let t194: T = t42 * t190;
+    let t195: T = t190 * t190;
+    let t196: T = t5 - t195;
+    let t197: T = t196 * t192;
+    let t198: T = t194 + t197;
+    let t199: T = t39 * t193;
+    let t200: T = x_x1 + t199;
+    let t201: T = t39 * t198;
+    let t202: T = t35 + t201;
+    let t203: T = -t202;
+    let t204: T = t42 * t200;
+    let t205: T = t200 * t200;
+    let t206: T = t5 - t205;
+    let t207: T = t206 * t202;
+    let t208: T = t204 + t207;
+    let t209: T = t36 * t203;
+    let t210: T = x_x1 + t209;
+    let t211: T = t36 * t208;
+    let t212: T = t35 + t211;
+    let t213: T = -t212;
+    let t214: T = t42 * t210;
+    let t215: T = t210 * t210;
+    let t216: T = t5 - t215;
+    let t217: T = t216 * t212;
+    let t218: T = t214 + t217;
+    let t219: T = t193 + t203;
+    let t220: T = t37 * t219;
+    let t221: T = t186 + t220;
+    let t222: T = t221 + t213;
+    let t223: T = t40 * t222;
+    let t224: T = x_x1 + t223;
+    let t225: T = t198 + t208;
+    let t226: T = t37 * t225;
+    let t227: T = t188 + t226;
+    let t228: T = t227 + t218;
+    let t229: T = t40 * t228;
+    let t230: T = t35 + t229;
+    let t231: T = T::literal(0.25, 0.25);
+    let t232: T = t83 + t131;
+    let t233: T = t232 + t179;
+    let t234: T = t233 + t224;
+    let t235: T = t231 * t234;
+    let t236: T = t89 + t137;
+    let t237: T = t236 + t185;
+    let t238: T = t237 + t230;
+    let t239: T = t231 * t238;
+    let t240: T = t83 - t235;
+    let t241: T = t89 - t239;
+    let t242: T = t131 - t235;
+    let t243: T = t137 - t239;
+    let t244: T = t179 - t235;
+    let t245: T = t185 - t239;
+    let t246: T = t224 - t235;
+    let t247: T = t230 - t239;
+    let t248: T = t240 * t240;
+    let t249: T = t242 * t242;
+    let t250: T = t248 + t249;
+    let t251: T = t244 * t244;
+    let t252: T = t250 + t251;
+    let t253: T = t246 * t246;
+    let t254: T = t252 + t253;
+    let t255: T = t231 * t254;
+    let t256: T = t240 * t241;
+    let t257: T = t242 * t243;
+    let t258: T = t256 + t257;
+    let t259: T = t244 * t245;
+    let t260: T = t258 + t259;
+    let t261: T = t246 * t247;
+    let t262: T = t260 + t261;
+    let t263: T = t231 * t262;
+    let t264: T = t241 * t241;
+    let t265: T = t243 * t243;
+    let t266: T = t264 + t265;
+    let t267: T = t245 * t245;
+    let t268: T = t266 + t267;
+    let t269: T = t247 * t247;
+    let t270: T = t268 + t269;
+    let t271: T = t231 * t270;
+    let t272: T = T::literal(3.4578666e-6, 3.4578666416114866e-6);
+    let t273: T = t255 + t272;
+    let t274: T = T::literal(0.000508278, 0.0005082780421745359);
+    let t275: T = t271 + t274;
+    ([t235, t239], [t273, t263, t275])
 }
 
 /// The model-corrected map's constants as `gen` chose them (f64): `G` (no unit), `K` (states ×
@@ -1332,7 +2111,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "de2b227f354ab0919d742c38d099744f708f53ebb1e6b4d948d06b5be75cc146";
+pub const TABLES_SHA256: &str = "6bb290747eaac896df2a32578fbd4800e5c44f67e75d1a473b1ea526eeb27a12";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

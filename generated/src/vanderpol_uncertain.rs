@@ -63,7 +63,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["", ""];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 6] = [("map", 134), ("ekf_box", 241), ("corrected", 149), ("ekf_map", 249), ("ekf_restart", 241), ("mhe", 22800)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 134), ("ekf_box", 241), ("ukf_box", 431), ("corrected", 149), ("ekf_map", 249), ("ekf_restart", 241), ("mhe", 22800)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -635,7 +635,7 @@ impl BoxEkfObserver {
 }
 
 /// One sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
-#[allow(unused_variables, non_snake_case, clippy::type_complexity)]
+#[allow(unused_variables, non_snake_case, clippy::type_complexity, clippy::approx_constant)]
 fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {
     let x_x1: T = x[0];
     let x_x2: T = x[1];
@@ -852,7 +852,7 @@ fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
 }
 
 /// One sample without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`.
-#[allow(unused_variables, non_snake_case)]
+#[allow(unused_variables, non_snake_case, clippy::approx_constant)]
 fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[T; INPUTS]) -> ([T; STATES], [T; COVARIANCE]) {
     let x_x1: T = x[0];
     let x_x2: T = x[1];
@@ -1018,6 +1018,787 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t161: T = T::literal(0.02396009, 0.023960088734499153);
     let t162: T = t158 + t161;
     ([t110, t116], [t160, t155, t162])
+}
+
+/// The UKF's `Q` diagonal as `gen` chose it (f64), tuned on its own: each state's process-noise
+/// variance per sample period, in its unit squared ([`STATE_UNITS`]).
+pub const UKF_Q: [f64; STATES] = [0.0002607565169397608, 0.0330036759804668];
+
+/// This design's unscented Kalman filter, written out for its size by `gen`: the scaled unscented
+/// transform (Wan & van der Merwe; α = 1.0, β = 0.0, κ = 0.0), `2n + 1` sigma points from
+/// the Cholesky factor of `P` (each pivot floored: `P` stays positive definite), every one through
+/// [`Discrete`], projected onto the model's bounds; each measured sample one joint update of every
+/// output (`K = C S⁻¹` through the Cholesky factor of `S`, no inverse), `P` kept as its upper
+/// triangle. It starts at the centre of the state box with `P(0)` and `Q` diagonal as chosen by
+/// `gen` on the tuning runs (its own, by the EKF's search), `R` the outputs' noise variances.
+///
+/// A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u` changes
+/// nothing; a sample whose result is not finite is not taken.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ukf<T = f32> {
+    /// `x̂`: after a sample, the prediction to the next one.
+    x: [T; STATES],
+    /// The upper triangle of `P`.
+    p: [T; COVARIANCE],
+}
+
+impl<T: Scalar + Maths> Default for Ukf<T> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T: Scalar + Maths> Ukf<T> {
+    /// A fresh filter.
+    pub fn new() -> Self {
+        Ukf {
+            x: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
+            p: [T::literal(1.6372418, 1.6372418641604407), T::literal(0.0, 0.0), T::literal(633.39606, 633.3960365975795)],
+        }
+    }
+
+    /// The current estimate (after a sample, the prediction to the next one).
+    pub fn state(&self) -> [T; STATES] {
+        self.x
+    }
+
+    /// The current covariance `P`.
+    pub fn covariance(&self) -> [[T; STATES]; STATES] {
+        [[self.p[0], self.p[1]], [self.p[1], self.p[2]]]
+    }
+
+    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
+    /// type's docs). The same operations run for every accepted sample.
+    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
+        if !u.iter().all(|v| v.is_finite()) {
+            return Err(firmware::RejectedSample);
+        }
+        if y.iter().all(|v| v.is_finite()) {
+            let (estimate, x, p) = ukf_measured(&self.x, &self.p, y, u);
+            if finite(&x, &p) {
+                (self.x, self.p) = (x, p);
+                return Ok(estimate);
+            }
+        } else {
+            let (x, p) = ukf_unmeasured(&self.x, &self.p, u);
+            if finite(&x, &p) {
+                (self.x, self.p) = (x, p);
+            }
+        }
+        Err(firmware::RejectedSample)
+    }
+}
+
+/// A fresh UKF in `f32`, as the chip runs it.
+pub fn ukf() -> Ukf {
+    Ukf::new()
+}
+
+/// The UKF from the centre of the state box ([`Ukf`], the same filter and constants) with the
+/// observers' interface: `push` takes a sample, `estimate` gives the targets of the latest accepted
+/// one (each `Inside`: the filter does not saturate), `reset` starts again. It has an estimate from
+/// the first accepted sample on; a refused sample keeps the previous one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct UkfObserver {
+    filter: Ukf<f32>,
+    latest: Option<[Estimate<f32>; TARGETS]>,
+}
+
+impl Default for UkfObserver {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl UkfObserver {
+    /// A fresh observer (the filter at its start), holding no sample yet.
+    pub const fn new() -> Self {
+        UkfObserver {
+            filter: Ukf { x: [0.0, 0.0], p: [1.6372418, 0.0, 633.39606] },
+            latest: None,
+        }
+    }
+
+    /// Takes the sample `(y, u)`: [`Ukf::push`], then the targets of its estimate `x̂(k|k)`.
+    pub fn push(&mut self, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+        let x = self.filter.push(&y, &u)?;
+        let values = targets(&x, &u);
+        let mut latest = [Estimate { value: 0.0, saturation: firmware::Saturation::Inside }; TARGETS];
+        for (e, value) in latest.iter_mut().zip(values) {
+            e.value = value;
+        }
+        self.latest = Some(latest);
+        Ok(())
+    }
+
+    /// The targets of the latest accepted sample; `None` before the first.
+    pub fn estimate(&self) -> Option<[Estimate<f32>; TARGETS]> {
+        self.latest
+    }
+
+    /// Back to the start: the filter at the box centre, no estimate.
+    pub fn reset(&mut self) {
+        *self = Self::new();
+    }
+
+    /// Whether it has an estimate.
+    pub fn is_ready(&self) -> bool {
+        self.latest.is_some()
+    }
+}
+
+/// One UKF sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
+#[allow(unused_variables, non_snake_case, clippy::type_complexity, clippy::approx_constant)]
+fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {
+    let x_x1: T = x[0];
+    let x_x2: T = x[1];
+    let cov0: T = p[0];
+    let cov1: T = p[1];
+    let cov2: T = p[2];
+    let t5: T = T::literal(1.0, 1.0);
+    let t6: T = T::literal(1.1920929e-7, 1.1920928955078125e-7);
+    let t7: T = Maths::abs(cov0);
+    let t8: T = t6 * t7;
+    let t9: T = T::literal(1.1754944e-38, 1.1754943508222875e-38);
+    let t10: T = t8 + t9;
+    let t11: T = firmware::bounds::at_least(cov0, t10);
+    let t12: T = Maths::sqrt(t11);
+    let t13: T = t5 / t12;
+    let t14: T = cov1 * t13;
+    let t15: T = t14 * t14;
+    let t16: T = cov2 - t15;
+    let t17: T = Maths::abs(cov2);
+    let t18: T = t6 * t17;
+    let t19: T = t18 + t9;
+    let t20: T = firmware::bounds::at_least(t16, t19);
+    let t21: T = Maths::sqrt(t20);
+    let t22: T = T::literal(1.4142135, 1.4142135623730951);
+    let t23: T = t22 * t12;
+    let t24: T = x_x1 + t23;
+    let t25: T = t22 * t14;
+    let t26: T = x_x2 + t25;
+    let t27: T = t22 * t21;
+    let t28: T = x_x2 + t27;
+    let t29: T = T::literal(-1.4142135, -1.4142135623730951);
+    let t30: T = t29 * t12;
+    let t31: T = x_x1 + t30;
+    let t32: T = t29 * t14;
+    let t33: T = x_x2 + t32;
+    let t34: T = t29 * t21;
+    let t35: T = x_x2 + t34;
+    let t36: T = t24 + t26;
+    let t37: T = x_x1 + t28;
+    let t38: T = t31 + t33;
+    let t39: T = x_x1 + t35;
+    let t40: T = T::literal(0.25, 0.25);
+    let t41: T = t36 + t37;
+    let t42: T = t41 + t38;
+    let t43: T = t42 + t39;
+    let t44: T = t40 * t43;
+    let t45: T = t36 - t44;
+    let t46: T = t37 - t44;
+    let t47: T = t38 - t44;
+    let t48: T = t39 - t44;
+    let t49: T = t24 - x_x1;
+    let t50: T = t26 - x_x2;
+    let t51: T = t28 - x_x2;
+    let t52: T = t31 - x_x1;
+    let t53: T = t33 - x_x2;
+    let t54: T = t35 - x_x2;
+    let t55: T = t45 * t45;
+    let t56: T = t46 * t46;
+    let t57: T = t55 + t56;
+    let t58: T = t47 * t47;
+    let t59: T = t57 + t58;
+    let t60: T = t48 * t48;
+    let t61: T = t59 + t60;
+    let t62: T = t40 * t61;
+    let t63: T = T::literal(0.2, 0.2);
+    let t64: T = t62 + t63;
+    let t65: T = t49 * t45;
+    let t66: T = t52 * t47;
+    let t67: T = t65 + t66;
+    let t68: T = t40 * t67;
+    let t69: T = t50 * t45;
+    let t70: T = t51 * t46;
+    let t71: T = t69 + t70;
+    let t72: T = t53 * t47;
+    let t73: T = t71 + t72;
+    let t74: T = t54 * t48;
+    let t75: T = t73 + t74;
+    let t76: T = t40 * t75;
+    let t77: T = Maths::abs(t64);
+    let t78: T = t6 * t77;
+    let t79: T = t78 + t9;
+    let t80: T = firmware::bounds::at_least(t64, t79);
+    let t81: T = Maths::sqrt(t80);
+    let t82: T = t5 / t81;
+    let t83: T = t68 * t82;
+    let t84: T = t83 * t82;
+    let t85: T = t76 * t82;
+    let t86: T = t85 * t82;
+    let y_y: T = y[0];
+    let t88: T = y_y - t44;
+    let t89: T = t84 * t88;
+    let t90: T = x_x1 + t89;
+    let t91: T = t86 * t88;
+    let t92: T = x_x2 + t91;
+    let t93: T = t68 * t84;
+    let t94: T = cov0 - t93;
+    let t95: T = t68 * t86;
+    let t96: T = cov1 - t95;
+    let t97: T = t76 * t86;
+    let t98: T = cov2 - t97;
+    let t99: T = Maths::abs(t94);
+    let t100: T = t6 * t99;
+    let t101: T = t100 + t9;
+    let t102: T = firmware::bounds::at_least(t94, t101);
+    let t103: T = Maths::sqrt(t102);
+    let t104: T = t5 / t103;
+    let t105: T = t96 * t104;
+    let t106: T = t105 * t105;
+    let t107: T = t98 - t106;
+    let t108: T = Maths::abs(t98);
+    let t109: T = t6 * t108;
+    let t110: T = t109 + t9;
+    let t111: T = firmware::bounds::at_least(t107, t110);
+    let t112: T = Maths::sqrt(t111);
+    let t113: T = t22 * t103;
+    let t114: T = t90 + t113;
+    let t115: T = t22 * t105;
+    let t116: T = t92 + t115;
+    let t117: T = t22 * t112;
+    let t118: T = t92 + t117;
+    let t119: T = t29 * t103;
+    let t120: T = t90 + t119;
+    let t121: T = t29 * t105;
+    let t122: T = t92 + t121;
+    let t123: T = t29 * t112;
+    let t124: T = t92 + t123;
+    let t125: T = T::literal(0.1, 0.1);
+    let t126: T = T::literal(2.0, 2.0);
+    let t127: T = T::literal(6.0, 6.0);
+    let t128: T = t125 / t126;
+    let t129: T = t125 / t127;
+    let t130: T = -t116;
+    let p_a: T = T::literal(parameters::a.0, parameters::a.1);
+    let t132: T = p_a * t114;
+    let p_b: T = T::literal(parameters::b.0, parameters::b.1);
+    let t134: T = t114 * t114;
+    let t135: T = p_b - t134;
+    let t136: T = t135 * t116;
+    let t137: T = t132 + t136;
+    let t138: T = t128 * t130;
+    let t139: T = t114 + t138;
+    let t140: T = t128 * t137;
+    let t141: T = t116 + t140;
+    let t142: T = -t141;
+    let t143: T = p_a * t139;
+    let t144: T = t139 * t139;
+    let t145: T = p_b - t144;
+    let t146: T = t145 * t141;
+    let t147: T = t143 + t146;
+    let t148: T = t128 * t142;
+    let t149: T = t114 + t148;
+    let t150: T = t128 * t147;
+    let t151: T = t116 + t150;
+    let t152: T = -t151;
+    let t153: T = p_a * t149;
+    let t154: T = t149 * t149;
+    let t155: T = p_b - t154;
+    let t156: T = t155 * t151;
+    let t157: T = t153 + t156;
+    let t158: T = t125 * t152;
+    let t159: T = t114 + t158;
+    let t160: T = t125 * t157;
+    let t161: T = t116 + t160;
+    let t162: T = -t161;
+    let t163: T = p_a * t159;
+    let t164: T = t159 * t159;
+    let t165: T = p_b - t164;
+    let t166: T = t165 * t161;
+    let t167: T = t163 + t166;
+    let t168: T = t142 + t152;
+    let t169: T = t126 * t168;
+    let t170: T = t130 + t169;
+    let t171: T = t170 + t162;
+    let t172: T = t129 * t171;
+    let t173: T = t114 + t172;
+    let t174: T = t147 + t157;
+    let t175: T = t126 * t174;
+    let t176: T = t137 + t175;
+    let t177: T = t176 + t167;
+    let t178: T = t129 * t177;
+    let t179: T = t116 + t178;
+    let t180: T = -t118;
+    let t181: T = p_a * t90;
+    let t182: T = t90 * t90;
+    let t183: T = p_b - t182;
+    let t184: T = t183 * t118;
+    let t185: T = t181 + t184;
+    let t186: T = t128 * t180;
+    let t187: T = t90 + t186;
+    let t188: T = t128 * t185;
+    let t189: T = t118 + t188;
+    let t190: T = -t189;
+    let t191: T = p_a * t187;
+    let t192: T = t187 * t187;
+    let t193: T = p_b - t192;
+    let t194: T = t193 * t189;
+    let t195: T = t191 + t194;
+    let t196: T = t128 * t190;
+    let t197: T = t90 + t196;
+    let t198: T = t128 * t195;
+    let t199: T = t118 + t198;
+    let t200: T = -t199;
+    let t201: T = p_a * t197;
+    let t202: T = t197 * t197;
+    let t203: T = p_b - t202;
+    let t204: T = t203 * t199;
+    let t205: T = t201 + t204;
+    let t206: T = t125 * t200;
+    let t207: T = t90 + t206;
+    let t208: T = t125 * t205;
+    let t209: T = t118 + t208;
+    let t210: T = -t209;
+    let t211: T = p_a * t207;
+    let t212: T = t207 * t207;
+    let t213: T = p_b - t212;
+    let t214: T = t213 * t209;
+    let t215: T = t211 + t214;
+    let t216: T = t190 + t200;
+    let t217: T = t126 * t216;
+    let t218: T = t180 + t217;
+    let t219: T = t218 + t210;
+    let t220: T = t129 * t219;
+    let t221: T = t90 + t220;
+    let t222: T = t195 + t205;
+    let t223: T = t126 * t222;
+    let t224: T = t185 + t223;
+    let t225: T = t224 + t215;
+    let t226: T = t129 * t225;
+    let t227: T = t118 + t226;
+    let t228: T = -t122;
+    let t229: T = p_a * t120;
+    let t230: T = t120 * t120;
+    let t231: T = p_b - t230;
+    let t232: T = t231 * t122;
+    let t233: T = t229 + t232;
+    let t234: T = t128 * t228;
+    let t235: T = t120 + t234;
+    let t236: T = t128 * t233;
+    let t237: T = t122 + t236;
+    let t238: T = -t237;
+    let t239: T = p_a * t235;
+    let t240: T = t235 * t235;
+    let t241: T = p_b - t240;
+    let t242: T = t241 * t237;
+    let t243: T = t239 + t242;
+    let t244: T = t128 * t238;
+    let t245: T = t120 + t244;
+    let t246: T = t128 * t243;
+    let t247: T = t122 + t246;
+    let t248: T = -t247;
+    let t249: T = p_a * t245;
+    let t250: T = t245 * t245;
+    let t251: T = p_b - t250;
+    let t252: T = t251 * t247;
+    let t253: T = t249 + t252;
+    let t254: T = t125 * t248;
+    let t255: T = t120 + t254;
+    let t256: T = t125 * t253;
+    let t257: T = t122 + t256;
+    let t258: T = -t257;
+    let t259: T = p_a * t255;
+    let t260: T = t255 * t255;
+    let t261: T = p_b - t260;
+    let t262: T = t261 * t257;
+    let t263: T = t259 + t262;
+    let t264: T = t238 + t248;
+    let t265: T = t126 * t264;
+    let t266: T = t228 + t265;
+    let t267: T = t266 + t258;
+    let t268: T = t129 * t267;
+    let t269: T = t120 + t268;
+    let t270: T = t243 + t253;
+    let t271: T = t126 * t270;
+    let t272: T = t233 + t271;
+    let t273: T = t272 + t263;
+    let t274: T = t129 * t273;
+    let t275: T = t122 + t274;
+    let t276: T = -t124;
+    let t277: T = t183 * t124;
+    let t278: T = t181 + t277;
+    let t279: T = t128 * t276;
+    let t280: T = t90 + t279;
+    let t281: T = t128 * t278;
+    let t282: T = t124 + t281;
+    let t283: T = -t282;
+    let t284: T = p_a * t280;
+    let t285: T = t280 * t280;
+    let t286: T = p_b - t285;
+    let t287: T = t286 * t282;
+    let t288: T = t284 + t287;
+    let t289: T = t128 * t283;
+    let t290: T = t90 + t289;
+    let t291: T = t128 * t288;
+    let t292: T = t124 + t291;
+    let t293: T = -t292;
+    let t294: T = p_a * t290;
+    let t295: T = t290 * t290;
+    let t296: T = p_b - t295;
+    let t297: T = t296 * t292;
+    let t298: T = t294 + t297;
+    let t299: T = t125 * t293;
+    let t300: T = t90 + t299;
+    let t301: T = t125 * t298;
+    let t302: T = t124 + t301;
+    let t303: T = -t302;
+    let t304: T = p_a * t300;
+    let t305: T = t300 * t300;
+    let t306: T = p_b - t305;
+    let t307: T = t306 * t302;
+    let t308: T = t304 + t307;
+    let t309: T = t283 + t293;
+    let t310: T = t126 * t309;
+    let t311: T = t276 + t310;
+    let t312: T = t311 + t303;
+    let t313: T = t129 * t312;
+    let t314: T = t90 + t313;
+    let t315: T = t288 + t298;
+    let t316: T = t126 * t315;
+    let t317: T = t278 + t316;
+    let t318: T = t317 + t308;
+    let t319: T = t129 * t318;
+    let t320: T = t124 + t319;
+    let t321: T = t173 + t221;
+    let t322: T = t321 + t269;
+    let t323: T = t322 + t314;
+    let t324: T = t40 * t323;
+    let t325: T = t179 + t227;
+    let t326: T = t325 + t275;
+    let t327: T = t326 + t320;
+    let t328: T = t40 * t327;
+    let t329: T = t173 - t324;
+    let t330: T = t179 - t328;
+    let t331: T = t221 - t324;
+    let t332: T = t227 - t328;
+    let t333: T = t269 - t324;
+    let t334: T = t275 - t328;
+    let t335: T = t314 - t324;
+    let t336: T = t320 - t328;
+    let t337: T = t329 * t329;
+    let t338: T = t331 * t331;
+    let t339: T = t337 + t338;
+    let t340: T = t333 * t333;
+    let t341: T = t339 + t340;
+    let t342: T = t335 * t335;
+    let t343: T = t341 + t342;
+    let t344: T = t40 * t343;
+    let t345: T = t329 * t330;
+    let t346: T = t331 * t332;
+    let t347: T = t345 + t346;
+    let t348: T = t333 * t334;
+    let t349: T = t347 + t348;
+    let t350: T = t335 * t336;
+    let t351: T = t349 + t350;
+    let t352: T = t40 * t351;
+    let t353: T = t330 * t330;
+    let t354: T = t332 * t332;
+    let t355: T = t353 + t354;
+    let t356: T = t334 * t334;
+    let t357: T = t355 + t356;
+    let t358: T = t336 * t336;
+    let t359: T = t357 + t358;
+    let t360: T = t40 * t359;
+    let t361: T = T::literal(0.00026075653, 0.0002607565169397608);
+    let t362: T = t344 + t361;
+    let t363: T = T::literal(0.033003677, 0.0330036759804668);
+    let t364: T = t360 + t363;
+    ([t90, t92], [t324, t328], [t362, t352, t364])
+}
+
+/// One UKF sample without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`.
+#[allow(unused_variables, non_snake_case, clippy::approx_constant)]
+fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[T; INPUTS]) -> ([T; STATES], [T; COVARIANCE]) {
+    let x_x1: T = x[0];
+    let x_x2: T = x[1];
+    let cov0: T = p[0];
+    let cov1: T = p[1];
+    let cov2: T = p[2];
+    let t5: T = T::literal(1.0, 1.0);
+    let t6: T = T::literal(1.1920929e-7, 1.1920928955078125e-7);
+    let t7: T = Maths::abs(cov0);
+    let t8: T = t6 * t7;
+    let t9: T = T::literal(1.1754944e-38, 1.1754943508222875e-38);
+    let t10: T = t8 + t9;
+    let t11: T = firmware::bounds::at_least(cov0, t10);
+    let t12: T = Maths::sqrt(t11);
+    let t13: T = t5 / t12;
+    let t14: T = cov1 * t13;
+    let t15: T = t14 * t14;
+    let t16: T = cov2 - t15;
+    let t17: T = Maths::abs(cov2);
+    let t18: T = t6 * t17;
+    let t19: T = t18 + t9;
+    let t20: T = firmware::bounds::at_least(t16, t19);
+    let t21: T = Maths::sqrt(t20);
+    let t22: T = T::literal(1.4142135, 1.4142135623730951);
+    let t23: T = t22 * t12;
+    let t24: T = x_x1 + t23;
+    let t25: T = t22 * t14;
+    let t26: T = x_x2 + t25;
+    let t27: T = t22 * t21;
+    let t28: T = x_x2 + t27;
+    let t29: T = T::literal(-1.4142135, -1.4142135623730951);
+    let t30: T = t29 * t12;
+    let t31: T = x_x1 + t30;
+    let t32: T = t29 * t14;
+    let t33: T = x_x2 + t32;
+    let t34: T = t29 * t21;
+    let t35: T = x_x2 + t34;
+    let t36: T = T::literal(0.1, 0.1);
+    let t37: T = T::literal(2.0, 2.0);
+    let t38: T = T::literal(6.0, 6.0);
+    let t39: T = t36 / t37;
+    let t40: T = t36 / t38;
+    let t41: T = -t26;
+    let p_a: T = T::literal(parameters::a.0, parameters::a.1);
+    let t43: T = p_a * t24;
+    let p_b: T = T::literal(parameters::b.0, parameters::b.1);
+    let t45: T = t24 * t24;
+    let t46: T = p_b - t45;
+    let t47: T = t46 * t26;
+    let t48: T = t43 + t47;
+    let t49: T = t39 * t41;
+    let t50: T = t24 + t49;
+    let t51: T = t39 * t48;
+    let t52: T = t26 + t51;
+    let t53: T = -t52;
+    let t54: T = p_a * t50;
+    let t55: T = t50 * t50;
+    let t56: T = p_b - t55;
+    let t57: T = t56 * t52;
+    let t58: T = t54 + t57;
+    let t59: T = t39 * t53;
+    let t60: T = t24 + t59;
+    let t61: T = t39 * t58;
+    let t62: T = t26 + t61;
+    let t63: T = -t62;
+    let t64: T = p_a * t60;
+    let t65: T = t60 * t60;
+    let t66: T = p_b - t65;
+    let t67: T = t66 * t62;
+    let t68: T = t64 + t67;
+    let t69: T = t36 * t63;
+    let t70: T = t24 + t69;
+    let t71: T = t36 * t68;
+    let t72: T = t26 + t71;
+    let t73: T = -t72;
+    let t74: T = p_a * t70;
+    let t75: T = t70 * t70;
+    let t76: T = p_b - t75;
+    let t77: T = t76 * t72;
+    let t78: T = t74 + t77;
+    let t79: T = t53 + t63;
+    let t80: T = t37 * t79;
+    let t81: T = t41 + t80;
+    let t82: T = t81 + t73;
+    let t83: T = t40 * t82;
+    let t84: T = t24 + t83;
+    let t85: T = t58 + t68;
+    let t86: T = t37 * t85;
+    let t87: T = t48 + t86;
+    let t88: T = t87 + t78;
+    let t89: T = t40 * t88;
+    let t90: T = t26 + t89;
+    let t91: T = -t28;
+    let t92: T = p_a * x_x1;
+    let t93: T = x_x1 * x_x1;
+    let t94: T = p_b - t93;
+    let t95: T = t94 * t28;
+    let t96: T = t92 + t95;
+    let t97: T = t39 * t91;
+    let t98: T = x_x1 + t97;
+    let t99: T = t39 * t96;
+    let t100: T = t28 + t99;
+    let t101: T = -t100;
+    let t102: T = p_a * t98;
+    let t103: T = t98 * t98;
+    let t104: T = p_b - t103;
+    let t105: T = t104 * t100;
+    let t106: T = t102 + t105;
+    let t107: T = t39 * t101;
+    let t108: T = x_x1 + t107;
+    let t109: T = t39 * t106;
+    let t110: T = t28 + t109;
+    let t111: T = -t110;
+    let t112: T = p_a * t108;
+    let t113: T = t108 * t108;
+    let t114: T = p_b - t113;
+    let t115: T = t114 * t110;
+    let t116: T = t112 + t115;
+    let t117: T = t36 * t111;
+    let t118: T = x_x1 + t117;
+    let t119: T = t36 * t116;
+    let t120: T = t28 + t119;
+    let t121: T = -t120;
+    let t122: T = p_a * t118;
+    let t123: T = t118 * t118;
+    let t124: T = p_b - t123;
+    let t125: T = t124 * t120;
+    let t126: T = t122 + t125;
+    let t127: T = t101 + t111;
+    let t128: T = t37 * t127;
+    let t129: T = t91 + t128;
+    let t130: T = t129 + t121;
+    let t131: T = t40 * t130;
+    let t132: T = x_x1 + t131;
+    let t133: T = t106 + t116;
+    let t134: T = t37 * t133;
+    let t135: T = t96 + t134;
+    let t136: T = t135 + t126;
+    let t137: T = t40 * t136;
+    let t138: T = t28 + t137;
+    let t139: T = -t33;
+    let t140: T = p_a * t31;
+    let t141: T = t31 * t31;
+    let t142: T = p_b - t141;
+    let t143: T = t142 * t33;
+    let t144: T = t140 + t143;
+    let t145: T = t39 * t139;
+    let t146: T = t31 + t145;
+    let t147: T = t39 * t144;
+    let t148: T = t33 + t147;
+    let t149: T = -t148;
+    let t150: T = p_a * t146;
+    let t151: T = t146 * t146;
+    let t152: T = p_b - t151;
+    let t153: T = t152 * t148;
+    let t154: T = t150 + t153;
+    let t155: T = t39 * t149;
+    let t156: T = t31 + t155;
+    let t157: T = t39 * t154;
+    let t158: T = t33 + t157;
+    let t159: T = -t158;
+    let t160: T = p_a * t156;
+    let t161: T = t156 * t156;
+    let t162: T = p_b - t161;
+    let t163: T = t162 * t158;
+    let t164: T = t160 + t163;
+    let t165: T = t36 * t159;
+    let t166: T = t31 + t165;
+    let t167: T = t36 * t164;
+    let t168: T = t33 + t167;
+    let t169: T = -t168;
+    let t170: T = p_a * t166;
+    let t171: T = t166 * t166;
+    let t172: T = p_b - t171;
+    let t173: T = t172 * t168;
+    let t174: T = t170 + t173;
+    let t175: T = t149 + t159;
+    let t176: T = t37 * t175;
+    let t177: T = t139 + t176;
+    let t178: T = t177 + t169;
+    let t179: T = t40 * t178;
+    let t180: T = t31 + t179;
+    let t181: T = t154 + t164;
+    let t182: T = t37 * t181;
+    let t183: T = t144 + t182;
+    let t184: T = t183 + t174;
+    let t185: T = t40 * t184;
+    let t186: T = t33 + t185;
+    let t187: T = -t35;
+    let t188: T = t94 * t35;
+    let t189: T = t92 + t188;
+    let t190: T = t39 * t187;
+    let t191: T = x_x1 + t190;
+    let t192: T = t39 * t189;
+    let t193: T = t35 + t192;
+    let t194: T = -t193;
+    let t195: T = p_a * t191;
+    let t196: T = t191 * t191;
+    let t197: T = p_b - t196;
+    let t198: T = t197 * t193;
+    let t199: T = t195 + t198;
+    let t200: T = t39 * t194;
+    let t201: T = x_x1 + t200;
+    let t202: T = t39 * t199;
+    let t203: T = t35 + t202;
+    let t204: T = -t203;
+    let t205: T = p_a * t201;
+    let t206: T = t201 * t201;
+    let t207: T = p_b - t206;
+    let t208: T = t207 * t203;
+    let t209: T = t205 + t208;
+    let t210: T = t36 * t204;
+    let t211: T = x_x1 + t210;
+    let t212: T = t36 * t209;
+    let t213: T = t35 + t212;
+    let t214: T = -t213;
+    let t215: T = p_a * t211;
+    let t216: T = t211 * t211;
+    let t217: T = p_b - t216;
+    let t218: T = t217 * t213;
+    let t219: T = t215 + t218;
+    let t220: T = t194 + t204;
+    let t221: T = t37 * t220;
+    let t222: T = t187 + t221;
+    let t223: T = t222 + t214;
+    let t224: T = t40 * t223;
+    let t225: T = x_x1 + t224;
+    let t226: T = t199 + t209;
+    let t227: T = t37 * t226;
+    let t228: T = t189 + t227;
+    let t229: T = t228 + t219;
+    let t230: T = t40 * t229;
+    let t231: T = t35 + t230;
+    let t232: T = T::literal(0.25, 0.25);
+    let t233: T = t84 + t132;
+    let t234: T = t233 + t180;
+    let t235: T = t234 + t225;
+    let t236: T = t232 * t235;
+    let t237: T = t90 + t138;
+    let t238: T = t237 + t186;
+    let t239: T = t238 + t231;
+    let t240: T = t232 * t239;
+    let t241: T = t84 - t236;
+    let t242: T = t90 - t240;
+    let t243: T = t132 - t236;
+    let t244: T = t138 - t240;
+    let t245: T = t180 - t236;
+    let t246: T = t186 - t240;
+    let t247: T = t225 - t236;
+    let t248: T = t231 - t240;
+    let t249: T = t241 * t241;
+    let t250: T = t243 * t243;
+    let t251: T = t249 + t250;
+    let t252: T = t245 * t245;
+    let t253: T = t251 + t252;
+    let t254: T = t247 * t247;
+    let t255: T = t253 + t254;
+    let t256: T = t232 * t255;
+    let t257: T = t241 * t242;
+    let t258: T = t243 * t244;
+    let t259: T = t257 + t258;
+    let t260: T = t245 * t246;
+    let t261: T = t259 + t260;
+    let t262: T = t247 * t248;
+    let t263: T = t261 + t262;
+    let t264: T = t232 * t263;
+    let t265: T = t242 * t242;
+    let t266: T = t244 * t244;
+    let t267: T = t265 + t266;
+    let t268: T = t246 * t246;
+    let t269: T = t267 + t268;
+    let t270: T = t248 * t248;
+    let t271: T = t269 + t270;
+    let t272: T = t232 * t271;
+    let t273: T = T::literal(0.00026075653, 0.0002607565169397608);
+    let t274: T = t256 + t273;
+    let t275: T = T::literal(0.033003677, 0.0330036759804668);
+    let t276: T = t272 + t275;
+    ([t236, t240], [t274, t264, t276])
 }
 
 /// The model-corrected map's constants as `gen` chose them (f64): `G` (no unit), `K` (states ×
@@ -1391,19 +2172,19 @@ impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGE
 pub type MheObserver = firmware::mhe::Observer<f32, Mhe, STATES, OUTPUTS, INPUTS, HORIZON, TARGETS>;
 
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
-pub const KIND: &str = "corrected";
+pub const KIND: &str = "ekf_restart";
 
-/// This design's observer: the model-corrected map ([`CorrectedObserver`]).
-pub type Observer = CorrectedObserver;
+/// This design's observer: the EKF from the centre of the state box, restarted by the map ([`RestartedEkfObserver`]).
+pub type Observer = RestartedEkfObserver;
 
 /// A fresh [`Observer`], holding no sample yet.
 pub const fn observer() -> Observer {
-    CorrectedObserver::new()
+    RestartedEkfObserver::new()
 }
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "d2e5994c753d266322dffb1af31fa9da7334c4e20c017fb3e01ce08f8f41e25a";
+pub const TABLES_SHA256: &str = "34cebf7679fcf00ab79cb857f9edcae1ab6f7a5f0a7ef54e0b34f30cbc907fc7";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

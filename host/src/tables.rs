@@ -55,6 +55,9 @@ pub struct Tables {
     pub corrected: Option<CorrectionConstants>,
     /// The EKF's constants, when the design has one.
     pub ekf: Option<EkfConstants>,
+    /// The UKF's constants (`ukf_box`), when the design has one: tuned on their own, the EKF's form.
+    #[serde(default)]
+    pub ukf: Option<EkfConstants>,
     /// The map-started EKF's `P(N−1)` diagonal and each state's target, when it has one.
     pub started: Option<(Vec<f64>, Vec<usize>)>,
     /// The restarted EKF's check (`ekf_restart`), when it has one (with `ekf` and `started`).
@@ -116,6 +119,7 @@ impl Tables {
         let entry = crate::observers::kind::of(kind);
         entry.needs.constants.iter().copied().find(|c| match c {
             Constants::Ekf => self.ekf.is_none(),
+            Constants::Ukf => self.ukf.is_none(),
             Constants::Started => self.started.is_none(),
             Constants::Restart => self.restart.is_none(),
             Constants::Corrected => self.corrected.is_none(),
@@ -147,6 +151,7 @@ impl Tables {
                 .and_then(|c| c.corrected.as_ref().ok())
                 .map(|t| t.constants.clone()),
             ekf: comparison.and_then(|c| c.ekf.as_ref()).map(|t| t.constants.clone()),
+            ukf: comparison.and_then(|c| c.ukf.as_ref()).map(|t| t.constants.clone()),
             started: comparison
                 .and_then(|c| c.started.as_ref())
                 .map(|s| (s.p0.clone(), s.state_targets.clone())),
@@ -253,13 +258,14 @@ impl Tables {
                 return bad("corrected.substeps".to_owned(), "is 0".to_owned());
             }
         }
-        if let Some(e) = &self.ekf {
-            length("ekf.x0", e.x0.len(), nx)?;
-            length("ekf.p0", e.p0.len(), nx)?;
-            length("ekf.q", e.q.len(), nx)?;
-            length("ekf.r", e.r.len(), ny)?;
+        for (name, constants) in [("ekf", &self.ekf), ("ukf", &self.ukf)] {
+            let Some(e) = constants else { continue };
+            length(&format!("{name}.x0"), e.x0.len(), nx)?;
+            length(&format!("{name}.p0"), e.p0.len(), nx)?;
+            length(&format!("{name}.q"), e.q.len(), nx)?;
+            length(&format!("{name}.r"), e.r.len(), ny)?;
             if e.substeps == 0 {
-                return bad("ekf.substeps".to_owned(), "is 0".to_owned());
+                return bad(format!("{name}.substeps"), "is 0".to_owned());
             }
         }
         if let Some((p0, state_targets)) = &self.started {

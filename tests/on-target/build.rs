@@ -6,7 +6,7 @@ use std::path::PathBuf;
 
 /// An observer kind the runner and the probe know: its name in `ON_TARGET_KIND` / `PROBE_KIND` and
 /// the expression, in the design's module, that makes a fresh one.
-const KINDS: [(&str, &str); 7] = [
+const KINDS: [(&str, &str); 8] = [
     ("map", "map_observer()"),
     ("observer", "observer()"),
     ("corrected", "CorrectedObserver::new()"),
@@ -14,7 +14,12 @@ const KINDS: [(&str, &str); 7] = [
     ("restarted_ekf", "RestartedEkfObserver::new()"),
     ("mhe", "MheObserver::new()"),
     ("fixed", "fixed_observer()"),
+    ("ukf", "UkfObserver::new()"),
 ];
+
+/// The unscented Kalman filter's observer: a type of the design's own, not a firmware shell, so the
+/// runner drives it through closures too.
+const UKF: &str = "ukf";
 
 /// The integer observer: it takes the raw recorded sequence (`RECORDED_RAW_Y`, `RECORDED_RAW_U`,
 /// `i32`) and its type is not named here, so the runner drives it through closures.
@@ -56,7 +61,7 @@ fn main() {
     // ON_TARGET_KIND lists, comma-separated, the observers `on-target` runs one after the other, each
     // over the whole recorded sequence (kinds.rs, which `ekf` does not read): `map` (the default),
     // `observer` (the design's chosen kind), `corrected`, `started_ekf`, `restarted_ekf`, `mhe`,
-    // `fixed` (the integer observer, over the raw sequence).
+    // `fixed` (the integer observer, over the raw sequence), `ukf`.
     println!("cargo:rerun-if-env-changed=ON_TARGET_DESIGN");
     println!("cargo:rerun-if-env-changed=ON_TARGET_KIND");
     let requested = std::env::var("ON_TARGET_KIND").unwrap_or_default();
@@ -81,6 +86,8 @@ fn main() {
         .map(|&(name, fresh)| {
             if name == FIXED {
                 format!("    run(\"{name}\", Driven::new(d::{fresh}, |o, y, u| o.push(y, u).is_ok(), |o| o.estimate()), &d::RECORDED_RAW_Y, &d::RECORDED_RAW_U);\n")
+            } else if name == UKF {
+                format!("    run(\"{name}\", Driven::new(d::{fresh}, |o, y, u| o.push(y, u).is_ok(), |o| o.estimate()), &d::RECORDED_Y, &d::RECORDED_U);\n")
             } else {
                 format!("    run(\"{name}\", d::{fresh}, &d::RECORDED_Y, &d::RECORDED_U);\n")
             }

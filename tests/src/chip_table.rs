@@ -83,7 +83,7 @@ pub fn project_table(all: &Measurements) -> Result<(String, Vec<(String, Measure
                 Kind::Corrected | Kind::StartedEkf | Kind::RestartedEkf | Kind::Mhe | Kind::Fixed => {
                     (spec.map.horizon.to_string(), "—".to_owned(), "—".to_owned())
                 }
-                Kind::Ekf => ("—".to_owned(), "—".to_owned(), "—".to_owned()),
+                Kind::Ekf | Kind::Ukf => ("—".to_owned(), "—".to_owned(), "—".to_owned()),
             };
             table += &format!(
                 "| `{name}` | {observer}{chosen} | {} | {horizon} | {segments} | {min} / {median} / {max} | {}, {} | {cycles} / {cycles_max} | {time:.2} | {} | {floor} | {} | {} | {} | {} | {} |\n",
@@ -158,6 +158,7 @@ fn row_name(kind: Kind) -> &'static str {
     match kind {
         Kind::Map => "map_observer()",
         Kind::Ekf => "ekf()",
+        Kind::Ukf => "UkfObserver",
         Kind::Corrected => "CorrectedObserver",
         Kind::StartedEkf => "StartedEkfObserver",
         Kind::RestartedEkf => "RestartedEkfObserver",
@@ -173,6 +174,7 @@ fn largest_difference(name: &str, kind: Kind, observer: &on_target::ObserverMeas
     match kind {
         Kind::Map => on_target::compare_with_library(name, observer),
         Kind::Fixed => Ok(f64::NAN),
+        Kind::Ukf => on_target::compare_ukf_with_f64(name, observer),
         _ => on_target::compare_started_with_f64(name, observer),
     }
 }

@@ -36,7 +36,9 @@ pub mod standalone;
 pub mod timing;
 mod unavailable;
 
-pub use accuracy::{compare_ekf_with_f64, compare_started_with_f64, compare_with_library, ekf_largest_difference};
+pub use accuracy::{
+    compare_ekf_with_f64, compare_started_with_f64, compare_ukf_with_f64, compare_with_library, ekf_largest_difference,
+};
 pub use bit_exact::{bits_and_flags, chip_flag, differences, ekf_differences, host_ekf, host_samples, HostEkfSample};
 pub use board::Board;
 pub use c_build::{run_c_counted, BOARD_FLAGS};

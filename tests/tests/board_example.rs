@@ -191,7 +191,7 @@ fn the_board_example_prints_the_hosts_estimates_on_the_emulated_board() {
     // of every target at every sample.
     let estimated = board.iter().filter(|s| s.estimates.is_some()).count();
     let without = match design::KIND {
-        "ekf_box" | "ekf_restart" => 0,
+        "ekf_box" | "ukf_box" | "ekf_restart" => 0,
         _ => design::HORIZON - 1,
     };
     assert_eq!(board.len(), 60);

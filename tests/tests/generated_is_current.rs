@@ -164,6 +164,7 @@ fn the_readme_table_is_current(emitted: &generate::Emitted) {
     let kinds = [
         ("map", "`map_observer()`"),
         ("ekf_box", "`ekf()`"),
+        ("ukf_box", "`UkfObserver`"),
         ("corrected", "`CorrectedObserver`"),
         ("ekf_map", "`StartedEkfObserver`"),
         ("ekf_restart", "`RestartedEkfObserver`"),

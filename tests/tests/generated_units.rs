@@ -88,6 +88,7 @@ fn an_ekf_kind_over_budget_is_refused_before_the_fit_by_the_count_the_fit_record
         for (kind, instructions) in predicted.iter().copied() {
             let kind = match kind {
                 "ekf_box" => host::spec::ObserverKind::EkfBox,
+                "ukf_box" => host::spec::ObserverKind::UkfBox,
                 "ekf_map" => host::spec::ObserverKind::EkfMap,
                 "ekf_restart" => host::spec::ObserverKind::EkfRestart,
                 _ => continue,

@@ -160,6 +160,8 @@ fn every_observer_on_the_emulated_cortex_m4f() {
                 // No f64 truth: the integer observer's is the host's run of the same integer code,
                 // compared bit for bit above.
                 Ok(0.0)
+            } else if kind == Kind::Ukf {
+                on_target::compare_ukf_with_f64(name, observer)
             } else {
                 on_target::compare_started_with_f64(name, observer)
             }

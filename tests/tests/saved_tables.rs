@@ -53,6 +53,7 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         ObserverKind::Corrected,
         ObserverKind::EkfMap,
         ObserverKind::EkfBox,
+        ObserverKind::UkfBox,
         ObserverKind::EkfRestart,
         ObserverKind::Mhe,
     ] {
@@ -132,6 +133,12 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         d::BoxEkfObserver::estimate,
         d::BoxEkfObserver::new(),
     );
+    let ukf = chip(
+        &rows,
+        |o: &mut d::UkfObserver, y| o.push(y, []).is_ok(),
+        d::UkfObserver::estimate,
+        d::UkfObserver::new(),
+    );
     let restarted_ekf = chip(
         &rows,
         |o: &mut d::RestartedEkfObserver, y| o.push(y, []).is_ok(),
@@ -159,6 +166,7 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         (ObserverKind::Corrected, corrected),
         (ObserverKind::EkfMap, started_ekf),
         (ObserverKind::EkfBox, box_ekf),
+        (ObserverKind::UkfBox, ukf),
         (ObserverKind::EkfRestart, restarted_ekf),
         (ObserverKind::Mhe, mhe),
     ] {

@@ -156,8 +156,9 @@ pub struct EstimateArgs {
     #[arg(long, value_name = "FILE")]
     pub output: PathBuf,
     /// The observer: `auto` (default) is the design's `observer()`, the kind `gen` chose; `map`,
-    /// `corrected`, `ekf_map` (the EKF started by the map), `ekf_box` (from the box centre) or
-    /// `ekf_restart` (from the box centre, restarted by the map) ask for one.
+    /// `corrected`, `ekf_map` (the EKF started by the map), `ekf_box` (from the box centre),
+    /// `ukf_box` (the UKF from the box centre), `ekf_restart` (from the box centre, restarted by the
+    /// map) or `mhe` ask for one.
     #[arg(long, default_value = "auto", value_parser = kind_parser())]
     pub kind: ObserverKind,
     /// The fitted design `gen` saved (design.json in its report folder). Default: the checkout's

@@ -148,6 +148,7 @@ pub fn design_source(
         comparison.observers.iter().map(|o| (o.kind, o.instructions)).collect();
     let observers = emit::model::Observers {
         ekf: comparison.ekf.as_ref().map(|t| &t.constants),
+        ukf: comparison.ukf.as_ref().map(|t| &t.constants),
         started: comparison
             .started
             .as_ref()

@@ -37,7 +37,7 @@ pub fn check_before_fit(design: &Design, code: &ModelCode) -> Result<(), SpecErr
     let states = code.dimensions.states;
     let theta = vec![0.37f64.log10(); 2 * states];
     let constants = ekf::constants(design, &ekf::box_centre(design), &vec![1.0; states], &theta);
-    let instructions = cost(&crate::plant::kalman::filter_code(code, &constants));
+    let instructions = cost(code, &constants);
     if instructions > budget as f64 {
         return Err(over_budget(design, entry.kind.name(), instructions, budget as f64));
     }

@@ -107,6 +107,8 @@ pub struct Comparison {
     pub references: Vec<Reference>,
     /// The tuned EKF (`None` when the model is beyond the host's sizes, [`ekf::supported`]).
     pub ekf: Option<ekf::Tuned>,
+    /// The tuned UKF (`None` when the model is beyond the host's sizes).
+    pub ukf: Option<ekf::Tuned>,
     /// The tuned model-corrected map, or why the design cannot have one.
     pub corrected: Result<corrected::Tuned, String>,
     /// The EKF started by the map; `None` without an EKF or the full state.

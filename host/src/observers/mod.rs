@@ -47,6 +47,7 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         mhe: bench.mhe,
         chosen,
         ekf: bench.ekf,
+        ukf: bench.ukf,
         corrected: bench.corrected,
         chip_model_error: chip_model_error(design, result),
         ekf_from_observer_x0: bench.ekf_from_observer_x0,

@@ -90,7 +90,7 @@ struct Setup<'a> {
     tables: &'a Tables,
     code: &'a ModelCode,
     kind: ObserverKind,
-    /// The EKF's written-out programs (the EKF kinds).
+    /// The filter's written-out programs (the EKF kinds', or the UKF's for `ukf_box`).
     filter: Option<crate::plant::kalman::FilterCode>,
     /// The correction's programs (`corrected`).
     programs: Option<crate::plant::correction::CorrectionCode>,
@@ -136,11 +136,15 @@ impl<'a> Setup<'a> {
             tables,
             code,
             kind,
-            filter: tables
-                .ekf
-                .as_ref()
-                .filter(|_| reads(Constants::Ekf))
-                .map(|constants| crate::plant::kalman::filter_code(code, constants)),
+            filter: match (&tables.ekf, &tables.ukf) {
+                (Some(constants), _) if reads(Constants::Ekf) => {
+                    Some(crate::plant::kalman::filter_code(code, constants))
+                }
+                (_, Some(constants)) if reads(Constants::Ukf) => {
+                    Some(crate::plant::unscented::unscented_code(code, constants))
+                }
+                _ => None,
+            },
             programs: tables
                 .corrected
                 .as_ref()
@@ -192,6 +196,11 @@ impl<'a> Setup<'a> {
             (ObserverKind::EkfBox, Some(filter), _) => Follower::Box(ekf::BoxStep::new(
                 filter,
                 tables.ekf.as_ref().expect("checked"),
+                self.code,
+            )),
+            (ObserverKind::UkfBox, Some(filter), _) => Follower::Box(ekf::BoxStep::new(
+                filter,
+                tables.ukf.as_ref().expect("checked"),
                 self.code,
             )),
             (ObserverKind::EkfMap, Some(filter), _) => {

@@ -84,7 +84,8 @@ pub fn call(name: &str) -> f64 {
     match name {
         "abs" => 1.0,
         "signum" => 14.0,
-        "sqrt" => 79.0,
+        // The FPU's `VSQRT.F32` and the moves around it (`firmware::maths::sqrt_f32`).
+        "sqrt" => 7.0,
         "exp" => 101.0,
         _ => UNMEASURED_CALL,
     }
@@ -119,6 +120,28 @@ pub fn of_corrected(code: &CorrectionCode, map: &Cost) -> f64 {
 /// The EKF's measured sample.
 pub fn of_ekf(filter: &FilterCode) -> f64 {
     EKF_BASE + of_program(&filter.measured)
+}
+
+/// The UKF's measured sample: its program (the sigma points, both Cholesky factors, the update and
+/// the prediction of every sigma point) and the EKF's frame around it (the same `push`).
+pub fn of_ukf(filter: &FilterCode) -> f64 {
+    of_ekf(filter)
+}
+
+/// [`of_ekf`] of the EKF of `code` with `constants` (any non-zero constants give the same count):
+/// the cost before the fit of the kinds over the EKF.
+pub fn ekf_before_fit(code: &crate::plant::ModelCode, constants: &crate::plant::kalman::EkfConstants) -> f64 {
+    of_ekf(&crate::plant::kalman::filter_code(code, constants))
+}
+
+/// [`of_started`] before the fit (see [`ekf_before_fit`]).
+pub fn started_before_fit(code: &crate::plant::ModelCode, constants: &crate::plant::kalman::EkfConstants) -> f64 {
+    of_started(&crate::plant::kalman::filter_code(code, constants))
+}
+
+/// [`of_ukf`] before the fit (see [`ekf_before_fit`]).
+pub fn ukf_before_fit(code: &crate::plant::ModelCode, constants: &crate::plant::kalman::EkfConstants) -> f64 {
+    of_ukf(&crate::plant::unscented::unscented_code(code, constants))
 }
 
 /// The map-started EKF's steady sample.

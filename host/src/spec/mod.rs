@@ -70,6 +70,9 @@ pub enum ObserverKind {
     EkfMap,
     /// The EKF started at the centre of the state box (`ekf_box`, the design's `ekf()`).
     EkfBox,
+    /// The unscented Kalman filter started at the centre of the state box (`ukf_box`, the design's
+    /// `ukf()`).
+    UkfBox,
     /// The EKF from the centre of the state box, restarted from the map's first estimate when the
     /// two disagree (`ekf_restart`, `firmware::Restarted`).
     EkfRestart,
@@ -88,6 +91,7 @@ impl ObserverKind {
             ObserverKind::Corrected => "corrected",
             ObserverKind::EkfMap => "ekf_map",
             ObserverKind::EkfBox => "ekf_box",
+            ObserverKind::UkfBox => "ukf_box",
             ObserverKind::EkfRestart => "ekf_restart",
             ObserverKind::Mhe => "mhe",
         }

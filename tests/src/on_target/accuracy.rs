@@ -199,6 +199,45 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
     }
     for_each_started_observer!(mirror);
     let host = host.ok_or_else(|| format!("{name} has no {:?} observer", measured.kind))?;
+    largest_over_accepted(name, measured, &host)
+}
+
+/// The largest `|target − host|` of design `name`'s unscented Kalman filter (`UkfObserver`) measured
+/// on the chip (f32), against the same written-out filter (`Ukf<f64>`) in f64 on the host over the
+/// same recorded sequence, its accepted samples.
+pub fn compare_ukf_with_f64(name: &str, measured: &ObserverMeasurement) -> Result<f64, String> {
+    let mut host: Option<Vec<Vec<f64>>> = None;
+    #[allow(unused_macros)]
+    macro_rules! run {
+        ($design:ident) => {
+            if stringify!($design) == name {
+                use generated::$design as d;
+                let mut filter = d::Ukf::<f64>::new();
+                host = Some(
+                    d::RECORDED_Y
+                        .iter()
+                        .zip(&d::RECORDED_U)
+                        .filter(|(y, u)| y.iter().chain(u.iter()).all(|v| v.is_finite()))
+                        .map(|(y, u)| {
+                            let (y, u) = (y.map(f64::from), u.map(f64::from));
+                            match filter.push(&y, &u) {
+                                Ok(x) => d::targets(&x, &u).to_vec(),
+                                Err(_) => vec![f64::NAN; d::TARGETS],
+                            }
+                        })
+                        .collect(),
+                );
+            }
+        };
+    }
+    for_each_ukf_observer!(run);
+    let host = host.ok_or_else(|| format!("{name} has no UKF"))?;
+    largest_over_accepted(name, measured, &host)
+}
+
+/// The largest `|chip − host|` over the samples the chip accepted, `host` giving the host's targets
+/// at each of them (all NaN before the observer's first estimate).
+fn largest_over_accepted(name: &str, measured: &ObserverMeasurement, host: &[Vec<f64>]) -> Result<f64, String> {
     let chip: Vec<&TargetSample> = measured.samples.iter().filter(|s| s.accepted).collect();
     if chip.len() != host.len() {
         return Err(format!(
@@ -209,7 +248,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
         ));
     }
     let mut largest: f64 = 0.0;
-    for (k, (sample, host)) in chip.iter().zip(&host).enumerate() {
+    for (k, (sample, host)) in chip.iter().zip(host).enumerate() {
         let before_first = host.iter().all(|v| v.is_nan());
         match &sample.estimates {
             None if before_first => {}

@@ -93,6 +93,15 @@ pub fn host_samples(name: &str, kind: Kind) -> Option<Vec<TargetSample>> {
         };
     }
     for_each_started_observer!(started);
+    #[allow(unused_macros)]
+    macro_rules! ukf {
+        ($design:ident) => {
+            if kind == Kind::Ukf && stringify!($design) == name {
+                samples = Some(run!($design, generated::$design::UkfObserver::new()));
+            }
+        };
+    }
+    for_each_ukf_observer!(ukf);
     // The integer observer, over the raw sequence: a value printed as its `i32` taken as `u32` (the
     // macro is unused while no design has one).
     #[allow(unused_macros)]

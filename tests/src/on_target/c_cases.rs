@@ -121,8 +121,9 @@ macro_rules! c_case {
     }};
 }
 
-/// Every C observer of every shipped design: the map, the EKF from the box centre, the observers the
-/// map starts or checks and the moving-horizon estimate, in the order of the on-target table.
+/// Every C observer of every shipped design: the map, the EKF and the UKF from the box centre, the
+/// observers the map starts or checks and the moving-horizon estimate, in the order of the on-target
+/// table.
 pub fn shipped_cases() -> Vec<Case> {
     let mut cases = Vec::new();
     macro_rules! design {
@@ -155,6 +156,18 @@ pub fn shipped_cases() -> Vec<Case> {
         }};
     }
     for_each_started_observer!(started);
+    #[allow(unused_macros)]
+    macro_rules! ukf {
+        ($design:ident) => {{
+            cases.push(c_case!(
+                generated::$design,
+                stringify!($design),
+                Kind::Ukf.report_name(),
+                generated::$design::UkfObserver::new()
+            ));
+        }};
+    }
+    for_each_ukf_observer!(ukf);
     // The integer map over the recorded raw sequence, which ends with every table saturated both ways
     // and has its refused samples (`RECORDED_RAW_*`).
     macro_rules! fixed {

@@ -19,6 +19,8 @@ pub enum Kind {
     RestartedEkf,
     /// The EKF from the centre of the state box (`ekf()`, every design).
     Ekf,
+    /// The unscented Kalman filter from the centre of the state box (`UkfObserver`).
+    Ukf,
     /// The moving-horizon estimate with fixed Gauss–Newton steps (`MheObserver`).
     Mhe,
     /// The integer map (`fixed_observer()`, where the design has one): `i32` in and out, over the
@@ -28,12 +30,13 @@ pub enum Kind {
 
 impl Kind {
     /// Every kind, in the order the report lists them.
-    pub const ALL: [Kind; 7] = [
+    pub const ALL: [Kind; 8] = [
         Kind::Map,
         Kind::Corrected,
         Kind::StartedEkf,
         Kind::RestartedEkf,
         Kind::Ekf,
+        Kind::Ukf,
         Kind::Mhe,
         Kind::Fixed,
     ];
@@ -46,6 +49,7 @@ impl Kind {
             Kind::StartedEkf => "started_ekf",
             Kind::RestartedEkf => "restarted_ekf",
             Kind::Ekf => "ekf",
+            Kind::Ukf => "ukf",
             Kind::Mhe => "mhe",
             Kind::Fixed => "fixed",
         }
@@ -59,6 +63,7 @@ impl Kind {
             Kind::StartedEkf => "ekf_map",
             Kind::RestartedEkf => "ekf_restart",
             Kind::Ekf => "ekf_box",
+            Kind::Ukf => "ukf_box",
             Kind::Mhe => "mhe",
             Kind::Fixed => "fixed",
         }
@@ -72,6 +77,7 @@ impl Kind {
             Kind::StartedEkf => "StartedEkfObserver::new()",
             Kind::RestartedEkf => "RestartedEkfObserver::new()",
             Kind::Ekf => "ekf()",
+            Kind::Ukf => "UkfObserver::new()",
             Kind::Mhe => "MheObserver::new()",
             Kind::Fixed => "fixed_observer()",
         }
@@ -101,6 +107,7 @@ pub fn kinds(name: &str) -> Vec<Kind> {
         kinds.push(Kind::Ekf);
     }
     kinds.extend(has_fixed(name).then_some(Kind::Fixed));
+    kinds.extend(has_ukf(name).then_some(Kind::Ukf));
     kinds.sort();
     kinds
 }
@@ -116,6 +123,19 @@ pub fn has_fixed(name: &str) -> bool {
         };
     }
     for_each_fixed_observer!(fixed);
+    designs.contains(&name)
+}
+
+/// Whether design `name`'s generated file has the unscented Kalman filter (`UkfObserver`).
+#[allow(unused_macros, unused_mut)]
+pub fn has_ukf(name: &str) -> bool {
+    let mut designs: Vec<&str> = Vec::new();
+    macro_rules! ukf {
+        ($design:ident) => {
+            designs.push(stringify!($design));
+        };
+    }
+    for_each_ukf_observer!(ukf);
     designs.contains(&name)
 }
 
@@ -161,6 +181,15 @@ pub fn chosen_kind(name: &str) -> Option<Kind> {
         };
     }
     generated::for_each_design!(boxed);
+    #[allow(unused_macros)]
+    macro_rules! unscented {
+        ($design:ident) => {
+            if stringify!($design) == name && generated::$design::KIND == "ukf_box" {
+                chosen = Some(Kind::Ukf);
+            }
+        };
+    }
+    for_each_ukf_observer!(unscented);
     chosen
 }
 

@@ -170,12 +170,12 @@ fn split(counts: Vec<Count>) -> (Vec<u64>, Vec<u64>, Vec<u64>) {
 /// own, `ekf`), each with its file name's suffix: the map and the observers it starts together, and
 /// the restarted EKF alone, since it shares the filter's code with the map-started EKF and linked
 /// together the compiler would inline it differently ([`same_alone`] checks that it does not), and the
-/// moving-horizon observer alone (it shares the model's code with the others).
+/// moving-horizon observer and the UKF alone (they share the model's code with the others).
 fn programs(kinds: &[Kind]) -> Vec<(Vec<Kind>, &'static str)> {
     let started: Vec<Kind> = kinds
         .iter()
         .copied()
-        .filter(|&k| k != Kind::Ekf && k != Kind::RestartedEkf && k != Kind::Mhe)
+        .filter(|&k| k != Kind::Ekf && k != Kind::RestartedEkf && k != Kind::Mhe && k != Kind::Ukf)
         .collect();
     let mut programs = vec![(started, "")];
     if kinds.contains(&Kind::RestartedEkf) {
@@ -183,6 +183,9 @@ fn programs(kinds: &[Kind]) -> Vec<(Vec<Kind>, &'static str)> {
     }
     if kinds.contains(&Kind::Mhe) {
         programs.push((vec![Kind::Mhe], ".mhe"));
+    }
+    if kinds.contains(&Kind::Ukf) {
+        programs.push((vec![Kind::Ukf], ".ukf"));
     }
     programs
 }

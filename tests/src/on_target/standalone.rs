@@ -98,6 +98,9 @@ impl Crate {
         }
         if self.tables.ekf.is_some() {
             kinds.push(Kind::Ekf);
+            if self.tables.ukf.is_some() {
+                kinds.push(Kind::Ukf);
+            }
         }
         if self.tables.mhe.is_some() {
             kinds.push(Kind::Mhe);
@@ -261,6 +264,7 @@ fn host_rows(
         Kind::StartedEkf => ObserverKind::EkfMap,
         Kind::RestartedEkf => ObserverKind::EkfRestart,
         Kind::Ekf => ObserverKind::EkfBox,
+        Kind::Ukf => ObserverKind::UkfBox,
         Kind::Mhe => ObserverKind::Mhe,
         Kind::Fixed => return Err("a standalone crate's integer observer is not measured on the chip".to_owned()),
     };

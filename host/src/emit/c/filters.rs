@@ -1,17 +1,19 @@
 //! The model-based kinds in C: the model's programs as functions ([`super::program`]), then the
-//! EKF from the box centre (`ekf_box`, the Rust file's `BoxEkfObserver`), the EKF the map starts
+//! EKF from the box centre (`ekf_box`, the Rust file's `BoxEkfObserver`, [`super::box_filter`]), the
+//! UKF from the box centre (`ukf_box`, `UkfObserver`), the EKF the map starts
 //! (`ekf_map`, `StartedEkfObserver`), the box EKF the map checks once (`ekf_restart`,
 //! `RestartedEkfObserver`), the model-corrected map (`corrected`, [`super::corrected`]) and the
 //! moving-horizon estimate (`mhe`, [`super::mhe`]), each with the Rust observer's steps in the same
 //! order.
 
+use super::box_filter::{self, EKF, UKF};
 use super::program::{function, helpers, needs_math};
 use super::started::{self, map_states, targets_of, Follower};
 use super::{corrected, float, floats, mhe};
 use crate::emit::model::Observers;
 use crate::emit::EmitError;
 use crate::plant::correction;
-use crate::plant::kalman::{self, EkfConstants};
+use crate::plant::kalman;
 use crate::plant::{ModelCode, Program};
 use crate::spec::Design;
 
@@ -34,11 +36,19 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
     let upper = name.to_uppercase();
     let (nx, nt) = (code.dimensions.states, code.dimensions.targets);
     let filter = observers.ekf.map(|ekf| kalman::filter_code(code, ekf));
+    // Beside the EKF, as in the Rust file.
+    let unscented = observers
+        .ekf
+        .and(observers.ukf)
+        .map(|ukf| (ukf, crate::plant::unscented::unscented_code(code, ukf)));
     let correction = observers
         .corrected
         .map(|(constants, _)| correction::correction_code(code, constants));
     let mut programs: Vec<&Program> = vec![&code.targets];
     if let Some(filter) = &filter {
+        programs.extend([&filter.measured, &filter.unmeasured]);
+    }
+    if let Some((_, filter)) = &unscented {
         programs.extend([&filter.measured, &filter.unmeasured]);
     }
     if let Some(c) = &correction {
@@ -89,21 +99,8 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
         code,
     )?;
     if let (Some(ekf), Some(filter)) = (observers.ekf, &filter) {
-        *source += &function(
-            "ekf_measured",
-            "One EKF sample with its measurement: out = (x(k|k), x+, P+) from (x, P), as the Rust file's ekf_measured.",
-            &["x", "p", "y", "u"],
-            &filter.measured,
-            code,
-        )?;
-        *source += &function(
-            "ekf_unmeasured",
-            "One EKF sample without its measurement: out = (x+, P+) from (x, P), as the Rust file's ekf_unmeasured.",
-            &["x", "p", "u"],
-            &filter.unmeasured,
-            code,
-        )?;
-        *source += &ekf_common(name, ekf)?;
+        *source += &box_filter::samples(&EKF, filter, code)?;
+        *source += &box_filter::common(name, &EKF, ekf)?;
         kinds.header += &started::header(
             name,
             "ekf_box",
@@ -112,7 +109,7 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
             false,
             &format!("    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n"),
         );
-        kinds.source += &box_ekf(name);
+        kinds.source += &box_filter::box_observer(name, &EKF);
         kinds.names.push("ekf_box");
         if let Some((p0, state_targets)) = observers.started {
             kinds.source += &started_ekf(name, p0, state_targets, nt)?;
@@ -140,6 +137,21 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
             }
         }
     }
+    if let Some((ukf, filter)) = &unscented {
+        kinds.source += &box_filter::samples(&UKF, filter, code)?;
+        kinds.source += &box_filter::common(name, &UKF, ukf)?;
+        kinds.header += &started::header(
+            name,
+            "ukf_box",
+            "The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust\n \
+             * UkfObserver): an estimate from the first accepted sample; a sample with a non-finite output\n \
+             * is refused and only predicted.",
+            false,
+            &format!("    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n"),
+        );
+        kinds.source += &box_filter::box_observer(name, &UKF);
+        kinds.names.push("ukf_box");
+    }
     if let (Some((constants, state_targets)), Some(programs)) = (observers.corrected, &correction) {
         let (header, source) = corrected::corrected(name, code, constants, programs, state_targets)?;
         kinds.header += &header;
@@ -153,78 +165,6 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
         kinds.names.push("mhe");
     }
     Ok(kinds)
-}
-
-/// The EKF's start and one sample (`Ekf::push`), shared by the EKF kinds.
-fn ekf_common(name: &str, ekf: &EkfConstants) -> Result<String, EmitError> {
-    let upper = name.to_uppercase();
-    Ok(format!(
-        "/* The EKF's start: the centre of the state box and P(0)'s upper triangle. */\n\
-         static const float EKF_X0[{upper}_STATES] = {x0};\n\
-         static const float EKF_P0[{upper}_COVARIANCE] = {p0};\n\
-         \n\
-         /* The EKF's prediction alone (a lost output), taken when finite: StartedEkf::predict. */\n\
-         static void ekf_predict(float *x, float *p, const float *u) {{\n\
-         \x20   float out[{upper}_STATES + {upper}_COVARIANCE];\n\
-         \x20   ekf_unmeasured(x, p, u, out);\n\
-         \x20   if (all_finite(out, {upper}_STATES + {upper}_COVARIANCE)) {{\n\
-         \x20       memcpy(x, out, {upper}_STATES * sizeof *x);\n\
-         \x20       memcpy(p, out + {upper}_STATES, {upper}_COVARIANCE * sizeof *p);\n\
-         \x20   }}\n\
-         }}\n\
-         \n\
-         /* The EKF's sample with its measurement, taken when finite (1, the estimate x(k|k) in\n\
-         \x20* `estimate`): StartedEkf::follow. */\n\
-         static int ekf_measure(float *x, float *p, const float *y, const float *u, float *estimate) {{\n\
-         \x20   float out[2u * {upper}_STATES + {upper}_COVARIANCE];\n\
-         \x20   ekf_measured(x, p, y, u, out);\n\
-         \x20   if (!all_finite(out + {upper}_STATES, {upper}_STATES + {upper}_COVARIANCE)) {{\n\
-         \x20       return 0;\n\
-         \x20   }}\n\
-         \x20   memcpy(estimate, out, {upper}_STATES * sizeof *x);\n\
-         \x20   memcpy(x, out + {upper}_STATES, {upper}_STATES * sizeof *x);\n\
-         \x20   memcpy(p, out + 2u * {upper}_STATES, {upper}_COVARIANCE * sizeof *p);\n\
-         \x20   return 1;\n\
-         }}\n\n",
-        x0 = floats("EKF x0", &ekf.x0)?,
-        p0 = floats("EKF P0", &kalman::diagonal_upper(&ekf.p0))?,
-    ))
-}
-
-/// `ekf_box`: `Ekf::push`, then the targets of its estimate, each inside.
-fn box_ekf(name: &str) -> String {
-    let upper = name.to_uppercase();
-    format!(
-        "void {name}_ekf_box_init({name}_ekf_box *o) {{\n\
-         \x20   memcpy(o->x, EKF_X0, sizeof o->x);\n\
-         \x20   memcpy(o->p, EKF_P0, sizeof o->p);\n\
-         \x20   o->ready = 0;\n\
-         }}\n\
-         \n\
-         {name}_status {name}_ekf_box_push({name}_ekf_box *o, const float *y, const float *u) {{\n\
-         \x20   float estimate[{upper}_STATES];\n\
-         \x20   unsigned i;\n\
-         \x20   if (!inputs_finite(u)) {{\n\
-         \x20       return {upper}_REFUSED;\n\
-         \x20   }}\n\
-         \x20   if (!accepts(y, u)) {{\n\
-         \x20       ekf_predict(o->x, o->p, u);\n\
-         \x20       return {upper}_REFUSED;\n\
-         \x20   }}\n\
-         \x20   if (!ekf_measure(o->x, o->p, y, u, estimate)) {{\n\
-         \x20       return {upper}_REFUSED;\n\
-         \x20   }}\n\
-         \x20   targets(estimate, u, o->values);\n\
-         \x20   for (i = 0u; i < {upper}_TARGETS; ++i) {{\n\
-         \x20       o->flags[i] = {upper}_INSIDE;\n\
-         \x20   }}\n\
-         \x20   o->ready = 1;\n\
-         \x20   return {upper}_OK;\n\
-         }}\n\
-         \n\
-         {estimate}",
-        estimate = started::estimate(name, "ekf_box"),
-    )
 }
 
 /// `ekf_map`: the follower `StartedEkf` (start at the map's states with its `P(N−1)`, then the EKF's

@@ -12,6 +12,7 @@
 //! kind is a struct the caller allocates (`<name>_<kind>`) with `_init`, `_push` and `_estimate`, the
 //! Rust observer's `new`, `push` and `estimate`; `<name>_observer` names the design's chosen kind.
 
+mod box_filter;
 mod corrected;
 mod filters;
 mod fixed;

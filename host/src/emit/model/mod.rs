@@ -8,16 +8,17 @@
 //! spec's text is pasted into code.
 //!
 //! One submodule per piece: `rust_text` (literals, lists, a program's `let`s), `plant` (the model and
-//! the EKF), then one per model-based observer kind (`box_ekf`, `started`, `restarted`, `corrected`) and the
+//! the EKF), then one per model-based observer kind (`filter`, the frame of the EKF and of the UKF (`ukf`), `started`, `restarted`, `corrected`) and the
 //! chip's moving-horizon estimator (`mhe`).
 
-mod box_ekf;
 mod corrected;
+mod filter;
 mod mhe;
 mod plant;
 mod restarted;
 mod rust_text;
 mod started;
+mod ukf;
 
 use std::fmt::Write;
 
@@ -38,6 +39,8 @@ use started::STARTED_EKF_TEMPLATE;
 pub struct Observers<'a> {
     /// The EKF's constants (the peer, and the map-started EKF).
     pub ekf: Option<&'a EkfConstants>,
+    /// The UKF's constants (`ukf_box`), written beside the EKF.
+    pub ukf: Option<&'a EkfConstants>,
     /// The EKF started by the map: its `P(N−1)` diagonal and each state's target.
     pub started: Option<(&'a [f64], &'a [usize])>,
     /// The box-started EKF's check against the map (with `ekf` and `started`).
@@ -61,6 +64,9 @@ pub struct Observers<'a> {
 /// model-based followers of the map, and `Observer` / `observer()` of the chosen kind.
 pub fn model_source(design: &Design, code: &ModelCode, observers: &Observers<'_>) -> Result<String, EmitError> {
     let mut text = model_and_ekf(design, code, observers.ekf)?;
+    if let (Some(_), Some(constants)) = (observers.ekf, observers.ukf) {
+        text.push_str(&ukf::ukf(design, code, constants)?);
+    }
     if let Some((constants, state_targets)) = observers.corrected {
         text.push_str(&corrector(design, code, constants, state_targets)?);
     }

@@ -4,8 +4,8 @@
 
 use std::fmt::Write;
 
-use super::box_ekf::BOX_EKF_TEMPLATE;
-use super::rust_text::{body, f32_list, list, literal, rows};
+use super::filter::{filter_observer, filter_type, samples, vector, Names};
+use super::rust_text::{body, list, literal, rows};
 use crate::emit::{f32_literal, EmitError};
 use crate::plant::kalman::{self, EkfConstants};
 use crate::plant::ModelCode;
@@ -141,28 +141,14 @@ pub(super) fn model_and_ekf(
             .collect::<Result<Vec<_>, _>>()?;
         Ok(rows(&entries, n))
     };
-    let vector = |what: &str, values: &[f64]| -> Result<String, EmitError> {
-        let entries = values
-            .iter()
-            .enumerate()
-            .map(|(i, v)| literal(&format!("{what}[{i}]"), *v))
-            .collect::<Result<Vec<_>, _>>()?;
-        Ok(list(&entries))
-    };
     let filter = kalman::filter_code(code, ekf);
-    let triangle = kalman::triangle(nx);
-    let upper = kalman::diagonal_upper(&ekf.p0);
-    let full: Vec<String> = (0..nx * nx)
-        .map(|k| format!("self.p[{}]", kalman::upper(nx, k / nx, k % nx)))
-        .collect();
     write!(
         w,
         "{}",
         EKF_TEMPLATE
-            .replace("{TRIANGLE}", &triangle.to_string())
+            .replace("{FILTER}", &filter_type(&EKF, ekf, nx)?)
+            .replace("{TRIANGLE}", &kalman::triangle(nx).to_string())
             .replace("{X0}", &vector("EKF x0", &ekf.x0)?)
-            .replace("{P0}", &vector("EKF P0", &upper)?)
-            .replace("{COVARIANCE}", &rows(&full, nx))
             .replace("{H}", &literal("EKF substep", ekf.h)?)
             .replace("{P0_FULL}", &diagonal("EKF P0", &ekf.p0)?)
             .replace("{Q}", &diagonal("EKF Q", &ekf.q)?)
@@ -171,46 +157,19 @@ pub(super) fn model_and_ekf(
             .replace("{BOUNDS}", &bounds_call(&code.bounds)?)
     )
     .ok();
-    write!(
-        w,
-        "{}",
-        BOX_EKF_TEMPLATE
-            .replace("{X0_F32}", &f32_list("EKF x0", &ekf.x0)?)
-            .replace("{P0_F32}", &f32_list("EKF P0", &upper)?)
-    )
-    .ok();
-    writeln!(
-        w,
-        "\n/// One sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`."
-    )
-    .ok();
-    writeln!(w, "#[allow(unused_variables, non_snake_case, clippy::type_complexity)]").ok();
-    writeln!(
-        w,
-        "fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {{"
-    )
-    .ok();
-    w.push_str(&body(&filter.measured, code, design, "    ", |r| {
-        format!("({}, {}, {})", list(&r[..nx]), list(&r[nx..2 * nx]), list(&r[2 * nx..]))
-    })?);
-    writeln!(w, "}}\n").ok();
-    writeln!(
-        w,
-        "/// One sample without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`."
-    )
-    .ok();
-    writeln!(w, "#[allow(unused_variables, non_snake_case)]").ok();
-    writeln!(
-        w,
-        "fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[T; INPUTS]) -> ([T; STATES], [T; COVARIANCE]) {{"
-    )
-    .ok();
-    w.push_str(&body(&filter.unmeasured, code, design, "    ", |r| {
-        format!("({}, {})", list(&r[..nx]), list(&r[nx..]))
-    })?);
-    writeln!(w, "}}").ok();
+    w.push_str(&filter_observer(&EKF, ekf)?);
+    w.push_str(&samples(&EKF, &filter, code, design)?);
     Ok(text)
 }
+
+/// The EKF's names in its frame.
+const EKF: Names = Names {
+    name: "Ekf",
+    lower: "ekf",
+    observer: "BoxEkfObserver",
+    what: "The EKF from the centre of the state box",
+    sample: "One sample",
+};
 
 /// `.with_bounds(lower, upper)` for the library filter when a state is bounded (`±∞` on an open
 /// side), else nothing.
@@ -254,62 +213,7 @@ pub const EKF_Q: [f64; STATES] = {Q_F64};
 /// Each sample: every output's scalar update in Joseph form, then the prediction over one sampling
 /// period. A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u`
 /// changes nothing; a sample whose result is not finite (the model overflowed) is not taken.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Ekf<T = f32> {
-    /// `x̂`: after a sample, the prediction to the next one.
-    x: [T; STATES],
-    /// The upper triangle of `P`.
-    p: [T; COVARIANCE],
-}
-
-impl<T: Scalar + Maths> Default for Ekf<T> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-
-impl<T: Scalar + Maths> Ekf<T> {
-    /// A fresh filter.
-    pub fn new() -> Self {
-        Ekf {
-            x: {X0},
-            p: {P0},
-        }
-    }
-
-    /// The current estimate (after a sample, the prediction to the next one).
-    pub fn state(&self) -> [T; STATES] {
-        self.x
-    }
-
-    /// The current covariance `P`.
-    pub fn covariance(&self) -> [[T; STATES]; STATES] {
-        {COVARIANCE}
-    }
-
-    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
-    /// type's docs). The same operations run for every accepted sample.
-    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
-        if !u.iter().all(|v| v.is_finite()) {
-            return Err(firmware::RejectedSample);
-        }
-        if y.iter().all(|v| v.is_finite()) {
-            let (estimate, x, p) = ekf_measured(&self.x, &self.p, y, u);
-            if finite(&x, &p) {
-                (self.x, self.p) = (x, p);
-                return Ok(estimate);
-            }
-        } else {
-            let (x, p) = ekf_unmeasured(&self.x, &self.p, u);
-            if finite(&x, &p) {
-                (self.x, self.p) = (x, p);
-            }
-        }
-        Err(firmware::RejectedSample)
-    }
-}
-
-/// Whether every entry of a filter's state and covariance is finite.
+{FILTER}/// Whether every entry of a filter's state and covariance is finite.
 fn finite<T: Scalar>(x: &[T; STATES], p: &[T; COVARIANCE]) -> bool {
     x.iter().chain(p).all(|v| v.is_finite())
 }

@@ -30,6 +30,8 @@ pub struct Bench<'a> {
     pub observers: Vec<ObserverFigures>,
     /// The tuned EKF (`None` when the model is beyond the host's sizes, [`ekf::supported`]).
     pub ekf: Option<ekf::Tuned>,
+    /// The tuned UKF (`None` when the model is beyond the host's sizes).
+    pub ukf: Option<ekf::Tuned>,
     /// The tuned model-corrected map, or why the design cannot have one.
     pub corrected: Result<corrected::Tuned, String>,
     /// The EKF started by the map, and the map's mean squared error per state on the tuning runs.
@@ -99,6 +101,7 @@ impl<'a> Bench<'a> {
             map_cost: cost::of_maps(&fitted, horizon, design.tau),
             observers: Vec::new(),
             ekf: None,
+            ukf: None,
             corrected: Err("not tuned".to_owned()),
             started: None,
             restart: None,

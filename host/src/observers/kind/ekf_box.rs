@@ -24,7 +24,7 @@ pub const KIND: Kind = Kind {
         filter: true,
         constants: &[Constants::Ekf],
     },
-    cost_before_fit: Some(cost::of_ekf),
+    cost_before_fit: Some(cost::ekf_before_fit),
     tune,
 };
 

@@ -21,7 +21,7 @@ pub const KIND: Kind = Kind {
         filter: true,
         constants: &[Constants::Ekf, Constants::Started],
     },
-    cost_before_fit: Some(cost::of_started),
+    cost_before_fit: Some(cost::started_before_fit),
     tune,
 };
 

@@ -23,7 +23,7 @@ pub const KIND: Kind = Kind {
         filter: true,
         constants: &[Constants::Ekf, Constants::Started, Constants::Restart],
     },
-    cost_before_fit: Some(cost::of_restarted),
+    cost_before_fit: Some(cost::ekf_before_fit),
     tune,
 };
 

@@ -16,12 +16,14 @@ mod ekf_map;
 mod ekf_restart;
 mod map;
 mod mhe;
+mod ukf_box;
 
 pub use bench::{map_estimates, Bench};
 
 mod bench;
 
-use crate::plant::kalman::FilterCode;
+use crate::plant::kalman::EkfConstants;
+use crate::plant::ModelCode;
 use crate::spec::ObserverKind;
 
 use super::ObserverFigures;
@@ -47,7 +49,7 @@ pub struct Kind {
     /// Its predicted instructions per steady sample from the model alone, before any fit (the EKF
     /// kinds, whose tuned constants are non-zero literals whatever their values); `None` when the
     /// count needs the fit ([`crate::search::cost`]).
-    pub cost_before_fit: Option<fn(&FilterCode) -> f64>,
+    pub cost_before_fit: Option<fn(&ModelCode, &EkfConstants) -> f64>,
     /// Tunes it on the tuning runs and judges it on every set ([`Bench::judge`]), recording its
     /// constants in the bench for the kinds after it; `None` when the design cannot have it.
     pub tune: fn(&mut Bench<'_>) -> Option<ObserverFigures>,
@@ -69,6 +71,8 @@ pub struct Needs {
 pub enum Constants {
     /// The EKF's `Q`, `R`, `P0` and start (`ekf`).
     Ekf,
+    /// The UKF's, tuned on their own (`ukf`).
+    Ukf,
     /// The map-started EKF's `P(N−1)` and each state's target (`started`).
     Started,
     /// The restart's threshold and variances (`restart`).
@@ -83,7 +87,7 @@ impl Constants {
     /// Why a design's tables may lack them.
     pub fn why_missing(self) -> &'static str {
         match self {
-            Constants::Ekf => "the model is beyond the sizes the host filters",
+            Constants::Ekf | Constants::Ukf => "the model is beyond the sizes the host filters",
             Constants::Started => "it needs every state as a target and a model the host can filter",
             Constants::Restart => "its tables hold no restart threshold",
             Constants::Corrected => "it needs every state as a target and a model the host can run",
@@ -93,9 +97,10 @@ impl Constants {
 }
 
 /// Every kind, in the order they are tuned and reported.
-pub const REGISTRY: [Kind; 6] = [
+pub const REGISTRY: [Kind; 7] = [
     map::KIND,
     ekf_box::KIND,
+    ukf_box::KIND,
     corrected::KIND,
     ekf_map::KIND,
     ekf_restart::KIND,
@@ -119,12 +124,20 @@ mod tests {
     #[test]
     fn every_kind_but_auto_has_one_entry_and_the_map_comes_first() {
         // Every variant a spec may name, by its serde name; `auto` is a choice, not a kind.
-        for name in ["map", "corrected", "ekf_map", "ekf_box", "ekf_restart", "mhe"] {
+        for name in [
+            "map",
+            "corrected",
+            "ekf_map",
+            "ekf_box",
+            "ukf_box",
+            "ekf_restart",
+            "mhe",
+        ] {
             let kind: ObserverKind = toml::Value::String(name.to_owned()).try_into().unwrap();
             assert_eq!(REGISTRY.iter().filter(|k| k.kind == kind).count(), 1, "{name}");
             assert_eq!(named(name).map(|k| k.kind), Some(kind));
         }
-        assert_eq!(REGISTRY.len(), 6);
+        assert_eq!(REGISTRY.len(), 7);
         assert!(named("auto").is_none());
         assert_eq!(
             REGISTRY[0].kind,

@@ -222,6 +222,11 @@ impl<'a> Builder<'a> {
         program.results.iter().map(|&r| map[r]).collect()
     }
 
+    /// `a`, or `low` where `a` is below it or NaN ([`firmware::bounds::at_least`]: a select).
+    pub fn at_least(&mut self, a: usize, low: usize) -> usize {
+        self.push(Op::AtLeast(a, low))
+    }
+
     /// `states` projected onto `bounds` (a select per bounded side, nothing for an unbounded one).
     pub fn project(&mut self, states: &mut [usize], bounds: &[crate::spec::Bounds]) {
         for (x, b) in states.iter_mut().zip(bounds) {

@@ -1,0 +1,217 @@
+//! A Kalman filter's frame on the chip, the same for the EKF (`Ekf`, [`super::plant`]) and the UKF
+//! (`Ukf`, [`super::ukf`]): the filter type around its two written-out samples (`<lower>_measured`,
+//! `<lower>_unmeasured`: `push`, the refusals, `P` as its upper triangle), and the filter from the
+//! centre of the state box as an observer (`BoxEkfObserver`, `UkfObserver`).
+
+use std::fmt::Write;
+
+use super::rust_text::{body, f32_list, list, literal, rows};
+use crate::emit::EmitError;
+use crate::plant::kalman::{self, EkfConstants, FilterCode};
+use crate::plant::ModelCode;
+use crate::spec::Design;
+
+/// One filter's names: its type (`Ekf`), its samples' prefix (`ekf`), its observer type
+/// (`BoxEkfObserver`) and what that observer is, in a phrase ("The EKF from the centre of the state box").
+pub(super) struct Names {
+    pub(super) name: &'static str,
+    pub(super) lower: &'static str,
+    pub(super) observer: &'static str,
+    pub(super) what: &'static str,
+    /// How its samples' docs begin ("One sample").
+    pub(super) sample: &'static str,
+}
+
+/// The filter type `names.name` with its constants' start (`{X0}`, `{P0}`: `T` literals).
+pub(super) fn filter_type(names: &Names, constants: &EkfConstants, nx: usize) -> Result<String, EmitError> {
+    let upper = kalman::diagonal_upper(&constants.p0);
+    let full: Vec<String> = (0..nx * nx)
+        .map(|k| format!("self.p[{}]", kalman::upper(nx, k / nx, k % nx)))
+        .collect();
+    let label = names.name.to_uppercase();
+    Ok(FILTER_TEMPLATE
+        .replace("{NAME}", names.name)
+        .replace("{LOWER}", names.lower)
+        .replace("{X0}", &vector(&format!("{label} x0"), &constants.x0)?)
+        .replace("{P0}", &vector(&format!("{label} P0"), &upper)?)
+        .replace("{COVARIANCE}", &rows(&full, nx)))
+}
+
+/// The observer around the filter (`names.observer`), started where the filter starts.
+pub(super) fn filter_observer(names: &Names, constants: &EkfConstants) -> Result<String, EmitError> {
+    let label = names.name.to_uppercase();
+    let upper = kalman::diagonal_upper(&constants.p0);
+    Ok(OBSERVER_TEMPLATE
+        .replace("{WHAT}", names.what)
+        .replace("{NAME}", names.name)
+        .replace("{OBSERVER}", names.observer)
+        .replace("{X0_F32}", &f32_list(&format!("{label} x0"), &constants.x0)?)
+        .replace("{P0_F32}", &f32_list(&format!("{label} P0"), &upper)?))
+}
+
+/// The filter's two samples written out from its programs: `<lower>_measured` and `<lower>_unmeasured`.
+pub(super) fn samples(
+    names: &Names,
+    filter: &FilterCode,
+    code: &ModelCode,
+    design: &Design,
+) -> Result<String, EmitError> {
+    let nx = code.dimensions.states;
+    let (lower, sample) = (names.lower, names.sample);
+    let mut text = String::new();
+    let w = &mut text;
+    writeln!(
+        w,
+        "\n/// {sample} with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`."
+    )
+    .ok();
+    // A sigma point's spread √n may be a number clippy reads as a constant (√2).
+    writeln!(w, "#[allow(unused_variables, non_snake_case, clippy::type_complexity, clippy::approx_constant)]").ok();
+    writeln!(
+        w,
+        "fn {lower}_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {{"
+    )
+    .ok();
+    w.push_str(&body(&filter.measured, code, design, "    ", |r| {
+        format!("({}, {}, {})", list(&r[..nx]), list(&r[nx..2 * nx]), list(&r[2 * nx..]))
+    })?);
+    writeln!(w, "}}\n").ok();
+    writeln!(
+        w,
+        "/// {sample} without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`."
+    )
+    .ok();
+    writeln!(w, "#[allow(unused_variables, non_snake_case, clippy::approx_constant)]").ok();
+    writeln!(
+        w,
+        "fn {lower}_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[T; INPUTS]) -> ([T; STATES], [T; COVARIANCE]) {{"
+    )
+    .ok();
+    w.push_str(&body(&filter.unmeasured, code, design, "    ", |r| {
+        format!("({}, {})", list(&r[..nx]), list(&r[nx..]))
+    })?);
+    writeln!(w, "}}").ok();
+    Ok(text)
+}
+
+/// `values` as a list of `T` literals, each named `what[i]` in an error.
+pub(super) fn vector(what: &str, values: &[f64]) -> Result<String, EmitError> {
+    let entries = values
+        .iter()
+        .enumerate()
+        .map(|(i, v)| literal(&format!("{what}[{i}]"), *v))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(list(&entries))
+}
+
+const FILTER_TEMPLATE: &str = r#"#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct {NAME}<T = f32> {
+    /// `x̂`: after a sample, the prediction to the next one.
+    x: [T; STATES],
+    /// The upper triangle of `P`.
+    p: [T; COVARIANCE],
+}
+
+impl<T: Scalar + Maths> Default for {NAME}<T> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T: Scalar + Maths> {NAME}<T> {
+    /// A fresh filter.
+    pub fn new() -> Self {
+        {NAME} {
+            x: {X0},
+            p: {P0},
+        }
+    }
+
+    /// The current estimate (after a sample, the prediction to the next one).
+    pub fn state(&self) -> [T; STATES] {
+        self.x
+    }
+
+    /// The current covariance `P`.
+    pub fn covariance(&self) -> [[T; STATES]; STATES] {
+        {COVARIANCE}
+    }
+
+    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
+    /// type's docs). The same operations run for every accepted sample.
+    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
+        if !u.iter().all(|v| v.is_finite()) {
+            return Err(firmware::RejectedSample);
+        }
+        if y.iter().all(|v| v.is_finite()) {
+            let (estimate, x, p) = {LOWER}_measured(&self.x, &self.p, y, u);
+            if finite(&x, &p) {
+                (self.x, self.p) = (x, p);
+                return Ok(estimate);
+            }
+        } else {
+            let (x, p) = {LOWER}_unmeasured(&self.x, &self.p, u);
+            if finite(&x, &p) {
+                (self.x, self.p) = (x, p);
+            }
+        }
+        Err(firmware::RejectedSample)
+    }
+}
+
+"#;
+
+const OBSERVER_TEMPLATE: &str = r#"
+/// {WHAT} ([`{NAME}`], the same filter and constants) with the
+/// observers' interface: `push` takes a sample, `estimate` gives the targets of the latest accepted
+/// one (each `Inside`: the filter does not saturate), `reset` starts again. It has an estimate from
+/// the first accepted sample on; a refused sample keeps the previous one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct {OBSERVER} {
+    filter: {NAME}<f32>,
+    latest: Option<[Estimate<f32>; TARGETS]>,
+}
+
+impl Default for {OBSERVER} {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl {OBSERVER} {
+    /// A fresh observer (the filter at its start), holding no sample yet.
+    pub const fn new() -> Self {
+        {OBSERVER} {
+            filter: {NAME} { x: {X0_F32}, p: {P0_F32} },
+            latest: None,
+        }
+    }
+
+    /// Takes the sample `(y, u)`: [`{NAME}::push`], then the targets of its estimate `x̂(k|k)`.
+    pub fn push(&mut self, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+        let x = self.filter.push(&y, &u)?;
+        let values = targets(&x, &u);
+        let mut latest = [Estimate { value: 0.0, saturation: firmware::Saturation::Inside }; TARGETS];
+        for (e, value) in latest.iter_mut().zip(values) {
+            e.value = value;
+        }
+        self.latest = Some(latest);
+        Ok(())
+    }
+
+    /// The targets of the latest accepted sample; `None` before the first.
+    pub fn estimate(&self) -> Option<[Estimate<f32>; TARGETS]> {
+        self.latest
+    }
+
+    /// Back to the start: the filter at the box centre, no estimate.
+    pub fn reset(&mut self) {
+        *self = Self::new();
+    }
+
+    /// Whether it has an estimate.
+    pub fn is_ready(&self) -> bool {
+        self.latest.is_some()
+    }
+}
+"#;

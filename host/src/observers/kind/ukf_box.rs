@@ -1,0 +1,45 @@
+//! `ukf_box`: the unscented Kalman filter from the centre of the state box (the design's `ukf()`),
+//! its own `Q` and `P0` tuned as the box EKF's are, by the same search on the same random tuning runs
+//! ([`ukf::tune`]); judged from the box centre everywhere, as `ekf()` is.
+
+use super::{Bench, Constants, Kind, Needs};
+use crate::data::DataSet;
+use crate::observers::{ekf, ukf, ObserverFigures};
+use crate::plant::unscented::unscented_code;
+use crate::search::cost;
+use crate::spec::ObserverKind;
+
+/// See the module's documentation.
+pub const KIND: Kind = Kind {
+    kind: ObserverKind::UkfBox,
+    what: "the unscented Kalman filter from the centre of the state box",
+    observer_type: "UkfObserver",
+    measured_as: "`ukf()`",
+    legend: "UKF from x̂(0)",
+    colour: (188, 189, 34),
+    dots: false,
+    needs: Needs {
+        state_targets: false,
+        filter: true,
+        constants: &[Constants::Ukf],
+    },
+    cost_before_fit: Some(cost::ukf_before_fit),
+    tune,
+};
+
+/// Tunes the UKF on the random tuning runs (as the box EKF), then judges it from the box centre.
+fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
+    let (design, code, runs) = (bench.design, bench.code, &bench.result.runs);
+    let random = DataSet {
+        runs: runs.tuning.runs[..design.tuning.trajectories].to_vec(),
+        horizon: runs.tuning.horizon,
+    };
+    let tuned = ukf::tune(design, code, &random, &runs.learning, &bench.spreads)?;
+    let centre = ekf::box_centre(design);
+    let filter = unscented_code(code, &tuned.constants);
+    let figures = bench.judge("ukf_box", cost::of_ukf(&filter), &|run, _| {
+        ukf::estimate_run(code, &filter, &centre, &tuned.constants.p0, run)
+    });
+    bench.ukf = Some(tuned);
+    Some(figures)
+}
