@@ -4256,11 +4256,11 @@ static void ukf_measured(const float *x, const float *p, const float *y, const f
     const float t1333 = t1263 * t1263;
     const float t1334 = t1332 + t1333;
     const float t1335 = t124 * t1334;
-    const float t1336 = 5.4300776e-6f;
+    const float t1336 = 2.103015e-6f;
     const float t1337 = t1275 + t1336;
-    const float t1338 = 1.8565532e-6f;
+    const float t1338 = 4.006786e-6f;
     const float t1339 = t1311 + t1338;
-    const float t1340 = 8.603528e-8f;
+    const float t1340 = 7.53586e-8f;
     const float t1341 = t1335 + t1340;
     const float t1342 = select_float(!(t1233 >= t9), t9, t1233);
     const float t1343 = select_float(!(t1239 >= t9), t9, t1239);
@@ -5232,11 +5232,11 @@ static void ukf_unmeasured(const float *x, const float *p, const float *u, float
     const float t947 = t877 * t877;
     const float t948 = t946 + t947;
     const float t949 = t841 * t948;
-    const float t950 = 5.4300776e-6f;
+    const float t950 = 2.103015e-6f;
     const float t951 = t889 + t950;
-    const float t952 = 1.8565532e-6f;
+    const float t952 = 4.006786e-6f;
     const float t953 = t925 + t952;
-    const float t954 = 8.603528e-8f;
+    const float t954 = 7.53586e-8f;
     const float t955 = t949 + t954;
     const float t956 = select_float(!(t847 >= t9), t9, t847);
     const float t957 = select_float(!(t853 >= t9), t9, t853);
@@ -5257,8 +5257,8 @@ static const float UKF_X0[ECOLI_X0_2_STATES] = {
     2.0f, 2.5f, 0.15f
 };
 static const float UKF_P0[ECOLI_X0_2_COVARIANCE] = {
-    0.1993142f, 0.0f, 0.0f, 0.23218946f,
-    0.0f, 0.0037516581f
+    0.16901448f, 0.0f, 0.0f, 0.3230251f,
+    0.0f, 0.0024640344f
 };
 
 /* The UKF's prediction alone (a lost output), taken when finite. */

@@ -2551,12 +2551,12 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
 
 /// The UKF's `Q` diagonal as `gen` chose it (f64), tuned on its own: each state's process-noise
 /// variance per sample period, in its unit squared ([`STATE_UNITS`]).
-pub const UKF_Q: [f64; STATES] = [5.430077477304454e-6, 1.856553203773252e-6, 8.603527701349228e-8];
+pub const UKF_Q: [f64; STATES] = [2.1030150065034726e-6, 4.006786229309111e-6, 7.535860236313183e-8];
 
 /// This design's unscented Kalman filter, written out for its size by `gen`: the scaled unscented
-/// transform (Wan & van der Merwe; α = 1.0, β = 0.0, κ = 0.0), `2n + 1` sigma points from
-/// the Cholesky factor of `P` (each pivot floored: `P` stays positive definite), every one through
-/// [`Discrete`], projected onto the model's bounds; each measured sample one joint update of every
+/// transform (Wan & van der Merwe; α = 1.0, β = 0.0, κ = 0.0: the cubature rule, `2n`
+/// sigma points `x ± √n Lᵢ` of equal weight) from the Cholesky factor of `P` (each pivot floored: `P`
+/// stays positive definite), every one through [`Discrete`], projected onto the model's bounds; each measured sample one joint update of every
 /// output (`K = C S⁻¹` through the Cholesky factor of `S`, no inverse), `P` kept as its upper
 /// triangle. It starts at the centre of the state box with `P(0)` and `Q` diagonal as chosen by
 /// `gen` on the tuning runs (its own, by the EKF's search), `R` the outputs' noise variances.
@@ -2582,7 +2582,7 @@ impl<T: Scalar + Maths> Ukf<T> {
     pub fn new() -> Self {
         Ukf {
             x: [T::literal(2.0, 2.0), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-            p: [T::literal(0.1993142, 0.19931420322614227), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.23218946, 0.23218945724346307), T::literal(0.0, 0.0), T::literal(0.0037516581, 0.003751658155481418)],
+            p: [T::literal(0.16901448, 0.16901448154200333), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.3230251, 0.32302511917943033), T::literal(0.0, 0.0), T::literal(0.0024640344, 0.002464034368603428)],
         }
     }
 
@@ -2643,7 +2643,7 @@ impl UkfObserver {
     /// A fresh observer (the filter at its start), holding no sample yet.
     pub const fn new() -> Self {
         UkfObserver {
-            filter: Ukf { x: [2.0, 2.5, 0.15], p: [0.1993142, 0.0, 0.0, 0.23218946, 0.0, 0.0037516581] },
+            filter: Ukf { x: [2.0, 2.5, 0.15], p: [0.16901448, 0.0, 0.0, 0.3230251, 0.0, 0.0024640344] },
             latest: None,
         }
     }
@@ -4015,11 +4015,11 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t1333: T = t1263 * t1263;
     let t1334: T = t1332 + t1333;
     let t1335: T = t124 * t1334;
-    let t1336: T = T::literal(5.4300776e-6, 5.430077477304454e-6);
+    let t1336: T = T::literal(2.103015e-6, 2.1030150065034726e-6);
     let t1337: T = t1275 + t1336;
-    let t1338: T = T::literal(1.8565532e-6, 1.856553203773252e-6);
+    let t1338: T = T::literal(4.006786e-6, 4.006786229309111e-6);
     let t1339: T = t1311 + t1338;
-    let t1340: T = T::literal(8.603528e-8, 8.603527701349228e-8);
+    let t1340: T = T::literal(7.53586e-8, 7.535860236313183e-8);
     let t1341: T = t1335 + t1340;
     let t1342: T = firmware::bounds::at_least(t1233, t9);
     let t1343: T = firmware::bounds::at_least(t1239, t9);
@@ -4980,11 +4980,11 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t947: T = t877 * t877;
     let t948: T = t946 + t947;
     let t949: T = t841 * t948;
-    let t950: T = T::literal(5.4300776e-6, 5.430077477304454e-6);
+    let t950: T = T::literal(2.103015e-6, 2.1030150065034726e-6);
     let t951: T = t889 + t950;
-    let t952: T = T::literal(1.8565532e-6, 1.856553203773252e-6);
+    let t952: T = T::literal(4.006786e-6, 4.006786229309111e-6);
     let t953: T = t925 + t952;
-    let t954: T = T::literal(8.603528e-8, 8.603527701349228e-8);
+    let t954: T = T::literal(7.53586e-8, 7.535860236313183e-8);
     let t955: T = t949 + t954;
     let t956: T = firmware::bounds::at_least(t847, t9);
     let t957: T = firmware::bounds::at_least(t853, t9);
@@ -5046,7 +5046,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "12f2e50abc6ff0618a2cf30ea311a23a23bfc1e7ab31a85ff0a182cd2aadc39d";
+pub const TABLES_SHA256: &str = "840db6c37614ab380e4780c0da28b908305cd7b2ab497c7335f8395a1210866e";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

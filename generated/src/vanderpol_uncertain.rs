@@ -1025,9 +1025,9 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
 pub const UKF_Q: [f64; STATES] = [0.0002607565169397608, 0.0330036759804668];
 
 /// This design's unscented Kalman filter, written out for its size by `gen`: the scaled unscented
-/// transform (Wan & van der Merwe; α = 1.0, β = 0.0, κ = 0.0), `2n + 1` sigma points from
-/// the Cholesky factor of `P` (each pivot floored: `P` stays positive definite), every one through
-/// [`Discrete`], projected onto the model's bounds; each measured sample one joint update of every
+/// transform (Wan & van der Merwe; α = 1.0, β = 0.0, κ = 0.0: the cubature rule, `2n`
+/// sigma points `x ± √n Lᵢ` of equal weight) from the Cholesky factor of `P` (each pivot floored: `P`
+/// stays positive definite), every one through [`Discrete`], projected onto the model's bounds; each measured sample one joint update of every
 /// output (`K = C S⁻¹` through the Cholesky factor of `S`, no inverse), `P` kept as its upper
 /// triangle. It starts at the centre of the state box with `P(0)` and `Q` diagonal as chosen by
 /// `gen` on the tuning runs (its own, by the EKF's search), `R` the outputs' noise variances.

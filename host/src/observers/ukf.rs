@@ -1,6 +1,9 @@
 //! The unscented Kalman filter on the host: the written-out sample of [`crate::plant::unscented`]
-//! run in f64 (the operations the emitted code runs), with the EKF's constants (`Q`, `P(0)`
-//! diagonal, `R` the outputs' noise variances, the chip's RK4 substeps), tuned on the tuning runs
+//! run in f32, the chip's arithmetic and its bits (the operations the emitted code runs; tuned and
+//! judged so, since on E. coli, where the sigma points reach the substrate's bound and the chip's
+//! one RK4 step per sample is stiff, the f32 and f64 runs part by up to 0.8 g/L), with the EKF's
+//! constants (`Q`, `P(0)` diagonal, `R` the outputs' noise variances, the chip's RK4 substeps),
+//! tuned on the tuning runs
 //! by the EKF's search and score ([`super::ekf::tuning`]: the same grid, starts and Nelder–Mead
 //! iterations), started from the centre of the state box.
 //!
@@ -9,7 +12,7 @@
 //! result is not finite is not taken (no estimate, the state kept).
 
 use crate::data::{DataSet, Rows, Run};
-use crate::plant::kalman::{diagonal_upper, EkfConstants, FilterCode};
+use crate::plant::kalman::{EkfConstants, FilterCode};
 use crate::plant::unscented::unscented_code;
 use crate::plant::ModelCode;
 use crate::spec::Design;
@@ -17,23 +20,25 @@ use crate::spec::Design;
 use super::ekf::{self, Tuned};
 
 /// The targets estimated at every sample of `run` by the written-out UKF `filter` started at `x0`
-/// with `P(0) = diag(p0)`: NaN where a sample gave no estimate.
+/// with `P(0) = diag(p0)`, in `f32` as the chip runs it (step for step the generated `Ukf::push`,
+/// [`ekf::BoxStep`]): NaN where a sample gave no estimate.
 pub fn estimate_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], p0: &[f64], run: &Run) -> Rows {
-    let nx = code.dimensions.states;
-    let (mut x, mut p) = (x0.to_vec(), diagonal_upper(p0));
-    let mut scratch = Vec::new();
+    let start = EkfConstants {
+        x0: x0.to_vec(),
+        p0: p0.to_vec(),
+        q: Vec::new(),
+        r: Vec::new(),
+        substeps: 1,
+        h: 0.0,
+    };
+    let mut filter = ekf::BoxStep::<f32>::new(filter, &start, code);
     let mut estimates = Rows::new(code.dimensions.targets);
     for (y, u) in run.measurements.iter().zip(run.inputs.iter()) {
-        let mut estimate = None;
-        if u.iter().all(|v| v.is_finite()) {
-            let measured = y.iter().all(|v| v.is_finite()).then_some(y);
-            let (updated, next, covariance) = filter.run(&x, &p, measured, u, &mut scratch);
-            if next.iter().chain(&covariance).all(|v| v.is_finite()) {
-                (x, p, estimate) = (next, covariance, updated);
-            }
-        }
-        let state = estimate.unwrap_or_else(|| vec![f64::NAN; nx]);
-        estimates.push(&code.targets(&state, u, &mut scratch));
+        let row: Vec<f64> = match filter.step(y, u) {
+            Some(targets) => targets.into_iter().map(f64::from).collect(),
+            None => vec![f64::NAN; code.dimensions.targets],
+        };
+        estimates.push(&row);
     }
     estimates
 }

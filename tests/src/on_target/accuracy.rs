@@ -213,17 +213,19 @@ pub fn compare_ukf_with_f64(name: &str, measured: &ObserverMeasurement) -> Resul
             if stringify!($design) == name {
                 use generated::$design as d;
                 let mut filter = d::Ukf::<f64>::new();
+                // Every sample is pushed (a refused one still predicts); the accepted ones kept.
                 host = Some(
                     d::RECORDED_Y
                         .iter()
                         .zip(&d::RECORDED_U)
-                        .filter(|(y, u)| y.iter().chain(u.iter()).all(|v| v.is_finite()))
-                        .map(|(y, u)| {
+                        .filter_map(|(y, u)| {
                             let (y, u) = (y.map(f64::from), u.map(f64::from));
-                            match filter.push(&y, &u) {
+                            let pushed = filter.push(&y, &u);
+                            let finite = y.iter().chain(u.iter()).all(|v| v.is_finite());
+                            finite.then(|| match pushed {
                                 Ok(x) => d::targets(&x, &u).to_vec(),
                                 Err(_) => vec![f64::NAN; d::TARGETS],
-                            }
+                            })
                         })
                         .collect(),
                 );

@@ -66,7 +66,11 @@ pub(super) fn samples(
     )
     .ok();
     // A sigma point's spread √n may be a number clippy reads as a constant (√2).
-    writeln!(w, "#[allow(unused_variables, non_snake_case, clippy::type_complexity, clippy::approx_constant)]").ok();
+    writeln!(
+        w,
+        "#[allow(unused_variables, non_snake_case, clippy::type_complexity, clippy::approx_constant)]"
+    )
+    .ok();
     writeln!(
         w,
         "fn {lower}_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {{"

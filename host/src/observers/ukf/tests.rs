@@ -8,6 +8,7 @@ use super::*;
 use crate::data::Runs;
 use crate::observers::ekf::box_centre;
 use crate::observers::score::errors;
+use crate::plant::kalman::diagonal_upper;
 
 fn load(name: &str) -> (Design, ModelCode) {
     let design = crate::spec::load(&Path::new("specs").join(name)).unwrap();
