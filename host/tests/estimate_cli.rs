@@ -428,14 +428,23 @@ fn streaming_estimates_equal_the_in_memory_ones() {
 
 #[test]
 fn the_chosen_observer_on_the_recorded_scenario_is_the_reports() {
-    // `estimate` (default `--kind auto`: the kind `gen` chose, Example 1's model-corrected map) over the
-    // scenario `simulate` recorded gives, to the last bit, the estimates the report and the figure show
-    // for that observer.
+    // `estimate` (default `--kind auto`: the kind `gen` chose, Example 1's UKF) over the scenario
+    // `simulate` recorded gives, to the last bit, the estimates the report and the figure show for that
+    // observer.
     let dir = scratch("chosen");
     let (run, estimates) = (dir.join("run.csv"), dir.join("estimates.csv"));
     assert!(host(&["simulate", "--design", "vanderpol", "--output", s(&run)])
         .status
         .success());
+    let design = host::spec::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml")).unwrap();
+    let result = host::generate::simulate_and_fit(&design, &indicatif::ProgressBar::hidden()).unwrap();
+    let code = host::plant::ModelCode::new(&design).unwrap();
+    let comparison = host::observers::compare(&design, &result, &code).unwrap();
+    // In the arithmetic the report judges the chosen kind in (the UKF's: f32, the chip's).
+    let precision = match host::observers::kind::of(comparison.chosen.0).judged_in {
+        host::recording::Precision::F32 => "f32",
+        host::recording::Precision::F64 => "f64",
+    };
     let out = host(&[
         "estimate",
         "--design",
@@ -444,14 +453,12 @@ fn the_chosen_observer_on_the_recorded_scenario_is_the_reports() {
         s(&run),
         "--output",
         s(&estimates),
+        "--precision",
+        precision,
     ]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let table = rows(&std::fs::read_to_string(&estimates).unwrap());
 
-    let design = host::spec::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml")).unwrap();
-    let result = host::generate::simulate_and_fit(&design, &indicatif::ProgressBar::hidden()).unwrap();
-    let code = host::plant::ModelCode::new(&design).unwrap();
-    let comparison = host::observers::compare(&design, &result, &code).unwrap();
     assert_ne!(
         comparison.chosen.0,
         host::spec::ObserverKind::Map,

@@ -33,15 +33,24 @@ pub fn ukf_against_ekf(report: &Report<'_>) -> String {
 /// worth it when both figures are lower by more than `auto`'s margin ([`CHEAPER_WITHIN`]).
 fn verdict(pooled: f64, tail: f64, cost: f64) -> String {
     let (better, worse) = (1.0 - CHEAPER_WITHIN, 1.0 + CHEAPER_WITHIN);
-    if pooled < better && tail < better {
-        format!("worth its cost where {cost:.1}× the EKF's instructions fit: lower error in the pool and in the tail")
-    } else if pooled > worse && tail > worse {
-        "not worth it: the EKF is better in the pool and in the tail, for fewer instructions".to_owned()
-    } else {
-        format!(
-            "not worth it: within {:.0} % of the EKF in the pool or in the tail, for {cost:.1}× its instructions",
+    let word = |ratio: f64| {
+        if ratio < better {
+            "better"
+        } else if ratio > worse {
+            "worse"
+        } else {
+            "as good"
+        }
+    };
+    match (word(pooled), word(tail)) {
+        ("better", "better") => {
+            format!("worth its cost where {cost:.1}× the EKF's instructions fit: better in the pool and in the tail")
+        }
+        ("worse", "worse") => "not worth it: the EKF is better in the pool and in the tail, for fewer instructions".to_owned(),
+        (pool, tail) => format!(
+            "not clearly worth {cost:.1}× the EKF's instructions: {pool} in the pool, {tail} in the tail (within {:.0} % is as good)",
             100.0 * CHEAPER_WITHIN
-        )
+        ),
     }
 }
 
@@ -68,9 +77,13 @@ mod tests {
     #[test]
     fn worth_it_only_when_better_in_the_pool_and_the_tail_beyond_autos_margin() {
         assert!(verdict(0.83, 0.75, 2.1).starts_with("worth its cost where 2.1×"));
-        // Better in the pool, not in the tail; or within the 2 % margin: not worth it.
-        assert!(verdict(0.83, 1.01, 2.1).starts_with("not worth it: within 2 %"));
-        assert!(verdict(0.985, 0.9, 2.1).starts_with("not worth it: within 2 %"));
+        // Better in the pool, not in the tail; or within the 2 % margin: not clearly.
+        assert_eq!(
+            verdict(0.83, 1.01, 2.1),
+            "not clearly worth 2.1× the EKF's instructions: better in the pool, as good in the tail (within 2 % is as good)"
+        );
+        assert!(verdict(0.985, 0.9, 2.1).contains("as good in the pool, better in the tail"));
+        assert!(verdict(1.03, 0.7, 3.0).contains("worse in the pool, better in the tail"));
         assert!(verdict(1.1, 1.05, 2.1).starts_with("not worth it: the EKF is better"));
     }
 }

@@ -21,6 +21,7 @@ pub const KIND: Kind = Kind {
         constants: &[Constants::Corrected],
     },
     cost_before_fit: None,
+    judged_in: crate::recording::Precision::F64,
     tune,
 };
 

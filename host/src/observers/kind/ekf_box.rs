@@ -25,6 +25,7 @@ pub const KIND: Kind = Kind {
         constants: &[Constants::Ekf],
     },
     cost_before_fit: Some(cost::ekf_before_fit),
+    judged_in: crate::recording::Precision::F64,
     tune,
 };
 

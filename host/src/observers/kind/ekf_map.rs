@@ -22,6 +22,7 @@ pub const KIND: Kind = Kind {
         constants: &[Constants::Ekf, Constants::Started],
     },
     cost_before_fit: Some(cost::started_before_fit),
+    judged_in: crate::recording::Precision::F64,
     tune,
 };
 

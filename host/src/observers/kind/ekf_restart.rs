@@ -24,6 +24,7 @@ pub const KIND: Kind = Kind {
         constants: &[Constants::Ekf, Constants::Started, Constants::Restart],
     },
     cost_before_fit: Some(cost::ekf_before_fit),
+    judged_in: crate::recording::Precision::F64,
     tune,
 };
 

@@ -19,6 +19,7 @@ pub const KIND: Kind = Kind {
         constants: &[],
     },
     cost_before_fit: None,
+    judged_in: crate::recording::Precision::F64,
     tune,
 };
 

@@ -27,6 +27,7 @@ pub const KIND: Kind = Kind {
         constants: &[Constants::Mhe],
     },
     cost_before_fit: None,
+    judged_in: crate::recording::Precision::F32,
     tune,
 };
 

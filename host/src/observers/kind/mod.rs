@@ -24,6 +24,7 @@ mod bench;
 
 use crate::plant::kalman::EkfConstants;
 use crate::plant::ModelCode;
+use crate::recording::Precision;
 use crate::spec::ObserverKind;
 
 use super::ObserverFigures;
@@ -50,6 +51,10 @@ pub struct Kind {
     /// kinds, whose tuned constants are non-zero literals whatever their values); `None` when the
     /// count needs the fit ([`crate::search::cost`]).
     pub cost_before_fit: Option<fn(&ModelCode, &EkfConstants) -> f64>,
+    /// The arithmetic its report figures are in: `F32`, the chip's, for the kinds whose f32 and f64
+    /// runs part on a shipped design (`ukf_box`, `mhe`); `estimate --precision` in it gives the
+    /// report's estimates to the bit.
+    pub judged_in: Precision,
     /// Tunes it on the tuning runs and judges it on every set ([`Bench::judge`]), recording its
     /// constants in the bench for the kinds after it; `None` when the design cannot have it.
     pub tune: fn(&mut Bench<'_>) -> Option<ObserverFigures>,

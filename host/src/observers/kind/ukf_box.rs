@@ -24,6 +24,7 @@ pub const KIND: Kind = Kind {
         constants: &[Constants::Ukf],
     },
     cost_before_fit: Some(cost::ukf_before_fit),
+    judged_in: crate::recording::Precision::F32,
     tune,
 };
 
