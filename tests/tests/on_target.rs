@@ -58,13 +58,13 @@ fn every_observer_on_the_emulated_cortex_m4f() {
             let what = format!("{name} {}", kind.api());
             let host = on_target::host_samples(name, kind).unwrap_or_else(|| panic!("{what}: no host run"));
             // The sequence exercises what must be compared: refused samples, and samples before
-            // the first estimate (the restarted EKF estimates from the first accepted sample, and
-            // checks the map at its N-th).
+            // the first estimate (the restarted EKF and the UKF estimate from the first accepted
+            // sample; the restarted EKF checks the map at its N-th).
             assert!(
                 host.iter().any(|s| !s.accepted),
                 "{what}: no refused sample in the sequence"
             );
-            if kind == Kind::RestartedEkf {
+            if matches!(kind, Kind::RestartedEkf | Kind::Ukf) {
                 assert!(
                     host.iter().find(|s| s.accepted).is_some_and(|s| s.estimates.is_some()),
                     "{what}: no estimate at the first accepted sample"
