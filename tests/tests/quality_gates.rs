@@ -70,7 +70,7 @@ fn example_1_passes_every_gate_and_each_gate_bites() {
 /// budget no kind fits in, is an error naming the field.
 #[test]
 fn the_observer_kind_is_chosen_within_the_instruction_budget() {
-    use host::spec::ObserverKind::{Auto, Corrected, EkfMap, EkfRestart, Map, Mhe};
+    use host::spec::ObserverKind::{Auto, Corrected, EkfMap, EkfRestart, Map, Mhe, UkfBox};
     let (mut design, result, comparison) = example_1();
     let spreads: Vec<f64> = result
         .targets
@@ -85,21 +85,24 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
             .unwrap()
             .instructions
     };
-    // Map 126, corrected 149, map-started EKF 249, restarted EKF 241 (checked against the chip in
-    // `on_target`).
+    // Map 126, corrected 149, map-started EKF 249, restarted EKF 241, UKF 431 (checked against the
+    // chip in `on_target`).
     assert_eq!(
         [
             predicted("map"),
             predicted("corrected"),
             predicted("ekf_map"),
-            predicted("ekf_restart")
+            predicted("ekf_restart"),
+            predicted("ukf_box").round()
         ],
-        [126.0, 149.0, 249.0, 241.0]
+        [126.0, 149.0, 249.0, 241.0, 431.0]
     );
     let choose = |design: &host::spec::Design| host::observers::choose(design, &comparison.observers, &spreads);
     design.observer = Auto;
     for (budget, kind) in [
-        (None, EkfRestart),
+        (None, UkfBox),
+        (Some(440), UkfBox),
+        (Some(430), EkfRestart),
         (Some(300), EkfRestart),
         (Some(240), Corrected),
         (Some(148), Map),
@@ -123,12 +126,12 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
     let choose_better = |design: &host::spec::Design| host::observers::choose(design, &better, &spreads);
     design.budget.instructions = None;
     let (kind, why) = choose_better(&design).unwrap();
-    assert_eq!(kind, EkfRestart);
+    assert_eq!(kind, UkfBox);
     assert!(why.contains("not offered without `budget.instructions`"), "{why}");
     design.budget.instructions = Some(40_000);
     assert_eq!(choose_better(&design).unwrap().0, Mhe);
     design.budget.instructions = Some(30_000);
-    assert_eq!(choose_better(&design).unwrap().0, EkfRestart);
+    assert_eq!(choose_better(&design).unwrap().0, UkfBox);
     design.observer = Mhe;
     design.budget.instructions = None;
     assert_eq!(choose(&design).unwrap().0, Mhe, "the spec may name it without a budget");

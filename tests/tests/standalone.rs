@@ -380,6 +380,7 @@ fn measured_on_the_emulated_board(spec: &Path, out: &Path) {
         [
             "| `map_observer()`",
             "| `ekf()`",
+            "| `UkfObserver`",
             "| `CorrectedObserver`",
             "| `StartedEkfObserver`",
             "| `RestartedEkfObserver`",

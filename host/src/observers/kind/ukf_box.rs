@@ -14,7 +14,7 @@ pub const KIND: Kind = Kind {
     kind: ObserverKind::UkfBox,
     what: "the unscented Kalman filter from the centre of the state box",
     observer_type: "UkfObserver",
-    measured_as: "`ukf()`",
+    measured_as: "`UkfObserver`",
     legend: "UKF from x̂(0)",
     colour: (188, 189, 34),
     dots: false,
