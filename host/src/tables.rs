@@ -261,8 +261,11 @@ impl Tables {
         for (name, constants) in [("ekf", &self.ekf), ("ukf", &self.ukf)] {
             let Some(e) = constants else { continue };
             length(&format!("{name}.x0"), e.x0.len(), nx)?;
-            length(&format!("{name}.p0"), e.p0.len(), nx)?;
-            length(&format!("{name}.q"), e.q.len(), nx)?;
+            for (field, covariance) in [("p0", &e.p0), ("q", &e.q)] {
+                if let Err(problem) = covariance.check(nx) {
+                    return bad(format!("{name}.{field}"), problem.to_string());
+                }
+            }
             length(&format!("{name}.r"), e.r.len(), ny)?;
             if e.substeps == 0 {
                 return bad(format!("{name}.substeps"), "is 0".to_owned());

@@ -344,6 +344,19 @@ const CASES: &[Case] = &[
     case("scenario_shorter_than_horizon", Vdp, &[Swap("samples = 101", "samples = 9")], Exact("scenario.samples"), "≥ `map.horizon`"),
     case("scenario_shorter_than_horizon_ecoli", E05, &[Swap("samples = 40\nseed = 13", "samples = 2\nseed = 13")], Exact("scenario.samples"), "≥ `map.horizon`"),
 
+    // ---- filters.rs: `[observer.ekf]`, `[observer.ukf]` (the constants a spec fixes).
+    case("filter_x0_of_no_state", Vdp, &[Append("\n[observer.ekf]\nx0 = { x1 = 1.0, x2 = 0.7, x3 = 0.0 }\n")], Exact("observer.ekf.x0.x3"), "one initial value per state (x1, x2)"),
+    case("filter_x0_missing", Vdp, &[Append("\n[observer.ukf]\nx0 = { x1 = 1.0 }\n")], Exact("observer.ukf.x0.x2"), "`x2 = …` to `observer.ukf.x0`"),
+    case("filter_q_diagonal_missing", Vdp, &[Append("\n[observer.ekf]\nq = { x1 = 1e-3 }\n")], Exact("observer.ekf.q.x2"), "`x2 = …` to `observer.ekf.q`"),
+    case("filter_q_diagonal_of_no_state", Vdp, &[Append("\n[observer.ekf]\nq = { x1 = 1e-3, x2 = 1e-3, y = 1.0 }\n")], Exact("observer.ekf.q.y"), "one variance per state"),
+    case("filter_q_diagonal_zero", Vdp, &[Append("\n[observer.ekf]\nq = { x1 = 1e-3, x2 = 0.0 }\n")], Exact("observer.ekf.q"), "symmetric positive definite"),
+    case("filter_p0_not_square", Vdp, &[Append("\n[observer.ekf]\np0 = [[1.0, 0.0], [0.0]]\n")], Exact("observer.ekf.p0"), "rows in the states' order (x1, x2)"),
+    case("filter_p0_not_symmetric", Vdp, &[Append("\n[observer.ukf]\np0 = [[1.0, 0.5], [0.4, 1.0]]\n")], Exact("observer.ukf.p0"), "symmetric positive definite"),
+    case("filter_p0_indefinite", Vdp, &[Append("\n[observer.ekf]\np0 = [[1.0, 2.0], [2.0, 1.0]]\n")], Exact("observer.ekf.p0"), "symmetric positive definite"),
+    case("filter_q_not_finite", Vdp, &[Append("\n[observer.ekf]\nq = [[1.0, nan], [nan, 1.0]]\n")], Exact("observer.ekf.q"), "symmetric positive definite"),
+    case("filter_q_neither_table_nor_rows", Vdp, &[Append("\n[observer.ekf]\nq = 0.1\n")], Exact("observer.ekf.q"), "correct the TOML"),
+    case("filter_unknown_constant", Vdp, &[Append("\n[observer.ekf]\nr = { y = 0.2 }\n")], Exact("observer.ekf.r"), "correct the TOML"),
+
     // ---- validate_chip.rs: `[chip]` and its raw scalings.
     case("chip_raw_of_no_signal", Vdp, &[Swap("raw.y = {", "raw.z = {")], Exact("chip.raw.z"), "outputs or inputs (y)"),
     case("chip_raw_with_float_arithmetic", Vdp, &[Swap("arithmetic = \"fixed\"", "arithmetic = \"float\"")], Exact("chip.raw.y"), "arithmetic = \"fixed\""),
@@ -598,4 +611,46 @@ fn map_choices_become_the_search_candidates() {
         [10, 8, 6, 5, 4, 3]
     );
     assert_eq!(fixed.map.taps, None);
+}
+
+#[test]
+fn a_filters_fixed_constants_are_read_in_state_order_and_a_start_outside_the_box_is_warned() {
+    use host::plant::Covariance;
+    let text = format!(
+        "{VANDERPOL}\n[observer.ekf]\nx0 = {{ x2 = 0.7, x1 = 3.0 }}\nq = {{ x2 = 2e-3, x1 = 1e-3 }}\np0 = [[1.0, 0.3], [0.3, 4.0]]\n"
+    );
+    let design = spec::parse(Path::new("fixed.toml"), &text).unwrap();
+    let ekf = &design.filters.ekf;
+    assert_eq!(ekf.x0, Some(vec![3.0, 0.7]));
+    assert_eq!(ekf.q, Some(Covariance::Diagonal(vec![1e-3, 2e-3])));
+    assert_eq!(ekf.p0, Some(Covariance::Full(vec![vec![1.0, 0.3], vec![0.3, 4.0]])));
+    assert_eq!(ekf.fixed(), ["x0", "q", "p0"]);
+    assert!(!design.filters.ukf.any(), "the UKF's constants stay tuned");
+    // x1 = 3 is outside the learning box [−2, 2]; x2 = 0.7 inside [−5, 5]; the scenario's
+    // `observer_x0` (1, 0.7) inside: one warning.
+    let gates = host::report::gates::starts_outside_box(&design);
+    assert_eq!(gates.len(), 1, "{gates:?}");
+    let message = gates[0].to_string();
+    assert!(
+        message.contains("`observer.ekf.x0.x1` = 3") && message.contains("[-2, 2]"),
+        "{message}"
+    );
+    // The same start inside the box: no warning.
+    let inside = text.replace("x1 = 3.0 }", "x1 = 2.0 }");
+    let design = spec::parse(Path::new("fixed.toml"), &inside).unwrap();
+    assert!(host::report::gates::starts_outside_box(&design).is_empty());
+    // The scenario's `observer_x0` is checked too.
+    let scenario = VANDERPOL.replacen(
+        "observer_x0 = { x1 = 1.0, x2 = 0.7 }",
+        "observer_x0 = { x1 = 1.0, x2 = -7.0 }",
+        1,
+    );
+    let design = spec::parse(Path::new("scenario.toml"), &scenario).unwrap();
+    let gates = host::report::gates::starts_outside_box(&design);
+    assert_eq!(gates.len(), 1, "{gates:?}");
+    assert!(
+        gates[0].to_string().contains("`scenario.observer_x0.x2` = -7"),
+        "{}",
+        gates[0]
+    );
 }

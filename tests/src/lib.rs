@@ -155,8 +155,9 @@ macro_rules! emitted_constants {
             },
             host::plant::kalman::EkfConstants {
                 x0: vec![0.0; $d::STATES],
-                p0: vec![0.0; $d::STATES],
-                q: $d::EKF_Q.to_vec(),
+                p0: host::plant::Covariance::Diagonal(vec![0.0; $d::STATES]),
+                // The shipped designs' `Q` is tuned: a diagonal.
+                q: host::plant::Covariance::Diagonal($d::EKF_Q.to_vec()),
                 r: design.model.outputs.iter().map(|o| o.noise_variance).collect(),
                 substeps: design.chip_substeps,
                 h,

@@ -212,16 +212,19 @@ fn the_readme_table_is_current(emitted: &generate::Emitted) {
     }
 }
 
-/// The fixture whose tables have searched knots: `tests/fixtures/vanderpol_beta7.rs`, compiled into the
-/// `generated_vs_library` and `observer_contract` tests, is what `gen` produces for its spec now.
-/// `UPDATE_FIXTURES=1 cargo test -p integration-tests --test generated_is_current` rewrites it.
+/// The fixture whose tables have searched knots and whose filters have constants its spec fixes:
+/// `tests/fixtures/vanderpol_beta7.rs`, compiled into the `generated_vs_library`, `generated_model`,
+/// `c_source` and `observer_contract` tests, and its C (`.h`, `.c`, compiled by `c_source`), are what
+/// `gen` produces for its spec now.
+/// `UPDATE_FIXTURES=1 cargo test -p integration-tests --test generated_is_current` rewrites them.
 #[test]
 fn the_searched_knot_fixture_is_current() {
     let path = workspace_root().join(SEARCHED_FIXTURE_SPEC);
     let design = host::spec::load(&path).unwrap();
-    let (_, text, _, _) = generate::design_source(
+    let result = build(&design);
+    let (comparison, text, c, _) = generate::design_source(
         &design,
-        &build(&design),
+        &result,
         &host::emit::Placement::Generated {
             spec: SEARCHED_FIXTURE_SPEC,
         },
@@ -233,14 +236,66 @@ fn the_searched_knot_fixture_is_current() {
         text.contains("Knots::Searched"),
         "the fixture no longer exercises searched knots"
     );
-    let file = path.with_extension("rs");
-    if std::env::var_os("UPDATE_FIXTURES").is_some() {
-        std::fs::write(&file, &text).unwrap();
+    the_fixed_constants_are_the_specs_beside_the_tuned_ones(&design, &result, &comparison);
+    for (extension, text) in [("rs", &text), ("h", &c.header), ("c", &c.source)] {
+        let file = path.with_extension(extension);
+        if std::env::var_os("UPDATE_FIXTURES").is_some() {
+            std::fs::write(&file, text).unwrap();
+        }
+        let committed = std::fs::read_to_string(&file).unwrap_or_default();
+        assert!(
+            committed == *text,
+            "{} is out of date: rerun with UPDATE_FIXTURES=1 and commit it",
+            file.display()
+        );
     }
-    let committed = std::fs::read_to_string(&file).unwrap_or_default();
-    assert!(
-        committed == text,
-        "{} is out of date: rerun with UPDATE_FIXTURES=1 and commit it",
-        file.display()
+}
+
+/// The fixture's spec fixes the EKF's `x0`, `q` and `p0` (full) and the UKF's `p0`: those are the
+/// filters' constants, the rest tuned around them; the same filters with every constant tuned stand
+/// beside them, and the report's section names which are whose.
+fn the_fixed_constants_are_the_specs_beside_the_tuned_ones(
+    design: &host::spec::Design,
+    result: &host::fit::DesignResult,
+    comparison: &host::observers::Comparison,
+) {
+    use host::plant::Covariance;
+    let ekf = comparison.ekf.as_ref().unwrap();
+    // Written by hand from tests/fixtures/vanderpol_beta7.toml.
+    assert_eq!(ekf.constants.x0, [1.0, 0.7]);
+    assert_eq!(
+        ekf.constants.q,
+        Covariance::Full(vec![vec![3.0e-5, 1.0e-5], vec![1.0e-5, 2.0e-3]])
     );
+    assert_eq!(
+        ekf.constants.p0,
+        Covariance::Full(vec![vec![0.2, 0.05], vec![0.05, 0.5]])
+    );
+    assert_eq!(ekf.fixed, ["x0", "q", "p0"]);
+    let ukf = comparison.ukf.as_ref().unwrap();
+    assert_eq!(ukf.constants.p0, Covariance::Diagonal(vec![0.2, 0.5]));
+    assert_eq!(ukf.fixed, ["p0"]);
+    assert!(
+        matches!(ukf.constants.q, Covariance::Diagonal(_)),
+        "the UKF's Q is tuned"
+    );
+    let kinds: Vec<&str> = comparison.beside.iter().map(|b| b.figures.kind).collect();
+    assert_eq!(kinds, ["ekf_box", "ukf_box"]);
+    for beside in &comparison.beside {
+        assert!(beside.tuned.fixed.is_empty());
+        assert!(matches!(beside.tuned.constants.p0, Covariance::Diagonal(_)));
+        // The box centre, where a filter whose start is not fixed starts.
+        assert_eq!(beside.tuned.constants.x0, [0.0, 0.0]);
+    }
+    let report = host::report::report(design, result, comparison);
+    let markdown = host::report::markdown(&report);
+    for line in [
+        "### `ekf_box`: the constants the spec fixes",
+        "`[observer.ekf]` fixes `x0`, `q` and `p0`; `gen` tuned nothing; the filter starts at the spec's `x0`",
+        "| the spec's | (1, 0.7) | [[3.000e-5, 1.000e-5], [1.000e-5, 2.000e-3]] | [[2.000e-1, 5.000e-2], [5.000e-2, 5.000e-1]] |",
+        "`[observer.ukf]` fixes `p0`; `gen` tuned `q`; the filter starts at the centre of the state box",
+        "| every constant tuned | (0, 0) | diag(",
+    ] {
+        assert!(markdown.contains(line), "report.md lacks {line:?}:\n{markdown}");
+    }
 }

@@ -159,9 +159,9 @@ fn ekf_matches_a_grid_tuned_expert(
     // 0.0747 / 0.1150 here).
     let tuned = comparison.ekf.as_ref().expect("Example 1 has an EKF");
     let mut grid = tuned.constants.clone();
-    grid.q = vec![3.2e-5, 3.2e-5];
+    grid.q = host::plant::Covariance::Diagonal(vec![3.2e-5, 3.2e-5]);
     // Uniform over [-2, 2] × [-5, 5]: variances 16/12 and 100/12.
-    grid.p0 = vec![16.0 / 12.0 / 4.0, 100.0 / 12.0 / 4.0];
+    grid.p0 = host::plant::Covariance::Diagonal(vec![16.0 / 12.0 / 4.0, 100.0 / 12.0 / 4.0]);
     let centre = host::observers::ekf::box_centre(design);
     let reference = host::observers::ekf::rmse(code, &grid, &centre, &result.runs.validation).unwrap();
     let ours = host::observers::ekf::rmse(code, &tuned.constants, &centre, &result.runs.validation).unwrap();

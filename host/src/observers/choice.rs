@@ -19,8 +19,8 @@ fn tuning_score(figures: &ObserverFigures, spreads: &[f64]) -> f64 {
 /// refused before the fit rather than minutes after it: a kind the map starts or checks while a state
 /// is not a target, an EKF kind of a model beyond the sizes the host filters, and an EKF kind whose
 /// predicted instructions exceed `budget.instructions`. The EKF's count depends on the model alone:
-/// its tuned constants are all non-zero numbers written into the program, any such ones give it
-/// (the map's and the corrected observer's counts need the fit, and are checked after it).
+/// its tuned constants are all non-zero numbers written into the program, any such ones give it,
+/// with the spec's `Q` where it fixes one (the map's and the corrected observer's counts need the fit, and are checked after it).
 pub fn check_before_fit(design: &Design, code: &ModelCode) -> Result<(), SpecError> {
     if design.observer == ObserverKind::Auto {
         return Ok(());
@@ -36,7 +36,15 @@ pub fn check_before_fit(design: &Design, code: &ModelCode) -> Result<(), SpecErr
     };
     let states = code.dimensions.states;
     let theta = vec![0.37f64.log10(); 2 * states];
-    let constants = ekf::constants(design, &ekf::box_centre(design), &vec![1.0; states], &theta);
+    let mut constants = ekf::constants(design, &ekf::box_centre(design), &vec![1.0; states], &theta);
+    // A full `Q` the spec fixes adds its off-diagonal entries to every prediction.
+    let fixed = match design.observer {
+        ObserverKind::UkfBox => &design.filters.ukf,
+        _ => &design.filters.ekf,
+    };
+    if let Some(q) = &fixed.q {
+        constants.q = q.clone();
+    }
     let instructions = cost(code, &constants);
     if instructions > budget as f64 {
         return Err(over_budget(design, entry.kind.name(), instructions, budget as f64));

@@ -14,8 +14,8 @@ use firmware::{Ekf, Plant, Rk4};
 
 use crate::data::{DataSet, Rows, Run};
 use crate::plant::kalman::EkfConstants;
-use crate::plant::{Compiled, ModelCode};
-use crate::spec::{Axis, Design};
+use crate::plant::{Compiled, Covariance, ModelCode};
+use crate::spec::{Axis, Design, FixedFilter};
 
 /// Most states and outputs the host's EKF is instantiated for (the filter's dimensions are types).
 pub const MAX_STATES: usize = 6;
@@ -44,6 +44,12 @@ pub fn box_centre(design: &Design) -> Vec<f64> {
             Axis::Fixed(value) => value,
         })
         .collect()
+}
+
+/// Where a filter starts: the spec's fixed `x0` (`[observer.ekf]`, `[observer.ukf]`), else the
+/// centre of the state box.
+pub fn start(design: &Design, fixed: &FixedFilter) -> Vec<f64> {
+    fixed.x0.clone().unwrap_or_else(|| box_centre(design))
 }
 
 /// The range of each state over `data` (1 where it is constant).
@@ -152,14 +158,12 @@ fn run_sized<const NX: usize, const NY: usize>(
         step: Rk4::new(Compiled::new(code), constants.h),
         substeps: constants.substeps,
     };
-    let diagonal = |values: &[f64]| -> [[f64; NX]; NX] {
-        std::array::from_fn(|i| std::array::from_fn(|j| if i == j { values[i] } else { 0.0 }))
-    };
+    let full = |c: &Covariance| -> [[f64; NX]; NX] { std::array::from_fn(|i| std::array::from_fn(|j| c.entry(i, j))) };
     let mut filter: Ekf<f64, Stepped<'_>, NX, NY, MAX_INPUTS> = Ekf::new(
         plant,
         std::array::from_fn(|i| x0[i]),
-        diagonal(&constants.p0),
-        diagonal(&constants.q),
+        full(&constants.p0),
+        full(&constants.q),
         std::array::from_fn(|i| constants.r[i]),
     )
     .with_bounds(
@@ -191,8 +195,8 @@ pub fn constants(design: &Design, centre: &[f64], spreads: &[f64], theta: &[f64]
     };
     EkfConstants {
         x0: centre.to_vec(),
-        p0: scaled(&theta[n..2 * n]),
-        q: scaled(&theta[..n]),
+        p0: Covariance::Diagonal(scaled(&theta[n..2 * n])),
+        q: Covariance::Diagonal(scaled(&theta[..n])),
         r: design.model.outputs.iter().map(|o| o.noise_variance).collect(),
         substeps: design.chip_substeps,
         h: design.tau / design.chip_substeps as f64,

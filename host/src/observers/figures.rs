@@ -86,6 +86,16 @@ pub struct ObserverFigures {
     pub mismatch_scenario: Option<Rows>,
 }
 
+/// A filter the spec fixes constants of (`[observer.ekf]`, `[observer.ukf]`), tuned instead in
+/// every constant by the same search on the same runs: what the report shows beside the spec's.
+#[derive(Clone, Debug)]
+pub struct Beside {
+    /// The filter with every constant tuned.
+    pub tuned: super::ekf::Tuned,
+    /// Its figures (`kind`: the filter's kind, whose row in the comparison is the spec's filter).
+    pub figures: ObserverFigures,
+}
+
 /// The EKF started by the map at `k = N − 1`, sharing the EKF's `Q` and `R`.
 #[derive(Clone, Debug)]
 pub struct Started {
@@ -109,6 +119,8 @@ pub struct Comparison {
     pub ekf: Option<ekf::Tuned>,
     /// The tuned UKF (`None` when the model is beyond the host's sizes).
     pub ukf: Option<ekf::Tuned>,
+    /// Each filter the spec fixes constants of, with every constant tuned instead.
+    pub beside: Vec<Beside>,
     /// The tuned model-corrected map, or why the design cannot have one.
     pub corrected: Result<corrected::Tuned, String>,
     /// The EKF started by the map; `None` without an EKF or the full state.

@@ -20,7 +20,7 @@ pub mod started;
 pub mod ukf;
 
 pub use choice::{check_before_fit, choose};
-pub use figures::{Comparison, Drift, Figures, ObserverFigures, Started, TRANSIENT_TIME};
+pub use figures::{Beside, Comparison, Drift, Figures, ObserverFigures, Started, TRANSIENT_TIME};
 pub use kind::map_estimates;
 pub use score::CHEAPER_WITHIN;
 
@@ -48,6 +48,7 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         chosen,
         ekf: bench.ekf,
         ukf: bench.ukf,
+        beside: bench.beside,
         corrected: bench.corrected,
         chip_model_error: chip_model_error(design, result),
         ekf_from_observer_x0: bench.ekf_from_observer_x0,

@@ -193,16 +193,14 @@ impl<'a> Setup<'a> {
         let literal = |v: f64| T::literal(v as f32, v);
         let tables = self.tables;
         match (self.kind, &self.filter, &self.programs) {
-            (ObserverKind::EkfBox, Some(filter), _) => Follower::Box(ekf::BoxStep::new(
-                filter,
-                tables.ekf.as_ref().expect("checked"),
-                self.code,
-            )),
-            (ObserverKind::UkfBox, Some(filter), _) => Follower::Box(ekf::BoxStep::new(
-                filter,
-                tables.ukf.as_ref().expect("checked"),
-                self.code,
-            )),
+            (ObserverKind::EkfBox, Some(filter), _) => {
+                let constants = tables.ekf.as_ref().expect("checked");
+                Follower::Box(ekf::BoxStep::new(filter, &constants.x0, &constants.p0, self.code))
+            }
+            (ObserverKind::UkfBox, Some(filter), _) => {
+                let constants = tables.ukf.as_ref().expect("checked");
+                Follower::Box(ekf::BoxStep::new(filter, &constants.x0, &constants.p0, self.code))
+            }
             (ObserverKind::EkfMap, Some(filter), _) => {
                 let (p0, _) = tables.started.as_ref().expect("checked");
                 Follower::Started(ekf::StartedStep::new(

@@ -111,7 +111,7 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
             state_targets,
             started: kalman::diagonal_upper(started_p0).iter().map(literal).collect(),
             x: constants.x0.iter().map(literal).collect(),
-            p: kalman::diagonal_upper(&constants.p0).iter().map(literal).collect(),
+            p: constants.p0.upper().iter().map(literal).collect(),
             checked: false,
             last: nan.clone(),
             nan,

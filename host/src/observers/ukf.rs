@@ -14,24 +14,16 @@
 use crate::data::{DataSet, Rows, Run};
 use crate::plant::kalman::{EkfConstants, FilterCode};
 use crate::plant::unscented::unscented_code;
-use crate::plant::ModelCode;
+use crate::plant::{Covariance, ModelCode};
 use crate::spec::Design;
 
 use super::ekf::{self, Tuned};
 
 /// The targets estimated at every sample of `run` by the written-out UKF `filter` started at `x0`
-/// with `P(0) = diag(p0)`, in `f32` as the chip runs it (step for step the generated `Ukf::push`,
+/// with `P(0) = p0`, in `f32` as the chip runs it (step for step the generated `Ukf::push`,
 /// [`ekf::BoxStep`]): NaN where a sample gave no estimate.
-pub fn estimate_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], p0: &[f64], run: &Run) -> Rows {
-    let start = EkfConstants {
-        x0: x0.to_vec(),
-        p0: p0.to_vec(),
-        q: Vec::new(),
-        r: Vec::new(),
-        substeps: 1,
-        h: 0.0,
-    };
-    let mut filter = ekf::BoxStep::<f32>::new(filter, &start, code);
+pub fn estimate_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], p0: &Covariance, run: &Run) -> Rows {
+    let mut filter = ekf::BoxStep::<f32>::new(filter, x0, p0, code);
     let mut estimates = Rows::new(code.dimensions.targets);
     for (y, u) in run.measurements.iter().zip(run.inputs.iter()) {
         let row: Vec<f64> = match filter.step(y, u) {
@@ -58,7 +50,8 @@ pub fn estimates(code: &ModelCode, constants: &EkfConstants, x0: &[f64], data: &
     )
 }
 
-/// Chooses the UKF's `Q` and `P(0)` on `tuning` as the EKF's are chosen ([`ekf::tune`]).
+/// Chooses the UKF's `Q` and `P(0)` on `tuning` as the EKF's are chosen ([`ekf::tune`]), those the
+/// spec does not fix (`[observer.ukf]`).
 pub fn tune(
     design: &Design,
     code: &ModelCode,
@@ -66,7 +59,15 @@ pub fn tune(
     learning: &DataSet,
     target_spreads: &[f64],
 ) -> Option<Tuned> {
-    ekf::tune_with(estimates, design, code, tuning, learning, target_spreads)
+    ekf::tune_with(
+        estimates,
+        &design.filters.ukf,
+        design,
+        code,
+        tuning,
+        learning,
+        target_spreads,
+    )
 }
 
 #[cfg(test)]

@@ -22,17 +22,18 @@ use firmware::{Maths, Scalar};
 use crate::spec::ast::Binary;
 
 use super::program::{Builder, Leaf, Names, Program};
-use super::ModelCode;
+use super::{Covariance, ModelCode};
 
-/// The EKF's constants, chosen on the tuning runs.
+/// The EKF's constants (the UKF's too), chosen on the tuning runs or fixed by the spec
+/// (`[observer.ekf]`).
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct EkfConstants {
     /// `x̂(0)`.
     pub x0: Vec<f64>,
-    /// `P(0)` diagonal.
-    pub p0: Vec<f64>,
-    /// `Q` diagonal.
-    pub q: Vec<f64>,
+    /// `P(0)`: diagonal when tuned, full when a spec fixes it so.
+    pub p0: Covariance,
+    /// `Q`, per sampling period: diagonal when tuned, full when a spec fixes it so.
+    pub q: Covariance,
     /// `R` diagonal: the outputs' noise variances.
     pub r: Vec<f64>,
     /// RK4 substeps per sample on the chip.
@@ -229,7 +230,7 @@ fn predict(b: &mut Builder<'_>, code: &ModelCode, constants: &EkfConstants, x: &
     let fpf = product_transposed(b, &fp, &jacobian);
     for r in 0..nx {
         for c in r..nx {
-            let q = b.number(if r == c { constants.q[r] } else { 0.0 });
+            let q = b.number(constants.q.entry(r, c));
             let entry = b.add(fpf[r][c], q);
             p[r][c] = entry;
             p[c][r] = entry;

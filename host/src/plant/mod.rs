@@ -17,6 +17,7 @@
 //! [`firmware::Model`]: the EKF the report measures is the firmware's own code, in `f64`.
 
 pub mod correction;
+pub mod covariance;
 pub mod kalman;
 pub mod program;
 pub mod unscented;
@@ -25,6 +26,7 @@ use firmware::{Maths, Scalar};
 
 use crate::spec::ast::{self, Node};
 use crate::spec::Design;
+pub use covariance::Covariance;
 pub use program::{Builder, LowerError, Names, Op, Program};
 
 /// Most operations of one program: beyond this the emitted function would be too large to be what a

@@ -287,7 +287,7 @@ fn predict(b: &mut Builder<'_>, code: &ModelCode, constants: &EkfConstants, x: &
     let spread = cross(b, &dx, &dx, true);
     for r in 0..nx {
         for c in r..nx {
-            let q = b.number(if r == c { constants.q[r] } else { 0.0 });
+            let q = b.number(constants.q.entry(r, c));
             let entry = b.add(spread[r][c], q);
             p[r][c] = entry;
             p[c][r] = entry;

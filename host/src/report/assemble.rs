@@ -3,8 +3,8 @@
 
 use super::gates;
 use super::schema::{
-    ChipModel, CorrectedTuning, DriftReport, EkfTuning, FiguresReport, LinearReport, MismatchReport, ObserverReport,
-    Report, SetSummary, TargetReport, MISMATCH_PLANTS,
+    ChipModel, CorrectedTuning, DriftReport, EkfTuning, FiguresReport, FilterConstants, FixedFilterReport,
+    LinearReport, MismatchReport, ObserverReport, Report, SetSummary, TargetReport, MISMATCH_PLANTS,
 };
 use crate::fit::evaluate::Evaluation;
 use crate::fit::DesignResult;
@@ -13,11 +13,6 @@ use crate::spec::Design;
 
 /// Assembles the report of a run.
 pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a Comparison) -> Report<'a> {
-    let finite = |v: f64| v.is_finite().then_some(v);
-    let drift = |d: crate::observers::Drift| DriftReport {
-        rmse_first: finite(d.first),
-        rmse_last: finite(d.last),
-    };
     let summary = |set: &crate::data::DataSet, seed| SetSummary {
         runs: set.runs.len(),
         windows: set.window_count(),
@@ -60,41 +55,8 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             .collect(),
         tuning: summary(&result.runs.tuning, design.tuning.seed),
         runs: super::runs::sets(design, &result.runs),
-        observers: comparison
-            .observers
-            .iter()
-            .map(|o| ObserverReport {
-                kind: o.kind,
-                predicted_instructions: o.instructions,
-                targets: design
-                    .targets
-                    .iter()
-                    .zip(&o.targets)
-                    .map(|(t, f)| {
-                        (
-                            t.name.clone(),
-                            FiguresReport {
-                                rmse_validation: finite(f.rmse_validation),
-                                max_error_validation: finite(f.max_error_validation),
-                                p95_validation: finite(f.p95_validation),
-                                rmse_scenario: finite(f.rmse_scenario),
-                                rmse_transient: finite(f.rmse_transient),
-                                rmse_scenario_draws: f.scenario_draws.map(|d| finite(d.0)),
-                                p95_scenario_draws: f.scenario_draws.map(|d| finite(d.1)),
-                                rmse_tuning: finite(f.rmse_tuning),
-                                p95_tuning: finite(f.p95_tuning),
-                                rmse_mismatch: f.rmse_mismatch.and_then(finite),
-                                rmse_corners: f.rmse_corners.iter().map(|&v| finite(v)).collect(),
-                                rmse_nominal: f.rmse_nominal.and_then(finite),
-                                drift: drift(f.drift),
-                                drift_mismatch: f.drift_mismatch.map(drift),
-                            },
-                        )
-                    })
-                    .collect(),
-                on_target: None,
-            })
-            .collect(),
+        observers: comparison.observers.iter().map(|o| observer(design, o)).collect(),
+        fixed_filters: fixed_filters(design, comparison),
         references: super::references::assemble(design, comparison),
         mhe_tuning: comparison.mhe.as_ref().map(super::references::mhe_tuning),
         ekf_tuning: comparison.ekf.as_ref().map(|t| EkfTuning {
@@ -105,9 +67,10 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             evaluations: t.evaluations,
             runs: t.runs,
             started_factor: comparison.started.as_ref().map(|s| s.factor),
-            q_diagonal: t.constants.q.clone(),
-            p0_diagonal: t.constants.p0.clone(),
+            q_diagonal: t.constants.q.diagonal(),
+            p0_diagonal: t.constants.p0.diagonal(),
             x0: t.constants.x0.clone(),
+            fixed: t.fixed.clone(),
         }),
         ekf_from_observer_x0: comparison.ekf_from_observer_x0.clone(),
         observer: comparison.chosen.clone(),
@@ -148,5 +111,78 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
         search: None,
         taps: None,
         fixed_point: None,
+    }
+}
+
+/// One observer's figures as `report.json` holds them (NaN, where a filter diverged, as `null`).
+pub fn observer(design: &Design, o: &crate::observers::ObserverFigures) -> ObserverReport {
+    let finite = |v: f64| v.is_finite().then_some(v);
+    let drift = |d: crate::observers::Drift| DriftReport {
+        rmse_first: finite(d.first),
+        rmse_last: finite(d.last),
+    };
+    ObserverReport {
+        kind: o.kind,
+        predicted_instructions: o.instructions,
+        targets: design
+            .targets
+            .iter()
+            .zip(&o.targets)
+            .map(|(t, f)| {
+                (
+                    t.name.clone(),
+                    FiguresReport {
+                        rmse_validation: finite(f.rmse_validation),
+                        max_error_validation: finite(f.max_error_validation),
+                        p95_validation: finite(f.p95_validation),
+                        rmse_scenario: finite(f.rmse_scenario),
+                        rmse_transient: finite(f.rmse_transient),
+                        rmse_scenario_draws: f.scenario_draws.map(|d| finite(d.0)),
+                        p95_scenario_draws: f.scenario_draws.map(|d| finite(d.1)),
+                        rmse_tuning: finite(f.rmse_tuning),
+                        p95_tuning: finite(f.p95_tuning),
+                        rmse_mismatch: f.rmse_mismatch.and_then(finite),
+                        rmse_corners: f.rmse_corners.iter().map(|&v| finite(v)).collect(),
+                        rmse_nominal: f.rmse_nominal.and_then(finite),
+                        drift: drift(f.drift),
+                        drift_mismatch: f.drift_mismatch.map(drift),
+                    },
+                )
+            })
+            .collect(),
+        on_target: None,
+    }
+}
+
+/// The report's entries, one per filter the spec fixes constants of.
+fn fixed_filters(design: &Design, comparison: &Comparison) -> Vec<FixedFilterReport> {
+    comparison
+        .beside
+        .iter()
+        .filter_map(|beside| {
+            let (section, spec) = match beside.figures.kind {
+                "ekf_box" => ("observer.ekf", comparison.ekf.as_ref()?),
+                "ukf_box" => ("observer.ukf", comparison.ukf.as_ref()?),
+                _ => return None,
+            };
+            Some(FixedFilterReport {
+                kind: beside.figures.kind,
+                section,
+                fixed: spec.fixed.clone(),
+                spec: constants(spec),
+                all_tuned: constants(&beside.tuned),
+                all_tuned_figures: observer(design, &beside.figures),
+            })
+        })
+        .collect()
+}
+
+/// A tuned filter's constants and score as the report holds them.
+fn constants(t: &crate::observers::ekf::Tuned) -> FilterConstants {
+    FilterConstants {
+        x0: t.constants.x0.clone(),
+        q: t.constants.q.clone(),
+        p0: t.constants.p0.clone(),
+        score: t.cost,
     }
 }

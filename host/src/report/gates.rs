@@ -15,6 +15,10 @@
 //!   target: that EKF is the better choice for this system. An
 //!   EKF the spec's `[budget] instructions` does not allow (as [`crate::search::cost`] predicts it)
 //!   is not a choice, so it does not count.
+//! * [`Gate::StartOutsideBox`]: a filter's start the spec fixes (`[observer.ekf] x0`,
+//!   `[observer.ukf] x0`) or the scenario's `observer_x0` lies outside the learning box: the filter
+//!   starts where no learning or validation run starts, which is allowed (a published filter's guess
+//!   may be poor on purpose) but is rarely what a user means.
 
 use std::fmt;
 
@@ -76,6 +80,17 @@ pub enum Gate {
         /// Its validation RMSE.
         ekf_rmse: f64,
     },
+    /// See the module docs.
+    StartOutsideBox {
+        /// The spec's field (`observer.ekf.x0`).
+        field: String,
+        /// The state outside.
+        state: String,
+        /// Its start.
+        value: f64,
+        /// The learning box along that state.
+        range: (f64, f64),
+    },
 }
 
 impl fmt::Display for Gate {
@@ -118,13 +133,51 @@ impl fmt::Display for Gate {
                 "target `{target}`: the chosen observer (`{chosen}`) has validation RMSE {rmse:.4}, more than {EKF_FACTOR} times \
                  the EKF's (`{ekf}`: {ekf_rmse:.4}): the EKF is the better choice for this system (`[observer] kind = \"{ekf}\"`)"
             ),
+            Gate::StartOutsideBox { field, state, value, range } => write!(
+                f,
+                "`{field}.{state}` = {value} lies outside the learning box [{}, {}] of `{state}`: the filter starts where no \
+                 learning or validation run starts; if that is meant (a published filter's guess), ignore this, else give a \
+                 start inside the box or widen `learning.grid.{state}`",
+                range.0, range.1
+            ),
         }
     }
 }
 
-/// Every failed gate of a design, in target order, gate by gate.
+/// The starts the spec gives a filter outside the learning box ([`Gate::StartOutsideBox`]).
+pub fn starts_outside_box(design: &Design) -> Vec<Gate> {
+    let starts = [
+        ("observer.ekf.x0", design.filters.ekf.x0.as_ref()),
+        ("observer.ukf.x0", design.filters.ukf.x0.as_ref()),
+        (
+            "scenario.observer_x0",
+            design.scenario.as_ref().and_then(|s| s.observer_x0.as_ref()),
+        ),
+    ];
+    let mut outside = Vec::new();
+    for (field, start) in starts {
+        let Some(start) = start else { continue };
+        for ((state, axis), &value) in design.model.states.iter().zip(&design.learning.axes).zip(start) {
+            let range = match *axis {
+                crate::spec::Axis::Range { min, max, .. } => (min, max),
+                crate::spec::Axis::Fixed(held) => (held, held),
+            };
+            if !(range.0..=range.1).contains(&value) {
+                outside.push(Gate::StartOutsideBox {
+                    field: field.to_owned(),
+                    state: state.clone(),
+                    value,
+                    range,
+                });
+            }
+        }
+    }
+    outside
+}
+
+/// Every failed gate of a design: the starts outside the box, then target by target, gate by gate.
 pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) -> Vec<Gate> {
-    let mut failed = Vec::new();
+    let mut failed = starts_outside_box(design);
     for t in &result.targets {
         let name = design.targets[t.index].name.clone();
         let v = &t.validation;

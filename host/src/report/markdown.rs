@@ -60,19 +60,26 @@ pub fn markdown(report: &Report<'_>) -> String {
     s.push_str("\n## Observers on the same data\n\n");
     s.push_str(&observers_table(report));
     s.push_str(&super::filters::ukf_against_ekf(report));
+    s.push_str(&super::fixed_filters::section(report));
     s.push_str(&super::references::section(report));
     if let Some(t) = &report.ekf_tuning {
         let _ = writeln!(
             s,
             "\nEKF: the firmware's filter over the model emitted as Rust ({} RK4 step(s) per sample on the chip, {} in the learning simulation; \
              largest one-sample difference between the two over the validation states, relative to each state's spread: {}), \
-             starting at the centre of the state box; Q = diag({}), P(0) = diag({}), each value per state chosen on the {} tuning runs from random starts, which no figure above but \
+             starting at {}; Q = diag({}), P(0) = diag({}), {} on the {} tuning runs from random starts, which no figure above but \
              *RMSE tuning* and *p95 tuning* uses (score {:.4} at an isotropic grid's best point, {:.4} after Nelder–Mead; {} evaluations){}.",
             report.chip_model.chip_substeps,
             report.chip_model.simulation_substeps,
             report.chip_model.max_step_difference_relative.iter().map(|v| format!("{v:.1e}")).collect::<Vec<_>>().join(", "),
+            if t.fixed.contains(&"x0") { "the spec's x̂(0)" } else { "the centre of the state box" },
             t.q_diagonal.iter().map(|v| format!("{v:.3e}")).collect::<Vec<_>>().join(", "),
             t.p0_diagonal.iter().map(|v| format!("{v:.3e}")).collect::<Vec<_>>().join(", "),
+            match t.fixed.iter().filter(|c| **c != "x0").count() {
+                0 => "each value per state chosen".to_owned(),
+                2 => "both fixed by the spec (`[observer.ekf]`; their diagonals shown) and scored".to_owned(),
+                _ => format!("`{}` fixed by the spec (`[observer.ekf]`; its diagonal shown), the other chosen per state", if t.fixed.contains(&"q") { "q" } else { "p0" }),
+            },
             t.runs,
             t.grid_cost,
             t.cost,

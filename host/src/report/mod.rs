@@ -4,6 +4,7 @@
 mod assemble;
 mod draw;
 pub mod filters;
+pub mod fixed_filters;
 pub mod fixed_point;
 pub mod gates;
 pub mod html;

@@ -41,6 +41,9 @@ pub struct Report<'a> {
     pub runs: Vec<super::runs::RunSet>,
     /// Every observer on the same data: the map, then the EKF.
     pub observers: Vec<ObserverReport>,
+    /// Each filter the spec fixes constants of, beside the same filter tuned in every constant.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub fixed_filters: Vec<FixedFilterReport>,
     /// The host-only references: the on-line moving-horizon estimate and the particle floor.
     pub references: Vec<ReferenceReport>,
     /// How the EKF was tuned, when the host could run one.
@@ -175,12 +178,14 @@ pub struct EkfTuning {
     pub runs: usize,
     /// The map-started EKF's start covariance over the map's mean squared error per state.
     pub started_factor: Option<f64>,
-    /// `diag(Q)`.
+    /// `diag(Q)` (the spec's `Q`, full, is in `fixed_filters`).
     pub q_diagonal: Vec<f64>,
     /// `diag(P(0))`.
     pub p0_diagonal: Vec<f64>,
-    /// `x̂(0)` (centre of the state box).
+    /// `x̂(0)` (centre of the state box, or the spec's).
     pub x0: Vec<f64>,
+    /// The constants the spec fixes (`[observer.ekf]`): `"x0"`, `"q"`, `"p0"`.
+    pub fixed: Vec<&'static str>,
 }
 
 /// The model-corrected map's tuning ([`crate::observers::corrected`]).
@@ -355,4 +360,34 @@ pub struct ParticlesReport {
     pub checked: Vec<(usize, Vec<f64>)>,
     /// Whether the last doubling moved no target's RMSE by more than 5 %.
     pub converged: bool,
+}
+
+/// One filter the spec fixes constants of.
+#[derive(Serialize)]
+pub struct FixedFilterReport {
+    /// Its kind (`ekf_box`, `ukf_box`): its row among the observers is the spec's filter.
+    pub kind: &'static str,
+    /// The spec's section (`observer.ekf`).
+    pub section: &'static str,
+    /// The constants the spec fixes: `"x0"`, `"q"`, `"p0"`.
+    pub fixed: Vec<&'static str>,
+    /// The spec's filter's constants (the fixed ones and those tuned around them).
+    pub spec: FilterConstants,
+    /// The same filter's constants with every one tuned.
+    pub all_tuned: FilterConstants,
+    /// The filter with every constant tuned, judged on the same data as the spec's.
+    pub all_tuned_figures: ObserverReport,
+}
+
+/// A filter's constants and its score on the tuning runs.
+#[derive(Serialize)]
+pub struct FilterConstants {
+    /// `x̂(0)`.
+    pub x0: Vec<f64>,
+    /// `Q`, per sampling period.
+    pub q: crate::plant::Covariance,
+    /// `P(0)`.
+    pub p0: crate::plant::Covariance,
+    /// The [score](crate::observers::score) on the tuning runs from random starts.
+    pub score: f64,
 }

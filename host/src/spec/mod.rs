@@ -5,6 +5,7 @@
 
 pub mod ast;
 pub mod expr;
+pub mod filters;
 pub mod limits;
 mod load;
 pub mod model;
@@ -25,6 +26,7 @@ use serde::Deserialize;
 pub use crate::output::format::readable;
 use crate::spec::expr::Expression;
 use crate::spec::model::{Model, ModelText};
+pub use filters::{FixedFilter, FixedFilters};
 pub use load::{load, parse};
 pub use search::{Search, Taps};
 
@@ -306,6 +308,8 @@ pub struct Design {
     pub family: Option<Family>,
     /// `[observer] kind`.
     pub observer: ObserverKind,
+    /// The filters' constants the spec fixes (`[observer.ekf]`, `[observer.ukf]`); the rest are tuned.
+    pub filters: FixedFilters,
     /// `[chip] arithmetic = "fixed"`: the integer map is emitted too, with these raw scalings.
     pub fixed: Option<FixedSpec>,
     /// SHA-256 of the spec text, in hex (provenance of generated files).

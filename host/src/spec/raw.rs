@@ -83,6 +83,28 @@ pub(super) struct RawBudget {
 pub(super) struct RawObserver {
     #[serde(default)]
     pub(super) kind: ObserverKind,
+    pub(super) ekf: Option<RawFilter>,
+    pub(super) ukf: Option<RawFilter>,
+}
+
+/// `[observer.ekf]`, `[observer.ukf]`: a filter's constants fixed instead of tuned, each optional.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawFilter {
+    pub(super) x0: Option<BTreeMap<String, f64>>,
+    pub(super) q: Option<RawCovariance>,
+    pub(super) p0: Option<RawCovariance>,
+}
+
+/// A covariance as a spec writes it: its diagonal by state name, or its rows in state order.
+#[derive(Deserialize)]
+#[serde(
+    untagged,
+    expecting = "a table of variances by state name (`{ x1 = 0.1, x2 = 0.2 }`, the diagonal) or a list of rows (`[[0.1, 0.0], [0.0, 0.2]]`, the full matrix)"
+)]
+pub(super) enum RawCovariance {
+    Diagonal(BTreeMap<String, f64>),
+    Full(Vec<Vec<f64>>),
 }
 
 #[derive(Deserialize)]

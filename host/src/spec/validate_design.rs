@@ -86,6 +86,11 @@ impl Validator {
             .as_ref()
             .map(|s| self.scenario(s, &model, map.horizon))
             .transpose()?;
+        let section = |pick: fn(&RawObserver) -> Option<&RawFilter>| raw.observer.as_ref().and_then(pick);
+        let filters = FixedFilters {
+            ekf: self.fixed_filter("observer.ekf", section(|o| o.ekf.as_ref()), &model)?,
+            ukf: self.fixed_filter("observer.ukf", section(|o| o.ukf.as_ref()), &model)?,
+        };
         let design = Design {
             file: self.path.clone(),
             name: raw.name,
@@ -108,7 +113,8 @@ impl Validator {
             targets,
             scenario,
             family,
-            observer: raw.observer.map(|o| o.kind).unwrap_or_default(),
+            observer: raw.observer.as_ref().map(|o| o.kind).unwrap_or_default(),
+            filters,
             fixed,
             spec_sha256: String::new(),
         };

@@ -10,7 +10,12 @@ use super::*;
 
 impl Validator {
     /// One finite value per state, from the table at `field`.
-    fn state_values(&self, field: &str, raw: &BTreeMap<String, f64>, model: &Model) -> Result<Vec<f64>, SpecError> {
+    pub(super) fn state_values(
+        &self,
+        field: &str,
+        raw: &BTreeMap<String, f64>,
+        model: &Model,
+    ) -> Result<Vec<f64>, SpecError> {
         self.keys_among(
             field,
             raw.keys(),

@@ -168,7 +168,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
         }};
         (@ RestartedEkf, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
             let (_, mut ekf_constants) = crate::emitted_constants!($d, &$design);
-            // The filter's start as emitted: the box centre and P(0)'s diagonal.
+            // The filter's start as emitted: its `x̂(0)` and `P(0)`, read from its upper triangle.
             let (x0, upper) = <$d::StartedEkf as firmware::Restart<
                 f64,
                 { $d::STATES },
@@ -177,9 +177,12 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
                 { $d::TARGETS },
             >>::FRESH;
             ekf_constants.x0 = x0.to_vec();
-            ekf_constants.p0 = (0..$d::STATES)
-                .map(|i| upper[host::plant::kalman::upper($d::STATES, i, i)])
-                .collect();
+            let entry = |i: usize, j: usize| upper[host::plant::kalman::upper($d::STATES, i.min(j), i.max(j))];
+            ekf_constants.p0 = host::plant::Covariance::Full(
+                (0..$d::STATES)
+                    .map(|i| (0..$d::STATES).map(|j| entry(i, j)).collect())
+                    .collect(),
+            );
             let filter = filter_code(&$code, &ekf_constants);
             let restart = host::observers::restart::RestartConstants {
                 threshold: $d::RESTART_THRESHOLD,

@@ -7,7 +7,7 @@ use super::floats;
 use super::program::function;
 use super::started;
 use crate::emit::EmitError;
-use crate::plant::kalman::{self, EkfConstants, FilterCode};
+use crate::plant::kalman::{EkfConstants, FilterCode};
 use crate::plant::ModelCode;
 
 /// A filter's names in C.
@@ -87,7 +87,7 @@ pub(super) fn common(name: &str, filter: &Filter, constants: &EkfConstants) -> R
          \x20   return 1;\n\
          }}\n\n",
         x0 = floats(&format!("{label} x0"), &constants.x0)?,
-        p0 = floats(&format!("{label} P0"), &kalman::diagonal_upper(&constants.p0))?,
+        p0 = floats(&format!("{label} P0"), &constants.p0.upper())?,
     ))
 }
 

@@ -8,8 +8,8 @@ use std::fmt::Write;
 use super::rust_text::{body, f32_list, list, literal, rows};
 use crate::emit::EmitError;
 use crate::plant::kalman::{self, EkfConstants, FilterCode};
-use crate::plant::ModelCode;
-use crate::spec::Design;
+use crate::plant::{Covariance, ModelCode};
+use crate::spec::{Design, FixedFilter};
 
 /// One filter's names: its type (`Ekf`), its samples' prefix (`ekf`), its observer type
 /// (`BoxEkfObserver`) and what that observer is, in a phrase ("The EKF from the centre of the state box").
@@ -24,7 +24,7 @@ pub(super) struct Names {
 
 /// The filter type `names.name` with its constants' start (`{X0}`, `{P0}`: `T` literals).
 pub(super) fn filter_type(names: &Names, constants: &EkfConstants, nx: usize) -> Result<String, EmitError> {
-    let upper = kalman::diagonal_upper(&constants.p0);
+    let upper = constants.p0.upper();
     let full: Vec<String> = (0..nx * nx)
         .map(|k| format!("self.p[{}]", kalman::upper(nx, k / nx, k % nx)))
         .collect();
@@ -37,12 +37,23 @@ pub(super) fn filter_type(names: &Names, constants: &EkfConstants, nx: usize) ->
         .replace("{COVARIANCE}", &rows(&full, nx)))
 }
 
-/// The observer around the filter (`names.observer`), started where the filter starts.
-pub(super) fn filter_observer(names: &Names, constants: &EkfConstants) -> Result<String, EmitError> {
+/// The observer around the filter (`names.observer`), started where the filter starts (`fixed`: the
+/// spec's constants of this filter).
+pub(super) fn filter_observer(
+    names: &Names,
+    constants: &EkfConstants,
+    fixed: &FixedFilter,
+) -> Result<String, EmitError> {
     let label = names.name.to_uppercase();
-    let upper = kalman::diagonal_upper(&constants.p0);
+    let upper = constants.p0.upper();
+    let what = match fixed.x0 {
+        Some(_) => names
+            .what
+            .replace("the centre of the state box", "the start the spec fixes"),
+        None => names.what.to_owned(),
+    };
     Ok(OBSERVER_TEMPLATE
-        .replace("{WHAT}", names.what)
+        .replace("{WHAT}", &what)
         .replace("{NAME}", names.name)
         .replace("{OBSERVER}", names.observer)
         .replace("{X0_F32}", &f32_list(&format!("{label} x0"), &constants.x0)?)
@@ -96,6 +107,49 @@ pub(super) fn samples(
     })?);
     writeln!(w, "}}").ok();
     Ok(text)
+}
+
+/// `<LABEL>_Q` (`label`: `"EKF"`) with its docs: as tuned (`tuned`, the docs of the diagonal `gen`
+/// chose), or as the spec fixes it (`[observer.<section>] q`): its diagonal, or its rows where it is
+/// full (then `[[f64; STATES]; STATES]`).
+pub(super) fn q_constant(label: &str, section: &str, q: &Covariance, fixed: &FixedFilter, tuned: &str) -> String {
+    let Some(_) = fixed.q else {
+        return format!("{tuned}\npub const {label}_Q: [f64; STATES] = {:?};", q.diagonal());
+    };
+    match q {
+        Covariance::Diagonal(diagonal) => format!(
+            "/// The {label}'s `Q` diagonal as the spec fixes it (`[observer.{section}] q`, f64): each state's\n\
+             /// process-noise variance per sample period, in its unit squared ([`STATE_UNITS`]).\n\
+             pub const {label}_Q: [f64; STATES] = {diagonal:?};"
+        ),
+        Covariance::Full(rows) => format!(
+            "/// The {label}'s `Q` as the spec fixes it (`[observer.{section}] q`, f64), full, rows in state\n\
+             /// order: the process-noise covariance per sample period, in the states' units ([`STATE_UNITS`]).\n\
+             pub const {label}_Q: [[f64; STATES]; STATES] = {rows:?};"
+        ),
+    }
+}
+
+/// The filter's docs on where it starts and where its constants come from: `tuned` (the words of a
+/// filter the spec fixes nothing of), or which the spec fixes (`[observer.<section>]`) and which
+/// `gen` chose.
+pub(super) fn constants_docs(section: &str, fixed: &FixedFilter, tuned: &str) -> String {
+    if !fixed.any() {
+        return tuned.to_owned();
+    }
+    let start = match fixed.x0 {
+        Some(_) => format!("at the `x̂(0)` the spec fixes (`[observer.{section}] x0`)"),
+        None => "at the centre of the state box".to_owned(),
+    };
+    let constant = |name: &str, key: &str, is_fixed: bool| match is_fixed {
+        true => format!("{name} is the spec's (`[observer.{section}] {key}`)"),
+        false => format!("{name} is diagonal, chosen by `gen` on the tuning runs"),
+    };
+    format!(
+        "It starts {start}; {}, {}; `R` is the outputs' noise variances.",
+        constant("`P(0)`", "p0", fixed.p0.is_some()),
+        constant("`Q`", "q", fixed.q.is_some()),
+    )
 }
 
 /// `values` as a list of `T` literals, each named `what[i]` in an error.

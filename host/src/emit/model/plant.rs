@@ -4,11 +4,11 @@
 
 use std::fmt::Write;
 
-use super::filter::{filter_observer, filter_type, samples, vector, Names};
+use super::filter::{constants_docs, filter_observer, filter_type, q_constant, samples, vector, Names};
 use super::rust_text::{body, list, literal, rows};
 use crate::emit::{f32_literal, EmitError};
 use crate::plant::kalman::{self, EkfConstants};
-use crate::plant::ModelCode;
+use crate::plant::{Covariance, ModelCode};
 use crate::spec::Design;
 
 /// The model and the EKF.
@@ -131,16 +131,17 @@ pub(super) fn model_and_ekf(
     };
     writeln!(w).ok();
 
-    let diagonal = |what: &str, values: &[f64]| -> Result<String, EmitError> {
-        let n = values.len();
+    let full = |what: &str, covariance: &Covariance| -> Result<String, EmitError> {
+        let n = covariance.size();
         let entries = (0..n * n)
             .map(|k| {
                 let (i, j) = (k / n, k % n);
-                literal(&format!("{what}[{i}][{j}]"), if i == j { values[i] } else { 0.0 })
+                literal(&format!("{what}[{i}][{j}]"), covariance.entry(i, j))
             })
             .collect::<Result<Vec<_>, _>>()?;
         Ok(rows(&entries, n))
     };
+    let fixed = &design.filters.ekf;
     let filter = kalman::filter_code(code, ekf);
     write!(
         w,
@@ -150,14 +151,15 @@ pub(super) fn model_and_ekf(
             .replace("{TRIANGLE}", &kalman::triangle(nx).to_string())
             .replace("{X0}", &vector("EKF x0", &ekf.x0)?)
             .replace("{H}", &literal("EKF substep", ekf.h)?)
-            .replace("{P0_FULL}", &diagonal("EKF P0", &ekf.p0)?)
-            .replace("{Q}", &diagonal("EKF Q", &ekf.q)?)
-            .replace("{Q_F64}", &format!("{:?}", ekf.q))
+            .replace("{P0_FULL}", &full("EKF P0", &ekf.p0)?)
+            .replace("{Q}", &full("EKF Q", &ekf.q)?)
+            .replace("{Q_CONSTANT}", &q_constant("EKF", "ekf", &ekf.q, fixed, EKF_Q_TUNED))
+            .replace("{CONSTANTS}", &constants_docs("ekf", fixed, EKF_TUNED))
             .replace("{R}", &vector("EKF R", &ekf.r)?)
             .replace("{BOUNDS}", &bounds_call(&code.bounds)?)
     )
     .ok();
-    w.push_str(&filter_observer(&EKF, ekf)?);
+    w.push_str(&filter_observer(&EKF, ekf, fixed)?);
     w.push_str(&samples(&EKF, &filter, code, design)?);
     Ok(text)
 }
@@ -196,19 +198,26 @@ fn bounds_call(bounds: &[crate::spec::Bounds]) -> Result<String, EmitError> {
     Ok(format!("\n    .with_bounds({}, {})", list(&lower), list(&upper)))
 }
 
+/// `EKF_Q`'s docs when `gen` tuned it.
+const EKF_Q_TUNED: &str =
+    "/// The EKF's `Q` diagonal as `gen` chose it (f64): each state's process-noise variance per sample
+/// period, in its unit squared ([`STATE_UNITS`]).";
+
+/// The EKF's docs on its constants when `gen` tuned them all.
+const EKF_TUNED: &str =
+    "It starts at the centre of the state box with `P(0)` and `Q` diagonal as chosen by `gen` on the
+/// tuning runs, `R` the outputs' noise variances.";
+
 const EKF_TEMPLATE: &str = r#"
 /// Entries of the EKF's covariance kept: its upper triangle, row by row (it is symmetric).
 pub const COVARIANCE: usize = {TRIANGLE};
 
-/// The EKF's `Q` diagonal as `gen` chose it (f64): each state's process-noise variance per sample
-/// period, in its unit squared ([`STATE_UNITS`]).
-pub const EKF_Q: [f64; STATES] = {Q_F64};
+{Q_CONSTANT}
 
 /// This design's extended Kalman filter, written out for its size by `gen`: the library's
 /// [`firmware::Ekf`] over [`Discrete`] ([`reference_ekf`], same constants), with each sample as
 /// straight-line code (no loop, no structural zero or one multiplied, `P` as its upper triangle).
-/// It starts at the centre of the state box with `P(0)` and `Q` diagonal as chosen by `gen` on the
-/// tuning runs, `R` the outputs' noise variances.
+/// {CONSTANTS}
 ///
 /// Each sample: every output's scalar update in Joseph form, then the prediction over one sampling
 /// period. A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u`

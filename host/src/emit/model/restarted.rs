@@ -10,7 +10,7 @@ use crate::plant::kalman::{self, EkfConstants};
 /// the check, and `RestartedEkfObserver`.
 pub(super) fn restarted(ekf: &EkfConstants, restart: &RestartConstants) -> Result<String, EmitError> {
     let nx = ekf.x0.len();
-    let upper = kalman::diagonal_upper(&ekf.p0);
+    let upper = ekf.p0.upper();
     let f64_list = |values: &[f64]| format!("{values:?}");
     let variances = restart
         .variances

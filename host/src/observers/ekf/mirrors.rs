@@ -5,9 +5,9 @@
 
 use crate::data::Run;
 use crate::plant::kalman::EkfConstants;
-use crate::plant::ModelCode;
+use crate::plant::{Covariance, ModelCode};
 
-/// The EKF from `constants.x0` (the box centre) over `run`, in `T`, step for step the generated
+/// The EKF from `constants.x0` (the box centre, or the spec's start) over `run`, in `T`, step for step the generated
 /// `Ekf::push` (the written-out programs `filter`): per sample the targets of `x̂(k|k)`, or `None`
 /// where the sample is refused (a non-finite output or input, or a step whose result is not finite,
 /// which is then not taken).
@@ -17,7 +17,7 @@ pub fn estimate_box<T: firmware::Scalar + firmware::Maths>(
     run: &Run,
     code: &ModelCode,
 ) -> Vec<Option<Vec<T>>> {
-    let mut observer = BoxStep::new(filter, constants, code);
+    let mut observer = BoxStep::new(filter, &constants.x0, &constants.p0, code);
     run.measurements
         .iter()
         .zip(run.inputs.iter())
@@ -35,17 +35,14 @@ pub struct BoxStep<'a, T> {
 }
 
 impl<'a, T: firmware::Scalar + firmware::Maths> BoxStep<'a, T> {
-    /// At the box centre, before the first sample of a run.
-    pub fn new(filter: &'a crate::plant::kalman::FilterCode, constants: &EkfConstants, code: &'a ModelCode) -> Self {
+    /// At `x0` with `P = p0`, before the first sample of a run.
+    pub fn new(filter: &'a crate::plant::kalman::FilterCode, x0: &[f64], p0: &Covariance, code: &'a ModelCode) -> Self {
         let literal = |v: &f64| T::literal(*v as f32, *v);
         BoxStep {
             filter,
             code,
-            x: constants.x0.iter().map(literal).collect(),
-            p: crate::plant::kalman::diagonal_upper(&constants.p0)
-                .iter()
-                .map(literal)
-                .collect(),
+            x: x0.iter().map(literal).collect(),
+            p: p0.upper().iter().map(literal).collect(),
             scratch: Vec::new(),
         }
     }

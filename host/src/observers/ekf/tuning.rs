@@ -26,19 +26,21 @@
 use crate::data::{DataSet, Rows};
 use crate::plant::kalman::EkfConstants;
 use crate::plant::ModelCode;
-use crate::spec::Design;
+use crate::spec::{Design, FixedFilter};
 
-use super::{box_centre, constants, estimates, state_spreads, supported, LOG_RANGE};
+use super::{constants, estimates, start, state_spreads, supported, LOG_RANGE};
 
 /// The tuned filter and how it was chosen.
 #[derive(Clone, Debug)]
 pub struct Tuned {
     /// The constants the design's EKF is emitted with.
     pub constants: EkfConstants,
-    /// `a`: `log10(Q_ii / s_i²)` per state.
+    /// `a`: `log10(Q_ii / s_i²)` per state (of the spec's `Q` where it fixes it).
     pub log_q: Vec<f64>,
-    /// `b`: `log10(P(0)_ii / s_i²)` per state.
+    /// `b`: `log10(P(0)_ii / s_i²)` per state (of the spec's `P(0)` where it fixes it).
     pub log_p0: Vec<f64>,
+    /// The constants the spec fixed (`"x0"`, `"q"`, `"p0"`): the search chose the others.
+    pub fixed: Vec<&'static str>,
     /// The score at the choice (tuning runs).
     pub cost: f64,
     /// The score at the best point of the isotropic grid, before the search.
@@ -80,6 +82,7 @@ fn score(
 struct Criterion<'a> {
     estimator: Estimator,
     design: &'a Design,
+    fixed: &'a FixedFilter,
     code: &'a ModelCode,
     centre: &'a [f64],
     spreads: &'a [f64],
@@ -91,7 +94,7 @@ struct Criterion<'a> {
 impl Criterion<'_> {
     fn at(&self, theta: &[f64]) -> f64 {
         self.count.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-        let constants = constants(self.design, self.centre, self.spreads, theta);
+        let constants = with_fixed(self.design, self.fixed, self.centre, self.spreads, theta);
         let score = score(
             self.estimator,
             self.code,
@@ -114,8 +117,8 @@ impl argmin::core::CostFunction for Criterion<'_> {
     }
 }
 
-/// Chooses the EKF's `Q` and `P(0)` on `tuning` (see the module docs). `target_spreads` normalises
-/// each target's errors.
+/// Chooses the EKF's `Q` and `P(0)` on `tuning` (see the module docs), those the spec does not fix
+/// (`[observer.ekf]`). `target_spreads` normalises each target's errors.
 pub fn tune(
     design: &Design,
     code: &ModelCode,
@@ -123,12 +126,58 @@ pub fn tune(
     learning: &DataSet,
     target_spreads: &[f64],
 ) -> Option<Tuned> {
-    tune_with(estimates, design, code, tuning, learning, target_spreads)
+    tune_with(
+        estimates,
+        &design.filters.ekf,
+        design,
+        code,
+        tuning,
+        learning,
+        target_spreads,
+    )
 }
 
-/// [`tune`] for the filter whose estimates `estimator` gives.
+/// `θ = (a, b)` of the free coordinates `theta` (`a` unless the spec fixes `Q`, then `b` unless it
+/// fixes `P(0)`), a fixed half given by the spec's covariance's place in the search's coordinates.
+fn halves(fixed: &FixedFilter, spreads: &[f64], theta: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    let n = spreads.len();
+    let mut free = theta.iter().copied();
+    let mut half = |fixed: &Option<crate::plant::Covariance>| match fixed {
+        Some(covariance) => logs(covariance, spreads),
+        None => free.by_ref().take(n).collect(),
+    };
+    (half(&fixed.q), half(&fixed.p0))
+}
+
+/// The constants of the free coordinates `theta` ([`halves`]) with the spec's `fixed` ones, started
+/// at `start`.
+fn with_fixed(design: &Design, fixed: &FixedFilter, start: &[f64], spreads: &[f64], theta: &[f64]) -> EkfConstants {
+    let (a, b) = halves(fixed, spreads, theta);
+    let mut constants = constants(design, start, spreads, &[a, b].concat());
+    if let Some(q) = &fixed.q {
+        constants.q = q.clone();
+    }
+    if let Some(p0) = &fixed.p0 {
+        constants.p0 = p0.clone();
+    }
+    constants
+}
+
+/// `log10(c_ii / s_i²)` per state: where a covariance sits in the search's coordinates.
+fn logs(covariance: &crate::plant::Covariance, spreads: &[f64]) -> Vec<f64> {
+    covariance
+        .diagonal()
+        .iter()
+        .zip(spreads)
+        .map(|(c, s)| (c / (s * s)).log10())
+        .collect()
+}
+
+/// [`tune`] for the filter whose estimates `estimator` gives, with `fixed` its constants the spec
+/// fixes (the search runs over the others; with none left, the fixed filter is scored alone).
 pub fn tune_with(
     estimator: Estimator,
+    fixed: &FixedFilter,
     design: &Design,
     code: &ModelCode,
     tuning: &DataSet,
@@ -142,12 +191,13 @@ pub fn tune_with(
         return None;
     }
     let nx = code.dimensions.states;
-    let centre = box_centre(design);
+    let centre = start(design, fixed);
     let spreads = state_spreads(learning, nx);
     let count = std::sync::atomic::AtomicU64::new(0);
     let criterion = Criterion {
         estimator,
         design,
+        fixed,
         code,
         centre: &centre,
         spreads: &spreads,
@@ -155,10 +205,22 @@ pub fn tune_with(
         target_spreads,
         count: &count,
     };
-    let isotropic =
-        |a: f64, b: f64| -> Vec<f64> { std::iter::repeat_n(a, nx).chain(std::iter::repeat_n(b, nx)).collect() };
-    let grid: Vec<Vec<f64>> = (-8..=0)
-        .flat_map(|a| (-3..=0).map(move |b| (f64::from(a), f64::from(b))))
+    // The decades of each free half: `a` over −8…0 unless `Q` is fixed, `b` over −3…0 unless `P(0)` is.
+    let (q_free, p0_free) = (fixed.q.is_none(), fixed.p0.is_none());
+    let decades = |free: bool, low: i32| -> Vec<Option<f64>> {
+        if free {
+            (low..=0).map(|d| Some(f64::from(d))).collect()
+        } else {
+            vec![None]
+        }
+    };
+    let isotropic = |a: Option<f64>, b: Option<f64>| -> Vec<f64> {
+        let half = |v: Option<f64>| v.map_or(Vec::new(), |v| vec![v; nx]);
+        [half(a), half(b)].concat()
+    };
+    let grid: Vec<Vec<f64>> = decades(q_free, -8)
+        .into_iter()
+        .flat_map(|a| decades(p0_free, -3).into_iter().map(move |b| (a, b)))
         .map(|(a, b)| isotropic(a, b))
         .collect();
     let mut scored: Vec<(Vec<f64>, f64)> = grid
@@ -174,7 +236,9 @@ pub fn tune_with(
     if grid_cost >= 1e30 {
         return None; // diverged everywhere
     }
-    let searched: Vec<(Vec<f64>, f64)> = scored[..STARTS.min(scored.len())]
+    // Nothing left to search when the spec fixes both.
+    let starts = if grid_free(q_free, p0_free) { STARTS } else { 0 };
+    let searched: Vec<(Vec<f64>, f64)> = scored[..starts.min(scored.len())]
         .par_iter()
         .map(|(theta, cost)| {
             let simplex: Vec<Vec<f64>> = std::iter::once(theta.clone())
@@ -198,20 +262,26 @@ pub fn tune_with(
             }
         })
         .collect();
-    let (theta, cost) = searched.into_iter().fold(
-        (Vec::new(), f64::INFINITY),
-        |best, c| if c.1 < best.1 { c } else { best },
-    );
+    let (theta, cost) = searched
+        .into_iter()
+        .fold(scored[0].clone(), |best, c| if c.1 < best.1 { c } else { best });
     let theta: Vec<f64> = theta.iter().map(|a| a.clamp(LOG_RANGE.0, LOG_RANGE.1)).collect();
+    let (log_q, log_p0) = halves(fixed, &spreads, &theta);
     Some(Tuned {
-        constants: constants(design, &centre, &spreads, &theta),
-        log_q: theta[..nx].to_vec(),
-        log_p0: theta[nx..].to_vec(),
+        constants: with_fixed(design, fixed, &centre, &spreads, &theta),
+        log_q,
+        log_p0,
+        fixed: fixed.fixed(),
         cost,
         grid_cost,
         evaluations: count.into_inner(),
         runs: tuning.runs.len(),
     })
+}
+
+/// Whether any constant is left to search.
+fn grid_free(q_free: bool, p0_free: bool) -> bool {
+    q_free || p0_free
 }
 
 /// The factors of the map-started EKF's start covariance tried by [`tune_started`]: half-decades from

@@ -6,9 +6,9 @@ use crate::data::{DataSet, Rows, Run};
 use crate::fit::DesignResult;
 use crate::plant::ModelCode;
 use crate::search::cost::{self, Cost};
-use crate::spec::Design;
+use crate::spec::{Design, FixedFilter};
 
-use crate::observers::figures::{Drift, Figures, ObserverFigures, Started, TRANSIENT_TIME};
+use crate::observers::figures::{Beside, Drift, Figures, ObserverFigures, Started, TRANSIENT_TIME};
 use crate::observers::restart::RestartConstants;
 use crate::observers::score::{self, errors};
 use crate::observers::{corrected, ekf};
@@ -42,6 +42,8 @@ pub struct Bench<'a> {
     pub mhe: Option<crate::observers::mhe::ChipTuned>,
     /// The box EKF from the scenario's `observer_x0` instead: that start, its RMSE per target.
     pub ekf_from_observer_x0: Option<(Vec<f64>, Vec<f64>)>,
+    /// Each filter the spec fixes constants of, with every constant tuned instead.
+    pub beside: Vec<Beside>,
     /// The map's estimates on every run.
     maps: MapRows,
 }
@@ -107,6 +109,7 @@ impl<'a> Bench<'a> {
             restart: None,
             mhe: None,
             ekf_from_observer_x0: None,
+            beside: Vec::new(),
             maps,
         }
     }
@@ -115,6 +118,48 @@ impl<'a> Bench<'a> {
     pub fn windows(&self) -> impl Fn(&Run) -> std::ops::Range<usize> + Copy {
         let first = self.design.map.horizon - 1;
         move |run: &Run| first..run.targets.len()
+    }
+
+    /// The tuning runs from random starts: what the box filters (`ekf_box`, `ukf_box`) are tuned on.
+    pub fn random_tuning(&self) -> DataSet {
+        let tuning = &self.result.runs.tuning;
+        DataSet {
+            runs: tuning.runs[..self.design.tuning.trajectories].to_vec(),
+            horizon: tuning.horizon,
+        }
+    }
+
+    /// A box filter (its estimates by `estimator`) tuned on [`Bench::random_tuning`] but for the
+    /// constants the spec fixes (`fixed`), and its figures by `judge`. Where the spec fixes any, the
+    /// same filter with every constant tuned is judged too, into [`Bench::beside`].
+    pub fn box_filter(
+        &mut self,
+        estimator: ekf::Estimator,
+        fixed: &FixedFilter,
+        judge: &dyn Fn(&Self, &ekf::Tuned) -> ObserverFigures,
+    ) -> Option<(ekf::Tuned, ObserverFigures)> {
+        let random = self.random_tuning();
+        let learning = &self.result.runs.learning;
+        let tune = |fixed: &FixedFilter| {
+            ekf::tune_with(
+                estimator,
+                fixed,
+                self.design,
+                self.code,
+                &random,
+                learning,
+                &self.spreads,
+            )
+        };
+        let tuned = tune(fixed)?;
+        let figures = judge(self, &tuned);
+        if fixed.any() {
+            if let Some(all) = tune(&FixedFilter::default()) {
+                let figures = judge(self, &all);
+                self.beside.push(Beside { tuned: all, figures });
+            }
+        }
+        Some((tuned, figures))
     }
 
     /// The tuning runs' map estimates, run by run.

@@ -4,7 +4,6 @@
 //! all the tuning runs, its tail from the scenario's start).
 
 use super::{Bench, Constants, Kind, Needs};
-use crate::data::DataSet;
 use crate::observers::score::errors;
 use crate::observers::{ekf, ObserverFigures};
 use crate::search::cost;
@@ -29,24 +28,22 @@ pub const KIND: Kind = Kind {
     tune,
 };
 
-/// Tunes the EKF on the random tuning runs, judges it from the box centre everywhere (the scenario
-/// included: where `ekf()` starts on the chip), and runs it once more from the scenario's
-/// `observer_x0`, the paper's comparison.
+/// Tunes the EKF on the random tuning runs (but the constants the spec fixes), judges it from its
+/// start everywhere (the scenario included: where `ekf()` starts on the chip), and runs it once more
+/// from the scenario's `observer_x0`, the paper's comparison.
 fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
-    let (design, code, runs) = (bench.design, bench.code, &bench.result.runs);
-    let random = DataSet {
-        runs: runs.tuning.runs[..design.tuning.trajectories].to_vec(),
-        horizon: runs.tuning.horizon,
+    let (design, code) = (bench.design, bench.code);
+    let judge = |bench: &Bench<'_>, tuned: &ekf::Tuned| {
+        let filter = crate::plant::kalman::filter_code(code, &tuned.constants);
+        bench.judge("ekf_box", cost::of_ekf(&filter), &|run, _| {
+            ekf::estimate_run(code, &tuned.constants, &tuned.constants.x0, run).expect("size checked by tune")
+        })
     };
-    let tuned = ekf::tune(design, code, &random, &runs.learning, &bench.spreads)?;
-    let centre = ekf::box_centre(design);
-    let filter = crate::plant::kalman::filter_code(code, &tuned.constants);
-    let figures = bench.judge("ekf_box", cost::of_ekf(&filter), &|run, _| {
-        ekf::estimate_run(code, &tuned.constants, &centre, run).expect("size checked by tune")
-    });
+    let (tuned, figures) = bench.box_filter(ekf::estimates, &design.filters.ekf, &judge)?;
+    let scenario = &bench.result.runs.scenario;
     if let Some(x0) = design.scenario.as_ref().and_then(|s| s.observer_x0.clone()) {
-        let rows = ekf::estimate_run(code, &tuned.constants, &x0, &runs.scenario).expect("size checked by tune");
-        let one = std::slice::from_ref(&runs.scenario);
+        let rows = ekf::estimate_run(code, &tuned.constants, &x0, scenario).expect("size checked by tune");
+        let one = std::slice::from_ref(scenario);
         let rmse = (0..design.targets.len())
             .map(|t| errors(one, std::slice::from_ref(&rows), t, bench.windows()).0)
             .collect();

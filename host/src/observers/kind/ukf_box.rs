@@ -3,7 +3,6 @@
 //! ([`ukf::tune`]); judged from the box centre everywhere, as `ekf()` is.
 
 use super::{Bench, Constants, Kind, Needs};
-use crate::data::DataSet;
 use crate::observers::{ekf, ukf, ObserverFigures};
 use crate::plant::unscented::unscented_code;
 use crate::search::cost;
@@ -28,19 +27,17 @@ pub const KIND: Kind = Kind {
     tune,
 };
 
-/// Tunes the UKF on the random tuning runs (as the box EKF), then judges it from the box centre.
+/// Tunes the UKF on the random tuning runs (as the box EKF, but the constants the spec fixes), then
+/// judges it from its start.
 fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
-    let (design, code, runs) = (bench.design, bench.code, &bench.result.runs);
-    let random = DataSet {
-        runs: runs.tuning.runs[..design.tuning.trajectories].to_vec(),
-        horizon: runs.tuning.horizon,
+    let code = bench.code;
+    let judge = |bench: &Bench<'_>, tuned: &ekf::Tuned| {
+        let filter = unscented_code(code, &tuned.constants);
+        bench.judge("ukf_box", cost::of_ukf(&filter), &|run, _| {
+            ukf::estimate_run(code, &filter, &tuned.constants.x0, &tuned.constants.p0, run)
+        })
     };
-    let tuned = ukf::tune(design, code, &random, &runs.learning, &bench.spreads)?;
-    let centre = ekf::box_centre(design);
-    let filter = unscented_code(code, &tuned.constants);
-    let figures = bench.judge("ukf_box", cost::of_ukf(&filter), &|run, _| {
-        ukf::estimate_run(code, &filter, &centre, &tuned.constants.p0, run)
-    });
+    let (tuned, figures) = bench.box_filter(ukf::estimates, &bench.design.filters.ukf, &judge)?;
     bench.ukf = Some(tuned);
     Some(figures)
 }

@@ -8,7 +8,6 @@ use super::*;
 use crate::data::Runs;
 use crate::observers::ekf::box_centre;
 use crate::observers::score::errors;
-use crate::plant::kalman::diagonal_upper;
 
 fn load(name: &str) -> (Design, ModelCode) {
     let design = crate::spec::load(&Path::new("specs").join(name)).unwrap();
@@ -138,8 +137,8 @@ fn with_bounds_the_update_uses_the_projected_points_spread() {
     let runs = Runs::simulate(&design, 0).unwrap();
     let constants = EkfConstants {
         x0: box_centre(&design),
-        p0: vec![0.1, 1.0, 0.01],
-        q: vec![1e-3, 1e-2, 1e-4],
+        p0: crate::plant::Covariance::Diagonal(vec![0.1, 1.0, 0.01]),
+        q: crate::plant::Covariance::Diagonal(vec![1e-3, 1e-2, 1e-4]),
         r: vec![0.1, 20.0],
         substeps: 1,
         h: 0.2,
@@ -148,7 +147,7 @@ fn with_bounds_the_update_uses_the_projected_points_spread() {
     let mut scratch = Vec::new();
     for index in [2, 23, 65] {
         let run = &runs.validation.runs[index];
-        let (mut x, mut p) = (constants.x0.clone(), diagonal_upper(&constants.p0));
+        let (mut x, mut p) = (constants.x0.clone(), constants.p0.upper());
         let mut worst = 0.0_f64;
         for (k, (y, u)) in run.measurements.iter().zip(run.inputs.iter()).enumerate() {
             let (estimate, next, covariance) = filter.run(&x, &p, Some(y), u, &mut scratch);

@@ -9,15 +9,26 @@ use firmware::{Ekf, Rk4};
 use super::*;
 use crate::observers::ekf::Stepped;
 use crate::plant::program::Op;
-use crate::plant::Compiled;
+use crate::plant::{Compiled, Covariance};
 use crate::spec::ast::Binary;
 
-fn constants(code: &ModelCode, substeps: usize, r: &[f64]) -> EkfConstants {
+/// Constants with `Q` diagonal, or full (`full_q`: the same diagonal, every other entry 2e-4, as a
+/// spec may fix it).
+fn constants(code: &ModelCode, substeps: usize, r: &[f64], full_q: bool) -> EkfConstants {
     let n = code.dimensions.states;
+    let diagonal: Vec<f64> = (0..n).map(|i| 1e-3 * (i + 1) as f64).collect();
+    let q = match full_q {
+        true => Covariance::Full(
+            (0..n)
+                .map(|i| (0..n).map(|j| if i == j { diagonal[i] } else { 2e-4 }).collect())
+                .collect(),
+        ),
+        false => Covariance::Diagonal(diagonal),
+    };
     EkfConstants {
         x0: vec![0.0; n],
-        p0: vec![1.0; n],
-        q: (0..n).map(|i| 1e-3 * (i + 1) as f64).collect(),
+        p0: Covariance::Diagonal(vec![1.0; n]),
+        q,
         r: r.to_vec(),
         substeps,
         h: 0.1 / substeps as f64,
@@ -57,18 +68,13 @@ fn compare<const NX: usize, const NY: usize, const NU: usize>(
         .collect();
     let (estimate, next, covariance) = written.run(&x, &triangle, y.as_ref().map(|y| &y[..]), &u, &mut Vec::new());
 
-    let diagonal = |v: &[f64]| std::array::from_fn(|i| std::array::from_fn(|j| if i == j { v[i] } else { 0.0 }));
+    let full = |c: &Covariance| std::array::from_fn(|i| std::array::from_fn(|j| c.entry(i, j)));
     let plant = Stepped {
         step: Rk4::new(Compiled::new(code), constants.h),
         substeps: constants.substeps,
     };
-    let mut library: Ekf<f64, _, NX, NY, NU> = Ekf::new(
-        plant,
-        x,
-        p,
-        diagonal(&constants.q),
-        std::array::from_fn(|i| constants.r[i]),
-    );
+    let mut library: Ekf<f64, _, NX, NY, NU> =
+        Ekf::new(plant, x, p, full(&constants.q), std::array::from_fn(|i| constants.r[i]));
     let pushed = library.push(&y.unwrap_or([f64::NAN; NY]), &u);
     let mut worst = gap(&next, &library.state());
     let full = library.covariance();
@@ -90,8 +96,9 @@ fn the_written_out_sample_is_the_library_filters_on_every_construct() {
     let mut worst = 0.0_f64;
     for (k, (x, u)) in crate::plant::tests::points().take(100).enumerate() {
         let y = [(k as f64 * 0.3).sin(), (k as f64 * 0.7).cos()];
-        for substeps in [1, 3] {
-            let c = constants(&code, substeps, &[0.1, 0.2]);
+        // `Q` diagonal, as tuned, and full, as a spec may fix it.
+        for (substeps, full_q) in [(1, false), (3, false), (1, true), (3, true)] {
+            let c = constants(&code, substeps, &[0.1, 0.2], full_q);
             worst = worst.max(compare::<3, 2, 1>(&code, &c, x, covariance(k as f64), Some(y), u));
             worst = worst.max(compare::<3, 2, 1>(&code, &c, x, covariance(k as f64), None, u));
         }
@@ -105,7 +112,7 @@ fn the_written_out_sample_is_the_library_filters_on_every_construct() {
 fn the_written_out_sample_is_the_library_filters_on_example_1() {
     let design = crate::spec::load(Path::new("specs/vanderpol.toml")).unwrap();
     let code = ModelCode::new(&design).unwrap();
-    let c = constants(&code, 1, &[0.2]);
+    let c = constants(&code, 1, &[0.2], false);
     let mut worst = 0.0_f64;
     for k in 0..200 {
         let t = k as f64;
@@ -128,7 +135,7 @@ fn a_noise_free_output_without_sensitivity_leaves_the_estimate_as_the_library_do
     // `continue`), where a plain division would give NaN.
     let design = crate::spec::load(Path::new("specs/vanderpol.toml")).unwrap();
     let code = ModelCode::new(&design).unwrap();
-    let c = constants(&code, 1, &[0.0]);
+    let c = constants(&code, 1, &[0.0], false);
     let gap = compare::<2, 1, 0>(&code, &c, [0.3, -0.2], [[0.0; 2]; 2], Some([1.0]), []);
     assert!(gap == 0.0, "{gap:e}");
     let written = filter_code(&code, &c);
@@ -143,7 +150,7 @@ fn a_noise_free_output_without_sensitivity_leaves_the_estimate_as_the_library_do
 fn structural_zeros_and_ones_cost_nothing() {
     let design = crate::spec::load(Path::new("specs/vanderpol.toml")).unwrap();
     let code = ModelCode::new(&design).unwrap();
-    let written = filter_code(&code, &constants(&code, 1, &[0.2]));
+    let written = filter_code(&code, &constants(&code, 1, &[0.2], false));
     let program = &written.measured;
     let number = |i: usize| match program.ops[i] {
         Op::Number(v) => Some(v),

@@ -12,16 +12,17 @@ use nalgebra::{SMatrix, SVector};
 use super::*;
 use crate::observers::ekf::Stepped;
 use crate::plant::kalman::filter_code;
-use crate::plant::Compiled;
+use crate::plant::{Compiled, Covariance};
 
 type Matrix2 = SMatrix<f64, 2, 2>;
 type Vector2 = SVector<f64, 2>;
 
+/// `Q` full, as a spec may fix it (the tuned one is diagonal, a special case).
 fn constants(substeps: usize) -> EkfConstants {
     EkfConstants {
         x0: vec![0.0; 2],
-        p0: vec![1.0; 2],
-        q: vec![1e-3, 2e-3],
+        p0: Covariance::Diagonal(vec![1.0; 2]),
+        q: Covariance::Full(vec![vec![1e-3, 4e-4], vec![4e-4, 2e-3]]),
         r: vec![0.2],
         substeps,
         h: 0.1 / substeps as f64,
@@ -90,7 +91,7 @@ fn reference(
         .enumerate()
         .map(|(i, m)| w(i, COVARIANCE0) * (m - next) * (m - next).transpose())
         .sum();
-    covariance += Matrix2::from_diagonal(&Vector2::new(constants.q[0], constants.q[1]));
+    covariance += Matrix2::from_fn(|i, j| constants.q.entry(i, j));
     (estimate, next, covariance)
 }
 
