@@ -13,7 +13,8 @@ fn estimate_vanderpol(input: &Path, output: &Path) -> Output {
     estimate_kind("map", input, output)
 }
 
-/// `host estimate --design vanderpol --input IN --output OUT --kind KIND`.
+/// `host estimate --design vanderpol --input IN --output OUT --kind KIND`, by the tables `gen` would
+/// save ([`saved_tables`]: fitted and tuned once per test binary, not once per call).
 fn estimate_kind(kind: &str, input: &Path, output: &Path) -> Output {
     host(&[
         "estimate",
@@ -25,7 +26,37 @@ fn estimate_kind(kind: &str, input: &Path, output: &Path) -> Output {
         s(output),
         "--kind",
         kind,
+        "--tables",
+        s(saved_tables()),
     ])
+}
+
+/// Example 1 fitted and its observers compared, once per test binary.
+fn compared() -> &'static (host::spec::Design, host::fit::DesignResult, host::observers::Comparison) {
+    static COMPARED: std::sync::OnceLock<(host::spec::Design, host::fit::DesignResult, host::observers::Comparison)> =
+        std::sync::OnceLock::new();
+    COMPARED.get_or_init(|| {
+        let design = host::spec::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml")).unwrap();
+        let result = host::generate::simulate_and_fit(&design, &indicatif::ProgressBar::hidden()).unwrap();
+        let code = host::plant::ModelCode::new(&design).unwrap();
+        let comparison = host::observers::compare(&design, &result, &code).unwrap();
+        (design, result, comparison)
+    })
+}
+
+/// Example 1's tables as `gen` saves them (`design.json`), from [`compared`].
+fn saved_tables() -> &'static Path {
+    static SAVED: std::sync::OnceLock<PathBuf> = std::sync::OnceLock::new();
+    SAVED.get_or_init(|| {
+        let (design, result, comparison) = compared();
+        let path = scratch("saved-tables").join("design.json");
+        std::fs::write(
+            &path,
+            host::tables::Tables::new(design, result, Some(comparison)).to_json(),
+        )
+        .unwrap();
+        path
+    })
 }
 
 fn scratch(name: &str) -> PathBuf {
@@ -436,11 +467,10 @@ fn the_chosen_observer_on_the_recorded_scenario_is_the_reports() {
     assert!(host(&["simulate", "--design", "vanderpol", "--output", s(&run)])
         .status
         .success());
-    let design = host::spec::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml")).unwrap();
-    let result = host::generate::simulate_and_fit(&design, &indicatif::ProgressBar::hidden()).unwrap();
-    let code = host::plant::ModelCode::new(&design).unwrap();
-    let comparison = host::observers::compare(&design, &result, &code).unwrap();
-    // In the arithmetic the report judges the chosen kind in (the UKF's: f32, the chip's).
+    let (_, _, comparison) = compared();
+    // In the arithmetic the report judges the chosen kind in (the UKF's: f32, the chip's). Without
+    // `--tables`: `estimate` fits and tunes for the call (no checkout's tables are this binary's),
+    // and must give the bits this process computed.
     let precision = match host::observers::kind::of(comparison.chosen.0).judged_in {
         host::recording::Precision::F32 => "f32",
         host::recording::Precision::F64 => "f64",

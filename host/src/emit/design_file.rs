@@ -173,20 +173,7 @@ pub fn design_file(
 ) -> Result<String, EmitError> {
     let list = name_list;
     let outputs: Vec<String> = design.model.outputs.iter().map(|o| o.name.clone()).collect();
-    // The chip holds every sample in f32: data beyond its range cannot be what the map is checked on.
-    let largest = result
-        .runs
-        .validation
-        .runs
-        .iter()
-        .chain(std::iter::once(&result.runs.scenario))
-        .flat_map(|run| run.measurements.iter().chain(&run.inputs).flatten())
-        .map(|v| v.abs())
-        .filter(|v| v.is_finite())
-        .fold(0.0, f64::max);
-    if largest > f64::from(f32::MAX) {
-        return Err(EmitError::BeyondF32 { value: largest });
-    }
+    within_f32(result)?;
     let mut targets: Vec<TargetTables> = Vec::new();
     for t in &result.targets {
         let target = &design.targets[t.index];
@@ -327,4 +314,23 @@ pub fn design_file(
         }),
     };
     file.render().map(|text| text + "\n").map_err(EmitError::from)
+}
+
+/// The chip holds every sample in f32: validation or scenario data beyond its range cannot be what
+/// the map is checked on ([`EmitError::BeyondF32`]).
+pub fn within_f32(result: &DesignResult) -> Result<(), EmitError> {
+    let largest = result
+        .runs
+        .validation
+        .runs
+        .iter()
+        .chain(std::iter::once(&result.runs.scenario))
+        .flat_map(|run| run.measurements.iter().chain(&run.inputs).flatten())
+        .map(|v| v.abs())
+        .filter(|v| v.is_finite())
+        .fold(0.0, f64::max);
+    if largest > f64::from(f32::MAX) {
+        return Err(EmitError::BeyondF32 { value: largest });
+    }
+    Ok(())
 }

@@ -25,7 +25,7 @@ pub mod precision;
 mod recorded;
 pub mod terms;
 
-pub use design_file::design_file;
+pub use design_file::{design_file, within_f32};
 pub use doc_text::name_list;
 pub(crate) use doc_text::{doc_code, doc_prose};
 pub use families::{families, FamilyError, FamilyModule, Member};

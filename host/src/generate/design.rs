@@ -135,14 +135,16 @@ pub fn design_source(
     progress: &ProgressBar,
 ) -> Result<(crate::observers::Comparison, String, emit::c::CSource, Option<Fixed>), GenerateError> {
     let code = model_code(design)?;
-    let fixed = fixed_point(design, result)?;
-    progress.set_message(format!("{}: tuning the EKF", design.name));
-    let comparison = crate::observers::compare(design, result, &code)?;
     let emit_error = |source| GenerateError::Emit {
         file: spec.to_owned(),
         design: design.name.clone(),
         source,
     };
+    // Data the chip's f32 cannot hold is refused before minutes of tuning, not after.
+    emit::within_f32(result).map_err(emit_error)?;
+    let fixed = fixed_point(design, result)?;
+    progress.set_message(format!("{}: tuning the EKF", design.name));
+    let comparison = crate::observers::compare(design, result, &code)?;
     let state_targets = crate::observers::corrected::state_targets(design).ok();
     let instructions: Vec<(&'static str, f64)> =
         comparison.observers.iter().map(|o| (o.kind, o.instructions)).collect();
