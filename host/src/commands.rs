@@ -102,7 +102,7 @@ pub struct Simulation {
 
 /// Simulates one run of `design` and writes it to `output` as CSV (time, states, outputs, inputs).
 pub fn simulate(design: &Design, run: &Simulation, output: &Path) -> Result<(), CommandError> {
-    let scenario = design.scenario.as_ref();
+    let scenario = design.scenario();
     let missing = |option| CommandError::NoScenario {
         design: design.name.clone(),
         option,

@@ -299,3 +299,78 @@ fn measurements_beyond_f32_are_blamed_on_their_scale_not_on_beta() {
         "{error}"
     );
 }
+
+#[test]
+fn every_observer_is_judged_on_every_named_scenario_and_auto_tunes_on_each() {
+    // Example 1 with three scenarios: the paper's, the same again under another name (its figures
+    // must be the paper's to the bit: the index of a scenario, not its place, picks its run), and a
+    // start-up elsewhere in the box, without an observer start.
+    let scratch = Scratch::empty("scenarios");
+    let spec = scratch.spec(
+        "vanderpol",
+        "vanderpol.toml",
+        &[
+            ("\ntrajectories = 64", "\ntrajectories = 8"),
+            ("[tuning]", "[tuning]\ntrajectories = 8"),
+            ("[scenario]", "[[scenario]]\nname = \"paper\""),
+            (
+                "kind = \"auto\"",
+                "kind = \"auto\"\n\n[[scenario]]\nname = \"again\"\nx0 = { x1 = 2.0, x2 = 0.5 }\nobserver_x0 = { x1 = 1.0, x2 = 0.7 }\nsamples = 101\nseed = 7\n\n[[scenario]]\nname = \"start_up\"\nx0 = { x1 = -1.5, x2 = 3.0 }\nsamples = 60\nseed = 11",
+            ),
+        ],
+    );
+    let design = host::spec::load(&spec).unwrap();
+    let names: Vec<&str> = design.scenarios.iter().map(|s| s.name.as_str()).collect();
+    assert_eq!(names, ["paper", "again", "start_up"]);
+    let emitted = generate::emit_design(design, &spec, None, &ProgressBar::hidden()).unwrap();
+    let (design, result, comparison) = (&emitted.design, &emitted.result, &emitted.comparison);
+    // The tuning runs: 8 from random starts, then 16 from each scenario's start.
+    let tuning = &result.runs.tuning.runs;
+    assert_eq!(tuning.len(), 8 + 3 * host::data::SCENARIO_TUNING_RUNS);
+    for (i, scenario) in design.scenarios.iter().enumerate() {
+        let first = 8 + i * host::data::SCENARIO_TUNING_RUNS;
+        for run in &tuning[first..first + host::data::SCENARIO_TUNING_RUNS] {
+            assert_eq!(run.states[0], scenario.x0[..], "{}", scenario.name);
+            assert_eq!(run.states.len(), scenario.samples);
+        }
+    }
+    // Each scenario's tuning runs have noise of their own, even where two scenarios start alike.
+    assert_ne!(tuning[8].measurements[0], tuning[8 + 16].measurements[0]);
+    for o in &comparison.observers {
+        for f in &o.targets {
+            assert_eq!(f.scenarios.len(), 3, "{}", o.kind);
+            // The first scenario is the headline one: the same figures by both routes.
+            assert_eq!(f.scenarios[0], (f.rmse_scenario, f.rmse_transient), "{}", o.kind);
+            let bits = |(a, b): (f64, f64)| (a.to_bits(), b.to_bits());
+            assert_eq!(
+                bits(f.scenarios[1]),
+                bits(f.scenarios[0]),
+                "{}: `again` is `paper`",
+                o.kind
+            );
+            assert_ne!(f.scenarios[2], f.scenarios[0], "{}", o.kind);
+        }
+    }
+    // The box filters from the observer start the first two name (not the third, which names none).
+    let from: Vec<(&str, usize)> = comparison
+        .from_observer_start
+        .iter()
+        .map(|f| (f.kind, f.scenario))
+        .collect();
+    assert_eq!(from, [("ekf_box", 0), ("ekf_box", 1), ("ukf_box", 0), ("ukf_box", 1)]);
+    let report = host::report::report(design, result, comparison);
+    let markdown = host::report::markdown(&report);
+    for line in [
+        "## Scenarios",
+        "### `paper`: x(0) = (2, 0.5), observer start (1, 0.7), 101 samples, seed 7",
+        "### `start_up`: x(0) = (-1.5, 3), 60 samples, seed 11",
+        "| ekf_box from the observer start |",
+        "| other scenarios | 2 | 60–101 | 7, 11 |",
+    ] {
+        assert!(markdown.contains(line), "report.md lacks {line:?}:\n{markdown}");
+    }
+    // The paper's comparison, the EKF from the paper's x̂(0), is the first scenario's entry.
+    let (_, rmse) = report.ekf_from_observer_x0.as_ref().unwrap();
+    let ekf = &comparison.from_observer_start[0];
+    assert_eq!(rmse, &ekf.targets.iter().map(|t| t.0).collect::<Vec<_>>());
+}

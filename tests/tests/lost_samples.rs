@@ -16,7 +16,7 @@ const FROM: usize = 80;
 /// The scenario's states and outputs, 300 samples.
 fn scenario() -> (Vec<Vec<f64>>, Vec<f32>) {
     let mut design = host::spec::load(&integration_tests::specs_folder().join("vanderpol.toml")).unwrap();
-    design.scenario.as_mut().unwrap().samples = 300;
+    design.scenarios[0].samples = 300;
     let run = host::data::scenario_run(&design, &design.model, "scenario")
         .unwrap()
         .unwrap();

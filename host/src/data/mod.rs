@@ -143,7 +143,7 @@ pub const SCENARIO_DRAWS: usize = 50;
 /// noise realisation; these give the scenario's figure pooled and as its tail. `None` without a
 /// `[scenario]`.
 pub fn scenario_draws(design: &Design) -> Result<Option<DataSet>, SpecError> {
-    let Some(scenario) = &design.scenario else {
+    let Some(scenario) = design.scenario() else {
         return Ok(None);
     };
     let mut rng = ChaCha8Rng::seed_from_u64(scenario.seed);
@@ -169,16 +169,16 @@ pub fn scenario_draws(design: &Design) -> Result<Option<DataSet>, SpecError> {
 /// Runs from the scenario's initial state in the tuning set ([`tuning_set`]).
 pub const SCENARIO_TUNING_RUNS: usize = 16;
 
-/// The tuning set: runs drawn as the validation set's, from `[tuning]`'s own seed; then, when the
-/// spec declares a `[scenario]`, [`SCENARIO_TUNING_RUNS`] more from the scenario's initial state
-/// (its samples, other inputs, noise and drawn plants than the reported scenario's, from a stream of
-/// the tuning seed), so that every tuning criterion and `auto` see the starts the spec names, where
-/// a filter from the box centre may converge slowly, and not only the random ones.
+/// The tuning set: runs drawn as the validation set's, from `[tuning]`'s own seed; then, for every
+/// scenario the spec declares, [`SCENARIO_TUNING_RUNS`] more from its initial state (its samples,
+/// other inputs, noise and drawn plants than the reported scenario's, from stream `1 + i` of the
+/// tuning seed for scenario `i`), so that every tuning criterion and `auto` see the starts the spec
+/// names, where a filter from the box centre may converge slowly, and not only the random ones.
 pub fn tuning_set(design: &Design) -> Result<DataSet, SpecError> {
     let mut set = random_runs(design, &design.tuning, "tuning", None)?;
-    if let Some(scenario) = &design.scenario {
+    for (i, scenario) in design.scenarios.iter().enumerate() {
         let mut rng = ChaCha8Rng::seed_from_u64(design.tuning.seed);
-        rng.set_stream(1); // the random runs read stream 0
+        rng.set_stream(1 + i as u64); // the random runs read stream 0
         for _ in 0..SCENARIO_TUNING_RUNS {
             let drawn = uncertain::draw_plant(&design.model, &mut rng);
             let plant = drawn.as_ref().unwrap_or(&design.model);
@@ -251,18 +251,29 @@ pub fn simulate_run(
     simulate_plant(design, &design.model, x0, samples, rng, set)
 }
 
-/// The spec's `[scenario]` run on `plant` (the nominal model, or another plant of its parameters):
-/// its initial state, samples and seed, the noise and inputs drawn as [`simulate_run`] draws them, so
-/// that two plants get the same ones. `None` without a `[scenario]`.
+/// The spec's first scenario's run on `plant` (the nominal model, or another plant of its
+/// parameters): its initial state, samples and seed, the noise and inputs drawn as [`simulate_run`]
+/// draws them, so that two plants get the same ones. `None` without a `[scenario]`.
 pub fn scenario_run(design: &Design, plant: &Model, set: &str) -> Result<Option<Run>, SpecError> {
     design
-        .scenario
-        .as_ref()
-        .map(|s| {
-            let mut rng = ChaCha8Rng::seed_from_u64(s.seed);
-            simulate_plant(design, plant, &s.x0, s.samples, &mut rng, set)
-        })
+        .scenario()
+        .map(|s| one_scenario(design, s, plant, set))
         .transpose()
+}
+
+/// Every scenario's run on the nominal model, in spec order (see [`scenario_run`]).
+pub fn scenario_runs(design: &Design) -> Result<Vec<Run>, SpecError> {
+    design
+        .scenarios
+        .iter()
+        .map(|s| one_scenario(design, s, &design.model, "scenario"))
+        .collect()
+}
+
+/// Scenario `s` on `plant`, from its own seed.
+fn one_scenario(design: &Design, s: &crate::spec::Scenario, plant: &Model, set: &str) -> Result<Run, SpecError> {
+    let mut rng = ChaCha8Rng::seed_from_u64(s.seed);
+    simulate_plant(design, plant, &s.x0, s.samples, &mut rng, set)
 }
 
 /// [`simulate_run`] on the plant `plant` (the design's model with other parameter values, see
@@ -504,7 +515,7 @@ mod tests {
         let design =
             crate::spec::parse(Path::new("vanderpol.toml"), include_str!("../../specs/vanderpol.toml")).unwrap();
         let draws = scenario_draws(&design).unwrap().expect("Example 1 has a scenario");
-        let scenario = design.scenario.as_ref().unwrap();
+        let scenario = design.scenario().unwrap();
         assert_eq!(draws.runs.len(), SCENARIO_DRAWS);
         let tuning = tuning_set(&design).unwrap();
         let mut rng = ChaCha8Rng::seed_from_u64(scenario.seed);
@@ -577,14 +588,14 @@ mod tests {
             let mut prints: Vec<u64> = sets.iter().map(fingerprint).collect();
             assert_eq!(
                 from_scenario.len(),
-                if design.scenario.is_some() {
+                if design.scenario().is_some() {
                     SCENARIO_TUNING_RUNS
                 } else {
                     0
                 },
                 "{name}"
             );
-            if let Some(s) = &design.scenario {
+            if let Some(s) = design.scenario() {
                 let mut rng = ChaCha8Rng::seed_from_u64(s.seed);
                 let run = simulate_run(&design, &s.x0, s.samples, &mut rng, "scenario").unwrap();
                 // Each starts where the scenario does, with noise of its own (not the scenario's).

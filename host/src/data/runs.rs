@@ -4,7 +4,9 @@
 //! each figure. Each set has its own seed, so no figure is ever computed on runs a constant was
 //! chosen on.
 
-use super::{learning_set, scenario_draws, scenario_run, tuning_set, uncertain, validation_set, DataSet, Run};
+use super::{
+    learning_set, scenario_draws, scenario_run, scenario_runs, tuning_set, uncertain, validation_set, DataSet, Run,
+};
 use crate::spec::{Design, SpecError};
 
 /// A design's runs, one field per set (see each for what it is used for).
@@ -19,6 +21,9 @@ pub struct Runs {
     /// The scenario: the spec's `[scenario]` ([`scenario_run`]), else the first validation run; the
     /// `scenario` and `transient` figures and the estimation figure.
     pub scenario: Run,
+    /// Every scenario's run ([`scenario_runs`]), in spec order (the first is [`Runs::scenario`]'s):
+    /// the per-scenario figures.
+    pub scenarios: Vec<Run>,
     /// The scenario's noise draws ([`scenario_draws`]); `None` without a `[scenario]`.
     pub scenario_draws: Option<DataSet>,
     /// Long runs on the nominal plant ([`uncertain::long_set`]): the drift figures.
@@ -68,6 +73,7 @@ impl Runs {
             tuning,
             scenario,
             validation,
+            scenarios: scenario_runs(design)?,
             scenario_draws: scenario_draws(design)?,
             long: uncertain::long_set(design, None, long_samples)?,
             mismatch: MismatchRuns::simulate(design, long_samples)?,

@@ -60,7 +60,7 @@ pub fn free_seed(design: &Design, index: usize) -> u64 {
         Some(design.learning.seed),
         Some(design.validation.seed),
         Some(design.tuning.seed),
-        design.scenario.as_ref().map(|s| s.seed),
+        design.scenario().map(|s| s.seed),
     ];
     (1..)
         .map(|k: u64| design.validation.seed.wrapping_add(1000 * k))

@@ -21,6 +21,9 @@ pub struct Figures {
     pub rmse_scenario: f64,
     /// RMSE over the scenario's first [`TRANSIENT_TIME`] time units after the map's first estimate.
     pub rmse_transient: f64,
+    /// Per scenario of the spec, in its order (the first is `rmse_scenario`'s): the RMSE over its
+    /// windows and over its transient, every observer as the chip starts it.
+    pub scenarios: Vec<(f64, f64)>,
     /// RMSE over the windows of the scenario's noise draws (`data::scenario_draws`), and the 95th
     /// percentile over draws of each draw's RMSE; `None` without a scenario.
     pub scenario_draws: Option<(f64, f64)>,
@@ -86,6 +89,18 @@ pub struct ObserverFigures {
     pub mismatch_scenario: Option<Rows>,
 }
 
+/// A filter started at a scenario's `observer_x0` (the observer's start the scenario names) instead
+/// of its own start: its figures on that scenario.
+#[derive(Clone, Debug)]
+pub struct FromObserverStart {
+    /// The filter's kind (`ekf_box`, `ukf_box`).
+    pub kind: &'static str,
+    /// The scenario (index in the spec's order).
+    pub scenario: usize,
+    /// Per target: the RMSE over the scenario's windows and over its transient.
+    pub targets: Vec<(f64, f64)>,
+}
+
 /// A filter the spec fixes constants of (`[observer.ekf]`, `[observer.ukf]`), tuned instead in
 /// every constant by the same search on the same runs: what the report shows beside the spec's.
 #[derive(Clone, Debug)]
@@ -121,6 +136,8 @@ pub struct Comparison {
     pub ukf: Option<ekf::Tuned>,
     /// Each filter the spec fixes constants of, with every constant tuned instead.
     pub beside: Vec<Beside>,
+    /// The box filters from each scenario's `observer_x0`, where it gives one.
+    pub from_observer_start: Vec<FromObserverStart>,
     /// The tuned model-corrected map, or why the design cannot have one.
     pub corrected: Result<corrected::Tuned, String>,
     /// The EKF started by the map; `None` without an EKF or the full state.
@@ -132,9 +149,6 @@ pub struct Comparison {
     pub mhe: Option<super::mhe::ChipTuned>,
     /// What `observer()` is, and why.
     pub chosen: (ObserverKind, String),
-    /// The EKF from the box centre started instead at the scenario's `observer_x0` (the paper's
-    /// `x̂(0)`): that start, and its RMSE per target over the scenario's windows.
-    pub ekf_from_observer_x0: Option<(Vec<f64>, Vec<f64>)>,
     /// Largest one-sample difference between the chip's model (`chip_substeps`) and the learning
     /// simulation's (`substeps`) over the validation states, per state, relative to its spread.
     pub chip_model_error: Vec<f64>,

@@ -20,7 +20,7 @@ pub mod started;
 pub mod ukf;
 
 pub use choice::{check_before_fit, choose};
-pub use figures::{Beside, Comparison, Drift, Figures, ObserverFigures, Started, TRANSIENT_TIME};
+pub use figures::{Beside, Comparison, Drift, Figures, FromObserverStart, ObserverFigures, Started, TRANSIENT_TIME};
 pub use kind::map_estimates;
 pub use score::CHEAPER_WITHIN;
 
@@ -49,9 +49,9 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         ekf: bench.ekf,
         ukf: bench.ukf,
         beside: bench.beside,
+        from_observer_start: bench.from_observer_start,
         corrected: bench.corrected,
         chip_model_error: chip_model_error(design, result),
-        ekf_from_observer_x0: bench.ekf_from_observer_x0,
     })
 }
 

@@ -72,7 +72,13 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             x0: t.constants.x0.clone(),
             fixed: t.fixed.clone(),
         }),
-        ekf_from_observer_x0: comparison.ekf_from_observer_x0.clone(),
+        ekf_from_observer_x0: design.scenario().and_then(|s| s.observer_x0.clone()).and_then(|x0| {
+            let from = comparison
+                .from_observer_start
+                .iter()
+                .find(|f| f.kind == "ekf_box" && f.scenario == 0)?;
+            Some((x0, from.targets.iter().map(|(rmse, _)| *rmse).collect()))
+        }),
         observer: comparison.chosen.clone(),
         corrected_tuning: match &comparison.corrected {
             Ok(t) => CorrectedTuning::Tuned {
@@ -108,6 +114,7 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             runs_per_corner: design.validation.trajectories,
             nominal: m.nominal.clone(),
         }),
+        scenarios: super::scenarios::assemble(design, comparison),
         search: None,
         taps: None,
         fixed_point: None,
@@ -137,6 +144,7 @@ pub fn observer(design: &Design, o: &crate::observers::ObserverFigures) -> Obser
                         p95_validation: finite(f.p95_validation),
                         rmse_scenario: finite(f.rmse_scenario),
                         rmse_transient: finite(f.rmse_transient),
+                        scenarios: f.scenarios.iter().map(|&(r, t)| (finite(r), finite(t))).collect(),
                         rmse_scenario_draws: f.scenario_draws.map(|d| finite(d.0)),
                         p95_scenario_draws: f.scenario_draws.map(|d| finite(d.1)),
                         rmse_tuning: finite(f.rmse_tuning),

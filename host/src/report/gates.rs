@@ -151,7 +151,7 @@ pub fn starts_outside_box(design: &Design) -> Vec<Gate> {
         ("observer.ukf.x0", design.filters.ukf.x0.as_ref()),
         (
             "scenario.observer_x0",
-            design.scenario.as_ref().and_then(|s| s.observer_x0.as_ref()),
+            design.scenario().and_then(|s| s.observer_x0.as_ref()),
         ),
     ];
     let mut outside = Vec::new();

@@ -60,7 +60,6 @@ pub fn markdown(report: &Report<'_>) -> String {
     s.push_str("\n## Observers on the same data\n\n");
     s.push_str(&observers_table(report));
     s.push_str(&super::filters::ukf_against_ekf(report));
-    s.push_str(&super::fixed_filters::section(report));
     s.push_str(&super::references::section(report));
     if let Some(t) = &report.ekf_tuning {
         let _ = writeln!(
@@ -97,6 +96,8 @@ pub fn markdown(report: &Report<'_>) -> String {
             report.targets.iter().zip(rmse).map(|(t, v)| format!("{} {v:.4}", t.name)).collect::<Vec<_>>().join(", ")
         );
     }
+    s.push_str(&super::fixed_filters::section(report));
+    s.push_str(&super::tables::scenarios_section(report));
     // Every kind or none: `on-target-report` measures them all at once.
     let measured: std::collections::BTreeMap<String, on_target::OnTarget> = report
         .observers

@@ -14,6 +14,7 @@ pub mod plots;
 pub mod recorded;
 pub mod references;
 pub mod runs;
+pub mod scenarios;
 mod schema;
 mod tables;
 

@@ -34,7 +34,7 @@ pub fn sets(design: &Design, runs: &Runs) -> Vec<RunSet> {
         figures,
     };
     let of = |set, data: &DataSet, seed: String, figures| one(set, &data.runs, seed, figures);
-    let scenario_seed = design.scenario.as_ref().map(|s| s.seed);
+    let scenario_seed = design.scenario().map(|s| s.seed);
     let mut sets = vec![
         of(
             "learning",
@@ -45,9 +45,10 @@ pub fn sets(design: &Design, runs: &Runs) -> Vec<RunSet> {
         of(
             "tuning",
             &runs.tuning,
-            match scenario_seed {
-                Some(_) => format!("{} (the scenario's starts: stream 1)", design.tuning.seed),
-                None => design.tuning.seed.to_string(),
+            match design.scenarios.len() {
+                0 => design.tuning.seed.to_string(),
+                1 => format!("{} (the scenario's starts: stream 1)", design.tuning.seed),
+                n => format!("{} (the scenarios' starts: streams 1–{n})", design.tuning.seed),
             },
             "every tuned constant, the design search's and `auto`'s scores (`RMSE tuning`, `p95 tuning`)",
         ),
@@ -66,6 +67,15 @@ pub fn sets(design: &Design, runs: &Runs) -> Vec<RunSet> {
             "`RMSE scenario`, `RMSE transient`, the estimation figure, the chip's recorded sequence",
         ),
     ];
+    if runs.scenarios.len() > 1 {
+        let seeds: Vec<String> = design.scenarios[1..].iter().map(|s| s.seed.to_string()).collect();
+        sets.push(one(
+            "other scenarios",
+            &runs.scenarios[1..],
+            seeds.join(", "),
+            "each scenario's figures (*Scenarios*)",
+        ));
+    }
     if let (Some(draws), Some(seed)) = (&runs.scenario_draws, scenario_seed) {
         sets.push(of(
             "scenario draws",

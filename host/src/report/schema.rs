@@ -65,6 +65,8 @@ pub struct Report<'a> {
     /// The plants of the `rmse_mismatch` figures, when parameters are uncertain.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mismatch: Option<MismatchReport>,
+    /// The spec's scenarios, with the box filters from each one's observer start.
+    pub scenarios: Vec<super::scenarios::ScenarioReport>,
     /// The design search, when the spec asks for one (every candidate, the front, the choice).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub search: Option<&'a crate::search::Outcome>,
@@ -105,6 +107,8 @@ pub struct FiguresReport {
     pub rmse_scenario: Option<f64>,
     /// RMSE over the scenario's first 2 time units after the map's first estimate.
     pub rmse_transient: Option<f64>,
+    /// Per scenario of the spec, in its order: RMSE over its windows, and over its transient.
+    pub scenarios: Vec<(Option<f64>, Option<f64>)>,
     /// RMSE over the scenario's noise draws (`data::scenario_draws`), when there is a scenario
     /// (`null` where a filter diverged).
     #[serde(skip_serializing_if = "Option::is_none")]

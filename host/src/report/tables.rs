@@ -322,3 +322,53 @@ pub fn taps_table(rows: &[crate::search::sparsity::Row], targets: &[&str]) -> St
     }
     s
 }
+
+/// The figures of every observer on every scenario, one table per scenario (the box filters from the
+/// observer start it names, too), when the spec names more than one; else empty (the observers'
+/// table has the one scenario's figures).
+pub fn scenarios_section(report: &Report<'_>) -> String {
+    if report.scenarios.len() < 2 {
+        return String::new();
+    }
+    let mut s = String::from(
+        "\n## Scenarios\n\nEvery observer on every scenario the spec names, as the chip starts it (the box filters also from the \
+         scenario's observer start, where it names one): RMSE over the scenario's windows, then over its transient (the first \
+         2 time units from the map's first estimate). `auto`'s score counts each scenario through its own tuning runs \
+         from the scenario's start, pooled with the random ones.\n",
+    );
+    let list = |v: &[f64]| v.iter().map(|x| format!("{x}")).collect::<Vec<_>>().join(", ");
+    for (i, scenario) in report.scenarios.iter().enumerate() {
+        let _ = write!(
+            s,
+            "\n### `{}`: x(0) = ({}){}, {} samples, seed {}\n\n| observer |",
+            scenario.name,
+            list(&scenario.x0),
+            scenario
+                .observer_x0
+                .as_ref()
+                .map_or(String::new(), |x| format!(", observer start ({})", list(x))),
+            scenario.samples,
+            scenario.seed,
+        );
+        for t in &report.targets {
+            let _ = write!(s, " {} RMSE | {} transient |", t.name, t.name);
+        }
+        let _ = write!(s, "\n|---|{}\n", "---|---|".repeat(report.targets.len()));
+        for o in &report.observers {
+            let _ = write!(s, "| {} |", o.kind);
+            for (_, f) in in_spec_order(report, o) {
+                let (rmse, transient) = f.scenarios.get(i).copied().unwrap_or((None, None));
+                let _ = write!(s, " {} | {} |", show(rmse), show(transient));
+            }
+            s.push('\n');
+        }
+        for (kind, targets) in &scenario.from_observer_start {
+            let _ = write!(s, "| {kind} from the observer start |");
+            for (rmse, transient) in targets {
+                let _ = write!(s, " {} | {} |", show(*rmse), show(*transient));
+            }
+            s.push('\n');
+        }
+    }
+    s
+}

@@ -19,6 +19,8 @@ pub const MAX_AXIS_POINTS: usize = 10_000;
 pub const MAX_SUBSTEPS: usize = 10_000;
 /// Most samples of one run (`learning.samples`, `validation.samples`, `scenario.samples`).
 pub const MAX_RUN_SAMPLES: usize = 10_000_000;
+/// Most scenarios (`[[scenario]]`): each is simulated, judged for every observer and tuned on.
+pub const MAX_SCENARIOS: usize = 8;
 /// Most validation runs (`validation.trajectories`).
 pub const MAX_TRAJECTORIES: usize = 1_000_000;
 /// Most parameters with a range (`{ value, min, max }`): the mismatch set runs the validation runs at
@@ -43,10 +45,16 @@ pub(super) fn check_budget(design: &Design) -> Result<(), SpecError> {
             Axis::Fixed(_) => 1.0,
         })
         .product();
-    // The scenario, its noise draws and the tuning runs from its start.
-    let scenario = design.scenario.as_ref().map_or(0.0, |s| {
-        (1 + crate::data::SCENARIO_DRAWS + crate::data::SCENARIO_TUNING_RUNS) as f64 * s.samples as f64
-    });
+    // The first scenario and its noise draws; every scenario's run and the tuning runs from its start.
+    let draws = design
+        .scenario()
+        .map_or(0.0, |s| (crate::data::SCENARIO_DRAWS * s.samples) as f64);
+    let scenario = draws
+        + design
+            .scenarios
+            .iter()
+            .map(|s| (1 + crate::data::SCENARIO_TUNING_RUNS) as f64 * s.samples as f64)
+            .sum::<f64>();
     let validation = design.validation.trajectories as f64 * design.validation.samples as f64;
     // The mismatch set: the validation runs again at every corner of the parameter box (none when
     // every parameter is known).

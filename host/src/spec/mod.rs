@@ -10,6 +10,7 @@ pub mod limits;
 mod load;
 pub mod model;
 mod raw;
+mod raw_scenario;
 pub mod search;
 mod validate;
 mod validate_chip;
@@ -196,9 +197,11 @@ pub struct Budget {
 }
 
 /// A recorded-style estimation run: one trajectory from a given state with fresh noise (the paper's
-/// Fig. 2, right, for Example 1).
+/// Fig. 2, right, for Example 1; a plant's typical start-up).
 #[derive(Clone, Debug)]
 pub struct Scenario {
+    /// Its name (`[[scenario]] name`; `scenario` for a single unnamed `[scenario]`).
+    pub name: String,
     /// Initial state, in state order.
     pub x0: Vec<f64>,
     /// The paper's initial guess `x̂(0)` (`observer_x0`), in state order: the report adds the EKF's
@@ -302,8 +305,9 @@ pub struct Design {
     pub budget: Budget,
     /// The quantities to estimate.
     pub targets: Vec<Target>,
-    /// The estimation scenario, if the spec has one.
-    pub scenario: Option<Scenario>,
+    /// The estimation scenarios (`[scenario]` or `[[scenario]]`), in spec order; the first is the
+    /// one the headline figures, the noise draws and the estimation figure follow ([`Design::scenario`]).
+    pub scenarios: Vec<Scenario>,
     /// The family this design belongs to, if any.
     pub family: Option<Family>,
     /// `[observer] kind`.
@@ -341,6 +345,11 @@ pub struct RawScale {
 }
 
 impl Design {
+    /// The first scenario: the headline `scenario` and `transient` figures' (`None` without any).
+    pub fn scenario(&self) -> Option<&Scenario> {
+        self.scenarios.first()
+    }
+
     /// An error about `field` of this design's spec.
     pub fn error(&self, field: impl Into<String>, problem: impl Into<String>, fix: impl Into<String>) -> SpecError {
         SpecError {

@@ -5,6 +5,7 @@ use std::collections::BTreeMap;
 
 use serde::Deserialize;
 
+pub(super) use super::raw_scenario::{RawScenario, RawScenarios};
 use super::{Normalisation, ObserverKind};
 
 #[derive(Deserialize)]
@@ -20,7 +21,7 @@ pub(super) struct RawSpec {
     pub(super) tuning: Option<RawTuning>,
     pub(super) map: RawMap,
     pub(super) targets: Vec<RawNamedExpr>,
-    pub(super) scenario: Option<RawScenario>,
+    pub(super) scenario: Option<RawScenarios>,
     pub(super) family: Option<RawFamily>,
     pub(super) observer: Option<RawObserver>,
     pub(super) budget: Option<RawBudget>,
@@ -113,15 +114,6 @@ pub(super) struct RawFamily {
     pub(super) name: String,
     pub(super) output: String,
     pub(super) value: f64,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct RawScenario {
-    pub(super) x0: BTreeMap<String, f64>,
-    pub(super) observer_x0: Option<BTreeMap<String, f64>>,
-    pub(super) samples: usize,
-    pub(super) seed: u64,
 }
 
 #[derive(Deserialize)]

@@ -81,11 +81,10 @@ impl Validator {
             .as_ref()
             .map(|f| self.family(f, &model, &raw.name))
             .transpose()?;
-        let scenario = raw
-            .scenario
-            .as_ref()
-            .map(|s| self.scenario(s, &model, map.horizon))
-            .transpose()?;
+        let scenarios = match &raw.scenario {
+            Some(s) => self.scenarios(s, &model, map.horizon)?,
+            None => Vec::new(),
+        };
         let section = |pick: fn(&RawObserver) -> Option<&RawFilter>| raw.observer.as_ref().and_then(pick);
         let filters = FixedFilters {
             ekf: self.fixed_filter("observer.ekf", section(|o| o.ekf.as_ref()), &model)?,
@@ -111,7 +110,7 @@ impl Validator {
             max_candidates: self.max_candidates(raw.search.as_ref())?,
             budget,
             targets,
-            scenario,
+            scenarios,
             family,
             observer: raw.observer.as_ref().map(|o| o.kind).unwrap_or_default(),
             filters,

@@ -42,22 +42,81 @@ impl Validator {
             .collect()
     }
 
-    pub(super) fn scenario(&self, raw: &RawScenario, model: &Model, horizon: usize) -> Result<Scenario, SpecError> {
-        let x0 = self.state_values("scenario.x0", &raw.x0, model)?;
+    /// `[scenario]` or `[[scenario]]`: each scenario checked, named (a single `[scenario]` may leave
+    /// its name out: `scenario`), the names distinct.
+    pub(super) fn scenarios(
+        &self,
+        raw: &RawScenarios,
+        model: &Model,
+        horizon: usize,
+    ) -> Result<Vec<Scenario>, SpecError> {
+        let sections = raw.sections();
+        if sections.is_empty() || sections.len() > limits::MAX_SCENARIOS {
+            return Err(self.err(
+                "scenario",
+                format!("{} scenarios", sections.len()),
+                format!(
+                    "give 1 to {} `[[scenario]]` tables, or leave them out",
+                    limits::MAX_SCENARIOS
+                ),
+            ));
+        }
+        let many = sections.len() > 1;
+        let mut scenarios: Vec<Scenario> = Vec::new();
+        for (section, raw) in sections {
+            let scenario = self.scenario(&section, raw, model, horizon, many)?;
+            if scenarios.iter().any(|s| s.name == scenario.name) {
+                return Err(self.err(
+                    format!("{section}.name"),
+                    format!("a scenario is already named `{}`", scenario.name),
+                    "give every scenario a name of its own",
+                ));
+            }
+            scenarios.push(scenario);
+        }
+        Ok(scenarios)
+    }
+
+    /// One scenario in section `section`; `many`: it is one of several, so it needs a name.
+    fn scenario(
+        &self,
+        section: &str,
+        raw: &RawScenario,
+        model: &Model,
+        horizon: usize,
+        many: bool,
+    ) -> Result<Scenario, SpecError> {
+        let name = match &raw.name {
+            Some(name) => {
+                self.identifier(&format!("{section}.name"), name)?;
+                name.clone()
+            }
+            None if many => {
+                return Err(self.err(
+                    format!("{section}.name"),
+                    "one of several scenarios has no name",
+                    "give each `[[scenario]]` a `name` (e.g. \"start_up\"): the report's tables and figures say it",
+                ))
+            }
+            None => "scenario".to_owned(),
+        };
+        let x0 = self.state_values(&format!("{section}.x0"), &raw.x0, model)?;
         let observer_x0 = raw
             .observer_x0
             .as_ref()
-            .map(|values| self.state_values("scenario.observer_x0", values, model))
+            .map(|values| self.state_values(&format!("{section}.observer_x0"), values, model))
             .transpose()?;
-        self.at_most("scenario.samples", raw.samples, limits::MAX_RUN_SAMPLES)?;
+        let samples = format!("{section}.samples");
+        self.at_most(&samples, raw.samples, limits::MAX_RUN_SAMPLES)?;
         if raw.samples < horizon {
             return Err(self.err(
-                "scenario.samples",
+                &samples,
                 format!("{} samples hold no window of N = {horizon}", raw.samples),
-                "set `scenario.samples` ≥ `map.horizon`",
+                format!("set `{samples}` ≥ `map.horizon`"),
             ));
         }
         Ok(Scenario {
+            name,
             x0,
             observer_x0,
             samples: raw.samples,
@@ -71,11 +130,12 @@ impl Validator {
         raw: Option<&RawTuning>,
         validation: &Validation,
         learning: &Learning,
-        scenario: Option<&RawScenario>,
+        scenarios: Option<&RawScenarios>,
         horizon: usize,
     ) -> Result<Validation, SpecError> {
-        let others = [Some(learning.seed), Some(validation.seed), scenario.map(|s| s.seed)];
-        let taken = |seed: u64| others.contains(&Some(seed));
+        let mut others = vec![learning.seed, validation.seed];
+        others.extend(scenarios.iter().flat_map(|s| s.sections()).map(|(_, s)| s.seed));
+        let taken = |seed: u64| others.contains(&seed);
         let seed = match raw.and_then(|t| t.seed) {
             Some(seed) if taken(seed) => {
                 return Err(self.err(
@@ -85,7 +145,7 @@ impl Validator {
                 ))
             }
             Some(seed) => seed,
-            None => (1..).map(|k| validation.seed.wrapping_add(1000 * k)).find(|s| !taken(*s)).expect("three seeds cannot take them all"),
+            None => (1..).map(|k| validation.seed.wrapping_add(1000 * k)).find(|s| !taken(*s)).expect("a few seeds cannot take them all"),
         };
         let raw = RawValidation {
             trajectories: raw.and_then(|t| t.trajectories).unwrap_or(validation.trajectories),

@@ -6,12 +6,14 @@ use crate::data::{DataSet, Rows, Run};
 use crate::fit::DesignResult;
 use crate::plant::ModelCode;
 use crate::search::cost::{self, Cost};
-use crate::spec::{Design, FixedFilter};
+use crate::spec::Design;
 
-use crate::observers::figures::{Beside, Drift, Figures, ObserverFigures, Started, TRANSIENT_TIME};
+use crate::observers::figures::{Beside, Drift, Figures, FromObserverStart, ObserverFigures, Started, TRANSIENT_TIME};
 use crate::observers::restart::RestartConstants;
 use crate::observers::score::{self, errors};
 use crate::observers::{corrected, ekf};
+
+mod filters;
 
 /// See the module's documentation.
 pub struct Bench<'a> {
@@ -40,10 +42,10 @@ pub struct Bench<'a> {
     pub restart: Option<RestartConstants>,
     /// The moving-horizon observer on the chip (`None` when the model is beyond the host's sizes).
     pub mhe: Option<crate::observers::mhe::ChipTuned>,
-    /// The box EKF from the scenario's `observer_x0` instead: that start, its RMSE per target.
-    pub ekf_from_observer_x0: Option<(Vec<f64>, Vec<f64>)>,
     /// Each filter the spec fixes constants of, with every constant tuned instead.
     pub beside: Vec<Beside>,
+    /// The box filters from each scenario's `observer_x0` ([`Bench::from_observer_start`]).
+    pub from_observer_start: Vec<FromObserverStart>,
     /// The map's estimates on every run.
     maps: MapRows,
 }
@@ -52,6 +54,7 @@ pub struct Bench<'a> {
 struct Estimates {
     validation: Vec<Rows>,
     scenario: Rows,
+    scenarios: Vec<Rows>,
     tuning: Vec<Rows>,
     draws: Option<Vec<Rows>>,
     /// On the corners, the nominal plant and the long runs at the last corner; the mismatch scenario.
@@ -64,6 +67,7 @@ struct MapRows {
     validation: Vec<Rows>,
     tuning: Vec<Rows>,
     scenario: Rows,
+    scenarios: Vec<Rows>,
     draws: Option<Vec<Rows>>,
     /// On the corners, the nominal plant and the long runs at the last corner; the mismatch scenario.
     mismatch: Option<([Vec<Rows>; 3], Rows)>,
@@ -80,6 +84,11 @@ impl<'a> Bench<'a> {
             validation: on(&runs.validation),
             tuning: on(&runs.tuning),
             scenario: map_estimates(result, horizon, &runs.scenario),
+            scenarios: runs
+                .scenarios
+                .iter()
+                .map(|r| map_estimates(result, horizon, r))
+                .collect(),
             draws: runs.scenario_draws.as_ref().map(on),
             mismatch: runs.mismatch.as_ref().map(|m| {
                 (
@@ -108,8 +117,8 @@ impl<'a> Bench<'a> {
             started: None,
             restart: None,
             mhe: None,
-            ekf_from_observer_x0: None,
             beside: Vec::new(),
+            from_observer_start: Vec::new(),
             maps,
         }
     }
@@ -118,48 +127,6 @@ impl<'a> Bench<'a> {
     pub fn windows(&self) -> impl Fn(&Run) -> std::ops::Range<usize> + Copy {
         let first = self.design.map.horizon - 1;
         move |run: &Run| first..run.targets.len()
-    }
-
-    /// The tuning runs from random starts: what the box filters (`ekf_box`, `ukf_box`) are tuned on.
-    pub fn random_tuning(&self) -> DataSet {
-        let tuning = &self.result.runs.tuning;
-        DataSet {
-            runs: tuning.runs[..self.design.tuning.trajectories].to_vec(),
-            horizon: tuning.horizon,
-        }
-    }
-
-    /// A box filter (its estimates by `estimator`) tuned on [`Bench::random_tuning`] but for the
-    /// constants the spec fixes (`fixed`), and its figures by `judge`. Where the spec fixes any, the
-    /// same filter with every constant tuned is judged too, into [`Bench::beside`].
-    pub fn box_filter(
-        &mut self,
-        estimator: ekf::Estimator,
-        fixed: &FixedFilter,
-        judge: &dyn Fn(&Self, &ekf::Tuned) -> ObserverFigures,
-    ) -> Option<(ekf::Tuned, ObserverFigures)> {
-        let random = self.random_tuning();
-        let learning = &self.result.runs.learning;
-        let tune = |fixed: &FixedFilter| {
-            ekf::tune_with(
-                estimator,
-                fixed,
-                self.design,
-                self.code,
-                &random,
-                learning,
-                &self.spreads,
-            )
-        };
-        let tuned = tune(fixed)?;
-        let figures = judge(self, &tuned);
-        if fixed.any() {
-            if let Some(all) = tune(&FixedFilter::default()) {
-                let figures = judge(self, &all);
-                self.beside.push(Beside { tuned: all, figures });
-            }
-        }
-        Some((tuned, figures))
     }
 
     /// The tuning runs' map estimates, run by run.
@@ -196,9 +163,14 @@ impl<'a> Bench<'a> {
         let on = |set: &DataSet, maps: &[Rows]| -> Vec<Rows> {
             set.runs.par_iter().zip(maps).map(|(r, m)| estimate(r, m)).collect()
         };
+        let scenario = estimate(&runs.scenario, &maps.scenario);
         let estimates = Estimates {
             validation: on(&runs.validation, &maps.validation),
-            scenario: estimate(&runs.scenario, &maps.scenario),
+            // The first scenario's run is the scenario's: its estimates are taken once.
+            scenarios: (runs.scenarios.iter().zip(&maps.scenarios).enumerate())
+                .map(|(i, (r, m))| if i == 0 { scenario.clone() } else { estimate(r, m) })
+                .collect(),
+            scenario,
             tuning: on(&runs.tuning, &maps.tuning),
             draws: runs
                 .scenario_draws
@@ -257,9 +229,19 @@ impl<'a> Bench<'a> {
         };
         // Each set's runs on streams of their own.
         const SET: u64 = 1 << 32;
+        let scenario = estimate(&runs.scenario, SET);
         let estimates = Estimates {
             validation: validation.unwrap_or_else(|| on(&runs.validation, 0)),
-            scenario: estimate(&runs.scenario, SET),
+            scenarios: (runs.scenarios.iter().enumerate())
+                .map(|(i, r)| {
+                    if i == 0 {
+                        scenario.clone()
+                    } else {
+                        estimate(r, 6 * SET + i as u64)
+                    }
+                })
+                .collect(),
+            scenario,
             tuning: skipped(&runs.tuning),
             draws: runs.scenario_draws.as_ref().map(|d| on(d, 2 * SET)),
             mismatch: runs.mismatch.as_ref().map(|m| {
@@ -285,6 +267,7 @@ impl<'a> Bench<'a> {
         let Estimates {
             validation,
             scenario,
+            scenarios,
             tuning: on_tuning,
             draws: on_draws,
             mismatch,
@@ -325,6 +308,11 @@ impl<'a> Bench<'a> {
                     score::percentile_95(&score::per_run_rmse(runs, estimates, t, windows))
                 };
                 Figures {
+                    scenarios: scenarios
+                        .iter()
+                        .enumerate()
+                        .map(|(i, rows)| self.on_scenario(i, rows)[t])
+                        .collect(),
                     rmse_validation,
                     max_error_validation,
                     p95_validation: p95(&runs.validation.runs, &validation),

@@ -4,7 +4,6 @@
 //! all the tuning runs, its tail from the scenario's start).
 
 use super::{Bench, Constants, Kind, Needs};
-use crate::observers::score::errors;
 use crate::observers::{ekf, ObserverFigures};
 use crate::search::cost;
 use crate::spec::ObserverKind;
@@ -29,8 +28,8 @@ pub const KIND: Kind = Kind {
 };
 
 /// Tunes the EKF on the random tuning runs (but the constants the spec fixes), judges it from its
-/// start everywhere (the scenario included: where `ekf()` starts on the chip), and runs it once more
-/// from the scenario's `observer_x0`, the paper's comparison.
+/// start everywhere (the scenarios included: where `ekf()` starts on the chip), and runs it once more
+/// on each scenario from its `observer_x0`, the paper's comparison.
 fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let (design, code) = (bench.design, bench.code);
     let judge = |bench: &Bench<'_>, tuned: &ekf::Tuned| {
@@ -40,15 +39,9 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
         })
     };
     let (tuned, figures) = bench.box_filter(ekf::estimates, &design.filters.ekf, &judge)?;
-    let scenario = &bench.result.runs.scenario;
-    if let Some(x0) = design.scenario.as_ref().and_then(|s| s.observer_x0.clone()) {
-        let rows = ekf::estimate_run(code, &tuned.constants, &x0, scenario).expect("size checked by tune");
-        let one = std::slice::from_ref(scenario);
-        let rmse = (0..design.targets.len())
-            .map(|t| errors(one, std::slice::from_ref(&rows), t, bench.windows()).0)
-            .collect();
-        bench.ekf_from_observer_x0 = Some((x0, rmse));
-    }
+    bench.from_observer_starts("ekf_box", &|x0, run| {
+        ekf::estimate_run(code, &tuned.constants, x0, run).expect("size checked by tune")
+    });
     bench.ekf = Some(tuned);
     Some(figures)
 }

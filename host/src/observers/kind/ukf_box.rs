@@ -28,7 +28,7 @@ pub const KIND: Kind = Kind {
 };
 
 /// Tunes the UKF on the random tuning runs (as the box EKF, but the constants the spec fixes), then
-/// judges it from its start.
+/// judges it from its start, and on each scenario from its `observer_x0`.
 fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let code = bench.code;
     let judge = |bench: &Bench<'_>, tuned: &ekf::Tuned| {
@@ -38,6 +38,10 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
         })
     };
     let (tuned, figures) = bench.box_filter(ukf::estimates, &bench.design.filters.ukf, &judge)?;
+    let filter = unscented_code(code, &tuned.constants);
+    bench.from_observer_starts("ukf_box", &|x0, run| {
+        ukf::estimate_run(code, &filter, x0, &tuned.constants.p0, run)
+    });
     bench.ukf = Some(tuned);
     Some(figures)
 }
