@@ -23,8 +23,8 @@ use std::path::{Path, PathBuf};
 pub use assemble::report;
 pub use markdown::{markdown, relocate_figures};
 pub use schema::{
-    ChipModel, CorrectedTuning, DriftReport, EkfTuning, FiguresReport, LinearReport, MismatchReport, ObserverReport,
-    Report, SetSummary, TargetReport, MISMATCH_PLANTS,
+    ChipModel, CorrectedTuning, DriftReport, EkfTuning, FiguresReport, FilterConstants, FixedFilterReport,
+    LinearReport, MismatchReport, ObserverReport, Report, SetSummary, TargetReport, MISMATCH_PLANTS,
 };
 pub use tables::{observers_table, search_table, table, taps_table};
 
