@@ -662,3 +662,24 @@ fn a_filters_fixed_constants_are_read_in_state_order_and_a_start_outside_the_box
         gates[0]
     );
 }
+
+#[test]
+fn the_literature_example_fixes_the_published_filter_and_is_warned_of_its_start() {
+    // examples/specs/gas_phase_reactor.toml: Haseltine & Rawlings' EKF, x̂(0) = (0.1, 4.5),
+    // Q = diag(0.001², 0.001²), P(0) = diag(6², 6²), written by hand here from the paper.
+    use host::plant::Covariance;
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/specs/gas_phase_reactor.toml");
+    let design = spec::load(&path).unwrap();
+    let ekf = &design.filters.ekf;
+    assert_eq!(ekf.x0, Some(vec![0.1, 4.5]));
+    assert_eq!(ekf.q, Some(Covariance::Diagonal(vec![1e-6, 1e-6])));
+    assert_eq!(ekf.p0, Some(Covariance::Diagonal(vec![36.0, 36.0])));
+    // pB = 4.5 lies above the learning box [0, 4], for the filter and for the scenario's guess.
+    let gates: Vec<String> = host::report::gates::starts_outside_box(&design)
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    assert_eq!(gates.len(), 2, "{gates:?}");
+    assert!(gates[0].contains("`observer.ekf.x0.pB` = 4.5"), "{}", gates[0]);
+    assert!(gates[1].contains("`scenario.observer_x0.pB` = 4.5"), "{}", gates[1]);
+}

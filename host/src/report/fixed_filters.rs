@@ -31,7 +31,7 @@ pub fn section(report: &Report<'_>) -> String {
             if entry.fixed.contains(&"x0") { "the spec's `x0`" } else { "the centre of the state box" },
         );
         let names: Vec<&String> = spec.targets.keys().collect();
-        let _ = write!(s, "| filter | x̂(0) | Q | P(0) | tuning score |");
+        let _ = write!(s, "| filter | x̂(0) | Q | P(0) | score, random tuning runs |");
         for name in &names {
             let _ = write!(
                 s,
