@@ -85,6 +85,13 @@ impl Drop for Scratch {
     }
 }
 
+/// Example 1's edits to 8 validation and 8 tuning runs (of 64): for the cases whose point is not a
+/// figure, a third of the time.
+const FEW_RUNS: [(&str, &str); 2] = [
+    ("\ntrajectories = 64", "\ntrajectories = 8"),
+    ("[tuning]", "[tuning]\ntrajectories = 8"),
+];
+
 #[test]
 fn a_design_that_breaks_its_family_writes_nothing() {
     // E. coli X0 = 2 with N = 4 no longer shares its family's observer type (N = 3): refused before
@@ -166,13 +173,15 @@ fn one_failing_design_writes_nothing_for_any_design() {
     // x2's target made constant: the fit refuses it. The other design fits, but nothing is written:
     // no report, no observer, no lib.rs (it used to write lib.rs even when every spec failed).
     let scratch = Scratch::empty("one-fails");
-    let good = scratch.spec("vanderpol", "vanderpol.toml", &[]);
+    let good = scratch.spec("vanderpol", "vanderpol.toml", &FEW_RUNS);
     let bad = scratch.spec(
         "vanderpol",
         "constant.toml",
         &[
             ("name = \"vanderpol\"", "name = \"constant_target\""),
             ("expr = \"x2\"", "expr = \"x1 - x1 + 1.0\""),
+            FEW_RUNS[0],
+            FEW_RUNS[1],
         ],
     );
     let mut heard = Vec::new();
@@ -225,10 +234,14 @@ fn a_description_cannot_open_a_code_fence_in_the_generated_docs() {
     let spec = scratch.spec(
         "vanderpol",
         "vanderpol.toml",
-        &[(
-            "description = \"Van der Pol",
-            "description = \"```\\n    fn injected() {} <b> [x] Van der Pol",
-        )],
+        &[
+            (
+                "description = \"Van der Pol",
+                "description = \"```\\n    fn injected() {} <b> [x] Van der Pol",
+            ),
+            FEW_RUNS[0],
+            FEW_RUNS[1],
+        ],
     );
     let design = host::spec::load(&spec).unwrap();
     let emitted = generate::emit_design(design, &spec, None, &ProgressBar::hidden()).unwrap();
@@ -310,8 +323,8 @@ fn every_observer_is_judged_on_every_named_scenario_and_auto_tunes_on_each() {
         "vanderpol",
         "vanderpol.toml",
         &[
-            ("\ntrajectories = 64", "\ntrajectories = 8"),
-            ("[tuning]", "[tuning]\ntrajectories = 8"),
+            FEW_RUNS[0],
+            FEW_RUNS[1],
             ("[scenario]", "[[scenario]]\nname = \"paper\""),
             (
                 "kind = \"auto\"",
