@@ -661,6 +661,17 @@ fn a_filters_fixed_constants_are_read_in_state_order_and_a_start_outside_the_box
         "{}",
         gates[0]
     );
+    // And every named scenario's, not only the first's.
+    let named = VANDERPOL.replacen("[scenario]", "[[scenario]]\nname = \"paper\"", 1)
+        + "\n[[scenario]]\nname = \"b\"\nx0 = { x1 = 0.0, x2 = 0.0 }\nobserver_x0 = { x1 = 0.0, x2 = 9.0 }\nsamples = 50\nseed = 8\n";
+    let design = spec::parse(Path::new("named.toml"), &named).unwrap();
+    let gates = host::report::gates::starts_outside_box(&design);
+    assert_eq!(gates.len(), 1, "{gates:?}");
+    assert!(
+        gates[0].to_string().contains("`scenario[1].observer_x0.x2` = 9"),
+        "{}",
+        gates[0]
+    );
 }
 
 #[test]

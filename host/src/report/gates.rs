@@ -16,7 +16,7 @@
 //!   EKF the spec's `[budget] instructions` does not allow (as [`crate::search::cost`] predicts it)
 //!   is not a choice, so it does not count.
 //! * [`Gate::StartOutsideBox`]: a filter's start the spec fixes (`[observer.ekf] x0`,
-//!   `[observer.ukf] x0`) or the scenario's `observer_x0` lies outside the learning box: the filter
+//!   `[observer.ukf] x0`) or a scenario's `observer_x0` lies outside the learning box: the filter
 //!   starts where no learning or validation run starts, which is allowed (a published filter's guess
 //!   may be poor on purpose) but is rarely what a user means.
 
@@ -146,14 +146,20 @@ impl fmt::Display for Gate {
 
 /// The starts the spec gives a filter outside the learning box ([`Gate::StartOutsideBox`]).
 pub fn starts_outside_box(design: &Design) -> Vec<Gate> {
-    let starts = [
-        ("observer.ekf.x0", design.filters.ekf.x0.as_ref()),
-        ("observer.ukf.x0", design.filters.ukf.x0.as_ref()),
-        (
-            "scenario.observer_x0",
-            design.scenario().and_then(|s| s.observer_x0.as_ref()),
-        ),
+    let mut starts = vec![
+        ("observer.ekf.x0".to_owned(), design.filters.ekf.x0.as_ref()),
+        ("observer.ukf.x0".to_owned(), design.filters.ukf.x0.as_ref()),
     ];
+    // Every scenario's, named as the spec's field: `scenario.…` for one, `scenario[i].…` for several.
+    let several = design.scenarios.len() > 1;
+    for (i, scenario) in design.scenarios.iter().enumerate() {
+        let section = if several {
+            format!("scenario[{i}]")
+        } else {
+            "scenario".to_owned()
+        };
+        starts.push((format!("{section}.observer_x0"), scenario.observer_x0.as_ref()));
+    }
     let mut outside = Vec::new();
     for (field, start) in starts {
         let Some(start) = start else { continue };
@@ -164,7 +170,7 @@ pub fn starts_outside_box(design: &Design) -> Vec<Gate> {
             };
             if !(range.0..=range.1).contains(&value) {
                 outside.push(Gate::StartOutsideBox {
-                    field: field.to_owned(),
+                    field: field.clone(),
                     state: state.clone(),
                     value,
                     range,

@@ -12,7 +12,7 @@ use crate::plant::{Covariance, ModelCode};
 use crate::spec::{Design, FixedFilter};
 
 /// One filter's names: its type (`Ekf`), its samples' prefix (`ekf`), its observer type
-/// (`BoxEkfObserver`) and what that observer is, in a phrase ("The EKF from the centre of the state box").
+/// (`BoxEkfObserver`) and what filter that observer is ("The EKF"; its docs add where it starts).
 pub(super) struct Names {
     pub(super) name: &'static str,
     pub(super) lower: &'static str,
@@ -46,12 +46,11 @@ pub(super) fn filter_observer(
 ) -> Result<String, EmitError> {
     let label = names.name.to_uppercase();
     let upper = constants.p0.upper();
-    let what = match fixed.x0 {
-        Some(_) => names
-            .what
-            .replace("the centre of the state box", "the start the spec fixes"),
-        None => names.what.to_owned(),
+    let start = match fixed.x0 {
+        Some(_) => "the start the spec fixes",
+        None => "the centre of the state box",
     };
+    let what = format!("{} from {start}", names.what);
     Ok(OBSERVER_TEMPLATE
         .replace("{WHAT}", &what)
         .replace("{NAME}", names.name)

@@ -169,7 +169,7 @@ const EKF: Names = Names {
     name: "Ekf",
     lower: "ekf",
     observer: "BoxEkfObserver",
-    what: "The EKF from the centre of the state box",
+    what: "The EKF",
     sample: "One sample",
 };
 

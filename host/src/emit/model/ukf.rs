@@ -31,7 +31,7 @@ const UKF: Names = Names {
     name: "Ukf",
     lower: "ukf",
     observer: "UkfObserver",
-    what: "The UKF from the centre of the state box",
+    what: "The UKF",
     sample: "One UKF sample",
 };
 

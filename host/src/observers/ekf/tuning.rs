@@ -237,7 +237,7 @@ pub fn tune_with(
         return None; // diverged everywhere
     }
     // Nothing left to search when the spec fixes both.
-    let starts = if grid_free(q_free, p0_free) { STARTS } else { 0 };
+    let starts = if q_free || p0_free { STARTS } else { 0 };
     let searched: Vec<(Vec<f64>, f64)> = scored[..starts.min(scored.len())]
         .par_iter()
         .map(|(theta, cost)| {
@@ -277,11 +277,6 @@ pub fn tune_with(
         evaluations: count.into_inner(),
         runs: tuning.runs.len(),
     })
-}
-
-/// Whether any constant is left to search.
-fn grid_free(q_free: bool, p0_free: bool) -> bool {
-    q_free || p0_free
 }
 
 /// The factors of the map-started EKF's start covariance tried by [`tune_started`]: half-decades from

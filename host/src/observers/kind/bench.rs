@@ -8,7 +8,7 @@ use crate::plant::ModelCode;
 use crate::search::cost::{self, Cost};
 use crate::spec::Design;
 
-use crate::observers::figures::{Beside, Drift, Figures, FromObserverStart, ObserverFigures, Started, TRANSIENT_TIME};
+use crate::observers::figures::{Beside, Drift, Figures, FromObserverStart, ObserverFigures, Started};
 use crate::observers::restart::RestartConstants;
 use crate::observers::score::{self, errors};
 use crate::observers::{corrected, ekf};
@@ -284,9 +284,11 @@ impl<'a> Bench<'a> {
             first: errors(runs, estimates, t, |_| start_up..start_up + window).0,
             last: errors(runs, estimates, t, |_| long_samples - window..long_samples).0,
         };
-        let transient = (TRANSIENT_TIME / self.design.tau).round() as usize;
-        let one_scenario = std::slice::from_ref(&runs.scenario);
-        let on_scenario = std::slice::from_ref(&scenario);
+        // Per target, (whole, transient) on the headline scenario and on each named one.
+        let headline = self.scenario_errors(&runs.scenario, &scenario);
+        let named: Vec<Vec<(f64, f64)>> = (scenarios.iter().enumerate())
+            .map(|(i, rows)| self.on_scenario(i, rows))
+            .collect();
         let targets = (0..self.design.targets.len())
             .map(|t| {
                 let (rmse_validation, max_error_validation) = errors(&runs.validation.runs, &validation, t, windows);
@@ -308,20 +310,13 @@ impl<'a> Bench<'a> {
                     score::percentile_95(&score::per_run_rmse(runs, estimates, t, windows))
                 };
                 Figures {
-                    scenarios: scenarios
-                        .iter()
-                        .enumerate()
-                        .map(|(i, rows)| self.on_scenario(i, rows)[t])
-                        .collect(),
+                    scenarios: named.iter().map(|per_target| per_target[t]).collect(),
                     rmse_validation,
                     max_error_validation,
                     p95_validation: p95(&runs.validation.runs, &validation),
                     p95_tuning: p95(&runs.tuning.runs, &on_tuning),
-                    rmse_scenario: errors(one_scenario, on_scenario, t, windows).0,
-                    rmse_transient: errors(one_scenario, on_scenario, t, |run| {
-                        horizon - 1..horizon.saturating_add(transient).min(run.targets.len())
-                    })
-                    .0,
+                    rmse_scenario: headline[t].0,
+                    rmse_transient: headline[t].1,
                     rmse_tuning: errors(&runs.tuning.runs, &on_tuning, t, windows).0,
                     scenario_draws: runs
                         .scenario_draws

@@ -52,11 +52,15 @@ impl Bench<'_> {
         Some((tuned, figures))
     }
 
-    /// Per target, the RMSE of `rows` (estimates along scenario `i`'s run) over the scenario's
-    /// windows and over its transient (its first [`TRANSIENT_TIME`] time units from the map's first
-    /// estimate).
+    /// [`Bench::scenario_errors`] along scenario `i`'s run (in the spec's order).
     pub fn on_scenario(&self, i: usize, rows: &Rows) -> Vec<(f64, f64)> {
-        let run = std::slice::from_ref(&self.result.runs.scenarios[i]);
+        self.scenario_errors(&self.result.runs.scenarios[i], rows)
+    }
+
+    /// Per target, the RMSE of `rows` (estimates along `run`) over the run's windows and over its
+    /// transient (its first [`TRANSIENT_TIME`] time units from the map's first estimate).
+    pub fn scenario_errors(&self, run: &Run, rows: &Rows) -> Vec<(f64, f64)> {
+        let run = std::slice::from_ref(run);
         let rows = std::slice::from_ref(rows);
         let horizon = self.design.map.horizon;
         let transient = (TRANSIENT_TIME / self.design.tau).round() as usize;
