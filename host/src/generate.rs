@@ -87,6 +87,9 @@ pub struct Outcome {
     pub observer: PathBuf,
     /// Whether the observer file changed.
     pub changed: bool,
+    /// A crate published file by file rather than swapped in whole, and why
+    /// ([`crate::standalone::publish`]); `None` for `generated/` and swapped crates.
+    pub in_place: Option<String>,
 }
 
 /// Runs `gen` on `specs`: every design, then `lib.rs` declaring every design file present afterwards
@@ -334,5 +337,6 @@ fn write(one: Prepared, to: &Destinations) -> Result<Outcome, GenerateError> {
         figures,
         observer,
         changed,
+        in_place: None,
     })
 }

@@ -43,6 +43,15 @@ fn gen_into(spec_dir: &Path, out: &Path, extra: &[&str]) -> Output {
 /// [`gen_into`] with environment `env`; with a `version`, the spec's description ends in it. The
 /// validation and tuning runs are 8 (a cheaper fit: these cases are about files, not figures).
 fn gen_with(spec_dir: &Path, out: &Path, extra: &[&str], version: &str, env: &[(&str, &str)]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_mho"))
+        .args(gen_args(spec_dir, out, extra, version))
+        .envs(env.iter().copied())
+        .output()
+        .unwrap()
+}
+
+/// The arguments of [`gen_with`] (writes the spec).
+fn gen_args(spec_dir: &Path, out: &Path, extra: &[&str], version: &str) -> Vec<String> {
     let spec = spec_dir.join("my_oscillator.toml");
     let mut text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml"))
         .unwrap()
@@ -64,11 +73,7 @@ fn gen_with(spec_dir: &Path, out: &Path, extra: &[&str], version: &str, env: &[(
         s(&firmware),
     ];
     args.extend(extra);
-    Command::new(env!("CARGO_BIN_EXE_mho"))
-        .args(&args)
-        .envs(env.iter().copied())
-        .output()
-        .unwrap()
+    args.into_iter().map(str::to_owned).collect()
 }
 
 /// Copies the tree `from` into `to` (a new folder).
@@ -267,4 +272,83 @@ fn a_file_of_ours_the_user_edited_is_not_replaced() {
         "written by gen\nand a line of the user's\n"
     );
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The names in `dir` of stages (`.gen-<crate>.<pid>`, not the list `.gen-files`).
+fn stages_in(dir: &Path) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .flatten()
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with(".gen-") && n != ".gen-files")
+        .collect()
+}
+
+#[test]
+fn a_link_given_as_out_is_followed_and_a_mount_point_is_written_file_by_file() {
+    let dir = scratch("link-mount");
+    let real = dir.join("firmware/observer");
+    let run = gen_with(&dir, &real, &[], " a", &[]);
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    // `ln -s firmware/observer link; gen --out link`: the crate the link points to is replaced, and
+    // the link stays a link (it used to become a folder of its own, the old crate left in `real`).
+    std::os::unix::fs::symlink("firmware/observer", dir.join("link")).unwrap();
+    let run = gen_with(&dir, &dir.join("link"), &[], " b", &[]);
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    assert!(dir.join("link").symlink_metadata().unwrap().file_type().is_symlink());
+    let spec = |folder: &Path| std::fs::read_to_string(folder.join("spec.toml")).unwrap();
+    assert!(spec(&real).contains("(paper Example 1) b"));
+    assert!(stages_in(&dir).is_empty() && stages_in(&dir.join("firmware")).is_empty());
+
+    // `--out` on a mount point (a Docker volume, a tmpfs): a bind mount of the crate's folder onto
+    // itself, in a mount namespace of the run's own. It used to fail after the whole fit with
+    // "Device or resource busy" and leave a stage of several MB beside the folder on every run.
+    std::fs::write(real.join("NOTES.md"), "the user's notes").unwrap();
+    let args = gen_args(&dir, &real, &[], " c");
+    let mut unshare = Command::new("unshare");
+    if !is_root() {
+        unshare.arg("--map-root-user");
+    }
+    let run = unshare
+        .args(["--mount", "sh", "-c", "mount --bind \"$0\" \"$0\" && exec \"$@\""])
+        .arg(&real)
+        .arg(env!("CARGO_BIN_EXE_mho"))
+        .args(&args)
+        .output();
+    let run = match run {
+        Ok(run) if run.status.success() || String::from_utf8_lossy(&run.stderr).contains("gen:") => run,
+        other => {
+            let why = format!("no mount namespace here (unshare --mount): {other:?}");
+            assert!(std::env::var_os("CI").is_none(), "{why}");
+            eprintln!("skipped the mount point: {why}");
+            return;
+        }
+    };
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(run.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("mount point") && stderr.contains("file by file"),
+        "{stderr}"
+    );
+    assert!(spec(&real).contains("(paper Example 1) c"));
+    assert_eq!(
+        std::fs::read_to_string(real.join("NOTES.md")).unwrap(),
+        "the user's notes"
+    );
+    assert!(stages_in(&real).is_empty() && stages_in(&dir.join("firmware")).is_empty());
+    // The list is whole again (one content per file) and matches the files.
+    let check = Command::new("sha256sum")
+        .args(["--check", "--quiet", ".gen-files"])
+        .current_dir(&real)
+        .output()
+        .unwrap();
+    assert!(check.status.success(), "{}", String::from_utf8_lossy(&check.stdout));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+fn is_root() -> bool {
+    Command::new("id")
+        .arg("-u")
+        .output()
+        .is_ok_and(|o| String::from_utf8_lossy(&o.stdout).trim() == "0")
 }

@@ -387,3 +387,41 @@ fn every_observer_is_judged_on_every_named_scenario_and_auto_tunes_on_each() {
     let ekf = &comparison.from_observer_start[0];
     assert_eq!(rmse, &ekf.targets.iter().map(|t| t.0).collect::<Vec<_>>());
 }
+
+#[test]
+fn a_fixed_filter_start_where_the_model_blows_up_is_named_not_dropped() {
+    // `[observer.ekf] x0` far outside the model's domain: every candidate of the EKF's search
+    // diverges. The EKF's kinds used to vanish in silence from the report and the crate under `auto`,
+    // and with `kind = "ekf_box"` gen refused for the wrong reason ("needs a model the host can filter").
+    let scratch = Scratch::empty("fixed-blow-up");
+    for kind in ["auto", "ekf_box"] {
+        let observer = format!("[observer.ekf]\nx0 = {{ x1 = 1e3, x2 = 1e3 }}\n\n[observer]\nkind = \"{kind}\"\n#");
+        let spec = scratch.spec(
+            "vanderpol",
+            "vanderpol.toml",
+            &[FEW_RUNS[0], FEW_RUNS[1], ("[observer]\nkind = \"auto\"", &observer)],
+        );
+        let mut errors: Vec<(String, String)> = Vec::new();
+        let run = generate::run(
+            &[spec],
+            &scratch.destinations(),
+            false,
+            |_| ProgressBar::hidden(),
+            |_, done: Result<&generate::Prepared, &GenerateError>| {
+                if let Err(GenerateError::Spec(e)) = done {
+                    errors.push((e.field.clone(), e.problem.clone()));
+                }
+            },
+        );
+        assert!(run.is_err(), "{kind}: gen went on");
+        let [(field, problem)] = &errors[..] else {
+            panic!("{kind}: expected the fixed start named, got {errors:?}")
+        };
+        assert_eq!(field, "observer.ekf.x0", "{kind}: {problem}");
+        assert!(
+            problem.contains("x1 = 1e3, x2 = 1e3") && problem.contains("the model is not finite"),
+            "{kind}: {problem}"
+        );
+    }
+    assert!(scratch.files().is_empty(), "nothing is written");
+}

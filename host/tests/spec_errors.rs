@@ -306,14 +306,17 @@ const CASES: &[Case] = &[
     case("limit_scenario_samples", Vdp, &[Swap("samples = 101", "samples = 1000000000")], Exact("scenario.samples"), "at most 10000000"),
     // Every size within its bound, the total beyond the budget: 8·10⁷ stored samples, then 2·10¹¹ RK4 steps.
     case("budget_stored_values", Vdp, &[Swap("samples = 100\nseed = 1", "samples = 5000000\nseed = 1")], Exact("learning"), "shorter runs"),
-    case("budget_simulation_steps", Vdp, &[Swap("substeps = 10 ", "substeps = 10000 "), Swap("trajectories = 64", "trajectories = 200000")], Exact("learning"), "fewer `sampling.substeps`"),
+    case("budget_simulation_steps", Vdp, &[Swap("substeps = 10 ", "substeps = 10000 "), Swap("trajectories = 64", "trajectories = 200000")], Exact("validation"), "fewer `sampling.substeps`"),
     // The mismatch runs count too: 2⁸ corners × 4·10⁵ validation samples take 1.03·10⁹ steps (8·10⁶ without them).
     case("budget_mismatch_runs", Vdp, &[
         Swap("[model.derivatives]", "[model.parameters]\na1 = { value = 0.0, min = -1.0, max = 1.0 }\na2 = { value = 0.0, min = -1.0, max = 1.0 }\na3 = { value = 0.0, min = -1.0, max = 1.0 }\na4 = { value = 0.0, min = -1.0, max = 1.0 }\na5 = { value = 0.0, min = -1.0, max = 1.0 }\na6 = { value = 0.0, min = -1.0, max = 1.0 }\na7 = { value = 0.0, min = -1.0, max = 1.0 }\na8 = { value = 0.0, min = -1.0, max = 1.0 }\n\n[model.derivatives]"),
         Swap("trajectories = 64", "trajectories = 4000"),
-    ], Exact("learning"), "fewer parameters with a range"),
+    ], Exact("model.parameters"), "fewer parameters with a range"),
     // The tuning runs count too: 10⁹ samples of them alone, everything else as shipped.
-    case("budget_tuning_runs", Vdp, &[Swap("[tuning]", "[tuning]\ntrajectories = 1000000\nsamples = 1000")], Exact("learning"), "fewer validation or tuning runs"),
+    case("budget_tuning_runs", Vdp, &[Swap("[tuning]", "[tuning]\ntrajectories = 1000000\nsamples = 1000")], Exact("tuning"), "fewer validation or tuning runs"),
+    // A long scenario is named as such (it used to be blamed on `learning`): 10⁷ samples, its 16
+    // tuning runs and its noise draws hold 7·10⁸ samples.
+    case("budget_scenario_samples", Vdp, &[Swap("samples = 101", "samples = 10000000")], Exact("scenario.samples"), "shorter scenarios"),
 
     // ---- validate.rs `targets` (and `identifier` for their names).
     case("targets_empty", Vdp, &[
@@ -352,6 +355,10 @@ const CASES: &[Case] = &[
     case("scenario_unknown_field_keeps_its_message", Vdp, &[Swap("samples = 101", "samples = 101\nsteps = 3")], Exact("scenario.steps"), "correct the TOML"),
     case("scenario_shorter_than_horizon_ecoli", E05, &[Swap("samples = 40\nseed = 13", "samples = 2\nseed = 13")], Exact("scenario.samples"), "≥ `map.horizon`"),
 
+    // ---- validate_states.rs: every start inside `[model.bounds]` (a negative concentration).
+    case("start_scenario_x0_outside_bounds", E05, &[Swap("x0 = { X = 0.5, S = 3.0, P = 0.1 }", "x0 = { X = 0.5, S = -3.0, P = 0.1 }")], Exact("scenario.x0"), "start `S` within its bounds"),
+    case("start_observer_x0_outside_bounds", E05, &[Swap("x0 = { X = 0.5, S = 3.0, P = 0.1 }", "x0 = { X = 0.5, S = 3.0, P = 0.1 }\nobserver_x0 = { X = 0.5, S = 3.0, P = -0.1 }")], Exact("scenario.observer_x0"), "start `P` within its bounds"),
+    case("start_filter_x0_outside_bounds", E05, &[Append("\n[observer.ukf]\nx0 = { X = -0.5, S = 3.0, P = 0.1 }\n")], Exact("observer.ukf.x0"), "widen `model.bounds.X`"),
     // ---- filters.rs: `[observer.ekf]`, `[observer.ukf]` (the constants a spec fixes).
     case("filter_x0_of_no_state", Vdp, &[Append("\n[observer.ekf]\nx0 = { x1 = 1.0, x2 = 0.7, x3 = 0.0 }\n")], Exact("observer.ekf.x0.x3"), "one initial value per state (x1, x2)"),
     case("filter_x0_missing", Vdp, &[Append("\n[observer.ukf]\nx0 = { x1 = 1.0 }\n")], Exact("observer.ukf.x0.x2"), "`x2 = …` to `observer.ukf.x0`"),

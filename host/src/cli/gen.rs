@@ -155,6 +155,13 @@ fn standalone(
             outcome.name,
             outcome.folder.display(),
         );
+        if let Some(why) = &outcome.in_place {
+            eprintln!(
+                "note: {}: {why}: the crate was written file by file (each file whole; a run killed while \
+                 moving them can leave files of two runs, which the next gen replaces)",
+                outcome.folder.display()
+            );
+        }
     }
     if inside {
         eprintln!(

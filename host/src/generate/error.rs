@@ -58,6 +58,17 @@ pub enum GenerateError {
         /// Why.
         source: std::io::Error,
     },
+    /// The crate's folder can be neither swapped whole nor written file by file (see
+    /// [`crate::standalone::publish`]); said before anything is fitted.
+    #[error("{}: cannot publish the crate there: {why}\n  fix: {fix}", folder.display())]
+    CannotPublish {
+        /// The crate's folder, links followed.
+        folder: PathBuf,
+        /// What was tried and what the system said.
+        why: String,
+        /// What to change.
+        fix: &'static str,
+    },
     /// `--out` (or a design's folder in it) is a file.
     #[error("{}: is a file, not a folder: `gen --spec` writes a crate into the folder --out names\n  fix: choose a folder for --out (a new or empty one)", path.display())]
     NotAFolder {

@@ -36,6 +36,9 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         if let Some(figures) = (kind.tune)(&mut bench) {
             bench.observers.push(figures);
         }
+        if let Some(refused) = bench.refused.take() {
+            return Err(refused);
+        }
     }
     let chosen = choose(design, &bench.observers, &bench.spreads)?;
     let references = references::measure(&bench);

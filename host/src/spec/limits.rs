@@ -62,11 +62,40 @@ pub(super) fn check_budget(design: &Design) -> Result<(), SpecError> {
         0 => 0.0,
         p => 2f64.powi(p as i32),
     };
-    let samples = learning_runs * design.learning.samples as f64
-        + validation
-        + design.tuning.trajectories as f64 * design.tuning.samples as f64
-        + scenario
-        + corners * validation;
+    let learning = learning_runs * design.learning.samples as f64;
+    let tuning = design.tuning.trajectories as f64 * design.tuning.samples as f64;
+    let samples = learning + validation + tuning + scenario + corners * validation;
+    // The error names the section that asks for the most: where the fix has the most effect.
+    let several = design.scenarios.len() > 1;
+    let largest_scenario = design
+        .scenarios
+        .iter()
+        .enumerate()
+        .max_by_key(|(_, s)| s.samples)
+        .map_or("scenario.samples".to_owned(), |(i, _)| {
+            if several {
+                format!("scenario[{i}].samples")
+            } else {
+                "scenario.samples".to_owned()
+            }
+        });
+    let shares = [
+        (learning, "learning".to_owned()),
+        (validation, "validation".to_owned()),
+        (tuning, "tuning".to_owned()),
+        (scenario, largest_scenario),
+        (corners * validation, "model.parameters".to_owned()),
+    ];
+    let field = shares
+        .iter()
+        .fold((f64::NEG_INFINITY, "learning".to_owned()), |best, (share, field)| {
+            if *share > best.0 {
+                (*share, field.clone())
+            } else {
+                best
+            }
+        })
+        .1;
     let steps = samples * design.substeps as f64;
     let model = &design.model;
     let values = samples * (model.states.len() + model.outputs.len() + model.inputs.len()) as f64;
@@ -81,16 +110,25 @@ pub(super) fn check_budget(design: &Design) -> Result<(), SpecError> {
     if corners > 0.0 {
         fix.push_str(", or fewer parameters with a range");
     }
+    if scenario > 0.0 {
+        fix.push_str(", or shorter scenarios (`scenario.samples`)");
+    }
+    let scenarios = if scenario > 0.0 {
+        format!(", {scenario:.2e} samples of scenario runs (each scenario, its tuning runs and noise draws)")
+    } else {
+        String::new()
+    };
     if steps > MAX_SIMULATION_STEPS {
         return Err(design.error(
-            "learning",
+            field,
             format!(
-                "the runs take {steps:.2e} RK4 steps ({learning_runs:.0} learning runs of {} samples, {} validation runs of {}, {} tuning runs of {}{}, {} substeps), above the budget of {MAX_SIMULATION_STEPS:.0e}",
+                "the runs take {steps:.2e} RK4 steps ({learning_runs:.0} learning runs of {} samples, {} validation runs of {}, {} tuning runs of {}{}{}, {} substeps), above the budget of {MAX_SIMULATION_STEPS:.0e}",
                 design.learning.samples,
                 design.validation.trajectories,
                 design.validation.samples,
                 design.tuning.trajectories,
                 design.tuning.samples,
+                scenarios,
                 mismatch,
                 design.substeps
             ),
@@ -99,9 +137,9 @@ pub(super) fn check_budget(design: &Design) -> Result<(), SpecError> {
     }
     if values > MAX_STORED_VALUES {
         return Err(design.error(
-            "learning",
+            field,
             format!(
-                "the runs hold {values:.2e} values ({samples:.2e} samples), above the budget of {MAX_STORED_VALUES:.0e} (400 MB)"
+                "the runs hold {values:.2e} values ({samples:.2e} samples{scenarios}), above the budget of {MAX_STORED_VALUES:.0e} (400 MB)"
             ),
             fix,
         ));

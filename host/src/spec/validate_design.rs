@@ -90,6 +90,7 @@ impl Validator {
             ekf: self.fixed_filter("observer.ekf", section(|o| o.ekf.as_ref()), &model)?,
             ukf: self.fixed_filter("observer.ukf", section(|o| o.ukf.as_ref()), &model)?,
         };
+        self.starts_within_bounds(&model, &state_bounds, &scenarios, &filters)?;
         let design = Design {
             file: self.path.clone(),
             name: raw.name,

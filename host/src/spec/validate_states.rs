@@ -99,4 +99,51 @@ impl Validator {
         }
         Ok(bounds)
     }
+
+    /// Every start the spec gives inside `[model.bounds]`: a scenario's `x0` (the plant cannot start
+    /// where it cannot be) and `observer_x0`, and a filter's fixed `x0` (every kind that carries the
+    /// model projects its estimate onto the bounds, so a start outside is one no estimate can be).
+    pub(super) fn starts_within_bounds(
+        &self,
+        model: &Model,
+        bounds: &[super::Bounds],
+        scenarios: &[super::Scenario],
+        filters: &super::FixedFilters,
+    ) -> Result<(), SpecError> {
+        let several = scenarios.len() > 1;
+        let mut starts: Vec<(String, &[f64])> = Vec::new();
+        for (i, scenario) in scenarios.iter().enumerate() {
+            let section = if several {
+                format!("scenario[{i}]")
+            } else {
+                "scenario".to_owned()
+            };
+            starts.push((format!("{section}.x0"), &scenario.x0));
+            if let Some(x0) = &scenario.observer_x0 {
+                starts.push((format!("{section}.observer_x0"), x0));
+            }
+        }
+        for (section, fixed) in [("observer.ekf", &filters.ekf), ("observer.ukf", &filters.ukf)] {
+            if let Some(x0) = &fixed.x0 {
+                starts.push((format!("{section}.x0"), x0));
+            }
+        }
+        for (field, start) in starts {
+            for ((name, bound), &value) in model.states.iter().zip(bounds).zip(start) {
+                if value < bound.lower() || value > bound.upper() {
+                    let side = |v: Option<f64>| v.map_or("unbounded".to_owned(), |v| v.to_string());
+                    return Err(self.err(
+                        field,
+                        format!(
+                            "`{name}` = {value} is outside its bounds (`model.bounds.{name}`: min {}, max {})",
+                            side(bound.min),
+                            side(bound.max)
+                        ),
+                        format!("start `{name}` within its bounds, or widen `model.bounds.{name}` if the plant can be there"),
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
 }

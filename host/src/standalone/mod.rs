@@ -15,8 +15,9 @@
 //! unless every design fits (and, with `--strict`, passes the quality gates). Nothing the user wrote
 //! is replaced: every file a crate gets is recorded in its `.gen-files` ([`owned`]), and a run that
 //! would replace a file not recorded there (or changed since) is refused before anything is fitted,
-//! unless `--force`. A crate is replaced whole ([`publish`]): written into a stage beside it and
-//! swapped in with one rename, so that a run killed at any instant leaves the old crate or the new one.
+//! unless `--force`. A crate is replaced whole where it can be ([`publish`]): written into a stage
+//! beside it and swapped in with one rename, so that a run killed at any instant leaves the old crate
+//! or the new one; in a folder that cannot be renamed (a mount point), file by file, each file whole.
 
 pub mod c_library;
 pub mod owned;
@@ -128,7 +129,9 @@ pub fn run(
     };
     // Before anything is fitted: the runtime the crates will depend on is the `firmware` crate, and
     // no crate may replace a file `gen` did not write.
+    // Where each crate goes (links followed) and how it will be published there, also decided now.
     to.runtime.check()?;
+    let mut plans = std::collections::BTreeMap::new();
     for (_, design) in &designs {
         let folder = folder_of(&design.name);
         for path in folder.ancestors().take_while(|p| p.starts_with(&to.out)) {
@@ -136,7 +139,9 @@ pub fn run(
                 return Err(GenerateError::NotAFolder { path: path.to_owned() });
             }
         }
-        owned::check(&folder, &design.name, &to.runtime, to.force)?;
+        let plan = publish::plan(&folder)?;
+        owned::check(plan.folder(), &design.name, &to.runtime, to.force)?;
+        plans.insert(design.name.clone(), plan);
     }
     let prepared = prepare_all(
         designs,
@@ -149,22 +154,23 @@ pub fn run(
     prepared
         .into_iter()
         .map(|(path, mut one)| {
-            let folder = folder_of(&one.emitted.design.name);
+            let plan = &plans[&one.emitted.design.name];
+            let folder = plan.folder();
             let observer = folder.join("src").join(format!("{}.rs", one.emitted.design.name));
             let changed = std::fs::read_to_string(observer).ok().as_ref() != Some(&one.emitted.source);
-            // Written whole into a stage beside the crate, then swapped in ([`publish`]).
-            let outcome = publish::replace(&folder, |stage| {
+            // Written whole into a stage, then swapped in or moved in file by file ([`publish`]).
+            let outcome = plan.replace(|stage| {
                 one.folder = stage.join(owned::REPORT);
                 write(&one, &path, stage, &to.runtime, changed)
             })?;
-            Ok(outcome.moved(&folder))
+            Ok(outcome.moved(folder, plan.publication()))
         })
         .collect()
 }
 
 impl Outcome {
-    /// The outcome with its paths in the stage moved to the crate's `folder`.
-    fn moved(self, folder: &Path) -> Outcome {
+    /// The outcome with its paths in the stage moved to the crate's `folder`, published as said.
+    fn moved(self, folder: &Path, publication: &publish::Publication) -> Outcome {
         let stage = self.folder;
         let to = |path: PathBuf| path.strip_prefix(&stage).map_or(path.clone(), |p| folder.join(p));
         Outcome {
@@ -174,6 +180,10 @@ impl Outcome {
             figures: self.figures.into_iter().map(to).collect(),
             observer: to(self.observer),
             changed: self.changed,
+            in_place: match publication {
+                publish::Publication::Swap => None,
+                publish::Publication::InPlace { why } => Some(why.clone()),
+            },
         }
     }
 }
@@ -257,6 +267,7 @@ fn write(
         figures,
         observer,
         changed,
+        in_place: None,
     })
 }
 

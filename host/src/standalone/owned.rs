@@ -2,7 +2,9 @@
 //!
 //! A crate folder may be anywhere a user points `--out`, their own project's folder included. Every
 //! crate `gen` writes lists the files it wrote in [`LIST`] (written last): one line per file,
-//! `<SHA-256 of its content>  <path relative to the crate>`, as `sha256sum` prints them. Before
+//! `<SHA-256 of its content>  <path relative to the crate>`, as `sha256sum` prints them (a path may be
+//! listed twice, with the old and the new content, while a crate is published file by file:
+//! [`super::publish`]). Before
 //! anything is fitted or written, every file the run would replace must be listed there with the hash
 //! of what it holds now; a file that is not (the user's own, or one of ours the user edited) stops the
 //! run, naming the file and the fix, unless `--force` says to replace it anyway.
@@ -11,7 +13,7 @@
 //! `report/` folder (the report's texts, tables and figures, whose names depend on the design: the
 //! folder is the tool's as a whole).
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 pub use crate::generate::NotOurs;
@@ -23,9 +25,10 @@ pub const LIST: &str = ".gen-files";
 /// The report's folder in a crate.
 pub const REPORT: &str = "report";
 
-/// The files `gen` wrote in a crate folder, by path relative to it, with their content's SHA-256.
+/// The files `gen` wrote in a crate folder, by path relative to it, with their content's SHA-256
+/// (one, or two while a crate is published file by file).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Owned(BTreeMap<PathBuf, String>);
+pub struct Owned(BTreeMap<PathBuf, BTreeSet<String>>);
 
 impl Owned {
     /// The list in `folder` (empty when there is none).
@@ -35,12 +38,43 @@ impl Owned {
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Owned::default()),
             Err(e) => return Err(e),
         };
-        Ok(Owned(
-            text.lines()
-                .filter_map(|line| line.split_once("  "))
-                .map(|(hash, path)| (PathBuf::from(path), hash.to_owned()))
-                .collect(),
-        ))
+        let mut owned = Owned::default();
+        for (hash, path) in text.lines().filter_map(|line| line.split_once("  ")) {
+            owned.0.entry(PathBuf::from(path)).or_default().insert(hash.to_owned());
+        }
+        Ok(owned)
+    }
+
+    /// The files listed, relative to the crate.
+    pub fn paths(&self) -> impl Iterator<Item = &Path> {
+        self.0.keys().map(PathBuf::as_path)
+    }
+
+    /// Whether `relative` is listed.
+    pub fn lists(&self, relative: &Path) -> bool {
+        self.0.contains_key(relative)
+    }
+
+    /// Both lists in one: every file with every content either gives it.
+    pub fn merged(mut self, other: &Owned) -> Owned {
+        for (path, hashes) in &other.0 {
+            self.0.entry(path.clone()).or_default().extend(hashes.iter().cloned());
+        }
+        self
+    }
+
+    /// Writes the list into `folder` (atomically).
+    pub fn write(&self, folder: &Path) -> std::io::Result<()> {
+        let text: String = self
+            .0
+            .iter()
+            .flat_map(|(path, hashes)| {
+                hashes
+                    .iter()
+                    .map(move |hash| format!("{hash}  {}\n", path.to_string_lossy()))
+            })
+            .collect();
+        crate::output::write_atomically(&folder.join(LIST), text.as_bytes())
     }
 
     /// Whether `relative` (in `folder`) may be replaced: it does not exist, or it is listed with the
@@ -60,7 +94,7 @@ impl Owned {
         };
         match self.0.get(relative) {
             None => Err(not_ours("it exists and `gen` did not write it")),
-            Some(hash) if *hash != sha256(&bytes) => Err(not_ours("it was changed since `gen` wrote it")),
+            Some(hashes) if !hashes.contains(&sha256(&bytes)) => Err(not_ours("it was changed since `gen` wrote it")),
             Some(_) => Ok(()),
         }
     }
@@ -68,18 +102,16 @@ impl Owned {
     /// Records `written` (paths relative to `folder`, as they are now on disk) and keeps the entries
     /// of files still there unchanged; writes the list last, atomically.
     pub fn record(mut self, folder: &Path, written: &[PathBuf]) -> std::io::Result<()> {
-        self.0
-            .retain(|relative, hash| std::fs::read(folder.join(relative)).is_ok_and(|b| sha256(&b) == *hash));
+        self.0.retain(|relative, hashes| {
+            let now = std::fs::read(folder.join(relative)).map(|b| sha256(&b));
+            hashes.retain(|hash| now.as_ref().is_ok_and(|now| now == hash));
+            !hashes.is_empty()
+        });
         for relative in written {
             let bytes = std::fs::read(folder.join(relative))?;
-            self.0.insert(relative.clone(), sha256(&bytes));
+            self.0.insert(relative.clone(), BTreeSet::from([sha256(&bytes)]));
         }
-        let text: String = self
-            .0
-            .iter()
-            .map(|(path, hash)| format!("{hash}  {}\n", path.to_string_lossy()))
-            .collect();
-        crate::output::write_atomically(&folder.join(LIST), text.as_bytes())
+        self.write(folder)
     }
 }
 

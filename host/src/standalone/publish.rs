@@ -1,82 +1,236 @@
-//! Publishing a crate whole: a kill at any instant of `gen --spec` leaves, at the crate's path, either
-//! the old crate or the new one, never a mix (new tables with an old observer, a README of one run
-//! and a report of another).
+//! Publishing a crate: decided before anything is fitted ([`plan`]), carried out once the new crate is
+//! written ([`Plan::replace`]).
 //!
-//! 1. The new crate is written into a staging folder beside it, `<parent>/.<name>.gen-<pid>`, which
+//! **The crate's folder is the one `--out` leads to**: a symbolic link given as `--out` (or met on the
+//! way) is followed, so that the crate the user's build reads is the one replaced and the link stays
+//! a link.
+//!
+//! **Whole (the swap), wherever it can work**: a kill at any instant of `gen --spec` leaves, at the
+//! crate's path, either the old crate or the new one, never a mix (new tables with an old observer, a
+//! README of one run and a report of another).
+//!
+//! 1. The new crate is written into a staging folder beside it, `<parent>/.gen-<name>.<pid>`, which
 //!    nothing else reads: a kill while it is written leaves the old crate untouched (and the stage,
-//!    which the next run removes once its process is gone).
+//!    which the next run removes once its process is gone; a run that fails removes its own).
 //! 2. What the old folder holds that is not the tool's is carried into the stage as hard links (a copy
 //!    where a link is refused): the user's `target/`, `.git/`, notes. The tool's own files of the old
 //!    crate (listed in its [`super::owned::LIST`] with an unchanged hash) are not: the new crate
 //!    replaces them, figures it no longer draws included.
 //! 3. One rename publishes the stage. On Linux `renameat2(RENAME_EXCHANGE)` swaps the stage and the
-//!    crate atomically; a crate that did not exist is renamed into place. Elsewhere the old crate is
-//!    first renamed aside (the one instant a kill leaves no crate at the path; the aside folder holds
-//!    it whole).
+//!    crate atomically; a crate that did not exist is renamed into place. Elsewhere (or where the file
+//!    system has no exchange) the old crate is first renamed aside (the one instant a kill leaves no
+//!    crate at the path; the aside folder holds it whole).
 //! 4. The stage, which now holds the old crate, is removed.
 //!
 //! The folder is a new one afterwards: a shell whose working directory is inside it sees the old
 //! folder until it changes directory again (`gen` says so when its own working directory is there).
 //!
+//! **File by file, where a swap cannot work**: a folder that is a mount point (a Docker volume, a
+//! tmpfs, a shared folder) cannot be renamed, and one whose parent the user may not write has no room
+//! for a stage beside it. There the stage is made inside the crate's folder, `<folder>/.gen-<name>.<pid>`,
+//! and each file moves into place by its own rename: **every file is whole, the old one or the new
+//! one, but a kill during the moves (a few milliseconds) can leave a crate whose files come from two
+//! runs**; the list of the tool's files then names both contents of each, so the next `gen` replaces
+//! them all. Files of the old crate that the new one no longer has are removed, then the new list moves
+//! in last. `gen` says when a crate was published this way.
+//!
+//! Where neither can work (the folder cannot be created or written), `gen` refuses before fitting,
+//! naming the folder and the fix.
+//!
 //! `GEN_STOP_AFTER_RENAME=k` (for tests) ends the process, as a kill would, right after the `k`-th
-//! rename of step 3 (`0`: before the first, with the stage complete); renames inside the stage are not
-//! counted, since nothing outside reads it.
+//! rename that publishes (`0`: before the first, with the stage complete); renames inside a stage are
+//! not counted, since nothing outside reads it.
 
-use std::path::{Path, PathBuf};
+use std::path::{Component, Path, PathBuf};
 
 use crate::generate::GenerateError;
 
 /// The prefix of a staging folder's name, before the crate folder's name.
 const STAGE: &str = ".gen-";
 
-/// Writes a crate into `folder` as a whole: `build` writes the new crate into the staging folder it is
-/// given, then the stage replaces `folder` (see the module's documentation).
-pub fn replace<T>(folder: &Path, build: impl FnOnce(&Path) -> Result<T, GenerateError>) -> Result<T, GenerateError> {
+/// How a crate will be published, decided by [`plan`] before anything is fitted.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Publication {
+    /// Written beside the folder and swapped in whole.
+    Swap,
+    /// Written inside the folder and moved into place file by file (the folder is a mount point,
+    /// or its parent cannot be written).
+    InPlace {
+        /// Why the swap cannot work there.
+        why: String,
+    },
+}
+
+/// Where and how one crate is published.
+#[derive(Clone, Debug)]
+pub struct Plan {
+    /// The crate's folder, every symbolic link followed.
+    folder: PathBuf,
+    /// Its parent and name.
+    parent: PathBuf,
+    name: String,
+    /// How.
+    publication: Publication,
+}
+
+/// Decides, before anything is fitted, how the crate at `folder` (`--out`, or a design's folder in
+/// it) will be published: follows links, then tries the parent (for a stage beside the folder) and,
+/// where that cannot work, the folder itself. Creates nothing that stays: the folder's missing
+/// parents are created (the crate goes there anyway), the probe stages are removed at once.
+pub fn plan(folder: &Path) -> Result<Plan, GenerateError> {
     let io = |path: &Path| {
         let path = path.to_owned();
         move |source| GenerateError::Io { path, source }
     };
-    let (parent, name) = split(folder).map_err(io(folder))?;
-    std::fs::create_dir_all(&parent).map_err(io(&parent))?;
-    remove_dead_stages(&parent, &name);
-    let stage = parent.join(format!("{STAGE}{name}.{}", std::process::id()));
-    if stage.exists() {
-        std::fs::remove_dir_all(&stage).map_err(io(&stage))?;
-    }
-    std::fs::create_dir(&stage).map_err(io(&stage))?;
-    let staged = (|| {
-        let built = build(&stage)?;
-        if folder.is_dir() {
-            carry(folder, &stage).map_err(io(folder))?;
-            if let Ok(metadata) = std::fs::metadata(folder) {
-                let _ = std::fs::set_permissions(&stage, metadata.permissions());
-            }
-        }
-        crate::output::sync_folder(&stage);
-        Ok(built)
-    })();
-    let built = match staged {
-        Ok(built) => built,
-        Err(e) => {
-            let _ = std::fs::remove_dir_all(&stage);
-            return Err(e);
+    let folder = resolve(folder).map_err(io(folder))?;
+    let (parent, name) = match (folder.parent(), folder.file_name()) {
+        (Some(parent), Some(name)) => (parent.to_owned(), name.to_string_lossy().into_owned()),
+        _ => {
+            return Err(GenerateError::CannotPublish {
+                folder,
+                why: "a crate cannot be the root folder".to_owned(),
+                fix: "choose a folder with a parent (--out)",
+            })
         }
     };
-    let mut renames = Renames::from_env();
-    renames.checkpoint();
-    if folder.exists() {
-        swap(&stage, folder, &mut renames).map_err(io(folder))?;
-        // The stage now holds the old crate.
-        std::fs::remove_dir_all(&stage).map_err(io(&stage))?;
-    } else {
-        std::fs::rename(&stage, folder).map_err(io(folder))?;
-        renames.done();
+    if folder.exists() && !folder.is_dir() {
+        return Err(GenerateError::NotAFolder { path: folder });
     }
-    crate::output::sync_folder(&parent);
-    Ok(built)
+    std::fs::create_dir_all(&parent).map_err(io(&parent))?;
+    let beside = if is_mount_point(&folder) {
+        Err("it is a mount point, which cannot be renamed".to_owned())
+    } else {
+        probe(&parent, &name).map_err(|e| format!("no stage can be made beside it in {} ({e})", parent.display()))
+    };
+    let publication = match beside {
+        Ok(()) => Publication::Swap,
+        Err(why) => {
+            let inside = std::fs::create_dir_all(&folder).and_then(|()| probe(&folder, &name));
+            if let Err(e) = inside {
+                return Err(GenerateError::CannotPublish {
+                    folder,
+                    why: format!("{why}, and none inside it either ({e})"),
+                    fix: "choose a folder you may write (--out), or make this one writable",
+                });
+            }
+            Publication::InPlace { why }
+        }
+    };
+    Ok(Plan {
+        folder,
+        parent,
+        name,
+        publication,
+    })
 }
 
-/// Whether the current directory is inside `folder` (whose inode `replace` has changed).
+impl Plan {
+    /// The crate's folder, links followed.
+    pub fn folder(&self) -> &Path {
+        &self.folder
+    }
+
+    /// How the crate will be published.
+    pub fn publication(&self) -> &Publication {
+        &self.publication
+    }
+
+    /// Writes the crate: `build` writes the new crate into the staging folder it is given, then the
+    /// stage replaces the folder (see the module's documentation). A failure at any step removes the
+    /// stage.
+    pub fn replace<T>(&self, build: impl FnOnce(&Path) -> Result<T, GenerateError>) -> Result<T, GenerateError> {
+        let io = |path: &Path| {
+            let path = path.to_owned();
+            move |source| GenerateError::Io { path, source }
+        };
+        let home = match self.publication {
+            Publication::Swap => &self.parent,
+            Publication::InPlace { .. } => &self.folder,
+        };
+        std::fs::create_dir_all(home).map_err(io(home))?;
+        remove_dead_stages(&self.parent, &self.name);
+        remove_dead_stages(&self.folder, &self.name);
+        let stage = home.join(format!("{STAGE}{}.{}", self.name, std::process::id()));
+        if stage.exists() {
+            std::fs::remove_dir_all(&stage).map_err(io(&stage))?;
+        }
+        std::fs::create_dir(&stage).map_err(io(&stage))?;
+        let published = (|| {
+            let built = build(&stage)?;
+            match self.publication {
+                Publication::Swap => self.swap_in(&stage)?,
+                Publication::InPlace { .. } => self.move_in(&stage).map_err(io(&self.folder))?,
+            }
+            Ok(built)
+        })();
+        // Gone whatever happened: after a swap it holds the old crate; after a failure, half a new one.
+        let _ = std::fs::remove_dir_all(&stage);
+        crate::output::sync_folder(home);
+        published
+    }
+
+    /// Publishes the complete stage beside the folder by one rename (steps 2 to 3).
+    fn swap_in(&self, stage: &Path) -> Result<(), GenerateError> {
+        let io = |path: &Path| {
+            let path = path.to_owned();
+            move |source| GenerateError::Io { path, source }
+        };
+        let folder = &self.folder;
+        if folder.is_dir() {
+            carry(folder, stage).map_err(io(folder))?;
+            if let Ok(metadata) = std::fs::metadata(folder) {
+                let _ = std::fs::set_permissions(stage, metadata.permissions());
+            }
+        }
+        crate::output::sync_folder(stage);
+        let mut renames = Renames::from_env();
+        renames.checkpoint();
+        if folder.exists() {
+            swap(stage, folder, &mut renames).map_err(io(folder))
+        } else {
+            std::fs::rename(stage, folder).map_err(io(folder))?;
+            renames.done();
+            Ok(())
+        }
+    }
+
+    /// Moves the complete stage inside the folder into place, file by file (see the module's
+    /// documentation): the merged list first, then each file, then the old files the new crate no
+    /// longer has are removed, and the new list moves in last.
+    fn move_in(&self, stage: &Path) -> std::io::Result<()> {
+        let folder = &self.folder;
+        let list = Path::new(super::owned::LIST);
+        let old = super::owned::Owned::read(folder)?;
+        let new = super::owned::Owned::read(stage)?;
+        old.clone().merged(&new).write(folder)?;
+        crate::output::sync_folder(stage);
+        let mut renames = Renames::from_env();
+        renames.checkpoint();
+        for relative in files_under(stage)? {
+            if relative == list {
+                continue;
+            }
+            let to = folder.join(&relative);
+            if let Some(parent) = to.parent() {
+                std::fs::create_dir_all(parent)?;
+            }
+            std::fs::rename(stage.join(&relative), &to)?;
+            renames.done();
+        }
+        for relative in old.paths().filter(|p| !new.lists(p)) {
+            // Only what is still the tool's, as the old list says.
+            if old.may_replace(folder, relative).is_ok() {
+                let _ = std::fs::remove_file(folder.join(relative));
+            }
+        }
+        std::fs::rename(stage.join(list), folder.join(list))?;
+        renames.done();
+        crate::output::sync_folder(folder);
+        Ok(())
+    }
+}
+
+/// Whether the current directory is inside `folder` (whose inode a swap has changed).
 pub fn holds_current_directory(folder: &Path) -> bool {
     let (Ok(here), Ok(folder)) = (std::env::current_dir(), folder.canonicalize()) else {
         return false;
@@ -84,23 +238,112 @@ pub fn holds_current_directory(folder: &Path) -> bool {
     here.canonicalize().is_ok_and(|here| here.starts_with(&folder))
 }
 
-/// The folder's parent and name, from its absolute path (`--out .` has no name of its own).
-fn split(folder: &Path) -> std::io::Result<(PathBuf, String)> {
-    let absolute = match folder.canonicalize() {
-        Ok(path) => path,
-        Err(_) => std::path::absolute(folder)?,
-    };
-    match (absolute.parent(), absolute.file_name()) {
-        (Some(parent), Some(name)) => Ok((parent.to_owned(), name.to_string_lossy().into_owned())),
-        _ => Err(std::io::Error::other(
-            "a crate cannot be the root folder: choose a folder with a parent (--out)",
-        )),
+/// The folder `path` leads to, absolute, with every symbolic link on the way followed (the last
+/// component's too, even where its target does not exist yet). A folder that does not exist is its
+/// nearest existing ancestor's real path with the rest appended.
+fn resolve(path: &Path) -> std::io::Result<PathBuf> {
+    let mut path = std::path::absolute(path)?;
+    for _ in 0..40 {
+        match path.symlink_metadata() {
+            Ok(metadata) if metadata.file_type().is_symlink() => {
+                let target = std::fs::read_link(&path)?;
+                // A relative target is relative to the link's folder.
+                path = match path.parent() {
+                    Some(parent) => parent.join(target),
+                    None => target,
+                };
+            }
+            Ok(_) => return path.canonicalize(),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                let Some((parent, name)) = path.parent().zip(path.file_name()) else {
+                    return Ok(path);
+                };
+                if matches!(path.components().next_back(), Some(Component::ParentDir)) {
+                    return Ok(path);
+                }
+                return Ok(resolve(parent)?.join(name));
+            }
+            Err(e) => return Err(e),
+        }
     }
+    Err(std::io::Error::other("too many symbolic links on the way (a loop?)"))
 }
 
-/// Removes the stages of `name` left by processes that are gone (a live process's stage is its own).
-fn remove_dead_stages(parent: &Path, name: &str) {
-    let Ok(entries) = std::fs::read_dir(parent) else { return };
+/// Whether `folder` is a mount point: on another device than its parent, or (a bind mount, on the
+/// same device) listed as one by the kernel (`/proc/self/mountinfo`, where there is one).
+fn is_mount_point(folder: &Path) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        let parent = folder.parent().unwrap_or(folder);
+        if let (Ok(here), Ok(above)) = (std::fs::metadata(folder), std::fs::metadata(parent)) {
+            if here.dev() != above.dev() {
+                return true;
+            }
+        }
+    }
+    let Ok(table) = std::fs::read_to_string("/proc/self/mountinfo") else {
+        return false;
+    };
+    table
+        .lines()
+        .filter_map(|line| line.split(' ').nth(4))
+        .any(|point| Path::new(&unescape_mount_point(point)) == folder)
+}
+
+/// A mount point as `/proc/self/mountinfo` writes it: space, tab, newline and backslash as `\ooo`.
+fn unescape_mount_point(field: &str) -> String {
+    let mut out = String::with_capacity(field.len());
+    let mut rest = field;
+    while let Some(at) = rest.find('\\') {
+        out.push_str(&rest[..at]);
+        let code = rest.get(at + 1..at + 4).and_then(|o| u8::from_str_radix(o, 8).ok());
+        match code {
+            Some(byte) => {
+                out.push(char::from(byte));
+                rest = &rest[at + 4..];
+            }
+            None => {
+                out.push('\\');
+                rest = &rest[at + 1..];
+            }
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
+/// Whether a stage for `name` can be made in `home`: makes one and removes it.
+fn probe(home: &Path, name: &str) -> std::io::Result<()> {
+    let probe = home.join(format!("{STAGE}{name}.{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&probe);
+    std::fs::create_dir(&probe)?;
+    std::fs::remove_dir(&probe)
+}
+
+/// Every file (and symbolic link) under `folder`, relative to it.
+fn files_under(folder: &Path) -> std::io::Result<Vec<PathBuf>> {
+    let mut files = Vec::new();
+    let mut pending = vec![PathBuf::new()];
+    while let Some(relative) = pending.pop() {
+        for entry in std::fs::read_dir(folder.join(&relative))? {
+            let entry = entry?;
+            let relative = relative.join(entry.file_name());
+            if entry.file_type()?.is_dir() {
+                pending.push(relative);
+            } else {
+                files.push(relative);
+            }
+        }
+    }
+    files.sort();
+    Ok(files)
+}
+
+/// Removes the stages of `name` in `home` left by processes that are gone (a live process's stage is
+/// its own).
+fn remove_dead_stages(home: &Path, name: &str) {
+    let Ok(entries) = std::fs::read_dir(home) else { return };
     let prefix = format!("{STAGE}{name}.");
     for entry in entries.flatten() {
         let file = entry.file_name().to_string_lossy().into_owned();
@@ -118,7 +361,7 @@ fn remove_dead_stages(parent: &Path, name: &str) {
 
 /// Carries into `stage` every entry of the old crate `folder` that is not the tool's and that the new
 /// crate (already in `stage`) does not hold: hard links for files, folders recreated, symbolic links
-/// copied as links.
+/// copied as links. Stages of other runs inside the folder are not carried.
 fn carry(folder: &Path, stage: &Path) -> std::io::Result<()> {
     let owned = super::owned::Owned::read(folder)?;
     let mut pending = vec![PathBuf::new()];
@@ -129,6 +372,13 @@ fn carry(folder: &Path, stage: &Path) -> std::io::Result<()> {
             let (from, to) = (folder.join(&relative), stage.join(&relative));
             let kind = entry.file_type()?;
             if kind.is_dir() {
+                // Another run's stage inside the folder (published file by file) is not the user's.
+                let stage_of = format!("{STAGE}{}.", folder.file_name().unwrap_or_default().to_string_lossy());
+                if relative.parent() == Some(Path::new(""))
+                    && entry.file_name().to_string_lossy().starts_with(&stage_of)
+                {
+                    continue;
+                }
                 if !to.exists() {
                     std::fs::create_dir(&to)?;
                     std::fs::set_permissions(&to, std::fs::metadata(&from)?.permissions())?;
@@ -162,24 +412,39 @@ fn link_again(target: &Path, at: &Path) -> std::io::Result<()> {
     std::fs::copy(target, at).map(|_| ())
 }
 
-/// Swaps `stage` and `folder`: one atomic exchange on Linux.
+/// Swaps `stage` and `folder`: one atomic exchange on Linux, where the file system has it.
 #[cfg(target_os = "linux")]
 fn swap(stage: &Path, folder: &Path, renames: &mut Renames) -> std::io::Result<()> {
     use rustix::fs::{renameat_with, RenameFlags, CWD};
-    renameat_with(CWD, stage, CWD, folder, RenameFlags::EXCHANGE)?;
-    renames.done();
-    Ok(())
+    match renameat_with(CWD, stage, CWD, folder, RenameFlags::EXCHANGE) {
+        Ok(()) => {
+            renames.done();
+            Ok(())
+        }
+        // No exchange on this file system (EINVAL): the two renames below.
+        Err(rustix::io::Errno::INVAL) => swap_aside(stage, folder, renames),
+        Err(e) => Err(e.into()),
+    }
+}
+
+/// Swaps `stage` and `folder` by renames (no atomic exchange here).
+#[cfg(not(target_os = "linux"))]
+fn swap(stage: &Path, folder: &Path, renames: &mut Renames) -> std::io::Result<()> {
+    swap_aside(stage, folder, renames)
 }
 
 /// Swaps `stage` and `folder`: the old crate aside, then the new one in its place.
-#[cfg(not(target_os = "linux"))]
-fn swap(stage: &Path, folder: &Path, renames: &mut Renames) -> std::io::Result<()> {
+fn swap_aside(stage: &Path, folder: &Path, renames: &mut Renames) -> std::io::Result<()> {
     let mut aside = stage.as_os_str().to_owned();
     aside.push(".old");
     let aside = PathBuf::from(aside);
     std::fs::rename(folder, &aside)?;
     renames.done();
-    std::fs::rename(stage, folder)?;
+    if let Err(e) = std::fs::rename(stage, folder) {
+        // The old crate back in its place.
+        let _ = std::fs::rename(&aside, folder);
+        return Err(e);
+    }
     renames.done();
     std::fs::rename(&aside, stage)
 }
@@ -237,12 +502,14 @@ mod tests {
         let inode = |p: &Path| std::os::unix::fs::MetadataExt::ino(&std::fs::metadata(p).unwrap());
         let notes_inode = inode(&folder.join("notes.txt"));
 
-        let value = replace(&folder, |stage| {
-            assert_ne!(stage, folder);
-            std::fs::write(stage.join("README.md"), "new readme").unwrap();
-            Ok(7)
-        })
-        .unwrap();
+        let value = plan(&folder)
+            .unwrap()
+            .replace(|stage| {
+                assert_ne!(stage, folder);
+                std::fs::write(stage.join("README.md"), "new readme").unwrap();
+                Ok(7)
+            })
+            .unwrap();
         assert_eq!(value, 7);
         assert_eq!(std::fs::read_to_string(folder.join("README.md")).unwrap(), "new readme");
         // The old crate's figure was the tool's: gone with the old crate. The user's files are kept,
@@ -268,7 +535,7 @@ mod tests {
         let folder = dir.join("crate");
         std::fs::create_dir_all(&folder).unwrap();
         std::fs::write(folder.join("README.md"), "old").unwrap();
-        let failed: Result<(), _> = replace(&folder, |stage| {
+        let failed: Result<(), _> = plan(&folder).unwrap().replace(|stage| {
             std::fs::write(stage.join("README.md"), "half").unwrap();
             Err(GenerateError::Failed { failed: 1, total: 1 })
         });
@@ -278,13 +545,163 @@ mod tests {
         // A stage of a process that is gone is removed by the next run; a new folder is created.
         let dead = dir.join(format!("{STAGE}fresh.4194305"));
         std::fs::create_dir_all(&dead).unwrap();
-        replace(&dir.join("fresh"), |stage| {
-            std::fs::write(stage.join("a"), "a").unwrap();
+        plan(&dir.join("fresh"))
+            .unwrap()
+            .replace(|stage| {
+                std::fs::write(stage.join("a"), "a").unwrap();
+                Ok(())
+            })
+            .unwrap();
+        assert!(!dead.exists());
+        assert_eq!(std::fs::read_to_string(dir.join("fresh/a")).unwrap(), "a");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    /// Writes a crate of one file `README.md` holding `text` and records it as the tool's.
+    fn publish_readme(folder: &Path, text: &str) -> Publication {
+        let plan = plan(folder).unwrap();
+        plan.replace(|stage| {
+            std::fs::write(stage.join("README.md"), text).unwrap();
+            super::super::owned::Owned::default()
+                .record(stage, &[PathBuf::from("README.md")])
+                .unwrap();
             Ok(())
         })
         .unwrap();
-        assert!(!dead.exists());
-        assert_eq!(std::fs::read_to_string(dir.join("fresh/a")).unwrap(), "a");
+        plan.publication().clone()
+    }
+
+    #[test]
+    fn a_link_given_as_the_folder_is_followed_and_stays_a_link() {
+        let dir = scratch("link");
+        let real = dir.join("firmware/observer");
+        std::fs::create_dir_all(&real).unwrap();
+        std::fs::write(real.join("notes.txt"), "the user's").unwrap();
+        assert_eq!(publish_readme(&real, "a"), Publication::Swap);
+        // `link` -> firmware/observer, relative, as `ln -s` makes it; and a link on the way.
+        std::os::unix::fs::symlink("firmware/observer", dir.join("link")).unwrap();
+        std::os::unix::fs::symlink("firmware", dir.join("way")).unwrap();
+        publish_readme(&dir.join("link"), "b");
+        assert!(dir.join("link").symlink_metadata().unwrap().file_type().is_symlink());
+        assert_eq!(std::fs::read_to_string(real.join("README.md")).unwrap(), "b");
+        publish_readme(&dir.join("way/observer"), "c");
+        assert!(dir.join("way").symlink_metadata().unwrap().file_type().is_symlink());
+        assert_eq!(std::fs::read_to_string(real.join("README.md")).unwrap(), "c");
+        assert_eq!(std::fs::read_to_string(real.join("notes.txt")).unwrap(), "the user's");
+        // A link to a folder not made yet: the crate is made where it points.
+        std::os::unix::fs::symlink(dir.join("later"), dir.join("dangling")).unwrap();
+        publish_readme(&dir.join("dangling"), "d");
+        assert!(dir
+            .join("dangling")
+            .symlink_metadata()
+            .unwrap()
+            .file_type()
+            .is_symlink());
+        assert_eq!(std::fs::read_to_string(dir.join("later/README.md")).unwrap(), "d");
+        // No stage anywhere.
+        for folder in [&dir, &dir.join("firmware")] {
+            for entry in std::fs::read_dir(folder).unwrap().flatten() {
+                assert!(!entry.file_name().to_string_lossy().starts_with(STAGE), "{entry:?}");
+            }
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn mount_points_are_read_from_the_kernels_escaped_table() {
+        assert_eq!(unescape_mount_point("/mnt/my\\040disk"), "/mnt/my disk");
+        assert_eq!(unescape_mount_point("/a\\134b"), "/a\\b");
+        assert_eq!(unescape_mount_point("/plain"), "/plain");
+        // The root of this process's file system is one; a fresh folder in the temporary one is not.
+        if Path::new("/proc/self/mountinfo").exists() {
+            assert!(is_mount_point(Path::new("/")));
+            let dir = scratch("not-a-mount");
+            assert!(!is_mount_point(&dir));
+            std::fs::remove_dir_all(&dir).unwrap();
+        }
+    }
+
+    #[test]
+    fn in_place_the_files_move_one_by_one_and_the_old_tool_files_go() {
+        let dir = scratch("in-place");
+        let folder = dir.join("crate");
+        std::fs::create_dir_all(folder.join("report")).unwrap();
+        std::fs::write(folder.join("report/old.svg"), "old figure").unwrap();
+        std::fs::write(folder.join("README.md"), "old").unwrap();
+        std::fs::write(folder.join("notes.txt"), "the user's").unwrap();
+        super::super::owned::Owned::default()
+            .record(&folder, &[PathBuf::from("README.md"), PathBuf::from("report/old.svg")])
+            .unwrap();
+        let plan = Plan {
+            folder: folder.clone(),
+            parent: dir.clone(),
+            name: "crate".to_owned(),
+            publication: Publication::InPlace {
+                why: "a test".to_owned(),
+            },
+        };
+        let inode = |p: &Path| std::os::unix::fs::MetadataExt::ino(&std::fs::metadata(p).unwrap());
+        let folder_inode = inode(&folder);
+        plan.replace(|stage| {
+            assert!(stage.starts_with(&folder));
+            std::fs::create_dir_all(stage.join("src")).unwrap();
+            std::fs::write(stage.join("README.md"), "new").unwrap();
+            std::fs::write(stage.join("src/lib.rs"), "lib").unwrap();
+            let written = [PathBuf::from("README.md"), PathBuf::from("src/lib.rs")];
+            super::super::owned::Owned::default().record(stage, &written).unwrap();
+            Ok(())
+        })
+        .unwrap();
+        assert_eq!(inode(&folder), folder_inode, "the folder itself is kept");
+        assert_eq!(std::fs::read_to_string(folder.join("README.md")).unwrap(), "new");
+        assert_eq!(std::fs::read_to_string(folder.join("src/lib.rs")).unwrap(), "lib");
+        assert_eq!(std::fs::read_to_string(folder.join("notes.txt")).unwrap(), "the user's");
+        assert!(!folder.join("report/old.svg").exists());
+        let list = super::super::owned::Owned::read(&folder).unwrap();
+        let listed: Vec<_> = list.paths().map(Path::to_owned).collect();
+        assert_eq!(listed, [PathBuf::from("README.md"), PathBuf::from("src/lib.rs")]);
+        let names: Vec<_> = std::fs::read_dir(&folder)
+            .unwrap()
+            .flatten()
+            .map(|e| e.file_name())
+            .collect();
+        assert!(
+            !names.iter().any(|n| n.to_string_lossy().starts_with(".gen-crate.")),
+            "{names:?}"
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_failure_while_swapping_leaves_no_stage() {
+        // A swap across two file systems fails (EXDEV) as one on a mount point does (EBUSY): a plan
+        // whose stage is made on another file system than the folder's stands in for that.
+        use std::os::unix::fs::MetadataExt;
+        let dir = scratch("swap-fails");
+        let elsewhere = Path::new("/dev/shm").join(format!("host-publish-{}", std::process::id()));
+        std::fs::create_dir_all(&elsewhere).unwrap();
+        let device = |p: &Path| std::fs::metadata(p).unwrap().dev();
+        if device(&elsewhere) == device(&dir) {
+            eprintln!("skipped: /dev/shm is on the file system of {}", dir.display());
+            return;
+        }
+        let folder = dir.join("crate");
+        std::fs::create_dir_all(&folder).unwrap();
+        std::fs::write(folder.join("README.md"), "old").unwrap();
+        let plan = Plan {
+            folder: folder.clone(),
+            parent: elsewhere.clone(),
+            name: "crate".to_owned(),
+            publication: Publication::Swap,
+        };
+        let failed = plan.replace(|stage| {
+            std::fs::write(stage.join("README.md"), "new").unwrap();
+            Ok(())
+        });
+        assert!(failed.is_err());
+        assert_eq!(std::fs::read_to_string(folder.join("README.md")).unwrap(), "old");
+        assert_eq!(std::fs::read_dir(&elsewhere).unwrap().count(), 0, "a stage was left");
+        std::fs::remove_dir_all(&elsewhere).unwrap();
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -46,6 +46,9 @@ pub struct Bench<'a> {
     pub beside: Vec<Beside>,
     /// The box filters from each scenario's `observer_x0` ([`Bench::from_observer_start`]).
     pub from_observer_start: Vec<FromObserverStart>,
+    /// Why a filter cannot run with the constants the spec fixes ([`Bench::box_filter`]): `gen`
+    /// stops with it rather than leave the filter's kinds out.
+    pub refused: Option<crate::spec::SpecError>,
     /// The map's estimates on every run.
     maps: MapRows,
 }
@@ -118,6 +121,7 @@ impl<'a> Bench<'a> {
             restart: None,
             mhe: None,
             beside: Vec::new(),
+            refused: None,
             from_observer_start: Vec::new(),
             maps,
         }

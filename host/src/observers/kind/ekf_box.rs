@@ -38,7 +38,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
             ekf::estimate_run(code, &tuned.constants, &tuned.constants.x0, run).expect("size checked by tune")
         })
     };
-    let (tuned, figures) = bench.box_filter(ekf::estimates, &design.filters.ekf, &judge)?;
+    let (tuned, figures) = bench.box_filter(ekf::estimates, "observer.ekf", &design.filters.ekf, &judge)?;
     bench.from_observer_starts("ekf_box", &|x0, run| {
         ekf::estimate_run(code, &tuned.constants, x0, run).expect("size checked by tune")
     });

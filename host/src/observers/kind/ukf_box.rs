@@ -37,7 +37,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
             ukf::estimate_run(code, &filter, &tuned.constants.x0, &tuned.constants.p0, run)
         })
     };
-    let (tuned, figures) = bench.box_filter(ukf::estimates, &bench.design.filters.ukf, &judge)?;
+    let (tuned, figures) = bench.box_filter(ukf::estimates, "observer.ukf", &bench.design.filters.ukf, &judge)?;
     let filter = unscented_code(code, &tuned.constants);
     bench.from_observer_starts("ukf_box", &|x0, run| {
         ukf::estimate_run(code, &filter, x0, &tuned.constants.p0, run)

@@ -22,9 +22,13 @@ impl Bench<'_> {
     /// A box filter (its estimates by `estimator`) tuned on [`Bench::random_tuning`] but for the
     /// constants the spec fixes (`fixed`), and its figures by `judge`. Where the spec fixes any, the
     /// same filter with every constant tuned is judged too, into [`Bench::beside`].
+    ///
+    /// A filter that cannot run with the constants the spec fixes (every candidate of the search
+    /// diverges) is not left out in silence: [`Bench::refused`] says which constants and what happened.
     pub fn box_filter(
         &mut self,
         estimator: ekf::Estimator,
+        section: &'static str,
         fixed: &FixedFilter,
         judge: &dyn Fn(&Self, &ekf::Tuned) -> ObserverFigures,
     ) -> Option<(ekf::Tuned, ObserverFigures)> {
@@ -41,7 +45,12 @@ impl Bench<'_> {
                 &self.spreads,
             )
         };
-        let tuned = tune(fixed)?;
+        let Some(tuned) = tune(fixed) else {
+            if fixed.any() && ekf::supported(self.code) && self.refused.is_none() {
+                self.refused = Some(self.cannot_run(section, fixed, &random));
+            }
+            return None;
+        };
         let figures = judge(self, &tuned);
         if fixed.any() {
             if let Some(all) = tune(&FixedFilter::default()) {
@@ -50,6 +59,63 @@ impl Bench<'_> {
             }
         }
         Some((tuned, figures))
+    }
+
+    /// Why the filter of `[section]` cannot run with the constants the spec fixes there (`fixed`):
+    /// which constants, and what the model does one sample after the filter's start on the first
+    /// tuning run (not finite: the start is outside the model's domain), or else that every candidate
+    /// of the search diverged on the tuning runs.
+    fn cannot_run(&self, section: &str, fixed: &FixedFilter, random: &DataSet) -> crate::spec::SpecError {
+        let design = self.design;
+        let given: Vec<String> = [
+            ("x0", fixed.x0.is_some()),
+            ("q", fixed.q.is_some()),
+            ("p0", fixed.p0.is_some()),
+        ]
+        .iter()
+        .filter(|(_, given)| *given)
+        .map(|(name, _)| format!("`{section}.{name}`"))
+        .collect();
+        let field = match (&fixed.x0, &fixed.q) {
+            (Some(_), _) => format!("{section}.x0"),
+            (None, Some(_)) => format!("{section}.q"),
+            (None, None) => format!("{section}.p0"),
+        };
+        let start = ekf::start(design, fixed);
+        let mut x = start.clone();
+        let inputs = random.runs.first().and_then(|run| run.inputs.iter().next());
+        crate::data::simulate::Integrator::new(&design.model, design.tau, design.substeps)
+            .advance(&mut x, inputs.unwrap_or(&[]));
+        let state = |values: &[f64]| {
+            let pairs: Vec<String> = design
+                .model
+                .states
+                .iter()
+                .zip(values)
+                .map(|(name, v)| format!("{name} = {v:e}"))
+                .collect();
+            pairs.join(", ")
+        };
+        let what = if x.iter().all(|v| v.is_finite()) {
+            format!(
+                "from its start ({}) its estimates diverge (or every sample is refused) on every tuning run, whatever the constants left to tune",
+                state(&start)
+            )
+        } else {
+            format!(
+                "one sample after its start ({}) the model is not finite ({}): the start is outside the model's domain",
+                state(&start),
+                state(&x)
+            )
+        };
+        design.error(
+            field,
+            format!(
+                "the filter cannot run with the constants the spec fixes ({}): {what}; its kinds would be left out of the comparison and the crate",
+                given.join(", ")
+            ),
+            "start it where the model is defined (inside the learning box), give a larger p0 or q, or leave the constants out to have them tuned",
+        )
     }
 
     /// [`Bench::scenario_errors`] along scenario `i`'s run (in the spec's order).
