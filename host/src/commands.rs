@@ -264,8 +264,7 @@ pub fn estimate(
                 None
             } else {
                 let code = crate::generate::model_code(&design)?;
-                progress.set_message(format!("{}: tuning the observers", design.name));
-                Some(crate::observers::compare(&design, &result, &code)?)
+                Some(crate::observers::compare(&design, &result, &code, progress)?)
             };
             let tables = Tables::new(&design, &result, comparison.as_ref());
             (design, Provenance::Fitted, tables)

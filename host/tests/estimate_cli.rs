@@ -39,7 +39,7 @@ fn compared() -> &'static (host::spec::Design, host::fit::DesignResult, host::ob
         let design = host::spec::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml")).unwrap();
         let result = host::generate::simulate_and_fit(&design, &indicatif::ProgressBar::hidden()).unwrap();
         let code = host::plant::ModelCode::new(&design).unwrap();
-        let comparison = host::observers::compare(&design, &result, &code).unwrap();
+        let comparison = host::observers::compare(&design, &result, &code, &indicatif::ProgressBar::hidden()).unwrap();
         (design, result, comparison)
     })
 }

@@ -425,3 +425,70 @@ fn a_fixed_filter_start_where_the_model_blows_up_is_named_not_dropped() {
     }
     assert!(scratch.files().is_empty(), "nothing is written");
 }
+
+#[test]
+fn converter_ranges_that_miss_the_signal_or_leave_no_bits_are_said() {
+    let scratch = Scratch::empty("raw-ranges");
+    // A 12-bit converter scaled to 0.001 per count covers [-10.24, -6.145]: y spans about ±7 in the
+    // learning runs. The integer map then refuses nearly every sample, and nothing used to say so.
+    let short = scratch.spec(
+        "vanderpol",
+        "vanderpol.toml",
+        &[FEW_RUNS[0], FEW_RUNS[1], ("scale = 0.005", "scale = 0.001")],
+    );
+    let mut warned = Vec::new();
+    let run = generate::run(
+        &[short],
+        &scratch.destinations(),
+        true,
+        |_| ProgressBar::hidden(),
+        |_, done: Result<&generate::Prepared, &GenerateError>| {
+            if let Ok(prepared) = done {
+                warned.extend(prepared.warnings.iter().map(ToString::to_string));
+            }
+        },
+    );
+    assert!(matches!(run, Err(GenerateError::Gates { .. })), "--strict refuses it");
+    let coverage = warned
+        .iter()
+        .find(|w| w.starts_with("`chip.raw.y`"))
+        .expect("the range gate");
+    assert!(
+        coverage.contains("stands for [-10.2400, -6.1450]") && coverage.contains("% of their samples outside"),
+        "{coverage}"
+    );
+    // A 24-bit converter over the same span: the proven distance of the integer map to the float
+    // map was 16 % of x1's range, accepted. Refused, naming the converter and the fix.
+    let wide = scratch.spec(
+        "vanderpol",
+        "vanderpol.toml",
+        &[
+            FEW_RUNS[0],
+            FEW_RUNS[1],
+            ("scale = 0.005", "scale = 1.220703125e-6"),
+            ("max = 4095", "max = 16777215"),
+        ],
+    );
+    let mut errors: Vec<(String, String)> = Vec::new();
+    let run = generate::run(
+        &[wide],
+        &scratch.destinations(),
+        false,
+        |_| ProgressBar::hidden(),
+        |_, done: Result<&generate::Prepared, &GenerateError>| {
+            if let Err(GenerateError::Spec(e)) = done {
+                errors.push((e.field.clone(), e.problem.clone()));
+            }
+        },
+    );
+    assert!(run.is_err());
+    let [(field, problem)] = &errors[..] else {
+        panic!("{errors:?}")
+    };
+    assert_eq!(field, "chip.raw.y");
+    assert!(
+        problem.contains("proven distance") && problem.contains("(at most 2 % is accepted)"),
+        "{problem}"
+    );
+    assert!(scratch.files().is_empty(), "nothing is written");
+}

@@ -378,6 +378,8 @@ const CASES: &[Case] = &[
     case("chip_raw_scale_zero", Vdp, &[Swap("scale = 0.005", "scale = 0.0")], Exact("chip.raw.y.scale"), "positive"),
     case("chip_raw_offset_nan", Vdp, &[Swap("offset = -10.24", "offset = nan")], Exact("chip.raw.y.offset"), "value at a raw reading of 0"),
     case("chip_raw_beyond_24_bits", Vdp, &[Swap("max = 4095", "max = 16777217")], Exact("chip.raw.y.max"), "at most 24 bits"),
+    // `i64::MIN` used to wrap through `abs` and pass, read as 0.
+    case("chip_raw_min_of_i64", Vdp, &[Swap("min = 0, max = 4095", "min = -9223372036854775808, max = 4095")], Exact("chip.raw.y.min"), "at most 24 bits"),
     case("chip_raw_empty_range", Vdp, &[Swap("min = 0, max = 4095", "min = 4095, max = 4095")], Exact("chip.raw.y.max"), "`min` below `max`"),
 ];
 

@@ -100,6 +100,10 @@ pub fn model_code(design: &Design) -> Result<crate::plant::ModelCode, SpecError>
     })
 }
 
+/// The largest proven distance of the integer map to the float map accepted, as a fraction of the
+/// target's learning range (the shipped designs' are below 0.1 %).
+pub const MAX_FIXED_BOUND: f64 = 0.02;
+
 /// The map of a fitted design in integers and its validation figures, when its spec asks for it
 /// (`[chip] arithmetic = "fixed"`), or an error naming `[chip]` when the map cannot be.
 pub fn fixed_point(design: &Design, result: &DesignResult) -> Result<Option<Fixed>, SpecError> {
@@ -107,6 +111,39 @@ pub fn fixed_point(design: &Design, result: &DesignResult) -> Result<Option<Fixe
     let maps: Vec<_> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
     let point = crate::fixed_point::quantise(design, spec, &result.runs.learning, &maps)
         .map_err(|e| design.error("chip.arithmetic", e.to_string(), e.fix()))?;
+    // A proof so loose that the integer map could be anywhere in its target's range is no
+    // integer map to ship: wide converters leave a 32-bit sum too few bits of the gains.
+    for (target, spec_target) in point.targets.iter().zip(&design.targets) {
+        let relative = target.bound.total() / target.range;
+        if relative > MAX_FIXED_BOUND {
+            let widest = spec
+                .outputs
+                .iter()
+                .zip(&design.model.outputs)
+                .map(|(s, o)| (s, o.name.as_str()))
+                .chain(
+                    spec.inputs
+                        .iter()
+                        .zip(&design.model.inputs)
+                        .map(|(s, i)| (s, i.as_str())),
+                )
+                .filter_map(|(s, name)| s.as_ref().map(|s| (i64::from(s.max) - i64::from(s.min), name)))
+                .max();
+            let field = widest.map_or("chip.raw".to_owned(), |(_, name)| format!("chip.raw.{name}"));
+            return Err(design.error(
+                field,
+                format!(
+                    "target `{}`: the integer map's proven distance to the float map is {:.3e}, {:.1} % of the target's learning range (at most {:.0} % is accepted): \
+                     the declared raw ranges are too wide for a 32-bit sum to keep enough bits of the gains",
+                    spec_target.name,
+                    target.bound.total(),
+                    relative * 100.0,
+                    MAX_FIXED_BOUND * 100.0
+                ),
+                "declare fewer raw bits (e.g. a 24-bit reading shifted right by 8: `min`/`max` over 256 and `scale` times 256), or set `arithmetic = \"float\"`",
+            ));
+        }
+    }
     let validation = crate::fixed_point::compare(&point, &maps, &result.runs.validation);
     // The proof is checked on every validation window of every design: a window beyond it is a bug.
     for (target, figures) in point.targets.iter().zip(&validation.targets) {
@@ -143,8 +180,7 @@ pub fn design_source(
     // Data the chip's f32 cannot hold is refused before minutes of tuning, not after.
     emit::within_f32(result).map_err(emit_error)?;
     let fixed = fixed_point(design, result)?;
-    progress.set_message(format!("{}: tuning the EKF", design.name));
-    let comparison = crate::observers::compare(design, result, &code)?;
+    let comparison = crate::observers::compare(design, result, &code, progress)?;
     let state_targets = crate::observers::corrected::state_targets(design).ok();
     let instructions: Vec<(&'static str, f64)> =
         comparison.observers.iter().map(|o| (o.kind, o.instructions)).collect();

@@ -30,9 +30,28 @@ use crate::spec::{Design, SpecError};
 
 /// Tunes every kind of [`kind::REGISTRY`] on the tuning runs, in its order, and judges each on the
 /// validation runs, the scenario and (with uncertain parameters) the mismatch runs of `result`.
-pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Result<Comparison, SpecError> {
+/// `progress` names the kind being tuned and then the references (long runs and scenarios make each
+/// take minutes).
+pub fn compare(
+    design: &Design,
+    result: &DesignResult,
+    code: &ModelCode,
+    progress: &indicatif::ProgressBar,
+) -> Result<Comparison, SpecError> {
     let mut bench = kind::Bench::new(design, result, code);
-    for kind in &kind::REGISTRY {
+    let samples = |set: &crate::data::DataSet| set.runs.iter().map(|r| r.targets.len()).sum::<usize>();
+    let runs = &result.runs;
+    let judged = samples(&runs.tuning)
+        + samples(&runs.validation)
+        + runs.scenarios.iter().map(|r| r.targets.len()).sum::<usize>();
+    for (i, kind) in kind::REGISTRY.iter().enumerate() {
+        progress.set_message(format!(
+            "{}: tuning and judging `{}` ({}/{}, on {judged} samples of tuning, validation and scenario runs)",
+            design.name,
+            kind.kind.name(),
+            i + 1,
+            kind::REGISTRY.len()
+        ));
         if let Some(figures) = (kind.tune)(&mut bench) {
             bench.observers.push(figures);
         }
@@ -41,6 +60,10 @@ pub fn compare(design: &Design, result: &DesignResult, code: &ModelCode) -> Resu
         }
     }
     let chosen = choose(design, &bench.observers, &bench.spreads)?;
+    progress.set_message(format!(
+        "{}: the host-only references (the on-line moving-horizon estimate, the particle floor)",
+        design.name
+    ));
     let references = references::measure(&bench);
     Ok(Comparison {
         references,

@@ -17,15 +17,74 @@ pub fn ukf_against_ekf(report: &Report<'_>) -> String {
         ratio(ukf, ekf, |f| f.rmse_validation),
         ratio(ukf, ekf, |f| f.p95_validation),
     ) else {
-        return "\nUKF against EKF: one of the two gave no finite validation figure (it diverged): the EKF is the choice.\n"
-            .to_owned();
+        // Which one diverged decides which one is the choice.
+        let finite = |o: &ObserverReport| {
+            o.targets
+                .values()
+                .all(|f| f.rmse_validation.is_some_and(f64::is_finite))
+        };
+        let choice = match (finite(ukf), finite(ekf)) {
+            (true, false) => "the EKF gave no finite validation figure (it diverged): the UKF is the choice",
+            (false, true) => "the UKF gave no finite validation figure (it diverged): the EKF is the choice",
+            _ => "neither gave a finite validation figure on every target (both diverged somewhere)",
+        };
+        return format!("\nUKF against EKF: {choice}.\n");
     };
     let cost = ukf.predicted_instructions / ekf.predicted_instructions;
     let verdict = verdict(pooled, tail, cost);
     format!(
-        "\nUKF against EKF (both from the box centre, tuned alike): the UKF's validation RMSE is {pooled:.2}× the EKF's and its p95 {tail:.2}× (mean over targets), \
+        "\nUKF against EKF ({}): the UKF's validation RMSE is {pooled:.2}× the EKF's and its p95 {tail:.2}× (mean over targets), \
          for ~{:.0} instructions per sample against ~{:.0} ({cost:.1}×, predicted): {verdict}.\n",
-        ukf.predicted_instructions, ekf.predicted_instructions
+        how_started(report),
+        ukf.predicted_instructions,
+        ekf.predicted_instructions
+    )
+}
+
+/// How the two filters start and what of them is tuned, in the words of the spec's
+/// `[observer.ekf]` and `[observer.ukf]` (`report.fixed_filters`): "both from the box centre, tuned
+/// alike" only when the spec fixes nothing of either.
+fn how_started(report: &Report<'_>) -> String {
+    let fixed = |kind: &str| -> &[&'static str] {
+        report
+            .fixed_filters
+            .iter()
+            .find(|f| f.kind == kind)
+            .map_or(&[], |f| f.fixed.as_slice())
+    };
+    starts(fixed("ekf_box"), fixed("ukf_box"))
+}
+
+/// [`how_started`] from the constants the spec fixes of each filter (`"x0"`, `"q"`, `"p0"`).
+fn starts(ekf: &[&str], ukf: &[&str]) -> String {
+    if ekf.is_empty() && ukf.is_empty() {
+        return "both from the box centre, tuned alike".to_owned();
+    }
+    let one = |name: &str, fixed: &[&str]| {
+        let start = if fixed.contains(&"x0") {
+            "from the spec's x̂(0)"
+        } else {
+            "from the box centre"
+        };
+        let constants: Vec<&str> = fixed
+            .iter()
+            .filter_map(|c| match *c {
+                "q" => Some("Q"),
+                "p0" => Some("P(0)"),
+                _ => None,
+            })
+            .collect();
+        let tuned = match constants.len() {
+            0 => "tuned".to_owned(),
+            2 => "with the spec's Q and P(0)".to_owned(),
+            _ => format!("with the spec's {}, the rest tuned", constants[0]),
+        };
+        format!("the {name} {start}, {tuned}")
+    };
+    format!(
+        "{}; {}; the same search, score and runs for what is tuned",
+        one("EKF", ekf),
+        one("UKF", ukf)
     )
 }
 
@@ -72,7 +131,19 @@ fn ratio(
 
 #[cfg(test)]
 mod tests {
-    use super::verdict;
+    use super::{starts, verdict};
+
+    #[test]
+    fn the_filters_starts_are_the_specs_words() {
+        assert_eq!(starts(&[], &[]), "both from the box centre, tuned alike");
+        // A fixed UKF is not "from the box centre, tuned alike".
+        assert_eq!(
+            starts(&[], &["x0", "p0"]),
+            "the EKF from the box centre, tuned; the UKF from the spec's x̂(0), with the spec's P(0), the rest tuned; \
+             the same search, score and runs for what is tuned"
+        );
+        assert!(starts(&["q", "p0"], &[]).starts_with("the EKF from the box centre, with the spec's Q and P(0);"));
+    }
 
     #[test]
     fn worth_it_only_when_better_in_the_pool_and_the_tail_beyond_autos_margin() {

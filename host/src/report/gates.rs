@@ -15,6 +15,10 @@
 //!   target: that EKF is the better choice for this system. An
 //!   EKF the spec's `[budget] instructions` does not allow (as [`crate::search::cost`] predicts it)
 //!   is not a choice, so it does not count.
+//! * [`Gate::RawRangeShort`]: a signal's declared raw range (`[chip.raw.<signal>]`) stands for values
+//!   that more than [`OUTSIDE_FRACTION`] of the learning runs' samples leave: the chip refuses those
+//!   samples (the integer map's proof holds only inside the range), so the integer map is far worse
+//!   than the float map there.
 //! * [`Gate::StartOutsideBox`]: a filter's start the spec fixes (`[observer.ekf] x0`,
 //!   `[observer.ukf] x0`) or a scenario's `observer_x0` lies outside the learning box: the filter
 //!   starts where no learning or validation run starts, which is allowed (a published filter's guess
@@ -81,6 +85,17 @@ pub enum Gate {
         ekf_rmse: f64,
     },
     /// See the module docs.
+    RawRangeShort {
+        /// The output or input.
+        signal: String,
+        /// The values the declared raw range stands for.
+        covered: (f64, f64),
+        /// The signal's range over the learning runs.
+        seen: (f64, f64),
+        /// Fraction of the learning samples outside `covered`.
+        fraction: f64,
+    },
+    /// See the module docs.
     StartOutsideBox {
         /// The spec's field (`observer.ekf.x0`).
         field: String,
@@ -128,10 +143,29 @@ impl fmt::Display for Gate {
                 fraction * 100.0,
                 WEAK_FRACTION * 100.0
             ),
-            Gate::EkfBetter { target, chosen, rmse, ekf, ekf_rmse } => write!(
+            Gate::EkfBetter { target, chosen, rmse, ekf, ekf_rmse } => {
+                // The peer in its kind's own words (the UKF is not "the EKF").
+                let what = kind::REGISTRY
+                    .iter()
+                    .find(|k| k.kind.name() == *ekf)
+                    .map_or("another filter", |k| k.what);
+                write!(
+                    f,
+                    "target `{target}`: the chosen observer (`{chosen}`) has validation RMSE {rmse:.4}, more than {EKF_FACTOR} times \
+                     that of {what} (`{ekf}`: {ekf_rmse:.4}): `{ekf}` is the better choice for this system (`[observer] kind = \"{ekf}\"`)"
+                )
+            }
+            Gate::RawRangeShort { signal, covered, seen, fraction } => write!(
                 f,
-                "target `{target}`: the chosen observer (`{chosen}`) has validation RMSE {rmse:.4}, more than {EKF_FACTOR} times \
-                 the EKF's (`{ekf}`: {ekf_rmse:.4}): the EKF is the better choice for this system (`[observer] kind = \"{ekf}\"`)"
+                "`chip.raw.{signal}`: the declared raw range stands for [{:.4}, {:.4}], but `{signal}` spans [{:.4}, {:.4}] in the \
+                 learning runs ({:.1} % of their samples outside): the chip refuses those samples, and the integer map is \
+                 not what was fitted there; declare the converter's real span (`min`, `max`, `scale`, `offset`), or scale \
+                 the signal into the converter's input range",
+                covered.0,
+                covered.1,
+                seen.0,
+                seen.1,
+                fraction * 100.0
             ),
             Gate::StartOutsideBox { field, state, value, range } => write!(
                 f,
@@ -181,9 +215,58 @@ pub fn starts_outside_box(design: &Design) -> Vec<Gate> {
     outside
 }
 
-/// Every failed gate of a design: the starts outside the box, then target by target, gate by gate.
+/// The signals whose declared raw range (`[chip.raw.<signal>]`) the learning runs leave
+/// ([`Gate::RawRangeShort`]).
+pub fn raw_ranges_short(design: &Design, learning: &crate::data::DataSet) -> Vec<Gate> {
+    let Some(fixed) = &design.fixed else { return Vec::new() };
+    let model = &design.model;
+    let outputs = fixed
+        .outputs
+        .iter()
+        .enumerate()
+        .map(|(i, s)| (model.outputs[i].name.clone(), s, true, i));
+    let inputs = fixed
+        .inputs
+        .iter()
+        .enumerate()
+        .map(|(i, s)| (model.inputs[i].clone(), s, false, i));
+    let mut short = Vec::new();
+    for (signal, scale, output, i) in outputs.chain(inputs) {
+        let Some(scale) = scale else { continue };
+        let ends = (
+            scale.offset + scale.scale * f64::from(scale.min),
+            scale.offset + scale.scale * f64::from(scale.max),
+        );
+        let covered = (ends.0.min(ends.1), ends.0.max(ends.1));
+        let (mut outside, mut samples) = (0usize, 0usize);
+        let mut seen = (f64::INFINITY, f64::NEG_INFINITY);
+        for run in &learning.runs {
+            let rows = if output { &run.measurements } else { &run.inputs };
+            for row in rows {
+                let value = row[i];
+                seen = (seen.0.min(value), seen.1.max(value));
+                outside += usize::from(!(covered.0..=covered.1).contains(&value));
+                samples += 1;
+            }
+        }
+        let fraction = outside as f64 / samples.max(1) as f64;
+        if fraction > OUTSIDE_FRACTION {
+            short.push(Gate::RawRangeShort {
+                signal,
+                covered,
+                seen,
+                fraction,
+            });
+        }
+    }
+    short
+}
+
+/// Every failed gate of a design: the starts outside the box, the raw ranges the learning runs
+/// leave, then target by target, gate by gate.
 pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) -> Vec<Gate> {
     let mut failed = starts_outside_box(design);
+    failed.extend(raw_ranges_short(design, &result.runs.learning));
     for t in &result.targets {
         let name = design.targets[t.index].name.clone();
         let v = &t.validation;
@@ -261,4 +344,31 @@ pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) ->
         }
     }
     failed
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Gate;
+
+    #[test]
+    fn a_better_peer_is_named_in_its_kinds_words() {
+        let gate = |peer: &'static str| {
+            Gate::EkfBetter {
+                target: "x1".to_owned(),
+                chosen: "map",
+                rmse: 0.3,
+                ekf: peer,
+                ekf_rmse: 0.1,
+            }
+            .to_string()
+        };
+        // The UKF used to be called "the EKF".
+        let ukf = gate("ukf_box");
+        assert!(
+            ukf.contains("that of the unscented Kalman filter from the centre of the state box (`ukf_box`: 0.1000)"),
+            "{ukf}"
+        );
+        assert!(!ukf.contains("EKF"), "{ukf}");
+        assert!(gate("ekf_map").contains("`ekf_map` is the better choice"));
+    }
 }

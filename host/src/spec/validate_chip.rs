@@ -56,7 +56,8 @@ impl Validator {
             ));
         }
         for (f, v) in [("min", raw.min), ("max", raw.max)] {
-            if v.abs() > MAX_RAW {
+            // `unsigned_abs`: `i64::MIN.abs()` overflows (and wrapped to a value that passed, read as 0).
+            if v.unsigned_abs() > MAX_RAW.unsigned_abs() {
                 return Err(self.err(
                     field(f),
                     format!("{v} is beyond ±2^24 = ±{MAX_RAW}"),
