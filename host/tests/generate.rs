@@ -77,6 +77,32 @@ impl Scratch {
     fn run(&self, specs: &[PathBuf]) -> Result<Vec<generate::Outcome>, GenerateError> {
         generate::run(specs, &self.destinations(), false, |_| ProgressBar::hidden(), |_, _| {})
     }
+
+    /// `gen` (`--strict` with `strict`) on one spec, with what each design ended in: the spec errors
+    /// (field and problem) and the quality gates' warnings.
+    fn run_one(&self, spec: PathBuf, strict: bool) -> Ended {
+        let mut ended = Ended::default();
+        ended.run = Some(generate::run(
+            &[spec],
+            &self.destinations(),
+            strict,
+            |_| ProgressBar::hidden(),
+            |_, done: Result<&generate::Prepared, &GenerateError>| match done {
+                Ok(prepared) => ended.warnings.extend(prepared.warnings.iter().map(ToString::to_string)),
+                Err(GenerateError::Spec(e)) => ended.errors.push((e.field.clone(), e.problem.clone())),
+                Err(_) => {}
+            },
+        ));
+        ended
+    }
+}
+
+/// What [`Scratch::run_one`] saw.
+#[derive(Default)]
+struct Ended {
+    run: Option<Result<Vec<generate::Outcome>, GenerateError>>,
+    errors: Vec<(String, String)>,
+    warnings: Vec<String>,
 }
 
 impl Drop for Scratch {
@@ -401,21 +427,10 @@ fn a_fixed_filter_start_where_the_model_blows_up_is_named_not_dropped() {
             "vanderpol.toml",
             &[FEW_RUNS[0], FEW_RUNS[1], ("[observer]\nkind = \"auto\"", &observer)],
         );
-        let mut errors: Vec<(String, String)> = Vec::new();
-        let run = generate::run(
-            &[spec],
-            &scratch.destinations(),
-            false,
-            |_| ProgressBar::hidden(),
-            |_, done: Result<&generate::Prepared, &GenerateError>| {
-                if let Err(GenerateError::Spec(e)) = done {
-                    errors.push((e.field.clone(), e.problem.clone()));
-                }
-            },
-        );
-        assert!(run.is_err(), "{kind}: gen went on");
-        let [(field, problem)] = &errors[..] else {
-            panic!("{kind}: expected the fixed start named, got {errors:?}")
+        let ended = scratch.run_one(spec, false);
+        assert!(ended.run.is_some_and(|r| r.is_err()), "{kind}: gen went on");
+        let [(field, problem)] = &ended.errors[..] else {
+            panic!("{kind}: expected the fixed start named, got {:?}", ended.errors)
         };
         assert_eq!(field, "observer.ekf.x0", "{kind}: {problem}");
         assert!(
@@ -436,20 +451,13 @@ fn converter_ranges_that_miss_the_signal_or_leave_no_bits_are_said() {
         "vanderpol.toml",
         &[FEW_RUNS[0], FEW_RUNS[1], ("scale = 0.005", "scale = 0.001")],
     );
-    let mut warned = Vec::new();
-    let run = generate::run(
-        &[short],
-        &scratch.destinations(),
-        true,
-        |_| ProgressBar::hidden(),
-        |_, done: Result<&generate::Prepared, &GenerateError>| {
-            if let Ok(prepared) = done {
-                warned.extend(prepared.warnings.iter().map(ToString::to_string));
-            }
-        },
+    let ended = scratch.run_one(short, true);
+    assert!(
+        matches!(ended.run, Some(Err(GenerateError::Gates { .. }))),
+        "--strict refuses it"
     );
-    assert!(matches!(run, Err(GenerateError::Gates { .. })), "--strict refuses it");
-    let coverage = warned
+    let coverage = ended
+        .warnings
         .iter()
         .find(|w| w.starts_with("`chip.raw.y`"))
         .expect("the range gate");
@@ -469,21 +477,10 @@ fn converter_ranges_that_miss_the_signal_or_leave_no_bits_are_said() {
             ("max = 4095", "max = 16777215"),
         ],
     );
-    let mut errors: Vec<(String, String)> = Vec::new();
-    let run = generate::run(
-        &[wide],
-        &scratch.destinations(),
-        false,
-        |_| ProgressBar::hidden(),
-        |_, done: Result<&generate::Prepared, &GenerateError>| {
-            if let Err(GenerateError::Spec(e)) = done {
-                errors.push((e.field.clone(), e.problem.clone()));
-            }
-        },
-    );
-    assert!(run.is_err());
-    let [(field, problem)] = &errors[..] else {
-        panic!("{errors:?}")
+    let ended = scratch.run_one(wide, false);
+    assert!(ended.run.is_some_and(|r| r.is_err()));
+    let [(field, problem)] = &ended.errors[..] else {
+        panic!("{:?}", ended.errors)
     };
     assert_eq!(field, "chip.raw.y");
     assert!(

@@ -163,7 +163,8 @@ fn standalone(
             );
         }
     }
-    if inside {
+    // A crate written file by file keeps its folder: a shell inside it sees the new files.
+    if inside && outcomes.iter().any(|o| o.in_place.is_none()) {
         eprintln!(
             "note: the crate folder was replaced whole; a shell inside it still sees the old one until it changes directory (cd \"$PWD\")"
         );
