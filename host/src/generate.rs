@@ -143,6 +143,18 @@ pub(crate) fn load_specs(specs: &[PathBuf]) -> Result<Vec<(PathBuf, Design)>, Ge
                 second: spec.clone(),
             });
         }
+        // Their C names must not clash either: one C program may link every design of a run.
+        for (first, other) in &designs {
+            if let Some(word) = crate::emit::c::c_name_clash(&other.name, &design.name) {
+                return Err(GenerateError::CNameClash {
+                    first_name: other.name.clone(),
+                    first: first.clone(),
+                    second_name: design.name.clone(),
+                    second: spec.clone(),
+                    word,
+                });
+            }
+        }
         designs.push((spec.clone(), design));
     }
     Ok(designs)

@@ -30,6 +30,64 @@ use crate::fit::DesignResult;
 use crate::plant::ModelCode;
 use crate::spec::Design;
 
+/// The first word (up to its first `_`, lower case) of every name the C interface appends to a
+/// design's `<name>_` or `<NAME>_`, besides the observer kinds' names ([`c_name_clash`] adds those
+/// from the registry): types, calls, enum values and macros of the C source's header, of the Rust
+/// static library's header and its symbols. `tests/tests/c_source.rs` checks that every name in
+/// every emitted header starts with one of them, so that a new suffix cannot slip past the check.
+pub const C_SUFFIX_WORDS: &[&str] = &[
+    "bad",
+    "covariance",
+    "estimate",
+    "fixed",
+    "h",
+    "high",
+    "horizon",
+    "init",
+    "inputs",
+    "inside",
+    "kind",
+    "low",
+    "no",
+    "not",
+    "observer",
+    "ok",
+    "outputs",
+    "push",
+    "refused",
+    "sample",
+    "saturation",
+    "states",
+    "status",
+    "storage",
+    "stored",
+    "targets",
+];
+
+/// Whether designs `a` and `b`, written by one `gen` run, could declare the same C name; then the
+/// word of the longer name that one of the shorter's names also begins with (the `map` of `vdp` and
+/// `vdp_map`: `vdp_map_init` is both `vdp`'s map observer's `init` and `vdp_map`'s `init`).
+///
+/// Why refuse rather than rename: every C name is the design's name followed by `_` and a suffix
+/// (`vdp_map`, `vdp_map_init`, `VDP_OK`), so a name users type and read in their firmware and in every
+/// document stays the design's own; giving it a prefix or a separator (`vdp__map`) only for some
+/// designs would make the names depend on which other specs were in the run. Two names can only
+/// clash when one is the other followed by `_` and a word the interface appends (a name `b_Y` equal
+/// to `a_X` needs `X` to begin with the rest of `b` after `a_`), so refusing exactly those pairs,
+/// where the specs are read and before anything is fitted, leaves every other name free
+/// (`vanderpol` beside `vanderpol_uncertain`). Designs written by separate runs are not compared:
+/// linking two of them into one program is the user's choice of names.
+pub fn c_name_clash(a: &str, b: &str) -> Option<String> {
+    let (short, long) = if a.len() <= b.len() { (a, b) } else { (b, a) };
+    let rest = long.strip_prefix(short)?.strip_prefix('_')?;
+    let word = rest.split('_').next().unwrap_or(rest).to_ascii_lowercase();
+    let a_kind = crate::observers::kind::REGISTRY
+        .iter()
+        .any(|k| k.kind.name().split('_').next() == Some(word.as_str()));
+    let clashes = a_kind || C_SUFFIX_WORDS.contains(&word.as_str());
+    clashes.then_some(word)
+}
+
 /// The header and the source of a design.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CSource {
