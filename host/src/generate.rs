@@ -145,13 +145,12 @@ pub(crate) fn load_specs(specs: &[PathBuf]) -> Result<Vec<(PathBuf, Design)>, Ge
         }
         // Their C names must not clash either: one C program may link every design of a run.
         for (first, other) in &designs {
-            if let Some(word) = crate::emit::c::c_name_clash(&other.name, &design.name) {
+            if crate::emit::c::c_name_clash(&other.name, &design.name).is_some() {
                 return Err(GenerateError::CNameClash {
                     first_name: other.name.clone(),
                     first: first.clone(),
                     second_name: design.name.clone(),
                     second: spec.clone(),
-                    word,
                 });
             }
         }
