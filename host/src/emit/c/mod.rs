@@ -22,7 +22,7 @@ mod program;
 mod started;
 mod storage;
 
-pub use storage::{mark, status_name, storage_bound, MARK_BYTES};
+pub use storage::{mark, sample_period, storage_bound, MARK_BYTES};
 
 use super::model::Observers;
 use super::EmitError;
@@ -174,31 +174,45 @@ pub fn c_source(
         "/* The `{name}` observers in C99, emitted by `mho gen` from the same tables and programs as the\n\
          \x20* Rust design file. Do not edit: regenerate. Build with -ffp-contract=off (no fused\n\
          \x20* multiply-add) to get the Rust observers' bits. Every observer lives in a struct you allocate\n\
-         \x20* (no heap); call its _init first, then _push every sample and _estimate when you need it. */\n\
+         \x20* (no heap); call its _init first, then _push every sample and _estimate when you need it.\n\
+         {licence} */\n\
          #ifndef {upper}_H\n\
          #define {upper}_H\n\
          \n\
          #include <stddef.h>\n\
          #include <stdint.h>\n\
          \n\
+         /* C linkage for a C++ program that includes this header (the observers are compiled as C). */\n\
+         #ifdef __cplusplus\n\
+         extern \"C\" {{\n\
+         #endif\n\
+         \n\
          #define {upper}_OUTPUTS {ny}\n\
          #define {upper}_INPUTS {nu}\n\
          #define {upper}_TARGETS {nt}\n\
          /* The map's window, in samples: no map estimate before it is full. */\n\
          #define {upper}_HORIZON {n}\n\
+         /* The sample period the design assumes, in its time unit: push one sample every period. */\n\
+         #define {upper}_SAMPLE_PERIOD {tau}\n\
          {sizes}\
          \n\
-         /* What push and estimate return. */\n\
+         /* What every call returns: the observers' push and estimate, and the storage calls (the same\n\
+         \x20* values as the Rust static library's c/include/{name}.h). */\n\
          typedef enum {{\n\
          \x20   {upper}_OK = 0,\n\
          \x20   /* The sample was refused: a NaN or infinite value (or a filter step whose result is not\n\
          \x20    * finite); the latest estimate is unchanged. */\n\
          \x20   {upper}_REFUSED = 1,\n\
          \x20   /* No estimate yet (the map: fewer than {upper}_HORIZON accepted samples since init). */\n\
-         \x20   {upper}_NO_ESTIMATE_YET = 2\n\
+         \x20   {upper}_NO_ESTIMATE_YET = 2,\n\
+         \x20   /* The storage calls only: a null pointer, or storage too small or misaligned; nothing done. */\n\
+         \x20   {upper}_BAD_ARGUMENT = 3,\n\
+         \x20   /* The storage calls only: the storage holds no observer of this design. */\n\
+         \x20   {upper}_NOT_INITIALISED = 4\n\
          }} {name}_status;\n\
          \n\
-         /* Where an estimate lies against its range: inside, or held at its low or high end. */\n\
+         /* Where an estimate lies against its range: inside, or held at its low or high end (the same\n\
+         \x20* values from every call that reports it). */\n\
          typedef enum {{\n\
          \x20   {upper}_INSIDE = 0,\n\
          \x20   {upper}_LOW = 1,\n\
@@ -210,7 +224,13 @@ pub fn c_source(
          {kinds_header}\
          {alias}\
          {interface_header}\
+         #ifdef __cplusplus\n\
+         }}\n\
+         #endif\n\
+         \n\
          #endif\n",
+        licence = super::licence_comment(" * "),
+        tau = storage::sample_period(design),
         map_header = map.header,
         fixed_header = integer.header,
         kinds_header = kinds.header,
@@ -245,7 +265,8 @@ pub fn c_source(
         String::new()
     };
     let source = format!(
-        "/* The `{name}` observers in C99, emitted by `mho gen`. Do not edit: regenerate. */\n\
+        "/* The `{name}` observers in C99, emitted by `mho gen`. Do not edit: regenerate.\n\
+         {licence} */\n\
          #include <stdint.h>\n\
          #include <string.h>\n\
          {math}\
@@ -254,13 +275,14 @@ pub fn c_source(
          \n\
          /* The Rust observer's bits need every float operation rounded on its own: no fused multiply-add\n\
          \x20* (gcc: -ffp-contract=off, the default of its ISO modes such as -std=c99; other compilers follow\n\
-         \x20* the standard pragma below), no -ffast-math, and float evaluated as float. */\n\
+         \x20* the standard pragma below), no -ffast-math, and float evaluated as float: FLT_EVAL_METHOD 0,\n\
+         \x20* or 16 or 32 (ISO/IEC TS 18661-3: types narrower than _Float16, or _Float32, are evaluated in\n\
+         \x20* it, so float stays float; gcc says 16 for a Cortex-M55 or with AVX512-FP16 in its GNU modes). */\n\
          #if !defined(__GNUC__) || defined(__clang__)\n\
          #pragma STDC FP_CONTRACT OFF\n\
          #endif\n\
-         #if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0\n\
-         #error \"float arithmetic must be evaluated in float (FLT_EVAL_METHOD 0), e.g. SSE rather than the x87\"\n\
-         #endif\n\
+         {flt_eval_check}\
+         \n\
          \n\
          /* The bits of v (memcpy: no aliasing, no conversion). */\n\
          static uint32_t bits_of(float v) {{\n\
@@ -278,9 +300,30 @@ pub fn c_source(
          {selects}\
          {body}",
         selects = selects(&body),
+        licence = super::licence_comment(" * "),
+        flt_eval_check = FLT_EVAL_CHECK,
     );
     Ok(CSource { header, source })
 }
+
+/// The source's check that `float` expressions are evaluated in `float`, by `FLT_EVAL_METHOD`
+/// (C99 5.2.4.2.2, ISO/IEC TS 18661-3 for 16 and up): accepted are 0 and the TS's 16 and 32, under
+/// which every type narrower than `_Float16` (resp. `_Float32`) is evaluated in it and `float` in
+/// `float` (gcc reports 16 for `-mcpu=cortex-m55` and for x86 with AVX512-FP16 outside its ISO
+/// modes); refused, each with its reason, are 1 (`float` evaluated in `double`), 2 (in `long double`,
+/// e.g. the x87), -1 (indeterminate) and every other value (a wider format: 64, 33, …).
+const FLT_EVAL_CHECK: &str = "#if defined(FLT_EVAL_METHOD)
+#if FLT_EVAL_METHOD == 1
+#error \"float expressions are evaluated in double here (FLT_EVAL_METHOD 1): the observers need them evaluated in float\"
+#elif FLT_EVAL_METHOD == 2
+#error \"float expressions are evaluated in long double here (FLT_EVAL_METHOD 2, e.g. the x87): use SSE (gcc: -mfpmath=sse)\"
+#elif FLT_EVAL_METHOD == -1
+#error \"the format float expressions are evaluated in is indeterminate here (FLT_EVAL_METHOD -1): the observers need float\"
+#elif FLT_EVAL_METHOD != 0 && FLT_EVAL_METHOD != 16 && FLT_EVAL_METHOD != 32
+#error \"float expressions are evaluated in a format wider than float here (FLT_EVAL_METHOD not 0, 16 or 32)\"
+#endif
+#endif
+";
 
 /// The select helpers `body` calls (an unused static function is a warning): `choose_float`, one
 /// `?:` per statement, which compilers make a conditional move; `select_bits` and `select_float`, by
