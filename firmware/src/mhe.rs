@@ -84,8 +84,8 @@ where
         held = Some(u);
         let (predicted, h) = plant.output(&state, u);
         for i in 0..NY {
-            // A non-finite measurement weighs nothing: by selects, so that a refused sample in the
-            // window does not change the instructions run.
+            // A non-finite residual (a prediction the model overflows; the observer stores only finite
+            // samples) weighs nothing: by selects, so that it does not change the instructions run.
             let residual = y[i] - predicted[i];
             let finite = residual.is_finite();
             let residual = core::hint::select_unpredictable(finite, residual, T::ZERO);

@@ -1,4 +1,6 @@
-/* The `ecoli_x0_2` observers in C99, emitted by `mho gen`. Do not edit: regenerate. */
+/* The `ecoli_x0_2` observers in C99, emitted by `mho gen`. Do not edit: regenerate.
+ * Licence: emitted by mho from your spec, this file is yours: you may use, copy, modify and
+ * distribute it under any terms, including MIT OR Apache-2.0, with or without this notice. */
 #include <stdint.h>
 #include <string.h>
 #include <math.h>
@@ -7,13 +9,24 @@
 
 /* The Rust observer's bits need every float operation rounded on its own: no fused multiply-add
  * (gcc: -ffp-contract=off, the default of its ISO modes such as -std=c99; other compilers follow
- * the standard pragma below), no -ffast-math, and float evaluated as float. */
+ * the standard pragma below), no -ffast-math, and float evaluated as float: FLT_EVAL_METHOD 0,
+ * or 16 or 32 (ISO/IEC TS 18661-3: types narrower than _Float16, or _Float32, are evaluated in
+ * it, so float stays float; gcc says 16 for a Cortex-M55 or with AVX512-FP16 in its GNU modes). */
 #if !defined(__GNUC__) || defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
 #endif
-#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
-#error "float arithmetic must be evaluated in float (FLT_EVAL_METHOD 0), e.g. SSE rather than the x87"
+#if defined(FLT_EVAL_METHOD)
+#if FLT_EVAL_METHOD == 1
+#error "float expressions are evaluated in double here (FLT_EVAL_METHOD 1): the observers need them evaluated in float"
+#elif FLT_EVAL_METHOD == 2
+#error "float expressions are evaluated in long double here (FLT_EVAL_METHOD 2, e.g. the x87): use SSE (gcc: -mfpmath=sse)"
+#elif FLT_EVAL_METHOD == -1
+#error "the format float expressions are evaluated in is indeterminate here (FLT_EVAL_METHOD -1): the observers need float"
+#elif FLT_EVAL_METHOD != 0 && FLT_EVAL_METHOD != 16 && FLT_EVAL_METHOD != 32
+#error "float expressions are evaluated in a format wider than float here (FLT_EVAL_METHOD not 0, 16 or 32)"
 #endif
+#endif
+
 
 /* The bits of v (memcpy: no aliasing, no conversion). */
 static uint32_t bits_of(float v) {
@@ -5730,7 +5743,7 @@ ecoli_x0_2_status ecoli_x0_2_mhe_push(ecoli_x0_2_mhe *o, const float *y, const f
     float moved[MHE_NX], x[MHE_NX], end[MHE_NX], values[ECOLI_X0_2_TARGETS];
     int has_moved = 0;
     unsigned i, slot;
-    if (!inputs_finite(u)) {
+    if (!all_finite(y, ECOLI_X0_2_OUTPUTS) || !inputs_finite(u)) {
         return ECOLI_X0_2_REFUSED;
     }
     /* The previous solution moved one sample on: the prior's centre and the first iterate. */
@@ -5741,7 +5754,7 @@ ecoli_x0_2_status ecoli_x0_2_mhe_push(ecoli_x0_2_mhe *o, const float *y, const f
         mhe_project(next, moved);
         has_moved = 1;
     }
-    /* The window keeps the sample as it is: a non-finite output weighs nothing. */
+    /* Every value of the sample is finite: stored. */
     slot = o->next;
     for (i = 0u; i < ECOLI_X0_2_OUTPUTS; ++i) {
         o->y[slot][i] = y[i];
@@ -5759,7 +5772,7 @@ ecoli_x0_2_status ecoli_x0_2_mhe_push(ecoli_x0_2_mhe *o, const float *y, const f
     memcpy(o->solved, x, sizeof x);
     o->has_solved = 1;
     targets(end, u, values);
-    if (!all_finite(y, ECOLI_X0_2_OUTPUTS) || !all_finite(values, ECOLI_X0_2_TARGETS)) {
+    if (!all_finite(values, ECOLI_X0_2_TARGETS)) {
         return ECOLI_X0_2_REFUSED;
     }
     memcpy(o->values, values, sizeof values);
@@ -5788,61 +5801,54 @@ ecoli_x0_2_status ecoli_x0_2_mhe_estimate(const ecoli_x0_2_mhe *o, float *values
 /* The mark of this design's observer in storage (never 0: zeroed storage holds none). */
 #define STORAGE_MARK 0x684b4e04220eb967ull
 
-/* The observer in storage: EcoliX02Status_BadArgument for a null or misaligned pointer,
- * EcoliX02Status_NotInitialised where ecoli_x0_2_init did not make one (it reads the first 16 bytes only). */
-static EcoliX02Status stored_observer(void *storage, ecoli_x0_2_observer **observer) {
+/* The observer in storage: ECOLI_X0_2_BAD_ARGUMENT for a null or misaligned pointer,
+ * ECOLI_X0_2_NOT_INITIALISED where ecoli_x0_2_init did not make one (it reads the first 16 bytes only). */
+static ecoli_x0_2_status stored_observer(void *storage, ecoli_x0_2_observer **observer) {
     ecoli_x0_2_stored *stored = (ecoli_x0_2_stored *)storage;
     if (storage == NULL || (uintptr_t)storage % ECOLI_X0_2_STORAGE_ALIGN != 0u) {
-        return EcoliX02Status_BadArgument;
+        return ECOLI_X0_2_BAD_ARGUMENT;
     }
     if (stored->mark != STORAGE_MARK || stored->size < (uint64_t)sizeof(ecoli_x0_2_stored)) {
-        return EcoliX02Status_NotInitialised;
+        return ECOLI_X0_2_NOT_INITIALISED;
     }
     *observer = &stored->observer;
-    return EcoliX02Status_Ok;
+    return ECOLI_X0_2_OK;
 }
 
-EcoliX02Status ecoli_x0_2_init(void *storage, size_t size) {
+ecoli_x0_2_status ecoli_x0_2_init(void *storage, size_t size) {
     ecoli_x0_2_stored *stored = (ecoli_x0_2_stored *)storage;
     if (storage == NULL || size < sizeof(ecoli_x0_2_stored) || (uintptr_t)storage % ECOLI_X0_2_STORAGE_ALIGN != 0u) {
-        return EcoliX02Status_BadArgument;
+        return ECOLI_X0_2_BAD_ARGUMENT;
     }
     stored->mark = STORAGE_MARK;
     stored->size = (uint64_t)size;
     ecoli_x0_2_observer_init(&stored->observer);
-    return EcoliX02Status_Ok;
+    return ECOLI_X0_2_OK;
 }
 
-EcoliX02Status ecoli_x0_2_push(void *storage, const float *y, const float *u) {
+ecoli_x0_2_status ecoli_x0_2_push(void *storage, const float *y, const float *u) {
     ecoli_x0_2_observer *observer = NULL;
-    const EcoliX02Status found = stored_observer(storage, &observer);
-    if (found != EcoliX02Status_Ok) {
+    const ecoli_x0_2_status found = stored_observer(storage, &observer);
+    if (found != ECOLI_X0_2_OK) {
         return found;
     }
     if (y == NULL) {
-        return EcoliX02Status_BadArgument;
+        return ECOLI_X0_2_BAD_ARGUMENT;
     }
-    return ecoli_x0_2_observer_push(observer, y, u) == ECOLI_X0_2_OK ? EcoliX02Status_Ok : EcoliX02Status_Refused;
+    return ecoli_x0_2_observer_push(observer, y, u);
 }
 
-EcoliX02Status ecoli_x0_2_estimate(void *storage, float *estimates, int8_t *saturation) {
+ecoli_x0_2_status ecoli_x0_2_estimate(void *storage, float *estimates, ecoli_x0_2_saturation *saturation) {
     ecoli_x0_2_observer *observer = NULL;
     ecoli_x0_2_saturation flags[ECOLI_X0_2_TARGETS];
-    unsigned i;
-    const EcoliX02Status found = stored_observer(storage, &observer);
-    if (found != EcoliX02Status_Ok) {
+    const ecoli_x0_2_status found = stored_observer(storage, &observer);
+    if (found != ECOLI_X0_2_OK) {
         return found;
     }
     if (estimates == NULL) {
-        return EcoliX02Status_BadArgument;
+        return ECOLI_X0_2_BAD_ARGUMENT;
     }
-    if (ecoli_x0_2_observer_estimate(observer, estimates, flags) != ECOLI_X0_2_OK) {
-        return EcoliX02Status_NoEstimateYet;
-    }
-    for (i = 0u; saturation != NULL && i < ECOLI_X0_2_TARGETS; ++i) {
-        saturation[i] = (int8_t)(flags[i] == ECOLI_X0_2_LOW ? -1 : flags[i] == ECOLI_X0_2_HIGH ? 1 : 0);
-    }
-    return EcoliX02Status_Ok;
+    return ecoli_x0_2_observer_estimate(observer, estimates, saturation != NULL ? saturation : flags);
 }
 
 size_t ecoli_x0_2_storage_size(void) {

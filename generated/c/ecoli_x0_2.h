@@ -1,33 +1,48 @@
 /* The `ecoli_x0_2` observers in C99, emitted by `mho gen` from the same tables and programs as the
  * Rust design file. Do not edit: regenerate. Build with -ffp-contract=off (no fused
  * multiply-add) to get the Rust observers' bits. Every observer lives in a struct you allocate
- * (no heap); call its _init first, then _push every sample and _estimate when you need it. */
+ * (no heap); call its _init first, then _push every sample and _estimate when you need it.
+ * Licence: emitted by mho from your spec, this file is yours: you may use, copy, modify and
+ * distribute it under any terms, including MIT OR Apache-2.0, with or without this notice. */
 #ifndef ECOLI_X0_2_H
 #define ECOLI_X0_2_H
 
 #include <stddef.h>
 #include <stdint.h>
 
+/* C linkage for a C++ program that includes this header (the observers are compiled as C). */
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define ECOLI_X0_2_OUTPUTS 2
 #define ECOLI_X0_2_INPUTS 0
 #define ECOLI_X0_2_TARGETS 2
 /* The map's window, in samples: no map estimate before it is full. */
 #define ECOLI_X0_2_HORIZON 3
+/* The sample period the design assumes, in its time unit: push one sample every period. */
+#define ECOLI_X0_2_SAMPLE_PERIOD 0.2f
 #define ECOLI_X0_2_STATES 3
 /* Entries of a filter's covariance kept: its upper triangle. */
 #define ECOLI_X0_2_COVARIANCE 6
 
-/* What push and estimate return. */
+/* What every call returns: the observers' push and estimate, and the storage calls (the same
+ * values as the Rust static library's c/include/ecoli_x0_2.h). */
 typedef enum {
     ECOLI_X0_2_OK = 0,
     /* The sample was refused: a NaN or infinite value (or a filter step whose result is not
      * finite); the latest estimate is unchanged. */
     ECOLI_X0_2_REFUSED = 1,
     /* No estimate yet (the map: fewer than ECOLI_X0_2_HORIZON accepted samples since init). */
-    ECOLI_X0_2_NO_ESTIMATE_YET = 2
+    ECOLI_X0_2_NO_ESTIMATE_YET = 2,
+    /* The storage calls only: a null pointer, or storage too small or misaligned; nothing done. */
+    ECOLI_X0_2_BAD_ARGUMENT = 3,
+    /* The storage calls only: the storage holds no observer of this design. */
+    ECOLI_X0_2_NOT_INITIALISED = 4
 } ecoli_x0_2_status;
 
-/* Where an estimate lies against its range: inside, or held at its low or high end. */
+/* Where an estimate lies against its range: inside, or held at its low or high end (the same
+ * values from every call that reports it). */
 typedef enum {
     ECOLI_X0_2_INSIDE = 0,
     ECOLI_X0_2_LOW = 1,
@@ -63,6 +78,12 @@ ecoli_x0_2_status ecoli_x0_2_map_estimate(const ecoli_x0_2_map *observer, float 
  * estimate 0 (`P`): LSB 2^-17, proven |fixed - f64 map| <= 1.77e-4
  * estimate 1 (`muX`): LSB 2^-24, proven |fixed - f64 map| <= 3.66e-4
  * Allocate it anywhere (no heap is used) and call ecoli_x0_2_fixed_init. */
+/* Estimate t's scale, in its target's unit: value = integer * 2^ECOLI_X0_2_FIXED_LSB_EXPONENT_t,
+ * which is integer * ECOLI_X0_2_FIXED_LSB_t (a float, exact: a power of two). */
+#define ECOLI_X0_2_FIXED_LSB_EXPONENT_0 (-17)
+#define ECOLI_X0_2_FIXED_LSB_0 7.6293945e-6f
+#define ECOLI_X0_2_FIXED_LSB_EXPONENT_1 (-24)
+#define ECOLI_X0_2_FIXED_LSB_1 5.9604645e-8f
 typedef struct {
     int32_t y[2u * ECOLI_X0_2_HORIZON][ECOLI_X0_2_OUTPUTS];
     unsigned next;
@@ -136,13 +157,11 @@ typedef ecoli_x0_2_ukf_box ecoli_x0_2_observer;
 #define ecoli_x0_2_observer_estimate ecoli_x0_2_ukf_box_estimate
 
 /* The Rust static library's interface (c/include/ecoli_x0_2.h of a crate `mho gen --spec` writes) over
- * ecoli_x0_2_observer: the same calls and statuses, so that a firmware moves between the two routes
- * without a change. The observer lives in storage you provide, ECOLI_X0_2_STORAGE_SIZE bytes aligned to
- * ECOLI_X0_2_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
- * checks them first. */
+ * ecoli_x0_2_observer: the same calls, statuses (ecoli_x0_2_status) and flags (ecoli_x0_2_saturation), so
+ * that a firmware moves between the two routes without a change. The observer lives in storage you
+ * provide, ECOLI_X0_2_STORAGE_SIZE bytes aligned to ECOLI_X0_2_STORAGE_ALIGN: `init` writes a mark of the
+ * design and the size before it, and every call checks them first. */
 #define ECOLI_X0_2_STORAGE_ALIGN 8
-/* The sample period the design assumes, in its time unit. */
-#define ECOLI_X0_2_SAMPLE_PERIOD 0.2
 typedef struct {
     uint64_t mark;
     uint64_t size;
@@ -152,27 +171,18 @@ typedef struct {
 /* Does not compile where the observer would not fit in ECOLI_X0_2_STORAGE_SIZE bytes. */
 typedef char ecoli_x0_2_storage_fits[sizeof(ecoli_x0_2_stored) <= ECOLI_X0_2_STORAGE_SIZE ? 1 : -1];
 
-typedef enum {
-    /* Done. */
-    EcoliX02Status_Ok = 0,
-    /* The sample was refused; see ECOLI_X0_2_REFUSED. */
-    EcoliX02Status_Refused = 1,
-    /* No estimate yet; nothing was written. */
-    EcoliX02Status_NoEstimateYet = 2,
-    /* A null pointer, or storage too small or misaligned: nothing was done. */
-    EcoliX02Status_BadArgument = 3,
-    /* The storage holds no observer of this design (ecoli_x0_2_init never made one there). */
-    EcoliX02Status_NotInitialised = 4
-} EcoliX02Status;
-
 /* A fresh observer in storage of `size` bytes; call it again to reset. */
-EcoliX02Status ecoli_x0_2_init(void *storage, size_t size);
+ecoli_x0_2_status ecoli_x0_2_init(void *storage, size_t size);
 /* ecoli_x0_2_observer_push on the observer in storage. */
-EcoliX02Status ecoli_x0_2_push(void *storage, const float *y, const float *u);
+ecoli_x0_2_status ecoli_x0_2_push(void *storage, const float *y, const float *u);
 /* The estimates into estimates[ECOLI_X0_2_TARGETS] and, unless saturation is NULL, whether each was
- * clamped (-1 below its range, 0 inside, 1 above). */
-EcoliX02Status ecoli_x0_2_estimate(void *storage, float *estimates, int8_t *saturation);
+ * held at an end of its range into saturation[ECOLI_X0_2_TARGETS]. */
+ecoli_x0_2_status ecoli_x0_2_estimate(void *storage, float *estimates, ecoli_x0_2_saturation *saturation);
 /* Bytes the observer occupies with its mark. */
 size_t ecoli_x0_2_storage_size(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,4 +1,6 @@
-/* The `two_tanks` observers in C99, emitted by `mho gen`. Do not edit: regenerate. */
+/* The `two_tanks` observers in C99, emitted by `mho gen`. Do not edit: regenerate.
+ * Licence: emitted by mho from your spec, this file is yours: you may use, copy, modify and
+ * distribute it under any terms, including MIT OR Apache-2.0, with or without this notice. */
 #include <stdint.h>
 #include <string.h>
 #include <math.h>
@@ -7,13 +9,24 @@
 
 /* The Rust observer's bits need every float operation rounded on its own: no fused multiply-add
  * (gcc: -ffp-contract=off, the default of its ISO modes such as -std=c99; other compilers follow
- * the standard pragma below), no -ffast-math, and float evaluated as float. */
+ * the standard pragma below), no -ffast-math, and float evaluated as float: FLT_EVAL_METHOD 0,
+ * or 16 or 32 (ISO/IEC TS 18661-3: types narrower than _Float16, or _Float32, are evaluated in
+ * it, so float stays float; gcc says 16 for a Cortex-M55 or with AVX512-FP16 in its GNU modes). */
 #if !defined(__GNUC__) || defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
 #endif
-#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
-#error "float arithmetic must be evaluated in float (FLT_EVAL_METHOD 0), e.g. SSE rather than the x87"
+#if defined(FLT_EVAL_METHOD)
+#if FLT_EVAL_METHOD == 1
+#error "float expressions are evaluated in double here (FLT_EVAL_METHOD 1): the observers need them evaluated in float"
+#elif FLT_EVAL_METHOD == 2
+#error "float expressions are evaluated in long double here (FLT_EVAL_METHOD 2, e.g. the x87): use SSE (gcc: -mfpmath=sse)"
+#elif FLT_EVAL_METHOD == -1
+#error "the format float expressions are evaluated in is indeterminate here (FLT_EVAL_METHOD -1): the observers need float"
+#elif FLT_EVAL_METHOD != 0 && FLT_EVAL_METHOD != 16 && FLT_EVAL_METHOD != 32
+#error "float expressions are evaluated in a format wider than float here (FLT_EVAL_METHOD not 0, 16 or 32)"
 #endif
+#endif
+
 
 /* The bits of v (memcpy: no aliasing, no conversion). */
 static uint32_t bits_of(float v) {
@@ -3400,7 +3413,7 @@ two_tanks_status two_tanks_mhe_push(two_tanks_mhe *o, const float *y, const floa
     float moved[MHE_NX], x[MHE_NX], end[MHE_NX], values[TWO_TANKS_TARGETS];
     int has_moved = 0;
     unsigned i, slot;
-    if (!inputs_finite(u)) {
+    if (!all_finite(y, TWO_TANKS_OUTPUTS) || !inputs_finite(u)) {
         return TWO_TANKS_REFUSED;
     }
     /* The previous solution moved one sample on: the prior's centre and the first iterate. */
@@ -3411,7 +3424,7 @@ two_tanks_status two_tanks_mhe_push(two_tanks_mhe *o, const float *y, const floa
         mhe_project(next, moved);
         has_moved = 1;
     }
-    /* The window keeps the sample as it is: a non-finite output weighs nothing. */
+    /* Every value of the sample is finite: stored. */
     slot = o->next;
     for (i = 0u; i < TWO_TANKS_OUTPUTS; ++i) {
         o->y[slot][i] = y[i];
@@ -3433,7 +3446,7 @@ two_tanks_status two_tanks_mhe_push(two_tanks_mhe *o, const float *y, const floa
     memcpy(o->solved, x, sizeof x);
     o->has_solved = 1;
     targets(end, u, values);
-    if (!all_finite(y, TWO_TANKS_OUTPUTS) || !all_finite(values, TWO_TANKS_TARGETS)) {
+    if (!all_finite(values, TWO_TANKS_TARGETS)) {
         return TWO_TANKS_REFUSED;
     }
     memcpy(o->values, values, sizeof values);
@@ -3462,61 +3475,54 @@ two_tanks_status two_tanks_mhe_estimate(const two_tanks_mhe *o, float *values, t
 /* The mark of this design's observer in storage (never 0: zeroed storage holds none). */
 #define STORAGE_MARK 0x491c647d9c035b4bull
 
-/* The observer in storage: TwoTanksStatus_BadArgument for a null or misaligned pointer,
- * TwoTanksStatus_NotInitialised where two_tanks_init did not make one (it reads the first 16 bytes only). */
-static TwoTanksStatus stored_observer(void *storage, two_tanks_observer **observer) {
+/* The observer in storage: TWO_TANKS_BAD_ARGUMENT for a null or misaligned pointer,
+ * TWO_TANKS_NOT_INITIALISED where two_tanks_init did not make one (it reads the first 16 bytes only). */
+static two_tanks_status stored_observer(void *storage, two_tanks_observer **observer) {
     two_tanks_stored *stored = (two_tanks_stored *)storage;
     if (storage == NULL || (uintptr_t)storage % TWO_TANKS_STORAGE_ALIGN != 0u) {
-        return TwoTanksStatus_BadArgument;
+        return TWO_TANKS_BAD_ARGUMENT;
     }
     if (stored->mark != STORAGE_MARK || stored->size < (uint64_t)sizeof(two_tanks_stored)) {
-        return TwoTanksStatus_NotInitialised;
+        return TWO_TANKS_NOT_INITIALISED;
     }
     *observer = &stored->observer;
-    return TwoTanksStatus_Ok;
+    return TWO_TANKS_OK;
 }
 
-TwoTanksStatus two_tanks_init(void *storage, size_t size) {
+two_tanks_status two_tanks_init(void *storage, size_t size) {
     two_tanks_stored *stored = (two_tanks_stored *)storage;
     if (storage == NULL || size < sizeof(two_tanks_stored) || (uintptr_t)storage % TWO_TANKS_STORAGE_ALIGN != 0u) {
-        return TwoTanksStatus_BadArgument;
+        return TWO_TANKS_BAD_ARGUMENT;
     }
     stored->mark = STORAGE_MARK;
     stored->size = (uint64_t)size;
     two_tanks_observer_init(&stored->observer);
-    return TwoTanksStatus_Ok;
+    return TWO_TANKS_OK;
 }
 
-TwoTanksStatus two_tanks_push(void *storage, const float *y, const float *u) {
+two_tanks_status two_tanks_push(void *storage, const float *y, const float *u) {
     two_tanks_observer *observer = NULL;
-    const TwoTanksStatus found = stored_observer(storage, &observer);
-    if (found != TwoTanksStatus_Ok) {
+    const two_tanks_status found = stored_observer(storage, &observer);
+    if (found != TWO_TANKS_OK) {
         return found;
     }
     if (y == NULL || u == NULL) {
-        return TwoTanksStatus_BadArgument;
+        return TWO_TANKS_BAD_ARGUMENT;
     }
-    return two_tanks_observer_push(observer, y, u) == TWO_TANKS_OK ? TwoTanksStatus_Ok : TwoTanksStatus_Refused;
+    return two_tanks_observer_push(observer, y, u);
 }
 
-TwoTanksStatus two_tanks_estimate(void *storage, float *estimates, int8_t *saturation) {
+two_tanks_status two_tanks_estimate(void *storage, float *estimates, two_tanks_saturation *saturation) {
     two_tanks_observer *observer = NULL;
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
-    unsigned i;
-    const TwoTanksStatus found = stored_observer(storage, &observer);
-    if (found != TwoTanksStatus_Ok) {
+    const two_tanks_status found = stored_observer(storage, &observer);
+    if (found != TWO_TANKS_OK) {
         return found;
     }
     if (estimates == NULL) {
-        return TwoTanksStatus_BadArgument;
+        return TWO_TANKS_BAD_ARGUMENT;
     }
-    if (two_tanks_observer_estimate(observer, estimates, flags) != TWO_TANKS_OK) {
-        return TwoTanksStatus_NoEstimateYet;
-    }
-    for (i = 0u; saturation != NULL && i < TWO_TANKS_TARGETS; ++i) {
-        saturation[i] = (int8_t)(flags[i] == TWO_TANKS_LOW ? -1 : flags[i] == TWO_TANKS_HIGH ? 1 : 0);
-    }
-    return TwoTanksStatus_Ok;
+    return two_tanks_observer_estimate(observer, estimates, saturation != NULL ? saturation : flags);
 }
 
 size_t two_tanks_storage_size(void) {

@@ -1,33 +1,48 @@
 /* The `two_tanks` observers in C99, emitted by `mho gen` from the same tables and programs as the
  * Rust design file. Do not edit: regenerate. Build with -ffp-contract=off (no fused
  * multiply-add) to get the Rust observers' bits. Every observer lives in a struct you allocate
- * (no heap); call its _init first, then _push every sample and _estimate when you need it. */
+ * (no heap); call its _init first, then _push every sample and _estimate when you need it.
+ * Licence: emitted by mho from your spec, this file is yours: you may use, copy, modify and
+ * distribute it under any terms, including MIT OR Apache-2.0, with or without this notice. */
 #ifndef TWO_TANKS_H
 #define TWO_TANKS_H
 
 #include <stddef.h>
 #include <stdint.h>
 
+/* C linkage for a C++ program that includes this header (the observers are compiled as C). */
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define TWO_TANKS_OUTPUTS 1
 #define TWO_TANKS_INPUTS 1
 #define TWO_TANKS_TARGETS 2
 /* The map's window, in samples: no map estimate before it is full. */
 #define TWO_TANKS_HORIZON 10
+/* The sample period the design assumes, in its time unit: push one sample every period. */
+#define TWO_TANKS_SAMPLE_PERIOD 1.0f
 #define TWO_TANKS_STATES 2
 /* Entries of a filter's covariance kept: its upper triangle. */
 #define TWO_TANKS_COVARIANCE 3
 
-/* What push and estimate return. */
+/* What every call returns: the observers' push and estimate, and the storage calls (the same
+ * values as the Rust static library's c/include/two_tanks.h). */
 typedef enum {
     TWO_TANKS_OK = 0,
     /* The sample was refused: a NaN or infinite value (or a filter step whose result is not
      * finite); the latest estimate is unchanged. */
     TWO_TANKS_REFUSED = 1,
     /* No estimate yet (the map: fewer than TWO_TANKS_HORIZON accepted samples since init). */
-    TWO_TANKS_NO_ESTIMATE_YET = 2
+    TWO_TANKS_NO_ESTIMATE_YET = 2,
+    /* The storage calls only: a null pointer, or storage too small or misaligned; nothing done. */
+    TWO_TANKS_BAD_ARGUMENT = 3,
+    /* The storage calls only: the storage holds no observer of this design. */
+    TWO_TANKS_NOT_INITIALISED = 4
 } two_tanks_status;
 
-/* Where an estimate lies against its range: inside, or held at its low or high end. */
+/* Where an estimate lies against its range: inside, or held at its low or high end (the same
+ * values from every call that reports it). */
 typedef enum {
     TWO_TANKS_INSIDE = 0,
     TWO_TANKS_LOW = 1,
@@ -64,6 +79,12 @@ two_tanks_status two_tanks_map_estimate(const two_tanks_map *observer, float *va
  * estimate 0 (`h1`): LSB 2^-19, proven |fixed - f64 map| <= 4.16e-2
  * estimate 1 (`h2`): LSB 2^-19, proven |fixed - f64 map| <= 2.06e-2
  * Allocate it anywhere (no heap is used) and call two_tanks_fixed_init. */
+/* Estimate t's scale, in its target's unit: value = integer * 2^TWO_TANKS_FIXED_LSB_EXPONENT_t,
+ * which is integer * TWO_TANKS_FIXED_LSB_t (a float, exact: a power of two). */
+#define TWO_TANKS_FIXED_LSB_EXPONENT_0 (-19)
+#define TWO_TANKS_FIXED_LSB_0 1.9073486e-6f
+#define TWO_TANKS_FIXED_LSB_EXPONENT_1 (-19)
+#define TWO_TANKS_FIXED_LSB_1 1.9073486e-6f
 typedef struct {
     int32_t y[2u * TWO_TANKS_HORIZON][TWO_TANKS_OUTPUTS];
     int32_t u[2u * TWO_TANKS_HORIZON][TWO_TANKS_INPUTS];
@@ -188,13 +209,11 @@ typedef two_tanks_corrected two_tanks_observer;
 #define two_tanks_observer_estimate two_tanks_corrected_estimate
 
 /* The Rust static library's interface (c/include/two_tanks.h of a crate `mho gen --spec` writes) over
- * two_tanks_observer: the same calls and statuses, so that a firmware moves between the two routes
- * without a change. The observer lives in storage you provide, TWO_TANKS_STORAGE_SIZE bytes aligned to
- * TWO_TANKS_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
- * checks them first. */
+ * two_tanks_observer: the same calls, statuses (two_tanks_status) and flags (two_tanks_saturation), so
+ * that a firmware moves between the two routes without a change. The observer lives in storage you
+ * provide, TWO_TANKS_STORAGE_SIZE bytes aligned to TWO_TANKS_STORAGE_ALIGN: `init` writes a mark of the
+ * design and the size before it, and every call checks them first. */
 #define TWO_TANKS_STORAGE_ALIGN 8
-/* The sample period the design assumes, in its time unit. */
-#define TWO_TANKS_SAMPLE_PERIOD 1.0
 typedef struct {
     uint64_t mark;
     uint64_t size;
@@ -204,27 +223,18 @@ typedef struct {
 /* Does not compile where the observer would not fit in TWO_TANKS_STORAGE_SIZE bytes. */
 typedef char two_tanks_storage_fits[sizeof(two_tanks_stored) <= TWO_TANKS_STORAGE_SIZE ? 1 : -1];
 
-typedef enum {
-    /* Done. */
-    TwoTanksStatus_Ok = 0,
-    /* The sample was refused; see TWO_TANKS_REFUSED. */
-    TwoTanksStatus_Refused = 1,
-    /* No estimate yet; nothing was written. */
-    TwoTanksStatus_NoEstimateYet = 2,
-    /* A null pointer, or storage too small or misaligned: nothing was done. */
-    TwoTanksStatus_BadArgument = 3,
-    /* The storage holds no observer of this design (two_tanks_init never made one there). */
-    TwoTanksStatus_NotInitialised = 4
-} TwoTanksStatus;
-
 /* A fresh observer in storage of `size` bytes; call it again to reset. */
-TwoTanksStatus two_tanks_init(void *storage, size_t size);
+two_tanks_status two_tanks_init(void *storage, size_t size);
 /* two_tanks_observer_push on the observer in storage. */
-TwoTanksStatus two_tanks_push(void *storage, const float *y, const float *u);
+two_tanks_status two_tanks_push(void *storage, const float *y, const float *u);
 /* The estimates into estimates[TWO_TANKS_TARGETS] and, unless saturation is NULL, whether each was
- * clamped (-1 below its range, 0 inside, 1 above). */
-TwoTanksStatus two_tanks_estimate(void *storage, float *estimates, int8_t *saturation);
+ * held at an end of its range into saturation[TWO_TANKS_TARGETS]. */
+two_tanks_status two_tanks_estimate(void *storage, float *estimates, two_tanks_saturation *saturation);
 /* Bytes the observer occupies with its mark. */
 size_t two_tanks_storage_size(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

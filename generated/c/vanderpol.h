@@ -1,33 +1,48 @@
 /* The `vanderpol` observers in C99, emitted by `mho gen` from the same tables and programs as the
  * Rust design file. Do not edit: regenerate. Build with -ffp-contract=off (no fused
  * multiply-add) to get the Rust observers' bits. Every observer lives in a struct you allocate
- * (no heap); call its _init first, then _push every sample and _estimate when you need it. */
+ * (no heap); call its _init first, then _push every sample and _estimate when you need it.
+ * Licence: emitted by mho from your spec, this file is yours: you may use, copy, modify and
+ * distribute it under any terms, including MIT OR Apache-2.0, with or without this notice. */
 #ifndef VANDERPOL_H
 #define VANDERPOL_H
 
 #include <stddef.h>
 #include <stdint.h>
 
+/* C linkage for a C++ program that includes this header (the observers are compiled as C). */
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define VANDERPOL_OUTPUTS 1
 #define VANDERPOL_INPUTS 0
 #define VANDERPOL_TARGETS 2
 /* The map's window, in samples: no map estimate before it is full. */
 #define VANDERPOL_HORIZON 10
+/* The sample period the design assumes, in its time unit: push one sample every period. */
+#define VANDERPOL_SAMPLE_PERIOD 0.1f
 #define VANDERPOL_STATES 2
 /* Entries of a filter's covariance kept: its upper triangle. */
 #define VANDERPOL_COVARIANCE 3
 
-/* What push and estimate return. */
+/* What every call returns: the observers' push and estimate, and the storage calls (the same
+ * values as the Rust static library's c/include/vanderpol.h). */
 typedef enum {
     VANDERPOL_OK = 0,
     /* The sample was refused: a NaN or infinite value (or a filter step whose result is not
      * finite); the latest estimate is unchanged. */
     VANDERPOL_REFUSED = 1,
     /* No estimate yet (the map: fewer than VANDERPOL_HORIZON accepted samples since init). */
-    VANDERPOL_NO_ESTIMATE_YET = 2
+    VANDERPOL_NO_ESTIMATE_YET = 2,
+    /* The storage calls only: a null pointer, or storage too small or misaligned; nothing done. */
+    VANDERPOL_BAD_ARGUMENT = 3,
+    /* The storage calls only: the storage holds no observer of this design. */
+    VANDERPOL_NOT_INITIALISED = 4
 } vanderpol_status;
 
-/* Where an estimate lies against its range: inside, or held at its low or high end. */
+/* Where an estimate lies against its range: inside, or held at its low or high end (the same
+ * values from every call that reports it). */
 typedef enum {
     VANDERPOL_INSIDE = 0,
     VANDERPOL_LOW = 1,
@@ -62,6 +77,12 @@ vanderpol_status vanderpol_map_estimate(const vanderpol_map *observer, float *va
  * estimate 0 (`x1`): LSB 2^-19, proven |fixed - f64 map| <= 6.49e-4
  * estimate 1 (`x2`): LSB 2^-12, proven |fixed - f64 map| <= 2.09e-3
  * Allocate it anywhere (no heap is used) and call vanderpol_fixed_init. */
+/* Estimate t's scale, in its target's unit: value = integer * 2^VANDERPOL_FIXED_LSB_EXPONENT_t,
+ * which is integer * VANDERPOL_FIXED_LSB_t (a float, exact: a power of two). */
+#define VANDERPOL_FIXED_LSB_EXPONENT_0 (-19)
+#define VANDERPOL_FIXED_LSB_0 1.9073486e-6f
+#define VANDERPOL_FIXED_LSB_EXPONENT_1 (-12)
+#define VANDERPOL_FIXED_LSB_1 2.4414063e-4f
 typedef struct {
     int32_t y[2u * VANDERPOL_HORIZON][VANDERPOL_OUTPUTS];
     unsigned next;
@@ -184,13 +205,11 @@ typedef vanderpol_ukf_box vanderpol_observer;
 #define vanderpol_observer_estimate vanderpol_ukf_box_estimate
 
 /* The Rust static library's interface (c/include/vanderpol.h of a crate `mho gen --spec` writes) over
- * vanderpol_observer: the same calls and statuses, so that a firmware moves between the two routes
- * without a change. The observer lives in storage you provide, VANDERPOL_STORAGE_SIZE bytes aligned to
- * VANDERPOL_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
- * checks them first. */
+ * vanderpol_observer: the same calls, statuses (vanderpol_status) and flags (vanderpol_saturation), so
+ * that a firmware moves between the two routes without a change. The observer lives in storage you
+ * provide, VANDERPOL_STORAGE_SIZE bytes aligned to VANDERPOL_STORAGE_ALIGN: `init` writes a mark of the
+ * design and the size before it, and every call checks them first. */
 #define VANDERPOL_STORAGE_ALIGN 8
-/* The sample period the design assumes, in its time unit. */
-#define VANDERPOL_SAMPLE_PERIOD 0.1
 typedef struct {
     uint64_t mark;
     uint64_t size;
@@ -200,27 +219,18 @@ typedef struct {
 /* Does not compile where the observer would not fit in VANDERPOL_STORAGE_SIZE bytes. */
 typedef char vanderpol_storage_fits[sizeof(vanderpol_stored) <= VANDERPOL_STORAGE_SIZE ? 1 : -1];
 
-typedef enum {
-    /* Done. */
-    VanderpolStatus_Ok = 0,
-    /* The sample was refused; see VANDERPOL_REFUSED. */
-    VanderpolStatus_Refused = 1,
-    /* No estimate yet; nothing was written. */
-    VanderpolStatus_NoEstimateYet = 2,
-    /* A null pointer, or storage too small or misaligned: nothing was done. */
-    VanderpolStatus_BadArgument = 3,
-    /* The storage holds no observer of this design (vanderpol_init never made one there). */
-    VanderpolStatus_NotInitialised = 4
-} VanderpolStatus;
-
 /* A fresh observer in storage of `size` bytes; call it again to reset. */
-VanderpolStatus vanderpol_init(void *storage, size_t size);
+vanderpol_status vanderpol_init(void *storage, size_t size);
 /* vanderpol_observer_push on the observer in storage. */
-VanderpolStatus vanderpol_push(void *storage, const float *y, const float *u);
+vanderpol_status vanderpol_push(void *storage, const float *y, const float *u);
 /* The estimates into estimates[VANDERPOL_TARGETS] and, unless saturation is NULL, whether each was
- * clamped (-1 below its range, 0 inside, 1 above). */
-VanderpolStatus vanderpol_estimate(void *storage, float *estimates, int8_t *saturation);
+ * held at an end of its range into saturation[VANDERPOL_TARGETS]. */
+vanderpol_status vanderpol_estimate(void *storage, float *estimates, vanderpol_saturation *saturation);
 /* Bytes the observer occupies with its mark. */
 size_t vanderpol_storage_size(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,4 +1,6 @@
-/* The `vanderpol_searched` observers in C99, emitted by `mho gen`. Do not edit: regenerate. */
+/* The `vanderpol_searched` observers in C99, emitted by `mho gen`. Do not edit: regenerate.
+ * Licence: emitted by mho from your spec, this file is yours: you may use, copy, modify and
+ * distribute it under any terms, including MIT OR Apache-2.0, with or without this notice. */
 #include <stdint.h>
 #include <string.h>
 #include <math.h>
@@ -7,13 +9,24 @@
 
 /* The Rust observer's bits need every float operation rounded on its own: no fused multiply-add
  * (gcc: -ffp-contract=off, the default of its ISO modes such as -std=c99; other compilers follow
- * the standard pragma below), no -ffast-math, and float evaluated as float. */
+ * the standard pragma below), no -ffast-math, and float evaluated as float: FLT_EVAL_METHOD 0,
+ * or 16 or 32 (ISO/IEC TS 18661-3: types narrower than _Float16, or _Float32, are evaluated in
+ * it, so float stays float; gcc says 16 for a Cortex-M55 or with AVX512-FP16 in its GNU modes). */
 #if !defined(__GNUC__) || defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
 #endif
-#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
-#error "float arithmetic must be evaluated in float (FLT_EVAL_METHOD 0), e.g. SSE rather than the x87"
+#if defined(FLT_EVAL_METHOD)
+#if FLT_EVAL_METHOD == 1
+#error "float expressions are evaluated in double here (FLT_EVAL_METHOD 1): the observers need them evaluated in float"
+#elif FLT_EVAL_METHOD == 2
+#error "float expressions are evaluated in long double here (FLT_EVAL_METHOD 2, e.g. the x87): use SSE (gcc: -mfpmath=sse)"
+#elif FLT_EVAL_METHOD == -1
+#error "the format float expressions are evaluated in is indeterminate here (FLT_EVAL_METHOD -1): the observers need float"
+#elif FLT_EVAL_METHOD != 0 && FLT_EVAL_METHOD != 16 && FLT_EVAL_METHOD != 32
+#error "float expressions are evaluated in a format wider than float here (FLT_EVAL_METHOD not 0, 16 or 32)"
 #endif
+#endif
+
 
 /* The bits of v (memcpy: no aliasing, no conversion). */
 static uint32_t bits_of(float v) {
@@ -2386,7 +2399,7 @@ vanderpol_searched_status vanderpol_searched_mhe_push(vanderpol_searched_mhe *o,
     float moved[MHE_NX], x[MHE_NX], end[MHE_NX], values[VANDERPOL_SEARCHED_TARGETS];
     int has_moved = 0;
     unsigned i, slot;
-    if (!inputs_finite(u)) {
+    if (!all_finite(y, VANDERPOL_SEARCHED_OUTPUTS) || !inputs_finite(u)) {
         return VANDERPOL_SEARCHED_REFUSED;
     }
     /* The previous solution moved one sample on: the prior's centre and the first iterate. */
@@ -2397,7 +2410,7 @@ vanderpol_searched_status vanderpol_searched_mhe_push(vanderpol_searched_mhe *o,
         mhe_project(next, moved);
         has_moved = 1;
     }
-    /* The window keeps the sample as it is: a non-finite output weighs nothing. */
+    /* Every value of the sample is finite: stored. */
     slot = o->next;
     for (i = 0u; i < VANDERPOL_SEARCHED_OUTPUTS; ++i) {
         o->y[slot][i] = y[i];
@@ -2415,7 +2428,7 @@ vanderpol_searched_status vanderpol_searched_mhe_push(vanderpol_searched_mhe *o,
     memcpy(o->solved, x, sizeof x);
     o->has_solved = 1;
     targets(end, u, values);
-    if (!all_finite(y, VANDERPOL_SEARCHED_OUTPUTS) || !all_finite(values, VANDERPOL_SEARCHED_TARGETS)) {
+    if (!all_finite(values, VANDERPOL_SEARCHED_TARGETS)) {
         return VANDERPOL_SEARCHED_REFUSED;
     }
     memcpy(o->values, values, sizeof values);
@@ -2444,61 +2457,54 @@ vanderpol_searched_status vanderpol_searched_mhe_estimate(const vanderpol_search
 /* The mark of this design's observer in storage (never 0: zeroed storage holds none). */
 #define STORAGE_MARK 0xf060ee5a20f09da5ull
 
-/* The observer in storage: VanderpolSearchedStatus_BadArgument for a null or misaligned pointer,
- * VanderpolSearchedStatus_NotInitialised where vanderpol_searched_init did not make one (it reads the first 16 bytes only). */
-static VanderpolSearchedStatus stored_observer(void *storage, vanderpol_searched_observer **observer) {
+/* The observer in storage: VANDERPOL_SEARCHED_BAD_ARGUMENT for a null or misaligned pointer,
+ * VANDERPOL_SEARCHED_NOT_INITIALISED where vanderpol_searched_init did not make one (it reads the first 16 bytes only). */
+static vanderpol_searched_status stored_observer(void *storage, vanderpol_searched_observer **observer) {
     vanderpol_searched_stored *stored = (vanderpol_searched_stored *)storage;
     if (storage == NULL || (uintptr_t)storage % VANDERPOL_SEARCHED_STORAGE_ALIGN != 0u) {
-        return VanderpolSearchedStatus_BadArgument;
+        return VANDERPOL_SEARCHED_BAD_ARGUMENT;
     }
     if (stored->mark != STORAGE_MARK || stored->size < (uint64_t)sizeof(vanderpol_searched_stored)) {
-        return VanderpolSearchedStatus_NotInitialised;
+        return VANDERPOL_SEARCHED_NOT_INITIALISED;
     }
     *observer = &stored->observer;
-    return VanderpolSearchedStatus_Ok;
+    return VANDERPOL_SEARCHED_OK;
 }
 
-VanderpolSearchedStatus vanderpol_searched_init(void *storage, size_t size) {
+vanderpol_searched_status vanderpol_searched_init(void *storage, size_t size) {
     vanderpol_searched_stored *stored = (vanderpol_searched_stored *)storage;
     if (storage == NULL || size < sizeof(vanderpol_searched_stored) || (uintptr_t)storage % VANDERPOL_SEARCHED_STORAGE_ALIGN != 0u) {
-        return VanderpolSearchedStatus_BadArgument;
+        return VANDERPOL_SEARCHED_BAD_ARGUMENT;
     }
     stored->mark = STORAGE_MARK;
     stored->size = (uint64_t)size;
     vanderpol_searched_observer_init(&stored->observer);
-    return VanderpolSearchedStatus_Ok;
+    return VANDERPOL_SEARCHED_OK;
 }
 
-VanderpolSearchedStatus vanderpol_searched_push(void *storage, const float *y, const float *u) {
+vanderpol_searched_status vanderpol_searched_push(void *storage, const float *y, const float *u) {
     vanderpol_searched_observer *observer = NULL;
-    const VanderpolSearchedStatus found = stored_observer(storage, &observer);
-    if (found != VanderpolSearchedStatus_Ok) {
+    const vanderpol_searched_status found = stored_observer(storage, &observer);
+    if (found != VANDERPOL_SEARCHED_OK) {
         return found;
     }
     if (y == NULL) {
-        return VanderpolSearchedStatus_BadArgument;
+        return VANDERPOL_SEARCHED_BAD_ARGUMENT;
     }
-    return vanderpol_searched_observer_push(observer, y, u) == VANDERPOL_SEARCHED_OK ? VanderpolSearchedStatus_Ok : VanderpolSearchedStatus_Refused;
+    return vanderpol_searched_observer_push(observer, y, u);
 }
 
-VanderpolSearchedStatus vanderpol_searched_estimate(void *storage, float *estimates, int8_t *saturation) {
+vanderpol_searched_status vanderpol_searched_estimate(void *storage, float *estimates, vanderpol_searched_saturation *saturation) {
     vanderpol_searched_observer *observer = NULL;
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
-    unsigned i;
-    const VanderpolSearchedStatus found = stored_observer(storage, &observer);
-    if (found != VanderpolSearchedStatus_Ok) {
+    const vanderpol_searched_status found = stored_observer(storage, &observer);
+    if (found != VANDERPOL_SEARCHED_OK) {
         return found;
     }
     if (estimates == NULL) {
-        return VanderpolSearchedStatus_BadArgument;
+        return VANDERPOL_SEARCHED_BAD_ARGUMENT;
     }
-    if (vanderpol_searched_observer_estimate(observer, estimates, flags) != VANDERPOL_SEARCHED_OK) {
-        return VanderpolSearchedStatus_NoEstimateYet;
-    }
-    for (i = 0u; saturation != NULL && i < VANDERPOL_SEARCHED_TARGETS; ++i) {
-        saturation[i] = (int8_t)(flags[i] == VANDERPOL_SEARCHED_LOW ? -1 : flags[i] == VANDERPOL_SEARCHED_HIGH ? 1 : 0);
-    }
-    return VanderpolSearchedStatus_Ok;
+    return vanderpol_searched_observer_estimate(observer, estimates, saturation != NULL ? saturation : flags);
 }
 
 size_t vanderpol_searched_storage_size(void) {

@@ -1,33 +1,48 @@
 /* The `vanderpol_searched` observers in C99, emitted by `mho gen` from the same tables and programs as the
  * Rust design file. Do not edit: regenerate. Build with -ffp-contract=off (no fused
  * multiply-add) to get the Rust observers' bits. Every observer lives in a struct you allocate
- * (no heap); call its _init first, then _push every sample and _estimate when you need it. */
+ * (no heap); call its _init first, then _push every sample and _estimate when you need it.
+ * Licence: emitted by mho from your spec, this file is yours: you may use, copy, modify and
+ * distribute it under any terms, including MIT OR Apache-2.0, with or without this notice. */
 #ifndef VANDERPOL_SEARCHED_H
 #define VANDERPOL_SEARCHED_H
 
 #include <stddef.h>
 #include <stdint.h>
 
+/* C linkage for a C++ program that includes this header (the observers are compiled as C). */
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define VANDERPOL_SEARCHED_OUTPUTS 1
 #define VANDERPOL_SEARCHED_INPUTS 0
 #define VANDERPOL_SEARCHED_TARGETS 2
 /* The map's window, in samples: no map estimate before it is full. */
 #define VANDERPOL_SEARCHED_HORIZON 16
+/* The sample period the design assumes, in its time unit: push one sample every period. */
+#define VANDERPOL_SEARCHED_SAMPLE_PERIOD 0.1f
 #define VANDERPOL_SEARCHED_STATES 2
 /* Entries of a filter's covariance kept: its upper triangle. */
 #define VANDERPOL_SEARCHED_COVARIANCE 3
 
-/* What push and estimate return. */
+/* What every call returns: the observers' push and estimate, and the storage calls (the same
+ * values as the Rust static library's c/include/vanderpol_searched.h). */
 typedef enum {
     VANDERPOL_SEARCHED_OK = 0,
     /* The sample was refused: a NaN or infinite value (or a filter step whose result is not
      * finite); the latest estimate is unchanged. */
     VANDERPOL_SEARCHED_REFUSED = 1,
     /* No estimate yet (the map: fewer than VANDERPOL_SEARCHED_HORIZON accepted samples since init). */
-    VANDERPOL_SEARCHED_NO_ESTIMATE_YET = 2
+    VANDERPOL_SEARCHED_NO_ESTIMATE_YET = 2,
+    /* The storage calls only: a null pointer, or storage too small or misaligned; nothing done. */
+    VANDERPOL_SEARCHED_BAD_ARGUMENT = 3,
+    /* The storage calls only: the storage holds no observer of this design. */
+    VANDERPOL_SEARCHED_NOT_INITIALISED = 4
 } vanderpol_searched_status;
 
-/* Where an estimate lies against its range: inside, or held at its low or high end. */
+/* Where an estimate lies against its range: inside, or held at its low or high end (the same
+ * values from every call that reports it). */
 typedef enum {
     VANDERPOL_SEARCHED_INSIDE = 0,
     VANDERPOL_SEARCHED_LOW = 1,
@@ -62,6 +77,12 @@ vanderpol_searched_status vanderpol_searched_map_estimate(const vanderpol_search
  * estimate 0 (`x1`): LSB 2^-13, proven |fixed - f64 map| <= 2.06e-3
  * estimate 1 (`x2`): LSB 2^-12, proven |fixed - f64 map| <= 3.02e-3
  * Allocate it anywhere (no heap is used) and call vanderpol_searched_fixed_init. */
+/* Estimate t's scale, in its target's unit: value = integer * 2^VANDERPOL_SEARCHED_FIXED_LSB_EXPONENT_t,
+ * which is integer * VANDERPOL_SEARCHED_FIXED_LSB_t (a float, exact: a power of two). */
+#define VANDERPOL_SEARCHED_FIXED_LSB_EXPONENT_0 (-13)
+#define VANDERPOL_SEARCHED_FIXED_LSB_0 1.2207031e-4f
+#define VANDERPOL_SEARCHED_FIXED_LSB_EXPONENT_1 (-12)
+#define VANDERPOL_SEARCHED_FIXED_LSB_1 2.4414063e-4f
 typedef struct {
     int32_t y[2u * VANDERPOL_SEARCHED_HORIZON][VANDERPOL_SEARCHED_OUTPUTS];
     unsigned next;
@@ -184,13 +205,11 @@ typedef vanderpol_searched_corrected vanderpol_searched_observer;
 #define vanderpol_searched_observer_estimate vanderpol_searched_corrected_estimate
 
 /* The Rust static library's interface (c/include/vanderpol_searched.h of a crate `mho gen --spec` writes) over
- * vanderpol_searched_observer: the same calls and statuses, so that a firmware moves between the two routes
- * without a change. The observer lives in storage you provide, VANDERPOL_SEARCHED_STORAGE_SIZE bytes aligned to
- * VANDERPOL_SEARCHED_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
- * checks them first. */
+ * vanderpol_searched_observer: the same calls, statuses (vanderpol_searched_status) and flags (vanderpol_searched_saturation), so
+ * that a firmware moves between the two routes without a change. The observer lives in storage you
+ * provide, VANDERPOL_SEARCHED_STORAGE_SIZE bytes aligned to VANDERPOL_SEARCHED_STORAGE_ALIGN: `init` writes a mark of the
+ * design and the size before it, and every call checks them first. */
 #define VANDERPOL_SEARCHED_STORAGE_ALIGN 8
-/* The sample period the design assumes, in its time unit. */
-#define VANDERPOL_SEARCHED_SAMPLE_PERIOD 0.1
 typedef struct {
     uint64_t mark;
     uint64_t size;
@@ -200,27 +219,18 @@ typedef struct {
 /* Does not compile where the observer would not fit in VANDERPOL_SEARCHED_STORAGE_SIZE bytes. */
 typedef char vanderpol_searched_storage_fits[sizeof(vanderpol_searched_stored) <= VANDERPOL_SEARCHED_STORAGE_SIZE ? 1 : -1];
 
-typedef enum {
-    /* Done. */
-    VanderpolSearchedStatus_Ok = 0,
-    /* The sample was refused; see VANDERPOL_SEARCHED_REFUSED. */
-    VanderpolSearchedStatus_Refused = 1,
-    /* No estimate yet; nothing was written. */
-    VanderpolSearchedStatus_NoEstimateYet = 2,
-    /* A null pointer, or storage too small or misaligned: nothing was done. */
-    VanderpolSearchedStatus_BadArgument = 3,
-    /* The storage holds no observer of this design (vanderpol_searched_init never made one there). */
-    VanderpolSearchedStatus_NotInitialised = 4
-} VanderpolSearchedStatus;
-
 /* A fresh observer in storage of `size` bytes; call it again to reset. */
-VanderpolSearchedStatus vanderpol_searched_init(void *storage, size_t size);
+vanderpol_searched_status vanderpol_searched_init(void *storage, size_t size);
 /* vanderpol_searched_observer_push on the observer in storage. */
-VanderpolSearchedStatus vanderpol_searched_push(void *storage, const float *y, const float *u);
+vanderpol_searched_status vanderpol_searched_push(void *storage, const float *y, const float *u);
 /* The estimates into estimates[VANDERPOL_SEARCHED_TARGETS] and, unless saturation is NULL, whether each was
- * clamped (-1 below its range, 0 inside, 1 above). */
-VanderpolSearchedStatus vanderpol_searched_estimate(void *storage, float *estimates, int8_t *saturation);
+ * held at an end of its range into saturation[VANDERPOL_SEARCHED_TARGETS]. */
+vanderpol_searched_status vanderpol_searched_estimate(void *storage, float *estimates, vanderpol_searched_saturation *saturation);
 /* Bytes the observer occupies with its mark. */
 size_t vanderpol_searched_storage_size(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

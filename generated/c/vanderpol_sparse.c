@@ -1,4 +1,6 @@
-/* The `vanderpol_sparse` observers in C99, emitted by `mho gen`. Do not edit: regenerate. */
+/* The `vanderpol_sparse` observers in C99, emitted by `mho gen`. Do not edit: regenerate.
+ * Licence: emitted by mho from your spec, this file is yours: you may use, copy, modify and
+ * distribute it under any terms, including MIT OR Apache-2.0, with or without this notice. */
 #include <stdint.h>
 #include <string.h>
 #include <math.h>
@@ -7,13 +9,24 @@
 
 /* The Rust observer's bits need every float operation rounded on its own: no fused multiply-add
  * (gcc: -ffp-contract=off, the default of its ISO modes such as -std=c99; other compilers follow
- * the standard pragma below), no -ffast-math, and float evaluated as float. */
+ * the standard pragma below), no -ffast-math, and float evaluated as float: FLT_EVAL_METHOD 0,
+ * or 16 or 32 (ISO/IEC TS 18661-3: types narrower than _Float16, or _Float32, are evaluated in
+ * it, so float stays float; gcc says 16 for a Cortex-M55 or with AVX512-FP16 in its GNU modes). */
 #if !defined(__GNUC__) || defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
 #endif
-#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
-#error "float arithmetic must be evaluated in float (FLT_EVAL_METHOD 0), e.g. SSE rather than the x87"
+#if defined(FLT_EVAL_METHOD)
+#if FLT_EVAL_METHOD == 1
+#error "float expressions are evaluated in double here (FLT_EVAL_METHOD 1): the observers need them evaluated in float"
+#elif FLT_EVAL_METHOD == 2
+#error "float expressions are evaluated in long double here (FLT_EVAL_METHOD 2, e.g. the x87): use SSE (gcc: -mfpmath=sse)"
+#elif FLT_EVAL_METHOD == -1
+#error "the format float expressions are evaluated in is indeterminate here (FLT_EVAL_METHOD -1): the observers need float"
+#elif FLT_EVAL_METHOD != 0 && FLT_EVAL_METHOD != 16 && FLT_EVAL_METHOD != 32
+#error "float expressions are evaluated in a format wider than float here (FLT_EVAL_METHOD not 0, 16 or 32)"
 #endif
+#endif
+
 
 /* The bits of v (memcpy: no aliasing, no conversion). */
 static uint32_t bits_of(float v) {
@@ -2363,7 +2376,7 @@ vanderpol_sparse_status vanderpol_sparse_mhe_push(vanderpol_sparse_mhe *o, const
     float moved[MHE_NX], x[MHE_NX], end[MHE_NX], values[VANDERPOL_SPARSE_TARGETS];
     int has_moved = 0;
     unsigned i, slot;
-    if (!inputs_finite(u)) {
+    if (!all_finite(y, VANDERPOL_SPARSE_OUTPUTS) || !inputs_finite(u)) {
         return VANDERPOL_SPARSE_REFUSED;
     }
     /* The previous solution moved one sample on: the prior's centre and the first iterate. */
@@ -2374,7 +2387,7 @@ vanderpol_sparse_status vanderpol_sparse_mhe_push(vanderpol_sparse_mhe *o, const
         mhe_project(next, moved);
         has_moved = 1;
     }
-    /* The window keeps the sample as it is: a non-finite output weighs nothing. */
+    /* Every value of the sample is finite: stored. */
     slot = o->next;
     for (i = 0u; i < VANDERPOL_SPARSE_OUTPUTS; ++i) {
         o->y[slot][i] = y[i];
@@ -2392,7 +2405,7 @@ vanderpol_sparse_status vanderpol_sparse_mhe_push(vanderpol_sparse_mhe *o, const
     memcpy(o->solved, x, sizeof x);
     o->has_solved = 1;
     targets(end, u, values);
-    if (!all_finite(y, VANDERPOL_SPARSE_OUTPUTS) || !all_finite(values, VANDERPOL_SPARSE_TARGETS)) {
+    if (!all_finite(values, VANDERPOL_SPARSE_TARGETS)) {
         return VANDERPOL_SPARSE_REFUSED;
     }
     memcpy(o->values, values, sizeof values);
@@ -2421,61 +2434,54 @@ vanderpol_sparse_status vanderpol_sparse_mhe_estimate(const vanderpol_sparse_mhe
 /* The mark of this design's observer in storage (never 0: zeroed storage holds none). */
 #define STORAGE_MARK 0x19a78b3901da6189ull
 
-/* The observer in storage: VanderpolSparseStatus_BadArgument for a null or misaligned pointer,
- * VanderpolSparseStatus_NotInitialised where vanderpol_sparse_init did not make one (it reads the first 16 bytes only). */
-static VanderpolSparseStatus stored_observer(void *storage, vanderpol_sparse_observer **observer) {
+/* The observer in storage: VANDERPOL_SPARSE_BAD_ARGUMENT for a null or misaligned pointer,
+ * VANDERPOL_SPARSE_NOT_INITIALISED where vanderpol_sparse_init did not make one (it reads the first 16 bytes only). */
+static vanderpol_sparse_status stored_observer(void *storage, vanderpol_sparse_observer **observer) {
     vanderpol_sparse_stored *stored = (vanderpol_sparse_stored *)storage;
     if (storage == NULL || (uintptr_t)storage % VANDERPOL_SPARSE_STORAGE_ALIGN != 0u) {
-        return VanderpolSparseStatus_BadArgument;
+        return VANDERPOL_SPARSE_BAD_ARGUMENT;
     }
     if (stored->mark != STORAGE_MARK || stored->size < (uint64_t)sizeof(vanderpol_sparse_stored)) {
-        return VanderpolSparseStatus_NotInitialised;
+        return VANDERPOL_SPARSE_NOT_INITIALISED;
     }
     *observer = &stored->observer;
-    return VanderpolSparseStatus_Ok;
+    return VANDERPOL_SPARSE_OK;
 }
 
-VanderpolSparseStatus vanderpol_sparse_init(void *storage, size_t size) {
+vanderpol_sparse_status vanderpol_sparse_init(void *storage, size_t size) {
     vanderpol_sparse_stored *stored = (vanderpol_sparse_stored *)storage;
     if (storage == NULL || size < sizeof(vanderpol_sparse_stored) || (uintptr_t)storage % VANDERPOL_SPARSE_STORAGE_ALIGN != 0u) {
-        return VanderpolSparseStatus_BadArgument;
+        return VANDERPOL_SPARSE_BAD_ARGUMENT;
     }
     stored->mark = STORAGE_MARK;
     stored->size = (uint64_t)size;
     vanderpol_sparse_observer_init(&stored->observer);
-    return VanderpolSparseStatus_Ok;
+    return VANDERPOL_SPARSE_OK;
 }
 
-VanderpolSparseStatus vanderpol_sparse_push(void *storage, const float *y, const float *u) {
+vanderpol_sparse_status vanderpol_sparse_push(void *storage, const float *y, const float *u) {
     vanderpol_sparse_observer *observer = NULL;
-    const VanderpolSparseStatus found = stored_observer(storage, &observer);
-    if (found != VanderpolSparseStatus_Ok) {
+    const vanderpol_sparse_status found = stored_observer(storage, &observer);
+    if (found != VANDERPOL_SPARSE_OK) {
         return found;
     }
     if (y == NULL) {
-        return VanderpolSparseStatus_BadArgument;
+        return VANDERPOL_SPARSE_BAD_ARGUMENT;
     }
-    return vanderpol_sparse_observer_push(observer, y, u) == VANDERPOL_SPARSE_OK ? VanderpolSparseStatus_Ok : VanderpolSparseStatus_Refused;
+    return vanderpol_sparse_observer_push(observer, y, u);
 }
 
-VanderpolSparseStatus vanderpol_sparse_estimate(void *storage, float *estimates, int8_t *saturation) {
+vanderpol_sparse_status vanderpol_sparse_estimate(void *storage, float *estimates, vanderpol_sparse_saturation *saturation) {
     vanderpol_sparse_observer *observer = NULL;
     vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
-    unsigned i;
-    const VanderpolSparseStatus found = stored_observer(storage, &observer);
-    if (found != VanderpolSparseStatus_Ok) {
+    const vanderpol_sparse_status found = stored_observer(storage, &observer);
+    if (found != VANDERPOL_SPARSE_OK) {
         return found;
     }
     if (estimates == NULL) {
-        return VanderpolSparseStatus_BadArgument;
+        return VANDERPOL_SPARSE_BAD_ARGUMENT;
     }
-    if (vanderpol_sparse_observer_estimate(observer, estimates, flags) != VANDERPOL_SPARSE_OK) {
-        return VanderpolSparseStatus_NoEstimateYet;
-    }
-    for (i = 0u; saturation != NULL && i < VANDERPOL_SPARSE_TARGETS; ++i) {
-        saturation[i] = (int8_t)(flags[i] == VANDERPOL_SPARSE_LOW ? -1 : flags[i] == VANDERPOL_SPARSE_HIGH ? 1 : 0);
-    }
-    return VanderpolSparseStatus_Ok;
+    return vanderpol_sparse_observer_estimate(observer, estimates, saturation != NULL ? saturation : flags);
 }
 
 size_t vanderpol_sparse_storage_size(void) {

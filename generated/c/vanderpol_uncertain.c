@@ -1,4 +1,6 @@
-/* The `vanderpol_uncertain` observers in C99, emitted by `mho gen`. Do not edit: regenerate. */
+/* The `vanderpol_uncertain` observers in C99, emitted by `mho gen`. Do not edit: regenerate.
+ * Licence: emitted by mho from your spec, this file is yours: you may use, copy, modify and
+ * distribute it under any terms, including MIT OR Apache-2.0, with or without this notice. */
 #include <stdint.h>
 #include <string.h>
 #include <math.h>
@@ -7,13 +9,24 @@
 
 /* The Rust observer's bits need every float operation rounded on its own: no fused multiply-add
  * (gcc: -ffp-contract=off, the default of its ISO modes such as -std=c99; other compilers follow
- * the standard pragma below), no -ffast-math, and float evaluated as float. */
+ * the standard pragma below), no -ffast-math, and float evaluated as float: FLT_EVAL_METHOD 0,
+ * or 16 or 32 (ISO/IEC TS 18661-3: types narrower than _Float16, or _Float32, are evaluated in
+ * it, so float stays float; gcc says 16 for a Cortex-M55 or with AVX512-FP16 in its GNU modes). */
 #if !defined(__GNUC__) || defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
 #endif
-#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
-#error "float arithmetic must be evaluated in float (FLT_EVAL_METHOD 0), e.g. SSE rather than the x87"
+#if defined(FLT_EVAL_METHOD)
+#if FLT_EVAL_METHOD == 1
+#error "float expressions are evaluated in double here (FLT_EVAL_METHOD 1): the observers need them evaluated in float"
+#elif FLT_EVAL_METHOD == 2
+#error "float expressions are evaluated in long double here (FLT_EVAL_METHOD 2, e.g. the x87): use SSE (gcc: -mfpmath=sse)"
+#elif FLT_EVAL_METHOD == -1
+#error "the format float expressions are evaluated in is indeterminate here (FLT_EVAL_METHOD -1): the observers need float"
+#elif FLT_EVAL_METHOD != 0 && FLT_EVAL_METHOD != 16 && FLT_EVAL_METHOD != 32
+#error "float expressions are evaluated in a format wider than float here (FLT_EVAL_METHOD not 0, 16 or 32)"
 #endif
+#endif
+
 
 /* The bits of v (memcpy: no aliasing, no conversion). */
 static uint32_t bits_of(float v) {
@@ -2505,7 +2518,7 @@ vanderpol_uncertain_status vanderpol_uncertain_mhe_push(vanderpol_uncertain_mhe 
     float moved[MHE_NX], x[MHE_NX], end[MHE_NX], values[VANDERPOL_UNCERTAIN_TARGETS];
     int has_moved = 0;
     unsigned i, slot;
-    if (!inputs_finite(u)) {
+    if (!all_finite(y, VANDERPOL_UNCERTAIN_OUTPUTS) || !inputs_finite(u)) {
         return VANDERPOL_UNCERTAIN_REFUSED;
     }
     /* The previous solution moved one sample on: the prior's centre and the first iterate. */
@@ -2516,7 +2529,7 @@ vanderpol_uncertain_status vanderpol_uncertain_mhe_push(vanderpol_uncertain_mhe 
         mhe_project(next, moved);
         has_moved = 1;
     }
-    /* The window keeps the sample as it is: a non-finite output weighs nothing. */
+    /* Every value of the sample is finite: stored. */
     slot = o->next;
     for (i = 0u; i < VANDERPOL_UNCERTAIN_OUTPUTS; ++i) {
         o->y[slot][i] = y[i];
@@ -2534,7 +2547,7 @@ vanderpol_uncertain_status vanderpol_uncertain_mhe_push(vanderpol_uncertain_mhe 
     memcpy(o->solved, x, sizeof x);
     o->has_solved = 1;
     targets(end, u, values);
-    if (!all_finite(y, VANDERPOL_UNCERTAIN_OUTPUTS) || !all_finite(values, VANDERPOL_UNCERTAIN_TARGETS)) {
+    if (!all_finite(values, VANDERPOL_UNCERTAIN_TARGETS)) {
         return VANDERPOL_UNCERTAIN_REFUSED;
     }
     memcpy(o->values, values, sizeof values);
@@ -2563,61 +2576,54 @@ vanderpol_uncertain_status vanderpol_uncertain_mhe_estimate(const vanderpol_unce
 /* The mark of this design's observer in storage (never 0: zeroed storage holds none). */
 #define STORAGE_MARK 0x30357733908387b1ull
 
-/* The observer in storage: VanderpolUncertainStatus_BadArgument for a null or misaligned pointer,
- * VanderpolUncertainStatus_NotInitialised where vanderpol_uncertain_init did not make one (it reads the first 16 bytes only). */
-static VanderpolUncertainStatus stored_observer(void *storage, vanderpol_uncertain_observer **observer) {
+/* The observer in storage: VANDERPOL_UNCERTAIN_BAD_ARGUMENT for a null or misaligned pointer,
+ * VANDERPOL_UNCERTAIN_NOT_INITIALISED where vanderpol_uncertain_init did not make one (it reads the first 16 bytes only). */
+static vanderpol_uncertain_status stored_observer(void *storage, vanderpol_uncertain_observer **observer) {
     vanderpol_uncertain_stored *stored = (vanderpol_uncertain_stored *)storage;
     if (storage == NULL || (uintptr_t)storage % VANDERPOL_UNCERTAIN_STORAGE_ALIGN != 0u) {
-        return VanderpolUncertainStatus_BadArgument;
+        return VANDERPOL_UNCERTAIN_BAD_ARGUMENT;
     }
     if (stored->mark != STORAGE_MARK || stored->size < (uint64_t)sizeof(vanderpol_uncertain_stored)) {
-        return VanderpolUncertainStatus_NotInitialised;
+        return VANDERPOL_UNCERTAIN_NOT_INITIALISED;
     }
     *observer = &stored->observer;
-    return VanderpolUncertainStatus_Ok;
+    return VANDERPOL_UNCERTAIN_OK;
 }
 
-VanderpolUncertainStatus vanderpol_uncertain_init(void *storage, size_t size) {
+vanderpol_uncertain_status vanderpol_uncertain_init(void *storage, size_t size) {
     vanderpol_uncertain_stored *stored = (vanderpol_uncertain_stored *)storage;
     if (storage == NULL || size < sizeof(vanderpol_uncertain_stored) || (uintptr_t)storage % VANDERPOL_UNCERTAIN_STORAGE_ALIGN != 0u) {
-        return VanderpolUncertainStatus_BadArgument;
+        return VANDERPOL_UNCERTAIN_BAD_ARGUMENT;
     }
     stored->mark = STORAGE_MARK;
     stored->size = (uint64_t)size;
     vanderpol_uncertain_observer_init(&stored->observer);
-    return VanderpolUncertainStatus_Ok;
+    return VANDERPOL_UNCERTAIN_OK;
 }
 
-VanderpolUncertainStatus vanderpol_uncertain_push(void *storage, const float *y, const float *u) {
+vanderpol_uncertain_status vanderpol_uncertain_push(void *storage, const float *y, const float *u) {
     vanderpol_uncertain_observer *observer = NULL;
-    const VanderpolUncertainStatus found = stored_observer(storage, &observer);
-    if (found != VanderpolUncertainStatus_Ok) {
+    const vanderpol_uncertain_status found = stored_observer(storage, &observer);
+    if (found != VANDERPOL_UNCERTAIN_OK) {
         return found;
     }
     if (y == NULL) {
-        return VanderpolUncertainStatus_BadArgument;
+        return VANDERPOL_UNCERTAIN_BAD_ARGUMENT;
     }
-    return vanderpol_uncertain_observer_push(observer, y, u) == VANDERPOL_UNCERTAIN_OK ? VanderpolUncertainStatus_Ok : VanderpolUncertainStatus_Refused;
+    return vanderpol_uncertain_observer_push(observer, y, u);
 }
 
-VanderpolUncertainStatus vanderpol_uncertain_estimate(void *storage, float *estimates, int8_t *saturation) {
+vanderpol_uncertain_status vanderpol_uncertain_estimate(void *storage, float *estimates, vanderpol_uncertain_saturation *saturation) {
     vanderpol_uncertain_observer *observer = NULL;
     vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
-    unsigned i;
-    const VanderpolUncertainStatus found = stored_observer(storage, &observer);
-    if (found != VanderpolUncertainStatus_Ok) {
+    const vanderpol_uncertain_status found = stored_observer(storage, &observer);
+    if (found != VANDERPOL_UNCERTAIN_OK) {
         return found;
     }
     if (estimates == NULL) {
-        return VanderpolUncertainStatus_BadArgument;
+        return VANDERPOL_UNCERTAIN_BAD_ARGUMENT;
     }
-    if (vanderpol_uncertain_observer_estimate(observer, estimates, flags) != VANDERPOL_UNCERTAIN_OK) {
-        return VanderpolUncertainStatus_NoEstimateYet;
-    }
-    for (i = 0u; saturation != NULL && i < VANDERPOL_UNCERTAIN_TARGETS; ++i) {
-        saturation[i] = (int8_t)(flags[i] == VANDERPOL_UNCERTAIN_LOW ? -1 : flags[i] == VANDERPOL_UNCERTAIN_HIGH ? 1 : 0);
-    }
-    return VanderpolUncertainStatus_Ok;
+    return vanderpol_uncertain_observer_estimate(observer, estimates, saturation != NULL ? saturation : flags);
 }
 
 size_t vanderpol_uncertain_storage_size(void) {

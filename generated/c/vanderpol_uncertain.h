@@ -1,33 +1,48 @@
 /* The `vanderpol_uncertain` observers in C99, emitted by `mho gen` from the same tables and programs as the
  * Rust design file. Do not edit: regenerate. Build with -ffp-contract=off (no fused
  * multiply-add) to get the Rust observers' bits. Every observer lives in a struct you allocate
- * (no heap); call its _init first, then _push every sample and _estimate when you need it. */
+ * (no heap); call its _init first, then _push every sample and _estimate when you need it.
+ * Licence: emitted by mho from your spec, this file is yours: you may use, copy, modify and
+ * distribute it under any terms, including MIT OR Apache-2.0, with or without this notice. */
 #ifndef VANDERPOL_UNCERTAIN_H
 #define VANDERPOL_UNCERTAIN_H
 
 #include <stddef.h>
 #include <stdint.h>
 
+/* C linkage for a C++ program that includes this header (the observers are compiled as C). */
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define VANDERPOL_UNCERTAIN_OUTPUTS 1
 #define VANDERPOL_UNCERTAIN_INPUTS 0
 #define VANDERPOL_UNCERTAIN_TARGETS 2
 /* The map's window, in samples: no map estimate before it is full. */
 #define VANDERPOL_UNCERTAIN_HORIZON 10
+/* The sample period the design assumes, in its time unit: push one sample every period. */
+#define VANDERPOL_UNCERTAIN_SAMPLE_PERIOD 0.1f
 #define VANDERPOL_UNCERTAIN_STATES 2
 /* Entries of a filter's covariance kept: its upper triangle. */
 #define VANDERPOL_UNCERTAIN_COVARIANCE 3
 
-/* What push and estimate return. */
+/* What every call returns: the observers' push and estimate, and the storage calls (the same
+ * values as the Rust static library's c/include/vanderpol_uncertain.h). */
 typedef enum {
     VANDERPOL_UNCERTAIN_OK = 0,
     /* The sample was refused: a NaN or infinite value (or a filter step whose result is not
      * finite); the latest estimate is unchanged. */
     VANDERPOL_UNCERTAIN_REFUSED = 1,
     /* No estimate yet (the map: fewer than VANDERPOL_UNCERTAIN_HORIZON accepted samples since init). */
-    VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET = 2
+    VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET = 2,
+    /* The storage calls only: a null pointer, or storage too small or misaligned; nothing done. */
+    VANDERPOL_UNCERTAIN_BAD_ARGUMENT = 3,
+    /* The storage calls only: the storage holds no observer of this design. */
+    VANDERPOL_UNCERTAIN_NOT_INITIALISED = 4
 } vanderpol_uncertain_status;
 
-/* Where an estimate lies against its range: inside, or held at its low or high end. */
+/* Where an estimate lies against its range: inside, or held at its low or high end (the same
+ * values from every call that reports it). */
 typedef enum {
     VANDERPOL_UNCERTAIN_INSIDE = 0,
     VANDERPOL_UNCERTAIN_LOW = 1,
@@ -62,6 +77,12 @@ vanderpol_uncertain_status vanderpol_uncertain_map_estimate(const vanderpol_unce
  * estimate 0 (`x1`): LSB 2^-19, proven |fixed - f64 map| <= 2.14e-3
  * estimate 1 (`x2`): LSB 2^-13, proven |fixed - f64 map| <= 2.61e-3
  * Allocate it anywhere (no heap is used) and call vanderpol_uncertain_fixed_init. */
+/* Estimate t's scale, in its target's unit: value = integer * 2^VANDERPOL_UNCERTAIN_FIXED_LSB_EXPONENT_t,
+ * which is integer * VANDERPOL_UNCERTAIN_FIXED_LSB_t (a float, exact: a power of two). */
+#define VANDERPOL_UNCERTAIN_FIXED_LSB_EXPONENT_0 (-19)
+#define VANDERPOL_UNCERTAIN_FIXED_LSB_0 1.9073486e-6f
+#define VANDERPOL_UNCERTAIN_FIXED_LSB_EXPONENT_1 (-13)
+#define VANDERPOL_UNCERTAIN_FIXED_LSB_1 1.2207031e-4f
 typedef struct {
     int32_t y[2u * VANDERPOL_UNCERTAIN_HORIZON][VANDERPOL_UNCERTAIN_OUTPUTS];
     unsigned next;
@@ -184,13 +205,11 @@ typedef vanderpol_uncertain_ekf_restart vanderpol_uncertain_observer;
 #define vanderpol_uncertain_observer_estimate vanderpol_uncertain_ekf_restart_estimate
 
 /* The Rust static library's interface (c/include/vanderpol_uncertain.h of a crate `mho gen --spec` writes) over
- * vanderpol_uncertain_observer: the same calls and statuses, so that a firmware moves between the two routes
- * without a change. The observer lives in storage you provide, VANDERPOL_UNCERTAIN_STORAGE_SIZE bytes aligned to
- * VANDERPOL_UNCERTAIN_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call
- * checks them first. */
+ * vanderpol_uncertain_observer: the same calls, statuses (vanderpol_uncertain_status) and flags (vanderpol_uncertain_saturation), so
+ * that a firmware moves between the two routes without a change. The observer lives in storage you
+ * provide, VANDERPOL_UNCERTAIN_STORAGE_SIZE bytes aligned to VANDERPOL_UNCERTAIN_STORAGE_ALIGN: `init` writes a mark of the
+ * design and the size before it, and every call checks them first. */
 #define VANDERPOL_UNCERTAIN_STORAGE_ALIGN 8
-/* The sample period the design assumes, in its time unit. */
-#define VANDERPOL_UNCERTAIN_SAMPLE_PERIOD 0.1
 typedef struct {
     uint64_t mark;
     uint64_t size;
@@ -200,27 +219,18 @@ typedef struct {
 /* Does not compile where the observer would not fit in VANDERPOL_UNCERTAIN_STORAGE_SIZE bytes. */
 typedef char vanderpol_uncertain_storage_fits[sizeof(vanderpol_uncertain_stored) <= VANDERPOL_UNCERTAIN_STORAGE_SIZE ? 1 : -1];
 
-typedef enum {
-    /* Done. */
-    VanderpolUncertainStatus_Ok = 0,
-    /* The sample was refused; see VANDERPOL_UNCERTAIN_REFUSED. */
-    VanderpolUncertainStatus_Refused = 1,
-    /* No estimate yet; nothing was written. */
-    VanderpolUncertainStatus_NoEstimateYet = 2,
-    /* A null pointer, or storage too small or misaligned: nothing was done. */
-    VanderpolUncertainStatus_BadArgument = 3,
-    /* The storage holds no observer of this design (vanderpol_uncertain_init never made one there). */
-    VanderpolUncertainStatus_NotInitialised = 4
-} VanderpolUncertainStatus;
-
 /* A fresh observer in storage of `size` bytes; call it again to reset. */
-VanderpolUncertainStatus vanderpol_uncertain_init(void *storage, size_t size);
+vanderpol_uncertain_status vanderpol_uncertain_init(void *storage, size_t size);
 /* vanderpol_uncertain_observer_push on the observer in storage. */
-VanderpolUncertainStatus vanderpol_uncertain_push(void *storage, const float *y, const float *u);
+vanderpol_uncertain_status vanderpol_uncertain_push(void *storage, const float *y, const float *u);
 /* The estimates into estimates[VANDERPOL_UNCERTAIN_TARGETS] and, unless saturation is NULL, whether each was
- * clamped (-1 below its range, 0 inside, 1 above). */
-VanderpolUncertainStatus vanderpol_uncertain_estimate(void *storage, float *estimates, int8_t *saturation);
+ * held at an end of its range into saturation[VANDERPOL_UNCERTAIN_TARGETS]. */
+vanderpol_uncertain_status vanderpol_uncertain_estimate(void *storage, float *estimates, vanderpol_uncertain_saturation *saturation);
 /* Bytes the observer occupies with its mark. */
 size_t vanderpol_uncertain_storage_size(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

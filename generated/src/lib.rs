@@ -1,4 +1,6 @@
 //! Observers emitted by `cargo run -p host -- gen` (host 0.1.0). Do not edit: regenerate.
+//! Licence: emitted by mho from your spec, this file is yours: you may use, copy, modify and
+//! distribute it under any terms, including MIT OR Apache-2.0, with or without this notice.
 //!
 //! One module per design spec; each holds constant tables, an `Observer` type and `observer()`.
 //!

@@ -146,6 +146,17 @@ pub(crate) fn load_specs(specs: &[PathBuf]) -> Result<Vec<(PathBuf, Design)>, Ge
                 second: spec.clone(),
             });
         }
+        // Their C names must not clash either: one C program may link every design of a run.
+        for (first, other) in &designs {
+            if crate::emit::c::c_name_clash(&other.name, &design.name).is_some() {
+                return Err(GenerateError::CNameClash {
+                    first_name: other.name.clone(),
+                    first: first.clone(),
+                    second_name: design.name.clone(),
+                    second: spec.clone(),
+                });
+            }
+        }
         designs.push((spec.clone(), design));
     }
     Ok(designs)

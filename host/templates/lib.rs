@@ -1,4 +1,5 @@
 //! Observers emitted by `cargo run -p host -- gen` (host {{ version }}). Do not edit: regenerate.
+{{ licence }}
 //!
 //! One module per design spec; each holds constant tables, an `Observer` type and `observer()`.
 {%- if let Some(first) = designs.first() %}

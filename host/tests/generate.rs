@@ -194,6 +194,67 @@ fn two_specs_naming_one_design_are_refused() {
     assert!(scratch.files() == before, "a failed gen changed files");
 }
 
+/// Issue 48: `vdp` and `vdp_map` in one run would both declare `vdp_map_init` (the map observer of
+/// `vdp`, the storage call of `vdp_map`) and a C program could not link both; refused before anything
+/// is fitted, naming both spec files, the field and the fix. Names that only share a prefix
+/// (`vanderpol`, `vanderpol_uncertain`) stay free.
+#[test]
+fn two_specs_whose_c_names_would_clash_are_refused() {
+    let scratch = Scratch::new("c-names");
+    let first = scratch.spec("vanderpol", "vdp.toml", &[("name = \"vanderpol\"", "name = \"vdp\"")]);
+    let second = scratch.spec(
+        "vanderpol",
+        "vdp_map.toml",
+        &[("name = \"vanderpol\"", "name = \"vdp_map\"")],
+    );
+    let before = scratch.files();
+    match scratch.run(&[first, second]) {
+        Err(e @ GenerateError::CNameClash { .. }) => {
+            let text = e.to_string();
+            for part in [
+                "vdp.toml",
+                "vdp_map.toml",
+                "field `name`",
+                "vdp_map_init",
+                "rename one",
+                "vdpmap",
+            ] {
+                assert!(text.contains(part), "{part} missing: {text}");
+            }
+        }
+        other => panic!("expected a C name clash, got {:?}", other.map(|_| ())),
+    }
+    assert!(scratch.files() == before, "a refused gen changed files");
+    // Every kind and every word the C interface appends, either way round; not a mere shared prefix.
+    use host::emit::c::{c_name_clash, C_SUFFIX_WORDS};
+    for kind in [
+        "map",
+        "fixed",
+        "ekf_box",
+        "ekf_map",
+        "ekf_restart",
+        "ukf_box",
+        "corrected",
+        "mhe",
+        "observer",
+    ] {
+        assert!(c_name_clash("vdp", &format!("vdp_{kind}")).is_some(), "{kind}");
+        assert!(c_name_clash(&format!("vdp_{kind}_2"), "vdp").is_some(), "{kind}");
+    }
+    for word in C_SUFFIX_WORDS {
+        assert_eq!(c_name_clash("vdp", &format!("vdp_{word}")).as_deref(), Some(*word));
+    }
+    for (a, b) in [
+        ("vanderpol", "vanderpol_uncertain"),
+        ("vanderpol", "vanderpol_searched"),
+        ("vdp", "vdpmap"),
+        ("ecoli_x0_0p5", "ecoli_x0_2"),
+        ("vdp", "vdp2_map"),
+    ] {
+        assert_eq!(c_name_clash(a, b), None, "{a} {b}");
+    }
+}
+
 #[test]
 fn one_failing_design_writes_nothing_for_any_design() {
     // x2's target made constant: the fit refuses it. The other design fits, but nothing is written:

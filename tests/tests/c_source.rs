@@ -445,3 +445,517 @@ fn the_readmes_c_example_compiles() {
     let _ = std::fs::remove_dir_all(&dir);
     assert!(built.status.success(), "{}", String::from_utf8_lossy(&built.stderr));
 }
+
+/// `text` without its `/* … */` comments and with each string literal emptied: the C a compiler reads.
+fn code_of(text: &str) -> String {
+    let mut code = String::new();
+    let mut rest = text;
+    while let Some(start) = rest.find(['/', '"']) {
+        code.push_str(&rest[..start]);
+        rest = &rest[start..];
+        if let Some(after) = rest.strip_prefix("/*") {
+            let end = after.find("*/").map_or(after.len(), |e| e + 2);
+            // Keep the lines, so that a line number still points at its line.
+            code.extend(after[..end].chars().filter(|&c| c == '\n'));
+            rest = &after[end..];
+        } else if let Some(after) = rest.strip_prefix('"') {
+            let mut end = 0;
+            let bytes = after.as_bytes();
+            while end < bytes.len() && bytes[end] != b'"' {
+                end += if bytes[end] == b'\\' { 2 } else { 1 };
+            }
+            code.push_str("\"\"");
+            rest = &after[(end + 1).min(after.len())..];
+        } else {
+            code.push('/');
+            rest = &rest[1..];
+        }
+    }
+    code.push_str(rest);
+    code
+}
+
+/// Every design's emitted C: `(name, header, source)` of the shipped designs (`generated/c/`) and of
+/// the fixture with searched knots.
+fn emitted_c() -> Vec<(String, PathBuf, PathBuf)> {
+    let root = workspace_root();
+    let mut designs: Vec<(String, PathBuf, PathBuf)> = integration_tests::on_target::design_names()
+        .into_iter()
+        .map(|name| {
+            let c = root.join("generated/c");
+            (
+                name.to_owned(),
+                c.join(format!("{name}.h")),
+                c.join(format!("{name}.c")),
+            )
+        })
+        .collect();
+    let fixture = root.join(integration_tests::SEARCHED_FIXTURE_SPEC);
+    designs.push((
+        "vanderpol_beta7".to_owned(),
+        fixture.with_extension("h"),
+        fixture.with_extension("c"),
+    ));
+    designs
+}
+
+/// Whether `tool` runs here; in CI its absence fails the test.
+fn have(tool: &str) -> bool {
+    let there = Command::new(tool).arg("--version").output().is_ok();
+    assert!(there || std::env::var_os("CI").is_none(), "CI needs {tool}");
+    if !there {
+        eprintln!("skipped: {tool} not installed");
+    }
+    there
+}
+
+/// Issue 48: a C++ firmware includes the C observers' header. Every emitted header compiles as C++,
+/// and a C++ program (Example 1's map harness, compiled by `c++`) links with the observers compiled
+/// as C by `cc` and prints the Rust observer's bits: the header gives its declarations C linkage
+/// (`extern "C"`), without which the C++ program refers to mangled names the C object lacks.
+#[test]
+fn a_cpp_program_includes_every_header_and_links_the_c_observers() {
+    if !have("c++") || !have("cc") {
+        return;
+    }
+    let dir = scratch("cpp");
+    for (name, header, _) in emitted_c() {
+        let text = std::fs::read_to_string(&header).unwrap();
+        assert!(
+            text.contains("#ifdef __cplusplus\nextern \"C\" {\n#endif"),
+            "{name}.h has no C linkage for C++"
+        );
+        let unit = dir.join(format!("{name}.cpp"));
+        std::fs::write(&unit, format!("#include \"{}\"\n", header.display())).unwrap();
+        let built = Command::new("c++")
+            .args(["-std=c++11", "-Wall", "-Wextra", "-Werror", "-fsyntax-only"])
+            .arg(&unit)
+            .output()
+            .unwrap();
+        assert!(
+            built.status.success(),
+            "{name}.h as C++: {}",
+            String::from_utf8_lossy(&built.stderr)
+        );
+    }
+    let c = workspace_root().join("generated/c");
+    let case = integration_tests::c_case!(
+        generated::vanderpol,
+        "vanderpol",
+        "map",
+        generated::vanderpol::map_observer()
+    );
+    let object = dir.join("vanderpol.o");
+    let built = Command::new("cc")
+        .args(STRICT_C_FLAGS)
+        .args(["-O2", "-c", "-o"])
+        .arg(&object)
+        .arg(c.join("vanderpol.c"))
+        .output()
+        .unwrap();
+    assert!(built.status.success(), "{}", String::from_utf8_lossy(&built.stderr));
+    let harness = dir.join("harness.cpp");
+    std::fs::write(&harness, case.harness()).unwrap();
+    let exe = dir.join("harness");
+    let linked = Command::new("c++")
+        .args(["-std=c++11", "-O2", "-I"])
+        .arg(&c)
+        .arg(&harness)
+        .arg(&object)
+        .arg("-o")
+        .arg(&exe)
+        .output()
+        .unwrap();
+    assert!(
+        linked.status.success(),
+        "the C++ program does not link with the C observers: {}",
+        String::from_utf8_lossy(&linked.stderr)
+    );
+    let run = Command::new(&exe).output().unwrap();
+    assert!(run.status.success());
+    let lines = sample_lines(&String::from_utf8(run.stdout).unwrap());
+    compare("vanderpol map from C++", &lines, &case.expected, false).unwrap_or_else(|e| panic!("{e}"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The `float` literals of C `code` (comments and strings removed) that have no `f` suffix: each
+/// would be a `double`, and the arithmetic around it too.
+fn double_literals(code: &str) -> Vec<String> {
+    let mut found = Vec::new();
+    let bytes = code.as_bytes();
+    let mut i = 0;
+    while i < bytes.len() {
+        let starts =
+            bytes[i].is_ascii_digit() && (i == 0 || !(bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == b'_'));
+        if !starts {
+            i += 1;
+            continue;
+        }
+        let mut end = i;
+        let mut floating = false;
+        while end < bytes.len() {
+            let c = bytes[end];
+            if c.is_ascii_digit() || c == b'.' {
+                floating |= c == b'.';
+            } else if (c == b'e' || c == b'E') && !code[i..end].starts_with("0x") {
+                floating = true;
+                if matches!(bytes.get(end + 1), Some(b'-' | b'+')) {
+                    end += 1;
+                }
+            } else {
+                break;
+            }
+            end += 1;
+        }
+        let hex = code[i..].starts_with("0x") || code[i..].starts_with("0X");
+        if floating && !hex && !matches!(bytes.get(end), Some(b'f' | b'F')) {
+            let line = code[..i].matches('\n').count() + 1;
+            found.push(format!("line {line}: {}", &code[i..end]));
+        }
+        while end < bytes.len() && (bytes[end].is_ascii_alphanumeric() || bytes[end] == b'_') {
+            end += 1;
+        }
+        i = end.max(i + 1);
+    }
+    found
+}
+
+/// Issue 48: one status enum and one saturation enum per design (the observers' and the static
+/// library's calls return the same `<name>_status`; the library's flags are `<name>_saturation`),
+/// `<NAME>_SAMPLE_PERIOD` defined once, and every floating literal of every header and source a
+/// `float` (`0.1f`, not the `double` `0.1`).
+#[test]
+fn one_status_one_saturation_one_period_and_every_literal_a_float() {
+    let check = double_literals("x = 0.5f + 1e-3f; y = 0x1e3u; z = a1.5; w = 2.0;\n v = 0.1 * 3;");
+    assert_eq!(check, ["line 1: 2.0", "line 2: 0.1"]);
+    for (name, header, source) in emitted_c() {
+        let upper = name.to_uppercase();
+        let text = code_of(&std::fs::read_to_string(&header).unwrap());
+        assert_eq!(text.matches("typedef enum").count(), 2, "{name}.h: enums");
+        assert_eq!(text.matches(&format!("}} {name}_status;")).count(), 1, "{name}.h");
+        assert_eq!(text.matches(&format!("}} {name}_saturation;")).count(), 1, "{name}.h");
+        for value in [
+            "OK = 0",
+            "REFUSED = 1",
+            "NO_ESTIMATE_YET = 2",
+            "BAD_ARGUMENT = 3",
+            "NOT_INITIALISED = 4",
+        ] {
+            assert!(text.contains(&format!("{upper}_{value}")), "{name}.h: {value}");
+        }
+        assert!(!text.contains("int8_t"), "{name}.h: a second saturation encoding");
+        let periods: Vec<&str> = text
+            .lines()
+            .filter(|l| l.starts_with(&format!("#define {upper}_SAMPLE_PERIOD ")))
+            .collect();
+        assert_eq!(periods.len(), 1, "{name}.h: {periods:?}");
+        assert!(periods[0].ends_with('f'), "{name}.h: {}", periods[0]);
+        for file in [&header, &source] {
+            let doubles = double_literals(&code_of(&std::fs::read_to_string(file).unwrap()));
+            assert!(doubles.is_empty(), "{}: double literals {doubles:?}", file.display());
+        }
+    }
+}
+
+/// Issue 48: the names of a design's C are its name, `_` and a word [`host::emit::c::C_SUFFIX_WORDS`]
+/// or the observer kinds hold, so that the check refusing designs whose names would clash in one
+/// `gen` run (`host::emit::c::c_name_clash`) knows every name the interface declares.
+#[test]
+fn every_c_name_begins_with_a_word_the_clash_check_knows() {
+    let kinds = ["map", "ekf", "ukf", "corrected", "mhe"];
+    for (name, header, source) in emitted_c() {
+        for file in [header, source] {
+            let code = code_of(&std::fs::read_to_string(&file).unwrap());
+            for prefix in [format!("{name}_"), format!("{}_", name.to_uppercase())] {
+                for (at, _) in code.match_indices(&prefix) {
+                    if at > 0 && (code.as_bytes()[at - 1].is_ascii_alphanumeric() || code.as_bytes()[at - 1] == b'_') {
+                        continue;
+                    }
+                    let word: String = code[at + prefix.len()..]
+                        .chars()
+                        .take_while(char::is_ascii_alphanumeric)
+                        .collect::<String>()
+                        .to_ascii_lowercase();
+                    assert!(
+                        host::emit::c::C_SUFFIX_WORDS.contains(&word.as_str()) || kinds.contains(&word.as_str()),
+                        "{}: `{prefix}{word}…` begins with a word c_name_clash does not know",
+                        file.display()
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Issue 48: the observers of every shipped design (vanderpol beside vanderpol_uncertain, …, and
+/// two_tanks, with an input) compile into one C program: no name is declared twice, and each design's
+/// chosen observer runs beside the others.
+#[test]
+fn every_shipped_design_links_into_one_c_program() {
+    if !have("cc") {
+        return;
+    }
+    let dir = scratch("together");
+    let c = workspace_root().join("generated/c");
+    let names = integration_tests::on_target::design_names();
+    let mut program = String::from("#include <stdio.h>\n");
+    for name in &names {
+        program += &format!("#include \"{name}.h\"\n");
+    }
+    program += "int main(void) {\n    unsigned k;\n";
+    for name in &names {
+        let upper = name.to_uppercase();
+        program += &format!(
+            "    {{\n        static {name}_observer o;\n        float y[{upper}_OUTPUTS] = {{0}}, u[{upper}_INPUTS + 1] = {{0}};\n\
+             \x20       float x[{upper}_TARGETS];\n        {name}_saturation s[{upper}_TARGETS];\n\
+             \x20       {name}_observer_init(&o);\n\
+             \x20       int pushed = 0;\n\
+             \x20       for (k = 0u; k < {upper}_HORIZON; ++k) {{\n            pushed += (int){name}_observer_push(&o, y, u);\n        }}\n\
+             \x20       printf(\"{name} %d %d\\n\", pushed, (int){name}_observer_estimate(&o, x, s));\n    }}\n"
+        );
+    }
+    program += "    return 0;\n}\n";
+    std::fs::write(dir.join("all.c"), &program).unwrap();
+    let exe = dir.join("all");
+    let built = Command::new("cc")
+        .args(STRICT_C_FLAGS)
+        .args(["-O1", "-I"])
+        .arg(&c)
+        .arg(dir.join("all.c"))
+        .args(names.iter().map(|n| c.join(format!("{n}.c"))))
+        .args(["-lm", "-o"])
+        .arg(&exe)
+        .output()
+        .unwrap();
+    assert!(built.status.success(), "{}", String::from_utf8_lossy(&built.stderr));
+    let run = Command::new(&exe).output().unwrap();
+    let text = String::from_utf8(run.stdout).unwrap();
+    assert!(run.status.success(), "{text}");
+    assert_eq!(text.lines().count(), names.len(), "{text}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 48: the C source accepts every `FLT_EVAL_METHOD` under which `float` expressions are
+/// evaluated in `float`: 0, and ISO/IEC TS 18661-3's 16 and 32 (gcc says 16 for a Cortex-M55 with
+/// its half-precision unit, and for x86 with AVX512-FP16, outside its ISO modes); it refuses 1, 2
+/// and -1, each with its reason. `arm-none-eabi-gcc -mcpu=cortex-m55 -mfloat-abi=hard -c` compiles
+/// it (the check once blamed the x87 there); other values are forced with `-D__FLT_EVAL_METHOD__`,
+/// which gcc's and clang's `<float.h>` read in their ISO C99 mode.
+#[test]
+fn the_float_evaluation_check_accepts_float_and_refuses_wider_formats_with_the_reason() {
+    let c = workspace_root().join("generated/c");
+    if have("arm-none-eabi-gcc") {
+        let dir = scratch("m55");
+        for std in [None, Some("-std=c99")] {
+            let built = Command::new("arm-none-eabi-gcc")
+                .args([
+                    "-mcpu=cortex-m55",
+                    "-mthumb",
+                    "-mfloat-abi=hard",
+                    "-O2",
+                    "-ffp-contract=off",
+                    "-c",
+                ])
+                .args(std)
+                .arg(c.join("vanderpol.c"))
+                .arg("-o")
+                .arg(dir.join("vanderpol.o"))
+                .output()
+                .unwrap();
+            assert!(
+                built.status.success(),
+                "Cortex-M55 ({std:?}): {}",
+                String::from_utf8_lossy(&built.stderr)
+            );
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+    if !have("cc") {
+        return;
+    }
+    for (method, reason) in [
+        ("0", None),
+        ("16", None),
+        ("32", None),
+        ("1", Some("evaluated in double")),
+        ("2", Some("evaluated in long double")),
+        ("-1", Some("indeterminate")),
+        ("64", Some("wider than float")),
+    ] {
+        let built = Command::new("cc")
+            .args(["-std=c99", "-fsyntax-only", "-U__FLT_EVAL_METHOD__"])
+            .arg(format!("-D__FLT_EVAL_METHOD__={method}"))
+            .arg("-I")
+            .arg(&c)
+            .arg(c.join("vanderpol.c"))
+            .output()
+            .unwrap();
+        let errors = String::from_utf8_lossy(&built.stderr);
+        match reason {
+            None => assert!(built.status.success(), "FLT_EVAL_METHOD {method}: {errors}"),
+            Some(reason) => assert!(
+                !built.status.success()
+                    && errors.contains(reason)
+                    && (method == "64" || errors.contains(&format!("FLT_EVAL_METHOD {method}"))),
+                "FLT_EVAL_METHOD {method}: {errors}"
+            ),
+        }
+    }
+}
+
+/// Issue 48: the moving-horizon observer refuses a NaN or infinite measurement and stores nothing,
+/// while its window fills as after, in Rust and in C alike (it once stored it and said `OK` until
+/// the window was full): pushing one among the first samples returns `REFUSED`, and every later
+/// estimate is the bits of an observer that never saw it.
+#[test]
+fn the_mhe_refuses_a_non_finite_measurement_while_its_window_fills() {
+    use generated::vanderpol as d;
+    let samples: Vec<f32> = d::RECORDED_Y
+        .iter()
+        .map(|y| y[0])
+        .filter(|y| y.is_finite())
+        .take(d::HORIZON + 5)
+        .collect();
+    // The Rust observer: the sample refused, the rest as if it never came.
+    for bad in [f32::NAN, f32::INFINITY] {
+        let (mut with, mut without) = (d::MheObserver::new(), d::MheObserver::new());
+        for (k, &y) in samples.iter().enumerate() {
+            if k == 3 {
+                assert!(with.push([bad], []).is_err(), "Rust MHE took {bad} while filling");
+            }
+            assert_eq!(with.push([y], []).is_ok(), without.push([y], []).is_ok());
+            let bits = |o: &d::MheObserver| o.estimate().map(|e| e.map(|e| e.value.to_bits()));
+            assert_eq!(bits(&with), bits(&without), "sample {k}");
+        }
+        assert!(with.estimate().is_some());
+    }
+    if !have("cc") {
+        return;
+    }
+    // The C observer, the same way: statuses and bits printed, then compared.
+    let rows: Vec<String> = samples.iter().map(|y| format!("0x{:08x}u", y.to_bits())).collect();
+    let program = format!(
+        "#include <stdio.h>\n#include <string.h>\n#include \"vanderpol.h\"\n\
+         static const unsigned int Y[{len}] = {{ {rows} }};\n\
+         static void print(const vanderpol_mhe *o) {{\n\
+         \x20   float x[VANDERPOL_TARGETS];\n    vanderpol_saturation s[VANDERPOL_TARGETS];\n    unsigned t, b;\n\
+         \x20   if (vanderpol_mhe_estimate(o, x, s) != VANDERPOL_OK) {{ printf(\" none\"); return; }}\n\
+         \x20   for (t = 0u; t < VANDERPOL_TARGETS; ++t) {{ memcpy(&b, &x[t], sizeof b); printf(\" %08x\", b); }}\n\
+         }}\n\
+         int main(void) {{\n\
+         \x20   static vanderpol_mhe with, without;\n    unsigned k;\n    float bad[2];\n\
+         \x20   const unsigned bits[2] = {{0x7fc00000u, 0x7f800000u}};\n\
+         \x20   memcpy(bad, bits, sizeof bad);\n\
+         \x20   vanderpol_mhe_init(&with);\n    vanderpol_mhe_init(&without);\n\
+         \x20   for (k = 0u; k < {len}u; ++k) {{\n\
+         \x20       float y;\n        memcpy(&y, &Y[k], sizeof y);\n\
+         \x20       if (k == 3u) printf(\"refused %d %d\\n\", (int)vanderpol_mhe_push(&with, &bad[0], NULL), (int)vanderpol_mhe_push(&with, &bad[1], NULL));\n\
+         \x20       printf(\"%d\", (int)vanderpol_mhe_push(&with, &y, NULL));\n        print(&with);\n\
+         \x20       printf(\" |%d\", (int)vanderpol_mhe_push(&without, &y, NULL));\n        print(&without);\n        printf(\"\\n\");\n\
+         \x20   }}\n    return 0;\n}}\n",
+        len = samples.len(),
+        rows = rows.join(", "),
+    );
+    let dir = scratch("mhe-nan");
+    std::fs::write(dir.join("mhe.c"), program).unwrap();
+    let c = workspace_root().join("generated/c");
+    let exe = dir.join("mhe");
+    let built = Command::new("cc")
+        .args(STRICT_C_FLAGS)
+        .args(["-O1", "-I"])
+        .arg(&c)
+        .arg(dir.join("mhe.c"))
+        .arg(c.join("vanderpol.c"))
+        .args(["-lm", "-o"])
+        .arg(&exe)
+        .output()
+        .unwrap();
+    assert!(built.status.success(), "{}", String::from_utf8_lossy(&built.stderr));
+    let run = Command::new(&exe).output().unwrap();
+    let text = String::from_utf8(run.stdout).unwrap();
+    assert!(run.status.success(), "{text}");
+    assert!(
+        text.starts_with("0 none |0 none\n") && text.contains("refused 1 1\n"),
+        "{text}"
+    );
+    for line in text.lines().filter(|l| !l.starts_with("refused")) {
+        let (with, without) = line.split_once(" |").unwrap();
+        assert_eq!(with, without, "C: {text}");
+    }
+    assert!(!text.lines().last().unwrap().contains("none"), "{text}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 48: each estimate of the integer map has its scale as macros, `value = integer ·
+/// 2^<NAME>_FIXED_LSB_EXPONENT_t = integer · <NAME>_FIXED_LSB_t`, the Rust design file's
+/// `FIXED_LSB[t]` (emitted by other code, read here as the compiled constant).
+#[test]
+fn the_integer_maps_scale_macros_are_the_rust_files_lsb() {
+    let c = workspace_root().join("generated/c");
+    let mut checked = 0;
+    macro_rules! check {
+        ($design:ident) => {{
+            use generated::$design as d;
+            let name = stringify!($design);
+            let upper = name.to_uppercase();
+            let header = std::fs::read_to_string(c.join(format!("{name}.h"))).unwrap();
+            for (t, &lsb) in d::FIXED_LSB.iter().enumerate() {
+                let value = |macro_name: String| -> String {
+                    let line = header
+                        .lines()
+                        .find(|l| l.starts_with(&format!("#define {macro_name} ")))
+                        .unwrap_or_else(|| panic!("{name}.h: no {macro_name}"));
+                    line.split_whitespace().nth(2).unwrap().to_owned()
+                };
+                let exponent: i32 = value(format!("{upper}_FIXED_LSB_EXPONENT_{t}"))
+                    .trim_matches(|c| c == '(' || c == ')')
+                    .parse()
+                    .unwrap();
+                assert_eq!(2f64.powi(exponent), lsb, "{name} estimate {t}");
+                let scale: f32 = value(format!("{upper}_FIXED_LSB_{t}"))
+                    .trim_end_matches('f')
+                    .parse()
+                    .unwrap();
+                assert_eq!(f64::from(scale), lsb, "{name} estimate {t}");
+                checked += 1;
+            }
+        }};
+    }
+    check!(vanderpol);
+    check!(two_tanks);
+    check!(ecoli_x0_2);
+    assert!(checked >= 6, "{checked}");
+}
+
+/// Issue 48: the repository's licence files are there (the Apache text whole), and every emitted
+/// file (the C headers and sources, the Rust design files and `lib.rs`) says in its header what its
+/// user may do with it ([`host::emit::LICENCE`]).
+#[test]
+fn every_emitted_file_states_its_licence() {
+    let root = workspace_root();
+    let apache = std::fs::read_to_string(root.join("LICENSE-APACHE")).unwrap();
+    assert!(apache.contains("Version 2.0, January 2004") && apache.contains("END OF TERMS AND CONDITIONS"));
+    assert!(apache.contains("9. Accepting Warranty or Additional Liability."));
+    let mit = std::fs::read_to_string(root.join("LICENSE-MIT")).unwrap();
+    assert!(mit.contains("Permission is hereby granted, free of charge"));
+    let mut files: Vec<PathBuf> = Vec::new();
+    for (_, header, source) in emitted_c() {
+        files.extend([header, source]);
+    }
+    for entry in std::fs::read_dir(root.join("generated/src")).unwrap() {
+        files.push(entry.unwrap().path());
+    }
+    files.push(root.join(integration_tests::SEARCHED_FIXTURE_SPEC).with_extension("rs"));
+    for file in &files {
+        let text = std::fs::read_to_string(file).unwrap();
+        let head: String = text.lines().take(12).collect::<Vec<_>>().join("\n");
+        for line in host::emit::LICENCE {
+            assert!(
+                head.contains(line),
+                "{}: no licence statement in its header",
+                file.display()
+            );
+        }
+    }
+    assert!(files.len() >= 24, "{}", files.len());
+}

@@ -126,6 +126,35 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
     assert!(source.contains("my_oscillator_observer::my_oscillator::observer()"));
     let readme = std::fs::read_to_string(out.join("README.md")).unwrap();
     assert!(readme.contains("| x1 |") && readme.contains("![estimation](report/estimation.png)"));
+    // What the user may do with the files: stated in the crate's README, manifests and every emitted
+    // source (issue 48).
+    assert!(
+        readme.contains(&host::emit::LICENCE.join(" ")),
+        "README: no licence statement"
+    );
+    for file in ["Cargo.toml", "c/Cargo.toml"] {
+        let manifest = std::fs::read_to_string(out.join(file)).unwrap();
+        assert!(
+            manifest.contains("\nlicense = \"MIT OR Apache-2.0\"\n"),
+            "{file}: {manifest}"
+        );
+    }
+    for file in [
+        "Cargo.toml",
+        "c/Cargo.toml",
+        "src/lib.rs",
+        "src/my_oscillator.rs",
+        "c/src/lib.rs",
+        "c/include/my_oscillator.h",
+        "c-source/my_oscillator.h",
+        "c-source/my_oscillator.c",
+    ] {
+        let text = std::fs::read_to_string(out.join(file)).unwrap();
+        assert!(
+            host::emit::LICENCE.iter().all(|line| text.contains(line)),
+            "{file}: no licence statement"
+        );
+    }
 
     // It builds for the Cortex-M4F and its doc example runs, with no workspace around it.
     cargo(
@@ -499,26 +528,26 @@ int main(void) {{
        every call, which reads its first 16 bytes and nothing else (the sanitizers watch). */
     float y0[MY_OSCILLATOR_OUTPUTS] = {{0}};
     float x0[MY_OSCILLATOR_TARGETS];
-    if (my_oscillator_estimate(zeroed, x0, NULL) != MyOscillatorStatus_NotInitialised) return 5;
-    if (my_oscillator_push(zeroed, y0, NULL) != MyOscillatorStatus_NotInitialised) return 6;
-    if (my_oscillator_init(small, sizeof small) != MyOscillatorStatus_BadArgument) return 7;
-    if (my_oscillator_push(small, y0, NULL) != MyOscillatorStatus_NotInitialised) return 8;
-    if (my_oscillator_estimate(small, x0, NULL) != MyOscillatorStatus_NotInitialised) return 9;
-    if (my_oscillator_init(storage, sizeof storage) != MyOscillatorStatus_Ok) return 2;
+    if (my_oscillator_estimate(zeroed, x0, NULL) != MY_OSCILLATOR_NOT_INITIALISED) return 5;
+    if (my_oscillator_push(zeroed, y0, NULL) != MY_OSCILLATOR_NOT_INITIALISED) return 6;
+    if (my_oscillator_init(small, sizeof small) != MY_OSCILLATOR_BAD_ARGUMENT) return 7;
+    if (my_oscillator_push(small, y0, NULL) != MY_OSCILLATOR_NOT_INITIALISED) return 8;
+    if (my_oscillator_estimate(small, x0, NULL) != MY_OSCILLATOR_NOT_INITIALISED) return 9;
+    if (my_oscillator_init(storage, sizeof storage) != MY_OSCILLATOR_OK) return 2;
     if (my_oscillator_storage_size() > sizeof storage) return 3;
-    if ((float)MY_OSCILLATOR_SAMPLE_PERIOD != {tau}f) return 4; /* the header states the design's period */
+    if (MY_OSCILLATOR_SAMPLE_PERIOD != {tau}f) return 4; /* the header states the design's period, a float */
     for (int k = 0; k < {len}; k++) {{
         float y[MY_OSCILLATOR_OUTPUTS];
         memcpy(y, samples[k], sizeof y);
         int pushed = my_oscillator_push(storage, y, NULL);
         float x[MY_OSCILLATOR_TARGETS];
-        int8_t saturation[MY_OSCILLATOR_TARGETS];
+        my_oscillator_saturation saturation[MY_OSCILLATOR_TARGETS];
         int status = my_oscillator_estimate(storage, x, saturation);
         printf("%d %d %d", k, pushed, status);
-        for (int t = 0; status == MyOscillatorStatus_Ok && t < MY_OSCILLATOR_TARGETS; t++) {{
+        for (int t = 0; status == MY_OSCILLATOR_OK && t < MY_OSCILLATOR_TARGETS; t++) {{
             uint32_t bits;
             memcpy(&bits, &x[t], sizeof bits);
-            printf(" %08lx %d", (unsigned long)bits, saturation[t]);
+            printf(" %08lx %d", (unsigned long)bits, (int)saturation[t]);
         }}
         printf("\n");
     }}
@@ -542,7 +571,12 @@ fn rust_replay() -> String {
         let estimates = observer.estimate();
         let _ = write!(text, "{k} {pushed} {}", if estimates.is_some() { 0 } else { 2 });
         for e in estimates.iter().flatten() {
-            let flag = integration_tests::saturation_flag(e.saturation);
+            // The C enum `my_oscillator_saturation`: INSIDE 0, LOW 1, HIGH 2 on both routes.
+            let flag = match e.saturation {
+                firmware::Saturation::Inside => 0,
+                firmware::Saturation::Low => 1,
+                firmware::Saturation::High => 2,
+            };
             let _ = write!(text, " {:08x} {flag}", e.value.to_bits());
         }
         text.push('\n');

@@ -28,9 +28,9 @@ pub trait Horizon<T: Scalar, const NX: usize, const NY: usize, const NU: usize, 
 /// Every accepted sample runs [`solve_window`]: `settings().iterations` Gauss–Newton steps from the
 /// previous solution moved one sample on (the prior's centre too), then the solution carried to the
 /// newest sample. Memory is fixed (the window, the previous solution, the latest estimate); once the
-/// window is full every sample runs the same instructions. A sample with a non-finite input is
-/// refused and not stored; one with a non-finite measurement is stored (it weighs nothing), solved
-/// and refused; a solution the model carries to a non-finite value is not kept. A refused sample
+/// window is full every sample runs the same instructions. A sample with a non-finite measurement or
+/// input is refused and not stored, before the window is full as after (the firmware contract: nothing
+/// stored changes); a solution the model carries to a non-finite value is not kept. A refused sample
 /// leaves the latest estimate as it was. The estimate is a state inside the box, so its targets
 /// carry no saturation flag (each is `Inside`).
 pub struct Observer<T, H, const NX: usize, const NY: usize, const NU: usize, const N: usize, const NT: usize> {
@@ -61,7 +61,7 @@ where
     /// Takes the sample of the current instant (see the type's documentation).
     #[inline]
     pub fn push(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
-        if !u.iter().all(|v| v.is_finite()) {
+        if !y.iter().chain(&u).all(|v| v.is_finite()) {
             return Err(RejectedSample);
         }
         let (plant, s) = (H::plant(), H::settings());
@@ -81,7 +81,7 @@ where
         }
         self.solved = Some(x);
         let values = H::targets(&end, &u);
-        if !y.iter().chain(&values).all(|v| v.is_finite()) {
+        if !values.iter().all(|v| v.is_finite()) {
             return Err(RejectedSample);
         }
         let mut latest = [Estimate {

@@ -8,6 +8,7 @@ use crate::emit::{EmitError, FamilyModule};
 #[template(path = "lib.rs", escape = "none")]
 struct LibFile<'a> {
     version: &'static str,
+    licence: String,
     designs: &'a [String],
     families: &'a [FamilyModule],
 }
@@ -16,6 +17,7 @@ struct LibFile<'a> {
 pub fn lib_file(designs: &[String], families: &[FamilyModule]) -> Result<String, EmitError> {
     LibFile {
         version: env!("CARGO_PKG_VERSION"),
+        licence: super::licence_comment("//! "),
         designs,
         families,
     }

@@ -33,6 +33,26 @@ pub use lib_file::lib_file;
 pub use placement::{portable_spec_path, Placement, STANDALONE_SPEC};
 pub use recorded::{recorded_sequence, refused_samples};
 
+/// The licence statement every file `gen` emits carries in its header (the Rust design files and
+/// `lib.rs`, the C headers and sources, a crate's manifests and README), one line per entry.
+///
+/// Why these terms: an emitted file is the user's design output, the tables fitted to their model and
+/// their choices, set in code from mho's templates. mho's own licence (MIT OR Apache-2.0, the
+/// repository's `LICENSE-MIT` and `LICENSE-APACHE`) asks for its notice to travel with every copy,
+/// which a firmware, open or closed, should not owe for its own observer; so, as a compiler's
+/// runtime-library exception does, the templates' authors grant the emitted files without conditions:
+/// any terms, including mho's own. The `firmware` runtime a crate depends on (or carries) stays under
+/// mho's licence.
+pub const LICENCE: [&str; 2] = [
+    "Licence: emitted by mho from your spec, this file is yours: you may use, copy, modify and",
+    "distribute it under any terms, including MIT OR Apache-2.0, with or without this notice.",
+];
+
+/// [`LICENCE`] as comment lines, each starting with `prefix` (`//! `, ` * `, `# `), no final newline.
+pub fn licence_comment(prefix: &str) -> String {
+    LICENCE.map(|line| format!("{prefix}{line}")).join("\n")
+}
+
 /// Why a design cannot be emitted.
 #[derive(Debug, thiserror::Error)]
 pub enum EmitError {

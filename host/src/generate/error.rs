@@ -101,6 +101,25 @@ pub enum GenerateError {
         /// The other.
         second: PathBuf,
     },
+    /// Two specs of one run name designs whose C names would clash ([`crate::emit::c::c_name_clash`]).
+    #[error(
+        "{} (`name = \"{first_name}\"`) and {} (`name = \"{second_name}\"`): field `name`: the C interface of one design appends `_{word}…` to its name, which is how the other's begins, so both would declare names such as `{shorter}_{word}_init` and one C program could not hold both; rename one so that neither is the other followed by `_{word}` (e.g. `{suggestion}`)",
+        first.display(),
+        second.display(),
+        word = crate::emit::c::c_name_clash(first_name, second_name).unwrap_or_default(),
+        shorter = if first_name.len() <= second_name.len() { first_name } else { second_name },
+        suggestion = if first_name.len() <= second_name.len() { second_name.replacen('_', "", 1) } else { first_name.replacen('_', "", 1) }
+    )]
+    CNameClash {
+        /// One design's name.
+        first_name: String,
+        /// Its spec.
+        first: PathBuf,
+        /// The other's.
+        second_name: String,
+        /// Its spec.
+        second: PathBuf,
+    },
     /// `--strict`: some designs fail quality gates (each was reported); nothing was written.
     #[error("{designs} fail(s) the quality gates above (--strict); nothing was written: change the spec as each warning says, or run without --strict")]
     Gates {

@@ -4,10 +4,15 @@
 //! ```c
 //! static uint8_t storage[MY_DESIGN_STORAGE_SIZE] __attribute__((aligned(MY_DESIGN_STORAGE_ALIGN)));
 //! my_design_init(storage, sizeof storage);               // or to reset
-//! my_design_push(storage, y, u);                         // MyDesignStatus_Refused for a NaN/inf sample
+//! my_design_push(storage, y, u);                         // MY_DESIGN_REFUSED for a NaN/inf sample
 //! float x[MY_DESIGN_TARGETS];
-//! if (my_design_estimate(storage, x, NULL) == MyDesignStatus_Ok) { /* use x */ }
+//! if (my_design_estimate(storage, x, NULL) == MY_DESIGN_OK) { /* use x */ }
 //! ```
+//!
+//! Its statuses and saturation flags are the C source's (`my_design_status`, `my_design_saturation`,
+//! [`crate::emit::c`]): one enum each, with the same names and values in both headers, so that a
+//! firmware moves between the two C routes without a change. Rust lays them out as the target's C
+//! ABI does (one byte on `arm-none-eabi`, whose compilers use short enums by default).
 //!
 //! The observer lives in storage the caller provides: `STORAGE_SIZE` bytes aligned to `STORAGE_ALIGN`.
 //! The size is a bound the host computes from the design's shape (the window of `N` samples stored
@@ -26,6 +31,7 @@ pub const FOLDER: &str = "c";
 pub fn manifest(design: &Design) -> String {
     format!(
         "# The C library of the `{name}` observer, emitted by `mho gen --spec`. Do not edit: regenerate.\n\
+         {licence}\n\
          # cargo build --release --target thumbv7em-none-eabihf  →  target/thumbv7em-none-eabihf/release/lib{library}_c.a\n\
          [package]\n\
          name = \"{package}-c\"\n\
@@ -33,6 +39,7 @@ pub fn manifest(design: &Design) -> String {
          edition = \"2021\"\n\
          rust-version = \"1.95\"\n\
          publish = false\n\
+         license = \"MIT OR Apache-2.0\"\n\
          \n\
          [lib]\n\
          name = \"{library}_c\"\n\
@@ -53,6 +60,7 @@ pub fn manifest(design: &Design) -> String {
          lto = true\n\
          codegen-units = 1\n",
         name = design.name,
+        licence = crate::emit::licence_comment("# "),
         package = super::package_name(&design.name),
         library = library_name(&design.name),
     )
@@ -71,7 +79,7 @@ fn c_comment(text: &str) -> String {
 pub fn source(design: &Design) -> String {
     let name = &design.name;
     let upper = name.to_uppercase();
-    let status = crate::emit::c::status_name(name);
+    let status = format!("{name}_status");
     let list = crate::emit::name_list;
     // `name (unit)`, as the docs list them.
     let with_unit = |name: &String, unit: &String| {
@@ -97,10 +105,12 @@ pub fn source(design: &Design) -> String {
     let targets: Vec<String> = design.targets.iter().map(|t| with_unit(&t.name, &t.unit)).collect();
     // The shortest decimal that reads back as the design's f32 period.
     let tau = format!("{:?}", design.tau as f32);
+    let saturation = format!("{name}_saturation");
     format!(
         r#"//! C interface of the `{name}` observer: create it in storage the caller provides, push each
 //! sample, read the estimates; every call returns a status. Header: `include/{name}.h` (cbindgen).
 //! Emitted by `mho gen --spec`. Do not edit: regenerate.
+{licence}
 #![no_std]
 
 use core::ffi::c_void;
@@ -121,8 +131,9 @@ pub const {upper}_TARGETS: usize = {nt};
 /// The map's window, in samples: the map and the observers it starts give no estimate before it (the
 /// EKFs from the box centre estimate from the first sample).
 pub const {upper}_HORIZON: usize = {horizon};
-/// The sample period the design assumes: push one sample every {upper}_SAMPLE_PERIOD {time_unit}.
-pub const {upper}_SAMPLE_PERIOD: f32 = {tau};
+/// The sample period the design assumes, in {time_unit}. Not `pub`: the header defines
+/// `{upper}_SAMPLE_PERIOD` once, as a `float` literal (cbindgen would print it without its `f`).
+const {upper}_SAMPLE_PERIOD: f32 = {tau};
 
 /// What `{name}_init` writes into the storage: a mark that an observer of this design is there and
 /// the size it was given, then the observer. Every call checks the mark first.
@@ -146,25 +157,40 @@ const _: () = assert!(
         && design::SAMPLE_PERIOD == {upper}_SAMPLE_PERIOD
 );
 
-/// What a call did.
+/// What a call did: the C source's `{status}`, the same names and values.
 #[repr(C)]
+#[allow(non_camel_case_types)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum {status} {{
     /// Done.
-    Ok = 0,
+    {upper}_OK = 0,
     /// The sample has a NaN or infinite value and was refused; the observer is unchanged.
-    Refused = 1,
+    {upper}_REFUSED = 1,
     /// No estimate yet (the map and the observers it starts: fewer than `HORIZON` accepted samples since
     /// the start; the EKF from the box centre: no accepted sample yet); nothing was written.
-    NoEstimateYet = 2,
+    {upper}_NO_ESTIMATE_YET = 2,
     /// A null pointer, or storage too small or misaligned: nothing was done.
-    BadArgument = 3,
+    {upper}_BAD_ARGUMENT = 3,
     /// The storage holds no observer: `{name}_init` was never called on it, or refused it (or it
     /// holds another design's); nothing was done.
-    NotInitialised = 4,
+    {upper}_NOT_INITIALISED = 4,
 }}
 
-/// The observer in `storage`: `BadArgument` for a null or misaligned pointer, `NotInitialised`
+/// Where an estimate lies against its learning range: the C source's `{saturation}`, the same names
+/// and values.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum {saturation} {{
+    /// Inside the range.
+    {upper}_INSIDE = 0,
+    /// Held at its low end.
+    {upper}_LOW = 1,
+    /// Held at its high end.
+    {upper}_HIGH = 2,
+}}
+
+/// The observer in `storage`: `BAD_ARGUMENT` for a null or misaligned pointer, `NOT_INITIALISED`
 /// when `{name}_init` did not make one there (the mark is not this design's, or the size it was
 /// given is too small).
 ///
@@ -173,13 +199,13 @@ pub enum {status} {{
 /// `{name}_init`, used by nothing else during the call.
 unsafe fn observer<'a>(storage: *mut c_void) -> Result<&'a mut design::Observer, {status}> {{
     if storage.is_null() || (storage as usize) % align_of::<Stored>() != 0 {{
-        return Err({status}::BadArgument);
+        return Err({status}::{upper}_BAD_ARGUMENT);
     }}
     let stored = storage.cast::<Stored>();
     // SAFETY: non-null and aligned; the mark and the size are the storage's first 16 bytes.
     let (mark, size) = unsafe {{ (core::ptr::addr_of!((*stored).mark).read(), core::ptr::addr_of!((*stored).size).read()) }};
     if mark != MARK || size < size_of::<Stored>() as u64 {{
-        return Err({status}::NotInitialised);
+        return Err({status}::{upper}_NOT_INITIALISED);
     }}
     // SAFETY: `{name}_init` wrote a whole `Stored` there (the mark says so).
     Ok(unsafe {{ &mut (*stored).observer }})
@@ -193,7 +219,7 @@ unsafe fn observer<'a>(storage: *mut c_void) -> Result<&'a mut design::Observer,
 #[no_mangle]
 pub unsafe extern "C" fn {name}_init(storage: *mut c_void, size: usize) -> {status} {{
     if storage.is_null() || size < size_of::<Stored>() || (storage as usize) % align_of::<Stored>() != 0 {{
-        return {status}::BadArgument;
+        return {status}::{upper}_BAD_ARGUMENT;
     }}
     let stored = Stored {{
         mark: MARK,
@@ -202,7 +228,7 @@ pub unsafe extern "C" fn {name}_init(storage: *mut c_void, size: usize) -> {stat
     }};
     // SAFETY: large enough, aligned, and the caller's to write.
     unsafe {{ storage.cast::<Stored>().write(stored) }};
-    {status}::Ok
+    {status}::{upper}_OK
 }}
 
 /// Pushes this instant's sample: `y` points to `{upper}_OUTPUTS` floats and `u` to
@@ -218,7 +244,7 @@ pub unsafe extern "C" fn {name}_push(storage: *mut c_void, y: *const f32, u: *co
         Err(status) => return status,
     }};
     if (y.is_null() && design::OUTPUTS > 0) || (u.is_null() && design::INPUTS > 0) {{
-        return {status}::BadArgument;
+        return {status}::{upper}_BAD_ARGUMENT;
     }}
     let mut outputs = [0.0f32; design::OUTPUTS];
     let mut inputs = [0.0f32; design::INPUTS];
@@ -231,44 +257,44 @@ pub unsafe extern "C" fn {name}_push(storage: *mut c_void, y: *const f32, u: *co
         *value = unsafe {{ u.add(i).read_unaligned() }};
     }}
     match observer.push(outputs, inputs) {{
-        Ok(()) => {status}::Ok,
-        Err(_) => {status}::Refused,
+        Ok(()) => {status}::{upper}_OK,
+        Err(_) => {status}::{upper}_REFUSED,
     }}
 }}
 
 /// Writes the `{upper}_TARGETS` estimates into `estimates` and, unless `saturation` is null, whether
-/// each was clamped to the learning range (-1 below, 0 inside, 1 above) into `saturation`.
+/// each was held at an end of the learning range into `saturation`.
 ///
 /// # Safety
 /// `storage` was initialised by `{name}_init`; `estimates` (and `saturation`, when not null) point
 /// to `{upper}_TARGETS` writable values.
 #[no_mangle]
-pub unsafe extern "C" fn {name}_estimate(storage: *mut c_void, estimates: *mut f32, saturation: *mut i8) -> {status} {{
+pub unsafe extern "C" fn {name}_estimate(storage: *mut c_void, estimates: *mut f32, saturation: *mut {saturation}) -> {status} {{
     // SAFETY: the caller's contract.
     let observer = match unsafe {{ observer(storage) }} {{
         Ok(observer) => observer,
         Err(status) => return status,
     }};
     if estimates.is_null() {{
-        return {status}::BadArgument;
+        return {status}::{upper}_BAD_ARGUMENT;
     }}
     let Some(all) = observer.estimate() else {{
-        return {status}::NoEstimateYet;
+        return {status}::{upper}_NO_ESTIMATE_YET;
     }};
     for (i, estimate) in all.iter().enumerate() {{
         // SAFETY: `estimates` points to TARGETS floats.
         unsafe {{ estimates.add(i).write_unaligned(estimate.value) }};
         if !saturation.is_null() {{
             let flag = match estimate.saturation {{
-                {library}::firmware::Saturation::Low => -1,
-                {library}::firmware::Saturation::Inside => 0,
-                {library}::firmware::Saturation::High => 1,
+                {library}::firmware::Saturation::Low => {saturation}::{upper}_LOW,
+                {library}::firmware::Saturation::Inside => {saturation}::{upper}_INSIDE,
+                {library}::firmware::Saturation::High => {saturation}::{upper}_HIGH,
             }};
             // SAFETY: `saturation` points to TARGETS values.
             unsafe {{ saturation.add(i).write_unaligned(flag) }};
         }}
     }}
-    {status}::Ok
+    {status}::{upper}_OK
 }}
 
 /// Bytes the observer occupies on this target with its mark (at most `{upper}_STORAGE_SIZE`).
@@ -285,6 +311,7 @@ fn panic(_: &core::panic::PanicInfo) -> ! {{
 }}
 "#,
         library = library_name(name),
+        licence = crate::emit::licence_comment("//! "),
         bound = storage_bound(design),
         outputs = list(&outputs),
         inputs = list(&inputs),
@@ -301,19 +328,27 @@ fn panic(_: &core::panic::PanicInfo) -> ! {{
 
 /// The C header of `source` (written at `source_path`), by cbindgen.
 pub fn header(design: &Design, source_path: &Path) -> Result<String, cbindgen::Error> {
-    let guard = format!("{}_OBSERVER_H", design.name.to_uppercase());
+    let upper = design.name.to_uppercase();
+    let guard = format!("{upper}_OBSERVER_H");
     let config = cbindgen::Config {
         language: cbindgen::Language::C,
         include_guard: Some(guard),
         usize_is_size_t: true,
         header: Some(format!(
-            "/* C interface of the `{}` observer, written by cbindgen from c/src/lib.rs (mho gen --spec). Do not edit. */",
-            design.name
+            "/* C interface of the `{}` observer, written by cbindgen from c/src/lib.rs (mho gen --spec). Do not edit.\n{} */",
+            design.name,
+            crate::emit::licence_comment(" * ")
         )),
-        enumeration: cbindgen::EnumConfig {
-            prefix_with_name: true,
-            ..Default::default()
-        },
+        // The sample period as a `float` literal, once (the Rust constant is not exported).
+        after_includes: Some(format!(
+            "\n/* The sample period the design assumes, in its time unit: push one sample every period. */\n\
+             #define {upper}_SAMPLE_PERIOD {}",
+            crate::emit::c::sample_period(design)
+        )),
+        // `extern "C"` (and the enums' C++ form) for a C++ program that includes the header.
+        cpp_compat: true,
+        // `typedef enum { … } my_design_status;`, named as the C source's header names it.
+        style: cbindgen::Style::Type,
         documentation: true,
         ..Default::default()
     };

@@ -275,12 +275,14 @@ fn write(
 fn manifest(design: &Design, runtime: &Runtime) -> String {
     format!(
         "# The `{name}` observer, emitted by `mho gen --spec` (mho {version}). Do not edit: regenerate.\n\
+         {licence}\n\
          [package]\n\
          name = \"{package}\"\n\
          version = \"0.1.0\"\n\
          edition = \"2021\"\n\
          rust-version = \"1.95\"\n\
          description = {description:?}\n\
+         license = \"MIT OR Apache-2.0\"\n\
          publish = false\n\
          \n\
          [lib]\n\
@@ -302,6 +304,7 @@ fn manifest(design: &Design, runtime: &Runtime) -> String {
         library = library_name(&design.name),
         description = format!("Observer `{}`: {}", design.name, design.description),
         dependency = runtime.dependency(),
+        licence = crate::emit::licence_comment("# "),
     )
 }
 
@@ -312,6 +315,7 @@ fn library(design: &Design) -> String {
          //!\n\
          //! Emitted by `mho gen --spec` from `{spec}` (mho {version}); its accuracy and cost are in\n\
          //! README.md. Do not edit: change the spec and regenerate.\n\
+         {licence}\n\
          #![no_std]\n\
          \n\
          pub use firmware;\n\
@@ -323,6 +327,7 @@ fn library(design: &Design) -> String {
         description = crate::emit::doc_prose(&design.description),
         spec = STANDALONE_SPEC,
         version = env!("CARGO_PKG_VERSION"),
+        licence = crate::emit::licence_comment("//! "),
     )
 }
 
@@ -335,7 +340,7 @@ fn readme(one: &Prepared) -> String {
     let (name, library) = (&design.name, library_name(&design.name));
     let mut text = format!(
         "# The `{name}` observer\n\n{}\n\nEmitted by `mho gen --spec` from [`{STANDALONE_SPEC}`]({STANDALONE_SPEC}) (mho {}). \
-         Do not edit: change the spec and regenerate.\n\n\
+         Do not edit: change the spec and regenerate.\n\n{licence}\n\n\
          ## Build and use\n\n\
          ```sh\ncargo build --release --target thumbv7em-none-eabihf   # a Cortex-M4F; any target with a float unit works\n```\n\n\
          ```rust\n\
@@ -362,6 +367,7 @@ fn readme(one: &Prepared) -> String {
         crate::emit::doc_prose(&design.description),
         env!("CARGO_PKG_VERSION"),
         c = c_library::FOLDER,
+        licence = crate::emit::LICENCE.join(" "),
     );
     // The report, its first heading dropped (the README has its own), its figures (embedded by the
     // report, beside it in report/) linked from here.

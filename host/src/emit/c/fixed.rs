@@ -52,6 +52,7 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
         *i += 1;
     }
     let mut targets = String::new();
+    let mut scales = String::new();
     let (mut tables, mut projections, mut estimates) = (String::new(), String::new(), String::new());
     for (t, (target, spec_target)) in fixed.targets.iter().zip(&design.targets).enumerate() {
         targets += &format!(
@@ -59,6 +60,12 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
             spec_target.name,
             -target.lsb_bits,
             target.stated_bound()
+        );
+        scales += &format!(
+            "#define {upper}_FIXED_LSB_EXPONENT_{t} ({exponent})\n\
+             #define {upper}_FIXED_LSB_{t} {lsb:e}f\n",
+            exponent = -target.lsb_bits,
+            lsb = target.lsb() as f32,
         );
         let gains: Vec<String> = target.gains.iter().map(i32::to_string).collect();
         let segments: Vec<String> = target
@@ -113,6 +120,9 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
          \x20* Estimates (value = integer * LSB, in the target's unit):\n\
          {targets}\
          \x20* Allocate it anywhere (no heap is used) and call {name}_fixed_init. */\n\
+         /* Estimate t's scale, in its target's unit: value = integer * 2^{upper}_FIXED_LSB_EXPONENT_t,\n\
+         \x20* which is integer * {upper}_FIXED_LSB_t (a float, exact: a power of two). */\n\
+         {scales}\
          typedef struct {{\n\
          \x20   int32_t y[2u * {upper}_HORIZON][{upper}_OUTPUTS];\n\
          {inputs_field}\

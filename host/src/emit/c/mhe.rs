@@ -327,7 +327,7 @@ void @NAME@_mhe_init(@NAME@_mhe *o) {
     float moved[MHE_NX], x[MHE_NX], end[MHE_NX], values[@UPPER@_TARGETS];
     int has_moved = 0;
     unsigned i, slot;
-    if (!inputs_finite(u)) {
+    if (!all_finite(y, @UPPER@_OUTPUTS) || !inputs_finite(u)) {
         return @UPPER@_REFUSED;
     }
     /* The previous solution moved one sample on: the prior's centre and the first iterate. */
@@ -338,7 +338,7 @@ void @NAME@_mhe_init(@NAME@_mhe *o) {
         mhe_project(next, moved);
         has_moved = 1;
     }
-    /* The window keeps the sample as it is: a non-finite output weighs nothing. */
+    /* Every value of the sample is finite: stored. */
     slot = o->next;
     for (i = 0u; i < @UPPER@_OUTPUTS; ++i) {
         o->y[slot][i] = y[i];
@@ -356,7 +356,7 @@ void @NAME@_mhe_init(@NAME@_mhe *o) {
     memcpy(o->solved, x, sizeof x);
     o->has_solved = 1;
     targets(end, u, values);
-    if (!all_finite(y, @UPPER@_OUTPUTS) || !all_finite(values, @UPPER@_TARGETS)) {
+    if (!all_finite(values, @UPPER@_TARGETS)) {
         return @UPPER@_REFUSED;
     }
     memcpy(o->values, values, sizeof values);

@@ -25,21 +25,6 @@ pub fn storage_bound(design: &Design) -> usize {
 /// size it was given.
 pub const MARK_BYTES: usize = 16;
 
-/// The C name of design `name`'s status enum: `my_design` → `MyDesignStatus` (as cbindgen names the
-/// Rust library's, `{Enum}_{Variant}` for its values).
-pub fn status_name(name: &str) -> String {
-    let camel: String = name
-        .split('_')
-        .map(|part| {
-            let mut chars = part.chars();
-            chars.next().map_or(String::new(), |first| {
-                first.to_ascii_uppercase().to_string() + chars.as_str()
-            })
-        })
-        .collect();
-    format!("{camel}Status")
-}
-
 /// The mark of an observer of design `name` in C storage: FNV-1a of the name, never 0, so that
 /// zeroed storage, storage `init` refused, or another design's observer are told apart.
 pub fn mark(name: &str) -> u64 {
@@ -54,19 +39,14 @@ pub(super) fn storage_interface(design: &Design) -> (String, String) {
     let name = design.name.as_str();
     let inputs = design.model.inputs.len();
     let upper = name.to_uppercase();
-    // As cbindgen prints the library's `f32` constant, and its bound.
-    let tau = format!("{:?}", design.tau as f32);
     let bound = storage_bound(design);
-    let status = status_name(name);
     let header = format!(
         "/* The Rust static library's interface (c/include/{name}.h of a crate `mho gen --spec` writes) over\n \
-         * {name}_observer: the same calls and statuses, so that a firmware moves between the two routes\n \
-         * without a change. The observer lives in storage you provide, {upper}_STORAGE_SIZE bytes aligned to\n \
-         * {upper}_STORAGE_ALIGN: `init` writes a mark of the design and the size before it, and every call\n \
-         * checks them first. */\n\
+         * {name}_observer: the same calls, statuses ({name}_status) and flags ({name}_saturation), so\n \
+         * that a firmware moves between the two routes without a change. The observer lives in storage you\n \
+         * provide, {upper}_STORAGE_SIZE bytes aligned to {upper}_STORAGE_ALIGN: `init` writes a mark of the\n \
+         * design and the size before it, and every call checks them first. */\n\
          #define {upper}_STORAGE_ALIGN 8\n\
-         /* The sample period the design assumes, in its time unit. */\n\
-         #define {upper}_SAMPLE_PERIOD {tau}\n\
          typedef struct {{\n\
          \x20   uint64_t mark;\n\
          \x20   uint64_t size;\n\
@@ -76,26 +56,13 @@ pub(super) fn storage_interface(design: &Design) -> (String, String) {
          /* Does not compile where the observer would not fit in {upper}_STORAGE_SIZE bytes. */\n\
          typedef char {name}_storage_fits[sizeof({name}_stored) <= {upper}_STORAGE_SIZE ? 1 : -1];\n\
          \n\
-         typedef enum {{\n\
-         \x20   /* Done. */\n\
-         \x20   {status}_Ok = 0,\n\
-         \x20   /* The sample was refused; see {upper}_REFUSED. */\n\
-         \x20   {status}_Refused = 1,\n\
-         \x20   /* No estimate yet; nothing was written. */\n\
-         \x20   {status}_NoEstimateYet = 2,\n\
-         \x20   /* A null pointer, or storage too small or misaligned: nothing was done. */\n\
-         \x20   {status}_BadArgument = 3,\n\
-         \x20   /* The storage holds no observer of this design ({name}_init never made one there). */\n\
-         \x20   {status}_NotInitialised = 4\n\
-         }} {status};\n\
-         \n\
          /* A fresh observer in storage of `size` bytes; call it again to reset. */\n\
-         {status} {name}_init(void *storage, size_t size);\n\
+         {name}_status {name}_init(void *storage, size_t size);\n\
          /* {name}_observer_push on the observer in storage. */\n\
-         {status} {name}_push(void *storage, const float *y, const float *u);\n\
+         {name}_status {name}_push(void *storage, const float *y, const float *u);\n\
          /* The estimates into estimates[{upper}_TARGETS] and, unless saturation is NULL, whether each was\n \
-         * clamped (-1 below its range, 0 inside, 1 above). */\n\
-         {status} {name}_estimate(void *storage, float *estimates, int8_t *saturation);\n\
+         * held at an end of its range into saturation[{upper}_TARGETS]. */\n\
+         {name}_status {name}_estimate(void *storage, float *estimates, {name}_saturation *saturation);\n\
          /* Bytes the observer occupies with its mark. */\n\
          size_t {name}_storage_size(void);\n\n"
     );
@@ -104,61 +71,54 @@ pub(super) fn storage_interface(design: &Design) -> (String, String) {
         "/* The mark of this design's observer in storage (never 0: zeroed storage holds none). */\n\
          #define STORAGE_MARK 0x{mark:016x}ull\n\
          \n\
-         /* The observer in storage: {status}_BadArgument for a null or misaligned pointer,\n\
-         \x20* {status}_NotInitialised where {name}_init did not make one (it reads the first 16 bytes only). */\n\
-         static {status} stored_observer(void *storage, {name}_observer **observer) {{\n\
+         /* The observer in storage: {upper}_BAD_ARGUMENT for a null or misaligned pointer,\n\
+         \x20* {upper}_NOT_INITIALISED where {name}_init did not make one (it reads the first 16 bytes only). */\n\
+         static {name}_status stored_observer(void *storage, {name}_observer **observer) {{\n\
          \x20   {name}_stored *stored = ({name}_stored *)storage;\n\
          \x20   if (storage == NULL || (uintptr_t)storage % {upper}_STORAGE_ALIGN != 0u) {{\n\
-         \x20       return {status}_BadArgument;\n\
+         \x20       return {upper}_BAD_ARGUMENT;\n\
          \x20   }}\n\
          \x20   if (stored->mark != STORAGE_MARK || stored->size < (uint64_t)sizeof({name}_stored)) {{\n\
-         \x20       return {status}_NotInitialised;\n\
+         \x20       return {upper}_NOT_INITIALISED;\n\
          \x20   }}\n\
          \x20   *observer = &stored->observer;\n\
-         \x20   return {status}_Ok;\n\
+         \x20   return {upper}_OK;\n\
          }}\n\
          \n\
-         {status} {name}_init(void *storage, size_t size) {{\n\
+         {name}_status {name}_init(void *storage, size_t size) {{\n\
          \x20   {name}_stored *stored = ({name}_stored *)storage;\n\
          \x20   if (storage == NULL || size < sizeof({name}_stored) || (uintptr_t)storage % {upper}_STORAGE_ALIGN != 0u) {{\n\
-         \x20       return {status}_BadArgument;\n\
+         \x20       return {upper}_BAD_ARGUMENT;\n\
          \x20   }}\n\
          \x20   stored->mark = STORAGE_MARK;\n\
          \x20   stored->size = (uint64_t)size;\n\
          \x20   {name}_observer_init(&stored->observer);\n\
-         \x20   return {status}_Ok;\n\
+         \x20   return {upper}_OK;\n\
          }}\n\
          \n\
-         {status} {name}_push(void *storage, const float *y, const float *u) {{\n\
+         {name}_status {name}_push(void *storage, const float *y, const float *u) {{\n\
          \x20   {name}_observer *observer = NULL;\n\
-         \x20   const {status} found = stored_observer(storage, &observer);\n\
-         \x20   if (found != {status}_Ok) {{\n\
+         \x20   const {name}_status found = stored_observer(storage, &observer);\n\
+         \x20   if (found != {upper}_OK) {{\n\
          \x20       return found;\n\
          \x20   }}\n\
          \x20   if (y == NULL{inputs_check}) {{\n\
-         \x20       return {status}_BadArgument;\n\
+         \x20       return {upper}_BAD_ARGUMENT;\n\
          \x20   }}\n\
-         \x20   return {name}_observer_push(observer, y, u) == {upper}_OK ? {status}_Ok : {status}_Refused;\n\
+         \x20   return {name}_observer_push(observer, y, u);\n\
          }}\n\
          \n\
-         {status} {name}_estimate(void *storage, float *estimates, int8_t *saturation) {{\n\
+         {name}_status {name}_estimate(void *storage, float *estimates, {name}_saturation *saturation) {{\n\
          \x20   {name}_observer *observer = NULL;\n\
          \x20   {name}_saturation flags[{upper}_TARGETS];\n\
-         \x20   unsigned i;\n\
-         \x20   const {status} found = stored_observer(storage, &observer);\n\
-         \x20   if (found != {status}_Ok) {{\n\
+         \x20   const {name}_status found = stored_observer(storage, &observer);\n\
+         \x20   if (found != {upper}_OK) {{\n\
          \x20       return found;\n\
          \x20   }}\n\
          \x20   if (estimates == NULL) {{\n\
-         \x20       return {status}_BadArgument;\n\
+         \x20       return {upper}_BAD_ARGUMENT;\n\
          \x20   }}\n\
-         \x20   if ({name}_observer_estimate(observer, estimates, flags) != {upper}_OK) {{\n\
-         \x20       return {status}_NoEstimateYet;\n\
-         \x20   }}\n\
-         \x20   for (i = 0u; saturation != NULL && i < {upper}_TARGETS; ++i) {{\n\
-         \x20       saturation[i] = (int8_t)(flags[i] == {upper}_LOW ? -1 : flags[i] == {upper}_HIGH ? 1 : 0);\n\
-         \x20   }}\n\
-         \x20   return {status}_Ok;\n\
+         \x20   return {name}_observer_estimate(observer, estimates, saturation != NULL ? saturation : flags);\n\
          }}\n\
          \n\
          size_t {name}_storage_size(void) {{\n\
@@ -169,4 +129,10 @@ pub(super) fn storage_interface(design: &Design) -> (String, String) {
         mark = mark(name),
     );
     (header, source)
+}
+
+/// The design's sample period as a C `float` literal (`0.1f`): the shortest decimal that reads back
+/// as its f32, as the Rust design file's `SAMPLE_PERIOD`; both C headers define it with this text.
+pub fn sample_period(design: &Design) -> String {
+    format!("{:?}f", design.tau as f32)
 }

@@ -158,7 +158,7 @@ impl<'a, T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize
 }
 
 impl<T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize> ChipStep for Stepper<'_, T, NX, NY> {
-    /// `firmware::mhe::Observer::push`: a sample with a non-finite input is not stored; the window is
+    /// `firmware::mhe::Observer::push`: a sample with a non-finite value is not stored; the window is
     /// the last `horizon` stored; the previous solution moves on under the dropped sample's input.
     fn step(&mut self, y: &[f64], u: &[f64]) -> Option<Vec<f64>> {
         use firmware::mhe::solve_window;
@@ -167,7 +167,7 @@ impl<T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize> Ch
             y: std::array::from_fn(|i| literal(y[i])),
             u: std::array::from_fn(|i| if i < u.len() { literal(u[i]) } else { T::ZERO }),
         };
-        if !sample.u.iter().all(|v| v.is_finite()) {
+        if !sample.y.iter().chain(&sample.u).all(|v| v.is_finite()) {
             return None;
         }
         let (n, s) = (self.horizon, &self.settings);
@@ -188,9 +188,6 @@ impl<T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize> Ch
             return None;
         }
         self.solved = Some(x);
-        if !sample.y.iter().all(|v| v.is_finite()) {
-            return None; // refused: solved, but reported refused
-        }
         let values: Vec<f64> = self
             .code
             .targets(&end, &sample.u, &mut self.scratch)
