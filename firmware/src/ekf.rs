@@ -57,9 +57,6 @@ pub struct Ekf<T, P, const NX: usize, const NY: usize, const NU: usize> {
     plant: P,
 }
 
-/// The result of one sample: the updated estimate, or the refusal of a non-finite sample.
-pub type EkfResult<T, const NX: usize> = Result<[T; NX], crate::RejectedSample>;
-
 impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const NU: usize> Ekf<T, P, NX, NY, NU> {
     /// A filter of `plant` starting at `x0` with covariance `p0`, process noise `q` and measurement
     /// variances `r`.
@@ -106,7 +103,7 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
 
     /// Takes the sample `(y, u)`: the measurement update, then the prediction to the next sample.
     /// Returns the updated estimate `x̂(k|k)`; a non-finite `y` is refused (see the module docs).
-    pub fn push(&mut self, y: &[T; NY], u: &[T; NU]) -> EkfResult<T, NX> {
+    pub fn push(&mut self, y: &[T; NY], u: &[T; NU]) -> Result<[T; NX], crate::RejectedSample> {
         if !u.iter().all(|v| v.is_finite()) {
             return Err(crate::RejectedSample);
         }
