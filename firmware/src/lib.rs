@@ -84,6 +84,8 @@
 //!   `Scalar::BISECTION_STEPS` and `Scalar::constant`. The host enables it; firmware leaves it off,
 //!   so that its API is exactly what runs on the chip, where a bisection of 24 steps, each a sum of
 //!   divisions, could not be afforded every sample.
+//! * `defmt` (off by default): [`Estimate`], [`Saturation`], [`RejectedSample`] and
+//!   [`fixed::OutOfRange`] implement `defmt::Format`, for a firmware that logs with `defmt`.
 #![cfg_attr(not(test), no_std)]
 // No unsafe code but one instruction: the FPU's square root (`maths::sqrt_f32`), allowed there alone.
 #![deny(unsafe_code)]

@@ -40,6 +40,7 @@ use table::FixedTable;
 
 /// A sample was refused because a value is outside its declared raw range; the observer is unchanged.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct OutOfRange;
 
 impl core::fmt::Display for OutOfRange {
