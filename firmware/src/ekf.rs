@@ -196,11 +196,11 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
 }
 
 /// `A Bᵀ`.
-fn product_transposed<T: Scalar, const N: usize>(a: &[[T; N]; N], b: &[[T; N]; N]) -> [[T; N]; N] {
-    let mut out = [[T::ZERO; N]; N];
+fn product_transposed<T: Scalar, const M: usize>(a: &[[T; M]; M], b: &[[T; M]; M]) -> [[T; M]; M] {
+    let mut out = [[T::ZERO; M]; M];
     for (r, out_row) in out.iter_mut().enumerate() {
         for (c, entry) in out_row.iter_mut().enumerate() {
-            for k in 0..N {
+            for k in 0..M {
                 *entry += a[r][k] * b[c][k];
             }
         }

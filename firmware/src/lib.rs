@@ -74,7 +74,8 @@
 //! Every type, trait and function takes the sizes it needs in one order, each named the same
 //! everywhere: `N` (the horizon: samples in the window), `NX` (states), `NY` (outputs), `NU`
 //! (inputs), `NT` (targets), then `K` (members of a family) or `SUBSTEPS` (RK4 steps per sample);
-//! type parameters (the scalar `T` first, then the design's types) come before them.
+//! type parameters (the scalar `T` first, then the design's types) come before them. A helper over
+//! any vector or square matrix takes its size as `M`.
 //!
 //! # Features
 //!

@@ -92,11 +92,11 @@ fn identity<T: Scalar>(r: usize, c: usize) -> T {
 /// root, so no software `sqrtf` (whose path depends on its argument) on a chip; `None` when a pivot
 /// of `D` is not positive (or not finite).
 #[allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)] // the textbook's indices
-pub fn solve_cholesky<T: Scalar, const N: usize>(a: &[[T; N]; N], b: &[T; N]) -> Option<[T; N]> {
-    let mut l = [[T::ZERO; N]; N];
-    let mut d = [T::ZERO; N];
-    let mut inverse_d = [T::ZERO; N];
-    for j in 0..N {
+pub fn solve_cholesky<T: Scalar, const M: usize>(a: &[[T; M]; M], b: &[T; M]) -> Option<[T; M]> {
+    let mut l = [[T::ZERO; M]; M];
+    let mut d = [T::ZERO; M];
+    let mut inverse_d = [T::ZERO; M];
+    for j in 0..M {
         let mut pivot = a[j][j];
         for k in 0..j {
             pivot -= l[j][k] * l[j][k] * d[k];
@@ -106,7 +106,7 @@ pub fn solve_cholesky<T: Scalar, const N: usize>(a: &[[T; N]; N], b: &[T; N]) ->
         }
         d[j] = pivot;
         inverse_d[j] = T::one() / pivot;
-        for i in j + 1..N {
+        for i in j + 1..M {
             let mut sum = a[i][j];
             for k in 0..j {
                 sum -= l[i][k] * l[j][k] * d[k];
@@ -115,18 +115,18 @@ pub fn solve_cholesky<T: Scalar, const N: usize>(a: &[[T; N]; N], b: &[T; N]) ->
         }
     }
     // L z = b, then Lᵀ x = D⁻¹ z.
-    let mut z = [T::ZERO; N];
-    for r in 0..N {
+    let mut z = [T::ZERO; M];
+    for r in 0..M {
         let mut sum = b[r];
         for k in 0..r {
             sum -= l[r][k] * z[k];
         }
         z[r] = sum;
     }
-    let mut x = [T::ZERO; N];
-    for r in (0..N).rev() {
+    let mut x = [T::ZERO; M];
+    for r in (0..M).rev() {
         let mut sum = z[r] * inverse_d[r];
-        for k in r + 1..N {
+        for k in r + 1..M {
             sum -= l[k][r] * x[k];
         }
         x[r] = sum;
