@@ -58,10 +58,10 @@ fn main() {
     let text = format!(
         "{text}\n/// Invokes `$callback!(design)` for every generated design with an integer observer\n/// (`fixed_observer()`). Written by `tests/build.rs` from the generated sources.\n#[macro_export]\nmacro_rules! for_each_fixed_observer {{\n    ($callback:ident) => {{\n{fixed}    }};\n}}\n"
     );
-    // The UKF from the box centre, where the design has one (`pub struct UkfObserver`).
+    // The UKF from the box centre, where the design has one (`pub type UkfObserver = firmware::FilterObserver<…>`).
     let ukf: String = designs
         .iter()
-        .filter(|(_, text)| text.contains("\npub struct UkfObserver {"))
+        .filter(|(_, text)| text.contains("\npub type UkfObserver = firmware::FilterObserver<"))
         .map(|(name, _)| format!("        $callback!({name});\n"))
         .collect();
     let text = format!(

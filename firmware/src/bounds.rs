@@ -26,9 +26,9 @@ pub fn at_most<T: PartialOrd + Copy>(x: T, high: T) -> T {
 /// unbounded side is `±∞`, which leaves every finite value as it is.
 #[inline(always)]
 #[must_use]
-pub fn project<T: PartialOrd + Copy, const N: usize>(x: &[T; N], lower: &[T; N], upper: &[T; N]) -> [T; N] {
+pub fn project<T: PartialOrd + Copy, const M: usize>(x: &[T; M], lower: &[T; M], upper: &[T; M]) -> [T; M] {
     let mut out = *x;
-    for i in 0..N {
+    for i in 0..M {
         out[i] = at_most(at_least(x[i], lower[i]), upper[i]);
     }
     out

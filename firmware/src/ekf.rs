@@ -57,9 +57,6 @@ pub struct Ekf<T, P, const NX: usize, const NY: usize, const NU: usize> {
     plant: P,
 }
 
-/// The result of one sample: the updated estimate, or the refusal of a non-finite sample.
-pub type EkfResult<T, const NX: usize> = Result<[T; NX], crate::RejectedSample>;
-
 impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const NU: usize> Ekf<T, P, NX, NY, NU> {
     /// A filter of `plant` starting at `x0` with covariance `p0`, process noise `q` and measurement
     /// variances `r`.
@@ -106,7 +103,7 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
 
     /// Takes the sample `(y, u)`: the measurement update, then the prediction to the next sample.
     /// Returns the updated estimate `x̂(k|k)`; a non-finite `y` is refused (see the module docs).
-    pub fn push(&mut self, y: &[T; NY], u: &[T; NU]) -> EkfResult<T, NX> {
+    pub fn push(&mut self, y: &[T; NY], u: &[T; NU]) -> Result<[T; NX], crate::RejectedSample> {
         if !u.iter().all(|v| v.is_finite()) {
             return Err(crate::RejectedSample);
         }
@@ -199,11 +196,11 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
 }
 
 /// `A Bᵀ`.
-fn product_transposed<T: Scalar, const N: usize>(a: &[[T; N]; N], b: &[[T; N]; N]) -> [[T; N]; N] {
-    let mut out = [[T::ZERO; N]; N];
+fn product_transposed<T: Scalar, const M: usize>(a: &[[T; M]; M], b: &[[T; M]; M]) -> [[T; M]; M] {
+    let mut out = [[T::ZERO; M]; M];
     for (r, out_row) in out.iter_mut().enumerate() {
         for (c, entry) in out_row.iter_mut().enumerate() {
-            for k in 0..N {
+            for k in 0..M {
                 *entry += a[r][k] * b[c][k];
             }
         }

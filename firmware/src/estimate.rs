@@ -4,6 +4,7 @@
 
 /// An estimate of one target.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Estimate<T> {
     /// The estimated value, in the target's units.
     pub value: T,
@@ -14,6 +15,7 @@ pub struct Estimate<T> {
 /// Which end of the learning range, if any, an estimate was clamped to. The table coordinate `t` is
 /// `0` at `Lᵀ Z = Γ(0)` and `t_max` at `Lᵀ Z = Γ(1)`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum Saturation {
     /// `0 ≤ t ≤ t_max` (`Γ(0) ≤ Lᵀ Z ≤ Γ(1)`): the estimate is inside the learning range.
     Inside,

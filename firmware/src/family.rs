@@ -68,6 +68,12 @@ impl<'a, T: Scalar, const N: usize, const NY: usize, const NU: usize, const NT: 
         self.window.clear();
     }
 
+    /// `true` once `N` samples of the batch have arrived (and a member is chosen).
+    #[must_use]
+    pub fn is_ready(&self) -> bool {
+        self.chosen.is_some() && self.window.is_full()
+    }
+
     /// Index of the member in use, once the batch's first sample has arrived.
     #[must_use]
     pub fn chosen(&self) -> Option<usize> {

@@ -36,15 +36,46 @@
 //! curvature of `Γ⁻¹` instead ([`Knots::Searched`]) and the segment is found by a binary search of
 //! fixed length (`⌈log₂ K⌉` selects, the same steps whatever `t` is). Generated designs ([`Design`])
 //! write the dot products (and the search steps) out as straight-line code; the [`Observer`] keeps the
-//! last `N` samples in a window that is always contiguous ([`window`]).
+//! last `N` samples in a window that is always contiguous.
 //!
 //! # The peer
 //!
 //! [`Ekf`] is an extended Kalman filter over any [`Plant`] (one sampling period of the model and its
 //! output, with Jacobians), in plain arrays with sequential scalar updates in Joseph form: the observer
-//! every design is compared with. [`Started`] runs a model-based [`Follower`] from the map's first
+//! every design is compared with. [`Started`] runs a model-based follower from the map's first
 //! estimate (the model-corrected map, the map-started EKF); [`Restarted`] runs a filter from the
 //! first sample and checks the map once, restarting from it when the two disagree.
+//!
+//! # The interface a firmware holds
+//!
+//! Every observer kind a design carries implements one trait, [`Estimator`]: `push` the sample of
+//! the current instant, read `estimate`, `reset` for a new run, `is_ready` once it estimates; its
+//! associated types say what a value is (`f32`, or `i32` for the map in integers), what a sample's
+//! outputs and inputs and an estimate are, and why a sample is refused. Firmware written against it
+//! switches kinds by a type:
+//!
+//! | kind | type |
+//! |---|---|
+//! | `map` | [`Observer`] |
+//! | `corrected`, `ekf_map` | [`Started`] over the design's `Corrector` / `StartedEkf` |
+//! | `ekf_restart` | [`Restarted`] |
+//! | `ekf_box`, `ukf_box` | [`FilterObserver`] over the design's `Ekf` / `Ukf` |
+//! | `mhe` | [`mhe::Observer`] |
+//! | the map in integers | [`fixed::Observer`] |
+//! | a family of maps | [`FamilyObserver`] |
+//!
+//! A generated design names each of them (`MapObserver`, `CorrectedObserver`, …, `Observer` for the
+//! kind `gen` chose). What only the generated code calls or implements (the traits a design
+//! implements, the straight-line code's helpers, the solver steps) is in `emitted`, hidden from
+//! this documentation: it follows the generator, not a firmware's needs.
+//!
+//! # Const generic parameters
+//!
+//! Every type, trait and function takes the sizes it needs in one order, each named the same
+//! everywhere: `N` (the horizon: samples in the window), `NX` (states), `NY` (outputs), `NU`
+//! (inputs), `NT` (targets), then `K` (members of a family) or `SUBSTEPS` (RK4 steps per sample);
+//! type parameters (the scalar `T` first, then the design's types) come before them. A helper over
+//! any vector or square matrix takes its size as `M`.
 //!
 //! # Features
 //!
@@ -54,6 +85,8 @@
 //!   `Scalar::BISECTION_STEPS` and `Scalar::constant`. The host enables it; firmware leaves it off,
 //!   so that its API is exactly what runs on the chip, where a bisection of 24 steps, each a sum of
 //!   divisions, could not be afforded every sample.
+//! * `defmt` (off by default): [`Estimate`], [`Saturation`], [`RejectedSample`] and
+//!   [`fixed::OutOfRange`] implement `defmt::Format`, for a firmware that logs with `defmt`.
 #![cfg_attr(not(test), no_std)]
 // No unsafe code but one instruction: the FPU's square root (`maths::sqrt_f32`), allowed there alone.
 #![deny(unsafe_code)]
@@ -62,36 +95,76 @@
 // The crate doc names the `reference` items without links: a link to an absent item fails `cargo doc`.
 #[cfg(any(test, feature = "reference"))]
 pub mod basis;
-pub mod bounds;
-pub mod ekf;
-pub mod estimate;
-pub mod family;
+mod bounds;
+mod ekf;
+mod estimate;
+mod estimator;
+mod family;
+mod filter;
 pub mod fixed;
 #[cfg(any(test, feature = "reference"))]
 pub mod gamma;
-pub mod inverse;
-pub mod map;
-pub mod maths;
-pub mod matrix;
+mod inverse;
+mod map;
+mod maths;
+mod matrix;
 pub mod mhe;
-pub mod model;
-pub mod observer;
-pub mod restarted;
-pub mod scalar;
-pub mod started;
-pub mod window;
+mod model;
+mod observer;
+mod restarted;
+mod scalar;
+mod started;
+mod window;
 
 pub use ekf::{Ekf, Plant};
-pub use family::{FamilyObserver, Member};
-pub use fixed::{FixedDesign, FixedMap, FixedTable};
+pub use estimate::{Estimate, Saturation};
+pub use estimator::Estimator;
+pub use family::FamilyObserver;
+pub use filter::FilterObserver;
 #[cfg(any(test, feature = "reference"))]
 pub use gamma::{Gamma, Inverse};
-pub use inverse::{search_halves, search_step, InverseTable, Knots};
-pub use map::{Estimate, Saturation, TargetMap};
-pub use maths::Maths;
+pub use inverse::{InverseTable, Knots};
+pub use map::TargetMap;
 pub use model::{Model, Rk4};
-pub use observer::{estimate_by_loops, Design, Observer, RejectedSample};
-pub use restarted::{Restart, Restarted};
+pub use observer::{Design, Observer, RejectedSample};
+pub use restarted::Restarted;
 pub use scalar::Scalar;
-pub use started::{Follower, Started};
-pub use window::{Sample, Stored, Window};
+pub use started::Started;
+pub use window::Sample;
+
+// The C emitter (`host::emit::c`) still names the search's halves at the root: hidden there too.
+#[doc(hidden)]
+pub use inverse::search_halves;
+
+// The generator's items by the names the modules use for one another.
+use emitted::Follower;
+
+/// What only generated code (and the host that writes it) calls or implements: the traits a design
+/// implements for its observers, the helpers of its straight-line code, the steps of the
+/// moving-horizon solve. Not the interface a firmware uses (see the [crate's](crate) documentation):
+/// it follows the generator and may change with it.
+#[doc(hidden)]
+pub mod emitted {
+    pub use crate::bounds::{at_least, at_most, project};
+    pub use crate::family::Member;
+    pub use crate::filter::Filter;
+    pub use crate::inverse::{search_halves, search_step};
+    pub use crate::maths::{sqrt_f32, Maths};
+    pub use crate::matrix::product;
+    pub use crate::observer::estimate_by_loops;
+    pub use crate::restarted::Restart;
+    pub use crate::started::{clamp, Follower};
+    pub use crate::window::{Stored, Window};
+
+    /// The generator's part of [`crate::fixed`]: the integer design, its tables and helpers.
+    pub mod fixed {
+        pub use crate::fixed::design::{estimate_by_loops, in_range, reach, FixedDesign, FixedMap};
+        pub use crate::fixed::table::{flag, FixedTable};
+    }
+
+    /// The generator's part of [`crate::mhe`]: the design's constants and the solve's steps.
+    pub mod mhe {
+        pub use crate::mhe::observer::Horizon;
+        pub use crate::mhe::solver::{normal_equations, propagate, solve_cholesky, solve_window, Normal, Settings};
+    }
+}

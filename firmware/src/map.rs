@@ -1,7 +1,9 @@
 //! One target's map `r = Γ⁻¹(Lᵀ Z)` as the chip evaluates it: a projection onto the table
 //! coordinate `t`, then the tabulated inverse ([`InverseTable`]).
 
-pub use crate::estimate::{Estimate, Saturation};
+use crate::estimate::Estimate;
+#[cfg(test)]
+use crate::estimate::Saturation;
 use crate::{InverseTable, Scalar};
 
 /// The map for one target: `t = offset + Σ_i gains_i z_i`, `r = table(t)`.

@@ -4,11 +4,11 @@
 use crate::Scalar;
 
 /// `A B` (also what the host composes substeps with).
-pub fn product<T: Scalar, const N: usize>(a: &[[T; N]; N], b: &[[T; N]; N]) -> [[T; N]; N] {
-    let mut out = [[T::ZERO; N]; N];
+pub fn product<T: Scalar, const M: usize>(a: &[[T; M]; M], b: &[[T; M]; M]) -> [[T; M]; M] {
+    let mut out = [[T::ZERO; M]; M];
     for (r, out_row) in out.iter_mut().enumerate() {
         for (c, entry) in out_row.iter_mut().enumerate() {
-            for k in 0..N {
+            for k in 0..M {
                 *entry += a[r][k] * b[k][c];
             }
         }

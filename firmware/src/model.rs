@@ -134,8 +134,8 @@ impl<T: Scalar, M, const SUBSTEPS: usize> Rk4<T, M, SUBSTEPS> {
 }
 
 /// The identity matrix.
-fn identity<T: Scalar, const N: usize>() -> [[T; N]; N] {
-    let mut m = [[T::ZERO; N]; N];
+fn identity<T: Scalar, const M: usize>() -> [[T; M]; M] {
+    let mut m = [[T::ZERO; M]; M];
     for (i, row) in m.iter_mut().enumerate() {
         row[i] = T::one();
     }

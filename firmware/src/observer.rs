@@ -7,6 +7,7 @@ use crate::{Estimate, Scalar, TargetMap};
 
 /// A sample was refused because one of its values is NaN or infinite; the observer is unchanged.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct RejectedSample;
 
 impl core::fmt::Display for RejectedSample {

@@ -53,10 +53,10 @@ pub struct Restarted<
     D,
     F,
     const N: usize,
+    const NX: usize,
     const NY: usize,
     const NU: usize,
     const NT: usize,
-    const NX: usize,
 > where
     F: Restart<T, NX, NY, NU, NT>,
 {
@@ -68,8 +68,8 @@ pub struct Restarted<
     design: PhantomData<fn() -> D>,
 }
 
-impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize>
-    Restarted<T, D, F, N, NY, NU, NT, NX>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize>
+    Restarted<T, D, F, N, NX, NY, NU, NT>
 where
     T: Scalar,
     D: Design<T, N, NY, NU, NT>,
@@ -168,8 +168,8 @@ where
     }
 }
 
-impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> Default
-    for Restarted<T, D, F, N, NY, NU, NT, NX>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Default
+    for Restarted<T, D, F, N, NX, NY, NU, NT>
 where
     T: Scalar,
     D: Design<T, N, NY, NU, NT>,
@@ -180,8 +180,8 @@ where
     }
 }
 
-impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> Clone
-    for Restarted<T, D, F, N, NY, NU, NT, NX>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Clone
+    for Restarted<T, D, F, N, NX, NY, NU, NT>
 where
     T: Scalar,
     F: Restart<T, NX, NY, NU, NT>,
@@ -197,8 +197,8 @@ where
     }
 }
 
-impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> core::fmt::Debug
-    for Restarted<T, D, F, N, NY, NU, NT, NX>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> core::fmt::Debug
+    for Restarted<T, D, F, N, NX, NY, NU, NT>
 where
     T: Scalar,
     F: Restart<T, NX, NY, NU, NT>,

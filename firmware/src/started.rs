@@ -124,7 +124,7 @@ fn select<V>(condition: bool, a: V, b: V) -> V {
 /// is finite still takes one period of the model ([`Follower::predict`]), so that what is carried
 /// stays in step with the plant. A sample whose follow-up is not finite (the model overflowed) is
 /// refused too, and only the map's window keeps it.
-pub struct Started<T: Scalar, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize>
+pub struct Started<T: Scalar, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize>
 where
     F: Follower<T, NX, NY, NU, NT>,
 {
@@ -136,8 +136,8 @@ where
     design: PhantomData<fn() -> D>,
 }
 
-impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize>
-    Started<T, D, F, N, NY, NU, NT, NX>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize>
+    Started<T, D, F, N, NX, NY, NU, NT>
 where
     T: Scalar,
     D: Design<T, N, NY, NU, NT>,
@@ -228,8 +228,8 @@ where
     }
 }
 
-impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> Default
-    for Started<T, D, F, N, NY, NU, NT, NX>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Default
+    for Started<T, D, F, N, NX, NY, NU, NT>
 where
     T: Scalar,
     D: Design<T, N, NY, NU, NT>,
@@ -240,8 +240,8 @@ where
     }
 }
 
-impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> Clone
-    for Started<T, D, F, N, NY, NU, NT, NX>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Clone
+    for Started<T, D, F, N, NX, NY, NU, NT>
 where
     T: Scalar,
     F: Follower<T, NX, NY, NU, NT>,
@@ -257,8 +257,8 @@ where
     }
 }
 
-impl<T, D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> core::fmt::Debug
-    for Started<T, D, F, N, NY, NU, NT, NX>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> core::fmt::Debug
+    for Started<T, D, F, N, NX, NY, NU, NT>
 where
     T: Scalar,
     F: Follower<T, NX, NY, NU, NT>,

@@ -24,7 +24,8 @@
 //! assert!(map.estimate().is_none()); // the map: until HORIZON samples have arrived
 //! ```
 
-use firmware::{Estimate, InverseTable, Knots, Maths, Sample, Scalar, TargetMap};
+use firmware::emitted::Maths;
+use firmware::{Estimate, InverseTable, Knots, Sample, Scalar, TargetMap};
 
 /// The design's name.
 pub const NAME: &str = "ecoli_x0_2";
@@ -683,7 +684,7 @@ pub static MAPS: [TargetMap<'static, f32>; TARGETS] = <Design as firmware::Desig
 
 /// This design for [`firmware::Observer`]: its finite check and its dot products are written out (the
 /// compiler does not unroll loops when optimising for size), the sums in the order of
-/// [`firmware::estimate_by_loops`], so that both give the same bits.
+/// `firmware::emitted::estimate_by_loops`, so that both give the same bits.
 pub struct Design;
 
 impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
@@ -1085,56 +1086,39 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 }
 
 /// The EKF from the centre of the state box ([`Ekf`], the same filter and constants) with the
-/// observers' interface: `push` takes a sample, `estimate` gives the targets of the latest accepted
-/// one (each `Inside`: the filter does not saturate), `reset` starts again. It has an estimate from
-/// the first accepted sample on; a refused sample keeps the previous one.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BoxEkfObserver {
-    filter: Ekf<f32>,
-    latest: Option<[Estimate<f32>; TARGETS]>,
-}
+/// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
+/// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
+/// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
+/// refused sample keeps the previous one.
+pub type BoxEkfObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
-impl Default for BoxEkfObserver {
-    fn default() -> Self {
-        Self::new()
+impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
+    const FRESH: Self = Ekf { x: [2.0, 2.5, 0.15], p: [1.6278049, 0.0, 0.0, 3.397246, 0.0, 0.031897947] };
+
+    #[inline(always)]
+    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
+        Ekf::push(self, y, u)
+    }
+
+    #[inline(always)]
+    fn targets(x: &[f32; STATES], u: &[f32; INPUTS]) -> [f32; TARGETS] {
+        targets(x, u)
     }
 }
 
-impl BoxEkfObserver {
-    /// A fresh observer (the filter at its start), holding no sample yet.
-    pub const fn new() -> Self {
-        BoxEkfObserver {
-            filter: Ekf { x: [2.0, 2.5, 0.15], p: [1.6278049, 0.0, 0.0, 3.397246, 0.0, 0.031897947] },
-            latest: None,
-        }
-    }
+/// [`BoxEkfObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
+/// wrote its own observer type: measured on the chip, without them the whole-program optimisation
+/// inlines this design's filter samples differently, and every observer over them runs other
+/// instruction counts. Not for calling: use the observer's methods.
+#[doc(hidden)]
+pub fn ekf_observer_push(observer: &mut BoxEkfObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+    observer.push(y, u)
+}
 
-    /// Takes the sample `(y, u)`: [`Ekf::push`], then the targets of its estimate `x̂(k|k)`.
-    pub fn push(&mut self, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
-        let x = self.filter.push(&y, &u)?;
-        let values = targets(&x, &u);
-        let mut latest = [Estimate { value: 0.0, saturation: firmware::Saturation::Inside }; TARGETS];
-        for (e, value) in latest.iter_mut().zip(values) {
-            e.value = value;
-        }
-        self.latest = Some(latest);
-        Ok(())
-    }
-
-    /// The targets of the latest accepted sample; `None` before the first.
-    pub fn estimate(&self) -> Option<[Estimate<f32>; TARGETS]> {
-        self.latest
-    }
-
-    /// Back to the start: the filter at the box centre, no estimate.
-    pub fn reset(&mut self) {
-        *self = Self::new();
-    }
-
-    /// Whether it has an estimate.
-    pub fn is_ready(&self) -> bool {
-        self.latest.is_some()
-    }
+/// See [`ekf_observer_push`].
+#[doc(hidden)]
+pub fn ekf_observer_estimate(observer: &BoxEkfObserver) -> Option<[Estimate<f32>; TARGETS]> {
+    observer.estimate()
 }
 
 /// One sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
@@ -1373,9 +1357,9 @@ fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t230: T = t116 * t106;
     let t231: T = t230 * t116;
     let t232: T = t217 + t231;
-    let t233: T = firmware::bounds::at_least(t120, t11);
-    let t234: T = firmware::bounds::at_least(t122, t11);
-    let t235: T = firmware::bounds::at_least(t124, t11);
+    let t233: T = firmware::emitted::at_least(t120, t11);
+    let t234: T = firmware::emitted::at_least(t122, t11);
+    let t235: T = firmware::emitted::at_least(t124, t11);
     let t236: T = T::literal(0.2, 0.2);
     let t237: T = T::literal(2.0, 2.0);
     let t238: T = T::literal(6.0, 6.0);
@@ -1949,9 +1933,9 @@ fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t806: T = t792 + t805;
     let t807: T = T::literal(1.17764065e-8, 1.1776406553548216e-8);
     let t808: T = t802 + t807;
-    let t809: T = firmware::bounds::at_least(t668, t11);
-    let t810: T = firmware::bounds::at_least(t674, t11);
-    let t811: T = firmware::bounds::at_least(t680, t11);
+    let t809: T = firmware::emitted::at_least(t668, t11);
+    let t810: T = firmware::emitted::at_least(t674, t11);
+    let t811: T = firmware::emitted::at_least(t680, t11);
     ([t233, t234, t235], [t809, t810, t811], [t804, t782, t787, t806, t797, t808])
 }
 
@@ -2545,9 +2529,9 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t584: T = t570 + t583;
     let t585: T = T::literal(1.17764065e-8, 1.1776406553548216e-8);
     let t586: T = t580 + t585;
-    let t587: T = firmware::bounds::at_least(t446, t19);
-    let t588: T = firmware::bounds::at_least(t452, t19);
-    let t589: T = firmware::bounds::at_least(t458, t19);
+    let t587: T = firmware::emitted::at_least(t446, t19);
+    let t588: T = firmware::emitted::at_least(t452, t19);
+    let t589: T = firmware::emitted::at_least(t458, t19);
     ([t587, t588, t589], [t582, t560, t565, t584, t575, t586])
 }
 
@@ -2626,56 +2610,39 @@ pub fn ukf() -> Ukf {
 }
 
 /// The UKF from the centre of the state box ([`Ukf`], the same filter and constants) with the
-/// observers' interface: `push` takes a sample, `estimate` gives the targets of the latest accepted
-/// one (each `Inside`: the filter does not saturate), `reset` starts again. It has an estimate from
-/// the first accepted sample on; a refused sample keeps the previous one.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct UkfObserver {
-    filter: Ukf<f32>,
-    latest: Option<[Estimate<f32>; TARGETS]>,
-}
+/// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
+/// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
+/// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
+/// refused sample keeps the previous one.
+pub type UkfObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
-impl Default for UkfObserver {
-    fn default() -> Self {
-        Self::new()
+impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
+    const FRESH: Self = Ukf { x: [2.0, 2.5, 0.15], p: [0.16901448, 0.0, 0.0, 0.3230251, 0.0, 0.0024640344] };
+
+    #[inline(always)]
+    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
+        Ukf::push(self, y, u)
+    }
+
+    #[inline(always)]
+    fn targets(x: &[f32; STATES], u: &[f32; INPUTS]) -> [f32; TARGETS] {
+        targets(x, u)
     }
 }
 
-impl UkfObserver {
-    /// A fresh observer (the filter at its start), holding no sample yet.
-    pub const fn new() -> Self {
-        UkfObserver {
-            filter: Ukf { x: [2.0, 2.5, 0.15], p: [0.16901448, 0.0, 0.0, 0.3230251, 0.0, 0.0024640344] },
-            latest: None,
-        }
-    }
+/// [`UkfObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
+/// wrote its own observer type: measured on the chip, without them the whole-program optimisation
+/// inlines this design's filter samples differently, and every observer over them runs other
+/// instruction counts. Not for calling: use the observer's methods.
+#[doc(hidden)]
+pub fn ukf_observer_push(observer: &mut UkfObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+    observer.push(y, u)
+}
 
-    /// Takes the sample `(y, u)`: [`Ukf::push`], then the targets of its estimate `x̂(k|k)`.
-    pub fn push(&mut self, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
-        let x = self.filter.push(&y, &u)?;
-        let values = targets(&x, &u);
-        let mut latest = [Estimate { value: 0.0, saturation: firmware::Saturation::Inside }; TARGETS];
-        for (e, value) in latest.iter_mut().zip(values) {
-            e.value = value;
-        }
-        self.latest = Some(latest);
-        Ok(())
-    }
-
-    /// The targets of the latest accepted sample; `None` before the first.
-    pub fn estimate(&self) -> Option<[Estimate<f32>; TARGETS]> {
-        self.latest
-    }
-
-    /// Back to the start: the filter at the box centre, no estimate.
-    pub fn reset(&mut self) {
-        *self = Self::new();
-    }
-
-    /// Whether it has an estimate.
-    pub fn is_ready(&self) -> bool {
-        self.latest.is_some()
-    }
+/// See [`ukf_observer_push`].
+#[doc(hidden)]
+pub fn ukf_observer_estimate(observer: &UkfObserver) -> Option<[Estimate<f32>; TARGETS]> {
+    observer.estimate()
 }
 
 /// One UKF sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
@@ -2697,7 +2664,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t13: T = t11 * t12;
     let t14: T = T::literal(1.1754944e-38, 1.1754943508222875e-38);
     let t15: T = t13 + t14;
-    let t16: T = firmware::bounds::at_least(cov0, t15);
+    let t16: T = firmware::emitted::at_least(cov0, t15);
     let t17: T = Maths::sqrt(t16);
     let t18: T = t10 / t17;
     let t19: T = cov1 * t18;
@@ -2707,7 +2674,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t23: T = Maths::abs(cov3);
     let t24: T = t11 * t23;
     let t25: T = t24 + t14;
-    let t26: T = firmware::bounds::at_least(t22, t25);
+    let t26: T = firmware::emitted::at_least(t22, t25);
     let t27: T = Maths::sqrt(t26);
     let t28: T = t10 / t27;
     let t29: T = t20 * t19;
@@ -2720,7 +2687,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t36: T = Maths::abs(cov5);
     let t37: T = t11 * t36;
     let t38: T = t37 + t14;
-    let t39: T = firmware::bounds::at_least(t35, t38);
+    let t39: T = firmware::emitted::at_least(t35, t38);
     let t40: T = Maths::sqrt(t39);
     let t41: T = T::literal(1.7320508, 1.7320508075688772);
     let t42: T = t41 * t17;
@@ -2729,20 +2696,20 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t45: T = x_S + t44;
     let t46: T = t41 * t20;
     let t47: T = x_P + t46;
-    let t48: T = firmware::bounds::at_least(t43, t9);
-    let t49: T = firmware::bounds::at_least(t45, t9);
-    let t50: T = firmware::bounds::at_least(t47, t9);
+    let t48: T = firmware::emitted::at_least(t43, t9);
+    let t49: T = firmware::emitted::at_least(t45, t9);
+    let t50: T = firmware::emitted::at_least(t47, t9);
     let t51: T = t41 * t27;
     let t52: T = x_S + t51;
     let t53: T = t41 * t31;
     let t54: T = x_P + t53;
-    let t55: T = firmware::bounds::at_least(x_X, t9);
-    let t56: T = firmware::bounds::at_least(t52, t9);
-    let t57: T = firmware::bounds::at_least(t54, t9);
+    let t55: T = firmware::emitted::at_least(x_X, t9);
+    let t56: T = firmware::emitted::at_least(t52, t9);
+    let t57: T = firmware::emitted::at_least(t54, t9);
     let t58: T = t41 * t40;
     let t59: T = x_P + t58;
-    let t60: T = firmware::bounds::at_least(x_S, t9);
-    let t61: T = firmware::bounds::at_least(t59, t9);
+    let t60: T = firmware::emitted::at_least(x_S, t9);
+    let t61: T = firmware::emitted::at_least(t59, t9);
     let t62: T = T::literal(-1.7320508, -1.7320508075688772);
     let t63: T = t62 * t17;
     let t64: T = x_X + t63;
@@ -2750,18 +2717,18 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t66: T = x_S + t65;
     let t67: T = t62 * t20;
     let t68: T = x_P + t67;
-    let t69: T = firmware::bounds::at_least(t64, t9);
-    let t70: T = firmware::bounds::at_least(t66, t9);
-    let t71: T = firmware::bounds::at_least(t68, t9);
+    let t69: T = firmware::emitted::at_least(t64, t9);
+    let t70: T = firmware::emitted::at_least(t66, t9);
+    let t71: T = firmware::emitted::at_least(t68, t9);
     let t72: T = t62 * t27;
     let t73: T = x_S + t72;
     let t74: T = t62 * t31;
     let t75: T = x_P + t74;
-    let t76: T = firmware::bounds::at_least(t73, t9);
-    let t77: T = firmware::bounds::at_least(t75, t9);
+    let t76: T = firmware::emitted::at_least(t73, t9);
+    let t77: T = firmware::emitted::at_least(t75, t9);
     let t78: T = t62 * t40;
     let t79: T = x_P + t78;
-    let t80: T = firmware::bounds::at_least(t79, t9);
+    let t80: T = firmware::emitted::at_least(t79, t9);
     let p_mu_m: T = T::literal(parameters::mu_m.0, parameters::mu_m.1);
     let p_k_s: T = T::literal(parameters::k_s.0, parameters::k_s.1);
     let t83: T = p_k_s + t49;
@@ -2995,7 +2962,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t311: T = Maths::abs(t261);
     let t312: T = t11 * t311;
     let t313: T = t312 + t14;
-    let t314: T = firmware::bounds::at_least(t261, t313);
+    let t314: T = firmware::emitted::at_least(t261, t313);
     let t315: T = Maths::sqrt(t314);
     let t316: T = t10 / t315;
     let t317: T = t247 * t316;
@@ -3004,7 +2971,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t320: T = Maths::abs(t263);
     let t321: T = t11 * t320;
     let t322: T = t321 + t14;
-    let t323: T = firmware::bounds::at_least(t319, t322);
+    let t323: T = firmware::emitted::at_least(t319, t322);
     let t324: T = Maths::sqrt(t323);
     let t325: T = t10 / t324;
     let t326: T = t177 * t316;
@@ -3083,13 +3050,13 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t399: T = t310 * t356;
     let t400: T = t398 + t399;
     let t401: T = t235 - t400;
-    let t402: T = firmware::bounds::at_least(t369, t9);
-    let t403: T = firmware::bounds::at_least(t373, t9);
-    let t404: T = firmware::bounds::at_least(t377, t9);
+    let t402: T = firmware::emitted::at_least(t369, t9);
+    let t403: T = firmware::emitted::at_least(t373, t9);
+    let t404: T = firmware::emitted::at_least(t377, t9);
     let t405: T = Maths::abs(t381);
     let t406: T = t11 * t405;
     let t407: T = t406 + t14;
-    let t408: T = firmware::bounds::at_least(t381, t407);
+    let t408: T = firmware::emitted::at_least(t381, t407);
     let t409: T = Maths::sqrt(t408);
     let t410: T = t10 / t409;
     let t411: T = t385 * t410;
@@ -3099,7 +3066,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t415: T = Maths::abs(t393);
     let t416: T = t11 * t415;
     let t417: T = t416 + t14;
-    let t418: T = firmware::bounds::at_least(t414, t417);
+    let t418: T = firmware::emitted::at_least(t414, t417);
     let t419: T = Maths::sqrt(t418);
     let t420: T = t10 / t419;
     let t421: T = t412 * t411;
@@ -3112,7 +3079,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t428: T = Maths::abs(t401);
     let t429: T = t11 * t428;
     let t430: T = t429 + t14;
-    let t431: T = firmware::bounds::at_least(t427, t430);
+    let t431: T = firmware::emitted::at_least(t427, t430);
     let t432: T = Maths::sqrt(t431);
     let t433: T = t41 * t409;
     let t434: T = t402 + t433;
@@ -3120,38 +3087,38 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t436: T = t403 + t435;
     let t437: T = t41 * t412;
     let t438: T = t404 + t437;
-    let t439: T = firmware::bounds::at_least(t434, t9);
-    let t440: T = firmware::bounds::at_least(t436, t9);
-    let t441: T = firmware::bounds::at_least(t438, t9);
+    let t439: T = firmware::emitted::at_least(t434, t9);
+    let t440: T = firmware::emitted::at_least(t436, t9);
+    let t441: T = firmware::emitted::at_least(t438, t9);
     let t442: T = t41 * t419;
     let t443: T = t403 + t442;
     let t444: T = t41 * t423;
     let t445: T = t404 + t444;
-    let t446: T = firmware::bounds::at_least(t402, t9);
-    let t447: T = firmware::bounds::at_least(t443, t9);
-    let t448: T = firmware::bounds::at_least(t445, t9);
+    let t446: T = firmware::emitted::at_least(t402, t9);
+    let t447: T = firmware::emitted::at_least(t443, t9);
+    let t448: T = firmware::emitted::at_least(t445, t9);
     let t449: T = t41 * t432;
     let t450: T = t404 + t449;
-    let t451: T = firmware::bounds::at_least(t403, t9);
-    let t452: T = firmware::bounds::at_least(t450, t9);
+    let t451: T = firmware::emitted::at_least(t403, t9);
+    let t452: T = firmware::emitted::at_least(t450, t9);
     let t453: T = t62 * t409;
     let t454: T = t402 + t453;
     let t455: T = t62 * t411;
     let t456: T = t403 + t455;
     let t457: T = t62 * t412;
     let t458: T = t404 + t457;
-    let t459: T = firmware::bounds::at_least(t454, t9);
-    let t460: T = firmware::bounds::at_least(t456, t9);
-    let t461: T = firmware::bounds::at_least(t458, t9);
+    let t459: T = firmware::emitted::at_least(t454, t9);
+    let t460: T = firmware::emitted::at_least(t456, t9);
+    let t461: T = firmware::emitted::at_least(t458, t9);
     let t462: T = t62 * t419;
     let t463: T = t403 + t462;
     let t464: T = t62 * t423;
     let t465: T = t404 + t464;
-    let t466: T = firmware::bounds::at_least(t463, t9);
-    let t467: T = firmware::bounds::at_least(t465, t9);
+    let t466: T = firmware::emitted::at_least(t463, t9);
+    let t467: T = firmware::emitted::at_least(t465, t9);
     let t468: T = t62 * t432;
     let t469: T = t404 + t468;
-    let t470: T = firmware::bounds::at_least(t469, t9);
+    let t470: T = firmware::emitted::at_least(t469, t9);
     let t471: T = T::literal(0.2, 0.2);
     let t472: T = T::literal(2.0, 2.0);
     let t473: T = T::literal(6.0, 6.0);
@@ -4023,9 +3990,9 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t1339: T = t1311 + t1338;
     let t1340: T = T::literal(7.53586e-8, 7.535860236313183e-8);
     let t1341: T = t1335 + t1340;
-    let t1342: T = firmware::bounds::at_least(t1233, t9);
-    let t1343: T = firmware::bounds::at_least(t1239, t9);
-    let t1344: T = firmware::bounds::at_least(t1245, t9);
+    let t1342: T = firmware::emitted::at_least(t1233, t9);
+    let t1343: T = firmware::emitted::at_least(t1239, t9);
+    let t1344: T = firmware::emitted::at_least(t1245, t9);
     ([t402, t403, t404], [t1342, t1343, t1344], [t1337, t1287, t1299, t1339, t1323, t1341])
 }
 
@@ -4048,7 +4015,7 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t13: T = t11 * t12;
     let t14: T = T::literal(1.1754944e-38, 1.1754943508222875e-38);
     let t15: T = t13 + t14;
-    let t16: T = firmware::bounds::at_least(cov0, t15);
+    let t16: T = firmware::emitted::at_least(cov0, t15);
     let t17: T = Maths::sqrt(t16);
     let t18: T = t10 / t17;
     let t19: T = cov1 * t18;
@@ -4058,7 +4025,7 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t23: T = Maths::abs(cov3);
     let t24: T = t11 * t23;
     let t25: T = t24 + t14;
-    let t26: T = firmware::bounds::at_least(t22, t25);
+    let t26: T = firmware::emitted::at_least(t22, t25);
     let t27: T = Maths::sqrt(t26);
     let t28: T = t10 / t27;
     let t29: T = t20 * t19;
@@ -4071,7 +4038,7 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t36: T = Maths::abs(cov5);
     let t37: T = t11 * t36;
     let t38: T = t37 + t14;
-    let t39: T = firmware::bounds::at_least(t35, t38);
+    let t39: T = firmware::emitted::at_least(t35, t38);
     let t40: T = Maths::sqrt(t39);
     let t41: T = T::literal(1.7320508, 1.7320508075688772);
     let t42: T = t41 * t17;
@@ -4080,20 +4047,20 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t45: T = x_S + t44;
     let t46: T = t41 * t20;
     let t47: T = x_P + t46;
-    let t48: T = firmware::bounds::at_least(t43, t9);
-    let t49: T = firmware::bounds::at_least(t45, t9);
-    let t50: T = firmware::bounds::at_least(t47, t9);
+    let t48: T = firmware::emitted::at_least(t43, t9);
+    let t49: T = firmware::emitted::at_least(t45, t9);
+    let t50: T = firmware::emitted::at_least(t47, t9);
     let t51: T = t41 * t27;
     let t52: T = x_S + t51;
     let t53: T = t41 * t31;
     let t54: T = x_P + t53;
-    let t55: T = firmware::bounds::at_least(x_X, t9);
-    let t56: T = firmware::bounds::at_least(t52, t9);
-    let t57: T = firmware::bounds::at_least(t54, t9);
+    let t55: T = firmware::emitted::at_least(x_X, t9);
+    let t56: T = firmware::emitted::at_least(t52, t9);
+    let t57: T = firmware::emitted::at_least(t54, t9);
     let t58: T = t41 * t40;
     let t59: T = x_P + t58;
-    let t60: T = firmware::bounds::at_least(x_S, t9);
-    let t61: T = firmware::bounds::at_least(t59, t9);
+    let t60: T = firmware::emitted::at_least(x_S, t9);
+    let t61: T = firmware::emitted::at_least(t59, t9);
     let t62: T = T::literal(-1.7320508, -1.7320508075688772);
     let t63: T = t62 * t17;
     let t64: T = x_X + t63;
@@ -4101,18 +4068,18 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t66: T = x_S + t65;
     let t67: T = t62 * t20;
     let t68: T = x_P + t67;
-    let t69: T = firmware::bounds::at_least(t64, t9);
-    let t70: T = firmware::bounds::at_least(t66, t9);
-    let t71: T = firmware::bounds::at_least(t68, t9);
+    let t69: T = firmware::emitted::at_least(t64, t9);
+    let t70: T = firmware::emitted::at_least(t66, t9);
+    let t71: T = firmware::emitted::at_least(t68, t9);
     let t72: T = t62 * t27;
     let t73: T = x_S + t72;
     let t74: T = t62 * t31;
     let t75: T = x_P + t74;
-    let t76: T = firmware::bounds::at_least(t73, t9);
-    let t77: T = firmware::bounds::at_least(t75, t9);
+    let t76: T = firmware::emitted::at_least(t73, t9);
+    let t77: T = firmware::emitted::at_least(t75, t9);
     let t78: T = t62 * t40;
     let t79: T = x_P + t78;
-    let t80: T = firmware::bounds::at_least(t79, t9);
+    let t80: T = firmware::emitted::at_least(t79, t9);
     let t81: T = T::literal(0.2, 0.2);
     let t82: T = T::literal(2.0, 2.0);
     let t83: T = T::literal(6.0, 6.0);
@@ -4988,9 +4955,9 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t953: T = t925 + t952;
     let t954: T = T::literal(7.53586e-8, 7.535860236313183e-8);
     let t955: T = t949 + t954;
-    let t956: T = firmware::bounds::at_least(t847, t9);
-    let t957: T = firmware::bounds::at_least(t853, t9);
-    let t958: T = firmware::bounds::at_least(t859, t9);
+    let t956: T = firmware::emitted::at_least(t847, t9);
+    let t957: T = firmware::emitted::at_least(t853, t9);
+    let t958: T = firmware::emitted::at_least(t859, t9);
     ([t956, t957, t958], [t951, t901, t913, t953, t937, t955])
 }
 
@@ -5000,7 +4967,7 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
 /// Levenberg's damping.
 pub struct Mhe;
 
-impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {
+impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {
     type Plant = Discrete<T>;
 
     #[inline(always)]
@@ -5009,8 +4976,8 @@ impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGE
     }
 
     #[inline(always)]
-    fn settings() -> firmware::mhe::Settings<T, STATES, OUTPUTS> {
-        firmware::mhe::Settings {
+    fn settings() -> firmware::emitted::mhe::Settings<T, STATES, OUTPUTS> {
+        firmware::emitted::mhe::Settings {
             weights: [T::literal(10.0, 10.0), T::literal(0.05, 0.05)],
             prior: [T::literal(6.9391437, 6.9391436561577455), T::literal(4.0, 4.0), T::literal(199.5936, 199.59359398085078)],
             lower: [T::literal(1.7542171, 1.7542171141680702), T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
@@ -5033,7 +5000,7 @@ impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGE
 /// factorisation (`L D Lᵀ`, no square root) and projected onto the box the learning runs cover;
 /// `estimate` gives the targets at the newest sample. The paper's on-line observer, which the map
 /// replaces: the report gives its accuracy beside the converged MHE's, docs/chip.md its cost.
-pub type MheObserver = firmware::mhe::Observer<f32, Mhe, STATES, OUTPUTS, INPUTS, HORIZON, TARGETS>;
+pub type MheObserver = firmware::mhe::Observer<f32, Mhe, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
 pub const KIND: &str = "ukf_box";
@@ -5088,10 +5055,10 @@ const FIXED_SEGMENTS_P: [[i32; 2]; 2] = [
 /// (0.025 % of the range: the table's 2.89e-5, the gains' rounding 1.21e-4, the
 /// integer table 2.61e-5). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
 /// 1614931898 ≤ 2³¹ − 1, checked below at compile time.
-pub const FIXED_MAP_P: firmware::FixedMap<'static> = firmware::FixedMap {
+pub const FIXED_MAP_P: firmware::emitted::fixed::FixedMap<'static> = firmware::emitted::fixed::FixedMap {
     gains: &FIXED_GAINS_P,
     offset: -12486338,
-    table: firmware::FixedTable {
+    table: firmware::emitted::fixed::FixedTable {
         segments: &FIXED_SEGMENTS_P,
         fraction_bits: 27,
         dropped_bits: 12,
@@ -5101,7 +5068,7 @@ pub const FIXED_MAP_P: firmware::FixedMap<'static> = firmware::FixedMap {
 };
 
 const _: () = assert!(
-    firmware::fixed::reach(&FIXED_MAP_P, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64
+    firmware::emitted::fixed::reach(&FIXED_MAP_P, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64
 );
 
 /// Gains of `muX` in integers: the float gains times each signal's scale, times 2^18, rounded.
@@ -5656,10 +5623,10 @@ const FIXED_SEGMENTS_MUX: [[i32; 2]; 533] = [
 /// (0.040 % of the range: the table's 9.02e-5, the gains' rounding 2.75e-4, the
 /// integer table 1.91e-7). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
 /// 1112555970 ≤ 2³¹ − 1, checked below at compile time.
-pub const FIXED_MAP_MUX: firmware::FixedMap<'static> = firmware::FixedMap {
+pub const FIXED_MAP_MUX: firmware::emitted::fixed::FixedMap<'static> = firmware::emitted::fixed::FixedMap {
     gains: &FIXED_GAINS_MUX,
     offset: 16561090,
-    table: firmware::FixedTable {
+    table: firmware::emitted::fixed::FixedTable {
         segments: &FIXED_SEGMENTS_MUX,
         fraction_bits: 18,
         dropped_bits: 3,
@@ -5669,22 +5636,22 @@ pub const FIXED_MAP_MUX: firmware::FixedMap<'static> = firmware::FixedMap {
 };
 
 const _: () = assert!(
-    firmware::fixed::reach(&FIXED_MAP_MUX, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64
+    firmware::emitted::fixed::reach(&FIXED_MAP_MUX, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64
 );
 
 /// This design in integers, for [`firmware::fixed::Observer`]: the range check and the dot products
 /// written out.
 pub struct Fixed;
 
-impl firmware::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {
-    const MAPS: [firmware::FixedMap<'static>; TARGETS] = [FIXED_MAP_P, FIXED_MAP_MUX];
+impl firmware::emitted::fixed::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {
+    const MAPS: [firmware::emitted::fixed::FixedMap<'static>; TARGETS] = [FIXED_MAP_P, FIXED_MAP_MUX];
     const OUTPUT_RANGES: [[i32; 2]; OUTPUTS] = RAW_OUTPUT_RANGES;
     const INPUT_RANGES: [[i32; 2]; INPUTS] = RAW_INPUT_RANGES;
 
     #[inline(always)]
     fn accepts(y: &[i32; OUTPUTS], u: &[i32; INPUTS]) -> bool {
         let _ = u;
-        firmware::fixed::in_range(y[0], -32767, 32767) & firmware::fixed::in_range(y[1], -32767, 32767)
+        firmware::emitted::fixed::in_range(y[0], -32767, 32767) & firmware::emitted::fixed::in_range(y[1], -32767, 32767)
     }
 
     #[inline(always)]

@@ -52,12 +52,12 @@ pub mod ecoli {
     pub use first::{HORIZON, INPUTS, OUTPUTS, TARGETS};
 
     /// The members, by increasing value.
-    pub static MEMBERS: [firmware::Member<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>; 2] = [
-        firmware::Member {
+    pub static MEMBERS: [firmware::emitted::Member<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>; 2] = [
+        firmware::emitted::Member {
             value: 0.5,
             estimate: <super::ecoli_x0_0p5::Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::estimate,
         },
-        firmware::Member {
+        firmware::emitted::Member {
             value: 2.0,
             estimate: <super::ecoli_x0_2::Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::estimate,
         },

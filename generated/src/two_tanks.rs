@@ -24,7 +24,8 @@
 //! assert!(map.estimate().is_none()); // the map: until HORIZON samples have arrived
 //! ```
 
-use firmware::{Estimate, InverseTable, Knots, Maths, Sample, Scalar, TargetMap};
+use firmware::emitted::Maths;
+use firmware::{Estimate, InverseTable, Knots, Sample, Scalar, TargetMap};
 
 /// The design's name.
 pub const NAME: &str = "two_tanks";
@@ -552,7 +553,7 @@ pub static MAPS: [TargetMap<'static, f32>; TARGETS] = <Design as firmware::Desig
 
 /// This design for [`firmware::Observer`]: its finite check and its dot products are written out (the
 /// compiler does not unroll loops when optimising for size), the sums in the order of
-/// [`firmware::estimate_by_loops`], so that both give the same bits.
+/// `firmware::emitted::estimate_by_loops`, so that both give the same bits.
 pub struct Design;
 
 impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
@@ -1244,56 +1245,39 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 }
 
 /// The EKF from the centre of the state box ([`Ekf`], the same filter and constants) with the
-/// observers' interface: `push` takes a sample, `estimate` gives the targets of the latest accepted
-/// one (each `Inside`: the filter does not saturate), `reset` starts again. It has an estimate from
-/// the first accepted sample on; a refused sample keeps the previous one.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BoxEkfObserver {
-    filter: Ekf<f32>,
-    latest: Option<[Estimate<f32>; TARGETS]>,
-}
+/// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
+/// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
+/// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
+/// refused sample keeps the previous one.
+pub type BoxEkfObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
-impl Default for BoxEkfObserver {
-    fn default() -> Self {
-        Self::new()
+impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
+    const FRESH: Self = Ekf { x: [15.0, 15.0], p: [26.117428, 0.0, 729.1228] };
+
+    #[inline(always)]
+    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
+        Ekf::push(self, y, u)
+    }
+
+    #[inline(always)]
+    fn targets(x: &[f32; STATES], u: &[f32; INPUTS]) -> [f32; TARGETS] {
+        targets(x, u)
     }
 }
 
-impl BoxEkfObserver {
-    /// A fresh observer (the filter at its start), holding no sample yet.
-    pub const fn new() -> Self {
-        BoxEkfObserver {
-            filter: Ekf { x: [15.0, 15.0], p: [26.117428, 0.0, 729.1228] },
-            latest: None,
-        }
-    }
+/// [`BoxEkfObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
+/// wrote its own observer type: measured on the chip, without them the whole-program optimisation
+/// inlines this design's filter samples differently, and every observer over them runs other
+/// instruction counts. Not for calling: use the observer's methods.
+#[doc(hidden)]
+pub fn ekf_observer_push(observer: &mut BoxEkfObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+    observer.push(y, u)
+}
 
-    /// Takes the sample `(y, u)`: [`Ekf::push`], then the targets of its estimate `x̂(k|k)`.
-    pub fn push(&mut self, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
-        let x = self.filter.push(&y, &u)?;
-        let values = targets(&x, &u);
-        let mut latest = [Estimate { value: 0.0, saturation: firmware::Saturation::Inside }; TARGETS];
-        for (e, value) in latest.iter_mut().zip(values) {
-            e.value = value;
-        }
-        self.latest = Some(latest);
-        Ok(())
-    }
-
-    /// The targets of the latest accepted sample; `None` before the first.
-    pub fn estimate(&self) -> Option<[Estimate<f32>; TARGETS]> {
-        self.latest
-    }
-
-    /// Back to the start: the filter at the box centre, no estimate.
-    pub fn reset(&mut self) {
-        *self = Self::new();
-    }
-
-    /// Whether it has an estimate.
-    pub fn is_ready(&self) -> bool {
-        self.latest.is_some()
-    }
+/// See [`ekf_observer_push`].
+#[doc(hidden)]
+pub fn ekf_observer_estimate(observer: &BoxEkfObserver) -> Option<[Estimate<f32>; TARGETS]> {
+    observer.estimate()
 }
 
 /// One sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
@@ -1831,56 +1815,39 @@ pub fn ukf() -> Ukf {
 }
 
 /// The UKF from the centre of the state box ([`Ukf`], the same filter and constants) with the
-/// observers' interface: `push` takes a sample, `estimate` gives the targets of the latest accepted
-/// one (each `Inside`: the filter does not saturate), `reset` starts again. It has an estimate from
-/// the first accepted sample on; a refused sample keeps the previous one.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct UkfObserver {
-    filter: Ukf<f32>,
-    latest: Option<[Estimate<f32>; TARGETS]>,
-}
+/// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
+/// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
+/// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
+/// refused sample keeps the previous one.
+pub type UkfObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
-impl Default for UkfObserver {
-    fn default() -> Self {
-        Self::new()
+impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
+    const FRESH: Self = Ukf { x: [15.0, 15.0], p: [29.562452, 0.0, 674.7667] };
+
+    #[inline(always)]
+    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
+        Ukf::push(self, y, u)
+    }
+
+    #[inline(always)]
+    fn targets(x: &[f32; STATES], u: &[f32; INPUTS]) -> [f32; TARGETS] {
+        targets(x, u)
     }
 }
 
-impl UkfObserver {
-    /// A fresh observer (the filter at its start), holding no sample yet.
-    pub const fn new() -> Self {
-        UkfObserver {
-            filter: Ukf { x: [15.0, 15.0], p: [29.562452, 0.0, 674.7667] },
-            latest: None,
-        }
-    }
+/// [`UkfObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
+/// wrote its own observer type: measured on the chip, without them the whole-program optimisation
+/// inlines this design's filter samples differently, and every observer over them runs other
+/// instruction counts. Not for calling: use the observer's methods.
+#[doc(hidden)]
+pub fn ukf_observer_push(observer: &mut UkfObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+    observer.push(y, u)
+}
 
-    /// Takes the sample `(y, u)`: [`Ukf::push`], then the targets of its estimate `x̂(k|k)`.
-    pub fn push(&mut self, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
-        let x = self.filter.push(&y, &u)?;
-        let values = targets(&x, &u);
-        let mut latest = [Estimate { value: 0.0, saturation: firmware::Saturation::Inside }; TARGETS];
-        for (e, value) in latest.iter_mut().zip(values) {
-            e.value = value;
-        }
-        self.latest = Some(latest);
-        Ok(())
-    }
-
-    /// The targets of the latest accepted sample; `None` before the first.
-    pub fn estimate(&self) -> Option<[Estimate<f32>; TARGETS]> {
-        self.latest
-    }
-
-    /// Back to the start: the filter at the box centre, no estimate.
-    pub fn reset(&mut self) {
-        *self = Self::new();
-    }
-
-    /// Whether it has an estimate.
-    pub fn is_ready(&self) -> bool {
-        self.latest.is_some()
-    }
+/// See [`ukf_observer_push`].
+#[doc(hidden)]
+pub fn ukf_observer_estimate(observer: &UkfObserver) -> Option<[Estimate<f32>; TARGETS]> {
+    observer.estimate()
 }
 
 /// One UKF sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
@@ -1897,7 +1864,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t8: T = t6 * t7;
     let t9: T = T::literal(1.1754944e-38, 1.1754943508222875e-38);
     let t10: T = t8 + t9;
-    let t11: T = firmware::bounds::at_least(cov0, t10);
+    let t11: T = firmware::emitted::at_least(cov0, t10);
     let t12: T = Maths::sqrt(t11);
     let t13: T = t5 / t12;
     let t14: T = cov1 * t13;
@@ -1906,7 +1873,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t17: T = Maths::abs(cov2);
     let t18: T = t6 * t17;
     let t19: T = t18 + t9;
-    let t20: T = firmware::bounds::at_least(t16, t19);
+    let t20: T = firmware::emitted::at_least(t16, t19);
     let t21: T = Maths::sqrt(t20);
     let t22: T = T::literal(1.4142135, 1.4142135623730951);
     let t23: T = t22 * t12;
@@ -1962,7 +1929,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t73: T = Maths::abs(t60);
     let t74: T = t6 * t73;
     let t75: T = t74 + t9;
-    let t76: T = firmware::bounds::at_least(t60, t75);
+    let t76: T = firmware::emitted::at_least(t60, t75);
     let t77: T = Maths::sqrt(t76);
     let t78: T = t5 / t77;
     let t79: T = t64 * t78;
@@ -1984,7 +1951,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t95: T = Maths::abs(t90);
     let t96: T = t6 * t95;
     let t97: T = t96 + t9;
-    let t98: T = firmware::bounds::at_least(t90, t97);
+    let t98: T = firmware::emitted::at_least(t90, t97);
     let t99: T = Maths::sqrt(t98);
     let t100: T = t5 / t99;
     let t101: T = t92 * t100;
@@ -1993,7 +1960,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t104: T = Maths::abs(t94);
     let t105: T = t6 * t104;
     let t106: T = t105 + t9;
-    let t107: T = firmware::bounds::at_least(t103, t106);
+    let t107: T = firmware::emitted::at_least(t103, t106);
     let t108: T = Maths::sqrt(t107);
     let t109: T = t22 * t99;
     let t110: T = t86 + t109;
@@ -2324,7 +2291,7 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t8: T = t6 * t7;
     let t9: T = T::literal(1.1754944e-38, 1.1754943508222875e-38);
     let t10: T = t8 + t9;
-    let t11: T = firmware::bounds::at_least(cov0, t10);
+    let t11: T = firmware::emitted::at_least(cov0, t10);
     let t12: T = Maths::sqrt(t11);
     let t13: T = t5 / t12;
     let t14: T = cov1 * t13;
@@ -2333,7 +2300,7 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t17: T = Maths::abs(cov2);
     let t18: T = t6 * t17;
     let t19: T = t18 + t9;
-    let t20: T = firmware::bounds::at_least(t16, t19);
+    let t20: T = firmware::emitted::at_least(t16, t19);
     let t21: T = Maths::sqrt(t20);
     let t22: T = T::literal(1.4142135, 1.4142135623730951);
     let t23: T = t22 * t12;
@@ -2715,7 +2682,7 @@ static CORRECTED_BLENDS: [[(f32, f64); SCHEDULED]; 30] = [
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Corrector;
 
-impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for Corrector {
+impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for Corrector {
     type Carried = [T; STATES];
     const START_UP: usize = 30;
     const STEADY_READS_MAP: bool = false;
@@ -2750,7 +2717,7 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
         } else {
             corrected_steady(x, y, u, f)
         };
-        let states = firmware::started::clamp(&raw, &pick(&[(4.3011494, 4.3011495275450145), (4.715646, 4.715646027826667)]), &pick(&[(26.20642, 26.20642049189526), (25.001827, 25.001827888818976)]));
+        let states = firmware::emitted::clamp(&raw, &pick(&[(4.3011494, 4.3011495275450145), (4.715646, 4.715646027826667)]), &pick(&[(26.20642, 26.20642049189526), (25.001827, 25.001827888818976)]));
         let mut estimate = [T::ZERO; STATES];
         for (e, s) in estimate.iter_mut().zip(&states) {
             *e = s.value;
@@ -2773,7 +2740,7 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
 }
 
 /// The model-corrected map over this design's map.
-pub type CorrectedObserver = firmware::Started<f32, Design, Corrector, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
+pub type CorrectedObserver = firmware::Started<f32, Design, Corrector, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 /// One sampling period of the model from `x`, the value alone: `x⁺`, written out by `gen`.
 #[allow(unused_variables, non_snake_case)]
@@ -2918,7 +2885,7 @@ pub const STARTED_P0: [f64; STATES] = [0.11871187132620452, 0.010944762708346205
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct StartedEkf;
 
-impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
     type Carried = ([T; STATES], [T; COVARIANCE]);
     const START_UP: usize = 0;
     const STEADY_READS_MAP: bool = false;
@@ -2961,7 +2928,7 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
 }
 
 /// The EKF started by this design's map.
-pub type StartedEkfObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
+pub type StartedEkfObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 /// The check of [`RestartedEkfObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
 /// (no unit).
@@ -2985,7 +2952,7 @@ fn restart_disagrees<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], f:
     !(d <= T::literal(8.0, 8.0))
 }
 
-impl firmware::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+impl firmware::emitted::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
     const FRESH: ([f32; STATES], [f32; COVARIANCE]) = ([15.0, 15.0], [26.117428, 0.0, 729.1228]);
 
     #[inline(always)]
@@ -2994,7 +2961,7 @@ impl firmware::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
     }
 }
 
-impl firmware::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+impl firmware::emitted::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
     const FRESH: ([f64; STATES], [f64; COVARIANCE]) = ([15.0, 15.0], [26.117428554897625, 0.0, 729.122811712909]);
 
     #[inline(always)]
@@ -3007,7 +2974,7 @@ impl firmware::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
 /// at its first estimate, and restarts from it as [`StartedEkfObserver`] starts when the two disagree
 /// (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's guess-free start where the
 /// box centre is far from the plant.
-pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
+pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
@@ -3015,7 +2982,7 @@ pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HOR
 /// Levenberg's damping.
 pub struct Mhe;
 
-impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {
+impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {
     type Plant = Discrete<T>;
 
     #[inline(always)]
@@ -3024,8 +2991,8 @@ impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGE
     }
 
     #[inline(always)]
-    fn settings() -> firmware::mhe::Settings<T, STATES, OUTPUTS> {
-        firmware::mhe::Settings {
+    fn settings() -> firmware::emitted::mhe::Settings<T, STATES, OUTPUTS> {
+        firmware::emitted::mhe::Settings {
             weights: [T::literal(25.0, 25.0)],
             prior: [T::literal(2.0840242, 2.084024117767096), T::literal(2.4299614, 2.429961378125026)],
             lower: [T::literal(4.3011494, 4.3011495275450145), T::literal(4.715646, 4.715646027826667)],
@@ -3048,7 +3015,7 @@ impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGE
 /// factorisation (`L D Lᵀ`, no square root) and projected onto the box the learning runs cover;
 /// `estimate` gives the targets at the newest sample. The paper's on-line observer, which the map
 /// replaces: the report gives its accuracy beside the converged MHE's, docs/chip.md its cost.
-pub type MheObserver = firmware::mhe::Observer<f32, Mhe, STATES, OUTPUTS, INPUTS, HORIZON, TARGETS>;
+pub type MheObserver = firmware::mhe::Observer<f32, Mhe, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
 pub const KIND: &str = "corrected";
@@ -3309,10 +3276,10 @@ const FIXED_SEGMENTS_H1: [[i32; 2]; 194] = [
 /// (0.190 % of the range: the table's 2.18e-3, the gains' rounding 3.94e-2, the
 /// integer table 7.83e-6). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
 /// 1172455080 ≤ 2³¹ − 1, checked below at compile time.
-pub const FIXED_MAP_H1: firmware::FixedMap<'static> = firmware::FixedMap {
+pub const FIXED_MAP_H1: firmware::emitted::fixed::FixedMap<'static> = firmware::emitted::fixed::FixedMap {
     gains: &FIXED_GAINS_H1,
     offset: -31963774,
-    table: firmware::FixedTable {
+    table: firmware::emitted::fixed::FixedTable {
         segments: &FIXED_SEGMENTS_H1,
         fraction_bits: 19,
         dropped_bits: 4,
@@ -3322,7 +3289,7 @@ pub const FIXED_MAP_H1: firmware::FixedMap<'static> = firmware::FixedMap {
 };
 
 const _: () = assert!(
-    firmware::fixed::reach(&FIXED_MAP_H1, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64
+    firmware::emitted::fixed::reach(&FIXED_MAP_H1, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64
 );
 
 /// Gains of `h2` in integers: the float gains times each signal's scale, times 2^20, rounded.
@@ -3544,10 +3511,10 @@ const FIXED_SEGMENTS_H2: [[i32; 2]; 186] = [
 /// (0.101 % of the range: the table's 2.02e-3, the gains' rounding 1.85e-2, the
 /// integer table 7.27e-6). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
 /// 1084179881 ≤ 2³¹ − 1, checked below at compile time.
-pub const FIXED_MAP_H2: firmware::FixedMap<'static> = firmware::FixedMap {
+pub const FIXED_MAP_H2: firmware::emitted::fixed::FixedMap<'static> = firmware::emitted::fixed::FixedMap {
     gains: &FIXED_GAINS_H2,
     offset: -48376292,
-    table: firmware::FixedTable {
+    table: firmware::emitted::fixed::FixedTable {
         segments: &FIXED_SEGMENTS_H2,
         fraction_bits: 20,
         dropped_bits: 5,
@@ -3557,21 +3524,21 @@ pub const FIXED_MAP_H2: firmware::FixedMap<'static> = firmware::FixedMap {
 };
 
 const _: () = assert!(
-    firmware::fixed::reach(&FIXED_MAP_H2, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64
+    firmware::emitted::fixed::reach(&FIXED_MAP_H2, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64
 );
 
 /// This design in integers, for [`firmware::fixed::Observer`]: the range check and the dot products
 /// written out.
 pub struct Fixed;
 
-impl firmware::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {
-    const MAPS: [firmware::FixedMap<'static>; TARGETS] = [FIXED_MAP_H1, FIXED_MAP_H2];
+impl firmware::emitted::fixed::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {
+    const MAPS: [firmware::emitted::fixed::FixedMap<'static>; TARGETS] = [FIXED_MAP_H1, FIXED_MAP_H2];
     const OUTPUT_RANGES: [[i32; 2]; OUTPUTS] = RAW_OUTPUT_RANGES;
     const INPUT_RANGES: [[i32; 2]; INPUTS] = RAW_INPUT_RANGES;
 
     #[inline(always)]
     fn accepts(y: &[i32; OUTPUTS], u: &[i32; INPUTS]) -> bool {
-        firmware::fixed::in_range(y[0], -32767, 32767) & firmware::fixed::in_range(u[0], -32767, 32767)
+        firmware::emitted::fixed::in_range(y[0], -32767, 32767) & firmware::emitted::fixed::in_range(u[0], -32767, 32767)
     }
 
     #[inline(always)]

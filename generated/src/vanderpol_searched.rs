@@ -24,7 +24,8 @@
 //! assert!(map.estimate().is_none()); // the map: until HORIZON samples have arrived
 //! ```
 
-use firmware::{Estimate, InverseTable, Knots, Maths, Sample, Scalar, TargetMap};
+use firmware::emitted::Maths;
+use firmware::{Estimate, InverseTable, Knots, Sample, Scalar, TargetMap};
 
 /// The design's name.
 pub const NAME: &str = "vanderpol_searched";
@@ -166,7 +167,7 @@ pub static MAPS: [TargetMap<'static, f32>; TARGETS] = <Design as firmware::Desig
 
 /// This design for [`firmware::Observer`]: its finite check and its dot products are written out (the
 /// compiler does not unroll loops when optimising for size), the sums in the order of
-/// [`firmware::estimate_by_loops`], so that both give the same bits.
+/// `firmware::emitted::estimate_by_loops`, so that both give the same bits.
 pub struct Design;
 
 impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
@@ -500,56 +501,39 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 }
 
 /// The EKF from the centre of the state box ([`Ekf`], the same filter and constants) with the
-/// observers' interface: `push` takes a sample, `estimate` gives the targets of the latest accepted
-/// one (each `Inside`: the filter does not saturate), `reset` starts again. It has an estimate from
-/// the first accepted sample on; a refused sample keeps the previous one.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BoxEkfObserver {
-    filter: Ekf<f32>,
-    latest: Option<[Estimate<f32>; TARGETS]>,
-}
+/// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
+/// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
+/// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
+/// refused sample keeps the previous one.
+pub type BoxEkfObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
-impl Default for BoxEkfObserver {
-    fn default() -> Self {
-        Self::new()
+impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
+    const FRESH: Self = Ekf { x: [0.0, 0.0], p: [0.111212246, 0.0, 0.37384713] };
+
+    #[inline(always)]
+    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
+        Ekf::push(self, y, u)
+    }
+
+    #[inline(always)]
+    fn targets(x: &[f32; STATES], u: &[f32; INPUTS]) -> [f32; TARGETS] {
+        targets(x, u)
     }
 }
 
-impl BoxEkfObserver {
-    /// A fresh observer (the filter at its start), holding no sample yet.
-    pub const fn new() -> Self {
-        BoxEkfObserver {
-            filter: Ekf { x: [0.0, 0.0], p: [0.111212246, 0.0, 0.37384713] },
-            latest: None,
-        }
-    }
+/// [`BoxEkfObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
+/// wrote its own observer type: measured on the chip, without them the whole-program optimisation
+/// inlines this design's filter samples differently, and every observer over them runs other
+/// instruction counts. Not for calling: use the observer's methods.
+#[doc(hidden)]
+pub fn ekf_observer_push(observer: &mut BoxEkfObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+    observer.push(y, u)
+}
 
-    /// Takes the sample `(y, u)`: [`Ekf::push`], then the targets of its estimate `x̂(k|k)`.
-    pub fn push(&mut self, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
-        let x = self.filter.push(&y, &u)?;
-        let values = targets(&x, &u);
-        let mut latest = [Estimate { value: 0.0, saturation: firmware::Saturation::Inside }; TARGETS];
-        for (e, value) in latest.iter_mut().zip(values) {
-            e.value = value;
-        }
-        self.latest = Some(latest);
-        Ok(())
-    }
-
-    /// The targets of the latest accepted sample; `None` before the first.
-    pub fn estimate(&self) -> Option<[Estimate<f32>; TARGETS]> {
-        self.latest
-    }
-
-    /// Back to the start: the filter at the box centre, no estimate.
-    pub fn reset(&mut self) {
-        *self = Self::new();
-    }
-
-    /// Whether it has an estimate.
-    pub fn is_ready(&self) -> bool {
-        self.latest.is_some()
-    }
+/// See [`ekf_observer_push`].
+#[doc(hidden)]
+pub fn ekf_observer_estimate(observer: &BoxEkfObserver) -> Option<[Estimate<f32>; TARGETS]> {
+    observer.estimate()
 }
 
 /// One sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
@@ -1011,56 +995,39 @@ pub fn ukf() -> Ukf {
 }
 
 /// The UKF from the centre of the state box ([`Ukf`], the same filter and constants) with the
-/// observers' interface: `push` takes a sample, `estimate` gives the targets of the latest accepted
-/// one (each `Inside`: the filter does not saturate), `reset` starts again. It has an estimate from
-/// the first accepted sample on; a refused sample keeps the previous one.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct UkfObserver {
-    filter: Ukf<f32>,
-    latest: Option<[Estimate<f32>; TARGETS]>,
-}
+/// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
+/// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
+/// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
+/// refused sample keeps the previous one.
+pub type UkfObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
-impl Default for UkfObserver {
-    fn default() -> Self {
-        Self::new()
+impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
+    const FRESH: Self = Ukf { x: [0.0, 0.0], p: [2.2862344, 0.0, 110.16379] };
+
+    #[inline(always)]
+    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
+        Ukf::push(self, y, u)
+    }
+
+    #[inline(always)]
+    fn targets(x: &[f32; STATES], u: &[f32; INPUTS]) -> [f32; TARGETS] {
+        targets(x, u)
     }
 }
 
-impl UkfObserver {
-    /// A fresh observer (the filter at its start), holding no sample yet.
-    pub const fn new() -> Self {
-        UkfObserver {
-            filter: Ukf { x: [0.0, 0.0], p: [2.2862344, 0.0, 110.16379] },
-            latest: None,
-        }
-    }
+/// [`UkfObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
+/// wrote its own observer type: measured on the chip, without them the whole-program optimisation
+/// inlines this design's filter samples differently, and every observer over them runs other
+/// instruction counts. Not for calling: use the observer's methods.
+#[doc(hidden)]
+pub fn ukf_observer_push(observer: &mut UkfObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+    observer.push(y, u)
+}
 
-    /// Takes the sample `(y, u)`: [`Ukf::push`], then the targets of its estimate `x̂(k|k)`.
-    pub fn push(&mut self, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
-        let x = self.filter.push(&y, &u)?;
-        let values = targets(&x, &u);
-        let mut latest = [Estimate { value: 0.0, saturation: firmware::Saturation::Inside }; TARGETS];
-        for (e, value) in latest.iter_mut().zip(values) {
-            e.value = value;
-        }
-        self.latest = Some(latest);
-        Ok(())
-    }
-
-    /// The targets of the latest accepted sample; `None` before the first.
-    pub fn estimate(&self) -> Option<[Estimate<f32>; TARGETS]> {
-        self.latest
-    }
-
-    /// Back to the start: the filter at the box centre, no estimate.
-    pub fn reset(&mut self) {
-        *self = Self::new();
-    }
-
-    /// Whether it has an estimate.
-    pub fn is_ready(&self) -> bool {
-        self.latest.is_some()
-    }
+/// See [`ukf_observer_push`].
+#[doc(hidden)]
+pub fn ukf_observer_estimate(observer: &UkfObserver) -> Option<[Estimate<f32>; TARGETS]> {
+    observer.estimate()
 }
 
 /// One UKF sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
@@ -1077,7 +1044,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t8: T = t6 * t7;
     let t9: T = T::literal(1.1754944e-38, 1.1754943508222875e-38);
     let t10: T = t8 + t9;
-    let t11: T = firmware::bounds::at_least(cov0, t10);
+    let t11: T = firmware::emitted::at_least(cov0, t10);
     let t12: T = Maths::sqrt(t11);
     let t13: T = t5 / t12;
     let t14: T = cov1 * t13;
@@ -1086,7 +1053,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t17: T = Maths::abs(cov2);
     let t18: T = t6 * t17;
     let t19: T = t18 + t9;
-    let t20: T = firmware::bounds::at_least(t16, t19);
+    let t20: T = firmware::emitted::at_least(t16, t19);
     let t21: T = Maths::sqrt(t20);
     let t22: T = T::literal(1.4142135, 1.4142135623730951);
     let t23: T = t22 * t12;
@@ -1146,7 +1113,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t77: T = Maths::abs(t64);
     let t78: T = t6 * t77;
     let t79: T = t78 + t9;
-    let t80: T = firmware::bounds::at_least(t64, t79);
+    let t80: T = firmware::emitted::at_least(t64, t79);
     let t81: T = Maths::sqrt(t80);
     let t82: T = t5 / t81;
     let t83: T = t68 * t82;
@@ -1168,7 +1135,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t99: T = Maths::abs(t94);
     let t100: T = t6 * t99;
     let t101: T = t100 + t9;
-    let t102: T = firmware::bounds::at_least(t94, t101);
+    let t102: T = firmware::emitted::at_least(t94, t101);
     let t103: T = Maths::sqrt(t102);
     let t104: T = t5 / t103;
     let t105: T = t96 * t104;
@@ -1177,7 +1144,7 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t108: T = Maths::abs(t98);
     let t109: T = t6 * t108;
     let t110: T = t109 + t9;
-    let t111: T = firmware::bounds::at_least(t107, t110);
+    let t111: T = firmware::emitted::at_least(t107, t110);
     let t112: T = Maths::sqrt(t111);
     let t113: T = t22 * t103;
     let t114: T = t90 + t113;
@@ -1447,7 +1414,7 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t8: T = t6 * t7;
     let t9: T = T::literal(1.1754944e-38, 1.1754943508222875e-38);
     let t10: T = t8 + t9;
-    let t11: T = firmware::bounds::at_least(cov0, t10);
+    let t11: T = firmware::emitted::at_least(cov0, t10);
     let t12: T = Maths::sqrt(t11);
     let t13: T = t5 / t12;
     let t14: T = cov1 * t13;
@@ -1456,7 +1423,7 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t17: T = Maths::abs(cov2);
     let t18: T = t6 * t17;
     let t19: T = t18 + t9;
-    let t20: T = firmware::bounds::at_least(t16, t19);
+    let t20: T = firmware::emitted::at_least(t16, t19);
     let t21: T = Maths::sqrt(t20);
     let t22: T = T::literal(1.4142135, 1.4142135623730951);
     let t23: T = t22 * t12;
@@ -1795,7 +1762,7 @@ static CORRECTED_BLENDS: [[(f32, f64); SCHEDULED]; 48] = [
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Corrector;
 
-impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for Corrector {
+impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for Corrector {
     type Carried = [T; STATES];
     const START_UP: usize = 48;
     const STEADY_READS_MAP: bool = false;
@@ -1830,7 +1797,7 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
         } else {
             corrected_steady(x, y, u, f)
         };
-        let states = firmware::started::clamp(&raw, &pick(&[(-2.0616221, -2.0616220876343716), (-4.6765766, -4.676576635756306)]), &pick(&[(2.0616221, 2.0616220876343716), (4.6765766, 4.676576635756306)]));
+        let states = firmware::emitted::clamp(&raw, &pick(&[(-2.0616221, -2.0616220876343716), (-4.6765766, -4.676576635756306)]), &pick(&[(2.0616221, 2.0616220876343716), (4.6765766, 4.676576635756306)]));
         let mut estimate = [T::ZERO; STATES];
         for (e, s) in estimate.iter_mut().zip(&states) {
             *e = s.value;
@@ -1853,7 +1820,7 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
 }
 
 /// The model-corrected map over this design's map.
-pub type CorrectedObserver = firmware::Started<f32, Design, Corrector, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
+pub type CorrectedObserver = firmware::Started<f32, Design, Corrector, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 /// One sampling period of the model from `x`, the value alone: `x⁺`, written out by `gen`.
 #[allow(unused_variables, non_snake_case)]
@@ -1971,7 +1938,7 @@ pub const STARTED_P0: [f64; STATES] = [0.04144093928928408, 0.17765506280767346]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct StartedEkf;
 
-impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
     type Carried = ([T; STATES], [T; COVARIANCE]);
     const START_UP: usize = 0;
     const STEADY_READS_MAP: bool = false;
@@ -2014,7 +1981,7 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
 }
 
 /// The EKF started by this design's map.
-pub type StartedEkfObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
+pub type StartedEkfObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 /// The check of [`RestartedEkfObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
 /// (no unit).
@@ -2038,7 +2005,7 @@ fn restart_disagrees<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], f:
     !(d <= T::literal(8.0, 8.0))
 }
 
-impl firmware::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+impl firmware::emitted::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
     const FRESH: ([f32; STATES], [f32; COVARIANCE]) = ([0.0, 0.0], [0.111212246, 0.0, 0.37384713]);
 
     #[inline(always)]
@@ -2047,7 +2014,7 @@ impl firmware::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
     }
 }
 
-impl firmware::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+impl firmware::emitted::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
     const FRESH: ([f64; STATES], [f64; COVARIANCE]) = ([0.0, 0.0], [0.11121224825883513, 0.0, 0.37384712249616453]);
 
     #[inline(always)]
@@ -2060,7 +2027,7 @@ impl firmware::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
 /// at its first estimate, and restarts from it as [`StartedEkfObserver`] starts when the two disagree
 /// (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's guess-free start where the
 /// box centre is far from the plant.
-pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
+pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
@@ -2068,7 +2035,7 @@ pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HOR
 /// Levenberg's damping.
 pub struct Mhe;
 
-impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {
+impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {
     type Plant = Discrete<T>;
 
     #[inline(always)]
@@ -2077,8 +2044,8 @@ impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGE
     }
 
     #[inline(always)]
-    fn settings() -> firmware::mhe::Settings<T, STATES, OUTPUTS> {
-        firmware::mhe::Settings {
+    fn settings() -> firmware::emitted::mhe::Settings<T, STATES, OUTPUTS> {
+        firmware::emitted::mhe::Settings {
             weights: [T::literal(5.0, 5.0)],
             prior: [T::literal(3787.7322, 3787.732148311544), T::literal(611.06323, 611.0632303408023)],
             lower: [T::literal(-2.5690963, -2.569096244727641), T::literal(-6.396272, -6.396272070658906)],
@@ -2101,7 +2068,7 @@ impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGE
 /// factorisation (`L D Lᵀ`, no square root) and projected onto the box the learning runs cover;
 /// `estimate` gives the targets at the newest sample. The paper's on-line observer, which the map
 /// replaces: the report gives its accuracy beside the converged MHE's, docs/chip.md its cost.
-pub type MheObserver = firmware::mhe::Observer<f32, Mhe, STATES, OUTPUTS, INPUTS, HORIZON, TARGETS>;
+pub type MheObserver = firmware::mhe::Observer<f32, Mhe, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
 pub const KIND: &str = "corrected";
@@ -2165,10 +2132,10 @@ const FIXED_SEGMENTS_X1: [[i32; 2]; 1] = [
 /// (0.050 % of the range: the table's 2.13e-4, the gains' rounding 1.47e-3, the
 /// integer table 3.70e-4). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
 /// 1078990706 ≤ 2³¹ − 1, checked below at compile time.
-pub const FIXED_MAP_X1: firmware::FixedMap<'static> = firmware::FixedMap {
+pub const FIXED_MAP_X1: firmware::emitted::fixed::FixedMap<'static> = firmware::emitted::fixed::FixedMap {
     gains: &FIXED_GAINS_X1,
     offset: 134309904,
-    table: firmware::FixedTable {
+    table: firmware::emitted::fixed::FixedTable {
         segments: &FIXED_SEGMENTS_X1,
         fraction_bits: 28,
         dropped_bits: 13,
@@ -2178,7 +2145,7 @@ pub const FIXED_MAP_X1: firmware::FixedMap<'static> = firmware::FixedMap {
 };
 
 const _: () = assert!(
-    firmware::fixed::reach(&FIXED_MAP_X1, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64
+    firmware::emitted::fixed::reach(&FIXED_MAP_X1, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64
 );
 
 /// Gains of `x2` in integers: the float gains times each signal's scale, times 2^29, rounded.
@@ -2211,10 +2178,10 @@ const FIXED_SEGMENTS_X2: [[i32; 2]; 1] = [
 /// (0.032 % of the range: the table's 7.35e-6, the gains' rounding 2.24e-3, the
 /// integer table 7.74e-4). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =
 /// 2027860877 ≤ 2³¹ − 1, checked below at compile time.
-pub const FIXED_MAP_X2: firmware::FixedMap<'static> = firmware::FixedMap {
+pub const FIXED_MAP_X2: firmware::emitted::fixed::FixedMap<'static> = firmware::emitted::fixed::FixedMap {
     gains: &FIXED_GAINS_X2,
     offset: 268551496,
-    table: firmware::FixedTable {
+    table: firmware::emitted::fixed::FixedTable {
         segments: &FIXED_SEGMENTS_X2,
         fraction_bits: 29,
         dropped_bits: 14,
@@ -2224,22 +2191,22 @@ pub const FIXED_MAP_X2: firmware::FixedMap<'static> = firmware::FixedMap {
 };
 
 const _: () = assert!(
-    firmware::fixed::reach(&FIXED_MAP_X2, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64
+    firmware::emitted::fixed::reach(&FIXED_MAP_X2, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64
 );
 
 /// This design in integers, for [`firmware::fixed::Observer`]: the range check and the dot products
 /// written out.
 pub struct Fixed;
 
-impl firmware::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {
-    const MAPS: [firmware::FixedMap<'static>; TARGETS] = [FIXED_MAP_X1, FIXED_MAP_X2];
+impl firmware::emitted::fixed::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {
+    const MAPS: [firmware::emitted::fixed::FixedMap<'static>; TARGETS] = [FIXED_MAP_X1, FIXED_MAP_X2];
     const OUTPUT_RANGES: [[i32; 2]; OUTPUTS] = RAW_OUTPUT_RANGES;
     const INPUT_RANGES: [[i32; 2]; INPUTS] = RAW_INPUT_RANGES;
 
     #[inline(always)]
     fn accepts(y: &[i32; OUTPUTS], u: &[i32; INPUTS]) -> bool {
         let _ = u;
-        firmware::fixed::in_range(y[0], -32767, 32767)
+        firmware::emitted::fixed::in_range(y[0], -32767, 32767)
     }
 
     #[inline(always)]

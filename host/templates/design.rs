@@ -23,7 +23,8 @@
 //! assert!(map.estimate().is_none()); // the map: until HORIZON samples have arrived
 //! ```
 
-use firmware::{Estimate, InverseTable, Knots, Maths, Sample, Scalar, TargetMap};
+use firmware::emitted::Maths;
+use firmware::{Estimate, InverseTable, Knots, Sample, Scalar, TargetMap};
 
 /// The design's name.
 pub const NAME: &str = "{{ name }}";
@@ -136,7 +137,7 @@ pub static MAPS: [TargetMap<'static, f32>; TARGETS] = <Design as firmware::Desig
 
 /// This design for [`firmware::Observer`]: its finite check and its dot products are written out (the
 /// compiler does not unroll loops when optimising for size), the sums in the order of
-/// [`firmware::estimate_by_loops`], so that both give the same bits.
+/// `firmware::emitted::estimate_by_loops`, so that both give the same bits.
 pub struct Design;
 
 impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {

@@ -46,9 +46,9 @@ pub mod {{ f.name }} {
     pub use first::{HORIZON, INPUTS, OUTPUTS, TARGETS};
 
     /// The members, by increasing value.
-    pub static MEMBERS: [firmware::Member<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>; {{ f.members.len() }}] = [
+    pub static MEMBERS: [firmware::emitted::Member<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>; {{ f.members.len() }}] = [
 {%- for m in f.members %}
-        firmware::Member {
+        firmware::emitted::Member {
             value: {{ m.1 }},
             estimate: <super::{{ m.0 }}::Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::estimate,
         },

@@ -17,7 +17,7 @@ const KINDS: [(&str, &str); 8] = [
     ("ukf", "UkfObserver::new()"),
 ];
 
-/// The unscented Kalman filter's observer: a type of the design's own, not a firmware shell, so the
+/// The unscented Kalman filter's observer (`firmware::FilterObserver` over the design's `Ukf`): the
 /// runner drives it through closures too.
 const UKF: &str = "ukf";
 

@@ -141,7 +141,7 @@ macro_rules! emitted_constants {
                 k: $d::CORRECTED_K.to_vec(),
                 k_start: $d::CORRECTED_K_START.to_vec(),
                 schedule: $d::CORRECTED_SCHEDULE,
-                start_up: <$d::Corrector as firmware::Follower<
+                start_up: <$d::Corrector as firmware::emitted::Follower<
                     f32,
                     { $d::STATES },
                     { $d::OUTPUTS },

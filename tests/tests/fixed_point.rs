@@ -127,7 +127,7 @@ fn example_1s_fixed_point_map_is_within_its_proven_bound_on_every_validation_win
 #[test]
 fn example_1s_generated_integers_are_the_proven_ones() {
     let (_, _, fixed) = example_1();
-    use firmware::FixedDesign;
+    use firmware::emitted::fixed::FixedDesign;
     let generated = <generated::vanderpol::Fixed as FixedDesign<10, 1, 0, 2>>::MAPS;
     for (emitted, proven) in generated.iter().zip(&fixed.targets) {
         assert_eq!(*emitted, proven.as_firmware());
@@ -147,7 +147,7 @@ macro_rules! run_generated_and_loops {
         let mut all = Vec::new();
         $({
             use generated::$d as d;
-            use firmware::FixedDesign;
+            use firmware::emitted::fixed::FixedDesign;
             let mut samples: Vec<([i32; d::OUTPUTS], [i32; d::INPUTS])> = d::RECORDED_RAW_Y
                 .iter()
                 .zip(d::RECORDED_RAW_U.iter())
@@ -174,7 +174,7 @@ macro_rules! run_generated_and_loops {
                 let estimate = (window.len() >= d::HORIZON).then(|| {
                     let last: [firmware::Sample<i32, { d::OUTPUTS }, { d::INPUTS }>; d::HORIZON] =
                         window[window.len() - d::HORIZON..].try_into().unwrap();
-                    firmware::fixed::estimate_by_loops(&<d::Fixed as FixedDesign<{ d::HORIZON }, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>>::MAPS, &last)
+                    firmware::emitted::fixed::estimate_by_loops(&<d::Fixed as FixedDesign<{ d::HORIZON }, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>>::MAPS, &last)
                 });
                 loops.push((inside, estimate.map(|e| flags(&e))));
             }

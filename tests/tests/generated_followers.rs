@@ -5,7 +5,8 @@
 //! the observers must refuse: both sides give no estimate there (a NaN row) and carry the state over
 //! them by the model's period.
 
-use firmware::{Follower, Started};
+use firmware::emitted::Follower;
+use firmware::Started;
 use host::data::{Rows, Run};
 use host::observers::{corrected, ekf};
 use host::plant::correction::correction_code;
@@ -67,10 +68,10 @@ macro_rules! check_followers {
                     d::Design,
                     F,
                     { d::HORIZON },
+                    { d::STATES },
                     { d::OUTPUTS },
                     { d::INPUTS },
                     { d::TARGETS },
-                    { d::STATES },
                 > = Started::new();
                 let mut out = Vec::new();
                 for (y, u) in d::RECORDED_Y.iter().zip(&d::RECORDED_U) {

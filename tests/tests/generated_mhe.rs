@@ -7,7 +7,8 @@
 
 use std::sync::OnceLock;
 
-use firmware::mhe::{Horizon, Observer, Settings};
+use firmware::emitted::mhe::{Horizon, Settings};
+use firmware::mhe::Observer;
 use host::data::{Rows, Run};
 use host::observers::mhe::Setup;
 use host::plant::ModelCode;
@@ -78,10 +79,10 @@ macro_rules! check_mhe {
             let mut chip: Observer<
                 f32,
                 Other,
+                { d::HORIZON },
                 { d::STATES },
                 { d::OUTPUTS },
                 { d::INPUTS },
-                { d::HORIZON },
                 { d::TARGETS },
             > = Observer::new();
             let mut compared = 0;

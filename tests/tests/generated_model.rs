@@ -110,7 +110,7 @@ macro_rules! check_filter {
         #[test]
         fn $test() {
             use $path as d;
-            fn run<T: firmware::Scalar + firmware::Maths + std::fmt::Debug>(
+            fn run<T: firmware::Scalar + firmware::emitted::Maths + std::fmt::Debug>(
                 exact: impl Fn(f32) -> T,
                 bits: impl Fn(T) -> u64,
             ) {

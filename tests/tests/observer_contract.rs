@@ -1,7 +1,8 @@
 //! The generated observers' contract on arbitrary input, and their straight-line code against the
 //! firmware's loops.
 
-use firmware::{estimate_by_loops, Design as _, Sample};
+use firmware::emitted::estimate_by_loops;
+use firmware::{Design as _, Sample};
 use proptest::prelude::*;
 
 /// Any f32, with the awkward ones (NaN, ±∞, ±0, subnormals, ±f32::MAX, huge) drawn often.
@@ -110,3 +111,142 @@ generated::for_each_design!(contract);
 #[allow(dead_code)]
 mod vanderpol_beta7_tables;
 contract!(vanderpol_beta7, crate::vanderpol_beta7_tables);
+
+/// Every observer kind of every design driven through the one trait, [`firmware::Estimator`], by a
+/// generic function (as a firmware written against the trait drives it): the same acceptance,
+/// estimates (bits) and flags as the type's own calls, sample by sample over the recorded sequence
+/// (refused samples included); and `reset` returns an observer to its fresh state: after `reset`,
+/// mid-sequence or at its end, it runs the sequence as a new one does.
+mod every_kind_through_the_trait {
+    use firmware::{Estimate, Estimator, Saturation};
+
+    /// A value as bits: an `f32`'s, or the integer map's `i32` as `u32`.
+    trait Bits: Copy {
+        fn bits(self) -> u32;
+    }
+
+    impl Bits for f32 {
+        fn bits(self) -> u32 {
+            self.to_bits()
+        }
+    }
+
+    impl Bits for i32 {
+        fn bits(self) -> u32 {
+            self as u32
+        }
+    }
+
+    /// Per sample: whether it was accepted, and the estimate's bits and flags if there is one.
+    type Trace = Vec<(bool, Option<Vec<(u32, Saturation)>>)>;
+
+    fn flat<T: Bits>(estimates: &[Estimate<T>]) -> Vec<(u32, Saturation)> {
+        estimates.iter().map(|e| (e.value.bits(), e.saturation)).collect()
+    }
+
+    /// What a firmware written against the trait does every sample period.
+    fn run<O: Estimator>(observer: &mut O, samples: &[(O::Outputs, O::Inputs)]) -> Trace
+    where
+        O::Scalar: Bits,
+    {
+        samples
+            .iter()
+            .map(|&(y, u)| {
+                let accepted = observer.push(y, u).is_ok();
+                let estimate = observer.estimate();
+                assert_eq!(observer.is_ready(), estimate.is_some());
+                (accepted, estimate.map(|e| flat(e.as_ref())))
+            })
+            .collect()
+    }
+
+    /// `fresh` (a new observer) through [`run`] against `concrete` (the type's own `push` and
+    /// `estimate`), then `reset` against a new observer.
+    fn check<O: Estimator>(
+        what: &str,
+        fresh: fn() -> O,
+        samples: &[(O::Outputs, O::Inputs)],
+        concrete: impl Fn(&mut O, O::Outputs, O::Inputs) -> (bool, Option<Vec<(u32, Saturation)>>),
+    ) where
+        O::Scalar: Bits,
+    {
+        let mut by_type = fresh();
+        let expected: Trace = samples.iter().map(|&(y, u)| concrete(&mut by_type, y, u)).collect();
+        let mut observer = fresh();
+        assert!(!observer.is_ready(), "{what}: ready before any sample");
+        let through_trait = run(&mut observer, samples);
+        assert_eq!(through_trait, expected, "{what}: the trait's calls against the type's");
+        assert!(
+            expected.iter().any(|(accepted, _)| !accepted),
+            "{what}: no refused sample"
+        );
+        assert!(expected.iter().any(|(_, e)| e.is_some()), "{what}: no estimate");
+        // `reset` at the end of the sequence and in its middle: then as a new observer.
+        for cut in [samples.len(), samples.len() / 2] {
+            let mut observer = fresh();
+            run(&mut observer, &samples[..cut]);
+            observer.reset();
+            assert!(
+                !observer.is_ready() && observer.estimate().is_none(),
+                "{what}: ready after reset"
+            );
+            assert_eq!(
+                run(&mut observer, samples),
+                expected,
+                "{what}: after reset at sample {cut}"
+            );
+        }
+    }
+
+    /// The type's own calls (inherent methods: they take precedence over the trait's).
+    macro_rules! concrete {
+        ($ty:ty) => {
+            |o: &mut $ty, y, u| {
+                let accepted = o.push(y, u).is_ok();
+                (accepted, o.estimate().map(|e| flat(&e)))
+            }
+        };
+    }
+
+    /// `$name`'s float kinds (by type name) over its recorded sequence, and its integer map over
+    /// the raw one.
+    macro_rules! every_kind {
+        ($name:ident: $($ty:ident),*) => {
+            #[test]
+            fn $name() {
+                use generated::$name as d;
+                let samples: Vec<_> = d::RECORDED_Y.iter().copied().zip(d::RECORDED_U.iter().copied()).collect();
+                $(
+                    check(concat!(stringify!($name), "::", stringify!($ty)), d::$ty::new, &samples, concrete!(d::$ty));
+                )*
+                check(concat!(stringify!($name), "::observer()"), d::observer, &samples, concrete!(d::Observer));
+                let raw: Vec<_> = d::RECORDED_RAW_Y.iter().copied().zip(d::RECORDED_RAW_U.iter().copied()).collect();
+                check(concat!(stringify!($name), "::FixedObserver"), d::fixed_observer, &raw, concrete!(d::FixedObserver));
+            }
+        };
+    }
+
+    every_kind!(vanderpol: MapObserver, BoxEkfObserver, UkfObserver, CorrectedObserver, StartedEkfObserver, RestartedEkfObserver, MheObserver);
+    every_kind!(vanderpol_searched: MapObserver, BoxEkfObserver, UkfObserver, CorrectedObserver, StartedEkfObserver, RestartedEkfObserver, MheObserver);
+    every_kind!(vanderpol_sparse: MapObserver, BoxEkfObserver, UkfObserver, CorrectedObserver, StartedEkfObserver, RestartedEkfObserver, MheObserver);
+    every_kind!(vanderpol_uncertain: MapObserver, BoxEkfObserver, UkfObserver, CorrectedObserver, StartedEkfObserver, RestartedEkfObserver, MheObserver);
+    every_kind!(two_tanks: MapObserver, BoxEkfObserver, UkfObserver, CorrectedObserver, StartedEkfObserver, RestartedEkfObserver, MheObserver);
+    every_kind!(ecoli_x0_0p5: MapObserver, BoxEkfObserver, UkfObserver, MheObserver);
+    every_kind!(ecoli_x0_2: MapObserver, BoxEkfObserver, UkfObserver, MheObserver);
+
+    #[test]
+    fn the_family() {
+        use generated::ecoli_x0_0p5 as member;
+        let samples: Vec<_> = member::RECORDED_Y
+            .iter()
+            .copied()
+            .zip(member::RECORDED_U.iter().copied())
+            .collect();
+        check(
+            "ecoli::observer()",
+            generated::ecoli::observer,
+            &samples,
+            concrete!(generated::ecoli::Observer),
+        );
+    }
+}

@@ -1,11 +1,11 @@
 //! The moving-horizon estimate as an observer kind: the last `N` samples, the previous solution, and
-//! at every sample [`solve_window`] from that solution moved one sample on, with the interface every
+//! at every sample `solve_window` from that solution moved one sample on, with the interface every
 //! observer has (`push`, `estimate`, `reset`). A design provides the model, the constants and its
-//! targets through [`Horizon`], so that `new` is `const` and the constants are folded into the code.
+//! targets through `Horizon`, so that `new` is `const` and the constants are folded into the code.
 
 use core::marker::PhantomData;
 
-use super::{solve_window, Settings};
+use super::solver::{solve_window, Settings};
 use crate::bounds::project;
 use crate::window::{Sample, Window};
 use crate::{Estimate, Plant, RejectedSample, Saturation, Scalar};
@@ -25,7 +25,7 @@ pub trait Horizon<T: Scalar, const NX: usize, const NY: usize, const NU: usize, 
 /// The moving-horizon observer of design `H`: `NT` targets from `NY` outputs and `NU` inputs, `NX`
 /// states, windows of `N` samples (see the [module's](super) documentation for the maths).
 ///
-/// Every accepted sample runs [`solve_window`]: `settings().iterations` Gauss–Newton steps from the
+/// Every accepted sample runs `solve_window`: `settings().iterations` Gauss–Newton steps from the
 /// previous solution moved one sample on (the prior's centre too), then the solution carried to the
 /// newest sample. Memory is fixed (the window, the previous solution, the latest estimate); once the
 /// window is full every sample runs the same instructions. A sample with a non-finite measurement or
@@ -33,7 +33,7 @@ pub trait Horizon<T: Scalar, const NX: usize, const NY: usize, const NU: usize, 
 /// stored changes); a solution the model carries to a non-finite value is not kept. A refused sample
 /// leaves the latest estimate as it was. The estimate is a state inside the box, so its targets
 /// carry no saturation flag (each is `Inside`).
-pub struct Observer<T, H, const NX: usize, const NY: usize, const NU: usize, const N: usize, const NT: usize> {
+pub struct Observer<T, H, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> {
     window: Window<T, N, NY, NU>,
     /// The latest window's solution (its start), once there is one.
     solved: Option<[T; NX]>,
@@ -41,8 +41,8 @@ pub struct Observer<T, H, const NX: usize, const NY: usize, const NU: usize, con
     design: PhantomData<fn() -> H>,
 }
 
-impl<T, H, const NX: usize, const NY: usize, const NU: usize, const N: usize, const NT: usize>
-    Observer<T, H, NX, NY, NU, N, NT>
+impl<T, H, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize>
+    Observer<T, H, N, NX, NY, NU, NT>
 where
     T: Scalar,
     H: Horizon<T, NX, NY, NU, NT>,
@@ -120,8 +120,8 @@ where
     }
 }
 
-impl<T, H, const NX: usize, const NY: usize, const NU: usize, const N: usize, const NT: usize> Default
-    for Observer<T, H, NX, NY, NU, N, NT>
+impl<T, H, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Default
+    for Observer<T, H, N, NX, NY, NU, NT>
 where
     T: Scalar,
     H: Horizon<T, NX, NY, NU, NT>,
@@ -131,8 +131,8 @@ where
     }
 }
 
-impl<T: Scalar, H, const NX: usize, const NY: usize, const NU: usize, const N: usize, const NT: usize> Clone
-    for Observer<T, H, NX, NY, NU, N, NT>
+impl<T: Scalar, H, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Clone
+    for Observer<T, H, N, NX, NY, NU, NT>
 {
     fn clone(&self) -> Self {
         Observer {
@@ -144,8 +144,8 @@ impl<T: Scalar, H, const NX: usize, const NY: usize, const NU: usize, const N: u
     }
 }
 
-impl<T: Scalar, H, const NX: usize, const NY: usize, const NU: usize, const N: usize, const NT: usize> core::fmt::Debug
-    for Observer<T, H, NX, NY, NU, N, NT>
+impl<T: Scalar, H, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> core::fmt::Debug
+    for Observer<T, H, N, NX, NY, NU, NT>
 {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.debug_struct("mhe::Observer")

@@ -6,6 +6,7 @@
 use nalgebra::{Matrix2, Matrix3, SMatrix, SVector, Vector2, Vector3};
 
 use super::*;
+use crate::Plant;
 use crate::RejectedSample;
 
 /// `x⁺ = A x + (0, 0.1 u)`, `y = (x₁, x₁ + x₂)`.
@@ -147,7 +148,7 @@ fn values(estimate: Option<[crate::Estimate<f64>; 2]>) -> Option<[f64; 2]> {
 
 #[test]
 fn the_chip_estimator_on_a_linear_plant_gives_every_window_s_least_squares_end() {
-    let mut estimator: Observer<f64, OnLinear<false>, 2, 2, 1, 8, 2> = Observer::new();
+    let mut estimator: Observer<f64, OnLinear<false>, 8, 2, 2, 1, 2> = Observer::new();
     let weights = OnLinear::<false>::settings().weights;
     let ys: Vec<[f64; 2]> = (0..30)
         .map(|k| [(k as f64 * 0.7).sin(), (k as f64 * 0.3).cos()])
@@ -206,7 +207,7 @@ fn a_non_finite_measurement_is_refused_while_the_window_fills() {
 fn a_heavy_prior_holds_the_chip_estimator_on_the_model_s_prediction() {
     // With a prior far heavier than the data, every window after the first starts where the model
     // carries the previous solution: the estimate is the first window's end, simulated on.
-    let mut estimator: Observer<f64, OnLinear<true>, 2, 2, 1, 8, 2> = Observer::new();
+    let mut estimator: Observer<f64, OnLinear<true>, 8, 2, 2, 1, 2> = Observer::new();
     let (ys, us) = window();
     for k in 0..8 {
         estimator.push(ys[k], us[k]).unwrap();

@@ -93,8 +93,8 @@ fn ys() -> Vec<f64> {
 fn follows_the_recursion_through_start_up_and_steady_state() {
     for (reads, g) in [(true, 0.5), (false, 0.0)] {
         let expected = by_hand(&ys(), g);
-        let mut with_map: Started<f64, Mean, Halving<true>, 2, 1, 0, 1, 1> = Started::new();
-        let mut without: Started<f64, Mean, Halving<false>, 2, 1, 0, 1, 1> = Started::new();
+        let mut with_map: Started<f64, Mean, Halving<true>, 2, 1, 1, 0, 1> = Started::new();
+        let mut without: Started<f64, Mean, Halving<false>, 2, 1, 1, 0, 1> = Started::new();
         for (k, y) in ys().into_iter().enumerate() {
             let got = if reads {
                 with_map.push([y], []).unwrap();
@@ -120,11 +120,11 @@ fn the_map_is_not_read_after_the_start_up_unless_the_steady_blend_needs_it() {
         let mut ys = ys();
         *ys.last_mut().unwrap() = last;
         if reads_map {
-            let mut o: Started<f64, Mean, Halving<true>, 2, 1, 0, 1, 1> = Started::new();
+            let mut o: Started<f64, Mean, Halving<true>, 2, 1, 1, 0, 1> = Started::new();
             ys.iter().for_each(|&y| o.push([y], []).unwrap());
             o.estimate().unwrap()[0].value
         } else {
-            let mut o: Started<f64, Mean, Halving<false>, 2, 1, 0, 1, 1> = Started::new();
+            let mut o: Started<f64, Mean, Halving<false>, 2, 1, 1, 0, 1> = Started::new();
             ys.iter().for_each(|&y| o.push([y], []).unwrap());
             o.estimate().unwrap()[0].value
         }
@@ -138,7 +138,7 @@ fn the_map_is_not_read_after_the_start_up_unless_the_steady_blend_needs_it() {
 
 #[test]
 fn refused_samples_give_no_estimate_but_the_model_keeps_time_and_clamps_are_flagged() {
-    let mut o: Started<f64, Mean, Halving<true>, 2, 1, 0, 1, 1> = Started::new();
+    let mut o: Started<f64, Mean, Halving<true>, 2, 1, 1, 0, 1> = Started::new();
     // Before the start, a refused sample changes nothing: the first estimate below is the map's.
     assert_eq!(o.push([f64::NAN], []), Err(RejectedSample));
     o.push([0.4], []).unwrap();

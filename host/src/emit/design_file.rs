@@ -108,11 +108,11 @@ fn units<'a>(units: impl IntoIterator<Item = &'a String>) -> String {
     format!("{:?}", units.into_iter().collect::<Vec<_>>())
 }
 
-/// `let k = firmware::search_step(&STARTS_<upper>, t, k, half);` for every step of the search over
-/// `len` knots ([`firmware::search_halves`]).
+/// `let k = firmware::emitted::search_step(&STARTS_<upper>, t, k, half);` for every step of the search over
+/// `len` knots ([`firmware::emitted::search_halves`]).
 fn search_steps(upper: &str, len: usize) -> String {
-    firmware::search_halves(len)
-        .map(|half| format!("                let k = firmware::search_step(&STARTS_{upper}, t, k, {half});"))
+    firmware::emitted::search_halves(len)
+        .map(|half| format!("                let k = firmware::emitted::search_step(&STARTS_{upper}, t, k, {half});"))
         .collect::<Vec<_>>()
         .join("\n")
 }

@@ -1,6 +1,6 @@
 //! The integer map of a design that asks for it (`[chip] arithmetic = "fixed"`) as Rust: the raw
 //! ranges and scalings, each target's integers with its proven bound and its overflow proof (checked
-//! again by the compiler, [`firmware::fixed::reach`]), the design for [`firmware::fixed::Observer`]
+//! again by the compiler, [`firmware::emitted::fixed::reach`]), the design for [`firmware::fixed::Observer`]
 //! with the range check and the dot products written out, and the recorded sequence in raw counts.
 
 use crate::fixed_point::{raw_rows, FixedPoint};
@@ -75,11 +75,11 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
              /// ({share:.3} % of the range: the table's {table:.2e}, the gains' rounding {gains_term:.2e}, the\n\
              /// integer table {evaluation:.2e}). No overflow for samples in range: |C| + Σ|G_i| M_i + K 2^F =\n\
              /// {reach} ≤ 2³¹ − 1, checked below at compile time.\n\
-             pub const FIXED_MAP_{upper}: firmware::FixedMap<'static> = firmware::FixedMap {{\n    \
-                 gains: &FIXED_GAINS_{upper},\n    offset: {offset},\n    table: firmware::FixedTable {{\n        \
+             pub const FIXED_MAP_{upper}: firmware::emitted::fixed::FixedMap<'static> = firmware::emitted::fixed::FixedMap {{\n    \
+                 gains: &FIXED_GAINS_{upper},\n    offset: {offset},\n    table: firmware::emitted::fixed::FixedTable {{\n        \
                  segments: &FIXED_SEGMENTS_{upper},\n        fraction_bits: {f},\n        dropped_bits: {dropped},\n        \
                  product_bits: {p},\n        t_last: {t_last},\n    }},\n}};\n\n\
-             const _: () = assert!(\n    firmware::fixed::reach(&FIXED_MAP_{upper}, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64\n);\n",
+             const _: () = assert!(\n    firmware::emitted::fixed::reach(&FIXED_MAP_{upper}, HORIZON, &RAW_OUTPUT_RANGES, &RAW_INPUT_RANGES) <= i32::MAX as i64\n);\n",
             name = spec_target.name,
             gains = gains.join("\n"),
             segments = segments.join("\n"),
@@ -146,13 +146,13 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
         .outputs
         .iter()
         .enumerate()
-        .map(|(i, s)| format!("firmware::fixed::in_range(y[{i}], {}, {})", s.min, s.max))
+        .map(|(i, s)| format!("firmware::emitted::fixed::in_range(y[{i}], {}, {})", s.min, s.max))
         .chain(
             fixed
                 .inputs
                 .iter()
                 .enumerate()
-                .map(|(i, s)| format!("firmware::fixed::in_range(u[{i}], {}, {})", s.min, s.max)),
+                .map(|(i, s)| format!("firmware::emitted::fixed::in_range(u[{i}], {}, {})", s.min, s.max)),
         )
         .collect();
     let unused = match (ny, nu) {
@@ -178,8 +178,8 @@ pub fn fixed_source(design: &Design, fixed: &FixedPoint, recorded: &[crate::reco
         "\n/// This design in integers, for [`firmware::fixed::Observer`]: the range check and the dot products\n\
          /// written out.\n\
          pub struct Fixed;\n\n\
-         impl firmware::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {{\n    \
-             const MAPS: [firmware::FixedMap<'static>; TARGETS] = [{maps}];\n    \
+         impl firmware::emitted::fixed::FixedDesign<HORIZON, OUTPUTS, INPUTS, TARGETS> for Fixed {{\n    \
+             const MAPS: [firmware::emitted::fixed::FixedMap<'static>; TARGETS] = [{maps}];\n    \
              const OUTPUT_RANGES: [[i32; 2]; OUTPUTS] = RAW_OUTPUT_RANGES;\n    \
              const INPUT_RANGES: [[i32; 2]; INPUTS] = RAW_INPUT_RANGES;\n\n    \
              #[inline(always)]\n    \

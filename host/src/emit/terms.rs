@@ -17,7 +17,7 @@ pub struct Term {
 }
 
 /// The terms of a map with `gains` over windows of `horizon` samples of `outputs` outputs and
-/// `inputs` inputs; pruned taps (gain exactly 0) left out, as [`firmware::estimate_by_loops`] skips
+/// `inputs` inputs; pruned taps (gain exactly 0) left out, as [`firmware::emitted::estimate_by_loops`] skips
 /// them.
 pub fn dot_terms(gains: &[f32], horizon: usize, outputs: usize, inputs: usize) -> Vec<Term> {
     let mut terms = Vec::new();

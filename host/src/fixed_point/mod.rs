@@ -42,7 +42,7 @@
 mod evaluate;
 mod raw;
 
-use firmware::fixed::{FixedMap, FixedTable};
+use firmware::emitted::fixed::{FixedMap, FixedTable};
 
 use crate::data::DataSet;
 use crate::fit::maps::FittedMap;

@@ -25,7 +25,8 @@ pub mod tuning;
 
 pub use tuning::{tune, Tuned};
 
-use firmware::{Maths, Scalar};
+use firmware::emitted::Maths;
+use firmware::Scalar;
 
 use crate::data::{Rows, Run};
 use crate::plant::correction::{CorrectionCode, CorrectionConstants, Reading};
@@ -197,7 +198,7 @@ impl<'a, T: Scalar + Maths> CorrectedStep<'a, T> {
             let next = code.run(&code.predict, &at, &mut scratch.borrow_mut());
             next.iter().all(|v| v.is_finite()).then_some(next)
         };
-        // `firmware::started::clamp`: NaN to the lower end.
+        // `firmware::emitted::clamp`: NaN to the lower end.
         let clamp = |raw: &[T]| -> Vec<T> {
             raw.iter()
                 .zip(lower.iter().zip(upper.iter()))

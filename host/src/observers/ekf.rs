@@ -77,15 +77,15 @@ pub(crate) struct Stepped<'a, T = f64> {
     pub(crate) substeps: usize,
 }
 
-impl<T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize, const NU: usize> Plant<T, NX, NY, NU>
-    for Stepped<'_, T>
+impl<T: firmware::Scalar + firmware::emitted::Maths, const NX: usize, const NY: usize, const NU: usize>
+    Plant<T, NX, NY, NU> for Stepped<'_, T>
 {
     fn step(&self, x: &[T; NX], u: &[T; NU]) -> ([T; NX], [[T; NX]; NX]) {
         let (mut x, mut jacobian) = Plant::<T, NX, NY, NU>::step(&self.step, x, u);
         for _ in 1..self.substeps {
             let (next, d) = Plant::<T, NX, NY, NU>::step(&self.step, &x, u);
             x = next;
-            jacobian = firmware::model::product(&d, &jacobian);
+            jacobian = firmware::emitted::product(&d, &jacobian);
         }
         (x, jacobian)
     }

@@ -215,7 +215,7 @@ impl<'a> Setup<'a> {
             let moved = previous
                 .map(|x| {
                     let next = Plant::<f64, NX, NY, MAX_INPUTS>::step(&plant, &x, &samples[k - n].1).0;
-                    firmware::bounds::project(&next, &lower, &upper)
+                    firmware::emitted::project(&next, &lower, &upper)
                 })
                 .filter(|x| x.iter().all(|v| v.is_finite()));
             let best = match moved {
@@ -248,7 +248,7 @@ impl<'a> Setup<'a> {
             solved.seconds.push(clock.elapsed().as_secs_f64());
             solved.iterations.push(best.iterations);
             previous = Some(best.start);
-            let end = firmware::bounds::project(&best.end, &lower, &upper);
+            let end = firmware::emitted::project(&best.end, &lower, &upper);
             solved.rows.push(&self.code.targets(&end, &run.inputs[k], &mut scratch));
         }
         solved

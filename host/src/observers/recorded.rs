@@ -155,7 +155,7 @@ impl<'a> Setup<'a> {
     }
 
     /// Runs over the rows `next` reads, in `T` (`precision` for the map's tables).
-    fn stream<T: firmware::Scalar + firmware::Maths + Into<f64>, E: From<RecordedError>>(
+    fn stream<T: firmware::Scalar + firmware::emitted::Maths + Into<f64>, E: From<RecordedError>>(
         &self,
         precision: Precision,
         mut next: impl FnMut() -> Result<Option<Row>, E>,
@@ -186,7 +186,7 @@ impl<'a> Setup<'a> {
     }
 
     /// A fresh observer for a new run.
-    fn follower<'s, T: firmware::Scalar + firmware::Maths>(
+    fn follower<'s, T: firmware::Scalar + firmware::emitted::Maths>(
         &'s self,
         setting: &'s corrected::Setting<'s>,
     ) -> Follower<'s, T> {
@@ -239,7 +239,7 @@ impl<'a> Setup<'a> {
     }
 }
 
-impl<T: firmware::Scalar + firmware::Maths + Into<f64>> Follower<'_, T> {
+impl<T: firmware::Scalar + firmware::emitted::Maths + Into<f64>> Follower<'_, T> {
     /// The observer's row for `sample`, the map's row there `map` (of `width` targets).
     fn step(&mut self, map: EstimateRow, sample: &Row, width: usize) -> EstimateRow {
         let (y, u) = (sample.y.as_slice(), sample.u.as_slice());

@@ -14,7 +14,8 @@
 //! estimate when it is consistent with the map's and takes the map's when it is not. `τ` is chosen on
 //! the tuning runs ([`tune`]) from [`THRESHOLDS`].
 
-use firmware::{Maths, Scalar};
+use firmware::emitted::Maths;
+use firmware::Scalar;
 
 use crate::data::Run;
 use crate::plant::kalman::{self, EkfConstants, FilterCode};

@@ -12,7 +12,8 @@
 //! it; [`CorrectionCode::run`] does the same on the host, in the same order, so that the host's
 //! estimates are the chip's.
 
-use firmware::{Maths, Scalar};
+use firmware::emitted::Maths;
+use firmware::Scalar;
 
 use crate::spec::ast::Binary;
 

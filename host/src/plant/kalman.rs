@@ -17,7 +17,8 @@
 //! lower entries would be copies. The filter's constants (`Q`, `R`, the substep `h`) are numbers of
 //! the programs, so the products they take part in fold where they can.
 
-use firmware::{Maths, Scalar};
+use firmware::emitted::Maths;
+use firmware::Scalar;
 
 use crate::spec::ast::Binary;
 
@@ -300,7 +301,7 @@ pub(super) fn substep(b: &mut Builder<'_>, code: &ModelCode, h: f64, x: &[usize]
     (next, jacobian)
 }
 
-/// `A B` (`firmware::model::product`: each entry summed from 0 in order).
+/// `A B` (`firmware::emitted::product`: each entry summed from 0 in order).
 fn product(b: &mut Builder<'_>, a: &[Vec<usize>], m: &[Vec<usize>]) -> Vec<Vec<usize>> {
     let n = a.len();
     let zero = b.number(0.0);

@@ -22,7 +22,8 @@ pub mod kalman;
 pub mod program;
 pub mod unscented;
 
-use firmware::{Maths, Scalar};
+use firmware::emitted::Maths;
+use firmware::Scalar;
 
 use crate::spec::ast::{self, Node};
 use crate::spec::Design;

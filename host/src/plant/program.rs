@@ -4,13 +4,14 @@
 //! The host evaluates it (in `f64` to tune and judge the EKF, in `f32` to predict the chip's bits) and
 //! [`crate::emit::model`] writes it out as Rust, one `let` per operation in the same order, so that
 //! both compute the same IEEE operations on the same operands. Integer powers 2 to 4 become products
-//! (`powf` costs hundreds of instructions on the chip); every other function is `firmware::Maths`'s.
+//! (`powf` costs hundreds of instructions on the chip); every other function is `firmware::emitted::Maths`'s.
 
 pub mod builder;
 
 pub use builder::{Builder, LowerError, Names};
 
-use firmware::{Maths, Scalar};
+use firmware::emitted::Maths;
+use firmware::Scalar;
 
 use crate::spec::ast::Binary;
 
@@ -47,9 +48,9 @@ pub enum Op {
     /// `f(a)`, `f` one of the expression language's functions (`log` is `ln`).
     Call(&'static str, usize),
     /// `a`, or `b` where `a` is below it or NaN: a state projected onto its lower bound
-    /// (`firmware::bounds::at_least`, a select).
+    /// (`firmware::emitted::at_least`, a select).
     AtLeast(usize, usize),
-    /// `a`, or `b` where `a` is above it (`firmware::bounds::at_most`, a select).
+    /// `a`, or `b` where `a` is above it (`firmware::emitted::at_most`, a select).
     AtMost(usize, usize),
 }
 
@@ -136,8 +137,8 @@ impl Program {
                 Op::Negate(a) => -values[a],
                 Op::Binary(op, a, b) => op.apply(values[a], values[b]),
                 Op::Call(f, a) => crate::spec::ast::call(f, values[a]),
-                Op::AtLeast(a, b) => firmware::bounds::at_least(values[a], values[b]),
-                Op::AtMost(a, b) => firmware::bounds::at_most(values[a], values[b]),
+                Op::AtLeast(a, b) => firmware::emitted::at_least(values[a], values[b]),
+                Op::AtMost(a, b) => firmware::emitted::at_most(values[a], values[b]),
             };
             values.push(value);
         }
@@ -186,12 +187,12 @@ impl Program {
                     .for_each(|(o, &a)| *o = crate::spec::ast::call(f, a)),
                 Op::AtLeast(a, b) => {
                     for ((o, &a), &b) in out.iter_mut().zip(column(a)).zip(column(b)) {
-                        *o = firmware::bounds::at_least(a, b);
+                        *o = firmware::emitted::at_least(a, b);
                     }
                 }
                 Op::AtMost(a, b) => {
                     for ((o, &a), &b) in out.iter_mut().zip(column(a)).zip(column(b)) {
-                        *o = firmware::bounds::at_most(a, b);
+                        *o = firmware::emitted::at_most(a, b);
                     }
                 }
             }

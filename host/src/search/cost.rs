@@ -84,7 +84,7 @@ pub fn call(name: &str) -> f64 {
     match name {
         "abs" => 1.0,
         "signum" => 14.0,
-        // The FPU's `VSQRT.F32` and the moves around it (`firmware::maths::sqrt_f32`).
+        // The FPU's `VSQRT.F32` and the moves around it (`firmware::emitted::sqrt_f32`).
         "sqrt" => 7.0,
         "exp" => 101.0,
         _ => UNMEASURED_CALL,
@@ -209,7 +209,7 @@ pub fn of_maps(maps: &[&FittedMap], horizon: usize, tau: f64) -> Cost {
         if segments > 1 {
             instructions += PER_TABLE;
         }
-        instructions += PER_SEARCH_STEP * firmware::inverse::search_halves(knots).count() as f64;
+        instructions += PER_SEARCH_STEP * firmware::emitted::search_halves(knots).count() as f64;
         constants += taps + 2.0 * segments as f64 + knots as f64 + 4.0;
     }
     Cost {

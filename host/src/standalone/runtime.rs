@@ -28,10 +28,11 @@ pub fn manifest() -> String {
          [dependencies]\n\
          nalgebra = {{ version = \"0.35\", default-features = false, features = [\"libm\"] }}\n\
          libm = \"0.2\"\n\
-         heapless = \"0.9\"\n\
+         defmt = {{ version = \"1\", optional = true }}\n\
          \n\
          [features]\n\
-         reference = []\n",
+         reference = []\n\
+         defmt = [\"dep:defmt\"]\n",
         version = env!("CARGO_PKG_VERSION"),
     )
 }

@@ -37,7 +37,8 @@ use core::panic::PanicInfo;
 
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprint, hprintln};
-use firmware::{Design, Estimate, Follower, Restart, Saturation};
+use firmware::emitted::{Follower, Restart};
+use firmware::{Design, Estimate, Saturation};
 use generated::firmware;
 
 include!(concat!(env!("OUT_DIR"), "/design.rs"));
@@ -157,7 +158,7 @@ where
 }
 
 impl<D, F, const N: usize, const NX: usize> Observe
-    for firmware::Started<f32, D, F, N, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }, NX>
+    for firmware::Started<f32, D, F, N, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>
 where
     D: Design<f32, N, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
     F: Follower<f32, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
@@ -177,7 +178,7 @@ where
 }
 
 impl<D, F, const N: usize, const NX: usize> Observe
-    for firmware::Restarted<f32, D, F, N, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }, NX>
+    for firmware::Restarted<f32, D, F, N, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>
 where
     D: Design<f32, N, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
     F: Restart<f32, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
@@ -196,10 +197,10 @@ where
     }
 }
 
-impl<H, const NX: usize, const N: usize> Observe
-    for firmware::mhe::Observer<f32, H, NX, { d::OUTPUTS }, { d::INPUTS }, N, { d::TARGETS }>
+impl<H, const N: usize, const NX: usize> Observe
+    for firmware::mhe::Observer<f32, H, N, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>
 where
-    H: firmware::mhe::Horizon<f32, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
+    H: firmware::emitted::mhe::Horizon<f32, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
 {
     type Value = f32;
     const START_UP: usize = 0;

@@ -128,7 +128,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
         };
         (@ Mhe, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
             // The host's mirror in f64 with the constants the design file carries.
-            use firmware::mhe::Horizon;
+            use firmware::emitted::mhe::Horizon;
             let settings = <$d::Mhe as Horizon<f64, { $d::STATES }, { $d::OUTPUTS }, { $d::INPUTS }, { $d::TARGETS }>>::settings();
             let plant = <$d::Mhe as Horizon<f64, { $d::STATES }, { $d::OUTPUTS }, { $d::INPUTS }, { $d::TARGETS }>>::plant();
             let constants = host::observers::mhe::ChipConstants {
@@ -169,7 +169,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
         (@ RestartedEkf, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
             let (_, mut ekf_constants) = crate::emitted_constants!($d, &$design);
             // The filter's start as emitted: its `x̂(0)` and `P(0)`, read from its upper triangle.
-            let (x0, upper) = <$d::StartedEkf as firmware::Restart<
+            let (x0, upper) = <$d::StartedEkf as firmware::emitted::Restart<
                 f64,
                 { $d::STATES },
                 { $d::OUTPUTS },

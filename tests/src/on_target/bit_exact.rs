@@ -1,7 +1,8 @@
 //! The same observers run on the host in f32 over the recorded sequence the chip runs, and every
 //! difference from what the chip reported: the chip must match the host bit for bit.
 
-use firmware::{Estimate, Maths, Saturation, Scalar};
+use firmware::emitted::Maths;
+use firmware::{Estimate, Saturation, Scalar};
 
 use super::kind::Kind;
 use super::measurement::{EkfSample, TargetSample};

@@ -4,7 +4,8 @@
 
 use std::any::TypeId;
 
-use firmware::{Follower, Started};
+use firmware::emitted::Follower;
+use firmware::Started;
 
 /// A kind of observer a generated design may have.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -212,26 +213,26 @@ trait StartUp {
     const START_UP: usize;
 }
 
-impl<D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> StartUp
-    for Started<f32, D, F, N, NY, NU, NT, NX>
+impl<D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> StartUp
+    for Started<f32, D, F, N, NX, NY, NU, NT>
 where
     F: Follower<f32, NX, NY, NU, NT>,
 {
     const START_UP: usize = F::START_UP;
 }
 
-impl<D, F, const N: usize, const NY: usize, const NU: usize, const NT: usize, const NX: usize> StartUp
-    for firmware::Restarted<f32, D, F, N, NY, NU, NT, NX>
+impl<D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> StartUp
+    for firmware::Restarted<f32, D, F, N, NX, NY, NU, NT>
 where
-    F: firmware::Restart<f32, NX, NY, NU, NT>,
+    F: firmware::emitted::Restart<f32, NX, NY, NU, NT>,
 {
     const START_UP: usize = N - 1;
 }
 
-impl<H, const NX: usize, const NY: usize, const NU: usize, const N: usize, const NT: usize> StartUp
-    for firmware::mhe::Observer<f32, H, NX, NY, NU, N, NT>
+impl<H, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> StartUp
+    for firmware::mhe::Observer<f32, H, N, NX, NY, NU, NT>
 where
-    H: firmware::mhe::Horizon<f32, NX, NY, NU, NT>,
+    H: firmware::emitted::mhe::Horizon<f32, NX, NY, NU, NT>,
 {
     const START_UP: usize = 0;
 }

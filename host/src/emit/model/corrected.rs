@@ -122,7 +122,7 @@ static CORRECTED_BLENDS: [[(f32, f64); SCHEDULED]; {START_UP}] = [
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Corrector;
 
-impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for Corrector {
+impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for Corrector {
     type Carried = [T; STATES];
     const START_UP: usize = {START_UP};
     const STEADY_READS_MAP: bool = {READS};
@@ -157,7 +157,7 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
         } else {
             corrected_steady(x, y, u, f)
         };
-        let states = firmware::started::clamp(&raw, &pick(&{LOWER}), &pick(&{UPPER}));
+        let states = firmware::emitted::clamp(&raw, &pick(&{LOWER}), &pick(&{UPPER}));
         let mut estimate = [T::ZERO; STATES];
         for (e, s) in estimate.iter_mut().zip(&states) {
             *e = s.value;
@@ -180,5 +180,5 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
 }
 
 /// The model-corrected map over this design's map.
-pub type CorrectedObserver = firmware::Started<f32, Design, Corrector, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
+pub type CorrectedObserver = firmware::Started<f32, Design, Corrector, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 "#;

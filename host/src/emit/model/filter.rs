@@ -1,7 +1,8 @@
 //! A Kalman filter's frame on the chip, the same for the EKF (`Ekf`, [`super::plant`]) and the UKF
 //! (`Ukf`, [`super::ukf`]): the filter type around its two written-out samples (`<lower>_measured`,
 //! `<lower>_unmeasured`: `push`, the refusals, `P` as its upper triangle), and the filter from the
-//! centre of the state box as an observer (`BoxEkfObserver`, `UkfObserver`).
+//! centre of the state box as an observer (`BoxEkfObserver`, `UkfObserver`: the runtime's
+//! `firmware::FilterObserver` over the filter, which implements `firmware::emitted::Filter`).
 
 use std::fmt::Write;
 
@@ -54,6 +55,7 @@ pub(super) fn filter_observer(
     Ok(OBSERVER_TEMPLATE
         .replace("{WHAT}", &what)
         .replace("{NAME}", names.name)
+        .replace("{LOWER}", names.lower)
         .replace("{OBSERVER}", names.observer)
         .replace("{X0_F32}", &f32_list(&format!("{label} x0"), &constants.x0)?)
         .replace("{P0_F32}", &f32_list(&format!("{label} P0"), &upper)?))
@@ -220,55 +222,38 @@ impl<T: Scalar + Maths> {NAME}<T> {
 
 const OBSERVER_TEMPLATE: &str = r#"
 /// {WHAT} ([`{NAME}`], the same filter and constants) with the
-/// observers' interface: `push` takes a sample, `estimate` gives the targets of the latest accepted
-/// one (each `Inside`: the filter does not saturate), `reset` starts again. It has an estimate from
-/// the first accepted sample on; a refused sample keeps the previous one.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct {OBSERVER} {
-    filter: {NAME}<f32>,
-    latest: Option<[Estimate<f32>; TARGETS]>,
-}
+/// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
+/// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
+/// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
+/// refused sample keeps the previous one.
+pub type {OBSERVER} = firmware::FilterObserver<f32, {NAME}, STATES, OUTPUTS, INPUTS, TARGETS>;
 
-impl Default for {OBSERVER} {
-    fn default() -> Self {
-        Self::new()
+impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for {NAME}<f32> {
+    const FRESH: Self = {NAME} { x: {X0_F32}, p: {P0_F32} };
+
+    #[inline(always)]
+    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
+        {NAME}::push(self, y, u)
+    }
+
+    #[inline(always)]
+    fn targets(x: &[f32; STATES], u: &[f32; INPUTS]) -> [f32; TARGETS] {
+        targets(x, u)
     }
 }
 
-impl {OBSERVER} {
-    /// A fresh observer (the filter at its start), holding no sample yet.
-    pub const fn new() -> Self {
-        {OBSERVER} {
-            filter: {NAME} { x: {X0_F32}, p: {P0_F32} },
-            latest: None,
-        }
-    }
+/// [`{OBSERVER}`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
+/// wrote its own observer type: measured on the chip, without them the whole-program optimisation
+/// inlines this design's filter samples differently, and every observer over them runs other
+/// instruction counts. Not for calling: use the observer's methods.
+#[doc(hidden)]
+pub fn {LOWER}_observer_push(observer: &mut {OBSERVER}, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+    observer.push(y, u)
+}
 
-    /// Takes the sample `(y, u)`: [`{NAME}::push`], then the targets of its estimate `x̂(k|k)`.
-    pub fn push(&mut self, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
-        let x = self.filter.push(&y, &u)?;
-        let values = targets(&x, &u);
-        let mut latest = [Estimate { value: 0.0, saturation: firmware::Saturation::Inside }; TARGETS];
-        for (e, value) in latest.iter_mut().zip(values) {
-            e.value = value;
-        }
-        self.latest = Some(latest);
-        Ok(())
-    }
-
-    /// The targets of the latest accepted sample; `None` before the first.
-    pub fn estimate(&self) -> Option<[Estimate<f32>; TARGETS]> {
-        self.latest
-    }
-
-    /// Back to the start: the filter at the box centre, no estimate.
-    pub fn reset(&mut self) {
-        *self = Self::new();
-    }
-
-    /// Whether it has an estimate.
-    pub fn is_ready(&self) -> bool {
-        self.latest.is_some()
-    }
+/// See [`{LOWER}_observer_push`].
+#[doc(hidden)]
+pub fn {LOWER}_observer_estimate(observer: &{OBSERVER}) -> Option<[Estimate<f32>; TARGETS]> {
+    observer.estimate()
 }
 "#;

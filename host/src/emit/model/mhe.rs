@@ -25,7 +25,7 @@ pub(super) fn mhe(constants: &ChipConstants) -> Result<String, EmitError> {
 /// Levenberg's damping.
 pub struct Mhe;
 
-impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {{
+impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {{
     type Plant = Discrete<T>;
 
     #[inline(always)]
@@ -34,8 +34,8 @@ impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGE
     }}
 
     #[inline(always)]
-    fn settings() -> firmware::mhe::Settings<T, STATES, OUTPUTS> {{
-        firmware::mhe::Settings {{
+    fn settings() -> firmware::emitted::mhe::Settings<T, STATES, OUTPUTS> {{
+        firmware::emitted::mhe::Settings {{
             weights: {weights},
             prior: {prior},
             lower: {lower},
@@ -58,7 +58,7 @@ impl<T: Scalar + Maths> firmware::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGE
 /// factorisation (`L D Lᵀ`, no square root) and projected onto the box the learning runs cover;
 /// `estimate` gives the targets at the newest sample. The paper's on-line observer, which the map
 /// replaces: the report gives its accuracy beside the converged MHE's, docs/chip.md its cost.
-pub type MheObserver = firmware::mhe::Observer<f32, Mhe, STATES, OUTPUTS, INPUTS, HORIZON, TARGETS>;
+pub type MheObserver = firmware::mhe::Observer<f32, Mhe, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 ",
         iterations = constants.iterations,
         h = literal("chip MHE substep", constants.h)?,

@@ -55,7 +55,7 @@ fn restart_disagrees<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], f:
     !(d <= {THRESHOLD})
 }
 
-impl firmware::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+impl firmware::emitted::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
     const FRESH: ([f32; STATES], [f32; COVARIANCE]) = ({X0_F32}, {P0_F32});
 
     #[inline(always)]
@@ -64,7 +64,7 @@ impl firmware::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
     }
 }
 
-impl firmware::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+impl firmware::emitted::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
     const FRESH: ([f64; STATES], [f64; COVARIANCE]) = ({X0_F64}, {P0_F64});
 
     #[inline(always)]
@@ -77,5 +77,5 @@ impl firmware::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
 /// at its first estimate, and restarts from it as [`StartedEkfObserver`] starts when the two disagree
 /// (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's guess-free start where the
 /// box centre is far from the plant.
-pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
+pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 "#;

@@ -43,8 +43,8 @@ fn operation(op: &Op, code: &ModelCode, names: &Names<'_>) -> Result<String, Emi
             }
         }
         Op::Call(f, a) => format!("Maths::{f}({})", names.of(a)),
-        Op::AtLeast(a, b) => format!("firmware::bounds::at_least({}, {})", names.of(a), names.of(b)),
-        Op::AtMost(a, b) => format!("firmware::bounds::at_most({}, {})", names.of(a), names.of(b)),
+        Op::AtLeast(a, b) => format!("firmware::emitted::at_least({}, {})", names.of(a), names.of(b)),
+        Op::AtMost(a, b) => format!("firmware::emitted::at_most({}, {})", names.of(a), names.of(b)),
     })
 }
 

@@ -12,7 +12,7 @@ pub const STARTED_P0: [f64; STATES] = {P0_F64};
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct StartedEkf;
 
-impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
     type Carried = ([T; STATES], [T; COVARIANCE]);
     const START_UP: usize = 0;
     const STEADY_READS_MAP: bool = false;
@@ -55,5 +55,5 @@ impl<T: Scalar + Maths> firmware::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> 
 }
 
 /// The EKF started by this design's map.
-pub type StartedEkfObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, OUTPUTS, INPUTS, TARGETS, STATES>;
+pub type StartedEkfObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 "#;

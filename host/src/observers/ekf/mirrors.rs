@@ -11,7 +11,7 @@ use crate::plant::{Covariance, ModelCode};
 /// `Ekf::push` (the written-out programs `filter`): per sample the targets of `x̂(k|k)`, or `None`
 /// where the sample is refused (a non-finite output or input, or a step whose result is not finite,
 /// which is then not taken).
-pub fn estimate_box<T: firmware::Scalar + firmware::Maths>(
+pub fn estimate_box<T: firmware::Scalar + firmware::emitted::Maths>(
     filter: &crate::plant::kalman::FilterCode,
     constants: &EkfConstants,
     run: &Run,
@@ -34,7 +34,7 @@ pub struct BoxStep<'a, T> {
     scratch: Vec<T>,
 }
 
-impl<'a, T: firmware::Scalar + firmware::Maths> BoxStep<'a, T> {
+impl<'a, T: firmware::Scalar + firmware::emitted::Maths> BoxStep<'a, T> {
     /// At `x0` with `P = p0`, before the first sample of a run.
     pub fn new(filter: &'a crate::plant::kalman::FilterCode, x0: &[f64], p0: &Covariance, code: &'a ModelCode) -> Self {
         let literal = |v: &f64| T::literal(*v as f32, *v);
@@ -77,7 +77,7 @@ impl<'a, T: firmware::Scalar + firmware::Maths> BoxStep<'a, T> {
 /// The EKF started by the map (the generated `StartedEkf` in `firmware::Started`, step for step,
 /// [`started::run`](crate::observers::started::run)) in `T`: at sample `first` the map's estimate, from which `(x, P)` is
 /// predicted with `P` = `p0` on the diagonal; then `filter`'s measured samples.
-pub fn estimate_started<T: firmware::Scalar + firmware::Maths>(
+pub fn estimate_started<T: firmware::Scalar + firmware::emitted::Maths>(
     filter: &crate::plant::kalman::FilterCode,
     p0: &[f64],
     state_targets: &[usize],
@@ -103,7 +103,7 @@ pub struct StartedStep<'a, T> {
     shell: crate::observers::started::Shell<T, (Vec<T>, Vec<T>)>,
 }
 
-impl<'a, T: firmware::Scalar + firmware::Maths> StartedStep<'a, T> {
+impl<'a, T: firmware::Scalar + firmware::emitted::Maths> StartedStep<'a, T> {
     /// Before the first sample of a run.
     pub fn new(
         filter: &'a crate::plant::kalman::FilterCode,

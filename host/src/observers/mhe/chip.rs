@@ -18,7 +18,7 @@ pub const CHIP_WITHIN: f64 = 0.05;
 /// The chip estimator's Levenberg damping, relative to each diagonal entry of the normal equations.
 pub const CHIP_DAMPING: f64 = 1e-6;
 
-/// The chip estimator's constants ([`firmware::mhe::Settings`], in `f64`).
+/// The chip estimator's constants ([`firmware::emitted::mhe::Settings`], in `f64`).
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ChipConstants {
     /// `1 / σ²` per output.
@@ -70,7 +70,11 @@ impl Setup<'_> {
 
     /// The chip estimator's estimates of every target at every sample of `run`, in `T` exactly as
     /// the firmware computes them ([`chip_run`]).
-    pub fn chip_run<T: firmware::Scalar + firmware::Maths>(&self, constants: &ChipConstants, run: &Run) -> Rows {
+    pub fn chip_run<T: firmware::Scalar + firmware::emitted::Maths>(
+        &self,
+        constants: &ChipConstants,
+        run: &Run,
+    ) -> Rows {
         chip_run::<T>(self.code, self.horizon, constants, run)
     }
 }
@@ -79,7 +83,7 @@ impl Setup<'_> {
 /// model `code` (windows of `horizon` samples) with `constants`, in `T` exactly as
 /// [`firmware::mhe::Observer`] computes them ([`chip_stepper`]): NaN where it gives none or refuses the
 /// sample.
-pub fn chip_run<T: firmware::Scalar + firmware::Maths>(
+pub fn chip_run<T: firmware::Scalar + firmware::emitted::Maths>(
     code: &ModelCode,
     horizon: usize,
     constants: &ChipConstants,
@@ -102,7 +106,7 @@ pub trait ChipStep {
 }
 
 /// A fresh [`ChipStep`] in `T` of the model `code` with `constants` over windows of `horizon` samples.
-pub fn chip_stepper<'a, T: firmware::Scalar + firmware::Maths + 'a>(
+pub fn chip_stepper<'a, T: firmware::Scalar + firmware::emitted::Maths + 'a>(
     code: &'a ModelCode,
     horizon: usize,
     constants: &ChipConstants,
@@ -123,14 +127,14 @@ struct Stepper<'a, T, const NX: usize, const NY: usize> {
     code: &'a ModelCode,
     horizon: usize,
     plant: Stepped<'a, T>,
-    settings: firmware::mhe::Settings<T, NX, NY>,
+    settings: firmware::emitted::mhe::Settings<T, NX, NY>,
     /// The samples stored, the newest last (the window: the last `horizon`).
     stored: std::collections::VecDeque<firmware::Sample<T, NY, MAX_INPUTS>>,
     solved: Option<[T; NX]>,
     scratch: Vec<T>,
 }
 
-impl<'a, T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize> Stepper<'a, T, NX, NY> {
+impl<'a, T: firmware::Scalar + firmware::emitted::Maths, const NX: usize, const NY: usize> Stepper<'a, T, NX, NY> {
     fn new(code: &'a ModelCode, horizon: usize, constants: &ChipConstants) -> Self {
         let literal = |v: f64| T::literal(v as f32, v);
         let array = |v: &[f64]| -> [T; NX] { std::array::from_fn(|i| literal(v[i])) };
@@ -141,7 +145,7 @@ impl<'a, T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize
                 step: Rk4::new(Compiled::<T>::new(code), literal(constants.h)),
                 substeps: constants.substeps,
             },
-            settings: firmware::mhe::Settings {
+            settings: firmware::emitted::mhe::Settings {
                 weights: std::array::from_fn(|i| literal(constants.weights[i])),
                 prior: array(&constants.prior),
                 lower: array(&constants.lower),
@@ -157,11 +161,13 @@ impl<'a, T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize
     }
 }
 
-impl<T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize> ChipStep for Stepper<'_, T, NX, NY> {
+impl<T: firmware::Scalar + firmware::emitted::Maths, const NX: usize, const NY: usize> ChipStep
+    for Stepper<'_, T, NX, NY>
+{
     /// `firmware::mhe::Observer::push`: a sample with a non-finite value is not stored; the window is
     /// the last `horizon` stored; the previous solution moves on under the dropped sample's input.
     fn step(&mut self, y: &[f64], u: &[f64]) -> Option<Vec<f64>> {
-        use firmware::mhe::solve_window;
+        use firmware::emitted::mhe::solve_window;
         let literal = |v: f64| T::literal(v as f32, v);
         let sample = firmware::Sample {
             y: std::array::from_fn(|i| literal(y[i])),
@@ -173,7 +179,7 @@ impl<T: firmware::Scalar + firmware::Maths, const NX: usize, const NY: usize> Ch
         let (n, s) = (self.horizon, &self.settings);
         let moved = self.solved.filter(|_| self.stored.len() == n).map(|x| {
             let next = Plant::<T, NX, NY, MAX_INPUTS>::step(&self.plant, &x, &self.stored[0].u).0;
-            firmware::bounds::project(&next, &s.lower, &s.upper)
+            firmware::emitted::project(&next, &s.lower, &s.upper)
         });
         self.stored.push_back(sample);
         if self.stored.len() > n {

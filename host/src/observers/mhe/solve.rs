@@ -18,7 +18,7 @@
 //! until the accepted decrease is below `1e-12 (1 + C)` or every step coordinate is below `1e-10` of
 //! its state's spread, or after [`MAX_ITERATIONS`] iterations.
 
-use firmware::mhe::{normal_equations, solve_cholesky, Normal};
+use firmware::emitted::mhe::{normal_equations, solve_cholesky, Normal};
 use firmware::Plant;
 
 /// Most iterations (trials, accepted or not) per window.
@@ -84,7 +84,7 @@ pub fn minimise<P, const NX: usize, const NY: usize, const NU: usize>(
 where
     P: Plant<f64, NX, NY, NU>,
 {
-    let project = |x: &[f64; NX]| firmware::bounds::project(x, &problem.lower, &problem.upper);
+    let project = |x: &[f64; NX]| firmware::emitted::project(x, &problem.lower, &problem.upper);
     let mut x = project(start);
     let mut at = evaluate(plant, problem, samples, &x);
     let mut damping = 1e-3;

@@ -222,7 +222,7 @@ impl<'a> Builder<'a> {
         program.results.iter().map(|&r| map[r]).collect()
     }
 
-    /// `a`, or `low` where `a` is below it or NaN ([`firmware::bounds::at_least`]: a select).
+    /// `a`, or `low` where `a` is below it or NaN ([`firmware::emitted::at_least`]: a select).
     pub fn at_least(&mut self, a: usize, low: usize) -> usize {
         self.push(Op::AtLeast(a, low))
     }

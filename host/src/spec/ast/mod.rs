@@ -21,7 +21,8 @@ mod parser;
 
 use std::fmt;
 
-use firmware::{Maths, Scalar};
+use firmware::emitted::Maths;
+use firmware::Scalar;
 
 pub use derivative::{add, mul};
 pub use parser::{parse, reads_as_exmex, ParseError};

@@ -1,0 +1,287 @@
+//! [`Estimator`]: the interface every observer has, whatever its kind, so that firmware is written
+//! once against it and the kind is chosen by a type.
+
+use crate::emitted::{fixed::FixedDesign, mhe::Horizon, Filter, Follower, Restart};
+use crate::fixed::{self, OutOfRange};
+use crate::{Design, Estimate, FamilyObserver, FilterObserver, Observer, RejectedSample, Restarted, Scalar, Started};
+
+/// What every observer a design carries offers, whatever its kind: the map ([`crate::Observer`]),
+/// the observers the map starts ([`crate::Started`]: the model-corrected map, the map-started EKF),
+/// the box-started EKF checked by the map ([`crate::Restarted`]), the Kalman filters from the box
+/// centre ([`crate::FilterObserver`]: the EKF and the UKF), the moving-horizon estimate
+/// ([`crate::mhe::Observer`]), the map in integers ([`crate::fixed::Observer`]) and the family of
+/// maps ([`crate::FamilyObserver`]).
+///
+/// Every sample, [`push`](Estimator::push) the outputs and inputs of the current instant, then read
+/// [`estimate`](Estimator::estimate). A refused sample (NaN or infinite; for the integer map, outside
+/// its declared range) is an error and leaves the latest estimate as it was. Each observer's own
+/// methods of the same names are what the trait calls (inlined): written against the trait, a
+/// firmware runs the same instructions as written against the type.
+///
+/// ```
+/// use firmware::{Estimate, Estimator};
+///
+/// /// One sample period of any observer of a design with one output and no input.
+/// fn every_sample<O>(observer: &mut O, y: f32) -> Option<f32>
+/// where
+///     O: Estimator<Scalar = f32, Outputs = [f32; 1], Inputs = [f32; 0]>,
+/// {
+///     observer.push([y], []).ok()?; // a refused sample gives no new estimate
+///     let estimates = observer.estimate()?; // `None` until the observer has one
+///     estimates.as_ref().first().map(|e: &Estimate<f32>| e.value)
+/// }
+/// ```
+pub trait Estimator {
+    /// What a value is: `f32` for the float observers, `i32` (raw counts in, LSBs out) for the map
+    /// in integers.
+    type Scalar: Copy;
+    /// One instant's outputs `y(k)`, `[Scalar; NY]`.
+    type Outputs: Copy;
+    /// One instant's inputs `u(k)`, `[Scalar; NU]`.
+    type Inputs: Copy;
+    /// One estimate per target, `[Estimate<Scalar>; NT]`.
+    type Estimates: Copy + AsRef<[Estimate<Self::Scalar>]>;
+    /// Why a sample was refused: [`crate::RejectedSample`], or [`crate::fixed::OutOfRange`] for the
+    /// map in integers.
+    type Error: Copy + Eq + core::error::Error;
+
+    /// Takes the sample of the current instant; a refused one changes no estimate.
+    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error>;
+
+    /// The latest estimate, one per target, or `None` while the observer has none.
+    fn estimate(&self) -> Option<Self::Estimates>;
+
+    /// Back to the observer as it was made: every sample forgotten (a new batch or run starts).
+    fn reset(&mut self);
+
+    /// `true` once [`estimate`](Estimator::estimate) gives an estimate.
+    fn is_ready(&self) -> bool;
+}
+
+// Each observer by its own methods (which take precedence over the trait's in method resolution).
+
+impl<T: Scalar, D, const N: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
+    for Observer<T, D, N, NY, NU, NT>
+where
+    D: Design<T, N, NY, NU, NT>,
+{
+    type Scalar = T;
+    type Outputs = [T; NY];
+    type Inputs = [T; NU];
+    type Estimates = [Estimate<T>; NT];
+    type Error = RejectedSample;
+
+    #[inline(always)]
+    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
+        <Observer<T, D, N, NY, NU, NT>>::push(self, y, u)
+    }
+
+    #[inline(always)]
+    fn estimate(&self) -> Option<Self::Estimates> {
+        <Observer<T, D, N, NY, NU, NT>>::estimate(self)
+    }
+
+    #[inline(always)]
+    fn reset(&mut self) {
+        <Observer<T, D, N, NY, NU, NT>>::reset(self)
+    }
+
+    #[inline(always)]
+    fn is_ready(&self) -> bool {
+        <Observer<T, D, N, NY, NU, NT>>::is_ready(self)
+    }
+}
+
+impl<T: Scalar, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
+    for Started<T, D, F, N, NX, NY, NU, NT>
+where
+    D: Design<T, N, NY, NU, NT>,
+    F: Follower<T, NX, NY, NU, NT>,
+{
+    type Scalar = T;
+    type Outputs = [T; NY];
+    type Inputs = [T; NU];
+    type Estimates = [Estimate<T>; NT];
+    type Error = RejectedSample;
+
+    #[inline(always)]
+    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
+        <Started<T, D, F, N, NX, NY, NU, NT>>::push(self, y, u)
+    }
+
+    #[inline(always)]
+    fn estimate(&self) -> Option<Self::Estimates> {
+        <Started<T, D, F, N, NX, NY, NU, NT>>::estimate(self)
+    }
+
+    #[inline(always)]
+    fn reset(&mut self) {
+        <Started<T, D, F, N, NX, NY, NU, NT>>::reset(self)
+    }
+
+    #[inline(always)]
+    fn is_ready(&self) -> bool {
+        <Started<T, D, F, N, NX, NY, NU, NT>>::is_ready(self)
+    }
+}
+
+impl<T: Scalar, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
+    for Restarted<T, D, F, N, NX, NY, NU, NT>
+where
+    D: Design<T, N, NY, NU, NT>,
+    F: Restart<T, NX, NY, NU, NT>,
+{
+    type Scalar = T;
+    type Outputs = [T; NY];
+    type Inputs = [T; NU];
+    type Estimates = [Estimate<T>; NT];
+    type Error = RejectedSample;
+
+    #[inline(always)]
+    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
+        <Restarted<T, D, F, N, NX, NY, NU, NT>>::push(self, y, u)
+    }
+
+    #[inline(always)]
+    fn estimate(&self) -> Option<Self::Estimates> {
+        <Restarted<T, D, F, N, NX, NY, NU, NT>>::estimate(self)
+    }
+
+    #[inline(always)]
+    fn reset(&mut self) {
+        <Restarted<T, D, F, N, NX, NY, NU, NT>>::reset(self)
+    }
+
+    #[inline(always)]
+    fn is_ready(&self) -> bool {
+        <Restarted<T, D, F, N, NX, NY, NU, NT>>::is_ready(self)
+    }
+}
+
+impl<T: Scalar, F, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
+    for FilterObserver<T, F, NX, NY, NU, NT>
+where
+    F: Filter<T, NX, NY, NU, NT>,
+{
+    type Scalar = T;
+    type Outputs = [T; NY];
+    type Inputs = [T; NU];
+    type Estimates = [Estimate<T>; NT];
+    type Error = RejectedSample;
+
+    #[inline(always)]
+    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
+        <FilterObserver<T, F, NX, NY, NU, NT>>::push(self, y, u)
+    }
+
+    #[inline(always)]
+    fn estimate(&self) -> Option<Self::Estimates> {
+        <FilterObserver<T, F, NX, NY, NU, NT>>::estimate(self)
+    }
+
+    #[inline(always)]
+    fn reset(&mut self) {
+        <FilterObserver<T, F, NX, NY, NU, NT>>::reset(self)
+    }
+
+    #[inline(always)]
+    fn is_ready(&self) -> bool {
+        <FilterObserver<T, F, NX, NY, NU, NT>>::is_ready(self)
+    }
+}
+
+impl<T: Scalar, H, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
+    for crate::mhe::Observer<T, H, N, NX, NY, NU, NT>
+where
+    H: Horizon<T, NX, NY, NU, NT>,
+{
+    type Scalar = T;
+    type Outputs = [T; NY];
+    type Inputs = [T; NU];
+    type Estimates = [Estimate<T>; NT];
+    type Error = RejectedSample;
+
+    #[inline(always)]
+    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
+        <crate::mhe::Observer<T, H, N, NX, NY, NU, NT>>::push(self, y, u)
+    }
+
+    #[inline(always)]
+    fn estimate(&self) -> Option<Self::Estimates> {
+        <crate::mhe::Observer<T, H, N, NX, NY, NU, NT>>::estimate(self)
+    }
+
+    #[inline(always)]
+    fn reset(&mut self) {
+        <crate::mhe::Observer<T, H, N, NX, NY, NU, NT>>::reset(self)
+    }
+
+    #[inline(always)]
+    fn is_ready(&self) -> bool {
+        <crate::mhe::Observer<T, H, N, NX, NY, NU, NT>>::is_ready(self)
+    }
+}
+
+impl<D, const N: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
+    for fixed::Observer<D, N, NY, NU, NT>
+where
+    D: FixedDesign<N, NY, NU, NT>,
+{
+    type Scalar = i32;
+    type Outputs = [i32; NY];
+    type Inputs = [i32; NU];
+    type Estimates = [Estimate<i32>; NT];
+    type Error = OutOfRange;
+
+    #[inline(always)]
+    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
+        <fixed::Observer<D, N, NY, NU, NT>>::push(self, y, u)
+    }
+
+    #[inline(always)]
+    fn estimate(&self) -> Option<Self::Estimates> {
+        <fixed::Observer<D, N, NY, NU, NT>>::estimate(self)
+    }
+
+    #[inline(always)]
+    fn reset(&mut self) {
+        <fixed::Observer<D, N, NY, NU, NT>>::reset(self)
+    }
+
+    #[inline(always)]
+    fn is_ready(&self) -> bool {
+        <fixed::Observer<D, N, NY, NU, NT>>::is_ready(self)
+    }
+}
+
+impl<'a, T, const N: usize, const NY: usize, const NU: usize, const NT: usize, const K: usize> Estimator
+    for FamilyObserver<'a, T, N, NY, NU, NT, K>
+where
+    T: Scalar,
+{
+    type Scalar = T;
+    type Outputs = [T; NY];
+    type Inputs = [T; NU];
+    type Estimates = [Estimate<T>; NT];
+    type Error = RejectedSample;
+
+    #[inline(always)]
+    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
+        <FamilyObserver<'a, T, N, NY, NU, NT, K>>::push(self, y, u)
+    }
+
+    #[inline(always)]
+    fn estimate(&self) -> Option<Self::Estimates> {
+        <FamilyObserver<'a, T, N, NY, NU, NT, K>>::estimate(self)
+    }
+
+    #[inline(always)]
+    fn reset(&mut self) {
+        <FamilyObserver<'a, T, N, NY, NU, NT, K>>::reset(self)
+    }
+
+    #[inline(always)]
+    fn is_ready(&self) -> bool {
+        <FamilyObserver<'a, T, N, NY, NU, NT, K>>::is_ready(self)
+    }
+}

@@ -1,0 +1,95 @@
+//! A Kalman filter that `gen` wrote out for a design (its EKF or its UKF, from the centre of the state
+//! box or the start the spec fixes) with the interface every observer has: [`FilterObserver`].
+
+use crate::{Estimate, RejectedSample, Saturation, Scalar};
+
+/// A filter written out by `gen` (`Ekf`, `Ukf` of a generated design): its state and covariance,
+/// one sample as straight-line code, and the design's targets. Implemented by generated code only.
+pub trait Filter<T, const NX: usize, const NY: usize, const NU: usize, const NT: usize>: Copy {
+    /// The filter at its start: a constant, so that an observer can be a `static`'s initial value.
+    const FRESH: Self;
+
+    /// Takes the sample `(y, u)`: the estimate given it, `x̂(k|k)`, or the refusal of a sample that
+    /// is not finite or whose result is not (the filter then predicts, or keeps, its state).
+    fn push(&mut self, y: &[T; NY], u: &[T; NU]) -> Result<[T; NX], RejectedSample>;
+
+    /// The targets at state `x` and input `u`.
+    fn targets(x: &[T; NX], u: &[T; NU]) -> [T; NT];
+}
+
+/// The filter `F` of a design with the observers' interface: `push` takes a sample, `estimate` gives
+/// the targets of the latest accepted one (each `Inside`: the filter does not saturate), `reset`
+/// starts again. It has an estimate from the first accepted sample on; a refused sample keeps the
+/// previous one. `NT` targets from `NY` outputs and `NU` inputs, `NX` states.
+///
+/// Generated designs name it per filter: `BoxEkfObserver` (kind `ekf_box`) over their `Ekf`,
+/// `UkfObserver` (kind `ukf_box`) over their `Ukf`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FilterObserver<T, F, const NX: usize, const NY: usize, const NU: usize, const NT: usize> {
+    filter: F,
+    latest: Option<[Estimate<T>; NT]>,
+}
+
+impl<T, F, const NX: usize, const NY: usize, const NU: usize, const NT: usize> FilterObserver<T, F, NX, NY, NU, NT>
+where
+    T: Scalar,
+    F: Filter<T, NX, NY, NU, NT>,
+{
+    /// A fresh observer (the filter at its start), holding no sample yet.
+    #[must_use]
+    pub const fn new() -> Self {
+        FilterObserver {
+            filter: F::FRESH,
+            latest: None,
+        }
+    }
+
+    /// Takes the sample `(y, u)`: the filter's sample, then the targets of its estimate `x̂(k|k)`.
+    pub fn push(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
+        let x = self.filter.push(&y, &u)?;
+        let values = F::targets(&x, &u);
+        let mut latest = [Estimate {
+            value: T::ZERO,
+            saturation: Saturation::Inside,
+        }; NT];
+        for (e, value) in latest.iter_mut().zip(values) {
+            e.value = value;
+        }
+        self.latest = Some(latest);
+        Ok(())
+    }
+
+    /// The targets of the latest accepted sample; `None` before the first.
+    #[must_use]
+    pub fn estimate(&self) -> Option<[Estimate<T>; NT]> {
+        self.latest
+    }
+
+    /// Back to the start: the filter at its start, no estimate.
+    pub fn reset(&mut self) {
+        *self = Self::new();
+    }
+
+    /// Whether it has an estimate.
+    #[must_use]
+    pub fn is_ready(&self) -> bool {
+        self.latest.is_some()
+    }
+
+    /// The filter as it is now (its state and covariance).
+    #[must_use]
+    pub fn filter(&self) -> &F {
+        &self.filter
+    }
+}
+
+impl<T, F, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Default
+    for FilterObserver<T, F, NX, NY, NU, NT>
+where
+    T: Scalar,
+    F: Filter<T, NX, NY, NU, NT>,
+{
+    fn default() -> Self {
+        Self::new()
+    }
+}
