@@ -60,7 +60,7 @@ fn tuning_never_reads_the_validation_runs_or_the_scenario() {
     let design = load_relative("host/specs/vanderpol.toml");
     let result = build(&design);
     let code = ModelCode::new(&design).expect("Example 1's model is emittable");
-    let clean = compare(&design, &result, &code).expect("Example 1 compares");
+    let clean = compare(&design, &result, &code, &indicatif::ProgressBar::hidden()).expect("Example 1 compares");
 
     let mut poisoned = (*result).clone();
     // Every set but the learning and tuning runs (Example 1 has scenario draws; its parameters are
@@ -74,7 +74,8 @@ fn tuning_never_reads_the_validation_runs_or_the_scenario() {
         target.validation.target_spread = f64::NAN;
         target.validation.map.rmse = f64::NAN;
     }
-    let dirty = compare(&design, &poisoned, &code).expect("poisoned validation still compares");
+    let dirty = compare(&design, &poisoned, &code, &indicatif::ProgressBar::hidden())
+        .expect("poisoned validation still compares");
 
     assert_eq!(chosen(&clean), chosen(&dirty));
     // The poison reached what the validation figures read: every kind's validation RMSE is NaN
@@ -131,7 +132,7 @@ fn closed_loop_tuning_improves_on_its_start_and_the_ekf_matches_an_expert() {
     let design = load_relative("host/specs/vanderpol.toml");
     let result = build(&design);
     let code = ModelCode::new(&design).expect("Example 1's model is emittable");
-    let comparison = compare(&design, &result, &code).expect("Example 1 compares");
+    let comparison = compare(&design, &result, &code, &indicatif::ProgressBar::hidden()).expect("Example 1 compares");
     ekf_matches_a_grid_tuned_expert(&design, &result, &code, &comparison);
     the_restarted_ekf_is_its_two_parents_and_wins_both_regimes(&design, &result, &code, &comparison);
     let tuned = comparison.corrected.expect("Example 1 has a corrected map");

@@ -12,7 +12,7 @@ fn example_1() -> (host::spec::Design, host::fit::DesignResult, host::observers:
     let design = load_relative("host/specs/vanderpol.toml");
     let result = (*build(&design)).clone();
     let code = ModelCode::new(&design).expect("Example 1's model is emittable");
-    let comparison = compare(&design, &result, &code).expect("Example 1 compares");
+    let comparison = compare(&design, &result, &code, &indicatif::ProgressBar::hidden()).expect("Example 1 compares");
     (design, result, comparison)
 }
 
@@ -148,7 +148,8 @@ fn a_pendulum_whose_runs_go_over_the_top_warns() {
     let design = load_relative("tests/fixtures/pendulum_over_the_top.toml");
     let result = build(&design);
     let code = ModelCode::new(&design).expect("the pendulum's model is emittable");
-    let comparison = compare(&design, &result, &code).expect("the pendulum compares");
+    let comparison =
+        compare(&design, &result, &code, &indicatif::ProgressBar::hidden()).expect("the pendulum compares");
     let gates = check(&design, &result, &comparison);
     // Measured: θ's map is 1.077 times its linear floor on validation.
     assert!(

@@ -189,8 +189,8 @@ fn the_chip_estimator_on_a_linear_plant_gives_every_window_s_least_squares_end()
 #[test]
 fn a_non_finite_measurement_is_refused_while_the_window_fills() {
     let (ys, us) = window();
-    let mut with: Observer<f64, OnLinear<false>, 2, 2, 1, 8, 2> = Observer::new();
-    let mut without: Observer<f64, OnLinear<false>, 2, 2, 1, 8, 2> = Observer::new();
+    let mut with: Observer<f64, OnLinear<false>, 8, 2, 2, 1, 2> = Observer::new();
+    let mut without: Observer<f64, OnLinear<false>, 8, 2, 2, 1, 2> = Observer::new();
     for k in 0..8 {
         if k == 3 {
             assert_eq!(with.push([f64::NAN, 0.0], us[k]), Err(RejectedSample));
