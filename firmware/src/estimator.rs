@@ -60,6 +60,31 @@ pub trait Estimator {
 
 // Each observer by its own methods (which take precedence over the trait's in method resolution).
 
+/// The trait's four methods, each the observer type `$ty`'s own method of the same name.
+macro_rules! by_own_methods {
+    ($ty:ty) => {
+        #[inline(always)]
+        fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
+            <$ty>::push(self, y, u)
+        }
+
+        #[inline(always)]
+        fn estimate(&self) -> Option<Self::Estimates> {
+            <$ty>::estimate(self)
+        }
+
+        #[inline(always)]
+        fn reset(&mut self) {
+            <$ty>::reset(self)
+        }
+
+        #[inline(always)]
+        fn is_ready(&self) -> bool {
+            <$ty>::is_ready(self)
+        }
+    };
+}
+
 impl<T: Scalar, D, const N: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
     for Observer<T, D, N, NY, NU, NT>
 where
@@ -71,25 +96,7 @@ where
     type Estimates = [Estimate<T>; NT];
     type Error = RejectedSample;
 
-    #[inline(always)]
-    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
-        <Observer<T, D, N, NY, NU, NT>>::push(self, y, u)
-    }
-
-    #[inline(always)]
-    fn estimate(&self) -> Option<Self::Estimates> {
-        <Observer<T, D, N, NY, NU, NT>>::estimate(self)
-    }
-
-    #[inline(always)]
-    fn reset(&mut self) {
-        <Observer<T, D, N, NY, NU, NT>>::reset(self)
-    }
-
-    #[inline(always)]
-    fn is_ready(&self) -> bool {
-        <Observer<T, D, N, NY, NU, NT>>::is_ready(self)
-    }
+    by_own_methods!(Observer<T, D, N, NY, NU, NT>);
 }
 
 impl<T: Scalar, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
@@ -104,25 +111,7 @@ where
     type Estimates = [Estimate<T>; NT];
     type Error = RejectedSample;
 
-    #[inline(always)]
-    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
-        <Started<T, D, F, N, NX, NY, NU, NT>>::push(self, y, u)
-    }
-
-    #[inline(always)]
-    fn estimate(&self) -> Option<Self::Estimates> {
-        <Started<T, D, F, N, NX, NY, NU, NT>>::estimate(self)
-    }
-
-    #[inline(always)]
-    fn reset(&mut self) {
-        <Started<T, D, F, N, NX, NY, NU, NT>>::reset(self)
-    }
-
-    #[inline(always)]
-    fn is_ready(&self) -> bool {
-        <Started<T, D, F, N, NX, NY, NU, NT>>::is_ready(self)
-    }
+    by_own_methods!(Started<T, D, F, N, NX, NY, NU, NT>);
 }
 
 impl<T: Scalar, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
@@ -137,25 +126,7 @@ where
     type Estimates = [Estimate<T>; NT];
     type Error = RejectedSample;
 
-    #[inline(always)]
-    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
-        <Restarted<T, D, F, N, NX, NY, NU, NT>>::push(self, y, u)
-    }
-
-    #[inline(always)]
-    fn estimate(&self) -> Option<Self::Estimates> {
-        <Restarted<T, D, F, N, NX, NY, NU, NT>>::estimate(self)
-    }
-
-    #[inline(always)]
-    fn reset(&mut self) {
-        <Restarted<T, D, F, N, NX, NY, NU, NT>>::reset(self)
-    }
-
-    #[inline(always)]
-    fn is_ready(&self) -> bool {
-        <Restarted<T, D, F, N, NX, NY, NU, NT>>::is_ready(self)
-    }
+    by_own_methods!(Restarted<T, D, F, N, NX, NY, NU, NT>);
 }
 
 impl<T: Scalar, F, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
@@ -169,25 +140,7 @@ where
     type Estimates = [Estimate<T>; NT];
     type Error = RejectedSample;
 
-    #[inline(always)]
-    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
-        <FilterObserver<T, F, NX, NY, NU, NT>>::push(self, y, u)
-    }
-
-    #[inline(always)]
-    fn estimate(&self) -> Option<Self::Estimates> {
-        <FilterObserver<T, F, NX, NY, NU, NT>>::estimate(self)
-    }
-
-    #[inline(always)]
-    fn reset(&mut self) {
-        <FilterObserver<T, F, NX, NY, NU, NT>>::reset(self)
-    }
-
-    #[inline(always)]
-    fn is_ready(&self) -> bool {
-        <FilterObserver<T, F, NX, NY, NU, NT>>::is_ready(self)
-    }
+    by_own_methods!(FilterObserver<T, F, NX, NY, NU, NT>);
 }
 
 impl<T: Scalar, H, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
@@ -201,25 +154,7 @@ where
     type Estimates = [Estimate<T>; NT];
     type Error = RejectedSample;
 
-    #[inline(always)]
-    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
-        <crate::mhe::Observer<T, H, N, NX, NY, NU, NT>>::push(self, y, u)
-    }
-
-    #[inline(always)]
-    fn estimate(&self) -> Option<Self::Estimates> {
-        <crate::mhe::Observer<T, H, N, NX, NY, NU, NT>>::estimate(self)
-    }
-
-    #[inline(always)]
-    fn reset(&mut self) {
-        <crate::mhe::Observer<T, H, N, NX, NY, NU, NT>>::reset(self)
-    }
-
-    #[inline(always)]
-    fn is_ready(&self) -> bool {
-        <crate::mhe::Observer<T, H, N, NX, NY, NU, NT>>::is_ready(self)
-    }
+    by_own_methods!(crate::mhe::Observer<T, H, N, NX, NY, NU, NT>);
 }
 
 impl<D, const N: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
@@ -233,25 +168,7 @@ where
     type Estimates = [Estimate<i32>; NT];
     type Error = OutOfRange;
 
-    #[inline(always)]
-    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
-        <fixed::Observer<D, N, NY, NU, NT>>::push(self, y, u)
-    }
-
-    #[inline(always)]
-    fn estimate(&self) -> Option<Self::Estimates> {
-        <fixed::Observer<D, N, NY, NU, NT>>::estimate(self)
-    }
-
-    #[inline(always)]
-    fn reset(&mut self) {
-        <fixed::Observer<D, N, NY, NU, NT>>::reset(self)
-    }
-
-    #[inline(always)]
-    fn is_ready(&self) -> bool {
-        <fixed::Observer<D, N, NY, NU, NT>>::is_ready(self)
-    }
+    by_own_methods!(fixed::Observer<D, N, NY, NU, NT>);
 }
 
 impl<'a, T, const N: usize, const NY: usize, const NU: usize, const NT: usize, const K: usize> Estimator
@@ -265,23 +182,5 @@ where
     type Estimates = [Estimate<T>; NT];
     type Error = RejectedSample;
 
-    #[inline(always)]
-    fn push(&mut self, y: Self::Outputs, u: Self::Inputs) -> Result<(), Self::Error> {
-        <FamilyObserver<'a, T, N, NY, NU, NT, K>>::push(self, y, u)
-    }
-
-    #[inline(always)]
-    fn estimate(&self) -> Option<Self::Estimates> {
-        <FamilyObserver<'a, T, N, NY, NU, NT, K>>::estimate(self)
-    }
-
-    #[inline(always)]
-    fn reset(&mut self) {
-        <FamilyObserver<'a, T, N, NY, NU, NT, K>>::reset(self)
-    }
-
-    #[inline(always)]
-    fn is_ready(&self) -> bool {
-        <FamilyObserver<'a, T, N, NY, NU, NT, K>>::is_ready(self)
-    }
+    by_own_methods!(FamilyObserver<'a, T, N, NY, NU, NT, K>);
 }

@@ -16,9 +16,9 @@
 //!   EKF the spec's `[budget] instructions` does not allow (as [`crate::search::cost`] predicts it)
 //!   is not a choice, so it does not count.
 //! * [`Gate::RawRangeShort`]: a signal's declared raw range (`[chip.raw.<signal>]`) stands for values
-//!   that more than [`OUTSIDE_FRACTION`] of the learning runs' samples leave: the chip refuses those
-//!   samples (the integer map's proof holds only inside the range), so the integer map is far worse
-//!   than the float map there.
+//!   that more than [`OUTSIDE_FRACTION`] of the learning runs' samples leave: a converter holds those
+//!   samples at its range's ends, so the integer map reads values the signal does not have and is far
+//!   worse than the float map there.
 //! * [`Gate::StartOutsideBox`]: a filter's start the spec fixes (`[observer.ekf] x0`,
 //!   `[observer.ukf] x0`) or a scenario's `observer_x0` lies outside the learning box: the filter
 //!   starts where no learning or validation run starts, which is allowed (a published filter's guess
@@ -158,8 +158,8 @@ impl fmt::Display for Gate {
             Gate::RawRangeShort { signal, covered, seen, fraction } => write!(
                 f,
                 "`chip.raw.{signal}`: the declared raw range stands for [{:.4}, {:.4}], but `{signal}` spans [{:.4}, {:.4}] in the \
-                 learning runs ({:.1} % of their samples outside): the chip refuses those samples, and the integer map is \
-                 not what was fitted there; declare the converter's real span (`min`, `max`, `scale`, `offset`), or scale \
+                 learning runs ({:.1} % of their samples outside): a converter holds those samples at its range's ends, so \
+                 the integer map reads values the signal does not have; declare the converter's real span (`min`, `max`, `scale`, `offset`), or scale \
                  the signal into the converter's input range",
                 covered.0,
                 covered.1,
@@ -180,31 +180,18 @@ impl fmt::Display for Gate {
 
 /// The starts the spec gives a filter outside the learning box ([`Gate::StartOutsideBox`]).
 pub fn starts_outside_box(design: &Design) -> Vec<Gate> {
-    let mut starts = vec![
-        ("observer.ekf.x0".to_owned(), design.filters.ekf.x0.as_ref()),
-        ("observer.ukf.x0".to_owned(), design.filters.ukf.x0.as_ref()),
-    ];
-    // Every scenario's, named as the spec's field: `scenario.…` for one, `scenario[i].…` for several.
-    let several = design.scenarios.len() > 1;
-    for (i, scenario) in design.scenarios.iter().enumerate() {
-        let section = if several {
-            format!("scenario[{i}]")
-        } else {
-            "scenario".to_owned()
-        };
-        starts.push((format!("{section}.observer_x0"), scenario.observer_x0.as_ref()));
-    }
     let mut outside = Vec::new();
-    for (field, start) in starts {
-        let Some(start) = start else { continue };
-        for ((state, axis), &value) in design.model.states.iter().zip(&design.learning.axes).zip(start) {
+    // The observers' starts (a scenario's plant start may lie anywhere within the bounds).
+    let starts = crate::spec::starts::starts(&design.filters, &design.scenarios);
+    for start in starts.iter().filter(|s| !s.plant) {
+        for ((state, axis), &value) in design.model.states.iter().zip(&design.learning.axes).zip(start.values) {
             let range = match *axis {
                 crate::spec::Axis::Range { min, max, .. } => (min, max),
                 crate::spec::Axis::Fixed(held) => (held, held),
             };
             if !(range.0..=range.1).contains(&value) {
                 outside.push(Gate::StartOutsideBox {
-                    field: field.clone(),
+                    field: start.field.clone(),
                     state: state.clone(),
                     value,
                     range,

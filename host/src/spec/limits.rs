@@ -66,19 +66,17 @@ pub(super) fn check_budget(design: &Design) -> Result<(), SpecError> {
     let tuning = design.tuning.trajectories as f64 * design.tuning.samples as f64;
     let samples = learning + validation + tuning + scenario + corners * validation;
     // The error names the section that asks for the most: where the fix has the most effect.
-    let several = design.scenarios.len() > 1;
     let largest_scenario = design
         .scenarios
         .iter()
         .enumerate()
         .max_by_key(|(_, s)| s.samples)
-        .map_or("scenario.samples".to_owned(), |(i, _)| {
-            if several {
-                format!("scenario[{i}].samples")
-            } else {
-                "scenario.samples".to_owned()
-            }
-        });
+        .map_or(0, |(i, _)| i);
+    // Named as `starts::scenario_section` names it (not imported: `starts` reads the validated filters).
+    let largest_scenario = match design.scenarios.len() {
+        0 | 1 => "scenario.samples".to_owned(),
+        _ => format!("scenario[{largest_scenario}].samples"),
+    };
     let shares = [
         (learning, "learning".to_owned()),
         (validation, "validation".to_owned()),

@@ -12,6 +12,7 @@ pub mod model;
 mod raw;
 mod raw_scenario;
 pub mod search;
+pub mod starts;
 mod validate;
 mod validate_chip;
 mod validate_design;

@@ -110,30 +110,12 @@ impl Validator {
         scenarios: &[super::Scenario],
         filters: &super::FixedFilters,
     ) -> Result<(), SpecError> {
-        let several = scenarios.len() > 1;
-        let mut starts: Vec<(String, &[f64])> = Vec::new();
-        for (i, scenario) in scenarios.iter().enumerate() {
-            let section = if several {
-                format!("scenario[{i}]")
-            } else {
-                "scenario".to_owned()
-            };
-            starts.push((format!("{section}.x0"), &scenario.x0));
-            if let Some(x0) = &scenario.observer_x0 {
-                starts.push((format!("{section}.observer_x0"), x0));
-            }
-        }
-        for (section, fixed) in [("observer.ekf", &filters.ekf), ("observer.ukf", &filters.ukf)] {
-            if let Some(x0) = &fixed.x0 {
-                starts.push((format!("{section}.x0"), x0));
-            }
-        }
-        for (field, start) in starts {
-            for ((name, bound), &value) in model.states.iter().zip(bounds).zip(start) {
+        for start in super::starts::starts(filters, scenarios) {
+            for ((name, bound), &value) in model.states.iter().zip(bounds).zip(start.values) {
                 if value < bound.lower() || value > bound.upper() {
                     let side = |v: Option<f64>| v.map_or("unbounded".to_owned(), |v| v.to_string());
                     return Err(self.err(
-                        field,
+                        start.field,
                         format!(
                             "`{name}` = {value} is outside its bounds (`model.bounds.{name}`: min {}, max {})",
                             side(bound.min),

@@ -51,6 +51,12 @@ use folder::{is_mount_point, probe, resolve};
 /// The prefix of a staging folder's name, before the crate folder's name.
 const STAGE: &str = ".gen-";
 
+/// An I/O error at `path` as `gen`'s error.
+fn io(path: &Path) -> impl FnOnce(std::io::Error) -> GenerateError {
+    let path = path.to_owned();
+    move |source| GenerateError::Io { path, source }
+}
+
 /// How a crate will be published, decided by [`plan`] before anything is fitted.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Publication {
@@ -81,10 +87,6 @@ pub struct Plan {
 /// where that cannot work, the folder itself. Creates nothing that stays: the folder's missing
 /// parents are created (the crate goes there anyway), the probe stages are removed at once.
 pub fn plan(folder: &Path) -> Result<Plan, GenerateError> {
-    let io = |path: &Path| {
-        let path = path.to_owned();
-        move |source| GenerateError::Io { path, source }
-    };
     let folder = resolve(folder).map_err(io(folder))?;
     let (parent, name) = match (folder.parent(), folder.file_name()) {
         (Some(parent), Some(name)) => (parent.to_owned(), name.to_string_lossy().into_owned()),
@@ -142,10 +144,6 @@ impl Plan {
     /// stage replaces the folder (see the module's documentation). A failure at any step removes the
     /// stage.
     pub fn replace<T>(&self, build: impl FnOnce(&Path) -> Result<T, GenerateError>) -> Result<T, GenerateError> {
-        let io = |path: &Path| {
-            let path = path.to_owned();
-            move |source| GenerateError::Io { path, source }
-        };
         let home = match self.publication {
             Publication::Swap => &self.parent,
             Publication::InPlace { .. } => &self.folder,
@@ -174,10 +172,6 @@ impl Plan {
 
     /// Publishes the complete stage beside the folder by one rename (steps 2 to 3).
     fn swap_in(&self, stage: &Path) -> Result<(), GenerateError> {
-        let io = |path: &Path| {
-            let path = path.to_owned();
-            move |source| GenerateError::Io { path, source }
-        };
         let folder = &self.folder;
         if folder.is_dir() {
             carry(folder, stage).map_err(io(folder))?;
