@@ -22,8 +22,8 @@ pub trait Filter<T, const NX: usize, const NY: usize, const NU: usize, const NT:
 /// starts again. It has an estimate from the first accepted sample on; a refused sample keeps the
 /// previous one. `NT` targets from `NY` outputs and `NU` inputs, `NX` states.
 ///
-/// Generated designs name it per filter: `BoxEkfObserver` (kind `ekf_box`) over their `Ekf`,
-/// `UkfObserver` (kind `ukf_box`) over their `Ukf`.
+/// Generated designs name it per filter, after the filter's kind (`generated::for_each_observer!`
+/// lists each design's kinds and types).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FilterObserver<T, F, const NX: usize, const NY: usize, const NU: usize, const NT: usize> {
     filter: F,

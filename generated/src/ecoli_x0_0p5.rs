@@ -4569,7 +4569,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "170c3310a9ca82126f99263a2af1b529b6e9b7c77c52b1cda4672424303c8d9b";
+pub const TABLES_SHA256: &str = "ffd7cfd97b596928a4af112337ca629380717724bed1efe8cfec8dfecd5e0976";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.
@@ -4893,3 +4893,37 @@ pub const RECORDED_RAW_U: [[i32; INPUTS]; RECORDED_LEN] = [
     [],
     [],
 ];
+
+/// This design's observers, for code that treats every kind alike (the tests, the on-target runner):
+/// `(each $callback)` invokes `$callback!(ecoli_x0_0p5, kind, Type)` for each kind it has, `kind` named as
+/// the spec and the report name it and `Type` its type here (`Type::new()` makes one); `(fixed
+/// $callback)` invokes `$callback!(ecoli_x0_0p5, FixedObserver)` where the design has the integer map;
+/// `(new kind)` is a fresh observer of that kind.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! ecoli_x0_0p5_observers {
+    (each $callback:ident) => {
+        $callback!(ecoli_x0_0p5, map, MapObserver);
+        $callback!(ecoli_x0_0p5, ekf_box, BoxEkfObserver);
+        $callback!(ecoli_x0_0p5, ukf_box, UkfObserver);
+        $callback!(ecoli_x0_0p5, mhe, MheObserver);
+    };
+    (fixed $callback:ident) => {
+        $callback!(ecoli_x0_0p5, FixedObserver);
+    };
+    (new map) => {
+        $crate::ecoli_x0_0p5::MapObserver::new()
+    };
+    (new ekf_box) => {
+        $crate::ecoli_x0_0p5::BoxEkfObserver::new()
+    };
+    (new ukf_box) => {
+        $crate::ecoli_x0_0p5::UkfObserver::new()
+    };
+    (new mhe) => {
+        $crate::ecoli_x0_0p5::MheObserver::new()
+    };
+    (new $other:ident) => {
+        compile_error!(concat!("design `ecoli_x0_0p5` has no observer of kind `", stringify!($other), "`; its kinds: map, ekf_box, ukf_box, mhe"))
+    };
+}

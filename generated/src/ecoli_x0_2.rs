@@ -5015,7 +5015,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "840db6c37614ab380e4780c0da28b908305cd7b2ab497c7335f8395a1210866e";
+pub const TABLES_SHA256: &str = "2c0ae52efd6f4dd4a23f790b847dfcaa09ef9292843bdfee33b3990c7cb75a62";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.
@@ -5785,3 +5785,37 @@ pub const RECORDED_RAW_U: [[i32; INPUTS]; RECORDED_LEN] = [
     [],
     [],
 ];
+
+/// This design's observers, for code that treats every kind alike (the tests, the on-target runner):
+/// `(each $callback)` invokes `$callback!(ecoli_x0_2, kind, Type)` for each kind it has, `kind` named as
+/// the spec and the report name it and `Type` its type here (`Type::new()` makes one); `(fixed
+/// $callback)` invokes `$callback!(ecoli_x0_2, FixedObserver)` where the design has the integer map;
+/// `(new kind)` is a fresh observer of that kind.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! ecoli_x0_2_observers {
+    (each $callback:ident) => {
+        $callback!(ecoli_x0_2, map, MapObserver);
+        $callback!(ecoli_x0_2, ekf_box, BoxEkfObserver);
+        $callback!(ecoli_x0_2, ukf_box, UkfObserver);
+        $callback!(ecoli_x0_2, mhe, MheObserver);
+    };
+    (fixed $callback:ident) => {
+        $callback!(ecoli_x0_2, FixedObserver);
+    };
+    (new map) => {
+        $crate::ecoli_x0_2::MapObserver::new()
+    };
+    (new ekf_box) => {
+        $crate::ecoli_x0_2::BoxEkfObserver::new()
+    };
+    (new ukf_box) => {
+        $crate::ecoli_x0_2::UkfObserver::new()
+    };
+    (new mhe) => {
+        $crate::ecoli_x0_2::MheObserver::new()
+    };
+    (new $other:ident) => {
+        compile_error!(concat!("design `ecoli_x0_2` has no observer of kind `", stringify!($other), "`; its kinds: map, ekf_box, ukf_box, mhe"))
+    };
+}

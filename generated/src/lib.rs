@@ -109,3 +109,60 @@ macro_rules! for_each_design {
         $callback!(vanderpol_uncertain);
     };
 }
+
+/// Invokes `$callback!(design, kind, Type)` for every observer of every design module: `kind` named as
+/// the spec and the report name it (`ekf_box`), `Type` its type in the design's module (`Type::new()`
+/// makes one). The list `gen` wrote: what the tests and the on-target runner iterate.
+#[macro_export]
+macro_rules! for_each_observer {
+    ($callback:ident) => {
+        $crate::ecoli_x0_0p5_observers!(each $callback);
+        $crate::ecoli_x0_2_observers!(each $callback);
+        $crate::two_tanks_observers!(each $callback);
+        $crate::vanderpol_observers!(each $callback);
+        $crate::vanderpol_searched_observers!(each $callback);
+        $crate::vanderpol_sparse_observers!(each $callback);
+        $crate::vanderpol_uncertain_observers!(each $callback);
+    };
+}
+
+/// Invokes `$callback!(design, FixedObserver)` for every design module with the integer map.
+#[macro_export]
+macro_rules! for_each_fixed_observer {
+    ($callback:ident) => {
+        $crate::ecoli_x0_0p5_observers!(fixed $callback);
+        $crate::ecoli_x0_2_observers!(fixed $callback);
+        $crate::two_tanks_observers!(fixed $callback);
+        $crate::vanderpol_observers!(fixed $callback);
+        $crate::vanderpol_searched_observers!(fixed $callback);
+        $crate::vanderpol_sparse_observers!(fixed $callback);
+        $crate::vanderpol_uncertain_observers!(fixed $callback);
+    };
+}
+
+/// `new_observer!(design, kind)`: a fresh observer of `kind` (named as in [`for_each_observer!`]) of
+/// design module `design`; a kind the design lacks does not compile, and says which it has.
+#[macro_export]
+macro_rules! new_observer {
+    (ecoli_x0_0p5, $kind:ident) => {
+        $crate::ecoli_x0_0p5_observers!(new $kind)
+    };
+    (ecoli_x0_2, $kind:ident) => {
+        $crate::ecoli_x0_2_observers!(new $kind)
+    };
+    (two_tanks, $kind:ident) => {
+        $crate::two_tanks_observers!(new $kind)
+    };
+    (vanderpol, $kind:ident) => {
+        $crate::vanderpol_observers!(new $kind)
+    };
+    (vanderpol_searched, $kind:ident) => {
+        $crate::vanderpol_searched_observers!(new $kind)
+    };
+    (vanderpol_sparse, $kind:ident) => {
+        $crate::vanderpol_sparse_observers!(new $kind)
+    };
+    (vanderpol_uncertain, $kind:ident) => {
+        $crate::vanderpol_uncertain_observers!(new $kind)
+    };
+}

@@ -3030,7 +3030,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "4ca99136f36e68cdd44b9ca4f162ac44ad04f061e4828c0203e9fcb1af6a7d49";
+pub const TABLES_SHA256: &str = "cf4c1e04b680152c2da1b21a68fa0228e4c4e91c257c30b36c45e4d8be33c337";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.
@@ -4034,3 +4034,49 @@ pub const RECORDED_RAW_U: [[i32; INPUTS]; RECORDED_LEN] = [
     [32767],
     [32767],
 ];
+
+/// This design's observers, for code that treats every kind alike (the tests, the on-target runner):
+/// `(each $callback)` invokes `$callback!(two_tanks, kind, Type)` for each kind it has, `kind` named as
+/// the spec and the report name it and `Type` its type here (`Type::new()` makes one); `(fixed
+/// $callback)` invokes `$callback!(two_tanks, FixedObserver)` where the design has the integer map;
+/// `(new kind)` is a fresh observer of that kind.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! two_tanks_observers {
+    (each $callback:ident) => {
+        $callback!(two_tanks, map, MapObserver);
+        $callback!(two_tanks, ekf_box, BoxEkfObserver);
+        $callback!(two_tanks, ukf_box, UkfObserver);
+        $callback!(two_tanks, corrected, CorrectedObserver);
+        $callback!(two_tanks, ekf_map, StartedEkfObserver);
+        $callback!(two_tanks, ekf_restart, RestartedEkfObserver);
+        $callback!(two_tanks, mhe, MheObserver);
+    };
+    (fixed $callback:ident) => {
+        $callback!(two_tanks, FixedObserver);
+    };
+    (new map) => {
+        $crate::two_tanks::MapObserver::new()
+    };
+    (new ekf_box) => {
+        $crate::two_tanks::BoxEkfObserver::new()
+    };
+    (new ukf_box) => {
+        $crate::two_tanks::UkfObserver::new()
+    };
+    (new corrected) => {
+        $crate::two_tanks::CorrectedObserver::new()
+    };
+    (new ekf_map) => {
+        $crate::two_tanks::StartedEkfObserver::new()
+    };
+    (new ekf_restart) => {
+        $crate::two_tanks::RestartedEkfObserver::new()
+    };
+    (new mhe) => {
+        $crate::two_tanks::MheObserver::new()
+    };
+    (new $other:ident) => {
+        compile_error!(concat!("design `two_tanks` has no observer of kind `", stringify!($other), "`; its kinds: map, ekf_box, ukf_box, corrected, ekf_map, ekf_restart, mhe"))
+    };
+}

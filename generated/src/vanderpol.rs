@@ -2132,7 +2132,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "7522222e1c6240b7361c15dbe2f7e286ad91835811ce24817b1f865265a318b9";
+pub const TABLES_SHA256: &str = "353c2c2d6bd10d2c6a66bb41b3a81efadc237a030d8afb34887ae76e12fe339b";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.
@@ -2602,3 +2602,49 @@ pub const RECORDED_RAW_U: [[i32; INPUTS]; RECORDED_LEN] = [
     [],
     [],
 ];
+
+/// This design's observers, for code that treats every kind alike (the tests, the on-target runner):
+/// `(each $callback)` invokes `$callback!(vanderpol, kind, Type)` for each kind it has, `kind` named as
+/// the spec and the report name it and `Type` its type here (`Type::new()` makes one); `(fixed
+/// $callback)` invokes `$callback!(vanderpol, FixedObserver)` where the design has the integer map;
+/// `(new kind)` is a fresh observer of that kind.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! vanderpol_observers {
+    (each $callback:ident) => {
+        $callback!(vanderpol, map, MapObserver);
+        $callback!(vanderpol, ekf_box, BoxEkfObserver);
+        $callback!(vanderpol, ukf_box, UkfObserver);
+        $callback!(vanderpol, corrected, CorrectedObserver);
+        $callback!(vanderpol, ekf_map, StartedEkfObserver);
+        $callback!(vanderpol, ekf_restart, RestartedEkfObserver);
+        $callback!(vanderpol, mhe, MheObserver);
+    };
+    (fixed $callback:ident) => {
+        $callback!(vanderpol, FixedObserver);
+    };
+    (new map) => {
+        $crate::vanderpol::MapObserver::new()
+    };
+    (new ekf_box) => {
+        $crate::vanderpol::BoxEkfObserver::new()
+    };
+    (new ukf_box) => {
+        $crate::vanderpol::UkfObserver::new()
+    };
+    (new corrected) => {
+        $crate::vanderpol::CorrectedObserver::new()
+    };
+    (new ekf_map) => {
+        $crate::vanderpol::StartedEkfObserver::new()
+    };
+    (new ekf_restart) => {
+        $crate::vanderpol::RestartedEkfObserver::new()
+    };
+    (new mhe) => {
+        $crate::vanderpol::MheObserver::new()
+    };
+    (new $other:ident) => {
+        compile_error!(concat!("design `vanderpol` has no observer of kind `", stringify!($other), "`; its kinds: map, ekf_box, ukf_box, corrected, ekf_map, ekf_restart, mhe"))
+    };
+}

@@ -2083,7 +2083,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "e8144096f4a489720c677fd1c0a1c36e6a8fc6fa7e15c40a5bb45fa92ad5ab70";
+pub const TABLES_SHA256: &str = "2bdf5fe9baf99e24c43f29ae546ef3b38e8bccccdcec2517c92c62b014a0e602";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.
@@ -2492,3 +2492,49 @@ pub const RECORDED_RAW_U: [[i32; INPUTS]; RECORDED_LEN] = [
     [],
     [],
 ];
+
+/// This design's observers, for code that treats every kind alike (the tests, the on-target runner):
+/// `(each $callback)` invokes `$callback!(vanderpol_searched, kind, Type)` for each kind it has, `kind` named as
+/// the spec and the report name it and `Type` its type here (`Type::new()` makes one); `(fixed
+/// $callback)` invokes `$callback!(vanderpol_searched, FixedObserver)` where the design has the integer map;
+/// `(new kind)` is a fresh observer of that kind.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! vanderpol_searched_observers {
+    (each $callback:ident) => {
+        $callback!(vanderpol_searched, map, MapObserver);
+        $callback!(vanderpol_searched, ekf_box, BoxEkfObserver);
+        $callback!(vanderpol_searched, ukf_box, UkfObserver);
+        $callback!(vanderpol_searched, corrected, CorrectedObserver);
+        $callback!(vanderpol_searched, ekf_map, StartedEkfObserver);
+        $callback!(vanderpol_searched, ekf_restart, RestartedEkfObserver);
+        $callback!(vanderpol_searched, mhe, MheObserver);
+    };
+    (fixed $callback:ident) => {
+        $callback!(vanderpol_searched, FixedObserver);
+    };
+    (new map) => {
+        $crate::vanderpol_searched::MapObserver::new()
+    };
+    (new ekf_box) => {
+        $crate::vanderpol_searched::BoxEkfObserver::new()
+    };
+    (new ukf_box) => {
+        $crate::vanderpol_searched::UkfObserver::new()
+    };
+    (new corrected) => {
+        $crate::vanderpol_searched::CorrectedObserver::new()
+    };
+    (new ekf_map) => {
+        $crate::vanderpol_searched::StartedEkfObserver::new()
+    };
+    (new ekf_restart) => {
+        $crate::vanderpol_searched::RestartedEkfObserver::new()
+    };
+    (new mhe) => {
+        $crate::vanderpol_searched::MheObserver::new()
+    };
+    (new $other:ident) => {
+        compile_error!(concat!("design `vanderpol_searched` has no observer of kind `", stringify!($other), "`; its kinds: map, ekf_box, ukf_box, corrected, ekf_map, ekf_restart, mhe"))
+    };
+}

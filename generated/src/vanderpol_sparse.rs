@@ -2080,7 +2080,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "6bb290747eaac896df2a32578fbd4800e5c44f67e75d1a473b1ea526eeb27a12";
+pub const TABLES_SHA256: &str = "b34a6b5e2894dc6af77c0191363f9d6643e3f7b44f33db926837d93553bc2903";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.
@@ -2471,3 +2471,49 @@ pub const RECORDED_RAW_U: [[i32; INPUTS]; RECORDED_LEN] = [
     [],
     [],
 ];
+
+/// This design's observers, for code that treats every kind alike (the tests, the on-target runner):
+/// `(each $callback)` invokes `$callback!(vanderpol_sparse, kind, Type)` for each kind it has, `kind` named as
+/// the spec and the report name it and `Type` its type here (`Type::new()` makes one); `(fixed
+/// $callback)` invokes `$callback!(vanderpol_sparse, FixedObserver)` where the design has the integer map;
+/// `(new kind)` is a fresh observer of that kind.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! vanderpol_sparse_observers {
+    (each $callback:ident) => {
+        $callback!(vanderpol_sparse, map, MapObserver);
+        $callback!(vanderpol_sparse, ekf_box, BoxEkfObserver);
+        $callback!(vanderpol_sparse, ukf_box, UkfObserver);
+        $callback!(vanderpol_sparse, corrected, CorrectedObserver);
+        $callback!(vanderpol_sparse, ekf_map, StartedEkfObserver);
+        $callback!(vanderpol_sparse, ekf_restart, RestartedEkfObserver);
+        $callback!(vanderpol_sparse, mhe, MheObserver);
+    };
+    (fixed $callback:ident) => {
+        $callback!(vanderpol_sparse, FixedObserver);
+    };
+    (new map) => {
+        $crate::vanderpol_sparse::MapObserver::new()
+    };
+    (new ekf_box) => {
+        $crate::vanderpol_sparse::BoxEkfObserver::new()
+    };
+    (new ukf_box) => {
+        $crate::vanderpol_sparse::UkfObserver::new()
+    };
+    (new corrected) => {
+        $crate::vanderpol_sparse::CorrectedObserver::new()
+    };
+    (new ekf_map) => {
+        $crate::vanderpol_sparse::StartedEkfObserver::new()
+    };
+    (new ekf_restart) => {
+        $crate::vanderpol_sparse::RestartedEkfObserver::new()
+    };
+    (new mhe) => {
+        $crate::vanderpol_sparse::MheObserver::new()
+    };
+    (new $other:ident) => {
+        compile_error!(concat!("design `vanderpol_sparse` has no observer of kind `", stringify!($other), "`; its kinds: map, ekf_box, ukf_box, corrected, ekf_map, ekf_restart, mhe"))
+    };
+}

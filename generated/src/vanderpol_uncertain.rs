@@ -2153,7 +2153,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "34cebf7679fcf00ab79cb857f9edcae1ab6f7a5f0a7ef54e0b34f30cbc907fc7";
+pub const TABLES_SHA256: &str = "f406aea7508685dcd5fa6de1fbf5cb56ec4d536003e4a4cec869826a5d03aeac";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.
@@ -2631,3 +2631,49 @@ pub const RECORDED_RAW_U: [[i32; INPUTS]; RECORDED_LEN] = [
     [],
     [],
 ];
+
+/// This design's observers, for code that treats every kind alike (the tests, the on-target runner):
+/// `(each $callback)` invokes `$callback!(vanderpol_uncertain, kind, Type)` for each kind it has, `kind` named as
+/// the spec and the report name it and `Type` its type here (`Type::new()` makes one); `(fixed
+/// $callback)` invokes `$callback!(vanderpol_uncertain, FixedObserver)` where the design has the integer map;
+/// `(new kind)` is a fresh observer of that kind.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! vanderpol_uncertain_observers {
+    (each $callback:ident) => {
+        $callback!(vanderpol_uncertain, map, MapObserver);
+        $callback!(vanderpol_uncertain, ekf_box, BoxEkfObserver);
+        $callback!(vanderpol_uncertain, ukf_box, UkfObserver);
+        $callback!(vanderpol_uncertain, corrected, CorrectedObserver);
+        $callback!(vanderpol_uncertain, ekf_map, StartedEkfObserver);
+        $callback!(vanderpol_uncertain, ekf_restart, RestartedEkfObserver);
+        $callback!(vanderpol_uncertain, mhe, MheObserver);
+    };
+    (fixed $callback:ident) => {
+        $callback!(vanderpol_uncertain, FixedObserver);
+    };
+    (new map) => {
+        $crate::vanderpol_uncertain::MapObserver::new()
+    };
+    (new ekf_box) => {
+        $crate::vanderpol_uncertain::BoxEkfObserver::new()
+    };
+    (new ukf_box) => {
+        $crate::vanderpol_uncertain::UkfObserver::new()
+    };
+    (new corrected) => {
+        $crate::vanderpol_uncertain::CorrectedObserver::new()
+    };
+    (new ekf_map) => {
+        $crate::vanderpol_uncertain::StartedEkfObserver::new()
+    };
+    (new ekf_restart) => {
+        $crate::vanderpol_uncertain::RestartedEkfObserver::new()
+    };
+    (new mhe) => {
+        $crate::vanderpol_uncertain::MheObserver::new()
+    };
+    (new $other:ident) => {
+        compile_error!(concat!("design `vanderpol_uncertain` has no observer of kind `", stringify!($other), "`; its kinds: map, ekf_box, ukf_box, corrected, ekf_map, ekf_restart, mhe"))
+    };
+}

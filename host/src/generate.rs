@@ -301,11 +301,19 @@ pub(crate) fn write_report(one: &Prepared) -> Result<(Vec<PathBuf>, Vec<PathBuf>
     })?;
     // The design as data, for `estimate` to run without fitting again.
     let tables = folder.join(crate::tables::FILE);
-    output::write_if_changed(&tables, &crate::tables::Tables::of(&one.emitted).to_json()).map_err(|source| {
-        GenerateError::Io {
-            path: tables.clone(),
-            source,
-        }
+    output::write_if_changed(
+        &tables,
+        &crate::tables::Tables::of(
+            &one.emitted.design,
+            &one.emitted.result,
+            &one.emitted.comparison,
+            &one.emitted.source,
+        )
+        .to_json(),
+    )
+    .map_err(|source| GenerateError::Io {
+        path: tables.clone(),
+        source,
     })?;
     report_files.push(tables);
     let Emitted {

@@ -12,13 +12,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::fit::maps::FittedMap;
 use crate::fit::DesignResult;
-use crate::generate::Emitted;
-use crate::observers::kind::Constants;
-use crate::observers::mhe::ChipConstants;
-use crate::observers::restart::RestartConstants;
+use crate::observers::kind::{KindConstants, TunedConstants};
 use crate::observers::Comparison;
-use crate::plant::correction::CorrectionConstants;
-use crate::plant::kalman::EkfConstants;
 use crate::spec::{Design, ObserverKind};
 
 /// The file's name in a report folder.
@@ -51,20 +46,8 @@ pub struct Tables {
     pub chosen: ObserverKind,
     /// Every target's map, in the spec's order.
     pub maps: Vec<FittedMap>,
-    /// The model-corrected map's constants, when the design has one.
-    pub corrected: Option<CorrectionConstants>,
-    /// The EKF's constants, when the design has one.
-    pub ekf: Option<EkfConstants>,
-    /// The UKF's constants (`ukf_box`), when the design has one: tuned on their own, the EKF's form.
-    #[serde(default)]
-    pub ukf: Option<EkfConstants>,
-    /// The map-started EKF's `P(N−1)` diagonal and each state's target, when it has one.
-    pub started: Option<(Vec<f64>, Vec<usize>)>,
-    /// The restarted EKF's check (`ekf_restart`), when it has one (with `ekf` and `started`).
-    pub restart: Option<RestartConstants>,
-    /// The moving-horizon observer's constants (`mhe`), when it has one.
-    #[serde(default)]
-    pub mhe: Option<ChipConstants>,
+    /// The tuned constants of every kind the design has, keyed by the kind's name.
+    pub constants: TunedConstants,
 }
 
 /// Why saved tables could not be read or written.
@@ -113,24 +96,17 @@ pub enum TablesError {
 }
 
 impl Tables {
-    /// The first group of constants `kind` runs on that these tables lack (its registry entry's
-    /// [`Needs::constants`](crate::observers::kind::Needs::constants)), if any.
-    pub fn missing(&self, kind: ObserverKind) -> Option<Constants> {
+    /// The first kind whose constants `kind` runs on (its registry entry's
+    /// [`Needs::reads`](crate::observers::kind::Needs::reads)) that these tables lack, if any.
+    pub fn missing(&self, kind: ObserverKind) -> Option<ObserverKind> {
         let entry = crate::observers::kind::of(kind);
-        entry.needs.constants.iter().copied().find(|c| match c {
-            Constants::Ekf => self.ekf.is_none(),
-            Constants::Ukf => self.ukf.is_none(),
-            Constants::Started => self.started.is_none(),
-            Constants::Restart => self.restart.is_none(),
-            Constants::Corrected => self.corrected.is_none(),
-            Constants::Mhe => self.mhe.is_none(),
-        })
+        entry.needs.reads.iter().copied().find(|&k| !self.constants.has(k))
     }
 
-    /// What `emitted` is, as data.
-    pub fn of(emitted: &Emitted) -> Self {
-        let mut tables = Self::new(&emitted.design, &emitted.result, Some(&emitted.comparison));
-        tables.source_sha256 = sha256(&emitted.source);
+    /// A design as `gen` emitted it (fitted, compared, and its observer file's text `source`), as data.
+    pub fn of(design: &Design, result: &DesignResult, comparison: &Comparison, source: &str) -> Self {
+        let mut tables = Self::new(design, result, Some(comparison));
+        tables.source_sha256 = sha256(source);
         tables
     }
 
@@ -147,16 +123,7 @@ impl Tables {
             taps: design.map.taps,
             chosen: comparison.map_or(ObserverKind::Map, |c| c.chosen.0),
             maps: result.targets.iter().map(|t| t.fit.map.clone()).collect(),
-            corrected: comparison
-                .and_then(|c| c.corrected.as_ref().ok())
-                .map(|t| t.constants.clone()),
-            ekf: comparison.and_then(|c| c.ekf.as_ref()).map(|t| t.constants.clone()),
-            ukf: comparison.and_then(|c| c.ukf.as_ref()).map(|t| t.constants.clone()),
-            started: comparison
-                .and_then(|c| c.started.as_ref())
-                .map(|s| (s.p0.clone(), s.state_targets.clone())),
-            restart: comparison.and_then(|c| c.restart.clone()),
-            mhe: comparison.and_then(|c| c.mhe.as_ref()).map(|t| t.constants.clone()),
+            constants: comparison.map(|c| c.tuned.constants()).unwrap_or_default(),
             tables_sha256: String::new(),
         };
         tables.tables_sha256 = tables.content_sha256();
@@ -248,51 +215,53 @@ impl Tables {
                 }
             }
         }
-        if let Some(c) = &self.corrected {
-            length("corrected.g", c.g.len(), nx)?;
-            length("corrected.k", c.k.len(), nx * ny)?;
-            length("corrected.k_start", c.k_start.len(), nx * ny)?;
-            length("corrected.lower", c.lower.len(), nx)?;
-            length("corrected.upper", c.upper.len(), nx)?;
-            if c.substeps == 0 {
-                return bad("corrected.substeps".to_owned(), "is 0".to_owned());
-            }
-        }
-        for (name, constants) in [("ekf", &self.ekf), ("ukf", &self.ukf)] {
-            let Some(e) = constants else { continue };
-            length(&format!("{name}.x0"), e.x0.len(), nx)?;
-            for (field, covariance) in [("p0", &e.p0), ("q", &e.q)] {
-                if let Err(problem) = covariance.check(nx) {
-                    return bad(format!("{name}.{field}"), problem.to_string());
+        for kind in self.constants.iter() {
+            let name = |field: &str| format!("constants.{}.{field}", kind.kind().name());
+            match kind {
+                KindConstants::Corrected(c) => {
+                    length(&name("g"), c.g.len(), nx)?;
+                    length(&name("k"), c.k.len(), nx * ny)?;
+                    length(&name("k_start"), c.k_start.len(), nx * ny)?;
+                    length(&name("lower"), c.lower.len(), nx)?;
+                    length(&name("upper"), c.upper.len(), nx)?;
+                    if c.substeps == 0 {
+                        return bad(name("substeps"), "is 0".to_owned());
+                    }
                 }
-            }
-            length(&format!("{name}.r"), e.r.len(), ny)?;
-            if e.substeps == 0 {
-                return bad(format!("{name}.substeps"), "is 0".to_owned());
-            }
-        }
-        if let Some((p0, state_targets)) = &self.started {
-            length("started.0", p0.len(), nx)?;
-            length("started.1", state_targets.len(), nx)?;
-            if let Some(&t) = state_targets.iter().find(|&&t| t >= self.maps.len()) {
-                return bad("started.1".to_owned(), format!("names target {t}, beyond the maps"));
-            }
-        }
-        if let Some(r) = &self.restart {
-            length("restart.variances", r.variances.len(), nx)?;
-        }
-        if let Some(m) = &self.mhe {
-            length("mhe.weights", m.weights.len(), ny)?;
-            for (field, values) in [
-                ("prior", &m.prior),
-                ("lower", &m.lower),
-                ("upper", &m.upper),
-                ("start", &m.start),
-            ] {
-                length(&format!("mhe.{field}"), values.len(), nx)?;
-            }
-            if m.substeps == 0 || m.iterations == 0 {
-                return bad("mhe.iterations".to_owned(), "or `mhe.substeps` is 0".to_owned());
+                KindConstants::EkfBox(e) | KindConstants::UkfBox(e) => {
+                    length(&name("x0"), e.x0.len(), nx)?;
+                    for (field, covariance) in [("p0", &e.p0), ("q", &e.q)] {
+                        if let Err(problem) = covariance.check(nx) {
+                            return bad(name(field), problem.to_string());
+                        }
+                    }
+                    length(&name("r"), e.r.len(), ny)?;
+                    if e.substeps == 0 {
+                        return bad(name("substeps"), "is 0".to_owned());
+                    }
+                }
+                KindConstants::EkfMap(s) => {
+                    length(&name("p0"), s.p0.len(), nx)?;
+                    length(&name("state_targets"), s.state_targets.len(), nx)?;
+                    if let Some(&t) = s.state_targets.iter().find(|&&t| t >= self.maps.len()) {
+                        return bad(name("state_targets"), format!("names target {t}, beyond the maps"));
+                    }
+                }
+                KindConstants::EkfRestart(r) => length(&name("variances"), r.variances.len(), nx)?,
+                KindConstants::Mhe(m) => {
+                    length(&name("weights"), m.weights.len(), ny)?;
+                    for (field, values) in [
+                        ("prior", &m.prior),
+                        ("lower", &m.lower),
+                        ("upper", &m.upper),
+                        ("start", &m.start),
+                    ] {
+                        length(&name(field), values.len(), nx)?;
+                    }
+                    if m.substeps == 0 || m.iterations == 0 {
+                        return bad(name("iterations"), format!("or `{}` is 0", name("substeps")));
+                    }
+                }
             }
         }
         if self.missing(self.chosen).is_some() {

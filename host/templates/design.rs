@@ -203,3 +203,31 @@ pub static RECORDED_U: [[f32; INPUTS]; RECORDED_LEN] = [
 {%- endif %}
 
 {{ model }}{{ fixed }}
+
+/// This design's observers, for code that treats every kind alike (the tests, the on-target runner):
+/// `(each $callback)` invokes `$callback!({{ name }}, kind, Type)` for each kind it has, `kind` named as
+/// the spec and the report name it and `Type` its type here (`Type::new()` makes one); `(fixed
+/// $callback)` invokes `$callback!({{ name }}, FixedObserver)` where the design has the integer map;
+/// `(new kind)` is a fresh observer of that kind.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! {{ name }}_observers {
+    (each $callback:ident) => {
+{%- for (kind, ty) in observers %}
+        $callback!({{ name }}, {{ kind }}, {{ ty }});
+{%- endfor %}
+    };
+    (fixed $callback:ident) => {
+{%- if has_fixed %}
+        $callback!({{ name }}, FixedObserver);
+{%- endif %}
+    };
+{%- for (kind, ty) in observers %}
+    (new {{ kind }}) => {
+        $crate::{{ name }}::{{ ty }}::new()
+    };
+{%- endfor %}
+    (new $other:ident) => {
+        compile_error!(concat!("design `{{ name }}` has no observer of kind `", stringify!($other), "`; its kinds: {% for (kind, _) in observers %}{{ kind }}{% if !loop.last %}, {% endif %}{% endfor %}"))
+    };
+}

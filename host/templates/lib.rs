@@ -98,3 +98,36 @@ macro_rules! for_each_design {
 {%- endfor %}
     };
 }
+
+/// Invokes `$callback!(design, kind, Type)` for every observer of every design module: `kind` named as
+/// the spec and the report name it (`ekf_box`), `Type` its type in the design's module (`Type::new()`
+/// makes one). The list `gen` wrote: what the tests and the on-target runner iterate.
+#[macro_export]
+macro_rules! for_each_observer {
+    ($callback:ident) => {
+{%- for name in designs %}
+        $crate::{{ name }}_observers!(each $callback);
+{%- endfor %}
+    };
+}
+
+/// Invokes `$callback!(design, FixedObserver)` for every design module with the integer map.
+#[macro_export]
+macro_rules! for_each_fixed_observer {
+    ($callback:ident) => {
+{%- for name in designs %}
+        $crate::{{ name }}_observers!(fixed $callback);
+{%- endfor %}
+    };
+}
+
+/// `new_observer!(design, kind)`: a fresh observer of `kind` (named as in [`for_each_observer!`]) of
+/// design module `design`; a kind the design lacks does not compile, and says which it has.
+#[macro_export]
+macro_rules! new_observer {
+{%- for name in designs %}
+    ({{ name }}, $kind:ident) => {
+        $crate::{{ name }}_observers!(new $kind)
+    };
+{%- endfor %}
+}

@@ -4,22 +4,11 @@
 
 use std::path::PathBuf;
 
-/// An observer kind the runner and the probe know: its name in `ON_TARGET_KIND` / `PROBE_KIND` and
-/// the expression, in the design's module, that makes a fresh one.
-const KINDS: [(&str, &str); 8] = [
-    ("map", "map_observer()"),
-    ("observer", "observer()"),
-    ("corrected", "CorrectedObserver::new()"),
-    ("started_ekf", "StartedEkfObserver::new()"),
-    ("restarted_ekf", "RestartedEkfObserver::new()"),
-    ("mhe", "MheObserver::new()"),
-    ("fixed", "fixed_observer()"),
-    ("ukf", "UkfObserver::new()"),
-];
+/// The design's chosen kind, `observer()`, in `ON_TARGET_KIND` / `PROBE_KIND`.
+const CHOSEN: &str = "observer";
 
-/// The unscented Kalman filter's observer (`firmware::FilterObserver` over the design's `Ukf`): the
-/// runner drives it through closures too.
-const UKF: &str = "ukf";
+/// The box EKF in `PROBE_KIND`: its filter (`ekf()`), as the `ekf` runner measures it.
+const EKF_BOX: &str = "ekf_box";
 
 /// The integer observer: it takes the raw recorded sequence (`RECORDED_RAW_Y`, `RECORDED_RAW_U`,
 /// `i32`) and its type is not named here, so the runner drives it through closures.
@@ -59,19 +48,17 @@ fn main() {
     // The runners (`on-target` for the observers that estimate from the map's window, `ekf` for the
     // filter from the box centre) link the one design named by ON_TARGET_DESIGN (design.rs).
     // ON_TARGET_KIND lists, comma-separated, the observers `on-target` runs one after the other, each
-    // over the whole recorded sequence (kinds.rs, which `ekf` does not read): `map` (the default),
-    // `observer` (the design's chosen kind), `corrected`, `started_ekf`, `restarted_ekf`, `mhe`,
-    // `fixed` (the integer observer, over the raw sequence), `ukf`.
+    // over the whole recorded sequence (kinds.rs, which `ekf` does not read): any kind the design
+    // has, by its name (`map`, the default, `corrected`, `ekf_map`, …: the list `gen` wrote,
+    // `generated::new_observer!`, refuses one it lacks and names those it has), `observer` (the
+    // design's chosen kind) or `fixed` (the integer observer, over the raw sequence).
     println!("cargo:rerun-if-env-changed=ON_TARGET_DESIGN");
     println!("cargo:rerun-if-env-changed=ON_TARGET_KIND");
     let requested = std::env::var("ON_TARGET_KIND").unwrap_or_default();
-    let kinds: Vec<(&str, &str)> = if requested.is_empty() {
-        vec![KINDS[0]]
+    let kinds: Vec<String> = if requested.is_empty() {
+        vec!["map".to_owned()]
     } else {
-        requested
-            .split(',')
-            .map(|name| kind(name.trim(), "ON_TARGET_KIND"))
-            .collect()
+        requested.split(',').map(|name| kind(name.trim(), "ON_TARGET_KIND")).collect()
     };
     let runner = module_name("ON_TARGET_DESIGN");
     let design = if runner.is_empty() {
@@ -83,13 +70,11 @@ fn main() {
     let runs: String = kinds
         .iter()
         .filter(|_| !runner.is_empty())
-        .map(|&(name, fresh)| {
+        .map(|name| {
             if name == FIXED {
-                format!("    run(\"{name}\", Driven::new(d::{fresh}, |o, y, u| o.push(y, u).is_ok(), |o| o.estimate()), &d::RECORDED_RAW_Y, &d::RECORDED_RAW_U);\n")
-            } else if name == UKF {
-                format!("    run(\"{name}\", Driven::new(d::{fresh}, |o, y, u| o.push(y, u).is_ok(), |o| o.estimate()), &d::RECORDED_Y, &d::RECORDED_U);\n")
+                format!("    run(\"{name}\", Driven::new(d::fixed_observer(), |o, y, u| o.push(y, u).is_ok(), |o| o.estimate()), &d::RECORDED_RAW_Y, &d::RECORDED_RAW_U);\n")
             } else {
-                format!("    run(\"{name}\", d::{fresh}, &d::RECORDED_Y, &d::RECORDED_U);\n")
+                format!("    run(\"{name}\", {}, &d::RECORDED_Y, &d::RECORDED_U);\n", fresh(&runner, name))
             }
         })
         .collect();
@@ -98,7 +83,7 @@ fn main() {
 
     // The size probe links one design (or none, for the baseline) chosen by PROBE_DESIGN: one of its
     // observers (PROBE_KIND, as ON_TARGET_KIND but one kind; `map` by default), or with
-    // PROBE_KIND=ekf its extended Kalman filter.
+    // PROBE_KIND=ekf_box its extended Kalman filter (`ekf()`).
     println!("cargo:rerun-if-env-changed=PROBE_DESIGN");
     println!("cargo:rerun-if-env-changed=PROBE_KIND");
     let design = module_name("PROBE_DESIGN");
@@ -108,38 +93,46 @@ fn main() {
         "/// Indexes out of bounds (for the check's own test).\nfn probe() -> ! {\n    let table = core::hint::black_box([0u8; 4]);\n    loop {\n        core::hint::black_box(table[core::hint::black_box(7usize)]);\n    }\n}\n".to_owned()
     } else if design.is_empty() {
         "/// The baseline: the same loop with no observer.\nfn probe() -> ! {\n    loop {\n        core::hint::black_box(core::hint::black_box(0.0f32));\n    }\n}\n".to_owned()
-    } else if probe_kind == "ekf" {
+    } else if probe_kind == EKF_BOX {
         format!(
             "/// Pushes samples into `{design}`'s extended Kalman filter and computes the targets, forever.\nfn probe() -> ! {{\n    use generated::{design} as d;\n    let mut filter = d::ekf();\n    loop {{\n        let y = core::hint::black_box([0.0f32; d::OUTPUTS]);\n        let u = core::hint::black_box([0.0f32; d::INPUTS]);\n        if let Ok(x) = filter.push(&y, &u) {{\n            core::hint::black_box(d::targets(&x, &u));\n        }}\n        core::hint::black_box(filter.state());\n        core::hint::black_box(filter.covariance());\n        if core::hint::black_box(false) {{\n            filter = d::ekf();\n        }}\n    }}\n}}\n"
         )
     } else {
-        let (name, fresh) = if probe_kind.is_empty() {
-            KINDS[0]
+        let name = if probe_kind.is_empty() {
+            "map".to_owned()
         } else {
             kind(&probe_kind, "PROBE_KIND")
         };
-        let zero = if name == FIXED { "0i32" } else { "0.0f32" };
+        let (zero, fresh) = if name == FIXED {
+            ("0i32", "d::fixed_observer()".to_owned())
+        } else {
+            ("0.0f32", fresh(&design, &name))
+        };
         format!(
-            "/// Pushes samples into `{design}`'s {name} observer and estimates, forever.\nfn probe() -> ! {{\n    use generated::{design} as d;\n    let mut observer = d::{fresh};\n    loop {{\n        let y = core::hint::black_box([{zero}; d::OUTPUTS]);\n        let u = core::hint::black_box([{zero}; d::INPUTS]);\n        let _ = core::hint::black_box(observer.push(y, u));\n        core::hint::black_box(observer.estimate());\n        if core::hint::black_box(false) {{\n            observer.reset();\n        }}\n    }}\n}}\n"
+            "/// Pushes samples into `{design}`'s {name} observer and estimates, forever.\nfn probe() -> ! {{\n    use generated::{design} as d;\n    let mut observer = {fresh};\n    loop {{\n        let y = core::hint::black_box([{zero}; d::OUTPUTS]);\n        let u = core::hint::black_box([{zero}; d::INPUTS]);\n        let _ = core::hint::black_box(observer.push(y, u));\n        core::hint::black_box(observer.estimate());\n        if core::hint::black_box(false) {{\n            observer.reset();\n        }}\n    }}\n}}\n"
         )
     };
     std::fs::write(out.join("probe_design.rs"), probe).expect("write probe_design.rs");
 }
 
-/// The kind named `name` (read from `variable`); an unknown name stops the build and says which exist.
-fn kind(name: &str, variable: &str) -> (&'static str, &'static str) {
-    KINDS.into_iter().find(|(known, _)| *known == name).unwrap_or_else(|| {
-        let known: Vec<&str> = KINDS.iter().map(|(known, _)| *known).collect();
-        let ekf = if variable == "PROBE_KIND" {
-            " (or ekf: the filter)"
-        } else {
-            ""
-        };
-        panic!(
-            "{variable}: unknown observer kind {name:?}; the kinds are {}{ekf}",
-            known.join(", ")
-        )
-    })
+/// The kind named `name` (read from `variable`): a name (of a kind, `observer` or `fixed`), which
+/// the design's list of kinds checks (`generated::new_observer!`).
+fn kind(name: &str, variable: &str) -> String {
+    let valid = !name.is_empty() && name.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
+    assert!(valid, "{variable}: {name:?} is not an observer kind's name (`map`, `ekf_box`, …, `observer`, `fixed`)");
+    name.to_owned()
+}
+
+/// The expression that makes a fresh observer of kind `name` of design `design` (not `fixed`): the
+/// map by `map_observer()`, which a family module has too.
+fn fresh(design: &str, name: &str) -> String {
+    if name == CHOSEN {
+        "d::observer()".to_owned()
+    } else if name == "map" {
+        "d::map_observer()".to_owned()
+    } else {
+        format!("generated::new_observer!({design}, {name})")
+    }
 }
 
 /// The value of `variable`, which must be empty or a module name.

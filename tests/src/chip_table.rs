@@ -6,7 +6,7 @@ use std::collections::BTreeMap;
 
 use host::report::on_target::Measured;
 
-use crate::on_target::{self, Figures, Kind, Measurements};
+use crate::on_target::{self, Figures, Kind, Measurements, ObserverKind};
 
 /// The page that holds the table, relative to the workspace.
 pub const PAGE: &str = "docs/chip.md";
@@ -56,7 +56,7 @@ pub fn project_table(all: &Measurements) -> Result<(String, Vec<(String, Measure
             .get(name)
             .ok_or_else(|| format!("no EKF measured for {name}"))?;
         rows.insert(
-            Kind::Ekf,
+            Kind::Of(ObserverKind::EkfBox),
             Figures::of_filter(filter, on_target::compare_ekf_with_f64(name, filter)?)
                 .map_err(|e| format!("{name} ekf(): {e}"))?,
         );
@@ -72,18 +72,19 @@ pub fn project_table(all: &Measurements) -> Result<(String, Vec<(String, Measure
             let (min, median, max) = on_target::spread(&row.phases.steady);
             let (_, cycles, cycles_max) = on_target::spread(&row.cycles.steady);
             let time = all.board.microseconds(cycles);
-            let observer = format!("`{}`", row_name(kind));
+            let observer = format!("`{}`", kind.api());
             let chosen = if chosen == Some(kind) { " = `observer()`" } else { "" };
             let (horizon, segments, floor) = match kind {
-                Kind::Map => (
+                Kind::Of(ObserverKind::Map) => (
                     spec.map.horizon.to_string(),
                     segments.join(", "),
                     (2 * n_z * targets.len()).to_string(),
                 ),
-                Kind::Corrected | Kind::StartedEkf | Kind::RestartedEkf | Kind::Mhe | Kind::Fixed => {
-                    (spec.map.horizon.to_string(), "—".to_owned(), "—".to_owned())
+                // The filters from the box centre read no window.
+                Kind::Of(ObserverKind::EkfBox | ObserverKind::UkfBox) => {
+                    ("—".to_owned(), "—".to_owned(), "—".to_owned())
                 }
-                Kind::Ekf | Kind::Ukf => ("—".to_owned(), "—".to_owned(), "—".to_owned()),
+                _ => (spec.map.horizon.to_string(), "—".to_owned(), "—".to_owned()),
             };
             table += &format!(
                 "| `{name}` | {observer}{chosen} | {} | {horizon} | {segments} | {min} / {median} / {max} | {}, {} | {cycles} / {cycles_max} | {time:.2} | {} | {floor} | {} | {} | {} | {} | {} |\n",
@@ -105,7 +106,7 @@ pub fn project_table(all: &Measurements) -> Result<(String, Vec<(String, Measure
             source_sha256: host::report::on_target::source_hash(&source),
             observers: rows
                 .iter()
-                .map(|(kind, row)| (kind.report_name().to_owned(), row.on_target()))
+                .map(|(kind, row)| (kind.name().to_owned(), row.on_target()))
                 .collect(),
         };
         recorded.push((name.to_owned(), measured));
@@ -149,22 +150,8 @@ pub fn c_table_of(page: &str) -> Option<&str> {
 pub fn rust_median(page: &str, name: &str, kind: Kind) -> Option<u64> {
     let row = page
         .lines()
-        .find(|l| l.starts_with(&format!("| `{name}` | `{}`", row_name(kind))))?;
+        .find(|l| l.starts_with(&format!("| `{name}` | `{}`", kind.api())))?;
     row.split(" | ").nth(5)?.split(" / ").nth(1)?.trim().parse().ok()
-}
-
-/// How the tables name an observer of `kind`.
-fn row_name(kind: Kind) -> &'static str {
-    match kind {
-        Kind::Map => "map_observer()",
-        Kind::Ekf => "ekf()",
-        Kind::Ukf => "UkfObserver",
-        Kind::Corrected => "CorrectedObserver",
-        Kind::StartedEkf => "StartedEkfObserver",
-        Kind::RestartedEkf => "RestartedEkfObserver",
-        Kind::Mhe => "MheObserver",
-        Kind::Fixed => "fixed_observer()",
-    }
 }
 
 /// The largest `|chip − host f64|` of design `name`'s observer of `kind`: the map against the host
@@ -172,9 +159,9 @@ fn row_name(kind: Kind) -> &'static str {
 /// truth is the host's run of the same integer code (bit for bit, checked by the on-target test).
 fn largest_difference(name: &str, kind: Kind, observer: &on_target::ObserverMeasurement) -> Result<f64, String> {
     match kind {
-        Kind::Map => on_target::compare_with_library(name, observer),
+        Kind::Of(ObserverKind::Map) => on_target::compare_with_library(name, observer),
         Kind::Fixed => Ok(f64::NAN),
-        Kind::Ukf => on_target::compare_ukf_with_f64(name, observer),
+        Kind::Of(ObserverKind::UkfBox) => on_target::compare_ukf_with_f64(name, observer),
         _ => on_target::compare_started_with_f64(name, observer),
     }
 }
@@ -216,7 +203,10 @@ pub fn m0_table(all: &Measurements, m4f_median: &dyn Fn(&str, Kind) -> Option<u6
             .ok_or_else(|| format!("no EKF measured on the Cortex-M0 for {name}"))?;
         let figures =
             Figures::of_filter(filter, f64::NAN).map_err(|e| format!("{name} ekf() on the Cortex-M0: {e}"))?;
-        rows.insert(Kind::Ekf, (figures, m4f_median(name, Kind::Ekf)));
+        rows.insert(
+            Kind::Of(ObserverKind::EkfBox),
+            (figures, m4f_median(name, Kind::Of(ObserverKind::EkfBox))),
+        );
         let expected = on_target::m0_kinds(name);
         if !rows.keys().copied().eq(expected.iter().copied()) {
             return Err(format!(
@@ -229,7 +219,7 @@ pub fn m0_table(all: &Measurements, m4f_median: &dyn Fn(&str, Kind) -> Option<u6
             let (_, cycles, cycles_max) = on_target::spread(&row.cycles.steady);
             table += &format!(
                 "| `{name}` | `{}` | {min} / {} / {max} | {}, {} | {cycles} / {cycles_max} | {:.2} | {} | {} | {} | {} |\n",
-                row_name(kind),
+                kind.api(),
                 median(row),
                 row.phases.start_up_samples,
                 row.phases.start_up_max,

@@ -15,10 +15,6 @@
 //! [`Measurements`], and the chip's estimates are compared with the host's, bit for bit in f32 and
 //! against f64 ([`Figures`] gathers what the reports give).
 
-// First: `for_each_started_observer!` comes from an `include!`, so it cannot be named by path; the
-// modules below see it by textual scope only when they are declared after it.
-include!(concat!(env!("OUT_DIR"), "/started_observers.rs"));
-
 mod accuracy;
 mod bit_exact;
 mod board;
@@ -48,7 +44,7 @@ pub use c_cases::{
 pub use c_observers::{c_harness, run_c_observer, rust_lines, sample_lines, CBoardRun, CValue, STRICT_C_FLAGS};
 pub use elf::{sizes, Program};
 pub use figures::{check_cycles, spread, Figures};
-pub use kind::{chosen_kind, design_names, has_fixed, kinds, m0_kinds, start_up, Kind};
+pub use kind::{chosen_kind, design_names, has_fixed, kinds, m0_kinds, start_up, Kind, ObserverKind};
 pub use measure::{
     instructions_alone, measure, measure_board, measure_designs, panic_check_catches_a_reachable_panic, same_alone,
 };

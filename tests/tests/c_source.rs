@@ -272,7 +272,12 @@ fn every_designs_c_observers_on_the_emulated_cortex_m4f_give_the_rust_bits() {
     let _ = std::fs::remove_dir_all(&dir);
     assert_eq!(linked.lines, case.expected, "Example 1's map with -flto");
     let steady = |counts: &[(u64, u64)]| counts[case.horizon..case.recorded].iter().map(|c| c.0).max().unwrap();
-    let rust = chip_table::rust_median(&page, "vanderpol", integration_tests::on_target::Kind::Map).unwrap();
+    let rust = chip_table::rust_median(
+        &page,
+        "vanderpol",
+        integration_tests::on_target::Kind::Of(integration_tests::on_target::ObserverKind::Map),
+    )
+    .unwrap();
     println!(
         "Example 1's map per steady sample: C {} (-Os), {} (-Os -flto); Rust {rust}",
         steady(&run.counts),

@@ -260,7 +260,7 @@ fn the_fixed_constants_are_the_specs_beside_the_tuned_ones(
     comparison: &host::observers::Comparison,
 ) {
     use host::plant::Covariance;
-    let ekf = comparison.ekf.as_ref().unwrap();
+    let ekf = comparison.tuned.ekf_box().unwrap();
     // Written by hand from tests/fixtures/vanderpol_beta7.toml.
     assert_eq!(ekf.constants.x0, [1.0, 0.7]);
     assert_eq!(
@@ -272,7 +272,7 @@ fn the_fixed_constants_are_the_specs_beside_the_tuned_ones(
         Covariance::Full(vec![vec![0.2, 0.05], vec![0.05, 0.5]])
     );
     assert_eq!(ekf.fixed, ["x0", "q", "p0"]);
-    let ukf = comparison.ukf.as_ref().unwrap();
+    let ukf = comparison.tuned.ukf_box().unwrap();
     assert_eq!(ukf.constants.p0, Covariance::Diagonal(vec![0.2, 0.5]));
     assert_eq!(ukf.fixed, ["p0"]);
     assert!(

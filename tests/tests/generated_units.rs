@@ -131,7 +131,7 @@ fn the_c_storage_bound_holds_every_kind_of_every_design() {
             checked += 1;
         }};
     }
-    integration_tests::for_each_started_observer!(holds);
-    // Every design the host can filter has the moving-horizon observer.
-    assert!(checked >= 7, "{checked} observers checked");
+    generated::for_each_observer!(holds);
+    // Every design has its map, and every one the host can filter its EKF, UKF and moving-horizon observer.
+    assert!(checked >= 28, "{checked} observers checked");
 }

@@ -23,8 +23,8 @@ fn poison(runs: &mut [host::data::Run]) {
 /// restarted EKF's check, the kind `observer()` is, and the on-line MHE's prior weight, as text that
 /// shows every bit.
 fn chosen(c: &Comparison) -> String {
-    let ekf = c.ekf.as_ref().expect("Example 1 has an EKF");
-    let corrected = c.corrected.as_ref().expect("Example 1 has a corrected map");
+    let ekf = c.tuned.ekf_box().expect("Example 1 has an EKF");
+    let corrected = c.tuned.corrected().expect("Example 1 has a corrected map");
     let prior: Vec<String> = c
         .references
         .iter()
@@ -38,7 +38,7 @@ fn chosen(c: &Comparison) -> String {
         .collect();
     assert_eq!(prior.len(), 1, "the host MHE with a tuned prior");
     // The chip MHE's constants hold every bit as text (`{:?}` of an f64 round-trips).
-    let chip = c.mhe.as_ref().expect("Example 1 has a chip MHE");
+    let chip = c.tuned.mhe().expect("Example 1 has a chip MHE");
     format!(
         "{:?} {:?} {:?} {:?} {:?} {:?} {:?} {:?} {:?} {prior:?} {:?} {:?}",
         ekf.constants.q,
@@ -47,8 +47,8 @@ fn chosen(c: &Comparison) -> String {
         corrected.constants.k,
         corrected.constants.schedule,
         (corrected.cost, corrected.start_cost),
-        c.started,
-        c.restart,
+        c.tuned.ekf_map(),
+        c.tuned.ekf_restart(),
         c.chosen.0,
         chip.constants,
         chip.prior
@@ -135,7 +135,7 @@ fn closed_loop_tuning_improves_on_its_start_and_the_ekf_matches_an_expert() {
     let comparison = compare(&design, &result, &code, &indicatif::ProgressBar::hidden()).expect("Example 1 compares");
     ekf_matches_a_grid_tuned_expert(&design, &result, &code, &comparison);
     the_restarted_ekf_is_its_two_parents_and_wins_both_regimes(&design, &result, &code, &comparison);
-    let tuned = comparison.corrected.expect("Example 1 has a corrected map");
+    let tuned = comparison.tuned.corrected().expect("Example 1 has a corrected map");
     // Measured: 0.0620 at the best start, 0.0527 tuned. A tuning that did not move would leave them
     // equal; 5 % is far below what Nelder–Mead gains here and far above rounding.
     assert!(
@@ -158,7 +158,7 @@ fn ekf_matches_a_grid_tuned_expert(
     // must be within 5 % of it on the validation runs (which neither saw), target by target. With
     // the earlier family `Q = q diag(s²)` on a decade grid this failed (0.0801 / 0.1254 against
     // 0.0747 / 0.1150 here).
-    let tuned = comparison.ekf.as_ref().expect("Example 1 has an EKF");
+    let tuned = comparison.tuned.ekf_box().expect("Example 1 has an EKF");
     let mut grid = tuned.constants.clone();
     grid.q = host::plant::Covariance::Diagonal(vec![3.2e-5, 3.2e-5]);
     // Uniform over [-2, 2] × [-5, 5]: variances 16/12 and 100/12.
@@ -193,9 +193,9 @@ fn the_restarted_ekf_is_its_two_parents_and_wins_both_regimes(
     comparison: &Comparison,
 ) {
     use host::observers::{ekf, map_estimates, restart};
-    let tuned = comparison.ekf.as_ref().expect("Example 1 has an EKF");
-    let started = comparison.started.as_ref().expect("Example 1 has a map-started EKF");
-    let chosen = comparison.restart.as_ref().expect("Example 1 has a restarted EKF");
+    let tuned = comparison.tuned.ekf_box().expect("Example 1 has an EKF");
+    let started = comparison.tuned.ekf_map().expect("Example 1 has a map-started EKF");
+    let chosen = comparison.tuned.ekf_restart().expect("Example 1 has a restarted EKF");
     let filter = host::plant::kalman::filter_code(code, &tuned.constants);
     let horizon = design.map.horizon;
     let with = |threshold: f64| restart::RestartConstants {

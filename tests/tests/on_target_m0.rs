@@ -5,7 +5,7 @@
 //! no reachable panic, and `docs/chip.md`'s Cortex-M0 table. Without QEMU the test says so and
 //! passes, unless `CI` is set: CI must run it.
 
-use integration_tests::on_target::{self, Board, Kind, Measurements, Unavailable};
+use integration_tests::on_target::{self, Board, Kind, Measurements, ObserverKind, Unavailable};
 
 fn measurements() -> Option<Measurements> {
     match on_target::measure_board(Board::Microbit) {
@@ -37,7 +37,7 @@ fn maps_and_filters_on_the_emulated_cortex_m0() {
             .into_iter()
             .flat_map(|o| o.keys().copied())
             .collect();
-        measured.extend(all.filters.contains_key(name).then_some(Kind::Ekf));
+        measured.extend(all.filters.contains_key(name).then_some(Kind::Of(ObserverKind::EkfBox)));
         measured.sort();
         assert_eq!(
             measured,

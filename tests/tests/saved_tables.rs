@@ -3,6 +3,7 @@
 //! are refused.
 
 use host::commands::{self, Estimation, Provenance, Simulation};
+use host::observers::kind::KindConstants;
 use host::recording::Precision;
 use host::spec::ObserverKind;
 use host::tables::Tables;
@@ -14,13 +15,15 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
     let spec = root.join("host/specs/vanderpol.toml");
     let design = host::spec::load(&spec).unwrap();
     let emitted = host::generate::emit_design(design.clone(), &spec, None, &ProgressBar::hidden()).unwrap();
-    let in_memory = Tables::of(&emitted);
-    assert!(
-        in_memory.corrected.is_some()
-            && in_memory.ekf.is_some()
-            && in_memory.started.is_some()
-            && in_memory.mhe.is_some()
-    );
+    let in_memory = Tables::of(&emitted.design, &emitted.result, &emitted.comparison, &emitted.source);
+    assert!([
+        ObserverKind::Corrected,
+        ObserverKind::EkfBox,
+        ObserverKind::EkfMap,
+        ObserverKind::Mhe
+    ]
+    .into_iter()
+    .all(|kind| in_memory.constants.has(kind)));
 
     let scratch = std::env::temp_dir().join(format!("saved-tables-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&scratch);
@@ -214,9 +217,19 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         ("`maps`", |t| {
             t.maps.pop();
         }),
-        ("`corrected.k`", |t| t.corrected.as_mut().unwrap().k.clear()),
-        ("`started.0`", |t| {
-            t.started.as_mut().unwrap().0.pop();
+        ("`constants.corrected.k`", |t| {
+            match t.constants.get_mut(ObserverKind::Corrected) {
+                Some(KindConstants::Corrected(c)) => c.k.clear(),
+                _ => panic!("Example 1 has a corrected map"),
+            }
+        }),
+        ("`constants.ekf_map.p0`", |t| {
+            match t.constants.get_mut(ObserverKind::EkfMap) {
+                Some(KindConstants::EkfMap(s)) => {
+                    s.p0.pop();
+                }
+                _ => panic!("Example 1 has a map-started EKF"),
+            }
         }),
     ];
     for (field, edit) in breaks {

@@ -155,10 +155,8 @@ pub struct EstimateArgs {
     /// `saturated_<target>` per target (-1, 0, 1).
     #[arg(long, value_name = "FILE")]
     pub output: PathBuf,
-    /// The observer: `auto` (default) is the design's `observer()`, the kind `gen` chose; `map`,
-    /// `corrected`, `ekf_map` (the EKF started by the map), `ekf_box` (from the box centre),
-    /// `ukf_box` (the UKF from the box centre), `ekf_restart` (from the box centre, restarted by the
-    /// map) or `mhe` ask for one.
+    /// The observer: `auto` (default) is the design's `observer()`, the kind `gen` chose; any other
+    /// of the kinds listed asks for that one.
     #[arg(long, default_value = "auto", value_parser = kind_parser())]
     pub kind: ObserverKind,
     /// The fitted design `gen` saved (design.json in its report folder). Default: the checkout's

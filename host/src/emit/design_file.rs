@@ -162,6 +162,10 @@ struct DesignFile {
     model: String,
     /// The integer map's section ([`super::fixed`]), or nothing.
     fixed: String,
+    /// Every observer kind the design has, in the report's order: its name and its type.
+    observers: Vec<(&'static str, &'static str)>,
+    /// Whether the design has the integer map (`FixedObserver`).
+    has_fixed: bool,
 }
 
 /// The text of `generated/src/<design>.rs` (or of a standalone crate's module, as `placement` says).
@@ -314,6 +318,13 @@ pub fn design_file(
         fixed: observers.fixed.map_or(String::new(), |fixed| {
             super::fixed::fixed_source(design, fixed, &super::recorded_sequence(&result.runs.scenario))
         }),
+        observers: observers
+            .instructions
+            .iter()
+            .filter_map(|(kind, _)| crate::observers::kind::named(kind))
+            .map(|entry| (entry.kind.name(), entry.observer_type))
+            .collect(),
+        has_fixed: observers.fixed.is_some(),
     };
     file.render().map(|text| text + "\n").map_err(EmitError::from)
 }

@@ -184,21 +184,16 @@ pub fn design_source(
     let state_targets = crate::observers::corrected::state_targets(design).ok();
     let instructions: Vec<(&'static str, f64)> =
         comparison.observers.iter().map(|o| (o.kind, o.instructions)).collect();
+    let constants = comparison.tuned.constants();
     let observers = emit::model::Observers {
-        ekf: comparison.ekf.as_ref().map(|t| &t.constants),
-        ukf: comparison.ukf.as_ref().map(|t| &t.constants),
-        started: comparison
-            .started
-            .as_ref()
+        ekf: constants.ekf_box(),
+        ukf: constants.ukf_box(),
+        started: constants
+            .ekf_map()
             .map(|s| (s.p0.as_slice(), s.state_targets.as_slice())),
-        restart: comparison.restart.as_ref(),
-        corrected: comparison
-            .corrected
-            .as_ref()
-            .ok()
-            .map(|t| &t.constants)
-            .zip(state_targets.as_deref()),
-        mhe: comparison.mhe.as_ref().map(|t| &t.constants),
+        restart: constants.ekf_restart(),
+        corrected: constants.corrected().zip(state_targets.as_deref()),
+        mhe: constants.mhe(),
         kind: comparison.chosen.0,
         instructions: &instructions,
         tables_sha256: &crate::tables::Tables::new(design, result, Some(&comparison)).tables_sha256,

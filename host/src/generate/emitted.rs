@@ -1,5 +1,5 @@
-//! One design fitted and emitted, as a value: what the tables ([`crate::tables`]) are written from, in
-//! a module of its own so that they need not import the `gen` job that makes it.
+//! One design fitted and emitted, as a value: what `gen` writes its files and tables
+//! ([`crate::tables`]) from.
 
 use crate::fit::DesignResult;
 use crate::spec::Design;

@@ -6,8 +6,6 @@
 use crate::data::Rows;
 use crate::spec::ObserverKind;
 
-use super::{corrected, ekf, restart};
-
 /// Errors of one observer on one target.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Figures {
@@ -116,7 +114,7 @@ pub struct Beside {
 pub struct Started {
     /// `P(N−1)` diagonal: `factor` times the map's mean squared error per state on the tuning runs.
     pub p0: Vec<f64>,
-    /// The factor, chosen on the tuning runs ([`ekf::tune_started`]).
+    /// The factor, chosen on the tuning runs ([`super::ekf::tune_started`]).
     pub factor: f64,
     /// Each state's target.
     pub state_targets: Vec<usize>,
@@ -130,23 +128,14 @@ pub struct Comparison {
     /// The host-only references: the on-line moving-horizon estimate and the particle floor
     /// (`observers::references`); empty when the model is beyond the host's sizes.
     pub references: Vec<Reference>,
-    /// The tuned EKF (`None` when the model is beyond the host's sizes, [`ekf::supported`]).
-    pub ekf: Option<ekf::Tuned>,
-    /// The tuned UKF (`None` when the model is beyond the host's sizes).
-    pub ukf: Option<ekf::Tuned>,
+    /// What tuning gave each kind the design has, keyed by the kind.
+    pub tuned: super::kind::TunedKinds,
+    /// Why the design cannot have a kind, where its tuning says why.
+    pub unavailable: std::collections::BTreeMap<ObserverKind, String>,
     /// Each filter the spec fixes constants of, with every constant tuned instead.
     pub beside: Vec<Beside>,
     /// The box filters from each scenario's `observer_x0`, where it gives one.
     pub from_observer_start: Vec<FromObserverStart>,
-    /// The tuned model-corrected map, or why the design cannot have one.
-    pub corrected: Result<corrected::Tuned, String>,
-    /// The EKF started by the map; `None` without an EKF or the full state.
-    pub started: Option<Started>,
-    /// The box-started EKF's check against the map ([`restart`]); `None` without `started`.
-    pub restart: Option<restart::RestartConstants>,
-    /// The moving-horizon observer on the chip (kind `mhe`); `None` when the model is beyond the
-    /// host's sizes.
-    pub mhe: Option<super::mhe::ChipTuned>,
     /// What `observer()` is, and why.
     pub chosen: (ObserverKind, String),
     /// Largest one-sample difference between the chip's model (`chip_substeps`) and the learning

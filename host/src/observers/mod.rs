@@ -1,7 +1,5 @@
-//! Every observer of a design judged on the same data: each kind of the registry ([`kind`]: the map,
-//! the EKF over the model ([`ekf`]) from the box centre, the model-corrected map ([`corrected`]), the
-//! EKF started or restarted by the map, the moving-horizon estimate on the chip) tuned in its order, and each target's error on the validation
-//! runs, the scenario (whole, and its transient), its noise draws, the long and mismatch runs and the
+//! Every observer of a design judged on the same data: each kind of the registry ([`kind::REGISTRY`])
+//! tuned in its order, and each target's error on the validation runs, the scenario (whole, and its transient), its noise draws, the long and mismatch runs and the
 //! tuning runs. Every constant is chosen on the tuning runs only; the maps were fitted on the learning
 //! runs only, so every other figure is on data neither saw.
 
@@ -68,15 +66,11 @@ pub fn compare(
     Ok(Comparison {
         references,
         observers: bench.observers,
-        started: bench.started.map(|(started, _)| started),
-        restart: bench.restart,
-        mhe: bench.mhe,
+        tuned: bench.tuned,
+        unavailable: bench.unavailable,
         chosen,
-        ekf: bench.ekf,
-        ukf: bench.ukf,
         beside: bench.beside,
         from_observer_start: bench.from_observer_start,
-        corrected: bench.corrected,
         chip_model_error: chip_model_error(design, result),
     })
 }

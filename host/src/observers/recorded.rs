@@ -12,7 +12,6 @@ use crate::tables::Tables;
 
 use firmware::Saturation;
 
-use super::kind::Constants;
 use super::{corrected, ekf};
 
 /// Why a kind cannot run on this design.
@@ -122,7 +121,7 @@ impl<'a> Setup<'a> {
             why: why.to_owned(),
         };
         if let Some(missing) = tables.missing(kind) {
-            return Err(unavailable(missing.why_missing()));
+            return Err(unavailable(super::kind::of(missing).missing_why));
         }
         let entry = super::kind::of(kind);
         let state_targets = if entry.needs.state_targets {
@@ -130,25 +129,25 @@ impl<'a> Setup<'a> {
         } else {
             Vec::new()
         };
-        let reads = |constants: Constants| entry.needs.constants.contains(&constants);
+        let reads = |kind: ObserverKind| entry.needs.reads.contains(&kind);
+        let constants = &tables.constants;
         Ok(Setup {
             design,
             tables,
             code,
             kind,
-            filter: match (&tables.ekf, &tables.ukf) {
-                (Some(constants), _) if reads(Constants::Ekf) => {
+            filter: match (constants.ekf_box(), constants.ukf_box()) {
+                (Some(constants), _) if reads(ObserverKind::EkfBox) => {
                     Some(crate::plant::kalman::filter_code(code, constants))
                 }
-                (_, Some(constants)) if reads(Constants::Ukf) => {
+                (_, Some(constants)) if reads(ObserverKind::UkfBox) => {
                     Some(crate::plant::unscented::unscented_code(code, constants))
                 }
                 _ => None,
             },
-            programs: tables
-                .corrected
-                .as_ref()
-                .filter(|_| reads(Constants::Corrected))
+            programs: constants
+                .corrected()
+                .filter(|_| reads(ObserverKind::Corrected))
                 .map(|constants| crate::plant::correction::correction_code(code, constants)),
             state_targets,
         })
@@ -191,36 +190,45 @@ impl<'a> Setup<'a> {
         setting: &'s corrected::Setting<'s>,
     ) -> Follower<'s, T> {
         let literal = |v: f64| T::literal(v as f32, v);
-        let tables = self.tables;
+        let (tables, constants) = (self.tables, &self.tables.constants);
         match (self.kind, &self.filter, &self.programs) {
-            (ObserverKind::EkfBox, Some(filter), _) => {
-                let constants = tables.ekf.as_ref().expect("checked");
+            (ObserverKind::EkfBox | ObserverKind::UkfBox, Some(filter), _) => {
+                let constants = match self.kind {
+                    ObserverKind::EkfBox => constants.ekf_box(),
+                    _ => constants.ukf_box(),
+                };
+                let Some(constants) = constants else {
+                    return Follower::Map;
+                };
                 Follower::Box(ekf::BoxStep::new(filter, &constants.x0, &constants.p0, self.code))
             }
-            (ObserverKind::UkfBox, Some(filter), _) => {
-                let constants = tables.ukf.as_ref().expect("checked");
-                Follower::Box(ekf::BoxStep::new(filter, &constants.x0, &constants.p0, self.code))
-            }
-            (ObserverKind::EkfMap, Some(filter), _) => {
-                let (p0, _) = tables.started.as_ref().expect("checked");
-                Follower::Started(ekf::StartedStep::new(
+            (ObserverKind::EkfMap, Some(filter), _) => match constants.ekf_map() {
+                Some(started) => Follower::Started(ekf::StartedStep::new(
                     filter,
-                    p0,
+                    &started.p0,
                     &self.state_targets,
                     tables.horizon - 1,
                     self.code,
-                ))
+                )),
+                None => Follower::Map,
+            },
+            (ObserverKind::EkfRestart, Some(filter), _) => {
+                match (constants.ekf_box(), constants.ekf_map(), constants.ekf_restart()) {
+                    (Some(ekf), Some(started), Some(restart)) => Follower::Restarted(super::restart::RestartStep::new(
+                        filter,
+                        ekf,
+                        &started.p0,
+                        restart,
+                        &self.state_targets,
+                        self.code,
+                    )),
+                    _ => Follower::Map,
+                }
             }
-            (ObserverKind::EkfRestart, Some(filter), _) => Follower::Restarted(super::restart::RestartStep::new(
-                filter,
-                tables.ekf.as_ref().expect("checked"),
-                &tables.started.as_ref().expect("checked").0,
-                tables.restart.as_ref().expect("checked"),
-                &self.state_targets,
-                self.code,
-            )),
             (ObserverKind::Corrected, _, Some(programs)) => {
-                let constants = tables.corrected.as_ref().expect("checked");
+                let Some(constants) = constants.corrected() else {
+                    return Follower::Map;
+                };
                 let clamps = self
                     .state_targets
                     .iter()
@@ -229,11 +237,10 @@ impl<'a> Setup<'a> {
                     .collect();
                 Follower::Corrected(corrected::CorrectedStep::new(setting, programs, constants), clamps)
             }
-            (ObserverKind::Mhe, _, _) => Follower::Mhe(super::mhe::chip::chip_stepper::<T>(
-                self.code,
-                tables.horizon,
-                tables.mhe.as_ref().expect("checked"),
-            )),
+            (ObserverKind::Mhe, _, _) => match constants.mhe() {
+                Some(chip) => Follower::Mhe(super::mhe::chip::chip_stepper::<T>(self.code, tables.horizon, chip)),
+                None => Follower::Map,
+            },
             _ => Follower::Map,
         }
     }

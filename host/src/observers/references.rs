@@ -34,7 +34,7 @@ struct Tally {
 /// The references of the design on `bench`; empty when the model is beyond the host's sizes.
 pub fn measure(bench: &Bench<'_>) -> Vec<Reference> {
     let (design, code, runs) = (bench.design, bench.code, &bench.result.runs);
-    let (Some(setup), Some(chip)) = (mhe::Setup::new(design, code, &runs.learning), &bench.mhe) else {
+    let (Some(setup), Some(chip)) = (mhe::Setup::new(design, code, &runs.learning), bench.tuned.mhe()) else {
         return Vec::new();
     };
     let mut references = Vec::new();

@@ -9,7 +9,7 @@ use super::schema::{
 use crate::fit::evaluate::Evaluation;
 use crate::fit::DesignResult;
 use crate::observers::Comparison;
-use crate::spec::Design;
+use crate::spec::{Design, ObserverKind};
 
 /// Assembles the report of a run.
 pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a Comparison) -> Report<'a> {
@@ -58,15 +58,15 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
         observers: comparison.observers.iter().map(|o| observer(design, o)).collect(),
         fixed_filters: fixed_filters(design, comparison),
         references: super::references::assemble(design, comparison),
-        mhe_tuning: comparison.mhe.as_ref().map(super::references::mhe_tuning),
-        ekf_tuning: comparison.ekf.as_ref().map(|t| EkfTuning {
+        mhe_tuning: comparison.tuned.mhe().map(super::references::mhe_tuning),
+        ekf_tuning: comparison.tuned.ekf_box().map(|t| EkfTuning {
             log_q: t.log_q.clone(),
             log_p0: t.log_p0.clone(),
             cost: t.cost,
             grid_cost: t.grid_cost,
             evaluations: t.evaluations,
             runs: t.runs,
-            started_factor: comparison.started.as_ref().map(|s| s.factor),
+            started_factor: comparison.tuned.ekf_map().map(|s| s.factor),
             q_diagonal: t.constants.q.diagonal(),
             p0_diagonal: t.constants.p0.diagonal(),
             x0: t.constants.x0.clone(),
@@ -80,8 +80,8 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             Some((x0, from.targets.iter().map(|(rmse, _)| *rmse).collect()))
         }),
         observer: comparison.chosen.clone(),
-        corrected_tuning: match &comparison.corrected {
-            Ok(t) => CorrectedTuning::Tuned {
+        corrected_tuning: match comparison.tuned.corrected() {
+            Some(t) => CorrectedTuning::Tuned {
                 g: t.constants.g.clone(),
                 k: t.constants.k.clone(),
                 k_start: t.constants.k_start.clone(),
@@ -94,8 +94,12 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
                 evaluations: t.evaluations,
                 cost_with_and_without_map: (t.cost_with_map, t.cost_without_map),
             },
-            Err(why) => CorrectedTuning::Unavailable {
-                unavailable: why.clone(),
+            None => CorrectedTuning::Unavailable {
+                unavailable: comparison
+                    .unavailable
+                    .get(&ObserverKind::Corrected)
+                    .cloned()
+                    .unwrap_or_else(|| "not tuned".to_owned()),
             },
         },
         chip_model: ChipModel {
@@ -169,8 +173,8 @@ fn fixed_filters(design: &Design, comparison: &Comparison) -> Vec<FixedFilterRep
         .iter()
         .filter_map(|beside| {
             let (section, spec) = match beside.figures.kind {
-                "ekf_box" => ("observer.ekf", comparison.ekf.as_ref()?),
-                "ukf_box" => ("observer.ukf", comparison.ukf.as_ref()?),
+                "ekf_box" => ("observer.ekf", comparison.tuned.ekf_box()?),
+                "ukf_box" => ("observer.ukf", comparison.tuned.ukf_box()?),
                 _ => return None,
             };
             Some(FixedFilterReport {

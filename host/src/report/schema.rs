@@ -81,8 +81,7 @@ pub struct Report<'a> {
 /// One observer's figures.
 #[derive(Serialize)]
 pub struct ObserverReport {
-    /// [`crate::spec::ObserverKind::name`]: `"map"`, `"corrected"`, `"ekf_box"`, `"ekf_map"`,
-    /// `"ekf_restart"`, `"mhe"`.
+    /// Its kind's name ([`crate::spec::ObserverKind::name`]).
     pub kind: &'static str,
     /// Instructions per steady sample on the Cortex-M4F as the cost model predicts them
     /// ([`crate::search::cost`]; measured: `on_target`).

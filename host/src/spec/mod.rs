@@ -60,7 +60,7 @@ pub enum Normalisation {
 
 /// Which observer a design's `observer()` is (`[observer] kind`); the report judges every kind the
 /// design can have either way.
-#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ObserverKind {
     /// The best on the tuning runs by [`crate::observers::choose`]'s score (default).

@@ -1,7 +1,7 @@
 //! Runs the observers of one generated design (chosen by `ON_TARGET_DESIGN` at build time, so that
 //! the program links that design alone) over its recorded sequence on the emulated Cortex-M4F, one
-//! kind after the other (`ON_TARGET_KIND`, comma-separated: `map`, `observer`, `corrected`,
-//! `started_ekf`, `restarted_ekf`, `mhe`, `fixed`; the map alone by default), and reports over
+//! kind after the other (`ON_TARGET_KIND`, comma-separated: any kind the design has by its name,
+//! `observer` for its chosen kind, `fixed` for its integer map; the map alone by default), and reports over
 //! semihosting (the same program runs on the emulated Cortex-M0, `thumbv6m-none-eabi`, soft float):
 //!
 //! ```text
@@ -94,8 +94,8 @@ trait Observe {
     fn latest(&self) -> Estimates<Self::Value>;
 }
 
-/// An observer driven through closures, for a kind whose type the runner does not name (the integer
-/// observer, `fixed_observer()`): its `push` and `estimate`, a map's start-up (none).
+/// An observer driven through closures, for the integer observer (`fixed_observer()`, `i32` in and
+/// out): its `push` and `estimate`, a map's start-up (none).
 #[allow(dead_code)]
 struct Driven<T, O, P, E> {
     observer: O,
@@ -142,6 +142,24 @@ where
 impl<D, const N: usize> Observe for firmware::Observer<f32, D, N, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>
 where
     D: Design<f32, N, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
+{
+    type Value = f32;
+    const START_UP: usize = 0;
+
+    #[inline(always)]
+    fn take(&mut self, y: [f32; d::OUTPUTS], u: [f32; d::INPUTS]) -> bool {
+        self.push(y, u).is_ok()
+    }
+
+    #[inline(always)]
+    fn latest(&self) -> Estimates {
+        self.estimate()
+    }
+}
+
+impl<F, const NX: usize> Observe for firmware::FilterObserver<f32, F, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>
+where
+    F: firmware::emitted::Filter<f32, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
 {
     type Value = f32;
     const START_UP: usize = 0;

@@ -5,7 +5,7 @@ use firmware::{Estimate, Saturation};
 use host::emit::precision::compare;
 
 use super::bit_exact::host_ekf;
-use super::kind::Kind;
+use super::kind::{Kind, ObserverKind};
 use super::measurement::{EkfMeasurement, ObserverMeasurement, TargetSample};
 
 /// The largest `|target − host|` over the targets of design `name`'s extended Kalman filter, the chip
@@ -75,15 +75,20 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
     let code = ModelCode::new(&design).map_err(|e| e.to_string())?;
     // The moving-horizon observer needs no state as a target.
     let state_targets = match measured.kind {
-        Kind::Mhe => Vec::new(),
+        Kind::Of(ObserverKind::Mhe) => Vec::new(),
         _ => corrected::state_targets(&design)?,
     };
     let first = design.map.horizon - 1;
     let widen = |values: &[f32]| values.iter().map(|&v| f64::from(v)).collect::<Vec<f64>>();
     let mut host: Option<Vec<Vec<f64>>> = None;
     macro_rules! mirror {
+        // Compared elsewhere: the map with the library's ([`compare_with_library`]), the filters
+        // with themselves in f64 ([`compare_ekf_with_f64`], [`compare_ukf_with_f64`]).
+        ($design:ident, map, $type:ident) => {};
+        ($design:ident, ekf_box, $type:ident) => {};
+        ($design:ident, ukf_box, $type:ident) => {};
         ($design:ident, $kind:ident, $type:ident) => {
-            if measured.kind == Kind::$kind && stringify!($design) == name {
+            if Kind::named(stringify!($kind)) == Some(measured.kind) && stringify!($design) == name {
                 use generated::$design as d;
                 // Every sample, the refused ones included: over them the observer carries its state
                 // one period (`Follower::predict`).
@@ -126,7 +131,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
                 );
             }
         };
-        (@ Mhe, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
+        (@ mhe, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
             // The host's mirror in f64 with the constants the design file carries.
             use firmware::emitted::mhe::Horizon;
             let settings = <$d::Mhe as Horizon<f64, { $d::STATES }, { $d::OUTPUTS }, { $d::INPUTS }, { $d::TARGETS }>>::settings();
@@ -148,7 +153,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
                 .map(<[f64]>::to_vec)
                 .collect::<Vec<Vec<f64>>>()
         }};
-        (@ Corrected, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
+        (@ corrected, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
             let (constants, _) = crate::emitted_constants!($d, &$design);
             let setting = corrected::Setting {
                 code: &$code,
@@ -161,12 +166,12 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
             };
             corrected::estimate_run::<f64>(&setting, &correction_code(&$code, &constants), &constants, &$maps, &$run)
         }};
-        (@ StartedEkf, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
+        (@ ekf_map, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
             let (_, ekf_constants) = crate::emitted_constants!($d, &$design);
             let filter = filter_code(&$code, &ekf_constants);
             ekf::estimate_started::<f64>(&filter, &$d::STARTED_P0, &$targets, $first, &$maps, &$run, &$code)
         }};
-        (@ RestartedEkf, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
+        (@ ekf_restart, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
             let (_, mut ekf_constants) = crate::emitted_constants!($d, &$design);
             // The filter's start as emitted: its `x̂(0)` and `P(0)`, read from its upper triangle.
             let (x0, upper) = <$d::StartedEkf as firmware::emitted::Restart<
@@ -200,7 +205,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
             )
         }};
     }
-    for_each_started_observer!(mirror);
+    generated::for_each_observer!(mirror);
     let host = host.ok_or_else(|| format!("{name} has no {:?} observer", measured.kind))?;
     largest_over_accepted(name, measured, &host)
 }
@@ -210,9 +215,8 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
 /// same recorded sequence, its accepted samples.
 pub fn compare_ukf_with_f64(name: &str, measured: &ObserverMeasurement) -> Result<f64, String> {
     let mut host: Option<Vec<Vec<f64>>> = None;
-    #[allow(unused_macros)]
     macro_rules! run {
-        ($design:ident) => {
+        ($design:ident, ukf_box, $type:ident) => {
             if stringify!($design) == name {
                 use generated::$design as d;
                 let mut filter = d::Ukf::<f64>::new();
@@ -234,8 +238,9 @@ pub fn compare_ukf_with_f64(name: &str, measured: &ObserverMeasurement) -> Resul
                 );
             }
         };
+        ($design:ident, $kind:ident, $type:ident) => {};
     }
-    for_each_ukf_observer!(run);
+    generated::for_each_observer!(run);
     let host = host.ok_or_else(|| format!("{name} has no UKF"))?;
     largest_over_accepted(name, measured, &host)
 }

@@ -126,52 +126,22 @@ macro_rules! c_case {
 /// table.
 pub fn shipped_cases() -> Vec<Case> {
     let mut cases = Vec::new();
-    macro_rules! design {
-        ($design:ident) => {{
-            use generated::$design as m;
-            cases.push(c_case!(
-                generated::$design,
-                stringify!($design),
-                "map",
-                m::map_observer()
-            ));
-            cases.push(c_case!(
-                generated::$design,
-                stringify!($design),
-                "ekf_box",
-                m::BoxEkfObserver::new()
-            ));
-        }};
-    }
-    generated::for_each_design!(design);
-    macro_rules! started {
+    // Every kind `gen` listed for every design.
+    macro_rules! of {
         ($design:ident, $kind:ident, $type:ident) => {{
-            let kind = Kind::$kind.report_name();
             cases.push(c_case!(
                 generated::$design,
                 stringify!($design),
-                kind,
+                stringify!($kind),
                 generated::$design::$type::new()
             ));
         }};
     }
-    for_each_started_observer!(started);
-    #[allow(unused_macros)]
-    macro_rules! ukf {
-        ($design:ident) => {{
-            cases.push(c_case!(
-                generated::$design,
-                stringify!($design),
-                Kind::Ukf.report_name(),
-                generated::$design::UkfObserver::new()
-            ));
-        }};
-    }
-    for_each_ukf_observer!(ukf);
+    generated::for_each_observer!(of);
     // The integer map over the recorded raw sequence, which ends with every table saturated both ways
     // and has its refused samples (`RECORDED_RAW_*`).
     macro_rules! fixed {
-        ($design:ident) => {{
+        ($design:ident, $type:ident) => {{
             use generated::$design as d;
             let (ys, us) = (rows(&d::RECORDED_RAW_Y), rows(&d::RECORDED_RAW_U));
             let expected = super::rust_lines(
@@ -191,7 +161,7 @@ pub fn shipped_cases() -> Vec<Case> {
             };
             cases.push(Case {
                 name: stringify!($design),
-                kind: Kind::Fixed.report_name(),
+                kind: Kind::Fixed.name(),
                 scalar: "int32_t",
                 ys: bits(&ys),
                 us: bits(&us),
@@ -202,8 +172,8 @@ pub fn shipped_cases() -> Vec<Case> {
             });
         }};
     }
-    for_each_fixed_observer!(fixed);
-    let order = |c: &Case| (c.name, kind_of(c.kind).map_or(usize::MAX, |k| k as usize));
+    generated::for_each_fixed_observer!(fixed);
+    let order = |c: &Case| (c.name, Kind::named(c.kind));
     cases.sort_by_key(order);
     cases
 }
@@ -211,11 +181,6 @@ pub fn shipped_cases() -> Vec<Case> {
 /// Fixed-width rows as vectors.
 fn rows<const W: usize>(rows: &[[i32; W]]) -> Vec<Vec<i32>> {
     rows.iter().map(|r| r.to_vec()).collect()
-}
-
-/// The [`Kind`] a C kind is.
-fn kind_of(kind: &str) -> Option<Kind> {
-    Kind::ALL.into_iter().find(|k| k.report_name() == kind)
 }
 
 /// Whether design `name`'s C in `c` calls an [`INEXACT`] function.
@@ -301,7 +266,7 @@ pub fn c_table(
     );
     for (case, run, largest) in runs {
         let what = format!("{} {}", case.name, case.kind);
-        let kind = kind_of(case.kind).ok_or_else(|| format!("{what}: no such kind"))?;
+        let kind = Kind::named(case.kind).ok_or_else(|| format!("{what}: no such kind"))?;
         let recorded = &case.expected[..case.recorded];
         let accepted: Vec<bool> = recorded.iter().map(|l| l.starts_with("0 ")).collect();
         let estimated: Vec<bool> = recorded.iter().map(|l| l.starts_with("0 0")).collect();

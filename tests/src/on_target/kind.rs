@@ -1,114 +1,65 @@
-//! The kinds of observer a generated design has, read from the generated code itself (which kinds
-//! its file declares, which one its `observer()` is, how many estimates take the start-up path), so
-//! that the harness measures what the design ships.
+//! The kinds of observer a generated design has, from the list `gen` wrote with it
+//! (`generated::for_each_observer!`, `for_each_fixed_observer!`): which kinds it has, which one its
+//! `observer()` is, how many estimates take the start-up path; so that the harness measures what the
+//! design ships, under the names the spec, the report, `design.json` and the C give each kind.
 
 use std::any::TypeId;
 
 use firmware::emitted::Follower;
 use firmware::Started;
+pub use host::spec::ObserverKind;
 
-/// A kind of observer a generated design may have.
+/// What the harness measures of a design: one of its observer kinds, or its integer map.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Kind {
-    /// The paper's map (`map_observer()`, every design).
-    Map,
-    /// The model-corrected map (`CorrectedObserver`).
-    Corrected,
-    /// The EKF started by the map (`StartedEkfObserver`).
-    StartedEkf,
-    /// The EKF from the box centre, restarted by the map (`RestartedEkfObserver`).
-    RestartedEkf,
-    /// The EKF from the centre of the state box (`ekf()`, every design).
-    Ekf,
-    /// The unscented Kalman filter from the centre of the state box (`UkfObserver`).
-    Ukf,
-    /// The moving-horizon estimate with fixed Gauss–Newton steps (`MheObserver`).
-    Mhe,
+    /// An observer kind ([`ObserverKind`]; the box EKF is measured as its filter, `ekf()`).
+    Of(ObserverKind),
     /// The integer map (`fixed_observer()`, where the design has one): `i32` in and out, over the
     /// raw recorded sequence (`RECORDED_RAW_Y`, `RECORDED_RAW_U`).
     Fixed,
 }
 
 impl Kind {
-    /// Every kind, in the order the report lists them.
-    pub const ALL: [Kind; 8] = [
-        Kind::Map,
-        Kind::Corrected,
-        Kind::StartedEkf,
-        Kind::RestartedEkf,
-        Kind::Ekf,
-        Kind::Ukf,
-        Kind::Mhe,
-        Kind::Fixed,
-    ];
-
-    /// Its name for the on-target program (`ON_TARGET_KIND`, `PROBE_KIND`).
-    pub fn chip_name(self) -> &'static str {
+    /// Its name: the kind's ([`ObserverKind::name`]), `fixed` for the integer map. The on-target
+    /// program's `ON_TARGET_KIND` and `PROBE_KIND`, `on_target.json` and the C cases use it.
+    pub fn name(self) -> &'static str {
         match self {
-            Kind::Map => "map",
-            Kind::Corrected => "corrected",
-            Kind::StartedEkf => "started_ekf",
-            Kind::RestartedEkf => "restarted_ekf",
-            Kind::Ekf => "ekf",
-            Kind::Ukf => "ukf",
-            Kind::Mhe => "mhe",
+            Kind::Of(kind) => kind.name(),
             Kind::Fixed => "fixed",
         }
     }
 
-    /// Its name in `report.json` (`observers[].kind`) and `on_target.json`.
-    pub fn report_name(self) -> &'static str {
-        match self {
-            Kind::Map => "map",
-            Kind::Corrected => "corrected",
-            Kind::StartedEkf => "ekf_map",
-            Kind::RestartedEkf => "ekf_restart",
-            Kind::Ekf => "ekf_box",
-            Kind::Ukf => "ukf_box",
-            Kind::Mhe => "mhe",
-            Kind::Fixed => "fixed",
+    /// The kind named `name` ([`Kind::name`]).
+    pub fn named(name: &str) -> Option<Kind> {
+        match name {
+            "fixed" => Some(Kind::Fixed),
+            _ => host::observers::kind::named(name).map(|entry| Kind::Of(entry.kind)),
         }
     }
 
-    /// How firmware makes one.
+    /// What is measured of it, as the report and the tables name it (`map_observer()`, `ekf()`, a
+    /// type `gen` declares).
     pub fn api(self) -> &'static str {
         match self {
-            Kind::Map => "map_observer()",
-            Kind::Corrected => "CorrectedObserver::new()",
-            Kind::StartedEkf => "StartedEkfObserver::new()",
-            Kind::RestartedEkf => "RestartedEkfObserver::new()",
-            Kind::Ekf => "ekf()",
-            Kind::Ukf => "UkfObserver::new()",
-            Kind::Mhe => "MheObserver::new()",
+            Kind::Of(kind) => host::observers::kind::of(kind).measured_as.trim_matches('`'),
             Kind::Fixed => "fixed_observer()",
         }
     }
-
-    pub(super) fn from_chip_name(name: &str) -> Option<Kind> {
-        Kind::ALL.into_iter().find(|k| k.chip_name() == name)
-    }
 }
 
-/// Every kind design `name` has, in [`Kind::ALL`]'s order: the map, the observers the map starts
-/// that its generated file declares, and the EKF from the centre. Empty for an unknown design.
+/// Every kind design `name` has, in [`Kind`]'s order: the observers `gen` listed for it, and its
+/// integer map where it has one. Empty for an unknown design.
 pub fn kinds(name: &str) -> Vec<Kind> {
     let mut kinds = Vec::new();
-    if design_names().contains(&name) {
-        kinds.push(Kind::Map);
-    }
-    macro_rules! started {
+    macro_rules! of {
         ($design:ident, $kind:ident, $type:ident) => {
             if stringify!($design) == name {
-                kinds.push(Kind::$kind);
+                kinds.push(Kind::named(stringify!($kind)).expect("a kind gen lists is a kind"));
             }
         };
     }
-    for_each_started_observer!(started);
-    if !kinds.is_empty() {
-        kinds.push(Kind::Ekf);
-    }
+    generated::for_each_observer!(of);
     kinds.extend(has_fixed(name).then_some(Kind::Fixed));
-    kinds.extend(has_ukf(name).then_some(Kind::Ukf));
     kinds.sort();
     kinds
 }
@@ -119,24 +70,11 @@ pub fn kinds(name: &str) -> Vec<Kind> {
 pub fn has_fixed(name: &str) -> bool {
     let mut designs: Vec<&str> = Vec::new();
     macro_rules! fixed {
-        ($design:ident) => {
+        ($design:ident, $type:ident) => {
             designs.push(stringify!($design));
         };
     }
-    for_each_fixed_observer!(fixed);
-    designs.contains(&name)
-}
-
-/// Whether design `name`'s generated file has the unscented Kalman filter (`UkfObserver`).
-#[allow(unused_macros, unused_mut)]
-pub fn has_ukf(name: &str) -> bool {
-    let mut designs: Vec<&str> = Vec::new();
-    macro_rules! ukf {
-        ($design:ident) => {
-            designs.push(stringify!($design));
-        };
-    }
-    for_each_ukf_observer!(ukf);
+    generated::for_each_fixed_observer!(fixed);
     designs.contains(&name)
 }
 
@@ -145,52 +83,24 @@ pub fn has_ukf(name: &str) -> bool {
 pub fn m0_kinds(name: &str) -> Vec<Kind> {
     kinds(name)
         .into_iter()
-        .filter(|k| matches!(k, Kind::Map | Kind::Ekf | Kind::Fixed))
+        .filter(|k| matches!(k, Kind::Of(ObserverKind::Map | ObserverKind::EkfBox) | Kind::Fixed))
         .collect()
 }
 
-/// The kind of design `name`'s `observer()` (its type compared with each kind's); `None` for an
-/// unknown design, or an `Observer` that is none of the kinds.
+/// The kind of design `name`'s `observer()`: the kind whose type its `Observer` is. `None` for an
+/// unknown design, or an `Observer` that is none of them.
 pub fn chosen_kind(name: &str) -> Option<Kind> {
     let mut chosen = None;
-    macro_rules! map {
-        ($design:ident) => {
-            if stringify!($design) == name
-                && TypeId::of::<generated::$design::Observer>() == TypeId::of::<generated::$design::MapObserver>()
-            {
-                chosen = Some(Kind::Map);
-            }
-        };
-    }
-    generated::for_each_design!(map);
-    macro_rules! started {
+    macro_rules! of {
         ($design:ident, $kind:ident, $type:ident) => {
             if stringify!($design) == name
                 && TypeId::of::<generated::$design::Observer>() == TypeId::of::<generated::$design::$type>()
             {
-                chosen = Some(Kind::$kind);
+                chosen = Kind::named(stringify!($kind));
             }
         };
     }
-    for_each_started_observer!(started);
-    // The EKF from the box centre, which every design the host can filter has.
-    macro_rules! boxed {
-        ($design:ident) => {
-            if stringify!($design) == name && generated::$design::KIND == "ekf_box" {
-                chosen = Some(Kind::Ekf);
-            }
-        };
-    }
-    generated::for_each_design!(boxed);
-    #[allow(unused_macros)]
-    macro_rules! unscented {
-        ($design:ident) => {
-            if stringify!($design) == name && generated::$design::KIND == "ukf_box" {
-                chosen = Some(Kind::Ukf);
-            }
-        };
-    }
-    for_each_ukf_observer!(unscented);
+    generated::for_each_observer!(of);
     chosen
 }
 
@@ -237,24 +147,37 @@ where
     const START_UP: usize = 0;
 }
 
+impl<D, const N: usize, const NY: usize, const NU: usize, const NT: usize> StartUp
+    for firmware::Observer<f32, D, N, NY, NU, NT>
+{
+    const START_UP: usize = 0;
+}
+
+impl<F, const NX: usize, const NY: usize, const NU: usize, const NT: usize> StartUp
+    for firmware::FilterObserver<f32, F, NX, NY, NU, NT>
+{
+    const START_UP: usize = 0;
+}
+
 fn follower_start_up<O: StartUp>(_: &O) -> usize {
     O::START_UP
 }
 
 /// The estimates after the first that take the start-up path, for design `name`'s observer of
-/// `kind`, from the generated code (0 for the map and the EKF); `None` for a kind it does not have.
+/// `kind`, from the generated code (0 for the map, the filters and the integer map); `None` for a kind it
+/// does not have.
 pub fn start_up(name: &str, kind: Kind) -> Option<usize> {
     if !kinds(name).contains(&kind) {
         return None;
     }
     let mut start_up = Some(0);
-    macro_rules! started {
+    macro_rules! of {
         ($design:ident, $kind:ident, $type:ident) => {
-            if kind == Kind::$kind && stringify!($design) == name {
+            if Kind::named(stringify!($kind)) == Some(kind) && stringify!($design) == name {
                 start_up = Some(follower_start_up(&generated::$design::$type::new()));
             }
         };
     }
-    for_each_started_observer!(started);
+    generated::for_each_observer!(of);
     start_up
 }

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 
 use super::board::Board;
 use super::elf::{sizes, Program};
-use super::kind::{design_names, kinds, m0_kinds, Kind};
+use super::kind::{design_names, kinds, m0_kinds, Kind, ObserverKind};
 use super::measurement::{Boards, Measurements};
 use super::qemu::{run_counted, Count};
 use super::semihosting::{parse, parse_ekf};
@@ -77,7 +77,7 @@ pub fn measure_designs(
             for (name, kinds) in designs {
                 let name = name.as_str();
                 for (group, suffix) in programs(kinds) {
-                    let kinds: Vec<&str> = group.iter().map(|k| k.chip_name()).collect();
+                    let kinds: Vec<&str> = group.iter().map(|k| k.name()).collect();
                     let elf = program
                         .build(
                             board,
@@ -132,7 +132,7 @@ pub fn measure_designs(
                 )));
             }
             (filter.instructions, filter.divisions, filter.cycles) = split(counts);
-            (filter.flash_bytes, filter.static_ram_bytes) = cost(Kind::Ekf)?;
+            (filter.flash_bytes, filter.static_ram_bytes) = cost(Kind::Of(ObserverKind::EkfBox))?;
             all.filters.insert(name, filter);
         } else {
             let observers = parse(&text)?;
@@ -175,17 +175,22 @@ fn programs(kinds: &[Kind]) -> Vec<(Vec<Kind>, &'static str)> {
     let started: Vec<Kind> = kinds
         .iter()
         .copied()
-        .filter(|&k| k != Kind::Ekf && k != Kind::RestartedEkf && k != Kind::Mhe && k != Kind::Ukf)
+        .filter(|&k| {
+            k != Kind::Of(ObserverKind::EkfBox)
+                && k != Kind::Of(ObserverKind::EkfRestart)
+                && k != Kind::Of(ObserverKind::Mhe)
+                && k != Kind::Of(ObserverKind::UkfBox)
+        })
         .collect();
     let mut programs = vec![(started, "")];
-    if kinds.contains(&Kind::RestartedEkf) {
-        programs.push((vec![Kind::RestartedEkf], ".restarted_ekf"));
+    if kinds.contains(&Kind::Of(ObserverKind::EkfRestart)) {
+        programs.push((vec![Kind::Of(ObserverKind::EkfRestart)], ".ekf_restart"));
     }
-    if kinds.contains(&Kind::Mhe) {
-        programs.push((vec![Kind::Mhe], ".mhe"));
+    if kinds.contains(&Kind::Of(ObserverKind::Mhe)) {
+        programs.push((vec![Kind::Of(ObserverKind::Mhe)], ".mhe"));
     }
-    if kinds.contains(&Kind::Ukf) {
-        programs.push((vec![Kind::Ukf], ".ukf"));
+    if kinds.contains(&Kind::Of(ObserverKind::UkfBox)) {
+        programs.push((vec![Kind::Of(ObserverKind::UkfBox)], ".ukf_box"));
     }
     programs
 }
@@ -216,8 +221,8 @@ fn probe_all(
                 .build(
                     board,
                     "probe",
-                    &[("PROBE_DESIGN", name), ("PROBE_KIND", kind.chip_name())],
-                    &format!("probes/{name}.{}.elf", kind.chip_name()),
+                    &[("PROBE_DESIGN", name), ("PROBE_KIND", kind.name())],
+                    &format!("probes/{name}.{}.elf", kind.name()),
                 )
                 .map_err(|e| {
                     failed(format!(
@@ -257,15 +262,15 @@ fn probe_all(
 /// what each kind counts when linked alone ([`same_alone`]).
 pub fn instructions_alone(program: &Program, name: &str, kind: Kind) -> Result<Vec<u64>, Unavailable> {
     require_tools()?;
-    if kind == Kind::Ekf {
+    if kind == Kind::Of(ObserverKind::EkfBox) {
         return Err(failed("the EKF from the box centre runs alone already"));
     }
     let elf = program
         .build(
             Board::Mps2An386,
             "on-target",
-            &[("ON_TARGET_DESIGN", name), ("ON_TARGET_KIND", kind.chip_name())],
-            &format!("runs/{name}.{}.elf", kind.chip_name()),
+            &[("ON_TARGET_DESIGN", name), ("ON_TARGET_KIND", kind.name())],
+            &format!("runs/{name}.{}.elf", kind.name()),
         )
         .map_err(|e| failed(format!("on-target program of {name}'s {} alone: {e}", kind.api())))?;
     let (_, counts) = run_counted(Board::Mps2An386, &elf)?;

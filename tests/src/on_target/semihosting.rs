@@ -15,7 +15,7 @@ pub(super) fn parse(text: &str) -> Result<Vec<ObserverMeasurement>, Unavailable>
     for line in text.lines() {
         let fields: Vec<&str> = line.split_whitespace().collect();
         if let ["KIND", name, start_up] = fields.as_slice() {
-            let kind = Kind::from_chip_name(name).ok_or_else(|| failed(format!("unknown kind in {line:?}")))?;
+            let kind = Kind::named(name).ok_or_else(|| failed(format!("unknown kind in {line:?}")))?;
             observers.push(ObserverMeasurement {
                 kind,
                 start_up: number(start_up, line)?,

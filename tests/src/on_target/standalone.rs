@@ -84,28 +84,13 @@ impl Crate {
         })
     }
 
-    /// The kinds its design file has, as the emitter declares them from the saved constants.
+    /// The kinds its design file has: those whose saved constants are all there.
     pub fn kinds(&self) -> Vec<Kind> {
-        let mut kinds = vec![Kind::Map];
-        if self.tables.corrected.is_some() {
-            kinds.push(Kind::Corrected);
-        }
-        if self.tables.ekf.is_some() && self.tables.started.is_some() {
-            kinds.push(Kind::StartedEkf);
-            if self.tables.restart.is_some() {
-                kinds.push(Kind::RestartedEkf);
-            }
-        }
-        if self.tables.ekf.is_some() {
-            kinds.push(Kind::Ekf);
-            if self.tables.ukf.is_some() {
-                kinds.push(Kind::Ukf);
-            }
-        }
-        if self.tables.mhe.is_some() {
-            kinds.push(Kind::Mhe);
-        }
-        kinds
+        host::observers::kind::REGISTRY
+            .iter()
+            .filter(|entry| self.tables.missing(entry.kind).is_none())
+            .map(|entry| Kind::Of(entry.kind))
+            .collect()
     }
 
     /// The on-target program linking this crate: `tests/on-target/Cargo.toml` with the crate as its
@@ -196,14 +181,14 @@ pub fn measure_crate(folder: &Path) -> Result<String, String> {
     for (&kind, measured) in all.observers.get(&name).into_iter().flatten() {
         let largest = check_observer(&user, &code, &rows, kind, measured)?;
         let figures = Figures::of_observer(measured, largest).map_err(|e| format!("{name} {}: {e}", kind.api()))?;
-        observers.insert(kind.report_name().to_owned(), figures.on_target());
+        observers.insert(kind.name().to_owned(), figures.on_target());
     }
     if let Some(filter) = all.filters.get(&name) {
         let largest = check_filter(&user, &code, &rows, filter)?;
         let figures = Figures::of_filter(filter, largest).map_err(|e| format!("{name} ekf(): {e}"))?;
-        observers.insert(Kind::Ekf.report_name().to_owned(), figures.on_target());
+        observers.insert(Kind::Of(ObserverKind::EkfBox).name().to_owned(), figures.on_target());
     }
-    let expected: BTreeSet<&str> = kinds.iter().map(|k| k.report_name()).collect();
+    let expected: BTreeSet<&str> = kinds.iter().map(|k| k.name()).collect();
     if !observers.keys().map(String::as_str).eq(expected.iter().copied()) {
         return Err(format!(
             "{name}: measured {:?}, the crate has {expected:?}",
@@ -258,15 +243,8 @@ fn host_rows(
     kind: Kind,
     precision: Precision,
 ) -> Result<Vec<EstimateRow>, String> {
-    let kind = match kind {
-        Kind::Map => ObserverKind::Map,
-        Kind::Corrected => ObserverKind::Corrected,
-        Kind::StartedEkf => ObserverKind::EkfMap,
-        Kind::RestartedEkf => ObserverKind::EkfRestart,
-        Kind::Ekf => ObserverKind::EkfBox,
-        Kind::Ukf => ObserverKind::UkfBox,
-        Kind::Mhe => ObserverKind::Mhe,
-        Kind::Fixed => return Err("a standalone crate's integer observer is not measured on the chip".to_owned()),
+    let Kind::Of(kind) = kind else {
+        return Err("a standalone crate's integer observer is not measured on the chip".to_owned());
     };
     recorded::estimate(&user.design, &user.tables, code, kind, precision, rows).map_err(|e| e.to_string())
 }
@@ -335,8 +313,8 @@ fn check_filter(
     let what = format!("{} ekf()", user.design.name);
     let constants = user
         .tables
-        .ekf
-        .as_ref()
+        .constants
+        .ekf_box()
         .ok_or_else(|| format!("{what}: no EKF constants saved"))?;
     let width = |f: fn(&Row) -> &Vec<f64>| rows.first().map_or(0, |r| f(r).len());
     let mut run = host::data::Run {

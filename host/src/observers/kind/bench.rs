@@ -6,12 +6,14 @@ use crate::data::{DataSet, Rows, Run};
 use crate::fit::DesignResult;
 use crate::plant::ModelCode;
 use crate::search::cost::{self, Cost};
-use crate::spec::Design;
+use crate::spec::{Design, ObserverKind};
 
-use crate::observers::figures::{Beside, Drift, Figures, FromObserverStart, ObserverFigures, Started};
-use crate::observers::restart::RestartConstants;
+use super::tuned::TunedKinds;
+use std::collections::BTreeMap;
+
+use crate::observers::corrected;
+use crate::observers::figures::{Beside, Drift, Figures, FromObserverStart, ObserverFigures};
 use crate::observers::score::{self, errors};
-use crate::observers::{corrected, ekf};
 
 mod filters;
 
@@ -30,18 +32,10 @@ pub struct Bench<'a> {
     pub map_cost: Cost,
     /// The figures of the kinds judged so far, in registry order (the map's first).
     pub observers: Vec<ObserverFigures>,
-    /// The tuned EKF (`None` when the model is beyond the host's sizes, [`ekf::supported`]).
-    pub ekf: Option<ekf::Tuned>,
-    /// The tuned UKF (`None` when the model is beyond the host's sizes).
-    pub ukf: Option<ekf::Tuned>,
-    /// The tuned model-corrected map, or why the design cannot have one.
-    pub corrected: Result<corrected::Tuned, String>,
-    /// The EKF started by the map, and the map's mean squared error per state on the tuning runs.
-    pub started: Option<(Started, Vec<f64>)>,
-    /// The box EKF's check against the map.
-    pub restart: Option<RestartConstants>,
-    /// The moving-horizon observer on the chip (`None` when the model is beyond the host's sizes).
-    pub mhe: Option<crate::observers::mhe::ChipTuned>,
+    /// What tuning gave each kind tuned so far (a kind reads the constants of those before it).
+    pub tuned: TunedKinds,
+    /// Why the design cannot have a kind, where its tuning says why (the report shows it).
+    pub unavailable: BTreeMap<ObserverKind, String>,
     /// Each filter the spec fixes constants of, with every constant tuned instead.
     pub beside: Vec<Beside>,
     /// The box filters from each scenario's `observer_x0` ([`Bench::from_observer_start`]).
@@ -114,12 +108,8 @@ impl<'a> Bench<'a> {
             spreads,
             map_cost: cost::of_maps(&fitted, horizon, design.tau),
             observers: Vec::new(),
-            ekf: None,
-            ukf: None,
-            corrected: Err("not tuned".to_owned()),
-            started: None,
-            restart: None,
-            mhe: None,
+            tuned: TunedKinds::default(),
+            unavailable: BTreeMap::new(),
             beside: Vec::new(),
             refused: None,
             from_observer_start: Vec::new(),

@@ -1,7 +1,7 @@
 //! `corrected`: the map corrected by one model step ([`crate::observers::corrected`]), its gains
 //! tuned in closed loop on the tuning runs.
 
-use super::{Bench, Constants, Kind, Needs};
+use super::{Bench, Kind, Needs, Tuned};
 use crate::observers::{corrected, ObserverFigures};
 use crate::search::cost;
 use crate::spec::ObserverKind;
@@ -18,9 +18,10 @@ pub const KIND: Kind = Kind {
     needs: Needs {
         state_targets: true,
         filter: false,
-        constants: &[Constants::Corrected],
+        reads: &[ObserverKind::Corrected],
     },
     cost_before_fit: None,
+    missing_why: "it needs every state as a target and a model the host can run",
     judged_in: crate::recording::Precision::F64,
     tune,
 };
@@ -31,7 +32,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let state_targets = match corrected::state_targets(bench.design) {
         Ok(state_targets) => state_targets,
         Err(why) => {
-            bench.corrected = Err(why);
+            bench.unavailable.insert(ObserverKind::Corrected, why);
             return None;
         }
     };
@@ -44,6 +45,6 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
         cost::of_corrected(&programs, &bench.map_cost),
         &|run, map| corrected::estimate_rows(&setting, &programs, &tuned.constants, map, run),
     );
-    bench.corrected = Ok(tuned);
+    bench.tuned.insert(Tuned::Corrected(tuned));
     Some(figures)
 }

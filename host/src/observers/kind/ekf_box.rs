@@ -3,7 +3,7 @@
 //! scenario's start is one the chip's `ekf()` does not know; `auto` then judges it, as every kind, on
 //! all the tuning runs, its tail from the scenario's start).
 
-use super::{Bench, Constants, Kind, Needs};
+use super::{Bench, Kind, Needs, Tuned};
 use crate::observers::{ekf, ObserverFigures};
 use crate::search::cost;
 use crate::spec::ObserverKind;
@@ -20,9 +20,10 @@ pub const KIND: Kind = Kind {
     needs: Needs {
         state_targets: false,
         filter: true,
-        constants: &[Constants::Ekf],
+        reads: &[ObserverKind::EkfBox],
     },
     cost_before_fit: Some(cost::ekf_before_fit),
+    missing_why: "the model is beyond the sizes the host filters",
     judged_in: crate::recording::Precision::F64,
     tune,
 };
@@ -42,6 +43,6 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     bench.from_observer_starts("ekf_box", &|x0, run| {
         ekf::estimate_run(code, &tuned.constants, x0, run).expect("size checked by tune")
     });
-    bench.ekf = Some(tuned);
+    bench.tuned.insert(Tuned::EkfBox(tuned));
     Some(figures)
 }

@@ -1,7 +1,7 @@
 //! `ekf_map`: the EKF started by the map at `k = N − 1`, with the box EKF's `Q` and `R` and a
 //! `P(N−1)` of the map's error scaled by one factor tuned on the tuning runs.
 
-use super::{Bench, Constants, Kind, Needs};
+use super::{Bench, Kind, Needs, Tuned};
 use crate::data::{Rows, Run};
 use crate::observers::{corrected, ekf, ObserverFigures, Started};
 use crate::search::cost;
@@ -19,9 +19,10 @@ pub const KIND: Kind = Kind {
     needs: Needs {
         state_targets: true,
         filter: true,
-        constants: &[Constants::Ekf, Constants::Started],
+        reads: &[ObserverKind::EkfBox, ObserverKind::EkfMap],
     },
     cost_before_fit: Some(cost::started_before_fit),
+    missing_why: "it needs every state as a target and a model the host can filter",
     judged_in: crate::recording::Precision::F64,
     tune,
 };
@@ -29,10 +30,9 @@ pub const KIND: Kind = Kind {
 /// `P(N−1)`'s factor over the map's mean squared error per state on the tuning runs, chosen on them
 /// ([`ekf::tune_started`]); then judged.
 fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
-    let tuned = bench.ekf.as_ref()?;
+    let tuned = bench.tuned.ekf_box()?;
     let state_targets = corrected::state_targets(bench.design).ok()?;
-    let map = &bench.observers.first()?.targets;
-    let squared: Vec<f64> = state_targets.iter().map(|&t| map[t].rmse_tuning.powi(2)).collect();
+    let squared = map_squared_errors(bench, &state_targets)?;
     let filter = crate::plant::kalman::filter_code(bench.code, &tuned.constants);
     let (code, first) = (bench.code, bench.design.map.horizon - 1);
     let run_started = |p0: &[f64], run: &Run, map: &Rows| -> Rows {
@@ -61,6 +61,13 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
         factor,
         state_targets: state_targets.clone(),
     };
-    bench.started = Some((started, squared));
+    bench.tuned.insert(Tuned::EkfMap(started));
     Some(figures)
+}
+
+/// The map's mean squared error on the tuning runs of each state (`state_targets`: each state's
+/// target): `P(N−1)`'s diagonal before its factor, and the restart's variances.
+pub(super) fn map_squared_errors(bench: &Bench<'_>, state_targets: &[usize]) -> Option<Vec<f64>> {
+    let map = &bench.observers.first()?.targets;
+    Some(state_targets.iter().map(|&t| map[t].rmse_tuning.powi(2)).collect())
 }

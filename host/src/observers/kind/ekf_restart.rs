@@ -2,7 +2,7 @@
 //! estimate and restarted from it as `ekf_map` starts when the two disagree (a χ² threshold tuned on
 //! the tuning runs).
 
-use super::{Bench, Constants, Kind, Needs};
+use super::{Bench, Kind, Needs, Tuned};
 use crate::data::{Rows, Run};
 use crate::observers::restart::{self, RestartConstants};
 use crate::observers::ObserverFigures;
@@ -21,9 +21,10 @@ pub const KIND: Kind = Kind {
     needs: Needs {
         state_targets: true,
         filter: true,
-        constants: &[Constants::Ekf, Constants::Started, Constants::Restart],
+        reads: &[ObserverKind::EkfBox, ObserverKind::EkfMap, ObserverKind::EkfRestart],
     },
     cost_before_fit: Some(cost::ekf_before_fit),
+    missing_why: "its tables hold no restart threshold",
     judged_in: crate::recording::Precision::F64,
     tune,
 };
@@ -31,7 +32,8 @@ pub const KIND: Kind = Kind {
 /// The threshold, chosen on the tuning runs ([`restart::tune`]), the variances the map's on them;
 /// then judged.
 fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
-    let (tuned, (started, squared)) = (bench.ekf.as_ref()?, bench.started.as_ref()?);
+    let (tuned, started) = (bench.tuned.ekf_box()?, bench.tuned.ekf_map()?);
+    let squared = super::ekf_map::map_squared_errors(bench, &started.state_targets)?;
     let filter = crate::plant::kalman::filter_code(bench.code, &tuned.constants);
     let code = bench.code;
     let run_restarted = |constants: &RestartConstants, run: &Run, map: &Rows| -> Rows {
@@ -59,6 +61,6 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let figures = bench.judge("ekf_restart", cost::of_restarted(&filter), &|run, map| {
         run_restarted(&constants, run, map)
     });
-    bench.restart = Some(constants);
+    bench.tuned.insert(Tuned::EkfRestart(constants));
     Some(figures)
 }

@@ -16,9 +16,10 @@ pub const KIND: Kind = Kind {
     needs: Needs {
         state_targets: false,
         filter: false,
-        constants: &[],
+        reads: &[],
     },
     cost_before_fit: None,
+    missing_why: "",
     judged_in: crate::recording::Precision::F64,
     tune,
 };

@@ -5,7 +5,7 @@
 //! estimate's; judged in `f32`, the chip's arithmetic. `auto` offers it only within
 //! `budget.instructions` ([`crate::observers::choose`]).
 
-use super::{Bench, Constants, Kind, Needs};
+use super::{Bench, Kind, Needs, Tuned};
 use crate::data::Rows;
 use crate::observers::mhe::{self, ChipTuned};
 use crate::observers::ObserverFigures;
@@ -24,9 +24,10 @@ pub const KIND: Kind = Kind {
     needs: Needs {
         state_targets: false,
         filter: true,
-        constants: &[Constants::Mhe],
+        reads: &[ObserverKind::Mhe],
     },
     cost_before_fit: None,
+    missing_why: "the model is beyond the sizes the host runs a moving-horizon estimate for",
     judged_in: crate::recording::Precision::F32,
     tune,
 };
@@ -59,10 +60,10 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     });
     let instructions = cost::of_mhe(code, design.map.horizon, constants.iterations, constants.substeps);
     let figures = bench.judge("mhe", instructions, &|run, _| setup.chip_run::<f32>(&constants, run));
-    bench.mhe = Some(ChipTuned {
+    bench.tuned.insert(Tuned::Mhe(ChipTuned {
         prior,
         constants,
         scores,
-    });
+    }));
     Some(figures)
 }

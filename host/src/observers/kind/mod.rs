@@ -19,8 +19,10 @@ mod mhe;
 mod ukf_box;
 
 pub use bench::{map_estimates, Bench};
+pub use tuned::{KindConstants, StartedConstants, Tuned, TunedConstants, TunedKinds};
 
 mod bench;
+mod tuned;
 
 use crate::plant::kalman::EkfConstants;
 use crate::plant::ModelCode;
@@ -51,6 +53,8 @@ pub struct Kind {
     /// kinds, whose tuned constants are non-zero literals whatever their values); `None` when the
     /// count needs the fit ([`crate::search::cost`]).
     pub cost_before_fit: Option<fn(&ModelCode, &EkfConstants) -> f64>,
+    /// Why a design's tables may lack its own constants (empty for the map, which has none).
+    pub missing_why: &'static str,
     /// The arithmetic its report figures are in: `F32`, the chip's, for the kinds whose f32 and f64
     /// runs part on a shipped design (`ukf_box`, `mhe`); `estimate --precision` in it gives the
     /// report's estimates to the bit.
@@ -67,38 +71,9 @@ pub struct Needs {
     pub state_targets: bool,
     /// A model the host can filter ([`super::ekf::supported`]).
     pub filter: bool,
-    /// The tuned constants it runs on, in the saved tables (`design.json`).
-    pub constants: &'static [Constants],
-}
-
-/// A group of tuned constants, as the saved tables hold them.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Constants {
-    /// The EKF's `Q`, `R`, `P0` and start (`ekf`).
-    Ekf,
-    /// The UKF's, tuned on their own (`ukf`).
-    Ukf,
-    /// The map-started EKF's `P(N−1)` and each state's target (`started`).
-    Started,
-    /// The restart's threshold and variances (`restart`).
-    Restart,
-    /// The model-corrected map's gains (`corrected`).
-    Corrected,
-    /// The moving-horizon observer's weights, prior, box, start and steps (`mhe`).
-    Mhe,
-}
-
-impl Constants {
-    /// Why a design's tables may lack them.
-    pub fn why_missing(self) -> &'static str {
-        match self {
-            Constants::Ekf | Constants::Ukf => "the model is beyond the sizes the host filters",
-            Constants::Started => "it needs every state as a target and a model the host can filter",
-            Constants::Restart => "its tables hold no restart threshold",
-            Constants::Corrected => "it needs every state as a target and a model the host can run",
-            Constants::Mhe => "the model is beyond the sizes the host runs a moving-horizon estimate for",
-        }
-    }
+    /// The kinds whose tuned constants it runs on ([`TunedConstants`]): its own, and those it
+    /// reuses (the map-started EKF runs on the box EKF's `Q` and `R`).
+    pub reads: &'static [ObserverKind],
 }
 
 /// Every kind, in the order they are tuned and reported.

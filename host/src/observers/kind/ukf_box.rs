@@ -2,7 +2,7 @@
 //! its own `Q` and `P0` tuned as the box EKF's are, by the same search on the same random tuning runs
 //! ([`ukf::tune`]); judged from the box centre everywhere, as `ekf()` is.
 
-use super::{Bench, Constants, Kind, Needs};
+use super::{Bench, Kind, Needs, Tuned};
 use crate::observers::{ekf, ukf, ObserverFigures};
 use crate::plant::unscented::unscented_code;
 use crate::search::cost;
@@ -20,9 +20,10 @@ pub const KIND: Kind = Kind {
     needs: Needs {
         state_targets: false,
         filter: true,
-        constants: &[Constants::Ukf],
+        reads: &[ObserverKind::UkfBox],
     },
     cost_before_fit: Some(cost::ukf_before_fit),
+    missing_why: "the model is beyond the sizes the host filters",
     judged_in: crate::recording::Precision::F32,
     tune,
 };
@@ -42,6 +43,6 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     bench.from_observer_starts("ukf_box", &|x0, run| {
         ukf::estimate_run(code, &filter, x0, &tuned.constants.p0, run)
     });
-    bench.ukf = Some(tuned);
+    bench.tuned.insert(Tuned::UkfBox(tuned));
     Some(figures)
 }

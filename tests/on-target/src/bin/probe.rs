@@ -1,6 +1,6 @@
 //! Size and panic probe: links exactly one design's observer (chosen by `PROBE_DESIGN` at build
 //! time, none for the baseline) and calls every entry point (`push`, `estimate`, `reset`); with
-//! `PROBE_KIND=ekf`, that design's extended Kalman filter instead (`ekf`, `push`, `targets`, `state`,
+//! `PROBE_KIND=ekf_box`, that design's extended Kalman filter instead (`ekf`, `push`, `targets`, `state`,
 //! `covariance`).
 //!
 //! Its panic handler calls a function that does not exist: if any panic path is reachable from the
