@@ -3,9 +3,10 @@
 //! and its measured sample taken when finite (shared with the kinds the map starts over the EKF), and
 //! the observer around it.
 
+use askama::Template;
+
 use super::floats;
 use super::program::function;
-use super::started;
 use crate::emit::EmitError;
 use crate::plant::kalman::{EkfConstants, FilterCode};
 use crate::plant::ModelCode;
@@ -56,75 +57,46 @@ pub(super) fn samples(filter: &Filter, programs: &FilterCode, code: &ModelCode) 
 /// A filter's start and one sample (`Ekf::push`, `Ukf::push`), shared by the kinds over it: the EKF's
 /// (`EKF_X0`, `ekf_predict`, `ekf_measure`, over `ekf_measured`/`ekf_unmeasured`) or the UKF's.
 pub(super) fn common(name: &str, filter: &Filter, constants: &EkfConstants) -> Result<String, EmitError> {
-    let upper = name.to_uppercase();
     let (lower, label) = (filter.lower, filter.label);
-    Ok(format!(
-        "/* The {label}'s start: the centre of the state box and P(0)'s upper triangle. */\n\
-         static const float {label}_X0[{upper}_STATES] = {x0};\n\
-         static const float {label}_P0[{upper}_COVARIANCE] = {p0};\n\
-         \n\
-         /* The {label}'s prediction alone (a lost output), taken when finite. */\n\
-         static void {lower}_predict(float *x, float *p, const float *u) {{\n\
-         \x20   float out[{upper}_STATES + {upper}_COVARIANCE];\n\
-         \x20   {lower}_unmeasured(x, p, u, out);\n\
-         \x20   if (all_finite(out, {upper}_STATES + {upper}_COVARIANCE)) {{\n\
-         \x20       memcpy(x, out, {upper}_STATES * sizeof *x);\n\
-         \x20       memcpy(p, out + {upper}_STATES, {upper}_COVARIANCE * sizeof *p);\n\
-         \x20   }}\n\
-         }}\n\
-         \n\
-         /* The {label}'s sample with its measurement, taken when finite (1, the estimate x(k|k) in\n\
-         \x20* `estimate`). */\n\
-         static int {lower}_measure(float *x, float *p, const float *y, const float *u, float *estimate) {{\n\
-         \x20   float out[2u * {upper}_STATES + {upper}_COVARIANCE];\n\
-         \x20   {lower}_measured(x, p, y, u, out);\n\
-         \x20   if (!all_finite(out + {upper}_STATES, {upper}_STATES + {upper}_COVARIANCE)) {{\n\
-         \x20       return 0;\n\
-         \x20   }}\n\
-         \x20   memcpy(estimate, out, {upper}_STATES * sizeof *x);\n\
-         \x20   memcpy(x, out + {upper}_STATES, {upper}_STATES * sizeof *x);\n\
-         \x20   memcpy(p, out + 2u * {upper}_STATES, {upper}_COVARIANCE * sizeof *p);\n\
-         \x20   return 1;\n\
-         }}\n\n",
-        x0 = floats(&format!("{label} x0"), &constants.x0)?,
-        p0 = floats(&format!("{label} P0"), &constants.p0.upper())?,
-    ))
+    Ok(super::render(&FilterC {
+        upper: &name.to_uppercase(),
+        lower,
+        label,
+        x0: &floats(&format!("{label} x0"), &constants.x0)?,
+        p0: &floats(&format!("{label} P0"), &constants.p0.upper())?,
+    }))
 }
 
 /// The filter from the box centre (`ekf_box`, `ukf_box`): `push` of the filter, then the targets of
 /// its estimate, each inside.
 pub(super) fn box_observer(name: &str, filter: &Filter) -> String {
-    let upper = name.to_uppercase();
-    let (lower, label, kind) = (filter.lower, filter.label, filter.kind);
-    format!(
-        "void {name}_{kind}_init({name}_{kind} *o) {{\n\
-         \x20   memcpy(o->x, {label}_X0, sizeof o->x);\n\
-         \x20   memcpy(o->p, {label}_P0, sizeof o->p);\n\
-         \x20   o->ready = 0;\n\
-         }}\n\
-         \n\
-         {name}_status {name}_{kind}_push({name}_{kind} *o, const float *y, const float *u) {{\n\
-         \x20   float estimate[{upper}_STATES];\n\
-         \x20   unsigned i;\n\
-         \x20   if (!inputs_finite(u)) {{\n\
-         \x20       return {upper}_REFUSED;\n\
-         \x20   }}\n\
-         \x20   if (!accepts(y, u)) {{\n\
-         \x20       {lower}_predict(o->x, o->p, u);\n\
-         \x20       return {upper}_REFUSED;\n\
-         \x20   }}\n\
-         \x20   if (!{lower}_measure(o->x, o->p, y, u, estimate)) {{\n\
-         \x20       return {upper}_REFUSED;\n\
-         \x20   }}\n\
-         \x20   targets(estimate, u, o->values);\n\
-         \x20   for (i = 0u; i < {upper}_TARGETS; ++i) {{\n\
-         \x20       o->flags[i] = {upper}_INSIDE;\n\
-         \x20   }}\n\
-         \x20   o->ready = 1;\n\
-         \x20   return {upper}_OK;\n\
-         }}\n\
-         \n\
-         {estimate}",
-        estimate = started::estimate(name, kind),
-    )
+    super::render(&BoxObserver {
+        name,
+        upper: &name.to_uppercase(),
+        lower: filter.lower,
+        label: filter.label,
+        kind: filter.kind,
+    })
+}
+
+/// A filter's start and sample (`x0`, `p0`: its start).
+#[derive(Template)]
+#[template(path = "c/filter.c", escape = "none")]
+struct FilterC<'a> {
+    upper: &'a str,
+    lower: &'a str,
+    label: &'a str,
+    x0: &'a str,
+    p0: &'a str,
+}
+
+/// The observer of a filter from the box centre.
+#[derive(Template)]
+#[template(path = "c/box_observer.c", escape = "none")]
+struct BoxObserver<'a> {
+    name: &'a str,
+    upper: &'a str,
+    lower: &'a str,
+    label: &'a str,
+    kind: &'a str,
 }

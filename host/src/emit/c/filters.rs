@@ -6,8 +6,10 @@
 //! moving-horizon estimate (`mhe`, [`super::mhe`]), each with the Rust observer's steps in the same
 //! order.
 
+use askama::Template;
+
 use super::box_filter::{self, EKF, UKF};
-use super::program::{function, helpers, needs_math};
+use super::program::{calls, function, needs_math};
 use super::started::{self, map_states, targets_of, Follower};
 use super::{corrected, float, floats, mhe};
 use crate::emit::model::Observers;
@@ -65,32 +67,13 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
         ..Kinds::default()
     };
     let source = &mut kinds.source;
-    *source += &helpers(&programs);
-    let inputs = if code.dimensions.inputs > 0 {
-        format!(
-            "    unsigned i;\n\
-             \x20   int finite = 1;\n\
-             \x20   for (i = 0u; i < {upper}_INPUTS; ++i) {{\n\
-             \x20       finite &= is_finite(u[i]);\n\
-             \x20   }}\n\
-             \x20   return finite;\n"
-        )
-    } else {
-        "    (void)u;\n    return 1;\n".to_owned()
-    };
-    *source += &format!(
-        "\n/* 1 when every input is finite. */\n\
-         static int inputs_finite(const float *u) {{\n{inputs}}}\n\n"
-    );
-    *source += "/* 1 when the n values from v are finite. */\n\
-         static int all_finite(const float *v, unsigned n) {\n\
-         \x20   unsigned i;\n\
-         \x20   int finite = 1;\n\
-         \x20   for (i = 0u; i < n; ++i) {\n\
-         \x20       finite &= is_finite(v[i]);\n\
-         \x20   }\n\
-         \x20   return finite;\n\
-         }\n\n";
+    *source += &super::render(&KindsC {
+        upper: &upper,
+        inputs: code.dimensions.inputs > 0,
+        signum: calls(&programs, "signum"),
+        exp: calls(&programs, "exp"),
+        fract: calls(&programs, "fract"),
+    });
     *source += &function(
         "targets",
         "The targets at state x and input u.",
@@ -180,46 +163,17 @@ fn started_ekf(name: &str, p0: &[f64], state_targets: &[usize], targets: usize) 
         steady_reads_map: false,
         carried: "o->x, o->p",
     };
-    Ok(format!(
-        "/* P(N-1)'s upper triangle of the EKF the map starts. */\n\
-         static const float STARTED_P0[{upper}_COVARIANCE] = {p0};\n\
-         \n\
-         {map_states}\
-         {targets_of}\
-         /* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite. */\n\
-         static int started_ekf_start(const float *first, const float *u, float *x, float *p) {{\n\
-         \x20   float out[{upper}_STATES + {upper}_COVARIANCE];\n\
-         \x20   ekf_unmeasured(first, STARTED_P0, u, out);\n\
-         \x20   if (!all_finite(out, {upper}_STATES + {upper}_COVARIANCE)) {{\n\
-         \x20       return 0;\n\
-         \x20   }}\n\
-         \x20   memcpy(x, out, {upper}_STATES * sizeof *x);\n\
-         \x20   memcpy(p, out + {upper}_STATES, {upper}_COVARIANCE * sizeof *p);\n\
-         \x20   return 1;\n\
-         }}\n\
-         \n\
-         /* StartedEkf::follow: the EKF's sample, every state inside. */\n\
-         static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, const float *map, const float *y,\n\
-         \x20                             const float *u, float *states, {name}_saturation *flags) {{\n\
-         \x20   unsigned i;\n\
-         \x20   (void)j;\n\
-         \x20   (void)start_up;\n\
-         \x20   (void)map;\n\
-         \x20   for (i = 0u; i < {upper}_STATES; ++i) {{\n\
-         \x20       flags[i] = {upper}_INSIDE;\n\
-         \x20   }}\n\
-         \x20   return ekf_measure(x, p, y, u, states);\n\
-         }}\n\
-         \n\
-         {observer}",
-        p0 = floats("map-started EKF P0", &kalman::diagonal_upper(p0))?,
-        map_states = map_states("started_ekf", state_targets, targets),
-        targets_of = targets_of(name, "started_ekf", state_targets, targets),
-        observer = started::observer(
+    Ok(super::render(&StartedEkfC {
+        name,
+        upper: &upper,
+        p0: &floats("map-started EKF P0", &kalman::diagonal_upper(p0))?,
+        map_states: &map_states("started_ekf", state_targets, targets),
+        targets_of: &targets_of(name, "started_ekf", state_targets, targets),
+        observer: &started::observer(
             &follower,
-            "    memcpy(o->x, EKF_X0, sizeof o->x);\n    memcpy(o->p, EKF_P0, sizeof o->p);\n"
+            "    memcpy(o->x, EKF_X0, sizeof o->x);\n    memcpy(o->p, EKF_P0, sizeof o->p);\n",
         ),
-    ))
+    }))
 }
 
 /// `ekf_restart`: `firmware::Restarted` over `StartedEkf`, with the check `restart_disagrees`.
@@ -234,66 +188,45 @@ fn restarted(name: &str, nx: usize, variances: &[f64], threshold: f64) -> Result
             ))
         })
         .collect::<Result<String, EmitError>>()?;
-    Ok(format!(
-        "/* Whether the filter's prediction x (covariance p) and the map's states f disagree:\n\
-         \x20* d = sum_i (x_i - f_i)^2 / (P_ii + e_i^2) > threshold, or d is NaN (restart_disagrees). */\n\
-         static int restart_disagrees(const float *x, const float *p, const float *f) {{\n\
-         \x20   float d = 0.0f;\n\
-         \x20   float e;\n\
-         {terms}\
-         \x20   return !(d <= {threshold});\n\
-         }}\n\
-         \n\
-         /* Restarted::check, at the map's first estimate: 1 when the filter restarted from the map. */\n\
-         static int restart_check({name}_ekf_restart *o, const float *y, const float *u) {{\n\
-         \x20   float all[{upper}_TARGETS], map[{upper}_STATES];\n\
-         \x20   {name}_saturation all_flags[{upper}_TARGETS];\n\
-         \x20   (void){name}_map_push(&o->window, y, u);\n\
-         \x20   if (o->window.filled < {upper}_HORIZON) {{\n\
-         \x20       return 0;\n\
-         \x20   }}\n\
-         \x20   o->checked = 1;\n\
-         \x20   (void){name}_map_estimate(&o->window, all, all_flags);\n\
-         \x20   started_ekf_map_states(all, map);\n\
-         \x20   if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {{\n\
-         \x20       return 0;\n\
-         \x20   }}\n\
-         \x20   memcpy(o->values, all, sizeof all);\n\
-         \x20   memcpy(o->flags, all_flags, sizeof all_flags);\n\
-         \x20   o->ready = 1;\n\
-         \x20   return 1;\n\
-         }}\n\
-         \n\
-         void {name}_ekf_restart_init({name}_ekf_restart *o) {{\n\
-         \x20   {name}_map_init(&o->window);\n\
-         \x20   memcpy(o->x, EKF_X0, sizeof o->x);\n\
-         \x20   memcpy(o->p, EKF_P0, sizeof o->p);\n\
-         \x20   o->checked = 0;\n\
-         \x20   o->ready = 0;\n\
-         }}\n\
-         \n\
-         {name}_status {name}_ekf_restart_push({name}_ekf_restart *o, const float *y, const float *u) {{\n\
-         \x20   float states[{upper}_STATES];\n\
-         \x20   {name}_saturation state_flags[{upper}_STATES];\n\
-         \x20   if (!accepts(y, u)) {{\n\
-         \x20       if (inputs_finite(u)) {{\n\
-         \x20           ekf_predict(o->x, o->p, u);\n\
-         \x20       }}\n\
-         \x20       return {upper}_REFUSED;\n\
-         \x20   }}\n\
-         \x20   if (!o->checked && restart_check(o, y, u)) {{\n\
-         \x20       return {upper}_OK;\n\
-         \x20   }}\n\
-         \x20   if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {{\n\
-         \x20       return {upper}_REFUSED;\n\
-         \x20   }}\n\
-         \x20   started_ekf_targets_of(states, state_flags, u, o->values, o->flags);\n\
-         \x20   o->ready = 1;\n\
-         \x20   return {upper}_OK;\n\
-         }}\n\
-         \n\
-         {estimate}",
-        threshold = float("restart threshold", threshold)?,
-        estimate = started::estimate(name, "ekf_restart"),
-    ))
+    Ok(super::render(&RestartedC {
+        name,
+        upper: &upper,
+        kind: "ekf_restart",
+        terms: &terms,
+        threshold: &float("restart threshold", threshold)?,
+    }))
+}
+
+/// What the model-based kinds share: the helpers the programs call, the checks of a sample's values.
+#[derive(Template)]
+#[template(path = "c/kinds.c", escape = "none")]
+struct KindsC<'a> {
+    upper: &'a str,
+    inputs: bool,
+    signum: bool,
+    exp: bool,
+    fract: bool,
+}
+
+/// `ekf_map`'s follower and observer.
+#[derive(Template)]
+#[template(path = "c/started_ekf.c", escape = "none")]
+struct StartedEkfC<'a> {
+    name: &'a str,
+    upper: &'a str,
+    p0: &'a str,
+    map_states: &'a str,
+    targets_of: &'a str,
+    observer: &'a str,
+}
+
+/// `ekf_restart`'s check and observer (`terms`: the check's sum).
+#[derive(Template)]
+#[template(path = "c/restarted.c", escape = "none")]
+struct RestartedC<'a> {
+    name: &'a str,
+    upper: &'a str,
+    kind: &'a str,
+    terms: &'a str,
+    threshold: &'a str,
 }

@@ -5,6 +5,8 @@
 //! refused, which is what keeps the sums within 32 bits (the proof is in the Rust file and the
 //! report).
 
+use askama::Template;
+
 use crate::fixed_point::FixedPoint;
 use crate::spec::Design;
 
@@ -42,7 +44,7 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
     for (field, label, scale) in &signals {
         let i = &mut index[usize::from(*field == "u")];
         ranges += &format!(
-            "\x20* {field}[{i}] (`{label}`): raw in [{min}, {max}], value = {offset:?} + {scale:?} * raw\n",
+            " * {field}[{i}] (`{label}`): raw in [{min}, {max}], value = {offset:?} + {scale:?} * raw\n",
             min = scale.min,
             max = scale.max,
             offset = scale.offset,
@@ -56,7 +58,7 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
     let (mut tables, mut projections, mut estimates) = (String::new(), String::new(), String::new());
     for (t, (target, spec_target)) in fixed.targets.iter().zip(&design.targets).enumerate() {
         targets += &format!(
-            "\x20* estimate {t} (`{}`): LSB 2^{}, proven |fixed - f64 map| <= {:.2e}\n",
+            " * estimate {t} (`{}`): LSB 2^{}, proven |fixed - f64 map| <= {:.2e}\n",
             spec_target.name,
             -target.lsb_bits,
             target.stated_bound()
@@ -107,100 +109,48 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
         }
         projections += "    }\n";
     }
-    let inputs_field = if nu > 0 {
-        format!("    int32_t u[2u * {upper}_HORIZON][{upper}_INPUTS];\n")
-    } else {
-        String::new()
-    };
-    let header = format!(
-        "/* The map in integers, for chips without an FPU: raw converter counts in, each estimate an\n\
-         \x20* integer in its target's LSB out, no float operation. Samples (a sample with a value outside\n\
-         \x20* its range is refused: the proof that no sum overflows holds there):\n\
-         {ranges}\
-         \x20* Estimates (value = integer * LSB, in the target's unit):\n\
-         {targets}\
-         \x20* Allocate it anywhere (no heap is used) and call {name}_fixed_init. */\n\
-         /* Estimate t's scale, in its target's unit: value = integer * 2^{upper}_FIXED_LSB_EXPONENT_t,\n\
-         \x20* which is integer * {upper}_FIXED_LSB_t (a float, exact: a power of two). */\n\
-         {scales}\
-         typedef struct {{\n\
-         \x20   int32_t y[2u * {upper}_HORIZON][{upper}_OUTPUTS];\n\
-         {inputs_field}\
-         \x20   unsigned next;\n\
-         \x20   unsigned filled;\n\
-         }} {name}_fixed;\n\
-         \n\
-         /* Empties the window. */\n\
-         void {name}_fixed_init({name}_fixed *observer);\n\
-         \n\
-         /* Takes the raw sample of the current instant (u may be NULL when there is no input): {upper}_OK,\n\
-         \x20* or {upper}_REFUSED for a value outside its range (the observer is unchanged). */\n\
-         {name}_status {name}_fixed_push({name}_fixed *observer, const int32_t *y, const int32_t *u);\n\
-         \n\
-         /* Every target's estimate (in its LSB) into values[{upper}_TARGETS] and saturation[{upper}_TARGETS];\n\
-         \x20* {upper}_NO_ESTIMATE_YET (nothing written) before the window is full. */\n\
-         {name}_status {name}_fixed_estimate(const {name}_fixed *observer, int32_t *values, {name}_saturation *saturation);\n\
-         \n"
-    );
-    let store = super::map::window_store(&upper, nu);
-    let source = format!(
-        "{tables}\n\
-         /* Signed right shifts must be arithmetic (implementation-defined in C99; so on gcc, clang, armcc\n\
-         \x20* and IAR): checked at compile time. */\n\
-         typedef char fixed_shifts_are_arithmetic[((-8) >> 1) == -4 ? 1 : -1];\n\
-         \n\
-         /* a - b modulo 2^32 (no signed overflow, which C leaves undefined): t_last - t for any t. */\n\
-         static int32_t wrapping_sub(int32_t a, int32_t b) {{\n\
-         \x20   return (int32_t)((uint32_t)a - (uint32_t)b);\n\
-         }}\n\
-         \n\
-         /* min <= v <= max, as one unsigned comparison. */\n\
-         static int in_range(int32_t v, int32_t min, int32_t max) {{\n\
-         \x20   return (uint32_t)v - (uint32_t)min <= (uint32_t)max - (uint32_t)min;\n\
-         }}\n\
-         \n\
-         /* firmware::fixed::FixedTable::evaluate: t clamped to the table [0, t_last] by sign masks (no\n\
-         \x20* branch: the same instructions whatever t is), then the segment and the position in it by shifts. */\n\
-         static void fixed_evaluate(int32_t t, const int32_t segments[][2], unsigned f, unsigned dropped, unsigned p,\n\
-         \x20                          int32_t t_last, int32_t *value, {name}_saturation *saturation) {{\n\
-         \x20   const int32_t low = t >> 31;\n\
-         \x20   const int32_t high = (wrapping_sub(t_last, t) >> 31) & ~low;\n\
-         \x20   int32_t k;\n\
-         \x20   int32_t position;\n\
-         \x20   t &= ~low;\n\
-         \x20   t ^= (t ^ t_last) & high;\n\
-         \x20   k = t >> f;\n\
-         \x20   position = (t - (int32_t)((uint32_t)k << f)) >> dropped;\n\
-         \x20   *value = segments[k][0] + ((segments[k][1] * position) >> p);\n\
-         \x20   *saturation = ({name}_saturation)((unsigned)(low & 1) | ((unsigned)high & 2u));\n\
-         }}\n\
-         \n\
-         void {name}_fixed_init({name}_fixed *observer) {{\n\
-         \x20   observer->next = 0u;\n\
-         \x20   observer->filled = 0u;\n\
-         }}\n\
-         \n\
-         {name}_status {name}_fixed_push({name}_fixed *observer, const int32_t *y, const int32_t *u) {{\n\
-         \x20   unsigned i;\n\
-         \x20   unsigned slot;\n\
-         \x20   int inside = 1;\n\
-         {checks}\
-         \x20   if (!inside) {{\n\
-         \x20       return {upper}_REFUSED;\n\
-         \x20   }}\n\
-         {store}\
-         }}\n\
-         \n\
-         /* The sums are in int32_t: every stored sample is in range, where the proof says they fit. */\n\
-         {name}_status {name}_fixed_estimate(const {name}_fixed *observer, int32_t *values, {name}_saturation *saturation) {{\n\
-         \x20   const unsigned next = observer->next;\n\
-         \x20   if (observer->filled < {upper}_HORIZON) {{\n\
-         \x20       return {upper}_NO_ESTIMATE_YET;\n\
-         \x20   }}\n\
-         {projections}\
-         {estimates}\
-         \x20   return {upper}_OK;\n\
-         }}\n\n"
-    );
+    let header = super::render(&FixedH {
+        name,
+        upper: &upper,
+        inputs: nu > 0,
+        ranges: &ranges,
+        targets: &targets,
+        scales: &scales,
+    });
+    let source = super::render(&FixedSource {
+        name,
+        upper: &upper,
+        inputs: nu > 0,
+        tables: &tables,
+        checks: &checks,
+        projections: &projections,
+        estimates: &estimates,
+    });
     FixedC { header, source }
+}
+
+/// The integer map's part of the header: `ranges` and `targets` are lines of its comment, `scales`
+/// the estimates' scale macros.
+#[derive(Template)]
+#[template(path = "c/fixed.h", escape = "none")]
+struct FixedH<'a> {
+    name: &'a str,
+    upper: &'a str,
+    inputs: bool,
+    ranges: &'a str,
+    targets: &'a str,
+    scales: &'a str,
+}
+
+/// The integer map's part of the source: `tables`, then the code (`checks`: each value's range).
+#[derive(Template)]
+#[template(path = "c/fixed.c", escape = "none")]
+struct FixedSource<'a> {
+    name: &'a str,
+    upper: &'a str,
+    inputs: bool,
+    tables: &'a str,
+    checks: &'a str,
+    projections: &'a str,
+    estimates: &'a str,
 }

@@ -4,6 +4,8 @@
 //! `firmware::InverseTable::evaluate` does, saturation flags included. The observer is the last `N`
 //! samples, each stored twice so that the window is always contiguous (as `firmware::Window`).
 
+use askama::Template;
+
 use super::{float, floats};
 use crate::emit::precision::F32Tables;
 use crate::emit::terms::dot_terms;
@@ -120,136 +122,44 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
             r_max = float(&what("r_max"), f64::from(rounded.r_max))?,
         );
     }
-    let inputs_field = if nu > 0 {
-        format!("    float u[2u * {upper}_HORIZON][{upper}_INPUTS];\n")
-    } else {
-        String::new()
-    };
-    let header = format!(
-        "/* The map observer: the last {upper}_HORIZON samples, each stored twice so that the window is\n\
-         \x20* always contiguous. Allocate it anywhere (no heap is used) and call {name}_map_init. */\n\
-         typedef struct {{\n\
-         \x20   float y[2u * {upper}_HORIZON][{upper}_OUTPUTS];\n\
-         {inputs_field}\
-         \x20   unsigned next;\n\
-         \x20   unsigned filled;\n\
-         }} {name}_map;\n\
-         \n\
-         /* Empties the window (a fresh observer, or a new run). */\n\
-         void {name}_map_init({name}_map *observer);\n\
-         \n\
-         /* Takes the sample of the current instant: y[{upper}_OUTPUTS] and u[{upper}_INPUTS] (u may be\n\
-         \x20* NULL when there is no input). {upper}_OK, or {upper}_REFUSED for a NaN or infinite value\n\
-         \x20* (the observer is unchanged). */\n\
-         {name}_status {name}_map_push({name}_map *observer, const float *y, const float *u);\n\
-         \n\
-         /* The estimate of every target from the last {upper}_HORIZON samples into values[{upper}_TARGETS]\n\
-         \x20* and saturation[{upper}_TARGETS]; {upper}_NO_ESTIMATE_YET (nothing written) before the window is full. */\n\
-         {name}_status {name}_map_estimate(const {name}_map *observer, float *values, {name}_saturation *saturation);\n\
-         \n"
-    );
-    let store = window_store(&upper, nu);
-    // The check written out here rather than a call of `accepts`, which the compiler keeps out of line
-    // where the followers call it too (about 10 instructions more per sample).
-    let check_inputs = if nu > 0 {
-        format!(
-            "    for (i = 0u; i < {upper}_INPUTS; ++i) {{\n\
-             \x20       finite &= is_finite(u[i]);\n\
-             \x20   }}\n"
-        )
-    } else {
-        String::new()
-    };
-    // Only where a table of more than one segment is uniform: an unused static function is a warning.
-    let uniform = if estimates.contains("uniform_segment(") {
-        "/* floor(t) for 0 <= t, at most count - 1: a uniform table's segment. Any other t (negative, NaN,\n\
-         \x20* infinite) gives some segment, whose value evaluate replaces by r_min or r_max. The clamp is an\n\
-         \x20* unsigned minimum of the bits of |t|, which are ordered as the values: the conversion is always\n\
-         \x20* defined, and the same instructions run whatever t is. */\n\
-         static uint32_t uniform_segment(float t, uint32_t count) {\n\
-         \x20   const uint32_t magnitude = bits_of(t) & 0x7fffffffu;\n\
-         \x20   const uint32_t last = bits_of((float)(count - 1u));\n\
-         \x20   const uint32_t least = magnitude < last ? magnitude : last;\n\
-         \x20   float clamped;\n\
-         \x20   memcpy(&clamped, &least, sizeof clamped);\n\
-         \x20   return (uint32_t)clamped;\n\
-         }\n\
-         \n"
-    } else {
-        ""
-    };
-    let source = format!(
-        "{tables}\n\
-         {uniform}\
-         /* r(t) on one segment (a, b) starting at `start`, held at r_min below 0 (or NaN) and r_max above\n\
-         \x20* t_max (t_max >= 0: never both); as firmware::InverseTable, by one select per statement, which\n\
-         \x20* compilers make a conditional move (an IT block on Thumb-2): the same instructions whatever t is. */\n\
-         static void evaluate(float t, const float *segment, float start, float t_max, float r_min, float r_max,\n\
-         \x20                    float *value, {name}_saturation *saturation) {{\n\
-         \x20   const int low = !(t >= 0.0f);\n\
-         \x20   const int high = t > t_max;\n\
-         \x20   float r = segment[0] + segment[1] * (t - start);\n\
-         \x20   r = choose_float(high, r_max, r);\n\
-         \x20   r = choose_float(low, r_min, r);\n\
-         \x20   *value = r;\n\
-         \x20   *saturation = ({name}_saturation)((unsigned)low | (unsigned)high << 1);\n\
-         }}\n\
-         \n\
-         void {name}_map_init({name}_map *observer) {{\n\
-         \x20   observer->next = 0u;\n\
-         \x20   observer->filled = 0u;\n\
-         }}\n\
-         \n\
-         {name}_status {name}_map_push({name}_map *observer, const float *y, const float *u) {{\n\
-         \x20   unsigned i;\n\
-         \x20   unsigned slot;\n\
-         \x20   int finite = 1;\n\
-         \x20   for (i = 0u; i < {upper}_OUTPUTS; ++i) {{\n\
-         \x20       finite &= is_finite(y[i]);\n\
-         \x20   }}\n\
-         {check_inputs}\
-         \x20   if (!finite) {{\n\
-         \x20       return {upper}_REFUSED;\n\
-         \x20   }}\n\
-         {store}\
-         }}\n\
-         \n\
-         {name}_status {name}_map_estimate(const {name}_map *observer, float *values, {name}_saturation *saturation) {{\n\
-         \x20   const unsigned next = observer->next;\n\
-         \x20   if (observer->filled < {upper}_HORIZON) {{\n\
-         \x20       return {upper}_NO_ESTIMATE_YET;\n\
-         \x20   }}\n\
-         {projections}\
-         {estimates}\
-         \x20   return {upper}_OK;\n\
-         }}\n\n"
-    );
+    let header = super::render(&MapH {
+        name,
+        upper: &upper,
+        inputs: nu > 0,
+    });
+    let source = super::render(&MapSource {
+        name,
+        upper: &upper,
+        inputs: nu > 0,
+        tables: &tables,
+        // Only where a table of more than one segment is uniform: an unused static function is a
+        // warning.
+        uniform: estimates.contains("uniform_segment("),
+        projections: &projections,
+        estimates: &estimates,
+    });
     Ok(MapC { header, source })
 }
 
-/// The end of a map's `_push` (the float map's and the integer map's): the accepted sample stored
-/// twice in the window (so that the last N are contiguous from `next`), the write position and the
-/// count moved on, and `OK` returned.
-pub(super) fn window_store(upper: &str, nu: usize) -> String {
-    let store_inputs = if nu > 0 {
-        format!(
-            "    for (i = 0u; i < {upper}_INPUTS; ++i) {{\n\
-             \x20       observer->u[slot][i] = u[i];\n\
-             \x20       observer->u[slot + {upper}_HORIZON][i] = u[i];\n\
-             \x20   }}\n"
-        )
-    } else {
-        "    (void)u;\n".to_owned()
-    };
-    format!(
-        "    slot = observer->next;\n\
-         \x20   for (i = 0u; i < {upper}_OUTPUTS; ++i) {{\n\
-         \x20       observer->y[slot][i] = y[i];\n\
-         \x20       observer->y[slot + {upper}_HORIZON][i] = y[i];\n\
-         \x20   }}\n\
-         {store_inputs}\
-         \x20   observer->next = slot + 1u >= {upper}_HORIZON ? 0u : slot + 1u;\n\
-         \x20   observer->filled += (unsigned)(observer->filled < {upper}_HORIZON);\n\
-         \x20   return {upper}_OK;\n"
-    )
+/// The map's part of the header.
+#[derive(Template)]
+#[template(path = "c/map.h", escape = "none")]
+struct MapH<'a> {
+    name: &'a str,
+    upper: &'a str,
+    inputs: bool,
+}
+
+/// The map's part of the source: `tables`, then the code, which computes every projection first
+/// (`projections`), then every table (`estimates`).
+#[derive(Template)]
+#[template(path = "c/map.c", escape = "none")]
+struct MapSource<'a> {
+    name: &'a str,
+    upper: &'a str,
+    inputs: bool,
+    tables: &'a str,
+    uniform: bool,
+    projections: &'a str,
+    estimates: &'a str,
 }

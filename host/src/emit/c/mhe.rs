@@ -4,6 +4,8 @@
 //! `L D Lᵀ` solve, the projection onto the box), so that it gives the Rust observer's bits. Not
 //! straight-line code: loops over the states and the window, as the firmware's generic code.
 
+use askama::Template;
+
 use super::floats;
 use super::program::function;
 use crate::emit::EmitError;
@@ -34,343 +36,58 @@ pub(super) fn mhe(
         &code.output,
         code,
     )?;
-    // The window's inputs: none is read where the design has no input.
-    let (u_field, u_store, u_at) = if nu > 0 {
-        (
-            format!("    float u[2u * {upper}_HORIZON][{upper}_INPUTS];\n"),
-            format!(
-                "    for (i = 0u; i < {upper}_INPUTS; ++i) {{\n        o->u[slot][i] = u[i];\n        o->u[slot + {upper}_HORIZON][i] = u[i];\n    }}\n"
-            ),
-            "(o)->u[(o)->next + (k)]",
-        )
-    } else {
-        (String::new(), String::new(), "NULL")
-    };
-    source += &MHE_TEMPLATE
-        .replace("@WEIGHTS@", &floats("chip MHE weights", &constants.weights)?)
-        .replace("@PRIOR@", &floats("chip MHE prior", &constants.prior)?)
-        .replace("@LOWER@", &floats("chip MHE lower", &constants.lower)?)
-        .replace("@UPPER_BOUNDS@", &floats("chip MHE upper", &constants.upper)?)
-        .replace("@START@", &floats("chip MHE start", &constants.start)?)
-        .replace("@DAMPING@", &one("damping", constants.damping)?)
-        .replace("@H@", &one("substep", constants.h)?)
-        .replace("@ITERATIONS@", &constants.iterations.to_string())
-        .replace("@SUBSTEPS@", &substeps.to_string())
-        .replace("@U_STORE@", &u_store)
-        .replace("@U_AT@", u_at)
-        .replace("@NAME@", name)
-        .replace("@UPPER@", &upper);
-    let header = format!(
-        "/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, {iterations} Gauss-Newton\n \
-         * step(s) over the last {upper}_HORIZON samples from the previous solution moved one sample on, each\n \
-         * solved by an L D L^T factorisation and projected onto the learning box. Thousands of instructions\n \
-         * per sample (docs/chip.md): the on-line estimate the map replaces. */\n\
-         typedef struct {{\n\
-         \x20   float y[2u * {upper}_HORIZON][{upper}_OUTPUTS];\n\
-         {u_field}\
-         \x20   unsigned next;\n\
-         \x20   unsigned filled;\n\
-         \x20   float solved[{upper}_STATES];\n\
-         \x20   int has_solved;\n\
-         \x20   float values[{upper}_TARGETS];\n\
-         \x20   {name}_saturation flags[{upper}_TARGETS];\n\
-         \x20   int ready;\n\
-         }} {name}_mhe;\n\
-         \n\
-         void {name}_mhe_init({name}_mhe *observer);\n\
-         {name}_status {name}_mhe_push({name}_mhe *observer, const float *y, const float *u);\n\
-         {name}_status {name}_mhe_estimate(const {name}_mhe *observer, float *values, {name}_saturation *saturation);\n\
-         \n",
-        iterations = constants.iterations,
+    let (weights, prior) = (
+        floats("chip MHE weights", &constants.weights)?,
+        floats("chip MHE prior", &constants.prior)?,
     );
+    source += &super::render(&MheC {
+        name,
+        upper: &upper,
+        // The window's inputs: none is read where the design has no input.
+        inputs: nu > 0,
+        weights: &weights,
+        prior: &prior,
+        lower: &floats("chip MHE lower", &constants.lower)?,
+        upper_bounds: &floats("chip MHE upper", &constants.upper)?,
+        start: &floats("chip MHE start", &constants.start)?,
+        damping: &one("damping", constants.damping)?,
+        h: &one("substep", constants.h)?,
+        iterations: constants.iterations,
+        substeps,
+    });
+    let header = super::render(&MheH {
+        name,
+        upper: &upper,
+        inputs: nu > 0,
+        iterations: constants.iterations,
+    });
     Ok((header, source + &super::started::estimate(name, "mhe")))
 }
 
-/// The observer (`@…@` filled in by [`mhe`]); `NX` is the design's states.
-const MHE_TEMPLATE: &str = r#"/* The moving-horizon estimate's constants: the outputs' weights 1 / sigma^2, the prior's weight per
- * state, the learning box, the first window's start, Levenberg's damping, the RK4 substep. */
-static const float MHE_WEIGHTS[@UPPER@_OUTPUTS] = @WEIGHTS@;
-static const float MHE_PRIOR[@UPPER@_STATES] = @PRIOR@;
-static const float MHE_LOWER[@UPPER@_STATES] = @LOWER@;
-static const float MHE_UPPER[@UPPER@_STATES] = @UPPER_BOUNDS@;
-static const float MHE_START[@UPPER@_STATES] = @START@;
-static const float MHE_DAMPING = @DAMPING@;
-static const float MHE_H = @H@;
-#define MHE_ITERATIONS @ITERATIONS@u
-#define MHE_SUBSTEPS @SUBSTEPS@u
-#define MHE_NX @UPPER@_STATES
-#define MHE_NY @UPPER@_OUTPUTS
-/* The inputs of the window's sample k (oldest first) of the observer o. */
-#define MHE_U(o, k) @U_AT@
-
-/* firmware::matrix::product: out = a b, each entry summed from 0 in k's order. */
-static void mhe_product(float (*a)[MHE_NX], float (*b)[MHE_NX], float (*out)[MHE_NX]) {
-    unsigned r, c, k;
-    for (r = 0u; r < MHE_NX; ++r) {
-        for (c = 0u; c < MHE_NX; ++c) {
-            float entry = 0.0f;
-            for (k = 0u; k < MHE_NX; ++k) {
-                entry += a[r][k] * b[k][c];
-            }
-            out[r][c] = entry;
-        }
-    }
+/// The observer's part of the header.
+#[derive(Template)]
+#[template(path = "c/mhe.h", escape = "none")]
+struct MheH<'a> {
+    name: &'a str,
+    upper: &'a str,
+    inputs: bool,
+    iterations: usize,
 }
 
-/* The derivative k and its Jacobian d at x. */
-static void mhe_derivative(const float *x, const float *u, float *k, float (*d)[MHE_NX]) {
-    float out[MHE_NX + MHE_NX * MHE_NX];
-    unsigned i, j;
-    model_derivative(x, u, out);
-    for (i = 0u; i < MHE_NX; ++i) {
-        k[i] = out[i];
-        for (j = 0u; j < MHE_NX; ++j) {
-            d[i][j] = out[MHE_NX + i * MHE_NX + j];
-        }
-    }
+/// The observer's constants and code (`NX` is the design's states).
+#[derive(Template)]
+#[template(path = "c/mhe.c", escape = "none")]
+struct MheC<'a> {
+    name: &'a str,
+    upper: &'a str,
+    inputs: bool,
+    weights: &'a str,
+    prior: &'a str,
+    lower: &'a str,
+    upper_bounds: &'a str,
+    start: &'a str,
+    damping: &'a str,
+    h: &'a str,
+    iterations: usize,
+    substeps: usize,
 }
-
-/* Rk4::stage: the derivative at x + w k, and its Jacobian times (I + w d). */
-static void mhe_stage(const float *x, const float *k, float (*d)[MHE_NX], float w, const float *u, float *value,
-                      float (*jacobian)[MHE_NX]) {
-    float point[MHE_NX];
-    float moved[MHE_NX][MHE_NX], a[MHE_NX][MHE_NX];
-    unsigned i, j;
-    for (i = 0u; i < MHE_NX; ++i) {
-        point[i] = x[i] + w * k[i];
-        for (j = 0u; j < MHE_NX; ++j) {
-            moved[i][j] = (i == j ? 1.0f : 0.0f) + w * d[i][j];
-        }
-    }
-    mhe_derivative(point, u, value, a);
-    mhe_product(a, moved, jacobian);
-}
-
-/* Rk4::substep: one classical RK4 step of MHE_H from x, with its Jacobian. */
-static void mhe_substep(const float *x, const float *u, float *next, float (*jacobian)[MHE_NX]) {
-    const float two = 1.0f + 1.0f;
-    const float half = MHE_H / two;
-    const float sixth = MHE_H / (two + two + two);
-    float k1[MHE_NX], k2[MHE_NX], k3[MHE_NX], k4[MHE_NX];
-    float d1[MHE_NX][MHE_NX], d2[MHE_NX][MHE_NX], d3[MHE_NX][MHE_NX], d4[MHE_NX][MHE_NX];
-    unsigned i, j;
-    mhe_derivative(x, u, k1, d1);
-    mhe_stage(x, k1, d1, half, u, k2, d2);
-    mhe_stage(x, k2, d2, half, u, k3, d3);
-    mhe_stage(x, k3, d3, MHE_H, u, k4, d4);
-    for (i = 0u; i < MHE_NX; ++i) {
-        next[i] = x[i] + sixth * (k1[i] + two * (k2[i] + k3[i]) + k4[i]);
-        for (j = 0u; j < MHE_NX; ++j) {
-            jacobian[i][j] = (i == j ? 1.0f : 0.0f) + sixth * (d1[i][j] + two * (d2[i][j] + d3[i][j]) + d4[i][j]);
-        }
-    }
-}
-
-/* Rk4::step: one sampling period (MHE_SUBSTEPS substeps, their Jacobians composed). */
-static void mhe_step(const float *x, const float *u, float *next, float (*jacobian)[MHE_NX]) {
-    unsigned s;
-    mhe_substep(x, u, next, jacobian);
-    for (s = 1u; s < MHE_SUBSTEPS; ++s) {
-        float from[MHE_NX];
-        float d[MHE_NX][MHE_NX], composed[MHE_NX][MHE_NX];
-        memcpy(from, next, sizeof from);
-        mhe_substep(from, u, next, d);
-        mhe_product(d, jacobian, composed);
-        memcpy(jacobian, composed, sizeof composed);
-    }
-}
-
-/* firmware::bounds::project onto the learning box: at_least, then at_most, by selects. */
-static void mhe_project(const float *x, float *out) {
-    unsigned i;
-    for (i = 0u; i < MHE_NX; ++i) {
-        const float above = select_float(!(x[i] >= MHE_LOWER[i]), MHE_LOWER[i], x[i]);
-        out[i] = select_float(above > MHE_UPPER[i], MHE_UPPER[i], above);
-    }
-}
-
-/* firmware::mhe::normal_equations over the window of o from x: J^T W J and J^T W r (a non-finite
- * residual weighs nothing). */
-static void mhe_normal(const @NAME@_mhe *o, const float *x, float (*matrix)[MHE_NX], float *gradient) {
-    float state[MHE_NX];
-    float sensitivity[MHE_NX][MHE_NX];
-    unsigned k, i, a, b, c, m;
-    memcpy(state, x, sizeof state);
-    for (a = 0u; a < MHE_NX; ++a) {
-        gradient[a] = 0.0f;
-        for (b = 0u; b < MHE_NX; ++b) {
-            matrix[a][b] = 0.0f;
-            sensitivity[a][b] = a == b ? 1.0f : 0.0f;
-        }
-    }
-    for (k = 0u; k < @UPPER@_HORIZON; ++k) {
-        const float *y = o->y[o->next + k];
-        float out[MHE_NY + MHE_NY * MHE_NX];
-        if (k > 0u) {
-            float next[MHE_NX];
-            float f[MHE_NX][MHE_NX], composed[MHE_NX][MHE_NX];
-            mhe_step(state, MHE_U(o, k - 1u), next, f);
-            memcpy(state, next, sizeof state);
-            mhe_product(f, sensitivity, composed);
-            memcpy(sensitivity, composed, sizeof composed);
-        }
-        model_output(state, MHE_U(o, k), out);
-        for (i = 0u; i < MHE_NY; ++i) {
-            const float raw = y[i] - out[i];
-            const int finite = is_finite(raw);
-            const float residual = select_float(finite, raw, 0.0f);
-            const float w = select_float(finite, MHE_WEIGHTS[i], 0.0f);
-            float row[MHE_NX];
-            for (c = 0u; c < MHE_NX; ++c) {
-                row[c] = 0.0f;
-                for (m = 0u; m < MHE_NX; ++m) {
-                    row[c] += out[MHE_NY + i * MHE_NX + m] * sensitivity[m][c];
-                }
-            }
-            for (a = 0u; a < MHE_NX; ++a) {
-                const float weighted = w * row[a];
-                gradient[a] += weighted * residual;
-                for (b = 0u; b < MHE_NX; ++b) {
-                    matrix[a][b] += weighted * row[b];
-                }
-            }
-        }
-    }
-}
-
-/* firmware::mhe::solve_cholesky: a x = b by a = L D L^T (no square root); 0 where a pivot is not
- * positive and finite. */
-static int mhe_cholesky(float (*a)[MHE_NX], const float *b, float *x) {
-    float l[MHE_NX][MHE_NX], d[MHE_NX], inverse_d[MHE_NX], z[MHE_NX];
-    unsigned i, j, k, r;
-    memset(l, 0, sizeof l);
-    for (j = 0u; j < MHE_NX; ++j) {
-        float pivot = a[j][j];
-        for (k = 0u; k < j; ++k) {
-            pivot -= l[j][k] * l[j][k] * d[k];
-        }
-        if (!(pivot > 0.0f) || !is_finite(pivot)) {
-            return 0;
-        }
-        d[j] = pivot;
-        inverse_d[j] = 1.0f / pivot;
-        for (i = j + 1u; i < MHE_NX; ++i) {
-            float sum = a[i][j];
-            /* k < MHE_NX always holds: said for gcc -O1, which otherwise warns of an access beyond l. */
-            for (k = 0u; k < j && k < MHE_NX; ++k) {
-                sum -= l[i][k] * l[j][k] * d[k];
-            }
-            l[i][j] = sum * inverse_d[j];
-        }
-    }
-    for (r = 0u; r < MHE_NX; ++r) {
-        float sum = b[r];
-        for (k = 0u; k < r; ++k) {
-            sum -= l[r][k] * z[k];
-        }
-        z[r] = sum;
-    }
-    for (r = MHE_NX; r-- > 0u;) {
-        float sum = z[r] * inverse_d[r];
-        for (k = r + 1u; k < MHE_NX; ++k) {
-            sum -= l[k][r] * x[k];
-        }
-        x[r] = sum;
-    }
-    return 1;
-}
-
-/* firmware::mhe::solve_window: MHE_ITERATIONS damped Gauss-Newton steps from centre (with the prior
- * around it when `prior`), each projected; the solution x and the state at the newest sample. */
-static void mhe_solve_window(const @NAME@_mhe *o, const float *centre, int prior, float *solution, float *end) {
-    float x[MHE_NX], state[MHE_NX];
-    unsigned n, i, k;
-    memcpy(x, centre, sizeof x);
-    for (n = 0u; n < MHE_ITERATIONS; ++n) {
-        float matrix[MHE_NX][MHE_NX];
-        float gradient[MHE_NX], step[MHE_NX], next[MHE_NX];
-        mhe_normal(o, x, matrix, gradient);
-        for (i = 0u; i < MHE_NX; ++i) {
-            if (prior) {
-                matrix[i][i] += MHE_PRIOR[i];
-                gradient[i] -= MHE_PRIOR[i] * (x[i] - centre[i]);
-            }
-            matrix[i][i] += MHE_DAMPING * matrix[i][i];
-        }
-        if (!mhe_cholesky(matrix, gradient, step)) {
-            break;
-        }
-        for (i = 0u; i < MHE_NX; ++i) {
-            next[i] = x[i] + step[i];
-        }
-        mhe_project(next, x);
-    }
-    memcpy(solution, x, sizeof x);
-    memcpy(state, x, sizeof state);
-    for (k = 1u; k < @UPPER@_HORIZON; ++k) {
-        float next[MHE_NX];
-        float f[MHE_NX][MHE_NX];
-        mhe_step(state, MHE_U(o, k - 1u), next, f);
-        memcpy(state, next, sizeof state);
-    }
-    mhe_project(state, end);
-}
-
-void @NAME@_mhe_init(@NAME@_mhe *o) {
-    o->next = 0u;
-    o->filled = 0u;
-    o->has_solved = 0;
-    o->ready = 0;
-}
-
-@NAME@_status @NAME@_mhe_push(@NAME@_mhe *o, const float *y, const float *u) {
-    float moved[MHE_NX], x[MHE_NX], end[MHE_NX], values[@UPPER@_TARGETS];
-    int has_moved = 0;
-    unsigned i, slot;
-    if (!all_finite(y, @UPPER@_OUTPUTS) || !inputs_finite(u)) {
-        return @UPPER@_REFUSED;
-    }
-    /* The previous solution moved one sample on: the prior's centre and the first iterate. */
-    if (o->has_solved && o->filled >= @UPPER@_HORIZON) {
-        float next[MHE_NX];
-        float f[MHE_NX][MHE_NX];
-        mhe_step(o->solved, MHE_U(o, 0u), next, f);
-        mhe_project(next, moved);
-        has_moved = 1;
-    }
-    /* Every value of the sample is finite: stored. */
-    slot = o->next;
-    for (i = 0u; i < @UPPER@_OUTPUTS; ++i) {
-        o->y[slot][i] = y[i];
-        o->y[slot + @UPPER@_HORIZON][i] = y[i];
-    }
-@U_STORE@    o->next = slot + 1u >= @UPPER@_HORIZON ? 0u : slot + 1u;
-    o->filled += (unsigned)(o->filled < @UPPER@_HORIZON);
-    if (o->filled < @UPPER@_HORIZON) {
-        return @UPPER@_OK;
-    }
-    mhe_solve_window(o, has_moved ? moved : MHE_START, has_moved, x, end);
-    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX)) {
-        return @UPPER@_REFUSED;
-    }
-    memcpy(o->solved, x, sizeof x);
-    o->has_solved = 1;
-    targets(end, u, values);
-    if (!all_finite(values, @UPPER@_TARGETS)) {
-        return @UPPER@_REFUSED;
-    }
-    memcpy(o->values, values, sizeof values);
-    for (i = 0u; i < @UPPER@_TARGETS; ++i) {
-        o->flags[i] = @UPPER@_INSIDE;
-    }
-    o->ready = 1;
-    return @UPPER@_OK;
-}
-
-#undef MHE_ITERATIONS
-#undef MHE_SUBSTEPS
-#undef MHE_NX
-#undef MHE_NY
-#undef MHE_U
-
-"#;

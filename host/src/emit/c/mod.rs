@@ -24,6 +24,8 @@ mod storage;
 
 pub use storage::{mark, sample_period, storage_bound, MARK_BYTES};
 
+use askama::Template;
+
 use super::model::Observers;
 use super::EmitError;
 use crate::fit::DesignResult;
@@ -146,210 +148,103 @@ pub fn c_source(
         _ => (String::new(), String::new()),
     };
     let alias = match chosen {
-        Some(kind) if kind == "map" || kinds.names.contains(&kind) => format!(
-            "/* This design's observer, of the kind `gen` chose or the spec named: {kind}. */\n\
-             #define {upper}_KIND \"{kind}\"\n\
-             typedef {name}_{kind} {name}_observer;\n\
-             #define {name}_observer_init {name}_{kind}_init\n\
-             #define {name}_observer_push {name}_{kind}_push\n\
-             #define {name}_observer_estimate {name}_{kind}_estimate\n\n"
-        ),
-        Some(kind) => format!(
-            "/* This design's observer is of kind {kind}, which has no C form: use the Rust crate. */\n\
-             #define {upper}_KIND \"{kind}\"\n\n"
-        ),
+        Some(kind) => render(&AliasH {
+            name,
+            upper: &upper,
+            kind,
+            c_form: kind == "map" || kinds.names.contains(&kind),
+        }),
         None => String::new(),
     };
-    let sizes = match model {
-        Some((code, _)) => format!(
-            "#define {upper}_STATES {nx}\n\
-             /* Entries of a filter's covariance kept: its upper triangle. */\n\
-             #define {upper}_COVARIANCE {cov}\n",
-            nx = code.dimensions.states,
-            cov = crate::plant::kalman::triangle(code.dimensions.states)
-        ),
-        None => String::new(),
-    };
-    let header = format!(
-        "/* The `{name}` observers in C99, emitted by `mho gen` from the same tables and programs as the\n\
-         \x20* Rust design file. Do not edit: regenerate. Build with -ffp-contract=off (no fused\n\
-         \x20* multiply-add) to get the Rust observers' bits. Every observer lives in a struct you allocate\n\
-         \x20* (no heap); call its _init first, then _push every sample and _estimate when you need it.\n\
-         {licence} */\n\
-         #ifndef {upper}_H\n\
-         #define {upper}_H\n\
-         \n\
-         #include <stddef.h>\n\
-         #include <stdint.h>\n\
-         \n\
-         /* C linkage for a C++ program that includes this header (the observers are compiled as C). */\n\
-         #ifdef __cplusplus\n\
-         extern \"C\" {{\n\
-         #endif\n\
-         \n\
-         #define {upper}_OUTPUTS {ny}\n\
-         #define {upper}_INPUTS {nu}\n\
-         #define {upper}_TARGETS {nt}\n\
-         /* The map's window, in samples: no map estimate before it is full. */\n\
-         #define {upper}_HORIZON {n}\n\
-         /* The sample period the design assumes, in its time unit: push one sample every period. */\n\
-         #define {upper}_SAMPLE_PERIOD {tau}\n\
-         {sizes}\
-         \n\
-         /* What every call returns: the observers' push and estimate, and the storage calls (the same\n\
-         \x20* values as the Rust static library's c/include/{name}.h). */\n\
-         typedef enum {{\n\
-         \x20   {upper}_OK = 0,\n\
-         \x20   /* The sample was refused: a NaN or infinite value (or a filter step whose result is not\n\
-         \x20    * finite); the latest estimate is unchanged. */\n\
-         \x20   {upper}_REFUSED = 1,\n\
-         \x20   /* No estimate yet (the map: fewer than {upper}_HORIZON accepted samples since init). */\n\
-         \x20   {upper}_NO_ESTIMATE_YET = 2,\n\
-         \x20   /* The storage calls only: a null pointer, or storage too small or misaligned; nothing done. */\n\
-         \x20   {upper}_BAD_ARGUMENT = 3,\n\
-         \x20   /* The storage calls only: the storage holds no observer of this design. */\n\
-         \x20   {upper}_NOT_INITIALISED = 4\n\
-         }} {name}_status;\n\
-         \n\
-         /* Where an estimate lies against its range: inside, or held at its low or high end (the same\n\
-         \x20* values from every call that reports it). */\n\
-         typedef enum {{\n\
-         \x20   {upper}_INSIDE = 0,\n\
-         \x20   {upper}_LOW = 1,\n\
-         \x20   {upper}_HIGH = 2\n\
-         }} {name}_saturation;\n\
-         \n\
-         {map_header}\
-         {fixed_header}\
-         {kinds_header}\
-         {alias}\
-         {interface_header}\
-         #ifdef __cplusplus\n\
-         }}\n\
-         #endif\n\
-         \n\
-         #endif\n",
-        licence = super::licence_comment(" * "),
-        tau = storage::sample_period(design),
-        map_header = map.header,
-        fixed_header = integer.header,
-        kinds_header = kinds.header,
-    );
-    let math = if kinds.needs_math { "#include <math.h>\n" } else { "" };
-    let inputs_check = if nu > 0 {
-        format!(
-            "    for (i = 0u; i < {upper}_INPUTS; ++i) {{\n\
-             \x20       finite &= is_finite(u[i]);\n\
-             \x20   }}\n"
-        )
-    } else {
-        "    (void)u;\n".to_owned()
-    };
+    let header = render(&DesignH {
+        name,
+        upper: &upper,
+        licence: &super::licence_comment(" * "),
+        ny,
+        nu,
+        nt,
+        n,
+        tau: &storage::sample_period(design),
+        sizes: model.map(|(code, _)| {
+            let nx = code.dimensions.states;
+            (nx, crate::plant::kalman::triangle(nx))
+        }),
+        map_header: &map.header,
+        fixed_header: &integer.header,
+        kinds_header: &kinds.header,
+        alias: &alias,
+        interface_header: &interface_header,
+    });
     let body = format!("{}{}{}{interface_source}", map.source, integer.source, kinds.source);
-    // Only where a follower checks a sample (an unused static function is a warning).
-    let accepts = if body.contains("accepts(") {
-        format!(
-            "/* 1 when every output and input of a sample is finite (u is not read without inputs). */\n\
-             static int accepts(const float *y, const float *u) {{\n\
-             \x20   unsigned i;\n\
-             \x20   int finite = 1;\n\
-             \x20   for (i = 0u; i < {upper}_OUTPUTS; ++i) {{\n\
-             \x20       finite &= is_finite(y[i]);\n\
-             \x20   }}\n\
-             {inputs_check}\
-             \x20   return finite;\n\
-             }}\n\
-             \n"
-        )
-    } else {
-        String::new()
-    };
-    let source = format!(
-        "/* The `{name}` observers in C99, emitted by `mho gen`. Do not edit: regenerate.\n\
-         {licence} */\n\
-         #include <stdint.h>\n\
-         #include <string.h>\n\
-         {math}\
-         #include <float.h>\n\
-         #include \"{name}.h\"\n\
-         \n\
-         /* The Rust observer's bits need every float operation rounded on its own: no fused multiply-add\n\
-         \x20* (gcc: -ffp-contract=off, the default of its ISO modes such as -std=c99; other compilers follow\n\
-         \x20* the standard pragma below), no -ffast-math, and float evaluated as float: FLT_EVAL_METHOD 0,\n\
-         \x20* or 16 or 32 (ISO/IEC TS 18661-3: types narrower than _Float16, or _Float32, are evaluated in\n\
-         \x20* it, so float stays float; gcc says 16 for a Cortex-M55 or with AVX512-FP16 in its GNU modes). */\n\
-         #if !defined(__GNUC__) || defined(__clang__)\n\
-         #pragma STDC FP_CONTRACT OFF\n\
-         #endif\n\
-         {flt_eval_check}\
-         \n\
-         \n\
-         /* The bits of v (memcpy: no aliasing, no conversion). */\n\
-         static uint32_t bits_of(float v) {{\n\
-         \x20   uint32_t x;\n\
-         \x20   memcpy(&x, &v, sizeof x);\n\
-         \x20   return x;\n\
-         }}\n\
-         \n\
-         /* 1 when v is finite: its exponent is not all ones (an integer test, as Rust's is_finite). */\n\
-         static int is_finite(float v) {{\n\
-         \x20   return (bits_of(v) & 0x7fffffffu) < 0x7f800000u;\n\
-         }}\n\
-         \n\
-         {accepts}\
-         {selects}\
-         {body}",
-        selects = selects(&body),
-        licence = super::licence_comment(" * "),
-        flt_eval_check = FLT_EVAL_CHECK,
-    );
+    // Only the helpers the body calls: an unused static function is a warning.
+    let calls = |f: &str| body.contains(&format!("{f}("));
+    let source = render(&DesignC {
+        name,
+        upper: &upper,
+        licence: &super::licence_comment(" * "),
+        math: kinds.needs_math,
+        // Only where a follower checks a sample.
+        accepts: calls("accepts"),
+        inputs: nu > 0,
+        // `choose_float`, one `?:` per statement, which compilers make a conditional move;
+        // `select_bits` and `select_float`, by masks, where a chain of selects on one condition would
+        // become a branch.
+        choose_float: calls("choose_float"),
+        select_bits: calls("select_bits") || calls("select_float"),
+        select_float: calls("select_float"),
+        body: &body,
+    });
     Ok(CSource { header, source })
 }
 
-/// The source's check that `float` expressions are evaluated in `float`, by `FLT_EVAL_METHOD`
-/// (C99 5.2.4.2.2, ISO/IEC TS 18661-3 for 16 and up): accepted are 0 and the TS's 16 and 32, under
-/// which every type narrower than `_Float16` (resp. `_Float32`) is evaluated in it and `float` in
-/// `float` (gcc reports 16 for `-mcpu=cortex-m55` and for x86 with AVX512-FP16 outside its ISO
-/// modes); refused, each with its reason, are 1 (`float` evaluated in `double`), 2 (in `long double`,
-/// e.g. the x87), -1 (indeterminate) and every other value (a wider format: 64, 33, …).
-const FLT_EVAL_CHECK: &str = "#if defined(FLT_EVAL_METHOD)
-#if FLT_EVAL_METHOD == 1
-#error \"float expressions are evaluated in double here (FLT_EVAL_METHOD 1): the observers need them evaluated in float\"
-#elif FLT_EVAL_METHOD == 2
-#error \"float expressions are evaluated in long double here (FLT_EVAL_METHOD 2, e.g. the x87): use SSE (gcc: -mfpmath=sse)\"
-#elif FLT_EVAL_METHOD == -1
-#error \"the format float expressions are evaluated in is indeterminate here (FLT_EVAL_METHOD -1): the observers need float\"
-#elif FLT_EVAL_METHOD != 0 && FLT_EVAL_METHOD != 16 && FLT_EVAL_METHOD != 32
-#error \"float expressions are evaluated in a format wider than float here (FLT_EVAL_METHOD not 0, 16 or 32)\"
-#endif
-#endif
-";
+/// The text of a template (every field's `Display` writes into a `String`, which cannot fail).
+fn render(template: &impl Template) -> String {
+    template.render().expect("a template renders into a String")
+}
 
-/// The select helpers `body` calls (an unused static function is a warning): `choose_float`, one
-/// `?:` per statement, which compilers make a conditional move; `select_bits` and `select_float`, by
-/// masks, where a chain of selects on one condition would become a branch.
-fn selects(body: &str) -> String {
-    let mut text = String::new();
-    if body.contains("choose_float(") {
-        text += "/* c ? a : b, one select per statement: compilers make it a conditional move (an IT block on\n\
-                 \x20* Thumb-2), where a chain of them on one condition may become a branch. */\n\
-                 static float choose_float(int c, float a, float b) {\n\
-                 \x20   return c ? a : b;\n\
-                 }\n\n";
-    }
-    if body.contains("select_bits(") || body.contains("select_float(") {
-        text += "/* c ? a : b by masks, without a branch (c is 0 or 1): the same instructions whatever c is. */\n\
-                 static uint32_t select_bits(int c, uint32_t a, uint32_t b) {\n\
-                 \x20   const uint32_t mask = 0u - (uint32_t)c;\n\
-                 \x20   return (a & mask) | (b & ~mask);\n\
-                 }\n\n";
-    }
-    if body.contains("select_float(") {
-        text += "static float select_float(int c, float a, float b) {\n\
-                 \x20   uint32_t x = select_bits(c, bits_of(a), bits_of(b));\n\
-                 \x20   memcpy(&a, &x, sizeof a);\n\
-                 \x20   return a;\n\
-                 }\n\n";
-    }
-    text
+/// `<name>.h`.
+#[derive(Template)]
+#[template(path = "c/design.h", escape = "none")]
+struct DesignH<'a> {
+    name: &'a str,
+    upper: &'a str,
+    licence: &'a str,
+    ny: usize,
+    nu: usize,
+    nt: usize,
+    n: usize,
+    tau: &'a str,
+    /// With a model: its states and the covariance's kept entries.
+    sizes: Option<(usize, usize)>,
+    map_header: &'a str,
+    fixed_header: &'a str,
+    kinds_header: &'a str,
+    alias: &'a str,
+    interface_header: &'a str,
+}
+
+/// The header's `<name>_observer` for the chosen kind (`c_form`: the kind has a C form).
+#[derive(Template)]
+#[template(path = "c/alias.h", escape = "none")]
+struct AliasH<'a> {
+    name: &'a str,
+    upper: &'a str,
+    kind: &'a str,
+    c_form: bool,
+}
+
+/// `<name>.c`: the helpers that `body` calls, then `body`.
+#[derive(Template)]
+#[template(path = "c/design.c", escape = "none")]
+struct DesignC<'a> {
+    name: &'a str,
+    upper: &'a str,
+    licence: &'a str,
+    math: bool,
+    accepts: bool,
+    inputs: bool,
+    choose_float: bool,
+    select_bits: bool,
+    select_float: bool,
+    body: &'a str,
 }

@@ -78,55 +78,6 @@ fn reads(leaf: &Leaf) -> Option<&'static str> {
     }
 }
 
-/// `expf` as the firmware's `libm` (0.2.16, from FreeBSD's `e_expf.c`) computes it, operation for
-/// operation, so that a model calling `exp` gives the Rust observer's bits whatever the C library.
-const LIBM_EXPF: &str =
-    "/* e^x in float as Rust's libm computes it (FreeBSD e_expf.c, Sun Microsystems 1993: \"Permission\n\
- * to use, copy, modify, and distribute this software is freely granted, provided that this notice is\n\
- * preserved\"), operation for operation: C libraries' expf differ from it in the last bit. */\n\
-static float libm_expf(float x) {\n\
-    static const float HALF[2] = {0.5f, -0.5f};\n\
-    const float ln2_hi = 6.9314575195e-01f, ln2_lo = 1.4286067653e-06f, inv_ln2 = 1.4426950216e+00f;\n\
-    const float p1 = 1.6666625440e-1f, p2 = -2.7667332906e-3f;\n\
-    const uint32_t sign = bits_of(x) >> 31;\n\
-    const uint32_t hx = bits_of(x) & 0x7fffffffu;\n\
-    float hi, lo, xx, c, y, x1p127;\n\
-    int32_t k;\n\
-    const uint32_t x1p127_bits = 0x7f000000u;\n\
-    memcpy(&x1p127, &x1p127_bits, sizeof x1p127);\n\
-    if (hx >= 0x42aeac50u) { /* |x| >= 87.33655 or NaN */\n\
-        if (hx > 0x7f800000u) {\n\
-            return x;\n\
-        }\n\
-        if (hx >= 0x42b17218u && sign == 0u) { /* overflow */\n\
-            return x * x1p127;\n\
-        }\n\
-        if (sign != 0u && hx >= 0x42cff1b5u) { /* underflow */\n\
-            return 0.0f;\n\
-        }\n\
-    }\n\
-    if (hx > 0x3eb17218u) { /* |x| > ln2 / 2: argument reduction */\n\
-        if (hx > 0x3f851592u) {\n\
-            k = (int32_t)(inv_ln2 * x + HALF[sign]);\n\
-        } else {\n\
-            k = 1 - (int32_t)sign - (int32_t)sign;\n\
-        }\n\
-        hi = x - (float)k * ln2_hi;\n\
-        lo = (float)k * ln2_lo;\n\
-        x = hi - lo;\n\
-    } else if (hx > 0x39000000u) { /* |x| > 2^-14 */\n\
-        k = 0;\n\
-        hi = x;\n\
-        lo = 0.0f;\n\
-    } else {\n\
-        return 1.0f + x;\n\
-    }\n\
-    xx = x * x;\n\
-    c = x - xx * (p1 + xx * p2);\n\
-    y = 1.0f + (x * c / (2.0f - c) - lo + hi);\n\
-    return k == 0 ? y : scalbnf(y, (int)k);\n\
-}\n\n";
-
 /// Whether any of `programs` calls a function of `<math.h>`.
 pub(super) fn needs_math(programs: &[&Program]) -> bool {
     programs.iter().any(|p| {
@@ -139,31 +90,11 @@ pub(super) fn needs_math(programs: &[&Program]) -> bool {
     })
 }
 
-/// The helpers a program's calls need that `<math.h>` lacks: `signum` and `fract` as
-/// `firmware::Maths` defines them.
-pub(super) fn helpers(programs: &[&Program]) -> String {
-    let calls = |name: &str| {
-        programs
-            .iter()
-            .any(|p| p.ops.iter().any(|op| matches!(op, Op::Call(f, _) if *f == name)))
-    };
-    let mut text = String::new();
-    if calls("signum") {
-        text += "/* 1 with the sign of v (NaN stays NaN), as firmware::Maths::signum; NaN told by its bits. */\n\
-                 static float signum(float v) {\n\
-                 \x20   return select_float((bits_of(v) & 0x7fffffffu) > 0x7f800000u, v, copysignf(1.0f, v));\n\
-                 }\n\n";
-    }
-    if calls("exp") {
-        text += LIBM_EXPF;
-    }
-    if calls("fract") {
-        text += "/* v - trunc(v), as firmware::Maths::fract. */\n\
-                 static float fract(float v) {\n\
-                 \x20   return v - truncf(v);\n\
-                 }\n\n";
-    }
-    text
+/// Whether any of `programs` calls the function `name` (`signum`, `exp`, …).
+pub(super) fn calls(programs: &[&Program], name: &str) -> bool {
+    programs
+        .iter()
+        .any(|p| p.ops.iter().any(|op| matches!(op, Op::Call(f, _) if *f == name)))
 }
 
 /// `static void <name>(const float *<param>, …, float *out)` computing `program`: its operations

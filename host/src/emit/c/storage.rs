@@ -2,6 +2,8 @@
 //! `crate::standalone::c_library`) over the C source's chosen kind: the same calls, statuses, storage
 //! mark and checks, so that a firmware moves between the two C routes without changing a line.
 
+use askama::Template;
+
 use crate::spec::Design;
 
 /// Bytes the observer of `design` needs at most on any target: the window (`N` samples of `f32`
@@ -40,95 +42,37 @@ pub(super) fn storage_interface(design: &Design) -> (String, String) {
     let inputs = design.model.inputs.len();
     let upper = name.to_uppercase();
     let bound = storage_bound(design);
-    let header = format!(
-        "/* The Rust static library's interface (c/include/{name}.h of a crate `mho gen --spec` writes) over\n \
-         * {name}_observer: the same calls, statuses ({name}_status) and flags ({name}_saturation), so\n \
-         * that a firmware moves between the two routes without a change. The observer lives in storage you\n \
-         * provide, {upper}_STORAGE_SIZE bytes aligned to {upper}_STORAGE_ALIGN: `init` writes a mark of the\n \
-         * design and the size before it, and every call checks them first. */\n\
-         #define {upper}_STORAGE_ALIGN 8\n\
-         typedef struct {{\n\
-         \x20   uint64_t mark;\n\
-         \x20   uint64_t size;\n\
-         \x20   {name}_observer observer;\n\
-         }} {name}_stored;\n\
-         #define {upper}_STORAGE_SIZE {bound}\n\
-         /* Does not compile where the observer would not fit in {upper}_STORAGE_SIZE bytes. */\n\
-         typedef char {name}_storage_fits[sizeof({name}_stored) <= {upper}_STORAGE_SIZE ? 1 : -1];\n\
-         \n\
-         /* A fresh observer in storage of `size` bytes; call it again to reset. */\n\
-         {name}_status {name}_init(void *storage, size_t size);\n\
-         /* {name}_observer_push on the observer in storage. */\n\
-         {name}_status {name}_push(void *storage, const float *y, const float *u);\n\
-         /* The estimates into estimates[{upper}_TARGETS] and, unless saturation is NULL, whether each was\n \
-         * held at an end of its range into saturation[{upper}_TARGETS]. */\n\
-         {name}_status {name}_estimate(void *storage, float *estimates, {name}_saturation *saturation);\n\
-         /* Bytes the observer occupies with its mark. */\n\
-         size_t {name}_storage_size(void);\n\n"
-    );
-    let inputs_check = if inputs > 0 { " || u == NULL" } else { "" };
-    let source = format!(
-        "/* The mark of this design's observer in storage (never 0: zeroed storage holds none). */\n\
-         #define STORAGE_MARK 0x{mark:016x}ull\n\
-         \n\
-         /* The observer in storage: {upper}_BAD_ARGUMENT for a null or misaligned pointer,\n\
-         \x20* {upper}_NOT_INITIALISED where {name}_init did not make one (it reads the first 16 bytes only). */\n\
-         static {name}_status stored_observer(void *storage, {name}_observer **observer) {{\n\
-         \x20   {name}_stored *stored = ({name}_stored *)storage;\n\
-         \x20   if (storage == NULL || (uintptr_t)storage % {upper}_STORAGE_ALIGN != 0u) {{\n\
-         \x20       return {upper}_BAD_ARGUMENT;\n\
-         \x20   }}\n\
-         \x20   if (stored->mark != STORAGE_MARK || stored->size < (uint64_t)sizeof({name}_stored)) {{\n\
-         \x20       return {upper}_NOT_INITIALISED;\n\
-         \x20   }}\n\
-         \x20   *observer = &stored->observer;\n\
-         \x20   return {upper}_OK;\n\
-         }}\n\
-         \n\
-         {name}_status {name}_init(void *storage, size_t size) {{\n\
-         \x20   {name}_stored *stored = ({name}_stored *)storage;\n\
-         \x20   if (storage == NULL || size < sizeof({name}_stored) || (uintptr_t)storage % {upper}_STORAGE_ALIGN != 0u) {{\n\
-         \x20       return {upper}_BAD_ARGUMENT;\n\
-         \x20   }}\n\
-         \x20   stored->mark = STORAGE_MARK;\n\
-         \x20   stored->size = (uint64_t)size;\n\
-         \x20   {name}_observer_init(&stored->observer);\n\
-         \x20   return {upper}_OK;\n\
-         }}\n\
-         \n\
-         {name}_status {name}_push(void *storage, const float *y, const float *u) {{\n\
-         \x20   {name}_observer *observer = NULL;\n\
-         \x20   const {name}_status found = stored_observer(storage, &observer);\n\
-         \x20   if (found != {upper}_OK) {{\n\
-         \x20       return found;\n\
-         \x20   }}\n\
-         \x20   if (y == NULL{inputs_check}) {{\n\
-         \x20       return {upper}_BAD_ARGUMENT;\n\
-         \x20   }}\n\
-         \x20   return {name}_observer_push(observer, y, u);\n\
-         }}\n\
-         \n\
-         {name}_status {name}_estimate(void *storage, float *estimates, {name}_saturation *saturation) {{\n\
-         \x20   {name}_observer *observer = NULL;\n\
-         \x20   {name}_saturation flags[{upper}_TARGETS];\n\
-         \x20   const {name}_status found = stored_observer(storage, &observer);\n\
-         \x20   if (found != {upper}_OK) {{\n\
-         \x20       return found;\n\
-         \x20   }}\n\
-         \x20   if (estimates == NULL) {{\n\
-         \x20       return {upper}_BAD_ARGUMENT;\n\
-         \x20   }}\n\
-         \x20   return {name}_observer_estimate(observer, estimates, saturation != NULL ? saturation : flags);\n\
-         }}\n\
-         \n\
-         size_t {name}_storage_size(void) {{\n\
-         \x20   return sizeof({name}_stored);\n\
-         }}\n\
-         \n\
-         #undef STORAGE_MARK\n",
-        mark = mark(name),
-    );
+    let header = super::render(&StorageH {
+        name,
+        upper: &upper,
+        bound,
+    });
+    let source = super::render(&StorageC {
+        name,
+        upper: &upper,
+        inputs: inputs > 0,
+        mark: &format!("{:016x}", mark(name)),
+    });
     (header, source)
+}
+
+/// The interface's part of the header (`bound`: `<NAME>_STORAGE_SIZE`).
+#[derive(Template)]
+#[template(path = "c/storage.h", escape = "none")]
+struct StorageH<'a> {
+    name: &'a str,
+    upper: &'a str,
+    bound: usize,
+}
+
+/// The interface's part of the source (`mark`: the design's mark, 16 hex digits).
+#[derive(Template)]
+#[template(path = "c/storage.c", escape = "none")]
+struct StorageC<'a> {
+    name: &'a str,
+    upper: &'a str,
+    inputs: bool,
+    mark: &'a str,
 }
 
 /// The design's sample period as a C `float` literal (`0.1f`): the shortest decimal that reads back

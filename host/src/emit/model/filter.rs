@@ -4,7 +4,7 @@
 //! centre of the state box as an observer (`BoxEkfObserver`, `UkfObserver`: the runtime's
 //! `firmware::FilterObserver` over the filter, which implements `firmware::emitted::Filter`).
 
-use std::fmt::Write;
+use askama::Template;
 
 use super::rust_text::{body, f32_list, list, literal, rows};
 use crate::emit::EmitError;
@@ -30,12 +30,14 @@ pub(super) fn filter_type(names: &Names, constants: &EkfConstants, nx: usize) ->
         .map(|k| format!("self.p[{}]", kalman::upper(nx, k / nx, k % nx)))
         .collect();
     let label = names.name.to_uppercase();
-    Ok(FILTER_TEMPLATE
-        .replace("{NAME}", names.name)
-        .replace("{LOWER}", names.lower)
-        .replace("{X0}", &vector(&format!("{label} x0"), &constants.x0)?)
-        .replace("{P0}", &vector(&format!("{label} P0"), &upper)?)
-        .replace("{COVARIANCE}", &rows(&full, nx)))
+    Ok(FilterType {
+        name: names.name,
+        lower: names.lower,
+        x0: &vector(&format!("{label} x0"), &constants.x0)?,
+        p0: &vector(&format!("{label} P0"), &upper)?,
+        covariance: &rows(&full, nx),
+    }
+    .render()?)
 }
 
 /// The observer around the filter (`names.observer`), started where the filter starts (`fixed`: the
@@ -52,13 +54,15 @@ pub(super) fn filter_observer(
         None => "the centre of the state box",
     };
     let what = format!("{} from {start}", names.what);
-    Ok(OBSERVER_TEMPLATE
-        .replace("{WHAT}", &what)
-        .replace("{NAME}", names.name)
-        .replace("{LOWER}", names.lower)
-        .replace("{OBSERVER}", names.observer)
-        .replace("{X0_F32}", &f32_list(&format!("{label} x0"), &constants.x0)?)
-        .replace("{P0_F32}", &f32_list(&format!("{label} P0"), &upper)?))
+    Ok(FilterObserver {
+        what: &what,
+        name: names.name,
+        lower: names.lower,
+        observer: names.observer,
+        x0: &f32_list(&format!("{label} x0"), &constants.x0)?,
+        p0: &f32_list(&format!("{label} P0"), &upper)?,
+    }
+    .render()?)
 }
 
 /// The filter's two samples written out from its programs: `<lower>_measured` and `<lower>_unmeasured`.
@@ -69,45 +73,17 @@ pub(super) fn samples(
     design: &Design,
 ) -> Result<String, EmitError> {
     let nx = code.dimensions.states;
-    let (lower, sample) = (names.lower, names.sample);
-    let mut text = String::new();
-    let w = &mut text;
-    writeln!(
-        w,
-        "\n/// {sample} with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`."
-    )
-    .ok();
-    // A sigma point's spread √n may be a number clippy reads as a constant (√2).
-    writeln!(
-        w,
-        "#[allow(unused_variables, non_snake_case, clippy::type_complexity, clippy::approx_constant)]"
-    )
-    .ok();
-    writeln!(
-        w,
-        "fn {lower}_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {{"
-    )
-    .ok();
-    w.push_str(&body(&filter.measured, code, design, "    ", |r| {
-        format!("({}, {}, {})", list(&r[..nx]), list(&r[nx..2 * nx]), list(&r[2 * nx..]))
-    })?);
-    writeln!(w, "}}\n").ok();
-    writeln!(
-        w,
-        "/// {sample} without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`."
-    )
-    .ok();
-    writeln!(w, "#[allow(unused_variables, non_snake_case, clippy::approx_constant)]").ok();
-    writeln!(
-        w,
-        "fn {lower}_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[T; INPUTS]) -> ([T; STATES], [T; COVARIANCE]) {{"
-    )
-    .ok();
-    w.push_str(&body(&filter.unmeasured, code, design, "    ", |r| {
-        format!("({}, {})", list(&r[..nx]), list(&r[nx..]))
-    })?);
-    writeln!(w, "}}").ok();
-    Ok(text)
+    Ok(Samples {
+        sample: names.sample,
+        lower: names.lower,
+        measured: &body(&filter.measured, code, design, "    ", |r| {
+            format!("({}, {}, {})", list(&r[..nx]), list(&r[nx..2 * nx]), list(&r[2 * nx..]))
+        })?,
+        unmeasured: &body(&filter.unmeasured, code, design, "    ", |r| {
+            format!("({}, {})", list(&r[..nx]), list(&r[nx..]))
+        })?,
+    }
+    .render()?)
 }
 
 /// `<LABEL>_Q` (`label`: `"EKF"`) with its docs: as tuned (`tuned`, the docs of the diagonal `gen`
@@ -163,97 +139,35 @@ pub(super) fn vector(what: &str, values: &[f64]) -> Result<String, EmitError> {
     Ok(list(&entries))
 }
 
-const FILTER_TEMPLATE: &str = r#"#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct {NAME}<T = f32> {
-    /// `x̂`: after a sample, the prediction to the next one.
-    x: [T; STATES],
-    /// The upper triangle of `P`.
-    p: [T; COVARIANCE],
+/// The filter's two samples (`measured`, `unmeasured`: their bodies; `sample`: how their docs begin).
+#[derive(Template)]
+#[template(path = "model/samples.rs", escape = "none")]
+struct Samples<'a> {
+    sample: &'a str,
+    lower: &'a str,
+    measured: &'a str,
+    unmeasured: &'a str,
 }
 
-impl<T: Scalar + Maths> Default for {NAME}<T> {
-    fn default() -> Self {
-        Self::new()
-    }
+/// The filter type `name` (`x0`, `p0`: its start; `covariance`: `P` from its triangle).
+#[derive(Template)]
+#[template(path = "model/filter.rs", escape = "none")]
+struct FilterType<'a> {
+    name: &'a str,
+    lower: &'a str,
+    x0: &'a str,
+    p0: &'a str,
+    covariance: &'a str,
 }
 
-impl<T: Scalar + Maths> {NAME}<T> {
-    /// A fresh filter.
-    pub fn new() -> Self {
-        {NAME} {
-            x: {X0},
-            p: {P0},
-        }
-    }
-
-    /// The current estimate (after a sample, the prediction to the next one).
-    pub fn state(&self) -> [T; STATES] {
-        self.x
-    }
-
-    /// The current covariance `P`.
-    pub fn covariance(&self) -> [[T; STATES]; STATES] {
-        {COVARIANCE}
-    }
-
-    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
-    /// type's docs). The same operations run for every accepted sample.
-    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
-        if !u.iter().all(|v| v.is_finite()) {
-            return Err(firmware::RejectedSample);
-        }
-        if y.iter().all(|v| v.is_finite()) {
-            let (estimate, x, p) = {LOWER}_measured(&self.x, &self.p, y, u);
-            if finite(&x, &p) {
-                (self.x, self.p) = (x, p);
-                return Ok(estimate);
-            }
-        } else {
-            let (x, p) = {LOWER}_unmeasured(&self.x, &self.p, u);
-            if finite(&x, &p) {
-                (self.x, self.p) = (x, p);
-            }
-        }
-        Err(firmware::RejectedSample)
-    }
+/// The observer `observer` around the filter `name` (`x0`, `p0`: its start in `f32`).
+#[derive(Template)]
+#[template(path = "model/filter_observer.rs", escape = "none")]
+struct FilterObserver<'a> {
+    what: &'a str,
+    name: &'a str,
+    lower: &'a str,
+    observer: &'a str,
+    x0: &'a str,
+    p0: &'a str,
 }
-
-"#;
-
-const OBSERVER_TEMPLATE: &str = r#"
-/// {WHAT} ([`{NAME}`], the same filter and constants) with the
-/// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
-/// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
-/// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
-/// refused sample keeps the previous one.
-pub type {OBSERVER} = firmware::FilterObserver<f32, {NAME}, STATES, OUTPUTS, INPUTS, TARGETS>;
-
-impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for {NAME}<f32> {
-    const FRESH: Self = {NAME} { x: {X0_F32}, p: {P0_F32} };
-
-    #[inline(always)]
-    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
-        {NAME}::push(self, y, u)
-    }
-
-    #[inline(always)]
-    fn targets(x: &[f32; STATES], u: &[f32; INPUTS]) -> [f32; TARGETS] {
-        targets(x, u)
-    }
-}
-
-/// [`{OBSERVER}`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
-/// wrote its own observer type: measured on the chip, without them the whole-program optimisation
-/// inlines this design's filter samples differently, and every observer over them runs other
-/// instruction counts. Not for calling: use the observer's methods.
-#[doc(hidden)]
-pub fn {LOWER}_observer_push(observer: &mut {OBSERVER}, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
-    observer.push(y, u)
-}
-
-/// See [`{LOWER}_observer_push`].
-#[doc(hidden)]
-pub fn {LOWER}_observer_estimate(observer: &{OBSERVER}) -> Option<[Estimate<f32>; TARGETS]> {
-    observer.estimate()
-}
-"#;

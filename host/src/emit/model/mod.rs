@@ -20,8 +20,6 @@ mod rust_text;
 mod started;
 mod ukf;
 
-use std::fmt::Write;
-
 use crate::emit::EmitError;
 use crate::observers::restart::RestartConstants;
 use crate::plant::correction::CorrectionConstants;
@@ -32,7 +30,7 @@ use corrected::corrector;
 use plant::model_and_ekf;
 use restarted::restarted;
 use rust_text::{list, literal};
-use started::STARTED_EKF_TEMPLATE;
+use started::started_ekf;
 
 /// The observers a design file carries besides its map, and which one `observer()` is.
 #[derive(Clone, Copy, Debug)]
@@ -77,12 +75,11 @@ pub fn model_source(design: &Design, code: &ModelCode, observers: &Observers<'_>
             .enumerate()
             .map(|(i, v)| literal(&format!("map-started EKF P0[{i}]"), *v))
             .collect::<Result<Vec<_>, _>>()?;
-        text.push_str(
-            &STARTED_EKF_TEMPLATE
-                .replace("{P0}", &list(&entries))
-                .replace("{P0_F64}", &format!("{p0:?}"))
-                .replace("{STATE_TARGETS}", &format!("{state_targets:?}")),
-        );
+        text.push_str(&started_ekf(
+            &list(&entries),
+            &format!("{p0:?}"),
+            &format!("{state_targets:?}"),
+        )?);
     }
     if let (Some(ekf), Some(_), Some(restart)) = (observers.ekf, observers.started, observers.restart) {
         text.push_str(&restarted(ekf, restart)?);
@@ -93,26 +90,21 @@ pub fn model_source(design: &Design, code: &ModelCode, observers: &Observers<'_>
     let entry = crate::observers::kind::of(observers.kind);
     let (ty, kind) = (entry.observer_type, entry.kind.name());
     let what = format!("{} ([`{ty}`])", entry.what);
-    write!(
-        text,
-        "
-/// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
-pub const KIND: &str = \"{kind}\";
-
-/// This design's observer: {what}.
-pub type Observer = {ty};
-
-/// A fresh [`Observer`], holding no sample yet.
-pub const fn observer() -> Observer {{
-    {ty}::new()
-}}
-
-/// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
-/// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = \"{tables}\";
-",
-        tables = observers.tables_sha256
-    )
-    .ok();
+    text.push_str(&askama::Template::render(&KindText {
+        kind,
+        what: &what,
+        ty,
+        tables: observers.tables_sha256,
+    })?);
     Ok(text)
+}
+
+/// `KIND`, `Observer` and `observer()` of the chosen kind (`ty`: its type), and `TABLES_SHA256`.
+#[derive(askama::Template)]
+#[template(path = "model/kind.rs", escape = "none")]
+struct KindText<'a> {
+    kind: &'a str,
+    what: &'a str,
+    ty: &'a str,
+    tables: &'a str,
 }

@@ -2,7 +2,7 @@
 //! one, its EKF (`Ekf`, `reference_ekf`, and the written-out samples `ekf_measured`/`ekf_unmeasured`):
 //! what every model-based observer kind runs on.
 
-use std::fmt::Write;
+use askama::Template;
 
 use super::filter::{constants_docs, filter_observer, filter_type, q_constant, samples, vector, Names};
 use super::rust_text::{body, list, literal, rows};
@@ -19,117 +19,55 @@ pub(super) fn model_and_ekf(
 ) -> Result<String, EmitError> {
     let nx = code.dimensions.states;
     let ny = code.dimensions.outputs;
-    let mut text = String::new();
-    let w = &mut text;
     let spec = |s: &str| crate::emit::doc_code(s);
-    if !code.parameters.is_empty() {
-        writeln!(
-            w,
-            "/// The spec's parameters (`[model.parameters]`), each as `(f32, f64)`."
+    let parameters = code
+        .parameters
+        .iter()
+        .map(|(name, value)| {
+            Ok((
+                spec(name),
+                name.clone(),
+                f32_literal(&format!("model.parameters.{name}"), *value)?,
+                format!("{value:?}"),
+            ))
+        })
+        .collect::<Result<Vec<_>, EmitError>>()?;
+    let states = design.model.states.iter().zip(&design.model.derivatives);
+    let equations = states
+        .map(|(state, expr)| format!("d{}/dt = {}", spec(state), spec(expr.text())))
+        .chain(
+            design
+                .model
+                .outputs
+                .iter()
+                .map(|output| format!("{} = {}", spec(&output.name), spec(output.expr.text()))),
         )
-        .ok();
-        writeln!(w, "#[allow(non_upper_case_globals)]\npub mod parameters {{").ok();
-        for (name, value) in &code.parameters {
-            writeln!(w, "    /// `{}`.", spec(name)).ok();
-            writeln!(
-                w,
-                "    pub const {name}: (f32, f64) = ({}, {value:?});",
-                f32_literal(&format!("model.parameters.{name}"), *value)?
-            )
-            .ok();
-        }
-        writeln!(w, "}}\n").ok();
-    }
-    writeln!(
-        w,
-        "/// The spec's model on the chip, written out from its expression trees by `gen`:"
-    )
-    .ok();
-    writeln!(w, "///").ok();
-    writeln!(w, "/// ```text").ok();
-    for (state, expr) in design.model.states.iter().zip(&design.model.derivatives) {
-        writeln!(w, "/// d{}/dt = {}", spec(state), spec(expr.text())).ok();
-    }
-    for output in &design.model.outputs {
-        writeln!(w, "/// {} = {}", spec(&output.name), spec(output.expr.text())).ok();
-    }
-    for definition in &design.model.definitions {
-        writeln!(
-            w,
-            "/// where {} = {}",
-            spec(&definition.name),
-            spec(definition.expr.text())
+        .chain(
+            design
+                .model
+                .definitions
+                .iter()
+                .map(|d| format!("where {} = {}", spec(&d.name), spec(d.expr.text()))),
         )
-        .ok();
+        .collect();
+    let mut text = ModelText {
+        parameters,
+        equations,
+        derivative: &body(&code.derivative, code, design, "        ", |r| {
+            format!("({}, {})", list(&r[..nx]), rows(&r[nx..], nx))
+        })?,
+        output: &body(&code.output, code, design, "        ", |r| {
+            format!("({}, {})", list(&r[..ny]), rows(&r[ny..], nx))
+        })?,
+        targets: &body(&code.targets, code, design, "    ", list)?,
+        substeps: design.substeps,
+        chip_substeps: design.chip_substeps,
     }
-    writeln!(w, "/// ```").ok();
-    writeln!(w, "///").ok();
-    writeln!(
-        w,
-        "/// with the Jacobians `∂f/∂x` and `∂h/∂x` (symbolic, shared subexpressions computed once)."
-    )
-    .ok();
-    writeln!(
-        w,
-        "#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]\npub struct Plant;\n"
-    )
-    .ok();
-    writeln!(
-        w,
-        "impl<T: Scalar + Maths> firmware::Model<T, STATES, OUTPUTS, INPUTS> for Plant {{"
-    )
-    .ok();
-    writeln!(w, "    #[allow(unused_variables, non_snake_case)]").ok();
-    writeln!(
-        w,
-        "    fn derivative(&self, x: &[T; STATES], u: &[T; INPUTS]) -> ([T; STATES], [[T; STATES]; STATES]) {{"
-    )
-    .ok();
-    w.push_str(&body(&code.derivative, code, design, "        ", |r| {
-        format!("({}, {})", list(&r[..nx]), rows(&r[nx..], nx))
-    })?);
-    writeln!(w, "    }}\n").ok();
-    writeln!(w, "    #[allow(unused_variables, non_snake_case)]").ok();
-    writeln!(
-        w,
-        "    fn output(&self, x: &[T; STATES], u: &[T; INPUTS]) -> ([T; OUTPUTS], [[T; STATES]; OUTPUTS]) {{"
-    )
-    .ok();
-    w.push_str(&body(&code.output, code, design, "        ", |r| {
-        format!("({}, {})", list(&r[..ny]), rows(&r[ny..], nx))
-    })?);
-    writeln!(w, "    }}\n}}\n").ok();
-    writeln!(
-        w,
-        "/// The targets at state `x` and input `u`, in [`TARGET_NAMES`] order: what the EKF's estimate"
-    )
-    .ok();
-    writeln!(w, "/// gives for each.").ok();
-    writeln!(w, "#[allow(unused_variables, non_snake_case)]").ok();
-    writeln!(
-        w,
-        "pub fn targets<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {{"
-    )
-    .ok();
-    w.push_str(&body(&code.targets, code, design, "    ", list)?);
-    writeln!(w, "}}\n").ok();
-    writeln!(
-        w,
-        "/// RK4 steps per sample in the chip's model (the learning simulation takes {}).",
-        design.substeps
-    )
-    .ok();
-    writeln!(w, "pub const CHIP_SUBSTEPS: usize = {};\n", design.chip_substeps).ok();
-    writeln!(
-        w,
-        "/// One sampling period of [`Plant`] by [`CHIP_SUBSTEPS`] RK4 steps, the input held."
-    )
-    .ok();
-    writeln!(w, "pub type Discrete<T> = firmware::Rk4<T, Plant, CHIP_SUBSTEPS>;").ok();
+    .render()?;
     let Some(ekf) = ekf else {
         return Ok(text);
     };
-    writeln!(w).ok();
+    text.push('\n');
 
     let full = |what: &str, covariance: &Covariance| -> Result<String, EmitError> {
         let n = covariance.size();
@@ -143,25 +81,38 @@ pub(super) fn model_and_ekf(
     };
     let fixed = &design.filters.ekf;
     let filter = kalman::filter_code(code, ekf);
-    write!(
-        w,
-        "{}",
-        EKF_TEMPLATE
-            .replace("{FILTER}", &filter_type(&EKF, ekf, nx)?)
-            .replace("{TRIANGLE}", &kalman::triangle(nx).to_string())
-            .replace("{X0}", &vector("EKF x0", &ekf.x0)?)
-            .replace("{H}", &literal("EKF substep", ekf.h)?)
-            .replace("{P0_FULL}", &full("EKF P0", &ekf.p0)?)
-            .replace("{Q}", &full("EKF Q", &ekf.q)?)
-            .replace("{Q_CONSTANT}", &q_constant("EKF", "ekf", &ekf.q, fixed, EKF_Q_TUNED))
-            .replace("{CONSTANTS}", &constants_docs("ekf", fixed, EKF_TUNED))
-            .replace("{R}", &vector("EKF R", &ekf.r)?)
-            .replace("{BOUNDS}", &bounds_call(&code.bounds)?)
-    )
-    .ok();
-    w.push_str(&filter_observer(&EKF, ekf, fixed)?);
-    w.push_str(&samples(&EKF, &filter, code, design)?);
+    text.push_str(
+        &EkfText {
+            filter: &filter_type(&EKF, ekf, nx)?,
+            triangle: kalman::triangle(nx),
+            x0: &vector("EKF x0", &ekf.x0)?,
+            h: &literal("EKF substep", ekf.h)?,
+            p0: &full("EKF P0", &ekf.p0)?,
+            q: &full("EKF Q", &ekf.q)?,
+            q_constant: &q_constant("EKF", "ekf", &ekf.q, fixed, EKF_Q_TUNED),
+            constants: &constants_docs("ekf", fixed, EKF_TUNED),
+            r: &vector("EKF R", &ekf.r)?,
+            bounds: &bounds_call(&code.bounds)?,
+        }
+        .render()?,
+    );
+    text.push_str(&filter_observer(&EKF, ekf, fixed)?);
+    text.push_str(&samples(&EKF, &filter, code, design)?);
     Ok(text)
+}
+
+/// The model's part of the file: its parameters (doc name, name, `f32` and `f64` literals), the
+/// equations' doc lines, the straight-line bodies of `Plant`'s functions and of `targets`.
+#[derive(Template)]
+#[template(path = "model/plant.rs", escape = "none")]
+struct ModelText<'a> {
+    parameters: Vec<(String, String, String, String)>,
+    equations: Vec<String>,
+    derivative: &'a str,
+    output: &'a str,
+    targets: &'a str,
+    substeps: usize,
+    chip_substeps: usize,
 }
 
 /// The EKF's names in its frame.
@@ -208,39 +159,19 @@ const EKF_TUNED: &str =
     "It starts at the centre of the state box with `P(0)` and `Q` diagonal as chosen by `gen` on the
 /// tuning runs, `R` the outputs' noise variances.";
 
-const EKF_TEMPLATE: &str = r#"
-/// Entries of the EKF's covariance kept: its upper triangle, row by row (it is symmetric).
-pub const COVARIANCE: usize = {TRIANGLE};
-
-{Q_CONSTANT}
-
-/// This design's extended Kalman filter, written out for its size by `gen`: the library's
-/// [`firmware::Ekf`] over [`Discrete`] ([`reference_ekf`], same constants), with each sample as
-/// straight-line code (no loop, no structural zero or one multiplied, `P` as its upper triangle).
-/// {CONSTANTS}
-///
-/// Each sample: every output's scalar update in Joseph form, then the prediction over one sampling
-/// period. A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u`
-/// changes nothing; a sample whose result is not finite (the model overflowed) is not taken.
-{FILTER}/// Whether every entry of a filter's state and covariance is finite.
-fn finite<T: Scalar>(x: &[T; STATES], p: &[T; COVARIANCE]) -> bool {
-    x.iter().chain(p).all(|v| v.is_finite())
+/// The EKF's constants, its filter type (`filter`), `ekf()` and the library filter it writes out
+/// (`bounds`: its `.with_bounds(…)`, or nothing).
+#[derive(Template)]
+#[template(path = "model/ekf.rs", escape = "none")]
+struct EkfText<'a> {
+    filter: &'a str,
+    triangle: usize,
+    x0: &'a str,
+    h: &'a str,
+    p0: &'a str,
+    q: &'a str,
+    q_constant: &'a str,
+    constants: &'a str,
+    r: &'a str,
+    bounds: &'a str,
 }
-
-/// A fresh EKF in `f32`, as the chip runs it.
-pub fn ekf() -> Ekf {
-    Ekf::new()
-}
-
-/// The library filter this design's [`Ekf`] writes out, with the same constants: what the tests
-/// check the written-out one against.
-pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATES, OUTPUTS, INPUTS> {
-    firmware::Ekf::new(
-        firmware::Rk4::new(Plant, {H}),
-        {X0},
-        {P0_FULL},
-        {Q},
-        {R},
-    ){BOUNDS}
-}
-"#;

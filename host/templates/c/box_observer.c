@@ -1,0 +1,30 @@
+{# The filter from the box centre (`ekf_box`, `ukf_box`): `push` of the filter, then the targets of
+   its estimate, each inside. -#}
+void {{ name }}_{{ kind }}_init({{ name }}_{{ kind }} *o) {
+    memcpy(o->x, {{ label }}_X0, sizeof o->x);
+    memcpy(o->p, {{ label }}_P0, sizeof o->p);
+    o->ready = 0;
+}
+
+{{ name }}_status {{ name }}_{{ kind }}_push({{ name }}_{{ kind }} *o, const float *y, const float *u) {
+    float estimate[{{ upper }}_STATES];
+    unsigned i;
+    if (!inputs_finite(u)) {
+        return {{ upper }}_REFUSED;
+    }
+    if (!accepts(y, u)) {
+        {{ lower }}_predict(o->x, o->p, u);
+        return {{ upper }}_REFUSED;
+    }
+    if (!{{ lower }}_measure(o->x, o->p, y, u, estimate)) {
+        return {{ upper }}_REFUSED;
+    }
+    targets(estimate, u, o->values);
+    for (i = 0u; i < {{ upper }}_TARGETS; ++i) {
+        o->flags[i] = {{ upper }}_INSIDE;
+    }
+    o->ready = 1;
+    return {{ upper }}_OK;
+}
+
+{% include "c/estimate.c" %}
