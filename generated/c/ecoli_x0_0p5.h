@@ -101,7 +101,7 @@ ecoli_x0_0p5_status ecoli_x0_0p5_fixed_push(ecoli_x0_0p5_fixed *observer, const 
  * ECOLI_X0_0P5_NO_ESTIMATE_YET (nothing written) before the window is full. */
 ecoli_x0_0p5_status ecoli_x0_0p5_fixed_estimate(const ecoli_x0_0p5_fixed *observer, int32_t *values, ecoli_x0_0p5_saturation *saturation);
 
-/* The EKF from the centre of the state box (kind ekf_box, the Rust BoxEkfObserver): an estimate
+/* The EKF from the centre of the state box (kind ekf_box, the Rust EkfBoxObserver): an estimate
  * from the first accepted sample; a sample with a non-finite output is refused and only predicted. */
 typedef struct {
     float x[ECOLI_X0_0P5_STATES];
@@ -116,7 +116,7 @@ ecoli_x0_0p5_status ecoli_x0_0p5_ekf_box_push(ecoli_x0_0p5_ekf_box *observer, co
 ecoli_x0_0p5_status ecoli_x0_0p5_ekf_box_estimate(const ecoli_x0_0p5_ekf_box *observer, float *values, ecoli_x0_0p5_saturation *saturation);
 
 /* The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust
- * UkfObserver): an estimate from the first accepted sample; a sample with a non-finite output
+ * UkfBoxObserver): an estimate from the first accepted sample; a sample with a non-finite output
  * is refused and only predicted. */
 typedef struct {
     float x[ECOLI_X0_0P5_STATES];

@@ -103,7 +103,7 @@ two_tanks_status two_tanks_fixed_push(two_tanks_fixed *observer, const int32_t *
  * TWO_TANKS_NO_ESTIMATE_YET (nothing written) before the window is full. */
 two_tanks_status two_tanks_fixed_estimate(const two_tanks_fixed *observer, int32_t *values, two_tanks_saturation *saturation);
 
-/* The EKF from the centre of the state box (kind ekf_box, the Rust BoxEkfObserver): an estimate
+/* The EKF from the centre of the state box (kind ekf_box, the Rust EkfBoxObserver): an estimate
  * from the first accepted sample; a sample with a non-finite output is refused and only predicted. */
 typedef struct {
     float x[TWO_TANKS_STATES];
@@ -117,7 +117,7 @@ void two_tanks_ekf_box_init(two_tanks_ekf_box *observer);
 two_tanks_status two_tanks_ekf_box_push(two_tanks_ekf_box *observer, const float *y, const float *u);
 two_tanks_status two_tanks_ekf_box_estimate(const two_tanks_ekf_box *observer, float *values, two_tanks_saturation *saturation);
 
-/* The EKF started at the map's first estimate (kind ekf_map, the Rust StartedEkfObserver). */
+/* The EKF started at the map's first estimate (kind ekf_map, the Rust EkfMapObserver). */
 typedef struct {
     two_tanks_map window;
     float x[TWO_TANKS_STATES];
@@ -134,7 +134,7 @@ two_tanks_status two_tanks_ekf_map_push(two_tanks_ekf_map *observer, const float
 two_tanks_status two_tanks_ekf_map_estimate(const two_tanks_ekf_map *observer, float *values, two_tanks_saturation *saturation);
 
 /* The EKF from the box centre that checks the map once, at its first estimate, and restarts
- * from it where the two disagree (kind ekf_restart, the Rust RestartedEkfObserver). */
+ * from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
 typedef struct {
     two_tanks_map window;
     float x[TWO_TANKS_STATES];
@@ -150,7 +150,7 @@ two_tanks_status two_tanks_ekf_restart_push(two_tanks_ekf_restart *observer, con
 two_tanks_status two_tanks_ekf_restart_estimate(const two_tanks_ekf_restart *observer, float *values, two_tanks_saturation *saturation);
 
 /* The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust
- * UkfObserver): an estimate from the first accepted sample; a sample with a non-finite output
+ * UkfBoxObserver): an estimate from the first accepted sample; a sample with a non-finite output
  * is refused and only predicted. */
 typedef struct {
     float x[TWO_TANKS_STATES];

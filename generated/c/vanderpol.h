@@ -100,7 +100,7 @@ vanderpol_status vanderpol_fixed_push(vanderpol_fixed *observer, const int32_t *
  * VANDERPOL_NO_ESTIMATE_YET (nothing written) before the window is full. */
 vanderpol_status vanderpol_fixed_estimate(const vanderpol_fixed *observer, int32_t *values, vanderpol_saturation *saturation);
 
-/* The EKF from the centre of the state box (kind ekf_box, the Rust BoxEkfObserver): an estimate
+/* The EKF from the centre of the state box (kind ekf_box, the Rust EkfBoxObserver): an estimate
  * from the first accepted sample; a sample with a non-finite output is refused and only predicted. */
 typedef struct {
     float x[VANDERPOL_STATES];
@@ -114,7 +114,7 @@ void vanderpol_ekf_box_init(vanderpol_ekf_box *observer);
 vanderpol_status vanderpol_ekf_box_push(vanderpol_ekf_box *observer, const float *y, const float *u);
 vanderpol_status vanderpol_ekf_box_estimate(const vanderpol_ekf_box *observer, float *values, vanderpol_saturation *saturation);
 
-/* The EKF started at the map's first estimate (kind ekf_map, the Rust StartedEkfObserver). */
+/* The EKF started at the map's first estimate (kind ekf_map, the Rust EkfMapObserver). */
 typedef struct {
     vanderpol_map window;
     float x[VANDERPOL_STATES];
@@ -131,7 +131,7 @@ vanderpol_status vanderpol_ekf_map_push(vanderpol_ekf_map *observer, const float
 vanderpol_status vanderpol_ekf_map_estimate(const vanderpol_ekf_map *observer, float *values, vanderpol_saturation *saturation);
 
 /* The EKF from the box centre that checks the map once, at its first estimate, and restarts
- * from it where the two disagree (kind ekf_restart, the Rust RestartedEkfObserver). */
+ * from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
 typedef struct {
     vanderpol_map window;
     float x[VANDERPOL_STATES];
@@ -147,7 +147,7 @@ vanderpol_status vanderpol_ekf_restart_push(vanderpol_ekf_restart *observer, con
 vanderpol_status vanderpol_ekf_restart_estimate(const vanderpol_ekf_restart *observer, float *values, vanderpol_saturation *saturation);
 
 /* The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust
- * UkfObserver): an estimate from the first accepted sample; a sample with a non-finite output
+ * UkfBoxObserver): an estimate from the first accepted sample; a sample with a non-finite output
  * is refused and only predicted. */
 typedef struct {
     float x[VANDERPOL_STATES];

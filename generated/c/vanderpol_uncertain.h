@@ -100,7 +100,7 @@ vanderpol_uncertain_status vanderpol_uncertain_fixed_push(vanderpol_uncertain_fi
  * VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET (nothing written) before the window is full. */
 vanderpol_uncertain_status vanderpol_uncertain_fixed_estimate(const vanderpol_uncertain_fixed *observer, int32_t *values, vanderpol_uncertain_saturation *saturation);
 
-/* The EKF from the centre of the state box (kind ekf_box, the Rust BoxEkfObserver): an estimate
+/* The EKF from the centre of the state box (kind ekf_box, the Rust EkfBoxObserver): an estimate
  * from the first accepted sample; a sample with a non-finite output is refused and only predicted. */
 typedef struct {
     float x[VANDERPOL_UNCERTAIN_STATES];
@@ -114,7 +114,7 @@ void vanderpol_uncertain_ekf_box_init(vanderpol_uncertain_ekf_box *observer);
 vanderpol_uncertain_status vanderpol_uncertain_ekf_box_push(vanderpol_uncertain_ekf_box *observer, const float *y, const float *u);
 vanderpol_uncertain_status vanderpol_uncertain_ekf_box_estimate(const vanderpol_uncertain_ekf_box *observer, float *values, vanderpol_uncertain_saturation *saturation);
 
-/* The EKF started at the map's first estimate (kind ekf_map, the Rust StartedEkfObserver). */
+/* The EKF started at the map's first estimate (kind ekf_map, the Rust EkfMapObserver). */
 typedef struct {
     vanderpol_uncertain_map window;
     float x[VANDERPOL_UNCERTAIN_STATES];
@@ -131,7 +131,7 @@ vanderpol_uncertain_status vanderpol_uncertain_ekf_map_push(vanderpol_uncertain_
 vanderpol_uncertain_status vanderpol_uncertain_ekf_map_estimate(const vanderpol_uncertain_ekf_map *observer, float *values, vanderpol_uncertain_saturation *saturation);
 
 /* The EKF from the box centre that checks the map once, at its first estimate, and restarts
- * from it where the two disagree (kind ekf_restart, the Rust RestartedEkfObserver). */
+ * from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
 typedef struct {
     vanderpol_uncertain_map window;
     float x[VANDERPOL_UNCERTAIN_STATES];
@@ -147,7 +147,7 @@ vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_push(vanderpol_uncert
 vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_estimate(const vanderpol_uncertain_ekf_restart *observer, float *values, vanderpol_uncertain_saturation *saturation);
 
 /* The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust
- * UkfObserver): an estimate from the first accepted sample; a sample with a non-finite output
+ * UkfBoxObserver): an estimate from the first accepted sample; a sample with a non-finite output
  * is refused and only predicted. */
 typedef struct {
     float x[VANDERPOL_UNCERTAIN_STATES];

@@ -644,7 +644,7 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 /// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
 /// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
 /// refused sample keeps the previous one.
-pub type BoxEkfObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type EkfBoxObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
     const FRESH: Self = Ekf { x: [0.5, 2.5, 0.15], p: [0.0015244159, 0.0, 0.0, 1.1085151, 0.0, 0.032774616] };
@@ -660,18 +660,18 @@ impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f3
     }
 }
 
-/// [`BoxEkfObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
+/// [`EkfBoxObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
 /// wrote its own observer type: measured on the chip, without them the whole-program optimisation
 /// inlines this design's filter samples differently, and every observer over them runs other
 /// instruction counts. Not for calling: use the observer's methods.
 #[doc(hidden)]
-pub fn ekf_observer_push(observer: &mut BoxEkfObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+pub fn ekf_observer_push(observer: &mut EkfBoxObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
     observer.push(y, u)
 }
 
 /// See [`ekf_observer_push`].
 #[doc(hidden)]
-pub fn ekf_observer_estimate(observer: &BoxEkfObserver) -> Option<[Estimate<f32>; TARGETS]> {
+pub fn ekf_observer_estimate(observer: &EkfBoxObserver) -> Option<[Estimate<f32>; TARGETS]> {
     observer.estimate()
 }
 
@@ -2168,7 +2168,7 @@ pub fn ukf() -> Ukf {
 /// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
 /// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
 /// refused sample keeps the previous one.
-pub type UkfObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type UkfBoxObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
     const FRESH: Self = Ukf { x: [0.5, 2.5, 0.15], p: [0.0004967157, 0.0, 0.0, 1.4859407, 0.0, 0.055956807] };
@@ -2184,18 +2184,18 @@ impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f3
     }
 }
 
-/// [`UkfObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
+/// [`UkfBoxObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
 /// wrote its own observer type: measured on the chip, without them the whole-program optimisation
 /// inlines this design's filter samples differently, and every observer over them runs other
 /// instruction counts. Not for calling: use the observer's methods.
 #[doc(hidden)]
-pub fn ukf_observer_push(observer: &mut UkfObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+pub fn ukf_observer_push(observer: &mut UkfBoxObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
     observer.push(y, u)
 }
 
 /// See [`ukf_observer_push`].
 #[doc(hidden)]
-pub fn ukf_observer_estimate(observer: &UkfObserver) -> Option<[Estimate<f32>; TARGETS]> {
+pub fn ukf_observer_estimate(observer: &UkfBoxObserver) -> Option<[Estimate<f32>; TARGETS]> {
     observer.estimate()
 }
 
@@ -4559,12 +4559,12 @@ pub type MheObserver = firmware::mhe::Observer<f32, Mhe, HORIZON, STATES, OUTPUT
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
 pub const KIND: &str = "ukf_box";
 
-/// This design's observer: the unscented Kalman filter from the centre of the state box ([`UkfObserver`]).
-pub type Observer = UkfObserver;
+/// This design's observer: the unscented Kalman filter from the centre of the state box ([`UkfBoxObserver`]).
+pub type Observer = UkfBoxObserver;
 
 /// A fresh [`Observer`], holding no sample yet.
 pub const fn observer() -> Observer {
-    UkfObserver::new()
+    UkfBoxObserver::new()
 }
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
@@ -4904,8 +4904,8 @@ pub const RECORDED_RAW_U: [[i32; INPUTS]; RECORDED_LEN] = [
 macro_rules! ecoli_x0_0p5_observers {
     (each $callback:ident) => {
         $callback!(ecoli_x0_0p5, map, MapObserver);
-        $callback!(ecoli_x0_0p5, ekf_box, BoxEkfObserver);
-        $callback!(ecoli_x0_0p5, ukf_box, UkfObserver);
+        $callback!(ecoli_x0_0p5, ekf_box, EkfBoxObserver);
+        $callback!(ecoli_x0_0p5, ukf_box, UkfBoxObserver);
         $callback!(ecoli_x0_0p5, mhe, MheObserver);
     };
     (fixed $callback:ident) => {
@@ -4915,10 +4915,10 @@ macro_rules! ecoli_x0_0p5_observers {
         $crate::ecoli_x0_0p5::MapObserver::new()
     };
     (new ekf_box) => {
-        $crate::ecoli_x0_0p5::BoxEkfObserver::new()
+        $crate::ecoli_x0_0p5::EkfBoxObserver::new()
     };
     (new ukf_box) => {
-        $crate::ecoli_x0_0p5::UkfObserver::new()
+        $crate::ecoli_x0_0p5::UkfBoxObserver::new()
     };
     (new mhe) => {
         $crate::ecoli_x0_0p5::MheObserver::new()

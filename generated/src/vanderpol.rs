@@ -572,7 +572,7 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 /// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
 /// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
 /// refused sample keeps the previous one.
-pub type BoxEkfObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type EkfBoxObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
     const FRESH: Self = Ekf { x: [0.0, 0.0], p: [0.18155766, 0.0, 0.49253356] };
@@ -588,18 +588,18 @@ impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f3
     }
 }
 
-/// [`BoxEkfObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
+/// [`EkfBoxObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
 /// wrote its own observer type: measured on the chip, without them the whole-program optimisation
 /// inlines this design's filter samples differently, and every observer over them runs other
 /// instruction counts. Not for calling: use the observer's methods.
 #[doc(hidden)]
-pub fn ekf_observer_push(observer: &mut BoxEkfObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+pub fn ekf_observer_push(observer: &mut EkfBoxObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
     observer.push(y, u)
 }
 
 /// See [`ekf_observer_push`].
 #[doc(hidden)]
-pub fn ekf_observer_estimate(observer: &BoxEkfObserver) -> Option<[Estimate<f32>; TARGETS]> {
+pub fn ekf_observer_estimate(observer: &EkfBoxObserver) -> Option<[Estimate<f32>; TARGETS]> {
     observer.estimate()
 }
 
@@ -1066,7 +1066,7 @@ pub fn ukf() -> Ukf {
 /// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
 /// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
 /// refused sample keeps the previous one.
-pub type UkfObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type UkfBoxObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
     const FRESH: Self = Ukf { x: [0.0, 0.0], p: [2.0708659, 0.0, 26.300774] };
@@ -1082,18 +1082,18 @@ impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f3
     }
 }
 
-/// [`UkfObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
+/// [`UkfBoxObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
 /// wrote its own observer type: measured on the chip, without them the whole-program optimisation
 /// inlines this design's filter samples differently, and every observer over them runs other
 /// instruction counts. Not for calling: use the observer's methods.
 #[doc(hidden)]
-pub fn ukf_observer_push(observer: &mut UkfObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+pub fn ukf_observer_push(observer: &mut UkfBoxObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
     observer.push(y, u)
 }
 
 /// See [`ukf_observer_push`].
 #[doc(hidden)]
-pub fn ukf_observer_estimate(observer: &UkfObserver) -> Option<[Estimate<f32>; TARGETS]> {
+pub fn ukf_observer_estimate(observer: &UkfBoxObserver) -> Option<[Estimate<f32>; TARGETS]> {
     observer.estimate()
 }
 
@@ -2030,9 +2030,9 @@ impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, 
 }
 
 /// The EKF started by this design's map.
-pub type StartedEkfObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type EkfMapObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
-/// The check of [`RestartedEkfObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
+/// The check of [`EkfRestartObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
 /// (no unit).
 pub const RESTART_THRESHOLD: f64 = 4.0;
 /// See [`RESTART_THRESHOLD`]: each state's `e_i²`, the map's mean squared error on the tuning runs,
@@ -2073,10 +2073,10 @@ impl firmware::emitted::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for Start
 }
 
 /// The EKF from the centre of the state box ([`Ekf`]'s start and samples) that checks the map once,
-/// at its first estimate, and restarts from it as [`StartedEkfObserver`] starts when the two disagree
+/// at its first estimate, and restarts from it as [`EkfMapObserver`] starts when the two disagree
 /// (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's guess-free start where the
 /// box centre is far from the plant.
-pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type EkfRestartObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
@@ -2122,12 +2122,12 @@ pub type MheObserver = firmware::mhe::Observer<f32, Mhe, HORIZON, STATES, OUTPUT
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
 pub const KIND: &str = "ukf_box";
 
-/// This design's observer: the unscented Kalman filter from the centre of the state box ([`UkfObserver`]).
-pub type Observer = UkfObserver;
+/// This design's observer: the unscented Kalman filter from the centre of the state box ([`UkfBoxObserver`]).
+pub type Observer = UkfBoxObserver;
 
 /// A fresh [`Observer`], holding no sample yet.
 pub const fn observer() -> Observer {
-    UkfObserver::new()
+    UkfBoxObserver::new()
 }
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
@@ -2613,11 +2613,11 @@ pub const RECORDED_RAW_U: [[i32; INPUTS]; RECORDED_LEN] = [
 macro_rules! vanderpol_observers {
     (each $callback:ident) => {
         $callback!(vanderpol, map, MapObserver);
-        $callback!(vanderpol, ekf_box, BoxEkfObserver);
-        $callback!(vanderpol, ukf_box, UkfObserver);
+        $callback!(vanderpol, ekf_box, EkfBoxObserver);
+        $callback!(vanderpol, ukf_box, UkfBoxObserver);
         $callback!(vanderpol, corrected, CorrectedObserver);
-        $callback!(vanderpol, ekf_map, StartedEkfObserver);
-        $callback!(vanderpol, ekf_restart, RestartedEkfObserver);
+        $callback!(vanderpol, ekf_map, EkfMapObserver);
+        $callback!(vanderpol, ekf_restart, EkfRestartObserver);
         $callback!(vanderpol, mhe, MheObserver);
     };
     (fixed $callback:ident) => {
@@ -2627,19 +2627,19 @@ macro_rules! vanderpol_observers {
         $crate::vanderpol::MapObserver::new()
     };
     (new ekf_box) => {
-        $crate::vanderpol::BoxEkfObserver::new()
+        $crate::vanderpol::EkfBoxObserver::new()
     };
     (new ukf_box) => {
-        $crate::vanderpol::UkfObserver::new()
+        $crate::vanderpol::UkfBoxObserver::new()
     };
     (new corrected) => {
         $crate::vanderpol::CorrectedObserver::new()
     };
     (new ekf_map) => {
-        $crate::vanderpol::StartedEkfObserver::new()
+        $crate::vanderpol::EkfMapObserver::new()
     };
     (new ekf_restart) => {
-        $crate::vanderpol::RestartedEkfObserver::new()
+        $crate::vanderpol::EkfRestartObserver::new()
     };
     (new mhe) => {
         $crate::vanderpol::MheObserver::new()

@@ -589,7 +589,7 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 /// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
 /// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
 /// refused sample keeps the previous one.
-pub type BoxEkfObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type EkfBoxObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
     const FRESH: Self = Ekf { x: [0.0, 0.0], p: [0.22153471, 0.0, 0.78878015] };
@@ -605,18 +605,18 @@ impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f3
     }
 }
 
-/// [`BoxEkfObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
+/// [`EkfBoxObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
 /// wrote its own observer type: measured on the chip, without them the whole-program optimisation
 /// inlines this design's filter samples differently, and every observer over them runs other
 /// instruction counts. Not for calling: use the observer's methods.
 #[doc(hidden)]
-pub fn ekf_observer_push(observer: &mut BoxEkfObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+pub fn ekf_observer_push(observer: &mut EkfBoxObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
     observer.push(y, u)
 }
 
 /// See [`ekf_observer_push`].
 #[doc(hidden)]
-pub fn ekf_observer_estimate(observer: &BoxEkfObserver) -> Option<[Estimate<f32>; TARGETS]> {
+pub fn ekf_observer_estimate(observer: &EkfBoxObserver) -> Option<[Estimate<f32>; TARGETS]> {
     observer.estimate()
 }
 
@@ -1085,7 +1085,7 @@ pub fn ukf() -> Ukf {
 /// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
 /// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
 /// refused sample keeps the previous one.
-pub type UkfObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type UkfBoxObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
     const FRESH: Self = Ukf { x: [0.0, 0.0], p: [1.6372418, 0.0, 633.39606] };
@@ -1101,18 +1101,18 @@ impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f3
     }
 }
 
-/// [`UkfObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
+/// [`UkfBoxObserver`]'s `push` and `estimate` in `f32`, compiled in this crate as when every design
 /// wrote its own observer type: measured on the chip, without them the whole-program optimisation
 /// inlines this design's filter samples differently, and every observer over them runs other
 /// instruction counts. Not for calling: use the observer's methods.
 #[doc(hidden)]
-pub fn ukf_observer_push(observer: &mut UkfObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
+pub fn ukf_observer_push(observer: &mut UkfBoxObserver, y: [f32; OUTPUTS], u: [f32; INPUTS]) -> Result<(), firmware::RejectedSample> {
     observer.push(y, u)
 }
 
 /// See [`ukf_observer_push`].
 #[doc(hidden)]
-pub fn ukf_observer_estimate(observer: &UkfObserver) -> Option<[Estimate<f32>; TARGETS]> {
+pub fn ukf_observer_estimate(observer: &UkfBoxObserver) -> Option<[Estimate<f32>; TARGETS]> {
     observer.estimate()
 }
 
@@ -2051,9 +2051,9 @@ impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, 
 }
 
 /// The EKF started by this design's map.
-pub type StartedEkfObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type EkfMapObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
-/// The check of [`RestartedEkfObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
+/// The check of [`EkfRestartObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
 /// (no unit).
 pub const RESTART_THRESHOLD: f64 = 2.0;
 /// See [`RESTART_THRESHOLD`]: each state's `e_i²`, the map's mean squared error on the tuning runs,
@@ -2094,10 +2094,10 @@ impl firmware::emitted::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for Start
 }
 
 /// The EKF from the centre of the state box ([`Ekf`]'s start and samples) that checks the map once,
-/// at its first estimate, and restarts from it as [`StartedEkfObserver`] starts when the two disagree
+/// at its first estimate, and restarts from it as [`EkfMapObserver`] starts when the two disagree
 /// (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's guess-free start where the
 /// box centre is far from the plant.
-pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type EkfRestartObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
@@ -2143,12 +2143,12 @@ pub type MheObserver = firmware::mhe::Observer<f32, Mhe, HORIZON, STATES, OUTPUT
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
 pub const KIND: &str = "ekf_restart";
 
-/// This design's observer: the EKF from the centre of the state box, restarted by the map ([`RestartedEkfObserver`]).
-pub type Observer = RestartedEkfObserver;
+/// This design's observer: the EKF from the centre of the state box, restarted by the map ([`EkfRestartObserver`]).
+pub type Observer = EkfRestartObserver;
 
 /// A fresh [`Observer`], holding no sample yet.
 pub const fn observer() -> Observer {
-    RestartedEkfObserver::new()
+    EkfRestartObserver::new()
 }
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
@@ -2642,11 +2642,11 @@ pub const RECORDED_RAW_U: [[i32; INPUTS]; RECORDED_LEN] = [
 macro_rules! vanderpol_uncertain_observers {
     (each $callback:ident) => {
         $callback!(vanderpol_uncertain, map, MapObserver);
-        $callback!(vanderpol_uncertain, ekf_box, BoxEkfObserver);
-        $callback!(vanderpol_uncertain, ukf_box, UkfObserver);
+        $callback!(vanderpol_uncertain, ekf_box, EkfBoxObserver);
+        $callback!(vanderpol_uncertain, ukf_box, UkfBoxObserver);
         $callback!(vanderpol_uncertain, corrected, CorrectedObserver);
-        $callback!(vanderpol_uncertain, ekf_map, StartedEkfObserver);
-        $callback!(vanderpol_uncertain, ekf_restart, RestartedEkfObserver);
+        $callback!(vanderpol_uncertain, ekf_map, EkfMapObserver);
+        $callback!(vanderpol_uncertain, ekf_restart, EkfRestartObserver);
         $callback!(vanderpol_uncertain, mhe, MheObserver);
     };
     (fixed $callback:ident) => {
@@ -2656,19 +2656,19 @@ macro_rules! vanderpol_uncertain_observers {
         $crate::vanderpol_uncertain::MapObserver::new()
     };
     (new ekf_box) => {
-        $crate::vanderpol_uncertain::BoxEkfObserver::new()
+        $crate::vanderpol_uncertain::EkfBoxObserver::new()
     };
     (new ukf_box) => {
-        $crate::vanderpol_uncertain::UkfObserver::new()
+        $crate::vanderpol_uncertain::UkfBoxObserver::new()
     };
     (new corrected) => {
         $crate::vanderpol_uncertain::CorrectedObserver::new()
     };
     (new ekf_map) => {
-        $crate::vanderpol_uncertain::StartedEkfObserver::new()
+        $crate::vanderpol_uncertain::EkfMapObserver::new()
     };
     (new ekf_restart) => {
-        $crate::vanderpol_uncertain::RestartedEkfObserver::new()
+        $crate::vanderpol_uncertain::EkfRestartObserver::new()
     };
     (new mhe) => {
         $crate::vanderpol_uncertain::MheObserver::new()

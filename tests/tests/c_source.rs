@@ -188,13 +188,13 @@ fn searched_knots_in_c_give_the_rust_bits() {
             crate::vanderpol_beta7,
             "vanderpol_beta7",
             "ekf_box",
-            vanderpol_beta7::BoxEkfObserver::new()
+            vanderpol_beta7::EkfBoxObserver::new()
         ),
         integration_tests::c_case!(
             crate::vanderpol_beta7,
             "vanderpol_beta7",
             "ukf_box",
-            vanderpol_beta7::UkfObserver::new()
+            vanderpol_beta7::UkfBoxObserver::new()
         ),
     ];
     let ran = check_on_host(&cases, &dir, &dir);

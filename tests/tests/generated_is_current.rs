@@ -164,10 +164,10 @@ fn the_readme_table_is_current(emitted: &generate::Emitted) {
     let kinds = [
         ("map", "`map_observer()`"),
         ("ekf_box", "`ekf()`"),
-        ("ukf_box", "`UkfObserver`"),
+        ("ukf_box", "`UkfBoxObserver`"),
         ("corrected", "`CorrectedObserver`"),
-        ("ekf_map", "`StartedEkfObserver`"),
-        ("ekf_restart", "`RestartedEkfObserver`"),
+        ("ekf_map", "`EkfMapObserver`"),
+        ("ekf_restart", "`EkfRestartObserver`"),
         ("mhe", "`MheObserver`"),
     ];
     assert_eq!(

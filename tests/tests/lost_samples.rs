@@ -84,8 +84,8 @@ fn a_lost_output_keeps_the_model_in_step() {
         "the bound does not bite: skipping the lost samples gives {corrected_skipped:?}"
     );
 
-    let ekf = run!(d::StartedEkfObserver, &clean, &states);
-    let ekf_lost = run!(d::StartedEkfObserver, &lost, &states);
+    let ekf = run!(d::EkfMapObserver, &clean, &states);
+    let ekf_lost = run!(d::EkfMapObserver, &lost, &states);
     println!("map-started EKF: clean {ekf:.4?}, lost {ekf_lost:.4?}");
     assert!(close(ekf_lost, ekf), "{ekf_lost:?} vs {ekf:?}");
 }

@@ -226,13 +226,13 @@ mod every_kind_through_the_trait {
         };
     }
 
-    every_kind!(vanderpol: MapObserver, BoxEkfObserver, UkfObserver, CorrectedObserver, StartedEkfObserver, RestartedEkfObserver, MheObserver);
-    every_kind!(vanderpol_searched: MapObserver, BoxEkfObserver, UkfObserver, CorrectedObserver, StartedEkfObserver, RestartedEkfObserver, MheObserver);
-    every_kind!(vanderpol_sparse: MapObserver, BoxEkfObserver, UkfObserver, CorrectedObserver, StartedEkfObserver, RestartedEkfObserver, MheObserver);
-    every_kind!(vanderpol_uncertain: MapObserver, BoxEkfObserver, UkfObserver, CorrectedObserver, StartedEkfObserver, RestartedEkfObserver, MheObserver);
-    every_kind!(two_tanks: MapObserver, BoxEkfObserver, UkfObserver, CorrectedObserver, StartedEkfObserver, RestartedEkfObserver, MheObserver);
-    every_kind!(ecoli_x0_0p5: MapObserver, BoxEkfObserver, UkfObserver, MheObserver);
-    every_kind!(ecoli_x0_2: MapObserver, BoxEkfObserver, UkfObserver, MheObserver);
+    every_kind!(vanderpol: MapObserver, EkfBoxObserver, UkfBoxObserver, CorrectedObserver, EkfMapObserver, EkfRestartObserver, MheObserver);
+    every_kind!(vanderpol_searched: MapObserver, EkfBoxObserver, UkfBoxObserver, CorrectedObserver, EkfMapObserver, EkfRestartObserver, MheObserver);
+    every_kind!(vanderpol_sparse: MapObserver, EkfBoxObserver, UkfBoxObserver, CorrectedObserver, EkfMapObserver, EkfRestartObserver, MheObserver);
+    every_kind!(vanderpol_uncertain: MapObserver, EkfBoxObserver, UkfBoxObserver, CorrectedObserver, EkfMapObserver, EkfRestartObserver, MheObserver);
+    every_kind!(two_tanks: MapObserver, EkfBoxObserver, UkfBoxObserver, CorrectedObserver, EkfMapObserver, EkfRestartObserver, MheObserver);
+    every_kind!(ecoli_x0_0p5: MapObserver, EkfBoxObserver, UkfBoxObserver, MheObserver);
+    every_kind!(ecoli_x0_2: MapObserver, EkfBoxObserver, UkfBoxObserver, MheObserver);
 
     #[test]
     fn the_family() {

@@ -126,27 +126,27 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
     );
     let started_ekf = chip(
         &rows,
-        |o: &mut d::StartedEkfObserver, y| o.push(y, []).is_ok(),
-        d::StartedEkfObserver::estimate,
-        d::StartedEkfObserver::new(),
+        |o: &mut d::EkfMapObserver, y| o.push(y, []).is_ok(),
+        d::EkfMapObserver::estimate,
+        d::EkfMapObserver::new(),
     );
     let box_ekf = chip(
         &rows,
-        |o: &mut d::BoxEkfObserver, y| o.push(y, []).is_ok(),
-        d::BoxEkfObserver::estimate,
-        d::BoxEkfObserver::new(),
+        |o: &mut d::EkfBoxObserver, y| o.push(y, []).is_ok(),
+        d::EkfBoxObserver::estimate,
+        d::EkfBoxObserver::new(),
     );
     let ukf = chip(
         &rows,
-        |o: &mut d::UkfObserver, y| o.push(y, []).is_ok(),
-        d::UkfObserver::estimate,
-        d::UkfObserver::new(),
+        |o: &mut d::UkfBoxObserver, y| o.push(y, []).is_ok(),
+        d::UkfBoxObserver::estimate,
+        d::UkfBoxObserver::new(),
     );
     let restarted_ekf = chip(
         &rows,
-        |o: &mut d::RestartedEkfObserver, y| o.push(y, []).is_ok(),
-        d::RestartedEkfObserver::estimate,
-        d::RestartedEkfObserver::new(),
+        |o: &mut d::EkfRestartObserver, y| o.push(y, []).is_ok(),
+        d::EkfRestartObserver::estimate,
+        d::EkfRestartObserver::new(),
     );
     let mhe = chip(
         &rows,

@@ -409,10 +409,10 @@ fn measured_on_the_emulated_board(spec: &Path, out: &Path) {
         [
             "| `map_observer()`",
             "| `ekf()`",
-            "| `UkfObserver`",
+            "| `UkfBoxObserver`",
             "| `CorrectedObserver`",
-            "| `StartedEkfObserver`",
-            "| `RestartedEkfObserver`",
+            "| `EkfMapObserver`",
+            "| `EkfRestartObserver`",
             "| `MheObserver`"
         ],
         "{section}"

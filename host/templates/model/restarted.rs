@@ -1,5 +1,5 @@
 {# The box-started EKF checked by the map: the check's constants, `firmware::Restart` in f32 and f64. #}
-/// The check of [`RestartedEkfObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
+/// The check of [`EkfRestartObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
 /// (no unit).
 pub const RESTART_THRESHOLD: f64 = {{ threshold_f64 }};
 /// See [`RESTART_THRESHOLD`]: each state's `e_i²`, the map's mean squared error on the tuning runs,
@@ -40,8 +40,8 @@ impl firmware::emitted::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for Start
 }
 
 /// The EKF from the centre of the state box ([`Ekf`]'s start and samples) that checks the map once,
-/// at its first estimate, and restarts from it as [`StartedEkfObserver`] starts when the two disagree
+/// at its first estimate, and restarts from it as [`EkfMapObserver`] starts when the two disagree
 /// (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's guess-free start where the
 /// box centre is far from the plant.
-pub type RestartedEkfObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type EkfRestartObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 

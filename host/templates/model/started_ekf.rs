@@ -1,4 +1,4 @@
-{# The EKF started by the map (`StartedEkf`, `StartedEkfObserver`): `p0`, its `P(N-1)` in `T` literals. #}
+{# The EKF started by the map (`StartedEkf`, `EkfMapObserver`): `p0`, its `P(N-1)` in `T` literals. #}
 /// `P(N−1)` diagonal of [`StartedEkf`] (f64), as `gen` chose it, in each state's unit squared
 /// ([`STATE_UNITS`]).
 pub const STARTED_P0: [f64; STATES] = {{ p0_f64 }};
@@ -51,5 +51,5 @@ impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, 
 }
 
 /// The EKF started by this design's map.
-pub type StartedEkfObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type EkfMapObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 

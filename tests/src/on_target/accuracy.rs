@@ -210,7 +210,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
     largest_over_accepted(name, measured, &host)
 }
 
-/// The largest `|target − host|` of design `name`'s unscented Kalman filter (`UkfObserver`) measured
+/// The largest `|target − host|` of design `name`'s unscented Kalman filter (`UkfBoxObserver`) measured
 /// on the chip (f32), against the same written-out filter (`Ukf<f64>`) in f64 on the host over the
 /// same recorded sequence, its accepted samples.
 pub fn compare_ukf_with_f64(name: &str, measured: &ObserverMeasurement) -> Result<f64, String> {

@@ -1,5 +1,5 @@
 //! A Kalman filter from the centre of the state box in C, the same for the EKF (`ekf_box`, the Rust
-//! file's `BoxEkfObserver`) and the UKF (`ukf_box`, `UkfObserver`): the filter's start, its prediction
+//! file's `EkfBoxObserver`) and the UKF (`ukf_box`, `UkfBoxObserver`): the filter's start, its prediction
 //! and its measured sample taken when finite (shared with the kinds the map starts over the EKF), and
 //! the observer around it.
 

@@ -1,8 +1,8 @@
 //! The model-based kinds in C: the model's programs as functions ([`super::program`]), then the
-//! EKF from the box centre (`ekf_box`, the Rust file's `BoxEkfObserver`, [`super::box_filter`]), the
-//! UKF from the box centre (`ukf_box`, `UkfObserver`), the EKF the map starts
-//! (`ekf_map`, `StartedEkfObserver`), the box EKF the map checks once (`ekf_restart`,
-//! `RestartedEkfObserver`), the model-corrected map (`corrected`, [`super::corrected`]) and the
+//! EKF from the box centre (`ekf_box`, the Rust file's `EkfBoxObserver`, [`super::box_filter`]), the
+//! UKF from the box centre (`ukf_box`, `UkfBoxObserver`), the EKF the map starts
+//! (`ekf_map`, `EkfMapObserver`), the box EKF the map checks once (`ekf_restart`,
+//! `EkfRestartObserver`), the model-corrected map (`corrected`, [`super::corrected`]) and the
 //! moving-horizon estimate (`mhe`, [`super::mhe`]), each with the Rust observer's steps in the same
 //! order.
 
@@ -87,7 +87,7 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
         kinds.header += &started::header(
             name,
             "ekf_box",
-            "The EKF from the centre of the state box (kind ekf_box, the Rust BoxEkfObserver): an estimate\n \
+            "The EKF from the centre of the state box (kind ekf_box, the Rust EkfBoxObserver): an estimate\n \
              * from the first accepted sample; a sample with a non-finite output is refused and only predicted.",
             false,
             &format!("    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n"),
@@ -99,7 +99,7 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
             kinds.header += &started::header(
                 name,
                 "ekf_map",
-                "The EKF started at the map's first estimate (kind ekf_map, the Rust StartedEkfObserver).",
+                "The EKF started at the map's first estimate (kind ekf_map, the Rust EkfMapObserver).",
                 true,
                 &format!(
                     "    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n    unsigned count;\n    int started;\n"
@@ -112,7 +112,7 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
                     name,
                     "ekf_restart",
                     "The EKF from the box centre that checks the map once, at its first estimate, and restarts\n \
-                     * from it where the two disagree (kind ekf_restart, the Rust RestartedEkfObserver).",
+                     * from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver).",
                     true,
                     &format!("    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n    int checked;\n"),
                 );
@@ -127,7 +127,7 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
             name,
             "ukf_box",
             "The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust\n \
-             * UkfObserver): an estimate from the first accepted sample; a sample with a non-finite output\n \
+             * UkfBoxObserver): an estimate from the first accepted sample; a sample with a non-finite output\n \
              * is refused and only predicted.",
             false,
             &format!("    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n"),

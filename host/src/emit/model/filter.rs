@@ -1,7 +1,7 @@
 //! A Kalman filter's frame on the chip, the same for the EKF (`Ekf`, [`super::plant`]) and the UKF
 //! (`Ukf`, [`super::ukf`]): the filter type around its two written-out samples (`<lower>_measured`,
 //! `<lower>_unmeasured`: `push`, the refusals, `P` as its upper triangle), and the filter from the
-//! centre of the state box as an observer (`BoxEkfObserver`, `UkfObserver`: the runtime's
+//! centre of the state box as an observer (`EkfBoxObserver`, `UkfBoxObserver`: the runtime's
 //! `firmware::FilterObserver` over the filter, which implements `firmware::emitted::Filter`).
 
 use askama::Template;
@@ -13,7 +13,7 @@ use crate::plant::{Covariance, ModelCode};
 use crate::spec::{Design, FixedFilter};
 
 /// One filter's names: its type (`Ekf`), its samples' prefix (`ekf`), its observer type
-/// (`BoxEkfObserver`) and what filter that observer is ("The EKF"; its docs add where it starts).
+/// (`EkfBoxObserver`) and what filter that observer is ("The EKF"; its docs add where it starts).
 pub(super) struct Names {
     pub(super) name: &'static str,
     pub(super) lower: &'static str,

@@ -119,7 +119,7 @@ struct ModelText<'a> {
 const EKF: Names = Names {
     name: "Ekf",
     lower: "ekf",
-    observer: "BoxEkfObserver",
+    observer: "EkfBoxObserver",
     what: "The EKF",
     sample: "One sample",
 };

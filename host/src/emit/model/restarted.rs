@@ -1,4 +1,4 @@
-//! The box-started EKF checked by the map (`RestartedEkfObserver`, kind `ekf_restart`): the check's
+//! The box-started EKF checked by the map (`EkfRestartObserver`, kind `ekf_restart`): the check's
 //! constants and `firmware::Restart` for the map-started EKF.
 
 use askama::Template;
@@ -9,7 +9,7 @@ use crate::observers::restart::RestartConstants;
 use crate::plant::kalman::{self, EkfConstants};
 
 /// The box-started EKF checked by the map: `StartedEkf`'s `firmware::Restart` in `f32` and `f64`,
-/// the check, and `RestartedEkfObserver`.
+/// the check, and `EkfRestartObserver`.
 pub(super) fn restarted(ekf: &EkfConstants, restart: &RestartConstants) -> Result<String, EmitError> {
     let nx = ekf.x0.len();
     let upper = ekf.p0.upper();

@@ -1,4 +1,4 @@
-//! The EKF started by the map (`StartedEkf`, `StartedEkfObserver`, kind `ekf_map`): its Rust, filled
+//! The EKF started by the map (`StartedEkf`, `EkfMapObserver`, kind `ekf_map`): its Rust, filled
 //! in by [`super::model_source`].
 
 use askama::Template;

@@ -1,4 +1,4 @@
-//! The design's unscented Kalman filter (`Ukf`, `ukf()`, kind `ukf_box` as `UkfObserver`), written
+//! The design's unscented Kalman filter (`Ukf`, `ukf()`, kind `ukf_box` as `UkfBoxObserver`), written
 //! beside the EKF by [`super::model_source`]: the same frame as the EKF's (`push`, the refusals, `P`
 //! as its upper triangle, [`super::plant`]'s `COVARIANCE` and `finite`), each sample the straight-line
 //! programs of [`crate::plant::unscented`].
@@ -34,7 +34,7 @@ pub(super) fn ukf(design: &Design, code: &ModelCode, ukf: &EkfConstants) -> Resu
 const UKF: Names = Names {
     name: "Ukf",
     lower: "ukf",
-    observer: "UkfObserver",
+    observer: "UkfBoxObserver",
     what: "The UKF",
     sample: "One UKF sample",
 };

@@ -12,7 +12,7 @@ use crate::spec::ObserverKind;
 pub const KIND: Kind = Kind {
     kind: ObserverKind::EkfBox,
     what: "the EKF from the centre of the state box",
-    observer_type: "BoxEkfObserver",
+    observer_type: "EkfBoxObserver",
     measured_as: "`ekf()`",
     legend: "EKF from x̂(0)",
     colour: (255, 127, 14),

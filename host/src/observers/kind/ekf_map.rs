@@ -11,8 +11,8 @@ use crate::spec::ObserverKind;
 pub const KIND: Kind = Kind {
     kind: ObserverKind::EkfMap,
     what: "the EKF started by the map",
-    observer_type: "StartedEkfObserver",
-    measured_as: "`StartedEkfObserver`",
+    observer_type: "EkfMapObserver",
+    measured_as: "`EkfMapObserver`",
     legend: "EKF started by the map",
     colour: (148, 103, 189),
     dots: false,

@@ -13,8 +13,8 @@ use crate::spec::ObserverKind;
 pub const KIND: Kind = Kind {
     kind: ObserverKind::EkfRestart,
     what: "the EKF from the centre of the state box, restarted by the map",
-    observer_type: "RestartedEkfObserver",
-    measured_as: "`RestartedEkfObserver`",
+    observer_type: "EkfRestartObserver",
+    measured_as: "`EkfRestartObserver`",
     legend: "EKF restarted by the map",
     colour: (140, 86, 75),
     dots: false,

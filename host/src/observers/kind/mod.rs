@@ -126,4 +126,18 @@ mod tests {
         );
         assert_eq!(of(ObserverKind::Auto).kind, ObserverKind::Map);
     }
+
+    #[test]
+    fn a_kinds_type_is_its_name_in_rust_spelling() {
+        // One name per kind: `ekf_map` is `EkfMapObserver` in a design file, never another word.
+        let camel = |name: &str| -> String {
+            name.split('_')
+                .map(|word| word[..1].to_uppercase() + &word[1..])
+                .collect()
+        };
+        for entry in REGISTRY {
+            assert_eq!(entry.observer_type, camel(entry.kind.name()) + "Observer");
+        }
+        assert_eq!(camel("ekf_restart"), "EkfRestart");
+    }
 }

@@ -12,8 +12,8 @@ use crate::spec::ObserverKind;
 pub const KIND: Kind = Kind {
     kind: ObserverKind::UkfBox,
     what: "the unscented Kalman filter from the centre of the state box",
-    observer_type: "UkfObserver",
-    measured_as: "`UkfObserver`",
+    observer_type: "UkfBoxObserver",
+    measured_as: "`UkfBoxObserver`",
     legend: "UKF from x̂(0)",
     colour: (188, 189, 34),
     dots: false,
