@@ -10,7 +10,7 @@
 //! ```
 //!
 //! The constants are calibrated on the designs shipped before `vanderpol_searched` as the emulated
-//! Cortex-M4F measures them (`on-target-report`); `tests/tests/on_target.rs` checks the instructions
+//! Cortex-M4F measures them (`on-target-report`); `tests/tests/integration/on_target.rs` checks the instructions
 //! against QEMU on every shipped design within [`TOLERANCE`] (`vanderpol_searched`, out of the
 //! calibration set: predicted 149.2, measured 147). All shipped designs have two targets, so `BASE`
 //! and `PER_TARGET` are not separated by the data: the split follows the code (one table look-up with
@@ -176,7 +176,7 @@ pub const MHE_PER_OPERATION: f64 = 0.902;
 /// for the normal equations, and one to carry the solution to the window's end. It is generic code
 /// with loops (not written out as the EKF is), so a step costs far more than its arithmetic. The three
 /// constants were fitted to the three shipped models (Van der Pol, two tanks, E. coli: one
-/// measurement each); `tests/tests/on_target.rs` holds all seven shipped designs, with their
+/// measurement each); `tests/tests/integration/on_target.rs` holds all seven shipped designs, with their
 /// different steps and horizons, to [`TOLERANCE`].
 pub fn of_mhe(code: &crate::plant::ModelCode, horizon: usize, iterations: usize, substeps: usize) -> f64 {
     let n = code.dimensions.states as f64;
