@@ -155,3 +155,173 @@ pub fn choose(
     let limit = budget.map_or(String::new(), |b| format!(" within `budget.instructions` = {b}"));
     Ok((kind, format!("`{name}` by `auto`: the lowest tuning score (pooled RMSE + p95 over runs, per target over its spread; {}){limit}, a cheaper kind preferred within {:.0} %", all.join(", "), CHEAPER_WITHIN * 100.0)))
 }
+
+#[cfg(test)]
+mod tests {
+    //! The rule of `choose` on hand-made figures: every expected kind below is worked out by hand from
+    //! the module's rule (the lowest tuning score within the budget, a cheaper kind within
+    //! `CHEAPER_WITHIN` = 2 % of the best preferred, the MHE only under a set budget), not by the code.
+
+    use super::*;
+    use crate::observers::figures::{Drift, Figures};
+
+    /// Example 1's spec (two targets), with `observer.kind` and `budget.instructions` as given.
+    fn design(kind: ObserverKind, budget: Option<u64>) -> Design {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml");
+        let mut design = crate::spec::parse(&path, &std::fs::read_to_string(&path).unwrap()).unwrap();
+        design.observer = kind;
+        design.budget.instructions = budget;
+        design
+    }
+
+    /// A kind whose tuning RMSE is `rmse` and tuning p95 is `p95` on both targets: with spreads of 1,
+    /// its score is `rmse + p95`.
+    fn kind(name: &'static str, rmse: f64, p95: f64, instructions: f64) -> ObserverFigures {
+        let figures = Figures {
+            rmse_validation: 0.0,
+            max_error_validation: 0.0,
+            p95_validation: 0.0,
+            rmse_scenario: 0.0,
+            rmse_transient: 0.0,
+            scenarios: Vec::new(),
+            scenario_draws: None,
+            rmse_tuning: rmse,
+            p95_tuning: p95,
+            rmse_mismatch: None,
+            rmse_corners: Vec::new(),
+            rmse_nominal: None,
+            drift: Drift { first: 0.0, last: 0.0 },
+            drift_mismatch: None,
+        };
+        ObserverFigures {
+            kind: name,
+            instructions,
+            targets: vec![figures.clone(), figures],
+            scenario: crate::data::Rows::default(),
+            mismatch_scenario: None,
+        }
+    }
+
+    const SPREADS: [f64; 2] = [1.0, 1.0];
+
+    fn chosen(design: &Design, observers: &[ObserverFigures]) -> ObserverKind {
+        choose(design, observers, &SPREADS).unwrap().0
+    }
+
+    #[test]
+    fn auto_takes_the_lowest_score_when_no_cheaper_kind_is_within_2_percent() {
+        // Scores: map 0.30, ekf_box 0.10, corrected 0.103 (3 % above the best: too far, though cheaper).
+        let observers = [
+            kind("map", 0.1, 0.2, 100.0),
+            kind("ekf_box", 0.04, 0.06, 300.0),
+            kind("corrected", 0.05, 0.053, 200.0),
+        ];
+        assert_eq!(
+            chosen(&design(ObserverKind::Auto, None), &observers),
+            ObserverKind::EkfBox
+        );
+    }
+
+    #[test]
+    fn auto_prefers_the_cheapest_kind_within_2_percent_of_the_best() {
+        // Scores: ekf_box 0.10 at 300 instructions, corrected 0.1015 (1.5 % above) at 200, ekf_map
+        // 0.1019 (1.9 % above) at 250: all three within 2 %, the cheapest is `corrected`; the map
+        // (0.30) is cheaper still but far off.
+        let observers = [
+            kind("map", 0.1, 0.2, 100.0),
+            kind("ekf_box", 0.04, 0.06, 300.0),
+            kind("corrected", 0.05, 0.0515, 200.0),
+            kind("ekf_map", 0.05, 0.0519, 250.0),
+        ];
+        assert_eq!(
+            chosen(&design(ObserverKind::Auto, None), &observers),
+            ObserverKind::Corrected
+        );
+    }
+
+    #[test]
+    fn auto_leaves_out_kinds_over_the_budget() {
+        // With 250 instructions allowed, ekf_box (300) is out; of map 0.30 at 100 and corrected 0.12
+        // at 240, the corrected observer is best.
+        let observers = [
+            kind("map", 0.1, 0.2, 100.0),
+            kind("ekf_box", 0.04, 0.06, 300.0),
+            kind("corrected", 0.06, 0.06, 240.0),
+        ];
+        assert_eq!(
+            chosen(&design(ObserverKind::Auto, Some(250)), &observers),
+            ObserverKind::Corrected
+        );
+        assert_eq!(
+            chosen(&design(ObserverKind::Auto, Some(300)), &observers),
+            ObserverKind::EkfBox
+        );
+        // Nothing within 50: an error that says so.
+        let error = choose(&design(ObserverKind::Auto, Some(50)), &observers, &SPREADS).unwrap_err();
+        assert_eq!(error.field, "budget.instructions");
+        assert!(
+            error.problem.contains("no observer kind fits in 50"),
+            "{}",
+            error.problem
+        );
+    }
+
+    #[test]
+    fn auto_offers_the_mhe_only_under_a_set_budget() {
+        // The MHE scores best (0.02), but without `budget.instructions` it is not offered: ekf_box
+        // (0.10) is chosen; with a budget of 10 000 that allows it, the MHE is.
+        let observers = [
+            kind("map", 0.1, 0.2, 100.0),
+            kind("ekf_box", 0.04, 0.06, 300.0),
+            kind("mhe", 0.01, 0.01, 5000.0),
+        ];
+        assert_eq!(
+            chosen(&design(ObserverKind::Auto, None), &observers),
+            ObserverKind::EkfBox
+        );
+        assert_eq!(
+            chosen(&design(ObserverKind::Auto, Some(10_000)), &observers),
+            ObserverKind::Mhe
+        );
+    }
+
+    #[test]
+    fn a_kind_the_spec_names_is_taken_whatever_its_score_unless_over_budget_or_missing() {
+        let observers = [kind("map", 0.1, 0.2, 100.0), kind("ekf_box", 0.04, 0.06, 300.0)];
+        // The map scores 0.30 against ekf_box's 0.10, but the spec asks for it.
+        assert_eq!(chosen(&design(ObserverKind::Map, None), &observers), ObserverKind::Map);
+        assert_eq!(
+            chosen(&design(ObserverKind::EkfBox, Some(300)), &observers),
+            ObserverKind::EkfBox
+        );
+        let over = choose(&design(ObserverKind::EkfBox, Some(299)), &observers, &SPREADS).unwrap_err();
+        assert!(over.problem.contains("~300 instructions"), "{}", over.problem);
+        let missing = choose(&design(ObserverKind::Corrected, None), &observers, &SPREADS).unwrap_err();
+        assert!(
+            missing.problem.contains("cannot have a `corrected` observer"),
+            "{}",
+            missing.problem
+        );
+    }
+
+    #[test]
+    fn a_target_is_scored_over_its_spread() {
+        // Per target (rmse + p95) / spread, averaged: a kind with errors (0.1, 0.1) on both targets
+        // scores (0.2/1 + 0.2/4) / 2 = 0.125 with spreads (1, 4), and one with (0.05, 0.05) on x1 and
+        // (0.2, 0.2) on x2 scores (0.1/1 + 0.4/4) / 2 = 0.1: the second wins there, and loses with
+        // spreads (1, 1) (0.2 against 0.25).
+        let even = kind("ekf_box", 0.1, 0.1, 300.0);
+        let mut uneven = kind("corrected", 0.05, 0.05, 300.0);
+        uneven.targets[1].rmse_tuning = 0.2;
+        uneven.targets[1].p95_tuning = 0.2;
+        assert!((tuning_score(&even, &[1.0, 4.0]) - 0.125).abs() < 1e-12);
+        assert!((tuning_score(&uneven, &[1.0, 4.0]) - 0.1).abs() < 1e-12);
+        let observers = [kind("map", 1.0, 1.0, 100.0), even, uneven];
+        let auto = design(ObserverKind::Auto, None);
+        assert_eq!(
+            choose(&auto, &observers, &[1.0, 4.0]).unwrap().0,
+            ObserverKind::Corrected
+        );
+        assert_eq!(choose(&auto, &observers, &[1.0, 1.0]).unwrap().0, ObserverKind::EkfBox);
+    }
+}

@@ -335,7 +335,21 @@ pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) ->
 
 #[cfg(test)]
 mod tests {
-    use super::Gate;
+    //! The gates on hand-made results: a clean design (Example 1's spec, every figure well inside
+    //! every gate) fails none, and each test moves one figure just past one gate's threshold, and
+    //! another just short of it, on the two targets: each expected gate is worked out by hand from the
+    //! module's rules.
+
+    use std::sync::Arc;
+
+    use super::*;
+    use crate::data::{DataSet, Rows, Run, Runs};
+    use crate::fit::evaluate::{Accuracy, Evaluation};
+    use crate::fit::identify::{Certificate, Diagnostics, Fit};
+    use crate::fit::maps::{FittedMap, LinearMap};
+    use crate::fit::TargetResult;
+    use crate::observers::{Drift, Figures, ObserverFigures};
+    use crate::spec::{Normalisation, ObserverKind};
 
     #[test]
     fn a_better_peer_is_named_in_its_kinds_words() {
@@ -357,5 +371,351 @@ mod tests {
         );
         assert!(!ukf.contains("EKF"), "{ukf}");
         assert!(gate("ekf_map").contains("`ekf_map` is the better choice"));
+    }
+
+    /// Example 1's spec: targets x1 and x2, learning box x1 ∈ [-2, 2], x2 ∈ [-5, 5], the scenario's
+    /// observer start (1, 0.7), `y`'s raw range [-10.24, 10.235].
+    fn design() -> Design {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml");
+        crate::spec::parse(&path, &std::fs::read_to_string(&path).unwrap()).unwrap()
+    }
+
+    /// One run of 200 samples whose targets are `targets` (both states 0, `y` 0, no input).
+    fn run(targets: Vec<Vec<f64>>, y: Vec<f64>) -> Run {
+        Run {
+            states: Rows::from(vec![vec![0.0, 0.0]; targets.len()]),
+            inputs: Rows::from(vec![Vec::new(); targets.len()]),
+            measurements: y.into_iter().map(|v| vec![v]).collect(),
+            targets: Rows::from(targets),
+            parameters: Vec::new(),
+        }
+    }
+
+    /// One target's figures: the map's and the linear floor's validation RMSE, the target's spread,
+    /// and the learning range of the map.
+    struct Target {
+        map: f64,
+        linear: f64,
+        spread: f64,
+        range: (f64, f64),
+    }
+
+    /// Inside every gate: the map twice as good as the floor, a tenth of the spread.
+    const CLEAN: Target = Target {
+        map: 0.1,
+        linear: 0.2,
+        spread: 1.0,
+        range: (-1.0, 1.0),
+    };
+
+    fn target(index: usize, t: &Target) -> TargetResult {
+        let accuracy = |rmse| Accuracy { rmse, max_error: rmse };
+        let evaluation = Evaluation {
+            map: accuracy(t.map),
+            linear: accuracy(t.linear),
+            saturated_fraction: 0.0,
+            target_spread: t.spread,
+            windows: 200,
+        };
+        let map = FittedMap {
+            target: String::new(),
+            normalisation: Normalisation::Intercept,
+            gains: Vec::new(),
+            intercept: 0.0,
+            mu_constant: 0.0,
+            mu: Vec::new(),
+            odds_ratios: Arc::from(Vec::new()),
+            r_min: t.range.0,
+            r_max: t.range.1,
+            table: None,
+        };
+        let fit = Fit {
+            map,
+            linear: LinearMap {
+                gains: Vec::new(),
+                intercept: 0.0,
+            },
+            diagnostics: Diagnostics {
+                status: clarabel::solver::SolverStatus::Solved,
+                iterations: 0,
+                solve_time_s: 0.0,
+                constraints: 0,
+                active_constraints: 0,
+                collapsed: false,
+                nonlinearity: 0.0,
+                refinement_rounds: 0,
+                min_slope_over_epsilon: 1.0,
+                reduced_condition: 1.0,
+                objective_over_epsilon_squared: 0.0,
+            },
+            certificate: Certificate {
+                epsilon: 1.0,
+                mean: 0.0,
+                mu: Vec::new(),
+                with_constant: false,
+                grid: Vec::new(),
+                lambda: Vec::new(),
+                nu: None,
+            },
+        };
+        TargetResult {
+            index,
+            fit,
+            learning: evaluation,
+            validation: evaluation,
+        }
+    }
+
+    /// The result of two targets with `validation` truths and `y` learning samples (one run each,
+    /// horizon 1: a window per sample).
+    fn result(targets: [&Target; 2], validation: Vec<Vec<f64>>, y: Vec<f64>) -> DesignResult {
+        let set = |runs: Vec<Run>| DataSet { runs, horizon: 1 };
+        let samples = y.len();
+        DesignResult {
+            runs: Runs {
+                learning: set(vec![run(vec![vec![0.0, 0.0]; samples], y)]),
+                validation: set(vec![run(validation.clone(), vec![0.0; validation.len()])]),
+                tuning: set(Vec::new()),
+                scenario: run(Vec::new(), Vec::new()),
+                scenarios: Vec::new(),
+                scenario_draws: None,
+                long: set(Vec::new()),
+                mismatch: None,
+            },
+            targets: vec![target(0, targets[0]), target(1, targets[1])],
+        }
+    }
+
+    fn clean_result() -> DesignResult {
+        result([&CLEAN, &CLEAN], vec![vec![0.0, 0.0]; 200], vec![0.0; 200])
+    }
+
+    /// An observer of kind `name` with validation RMSE `rmse` on (x1, x2).
+    fn observer(name: &'static str, rmse: [f64; 2], instructions: f64) -> ObserverFigures {
+        let figures = |rmse_validation| Figures {
+            rmse_validation,
+            max_error_validation: 0.0,
+            p95_validation: 0.0,
+            rmse_scenario: 0.0,
+            rmse_transient: 0.0,
+            scenarios: Vec::new(),
+            scenario_draws: None,
+            rmse_tuning: 0.0,
+            p95_tuning: 0.0,
+            rmse_mismatch: None,
+            rmse_corners: Vec::new(),
+            rmse_nominal: None,
+            drift: Drift { first: 0.0, last: 0.0 },
+            drift_mismatch: None,
+        };
+        ObserverFigures {
+            kind: name,
+            instructions,
+            targets: rmse.map(figures).to_vec(),
+            scenario: Rows::default(),
+            mismatch_scenario: None,
+        }
+    }
+
+    fn comparison(chosen: ObserverKind, observers: Vec<ObserverFigures>) -> Comparison {
+        Comparison {
+            observers,
+            references: Vec::new(),
+            tuned: Default::default(),
+            unavailable: Default::default(),
+            beside: Vec::new(),
+            from_observer_start: Vec::new(),
+            chosen: (chosen, String::new()),
+            chip_model_error: Vec::new(),
+        }
+    }
+
+    fn clean_comparison() -> Comparison {
+        comparison(
+            ObserverKind::Map,
+            vec![
+                observer("map", [0.1, 0.1], 100.0),
+                observer("ekf_box", [0.1, 0.1], 300.0),
+            ],
+        )
+    }
+
+    fn close(got: f64, want: f64) {
+        assert!((got - want).abs() < 1e-12, "{got} != {want}");
+    }
+
+    #[test]
+    fn a_clean_design_fails_no_gate() {
+        assert_eq!(check(&design(), &clean_result(), &clean_comparison()), []);
+    }
+
+    #[test]
+    fn a_map_over_2_percent_worse_than_the_linear_floor_fails() {
+        // x1: 0.2041 / 0.2 = 1.0205 > 1.02; x2: 0.2039 / 0.2 = 1.0195, within the slack.
+        let x1 = Target { map: 0.2041, ..CLEAN };
+        let x2 = Target { map: 0.2039, ..CLEAN };
+        let result = result([&x1, &x2], vec![vec![0.0, 0.0]; 200], vec![0.0; 200]);
+        let mut design = design();
+        for paper in [false, true] {
+            if paper {
+                design.map.normalisation = Normalisation::Paper;
+            }
+            let gates = check(&design, &result, &clean_comparison());
+            let [Gate::BelowLinearFloor {
+                target,
+                ratio,
+                paper_normalisation,
+            }] = &gates[..]
+            else {
+                panic!("{gates:?}");
+            };
+            assert_eq!((target.as_str(), *paper_normalisation), ("x1", paper));
+            close(*ratio, 1.0205);
+        }
+    }
+
+    #[test]
+    fn over_1_percent_of_validation_windows_outside_the_learning_range_fails() {
+        // x1 in [-1, 1]: 3 of 200 windows at 1.5 are outside (1.5 %), the ends themselves inside; it
+        // saw [-1, 1.5]. x2: 2 of 200 at -1.2 (1 %, not more).
+        let mut truths = vec![vec![0.0, 0.0]; 200];
+        for row in &mut truths[..3] {
+            row[0] = 1.5;
+        }
+        truths[3][0] = -1.0;
+        truths[4][0] = 1.0;
+        for row in &mut truths[10..12] {
+            row[1] = -1.2;
+        }
+        let result = result([&CLEAN, &CLEAN], truths, vec![0.0; 200]);
+        let gates = check(&design(), &result, &clean_comparison());
+        let expected = Gate::OutsideLearningRange {
+            target: "x1".to_owned(),
+            fraction: 0.015,
+            range: (-1.0, 1.0),
+            seen: (-1.0, 1.5),
+        };
+        assert_eq!(gates, [expected]);
+    }
+
+    #[test]
+    fn a_map_at_70_percent_of_the_spread_is_weak() {
+        // x1: 0.7 of a spread of 1 (at the bound: weak); x2: 0.69 (below it). The floor is 1.0, so
+        // that the linear gate stays quiet.
+        let x1 = Target {
+            map: 0.7,
+            linear: 1.0,
+            ..CLEAN
+        };
+        let x2 = Target {
+            map: 0.69,
+            linear: 1.0,
+            ..CLEAN
+        };
+        let result = result([&x1, &x2], vec![vec![0.0, 0.0]; 200], vec![0.0; 200]);
+        let gates = check(&design(), &result, &clean_comparison());
+        let expected = Gate::Weak {
+            target: "x1".to_owned(),
+            fraction: 0.7,
+            horizon: 10,
+        };
+        assert_eq!(gates, [expected]);
+    }
+
+    #[test]
+    fn an_ekf_within_the_budget_over_twice_as_good_as_the_chosen_kind_fails() {
+        // The map: 0.3 on both targets. ekf_box (600 instructions): 0.1 and 0.2; ekf_map (400):
+        // 0.14 and 0.16; ekf_restart diverged (NaN, never a peer). Without a budget, x1's best peer
+        // is ekf_box, 0.3 > 2·0.1; x2's is ekf_map, 0.3 < 2·0.16.
+        let observers = || {
+            vec![
+                observer("map", [0.3, 0.3], 100.0),
+                observer("ekf_box", [0.1, 0.2], 600.0),
+                observer("ekf_map", [0.14, 0.16], 400.0),
+                observer("ekf_restart", [f64::NAN, f64::NAN], 300.0),
+            ]
+        };
+        let gate = |ekf, ekf_rmse| Gate::EkfBetter {
+            target: "x1".to_owned(),
+            chosen: "map",
+            rmse: 0.3,
+            ekf,
+            ekf_rmse,
+        };
+        let mut design = design();
+        let gates_of = |design: &Design, chosen| check(design, &clean_result(), &comparison(chosen, observers()));
+        assert_eq!(gates_of(&design, ObserverKind::Map), [gate("ekf_box", 0.1)]);
+        // Within 500 instructions ekf_box is not a choice: x1's peer is ekf_map, 0.3 > 2·0.14.
+        design.budget.instructions = Some(500);
+        assert_eq!(gates_of(&design, ObserverKind::Map), [gate("ekf_map", 0.14)]);
+        // Within 399, no EKF is a choice.
+        design.budget.instructions = Some(399);
+        assert_eq!(gates_of(&design, ObserverKind::Map), []);
+        // ekf_box chosen (no budget): its own figures are not its peer's, and ekf_map (0.14, 0.16)
+        // is not twice as good as 0.1 or 0.2.
+        design.budget.instructions = None;
+        assert_eq!(gates_of(&design, ObserverKind::EkfBox), []);
+    }
+
+    #[test]
+    fn a_filters_start_outside_the_learning_box_fails_and_the_plants_does_not() {
+        let mut design = design();
+        assert!(starts_outside_box(&design).is_empty());
+        // The scenario's observer start at x1 = 2.5 (box [-2, 2]); the plant's at x1 = 3 is no gate;
+        // the EKF's at x2 = -6 (box [-5, 5]), its x1 = 2 on the box's edge is inside.
+        design.scenarios[0].observer_x0 = Some(vec![2.5, 0.7]);
+        design.scenarios[0].x0 = vec![3.0, 0.0];
+        design.filters.ekf.x0 = Some(vec![2.0, -6.0]);
+        let gate = |field: &str, state: &str, value, range| Gate::StartOutsideBox {
+            field: field.to_owned(),
+            state: state.to_owned(),
+            value,
+            range,
+        };
+        assert_eq!(
+            starts_outside_box(&design),
+            [
+                gate("observer.ekf.x0", "x2", -6.0, (-5.0, 5.0)),
+                gate("scenario.observer_x0", "x1", 2.5, (-2.0, 2.0)),
+            ]
+        );
+    }
+
+    #[test]
+    fn a_raw_range_left_by_over_1_percent_of_the_learning_samples_fails() {
+        // y's raw range: -10.24 + 0.005·[0, 4095] = [-10.24, 10.235]. 3 of 200 samples at 10.3 leave
+        // it (1.5 %), 2 of 200 (1 %) do not count.
+        let mut y = vec![0.0; 200];
+        y[..3].fill(10.3);
+        let design = design();
+        let learning = |y: Vec<f64>| result([&CLEAN, &CLEAN], vec![vec![0.0, 0.0]; 200], y).runs.learning;
+        let gates = raw_ranges_short(&design, &learning(y.clone()));
+        let [Gate::RawRangeShort {
+            signal,
+            covered,
+            seen,
+            fraction,
+        }] = &gates[..]
+        else {
+            panic!("{gates:?}");
+        };
+        assert_eq!((signal.as_str(), *seen), ("y", (0.0, 10.3)));
+        close(covered.0, -10.24);
+        close(covered.1, 10.235);
+        close(*fraction, 0.015);
+        y[2] = 0.0;
+        assert_eq!(raw_ranges_short(&design, &learning(y)), []);
+        // A negative scale covers the same span from the other end.
+        let mut flipped = design.clone();
+        let scale = flipped.fixed.as_mut().unwrap().outputs[0].as_mut().unwrap();
+        (scale.scale, scale.offset) = (-0.005, 10.235);
+        let mut y = vec![0.0; 200];
+        y[..3].fill(-10.3);
+        let gates = raw_ranges_short(&flipped, &learning(y));
+        let [Gate::RawRangeShort { covered, .. }] = &gates[..] else {
+            panic!("{gates:?}");
+        };
+        close(covered.0, -10.24);
+        close(covered.1, 10.235);
     }
 }

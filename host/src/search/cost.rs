@@ -10,7 +10,7 @@
 //! ```
 //!
 //! The constants are calibrated on the designs shipped before `vanderpol_searched` as the emulated
-//! Cortex-M4F measures them (`on-target-report`); `tests/tests/on_target.rs` checks the instructions
+//! Cortex-M4F measures them (`on-target-report`); `tests/tests/integration/on_target.rs` checks the instructions
 //! against QEMU on every shipped design within [`TOLERANCE`] (`vanderpol_searched`, out of the
 //! calibration set: predicted 149.2, measured 147). All shipped designs have two targets, so `BASE`
 //! and `PER_TARGET` are not separated by the data: the split follows the code (one table look-up with
@@ -176,7 +176,7 @@ pub const MHE_PER_OPERATION: f64 = 0.902;
 /// for the normal equations, and one to carry the solution to the window's end. It is generic code
 /// with loops (not written out as the EKF is), so a step costs far more than its arithmetic. The three
 /// constants were fitted to the three shipped models (Van der Pol, two tanks, E. coli: one
-/// measurement each); `tests/tests/on_target.rs` holds all seven shipped designs, with their
+/// measurement each); `tests/tests/integration/on_target.rs` holds all seven shipped designs, with their
 /// different steps and horizons, to [`TOLERANCE`].
 pub fn of_mhe(code: &crate::plant::ModelCode, horizon: usize, iterations: usize, substeps: usize) -> f64 {
     let n = code.dimensions.states as f64;
@@ -216,5 +216,176 @@ pub fn of_maps(maps: &[&FittedMap], horizon: usize, tau: f64) -> Cost {
         instructions,
         flash: CODE_BYTES + CONSTANT_BYTES * constants,
         first_estimate: horizon.saturating_sub(1) as f64 * tau,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! The cost model on hand-made programs and maps: each expected count is the module's formula
+    //! worked out by hand in the comment beside it, with the constants' values written out.
+
+    use std::sync::Arc;
+
+    use super::*;
+    use crate::fit::inverse_table::InverseTable;
+    use crate::plant::program::Leaf;
+    use crate::spec::ast::Binary;
+    use crate::spec::Normalisation;
+
+    fn close(got: f64, want: f64) {
+        assert!((got - want).abs() < 1e-9, "{got} != {want}");
+    }
+
+    /// `-(x0 + 2) · sqrt(x1)`, then `tanh(x0)` and `x0` projected onto a lower bound of 0.
+    fn program() -> Program {
+        let ops = vec![
+            Op::Leaf(Leaf::State(0)),      // 0: a load, free
+            Op::Number(2.0),               // 1: free
+            Op::Binary(Binary::Add, 0, 1), // 2: 1
+            Op::Negate(2),                 // 3: 1
+            Op::Leaf(Leaf::State(1)),      // 4: free
+            Op::Call("sqrt", 4),           // 5: 7
+            Op::Binary(Binary::Mul, 3, 5), // 6: 1
+            Op::Call("tanh", 0),           // 7: 150, no shipped model measured it
+            Op::Number(0.0),               // 8: free
+            Op::AtLeast(0, 8),             // 9: 3
+        ];
+        Program {
+            ops,
+            results: vec![6, 7, 9],
+        }
+    }
+
+    #[test]
+    fn a_program_costs_its_operations_calls_and_selects() {
+        // 1 + 1 + 7 + 1 + 150 + 3 = 163.
+        close(of_program(&program()), 163.0);
+        close(of_program(&Program::default()), 0.0);
+        assert_eq!((call("abs"), call("signum"), call("exp")), (1.0, 14.0, 101.0));
+    }
+
+    #[test]
+    fn the_filters_cost_their_base_and_their_program() {
+        let filter = FilterCode {
+            measured: program(),
+            unmeasured: Program::default(),
+            parameters: Vec::new(),
+            states: 2,
+        };
+        // EKF: 46 + 163 = 209; the UKF and the restarted EKF the same; the started one 8 more, 217.
+        close(of_ekf(&filter), 209.0);
+        close(of_ukf(&filter), 209.0);
+        close(of_restarted(&filter), 209.0);
+        close(of_started(&filter), 217.0);
+    }
+
+    #[test]
+    fn the_corrected_observer_pays_for_the_map_only_when_its_steady_program_reads_it() {
+        let map = Cost {
+            instructions: 100.0,
+            flash: 0.0,
+            first_estimate: 0.0,
+        };
+        let mut code = CorrectionCode {
+            predict: program(),
+            start_up: program(),
+            steady: Program {
+                ops: vec![Op::Number(1.0), Op::Negate(0)],
+                results: vec![1],
+            },
+            steady_reads_map: false,
+            parameters: Vec::new(),
+        };
+        // 93 + 163 (predict) + 1 (steady) = 257; the start-up program is not a steady sample's.
+        close(of_corrected(&code, &map), 257.0);
+        // Reading the map adds its instructions without the frame it shares: 257 + (100 - 42) = 315.
+        code.steady_reads_map = true;
+        close(of_corrected(&code, &map), 315.0);
+    }
+
+    #[test]
+    fn the_mhe_costs_every_model_step_of_its_iterations_and_one_more() {
+        // Two states; the derivative program costs 163, the output program 1 (one addition).
+        let code = crate::plant::ModelCode {
+            derivative: program(),
+            output: Program {
+                ops: vec![
+                    Op::Leaf(Leaf::State(0)),
+                    Op::Leaf(Leaf::State(1)),
+                    Op::Binary(Binary::Add, 0, 1),
+                ],
+                results: vec![2],
+            },
+            targets: Program::default(),
+            parameters: Vec::new(),
+            dimensions: crate::plant::Dimensions {
+                states: 2,
+                outputs: 1,
+                inputs: 0,
+                targets: 2,
+            },
+            bounds: Vec::new(),
+        };
+        // horizon 10, 2 iterations, 3 substeps: (2 + 1)·10 = 30 steps of
+        // 659 + 55.5·2³ + 0.902·(4·3·163 + 1) = 659 + 444 + 0.902·1957 = 1103 + 1765.214 = 2868.214,
+        // so 86 046.42.
+        close(of_mhe(&code, 10, 2, 3), 86_046.42);
+        // No iteration: one pass, a third of that over 10 samples.
+        close(of_mhe(&code, 10, 0, 3), 28_682.14);
+    }
+
+    /// A map with `gains` and, if `segments > 0`, a table of that many segments (searched knots
+    /// when `searched`).
+    fn map(gains: &[f64], segments: usize, searched: bool) -> FittedMap {
+        let table = (segments > 0).then(|| InverseTable {
+            gains: gains.to_vec(),
+            offset: 0.0,
+            starts: searched.then(|| (0..segments).map(|k| k as f64 / segments as f64).collect()),
+            segments: vec![[0.0, 1.0]; segments],
+            r_min: 0.0,
+            r_max: 1.0,
+            proven_bound: 0.0,
+            sampled_error: 0.0,
+        });
+        FittedMap {
+            target: "x".to_owned(),
+            normalisation: Normalisation::Intercept,
+            gains: gains.to_vec(),
+            intercept: 0.0,
+            mu_constant: 0.0,
+            mu: Vec::new(),
+            odds_ratios: Arc::from(Vec::new()),
+            r_min: 0.0,
+            r_max: 1.0,
+            table,
+        }
+    }
+
+    #[test]
+    fn a_map_costs_its_taps_tables_and_search_steps() {
+        // No table (one segment, no knots), 3 non-zero gains of 4 (the pruned one is not emitted):
+        // 42 + 12 + 2.6·3 = 61.8 instructions; constants 3 + 2·1 + 0 + 4 = 9, flash 630 + 4·9 = 666.
+        let plain = map(&[0.5, 0.0, -0.25, 1.0], 0, false);
+        let cost = of_maps(&[&plain], 10, 0.1);
+        close(cost.instructions, 61.8);
+        close(cost.flash, 666.0);
+        close(cost.first_estimate, 0.9);
+        // One uniform segment: no table step, as without a table.
+        close(
+            of_maps(&[&map(&[0.5, 0.0, -0.25, 1.0], 1, false)], 10, 0.1).instructions,
+            61.8,
+        );
+        // Five uniform segments, two gains: 12 + 5.2 + 8 = 25.2 more; constants 2 + 10 + 0 + 4 = 16.
+        // Eight searched segments (eight knots, ⌈log₂ 8⌉ = 3 steps), one gain: 12 + 2.6 + 8 + 3·5 =
+        // 37.6 more; constants 1 + 16 + 8 + 4 = 29.
+        let uniform = map(&[1.0, 2.0], 5, false);
+        let searched = map(&[3.0], 8, true);
+        let cost = of_maps(&[&plain, &uniform, &searched], 1, 0.1);
+        close(cost.instructions, 61.8 + 25.2 + 37.6);
+        close(cost.flash, 630.0 + 4.0 * (9.0 + 16.0 + 29.0));
+        close(cost.first_estimate, 0.0);
+        // Five knots need ⌈log₂ 5⌉ = 3 steps as well, two knots one: 12 + 2.6 + 8 + 15 and + 5.
+        close(of_maps(&[&map(&[3.0], 5, true)], 1, 0.1).instructions, 42.0 + 37.6);
+        close(of_maps(&[&map(&[3.0], 2, true)], 1, 0.1).instructions, 42.0 + 27.6);
     }
 }

@@ -4,6 +4,7 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::sync::{Mutex, PoisonError};
 
 use super::board::Board;
 use super::timing::{parse_disassembly, Instruction};
@@ -44,6 +45,11 @@ impl Program {
         variables: &[(&str, &str)],
         copy: &str,
     ) -> Result<PathBuf, String> {
+        // One build and its copy at a time in this process: the tests run in one binary, and two
+        // builds of the same `bin` for the same board (other variables, another program in the same
+        // target folder) write the same file, which the copy must read as its own build left it.
+        static BUILDING: Mutex<()> = Mutex::new(());
+        let _building = BUILDING.lock().unwrap_or_else(PoisonError::into_inner);
         let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
         let mut command = Command::new(cargo);
         command

@@ -35,7 +35,7 @@ use crate::spec::Design;
 /// The first word (up to its first `_`, lower case) of every name the C interface appends to a
 /// design's `<name>_` or `<NAME>_`, besides the observer kinds' names ([`c_name_clash`] adds those
 /// from the registry): types, calls, enum values and macros of the C source's header, of the Rust
-/// static library's header and its symbols. `tests/tests/c_source.rs` checks that every name in
+/// static library's header and its symbols. `tests/tests/integration/c_source.rs` checks that every name in
 /// every emitted header starts with one of them, so that a new suffix cannot slip past the check.
 pub const C_SUFFIX_WORDS: &[&str] = &[
     "bad",

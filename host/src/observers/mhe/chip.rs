@@ -1,6 +1,6 @@
 //! The moving-horizon estimate as the chip runs it ([`firmware::mhe::Observer`]): its
 //! constants for a design, and the host's run of the same arithmetic in `f32` or `f64` over a run
-//! (the report's `mhe` row; `tests/tests/generated_mhe.rs` checks it against the emitted
+//! (the report's `mhe` row; `tests/tests/integration/generated_mhe.rs` checks it against the emitted
 //! `MheObserver`, bit for bit).
 
 use firmware::{Plant, Rk4};

@@ -2,20 +2,78 @@
 //! estimates are those of the design in memory for every observer kind, and tables of another spec
 //! are refused.
 
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::OnceLock;
+
 use host::commands::{self, Estimation, Provenance, Simulation};
 use host::observers::kind::KindConstants;
 use host::recording::Precision;
-use host::spec::ObserverKind;
+use host::spec::{Design, ObserverKind};
 use host::tables::Tables;
 use indicatif::ProgressBar;
 
+/// Example 1 emitted as `gen` emits it, its tables saved to `design.json` in a temporary folder, and a
+/// recording of the plant: once per process, for every case below (which write files of their own
+/// beside them, never over them).
+struct Saved {
+    spec: PathBuf,
+    design: Design,
+    in_memory: Tables,
+    scratch: PathBuf,
+    /// `design.json`, as saved.
+    saved: PathBuf,
+    /// A run of the plant from (2, 0.5), 120 samples.
+    recording: PathBuf,
+    /// Cases that have finished: the last of [`Saved::CASES`] removes the scratch folder.
+    finished: AtomicUsize,
+}
+
+impl Saved {
+    const CASES: usize = 5;
+
+    fn finish(&self) {
+        if self.finished.fetch_add(1, Ordering::SeqCst) + 1 == Self::CASES {
+            std::fs::remove_dir_all(&self.scratch).unwrap();
+        }
+    }
+}
+
+fn saved() -> &'static Saved {
+    static SAVED: OnceLock<Saved> = OnceLock::new();
+    SAVED.get_or_init(|| {
+        let root = integration_tests::workspace_root();
+        let spec = root.join("host/specs/vanderpol.toml");
+        let design = host::spec::load(&spec).unwrap();
+        let emitted = host::generate::emit_design(design.clone(), &spec, None, &ProgressBar::hidden()).unwrap();
+        let in_memory = Tables::of(&emitted.design, &emitted.result, &emitted.comparison, &emitted.source);
+        let scratch = std::env::temp_dir().join(format!("saved-tables-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&scratch);
+        std::fs::create_dir_all(&scratch).unwrap();
+        let saved = scratch.join(host::tables::FILE);
+        std::fs::write(&saved, in_memory.to_json()).unwrap();
+        let recording = scratch.join("run.csv");
+        let simulation = Simulation {
+            x0: Some(vec![2.0, 0.5]),
+            samples: Some(120),
+            seed: Some(11),
+        };
+        commands::simulate(&design, &simulation, &recording).unwrap();
+        Saved {
+            spec,
+            design,
+            in_memory,
+            scratch,
+            saved,
+            recording,
+            finished: AtomicUsize::new(0),
+        }
+    })
+}
+
 #[test]
-fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused() {
-    let root = integration_tests::workspace_root();
-    let spec = root.join("host/specs/vanderpol.toml");
-    let design = host::spec::load(&spec).unwrap();
-    let emitted = host::generate::emit_design(design.clone(), &spec, None, &ProgressBar::hidden()).unwrap();
-    let in_memory = Tables::of(&emitted.design, &emitted.result, &emitted.comparison, &emitted.source);
+fn saved_tables_hold_every_kind_and_survive_the_file_bit_for_bit() {
+    let Saved { in_memory, saved, .. } = saved();
     assert!([
         ObserverKind::Corrected,
         ObserverKind::EkfBox,
@@ -25,13 +83,8 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
     .into_iter()
     .all(|kind| in_memory.constants.has(kind)));
 
-    let scratch = std::env::temp_dir().join(format!("saved-tables-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&scratch);
-    std::fs::create_dir_all(&scratch).unwrap();
-    let saved = scratch.join(host::tables::FILE);
-    std::fs::write(&saved, in_memory.to_json()).unwrap();
-    let read = Tables::read(&saved).unwrap().unwrap();
     // Every number survives the JSON bit for bit.
+    let read = Tables::read(saved).unwrap().unwrap();
     assert_eq!(read.to_json(), in_memory.to_json());
     for (a, b) in read.maps.iter().zip(&in_memory.maps) {
         let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
@@ -39,15 +92,21 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         assert_eq!(bits(&a.mu), bits(&b.mu));
     }
 
-    let recording = scratch.join("run.csv");
-    let simulation = Simulation {
-        x0: Some(vec![2.0, 0.5]),
-        samples: Some(120),
-        seed: Some(11),
-    };
-    commands::simulate(&design, &simulation, &recording).unwrap();
-    let rows = host::recording::read(&design, &recording).unwrap();
-    let code = host::generate::model_code(&design).unwrap();
+    self::saved().finish();
+}
+
+#[test]
+fn estimates_from_saved_tables_are_the_design_in_memorys_for_every_kind() {
+    let Saved {
+        design,
+        in_memory,
+        scratch,
+        saved,
+        recording,
+        ..
+    } = saved();
+    let rows = host::recording::read(design, recording).unwrap();
+    let code = host::generate::model_code(design).unwrap();
     let names: Vec<&str> = design.targets.iter().map(|t| t.name.as_str()).collect();
     let csv = host::recording::EstimatesCsv::new(&names, false, design.tau);
     for kind in [
@@ -64,13 +123,13 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         let how = Estimation {
             kind,
             precision: Precision::F64,
-            tables: Some(&saved),
+            tables: Some(saved),
         };
-        let provenance = commands::estimate(&design, &recording, &out, how, &ProgressBar::hidden()).unwrap();
+        let provenance = commands::estimate(design, recording, &out, how, &ProgressBar::hidden()).unwrap();
         assert_eq!(provenance, Provenance::Saved(saved.clone()));
         // The design in memory (no file), through the same observers.
         let expected =
-            host::observers::recorded::estimate(&design, &in_memory, &code, kind, Precision::F64, &rows).unwrap();
+            host::observers::recorded::estimate(design, in_memory, &code, kind, Precision::F64, &rows).unwrap();
         assert_eq!(
             std::fs::read_to_string(&out).unwrap(),
             host::recording::estimates_csv(&csv, &rows, &expected),
@@ -78,9 +137,21 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         );
     }
 
-    // `--precision f32` is the generated observer (the emitted code, compiled for this host) bit for
-    // bit, flags included, over the recording with a refused sample.
-    let text = std::fs::read_to_string(&recording).unwrap();
+    self::saved().finish();
+}
+
+/// `--precision f32` is the generated observer (the emitted code, compiled for this host) bit for
+/// bit, flags included, over the recording with a refused sample.
+#[test]
+fn f32_estimates_from_saved_tables_are_the_generated_observers_bits() {
+    let Saved {
+        design,
+        scratch,
+        saved,
+        recording,
+        ..
+    } = saved();
+    let text = std::fs::read_to_string(recording).unwrap();
     let with_nan: String = text
         .lines()
         .enumerate()
@@ -95,7 +166,7 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         .collect();
     let refused = scratch.join("refused.csv");
     std::fs::write(&refused, with_nan).unwrap();
-    let rows = host::recording::read(&design, &refused).unwrap();
+    let rows = host::recording::read(design, &refused).unwrap();
     assert!(rows[39].y[0].is_nan());
     use generated::vanderpol as d;
     fn chip<O>(
@@ -177,9 +248,9 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         let how = Estimation {
             kind,
             precision: Precision::F32,
-            tables: Some(&saved),
+            tables: Some(saved),
         };
-        commands::estimate(&design, &refused, &out, how, &ProgressBar::hidden()).unwrap();
+        commands::estimate(design, &refused, &out, how, &ProgressBar::hidden()).unwrap();
         let written = std::fs::read_to_string(&out).unwrap();
         let lines: Vec<&str> = written.lines().skip(1).collect();
         assert_eq!(lines.len(), expected.len());
@@ -197,13 +268,29 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
             precision: Precision::F64,
             ..how
         };
-        commands::estimate(&design, &refused, &f64_out, how, &ProgressBar::hidden()).unwrap();
+        commands::estimate(design, &refused, &f64_out, how, &ProgressBar::hidden()).unwrap();
         assert_ne!(std::fs::read_to_string(&f64_out).unwrap(), written, "{kind:?}");
     }
 
-    // Tables edited by hand are refused on every read; tables whose hash was fixed up after an edit
-    // that breaks them (fewer maps than targets, an empty K, a short start) are refused by name, not
-    // by a panic.
+    self::saved().finish();
+}
+
+/// Tables edited by hand are refused on every read; tables whose hash was fixed up after an edit
+/// that breaks them (fewer maps than targets, an empty K, a short start) are refused by name, not by
+/// a panic.
+#[test]
+fn tables_edited_by_hand_or_broken_by_an_edit_are_refused() {
+    let Saved {
+        design,
+        in_memory,
+        scratch,
+        recording,
+        ..
+    } = saved();
+    // A file of their own (the saved one stays as saved for the other cases).
+    let folder = scratch.join("edited");
+    std::fs::create_dir_all(&folder).unwrap();
+    let saved = folder.join(host::tables::FILE);
     let mut edited = in_memory.clone();
     edited.maps[0].gains[0] *= 1.01;
     std::fs::write(&saved, edited.to_json()).unwrap();
@@ -242,8 +329,8 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
             precision: Precision::F64,
             tables: Some(&saved),
         };
-        let out = scratch.join("broken.csv");
-        let error = commands::estimate(&design, &recording, &out, how, &ProgressBar::hidden())
+        let out = folder.join("broken.csv");
+        let error = commands::estimate(design, recording, &out, how, &ProgressBar::hidden())
             .unwrap_err()
             .to_string();
         assert!(
@@ -252,23 +339,33 @@ fn estimates_from_saved_tables_are_the_fitted_designs_and_stale_ones_are_refused
         );
         assert!(!out.exists());
     }
-    std::fs::write(&saved, in_memory.to_json()).unwrap();
+    self::saved().finish();
+}
 
-    // Tables of another spec text (a comment added) are refused, naming both files.
+/// Tables of another spec text (a comment added) are refused, naming both files.
+#[test]
+fn tables_of_another_spec_text_are_refused() {
+    let Saved {
+        spec,
+        scratch,
+        saved,
+        recording,
+        ..
+    } = saved();
     let edited = scratch.join("vanderpol.toml");
-    std::fs::write(&edited, std::fs::read_to_string(&spec).unwrap() + "# edited\n").unwrap();
+    std::fs::write(&edited, std::fs::read_to_string(spec).unwrap() + "# edited\n").unwrap();
     let other = host::spec::load(&edited).unwrap();
     let how = Estimation {
         kind: ObserverKind::Map,
         precision: Precision::F64,
-        tables: Some(&saved),
+        tables: Some(saved),
     };
-    let error = commands::estimate(&other, &recording, &scratch.join("x.csv"), how, &ProgressBar::hidden())
+    let error = commands::estimate(&other, recording, &scratch.join("x.csv"), how, &ProgressBar::hidden())
         .unwrap_err()
         .to_string();
     assert!(
         error.contains("design.json") && error.contains("vanderpol.toml") && error.contains("gen"),
         "{error}"
     );
-    std::fs::remove_dir_all(&scratch).unwrap();
+    self::saved().finish();
 }

@@ -2,28 +2,48 @@
 
 use std::process::Command;
 
+/// `mho gen --verbose` of Example 1 into a temporary folder, once per process: the folder, what it
+/// printed and its `report.json`.
+struct Generated {
+    reports: std::path::PathBuf,
+    stdout: String,
+    json: serde_json::Value,
+}
+
+fn generated() -> &'static Generated {
+    static GENERATED: std::sync::OnceLock<Generated> = std::sync::OnceLock::new();
+    GENERATED.get_or_init(|| {
+        let reports = std::env::temp_dir().join(format!("host-cli-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&reports);
+        let spec = concat!(env!("CARGO_MANIFEST_DIR"), "/specs/vanderpol.toml");
+        let output = Command::new(env!("CARGO_BIN_EXE_mho"))
+            .args(["gen", "--verbose", "--spec", spec, "--reports"])
+            .arg(&reports)
+            .arg("--generated")
+            .arg(reports.join("generated"))
+            .output()
+            .unwrap();
+        assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+        let stdout = String::from_utf8_lossy(&output.stdout).into_owned();
+        let json =
+            serde_json::from_str(&std::fs::read_to_string(reports.join("vanderpol/report.json")).unwrap()).unwrap();
+        Generated { reports, stdout, json }
+    })
+}
+
 #[test]
-fn gen_writes_the_report_and_prints_a_summary() {
-    let reports = std::env::temp_dir().join(format!("host-cli-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&reports);
-    let spec = concat!(env!("CARGO_MANIFEST_DIR"), "/specs/vanderpol.toml");
-    let output = Command::new(env!("CARGO_BIN_EXE_mho"))
-        .args(["gen", "--verbose", "--spec", spec, "--reports"])
-        .arg(&reports)
-        .arg("--generated")
-        .arg(reports.join("generated"))
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&output.stdout);
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+fn gen_verbose_prints_the_reports_tables() {
+    let stdout = &generated().stdout;
     // With --verbose, the report's tables.
     assert!(
         stdout.contains("n_E = 1456") && stdout.contains("| x1 |") && stdout.contains("| x2 |"),
         "{stdout}"
     );
+}
 
-    let json: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(reports.join("vanderpol/report.json")).unwrap()).unwrap();
+#[test]
+fn gen_prints_a_summary_of_report_json() {
+    let Generated { reports, stdout, json } = generated();
     // The summary: the chosen observer with its validation RMSE as report.json records them, the
     // map's beside it, and where the report is.
     let chosen = json["observer"][0].as_str().unwrap();
@@ -108,6 +128,11 @@ fn gen_writes_the_report_and_prints_a_summary() {
         lines.next().unwrap(),
         format!("  report: {}", reports.join("vanderpol/report.md").display())
     );
+}
+
+#[test]
+fn report_json_holds_the_fits_figures() {
+    let json = &generated().json;
     assert_eq!(json["learning"]["windows"], 1456);
     for target in json["targets"].as_array().unwrap() {
         for key in ["rmse_learning", "rmse_validation", "max_error_validation"] {
@@ -122,6 +147,11 @@ fn gen_writes_the_report_and_prints_a_summary() {
         assert!(qp["active_constraints"].as_u64().unwrap() <= qp["constraints"].as_u64().unwrap());
         assert!(qp["collapsed"].is_boolean());
     }
+}
+
+#[test]
+fn gen_draws_the_papers_figures_titled_and_labelled() {
+    let reports = &generated().reports;
     // The paper's figures, as PNG and SVG, titled with the design and labelled with names and units.
     for figure in ["measurements", "identification", "estimation"] {
         let png = std::fs::read(reports.join(format!("vanderpol/{figure}.png"))).unwrap();
@@ -137,6 +167,11 @@ fn gen_writes_the_report_and_prints_a_summary() {
     }
     let svg = std::fs::read_to_string(reports.join("vanderpol/measurements.svg")).unwrap();
     assert!(svg.contains("time [s]") && svg.contains("noise variance 0.2"));
+}
+
+#[test]
+fn gen_emits_the_observer_and_report_md_where_asked_and_no_temporary_file() {
+    let reports = &generated().reports;
     let markdown = std::fs::read_to_string(reports.join("vanderpol/report.md")).unwrap();
     // The observer is emitted where it was asked for, with a lib.rs declaring it.
     let emitted = std::fs::read_to_string(reports.join("generated/src/vanderpol.rs")).unwrap();

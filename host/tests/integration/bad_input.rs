@@ -9,7 +9,7 @@ use host::fit::qp::{self, Problem};
 use host::spec::{self, SpecError};
 use nalgebra::DMatrix;
 
-const EXAMPLE: &str = include_str!("../specs/vanderpol.toml");
+const EXAMPLE: &str = include_str!("../../specs/vanderpol.toml");
 
 /// The shipped Example 1 with one edit, which must be present.
 fn edited(from: &str, to: &str) -> String {

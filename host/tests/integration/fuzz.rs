@@ -9,8 +9,8 @@ use std::path::Path;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 
-const VANDERPOL: &str = include_str!("../specs/vanderpol.toml");
-const ECOLI: &str = include_str!("../specs/ecoli_x0_2.toml");
+const VANDERPOL: &str = include_str!("../../specs/vanderpol.toml");
+const ECOLI: &str = include_str!("../../specs/ecoli_x0_2.toml");
 
 fn cases() -> u32 {
     std::env::var("FUZZ_CASES")

@@ -158,12 +158,6 @@ fn every_designs_c_observers_compile_without_warnings_and_give_the_rust_bits() {
     assert!(ran.len() >= cases.len() || std::env::var_os("CI").is_none(), "{ran:?}");
 }
 
-/// The fixture whose tables have searched knots (see `integration_tests::SEARCHED_FIXTURE_SPEC`).
-#[rustfmt::skip]
-#[path = "../fixtures/vanderpol_beta7.rs"]
-#[allow(dead_code)]
-mod vanderpol_beta7;
-
 /// No shipped design has searched knots: the fixture's C map, emitted here, takes the branch-free
 /// search as its Rust file does. Nor constants a spec fixes: the fixture's C EKF has its spec's full
 /// `Q`, `P(0)` and start, its C UKF its spec's `P(0)`, each with its Rust observer's bits.
@@ -182,19 +176,19 @@ fn searched_knots_in_c_give_the_rust_bits() {
             crate::vanderpol_beta7,
             "vanderpol_beta7",
             "map",
-            vanderpol_beta7::map_observer()
+            crate::vanderpol_beta7::map_observer()
         ),
         integration_tests::c_case!(
             crate::vanderpol_beta7,
             "vanderpol_beta7",
             "ekf_box",
-            vanderpol_beta7::EkfBoxObserver::new()
+            crate::vanderpol_beta7::EkfBoxObserver::new()
         ),
         integration_tests::c_case!(
             crate::vanderpol_beta7,
             "vanderpol_beta7",
             "ukf_box",
-            vanderpol_beta7::UkfBoxObserver::new()
+            crate::vanderpol_beta7::UkfBoxObserver::new()
         ),
     ];
     let ran = check_on_host(&cases, &dir, &dir);

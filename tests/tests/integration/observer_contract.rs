@@ -105,12 +105,7 @@ macro_rules! contract {
 
 generated::for_each_design!(contract);
 
-/// The fixture whose tables have searched knots (see `integration_tests::SEARCHED_FIXTURE_SPEC`).
-#[rustfmt::skip]
-#[path = "../fixtures/vanderpol_beta7.rs"]
-#[allow(dead_code)]
-mod vanderpol_beta7_tables;
-contract!(vanderpol_beta7, crate::vanderpol_beta7_tables);
+contract!(vanderpol_beta7, crate::vanderpol_beta7);
 
 /// Every observer kind of every design driven through the one trait, [`firmware::Estimator`], by a
 /// generic function (as a firmware written against the trait drives it): the same acceptance,

@@ -9,6 +9,7 @@
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::sync::{Mutex, MutexGuard, OnceLock, PoisonError};
 
 /// Every file under `folder` with its bytes, sorted.
 fn snapshot(folder: &Path) -> Vec<(PathBuf, Vec<u8>)> {
@@ -81,33 +82,108 @@ fn cargo(folder: &Path, args: &[&str]) {
     );
 }
 
+/// The walkthrough's crate: a user's spec, outside the repository (Example 1 under another name: the
+/// same data and fits, so its observer is `generated::vanderpol`'s, which the C program is held
+/// against), made a crate by `gen --spec` as a user types it (the README's tour), once per process.
+/// Each case below holds it while it runs (one rewrites its files and puts them back), and ends by
+/// checking that the repository is as it was before the walkthrough.
+struct Walkthrough {
+    root: PathBuf,
+    scratch: PathBuf,
+    spec: PathBuf,
+    /// The spec's text.
+    text: String,
+    /// The crate.
+    out: PathBuf,
+    generated_before: Vec<(PathBuf, Vec<u8>)>,
+    status_before: String,
+    /// Cases that have finished: the last of [`Walkthrough::CASES`] removes the scratch folder.
+    finished: usize,
+}
+
+impl Walkthrough {
+    const CASES: usize = 6;
+
+    fn generate() -> Self {
+        let root = integration_tests::workspace_root();
+        let generated_before = snapshot(&root.join("generated"));
+        let status_before = git_status(&root);
+        let scratch = std::env::temp_dir().join(format!("standalone-test-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&scratch);
+        std::fs::create_dir_all(&scratch).unwrap();
+        let spec = scratch.join("my_oscillator.toml");
+        let text =
+            integration_tests::spec_text("vanderpol").replacen("name = \"vanderpol\"", "name = \"my_oscillator\"", 1);
+        assert!(text.contains("name = \"my_oscillator\""));
+        std::fs::write(&spec, &text).unwrap();
+        let out = scratch.join("crate");
+        host(&[
+            "gen",
+            "--spec",
+            s(&spec),
+            "--out",
+            s(&out),
+            "--runtime-path",
+            s(&root.join("firmware")),
+            "--strict",
+        ]);
+        // The C program the C cases build (against the library, the source, for the board).
+        std::fs::write(scratch.join("replay.c"), replay_source()).unwrap();
+        Walkthrough {
+            root,
+            scratch,
+            spec,
+            text,
+            out,
+            generated_before,
+            status_before,
+            finished: 0,
+        }
+    }
+
+    /// The crate's one C99 source file (`c-source/*.c`).
+    fn c_source(&self) -> PathBuf {
+        let sources: Vec<PathBuf> = std::fs::read_dir(self.out.join("c-source"))
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_some_and(|e| e == "c"))
+            .collect();
+        assert_eq!(sources.len(), 1, "{sources:?}");
+        sources[0].clone()
+    }
+
+    /// The project's generated crate is untouched, byte for byte, nor anything else of the
+    /// repository; the last case to finish removes the scratch folder.
+    fn finish(&mut self) {
+        assert!(
+            self.generated_before == snapshot(&self.root.join("generated")),
+            "gen --spec changed generated/"
+        );
+        assert_eq!(
+            git_status(&self.root),
+            self.status_before,
+            "the walkthrough changed the repository"
+        );
+        self.finished += 1;
+        if self.finished == Self::CASES {
+            std::fs::remove_dir_all(&self.scratch).unwrap();
+        }
+    }
+}
+
+/// The walkthrough, generated on first use; held until the case ends.
+fn walkthrough() -> MutexGuard<'static, Walkthrough> {
+    static WALKTHROUGH: OnceLock<Mutex<Walkthrough>> = OnceLock::new();
+    WALKTHROUGH
+        .get_or_init(|| Mutex::new(Walkthrough::generate()))
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner)
+}
+
 #[test]
-fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone() {
-    let root = integration_tests::workspace_root();
-    let generated_before = snapshot(&root.join("generated"));
-    let status_before = git_status(&root);
-    let scratch = std::env::temp_dir().join(format!("standalone-test-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&scratch);
-    std::fs::create_dir_all(&scratch).unwrap();
-    // A user's spec, outside the repository: Example 1 under another name (the same data and fits, so
-    // its observer is `generated::vanderpol`'s, which the C program is held against).
-    let spec = scratch.join("my_oscillator.toml");
-    let text =
-        integration_tests::spec_text("vanderpol").replacen("name = \"vanderpol\"", "name = \"my_oscillator\"", 1);
-    assert!(text.contains("name = \"my_oscillator\""));
-    std::fs::write(&spec, &text).unwrap();
-    let out = scratch.join("crate");
-    // The walkthrough of the README's tour, as a user types it.
-    host(&[
-        "gen",
-        "--spec",
-        s(&spec),
-        "--out",
-        s(&out),
-        "--runtime-path",
-        s(&root.join("firmware")),
-        "--strict",
-    ]);
+fn the_users_crate_has_its_files_its_spec_and_a_licence_statement() {
+    let mut w = walkthrough();
+    let (out, text) = (&w.out, &w.text);
     for file in [
         "Cargo.toml",
         "README.md",
@@ -120,7 +196,7 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
     ] {
         assert!(out.join(file).is_file(), "{file} missing");
     }
-    assert_eq!(std::fs::read_to_string(out.join("spec.toml")).unwrap(), text);
+    assert_eq!(std::fs::read_to_string(out.join("spec.toml")).unwrap(), *text);
     let source = std::fs::read_to_string(out.join("src/my_oscillator.rs")).unwrap();
     assert!(source.contains("pub const SPEC: &str = \"spec.toml\";"));
     assert!(source.contains("my_oscillator_observer::my_oscillator::observer()"));
@@ -155,37 +231,49 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
             "{file}: no licence statement"
         );
     }
+    w.finish();
+}
 
-    // It builds for the Cortex-M4F and its doc example runs, with no workspace around it.
+/// It builds for the Cortex-M4F and its doc example runs, with no workspace around it.
+#[test]
+fn the_users_crate_builds_for_the_cortex_m4f_and_its_doc_example_runs() {
+    let mut w = walkthrough();
+    let out = &w.out;
     cargo(
-        &out,
+        out,
         &["build", "--offline", "--release", "--target", "thumbv7em-none-eabihf"],
     );
-    cargo(&out, &["test", "--offline", "--doc"]);
+    cargo(out, &["test", "--offline", "--doc"]);
+    w.finish();
+}
 
-    // Its observers as C99 source (the route without a Rust toolchain) compile without a warning
-    // under the strict flags (their bits: `c_source.rs`, on the shipped designs).
-    let sources: Vec<PathBuf> = std::fs::read_dir(out.join("c-source"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "c"))
-        .collect();
-    assert_eq!(sources.len(), 1, "{sources:?}");
+/// Its observers as C99 source (the route without a Rust toolchain) compile without a warning under
+/// the strict flags (their bits: `c_source.rs`, on the shipped designs).
+#[test]
+fn the_users_c_source_compiles_without_a_warning() {
+    let mut w = walkthrough();
+    let scratch = &w.scratch;
     let built = Command::new("cc")
         .args(integration_tests::on_target::STRICT_C_FLAGS)
         .args(["-O2", "-c", "-o"])
         .arg(scratch.join("c-source.o"))
-        .arg(&sources[0])
+        .arg(w.c_source())
         .output()
         .unwrap();
     assert!(built.status.success(), "cc: {}", String::from_utf8_lossy(&built.stderr));
+    w.finish();
+}
 
-    // Its C library, linked into a C program by the system's compiler: the Rust observer's bits.
+/// Its C library, linked into a C program by the system's compiler, and its C source in the same
+/// program: the Rust observer's bits.
+#[test]
+fn the_users_c_library_and_c_source_give_the_rust_bits() {
+    let mut w = walkthrough();
+    let (out, scratch) = (&w.out, &w.scratch);
     let c = out.join("c");
     cargo(&c, &["build", "--offline", "--release"]);
     let library = target_folder().join("release/libmy_oscillator_observer_c.a");
     let program = scratch.join("replay");
-    std::fs::write(scratch.join("replay.c"), replay_source()).unwrap();
     // With AddressSanitizer and UndefinedBehaviorSanitizer where the toolchain has them: a call that
     // reads or writes beyond the storage the program gave it stops the program.
     let compile = |sanitizers: &[&str]| {
@@ -234,7 +322,7 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
         .args(["-std=c99", "-Wall", "-Werror", "-O1", "-ffp-contract=off", "-o"])
         .arg(&from_source)
         .arg(scratch.join("replay.c"))
-        .arg(&sources[0])
+        .arg(w.c_source())
         .arg("-I")
         .arg(out.join("c-source"))
         .arg("-lm")
@@ -252,9 +340,16 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
         printed,
         "the C source against the library"
     );
+    w.finish();
+}
 
-    // The same C program for the Cortex-M4F, by arm-none-eabi-gcc against the library built for
-    // thumbv7em, on the emulated board (semihosting prints): the same bits.
+/// The same C program for the Cortex-M4F, by arm-none-eabi-gcc against the library built for
+/// thumbv7em, on the emulated board (semihosting prints): the same bits; then the crate measured
+/// there into its own README.
+#[test]
+fn the_users_c_program_gives_the_rust_bits_on_the_emulated_board_and_is_measured_there() {
+    let mut w = walkthrough();
+    let (root, out, scratch, spec) = (&w.root, &w.out, &w.scratch, &w.spec);
     if tool_missing("arm-none-eabi-gcc") || tool_missing("qemu-system-arm") {
         assert!(
             std::env::var_os("CI").is_none(),
@@ -262,6 +357,7 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
         );
         eprintln!("skipped the C program on the emulated Cortex-M4F: arm-none-eabi-gcc or qemu-system-arm missing");
     } else {
+        let c = out.join("c");
         cargo(
             &c,
             &["build", "--offline", "--release", "--target", "thumbv7em-none-eabihf"],
@@ -319,20 +415,26 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
             .output()
             .unwrap();
         assert!(run.status.success(), "qemu: {}", String::from_utf8_lossy(&run.stderr));
-        assert_eq!(String::from_utf8(run.stdout).unwrap(), printed);
+        assert_eq!(String::from_utf8(run.stdout).unwrap(), rust_replay());
 
-        measured_on_the_emulated_board(&spec, &out);
+        measured_on_the_emulated_board(spec, out);
     }
+    w.finish();
+}
 
-    // Recorded data: a run of the plant, then the design's estimates over it by the tables `gen` saved
-    // beside the crate, in the chip's f32: the Rust observer's bits.
+/// Recorded data: a run of the plant, then the design's estimates over it by the tables `gen` saved
+/// beside the crate, in the chip's f32: the Rust observer's bits; and its figure.
+#[test]
+fn the_users_saved_tables_estimate_a_recording_as_the_rust_observer_and_plot_it() {
+    let mut w = walkthrough();
+    let (out, scratch, spec) = (&w.out, &w.scratch, &w.spec);
     let run = scratch.join("run.csv");
-    host(&["simulate", "--spec", s(&spec), "--output", s(&run)]);
+    host(&["simulate", "--spec", s(spec), "--output", s(&run)]);
     let estimates = scratch.join("estimates.csv");
     host(&[
         "estimate",
         "--spec",
-        s(&spec),
+        s(spec),
         "--input",
         s(&run),
         "--output",
@@ -349,7 +451,7 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
     host(&[
         "plot",
         "--spec",
-        s(&spec),
+        s(spec),
         "--input",
         s(&run),
         "--estimates",
@@ -359,19 +461,7 @@ fn a_user_spec_becomes_a_crate_that_builds_on_its_own_and_leaves_generated_alone
         let bytes = std::fs::read(scratch.join(figure)).unwrap();
         assert!(bytes.len() > 10_000, "{figure}: {} bytes", bytes.len());
     }
-
-    // The project's generated crate is untouched, byte for byte.
-    assert!(
-        generated_before == snapshot(&root.join("generated")),
-        "gen --spec changed generated/"
-    );
-    // Nor anything else of the repository.
-    assert_eq!(
-        git_status(&root),
-        status_before,
-        "the walkthrough changed the repository"
-    );
-    std::fs::remove_dir_all(&scratch).unwrap();
+    w.finish();
 }
 
 /// `on-target-report -- --crate DIR` on the walkthrough's crate: every observer's figures go into the

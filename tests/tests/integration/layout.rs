@@ -26,7 +26,7 @@
 //! limit (`PATH OWN-LINES`) and one per circle (`cycle MODULE MODULE …`). The test fails on a file
 //! over its limit that is not listed, a listed file that grew past its count, a circle not within a
 //! listed one, and a listed line that no longer offends (delete it). `UPDATE_LAYOUT_DEBT=1 cargo
-//! test -p integration-tests --test layout` rewrites the file from the current state **only to
+//! test -p integration-tests --test integration layout` rewrites the file from the current state **only to
 //! shrink it**: fixed lines go, counts drop to today's, circles narrow; a new offender is never
 //! added and still fails. `UPDATE_LAYOUT_DEBT=accept` writes every current offender (the first list,
 //! or a debt accepted on purpose: the diff of the committed file shows it to the reviewer).
@@ -69,10 +69,10 @@ fn no_file_over_its_limit_and_no_import_circle() {
     }
     assert!(
         verdict.failures.is_empty(),
-        "\nthe layout rules of issue 31 fail (see tests/tests/layout.rs):\n{}\n\
+        "\nthe layout rules of issue 31 fail (see tests/tests/integration/layout.rs):\n{}\n\
          A new offender: split the file, or break the circle at one of its edges. A listed one that is\n\
          gone or smaller: delete or lower its line in {DEBT}, or run\n\
-         UPDATE_LAYOUT_DEBT=1 cargo test -p integration-tests --test layout (it only shrinks the list).\n",
+         UPDATE_LAYOUT_DEBT=1 cargo test -p integration-tests --test integration layout (it only shrinks the list).\n",
         verdict.failures
     );
 }
@@ -657,10 +657,10 @@ fn parse_debt(text: &str) -> (BTreeMap<String, usize>, Vec<BTreeSet<String>>) {
 
 fn render_debt(files: &[(String, usize, usize)], cycles: &[(Vec<String>, Vec<String>)]) -> String {
     let mut text = String::from(
-        "# Layout debt (issue 31), checked by tests/tests/layout.rs: the files over their limit of own\n\
+        "# Layout debt (issue 31), checked by tests/tests/integration/layout.rs: the files over their limit of own\n\
          # lines (400; main.rs 200) and the import circles allowed today. This list may only shrink:\n\
          # delete a line when its offence is gone, or run\n\
-         #   UPDATE_LAYOUT_DEBT=1 cargo test -p integration-tests --test layout\n\
+         #   UPDATE_LAYOUT_DEBT=1 cargo test -p integration-tests --test integration layout\n\
          # which rewrites it from the code but never adds an offender.\n",
     );
     for (file, count, _) in files {

@@ -151,18 +151,11 @@ check_filter!(ecoli_x0_0p5_filter_is_the_librarys, ecoli_x0_0p5);
 check_filter!(ecoli_x0_2_filter_is_the_librarys, ecoli_x0_2);
 check_filter!(two_tanks_filter_is_the_librarys, two_tanks);
 
-/// The fixture's EKF has the constants its spec fixes: a full `Q` and `P(0)` and its own start
-/// (`[observer.ekf]`), written out against the library filter with the same matrices.
-#[rustfmt::skip]
-#[path = "../fixtures/vanderpol_beta7.rs"]
-#[allow(dead_code)]
-mod vanderpol_beta7;
-
 check_filter!(a_fixed_full_q_and_p0_filter_is_the_librarys, crate::vanderpol_beta7);
 
 #[test]
 fn the_fixtures_filter_carries_the_constants_its_spec_fixes() {
-    use vanderpol_beta7 as d;
+    use crate::vanderpol_beta7 as d;
     // Written by hand from tests/fixtures/vanderpol_beta7.toml, `[observer.ekf]`.
     assert_eq!(d::EKF_Q, [[3.0e-5, 1.0e-5], [1.0e-5, 2.0e-3]]);
     let ekf = d::ekf();

@@ -79,12 +79,6 @@ fn generated_observers_agree_with_the_library() {
     generated::for_each_design!(compare_design);
 }
 
-/// The fixture whose tables have searched knots (see `integration_tests::SEARCHED_FIXTURE_SPEC`).
-#[rustfmt::skip]
-#[path = "../fixtures/vanderpol_beta7.rs"]
-#[allow(dead_code)]
-mod vanderpol_beta7;
-
 #[test]
 fn searched_knot_tables_agree_with_the_library() {
     compare_design!(crate::vanderpol_beta7);

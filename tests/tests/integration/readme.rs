@@ -6,13 +6,13 @@ use integration_tests::{build, design};
 
 #[test]
 fn readme_is_at_most_250_lines() {
-    let lines = include_str!("../../README.md").lines().count();
+    let lines = include_str!("../../../README.md").lines().count();
     assert!(lines <= 250, "README.md has {lines} lines: move the detail into docs/");
 }
 
 #[test]
 fn the_guides_spec_parses_and_builds() {
-    let guide = include_str!("../../docs/guide.md");
+    let guide = include_str!("../../../docs/guide.md");
     let start = guide.find("```toml\n").expect("a TOML block in docs/guide.md") + "```toml\n".len();
     let text = &guide[start..start + guide[start..].find("```").unwrap()];
     let d = design("guide", text);

@@ -216,7 +216,7 @@ fn the_readme_table_is_current(emitted: &generate::Emitted) {
 /// `tests/fixtures/vanderpol_beta7.rs`, compiled into the `generated_vs_library`, `generated_model`,
 /// `c_source` and `observer_contract` tests, and its C (`.h`, `.c`, compiled by `c_source`), are what
 /// `gen` produces for its spec now.
-/// `UPDATE_FIXTURES=1 cargo test -p integration-tests --test generated_is_current` rewrites them.
+/// `UPDATE_FIXTURES=1 cargo test -p integration-tests --test integration generated_is_current` rewrites them.
 #[test]
 fn the_searched_knot_fixture_is_current() {
     let path = workspace_root().join(SEARCHED_FIXTURE_SPEC);

@@ -8,7 +8,7 @@
 //! **Error sites.** `host/src/spec/` builds a [`SpecError`] at 42 places: 2 in `mod.rs` (`load` cannot
 //! read the file; `parse` gets a TOML/serde error), 21 `self.err(` in `validate.rs` and 19 in
 //! `validate_model.rs` (not counted: the body of `Validator::err` itself, and `Design::error`, which
-//! `data` and `fit` use after validation; `tests/bad_input.rs` covers those). Some sites are shared, so
+//! `data` and `fit` use after validation; `bad_input.rs` beside this file covers those). Some sites are shared, so
 //! the table counts branches, one per (site, caller or cause), 72 in all:
 //! - `identifier` (invalid, reserved) × its 6 callers (states, inputs, parameters, definitions,
 //!   outputs, targets): 12; `declare`'s "declared twice" × its 5 kinds of name: 5;
@@ -45,9 +45,9 @@ use std::path::{Path, PathBuf};
 
 use host::spec::{self, SpecError};
 
-const VANDERPOL: &str = include_str!("../specs/vanderpol.toml");
-const ECOLI_X0_0P5: &str = include_str!("../specs/ecoli_x0_0p5.toml");
-const ECOLI_X0_2: &str = include_str!("../specs/ecoli_x0_2.toml");
+const VANDERPOL: &str = include_str!("../../specs/vanderpol.toml");
+const ECOLI_X0_0P5: &str = include_str!("../../specs/ecoli_x0_0p5.toml");
+const ECOLI_X0_2: &str = include_str!("../../specs/ecoli_x0_2.toml");
 
 /// The shipped spec a case edits.
 #[derive(Clone, Copy, Debug)]

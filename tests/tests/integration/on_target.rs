@@ -7,16 +7,26 @@
 //! and RAM; no reachable panic. Without QEMU the test says so and passes, unless `CI` is set: CI must
 //! run it.
 
+use std::sync::OnceLock;
+
 use integration_tests::on_target::{self, Board, Kind, Measurements, ObserverKind, Unavailable};
 
-fn measurements() -> Option<Measurements> {
-    match on_target::measure_board(Board::Mps2An386) {
-        Ok(measurements) => Some(measurements),
+/// The board's measurements of every design, once per process (every case below reads them); `None`
+/// without QEMU (the case then says so and passes), unless `CI` is set. A failed measurement fails
+/// every case with its error.
+fn measurements() -> Option<&'static Measurements> {
+    static MEASURED: OnceLock<Result<Option<Measurements>, String>> = OnceLock::new();
+    let measured = MEASURED.get_or_init(|| match on_target::measure_board(Board::Mps2An386) {
+        Ok(measurements) => Ok(Some(measurements)),
         Err(missing @ Unavailable::Missing { .. }) if std::env::var_os("CI").is_none() => {
             println!("ON-TARGET TESTS DID NOT RUN: {missing}");
             eprintln!("ON-TARGET TESTS DID NOT RUN: {missing}");
-            None
+            Ok(None)
         }
+        Err(e) => Err(e.to_string()),
+    });
+    match measured {
+        Ok(measurements) => measurements.as_ref(),
         Err(e) => panic!("on-target measurements failed: {e}"),
     }
 }
@@ -29,9 +39,8 @@ const PAINTED: [(Kind, usize); 2] = [
 ];
 
 #[test]
-fn every_observer_on_the_emulated_cortex_m4f() {
+fn every_kind_of_every_design_ran_and_observer_is_one_of_them() {
     let Some(all) = measurements() else { return };
-
     // Every kind of every design ran, and `observer()` is one of them.
     for name in on_target::design_names() {
         let mut measured: Vec<Kind> = all
@@ -49,7 +58,11 @@ fn every_observer_on_the_emulated_cortex_m4f() {
             "{name}: observer() ({chosen:?}) did not run"
         );
     }
+}
 
+#[test]
+fn the_chip_gives_the_hosts_f32_bits() {
+    let Some(all) = measurements() else { return };
     // Bit for bit with the host running the same generated observer in f32 (IEEE-754 single
     // precision, round to nearest, no fused multiply-add on either side): every sample's acceptance,
     // whether there is an estimate, and each estimate's bits and saturation flag; for the EKF the
@@ -103,7 +116,11 @@ fn every_observer_on_the_emulated_cortex_m4f() {
         "the chip and the host (f32) differ:\n{}",
         differences.join("\n")
     );
+}
 
+#[test]
+fn the_bit_comparison_sees_one_flipped_bit() {
+    let Some(all) = measurements() else { return };
     // The comparison sees one bit: the last estimate of each observer with its lowest bit flipped
     // (and the EKF's last state) is reported, once.
     for (name, observers) in &all.observers {
@@ -128,7 +145,11 @@ fn every_observer_on_the_emulated_cortex_m4f() {
         let found = on_target::ekf_differences("flipped", &changed, &host);
         assert_eq!(found.len(), 1, "{name} ekf(): one flipped bit: {found:?}");
     }
+}
 
+#[test]
+fn each_observers_costs_and_distance_to_the_host_in_f64() {
+    let Some(all) = measurements() else { return };
     // Costs, and the distance to the host in f64.
     for (name, observers) in &all.observers {
         for (&kind, observer) in observers {
@@ -213,6 +234,11 @@ fn every_observer_on_the_emulated_cortex_m4f() {
             );
         }
     }
+}
+
+#[test]
+fn each_ekfs_costs_and_distance_to_the_host_in_f64() {
+    let Some(all) = measurements() else { return };
     for (name, filter) in &all.filters {
         let what = format!("{name} ekf()");
         assert_eq!(
@@ -251,11 +277,21 @@ fn every_observer_on_the_emulated_cortex_m4f() {
             filter.static_ram_bytes
         );
     }
+}
+
+#[test]
+fn every_family_observer_links_without_a_reachable_panic() {
+    let Some(all) = measurements() else { return };
     for family in generated::FAMILIES {
         let flash = all.family_flash_bytes[family];
         assert!(flash > 0, "family {family}");
         println!("family {family}: flash {flash} B, its probe links: no reachable panic");
     }
+}
+
+#[test]
+fn the_map_cost_model_holds_on_the_chip() {
+    let Some(all) = measurements() else { return };
     // The design search's cost model (`host::search::cost`) against the chip: every design's map,
     // its instructions per steady sample within the model's tolerance, its flash above the bound by
     // at most the measured spread of code sizes. The constants were calibrated on the designs shipped
@@ -290,6 +326,11 @@ fn every_observer_on_the_emulated_cortex_m4f() {
             map.flash_bytes
         );
     }
+}
+
+#[test]
+fn every_kinds_predicted_instructions_hold_on_the_chip() {
+    let Some(all) = measurements() else { return };
     // The cost model of every observer kind, as each generated design states it
     // (`PREDICTED_INSTRUCTIONS`), against the chip: what `auto` and the budget rely on.
     let mut predicted: std::collections::BTreeMap<&str, &[(&str, u32)]> = Default::default();
@@ -333,12 +374,22 @@ fn every_observer_on_the_emulated_cortex_m4f() {
             "{name} {kind}: the cost model predicts {prediction} instructions, the chip measures {measured}: recalibrate host/src/search/cost.rs"
         );
     }
+}
+
+#[test]
+fn the_no_panic_check_catches_a_reachable_panic() {
+    let Some(_) = measurements() else { return };
     assert!(
         on_target::panic_check_catches_a_reachable_panic().unwrap(),
         "the no-panic check did not catch a reachable panic"
     );
+}
+
+#[test]
+fn the_project_page_shows_what_the_chip_measures_now() {
+    let Some(all) = measurements() else { return };
     // The project's page shows what the chip measures now, figure for figure.
-    let (table, _) = integration_tests::chip_table::project_table(&all).unwrap();
+    let (table, _) = integration_tests::chip_table::project_table(all).unwrap();
     let path = integration_tests::workspace_root().join(integration_tests::chip_table::PAGE);
     let page = std::fs::read_to_string(&path).unwrap();
     assert!(
