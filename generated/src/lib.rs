@@ -139,30 +139,3 @@ macro_rules! for_each_fixed_observer {
         $crate::vanderpol_uncertain_observers!(fixed $callback);
     };
 }
-
-/// `new_observer!(design, kind)`: a fresh observer of `kind` (named as in [`for_each_observer!`]) of
-/// design module `design`; a kind the design lacks does not compile, and says which it has.
-#[macro_export]
-macro_rules! new_observer {
-    (ecoli_x0_0p5, $kind:ident) => {
-        $crate::ecoli_x0_0p5_observers!(new $kind)
-    };
-    (ecoli_x0_2, $kind:ident) => {
-        $crate::ecoli_x0_2_observers!(new $kind)
-    };
-    (two_tanks, $kind:ident) => {
-        $crate::two_tanks_observers!(new $kind)
-    };
-    (vanderpol, $kind:ident) => {
-        $crate::vanderpol_observers!(new $kind)
-    };
-    (vanderpol_searched, $kind:ident) => {
-        $crate::vanderpol_searched_observers!(new $kind)
-    };
-    (vanderpol_sparse, $kind:ident) => {
-        $crate::vanderpol_sparse_observers!(new $kind)
-    };
-    (vanderpol_uncertain, $kind:ident) => {
-        $crate::vanderpol_uncertain_observers!(new $kind)
-    };
-}

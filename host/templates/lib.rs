@@ -120,14 +120,3 @@ macro_rules! for_each_fixed_observer {
 {%- endfor %}
     };
 }
-
-/// `new_observer!(design, kind)`: a fresh observer of `kind` (named as in [`for_each_observer!`]) of
-/// design module `design`; a kind the design lacks does not compile, and says which it has.
-#[macro_export]
-macro_rules! new_observer {
-{%- for name in designs %}
-    ({{ name }}, $kind:ident) => {
-        $crate::{{ name }}_observers!(new $kind)
-    };
-{%- endfor %}
-}

@@ -50,7 +50,7 @@ fn main() {
     // ON_TARGET_KIND lists, comma-separated, the observers `on-target` runs one after the other, each
     // over the whole recorded sequence (kinds.rs, which `ekf` does not read): any kind the design
     // has, by its name (`map`, the default, `corrected`, `ekf_map`, …: the list `gen` wrote,
-    // `generated::new_observer!`, refuses one it lacks and names those it has), `observer` (the
+    // `<design>_observers!(new kind)` in its file, refuses one it lacks and names those it has), `observer` (the
     // design's chosen kind) or `fixed` (the integer observer, over the raw sequence).
     println!("cargo:rerun-if-env-changed=ON_TARGET_DESIGN");
     println!("cargo:rerun-if-env-changed=ON_TARGET_KIND");
@@ -116,7 +116,7 @@ fn main() {
 }
 
 /// The kind named `name` (read from `variable`): a name (of a kind, `observer` or `fixed`), which
-/// the design's list of kinds checks (`generated::new_observer!`).
+/// the design's list of kinds checks (`<design>_observers!(new kind)`, exported by its file).
 fn kind(name: &str, variable: &str) -> String {
     let valid = !name.is_empty() && name.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
     assert!(valid, "{variable}: {name:?} is not an observer kind's name (`map`, `ekf_box`, …, `observer`, `fixed`)");
@@ -131,7 +131,7 @@ fn fresh(design: &str, name: &str) -> String {
     } else if name == "map" {
         "d::map_observer()".to_owned()
     } else {
-        format!("generated::new_observer!({design}, {name})")
+        format!("generated::{design}_observers!(new {name})")
     }
 }
 

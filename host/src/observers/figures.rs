@@ -109,17 +109,6 @@ pub struct Beside {
     pub figures: ObserverFigures,
 }
 
-/// The EKF started by the map at `k = N − 1`, sharing the EKF's `Q` and `R`.
-#[derive(Clone, Debug)]
-pub struct Started {
-    /// `P(N−1)` diagonal: `factor` times the map's mean squared error per state on the tuning runs.
-    pub p0: Vec<f64>,
-    /// The factor, chosen on the tuning runs ([`super::ekf::tune_started`]).
-    pub factor: f64,
-    /// Each state's target.
-    pub state_targets: Vec<usize>,
-}
-
 /// The comparison of a design's observers.
 #[derive(Clone, Debug)]
 pub struct Comparison {

@@ -18,8 +18,9 @@ pub mod started;
 pub mod ukf;
 
 pub use choice::{check_before_fit, choose};
-pub use figures::{Beside, Comparison, Drift, Figures, FromObserverStart, ObserverFigures, Started, TRANSIENT_TIME};
+pub use figures::{Beside, Comparison, Drift, Figures, FromObserverStart, ObserverFigures, TRANSIENT_TIME};
 pub use kind::map_estimates;
+pub use kind::Started;
 pub use score::CHEAPER_WITHIN;
 
 use crate::fit::DesignResult;

@@ -19,7 +19,7 @@ mod mhe;
 mod ukf_box;
 
 pub use bench::{map_estimates, Bench};
-pub use tuned::{KindConstants, StartedConstants, Tuned, TunedConstants, TunedKinds};
+pub use tuned::{KindConstants, Started, StartedConstants, Tuned, TunedConstants, TunedKinds};
 
 mod bench;
 mod tuned;

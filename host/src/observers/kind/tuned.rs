@@ -10,13 +10,23 @@ use serde::de::{self, DeserializeSeed, MapAccess, Visitor};
 use serde::ser::SerializeMap;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
-use crate::observers::figures::Started;
 use crate::observers::mhe::{ChipConstants, ChipTuned};
 use crate::observers::restart::RestartConstants;
 use crate::observers::{corrected, ekf};
 use crate::plant::correction::CorrectionConstants;
 use crate::plant::kalman::EkfConstants;
 use crate::spec::ObserverKind;
+
+/// The EKF started by the map at `k = N − 1` as tuned (`ekf_map`), sharing the box EKF's `Q` and `R`.
+#[derive(Clone, Debug)]
+pub struct Started {
+    /// `P(N−1)` diagonal: `factor` times the map's mean squared error per state on the tuning runs.
+    pub p0: Vec<f64>,
+    /// The factor, chosen on the tuning runs ([`ekf::tune_started`]).
+    pub factor: f64,
+    /// Each state's target.
+    pub state_targets: Vec<usize>,
+}
 
 /// The map-started EKF's own constants (`ekf_map`): `P(N−1)`'s diagonal and each state's target; it
 /// runs on the box EKF's `Q` and `R`.
