@@ -308,27 +308,27 @@ fn manifest(design: &Design, runtime: &Runtime) -> String {
     )
 }
 
+/// `src/lib.rs`: the crate root over the design's module.
+#[derive(askama::Template)]
+#[template(path = "standalone/lib.rs", escape = "none")]
+struct Library<'a> {
+    name: &'a str,
+    description: String,
+    spec: &'static str,
+    version: &'static str,
+    licence: String,
+}
+
 /// `src/lib.rs`.
 fn library(design: &Design) -> String {
-    format!(
-        "//! The `{name}` observer: {description}\n\
-         //!\n\
-         //! Emitted by `mho gen --spec` from `{spec}` (mho {version}); its accuracy and cost are in\n\
-         //! README.md. Do not edit: change the spec and regenerate.\n\
-         {licence}\n\
-         #![no_std]\n\
-         \n\
-         pub use firmware;\n\
-         \n\
-         // Kept as `gen` writes it (regeneration is compared byte for byte).\n\
-         #[rustfmt::skip]\n\
-         pub mod {name};\n",
-        name = design.name,
-        description = crate::emit::doc_prose(&design.description),
-        spec = STANDALONE_SPEC,
-        version = env!("CARGO_PKG_VERSION"),
-        licence = crate::emit::licence_comment("//! "),
-    )
+    askama::Template::render(&Library {
+        name: &design.name,
+        description: crate::emit::doc_prose(&design.description),
+        spec: STANDALONE_SPEC,
+        version: env!("CARGO_PKG_VERSION"),
+        licence: crate::emit::licence_comment("//! "),
+    })
+    .expect("plain fields render")
 }
 
 /// The crate's folder of the observers as C99 source (`<name>.h`, `<name>.c`, [`crate::emit::c`]).
