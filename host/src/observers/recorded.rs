@@ -191,44 +191,34 @@ impl<'a> Setup<'a> {
     ) -> Follower<'s, T> {
         let literal = |v: f64| T::literal(v as f32, v);
         let (tables, constants) = (self.tables, &self.tables.constants);
+        // `Setup::new` refused a kind whose constants the tables lack (`Tables::missing`).
+        const CHECKED: &str = "Setup::new checked the kind's constants";
         match (self.kind, &self.filter, &self.programs) {
             (ObserverKind::EkfBox | ObserverKind::UkfBox, Some(filter), _) => {
                 let constants = match self.kind {
                     ObserverKind::EkfBox => constants.ekf_box(),
                     _ => constants.ukf_box(),
-                };
-                let Some(constants) = constants else {
-                    return Follower::Map;
-                };
+                }
+                .expect(CHECKED);
                 Follower::Box(ekf::BoxStep::new(filter, &constants.x0, &constants.p0, self.code))
             }
-            (ObserverKind::EkfMap, Some(filter), _) => match constants.ekf_map() {
-                Some(started) => Follower::Started(ekf::StartedStep::new(
-                    filter,
-                    &started.p0,
-                    &self.state_targets,
-                    tables.horizon - 1,
-                    self.code,
-                )),
-                None => Follower::Map,
-            },
-            (ObserverKind::EkfRestart, Some(filter), _) => {
-                match (constants.ekf_box(), constants.ekf_map(), constants.ekf_restart()) {
-                    (Some(ekf), Some(started), Some(restart)) => Follower::Restarted(super::restart::RestartStep::new(
-                        filter,
-                        ekf,
-                        &started.p0,
-                        restart,
-                        &self.state_targets,
-                        self.code,
-                    )),
-                    _ => Follower::Map,
-                }
-            }
+            (ObserverKind::EkfMap, Some(filter), _) => Follower::Started(ekf::StartedStep::new(
+                filter,
+                &constants.ekf_map().expect(CHECKED).p0,
+                &self.state_targets,
+                tables.horizon - 1,
+                self.code,
+            )),
+            (ObserverKind::EkfRestart, Some(filter), _) => Follower::Restarted(super::restart::RestartStep::new(
+                filter,
+                constants.ekf_box().expect(CHECKED),
+                &constants.ekf_map().expect(CHECKED).p0,
+                constants.ekf_restart().expect(CHECKED),
+                &self.state_targets,
+                self.code,
+            )),
             (ObserverKind::Corrected, _, Some(programs)) => {
-                let Some(constants) = constants.corrected() else {
-                    return Follower::Map;
-                };
+                let constants = constants.corrected().expect(CHECKED);
                 let clamps = self
                     .state_targets
                     .iter()
@@ -237,10 +227,11 @@ impl<'a> Setup<'a> {
                     .collect();
                 Follower::Corrected(corrected::CorrectedStep::new(setting, programs, constants), clamps)
             }
-            (ObserverKind::Mhe, _, _) => match constants.mhe() {
-                Some(chip) => Follower::Mhe(super::mhe::chip::chip_stepper::<T>(self.code, tables.horizon, chip)),
-                None => Follower::Map,
-            },
+            (ObserverKind::Mhe, _, _) => Follower::Mhe(super::mhe::chip::chip_stepper::<T>(
+                self.code,
+                tables.horizon,
+                constants.mhe().expect(CHECKED),
+            )),
             _ => Follower::Map,
         }
     }
