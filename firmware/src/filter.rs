@@ -1,6 +1,7 @@
 //! A Kalman filter that `gen` wrote out for a design (its EKF or its UKF, from the centre of the state
 //! box or the start the spec fixes) with the interface every observer has: [`FilterObserver`].
 
+use crate::rules::Refusals;
 use crate::{Estimate, RejectedSample, Saturation, Scalar};
 
 /// A filter written out by `gen` (`Ekf`, `Ukf` of a generated design): its state and covariance,
@@ -28,6 +29,7 @@ pub trait Filter<T, const NX: usize, const NY: usize, const NU: usize, const NT:
 pub struct FilterObserver<T, F, const NX: usize, const NY: usize, const NU: usize, const NT: usize> {
     filter: F,
     latest: Option<[Estimate<T>; NT]>,
+    refusals: Refusals,
 }
 
 impl<T, F, const NX: usize, const NY: usize, const NU: usize, const NT: usize> FilterObserver<T, F, NX, NY, NU, NT>
@@ -41,12 +43,14 @@ where
         FilterObserver {
             filter: F::FRESH,
             latest: None,
+            refusals: Refusals::NONE,
         }
     }
 
     /// Takes the sample `(y, u)`: the filter's sample, then the targets of its estimate `x̂(k|k)`.
     pub fn push(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
-        let x = self.filter.push(&y, &u)?;
+        let result = self.filter.push(&y, &u);
+        let x = self.refusals.count(result)?;
         let values = F::targets(&x, &u);
         let mut latest = [Estimate {
             value: T::ZERO,
@@ -74,6 +78,12 @@ where
     #[must_use]
     pub fn is_ready(&self) -> bool {
         self.latest.is_some()
+    }
+
+    /// Samples refused since the start (see [`crate::rules::Refusals`]).
+    #[must_use]
+    pub fn refused(&self) -> u32 {
+        self.refusals.get()
     }
 
     /// The filter as it is now (its state and covariance).

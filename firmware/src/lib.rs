@@ -112,6 +112,7 @@ pub mod mhe;
 mod model;
 mod observer;
 mod restarted;
+pub mod rules;
 mod scalar;
 mod started;
 mod window;

@@ -21,7 +21,8 @@
 
 use core::marker::PhantomData;
 
-use crate::started::targets_of;
+use crate::rules::{Refusals, RestartedRule};
+use crate::started::{states_of, targets_of};
 use crate::window::{Sample, Window};
 use crate::{Design, Estimate, Follower, RejectedSample, Scalar};
 
@@ -61,10 +62,11 @@ pub struct Restarted<
     F: Restart<T, NX, NY, NU, NT>,
 {
     window: Window<T, N, NY, NU>,
-    carried: F::Carried,
-    /// Whether the map has been checked (the window is no longer fed).
-    checked: bool,
+    /// What the filter carries and whether the map has been checked (the window is then no longer
+    /// fed): [`crate::rules::RestartedRule`].
+    rule: RestartedRule<F::Carried>,
     latest: Option<[Estimate<T>; NT]>,
+    refusals: Refusals,
     design: PhantomData<fn() -> D>,
 }
 
@@ -80,51 +82,58 @@ where
     pub const fn new() -> Self {
         Restarted {
             window: Window::new(),
-            carried: F::FRESH,
-            checked: false,
+            rule: RestartedRule::new(F::FRESH),
             latest: None,
+            refusals: Refusals::NONE,
             design: PhantomData,
         }
     }
 
-    /// Takes the sample of the current instant (see the type's docs).
+    /// Takes the sample of the current instant: refused if it is not finite (see the module docs);
+    /// else, before the first check, fed to the map's window and checked once the window is full;
+    /// then the filter's sample, unless the check restarted it.
     #[inline]
     pub fn push(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
+        let result = self.sample(y, u);
+        self.refusals.count(result)
+    }
+
+    /// [`push`](Self::push) but for the count of refusals: the shared rule over this design's map
+    /// and filter.
+    #[inline(always)]
+    fn sample(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
         if !D::accepts(&y, &u) {
             self.lost(&u);
             return Err(RejectedSample);
         }
-        if !self.checked && self.check(y, u) {
+        if !self.rule.checked && self.check(y, u) {
             return Ok(());
         }
-        let (next, states) = F::follow(&self.carried, 1, false, &[T::ZERO; NX], &y, &u).ok_or(RejectedSample)?;
-        self.carried = next;
+        let states = self
+            .rule
+            .follow(|carried| F::follow(carried, 1, false, &[T::ZERO; NX], &y, &u))?;
         self.latest = Some(targets_of::<T, F, NX, NY, NU, NT>(&states, &u));
         Ok(())
     }
 
-    /// Feeds the window; at its first estimate, checks the map and restarts from it when they
-    /// disagree. Returns whether it restarted (the sample is then done). Out of line and cold, so
-    /// that the steady samples' code is laid out as without it.
+    /// The one check (see the module docs): the sample fed to the window and, once it is full, the
+    /// map's states compared with the filter's prediction. `true` when the filter restarted from the
+    /// map (this sample's estimate is then the map's). Out of line and cold: it runs for the first
+    /// `N` accepted samples only.
     #[cold]
     #[inline(never)]
     fn check(&mut self, y: [T; NY], u: [T; NU]) -> bool {
-        self.window.push(Sample { y, u });
-        let Some(window) = self.window.samples() else {
-            return false; // fewer than N samples: the filter alone
-        };
-        self.checked = true;
-        let all = D::estimate(window);
-        let mut map = [T::ZERO; NX];
-        for (m, &t) in map.iter_mut().zip(&F::STATE_TARGETS) {
-            *m = all.get(t).map_or(T::ZERO, |e| e.value);
-        }
-        if !F::disagrees(&self.carried, &map) {
-            return false;
-        }
-        match F::start(&map, &u) {
-            Some(carried) => {
-                self.carried = carried;
+        let window = &mut self.window;
+        let restarted = self.rule.check(
+            || {
+                window.push(Sample { y, u });
+                window.samples().map(D::estimate)
+            },
+            |carried, all| F::disagrees(carried, &states_of::<T, F, NX, NY, NU, NT>(all)),
+            |all| F::start(&states_of::<T, F, NX, NY, NU, NT>(all), &u),
+        );
+        match restarted {
+            Some(all) => {
                 self.latest = Some(all);
                 true
             }
@@ -132,15 +141,20 @@ where
         }
     }
 
-    /// Over a refused sample with a finite input: the filter's prediction alone.
+    /// Over a refused sample: the output is lost, not the time (see [`crate::Started`]). Out of line
+    /// and cold.
     #[cold]
     #[inline(never)]
     fn lost(&mut self, u: &[T; NU]) {
-        if u.iter().all(|v| v.is_finite()) {
-            if let Some(next) = F::predict(&self.carried, u) {
-                self.carried = next;
-            }
-        }
+        crate::rules::lost(&mut self.rule.carried, u.iter().all(|v| v.is_finite()), |carried| {
+            F::predict(carried, u)
+        });
+    }
+
+    /// Samples refused since the start (see [`crate::rules::Refusals`]).
+    #[must_use]
+    pub fn refused(&self) -> u32 {
+        self.refusals.get()
     }
 
     /// The latest estimate, one per target, or `None` before the first accepted sample.
@@ -164,7 +178,7 @@ where
     /// Whether the map has been checked (`N` samples accepted).
     #[must_use]
     pub fn is_checked(&self) -> bool {
-        self.checked
+        self.rule.checked
     }
 }
 
@@ -189,9 +203,9 @@ where
     fn clone(&self) -> Self {
         Restarted {
             window: self.window.clone(),
-            carried: self.carried,
-            checked: self.checked,
+            rule: self.rule,
             latest: self.latest,
+            refusals: self.refusals,
             design: PhantomData,
         }
     }
@@ -207,7 +221,8 @@ where
         f.debug_struct("Restarted")
             .field("design", &core::any::type_name::<D>())
             .field("filter", &core::any::type_name::<F>())
-            .field("checked", &self.checked)
+            .field("checked", &self.rule.checked)
+            .field("refused", &self.refusals)
             .field("latest", &self.latest)
             .finish()
     }

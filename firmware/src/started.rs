@@ -19,6 +19,7 @@
 
 use core::marker::PhantomData;
 
+use crate::rules::{Given, Refusals, StartedRule};
 use crate::window::{Sample, Window};
 use crate::{Design, Estimate, RejectedSample, Saturation, Scalar};
 
@@ -110,6 +111,22 @@ where
     targets
 }
 
+/// The map's estimate of each state of the follower (target `STATE_TARGETS[i]` for state `i`).
+#[inline(always)]
+pub(crate) fn states_of<T, F, const NX: usize, const NY: usize, const NU: usize, const NT: usize>(
+    all: &[Estimate<T>; NT],
+) -> [T; NX]
+where
+    T: Scalar,
+    F: Follower<T, NX, NY, NU, NT>,
+{
+    let mut map = [T::ZERO; NX];
+    for (m, &t) in map.iter_mut().zip(&F::STATE_TARGETS) {
+        *m = all.get(t).map_or(T::ZERO, |e| e.value);
+    }
+    map
+}
+
 fn select<V>(condition: bool, a: V, b: V) -> V {
     core::hint::select_unpredictable(condition, a, b)
 }
@@ -129,10 +146,10 @@ where
     F: Follower<T, NX, NY, NU, NT>,
 {
     window: Window<T, N, NY, NU>,
-    carried: Option<F::Carried>,
-    /// Estimates so far, up to `START_UP + 1`.
-    count: usize,
+    /// What the follower carries and the estimates so far ([`crate::rules::StartedRule`]).
+    rule: StartedRule<F::Carried>,
     latest: Option<[Estimate<T>; NT]>,
+    refusals: Refusals,
     design: PhantomData<fn() -> D>,
 }
 
@@ -148,9 +165,9 @@ where
     pub const fn new() -> Self {
         Started {
             window: Window::new(),
-            carried: None,
-            count: 0,
+            rule: StartedRule::START,
             latest: None,
+            refusals: Refusals::NONE,
             design: PhantomData,
         }
     }
@@ -158,39 +175,40 @@ where
     /// Takes the sample of the current instant (see the type's docs).
     #[inline]
     pub fn push(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
+        let result = self.sample(y, u);
+        self.refusals.count(result)
+    }
+
+    /// [`push`](Self::push) but for the count of refusals: the shared rule over this design's map
+    /// and follower.
+    #[inline(always)]
+    fn sample(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
         if !D::accepts(&y, &u) {
             self.lost(&u);
             return Err(RejectedSample);
         }
-        let start_up = self.count <= F::START_UP;
-        let mut map = [T::ZERO; NX];
-        let mut estimates = None;
-        if start_up || F::STEADY_READS_MAP {
+        let mut all = None;
+        if self.rule.reads_map(F::START_UP, F::STEADY_READS_MAP) {
             self.window.push(Sample { y, u });
             let Some(window) = self.window.samples() else {
                 return Ok(()); // fewer than N samples: no estimate yet
             };
-            let all = D::estimate(window);
-            for (m, &t) in map.iter_mut().zip(&F::STATE_TARGETS) {
-                *m = all.get(t).map_or(T::ZERO, |e| e.value);
-            }
-            estimates = Some(all);
+            all = Some(D::estimate(window));
         }
-        match (&self.carried, estimates) {
-            (None, Some(first)) => {
-                let carried = F::start(&map, &u).ok_or(RejectedSample)?;
-                self.carried = Some(carried);
-                self.latest = Some(first);
-            }
-            (Some(carried), _) => {
-                let (next, states) = F::follow(carried, self.count, start_up, &map, &y, &u).ok_or(RejectedSample)?;
-                self.carried = Some(next);
-                self.latest = Some(targets_of::<T, F, NX, NY, NU, NT>(&states, &u));
-            }
-            // Unreachable: without a carried state the map is read, and the window is full here.
-            (None, None) => return Ok(()),
+        let given = self.rule.accepted(
+            F::START_UP,
+            all,
+            |all| F::start(&states_of::<T, F, NX, NY, NU, NT>(all), &u),
+            |carried, j, start_up, all| {
+                let map = all.map_or([T::ZERO; NX], states_of::<T, F, NX, NY, NU, NT>);
+                F::follow(carried, j, start_up, &map, &y, &u)
+            },
+        )?;
+        match given {
+            Given::Nothing => {}
+            Given::Map(all) => self.latest = Some(all),
+            Given::Followed(states) => self.latest = Some(targets_of::<T, F, NX, NY, NU, NT>(&states, &u)),
         }
-        self.count = if start_up { self.count + 1 } else { self.count };
         Ok(())
     }
 
@@ -200,13 +218,14 @@ where
     #[cold]
     #[inline(never)]
     fn lost(&mut self, u: &[T; NU]) {
-        if let Some(carried) = &self.carried {
-            if u.iter().all(|v| v.is_finite()) {
-                if let Some(next) = F::predict(carried, u) {
-                    self.carried = Some(next);
-                }
-            }
-        }
+        self.rule
+            .lost(u.iter().all(|v| v.is_finite()), |carried| F::predict(carried, u));
+    }
+
+    /// Samples refused since the start (see [`crate::rules::Refusals`]).
+    #[must_use]
+    pub fn refused(&self) -> u32 {
+        self.refusals.get()
     }
 
     /// The latest estimate, one per target, or `None` before `N` samples have arrived.
@@ -249,9 +268,9 @@ where
     fn clone(&self) -> Self {
         Started {
             window: self.window.clone(),
-            carried: self.carried,
-            count: self.count,
+            rule: self.rule,
             latest: self.latest,
+            refusals: self.refusals,
             design: PhantomData,
         }
     }
@@ -267,7 +286,8 @@ where
         f.debug_struct("Started")
             .field("design", &core::any::type_name::<D>())
             .field("follower", &core::any::type_name::<F>())
-            .field("estimates", &self.count)
+            .field("estimates", &self.rule.count)
+            .field("refused", &self.refusals)
             .field("latest", &self.latest)
             .finish()
     }

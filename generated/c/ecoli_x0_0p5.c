@@ -2001,13 +2001,13 @@ static int ekf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
-void ecoli_x0_0p5_ekf_box_init(ecoli_x0_0p5_ekf_box *o) {
+static void ekf_box_fresh(ecoli_x0_0p5_ekf_box *o) {
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
     o->ready = 0;
 }
 
-ecoli_x0_0p5_status ecoli_x0_0p5_ekf_box_push(ecoli_x0_0p5_ekf_box *o, const float *y, const float *u) {
+static ecoli_x0_0p5_status ekf_box_sample(ecoli_x0_0p5_ekf_box *o, const float *y, const float *u) {
     float estimate[ECOLI_X0_0P5_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -2026,6 +2026,19 @@ ecoli_x0_0p5_status ecoli_x0_0p5_ekf_box_push(ecoli_x0_0p5_ekf_box *o, const flo
     }
     o->ready = 1;
     return ECOLI_X0_0P5_OK;
+}
+
+void ecoli_x0_0p5_ekf_box_init(ecoli_x0_0p5_ekf_box *o) {
+    ekf_box_fresh(o);
+    o->refused = 0u;
+}
+
+ecoli_x0_0p5_status ecoli_x0_0p5_ekf_box_push(ecoli_x0_0p5_ekf_box *o, const float *y, const float *u) {
+    const ecoli_x0_0p5_status status = ekf_box_sample(o, y, u);
+    if (status == ECOLI_X0_0P5_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 ecoli_x0_0p5_status ecoli_x0_0p5_ekf_box_estimate(const ecoli_x0_0p5_ekf_box *o, float *values, ecoli_x0_0p5_saturation *saturation) {
@@ -4405,13 +4418,13 @@ static int ukf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
-void ecoli_x0_0p5_ukf_box_init(ecoli_x0_0p5_ukf_box *o) {
+static void ukf_box_fresh(ecoli_x0_0p5_ukf_box *o) {
     memcpy(o->x, UKF_X0, sizeof o->x);
     memcpy(o->p, UKF_P0, sizeof o->p);
     o->ready = 0;
 }
 
-ecoli_x0_0p5_status ecoli_x0_0p5_ukf_box_push(ecoli_x0_0p5_ukf_box *o, const float *y, const float *u) {
+static ecoli_x0_0p5_status ukf_box_sample(ecoli_x0_0p5_ukf_box *o, const float *y, const float *u) {
     float estimate[ECOLI_X0_0P5_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -4430,6 +4443,19 @@ ecoli_x0_0p5_status ecoli_x0_0p5_ukf_box_push(ecoli_x0_0p5_ukf_box *o, const flo
     }
     o->ready = 1;
     return ECOLI_X0_0P5_OK;
+}
+
+void ecoli_x0_0p5_ukf_box_init(ecoli_x0_0p5_ukf_box *o) {
+    ukf_box_fresh(o);
+    o->refused = 0u;
+}
+
+ecoli_x0_0p5_status ecoli_x0_0p5_ukf_box_push(ecoli_x0_0p5_ukf_box *o, const float *y, const float *u) {
+    const ecoli_x0_0p5_status status = ukf_box_sample(o, y, u);
+    if (status == ECOLI_X0_0P5_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 ecoli_x0_0p5_status ecoli_x0_0p5_ukf_box_estimate(const ecoli_x0_0p5_ukf_box *o, float *values, ecoli_x0_0p5_saturation *saturation) {

@@ -109,6 +109,8 @@ typedef struct {
     float values[ECOLI_X0_0P5_TARGETS];
     ecoli_x0_0p5_saturation flags[ECOLI_X0_0P5_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } ecoli_x0_0p5_ekf_box;
 
 void ecoli_x0_0p5_ekf_box_init(ecoli_x0_0p5_ekf_box *observer);
@@ -124,6 +126,8 @@ typedef struct {
     float values[ECOLI_X0_0P5_TARGETS];
     ecoli_x0_0p5_saturation flags[ECOLI_X0_0P5_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } ecoli_x0_0p5_ukf_box;
 
 void ecoli_x0_0p5_ukf_box_init(ecoli_x0_0p5_ukf_box *observer);

@@ -2894,13 +2894,13 @@ static int ekf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
-void ecoli_x0_2_ekf_box_init(ecoli_x0_2_ekf_box *o) {
+static void ekf_box_fresh(ecoli_x0_2_ekf_box *o) {
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
     o->ready = 0;
 }
 
-ecoli_x0_2_status ecoli_x0_2_ekf_box_push(ecoli_x0_2_ekf_box *o, const float *y, const float *u) {
+static ecoli_x0_2_status ekf_box_sample(ecoli_x0_2_ekf_box *o, const float *y, const float *u) {
     float estimate[ECOLI_X0_2_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -2919,6 +2919,19 @@ ecoli_x0_2_status ecoli_x0_2_ekf_box_push(ecoli_x0_2_ekf_box *o, const float *y,
     }
     o->ready = 1;
     return ECOLI_X0_2_OK;
+}
+
+void ecoli_x0_2_ekf_box_init(ecoli_x0_2_ekf_box *o) {
+    ekf_box_fresh(o);
+    o->refused = 0u;
+}
+
+ecoli_x0_2_status ecoli_x0_2_ekf_box_push(ecoli_x0_2_ekf_box *o, const float *y, const float *u) {
+    const ecoli_x0_2_status status = ekf_box_sample(o, y, u);
+    if (status == ECOLI_X0_2_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 ecoli_x0_2_status ecoli_x0_2_ekf_box_estimate(const ecoli_x0_2_ekf_box *o, float *values, ecoli_x0_2_saturation *saturation) {
@@ -5298,13 +5311,13 @@ static int ukf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
-void ecoli_x0_2_ukf_box_init(ecoli_x0_2_ukf_box *o) {
+static void ukf_box_fresh(ecoli_x0_2_ukf_box *o) {
     memcpy(o->x, UKF_X0, sizeof o->x);
     memcpy(o->p, UKF_P0, sizeof o->p);
     o->ready = 0;
 }
 
-ecoli_x0_2_status ecoli_x0_2_ukf_box_push(ecoli_x0_2_ukf_box *o, const float *y, const float *u) {
+static ecoli_x0_2_status ukf_box_sample(ecoli_x0_2_ukf_box *o, const float *y, const float *u) {
     float estimate[ECOLI_X0_2_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -5323,6 +5336,19 @@ ecoli_x0_2_status ecoli_x0_2_ukf_box_push(ecoli_x0_2_ukf_box *o, const float *y,
     }
     o->ready = 1;
     return ECOLI_X0_2_OK;
+}
+
+void ecoli_x0_2_ukf_box_init(ecoli_x0_2_ukf_box *o) {
+    ukf_box_fresh(o);
+    o->refused = 0u;
+}
+
+ecoli_x0_2_status ecoli_x0_2_ukf_box_push(ecoli_x0_2_ukf_box *o, const float *y, const float *u) {
+    const ecoli_x0_2_status status = ukf_box_sample(o, y, u);
+    if (status == ECOLI_X0_2_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 ecoli_x0_2_status ecoli_x0_2_ukf_box_estimate(const ecoli_x0_2_ukf_box *o, float *values, ecoli_x0_2_saturation *saturation) {

@@ -1684,13 +1684,13 @@ static int ekf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
-void two_tanks_ekf_box_init(two_tanks_ekf_box *o) {
+static void ekf_box_fresh(two_tanks_ekf_box *o) {
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
     o->ready = 0;
 }
 
-two_tanks_status two_tanks_ekf_box_push(two_tanks_ekf_box *o, const float *y, const float *u) {
+static two_tanks_status ekf_box_sample(two_tanks_ekf_box *o, const float *y, const float *u) {
     float estimate[TWO_TANKS_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -1709,6 +1709,19 @@ two_tanks_status two_tanks_ekf_box_push(two_tanks_ekf_box *o, const float *y, co
     }
     o->ready = 1;
     return TWO_TANKS_OK;
+}
+
+void two_tanks_ekf_box_init(two_tanks_ekf_box *o) {
+    ekf_box_fresh(o);
+    o->refused = 0u;
+}
+
+two_tanks_status two_tanks_ekf_box_push(two_tanks_ekf_box *o, const float *y, const float *u) {
+    const two_tanks_status status = ekf_box_sample(o, y, u);
+    if (status == TWO_TANKS_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 two_tanks_status two_tanks_ekf_box_estimate(const two_tanks_ekf_box *o, float *values, two_tanks_saturation *saturation) {
@@ -1766,7 +1779,7 @@ static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, cons
     return ekf_measure(x, p, y, u, states);
 }
 
-void two_tanks_ekf_map_init(two_tanks_ekf_map *o) {
+static void ekf_map_fresh(two_tanks_ekf_map *o) {
     two_tanks_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
@@ -1775,7 +1788,7 @@ void two_tanks_ekf_map_init(two_tanks_ekf_map *o) {
     o->ready = 0;
 }
 
-two_tanks_status two_tanks_ekf_map_push(two_tanks_ekf_map *o, const float *y, const float *u) {
+static two_tanks_status ekf_map_sample(two_tanks_ekf_map *o, const float *y, const float *u) {
     const int start_up = o->count <= 0u;
     float all[TWO_TANKS_TARGETS], map[TWO_TANKS_STATES], states[TWO_TANKS_STATES];
     two_tanks_saturation all_flags[TWO_TANKS_TARGETS], state_flags[TWO_TANKS_STATES];
@@ -1814,6 +1827,19 @@ two_tanks_status two_tanks_ekf_map_push(two_tanks_ekf_map *o, const float *y, co
     o->ready = 1;
     o->count = start_up ? o->count + 1u : o->count;
     return TWO_TANKS_OK;
+}
+
+void two_tanks_ekf_map_init(two_tanks_ekf_map *o) {
+    ekf_map_fresh(o);
+    o->refused = 0u;
+}
+
+two_tanks_status two_tanks_ekf_map_push(two_tanks_ekf_map *o, const float *y, const float *u) {
+    const two_tanks_status status = ekf_map_sample(o, y, u);
+    if (status == TWO_TANKS_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 two_tanks_status two_tanks_ekf_map_estimate(const two_tanks_ekf_map *o, float *values, two_tanks_saturation *saturation) {
@@ -1857,7 +1883,7 @@ static int restart_check(two_tanks_ekf_restart *o, const float *y, const float *
     return 1;
 }
 
-void two_tanks_ekf_restart_init(two_tanks_ekf_restart *o) {
+static void ekf_restart_fresh(two_tanks_ekf_restart *o) {
     two_tanks_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
@@ -1865,7 +1891,7 @@ void two_tanks_ekf_restart_init(two_tanks_ekf_restart *o) {
     o->ready = 0;
 }
 
-two_tanks_status two_tanks_ekf_restart_push(two_tanks_ekf_restart *o, const float *y, const float *u) {
+static two_tanks_status ekf_restart_sample(two_tanks_ekf_restart *o, const float *y, const float *u) {
     float states[TWO_TANKS_STATES];
     two_tanks_saturation state_flags[TWO_TANKS_STATES];
     if (!accepts(y, u)) {
@@ -1883,6 +1909,19 @@ two_tanks_status two_tanks_ekf_restart_push(two_tanks_ekf_restart *o, const floa
     started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     o->ready = 1;
     return TWO_TANKS_OK;
+}
+
+void two_tanks_ekf_restart_init(two_tanks_ekf_restart *o) {
+    ekf_restart_fresh(o);
+    o->refused = 0u;
+}
+
+two_tanks_status two_tanks_ekf_restart_push(two_tanks_ekf_restart *o, const float *y, const float *u) {
+    const two_tanks_status status = ekf_restart_sample(o, y, u);
+    if (status == TWO_TANKS_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 two_tanks_status two_tanks_ekf_restart_estimate(const two_tanks_ekf_restart *o, float *values, two_tanks_saturation *saturation) {
@@ -2704,13 +2743,13 @@ static int ukf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
-void two_tanks_ukf_box_init(two_tanks_ukf_box *o) {
+static void ukf_box_fresh(two_tanks_ukf_box *o) {
     memcpy(o->x, UKF_X0, sizeof o->x);
     memcpy(o->p, UKF_P0, sizeof o->p);
     o->ready = 0;
 }
 
-two_tanks_status two_tanks_ukf_box_push(two_tanks_ukf_box *o, const float *y, const float *u) {
+static two_tanks_status ukf_box_sample(two_tanks_ukf_box *o, const float *y, const float *u) {
     float estimate[TWO_TANKS_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -2729,6 +2768,19 @@ two_tanks_status two_tanks_ukf_box_push(two_tanks_ukf_box *o, const float *y, co
     }
     o->ready = 1;
     return TWO_TANKS_OK;
+}
+
+void two_tanks_ukf_box_init(two_tanks_ukf_box *o) {
+    ukf_box_fresh(o);
+    o->refused = 0u;
+}
+
+two_tanks_status two_tanks_ukf_box_push(two_tanks_ukf_box *o, const float *y, const float *u) {
+    const two_tanks_status status = ukf_box_sample(o, y, u);
+    if (status == TWO_TANKS_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 two_tanks_status two_tanks_ukf_box_estimate(const two_tanks_ukf_box *o, float *values, two_tanks_saturation *saturation) {
@@ -3035,7 +3087,7 @@ static void corrected_lost(float *x, const float *u) {
     (void)corrected_start(x, u, x);
 }
 
-void two_tanks_corrected_init(two_tanks_corrected *o) {
+static void corrected_fresh(two_tanks_corrected *o) {
     two_tanks_map_init(&o->window);
     memset(o->x, 0, sizeof o->x);
     o->count = 0u;
@@ -3043,7 +3095,7 @@ void two_tanks_corrected_init(two_tanks_corrected *o) {
     o->ready = 0;
 }
 
-two_tanks_status two_tanks_corrected_push(two_tanks_corrected *o, const float *y, const float *u) {
+static two_tanks_status corrected_sample(two_tanks_corrected *o, const float *y, const float *u) {
     const int start_up = o->count <= 30u;
     float all[TWO_TANKS_TARGETS], map[TWO_TANKS_STATES], states[TWO_TANKS_STATES];
     two_tanks_saturation all_flags[TWO_TANKS_TARGETS], state_flags[TWO_TANKS_STATES];
@@ -3082,6 +3134,19 @@ two_tanks_status two_tanks_corrected_push(two_tanks_corrected *o, const float *y
     o->ready = 1;
     o->count = start_up ? o->count + 1u : o->count;
     return TWO_TANKS_OK;
+}
+
+void two_tanks_corrected_init(two_tanks_corrected *o) {
+    corrected_fresh(o);
+    o->refused = 0u;
+}
+
+two_tanks_status two_tanks_corrected_push(two_tanks_corrected *o, const float *y, const float *u) {
+    const two_tanks_status status = corrected_sample(o, y, u);
+    if (status == TWO_TANKS_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 two_tanks_status two_tanks_corrected_estimate(const two_tanks_corrected *o, float *values, two_tanks_saturation *saturation) {

@@ -111,6 +111,8 @@ typedef struct {
     float values[TWO_TANKS_TARGETS];
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } two_tanks_ekf_box;
 
 void two_tanks_ekf_box_init(two_tanks_ekf_box *observer);
@@ -127,6 +129,8 @@ typedef struct {
     float values[TWO_TANKS_TARGETS];
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } two_tanks_ekf_map;
 
 void two_tanks_ekf_map_init(two_tanks_ekf_map *observer);
@@ -143,6 +147,8 @@ typedef struct {
     float values[TWO_TANKS_TARGETS];
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } two_tanks_ekf_restart;
 
 void two_tanks_ekf_restart_init(two_tanks_ekf_restart *observer);
@@ -158,6 +164,8 @@ typedef struct {
     float values[TWO_TANKS_TARGETS];
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } two_tanks_ukf_box;
 
 void two_tanks_ukf_box_init(two_tanks_ukf_box *observer);
@@ -175,6 +183,8 @@ typedef struct {
     float values[TWO_TANKS_TARGETS];
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } two_tanks_corrected;
 
 void two_tanks_corrected_init(two_tanks_corrected *observer);

@@ -940,13 +940,13 @@ static int ekf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
-void vanderpol_ekf_box_init(vanderpol_ekf_box *o) {
+static void ekf_box_fresh(vanderpol_ekf_box *o) {
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
     o->ready = 0;
 }
 
-vanderpol_status vanderpol_ekf_box_push(vanderpol_ekf_box *o, const float *y, const float *u) {
+static vanderpol_status ekf_box_sample(vanderpol_ekf_box *o, const float *y, const float *u) {
     float estimate[VANDERPOL_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -965,6 +965,19 @@ vanderpol_status vanderpol_ekf_box_push(vanderpol_ekf_box *o, const float *y, co
     }
     o->ready = 1;
     return VANDERPOL_OK;
+}
+
+void vanderpol_ekf_box_init(vanderpol_ekf_box *o) {
+    ekf_box_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_status vanderpol_ekf_box_push(vanderpol_ekf_box *o, const float *y, const float *u) {
+    const vanderpol_status status = ekf_box_sample(o, y, u);
+    if (status == VANDERPOL_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_status vanderpol_ekf_box_estimate(const vanderpol_ekf_box *o, float *values, vanderpol_saturation *saturation) {
@@ -1022,7 +1035,7 @@ static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, cons
     return ekf_measure(x, p, y, u, states);
 }
 
-void vanderpol_ekf_map_init(vanderpol_ekf_map *o) {
+static void ekf_map_fresh(vanderpol_ekf_map *o) {
     vanderpol_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
@@ -1031,7 +1044,7 @@ void vanderpol_ekf_map_init(vanderpol_ekf_map *o) {
     o->ready = 0;
 }
 
-vanderpol_status vanderpol_ekf_map_push(vanderpol_ekf_map *o, const float *y, const float *u) {
+static vanderpol_status ekf_map_sample(vanderpol_ekf_map *o, const float *y, const float *u) {
     const int start_up = o->count <= 0u;
     float all[VANDERPOL_TARGETS], map[VANDERPOL_STATES], states[VANDERPOL_STATES];
     vanderpol_saturation all_flags[VANDERPOL_TARGETS], state_flags[VANDERPOL_STATES];
@@ -1070,6 +1083,19 @@ vanderpol_status vanderpol_ekf_map_push(vanderpol_ekf_map *o, const float *y, co
     o->ready = 1;
     o->count = start_up ? o->count + 1u : o->count;
     return VANDERPOL_OK;
+}
+
+void vanderpol_ekf_map_init(vanderpol_ekf_map *o) {
+    ekf_map_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_status vanderpol_ekf_map_push(vanderpol_ekf_map *o, const float *y, const float *u) {
+    const vanderpol_status status = ekf_map_sample(o, y, u);
+    if (status == VANDERPOL_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_status vanderpol_ekf_map_estimate(const vanderpol_ekf_map *o, float *values, vanderpol_saturation *saturation) {
@@ -1113,7 +1139,7 @@ static int restart_check(vanderpol_ekf_restart *o, const float *y, const float *
     return 1;
 }
 
-void vanderpol_ekf_restart_init(vanderpol_ekf_restart *o) {
+static void ekf_restart_fresh(vanderpol_ekf_restart *o) {
     vanderpol_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
@@ -1121,7 +1147,7 @@ void vanderpol_ekf_restart_init(vanderpol_ekf_restart *o) {
     o->ready = 0;
 }
 
-vanderpol_status vanderpol_ekf_restart_push(vanderpol_ekf_restart *o, const float *y, const float *u) {
+static vanderpol_status ekf_restart_sample(vanderpol_ekf_restart *o, const float *y, const float *u) {
     float states[VANDERPOL_STATES];
     vanderpol_saturation state_flags[VANDERPOL_STATES];
     if (!accepts(y, u)) {
@@ -1139,6 +1165,19 @@ vanderpol_status vanderpol_ekf_restart_push(vanderpol_ekf_restart *o, const floa
     started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     o->ready = 1;
     return VANDERPOL_OK;
+}
+
+void vanderpol_ekf_restart_init(vanderpol_ekf_restart *o) {
+    ekf_restart_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_status vanderpol_ekf_restart_push(vanderpol_ekf_restart *o, const float *y, const float *u) {
+    const vanderpol_status status = ekf_restart_sample(o, y, u);
+    if (status == VANDERPOL_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_status vanderpol_ekf_restart_estimate(const vanderpol_ekf_restart *o, float *values, vanderpol_saturation *saturation) {
@@ -1844,13 +1883,13 @@ static int ukf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
-void vanderpol_ukf_box_init(vanderpol_ukf_box *o) {
+static void ukf_box_fresh(vanderpol_ukf_box *o) {
     memcpy(o->x, UKF_X0, sizeof o->x);
     memcpy(o->p, UKF_P0, sizeof o->p);
     o->ready = 0;
 }
 
-vanderpol_status vanderpol_ukf_box_push(vanderpol_ukf_box *o, const float *y, const float *u) {
+static vanderpol_status ukf_box_sample(vanderpol_ukf_box *o, const float *y, const float *u) {
     float estimate[VANDERPOL_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -1869,6 +1908,19 @@ vanderpol_status vanderpol_ukf_box_push(vanderpol_ukf_box *o, const float *y, co
     }
     o->ready = 1;
     return VANDERPOL_OK;
+}
+
+void vanderpol_ukf_box_init(vanderpol_ukf_box *o) {
+    ukf_box_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_status vanderpol_ukf_box_push(vanderpol_ukf_box *o, const float *y, const float *u) {
+    const vanderpol_status status = ukf_box_sample(o, y, u);
+    if (status == VANDERPOL_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_status vanderpol_ukf_box_estimate(const vanderpol_ukf_box *o, float *values, vanderpol_saturation *saturation) {
@@ -2149,7 +2201,7 @@ static void corrected_lost(float *x, const float *u) {
     (void)corrected_start(x, u, x);
 }
 
-void vanderpol_corrected_init(vanderpol_corrected *o) {
+static void corrected_fresh(vanderpol_corrected *o) {
     vanderpol_map_init(&o->window);
     memset(o->x, 0, sizeof o->x);
     o->count = 0u;
@@ -2157,7 +2209,7 @@ void vanderpol_corrected_init(vanderpol_corrected *o) {
     o->ready = 0;
 }
 
-vanderpol_status vanderpol_corrected_push(vanderpol_corrected *o, const float *y, const float *u) {
+static vanderpol_status corrected_sample(vanderpol_corrected *o, const float *y, const float *u) {
     const int start_up = o->count <= 30u;
     float all[VANDERPOL_TARGETS], map[VANDERPOL_STATES], states[VANDERPOL_STATES];
     vanderpol_saturation all_flags[VANDERPOL_TARGETS], state_flags[VANDERPOL_STATES];
@@ -2196,6 +2248,19 @@ vanderpol_status vanderpol_corrected_push(vanderpol_corrected *o, const float *y
     o->ready = 1;
     o->count = start_up ? o->count + 1u : o->count;
     return VANDERPOL_OK;
+}
+
+void vanderpol_corrected_init(vanderpol_corrected *o) {
+    corrected_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_status vanderpol_corrected_push(vanderpol_corrected *o, const float *y, const float *u) {
+    const vanderpol_status status = corrected_sample(o, y, u);
+    if (status == VANDERPOL_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_status vanderpol_corrected_estimate(const vanderpol_corrected *o, float *values, vanderpol_saturation *saturation) {

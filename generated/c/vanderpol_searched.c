@@ -788,13 +788,13 @@ static int ekf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
-void vanderpol_searched_ekf_box_init(vanderpol_searched_ekf_box *o) {
+static void ekf_box_fresh(vanderpol_searched_ekf_box *o) {
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
     o->ready = 0;
 }
 
-vanderpol_searched_status vanderpol_searched_ekf_box_push(vanderpol_searched_ekf_box *o, const float *y, const float *u) {
+static vanderpol_searched_status ekf_box_sample(vanderpol_searched_ekf_box *o, const float *y, const float *u) {
     float estimate[VANDERPOL_SEARCHED_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -813,6 +813,19 @@ vanderpol_searched_status vanderpol_searched_ekf_box_push(vanderpol_searched_ekf
     }
     o->ready = 1;
     return VANDERPOL_SEARCHED_OK;
+}
+
+void vanderpol_searched_ekf_box_init(vanderpol_searched_ekf_box *o) {
+    ekf_box_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_searched_status vanderpol_searched_ekf_box_push(vanderpol_searched_ekf_box *o, const float *y, const float *u) {
+    const vanderpol_searched_status status = ekf_box_sample(o, y, u);
+    if (status == VANDERPOL_SEARCHED_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_searched_status vanderpol_searched_ekf_box_estimate(const vanderpol_searched_ekf_box *o, float *values, vanderpol_searched_saturation *saturation) {
@@ -870,7 +883,7 @@ static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, cons
     return ekf_measure(x, p, y, u, states);
 }
 
-void vanderpol_searched_ekf_map_init(vanderpol_searched_ekf_map *o) {
+static void ekf_map_fresh(vanderpol_searched_ekf_map *o) {
     vanderpol_searched_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
@@ -879,7 +892,7 @@ void vanderpol_searched_ekf_map_init(vanderpol_searched_ekf_map *o) {
     o->ready = 0;
 }
 
-vanderpol_searched_status vanderpol_searched_ekf_map_push(vanderpol_searched_ekf_map *o, const float *y, const float *u) {
+static vanderpol_searched_status ekf_map_sample(vanderpol_searched_ekf_map *o, const float *y, const float *u) {
     const int start_up = o->count <= 0u;
     float all[VANDERPOL_SEARCHED_TARGETS], map[VANDERPOL_SEARCHED_STATES], states[VANDERPOL_SEARCHED_STATES];
     vanderpol_searched_saturation all_flags[VANDERPOL_SEARCHED_TARGETS], state_flags[VANDERPOL_SEARCHED_STATES];
@@ -918,6 +931,19 @@ vanderpol_searched_status vanderpol_searched_ekf_map_push(vanderpol_searched_ekf
     o->ready = 1;
     o->count = start_up ? o->count + 1u : o->count;
     return VANDERPOL_SEARCHED_OK;
+}
+
+void vanderpol_searched_ekf_map_init(vanderpol_searched_ekf_map *o) {
+    ekf_map_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_searched_status vanderpol_searched_ekf_map_push(vanderpol_searched_ekf_map *o, const float *y, const float *u) {
+    const vanderpol_searched_status status = ekf_map_sample(o, y, u);
+    if (status == VANDERPOL_SEARCHED_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_searched_status vanderpol_searched_ekf_map_estimate(const vanderpol_searched_ekf_map *o, float *values, vanderpol_searched_saturation *saturation) {
@@ -961,7 +987,7 @@ static int restart_check(vanderpol_searched_ekf_restart *o, const float *y, cons
     return 1;
 }
 
-void vanderpol_searched_ekf_restart_init(vanderpol_searched_ekf_restart *o) {
+static void ekf_restart_fresh(vanderpol_searched_ekf_restart *o) {
     vanderpol_searched_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
@@ -969,7 +995,7 @@ void vanderpol_searched_ekf_restart_init(vanderpol_searched_ekf_restart *o) {
     o->ready = 0;
 }
 
-vanderpol_searched_status vanderpol_searched_ekf_restart_push(vanderpol_searched_ekf_restart *o, const float *y, const float *u) {
+static vanderpol_searched_status ekf_restart_sample(vanderpol_searched_ekf_restart *o, const float *y, const float *u) {
     float states[VANDERPOL_SEARCHED_STATES];
     vanderpol_searched_saturation state_flags[VANDERPOL_SEARCHED_STATES];
     if (!accepts(y, u)) {
@@ -987,6 +1013,19 @@ vanderpol_searched_status vanderpol_searched_ekf_restart_push(vanderpol_searched
     started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     o->ready = 1;
     return VANDERPOL_SEARCHED_OK;
+}
+
+void vanderpol_searched_ekf_restart_init(vanderpol_searched_ekf_restart *o) {
+    ekf_restart_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_searched_status vanderpol_searched_ekf_restart_push(vanderpol_searched_ekf_restart *o, const float *y, const float *u) {
+    const vanderpol_searched_status status = ekf_restart_sample(o, y, u);
+    if (status == VANDERPOL_SEARCHED_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_searched_status vanderpol_searched_ekf_restart_estimate(const vanderpol_searched_ekf_restart *o, float *values, vanderpol_searched_saturation *saturation) {
@@ -1692,13 +1731,13 @@ static int ukf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
-void vanderpol_searched_ukf_box_init(vanderpol_searched_ukf_box *o) {
+static void ukf_box_fresh(vanderpol_searched_ukf_box *o) {
     memcpy(o->x, UKF_X0, sizeof o->x);
     memcpy(o->p, UKF_P0, sizeof o->p);
     o->ready = 0;
 }
 
-vanderpol_searched_status vanderpol_searched_ukf_box_push(vanderpol_searched_ukf_box *o, const float *y, const float *u) {
+static vanderpol_searched_status ukf_box_sample(vanderpol_searched_ukf_box *o, const float *y, const float *u) {
     float estimate[VANDERPOL_SEARCHED_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -1717,6 +1756,19 @@ vanderpol_searched_status vanderpol_searched_ukf_box_push(vanderpol_searched_ukf
     }
     o->ready = 1;
     return VANDERPOL_SEARCHED_OK;
+}
+
+void vanderpol_searched_ukf_box_init(vanderpol_searched_ukf_box *o) {
+    ukf_box_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_searched_status vanderpol_searched_ukf_box_push(vanderpol_searched_ukf_box *o, const float *y, const float *u) {
+    const vanderpol_searched_status status = ukf_box_sample(o, y, u);
+    if (status == VANDERPOL_SEARCHED_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_searched_status vanderpol_searched_ukf_box_estimate(const vanderpol_searched_ukf_box *o, float *values, vanderpol_searched_saturation *saturation) {
@@ -2051,7 +2103,7 @@ static void corrected_lost(float *x, const float *u) {
     (void)corrected_start(x, u, x);
 }
 
-void vanderpol_searched_corrected_init(vanderpol_searched_corrected *o) {
+static void corrected_fresh(vanderpol_searched_corrected *o) {
     vanderpol_searched_map_init(&o->window);
     memset(o->x, 0, sizeof o->x);
     o->count = 0u;
@@ -2059,7 +2111,7 @@ void vanderpol_searched_corrected_init(vanderpol_searched_corrected *o) {
     o->ready = 0;
 }
 
-vanderpol_searched_status vanderpol_searched_corrected_push(vanderpol_searched_corrected *o, const float *y, const float *u) {
+static vanderpol_searched_status corrected_sample(vanderpol_searched_corrected *o, const float *y, const float *u) {
     const int start_up = o->count <= 48u;
     float all[VANDERPOL_SEARCHED_TARGETS], map[VANDERPOL_SEARCHED_STATES], states[VANDERPOL_SEARCHED_STATES];
     vanderpol_searched_saturation all_flags[VANDERPOL_SEARCHED_TARGETS], state_flags[VANDERPOL_SEARCHED_STATES];
@@ -2098,6 +2150,19 @@ vanderpol_searched_status vanderpol_searched_corrected_push(vanderpol_searched_c
     o->ready = 1;
     o->count = start_up ? o->count + 1u : o->count;
     return VANDERPOL_SEARCHED_OK;
+}
+
+void vanderpol_searched_corrected_init(vanderpol_searched_corrected *o) {
+    corrected_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_searched_status vanderpol_searched_corrected_push(vanderpol_searched_corrected *o, const float *y, const float *u) {
+    const vanderpol_searched_status status = corrected_sample(o, y, u);
+    if (status == VANDERPOL_SEARCHED_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_searched_status vanderpol_searched_corrected_estimate(const vanderpol_searched_corrected *o, float *values, vanderpol_searched_saturation *saturation) {

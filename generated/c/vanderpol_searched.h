@@ -108,6 +108,8 @@ typedef struct {
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_searched_ekf_box;
 
 void vanderpol_searched_ekf_box_init(vanderpol_searched_ekf_box *observer);
@@ -124,6 +126,8 @@ typedef struct {
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_searched_ekf_map;
 
 void vanderpol_searched_ekf_map_init(vanderpol_searched_ekf_map *observer);
@@ -140,6 +144,8 @@ typedef struct {
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_searched_ekf_restart;
 
 void vanderpol_searched_ekf_restart_init(vanderpol_searched_ekf_restart *observer);
@@ -155,6 +161,8 @@ typedef struct {
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_searched_ukf_box;
 
 void vanderpol_searched_ukf_box_init(vanderpol_searched_ukf_box *observer);
@@ -172,6 +180,8 @@ typedef struct {
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_searched_corrected;
 
 void vanderpol_searched_corrected_init(vanderpol_searched_corrected *observer);

@@ -738,13 +738,13 @@ static int ekf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
-void vanderpol_sparse_ekf_box_init(vanderpol_sparse_ekf_box *o) {
+static void ekf_box_fresh(vanderpol_sparse_ekf_box *o) {
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
     o->ready = 0;
 }
 
-vanderpol_sparse_status vanderpol_sparse_ekf_box_push(vanderpol_sparse_ekf_box *o, const float *y, const float *u) {
+static vanderpol_sparse_status ekf_box_sample(vanderpol_sparse_ekf_box *o, const float *y, const float *u) {
     float estimate[VANDERPOL_SPARSE_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -763,6 +763,19 @@ vanderpol_sparse_status vanderpol_sparse_ekf_box_push(vanderpol_sparse_ekf_box *
     }
     o->ready = 1;
     return VANDERPOL_SPARSE_OK;
+}
+
+void vanderpol_sparse_ekf_box_init(vanderpol_sparse_ekf_box *o) {
+    ekf_box_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_sparse_status vanderpol_sparse_ekf_box_push(vanderpol_sparse_ekf_box *o, const float *y, const float *u) {
+    const vanderpol_sparse_status status = ekf_box_sample(o, y, u);
+    if (status == VANDERPOL_SPARSE_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_sparse_status vanderpol_sparse_ekf_box_estimate(const vanderpol_sparse_ekf_box *o, float *values, vanderpol_sparse_saturation *saturation) {
@@ -820,7 +833,7 @@ static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, cons
     return ekf_measure(x, p, y, u, states);
 }
 
-void vanderpol_sparse_ekf_map_init(vanderpol_sparse_ekf_map *o) {
+static void ekf_map_fresh(vanderpol_sparse_ekf_map *o) {
     vanderpol_sparse_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
@@ -829,7 +842,7 @@ void vanderpol_sparse_ekf_map_init(vanderpol_sparse_ekf_map *o) {
     o->ready = 0;
 }
 
-vanderpol_sparse_status vanderpol_sparse_ekf_map_push(vanderpol_sparse_ekf_map *o, const float *y, const float *u) {
+static vanderpol_sparse_status ekf_map_sample(vanderpol_sparse_ekf_map *o, const float *y, const float *u) {
     const int start_up = o->count <= 0u;
     float all[VANDERPOL_SPARSE_TARGETS], map[VANDERPOL_SPARSE_STATES], states[VANDERPOL_SPARSE_STATES];
     vanderpol_sparse_saturation all_flags[VANDERPOL_SPARSE_TARGETS], state_flags[VANDERPOL_SPARSE_STATES];
@@ -868,6 +881,19 @@ vanderpol_sparse_status vanderpol_sparse_ekf_map_push(vanderpol_sparse_ekf_map *
     o->ready = 1;
     o->count = start_up ? o->count + 1u : o->count;
     return VANDERPOL_SPARSE_OK;
+}
+
+void vanderpol_sparse_ekf_map_init(vanderpol_sparse_ekf_map *o) {
+    ekf_map_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_sparse_status vanderpol_sparse_ekf_map_push(vanderpol_sparse_ekf_map *o, const float *y, const float *u) {
+    const vanderpol_sparse_status status = ekf_map_sample(o, y, u);
+    if (status == VANDERPOL_SPARSE_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_sparse_status vanderpol_sparse_ekf_map_estimate(const vanderpol_sparse_ekf_map *o, float *values, vanderpol_sparse_saturation *saturation) {
@@ -911,7 +937,7 @@ static int restart_check(vanderpol_sparse_ekf_restart *o, const float *y, const 
     return 1;
 }
 
-void vanderpol_sparse_ekf_restart_init(vanderpol_sparse_ekf_restart *o) {
+static void ekf_restart_fresh(vanderpol_sparse_ekf_restart *o) {
     vanderpol_sparse_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
@@ -919,7 +945,7 @@ void vanderpol_sparse_ekf_restart_init(vanderpol_sparse_ekf_restart *o) {
     o->ready = 0;
 }
 
-vanderpol_sparse_status vanderpol_sparse_ekf_restart_push(vanderpol_sparse_ekf_restart *o, const float *y, const float *u) {
+static vanderpol_sparse_status ekf_restart_sample(vanderpol_sparse_ekf_restart *o, const float *y, const float *u) {
     float states[VANDERPOL_SPARSE_STATES];
     vanderpol_sparse_saturation state_flags[VANDERPOL_SPARSE_STATES];
     if (!accepts(y, u)) {
@@ -937,6 +963,19 @@ vanderpol_sparse_status vanderpol_sparse_ekf_restart_push(vanderpol_sparse_ekf_r
     started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     o->ready = 1;
     return VANDERPOL_SPARSE_OK;
+}
+
+void vanderpol_sparse_ekf_restart_init(vanderpol_sparse_ekf_restart *o) {
+    ekf_restart_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_sparse_status vanderpol_sparse_ekf_restart_push(vanderpol_sparse_ekf_restart *o, const float *y, const float *u) {
+    const vanderpol_sparse_status status = ekf_restart_sample(o, y, u);
+    if (status == VANDERPOL_SPARSE_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_sparse_status vanderpol_sparse_ekf_restart_estimate(const vanderpol_sparse_ekf_restart *o, float *values, vanderpol_sparse_saturation *saturation) {
@@ -1642,13 +1681,13 @@ static int ukf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
-void vanderpol_sparse_ukf_box_init(vanderpol_sparse_ukf_box *o) {
+static void ukf_box_fresh(vanderpol_sparse_ukf_box *o) {
     memcpy(o->x, UKF_X0, sizeof o->x);
     memcpy(o->p, UKF_P0, sizeof o->p);
     o->ready = 0;
 }
 
-vanderpol_sparse_status vanderpol_sparse_ukf_box_push(vanderpol_sparse_ukf_box *o, const float *y, const float *u) {
+static vanderpol_sparse_status ukf_box_sample(vanderpol_sparse_ukf_box *o, const float *y, const float *u) {
     float estimate[VANDERPOL_SPARSE_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -1667,6 +1706,19 @@ vanderpol_sparse_status vanderpol_sparse_ukf_box_push(vanderpol_sparse_ukf_box *
     }
     o->ready = 1;
     return VANDERPOL_SPARSE_OK;
+}
+
+void vanderpol_sparse_ukf_box_init(vanderpol_sparse_ukf_box *o) {
+    ukf_box_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_sparse_status vanderpol_sparse_ukf_box_push(vanderpol_sparse_ukf_box *o, const float *y, const float *u) {
+    const vanderpol_sparse_status status = ukf_box_sample(o, y, u);
+    if (status == VANDERPOL_SPARSE_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_sparse_status vanderpol_sparse_ukf_box_estimate(const vanderpol_sparse_ukf_box *o, float *values, vanderpol_sparse_saturation *saturation) {
@@ -2028,7 +2080,7 @@ static void corrected_lost(float *x, const float *u) {
     (void)corrected_start(x, u, x);
 }
 
-void vanderpol_sparse_corrected_init(vanderpol_sparse_corrected *o) {
+static void corrected_fresh(vanderpol_sparse_corrected *o) {
     vanderpol_sparse_map_init(&o->window);
     memset(o->x, 0, sizeof o->x);
     o->count = 0u;
@@ -2036,7 +2088,7 @@ void vanderpol_sparse_corrected_init(vanderpol_sparse_corrected *o) {
     o->ready = 0;
 }
 
-vanderpol_sparse_status vanderpol_sparse_corrected_push(vanderpol_sparse_corrected *o, const float *y, const float *u) {
+static vanderpol_sparse_status corrected_sample(vanderpol_sparse_corrected *o, const float *y, const float *u) {
     const int start_up = o->count <= 57u;
     float all[VANDERPOL_SPARSE_TARGETS], map[VANDERPOL_SPARSE_STATES], states[VANDERPOL_SPARSE_STATES];
     vanderpol_sparse_saturation all_flags[VANDERPOL_SPARSE_TARGETS], state_flags[VANDERPOL_SPARSE_STATES];
@@ -2075,6 +2127,19 @@ vanderpol_sparse_status vanderpol_sparse_corrected_push(vanderpol_sparse_correct
     o->ready = 1;
     o->count = start_up ? o->count + 1u : o->count;
     return VANDERPOL_SPARSE_OK;
+}
+
+void vanderpol_sparse_corrected_init(vanderpol_sparse_corrected *o) {
+    corrected_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_sparse_status vanderpol_sparse_corrected_push(vanderpol_sparse_corrected *o, const float *y, const float *u) {
+    const vanderpol_sparse_status status = corrected_sample(o, y, u);
+    if (status == VANDERPOL_SPARSE_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_sparse_status vanderpol_sparse_corrected_estimate(const vanderpol_sparse_corrected *o, float *values, vanderpol_sparse_saturation *saturation) {

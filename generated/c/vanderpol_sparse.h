@@ -108,6 +108,8 @@ typedef struct {
     float values[VANDERPOL_SPARSE_TARGETS];
     vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_sparse_ekf_box;
 
 void vanderpol_sparse_ekf_box_init(vanderpol_sparse_ekf_box *observer);
@@ -124,6 +126,8 @@ typedef struct {
     float values[VANDERPOL_SPARSE_TARGETS];
     vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_sparse_ekf_map;
 
 void vanderpol_sparse_ekf_map_init(vanderpol_sparse_ekf_map *observer);
@@ -140,6 +144,8 @@ typedef struct {
     float values[VANDERPOL_SPARSE_TARGETS];
     vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_sparse_ekf_restart;
 
 void vanderpol_sparse_ekf_restart_init(vanderpol_sparse_ekf_restart *observer);
@@ -155,6 +161,8 @@ typedef struct {
     float values[VANDERPOL_SPARSE_TARGETS];
     vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_sparse_ukf_box;
 
 void vanderpol_sparse_ukf_box_init(vanderpol_sparse_ukf_box *observer);
@@ -172,6 +180,8 @@ typedef struct {
     float values[VANDERPOL_SPARSE_TARGETS];
     vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_sparse_corrected;
 
 void vanderpol_sparse_corrected_init(vanderpol_sparse_corrected *observer);

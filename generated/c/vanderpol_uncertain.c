@@ -959,13 +959,13 @@ static int ekf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
-void vanderpol_uncertain_ekf_box_init(vanderpol_uncertain_ekf_box *o) {
+static void ekf_box_fresh(vanderpol_uncertain_ekf_box *o) {
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
     o->ready = 0;
 }
 
-vanderpol_uncertain_status vanderpol_uncertain_ekf_box_push(vanderpol_uncertain_ekf_box *o, const float *y, const float *u) {
+static vanderpol_uncertain_status ekf_box_sample(vanderpol_uncertain_ekf_box *o, const float *y, const float *u) {
     float estimate[VANDERPOL_UNCERTAIN_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -984,6 +984,19 @@ vanderpol_uncertain_status vanderpol_uncertain_ekf_box_push(vanderpol_uncertain_
     }
     o->ready = 1;
     return VANDERPOL_UNCERTAIN_OK;
+}
+
+void vanderpol_uncertain_ekf_box_init(vanderpol_uncertain_ekf_box *o) {
+    ekf_box_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_ekf_box_push(vanderpol_uncertain_ekf_box *o, const float *y, const float *u) {
+    const vanderpol_uncertain_status status = ekf_box_sample(o, y, u);
+    if (status == VANDERPOL_UNCERTAIN_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_uncertain_status vanderpol_uncertain_ekf_box_estimate(const vanderpol_uncertain_ekf_box *o, float *values, vanderpol_uncertain_saturation *saturation) {
@@ -1041,7 +1054,7 @@ static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, cons
     return ekf_measure(x, p, y, u, states);
 }
 
-void vanderpol_uncertain_ekf_map_init(vanderpol_uncertain_ekf_map *o) {
+static void ekf_map_fresh(vanderpol_uncertain_ekf_map *o) {
     vanderpol_uncertain_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
@@ -1050,7 +1063,7 @@ void vanderpol_uncertain_ekf_map_init(vanderpol_uncertain_ekf_map *o) {
     o->ready = 0;
 }
 
-vanderpol_uncertain_status vanderpol_uncertain_ekf_map_push(vanderpol_uncertain_ekf_map *o, const float *y, const float *u) {
+static vanderpol_uncertain_status ekf_map_sample(vanderpol_uncertain_ekf_map *o, const float *y, const float *u) {
     const int start_up = o->count <= 0u;
     float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES], states[VANDERPOL_UNCERTAIN_STATES];
     vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS], state_flags[VANDERPOL_UNCERTAIN_STATES];
@@ -1089,6 +1102,19 @@ vanderpol_uncertain_status vanderpol_uncertain_ekf_map_push(vanderpol_uncertain_
     o->ready = 1;
     o->count = start_up ? o->count + 1u : o->count;
     return VANDERPOL_UNCERTAIN_OK;
+}
+
+void vanderpol_uncertain_ekf_map_init(vanderpol_uncertain_ekf_map *o) {
+    ekf_map_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_ekf_map_push(vanderpol_uncertain_ekf_map *o, const float *y, const float *u) {
+    const vanderpol_uncertain_status status = ekf_map_sample(o, y, u);
+    if (status == VANDERPOL_UNCERTAIN_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_uncertain_status vanderpol_uncertain_ekf_map_estimate(const vanderpol_uncertain_ekf_map *o, float *values, vanderpol_uncertain_saturation *saturation) {
@@ -1132,7 +1158,7 @@ static int restart_check(vanderpol_uncertain_ekf_restart *o, const float *y, con
     return 1;
 }
 
-void vanderpol_uncertain_ekf_restart_init(vanderpol_uncertain_ekf_restart *o) {
+static void ekf_restart_fresh(vanderpol_uncertain_ekf_restart *o) {
     vanderpol_uncertain_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
@@ -1140,7 +1166,7 @@ void vanderpol_uncertain_ekf_restart_init(vanderpol_uncertain_ekf_restart *o) {
     o->ready = 0;
 }
 
-vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_push(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
+static vanderpol_uncertain_status ekf_restart_sample(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
     float states[VANDERPOL_UNCERTAIN_STATES];
     vanderpol_uncertain_saturation state_flags[VANDERPOL_UNCERTAIN_STATES];
     if (!accepts(y, u)) {
@@ -1158,6 +1184,19 @@ vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_push(vanderpol_uncert
     started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     o->ready = 1;
     return VANDERPOL_UNCERTAIN_OK;
+}
+
+void vanderpol_uncertain_ekf_restart_init(vanderpol_uncertain_ekf_restart *o) {
+    ekf_restart_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_push(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
+    const vanderpol_uncertain_status status = ekf_restart_sample(o, y, u);
+    if (status == VANDERPOL_UNCERTAIN_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_estimate(const vanderpol_uncertain_ekf_restart *o, float *values, vanderpol_uncertain_saturation *saturation) {
@@ -1865,13 +1904,13 @@ static int ukf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
-void vanderpol_uncertain_ukf_box_init(vanderpol_uncertain_ukf_box *o) {
+static void ukf_box_fresh(vanderpol_uncertain_ukf_box *o) {
     memcpy(o->x, UKF_X0, sizeof o->x);
     memcpy(o->p, UKF_P0, sizeof o->p);
     o->ready = 0;
 }
 
-vanderpol_uncertain_status vanderpol_uncertain_ukf_box_push(vanderpol_uncertain_ukf_box *o, const float *y, const float *u) {
+static vanderpol_uncertain_status ukf_box_sample(vanderpol_uncertain_ukf_box *o, const float *y, const float *u) {
     float estimate[VANDERPOL_UNCERTAIN_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -1890,6 +1929,19 @@ vanderpol_uncertain_status vanderpol_uncertain_ukf_box_push(vanderpol_uncertain_
     }
     o->ready = 1;
     return VANDERPOL_UNCERTAIN_OK;
+}
+
+void vanderpol_uncertain_ukf_box_init(vanderpol_uncertain_ukf_box *o) {
+    ukf_box_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_ukf_box_push(vanderpol_uncertain_ukf_box *o, const float *y, const float *u) {
+    const vanderpol_uncertain_status status = ukf_box_sample(o, y, u);
+    if (status == VANDERPOL_UNCERTAIN_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_uncertain_status vanderpol_uncertain_ukf_box_estimate(const vanderpol_uncertain_ukf_box *o, float *values, vanderpol_uncertain_saturation *saturation) {
@@ -2170,7 +2222,7 @@ static void corrected_lost(float *x, const float *u) {
     (void)corrected_start(x, u, x);
 }
 
-void vanderpol_uncertain_corrected_init(vanderpol_uncertain_corrected *o) {
+static void corrected_fresh(vanderpol_uncertain_corrected *o) {
     vanderpol_uncertain_map_init(&o->window);
     memset(o->x, 0, sizeof o->x);
     o->count = 0u;
@@ -2178,7 +2230,7 @@ void vanderpol_uncertain_corrected_init(vanderpol_uncertain_corrected *o) {
     o->ready = 0;
 }
 
-vanderpol_uncertain_status vanderpol_uncertain_corrected_push(vanderpol_uncertain_corrected *o, const float *y, const float *u) {
+static vanderpol_uncertain_status corrected_sample(vanderpol_uncertain_corrected *o, const float *y, const float *u) {
     const int start_up = o->count <= 30u;
     float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES], states[VANDERPOL_UNCERTAIN_STATES];
     vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS], state_flags[VANDERPOL_UNCERTAIN_STATES];
@@ -2217,6 +2269,19 @@ vanderpol_uncertain_status vanderpol_uncertain_corrected_push(vanderpol_uncertai
     o->ready = 1;
     o->count = start_up ? o->count + 1u : o->count;
     return VANDERPOL_UNCERTAIN_OK;
+}
+
+void vanderpol_uncertain_corrected_init(vanderpol_uncertain_corrected *o) {
+    corrected_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_corrected_push(vanderpol_uncertain_corrected *o, const float *y, const float *u) {
+    const vanderpol_uncertain_status status = corrected_sample(o, y, u);
+    if (status == VANDERPOL_UNCERTAIN_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
 }
 
 vanderpol_uncertain_status vanderpol_uncertain_corrected_estimate(const vanderpol_uncertain_corrected *o, float *values, vanderpol_uncertain_saturation *saturation) {

@@ -108,6 +108,8 @@ typedef struct {
     float values[VANDERPOL_UNCERTAIN_TARGETS];
     vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_uncertain_ekf_box;
 
 void vanderpol_uncertain_ekf_box_init(vanderpol_uncertain_ekf_box *observer);
@@ -124,6 +126,8 @@ typedef struct {
     float values[VANDERPOL_UNCERTAIN_TARGETS];
     vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_uncertain_ekf_map;
 
 void vanderpol_uncertain_ekf_map_init(vanderpol_uncertain_ekf_map *observer);
@@ -140,6 +144,8 @@ typedef struct {
     float values[VANDERPOL_UNCERTAIN_TARGETS];
     vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_uncertain_ekf_restart;
 
 void vanderpol_uncertain_ekf_restart_init(vanderpol_uncertain_ekf_restart *observer);
@@ -155,6 +161,8 @@ typedef struct {
     float values[VANDERPOL_UNCERTAIN_TARGETS];
     vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_uncertain_ukf_box;
 
 void vanderpol_uncertain_ukf_box_init(vanderpol_uncertain_ukf_box *observer);
@@ -172,6 +180,8 @@ typedef struct {
     float values[VANDERPOL_UNCERTAIN_TARGETS];
     vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } vanderpol_uncertain_corrected;
 
 void vanderpol_uncertain_corrected_init(vanderpol_uncertain_corrected *observer);

@@ -445,24 +445,23 @@ impl<T: Scalar + Maths> Ekf<T> {
     }
 
     /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
-    /// type's docs). The same operations run for every accepted sample.
+    /// type's docs): the rule every filter follows ([`firmware::rules::filter_sample`]) over this
+    /// filter's two written-out samples. The same operations run for every accepted sample.
     pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
-        if !u.iter().all(|v| v.is_finite()) {
-            return Err(firmware::RejectedSample);
-        }
-        if y.iter().all(|v| v.is_finite()) {
-            let (estimate, x, p) = ekf_measured(&self.x, &self.p, y, u);
-            if finite(&x, &p) {
-                (self.x, self.p) = (x, p);
-                return Ok(estimate);
-            }
-        } else {
-            let (x, p) = ekf_unmeasured(&self.x, &self.p, u);
-            if finite(&x, &p) {
-                (self.x, self.p) = (x, p);
-            }
-        }
-        Err(firmware::RejectedSample)
+        firmware::rules::filter_sample(
+            self,
+            u.iter().all(|v| v.is_finite()),
+            y.iter().all(|v| v.is_finite()),
+            |filter| {
+                let (estimate, x, p) = ekf_measured(&filter.x, &filter.p, y, u);
+                (estimate, Ekf { x, p })
+            },
+            |filter| {
+                let (x, p) = ekf_unmeasured(&filter.x, &filter.p, u);
+                Ekf { x, p }
+            },
+            |filter| finite(&filter.x, &filter.p),
+        )
     }
 }
 
@@ -956,24 +955,23 @@ impl<T: Scalar + Maths> Ukf<T> {
     }
 
     /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
-    /// type's docs). The same operations run for every accepted sample.
+    /// type's docs): the rule every filter follows ([`firmware::rules::filter_sample`]) over this
+    /// filter's two written-out samples. The same operations run for every accepted sample.
     pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
-        if !u.iter().all(|v| v.is_finite()) {
-            return Err(firmware::RejectedSample);
-        }
-        if y.iter().all(|v| v.is_finite()) {
-            let (estimate, x, p) = ukf_measured(&self.x, &self.p, y, u);
-            if finite(&x, &p) {
-                (self.x, self.p) = (x, p);
-                return Ok(estimate);
-            }
-        } else {
-            let (x, p) = ukf_unmeasured(&self.x, &self.p, u);
-            if finite(&x, &p) {
-                (self.x, self.p) = (x, p);
-            }
-        }
-        Err(firmware::RejectedSample)
+        firmware::rules::filter_sample(
+            self,
+            u.iter().all(|v| v.is_finite()),
+            y.iter().all(|v| v.is_finite()),
+            |filter| {
+                let (estimate, x, p) = ukf_measured(&filter.x, &filter.p, y, u);
+                (estimate, Ukf { x, p })
+            },
+            |filter| {
+                let (x, p) = ukf_unmeasured(&filter.x, &filter.p, u);
+                Ukf { x, p }
+            },
+            |filter| finite(&filter.x, &filter.p),
+        )
     }
 }
 

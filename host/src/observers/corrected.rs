@@ -170,7 +170,12 @@ impl<'a, T: Scalar + Maths> CorrectedStep<'a, T> {
             upper: to_t(&constants.upper),
             blends: constants.blends().iter().map(|row| to_t(row)).collect(),
             scratch: std::cell::RefCell::new(Vec::new()),
-            shell: super::started::Shell::new(setting.first, setting.state_targets, setting.code.dimensions.targets),
+            shell: super::started::Shell::new(
+                setting.first,
+                setting.state_targets,
+                setting.code.dimensions.targets,
+                (constants.start_up, code.steady_reads_map),
+            ),
         }
     }
 
@@ -240,6 +245,13 @@ impl<'a, T: Scalar + Maths> CorrectedStep<'a, T> {
             // A lost output: the model's period from `x̄` (`Corrector::predict`).
             &mut |predicted: &Vec<T>, u| predict(predicted, u),
         )
+    }
+}
+
+impl<T: Scalar> CorrectedStep<'_, T> {
+    /// Samples refused so far, as the chip counts them.
+    pub fn refused(&self) -> u32 {
+        self.shell.refused()
     }
 }
 

@@ -2,12 +2,12 @@
 //! ([`crate::plant::Compiled`]), tuned on the tuning runs and judged like the map.
 //!
 //! Its constants are chosen on the tuning runs as an expert tunes a filter: [`tuning`] says how.
-//! [`mirrors`] runs the same filter over the written-out programs, as the chip does.
+//! [`steps`] runs the same filter over the written-out programs by the firmware's own rules, as the chip does.
 
-pub mod mirrors;
+pub mod steps;
 pub mod tuning;
 
-pub use mirrors::{estimate_box, estimate_started, BoxStep, StartedStep};
+pub use steps::{estimate_box, estimate_started, BoxStep, StartedStep};
 pub use tuning::{tune, tune_started, tune_with, Estimator, Tuned, STARTS, START_FACTORS};
 
 use firmware::{Ekf, Plant, Rk4};

@@ -1,6 +1,6 @@
 //! Any observer kind over recorded measurements, as the chip runs it: the map over the window of
-//! accepted samples ([`crate::recording::estimate`]), and the observers it starts through the one
-//! host mirror of `firmware::Started` ([`super::started::run`]), in `f64` or, bit for bit as the
+//! accepted samples ([`crate::recording::estimate`]), and the observers it starts through the
+//! chip's own rules (`firmware::rules`, [`super::started::Shell`]), in `f64` or, bit for bit as the
 //! chip, in `f32`. A sample with a NaN or infinite output or input is refused (no estimate on its row;
 //! the map's window skips it, a started observer takes the model's period over it when the input is
 //! finite); every change of the `run` column restarts the observer.

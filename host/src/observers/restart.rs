@@ -14,10 +14,14 @@
 //! estimate when it is consistent with the map's and takes the map's when it is not. `τ` is chosen on
 //! the tuning runs ([`tune`]) from [`THRESHOLDS`].
 
+use std::cell::RefCell;
+
 use firmware::emitted::Maths;
-use firmware::Scalar;
+use firmware::rules::{Refusals, RestartedRule};
+use firmware::{RejectedSample, Scalar};
 
 use crate::data::Run;
+use crate::observers::started::literals;
 use crate::plant::kalman::{self, EkfConstants, FilterCode};
 use crate::plant::ModelCode;
 
@@ -77,7 +81,8 @@ pub fn estimate<T: Scalar + Maths>(
         .collect()
 }
 
-/// [`estimate`] one sample at a time: what `firmware::Restarted` carries between samples.
+/// [`estimate`] one sample at a time: `firmware::Restarted`'s rule ([`RestartedRule`]) over the
+/// written-out programs.
 pub struct RestartStep<'a, T> {
     filter: &'a FilterCode,
     code: &'a ModelCode,
@@ -85,12 +90,12 @@ pub struct RestartStep<'a, T> {
     state_targets: &'a [usize],
     /// `P` of a restart, its upper triangle.
     started: Vec<T>,
-    x: Vec<T>,
-    p: Vec<T>,
-    checked: bool,
+    /// `x` and the upper triangle of `P`, and whether the map has been checked.
+    rule: RestartedRule<(Vec<T>, Vec<T>)>,
+    refusals: Refusals,
     last: Vec<T>,
     nan: Vec<T>,
-    scratch: Vec<T>,
+    scratch: RefCell<Vec<T>>,
 }
 
 impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
@@ -103,59 +108,72 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
         state_targets: &'a [usize],
         code: &'a ModelCode,
     ) -> Self {
-        let literal = |v: &f64| T::literal(*v as f32, *v);
         let nan = vec![T::literal(f32::NAN, f64::NAN); code.dimensions.targets];
         RestartStep {
             filter,
             code,
             restart,
             state_targets,
-            started: kalman::diagonal_upper(started_p0).iter().map(literal).collect(),
-            x: constants.x0.iter().map(literal).collect(),
-            p: constants.p0.upper().iter().map(literal).collect(),
-            checked: false,
+            started: literals(&kalman::diagonal_upper(started_p0)),
+            rule: RestartedRule::new((literals(&constants.x0), literals(&constants.p0.upper()))),
+            refusals: Refusals::NONE,
             last: nan.clone(),
             nan,
-            scratch: Vec::new(),
+            scratch: RefCell::new(Vec::new()),
         }
     }
 
     /// The targets at the sample with outputs `y` and inputs `u`, the map's estimate there `row`
-    /// (NaN where it has none).
+    /// (NaN where it has none): NaN where the sample is refused, the latest estimate where a step
+    /// is not finite.
     pub fn step(&mut self, row: &[T], y: &[f64], u: &[f64]) -> Vec<T> {
-        let literal = |v: &f64| T::literal(*v as f32, *v);
-        let finite = |x: &[T], p: &[T]| x.iter().chain(p).all(|v| v.is_finite());
-        let y: Vec<T> = y.iter().map(literal).collect();
-        let u: Vec<T> = u.iter().map(literal).collect();
+        let finite = |(_, x, p): kalman::Sampled<T>| x.iter().chain(&p).all(|v| v.is_finite()).then_some((x, p));
+        let (y, u) = (literals::<T>(y), literals::<T>(u));
+        let RestartStep {
+            filter,
+            code,
+            restart,
+            state_targets,
+            started,
+            rule,
+            scratch,
+            ..
+        } = self;
         let inputs_finite = u.iter().all(|v| v.is_finite());
         if !(inputs_finite && y.iter().all(|v| v.is_finite())) {
-            if inputs_finite {
-                let (_, next_x, next_p) = self.filter.run(&self.x, &self.p, None, &u, &mut self.scratch);
-                if finite(&next_x, &next_p) {
-                    (self.x, self.p) = (next_x, next_p);
-                }
-            }
+            firmware::rules::lost(&mut rule.carried, inputs_finite, |(x, p)| {
+                finite(filter.run(x, p, None, &u, &mut scratch.borrow_mut()))
+            });
+            let _ = self.refusals.count::<()>(Err(RejectedSample));
             return self.nan.clone();
         }
-        if !self.checked && row.iter().all(|v| v.is_finite()) {
-            self.checked = true;
-            let states: Vec<T> = self.state_targets.iter().map(|&t| row[t]).collect();
-            if disagrees(&self.x, &self.p, &states, self.restart) {
-                let (_, next_x, next_p) = self.filter.run(&states, &self.started, None, &u, &mut self.scratch);
-                if finite(&next_x, &next_p) {
-                    (self.x, self.p) = (next_x, next_p);
-                    self.last = row.to_vec();
-                    return row.to_vec();
-                }
+        let states = |row: &[T]| state_targets.iter().map(|&t| row[t]).collect::<Vec<T>>();
+        if !rule.checked {
+            let restarted = rule.check(
+                || row.iter().all(|v| v.is_finite()).then_some(row),
+                |(x, p), row| disagrees(x, p, &states(row), restart),
+                |row| finite(filter.run(&states(row), started, None, &u, &mut scratch.borrow_mut())),
+            );
+            if let Some(row) = restarted {
+                self.last = row.to_vec();
+                return row.to_vec();
             }
         }
-        let (estimate, next_x, next_p) = self.filter.run(&self.x, &self.p, Some(&y), &u, &mut self.scratch);
-        if finite(&next_x, &next_p) {
-            (self.x, self.p) = (next_x, next_p);
+        let result = rule.follow(|(x, p)| {
+            let (estimate, x, p) = filter.run(x, p, Some(&y), &u, &mut scratch.borrow_mut());
             let estimate = estimate.expect("a measured sample has an estimate");
-            self.last = self.code.targets(&estimate, &u, &mut self.scratch);
+            let (x, p) = finite((None, x, p))?;
+            Some(((x, p), code.targets(&estimate, &u, &mut scratch.borrow_mut())))
+        });
+        if let Ok(targets) = self.refusals.count(result) {
+            self.last = targets;
         }
         self.last.clone()
+    }
+
+    /// Samples refused so far, as the chip counts them.
+    pub fn refused(&self) -> u32 {
+        self.refusals.get()
     }
 }
 

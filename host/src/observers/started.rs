@@ -1,5 +1,5 @@
-//! `firmware::Started` on the host, step for step, over a simulated run: the one mirror of the
-//! chip's shell that the model-corrected map ([`super::corrected`]) and the map-started EKF
+//! `firmware::Started`'s own rule ([`firmware::rules::StartedRule`]) on the host over a simulated run:
+//! the shell that the model-corrected map ([`super::corrected`]) and the map-started EKF
 //! ([`super::ekf::estimate_started`]) plug their samples into.
 //!
 //! No estimate before the map's first (NaN rows: before sample `first`, or while the map's row is not
@@ -11,62 +11,53 @@
 //! prediction that gives `None` (not finite) is refused too: nothing carried changes and the last
 //! estimate stays.
 
-use firmware::Scalar;
+use firmware::rules::{Given, Refusals, StartedRule};
+use firmware::{RejectedSample, Scalar};
 
-use crate::data::Run;
-
-/// The targets at every sample of `run` (rows of `map`'s width), in `T`. `map` is the map's
-/// estimate at every sample, `state_targets` the map target of each state. `start(x, u)` gives what
-/// to carry from the map's states; `follow(carried, j, map_states, y, u)` what to carry next and the
-/// targets; `lost(carried, u)` what to carry over a refused sample with a finite input.
-pub fn run<T: Scalar, C>(
-    first: usize,
-    state_targets: &[usize],
-    map: &[Vec<T>],
-    run: &Run,
-    mut start: impl FnMut(&[T], &[T]) -> Option<C>,
-    mut follow: impl FnMut(&C, usize, &[T], &[T], &[T]) -> Option<(C, Vec<T>)>,
-    mut lost: impl FnMut(&C, &[T]) -> Option<C>,
-) -> Vec<Vec<T>> {
-    let width = map.first().map_or(0, Vec::len);
-    let mut shell = Shell::new(first, state_targets, width);
-    map.iter()
-        .zip(run.measurements.iter().zip(run.inputs.iter()))
-        .map(|(row, (y, u))| shell.step(row, y, u, &mut start, &mut follow, &mut lost))
-        .collect()
-}
-
-/// [`run`] one sample at a time: what `firmware::Started` carries between samples.
+/// One sample at a time: `firmware::Started`'s rule ([`StartedRule`]) and the rows the host
+/// reads off it.
 pub struct Shell<T, C> {
     first: usize,
     state_targets: Vec<usize>,
+    start_up: usize,
+    steady_reads_map: bool,
     /// A row of NaN: no estimate.
     nan: Vec<T>,
-    carried: Option<C>,
-    /// Samples taken since the start.
-    j: usize,
+    rule: StartedRule<C>,
+    refusals: Refusals,
     /// Samples seen.
     k: usize,
     last: Vec<T>,
 }
 
 impl<T: Scalar, C> Shell<T, C> {
-    /// Before the first sample of a run, for rows of `width` targets.
-    pub fn new(first: usize, state_targets: &[usize], width: usize) -> Self {
+    /// Before the first sample of a run, for rows of `width` targets, the follower reading the map during `start_up` estimates and afterwards only if
+    /// `steady_reads_map`.
+    pub fn new(
+        first: usize,
+        state_targets: &[usize],
+        width: usize,
+        (start_up, steady_reads_map): (usize, bool),
+    ) -> Self {
         let nan = vec![T::literal(f32::NAN, f64::NAN); width];
         Shell {
             first,
             state_targets: state_targets.to_vec(),
+            start_up,
+            steady_reads_map,
             last: nan.clone(),
             nan,
-            carried: None,
-            j: 0,
+            rule: StartedRule::START,
+            refusals: Refusals::NONE,
             k: 0,
         }
     }
 
     /// The targets at the next sample (outputs `y`, inputs `u`), given the map's estimate `row` there
-    /// (see [`run`] for `start`, `follow` and `lost`).
+    /// (zeros where not read): `start(x, u)` gives what to carry from the map's states,
+    /// `follow(carried, j, map_states, y, u)` what to carry next and the targets, `lost(carried, u)`
+    /// what to carry over a refused sample with a finite input. NaN where the sample is refused or there is no
+    /// estimate yet, the latest estimate where a start or follow-up is not finite.
     pub fn step(
         &mut self,
         row: &[T],
@@ -76,43 +67,49 @@ impl<T: Scalar, C> Shell<T, C> {
         follow: &mut impl FnMut(&C, usize, &[T], &[T], &[T]) -> Option<(C, Vec<T>)>,
         lost: &mut impl FnMut(&C, &[T]) -> Option<C>,
     ) -> Vec<T> {
-        let literal = |v: f64| T::literal(v as f32, v);
         let k = self.k;
         self.k += 1;
-        let refused = y.iter().chain(u).any(|v| !v.is_finite());
-        let u: Vec<T> = u.iter().map(|&v| literal(v)).collect();
-        if refused {
-            if let Some(c) = self.carried.as_ref().filter(|_| u.iter().all(|v| v.is_finite())) {
-                if let Some(next) = lost(c, &u) {
-                    self.carried = Some(next);
-                }
+        let (y, u) = (literals::<T>(y), literals::<T>(u));
+        let inputs_finite = u.iter().all(|v| v.is_finite());
+        if !(inputs_finite && y.iter().all(|v| v.is_finite())) {
+            self.rule.lost(inputs_finite, |c| lost(c, &u));
+            let _ = self.refusals.count::<()>(Err(RejectedSample));
+            return self.nan.clone();
+        }
+        let targets = &self.state_targets;
+        let states = |row: &[T]| targets.iter().map(|&t| row[t]).collect::<Vec<T>>();
+        let first = self.first;
+        let read = self.rule.reads_map(self.start_up, self.steady_reads_map);
+        let result = self.rule.accepted(
+            self.start_up,
+            (read && k >= first && row.iter().all(|v| v.is_finite())).then_some(row),
+            |row| start(&states(row), &u),
+            |c, j, _, row| {
+                let map = row.map_or_else(|| vec![T::ZERO; targets.len()], |row| states(row));
+                follow(c, j, &map, &y, &u)
+            },
+        );
+        match self.refusals.count(result) {
+            Ok(Given::Nothing) => self.nan.clone(),
+            Ok(Given::Map(row)) => {
+                self.last = row.to_vec();
+                row.to_vec()
             }
-            return self.nan.clone();
-        }
-        if self.carried.is_none() && (k < self.first || row.iter().any(|v| !v.is_finite())) {
-            return self.nan.clone();
-        }
-        let y: Vec<T> = y.iter().map(|&v| literal(v)).collect();
-        let states: Vec<T> = self.state_targets.iter().map(|&t| row[t]).collect();
-        match &self.carried {
-            None => match start(&states, &u) {
-                Some(c) => {
-                    self.carried = Some(c);
-                    self.j = 1;
-                    self.last = row.to_vec();
-                    row.to_vec()
-                }
-                None => self.last.clone(),
-            },
-            Some(c) => match follow(c, self.j, &states, &y, &u) {
-                Some((next, targets)) => {
-                    self.carried = Some(next);
-                    self.j += 1;
-                    self.last.clone_from(&targets);
-                    targets
-                }
-                None => self.last.clone(),
-            },
+            Ok(Given::Followed(targets)) => {
+                self.last.clone_from(&targets);
+                targets
+            }
+            Err(RejectedSample) => self.last.clone(),
         }
     }
+
+    /// Samples refused so far, as the chip counts them ([`Refusals`]).
+    pub fn refused(&self) -> u32 {
+        self.refusals.get()
+    }
+}
+
+/// `values` in `T`, as the chip receives them.
+pub fn literals<T: Scalar>(values: &[f64]) -> Vec<T> {
+    values.iter().map(|&v| T::literal(v as f32, v)).collect()
 }

@@ -1,12 +1,12 @@
 {# The filter from the box centre (`ekf_box`, `ukf_box`): `push` of the filter, then the targets of
    its estimate, each inside. -#}
-void {{ name }}_{{ kind }}_init({{ name }}_{{ kind }} *o) {
+static void {{ kind }}_fresh({{ name }}_{{ kind }} *o) {
     memcpy(o->x, {{ label }}_X0, sizeof o->x);
     memcpy(o->p, {{ label }}_P0, sizeof o->p);
     o->ready = 0;
 }
 
-{{ name }}_status {{ name }}_{{ kind }}_push({{ name }}_{{ kind }} *o, const float *y, const float *u) {
+static {{ name }}_status {{ kind }}_sample({{ name }}_{{ kind }} *o, const float *y, const float *u) {
     float estimate[{{ upper }}_STATES];
     unsigned i;
     if (!inputs_finite(u)) {
@@ -27,4 +27,4 @@ void {{ name }}_{{ kind }}_init({{ name }}_{{ kind }} *o) {
     return {{ upper }}_OK;
 }
 
-{% include "c/estimate.c" %}
+{% include "c/counted.c" %}

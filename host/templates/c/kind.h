@@ -8,6 +8,8 @@ typedef struct {
 {{ fields }}    float values[{{ upper }}_TARGETS];
     {{ name }}_saturation flags[{{ upper }}_TARGETS];
     int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
 } {{ name }}_{{ kind }};
 
 void {{ name }}_{{ kind }}_init({{ name }}_{{ kind }} *observer);

@@ -28,7 +28,7 @@ static int restart_check({{ name }}_ekf_restart *o, const float *y, const float 
     return 1;
 }
 
-void {{ name }}_ekf_restart_init({{ name }}_ekf_restart *o) {
+static void {{ kind }}_fresh({{ name }}_{{ kind }} *o) {
     {{ name }}_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
@@ -36,7 +36,7 @@ void {{ name }}_ekf_restart_init({{ name }}_ekf_restart *o) {
     o->ready = 0;
 }
 
-{{ name }}_status {{ name }}_ekf_restart_push({{ name }}_ekf_restart *o, const float *y, const float *u) {
+static {{ name }}_status {{ kind }}_sample({{ name }}_{{ kind }} *o, const float *y, const float *u) {
     float states[{{ upper }}_STATES];
     {{ name }}_saturation state_flags[{{ upper }}_STATES];
     if (!accepts(y, u)) {
@@ -56,4 +56,4 @@ void {{ name }}_ekf_restart_init({{ name }}_ekf_restart *o) {
     return {{ upper }}_OK;
 }
 
-{% include "c/estimate.c" %}
+{% include "c/counted.c" %}

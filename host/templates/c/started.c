@@ -1,13 +1,13 @@
 {# `<name>_<kind>_init`, `_push` and `_estimate` of a follower of the map as `firmware::Started` runs
    it; `init_carried` resets the carried state. -#}
-void {{ name }}_{{ kind }}_init({{ name }}_{{ kind }} *o) {
+static void {{ kind }}_fresh({{ name }}_{{ kind }} *o) {
     {{ name }}_map_init(&o->window);
 {{ init_carried }}    o->count = 0u;
     o->started = 0;
     o->ready = 0;
 }
 
-{{ name }}_status {{ name }}_{{ kind }}_push({{ name }}_{{ kind }} *o, const float *y, const float *u) {
+static {{ name }}_status {{ kind }}_sample({{ name }}_{{ kind }} *o, const float *y, const float *u) {
     const int start_up = o->count <= {{ start_up }}u;
     float all[{{ upper }}_TARGETS], map[{{ upper }}_STATES], states[{{ upper }}_STATES];
     {{ name }}_saturation all_flags[{{ upper }}_TARGETS], state_flags[{{ upper }}_STATES];
@@ -48,4 +48,4 @@ void {{ name }}_{{ kind }}_init({{ name }}_{{ kind }} *o) {
     return {{ upper }}_OK;
 }
 
-{% include "c/estimate.c" %}
+{% include "c/counted.c" %}

@@ -33,24 +33,23 @@ impl<T: Scalar + Maths> {{ name }}<T> {
     }
 
     /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
-    /// type's docs). The same operations run for every accepted sample.
+    /// type's docs): the rule every filter follows ([`firmware::rules::filter_sample`]) over this
+    /// filter's two written-out samples. The same operations run for every accepted sample.
     pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
-        if !u.iter().all(|v| v.is_finite()) {
-            return Err(firmware::RejectedSample);
-        }
-        if y.iter().all(|v| v.is_finite()) {
-            let (estimate, x, p) = {{ lower }}_measured(&self.x, &self.p, y, u);
-            if finite(&x, &p) {
-                (self.x, self.p) = (x, p);
-                return Ok(estimate);
-            }
-        } else {
-            let (x, p) = {{ lower }}_unmeasured(&self.x, &self.p, u);
-            if finite(&x, &p) {
-                (self.x, self.p) = (x, p);
-            }
-        }
-        Err(firmware::RejectedSample)
+        firmware::rules::filter_sample(
+            self,
+            u.iter().all(|v| v.is_finite()),
+            y.iter().all(|v| v.is_finite()),
+            |filter| {
+                let (estimate, x, p) = {{ lower }}_measured(&filter.x, &filter.p, y, u);
+                (estimate, {{ name }} { x, p })
+            },
+            |filter| {
+                let (x, p) = {{ lower }}_unmeasured(&filter.x, &filter.p, u);
+                {{ name }} { x, p }
+            },
+            |filter| finite(&filter.x, &filter.p),
+        )
     }
 }
 

@@ -119,6 +119,7 @@ pub fn c_harness(
          \x20       }}\n\
          \x20       printf(\"\\n\");\n\
          \x20   }}\n\
+         {refused}\
          \x20   printf(\"RAM %u\\nSTACK %u\\nDONE\\n\", (unsigned)sizeof observer, stack);\n\
          \x20   return 0;\n\
          }}\n",
@@ -128,7 +129,18 @@ pub fn c_harness(
         y = rows(ys, outputs),
         u = rows(us, inputs),
         painted = PAINTED_WORDS,
+        refused = if counts_refusals(kind) {
+            "    printf(\"REFUSED %lu\\n\", (unsigned long)observer.refused);\n"
+        } else {
+            ""
+        },
     )
+}
+
+/// Whether C kind `kind` counts its refused samples (`refused`, the filter kinds: each over one of
+/// the shared rules, `firmware::rules`); the harness then prints `REFUSED <count>` after the samples.
+pub fn counts_refusals(kind: &str) -> bool {
+    !matches!(kind, "map" | "mhe" | "fixed")
 }
 
 /// The lines of a harness's output that are samples (those [`c_harness`] prints first).

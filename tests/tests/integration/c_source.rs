@@ -11,8 +11,8 @@ use std::process::Command;
 
 use integration_tests::chip_table;
 use integration_tests::on_target::{
-    c_table, compare, inexact, run_c_observer, run_shipped_on_board, sample_lines, shipped_cases, Case, Unavailable,
-    STRICT_C_FLAGS,
+    c_table, compare, counts_refusals, inexact, run_c_observer, run_shipped_on_board, sample_lines, shipped_cases,
+    Case, Unavailable, STRICT_C_FLAGS,
 };
 use integration_tests::workspace_root;
 
@@ -57,7 +57,16 @@ fn compile_and_run(compiler: &str, dir: &Path, c: &Path, case: &Case) -> Option<
     );
     let run = Command::new(&exe).output().unwrap();
     assert!(run.status.success(), "{name} {kind} harness ({compiler}) failed");
-    Some(sample_lines(&String::from_utf8(run.stdout).unwrap()))
+    let text = String::from_utf8(run.stdout).unwrap();
+    if counts_refusals(kind) {
+        // The C counter (one place, `counted.c`) against the Rust observer's refused samples.
+        let refused = case.expected.iter().filter(|l| l.starts_with("1 ")).count();
+        assert!(
+            text.contains(&format!("\nREFUSED {refused}\n")),
+            "{name} {kind} ({compiler}): the Rust observer refused {refused} samples, the C counted otherwise"
+        );
+    }
+    Some(sample_lines(&text))
 }
 
 /// A scratch folder of this test binary's own.

@@ -33,6 +33,7 @@ mod on_target_m0;
 mod plot_cli;
 mod quality_gates;
 mod readme;
+mod refusals;
 mod report_html;
 mod saved_tables;
 mod standalone;

@@ -1,11 +1,15 @@
-//! The EKF over the written-out programs ([`crate::plant::kalman::FilterCode`]) in `T`, step for
-//! step as the generated code runs it: from the box centre (`Ekf::push`) and started by the map
-//! (`StartedEkf`). The mirrors that predict the chip's bits, kept apart from the firmware's own
-//! filter in `f64` that tunes and judges ([`super::estimate_run`]).
+//! The EKF over the written-out programs ([`crate::plant::kalman::FilterCode`]) in `T`, by the
+//! firmware's own rules ([`firmware::rules`]) as the generated code runs them: from the box centre
+//! (`Ekf::push`) and started by the map (`StartedEkf`). They predict the chip's bits; the programs
+//! are interpreted, the rules are the chip's.
+
+use std::cell::RefCell;
 
 use crate::data::Run;
+use crate::observers::started::{literals, Shell};
 use crate::plant::kalman::EkfConstants;
 use crate::plant::{Covariance, ModelCode};
+use firmware::rules::Refusals;
 
 /// The EKF from `constants.x0` (the box centre, or the spec's start) over `run`, in `T`, step for step the generated
 /// `Ekf::push` (the written-out programs `filter`): per sample the targets of `x̂(k|k)`, or `None`
@@ -25,57 +29,64 @@ pub fn estimate_box<T: firmware::Scalar + firmware::emitted::Maths>(
         .collect()
 }
 
-/// [`estimate_box`] one sample at a time: what the filter carries between samples.
+/// [`estimate_box`] one sample at a time: the firmware's rule ([`firmware::rules::filter_sample`])
+/// over the written-out programs.
 pub struct BoxStep<'a, T> {
     filter: &'a crate::plant::kalman::FilterCode,
     code: &'a ModelCode,
-    x: Vec<T>,
-    p: Vec<T>,
-    scratch: Vec<T>,
+    /// `x` and the upper triangle of `P`.
+    carried: (Vec<T>, Vec<T>),
+    refusals: Refusals,
+    scratch: RefCell<Vec<T>>,
 }
 
 impl<'a, T: firmware::Scalar + firmware::emitted::Maths> BoxStep<'a, T> {
     /// At `x0` with `P = p0`, before the first sample of a run.
     pub fn new(filter: &'a crate::plant::kalman::FilterCode, x0: &[f64], p0: &Covariance, code: &'a ModelCode) -> Self {
-        let literal = |v: &f64| T::literal(*v as f32, *v);
         BoxStep {
             filter,
             code,
-            x: x0.iter().map(literal).collect(),
-            p: p0.upper().iter().map(literal).collect(),
-            scratch: Vec::new(),
+            carried: (literals(x0), literals(&p0.upper())),
+            refusals: Refusals::NONE,
+            scratch: RefCell::new(Vec::new()),
         }
     }
 
     /// The targets after the sample with outputs `y` and inputs `u` (`None`: refused).
     pub fn step(&mut self, y: &[f64], u: &[f64]) -> Option<Vec<T>> {
-        let finite = |x: &[T], p: &[T]| x.iter().chain(p).all(|v| v.is_finite());
-        let u: Vec<T> = u.iter().map(|&v| T::literal(v as f32, v)).collect();
-        if !u.iter().all(|v| v.is_finite()) {
-            return None;
-        }
-        let y: Vec<T> = y.iter().map(|&v| T::literal(v as f32, v)).collect();
-        let measured = y.iter().all(|v| v.is_finite());
-        let (estimate, next_x, next_p) = self.filter.run(
-            &self.x,
-            &self.p,
-            measured.then_some(y.as_slice()),
-            &u,
-            &mut self.scratch,
+        let (y, u) = (literals::<T>(y), literals::<T>(u));
+        let BoxStep { filter, scratch, .. } = self;
+        let result = firmware::rules::filter_sample(
+            &mut self.carried,
+            u.iter().all(|v| v.is_finite()),
+            y.iter().all(|v| v.is_finite()),
+            |(x, p)| {
+                let (estimate, x, p) = filter.run(x, p, Some(&y), &u, &mut scratch.borrow_mut());
+                (estimate.expect("a measured sample has an estimate"), (x, p))
+            },
+            |(x, p)| {
+                let (_, x, p) = filter.run(x, p, None, &u, &mut scratch.borrow_mut());
+                (x, p)
+            },
+            |(x, p)| finite(x, p),
         );
-        let taken = finite(&next_x, &next_p);
-        if taken {
-            (self.x, self.p) = (next_x, next_p);
-        }
-        match estimate {
-            Some(estimate) if taken => Some(self.code.targets(&estimate, &u, &mut self.scratch)),
-            _ => None,
-        }
+        let estimate = self.refusals.count(result).ok()?;
+        Some(self.code.targets(&estimate, &u, &mut self.scratch.borrow_mut()))
+    }
+
+    /// Samples refused so far, as the chip counts them.
+    pub fn refused(&self) -> u32 {
+        self.refusals.get()
     }
 }
 
+/// Whether every entry of `x` and `p` is finite (the generated `finite`).
+fn finite<T: firmware::Scalar>(x: &[T], p: &[T]) -> bool {
+    x.iter().chain(p).all(|v| v.is_finite())
+}
+
 /// The EKF started by the map (the generated `StartedEkf` in `firmware::Started`, step for step,
-/// [`started::run`](crate::observers::started::run)) in `T`: at sample `first` the map's estimate, from which `(x, P)` is
+/// [`Shell`]) in `T`: at sample `first` the map's estimate, from which `(x, P)` is
 /// predicted with `P` = `p0` on the diagonal; then `filter`'s measured samples.
 pub fn estimate_started<T: firmware::Scalar + firmware::emitted::Maths>(
     filter: &crate::plant::kalman::FilterCode,
@@ -93,14 +104,15 @@ pub fn estimate_started<T: firmware::Scalar + firmware::emitted::Maths>(
         .collect()
 }
 
-/// [`estimate_started`] one sample at a time.
+/// [`estimate_started`] one sample at a time: `firmware::Started`'s rule ([`Shell`]) over the
+/// written-out programs.
 pub struct StartedStep<'a, T> {
     filter: &'a crate::plant::kalman::FilterCode,
     code: &'a ModelCode,
     /// `P` at the start, its upper triangle.
     upper: Vec<T>,
-    scratch: std::cell::RefCell<Vec<T>>,
-    shell: crate::observers::started::Shell<T, (Vec<T>, Vec<T>)>,
+    scratch: RefCell<Vec<T>>,
+    shell: Shell<T, (Vec<T>, Vec<T>)>,
 }
 
 impl<'a, T: firmware::Scalar + firmware::emitted::Maths> StartedStep<'a, T> {
@@ -115,12 +127,10 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> StartedStep<'a, T> {
         StartedStep {
             filter,
             code,
-            upper: crate::plant::kalman::diagonal_upper(p0)
-                .iter()
-                .map(|&v| T::literal(v as f32, v))
-                .collect(),
-            scratch: std::cell::RefCell::new(Vec::new()),
-            shell: crate::observers::started::Shell::new(first, state_targets, code.dimensions.targets),
+            upper: literals(&crate::plant::kalman::diagonal_upper(p0)),
+            scratch: RefCell::new(Vec::new()),
+            // `StartedEkf`: no start-up, the map read at the start only.
+            shell: Shell::new(first, state_targets, code.dimensions.targets, (0, false)),
         }
     }
 
@@ -133,26 +143,26 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> StartedStep<'a, T> {
             scratch,
             shell,
         } = self;
-        let finite = |x: &[T], p: &[T]| x.iter().chain(p).all(|v| v.is_finite());
+        let predicted = |(_, x, p): crate::plant::kalman::Sampled<T>| finite(&x, &p).then_some((x, p));
         shell.step(
             row,
             y,
             u,
-            &mut |x, u| {
-                let (_, x, p) = filter.run(x, upper, None, u, &mut scratch.borrow_mut());
-                finite(&x, &p).then_some((x, p))
-            },
+            // `StartedEkf::start`: `(x, P)` predicted from the map's states with `P` = `p0`.
+            &mut |x, u| predicted(filter.run(x, upper, None, u, &mut scratch.borrow_mut())),
             &mut |(x, p): &(Vec<T>, Vec<T>), _, _, y, u| {
                 let (estimate, x, p) = filter.run(x, p, Some(y), u, &mut scratch.borrow_mut());
-                let estimate = estimate.unwrap_or_else(|| x.clone());
+                let estimate = estimate.expect("a measured sample has an estimate");
                 let targets = code.targets(&estimate, u, &mut scratch.borrow_mut());
                 finite(&x, &p).then_some(((x, p), targets))
             },
             // A lost output: the prediction alone (`StartedEkf::predict`).
-            &mut |(x, p): &(Vec<T>, Vec<T>), u| {
-                let (_, x, p) = filter.run(x, p, None, u, &mut scratch.borrow_mut());
-                finite(&x, &p).then_some((x, p))
-            },
+            &mut |(x, p): &(Vec<T>, Vec<T>), u| predicted(filter.run(x, p, None, u, &mut scratch.borrow_mut())),
         )
+    }
+
+    /// Samples refused so far, as the chip counts them.
+    pub fn refused(&self) -> u32 {
+        self.shell.refused()
     }
 }

@@ -1,0 +1,140 @@
+//! Every filter kind counts the samples it refuses, by the one shared rule (`firmware::rules`):
+//! over a sequence with lost outputs, non-finite inputs and outputs that overflow the filters, the
+//! chip's count is the number of refused pushes, and the host, which runs the same rules over its
+//! interpreted programs, counts the same. (The C counts the same too: `c_source`.)
+
+use firmware::Estimator;
+use host::data::{Rows, Run};
+use host::observers::restart::{RestartConstants, RestartStep};
+use host::observers::{corrected, ekf};
+use host::plant::correction::correction_code;
+use host::plant::kalman::filter_code;
+use host::plant::ModelCode;
+use integration_tests::load_relative;
+use integration_tests::on_target::extended;
+
+/// Runs `observer` over `(ys, us)`; the number of refused pushes, checked against its own count.
+fn refused_pushes<O>(mut observer: O, ys: &[Vec<f32>], us: &[Vec<f32>], counted: impl Fn(&O) -> u32) -> u32
+where
+    O: Estimator<Scalar = f32>,
+    O::Outputs: for<'a> TryFrom<&'a [f32]>,
+    O::Inputs: for<'a> TryFrom<&'a [f32]>,
+{
+    let mut refused = 0;
+    for (y, u) in ys.iter().zip(us) {
+        let (Ok(y), Ok(u)) = (O::Outputs::try_from(y), O::Inputs::try_from(u)) else {
+            panic!("a sample of the wrong width")
+        };
+        refused += u32::from(observer.push(y, u).is_err());
+    }
+    assert_eq!(counted(&observer), refused, "the chip's count is its refused pushes");
+    refused
+}
+
+macro_rules! check_refusals {
+    ($test:ident, $module:ident) => {
+        #[test]
+        fn $test() {
+            use generated::$module as d;
+            let design = load_relative(d::SPEC);
+            let code = ModelCode::new(&design).unwrap();
+            let (ys, us) = extended(&d::RECORDED_Y, &d::RECORDED_U, d::HORIZON);
+            let wide = |rows: &[Vec<f32>]| {
+                Rows::from(
+                    rows.iter()
+                        .map(|r| r.iter().map(|&v| f64::from(v)).collect())
+                        .collect::<Vec<Vec<f64>>>(),
+                )
+            };
+            let run = Run {
+                states: Rows::from(vec![vec![0.0; d::STATES]; ys.len()]),
+                inputs: wide(&us),
+                measurements: wide(&ys),
+                targets: Rows::from(vec![vec![0.0; d::TARGETS]; ys.len()]),
+                parameters: Vec::new(),
+            };
+            // The map's f32 estimates as the chip computes them (NaN where it refuses the sample).
+            let mut map = d::map_observer();
+            let maps: Vec<Vec<f32>> = ys
+                .iter()
+                .zip(&us)
+                .map(
+                    |(y, u)| match map.push(y[..].try_into().unwrap(), u[..].try_into().unwrap()) {
+                        Ok(()) => map.estimate().map_or(vec![f32::NAN; d::TARGETS], |e| {
+                            e.iter().map(|e| e.value).collect()
+                        }),
+                        Err(_) => vec![f32::NAN; d::TARGETS],
+                    },
+                )
+                .collect();
+            let state_targets = corrected::state_targets(&design).unwrap();
+            let first = design.map.horizon - 1;
+            let (constants, ekf_constants) = integration_tests::emitted_constants!(d, &design);
+            let filter = filter_code(&code, &ekf_constants);
+            let samples = || (0..ys.len()).map(|k| (&maps[k], &run.measurements[k], &run.inputs[k]));
+
+            // The box filter's start as emitted (`Restart::FRESH`, `P(0)` from its triangle).
+            let (x0, upper) = <d::StartedEkf as firmware::emitted::Restart<
+                f64,
+                { d::STATES },
+                { d::OUTPUTS },
+                { d::INPUTS },
+                { d::TARGETS },
+            >>::FRESH;
+            let mut fresh = ekf_constants.clone();
+            fresh.x0 = x0.to_vec();
+            let entry = |i: usize, j: usize| upper[host::plant::kalman::upper(d::STATES, i.min(j), i.max(j))];
+            fresh.p0 = host::plant::Covariance::Full(
+                (0..d::STATES)
+                    .map(|i| (0..d::STATES).map(|j| entry(i, j)).collect())
+                    .collect(),
+            );
+            let box_filter = filter_code(&code, &fresh);
+
+            let chip = refused_pushes(d::EkfBoxObserver::new(), &ys, &us, |o| o.refused());
+            assert!(chip >= 4, "lost outputs, overflows and bad inputs: {chip}");
+            let mut host = ekf::BoxStep::<f32>::new(&box_filter, &fresh.x0, &fresh.p0, &code);
+            samples().for_each(|(_, y, u)| drop(host.step(y, u)));
+            assert_eq!(host.refused(), chip, "ekf_box");
+
+            let chip = refused_pushes(d::EkfMapObserver::new(), &ys, &us, |o| o.refused());
+            let mut host = ekf::StartedStep::<f32>::new(&filter, &d::STARTED_P0, &state_targets, first, &code);
+            samples().for_each(|(row, y, u)| drop(host.step(row, y, u)));
+            assert_eq!(host.refused(), chip, "ekf_map");
+
+            let chip = refused_pushes(d::EkfRestartObserver::new(), &ys, &us, |o| o.refused());
+            let restart = RestartConstants {
+                threshold: d::RESTART_THRESHOLD,
+                variances: d::RESTART_VARIANCES.to_vec(),
+            };
+            let mut host = RestartStep::<f32>::new(
+                &box_filter,
+                &fresh,
+                &d::STARTED_P0,
+                &restart,
+                &state_targets,
+                &code,
+            );
+            samples().for_each(|(row, y, u)| drop(host.step(row, y, u)));
+            assert_eq!(host.refused(), chip, "ekf_restart");
+
+            let chip = refused_pushes(d::CorrectedObserver::new(), &ys, &us, |o| o.refused());
+            let setting = corrected::Setting {
+                code: &code,
+                h: constants.h,
+                substeps: constants.substeps,
+                state_targets: &state_targets,
+                first,
+                lower: constants.lower.clone(),
+                upper: constants.upper.clone(),
+            };
+            let programs = correction_code(&code, &constants);
+            let mut host = corrected::CorrectedStep::<f32>::new(&setting, &programs, &constants);
+            samples().for_each(|(row, y, u)| drop(host.step(row, y, u)));
+            assert_eq!(host.refused(), chip, "corrected");
+        }
+    };
+}
+
+check_refusals!(vanderpol_refusals_are_counted_alike_on_chip_and_host, vanderpol);
+check_refusals!(two_tanks_refusals_are_counted_alike_on_chip_and_host, two_tanks);
