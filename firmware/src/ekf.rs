@@ -25,7 +25,8 @@
 //! (time advances with the given input if it is finite; a non-finite input skips the prediction too), so
 //! a refused sample costs the filter that sample's information and nothing else. A step whose result
 //! is not finite (the model overflowed, e.g. `exp` of a diverged estimate) is not taken either: the
-//! filter keeps its state and covariance and refuses the sample, so no NaN ever enters its state.
+//! filter keeps its state and covariance and refuses the sample, so no NaN ever enters its state: the
+//! rule every filter kind follows, written once in [`crate::rules`].
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(s > 0)` is deliberate: a NaN must count as no information.
 
@@ -69,7 +70,7 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
             bounds: None,
             plant,
         };
-        filter.symmetrise();
+        symmetrise(&mut filter.p);
         filter
     }
 
@@ -80,13 +81,6 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
         self.x = crate::bounds::project(&self.x, &lower, &upper);
         self.bounds = Some((lower, upper));
         self
-    }
-
-    /// The state projected onto the bounds, if any.
-    fn project(&mut self) {
-        if let Some((lower, upper)) = &self.bounds {
-            self.x = crate::bounds::project(&self.x, lower, upper);
-        }
     }
 
     /// The current estimate.
@@ -102,41 +96,70 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
     }
 
     /// Takes the sample `(y, u)`: the measurement update, then the prediction to the next sample.
-    /// Returns the updated estimate `x̂(k|k)`; a non-finite `y` is refused (see the module docs).
+    /// Returns the updated estimate `x̂(k|k)`; a non-finite `y` is refused (see the module docs): the
+    /// rule every filter follows, [`crate::rules::filter_sample`].
     pub fn push(&mut self, y: &[T; NY], u: &[T; NU]) -> Result<[T; NX], crate::RejectedSample> {
-        if !u.iter().all(|v| v.is_finite()) {
-            return Err(crate::RejectedSample);
-        }
-        let measured = y.iter().all(|v| v.is_finite());
-        let before = (self.x, self.p);
-        if measured {
-            self.update(y, u);
-            self.project();
-        }
-        let estimate = self.x;
-        self.predict(u);
-        self.project();
-        if !self.x.iter().chain(self.p.iter().flatten()).all(|v| v.is_finite()) {
-            (self.x, self.p) = before; // the model overflowed: the step is not taken
-            return Err(crate::RejectedSample);
-        }
-        if measured {
-            Ok(estimate)
-        } else {
-            Err(crate::RejectedSample)
+        let Ekf {
+            x,
+            p,
+            q,
+            r,
+            bounds,
+            plant,
+        } = self;
+        let steps = Steps { q, r, bounds, plant };
+        let mut carried = (*x, *p);
+        let result = crate::rules::filter_sample(
+            &mut carried,
+            u.iter().all(|v| v.is_finite()),
+            y.iter().all(|v| v.is_finite()),
+            |&(mut x, mut p)| {
+                steps.update(&mut x, &mut p, y, u);
+                steps.project(&mut x);
+                let estimate = x;
+                steps.predict(&mut x, &mut p, u);
+                (estimate, (x, p))
+            },
+            |&(mut x, mut p)| {
+                steps.predict(&mut x, &mut p, u);
+                (x, p)
+            },
+            |(x, p)| x.iter().chain(p.iter().flatten()).all(|v| v.is_finite()),
+        );
+        (*x, *p) = carried;
+        result
+    }
+}
+
+/// What a filter's two samples read besides its state and covariance.
+struct Steps<'a, T, P, const NX: usize, const NY: usize> {
+    q: &'a [[T; NX]; NX],
+    r: &'a [T; NY],
+    bounds: &'a Option<([T; NX], [T; NX])>,
+    plant: &'a P,
+}
+
+impl<T: Scalar, P, const NX: usize, const NY: usize> Steps<'_, T, P, NX, NY> {
+    /// `x` projected onto the bounds, if any.
+    fn project(&self, x: &mut [T; NX]) {
+        if let Some((lower, upper)) = self.bounds {
+            *x = crate::bounds::project(x, lower, upper);
         }
     }
 
     /// Sequential scalar updates in Joseph form, one per output.
-    fn update(&mut self, y: &[T; NY], u: &[T; NU]) {
+    fn update<const NU: usize>(&self, x: &mut [T; NX], p: &mut [[T; NX]; NX], y: &[T; NY], u: &[T; NU])
+    where
+        P: Plant<T, NX, NY, NU>,
+    {
         for i in 0..NY {
-            let (predicted, h) = self.plant.output(&self.x, u);
+            let (predicted, h) = self.plant.output(x, u);
             let row = h[i];
             // P Hᵢᵀ and s = Hᵢ P Hᵢᵀ + rᵢ.
             let mut ph = [T::ZERO; NX];
             for (a, out) in ph.iter_mut().enumerate() {
                 for (b, &hb) in row.iter().enumerate() {
-                    *out += self.p[a][b] * hb;
+                    *out += p[a][b] * hb;
                 }
             }
             let mut s = self.r[i];
@@ -149,7 +172,7 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
             let inverse = T::one() / s;
             let gain = ph.map(|v| v * inverse);
             let innovation = y[i] - predicted[i];
-            for (x, &k) in self.x.iter_mut().zip(&gain) {
+            for (x, &k) in x.iter_mut().zip(&gain) {
                 *x += k * innovation;
             }
             // Joseph: P ← A P Aᵀ + K r Kᵀ with A = I - K Hᵢ.
@@ -160,37 +183,42 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
                     *entry = identity - gain[r] * row[c];
                 }
             }
-            let mut next = product_transposed(&product(&a, &self.p), &a);
+            let mut next = product_transposed(&product(&a, p), &a);
             for (r, next_row) in next.iter_mut().enumerate() {
                 for (c, entry) in next_row.iter_mut().enumerate() {
                     *entry += gain[r] * self.r[i] * gain[c];
                 }
             }
-            self.p = next;
-            self.symmetrise();
+            *p = next;
+            symmetrise(p);
         }
     }
 
-    /// `x ← f(x, u)`, `P ← F P Fᵀ + Q`.
-    fn predict(&mut self, u: &[T; NU]) {
-        let (x, f) = self.plant.step(&self.x, u);
-        let mut next = product_transposed(&product(&f, &self.p), &f);
-        for (next_row, q_row) in next.iter_mut().zip(&self.q) {
+    /// `x ← f(x, u)`, `P ← F P Fᵀ + Q`, then `x` projected onto the bounds.
+    fn predict<const NU: usize>(&self, x: &mut [T; NX], p: &mut [[T; NX]; NX], u: &[T; NU])
+    where
+        P: Plant<T, NX, NY, NU>,
+    {
+        let (next_x, f) = self.plant.step(x, u);
+        let mut next = product_transposed(&product(&f, p), &f);
+        for (next_row, q_row) in next.iter_mut().zip(self.q) {
             for (entry, &q) in next_row.iter_mut().zip(q_row) {
                 *entry += q;
             }
         }
-        self.x = x;
-        self.p = next;
-        self.symmetrise();
+        *x = next_x;
+        *p = next;
+        symmetrise(p);
+        self.project(x);
     }
+}
 
-    /// Copies the upper triangle of `P` onto the lower one.
-    fn symmetrise(&mut self) {
-        for r in 0..NX {
-            for c in 0..r {
-                self.p[r][c] = self.p[c][r];
-            }
+/// Copies the upper triangle of `p` onto the lower one.
+#[allow(clippy::needless_range_loop)] // `p[r][c] = p[c][r]` reads and writes one array
+fn symmetrise<T: Copy, const NX: usize>(p: &mut [[T; NX]; NX]) {
+    for r in 0..NX {
+        for c in 0..r {
+            p[r][c] = p[c][r];
         }
     }
 }
