@@ -136,7 +136,7 @@ macro_rules! emitted_constants {
         let design: &host::spec::Design = $design;
         let h = design.tau / design.chip_substeps as f64;
         (
-            host::plant::correction::CorrectionConstants {
+            host::observers::kind::corrected::program::CorrectionConstants {
                 g: $d::CORRECTED_G.to_vec(),
                 k: $d::CORRECTED_K.to_vec(),
                 k_start: $d::CORRECTED_K_START.to_vec(),

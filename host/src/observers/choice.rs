@@ -5,8 +5,9 @@
 use crate::plant::ModelCode;
 use crate::spec::{Design, ObserverKind, SpecError};
 
+use super::kind::corrected::run as corrected;
 use super::score::{self, CHEAPER_WITHIN};
-use super::{corrected, ekf, kind, ObserverFigures};
+use super::{ekf, kind, ObserverFigures};
 
 /// A kind's [score](score::score) on the tuning runs.
 fn tuning_score(figures: &ObserverFigures, spreads: &[f64]) -> f64 {

@@ -64,7 +64,9 @@ impl Drift {
     /// windows.
     pub fn long_samples(design: &crate::spec::Design) -> usize {
         let horizon = design.map.horizon;
-        horizon - 1 + super::corrected::START_UP_HORIZONS * horizon + Drift::WINDOWS * design.validation.samples
+        horizon - 1
+            + super::kind::corrected::run::START_UP_HORIZONS * horizon
+            + Drift::WINDOWS * design.validation.samples
     }
 }
 
@@ -158,7 +160,7 @@ pub enum Cost {
         max_seconds: f64,
         /// Mean iterations per window (a run's first window: summed over its starts).
         mean_iterations: f64,
-        /// The starts of a run's first window ([`super::mhe::starts`]).
+        /// The starts of a run's first window ([`super::kind::mhe::run::starts`]).
         starts: usize,
     },
     /// The particle filter.

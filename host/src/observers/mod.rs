@@ -4,18 +4,14 @@
 //! runs only, so every other figure is on data neither saw.
 
 pub mod choice;
-pub mod corrected;
 pub mod ekf;
 pub mod figures;
 pub mod kind;
-pub mod mhe;
 pub mod particles;
 pub mod recorded;
 pub mod references;
-pub mod restart;
 pub mod score;
 pub mod started;
-pub mod ukf;
 
 pub use choice::{check_before_fit, choose};
 pub use figures::{Beside, Comparison, Drift, Figures, FromObserverStart, ObserverFigures, TRANSIENT_TIME};

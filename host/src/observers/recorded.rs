@@ -12,7 +12,8 @@ use crate::tables::Tables;
 
 use firmware::Saturation;
 
-use super::{corrected, ekf};
+use super::ekf;
+use super::kind::corrected::run as corrected;
 
 /// Why a kind cannot run on this design.
 #[derive(Debug, thiserror::Error)]
@@ -92,7 +93,7 @@ struct Setup<'a> {
     /// The filter's written-out programs (the EKF kinds', or the UKF's for `ukf_box`).
     filter: Option<crate::plant::kalman::FilterCode>,
     /// The correction's programs (`corrected`).
-    programs: Option<crate::plant::correction::CorrectionCode>,
+    programs: Option<crate::observers::kind::corrected::program::CorrectionCode>,
     /// The map target of each state (the kinds the map starts or checks).
     state_targets: Vec<usize>,
 }
@@ -103,8 +104,8 @@ enum Follower<'s, T> {
     Box(ekf::BoxStep<'s, T>),
     Started(ekf::StartedStep<'s, T>),
     Corrected(corrected::CorrectedStep<'s, T>, Vec<(usize, T, T)>),
-    Restarted(super::restart::RestartStep<'s, T>),
-    Mhe(Box<dyn super::mhe::chip::ChipStep + 's>),
+    Restarted(super::kind::ekf_restart::run::RestartStep<'s, T>),
+    Mhe(Box<dyn super::kind::mhe::run::chip::ChipStep + 's>),
 }
 
 impl<'a> Setup<'a> {
@@ -140,15 +141,15 @@ impl<'a> Setup<'a> {
                 (Some(constants), _) if reads(ObserverKind::EkfBox) => {
                     Some(crate::plant::kalman::filter_code(code, constants))
                 }
-                (_, Some(constants)) if reads(ObserverKind::UkfBox) => {
-                    Some(crate::plant::unscented::unscented_code(code, constants))
-                }
+                (_, Some(constants)) if reads(ObserverKind::UkfBox) => Some(
+                    crate::observers::kind::ukf_box::program::unscented_code(code, constants),
+                ),
                 _ => None,
             },
             programs: constants
                 .corrected()
                 .filter(|_| reads(ObserverKind::Corrected))
-                .map(|constants| crate::plant::correction::correction_code(code, constants)),
+                .map(|constants| crate::observers::kind::corrected::program::correction_code(code, constants)),
             state_targets,
         })
     }
@@ -209,14 +210,16 @@ impl<'a> Setup<'a> {
                 tables.horizon - 1,
                 self.code,
             )),
-            (ObserverKind::EkfRestart, Some(filter), _) => Follower::Restarted(super::restart::RestartStep::new(
-                filter,
-                constants.ekf_box().expect(CHECKED),
-                &constants.ekf_map().expect(CHECKED).p0,
-                constants.ekf_restart().expect(CHECKED),
-                &self.state_targets,
-                self.code,
-            )),
+            (ObserverKind::EkfRestart, Some(filter), _) => {
+                Follower::Restarted(super::kind::ekf_restart::run::RestartStep::new(
+                    filter,
+                    constants.ekf_box().expect(CHECKED),
+                    &constants.ekf_map().expect(CHECKED).p0,
+                    constants.ekf_restart().expect(CHECKED),
+                    &self.state_targets,
+                    self.code,
+                ))
+            }
             (ObserverKind::Corrected, _, Some(programs)) => {
                 let constants = constants.corrected().expect(CHECKED);
                 let clamps = self
@@ -227,7 +230,7 @@ impl<'a> Setup<'a> {
                     .collect();
                 Follower::Corrected(corrected::CorrectedStep::new(setting, programs, constants), clamps)
             }
-            (ObserverKind::Mhe, _, _) => Follower::Mhe(super::mhe::chip::chip_stepper::<T>(
+            (ObserverKind::Mhe, _, _) => Follower::Mhe(super::kind::mhe::run::chip::chip_stepper::<T>(
                 self.code,
                 tables.horizon,
                 constants.mhe().expect(CHECKED),

@@ -1,5 +1,5 @@
 //! What every design's observers are measured against, on the host only: the on-line moving-horizon
-//! estimate the map replaces solved to convergence ([`super::mhe`]; without a prior, the paper's
+//! estimate the map replaces solved to convergence ([`super::kind::mhe::run`]; without a prior, the paper's
 //! problem, and with the prior weight the `mhe` kind tuned on the tuning runs) and the particle
 //! filter's floor ([`super::particles`]). Neither
 //! runs on the chip; each is judged on the validation runs, the scenario, its draws and the mismatch
@@ -8,8 +8,8 @@
 use std::sync::Mutex;
 
 pub use super::figures::{Cost, Reference};
+use super::kind::mhe::run::{self as mhe, Prior};
 use super::kind::Bench;
-use super::mhe::{self, Prior};
 use super::particles::Floor;
 use super::score::errors;
 use crate::data::Rows;

@@ -1,5 +1,5 @@
 //! `firmware::Started`'s own rule ([`firmware::rules::StartedRule`]) on the host over a simulated run:
-//! the shell that the model-corrected map ([`super::corrected`]) and the map-started EKF
+//! the shell that the model-corrected map ([`super::kind::corrected::run`]) and the map-started EKF
 //! ([`super::ekf::estimate_started`]) plug their samples into.
 //!
 //! No estimate before the map's first (NaN rows: before sample `first`, or while the map's row is not

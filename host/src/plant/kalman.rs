@@ -124,7 +124,7 @@ pub fn filter_code(code: &ModelCode, constants: &EkfConstants) -> FilterCode {
 /// covariance's upper triangle read as leaves; with a measurement, `update` and the projection onto
 /// the bounds, whose state is the first result; then `predict`, the projection, and `x⁺` and `P⁺`'s
 /// upper triangle as results.
-pub(super) fn filter_programs(
+pub(crate) fn filter_programs(
     code: &ModelCode,
     update: impl Fn(&mut Builder<'_>, &mut Vec<usize>, &mut [Vec<usize>]),
     predict: impl Fn(&mut Builder<'_>, &mut Vec<usize>, &mut [Vec<usize>]),
@@ -241,7 +241,7 @@ fn predict(b: &mut Builder<'_>, code: &ModelCode, constants: &EkfConstants, x: &
 }
 
 /// One RK4 step of width `h` and its derivative in `x` (`firmware::Rk4::substep`).
-pub(super) fn substep(b: &mut Builder<'_>, code: &ModelCode, h: f64, x: &[usize]) -> (Vec<usize>, Vec<Vec<usize>>) {
+pub(crate) fn substep(b: &mut Builder<'_>, code: &ModelCode, h: f64, x: &[usize]) -> (Vec<usize>, Vec<Vec<usize>>) {
     let nx = x.len();
     // The library's `h / 2` and `h / 6`, computed at construction in the filter's precision.
     let width = b.number(h);

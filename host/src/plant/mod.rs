@@ -16,11 +16,9 @@
 //! The host evaluates these programs through [`Compiled`], which implements the firmware's
 //! [`firmware::Model`]: the EKF the report measures is the firmware's own code, in `f64`.
 
-pub mod correction;
 pub mod covariance;
 pub mod kalman;
 pub mod program;
-pub mod unscented;
 
 use firmware::emitted::Maths;
 use firmware::Scalar;

@@ -28,9 +28,9 @@ pub enum Leaf {
     Covariance(usize),
     /// A measured output, by index ([`crate::plant::kalman`]).
     Measurement(usize),
-    /// The map's estimate of a state, by state index ([`crate::plant::correction`]).
+    /// The map's estimate of a state, by state index ([`crate::observers::kind::corrected::program`]).
     Map(usize),
-    /// The start-up blend of a state, by state index ([`crate::plant::correction`]).
+    /// The start-up blend of a state, by state index ([`crate::observers::kind::corrected::program`]).
     Blend(usize),
 }
 

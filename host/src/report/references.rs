@@ -5,7 +5,7 @@
 use std::fmt::Write as _;
 
 use super::schema::{ChipReport, ParticlesReport, ReferenceFigures, ReferenceReport, Report, SolverReport};
-use crate::observers::mhe::ChipTuned;
+use crate::observers::kind::mhe::run::ChipTuned;
 use crate::observers::references::{Cost, Reference};
 use crate::observers::Comparison;
 use crate::spec::Design;
@@ -208,7 +208,7 @@ pub fn section(report: &Report<'_>) -> String {
             s,
             "- `mhe` (the observer kind, `MheObserver`): {} Gauss–Newton step(s) per sample from the previous solution, `mhe_host_prior`'s weight, the fewest of those tried whose tuning score is within {:.0} % of the converged MHE's ({:.4}; tried: {}); its row is with the observers', the chip's arithmetic run on the host in f32.",
             chip.constants.iterations,
-            100.0 * crate::observers::mhe::CHIP_WITHIN,
+            100.0 * crate::observers::kind::mhe::run::CHIP_WITHIN,
             chip.converged_score,
             chip.scores.iter().map(|(k, v)| format!("{k}: {v:.4}")).collect::<Vec<_>>().join(", ")
         );

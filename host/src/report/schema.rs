@@ -191,7 +191,7 @@ pub struct EkfTuning {
     pub fixed: Vec<&'static str>,
 }
 
-/// The model-corrected map's tuning ([`crate::observers::corrected`]).
+/// The model-corrected map's tuning ([`crate::observers::kind::corrected::run`]).
 #[derive(Serialize)]
 #[serde(untagged)]
 pub enum CorrectedTuning {
@@ -345,7 +345,7 @@ pub struct SolverReport {
 #[derive(Serialize)]
 pub struct ChipReport {
     /// Its constants.
-    pub constants: crate::observers::mhe::ChipConstants,
+    pub constants: crate::observers::kind::mhe::run::ChipConstants,
     /// The prior's weight `p`, tuned with the converged estimate on the tuning runs.
     pub prior_weight: f64,
     /// Its tuning score at each Gauss–Newton step count tried.

@@ -42,7 +42,7 @@
 use serde::Serialize;
 
 use crate::fit::maps::FittedMap;
-use crate::plant::correction::CorrectionCode;
+use crate::observers::kind::corrected::program::CorrectionCode;
 use crate::plant::kalman::FilterCode;
 use crate::plant::program::{Op, Program};
 
@@ -141,7 +141,9 @@ pub fn started_before_fit(code: &crate::plant::ModelCode, constants: &crate::pla
 
 /// [`of_ukf`] before the fit (see [`ekf_before_fit`]).
 pub fn ukf_before_fit(code: &crate::plant::ModelCode, constants: &crate::plant::kalman::EkfConstants) -> f64 {
-    of_ukf(&crate::plant::unscented::unscented_code(code, constants))
+    of_ukf(&crate::observers::kind::ukf_box::program::unscented_code(
+        code, constants,
+    ))
 }
 
 /// The map-started EKF's steady sample.

@@ -68,7 +68,7 @@ pub enum ObserverKind {
     Auto,
     /// The fitted map `F(Z)` alone.
     Map,
-    /// The map corrected by the model ([`crate::observers::corrected`]).
+    /// The map corrected by the model ([`crate::observers::kind::corrected::run`]).
     Corrected,
     /// The EKF started at the map's first estimate (`ekf_map`).
     EkfMap,

@@ -66,8 +66,9 @@ pub fn ekf_largest_difference(what: &str, measured: &EkfMeasurement, host: &[Opt
 /// not estimate at the same samples.
 pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> Result<f64, String> {
     use host::data::{Rows, Run};
-    use host::observers::{corrected, ekf};
-    use host::plant::correction::correction_code;
+    use host::observers::ekf;
+    use host::observers::kind::corrected::program::correction_code;
+    use host::observers::kind::corrected::run as corrected;
     use host::plant::kalman::filter_code;
     use host::plant::ModelCode;
 
@@ -136,7 +137,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
             use firmware::emitted::mhe::Horizon;
             let settings = <$d::Mhe as Horizon<f64, { $d::STATES }, { $d::OUTPUTS }, { $d::INPUTS }, { $d::TARGETS }>>::settings();
             let plant = <$d::Mhe as Horizon<f64, { $d::STATES }, { $d::OUTPUTS }, { $d::INPUTS }, { $d::TARGETS }>>::plant();
-            let constants = host::observers::mhe::ChipConstants {
+            let constants = host::observers::kind::mhe::run::ChipConstants {
                 weights: settings.weights.to_vec(),
                 prior: settings.prior.to_vec(),
                 lower: settings.lower.to_vec(),
@@ -148,7 +149,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
                 substeps: $d::CHIP_SUBSTEPS,
             };
             let _ = (&$targets, $first, &$maps);
-            host::observers::mhe::chip::chip_run::<f64>(&$code, $d::HORIZON, &constants, &$run)
+            host::observers::kind::mhe::run::chip::chip_run::<f64>(&$code, $d::HORIZON, &constants, &$run)
                 .iter()
                 .map(<[f64]>::to_vec)
                 .collect::<Vec<Vec<f64>>>()
@@ -189,11 +190,11 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
                     .collect(),
             );
             let filter = filter_code(&$code, &ekf_constants);
-            let restart = host::observers::restart::RestartConstants {
+            let restart = host::observers::kind::ekf_restart::run::RestartConstants {
                 threshold: $d::RESTART_THRESHOLD,
                 variances: $d::RESTART_VARIANCES.to_vec(),
             };
-            host::observers::restart::estimate::<f64>(
+            host::observers::kind::ekf_restart::run::estimate::<f64>(
                 &filter,
                 &ekf_constants,
                 &$d::STARTED_P0,

@@ -1,5 +1,5 @@
 //! The generated observers started by the map (`Corrector`, `StartedEkf` in `firmware::Started`)
-//! against the host's own runs of the same observers (`host::observers::corrected::estimate_run`,
+//! against the host's own runs of the same observers (`host::observers::kind::corrected::run::estimate_run`,
 //! `host::observers::ekf::estimate_started`), in f32 over each design's recorded sequence: bit for
 //! bit, so that the report's figures are what the chip computes. The recorded sequence holds samples
 //! the observers must refuse: both sides give no estimate there (a NaN row) and carry the state over
@@ -8,8 +8,9 @@
 use firmware::emitted::Follower;
 use firmware::Started;
 use host::data::{Rows, Run};
-use host::observers::{corrected, ekf};
-use host::plant::correction::correction_code;
+use host::observers::ekf;
+use host::observers::kind::corrected::program::correction_code;
+use host::observers::kind::corrected::run as corrected;
 use host::plant::kalman::filter_code;
 use host::plant::ModelCode;
 use integration_tests::load_relative;

@@ -10,7 +10,7 @@ use std::sync::OnceLock;
 use firmware::emitted::mhe::{Horizon, Settings};
 use firmware::mhe::Observer;
 use host::data::{Rows, Run};
-use host::observers::mhe::Setup;
+use host::observers::kind::mhe::run::Setup;
 use host::plant::ModelCode;
 use integration_tests::load_relative;
 

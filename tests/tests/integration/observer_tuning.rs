@@ -192,7 +192,8 @@ fn the_restarted_ekf_is_its_two_parents_and_wins_both_regimes(
     code: &ModelCode,
     comparison: &Comparison,
 ) {
-    use host::observers::{ekf, map_estimates, restart};
+    use host::observers::kind::ekf_restart::run as restart;
+    use host::observers::{ekf, map_estimates};
     let tuned = comparison.tuned.ekf_box().expect("Example 1 has an EKF");
     let started = comparison.tuned.ekf_map().expect("Example 1 has a map-started EKF");
     let chosen = comparison.tuned.ekf_restart().expect("Example 1 has a restarted EKF");

@@ -201,7 +201,7 @@ fn each_observers_costs_and_distance_to_the_host_in_f64() {
             // the exp term stiff) and stay apart (0.64); the report's `mhe` figures are the f32 ones.
             // Likewise the UKF on `ecoli_x0_2` (6.8e-3): its sigma points reach the substrate's bound,
             // where the chip's one RK4 step per sample is stiff (S / (S + 0.01)), and f32 and f64
-            // part there; the report's `ukf_box` figures are the f32 ones (`observers::ukf`).
+            // part there; the report's `ukf_box` figures are the f32 ones (`observers::kind::ukf_box::run`).
             let parts =
                 matches!(kind, Kind::Of(ObserverKind::Mhe) | Kind::Of(ObserverKind::UkfBox)) && name == "ecoli_x0_2";
             assert!(

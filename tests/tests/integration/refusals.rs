@@ -5,9 +5,10 @@
 
 use firmware::Estimator;
 use host::data::{Rows, Run};
-use host::observers::restart::{RestartConstants, RestartStep};
-use host::observers::{corrected, ekf};
-use host::plant::correction::correction_code;
+use host::observers::ekf;
+use host::observers::kind::corrected::program::correction_code;
+use host::observers::kind::corrected::run as corrected;
+use host::observers::kind::ekf_restart::run::{RestartConstants, RestartStep};
 use host::plant::kalman::filter_code;
 use host::plant::ModelCode;
 use integration_tests::load_relative;

@@ -11,10 +11,12 @@ use askama::Template;
 use super::box_filter::{self, EKF, UKF};
 use super::program::{calls, function, needs_math};
 use super::started::{self, map_states, targets_of, Follower};
-use super::{corrected, float, floats, mhe};
+use super::{float, floats};
 use crate::emit::model::Observers;
 use crate::emit::EmitError;
-use crate::plant::correction;
+use crate::observers::kind::corrected::c as corrected;
+use crate::observers::kind::corrected::program as correction;
+use crate::observers::kind::mhe::c as mhe;
 use crate::plant::kalman;
 use crate::plant::{ModelCode, Program};
 use crate::spec::Design;
@@ -42,7 +44,7 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
     let unscented = observers
         .ekf
         .and(observers.ukf)
-        .map(|ukf| (ukf, crate::plant::unscented::unscented_code(code, ukf)));
+        .map(|ukf| (ukf, crate::observers::kind::ukf_box::program::unscented_code(code, ukf)));
     let correction = observers
         .corrected
         .map(|(constants, _)| correction::correction_code(code, constants));

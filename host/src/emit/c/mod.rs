@@ -13,13 +13,11 @@
 //! Rust observer's `new`, `push` and `estimate`; `<name>_observer` names the design's chosen kind.
 
 mod box_filter;
-mod corrected;
 mod filters;
 mod fixed;
 mod map;
-mod mhe;
-mod program;
-mod started;
+pub(crate) mod program;
+pub(crate) mod started;
 mod storage;
 
 pub use storage::{mark, sample_period, storage_bound, MARK_BYTES};
@@ -100,12 +98,12 @@ pub struct CSource {
 }
 
 /// A C `float` literal of `value` rounded to f32: the shortest decimal that round-trips, with `f`.
-fn float(what: &str, value: f64) -> Result<String, EmitError> {
+pub(crate) fn float(what: &str, value: f64) -> Result<String, EmitError> {
     Ok(format!("{}f", super::f32_literal(what, value)?))
 }
 
 /// `{ a, b, … }` of `values` (each rounded to f32), four per line.
-fn floats(what: &str, values: &[f64]) -> Result<String, EmitError> {
+pub(crate) fn floats(what: &str, values: &[f64]) -> Result<String, EmitError> {
     let items = values
         .iter()
         .enumerate()
@@ -198,7 +196,7 @@ pub fn c_source(
 }
 
 /// The text of a template (every field's `Display` writes into a `String`, which cannot fail).
-fn render(template: &impl Template) -> String {
+pub(crate) fn render(template: &impl Template) -> String {
     template.render().expect("a template renders into a String")
 }
 

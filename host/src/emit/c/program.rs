@@ -79,7 +79,7 @@ fn reads(leaf: &Leaf) -> Option<&'static str> {
 }
 
 /// Whether any of `programs` calls a function of `<math.h>`.
-pub(super) fn needs_math(programs: &[&Program]) -> bool {
+pub(crate) fn needs_math(programs: &[&Program]) -> bool {
     programs.iter().any(|p| {
         p.ops.iter().any(|op| {
             matches!(
@@ -91,7 +91,7 @@ pub(super) fn needs_math(programs: &[&Program]) -> bool {
 }
 
 /// Whether any of `programs` calls the function `name` (`signum`, `exp`, …).
-pub(super) fn calls(programs: &[&Program], name: &str) -> bool {
+pub(crate) fn calls(programs: &[&Program], name: &str) -> bool {
     programs
         .iter()
         .any(|p| p.ops.iter().any(|op| matches!(op, Op::Call(f, _) if *f == name)))
@@ -100,7 +100,7 @@ pub(super) fn calls(programs: &[&Program], name: &str) -> bool {
 /// `static void <name>(const float *<param>, …, float *out)` computing `program`: its operations
 /// that some result needs, in order, then `out[i]` = result `i`. Every parameter is `const float *`
 /// (`(void)` where no operation reads it).
-pub(super) fn function(
+pub(crate) fn function(
     name: &str,
     doc: &str,
     params: &[&str],

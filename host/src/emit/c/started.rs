@@ -5,7 +5,7 @@ use askama::Template;
 
 /// `static void <prefix>_map_states(const float *all, float *map)`: each state's estimate from the
 /// map's targets (`Follower::STATE_TARGETS`; 0 for a state that is no target).
-pub(super) fn map_states(prefix: &str, state_targets: &[usize], targets: usize) -> String {
+pub(crate) fn map_states(prefix: &str, state_targets: &[usize], targets: usize) -> String {
     let lines: String = state_targets
         .iter()
         .enumerate()
@@ -22,7 +22,7 @@ pub(super) fn map_states(prefix: &str, state_targets: &[usize], targets: usize) 
 
 /// `static void <prefix>_targets_of(…)`: the targets of a follower's states, each flagged with its
 /// state's saturation where a state is a target (`firmware::started::targets_of`).
-pub(super) fn targets_of(name: &str, prefix: &str, state_targets: &[usize], targets: usize) -> String {
+pub(crate) fn targets_of(name: &str, prefix: &str, state_targets: &[usize], targets: usize) -> String {
     let upper = name.to_uppercase();
     let inside: String = (0..targets)
         .map(|t| format!("    flags[{t}] = {upper}_INSIDE;\n"))
@@ -43,7 +43,7 @@ pub(super) fn targets_of(name: &str, prefix: &str, state_targets: &[usize], targ
 }
 
 /// How one follower of the map runs: its C names and `firmware::Follower`'s constants.
-pub(super) struct Follower<'a> {
+pub(crate) struct Follower<'a> {
     /// The design.
     pub name: &'a str,
     /// The kind (`corrected`, `ekf_map`).
@@ -64,7 +64,7 @@ pub(super) struct Follower<'a> {
 /// map's window until its first estimate starts the follower, then the follower's `follow` every
 /// sample (the map read during the start-up, and after it if the follower reads it); a refused sample
 /// is the follower's `predict` once it has started. `init` is given the carried state's own reset.
-pub(super) fn observer(f: &Follower<'_>, init_carried: &str) -> String {
+pub(crate) fn observer(f: &Follower<'_>, init_carried: &str) -> String {
     let Follower {
         name,
         kind,
@@ -88,7 +88,7 @@ pub(super) fn observer(f: &Follower<'_>, init_carried: &str) -> String {
 }
 
 /// `<name>_<kind>_estimate`: the latest accepted sample's targets, kept in `values` and `flags`.
-pub(super) fn estimate(name: &str, kind: &str) -> String {
+pub(crate) fn estimate(name: &str, kind: &str) -> String {
     super::render(&EstimateC {
         name,
         upper: &name.to_uppercase(),
@@ -98,7 +98,7 @@ pub(super) fn estimate(name: &str, kind: &str) -> String {
 
 /// The header's part for a kind: its struct (the window when the map starts it, the carried
 /// `fields`, the latest estimate) and its three functions, documented by `what`.
-pub(super) fn header(name: &str, kind: &str, what: &str, window: bool, fields: &str) -> String {
+pub(crate) fn header(name: &str, kind: &str, what: &str, window: bool, fields: &str) -> String {
     super::render(&KindH {
         name,
         upper: &name.to_uppercase(),

@@ -14,17 +14,17 @@ use crate::spec::{Design, FixedFilter};
 
 /// One filter's names: its type (`Ekf`), its samples' prefix (`ekf`), its observer type
 /// (`EkfBoxObserver`) and what filter that observer is ("The EKF"; its docs add where it starts).
-pub(super) struct Names {
-    pub(super) name: &'static str,
-    pub(super) lower: &'static str,
-    pub(super) observer: &'static str,
-    pub(super) what: &'static str,
+pub(crate) struct Names {
+    pub(crate) name: &'static str,
+    pub(crate) lower: &'static str,
+    pub(crate) observer: &'static str,
+    pub(crate) what: &'static str,
     /// How its samples' docs begin ("One sample").
-    pub(super) sample: &'static str,
+    pub(crate) sample: &'static str,
 }
 
 /// The filter type `names.name` with its constants' start (`{X0}`, `{P0}`: `T` literals).
-pub(super) fn filter_type(names: &Names, constants: &EkfConstants, nx: usize) -> Result<String, EmitError> {
+pub(crate) fn filter_type(names: &Names, constants: &EkfConstants, nx: usize) -> Result<String, EmitError> {
     let upper = constants.p0.upper();
     let full: Vec<String> = (0..nx * nx)
         .map(|k| format!("self.p[{}]", kalman::upper(nx, k / nx, k % nx)))
@@ -42,7 +42,7 @@ pub(super) fn filter_type(names: &Names, constants: &EkfConstants, nx: usize) ->
 
 /// The observer around the filter (`names.observer`), started where the filter starts (`fixed`: the
 /// spec's constants of this filter).
-pub(super) fn filter_observer(
+pub(crate) fn filter_observer(
     names: &Names,
     constants: &EkfConstants,
     fixed: &FixedFilter,
@@ -66,7 +66,7 @@ pub(super) fn filter_observer(
 }
 
 /// The filter's two samples written out from its programs: `<lower>_measured` and `<lower>_unmeasured`.
-pub(super) fn samples(
+pub(crate) fn samples(
     names: &Names,
     filter: &FilterCode,
     code: &ModelCode,
@@ -89,7 +89,7 @@ pub(super) fn samples(
 /// `<LABEL>_Q` (`label`: `"EKF"`) with its docs: as tuned (`tuned`, the docs of the diagonal `gen`
 /// chose), or as the spec fixes it (`[observer.<section>] q`): its diagonal, or its rows where it is
 /// full (then `[[f64; STATES]; STATES]`).
-pub(super) fn q_constant(label: &str, section: &str, q: &Covariance, fixed: &FixedFilter, tuned: &str) -> String {
+pub(crate) fn q_constant(label: &str, section: &str, q: &Covariance, fixed: &FixedFilter, tuned: &str) -> String {
     let Some(_) = fixed.q else {
         return format!("{tuned}\npub const {label}_Q: [f64; STATES] = {:?};", q.diagonal());
     };
@@ -110,7 +110,7 @@ pub(super) fn q_constant(label: &str, section: &str, q: &Covariance, fixed: &Fix
 /// The filter's docs on where it starts and where its constants come from: `tuned` (the words of a
 /// filter the spec fixes nothing of), or which the spec fixes (`[observer.<section>]`) and which
 /// `gen` chose.
-pub(super) fn constants_docs(section: &str, fixed: &FixedFilter, tuned: &str) -> String {
+pub(crate) fn constants_docs(section: &str, fixed: &FixedFilter, tuned: &str) -> String {
     if !fixed.any() {
         return tuned.to_owned();
     }

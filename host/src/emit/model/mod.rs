@@ -11,24 +11,20 @@
 //! the EKF), then one per model-based observer kind (`filter`, the frame of the EKF and of the UKF (`ukf`), `started`, `restarted`, `corrected`) and the
 //! chip's moving-horizon estimator (`mhe`).
 
-mod corrected;
-mod filter;
-mod mhe;
+pub(crate) mod filter;
 mod plant;
-mod restarted;
-mod rust_text;
+pub(crate) mod rust_text;
 mod started;
-mod ukf;
 
 use crate::emit::EmitError;
-use crate::observers::restart::RestartConstants;
-use crate::plant::correction::CorrectionConstants;
+use crate::observers::kind::corrected::emit::corrector;
+use crate::observers::kind::corrected::program::CorrectionConstants;
+use crate::observers::kind::ekf_restart::emit::restarted;
+use crate::observers::kind::ekf_restart::run::RestartConstants;
 use crate::plant::kalman::{self, EkfConstants};
 use crate::plant::ModelCode;
 use crate::spec::{Design, ObserverKind};
-use corrected::corrector;
 use plant::model_and_ekf;
-use restarted::restarted;
 use rust_text::{list, literal};
 use started::started_ekf;
 
@@ -46,7 +42,7 @@ pub struct Observers<'a> {
     /// The model-corrected map's constants and each state's target.
     pub corrected: Option<(&'a CorrectionConstants, &'a [usize])>,
     /// The chip's moving-horizon observer's constants, when the host could run one.
-    pub mhe: Option<&'a crate::observers::mhe::ChipConstants>,
+    pub mhe: Option<&'a crate::observers::kind::mhe::run::ChipConstants>,
     /// `observer()`'s kind: `Map`, `Corrected` or `Ekf` (never `Auto`: chosen before).
     pub kind: ObserverKind,
     /// Every observer kind the design has and its predicted instructions per steady sample
@@ -63,7 +59,7 @@ pub struct Observers<'a> {
 pub fn model_source(design: &Design, code: &ModelCode, observers: &Observers<'_>) -> Result<String, EmitError> {
     let mut text = model_and_ekf(design, code, observers.ekf)?;
     if let (Some(_), Some(constants)) = (observers.ekf, observers.ukf) {
-        text.push_str(&ukf::ukf(design, code, constants)?);
+        text.push_str(&crate::observers::kind::ukf_box::emit::ukf(design, code, constants)?);
     }
     if let Some((constants, state_targets)) = observers.corrected {
         text.push_str(&corrector(design, code, constants, state_targets)?);
@@ -85,7 +81,7 @@ pub fn model_source(design: &Design, code: &ModelCode, observers: &Observers<'_>
         text.push_str(&restarted(ekf, restart)?);
     }
     if let Some(constants) = observers.mhe {
-        text.push_str(&mhe::mhe(constants)?);
+        text.push_str(&crate::observers::kind::mhe::emit::mhe(constants)?);
     }
     let entry = crate::observers::kind::of(observers.kind);
     let (ty, kind) = (entry.observer_type, entry.kind.name());

@@ -10,7 +10,7 @@ use crate::spec::ast::Binary;
 use crate::spec::Design;
 
 /// `T::literal(single, double)` for `value`, the `f32` checked as [`f32_literal`] checks it.
-pub(super) fn literal(what: &str, value: f64) -> Result<String, EmitError> {
+pub(crate) fn literal(what: &str, value: f64) -> Result<String, EmitError> {
     Ok(format!("T::literal({}, {value:?})", f32_literal(what, value)?))
 }
 
@@ -72,7 +72,7 @@ impl Names<'_> {
 }
 
 /// The body of a function computing `program`: its `let`s, then `result` (the results by name).
-pub(super) fn body(
+pub(crate) fn body(
     program: &Program,
     code: &ModelCode,
     design: &Design,
@@ -96,13 +96,13 @@ pub(super) fn body(
 }
 
 /// `[a, b, …]`.
-pub(super) fn list(items: &[String]) -> String {
+pub(crate) fn list(items: &[String]) -> String {
     format!("[{}]", items.join(", "))
 }
 
 /// `[a, b, …]` of `values` as `f32` literals (each checked as [`f32_literal`] checks it, named
 /// `what[i]`).
-pub(super) fn f32_list(what: &str, values: &[f64]) -> Result<String, EmitError> {
+pub(crate) fn f32_list(what: &str, values: &[f64]) -> Result<String, EmitError> {
     let entries = values
         .iter()
         .enumerate()
@@ -112,7 +112,7 @@ pub(super) fn f32_list(what: &str, values: &[f64]) -> Result<String, EmitError> 
 }
 
 /// `[[…], …]`: `items` in rows of `width`.
-pub(super) fn rows(items: &[String], width: usize) -> String {
+pub(crate) fn rows(items: &[String], width: usize) -> String {
     if width == 0 {
         return format!("[[]; {}]", items.len());
     }

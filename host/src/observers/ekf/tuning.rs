@@ -58,7 +58,7 @@ pub const STARTS: usize = 2;
 const ITERATIONS: u64 = 150;
 
 /// A filter's estimates of every run of a data set, with given constants, from a given start: the
-/// EKF's ([`super::estimates`]) or the UKF's ([`crate::observers::ukf::estimates`]), which share
+/// EKF's ([`super::estimates`]) or the UKF's ([`crate::observers::kind::ukf_box::run::estimates`]), which share
 /// their constants and this search.
 pub type Estimator = fn(&ModelCode, &EkfConstants, &[f64], &DataSet) -> Option<Vec<Rows>>;
 

@@ -11,7 +11,7 @@ use crate::spec::{Design, ObserverKind};
 use super::tuned::TunedKinds;
 use std::collections::BTreeMap;
 
-use crate::observers::corrected;
+use super::corrected::run as corrected;
 use crate::observers::figures::{Beside, Drift, Figures, FromObserverStart, ObserverFigures};
 use crate::observers::score::{self, errors};
 

@@ -1,9 +1,10 @@
 //! `ekf_map`: the EKF started by the map at `k = N − 1`, with the box EKF's `Q` and `R` and a
 //! `P(N−1)` of the map's error scaled by one factor tuned on the tuning runs.
 
+use super::corrected::run as corrected;
 use super::{Bench, Kind, Needs, Tuned};
 use crate::data::{Rows, Run};
-use crate::observers::{corrected, ekf, ObserverFigures, Started};
+use crate::observers::{ekf, ObserverFigures, Started};
 use crate::search::cost;
 use crate::spec::ObserverKind;
 

@@ -10,13 +10,13 @@
 //! before it: the EKF started or restarted by the map reuses the box EKF's `Q` and `R`) and the order
 //! of the report's rows.
 
-mod corrected;
+pub mod corrected;
 mod ekf_box;
 mod ekf_map;
-mod ekf_restart;
+pub mod ekf_restart;
 mod map;
-mod mhe;
-mod ukf_box;
+pub mod mhe;
+pub mod ukf_box;
 
 pub use bench::{map_estimates, Bench};
 pub use tuned::{KindConstants, Started, StartedConstants, Tuned, TunedConstants, TunedKinds};

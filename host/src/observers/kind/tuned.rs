@@ -10,10 +10,11 @@ use serde::de::{self, DeserializeSeed, MapAccess, Visitor};
 use serde::ser::SerializeMap;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
-use crate::observers::mhe::{ChipConstants, ChipTuned};
-use crate::observers::restart::RestartConstants;
-use crate::observers::{corrected, ekf};
-use crate::plant::correction::CorrectionConstants;
+use super::corrected::run as corrected;
+use crate::observers::ekf;
+use crate::observers::kind::corrected::program::CorrectionConstants;
+use crate::observers::kind::ekf_restart::run::RestartConstants;
+use crate::observers::kind::mhe::run::{ChipConstants, ChipTuned};
 use crate::plant::kalman::EkfConstants;
 use crate::spec::ObserverKind;
 

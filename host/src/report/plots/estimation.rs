@@ -35,7 +35,7 @@ pub(super) fn estimation(
     let times: Vec<f64> = (0..run.states.len()).map(|k| k as f64 * design.tau).collect();
     let horizon = design.map.horizon;
     let first = (horizon - 1) as f64 * design.tau;
-    let start_up = first + (crate::observers::corrected::START_UP_HORIZONS * horizon) as f64 * design.tau;
+    let start_up = first + (crate::observers::kind::corrected::run::START_UP_HORIZONS * horizon) as f64 * design.tau;
     let plant = match (&result.runs.mismatch, on_mismatch) {
         (Some(m), true) => format!(
             " on the plant at {}",

@@ -3,14 +3,14 @@
 
 use askama::Template;
 
-use super::rust_text::{body, list};
+use super::program::{self as correction, CorrectionConstants};
+use crate::emit::model::rust_text::{body, list};
 use crate::emit::{f32_literal, EmitError};
-use crate::plant::correction::{self, CorrectionConstants};
 use crate::plant::ModelCode;
 use crate::spec::Design;
 
 /// The model-corrected map's follower (`Corrector`), its programs and `CorrectedObserver`.
-pub(super) fn corrector(
+pub(crate) fn corrector(
     design: &Design,
     code: &ModelCode,
     constants: &CorrectionConstants,

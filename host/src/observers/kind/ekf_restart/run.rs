@@ -179,7 +179,7 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
 
 /// Chooses `τ` from [`THRESHOLDS`]: the lowest `score(τ)`, the first of equals. Returns `(τ, score)`.
 pub fn tune(score: impl Fn(f64) -> f64 + Sync) -> (f64, f64) {
-    super::score::lowest(&THRESHOLDS, score)
+    crate::observers::score::lowest(&THRESHOLDS, score)
 }
 
 #[cfg(test)]

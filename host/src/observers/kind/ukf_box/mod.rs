@@ -2,11 +2,16 @@
 //! its own `Q` and `P0` tuned as the box EKF's are, by the same search on the same random tuning runs
 //! ([`ukf::tune`]); judged from the box centre everywhere, as `ekf()` is.
 
+pub mod emit;
+pub mod program;
+pub mod run;
+
 use super::{Bench, Kind, Needs, Tuned};
-use crate::observers::{ekf, ukf, ObserverFigures};
-use crate::plant::unscented::unscented_code;
+use crate::observers::{ekf, ObserverFigures};
 use crate::search::cost;
 use crate::spec::ObserverKind;
+use program::unscented_code;
+use run as ukf;
 
 /// See the module's documentation.
 pub const KIND: Kind = Kind {

@@ -1,10 +1,16 @@
-//! `corrected`: the map corrected by one model step ([`crate::observers::corrected`]), its gains
+//! `corrected`: the map corrected by one model step ([`run`]), its gains
 //! tuned in closed loop on the tuning runs.
 
+pub mod c;
+pub mod emit;
+pub mod program;
+pub mod run;
+
 use super::{Bench, Kind, Needs, Tuned};
-use crate::observers::{corrected, ObserverFigures};
+use crate::observers::ObserverFigures;
 use crate::search::cost;
 use crate::spec::ObserverKind;
+use run as corrected;
 
 /// See the module's documentation.
 pub const KIND: Kind = Kind {
@@ -39,7 +45,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let (design, code) = (bench.design, bench.code);
     let setting = corrected::Setting::for_design(design, bench.result, code, &state_targets);
     let tuned = corrected::tune(&setting, &bench.result.runs.tuning, bench.tuning_maps(), &bench.spreads);
-    let programs = crate::plant::correction::correction_code(code, &tuned.constants);
+    let programs = crate::observers::kind::corrected::program::correction_code(code, &tuned.constants);
     let figures = bench.judge(
         "corrected",
         cost::of_corrected(&programs, &bench.map_cost),

@@ -2,7 +2,7 @@ use nalgebra::{Matrix2, Vector2};
 
 use super::*;
 use crate::data::simulate::Integrator;
-use crate::plant::correction::correction_code;
+use crate::observers::kind::corrected::program::correction_code;
 
 /// Example 1's model, a validation-like run of it, and a stand-in for the map's estimates (the true
 /// state plus a known offset), so that each case has a closed-form answer.

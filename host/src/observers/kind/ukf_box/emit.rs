@@ -1,19 +1,19 @@
 //! The design's unscented Kalman filter (`Ukf`, `ukf()`, kind `ukf_box` as `UkfBoxObserver`), written
-//! beside the EKF by [`super::model_source`]: the same frame as the EKF's (`push`, the refusals, `P`
-//! as its upper triangle, [`super::plant`]'s `COVARIANCE` and `finite`), each sample the straight-line
-//! programs of [`crate::plant::unscented`].
+//! beside the EKF by [`crate::emit::model::model_source`]: the same frame as the EKF's (`push`, the refusals, `P`
+//! as its upper triangle, `emit::model::plant`'s `COVARIANCE` and `finite`), each sample the straight-line
+//! programs of [`crate::observers::kind::ukf_box::program`].
 
 use askama::Template;
 
-use super::filter::{constants_docs, filter_observer, filter_type, q_constant, samples, Names};
+use crate::emit::model::filter::{constants_docs, filter_observer, filter_type, q_constant, samples, Names};
 use crate::emit::EmitError;
+use crate::observers::kind::ukf_box::program::{kappa, unscented_code, ALPHA, BETA};
 use crate::plant::kalman::EkfConstants;
-use crate::plant::unscented::{kappa, unscented_code, ALPHA, BETA};
 use crate::plant::ModelCode;
 use crate::spec::Design;
 
 /// The UKF, its observer and its two written-out samples.
-pub(super) fn ukf(design: &Design, code: &ModelCode, ukf: &EkfConstants) -> Result<String, EmitError> {
+pub(crate) fn ukf(design: &Design, code: &ModelCode, ukf: &EkfConstants) -> Result<String, EmitError> {
     let nx = code.dimensions.states;
     let fixed = &design.filters.ukf;
     let mut text = UkfText {

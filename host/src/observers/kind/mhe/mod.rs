@@ -5,12 +5,17 @@
 //! estimate's; judged in `f32`, the chip's arithmetic. `auto` offers it only within
 //! `budget.instructions` ([`crate::observers::choose`]).
 
+pub mod c;
+pub mod emit;
+pub mod run;
+
 use super::{Bench, Kind, Needs, Tuned};
 use crate::data::Rows;
-use crate::observers::mhe::{self, ChipTuned};
 use crate::observers::ObserverFigures;
 use crate::search::cost;
 use crate::spec::ObserverKind;
+use run as mhe;
+use run::ChipTuned;
 
 /// See the module's documentation.
 pub const KIND: Kind = Kind {

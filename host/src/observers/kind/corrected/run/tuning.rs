@@ -16,7 +16,7 @@ use argmin::core::{CostFunction, Executor, State};
 use argmin::solver::neldermead::NelderMead;
 
 use crate::data::{DataSet, Rows};
-use crate::plant::correction::{correction_code, CorrectionConstants};
+use crate::observers::kind::corrected::program::{correction_code, CorrectionConstants};
 
 use super::{estimate_rows, Setting};
 

@@ -6,14 +6,14 @@
 
 use askama::Template;
 
-use super::floats;
-use super::program::function;
+use crate::emit::c::floats;
+use crate::emit::c::program::function;
 use crate::emit::EmitError;
-use crate::observers::mhe::ChipConstants;
+use crate::observers::kind::mhe::run::ChipConstants;
 use crate::plant::ModelCode;
 
 /// The header's and the source's parts of the moving-horizon observer.
-pub(super) fn mhe(
+pub(crate) fn mhe(
     name: &str,
     code: &ModelCode,
     constants: &ChipConstants,
@@ -21,7 +21,7 @@ pub(super) fn mhe(
 ) -> Result<(String, String), EmitError> {
     let upper = name.to_uppercase();
     let nu = code.dimensions.inputs;
-    let one = |what: &str, v: f64| super::float(&format!("chip MHE {what}"), v);
+    let one = |what: &str, v: f64| crate::emit::c::float(&format!("chip MHE {what}"), v);
     let mut source = function(
         "model_derivative",
         "The model's derivative f(x, u), then its Jacobian row by row (the Rust file's Plant::derivative).",
@@ -40,7 +40,7 @@ pub(super) fn mhe(
         floats("chip MHE weights", &constants.weights)?,
         floats("chip MHE prior", &constants.prior)?,
     );
-    source += &super::render(&MheC {
+    source += &crate::emit::c::render(&MheC {
         name,
         upper: &upper,
         // The window's inputs: none is read where the design has no input.
@@ -55,13 +55,13 @@ pub(super) fn mhe(
         iterations: constants.iterations,
         substeps,
     });
-    let header = super::render(&MheH {
+    let header = crate::emit::c::render(&MheH {
         name,
         upper: &upper,
         inputs: nu > 0,
         iterations: constants.iterations,
     });
-    Ok((header, source + &super::started::estimate(name, "mhe")))
+    Ok((header, source + &crate::emit::c::started::estimate(name, "mhe")))
 }
 
 /// The observer's part of the header.

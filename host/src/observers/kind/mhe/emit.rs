@@ -5,12 +5,12 @@
 
 use askama::Template;
 
-use super::rust_text::{list, literal};
+use crate::emit::model::rust_text::{list, literal};
 use crate::emit::EmitError;
-use crate::observers::mhe::ChipConstants;
+use crate::observers::kind::mhe::run::ChipConstants;
 
 /// The text of `Mhe` and `MheObserver` with `constants`.
-pub(super) fn mhe(constants: &ChipConstants) -> Result<String, EmitError> {
+pub(crate) fn mhe(constants: &ChipConstants) -> Result<String, EmitError> {
     let values = |what: &str, values: &[f64]| -> Result<String, EmitError> {
         let items = values
             .iter()

@@ -1,6 +1,6 @@
 //! The design's unscented Kalman filter written out for its size: one sample as two straight-line
 //! programs with the EKF's interface ([`FilterCode`]: `x̂(k|k)`, `x⁺` and `P⁺`'s upper triangle), over
-//! the same model programs and the same RK4 substep as the EKF ([`super::kalman`]), so that the
+//! the same model programs and the same RK4 substep as the EKF ([`crate::plant::kalman`]), so that the
 //! host's run and emitted code compute the same operations and the filter needs no derivative.
 //!
 //! Sigma points: the scaled unscented transform (E. Wan and R. van der Merwe, "The unscented Kalman
@@ -42,14 +42,14 @@
 //! slightly indefinite still gives finite sigma points. With physical bounds (`[model.bounds]`), the
 //! sigma points, `x̂` and `x⁺` are projected onto them, as the EKF projects its state.
 //!
-//! `P` is read and written as its upper triangle, row by row ([`super::kalman::upper`]); only
+//! `P` is read and written as its upper triangle, row by row ([`crate::plant::kalman::upper`]); only
 //! `r ≤ c` is computed and mirrored, so `P⁺` is symmetric by construction.
 
 use crate::spec::ast::Binary;
 
-use super::kalman::{filter_programs, substep, EkfConstants, FilterCode};
-use super::program::{Builder, Leaf};
-use super::ModelCode;
+use crate::plant::kalman::{filter_programs, substep, EkfConstants, FilterCode};
+use crate::plant::program::{Builder, Leaf};
+use crate::plant::ModelCode;
 
 /// The scheme's α.
 pub const ALPHA: f64 = 1.0;

@@ -3,14 +3,14 @@
 
 use askama::Template;
 
-use super::rust_text::{f32_list, list, literal};
+use crate::emit::model::rust_text::{f32_list, list, literal};
 use crate::emit::EmitError;
-use crate::observers::restart::RestartConstants;
+use crate::observers::kind::ekf_restart::run::RestartConstants;
 use crate::plant::kalman::{self, EkfConstants};
 
 /// The box-started EKF checked by the map: `StartedEkf`'s `firmware::Restart` in `f32` and `f64`,
 /// the check, and `EkfRestartObserver`.
-pub(super) fn restarted(ekf: &EkfConstants, restart: &RestartConstants) -> Result<String, EmitError> {
+pub(crate) fn restarted(ekf: &EkfConstants, restart: &RestartConstants) -> Result<String, EmitError> {
     let nx = ekf.x0.len();
     let upper = ekf.p0.upper();
     let f64_list = |values: &[f64]| format!("{values:?}");

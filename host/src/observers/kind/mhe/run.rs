@@ -30,7 +30,7 @@ use crate::data::{DataSet, Rows, Run};
 use crate::plant::{Compiled, ModelCode};
 use crate::spec::{Axis, Design};
 
-use super::ekf::{Stepped, MAX_INPUTS};
+use crate::observers::ekf::{Stepped, MAX_INPUTS};
 
 /// The prior's weights tried first on the tuning runs (`p`, on states normalised by their spread),
 /// every second decade from 10⁻² to 10⁴; then the decades either side of the best ([`tune_prior`]).
@@ -115,9 +115,9 @@ pub fn starts(design: &Design) -> Vec<Vec<f64>> {
 
 impl<'a> Setup<'a> {
     /// The problem of `design` (its box from the learning runs `learning`); `None` when the model is
-    /// beyond the host's sizes ([`super::ekf::supported`]).
+    /// beyond the host's sizes ([`crate::observers::ekf::supported`]).
     pub fn new(design: &Design, code: &'a ModelCode, learning: &DataSet) -> Option<Self> {
-        if !super::ekf::supported(code) {
+        if !crate::observers::ekf::supported(code) {
             return None;
         }
         let states = code.dimensions.states;
@@ -153,7 +153,7 @@ impl<'a> Setup<'a> {
                 .iter()
                 .map(|o| 1.0 / o.noise_variance.max(1e-300))
                 .collect(),
-            spreads: super::ekf::state_spreads(learning, states),
+            spreads: crate::observers::ekf::state_spreads(learning, states),
             starts: starts(design),
             h: design.tau / design.chip_substeps as f64,
             substeps: design.chip_substeps,

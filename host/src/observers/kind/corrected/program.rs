@@ -1,4 +1,4 @@
-//! The model-corrected map's sample written out (`crate::observers::corrected` says what it
+//! The model-corrected map's sample written out (`crate::observers::kind::corrected::run` says what it
 //! estimates and how it is tuned): straight-line programs over the emitted model, so that the chip
 //! runs no loop and no multiplication by a zero gain.
 //!
@@ -17,8 +17,8 @@ use firmware::Scalar;
 
 use crate::spec::ast::Binary;
 
-use super::program::{Builder, Leaf, Names, Program};
-use super::ModelCode;
+use crate::plant::program::{Builder, Leaf, Names, Program};
+use crate::plant::ModelCode;
 
 /// The corrected observer's constants, chosen on the tuning runs.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -168,7 +168,10 @@ pub fn correction_code(code: &ModelCode, constants: &CorrectionConstants) -> Cor
     let start_up = correct(&|b, i| b.leaf(Leaf::Blend(i)), &|b, e| b.leaf(Leaf::Blend(nx + e)));
     let steady = correct(&|b, i| b.number(constants.g[i]), &|b, e| b.number(constants.k[e]));
     CorrectionCode {
-        steady_reads_map: steady.ops.iter().any(|op| matches!(op, super::Op::Leaf(Leaf::Map(_)))),
+        steady_reads_map: steady
+            .ops
+            .iter()
+            .any(|op| matches!(op, crate::plant::Op::Leaf(Leaf::Map(_)))),
         predict,
         start_up,
         steady,

@@ -1,4 +1,4 @@
-//! The unscented Kalman filter on the host: the written-out sample of [`crate::plant::unscented`]
+//! The unscented Kalman filter on the host: the written-out sample of [`crate::observers::kind::ukf_box::program`]
 //! run in f32, the chip's arithmetic and its bits (the operations the emitted code runs; tuned and
 //! judged so, since on E. coli, where the sigma points reach the substrate's bound and the chip's
 //! one RK4 step per sample is stiff, the f32 and f64 runs part by up to 0.8 g/L), with the EKF's
@@ -12,8 +12,8 @@
 //! result is not finite is not taken (no estimate, the state kept).
 
 use crate::data::{DataSet, Rows, Run};
+use crate::observers::kind::ukf_box::program::unscented_code;
 use crate::plant::kalman::{EkfConstants, FilterCode};
-use crate::plant::unscented::unscented_code;
 use crate::plant::{Covariance, ModelCode};
 use crate::spec::Design;
 

@@ -2,12 +2,16 @@
 //! estimate and restarted from it as `ekf_map` starts when the two disagree (a χ² threshold tuned on
 //! the tuning runs).
 
+pub mod emit;
+pub mod run;
+
 use super::{Bench, Kind, Needs, Tuned};
 use crate::data::{Rows, Run};
-use crate::observers::restart::{self, RestartConstants};
 use crate::observers::ObserverFigures;
 use crate::search::cost;
 use crate::spec::ObserverKind;
+use run as restart;
+use run::RestartConstants;
 
 /// See the module's documentation.
 pub const KIND: Kind = Kind {

@@ -17,7 +17,7 @@
 //! map's. `K = 0` is the paper's blend; `G = 0` is a constant-gain observer started by the map. It
 //! needs the full state: it is offered when every state is a target (its expression is the state's
 //! name), see [`state_targets`]. [`estimate_run`] is `firmware::Started` over the emitted programs
-//! ([`crate::plant::correction`]), step for step.
+//! ([`crate::observers::kind::corrected::program`]), step for step.
 //!
 //! Its gains are chosen in closed loop on the tuning runs: [`tuning`] says how.
 
@@ -29,7 +29,7 @@ use firmware::emitted::Maths;
 use firmware::Scalar;
 
 use crate::data::{Rows, Run};
-use crate::plant::correction::{CorrectionCode, CorrectionConstants, Reading};
+use crate::observers::kind::corrected::program::{CorrectionCode, CorrectionConstants, Reading};
 use crate::plant::ModelCode;
 use crate::spec::Design;
 
@@ -155,7 +155,7 @@ pub struct CorrectedStep<'a, T> {
     upper: Vec<T>,
     blends: Vec<Vec<T>>,
     scratch: std::cell::RefCell<Vec<T>>,
-    shell: super::started::Shell<T, Vec<T>>,
+    shell: crate::observers::started::Shell<T, Vec<T>>,
 }
 
 impl<'a, T: Scalar + Maths> CorrectedStep<'a, T> {
@@ -170,7 +170,7 @@ impl<'a, T: Scalar + Maths> CorrectedStep<'a, T> {
             upper: to_t(&constants.upper),
             blends: constants.blends().iter().map(|row| to_t(row)).collect(),
             scratch: std::cell::RefCell::new(Vec::new()),
-            shell: super::started::Shell::new(
+            shell: crate::observers::started::Shell::new(
                 setting.first,
                 setting.state_targets,
                 setting.code.dimensions.targets,

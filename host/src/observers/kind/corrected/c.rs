@@ -4,15 +4,15 @@
 
 use askama::Template;
 
-use super::floats;
-use super::program::function;
-use super::started::{self, map_states, targets_of, Follower};
+use crate::emit::c::floats;
+use crate::emit::c::program::function;
+use crate::emit::c::started::{self, map_states, targets_of, Follower};
 use crate::emit::EmitError;
-use crate::plant::correction::{CorrectionCode, CorrectionConstants};
+use crate::observers::kind::corrected::program::{CorrectionCode, CorrectionConstants};
 use crate::plant::ModelCode;
 
 /// The header's and the source's parts of the corrected map.
-pub(super) fn corrected(
+pub(crate) fn corrected(
     name: &str,
     code: &ModelCode,
     constants: &CorrectionConstants,
@@ -62,7 +62,7 @@ pub(super) fn corrected(
         steady_reads_map: programs.steady_reads_map,
         carried: "o->x",
     };
-    let source = super::render(&CorrectedC {
+    let source = crate::emit::c::render(&CorrectedC {
         name,
         upper: &upper,
         blends: rows.len(),
