@@ -1,7 +1,7 @@
 //! The rules every filter kind follows over a sample, written once over any storage: the chip runs
 //! them over its fixed-size arrays ([`crate::FilterObserver`], [`crate::Started`],
 //! [`crate::Restarted`]) and the host runs the very same functions over its interpreted programs in
-//! `f64` and `f32` (`host::observers::shells`), so that the two cannot drift apart.
+//! `f64` and `f32` (the host's filter steps and started shell), so that the two cannot drift apart.
 //!
 //! A kind plugs in its written-out samples as closures; the rules decide which one runs and what is
 //! kept:

@@ -186,14 +186,8 @@ pub fn design_source(
         comparison.observers.iter().map(|o| (o.kind, o.instructions)).collect();
     let constants = comparison.tuned.constants();
     let observers = emit::model::Observers {
-        ekf: constants.ekf_box(),
-        ukf: constants.ukf_box(),
-        started: constants
-            .ekf_map()
-            .map(|s| (s.p0.as_slice(), s.state_targets.as_slice())),
-        restart: constants.ekf_restart(),
-        corrected: constants.corrected().zip(state_targets.as_deref()),
-        mhe: constants.mhe(),
+        constants: &constants,
+        state_targets: state_targets.as_deref(),
         kind: comparison.chosen.0,
         instructions: &instructions,
         tables_sha256: &crate::tables::Tables::new(design, result, Some(&comparison)).tables_sha256,

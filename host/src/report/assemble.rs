@@ -172,11 +172,9 @@ fn fixed_filters(design: &Design, comparison: &Comparison) -> Vec<FixedFilterRep
         .beside
         .iter()
         .filter_map(|beside| {
-            let (section, spec) = match beside.figures.kind {
-                "ekf_box" => ("observer.ekf", comparison.tuned.ekf_box()?),
-                "ukf_box" => ("observer.ukf", comparison.tuned.ukf_box()?),
-                _ => return None,
-            };
+            let entry = crate::observers::kind::named(beside.figures.kind)?;
+            let section = entry.fixed.filter(|fixed| fixed.own)?.section;
+            let spec = comparison.tuned.filter(entry.kind)?;
             Some(FixedFilterReport {
                 kind: beside.figures.kind,
                 section,

@@ -39,14 +39,14 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
     let name = design.name.as_str();
     let upper = name.to_uppercase();
     let (nx, nt) = (code.dimensions.states, code.dimensions.targets);
-    let filter = observers.ekf.map(|ekf| kalman::filter_code(code, ekf));
+    let filter = observers.ekf().map(|ekf| kalman::filter_code(code, ekf));
     // Beside the EKF, as in the Rust file.
     let unscented = observers
-        .ekf
-        .and(observers.ukf)
+        .ekf()
+        .and(observers.ukf())
         .map(|ukf| (ukf, crate::observers::kind::ukf_box::program::unscented_code(code, ukf)));
     let correction = observers
-        .corrected
+        .corrected()
         .map(|(constants, _)| correction::correction_code(code, constants));
     let mut programs: Vec<&Program> = vec![&code.targets];
     if let Some(filter) = &filter {
@@ -58,10 +58,10 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
     if let Some(c) = &correction {
         programs.extend([&c.predict, &c.start_up, &c.steady]);
     }
-    if observers.mhe.is_some() {
+    if observers.mhe().is_some() {
         programs.extend([&code.derivative, &code.output]);
     }
-    if observers.ekf.is_none() && observers.corrected.is_none() && observers.mhe.is_none() {
+    if observers.ekf().is_none() && observers.corrected().is_none() && observers.mhe().is_none() {
         return Ok(Kinds::default());
     }
     let mut kinds = Kinds {
@@ -83,7 +83,7 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
         &code.targets,
         code,
     )?;
-    if let (Some(ekf), Some(filter)) = (observers.ekf, &filter) {
+    if let (Some(ekf), Some(filter)) = (observers.ekf(), &filter) {
         *source += &box_filter::samples(&EKF, filter, code)?;
         *source += &box_filter::common(name, &EKF, ekf)?;
         kinds.header += &started::header(
@@ -96,7 +96,7 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
         );
         kinds.source += &box_filter::box_observer(name, &EKF);
         kinds.names.push("ekf_box");
-        if let Some((p0, state_targets)) = observers.started {
+        if let Some((p0, state_targets)) = observers.started() {
             kinds.source += &started_ekf(name, p0, state_targets, nt)?;
             kinds.header += &started::header(
                 name,
@@ -108,7 +108,7 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
                 ),
             );
             kinds.names.push("ekf_map");
-            if let Some(restart) = observers.restart {
+            if let Some(restart) = observers.restart() {
                 kinds.source += &restarted(name, nx, &restart.variances, restart.threshold)?;
                 kinds.header += &started::header(
                     name,
@@ -137,13 +137,13 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
         kinds.source += &box_filter::box_observer(name, &UKF);
         kinds.names.push("ukf_box");
     }
-    if let (Some((constants, state_targets)), Some(programs)) = (observers.corrected, &correction) {
+    if let (Some((constants, state_targets)), Some(programs)) = (observers.corrected(), &correction) {
         let (header, source) = corrected::corrected(name, code, constants, programs, state_targets)?;
         kinds.header += &header;
         kinds.source += &source;
         kinds.names.push("corrected");
     }
-    if let Some(constants) = observers.mhe {
+    if let Some(constants) = observers.mhe() {
         let (header, source) = mhe::mhe(name, code, constants, design.chip_substeps)?;
         kinds.header += &header;
         kinds.source += &source;

@@ -3,10 +3,17 @@
 //! scenario's start is one the chip's `ekf()` does not know; `auto` then judges it, as every kind, on
 //! all the tuning runs, its tail from the scenario's start).
 
-use super::{Bench, Kind, Needs, Tuned};
+use super::{Bench, FixedSection, Kind, Needs, Tuned};
 use crate::observers::{ekf, ObserverFigures};
 use crate::search::cost;
 use crate::spec::ObserverKind;
+
+/// `[observer.ekf]`: the box EKF's constants the spec fixes (the kinds over it reuse its `Q`).
+pub const FIXED: FixedSection = FixedSection {
+    section: "observer.ekf",
+    of: |design| &design.filters.ekf,
+    own: true,
+};
 
 /// See the module's documentation.
 pub const KIND: Kind = Kind {
@@ -25,6 +32,7 @@ pub const KIND: Kind = Kind {
     cost_before_fit: Some(cost::ekf_before_fit),
     missing_why: "the model is beyond the sizes the host filters",
     judged_in: crate::recording::Precision::F64,
+    fixed: Some(FIXED),
     tune,
 };
 

@@ -2,7 +2,7 @@
 //! `P(N−1)` of the map's error scaled by one factor tuned on the tuning runs.
 
 use super::corrected::run as corrected;
-use super::{Bench, Kind, Needs, Tuned};
+use super::{Bench, FixedSection, Kind, Needs, Tuned};
 use crate::data::{Rows, Run};
 use crate::observers::{ekf, ObserverFigures, Started};
 use crate::search::cost;
@@ -25,6 +25,10 @@ pub const KIND: Kind = Kind {
     cost_before_fit: Some(cost::started_before_fit),
     missing_why: "it needs every state as a target and a model the host can filter",
     judged_in: crate::recording::Precision::F64,
+    fixed: Some(FixedSection {
+        own: false,
+        ..super::ekf_box::FIXED
+    }),
     tune,
 };
 

@@ -21,6 +21,7 @@ pub const KIND: Kind = Kind {
     cost_before_fit: None,
     missing_why: "",
     judged_in: crate::recording::Precision::F64,
+    fixed: None,
     tune,
 };
 

@@ -27,7 +27,7 @@ mod tuned;
 use crate::plant::kalman::EkfConstants;
 use crate::plant::ModelCode;
 use crate::recording::Precision;
-use crate::spec::ObserverKind;
+use crate::spec::{Design, FixedFilter, ObserverKind};
 
 use super::ObserverFigures;
 
@@ -59,9 +59,23 @@ pub struct Kind {
     /// runs part on a shipped design (`ukf_box`, `mhe`); `estimate --precision` in it gives the
     /// report's estimates to the bit.
     pub judged_in: Precision,
+    /// The spec's section of fixed filter constants it reads, if any.
+    pub fixed: Option<FixedSection>,
     /// Tunes it on the tuning runs and judges it on every set ([`Bench::judge`]), recording its
     /// constants in the bench for the kinds after it; `None` when the design cannot have it.
     pub tune: fn(&mut Bench<'_>) -> Option<ObserverFigures>,
+}
+
+/// The spec's section of fixed constants a filter kind reads (`[observer.ekf]`, `[observer.ukf]`).
+#[derive(Clone, Copy)]
+pub struct FixedSection {
+    /// Its name in the spec (`observer.ekf`).
+    pub section: &'static str,
+    /// The constants it holds.
+    pub of: fn(&Design) -> &FixedFilter,
+    /// Whether these constants fix the kind's own filter (`ekf_box`, `ukf_box`), rather than a `Q`
+    /// it reuses (`ekf_map` and `ekf_restart` run on the box EKF's).
+    pub own: bool,
 }
 
 /// What a kind needs of a design besides the map.

@@ -151,6 +151,14 @@ struct ConstantsOf(ObserverKind);
 pub struct TunedKinds(BTreeMap<ObserverKind, Tuned>);
 
 impl TunedKinds {
+    /// How the Kalman filter of kind `kind` was tuned (`ekf_box`, `ukf_box`), when the design has it.
+    pub fn filter(&self, kind: ObserverKind) -> Option<&ekf::Tuned> {
+        match self.0.get(&kind)? {
+            Tuned::EkfBox(t) | Tuned::UkfBox(t) => Some(t),
+            _ => None,
+        }
+    }
+
     /// Records what tuning gave a kind (replacing what it gave before).
     pub fn insert(&mut self, tuned: Tuned) {
         self.0.insert(tuned.kind(), tuned);

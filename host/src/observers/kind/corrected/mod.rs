@@ -2,13 +2,13 @@
 //! tuned in closed loop on the tuning runs.
 
 pub mod c;
+pub mod cost;
 pub mod emit;
 pub mod program;
 pub mod run;
 
 use super::{Bench, Kind, Needs, Tuned};
 use crate::observers::ObserverFigures;
-use crate::search::cost;
 use crate::spec::ObserverKind;
 use run as corrected;
 
@@ -29,6 +29,7 @@ pub const KIND: Kind = Kind {
     cost_before_fit: None,
     missing_why: "it needs every state as a target and a model the host can run",
     judged_in: crate::recording::Precision::F64,
+    fixed: None,
     tune,
 };
 

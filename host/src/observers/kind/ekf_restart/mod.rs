@@ -2,13 +2,14 @@
 //! estimate and restarted from it as `ekf_map` starts when the two disagree (a χ² threshold tuned on
 //! the tuning runs).
 
+pub mod cost;
 pub mod emit;
 pub mod run;
 
-use super::{Bench, Kind, Needs, Tuned};
+use super::{Bench, FixedSection, Kind, Needs, Tuned};
 use crate::data::{Rows, Run};
 use crate::observers::ObserverFigures;
-use crate::search::cost;
+use crate::search::cost::ekf_before_fit;
 use crate::spec::ObserverKind;
 use run as restart;
 use run::RestartConstants;
@@ -27,9 +28,13 @@ pub const KIND: Kind = Kind {
         filter: true,
         reads: &[ObserverKind::EkfBox, ObserverKind::EkfMap, ObserverKind::EkfRestart],
     },
-    cost_before_fit: Some(cost::ekf_before_fit),
+    cost_before_fit: Some(ekf_before_fit),
     missing_why: "its tables hold no restart threshold",
     judged_in: crate::recording::Precision::F64,
+    fixed: Some(FixedSection {
+        own: false,
+        ..super::ekf_box::FIXED
+    }),
     tune,
 };
 

@@ -6,13 +6,13 @@
 //! `budget.instructions` ([`crate::observers::choose`]).
 
 pub mod c;
+pub mod cost;
 pub mod emit;
 pub mod run;
 
 use super::{Bench, Kind, Needs, Tuned};
 use crate::data::Rows;
 use crate::observers::ObserverFigures;
-use crate::search::cost;
 use crate::spec::ObserverKind;
 use run as mhe;
 use run::ChipTuned;
@@ -34,6 +34,7 @@ pub const KIND: Kind = Kind {
     cost_before_fit: None,
     missing_why: "the model is beyond the sizes the host runs a moving-horizon estimate for",
     judged_in: crate::recording::Precision::F32,
+    fixed: None,
     tune,
 };
 

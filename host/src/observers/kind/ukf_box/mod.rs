@@ -2,16 +2,23 @@
 //! its own `Q` and `P0` tuned as the box EKF's are, by the same search on the same random tuning runs
 //! ([`ukf::tune`]); judged from the box centre everywhere, as `ekf()` is.
 
+pub mod cost;
 pub mod emit;
 pub mod program;
 pub mod run;
 
-use super::{Bench, Kind, Needs, Tuned};
+use super::{Bench, FixedSection, Kind, Needs, Tuned};
 use crate::observers::{ekf, ObserverFigures};
-use crate::search::cost;
 use crate::spec::ObserverKind;
 use program::unscented_code;
 use run as ukf;
+
+/// `[observer.ukf]`: the UKF's constants the spec fixes.
+pub const FIXED: FixedSection = FixedSection {
+    section: "observer.ukf",
+    of: |design| &design.filters.ukf,
+    own: true,
+};
 
 /// See the module's documentation.
 pub const KIND: Kind = Kind {
@@ -30,6 +37,7 @@ pub const KIND: Kind = Kind {
     cost_before_fit: Some(cost::ukf_before_fit),
     missing_why: "the model is beyond the sizes the host filters",
     judged_in: crate::recording::Precision::F32,
+    fixed: Some(FIXED),
     tune,
 };
 
