@@ -146,9 +146,8 @@ where
     #[cold]
     #[inline(never)]
     fn lost(&mut self, u: &[T; NU]) {
-        crate::rules::lost(&mut self.rule.carried, u.iter().all(|v| v.is_finite()), |carried| {
-            F::predict(carried, u)
-        });
+        self.rule
+            .lost(u.iter().all(|v| v.is_finite()), |carried| F::predict(carried, u));
     }
 
     /// Samples refused since the start (see [`crate::rules::Refusals`]).

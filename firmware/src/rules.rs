@@ -55,6 +55,8 @@ pub fn filter_sample<C, E>(
     unmeasured: impl FnOnce(&C) -> C,
     finite: impl Fn(&C) -> bool,
 ) -> Result<E, RejectedSample> {
+    // The lost output's path is `lost`'s, written out: through `lost` the compiler kept 48 more
+    // stack bytes for E. coli's filters and 2 to 6 more Cortex-M0 instructions (measured).
     if !inputs_finite {
         return Err(RejectedSample);
     }
@@ -196,6 +198,12 @@ impl<C> RestartedRule<C> {
         }
         self.carried = start(&first)?;
         Some(first)
+    }
+
+    /// A refused sample (see [`lost`]).
+    #[inline(always)]
+    pub fn lost(&mut self, inputs_finite: bool, predict: impl FnOnce(&C) -> Option<C>) {
+        lost(&mut self.carried, inputs_finite, predict);
     }
 
     /// The filter's own sample: `follow(carried)` gives what to carry next and the states, or `None`

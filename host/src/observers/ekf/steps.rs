@@ -85,6 +85,12 @@ fn finite<T: firmware::Scalar>(x: &[T], p: &[T]) -> bool {
     x.iter().chain(p).all(|v| v.is_finite())
 }
 
+/// What a sample of the filter carries on, `(x, P)`, when it is finite (what the generated
+/// `finite(&x, &p).then_some((x, p))` keeps).
+pub fn kept<T: firmware::Scalar>((_, x, p): crate::plant::kalman::Sampled<T>) -> Option<(Vec<T>, Vec<T>)> {
+    finite(&x, &p).then_some((x, p))
+}
+
 /// The EKF started by the map (the generated `StartedEkf` in `firmware::Started`, step for step,
 /// [`Shell`]) in `T`: at sample `first` the map's estimate, from which `(x, P)` is
 /// predicted with `P` = `p0` on the diagonal; then `filter`'s measured samples.
@@ -143,13 +149,12 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> StartedStep<'a, T> {
             scratch,
             shell,
         } = self;
-        let predicted = |(_, x, p): crate::plant::kalman::Sampled<T>| finite(&x, &p).then_some((x, p));
         shell.step(
             row,
             y,
             u,
             // `StartedEkf::start`: `(x, P)` predicted from the map's states with `P` = `p0`.
-            &mut |x, u| predicted(filter.run(x, upper, None, u, &mut scratch.borrow_mut())),
+            &mut |x, u| kept(filter.run(x, upper, None, u, &mut scratch.borrow_mut())),
             &mut |(x, p): &(Vec<T>, Vec<T>), _, _, y, u| {
                 let (estimate, x, p) = filter.run(x, p, Some(y), u, &mut scratch.borrow_mut());
                 let estimate = estimate.expect("a measured sample has an estimate");
@@ -157,7 +162,7 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> StartedStep<'a, T> {
                 finite(&x, &p).then_some(((x, p), targets))
             },
             // A lost output: the prediction alone (`StartedEkf::predict`).
-            &mut |(x, p): &(Vec<T>, Vec<T>), u| predicted(filter.run(x, p, None, u, &mut scratch.borrow_mut())),
+            &mut |(x, p): &(Vec<T>, Vec<T>), u| kept(filter.run(x, p, None, u, &mut scratch.borrow_mut())),
         )
     }
 

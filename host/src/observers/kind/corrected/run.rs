@@ -30,6 +30,7 @@ use firmware::Scalar;
 
 use crate::data::{Rows, Run};
 use crate::observers::kind::corrected::program::{CorrectionCode, CorrectionConstants, Reading};
+use crate::observers::started::literals;
 use crate::plant::ModelCode;
 use crate::spec::Design;
 
@@ -161,14 +162,13 @@ pub struct CorrectedStep<'a, T> {
 impl<'a, T: Scalar + Maths> CorrectedStep<'a, T> {
     /// Before the first sample of a run.
     pub fn new(setting: &'a Setting<'a>, code: &'a CorrectionCode, constants: &'a CorrectionConstants) -> Self {
-        let to_t = |row: &[f64]| row.iter().map(|&v| T::literal(v as f32, v)).collect::<Vec<T>>();
         CorrectedStep {
             setting,
             code,
             constants,
-            lower: to_t(&constants.lower),
-            upper: to_t(&constants.upper),
-            blends: constants.blends().iter().map(|row| to_t(row)).collect(),
+            lower: literals(&constants.lower),
+            upper: literals(&constants.upper),
+            blends: constants.blends().iter().map(|row| literals(row)).collect(),
             scratch: std::cell::RefCell::new(Vec::new()),
             shell: crate::observers::started::Shell::new(
                 setting.first,

@@ -21,6 +21,7 @@ use firmware::rules::{Refusals, RestartedRule};
 use firmware::{RejectedSample, Scalar};
 
 use crate::data::Run;
+use crate::observers::ekf::steps::kept;
 use crate::observers::started::literals;
 use crate::plant::kalman::{self, EkfConstants, FilterCode};
 use crate::plant::ModelCode;
@@ -127,7 +128,6 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
     /// (NaN where it has none): NaN where the sample is refused, the latest estimate where a step
     /// is not finite.
     pub fn step(&mut self, row: &[T], y: &[f64], u: &[f64]) -> Vec<T> {
-        let finite = |(_, x, p): kalman::Sampled<T>| x.iter().chain(&p).all(|v| v.is_finite()).then_some((x, p));
         let (y, u) = (literals::<T>(y), literals::<T>(u));
         let RestartStep {
             filter,
@@ -141,8 +141,8 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
         } = self;
         let inputs_finite = u.iter().all(|v| v.is_finite());
         if !(inputs_finite && y.iter().all(|v| v.is_finite())) {
-            firmware::rules::lost(&mut rule.carried, inputs_finite, |(x, p)| {
-                finite(filter.run(x, p, None, &u, &mut scratch.borrow_mut()))
+            rule.lost(inputs_finite, |(x, p)| {
+                kept(filter.run(x, p, None, &u, &mut scratch.borrow_mut()))
             });
             let _ = self.refusals.count::<()>(Err(RejectedSample));
             return self.nan.clone();
@@ -152,7 +152,7 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
             let restarted = rule.check(
                 || row.iter().all(|v| v.is_finite()).then_some(row),
                 |(x, p), row| disagrees(x, p, &states(row), restart),
-                |row| finite(filter.run(&states(row), started, None, &u, &mut scratch.borrow_mut())),
+                |row| kept(filter.run(&states(row), started, None, &u, &mut scratch.borrow_mut())),
             );
             if let Some(row) = restarted {
                 self.last = row.to_vec();
@@ -162,7 +162,7 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
         let result = rule.follow(|(x, p)| {
             let (estimate, x, p) = filter.run(x, p, Some(&y), &u, &mut scratch.borrow_mut());
             let estimate = estimate.expect("a measured sample has an estimate");
-            let (x, p) = finite((None, x, p))?;
+            let (x, p) = kept((None, x, p))?;
             Some(((x, p), code.targets(&estimate, &u, &mut scratch.borrow_mut())))
         });
         if let Ok(targets) = self.refusals.count(result) {
