@@ -8,7 +8,7 @@ use crate::{Design, Estimate, FamilyObserver, FilterObserver, Observer, Rejected
 /// What every observer a design carries offers, whatever its kind: the map ([`crate::Observer`]),
 /// the observers the map starts ([`crate::Started`]: the model-corrected map, the map-started EKF),
 /// the box-started EKF checked by the map ([`crate::Restarted`]), the Kalman filters from the box
-/// centre ([`crate::FilterObserver`]: the EKF and the UKF), the moving-horizon estimate
+/// centre ([`crate::FilterObserver`]), the moving-horizon estimate
 /// ([`crate::mhe::Observer`]), the map in integers ([`crate::fixed::Observer`]) and the family of
 /// maps ([`crate::FamilyObserver`]).
 ///

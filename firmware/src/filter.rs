@@ -1,10 +1,10 @@
-//! A Kalman filter that `gen` wrote out for a design (its EKF or its UKF, from the centre of the state
+//! A Kalman filter that `gen` wrote out for a design (one of its Kalman filters, from the centre of the state
 //! box or the start the spec fixes) with the interface every observer has: [`FilterObserver`].
 
 use crate::rules::Refusals;
 use crate::{Estimate, RejectedSample, Saturation, Scalar};
 
-/// A filter written out by `gen` (`Ekf`, `Ukf` of a generated design): its state and covariance,
+/// A filter written out by `gen` (a generated design's `Ekf`, say): its state and covariance,
 /// one sample as straight-line code, and the design's targets. Implemented by generated code only.
 pub trait Filter<T, const NX: usize, const NY: usize, const NU: usize, const NT: usize>: Copy {
     /// The filter at its start: a constant, so that an observer can be a `static`'s initial value.

@@ -52,20 +52,20 @@
 //! the current instant, read `estimate`, `reset` for a new run, `is_ready` once it estimates; its
 //! associated types say what a value is (`f32`, or `i32` for the map in integers), what a sample's
 //! outputs and inputs and an estimate are, and why a sample is refused. Firmware written against it
-//! switches kinds by a type:
+//! switches kinds by a type. The runtimes the kinds share:
 //!
-//! | kind | type |
+//! | what runs | type |
 //! |---|---|
-//! | `map` | [`Observer`] |
-//! | `corrected`, `ekf_map` | [`Started`] over the design's `Corrector` / `StartedEkf` |
-//! | `ekf_restart` | [`Restarted`] |
-//! | `ekf_box`, `ukf_box` | [`FilterObserver`] over the design's `Ekf` / `Ukf` |
-//! | `mhe` | [`mhe::Observer`] |
+//! | the map | [`Observer`] |
+//! | a follower the map starts (a model-based kind started at the map's estimate) | [`Started`] over the design's follower |
+//! | a filter the map checks once and restarts | [`Restarted`] |
+//! | a Kalman filter from the centre of the state box | [`FilterObserver`] over the design's filter |
+//! | the moving-horizon estimate | [`mhe::Observer`] |
 //! | the map in integers | [`fixed::Observer`] |
 //! | a family of maps | [`FamilyObserver`] |
 //!
-//! A generated design names each of them (`MapObserver`, `CorrectedObserver`, …, `Observer` for the
-//! kind `gen` chose). What only the generated code calls or implements (the traits a design
+//! A generated design names each kind it has by a type (`MapObserver`, …, `Observer` for the kind
+//! `gen` chose), and lists them all with their types in its `<design>_observers!` macro. What only the generated code calls or implements (the traits a design
 //! implements, the straight-line code's helpers, the solver steps) is in `emitted`, hidden from
 //! this documentation: it follows the generator, not a firmware's needs.
 //!

@@ -43,8 +43,8 @@ impl Refusals {
     }
 }
 
-/// One sample of a Kalman filter that carries `carried` from the start (the box-started EKF and
-/// UKF): with a finite output `measured` (the estimate given the sample and what to carry), with a
+/// One sample of a Kalman filter that carries `carried` from the start (the filters from the box
+/// centre): with a finite output `measured` (the estimate given the sample and what to carry), with a
 /// lost one `unmeasured` (the prediction alone); a result is kept only when `finite` holds.
 #[inline(always)]
 pub fn filter_sample<C, E>(

@@ -119,42 +119,6 @@ void two_tanks_ekf_box_init(two_tanks_ekf_box *observer);
 two_tanks_status two_tanks_ekf_box_push(two_tanks_ekf_box *observer, const float *y, const float *u);
 two_tanks_status two_tanks_ekf_box_estimate(const two_tanks_ekf_box *observer, float *values, two_tanks_saturation *saturation);
 
-/* The EKF started at the map's first estimate (kind ekf_map, the Rust EkfMapObserver). */
-typedef struct {
-    two_tanks_map window;
-    float x[TWO_TANKS_STATES];
-    float p[TWO_TANKS_COVARIANCE];
-    unsigned count;
-    int started;
-    float values[TWO_TANKS_TARGETS];
-    two_tanks_saturation flags[TWO_TANKS_TARGETS];
-    int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
-    uint32_t refused;
-} two_tanks_ekf_map;
-
-void two_tanks_ekf_map_init(two_tanks_ekf_map *observer);
-two_tanks_status two_tanks_ekf_map_push(two_tanks_ekf_map *observer, const float *y, const float *u);
-two_tanks_status two_tanks_ekf_map_estimate(const two_tanks_ekf_map *observer, float *values, two_tanks_saturation *saturation);
-
-/* The EKF from the box centre that checks the map once, at its first estimate, and restarts
- * from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
-typedef struct {
-    two_tanks_map window;
-    float x[TWO_TANKS_STATES];
-    float p[TWO_TANKS_COVARIANCE];
-    int checked;
-    float values[TWO_TANKS_TARGETS];
-    two_tanks_saturation flags[TWO_TANKS_TARGETS];
-    int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
-    uint32_t refused;
-} two_tanks_ekf_restart;
-
-void two_tanks_ekf_restart_init(two_tanks_ekf_restart *observer);
-two_tanks_status two_tanks_ekf_restart_push(two_tanks_ekf_restart *observer, const float *y, const float *u);
-two_tanks_status two_tanks_ekf_restart_estimate(const two_tanks_ekf_restart *observer, float *values, two_tanks_saturation *saturation);
-
 /* The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust
  * UkfBoxObserver): an estimate from the first accepted sample; a sample with a non-finite output
  * is refused and only predicted. */
@@ -190,6 +154,42 @@ typedef struct {
 void two_tanks_corrected_init(two_tanks_corrected *observer);
 two_tanks_status two_tanks_corrected_push(two_tanks_corrected *observer, const float *y, const float *u);
 two_tanks_status two_tanks_corrected_estimate(const two_tanks_corrected *observer, float *values, two_tanks_saturation *saturation);
+
+/* The EKF started at the map's first estimate (kind ekf_map, the Rust EkfMapObserver). */
+typedef struct {
+    two_tanks_map window;
+    float x[TWO_TANKS_STATES];
+    float p[TWO_TANKS_COVARIANCE];
+    unsigned count;
+    int started;
+    float values[TWO_TANKS_TARGETS];
+    two_tanks_saturation flags[TWO_TANKS_TARGETS];
+    int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
+} two_tanks_ekf_map;
+
+void two_tanks_ekf_map_init(two_tanks_ekf_map *observer);
+two_tanks_status two_tanks_ekf_map_push(two_tanks_ekf_map *observer, const float *y, const float *u);
+two_tanks_status two_tanks_ekf_map_estimate(const two_tanks_ekf_map *observer, float *values, two_tanks_saturation *saturation);
+
+/* The EKF from the box centre that checks the map once, at its first estimate, and restarts
+ * from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
+typedef struct {
+    two_tanks_map window;
+    float x[TWO_TANKS_STATES];
+    float p[TWO_TANKS_COVARIANCE];
+    int checked;
+    float values[TWO_TANKS_TARGETS];
+    two_tanks_saturation flags[TWO_TANKS_TARGETS];
+    int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
+} two_tanks_ekf_restart;
+
+void two_tanks_ekf_restart_init(two_tanks_ekf_restart *observer);
+two_tanks_status two_tanks_ekf_restart_push(two_tanks_ekf_restart *observer, const float *y, const float *u);
+two_tanks_status two_tanks_ekf_restart_estimate(const two_tanks_ekf_restart *observer, float *values, two_tanks_saturation *saturation);
 
 /* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 1 Gauss-Newton
  * step(s) over the last TWO_TANKS_HORIZON samples from the previous solution moved one sample on, each

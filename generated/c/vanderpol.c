@@ -989,206 +989,6 @@ vanderpol_status vanderpol_ekf_box_estimate(const vanderpol_ekf_box *o, float *v
     return VANDERPOL_OK;
 }
 
-/* P(N-1)'s upper triangle of the EKF the map starts. */
-static const float STARTED_P0[VANDERPOL_COVARIANCE] = {
-    0.05544692f, 0.0f, 0.07804465f
-};
-
-/* Each state's map estimate, from the map's targets. */
-static void started_ekf_map_states(const float *all, float *map) {
-    map[0] = all[0];
-    map[1] = all[1];
-}
-
-/* The targets of a follower's states, flagged with their states' saturation. */
-static void started_ekf_targets_of(const float *states, const vanderpol_saturation *state_flags, const float *u,
-                                float *values, vanderpol_saturation *flags) {
-    targets(states, u, values);
-    flags[0] = VANDERPOL_INSIDE;
-    flags[1] = VANDERPOL_INSIDE;
-    flags[0] = state_flags[0];
-    flags[1] = state_flags[1];
-}
-
-/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite. */
-static int started_ekf_start(const float *first, const float *u, float *x, float *p) {
-    float out[VANDERPOL_STATES + VANDERPOL_COVARIANCE];
-    ekf_unmeasured(first, STARTED_P0, u, out);
-    if (!all_finite(out, VANDERPOL_STATES + VANDERPOL_COVARIANCE)) {
-        return 0;
-    }
-    memcpy(x, out, VANDERPOL_STATES * sizeof *x);
-    memcpy(p, out + VANDERPOL_STATES, VANDERPOL_COVARIANCE * sizeof *p);
-    return 1;
-}
-
-/* StartedEkf::follow: the EKF's sample, every state inside. */
-static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, const float *map, const float *y,
-                              const float *u, float *states, vanderpol_saturation *flags) {
-    unsigned i;
-    (void)j;
-    (void)start_up;
-    (void)map;
-    for (i = 0u; i < VANDERPOL_STATES; ++i) {
-        flags[i] = VANDERPOL_INSIDE;
-    }
-    return ekf_measure(x, p, y, u, states);
-}
-
-static void ekf_map_fresh(vanderpol_ekf_map *o) {
-    vanderpol_map_init(&o->window);
-    memcpy(o->x, EKF_X0, sizeof o->x);
-    memcpy(o->p, EKF_P0, sizeof o->p);
-    o->count = 0u;
-    o->started = 0;
-    o->ready = 0;
-}
-
-static vanderpol_status ekf_map_sample(vanderpol_ekf_map *o, const float *y, const float *u) {
-    const int start_up = o->count <= 0u;
-    float all[VANDERPOL_TARGETS], map[VANDERPOL_STATES], states[VANDERPOL_STATES];
-    vanderpol_saturation all_flags[VANDERPOL_TARGETS], state_flags[VANDERPOL_STATES];
-    int estimated = 0;
-    if (!accepts(y, u)) {
-        if (o->started && inputs_finite(u)) {
-            ekf_predict(o->x, o->p, u);
-        }
-        return VANDERPOL_REFUSED;
-    }
-    memset(map, 0, sizeof map);
-    if (start_up) {
-        (void)vanderpol_map_push(&o->window, y, u);
-        if (o->window.filled < VANDERPOL_HORIZON) {
-            return VANDERPOL_OK;
-        }
-        (void)vanderpol_map_estimate(&o->window, all, all_flags);
-        started_ekf_map_states(all, map);
-        estimated = 1;
-    }
-    if (!o->started && estimated) {
-        if (!started_ekf_start(map, u, o->x, o->p)) {
-            return VANDERPOL_REFUSED;
-        }
-        o->started = 1;
-        memcpy(o->values, all, sizeof all);
-        memcpy(o->flags, all_flags, sizeof all_flags);
-    } else if (o->started) {
-        if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
-            return VANDERPOL_REFUSED;
-        }
-        started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
-    } else {
-        return VANDERPOL_OK;
-    }
-    o->ready = 1;
-    o->count = start_up ? o->count + 1u : o->count;
-    return VANDERPOL_OK;
-}
-
-void vanderpol_ekf_map_init(vanderpol_ekf_map *o) {
-    ekf_map_fresh(o);
-    o->refused = 0u;
-}
-
-vanderpol_status vanderpol_ekf_map_push(vanderpol_ekf_map *o, const float *y, const float *u) {
-    const vanderpol_status status = ekf_map_sample(o, y, u);
-    if (status == VANDERPOL_REFUSED && o->refused != UINT32_MAX) {
-        ++o->refused;
-    }
-    return status;
-}
-
-vanderpol_status vanderpol_ekf_map_estimate(const vanderpol_ekf_map *o, float *values, vanderpol_saturation *saturation) {
-    if (!o->ready) {
-        return VANDERPOL_NO_ESTIMATE_YET;
-    }
-    memcpy(values, o->values, sizeof o->values);
-    memcpy(saturation, o->flags, sizeof o->flags);
-    return VANDERPOL_OK;
-}
-
-/* Whether the filter's prediction x (covariance p) and the map's states f disagree:
- * d = sum_i (x_i - f_i)^2 / (P_ii + e_i^2) > threshold, or d is NaN (restart_disagrees). */
-static int restart_disagrees(const float *x, const float *p, const float *f) {
-    float d = 0.0f;
-    float e;
-    e = x[0] - f[0];
-    d += e * e / (p[0] + 0.05544692f);
-    e = x[1] - f[1];
-    d += e * e / (p[2] + 0.07804465f);
-    return !(d <= 4.0f);
-}
-
-/* Restarted::check, at the map's first estimate: 1 when the filter restarted from the map. */
-static int restart_check(vanderpol_ekf_restart *o, const float *y, const float *u) {
-    float all[VANDERPOL_TARGETS], map[VANDERPOL_STATES];
-    vanderpol_saturation all_flags[VANDERPOL_TARGETS];
-    (void)vanderpol_map_push(&o->window, y, u);
-    if (o->window.filled < VANDERPOL_HORIZON) {
-        return 0;
-    }
-    o->checked = 1;
-    (void)vanderpol_map_estimate(&o->window, all, all_flags);
-    started_ekf_map_states(all, map);
-    if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
-        return 0;
-    }
-    memcpy(o->values, all, sizeof all);
-    memcpy(o->flags, all_flags, sizeof all_flags);
-    o->ready = 1;
-    return 1;
-}
-
-static void ekf_restart_fresh(vanderpol_ekf_restart *o) {
-    vanderpol_map_init(&o->window);
-    memcpy(o->x, EKF_X0, sizeof o->x);
-    memcpy(o->p, EKF_P0, sizeof o->p);
-    o->checked = 0;
-    o->ready = 0;
-}
-
-static vanderpol_status ekf_restart_sample(vanderpol_ekf_restart *o, const float *y, const float *u) {
-    float states[VANDERPOL_STATES];
-    vanderpol_saturation state_flags[VANDERPOL_STATES];
-    if (!accepts(y, u)) {
-        if (inputs_finite(u)) {
-            ekf_predict(o->x, o->p, u);
-        }
-        return VANDERPOL_REFUSED;
-    }
-    if (!o->checked && restart_check(o, y, u)) {
-        return VANDERPOL_OK;
-    }
-    if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
-        return VANDERPOL_REFUSED;
-    }
-    started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
-    o->ready = 1;
-    return VANDERPOL_OK;
-}
-
-void vanderpol_ekf_restart_init(vanderpol_ekf_restart *o) {
-    ekf_restart_fresh(o);
-    o->refused = 0u;
-}
-
-vanderpol_status vanderpol_ekf_restart_push(vanderpol_ekf_restart *o, const float *y, const float *u) {
-    const vanderpol_status status = ekf_restart_sample(o, y, u);
-    if (status == VANDERPOL_REFUSED && o->refused != UINT32_MAX) {
-        ++o->refused;
-    }
-    return status;
-}
-
-vanderpol_status vanderpol_ekf_restart_estimate(const vanderpol_ekf_restart *o, float *values, vanderpol_saturation *saturation) {
-    if (!o->ready) {
-        return VANDERPOL_NO_ESTIMATE_YET;
-    }
-    memcpy(values, o->values, sizeof o->values);
-    memcpy(saturation, o->flags, sizeof o->flags);
-    return VANDERPOL_OK;
-}
-
 /* One UKF sample with its measurement: out = (x(k|k), x+, P+) from (x, P), as the Rust file's ukf_measured. */
 static void ukf_measured(const float *x, const float *p, const float *y, const float *u, float *out) {
     (void)u;
@@ -2264,6 +2064,206 @@ vanderpol_status vanderpol_corrected_push(vanderpol_corrected *o, const float *y
 }
 
 vanderpol_status vanderpol_corrected_estimate(const vanderpol_corrected *o, float *values, vanderpol_saturation *saturation) {
+    if (!o->ready) {
+        return VANDERPOL_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return VANDERPOL_OK;
+}
+
+/* P(N-1)'s upper triangle of the EKF the map starts. */
+static const float STARTED_P0[VANDERPOL_COVARIANCE] = {
+    0.05544692f, 0.0f, 0.07804465f
+};
+
+/* Each state's map estimate, from the map's targets. */
+static void started_ekf_map_states(const float *all, float *map) {
+    map[0] = all[0];
+    map[1] = all[1];
+}
+
+/* The targets of a follower's states, flagged with their states' saturation. */
+static void started_ekf_targets_of(const float *states, const vanderpol_saturation *state_flags, const float *u,
+                                float *values, vanderpol_saturation *flags) {
+    targets(states, u, values);
+    flags[0] = VANDERPOL_INSIDE;
+    flags[1] = VANDERPOL_INSIDE;
+    flags[0] = state_flags[0];
+    flags[1] = state_flags[1];
+}
+
+/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite. */
+static int started_ekf_start(const float *first, const float *u, float *x, float *p) {
+    float out[VANDERPOL_STATES + VANDERPOL_COVARIANCE];
+    ekf_unmeasured(first, STARTED_P0, u, out);
+    if (!all_finite(out, VANDERPOL_STATES + VANDERPOL_COVARIANCE)) {
+        return 0;
+    }
+    memcpy(x, out, VANDERPOL_STATES * sizeof *x);
+    memcpy(p, out + VANDERPOL_STATES, VANDERPOL_COVARIANCE * sizeof *p);
+    return 1;
+}
+
+/* StartedEkf::follow: the EKF's sample, every state inside. */
+static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, const float *map, const float *y,
+                              const float *u, float *states, vanderpol_saturation *flags) {
+    unsigned i;
+    (void)j;
+    (void)start_up;
+    (void)map;
+    for (i = 0u; i < VANDERPOL_STATES; ++i) {
+        flags[i] = VANDERPOL_INSIDE;
+    }
+    return ekf_measure(x, p, y, u, states);
+}
+
+static void ekf_map_fresh(vanderpol_ekf_map *o) {
+    vanderpol_map_init(&o->window);
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->count = 0u;
+    o->started = 0;
+    o->ready = 0;
+}
+
+static vanderpol_status ekf_map_sample(vanderpol_ekf_map *o, const float *y, const float *u) {
+    const int start_up = o->count <= 0u;
+    float all[VANDERPOL_TARGETS], map[VANDERPOL_STATES], states[VANDERPOL_STATES];
+    vanderpol_saturation all_flags[VANDERPOL_TARGETS], state_flags[VANDERPOL_STATES];
+    int estimated = 0;
+    if (!accepts(y, u)) {
+        if (o->started && inputs_finite(u)) {
+            ekf_predict(o->x, o->p, u);
+        }
+        return VANDERPOL_REFUSED;
+    }
+    memset(map, 0, sizeof map);
+    if (start_up) {
+        (void)vanderpol_map_push(&o->window, y, u);
+        if (o->window.filled < VANDERPOL_HORIZON) {
+            return VANDERPOL_OK;
+        }
+        (void)vanderpol_map_estimate(&o->window, all, all_flags);
+        started_ekf_map_states(all, map);
+        estimated = 1;
+    }
+    if (!o->started && estimated) {
+        if (!started_ekf_start(map, u, o->x, o->p)) {
+            return VANDERPOL_REFUSED;
+        }
+        o->started = 1;
+        memcpy(o->values, all, sizeof all);
+        memcpy(o->flags, all_flags, sizeof all_flags);
+    } else if (o->started) {
+        if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
+            return VANDERPOL_REFUSED;
+        }
+        started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
+    } else {
+        return VANDERPOL_OK;
+    }
+    o->ready = 1;
+    o->count = start_up ? o->count + 1u : o->count;
+    return VANDERPOL_OK;
+}
+
+void vanderpol_ekf_map_init(vanderpol_ekf_map *o) {
+    ekf_map_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_status vanderpol_ekf_map_push(vanderpol_ekf_map *o, const float *y, const float *u) {
+    const vanderpol_status status = ekf_map_sample(o, y, u);
+    if (status == VANDERPOL_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
+}
+
+vanderpol_status vanderpol_ekf_map_estimate(const vanderpol_ekf_map *o, float *values, vanderpol_saturation *saturation) {
+    if (!o->ready) {
+        return VANDERPOL_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return VANDERPOL_OK;
+}
+
+/* Whether the filter's prediction x (covariance p) and the map's states f disagree:
+ * d = sum_i (x_i - f_i)^2 / (P_ii + e_i^2) > threshold, or d is NaN (restart_disagrees). */
+static int restart_disagrees(const float *x, const float *p, const float *f) {
+    float d = 0.0f;
+    float e;
+    e = x[0] - f[0];
+    d += e * e / (p[0] + 0.05544692f);
+    e = x[1] - f[1];
+    d += e * e / (p[2] + 0.07804465f);
+    return !(d <= 4.0f);
+}
+
+/* Restarted::check, at the map's first estimate: 1 when the filter restarted from the map. */
+static int restart_check(vanderpol_ekf_restart *o, const float *y, const float *u) {
+    float all[VANDERPOL_TARGETS], map[VANDERPOL_STATES];
+    vanderpol_saturation all_flags[VANDERPOL_TARGETS];
+    (void)vanderpol_map_push(&o->window, y, u);
+    if (o->window.filled < VANDERPOL_HORIZON) {
+        return 0;
+    }
+    o->checked = 1;
+    (void)vanderpol_map_estimate(&o->window, all, all_flags);
+    started_ekf_map_states(all, map);
+    if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
+        return 0;
+    }
+    memcpy(o->values, all, sizeof all);
+    memcpy(o->flags, all_flags, sizeof all_flags);
+    o->ready = 1;
+    return 1;
+}
+
+static void ekf_restart_fresh(vanderpol_ekf_restart *o) {
+    vanderpol_map_init(&o->window);
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->checked = 0;
+    o->ready = 0;
+}
+
+static vanderpol_status ekf_restart_sample(vanderpol_ekf_restart *o, const float *y, const float *u) {
+    float states[VANDERPOL_STATES];
+    vanderpol_saturation state_flags[VANDERPOL_STATES];
+    if (!accepts(y, u)) {
+        if (inputs_finite(u)) {
+            ekf_predict(o->x, o->p, u);
+        }
+        return VANDERPOL_REFUSED;
+    }
+    if (!o->checked && restart_check(o, y, u)) {
+        return VANDERPOL_OK;
+    }
+    if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
+        return VANDERPOL_REFUSED;
+    }
+    started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
+    o->ready = 1;
+    return VANDERPOL_OK;
+}
+
+void vanderpol_ekf_restart_init(vanderpol_ekf_restart *o) {
+    ekf_restart_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_status vanderpol_ekf_restart_push(vanderpol_ekf_restart *o, const float *y, const float *u) {
+    const vanderpol_status status = ekf_restart_sample(o, y, u);
+    if (status == VANDERPOL_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
+}
+
+vanderpol_status vanderpol_ekf_restart_estimate(const vanderpol_ekf_restart *o, float *values, vanderpol_saturation *saturation) {
     if (!o->ready) {
         return VANDERPOL_NO_ESTIMATE_YET;
     }

@@ -116,42 +116,6 @@ void vanderpol_searched_ekf_box_init(vanderpol_searched_ekf_box *observer);
 vanderpol_searched_status vanderpol_searched_ekf_box_push(vanderpol_searched_ekf_box *observer, const float *y, const float *u);
 vanderpol_searched_status vanderpol_searched_ekf_box_estimate(const vanderpol_searched_ekf_box *observer, float *values, vanderpol_searched_saturation *saturation);
 
-/* The EKF started at the map's first estimate (kind ekf_map, the Rust EkfMapObserver). */
-typedef struct {
-    vanderpol_searched_map window;
-    float x[VANDERPOL_SEARCHED_STATES];
-    float p[VANDERPOL_SEARCHED_COVARIANCE];
-    unsigned count;
-    int started;
-    float values[VANDERPOL_SEARCHED_TARGETS];
-    vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
-    int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
-    uint32_t refused;
-} vanderpol_searched_ekf_map;
-
-void vanderpol_searched_ekf_map_init(vanderpol_searched_ekf_map *observer);
-vanderpol_searched_status vanderpol_searched_ekf_map_push(vanderpol_searched_ekf_map *observer, const float *y, const float *u);
-vanderpol_searched_status vanderpol_searched_ekf_map_estimate(const vanderpol_searched_ekf_map *observer, float *values, vanderpol_searched_saturation *saturation);
-
-/* The EKF from the box centre that checks the map once, at its first estimate, and restarts
- * from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
-typedef struct {
-    vanderpol_searched_map window;
-    float x[VANDERPOL_SEARCHED_STATES];
-    float p[VANDERPOL_SEARCHED_COVARIANCE];
-    int checked;
-    float values[VANDERPOL_SEARCHED_TARGETS];
-    vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
-    int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
-    uint32_t refused;
-} vanderpol_searched_ekf_restart;
-
-void vanderpol_searched_ekf_restart_init(vanderpol_searched_ekf_restart *observer);
-vanderpol_searched_status vanderpol_searched_ekf_restart_push(vanderpol_searched_ekf_restart *observer, const float *y, const float *u);
-vanderpol_searched_status vanderpol_searched_ekf_restart_estimate(const vanderpol_searched_ekf_restart *observer, float *values, vanderpol_searched_saturation *saturation);
-
 /* The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust
  * UkfBoxObserver): an estimate from the first accepted sample; a sample with a non-finite output
  * is refused and only predicted. */
@@ -187,6 +151,42 @@ typedef struct {
 void vanderpol_searched_corrected_init(vanderpol_searched_corrected *observer);
 vanderpol_searched_status vanderpol_searched_corrected_push(vanderpol_searched_corrected *observer, const float *y, const float *u);
 vanderpol_searched_status vanderpol_searched_corrected_estimate(const vanderpol_searched_corrected *observer, float *values, vanderpol_searched_saturation *saturation);
+
+/* The EKF started at the map's first estimate (kind ekf_map, the Rust EkfMapObserver). */
+typedef struct {
+    vanderpol_searched_map window;
+    float x[VANDERPOL_SEARCHED_STATES];
+    float p[VANDERPOL_SEARCHED_COVARIANCE];
+    unsigned count;
+    int started;
+    float values[VANDERPOL_SEARCHED_TARGETS];
+    vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
+    int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
+} vanderpol_searched_ekf_map;
+
+void vanderpol_searched_ekf_map_init(vanderpol_searched_ekf_map *observer);
+vanderpol_searched_status vanderpol_searched_ekf_map_push(vanderpol_searched_ekf_map *observer, const float *y, const float *u);
+vanderpol_searched_status vanderpol_searched_ekf_map_estimate(const vanderpol_searched_ekf_map *observer, float *values, vanderpol_searched_saturation *saturation);
+
+/* The EKF from the box centre that checks the map once, at its first estimate, and restarts
+ * from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
+typedef struct {
+    vanderpol_searched_map window;
+    float x[VANDERPOL_SEARCHED_STATES];
+    float p[VANDERPOL_SEARCHED_COVARIANCE];
+    int checked;
+    float values[VANDERPOL_SEARCHED_TARGETS];
+    vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
+    int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
+} vanderpol_searched_ekf_restart;
+
+void vanderpol_searched_ekf_restart_init(vanderpol_searched_ekf_restart *observer);
+vanderpol_searched_status vanderpol_searched_ekf_restart_push(vanderpol_searched_ekf_restart *observer, const float *y, const float *u);
+vanderpol_searched_status vanderpol_searched_ekf_restart_estimate(const vanderpol_searched_ekf_restart *observer, float *values, vanderpol_searched_saturation *saturation);
 
 /* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 3 Gauss-Newton
  * step(s) over the last VANDERPOL_SEARCHED_HORIZON samples from the previous solution moved one sample on, each

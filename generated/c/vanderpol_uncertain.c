@@ -1008,206 +1008,6 @@ vanderpol_uncertain_status vanderpol_uncertain_ekf_box_estimate(const vanderpol_
     return VANDERPOL_UNCERTAIN_OK;
 }
 
-/* P(N-1)'s upper triangle of the EKF the map starts. */
-static const float STARTED_P0[VANDERPOL_UNCERTAIN_COVARIANCE] = {
-    0.01985737f, 0.0f, 0.02691191f
-};
-
-/* Each state's map estimate, from the map's targets. */
-static void started_ekf_map_states(const float *all, float *map) {
-    map[0] = all[0];
-    map[1] = all[1];
-}
-
-/* The targets of a follower's states, flagged with their states' saturation. */
-static void started_ekf_targets_of(const float *states, const vanderpol_uncertain_saturation *state_flags, const float *u,
-                                float *values, vanderpol_uncertain_saturation *flags) {
-    targets(states, u, values);
-    flags[0] = VANDERPOL_UNCERTAIN_INSIDE;
-    flags[1] = VANDERPOL_UNCERTAIN_INSIDE;
-    flags[0] = state_flags[0];
-    flags[1] = state_flags[1];
-}
-
-/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite. */
-static int started_ekf_start(const float *first, const float *u, float *x, float *p) {
-    float out[VANDERPOL_UNCERTAIN_STATES + VANDERPOL_UNCERTAIN_COVARIANCE];
-    ekf_unmeasured(first, STARTED_P0, u, out);
-    if (!all_finite(out, VANDERPOL_UNCERTAIN_STATES + VANDERPOL_UNCERTAIN_COVARIANCE)) {
-        return 0;
-    }
-    memcpy(x, out, VANDERPOL_UNCERTAIN_STATES * sizeof *x);
-    memcpy(p, out + VANDERPOL_UNCERTAIN_STATES, VANDERPOL_UNCERTAIN_COVARIANCE * sizeof *p);
-    return 1;
-}
-
-/* StartedEkf::follow: the EKF's sample, every state inside. */
-static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, const float *map, const float *y,
-                              const float *u, float *states, vanderpol_uncertain_saturation *flags) {
-    unsigned i;
-    (void)j;
-    (void)start_up;
-    (void)map;
-    for (i = 0u; i < VANDERPOL_UNCERTAIN_STATES; ++i) {
-        flags[i] = VANDERPOL_UNCERTAIN_INSIDE;
-    }
-    return ekf_measure(x, p, y, u, states);
-}
-
-static void ekf_map_fresh(vanderpol_uncertain_ekf_map *o) {
-    vanderpol_uncertain_map_init(&o->window);
-    memcpy(o->x, EKF_X0, sizeof o->x);
-    memcpy(o->p, EKF_P0, sizeof o->p);
-    o->count = 0u;
-    o->started = 0;
-    o->ready = 0;
-}
-
-static vanderpol_uncertain_status ekf_map_sample(vanderpol_uncertain_ekf_map *o, const float *y, const float *u) {
-    const int start_up = o->count <= 0u;
-    float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES], states[VANDERPOL_UNCERTAIN_STATES];
-    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS], state_flags[VANDERPOL_UNCERTAIN_STATES];
-    int estimated = 0;
-    if (!accepts(y, u)) {
-        if (o->started && inputs_finite(u)) {
-            ekf_predict(o->x, o->p, u);
-        }
-        return VANDERPOL_UNCERTAIN_REFUSED;
-    }
-    memset(map, 0, sizeof map);
-    if (start_up) {
-        (void)vanderpol_uncertain_map_push(&o->window, y, u);
-        if (o->window.filled < VANDERPOL_UNCERTAIN_HORIZON) {
-            return VANDERPOL_UNCERTAIN_OK;
-        }
-        (void)vanderpol_uncertain_map_estimate(&o->window, all, all_flags);
-        started_ekf_map_states(all, map);
-        estimated = 1;
-    }
-    if (!o->started && estimated) {
-        if (!started_ekf_start(map, u, o->x, o->p)) {
-            return VANDERPOL_UNCERTAIN_REFUSED;
-        }
-        o->started = 1;
-        memcpy(o->values, all, sizeof all);
-        memcpy(o->flags, all_flags, sizeof all_flags);
-    } else if (o->started) {
-        if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
-            return VANDERPOL_UNCERTAIN_REFUSED;
-        }
-        started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
-    } else {
-        return VANDERPOL_UNCERTAIN_OK;
-    }
-    o->ready = 1;
-    o->count = start_up ? o->count + 1u : o->count;
-    return VANDERPOL_UNCERTAIN_OK;
-}
-
-void vanderpol_uncertain_ekf_map_init(vanderpol_uncertain_ekf_map *o) {
-    ekf_map_fresh(o);
-    o->refused = 0u;
-}
-
-vanderpol_uncertain_status vanderpol_uncertain_ekf_map_push(vanderpol_uncertain_ekf_map *o, const float *y, const float *u) {
-    const vanderpol_uncertain_status status = ekf_map_sample(o, y, u);
-    if (status == VANDERPOL_UNCERTAIN_REFUSED && o->refused != UINT32_MAX) {
-        ++o->refused;
-    }
-    return status;
-}
-
-vanderpol_uncertain_status vanderpol_uncertain_ekf_map_estimate(const vanderpol_uncertain_ekf_map *o, float *values, vanderpol_uncertain_saturation *saturation) {
-    if (!o->ready) {
-        return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
-    }
-    memcpy(values, o->values, sizeof o->values);
-    memcpy(saturation, o->flags, sizeof o->flags);
-    return VANDERPOL_UNCERTAIN_OK;
-}
-
-/* Whether the filter's prediction x (covariance p) and the map's states f disagree:
- * d = sum_i (x_i - f_i)^2 / (P_ii + e_i^2) > threshold, or d is NaN (restart_disagrees). */
-static int restart_disagrees(const float *x, const float *p, const float *f) {
-    float d = 0.0f;
-    float e;
-    e = x[0] - f[0];
-    d += e * e / (p[0] + 0.06279452f);
-    e = x[1] - f[1];
-    d += e * e / (p[2] + 0.08510294f);
-    return !(d <= 2.0f);
-}
-
-/* Restarted::check, at the map's first estimate: 1 when the filter restarted from the map. */
-static int restart_check(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
-    float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES];
-    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS];
-    (void)vanderpol_uncertain_map_push(&o->window, y, u);
-    if (o->window.filled < VANDERPOL_UNCERTAIN_HORIZON) {
-        return 0;
-    }
-    o->checked = 1;
-    (void)vanderpol_uncertain_map_estimate(&o->window, all, all_flags);
-    started_ekf_map_states(all, map);
-    if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
-        return 0;
-    }
-    memcpy(o->values, all, sizeof all);
-    memcpy(o->flags, all_flags, sizeof all_flags);
-    o->ready = 1;
-    return 1;
-}
-
-static void ekf_restart_fresh(vanderpol_uncertain_ekf_restart *o) {
-    vanderpol_uncertain_map_init(&o->window);
-    memcpy(o->x, EKF_X0, sizeof o->x);
-    memcpy(o->p, EKF_P0, sizeof o->p);
-    o->checked = 0;
-    o->ready = 0;
-}
-
-static vanderpol_uncertain_status ekf_restart_sample(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
-    float states[VANDERPOL_UNCERTAIN_STATES];
-    vanderpol_uncertain_saturation state_flags[VANDERPOL_UNCERTAIN_STATES];
-    if (!accepts(y, u)) {
-        if (inputs_finite(u)) {
-            ekf_predict(o->x, o->p, u);
-        }
-        return VANDERPOL_UNCERTAIN_REFUSED;
-    }
-    if (!o->checked && restart_check(o, y, u)) {
-        return VANDERPOL_UNCERTAIN_OK;
-    }
-    if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
-        return VANDERPOL_UNCERTAIN_REFUSED;
-    }
-    started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
-    o->ready = 1;
-    return VANDERPOL_UNCERTAIN_OK;
-}
-
-void vanderpol_uncertain_ekf_restart_init(vanderpol_uncertain_ekf_restart *o) {
-    ekf_restart_fresh(o);
-    o->refused = 0u;
-}
-
-vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_push(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
-    const vanderpol_uncertain_status status = ekf_restart_sample(o, y, u);
-    if (status == VANDERPOL_UNCERTAIN_REFUSED && o->refused != UINT32_MAX) {
-        ++o->refused;
-    }
-    return status;
-}
-
-vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_estimate(const vanderpol_uncertain_ekf_restart *o, float *values, vanderpol_uncertain_saturation *saturation) {
-    if (!o->ready) {
-        return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
-    }
-    memcpy(values, o->values, sizeof o->values);
-    memcpy(saturation, o->flags, sizeof o->flags);
-    return VANDERPOL_UNCERTAIN_OK;
-}
-
 /* One UKF sample with its measurement: out = (x(k|k), x+, P+) from (x, P), as the Rust file's ukf_measured. */
 static void ukf_measured(const float *x, const float *p, const float *y, const float *u, float *out) {
     (void)u;
@@ -2285,6 +2085,206 @@ vanderpol_uncertain_status vanderpol_uncertain_corrected_push(vanderpol_uncertai
 }
 
 vanderpol_uncertain_status vanderpol_uncertain_corrected_estimate(const vanderpol_uncertain_corrected *o, float *values, vanderpol_uncertain_saturation *saturation) {
+    if (!o->ready) {
+        return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+/* P(N-1)'s upper triangle of the EKF the map starts. */
+static const float STARTED_P0[VANDERPOL_UNCERTAIN_COVARIANCE] = {
+    0.01985737f, 0.0f, 0.02691191f
+};
+
+/* Each state's map estimate, from the map's targets. */
+static void started_ekf_map_states(const float *all, float *map) {
+    map[0] = all[0];
+    map[1] = all[1];
+}
+
+/* The targets of a follower's states, flagged with their states' saturation. */
+static void started_ekf_targets_of(const float *states, const vanderpol_uncertain_saturation *state_flags, const float *u,
+                                float *values, vanderpol_uncertain_saturation *flags) {
+    targets(states, u, values);
+    flags[0] = VANDERPOL_UNCERTAIN_INSIDE;
+    flags[1] = VANDERPOL_UNCERTAIN_INSIDE;
+    flags[0] = state_flags[0];
+    flags[1] = state_flags[1];
+}
+
+/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite. */
+static int started_ekf_start(const float *first, const float *u, float *x, float *p) {
+    float out[VANDERPOL_UNCERTAIN_STATES + VANDERPOL_UNCERTAIN_COVARIANCE];
+    ekf_unmeasured(first, STARTED_P0, u, out);
+    if (!all_finite(out, VANDERPOL_UNCERTAIN_STATES + VANDERPOL_UNCERTAIN_COVARIANCE)) {
+        return 0;
+    }
+    memcpy(x, out, VANDERPOL_UNCERTAIN_STATES * sizeof *x);
+    memcpy(p, out + VANDERPOL_UNCERTAIN_STATES, VANDERPOL_UNCERTAIN_COVARIANCE * sizeof *p);
+    return 1;
+}
+
+/* StartedEkf::follow: the EKF's sample, every state inside. */
+static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, const float *map, const float *y,
+                              const float *u, float *states, vanderpol_uncertain_saturation *flags) {
+    unsigned i;
+    (void)j;
+    (void)start_up;
+    (void)map;
+    for (i = 0u; i < VANDERPOL_UNCERTAIN_STATES; ++i) {
+        flags[i] = VANDERPOL_UNCERTAIN_INSIDE;
+    }
+    return ekf_measure(x, p, y, u, states);
+}
+
+static void ekf_map_fresh(vanderpol_uncertain_ekf_map *o) {
+    vanderpol_uncertain_map_init(&o->window);
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->count = 0u;
+    o->started = 0;
+    o->ready = 0;
+}
+
+static vanderpol_uncertain_status ekf_map_sample(vanderpol_uncertain_ekf_map *o, const float *y, const float *u) {
+    const int start_up = o->count <= 0u;
+    float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES], states[VANDERPOL_UNCERTAIN_STATES];
+    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS], state_flags[VANDERPOL_UNCERTAIN_STATES];
+    int estimated = 0;
+    if (!accepts(y, u)) {
+        if (o->started && inputs_finite(u)) {
+            ekf_predict(o->x, o->p, u);
+        }
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    memset(map, 0, sizeof map);
+    if (start_up) {
+        (void)vanderpol_uncertain_map_push(&o->window, y, u);
+        if (o->window.filled < VANDERPOL_UNCERTAIN_HORIZON) {
+            return VANDERPOL_UNCERTAIN_OK;
+        }
+        (void)vanderpol_uncertain_map_estimate(&o->window, all, all_flags);
+        started_ekf_map_states(all, map);
+        estimated = 1;
+    }
+    if (!o->started && estimated) {
+        if (!started_ekf_start(map, u, o->x, o->p)) {
+            return VANDERPOL_UNCERTAIN_REFUSED;
+        }
+        o->started = 1;
+        memcpy(o->values, all, sizeof all);
+        memcpy(o->flags, all_flags, sizeof all_flags);
+    } else if (o->started) {
+        if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
+            return VANDERPOL_UNCERTAIN_REFUSED;
+        }
+        started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
+    } else {
+        return VANDERPOL_UNCERTAIN_OK;
+    }
+    o->ready = 1;
+    o->count = start_up ? o->count + 1u : o->count;
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+void vanderpol_uncertain_ekf_map_init(vanderpol_uncertain_ekf_map *o) {
+    ekf_map_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_ekf_map_push(vanderpol_uncertain_ekf_map *o, const float *y, const float *u) {
+    const vanderpol_uncertain_status status = ekf_map_sample(o, y, u);
+    if (status == VANDERPOL_UNCERTAIN_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_ekf_map_estimate(const vanderpol_uncertain_ekf_map *o, float *values, vanderpol_uncertain_saturation *saturation) {
+    if (!o->ready) {
+        return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+/* Whether the filter's prediction x (covariance p) and the map's states f disagree:
+ * d = sum_i (x_i - f_i)^2 / (P_ii + e_i^2) > threshold, or d is NaN (restart_disagrees). */
+static int restart_disagrees(const float *x, const float *p, const float *f) {
+    float d = 0.0f;
+    float e;
+    e = x[0] - f[0];
+    d += e * e / (p[0] + 0.06279452f);
+    e = x[1] - f[1];
+    d += e * e / (p[2] + 0.08510294f);
+    return !(d <= 2.0f);
+}
+
+/* Restarted::check, at the map's first estimate: 1 when the filter restarted from the map. */
+static int restart_check(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
+    float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES];
+    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS];
+    (void)vanderpol_uncertain_map_push(&o->window, y, u);
+    if (o->window.filled < VANDERPOL_UNCERTAIN_HORIZON) {
+        return 0;
+    }
+    o->checked = 1;
+    (void)vanderpol_uncertain_map_estimate(&o->window, all, all_flags);
+    started_ekf_map_states(all, map);
+    if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
+        return 0;
+    }
+    memcpy(o->values, all, sizeof all);
+    memcpy(o->flags, all_flags, sizeof all_flags);
+    o->ready = 1;
+    return 1;
+}
+
+static void ekf_restart_fresh(vanderpol_uncertain_ekf_restart *o) {
+    vanderpol_uncertain_map_init(&o->window);
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->checked = 0;
+    o->ready = 0;
+}
+
+static vanderpol_uncertain_status ekf_restart_sample(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
+    float states[VANDERPOL_UNCERTAIN_STATES];
+    vanderpol_uncertain_saturation state_flags[VANDERPOL_UNCERTAIN_STATES];
+    if (!accepts(y, u)) {
+        if (inputs_finite(u)) {
+            ekf_predict(o->x, o->p, u);
+        }
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    if (!o->checked && restart_check(o, y, u)) {
+        return VANDERPOL_UNCERTAIN_OK;
+    }
+    if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
+        return VANDERPOL_UNCERTAIN_REFUSED;
+    }
+    started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
+    o->ready = 1;
+    return VANDERPOL_UNCERTAIN_OK;
+}
+
+void vanderpol_uncertain_ekf_restart_init(vanderpol_uncertain_ekf_restart *o) {
+    ekf_restart_fresh(o);
+    o->refused = 0u;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_push(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
+    const vanderpol_uncertain_status status = ekf_restart_sample(o, y, u);
+    if (status == VANDERPOL_UNCERTAIN_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    }
+    return status;
+}
+
+vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_estimate(const vanderpol_uncertain_ekf_restart *o, float *values, vanderpol_uncertain_saturation *saturation) {
     if (!o->ready) {
         return VANDERPOL_UNCERTAIN_NO_ESTIMATE_YET;
     }

@@ -116,42 +116,6 @@ void vanderpol_uncertain_ekf_box_init(vanderpol_uncertain_ekf_box *observer);
 vanderpol_uncertain_status vanderpol_uncertain_ekf_box_push(vanderpol_uncertain_ekf_box *observer, const float *y, const float *u);
 vanderpol_uncertain_status vanderpol_uncertain_ekf_box_estimate(const vanderpol_uncertain_ekf_box *observer, float *values, vanderpol_uncertain_saturation *saturation);
 
-/* The EKF started at the map's first estimate (kind ekf_map, the Rust EkfMapObserver). */
-typedef struct {
-    vanderpol_uncertain_map window;
-    float x[VANDERPOL_UNCERTAIN_STATES];
-    float p[VANDERPOL_UNCERTAIN_COVARIANCE];
-    unsigned count;
-    int started;
-    float values[VANDERPOL_UNCERTAIN_TARGETS];
-    vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
-    int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
-    uint32_t refused;
-} vanderpol_uncertain_ekf_map;
-
-void vanderpol_uncertain_ekf_map_init(vanderpol_uncertain_ekf_map *observer);
-vanderpol_uncertain_status vanderpol_uncertain_ekf_map_push(vanderpol_uncertain_ekf_map *observer, const float *y, const float *u);
-vanderpol_uncertain_status vanderpol_uncertain_ekf_map_estimate(const vanderpol_uncertain_ekf_map *observer, float *values, vanderpol_uncertain_saturation *saturation);
-
-/* The EKF from the box centre that checks the map once, at its first estimate, and restarts
- * from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
-typedef struct {
-    vanderpol_uncertain_map window;
-    float x[VANDERPOL_UNCERTAIN_STATES];
-    float p[VANDERPOL_UNCERTAIN_COVARIANCE];
-    int checked;
-    float values[VANDERPOL_UNCERTAIN_TARGETS];
-    vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
-    int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
-    uint32_t refused;
-} vanderpol_uncertain_ekf_restart;
-
-void vanderpol_uncertain_ekf_restart_init(vanderpol_uncertain_ekf_restart *observer);
-vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_push(vanderpol_uncertain_ekf_restart *observer, const float *y, const float *u);
-vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_estimate(const vanderpol_uncertain_ekf_restart *observer, float *values, vanderpol_uncertain_saturation *saturation);
-
 /* The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust
  * UkfBoxObserver): an estimate from the first accepted sample; a sample with a non-finite output
  * is refused and only predicted. */
@@ -187,6 +151,42 @@ typedef struct {
 void vanderpol_uncertain_corrected_init(vanderpol_uncertain_corrected *observer);
 vanderpol_uncertain_status vanderpol_uncertain_corrected_push(vanderpol_uncertain_corrected *observer, const float *y, const float *u);
 vanderpol_uncertain_status vanderpol_uncertain_corrected_estimate(const vanderpol_uncertain_corrected *observer, float *values, vanderpol_uncertain_saturation *saturation);
+
+/* The EKF started at the map's first estimate (kind ekf_map, the Rust EkfMapObserver). */
+typedef struct {
+    vanderpol_uncertain_map window;
+    float x[VANDERPOL_UNCERTAIN_STATES];
+    float p[VANDERPOL_UNCERTAIN_COVARIANCE];
+    unsigned count;
+    int started;
+    float values[VANDERPOL_UNCERTAIN_TARGETS];
+    vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
+    int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
+} vanderpol_uncertain_ekf_map;
+
+void vanderpol_uncertain_ekf_map_init(vanderpol_uncertain_ekf_map *observer);
+vanderpol_uncertain_status vanderpol_uncertain_ekf_map_push(vanderpol_uncertain_ekf_map *observer, const float *y, const float *u);
+vanderpol_uncertain_status vanderpol_uncertain_ekf_map_estimate(const vanderpol_uncertain_ekf_map *observer, float *values, vanderpol_uncertain_saturation *saturation);
+
+/* The EKF from the box centre that checks the map once, at its first estimate, and restarts
+ * from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
+typedef struct {
+    vanderpol_uncertain_map window;
+    float x[VANDERPOL_UNCERTAIN_STATES];
+    float p[VANDERPOL_UNCERTAIN_COVARIANCE];
+    int checked;
+    float values[VANDERPOL_UNCERTAIN_TARGETS];
+    vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
+    int ready;
+    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    uint32_t refused;
+} vanderpol_uncertain_ekf_restart;
+
+void vanderpol_uncertain_ekf_restart_init(vanderpol_uncertain_ekf_restart *observer);
+vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_push(vanderpol_uncertain_ekf_restart *observer, const float *y, const float *u);
+vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_estimate(const vanderpol_uncertain_ekf_restart *observer, float *values, vanderpol_uncertain_saturation *saturation);
 
 /* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 1 Gauss-Newton
  * step(s) over the last VANDERPOL_UNCERTAIN_HORIZON samples from the previous solution moved one sample on, each

@@ -217,6 +217,18 @@ impl Tables {
         }
         for kind in self.constants.iter() {
             let name = |field: &str| format!("constants.{}.{field}", kind.kind().name());
+            if let Some(e) = kind.filter() {
+                length(&name("x0"), e.x0.len(), nx)?;
+                for (field, covariance) in [("p0", &e.p0), ("q", &e.q)] {
+                    if let Err(problem) = covariance.check(nx) {
+                        return bad(name(field), problem.to_string());
+                    }
+                }
+                length(&name("r"), e.r.len(), ny)?;
+                if e.substeps == 0 {
+                    return bad(name("substeps"), "is 0".to_owned());
+                }
+            }
             match kind {
                 KindConstants::Corrected(c) => {
                     length(&name("g"), c.g.len(), nx)?;
@@ -225,18 +237,6 @@ impl Tables {
                     length(&name("lower"), c.lower.len(), nx)?;
                     length(&name("upper"), c.upper.len(), nx)?;
                     if c.substeps == 0 {
-                        return bad(name("substeps"), "is 0".to_owned());
-                    }
-                }
-                KindConstants::EkfBox(e) | KindConstants::UkfBox(e) => {
-                    length(&name("x0"), e.x0.len(), nx)?;
-                    for (field, covariance) in [("p0", &e.p0), ("q", &e.q)] {
-                        if let Err(problem) = covariance.check(nx) {
-                            return bad(name(field), problem.to_string());
-                        }
-                    }
-                    length(&name("r"), e.r.len(), ny)?;
-                    if e.substeps == 0 {
                         return bad(name("substeps"), "is 0".to_owned());
                     }
                 }
@@ -262,6 +262,8 @@ impl Tables {
                         return bad(name("iterations"), format!("or `{}` is 0", name("substeps")));
                     }
                 }
+                // A filter's constants: checked above.
+                _ => {}
             }
         }
         if self.missing(self.chosen).is_some() {

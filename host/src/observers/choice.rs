@@ -39,7 +39,7 @@ pub fn check_before_fit(design: &Design, code: &ModelCode) -> Result<(), SpecErr
     let theta = vec![0.37f64.log10(); 2 * states];
     let mut constants = ekf::constants(design, &ekf::box_centre(design), &vec![1.0; states], &theta);
     // A full `Q` the spec fixes adds its off-diagonal entries to every prediction.
-    if let Some(q) = entry.fixed.and_then(|fixed| (fixed.of)(design).q.as_ref()) {
+    if let Some(q) = entry.fixed.and_then(|fixed| fixed.of(design).q.as_ref()) {
         constants.q = q.clone();
     }
     let instructions = cost(code, &constants);

@@ -46,7 +46,7 @@ pub fn box_centre(design: &Design) -> Vec<f64> {
         .collect()
 }
 
-/// Where a filter starts: the spec's fixed `x0` (`[observer.ekf]`, `[observer.ukf]`), else the
+/// Where a filter starts: the spec's fixed `x0` (`[observer.<filter>]`), else the
 /// centre of the state box.
 pub fn start(design: &Design, fixed: &FixedFilter) -> Vec<f64> {
     fixed.x0.clone().unwrap_or_else(|| box_centre(design))

@@ -93,7 +93,7 @@ pub struct ObserverFigures {
 /// of its own start: its figures on that scenario.
 #[derive(Clone, Debug)]
 pub struct FromObserverStart {
-    /// The filter's kind (`ekf_box`, `ukf_box`).
+    /// The filter's kind (one whose `[observer.<filter>]` section this is).
     pub kind: &'static str,
     /// The scenario (index in the spec's order).
     pub scenario: usize,
@@ -101,7 +101,7 @@ pub struct FromObserverStart {
     pub targets: Vec<(f64, f64)>,
 }
 
-/// A filter the spec fixes constants of (`[observer.ekf]`, `[observer.ukf]`), tuned instead in
+/// A filter the spec fixes constants of (`[observer.<filter>]`), tuned instead in
 /// every constant by the same search on the same runs: what the report shows beside the spec's.
 #[derive(Clone, Debug)]
 pub struct Beside {

@@ -90,7 +90,7 @@ struct Setup<'a> {
     tables: &'a Tables,
     code: &'a ModelCode,
     kind: ObserverKind,
-    /// The filter's written-out programs (the EKF kinds', or the UKF's for `ukf_box`).
+    /// The written-out programs of the filter the kind runs (its own, or the one it reads).
     filter: Option<crate::plant::kalman::FilterCode>,
     /// The correction's programs (`corrected`).
     programs: Option<crate::observers::kind::corrected::program::CorrectionCode>,
@@ -137,15 +137,10 @@ impl<'a> Setup<'a> {
             tables,
             code,
             kind,
-            filter: match (constants.ekf_box(), constants.ukf_box()) {
-                (Some(constants), _) if reads(ObserverKind::EkfBox) => {
-                    Some(crate::plant::kalman::filter_code(code, constants))
-                }
-                (_, Some(constants)) if reads(ObserverKind::UkfBox) => Some(
-                    crate::observers::kind::ukf_box::program::unscented_code(code, constants),
-                ),
-                _ => None,
-            },
+            filter: entry.needs.reads.iter().find_map(|&read| {
+                let filter_code = super::kind::of(read).filter_code?;
+                Some(filter_code(code, constants.filter(read)?))
+            }),
             programs: constants
                 .corrected()
                 .filter(|_| reads(ObserverKind::Corrected))
@@ -195,12 +190,8 @@ impl<'a> Setup<'a> {
         // `Setup::new` refused a kind whose constants the tables lack (`Tables::missing`).
         const CHECKED: &str = "Setup::new checked the kind's constants";
         match (self.kind, &self.filter, &self.programs) {
-            (ObserverKind::EkfBox | ObserverKind::UkfBox, Some(filter), _) => {
-                let constants = match self.kind {
-                    ObserverKind::EkfBox => constants.ekf_box(),
-                    _ => constants.ukf_box(),
-                }
-                .expect(CHECKED);
+            (kind, Some(filter), _) if constants.filter(kind).is_some() => {
+                let constants = constants.filter(kind).expect(CHECKED);
                 Follower::Box(ekf::BoxStep::new(filter, &constants.x0, &constants.p0, self.code))
             }
             (ObserverKind::EkfMap, Some(filter), _) => Follower::Started(ekf::StartedStep::new(

@@ -25,7 +25,7 @@ use crate::spec::ast::Binary;
 use super::program::{Builder, Leaf, Names, Program};
 use super::{Covariance, ModelCode};
 
-/// The EKF's constants (the UKF's too), chosen on the tuning runs or fixed by the spec
+/// A Kalman filter's constants (the EKF's, and every filter kind's that shares its frame), chosen on the tuning runs or fixed by the spec
 /// (`[observer.ekf]`).
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct EkfConstants {
@@ -120,7 +120,7 @@ pub fn filter_code(code: &ModelCode, constants: &EkfConstants) -> FilterCode {
     )
 }
 
-/// The two programs of one sample of a filter of `code` (the EKF's, the UKF's): the state and the
+/// The two programs of one sample of a filter of `code` (the EKF's here; other filters build theirs): the state and the
 /// covariance's upper triangle read as leaves; with a measurement, `update` and the projection onto
 /// the bounds, whose state is the first result; then `predict`, the projection, and `x⁺` and `P⁺`'s
 /// upper triangle as results.

@@ -1,5 +1,5 @@
-//! `report.md`'s section on the filters whose constants the spec fixes (`[observer.ekf]`,
-//! `[observer.ukf]`, [`super::FixedFilterReport`]): which constants are the spec's and which
+//! `report.md`'s section on the filters whose constants the spec fixes (`[observer.<filter>]`,
+//! [`super::FixedFilterReport`]): which constants are the spec's and which
 //! `gen` tuned, and the spec's filter beside the same filter with every constant tuned by the same
 //! search on the same tuning runs, on the same validation runs and scenario. A published filter is
 //! reproduced; whether tuning would do better is measured.

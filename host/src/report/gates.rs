@@ -20,7 +20,7 @@
 //!   samples at its range's ends, so the integer map reads values the signal does not have and is far
 //!   worse than the float map there.
 //! * [`Gate::StartOutsideBox`]: a filter's start the spec fixes (`[observer.ekf] x0`,
-//!   `[observer.ukf] x0`) or a scenario's `observer_x0` lies outside the learning box: the filter
+//!   `[observer.<filter>] x0`) or a scenario's `observer_x0` lies outside the learning box: the filter
 //!   starts where no learning or validation run starts, which is allowed (a published filter's guess
 //!   may be poor on purpose) but is rarely what a user means.
 
@@ -144,7 +144,7 @@ impl fmt::Display for Gate {
                 WEAK_FRACTION * 100.0
             ),
             Gate::EkfBetter { target, chosen, rmse, ekf, ekf_rmse } => {
-                // The peer in its kind's own words (the UKF is not "the EKF").
+                // The peer in its kind's own words (another filter is not "the EKF").
                 let what = kind::REGISTRY
                     .iter()
                     .find(|k| k.kind.name() == *ekf)
@@ -363,13 +363,13 @@ mod tests {
             }
             .to_string()
         };
-        // The UKF used to be called "the EKF".
-        let ukf = gate("ukf_box");
+        // A filter other than the EKF used to be called "the EKF".
+        let mhe = gate("mhe");
         assert!(
-            ukf.contains("that of the unscented Kalman filter from the centre of the state box (`ukf_box`: 0.1000)"),
-            "{ukf}"
+            mhe.contains("that of the moving-horizon estimate with fixed Gauss–Newton steps (`mhe`: 0.1000)"),
+            "{mhe}"
         );
-        assert!(!ukf.contains("EKF"), "{ukf}");
+        assert!(!mhe.contains("EKF"), "{mhe}");
         assert!(gate("ekf_map").contains("`ekf_map` is the better choice"));
     }
 
@@ -665,7 +665,7 @@ mod tests {
         // the EKF's at x2 = -6 (box [-5, 5]), its x1 = 2 on the box's edge is inside.
         design.scenarios[0].observer_x0 = Some(vec![2.5, 0.7]);
         design.scenarios[0].x0 = vec![3.0, 0.0];
-        design.filters.ekf.x0 = Some(vec![2.0, -6.0]);
+        design.filters.of_mut("observer.ekf").x0 = Some(vec![2.0, -6.0]);
         let gate = |field: &str, state: &str, value, range| Gate::StartOutsideBox {
             field: field.to_owned(),
             state: state.to_owned(),

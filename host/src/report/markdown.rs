@@ -59,7 +59,7 @@ pub fn markdown(report: &Report<'_>) -> String {
     s.push_str(&super::runs::table(&report.runs));
     s.push_str("\n## Observers on the same data\n\n");
     s.push_str(&observers_table(report));
-    s.push_str(&super::filters::ukf_against_ekf(report));
+    s.push_str(&super::filters::against_ekf(report));
     s.push_str(&super::references::section(report));
     if let Some(t) = &report.ekf_tuning {
         let _ = writeln!(

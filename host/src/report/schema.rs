@@ -368,7 +368,7 @@ pub struct ParticlesReport {
 /// One filter the spec fixes constants of.
 #[derive(Serialize)]
 pub struct FixedFilterReport {
-    /// Its kind (`ekf_box`, `ukf_box`): its row among the observers is the spec's filter.
+    /// Its kind: its row among the observers is the spec's filter.
     pub kind: &'static str,
     /// The spec's section (`observer.ekf`).
     pub section: &'static str,

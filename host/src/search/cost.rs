@@ -31,9 +31,8 @@
 //! ```
 //!
 //! with [`EKF_BASE`] plus the measured-sample program, and the map-started EKF [`STARTED_EXTRA`] above
-//! the EKF. A kind with a cost of its own has it in its folder (`observers/kind/<kind>/cost.rs`: the
-//! corrected observer's base, the UKF, the restarted EKF, the moving-horizon estimate), over
-//! [`of_program`] and [`of_ekf`] here. The call costs ([`call`]) are those of the
+//! the EKF. A kind with a cost of its own has it in its folder (`observers/kind/<kind>/cost.rs`: its
+//! model over [`of_program`] and [`of_ekf`] here. The call costs ([`call`]) are those of the
 //! functions the shipped models use (`sqrt`, `abs`, `signum`, `exp`); every other function is
 //! given [`UNMEASURED_CALL`], a deliberate over-estimate until a shipped model measures it. These
 //! constants were fitted to the same shipped designs the test checks them on (five measurements of
@@ -213,8 +212,7 @@ pub(crate) mod tests {
             parameters: Vec::new(),
             states: 2,
         };
-        // EKF: 46 + 163 = 209; the started one 8 more, 217 (the UKF and the restarted EKF: their
-        // kinds' `cost.rs`).
+        // EKF: 46 + 163 = 209; the started one 8 more, 217 (the other kinds: their `cost.rs`).
         close(of_ekf(&filter), 209.0);
         close(of_started(&filter), 217.0);
     }

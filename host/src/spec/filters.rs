@@ -1,4 +1,4 @@
-//! `[observer.ekf]` and `[observer.ukf]`: the constants of a filter that the spec fixes instead of
+//! `[observer.<filter>]` (the sections are the spec's, `raw::RawObserver`): the constants of a filter that the spec fixes instead of
 //! leaving them to the tuning. A published filter is reproduced this way: its start `x̂(0)`, its
 //! `Q` and its `P(0)`, each a diagonal or a full symmetric matrix, in the states' units.
 //!
@@ -41,13 +41,48 @@ impl FixedFilter {
     }
 }
 
-/// The fixed constants of each filter kind that has them.
+/// The fixed constants of each `[observer.<filter>]` section the spec gives, by the section's full
+/// name (`observer.ekf`), in the spec's order; the kind that reads a section names it
+/// (`crate::observers::kind::FixedSection`).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct FixedFilters {
-    /// `[observer.ekf]`: the EKF's (`ekf_box`; `ekf_map` and `ekf_restart` share its `Q`).
-    pub ekf: FixedFilter,
-    /// `[observer.ukf]`: the UKF's (`ukf_box`).
-    pub ukf: FixedFilter,
+    sections: Vec<(&'static str, FixedFilter)>,
+}
+
+/// What a section the spec leaves out fixes: nothing.
+static NOTHING_FIXED: FixedFilter = FixedFilter {
+    x0: None,
+    q: None,
+    p0: None,
+};
+
+impl FixedFilters {
+    /// The constants section `section` (`observer.ekf`) fixes: none when the spec leaves it out.
+    pub fn of(&self, section: &str) -> &FixedFilter {
+        self.sections
+            .iter()
+            .find(|(name, _)| *name == section)
+            .map_or(&NOTHING_FIXED, |(_, fixed)| fixed)
+    }
+
+    /// The constants section `section` fixes, for a test or a tool that changes a design.
+    pub fn of_mut(&mut self, section: &'static str) -> &mut FixedFilter {
+        let at = self.sections.iter().position(|(name, _)| *name == section).unwrap_or_else(|| {
+            self.sections.push((section, FixedFilter::default()));
+            self.sections.len() - 1
+        });
+        &mut self.sections[at].1
+    }
+
+    /// Every section with what it fixes, in the spec's order.
+    pub fn iter(&self) -> impl Iterator<Item = (&'static str, &FixedFilter)> {
+        self.sections.iter().map(|(name, fixed)| (*name, fixed))
+    }
+
+    /// Sets what section `section` fixes.
+    pub(super) fn insert(&mut self, section: &'static str, fixed: FixedFilter) {
+        *self.of_mut(section) = fixed;
+    }
 }
 
 impl Validator {

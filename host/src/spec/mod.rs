@@ -313,7 +313,7 @@ pub struct Design {
     pub family: Option<Family>,
     /// `[observer] kind`.
     pub observer: ObserverKind,
-    /// The filters' constants the spec fixes (`[observer.ekf]`, `[observer.ukf]`); the rest are tuned.
+    /// The filters' constants the spec fixes (`[observer.<filter>]`); the rest are tuned.
     pub filters: FixedFilters,
     /// `[chip] arithmetic = "fixed"`: the integer map is emitted too, with these raw scalings.
     pub fixed: Option<FixedSpec>,

@@ -88,7 +88,14 @@ pub(super) struct RawObserver {
     pub(super) ukf: Option<RawFilter>,
 }
 
-/// `[observer.ekf]`, `[observer.ukf]`: a filter's constants fixed instead of tuned, each optional.
+impl RawObserver {
+    /// Every `[observer.<filter>]` section a spec may give, by its full name, in the spec's order.
+    pub(super) fn filter_sections(&self) -> [(&'static str, Option<&RawFilter>); 2] {
+        [("observer.ekf", self.ekf.as_ref()), ("observer.ukf", self.ukf.as_ref())]
+    }
+}
+
+/// `[observer.<filter>]`: a filter's constants fixed instead of tuned, each optional.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawFilter {

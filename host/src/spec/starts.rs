@@ -24,11 +24,11 @@ pub fn scenario_section(i: usize, scenarios: usize) -> String {
     }
 }
 
-/// Every start: the filters' (`[observer.ekf]`, `[observer.ukf]`), then each scenario's `x0` and
+/// Every start: the filters' (`[observer.<filter>] x0`), then each scenario's `x0` and
 /// `observer_x0`, in the spec's order.
 pub fn starts<'a>(filters: &'a FixedFilters, scenarios: &'a [Scenario]) -> Vec<Start<'a>> {
     let mut starts = Vec::new();
-    for (section, fixed) in [("observer.ekf", &filters.ekf), ("observer.ukf", &filters.ukf)] {
+    for (section, fixed) in filters.iter() {
         if let Some(x0) = &fixed.x0 {
             starts.push(Start {
                 field: format!("{section}.x0"),

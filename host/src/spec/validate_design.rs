@@ -85,11 +85,14 @@ impl Validator {
             Some(s) => self.scenarios(s, &model, map.horizon)?,
             None => Vec::new(),
         };
-        let section = |pick: fn(&RawObserver) -> Option<&RawFilter>| raw.observer.as_ref().and_then(pick);
-        let filters = FixedFilters {
-            ekf: self.fixed_filter("observer.ekf", section(|o| o.ekf.as_ref()), &model)?,
-            ukf: self.fixed_filter("observer.ukf", section(|o| o.ukf.as_ref()), &model)?,
-        };
+        let mut filters = FixedFilters::default();
+        if let Some(observer) = &raw.observer {
+            for (section, fixed) in observer.filter_sections() {
+                if fixed.is_some() {
+                    filters.insert(section, self.fixed_filter(section, fixed, &model)?);
+                }
+            }
+        }
         self.starts_within_bounds(&model, &state_bounds, &scenarios, &filters)?;
         let design = Design {
             file: self.path.clone(),

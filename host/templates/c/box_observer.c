@@ -1,4 +1,4 @@
-{# The filter from the box centre (`ekf_box`, `ukf_box`): `push` of the filter, then the targets of
+{# A filter from the box centre: `push` of the filter, then the targets of
    its estimate, each inside. -#}
 static void {{ kind }}_fresh({{ name }}_{{ kind }} *o) {
     memcpy(o->x, {{ label }}_X0, sizeof o->x);

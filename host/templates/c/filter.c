@@ -1,4 +1,4 @@
-{# A filter's start and one sample (`Ekf::push`, `Ukf::push`), shared by the kinds over it. -#}
+{# A filter's start and one sample (the Rust filter's `push`), shared by the kinds over it. -#}
 /* The {{ label }}'s start: the centre of the state box and P(0)'s upper triangle. */
 static const float {{ label }}_X0[{{ upper }}_STATES] = {{ x0 }};
 static const float {{ label }}_P0[{{ upper }}_COVARIANCE] = {{ p0 }};

@@ -1,4 +1,4 @@
-{# A Kalman filter type (`Ekf`, `Ukf`) around its two written-out samples. -#}
+{# A Kalman filter type (`Ekf`, or another filter kind's) around its two written-out samples. -#}
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct {{ name }}<T = f32> {
     /// `x̂`: after a sample, the prediction to the next one.

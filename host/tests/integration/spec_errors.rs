@@ -637,12 +637,12 @@ fn a_filters_fixed_constants_are_read_in_state_order_and_a_start_outside_the_box
         "{VANDERPOL}\n[observer.ekf]\nx0 = {{ x2 = 0.7, x1 = 3.0 }}\nq = {{ x2 = 2e-3, x1 = 1e-3 }}\np0 = [[1.0, 0.3], [0.3, 4.0]]\n"
     );
     let design = spec::parse(Path::new("fixed.toml"), &text).unwrap();
-    let ekf = &design.filters.ekf;
+    let ekf = design.filters.of("observer.ekf");
     assert_eq!(ekf.x0, Some(vec![3.0, 0.7]));
     assert_eq!(ekf.q, Some(Covariance::Diagonal(vec![1e-3, 2e-3])));
     assert_eq!(ekf.p0, Some(Covariance::Full(vec![vec![1.0, 0.3], vec![0.3, 4.0]])));
     assert_eq!(ekf.fixed(), ["x0", "q", "p0"]);
-    assert!(!design.filters.ukf.any(), "the UKF's constants stay tuned");
+    assert!(!design.filters.of("observer.ukf").any(), "the UKF's constants stay tuned");
     // x1 = 3 is outside the learning box [−2, 2]; x2 = 0.7 inside [−5, 5]; the scenario's
     // `observer_x0` (1, 0.7) inside: one warning.
     let gates = host::report::gates::starts_outside_box(&design);
@@ -690,7 +690,7 @@ fn the_literature_example_fixes_the_published_filter_and_is_warned_of_its_start(
     use host::plant::Covariance;
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/specs/gas_phase_reactor.toml");
     let design = spec::load(&path).unwrap();
-    let ekf = &design.filters.ekf;
+    let ekf = design.filters.of("observer.ekf");
     assert_eq!(ekf.x0, Some(vec![0.1, 4.5]));
     assert_eq!(ekf.q, Some(Covariance::Diagonal(vec![1e-6, 1e-6])));
     assert_eq!(ekf.p0, Some(Covariance::Diagonal(vec![36.0, 36.0])));

@@ -1,18 +1,18 @@
-//! A Kalman filter from the centre of the state box in C, the same for the EKF (`ekf_box`, the Rust
-//! file's `EkfBoxObserver`) and the UKF (`ukf_box`, `UkfBoxObserver`): the filter's start, its prediction
-//! and its measured sample taken when finite (shared with the kinds the map starts over the EKF), and
-//! the observer around it.
+//! A Kalman filter from the centre of the state box in C, the same for every filter kind that starts
+//! there (each names its [`Filter`]): the filter's start, its prediction and its measured sample taken
+//! when finite (shared with the kinds the map starts over the EKF), and the observer around it.
 
 use askama::Template;
 
-use super::floats;
 use super::program::function;
+use super::started;
+use super::text::{floats, CPart};
 use crate::emit::EmitError;
 use crate::plant::kalman::{EkfConstants, FilterCode};
 use crate::plant::ModelCode;
 
 /// A filter's names in C.
-pub(super) struct Filter {
+pub(crate) struct Filter {
     /// Its functions' prefix (`ekf`: `ekf_measured`, `ekf_predict`, …).
     pub lower: &'static str,
     /// Its constants' prefix (`EKF`: `EKF_X0`, `EKF_P0`).
@@ -21,23 +21,33 @@ pub(super) struct Filter {
     pub kind: &'static str,
 }
 
-/// The EKF's names.
-pub(super) const EKF: Filter = Filter {
-    lower: "ekf",
-    label: "EKF",
-    kind: "ekf_box",
-};
-
-/// The UKF's names.
-pub(super) const UKF: Filter = Filter {
-    lower: "ukf",
-    label: "UKF",
-    kind: "ukf_box",
-};
+/// The whole C of the filter from the box centre of `design`: its samples, its start, its observer
+/// (`what`: the header's comment on the observer's struct).
+pub(crate) fn box_part(
+    name: &str,
+    filter: &Filter,
+    constants: &EkfConstants,
+    programs: FilterCode,
+    code: &ModelCode,
+    what: &str,
+) -> Result<CPart, EmitError> {
+    let upper = name.to_uppercase();
+    Ok(CPart {
+        header: started::header(
+            name,
+            filter.kind,
+            what,
+            false,
+            &format!("    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n"),
+        ),
+        source: samples(filter, &programs, code)? + &common(name, filter, constants)? + &box_observer(name, filter),
+        programs: vec![programs.measured, programs.unmeasured],
+    })
+}
 
 /// The filter's two samples as C functions (`<lower>_measured`, `<lower>_unmeasured`), as the Rust
 /// file's.
-pub(super) fn samples(filter: &Filter, programs: &FilterCode, code: &ModelCode) -> Result<String, EmitError> {
+fn samples(filter: &Filter, programs: &FilterCode, code: &ModelCode) -> Result<String, EmitError> {
     let (lower, label) = (filter.lower, filter.label);
     Ok(function(
         &format!("{lower}_measured"),
@@ -54,11 +64,11 @@ pub(super) fn samples(filter: &Filter, programs: &FilterCode, code: &ModelCode) 
     )?)
 }
 
-/// A filter's start and one sample (`Ekf::push`, `Ukf::push`), shared by the kinds over it: the EKF's
-/// (`EKF_X0`, `ekf_predict`, `ekf_measure`, over `ekf_measured`/`ekf_unmeasured`) or the UKF's.
-pub(super) fn common(name: &str, filter: &Filter, constants: &EkfConstants) -> Result<String, EmitError> {
+/// A filter's start and one sample (the Rust file's `push` of the filter), shared by the kinds over
+/// it: for the EKF `EKF_X0`, `ekf_predict`, `ekf_measure`, over `ekf_measured`/`ekf_unmeasured`.
+fn common(name: &str, filter: &Filter, constants: &EkfConstants) -> Result<String, EmitError> {
     let (lower, label) = (filter.lower, filter.label);
-    Ok(super::render(&FilterC {
+    Ok(super::text::render(&FilterC {
         upper: &name.to_uppercase(),
         lower,
         label,
@@ -67,10 +77,9 @@ pub(super) fn common(name: &str, filter: &Filter, constants: &EkfConstants) -> R
     }))
 }
 
-/// The filter from the box centre (`ekf_box`, `ukf_box`): `push` of the filter, then the targets of
-/// its estimate, each inside.
-pub(super) fn box_observer(name: &str, filter: &Filter) -> String {
-    super::render(&BoxObserver {
+/// The filter from the box centre: `push` of the filter, then the targets of its estimate, each inside.
+fn box_observer(name: &str, filter: &Filter) -> String {
+    super::text::render(&BoxObserver {
         name,
         upper: &name.to_uppercase(),
         lower: filter.lower,

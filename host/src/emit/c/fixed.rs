@@ -109,7 +109,7 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
         }
         projections += "    }\n";
     }
-    let header = super::render(&FixedH {
+    let header = super::text::render(&FixedH {
         name,
         upper: &upper,
         inputs: nu > 0,
@@ -117,7 +117,7 @@ pub(super) fn fixed(design: &Design, fixed: &FixedPoint) -> FixedC {
         targets: &targets,
         scales: &scales,
     });
-    let source = super::render(&FixedSource {
+    let source = super::text::render(&FixedSource {
         name,
         upper: &upper,
         inputs: nu > 0,

@@ -122,12 +122,12 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
             r_max = float(&what("r_max"), f64::from(rounded.r_max))?,
         );
     }
-    let header = super::render(&MapH {
+    let header = super::text::render(&MapH {
         name,
         upper: &upper,
         inputs: nu > 0,
     });
-    let source = super::render(&MapSource {
+    let source = super::text::render(&MapSource {
         name,
         upper: &upper,
         inputs: nu > 0,

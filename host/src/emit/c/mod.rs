@@ -3,8 +3,9 @@
 //! that without fused multiply-add the C observer gives the Rust observer's bits. One module per
 //! piece: `map` (the map), `program` (a program as a C function, the model's functions: `exp` as
 //! libm computes it, the correctly rounded ones from `<math.h>`; others would come from the C
-//! library, within an ulp of Rust's), `filters` (the EKF kinds), `started` (what the observers the
-//! map starts share), `corrected`, `mhe`, and `storage` (the Rust static library's interface over the
+//! library, within an ulp of Rust's), `kinds` (the model-based kinds: the helpers, then each kind's part
+//! from its folder), `box_filter` (what the filters from the box centre share), `started` (what the
+//! observers the map starts share), and `storage` (the Rust static library's interface over the
 //! chosen kind).
 //!
 //! C99 with `float` only: no `malloc`, no recursion, no VLA, no global mutable state; `<math.h>` only
@@ -12,14 +13,17 @@
 //! kind is a struct the caller allocates (`<name>_<kind>`) with `_init`, `_push` and `_estimate`, the
 //! Rust observer's `new`, `push` and `estimate`; `<name>_observer` names the design's chosen kind.
 
-mod box_filter;
-mod filters;
+pub(crate) mod box_filter;
+mod kinds;
 mod fixed;
 mod map;
 pub(crate) mod program;
 pub(crate) mod started;
 mod storage;
+pub(crate) mod text;
 
+pub use text::CPart;
+pub(crate) use text::{float, floats, render};
 pub use storage::{mark, sample_period, storage_bound, MARK_BYTES};
 
 use askama::Template;
@@ -97,21 +101,6 @@ pub struct CSource {
     pub source: String,
 }
 
-/// A C `float` literal of `value` rounded to f32: the shortest decimal that round-trips, with `f`.
-pub(crate) fn float(what: &str, value: f64) -> Result<String, EmitError> {
-    Ok(format!("{}f", super::f32_literal(what, value)?))
-}
-
-/// `{ a, b, … }` of `values` (each rounded to f32), four per line.
-pub(crate) fn floats(what: &str, values: &[f64]) -> Result<String, EmitError> {
-    let items = values
-        .iter()
-        .enumerate()
-        .map(|(i, &v)| float(&format!("{what}[{i}]"), v))
-        .collect::<Result<Vec<_>, _>>()?;
-    let lines: Vec<String> = items.chunks(4).map(|c| format!("    {}", c.join(", "))).collect();
-    Ok(format!("{{\n{}\n}}", lines.join(",\n")))
-}
 
 /// The C source of `design`: its map (tables in `result`) and, given its model's programs and the
 /// observers the Rust file has, every model-based kind.
@@ -137,8 +126,8 @@ pub fn c_source(
         },
     };
     let kinds = match model {
-        Some((code, observers)) => filters::kinds(design, code, observers)?,
-        None => filters::Kinds::default(),
+        Some((code, observers)) => kinds::kinds(design, code, observers)?,
+        None => kinds::Kinds::default(),
     };
     let chosen = model.map(|(_, o)| o.kind.name());
     let (interface_header, interface_source) = match chosen {
@@ -195,10 +184,6 @@ pub fn c_source(
     Ok(CSource { header, source })
 }
 
-/// The text of a template (every field's `Display` writes into a `String`, which cannot fail).
-pub(crate) fn render(template: &impl Template) -> String {
-    template.render().expect("a template renders into a String")
-}
 
 /// `<name>.h`.
 #[derive(Template)]

@@ -7,7 +7,7 @@
 
 use std::fmt::Write;
 
-use super::float;
+use super::text::float;
 use crate::emit::EmitError;
 use crate::plant::program::Leaf;
 use crate::plant::{ModelCode, Op, Program};

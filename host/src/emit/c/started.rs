@@ -17,7 +17,7 @@ pub(crate) fn map_states(prefix: &str, state_targets: &[usize], targets: usize) 
             }
         })
         .collect();
-    super::render(&MapStates { prefix, lines: &lines })
+    super::text::render(&MapStates { prefix, lines: &lines })
 }
 
 /// `static void <prefix>_targets_of(…)`: the targets of a follower's states, each flagged with its
@@ -33,7 +33,7 @@ pub(crate) fn targets_of(name: &str, prefix: &str, state_targets: &[usize], targ
         .filter(|(_, &t)| t < targets)
         .map(|(i, &t)| format!("    flags[{t}] = state_flags[{i}];\n"))
         .collect();
-    super::render(&TargetsOf {
+    super::text::render(&TargetsOf {
         name,
         prefix,
         unused: flagged.is_empty(),
@@ -74,7 +74,7 @@ pub(crate) fn observer(f: &Follower<'_>, init_carried: &str) -> String {
         steady_reads_map,
         carried,
     } = *f;
-    super::render(&StartedC {
+    super::text::render(&StartedC {
         name,
         upper: &name.to_uppercase(),
         kind,
@@ -89,7 +89,7 @@ pub(crate) fn observer(f: &Follower<'_>, init_carried: &str) -> String {
 
 /// `<name>_<kind>_estimate`: the latest accepted sample's targets, kept in `values` and `flags`.
 pub(crate) fn estimate(name: &str, kind: &str) -> String {
-    super::render(&EstimateC {
+    super::text::render(&EstimateC {
         name,
         upper: &name.to_uppercase(),
         kind,
@@ -99,7 +99,7 @@ pub(crate) fn estimate(name: &str, kind: &str) -> String {
 /// The header's part for a kind: its struct (the window when the map starts it, the carried
 /// `fields`, the latest estimate) and its three functions, documented by `what`.
 pub(crate) fn header(name: &str, kind: &str, what: &str, window: bool, fields: &str) -> String {
-    super::render(&KindH {
+    super::text::render(&KindH {
         name,
         upper: &name.to_uppercase(),
         kind,

@@ -42,12 +42,12 @@ pub(super) fn storage_interface(design: &Design) -> (String, String) {
     let inputs = design.model.inputs.len();
     let upper = name.to_uppercase();
     let bound = storage_bound(design);
-    let header = super::render(&StorageH {
+    let header = super::text::render(&StorageH {
         name,
         upper: &upper,
         bound,
     });
-    let source = super::render(&StorageC {
+    let source = super::text::render(&StorageC {
         name,
         upper: &upper,
         inputs: inputs > 0,

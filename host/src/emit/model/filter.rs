@@ -1,7 +1,7 @@
-//! A Kalman filter's frame on the chip, the same for the EKF (`Ekf`, [`super::plant`]) and the UKF
-//! (`Ukf`, [`super::ukf`]): the filter type around its two written-out samples (`<lower>_measured`,
-//! `<lower>_unmeasured`: `push`, the refusals, `P` as its upper triangle), and the filter from the
-//! centre of the state box as an observer (`EkfBoxObserver`, `UkfBoxObserver`: the runtime's
+//! A Kalman filter's frame on the chip, the same for every filter kind (the EKF's in
+//! [`super::plant`], the others' in their kind's `emit.rs`): the filter type around its two
+//! written-out samples (`<lower>_measured`, `<lower>_unmeasured`: `push`, the refusals, `P` as its
+//! upper triangle), and the filter from the centre of the state box as an observer (its kind's type: the runtime's
 //! `firmware::FilterObserver` over the filter, which implements `firmware::emitted::Filter`).
 
 use askama::Template;

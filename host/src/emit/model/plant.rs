@@ -79,7 +79,7 @@ pub(super) fn model_and_ekf(
             .collect::<Result<Vec<_>, _>>()?;
         Ok(rows(&entries, n))
     };
-    let fixed = &design.filters.ekf;
+    let fixed = design.filters.of("observer.ekf");
     let filter = kalman::filter_code(code, ekf);
     text.push_str(
         &EkfText {

@@ -58,8 +58,8 @@ pub const STARTS: usize = 2;
 const ITERATIONS: u64 = 150;
 
 /// A filter's estimates of every run of a data set, with given constants, from a given start: the
-/// EKF's ([`super::estimates`]) or the UKF's ([`crate::observers::kind::ukf_box::run::estimates`]), which share
-/// their constants and this search.
+/// EKF's ([`super::estimates`]) or another box filter's (its kind's `run.rs`), which share their
+/// constants and this search.
 pub type Estimator = fn(&ModelCode, &EkfConstants, &[f64], &DataSet) -> Option<Vec<Rows>>;
 
 /// The score of the filter with `constants` from the box centre on `data` (windows `k ≥ N − 1`).
@@ -128,7 +128,7 @@ pub fn tune(
 ) -> Option<Tuned> {
     tune_with(
         estimates,
-        &design.filters.ekf,
+        design.filters.of("observer.ekf"),
         design,
         code,
         tuning,

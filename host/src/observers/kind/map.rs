@@ -8,6 +8,7 @@ use crate::spec::ObserverKind;
 pub const KIND: Kind = Kind {
     kind: ObserverKind::Map,
     what: "the map alone",
+    short: "map",
     observer_type: "MapObserver",
     measured_as: "`map_observer()`",
     legend: "map F(Z)",
@@ -22,6 +23,9 @@ pub const KIND: Kind = Kind {
     missing_why: "",
     judged_in: crate::recording::Precision::F64,
     fixed: None,
+    filter_code: None,
+    rust: None,
+    c: None,
     tune,
 };
 

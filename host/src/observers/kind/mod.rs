@@ -22,9 +22,12 @@ pub use bench::{map_estimates, Bench};
 pub use tuned::{KindConstants, Started, StartedConstants, Tuned, TunedConstants, TunedKinds};
 
 mod bench;
-mod tuned;
+pub(crate) mod tuned;
 
-use crate::plant::kalman::EkfConstants;
+use crate::emit::c::text::CPart;
+use crate::emit::model::observers::Observers;
+use crate::emit::EmitError;
+use crate::plant::kalman::{EkfConstants, FilterCode};
 use crate::plant::ModelCode;
 use crate::recording::Precision;
 use crate::spec::{Design, FixedFilter, ObserverKind};
@@ -37,6 +40,8 @@ pub struct Kind {
     pub kind: ObserverKind,
     /// What it is, in a phrase ("the model-corrected map"): the emitted docs, the report.
     pub what: &'static str,
+    /// Its short name in the report's sentences ("UKF" in "the UKF's validation RMSE").
+    pub short: &'static str,
     /// The type a design file gives it; `Observer` is this type when `observer()` is this kind.
     pub observer_type: &'static str,
     /// What the on-target harness measures of it (the report's on-target section).
@@ -56,26 +61,43 @@ pub struct Kind {
     /// Why a design's tables may lack its own constants (empty for the map, which has none).
     pub missing_why: &'static str,
     /// The arithmetic its report figures are in: `F32`, the chip's, for the kinds whose f32 and f64
-    /// runs part on a shipped design (`ukf_box`, `mhe`); `estimate --precision` in it gives the
+    /// runs part on a shipped design; `estimate --precision` in it gives the
     /// report's estimates to the bit.
     pub judged_in: Precision,
     /// The spec's section of fixed filter constants it reads, if any.
     pub fixed: Option<FixedSection>,
+    /// The filter program its constants build, when they are one Kalman filter's (the box
+    /// filters): what the kinds that read its constants run on the host.
+    pub filter_code: Option<fn(&ModelCode, &EkfConstants) -> FilterCode>,
+    /// Its part of the design's Rust file, after the model and the EKF
+    /// ([`crate::emit::model::model_source`]); `None` from the emitter when the design lacks it.
+    pub rust: Option<Emitter<String>>,
+    /// Its part of the design's C ([`crate::emit::c`]), likewise.
+    pub c: Option<Emitter<CPart>>,
     /// Tunes it on the tuning runs and judges it on every set ([`Bench::judge`]), recording its
     /// constants in the bench for the kinds after it; `None` when the design cannot have it.
     pub tune: fn(&mut Bench<'_>) -> Option<ObserverFigures>,
 }
 
-/// The spec's section of fixed constants a filter kind reads (`[observer.ekf]`, `[observer.ukf]`).
+/// Writes a kind's part of a design's emitted file from the design, its model's programs and the
+/// tuned constants of every kind it has.
+pub type Emitter<P> = fn(&Design, &ModelCode, &Observers<'_>) -> Result<Option<P>, EmitError>;
+
+/// The spec's section of fixed constants a filter kind reads (`[observer.<filter>]`).
 #[derive(Clone, Copy)]
 pub struct FixedSection {
     /// Its name in the spec (`observer.ekf`).
     pub section: &'static str,
-    /// The constants it holds.
-    pub of: fn(&Design) -> &FixedFilter,
-    /// Whether these constants fix the kind's own filter (`ekf_box`, `ukf_box`), rather than a `Q`
-    /// it reuses (`ekf_map` and `ekf_restart` run on the box EKF's).
+    /// Whether these constants fix the kind's own filter, rather than a `Q` it reuses (the
+    /// map-started and restarted EKFs run on the box EKF's).
     pub own: bool,
+}
+
+impl FixedSection {
+    /// The constants `design`'s spec fixes in this section.
+    pub fn of<'d>(&self, design: &'d Design) -> &'d FixedFilter {
+        design.filters.of(self.section)
+    }
 }
 
 /// What a kind needs of a design besides the map.

@@ -143,6 +143,16 @@ kinds! {
     Mhe(ChipTuned => ChipConstants, mhe, |t| t.constants.clone());
 }
 
+impl KindConstants {
+    /// A Kalman filter's constants, when this kind's constants are one filter's (the box filters).
+    pub fn filter(&self) -> Option<&EkfConstants> {
+        match self {
+            KindConstants::EkfBox(c) | KindConstants::UkfBox(c) => Some(c),
+            _ => None,
+        }
+    }
+}
+
 /// Reads the constants of the kind it holds.
 struct ConstantsOf(ObserverKind);
 
@@ -151,7 +161,8 @@ struct ConstantsOf(ObserverKind);
 pub struct TunedKinds(BTreeMap<ObserverKind, Tuned>);
 
 impl TunedKinds {
-    /// How the Kalman filter of kind `kind` was tuned (`ekf_box`, `ukf_box`), when the design has it.
+    /// How the Kalman filter of kind `kind` was tuned (a kind whose constants are a filter's,
+    /// [`KindConstants::filter`]), when the design has it.
     pub fn filter(&self, kind: ObserverKind) -> Option<&ekf::Tuned> {
         match self.0.get(&kind)? {
             Tuned::EkfBox(t) | Tuned::UkfBox(t) => Some(t),
@@ -179,6 +190,11 @@ impl TunedConstants {
     /// Whether `kind` has constants here.
     pub fn has(&self, kind: ObserverKind) -> bool {
         self.0.contains_key(&kind)
+    }
+
+    /// The constants of `kind`'s Kalman filter ([`KindConstants::filter`]), when it has them.
+    pub fn filter(&self, kind: ObserverKind) -> Option<&EkfConstants> {
+        self.0.get(&kind)?.filter()
     }
 
     /// The constants of `kind`, to edit (a test breaking saved tables on purpose).

@@ -1,4 +1,4 @@
-//! The bench's part for the filters that start from a point (`ekf_box`, `ukf_box`): their tuning
+//! The bench's part for the filters that start from a point (the box filters): their tuning
 //! runs and search with the spec's fixed constants, and their figures on each scenario, from their
 //! own start or from the observer start the scenario names.
 
@@ -7,10 +7,11 @@ use crate::data::{DataSet, Rows, Run};
 use crate::observers::ekf;
 use crate::observers::figures::{Beside, FromObserverStart, ObserverFigures, TRANSIENT_TIME};
 use crate::observers::score::errors;
+use crate::observers::kind::FixedSection;
 use crate::spec::FixedFilter;
 
 impl Bench<'_> {
-    /// The tuning runs from random starts: what the box filters (`ekf_box`, `ukf_box`) are tuned on.
+    /// The tuning runs from random starts: what the box filters are tuned on.
     pub fn random_tuning(&self) -> DataSet {
         let tuning = &self.result.runs.tuning;
         DataSet {
@@ -20,7 +21,7 @@ impl Bench<'_> {
     }
 
     /// A box filter (its estimates by `estimator`) tuned on [`Bench::random_tuning`] but for the
-    /// constants the spec fixes (`fixed`), and its figures by `judge`. Where the spec fixes any, the
+    /// constants the spec fixes in its `section`, and its figures by `judge`. Where the spec fixes any, the
     /// same filter with every constant tuned is judged too, into [`Bench::beside`].
     ///
     /// A filter that cannot run with the constants the spec fixes (every candidate of the search
@@ -28,10 +29,10 @@ impl Bench<'_> {
     pub fn box_filter(
         &mut self,
         estimator: ekf::Estimator,
-        section: &'static str,
-        fixed: &FixedFilter,
+        section: FixedSection,
         judge: &dyn Fn(&Self, &ekf::Tuned) -> ObserverFigures,
     ) -> Option<(ekf::Tuned, ObserverFigures)> {
+        let fixed = section.of(self.design);
         let random = self.random_tuning();
         let learning = &self.result.runs.learning;
         let tune = |fixed: &FixedFilter| {
@@ -47,7 +48,7 @@ impl Bench<'_> {
         };
         let Some(tuned) = tune(fixed) else {
             if fixed.any() && ekf::supported(self.code) && self.refused.is_none() {
-                self.refused = Some(self.cannot_run(section, fixed, &random));
+                self.refused = Some(self.cannot_run(section.section, fixed, &random));
             }
             return None;
         };

@@ -4,15 +4,31 @@
 
 use askama::Template;
 
-use crate::emit::c::floats;
+use crate::emit::c::text::{floats, CPart};
+use crate::emit::model::observers::Observers;
 use crate::emit::c::program::function;
 use crate::emit::c::started::{self, map_states, targets_of, Follower};
 use crate::emit::EmitError;
-use crate::observers::kind::corrected::program::{CorrectionCode, CorrectionConstants};
+use crate::observers::kind::corrected::program::{correction_code, CorrectionCode, CorrectionConstants};
 use crate::plant::ModelCode;
+use crate::spec::Design;
+
+/// Its part of the design's C, when the design has it.
+pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) -> Result<Option<CPart>, EmitError> {
+    let Some((constants, state_targets)) = observers.corrected() else {
+        return Ok(None);
+    };
+    let programs = correction_code(code, constants);
+    let (header, source) = corrected(&design.name, code, constants, &programs, state_targets)?;
+    Ok(Some(CPart {
+        header,
+        source,
+        programs: vec![programs.predict, programs.start_up, programs.steady],
+    }))
+}
 
 /// The header's and the source's parts of the corrected map.
-pub(crate) fn corrected(
+fn corrected(
     name: &str,
     code: &ModelCode,
     constants: &CorrectionConstants,
@@ -90,7 +106,7 @@ pub(crate) fn corrected(
 /// The corrected map's source: its tables (`blends` rows of `scheduled` numbers; none: no table), its
 /// programs (`functions`), its follower and observer.
 #[derive(Template)]
-#[template(path = "c/corrected.c", escape = "none")]
+#[template(path = "corrected/templates/corrected.c.askama", escape = "none")]
 struct CorrectedC<'a> {
     name: &'a str,
     upper: &'a str,

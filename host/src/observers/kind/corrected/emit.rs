@@ -5,12 +5,21 @@ use askama::Template;
 
 use super::program::{self as correction, CorrectionConstants};
 use crate::emit::model::rust_text::{body, list};
+use crate::emit::model::observers::Observers;
 use crate::emit::{f32_literal, EmitError};
 use crate::plant::ModelCode;
 use crate::spec::Design;
 
+/// Its part of the design file, when the design has it.
+pub(crate) fn rust(design: &Design, code: &ModelCode, observers: &Observers<'_>) -> Result<Option<String>, EmitError> {
+    observers
+        .corrected()
+        .map(|(constants, state_targets)| corrector(design, code, constants, state_targets))
+        .transpose()
+}
+
 /// The model-corrected map's follower (`Corrector`), its programs and `CorrectedObserver`.
-pub(crate) fn corrector(
+fn corrector(
     design: &Design,
     code: &ModelCode,
     constants: &CorrectionConstants,
@@ -58,7 +67,7 @@ pub(crate) fn corrector(
 /// The model-corrected map and its written-out programs (`…_body`; `…_f64`: f64 values, `lower`, `upper`
 /// and `blends`: `(f32, f64)` pairs).
 #[derive(Template)]
-#[template(path = "model/corrected.rs", escape = "none")]
+#[template(path = "corrected/templates/corrected.rs.askama", escape = "none")]
 struct CorrectedText<'a> {
     start_up: usize,
     reads: bool,

@@ -16,6 +16,7 @@ use run as corrected;
 pub const KIND: Kind = Kind {
     kind: ObserverKind::Corrected,
     what: "the model-corrected map",
+    short: "corrected map",
     observer_type: "CorrectedObserver",
     measured_as: "`CorrectedObserver`",
     legend: "model-corrected map",
@@ -30,6 +31,9 @@ pub const KIND: Kind = Kind {
     missing_why: "it needs every state as a target and a model the host can run",
     judged_in: crate::recording::Precision::F64,
     fixed: None,
+    filter_code: None,
+    rust: Some(emit::rust),
+    c: Some(c::c),
     tune,
 };
 

@@ -4,13 +4,24 @@
 use askama::Template;
 
 use crate::emit::model::rust_text::{f32_list, list, literal};
+use crate::emit::model::observers::Observers;
 use crate::emit::EmitError;
 use crate::observers::kind::ekf_restart::run::RestartConstants;
 use crate::plant::kalman::{self, EkfConstants};
+use crate::plant::ModelCode;
+use crate::spec::Design;
+
+/// Its part of the design file, when the design has it (and the EKFs it runs on).
+pub(crate) fn rust(_: &Design, _: &ModelCode, observers: &Observers<'_>) -> Result<Option<String>, EmitError> {
+    match (observers.ekf(), observers.started(), observers.restart()) {
+        (Some(ekf), Some(_), Some(restart)) => restarted(ekf, restart).map(Some),
+        _ => Ok(None),
+    }
+}
 
 /// The box-started EKF checked by the map: `StartedEkf`'s `firmware::Restart` in `f32` and `f64`,
 /// the check, and `EkfRestartObserver`.
-pub(crate) fn restarted(ekf: &EkfConstants, restart: &RestartConstants) -> Result<String, EmitError> {
+fn restarted(ekf: &EkfConstants, restart: &RestartConstants) -> Result<String, EmitError> {
     let nx = ekf.x0.len();
     let upper = ekf.p0.upper();
     let f64_list = |values: &[f64]| format!("{values:?}");
@@ -37,7 +48,7 @@ pub(crate) fn restarted(ekf: &EkfConstants, restart: &RestartConstants) -> Resul
 
 /// The restarted EKF (`…_f64`: f64 values, the others `T` or f32 literals).
 #[derive(Template)]
-#[template(path = "model/restarted.rs", escape = "none")]
+#[template(path = "ekf_restart/templates/restarted.rs.askama", escape = "none")]
 struct RestartedText<'a> {
     threshold_f64: &'a str,
     threshold: &'a str,

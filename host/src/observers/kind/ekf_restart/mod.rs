@@ -2,6 +2,7 @@
 //! estimate and restarted from it as `ekf_map` starts when the two disagree (a χ² threshold tuned on
 //! the tuning runs).
 
+pub mod c;
 pub mod cost;
 pub mod emit;
 pub mod run;
@@ -18,6 +19,7 @@ use run::RestartConstants;
 pub const KIND: Kind = Kind {
     kind: ObserverKind::EkfRestart,
     what: "the EKF from the centre of the state box, restarted by the map",
+    short: "restarted EKF",
     observer_type: "EkfRestartObserver",
     measured_as: "`EkfRestartObserver`",
     legend: "EKF restarted by the map",
@@ -35,6 +37,9 @@ pub const KIND: Kind = Kind {
         own: false,
         ..super::ekf_box::FIXED
     }),
+    filter_code: None,
+    rust: Some(emit::rust),
+    c: Some(c::c),
     tune,
 };
 

@@ -6,14 +6,29 @@
 
 use askama::Template;
 
-use crate::emit::c::floats;
+use crate::emit::c::text::{floats, CPart};
+use crate::emit::model::observers::Observers;
 use crate::emit::c::program::function;
 use crate::emit::EmitError;
 use crate::observers::kind::mhe::run::ChipConstants;
 use crate::plant::ModelCode;
+use crate::spec::Design;
+
+/// Its part of the design's C, when the design has it.
+pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) -> Result<Option<CPart>, EmitError> {
+    let Some(constants) = observers.mhe() else {
+        return Ok(None);
+    };
+    let (header, source) = mhe(&design.name, code, constants, design.chip_substeps)?;
+    Ok(Some(CPart {
+        header,
+        source,
+        programs: vec![code.derivative.clone(), code.output.clone()],
+    }))
+}
 
 /// The header's and the source's parts of the moving-horizon observer.
-pub(crate) fn mhe(
+fn mhe(
     name: &str,
     code: &ModelCode,
     constants: &ChipConstants,
@@ -21,7 +36,7 @@ pub(crate) fn mhe(
 ) -> Result<(String, String), EmitError> {
     let upper = name.to_uppercase();
     let nu = code.dimensions.inputs;
-    let one = |what: &str, v: f64| crate::emit::c::float(&format!("chip MHE {what}"), v);
+    let one = |what: &str, v: f64| crate::emit::c::text::float(&format!("chip MHE {what}"), v);
     let mut source = function(
         "model_derivative",
         "The model's derivative f(x, u), then its Jacobian row by row (the Rust file's Plant::derivative).",
@@ -66,7 +81,7 @@ pub(crate) fn mhe(
 
 /// The observer's part of the header.
 #[derive(Template)]
-#[template(path = "c/mhe.h", escape = "none")]
+#[template(path = "mhe/templates/mhe.h.askama", escape = "none")]
 struct MheH<'a> {
     name: &'a str,
     upper: &'a str,
@@ -76,7 +91,7 @@ struct MheH<'a> {
 
 /// The observer's constants and code (`NX` is the design's states).
 #[derive(Template)]
-#[template(path = "c/mhe.c", escape = "none")]
+#[template(path = "mhe/templates/mhe.c.askama", escape = "none")]
 struct MheC<'a> {
     name: &'a str,
     upper: &'a str,

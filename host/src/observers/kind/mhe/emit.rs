@@ -6,11 +6,19 @@
 use askama::Template;
 
 use crate::emit::model::rust_text::{list, literal};
+use crate::emit::model::observers::Observers;
 use crate::emit::EmitError;
+use crate::plant::ModelCode;
+use crate::spec::Design;
 use crate::observers::kind::mhe::run::ChipConstants;
 
+/// Its part of the design file, when the design has it.
+pub(crate) fn rust(_: &Design, _: &ModelCode, observers: &Observers<'_>) -> Result<Option<String>, EmitError> {
+    observers.mhe().map(mhe).transpose()
+}
+
 /// The text of `Mhe` and `MheObserver` with `constants`.
-pub(crate) fn mhe(constants: &ChipConstants) -> Result<String, EmitError> {
+fn mhe(constants: &ChipConstants) -> Result<String, EmitError> {
     let values = |what: &str, values: &[f64]| -> Result<String, EmitError> {
         let items = values
             .iter()
@@ -34,7 +42,7 @@ pub(crate) fn mhe(constants: &ChipConstants) -> Result<String, EmitError> {
 
 /// `Mhe` and `MheObserver` (`T` literals, `iterations` a count).
 #[derive(Template)]
-#[template(path = "model/mhe.rs", escape = "none")]
+#[template(path = "mhe/templates/mhe.rs.askama", escape = "none")]
 struct MheText<'a> {
     iterations: usize,
     h: &'a str,

@@ -21,6 +21,7 @@ use run::ChipTuned;
 pub const KIND: Kind = Kind {
     kind: ObserverKind::Mhe,
     what: "the moving-horizon estimate with fixed Gauss–Newton steps",
+    short: "MHE",
     observer_type: "MheObserver",
     measured_as: "`MheObserver`",
     legend: "MHE on the chip",
@@ -35,6 +36,9 @@ pub const KIND: Kind = Kind {
     missing_why: "the model is beyond the sizes the host runs a moving-horizon estimate for",
     judged_in: crate::recording::Precision::F32,
     fixed: None,
+    filter_code: None,
+    rust: Some(emit::rust),
+    c: Some(c::c),
     tune,
 };
 

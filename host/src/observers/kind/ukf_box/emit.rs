@@ -1,21 +1,30 @@
 //! The design's unscented Kalman filter (`Ukf`, `ukf()`, kind `ukf_box` as `UkfBoxObserver`), written
-//! beside the EKF by [`crate::emit::model::model_source`]: the same frame as the EKF's (`push`, the refusals, `P`
+//! beside the EKF ([`crate::emit::model::model_source`]): the same frame as the EKF's (`push`, the refusals, `P`
 //! as its upper triangle, `emit::model::plant`'s `COVARIANCE` and `finite`), each sample the straight-line
 //! programs of [`crate::observers::kind::ukf_box::program`].
 
 use askama::Template;
 
 use crate::emit::model::filter::{constants_docs, filter_observer, filter_type, q_constant, samples, Names};
+use crate::emit::model::observers::Observers;
 use crate::emit::EmitError;
 use crate::observers::kind::ukf_box::program::{kappa, unscented_code, ALPHA, BETA};
 use crate::plant::kalman::EkfConstants;
 use crate::plant::ModelCode;
 use crate::spec::Design;
 
+/// Its part of the design file, when the design has it (beside the EKF, whose frame it shares).
+pub(crate) fn rust(design: &Design, code: &ModelCode, observers: &Observers<'_>) -> Result<Option<String>, EmitError> {
+    match (observers.ekf(), observers.constants.ukf_box()) {
+        (Some(_), Some(constants)) => ukf(design, code, constants).map(Some),
+        _ => Ok(None),
+    }
+}
+
 /// The UKF, its observer and its two written-out samples.
-pub(crate) fn ukf(design: &Design, code: &ModelCode, ukf: &EkfConstants) -> Result<String, EmitError> {
+fn ukf(design: &Design, code: &ModelCode, ukf: &EkfConstants) -> Result<String, EmitError> {
     let nx = code.dimensions.states;
-    let fixed = &design.filters.ukf;
+    let fixed = super::FIXED.of(design);
     let mut text = UkfText {
         filter: &filter_type(&UKF, ukf, nx)?,
         alpha: &format!("{ALPHA:?}"),
@@ -50,7 +59,7 @@ const UKF_TUNED: &str = "It starts at the centre of the state box with `P(0)` an
 
 /// The UKF's constants and its filter type (`filter`), with `ukf()`.
 #[derive(Template)]
-#[template(path = "model/ukf.rs", escape = "none")]
+#[template(path = "ukf_box/templates/ukf.rs.askama", escape = "none")]
 struct UkfText<'a> {
     filter: &'a str,
     alpha: &'a str,

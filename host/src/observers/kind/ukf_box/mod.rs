@@ -2,6 +2,7 @@
 //! its own `Q` and `P0` tuned as the box EKF's are, by the same search on the same random tuning runs
 //! ([`ukf::tune`]); judged from the box centre everywhere, as `ekf()` is.
 
+pub mod c;
 pub mod cost;
 pub mod emit;
 pub mod program;
@@ -16,7 +17,6 @@ use run as ukf;
 /// `[observer.ukf]`: the UKF's constants the spec fixes.
 pub const FIXED: FixedSection = FixedSection {
     section: "observer.ukf",
-    of: |design| &design.filters.ukf,
     own: true,
 };
 
@@ -24,6 +24,7 @@ pub const FIXED: FixedSection = FixedSection {
 pub const KIND: Kind = Kind {
     kind: ObserverKind::UkfBox,
     what: "the unscented Kalman filter from the centre of the state box",
+    short: "UKF",
     observer_type: "UkfBoxObserver",
     measured_as: "`UkfBoxObserver`",
     legend: "UKF from x̂(0)",
@@ -38,6 +39,9 @@ pub const KIND: Kind = Kind {
     missing_why: "the model is beyond the sizes the host filters",
     judged_in: crate::recording::Precision::F32,
     fixed: Some(FIXED),
+    filter_code: Some(unscented_code),
+    rust: Some(emit::rust),
+    c: Some(c::c),
     tune,
 };
 
@@ -51,7 +55,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
             ukf::estimate_run(code, &filter, &tuned.constants.x0, &tuned.constants.p0, run)
         })
     };
-    let (tuned, figures) = bench.box_filter(ukf::estimates, "observer.ukf", &bench.design.filters.ukf, &judge)?;
+    let (tuned, figures) = bench.box_filter(ukf::estimates, FIXED, &judge)?;
     let filter = unscented_code(code, &tuned.constants);
     bench.from_observer_starts("ukf_box", &|x0, run| {
         ukf::estimate_run(code, &filter, x0, &tuned.constants.p0, run)

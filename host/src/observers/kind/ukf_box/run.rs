@@ -61,7 +61,7 @@ pub fn tune(
 ) -> Option<Tuned> {
     ekf::tune_with(
         estimates,
-        &design.filters.ukf,
+        super::FIXED.of(design),
         design,
         code,
         tuning,

@@ -1,6 +1,9 @@
 //! `ekf_map`: the EKF started by the map at `k = N − 1`, with the box EKF's `Q` and `R` and a
 //! `P(N−1)` of the map's error scaled by one factor tuned on the tuning runs.
 
+pub mod c;
+pub mod emit;
+
 use super::corrected::run as corrected;
 use super::{Bench, FixedSection, Kind, Needs, Tuned};
 use crate::data::{Rows, Run};
@@ -12,6 +15,7 @@ use crate::spec::ObserverKind;
 pub const KIND: Kind = Kind {
     kind: ObserverKind::EkfMap,
     what: "the EKF started by the map",
+    short: "map-started EKF",
     observer_type: "EkfMapObserver",
     measured_as: "`EkfMapObserver`",
     legend: "EKF started by the map",
@@ -29,6 +33,9 @@ pub const KIND: Kind = Kind {
         own: false,
         ..super::ekf_box::FIXED
     }),
+    filter_code: None,
+    rust: Some(emit::rust),
+    c: Some(c::c),
     tune,
 };
 

@@ -3,6 +3,8 @@
 //! scenario's start is one the chip's `ekf()` does not know; `auto` then judges it, as every kind, on
 //! all the tuning runs, its tail from the scenario's start).
 
+pub mod c;
+
 use super::{Bench, FixedSection, Kind, Needs, Tuned};
 use crate::observers::{ekf, ObserverFigures};
 use crate::search::cost;
@@ -11,7 +13,6 @@ use crate::spec::ObserverKind;
 /// `[observer.ekf]`: the box EKF's constants the spec fixes (the kinds over it reuse its `Q`).
 pub const FIXED: FixedSection = FixedSection {
     section: "observer.ekf",
-    of: |design| &design.filters.ekf,
     own: true,
 };
 
@@ -19,6 +20,7 @@ pub const FIXED: FixedSection = FixedSection {
 pub const KIND: Kind = Kind {
     kind: ObserverKind::EkfBox,
     what: "the EKF from the centre of the state box",
+    short: "EKF",
     observer_type: "EkfBoxObserver",
     measured_as: "`ekf()`",
     legend: "EKF from x̂(0)",
@@ -33,6 +35,9 @@ pub const KIND: Kind = Kind {
     missing_why: "the model is beyond the sizes the host filters",
     judged_in: crate::recording::Precision::F64,
     fixed: Some(FIXED),
+    filter_code: Some(crate::plant::kalman::filter_code),
+    rust: None,
+    c: Some(c::c),
     tune,
 };
 
@@ -40,14 +45,14 @@ pub const KIND: Kind = Kind {
 /// start everywhere (the scenarios included: where `ekf()` starts on the chip), and runs it once more
 /// on each scenario from its `observer_x0`, the paper's comparison.
 fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
-    let (design, code) = (bench.design, bench.code);
+    let code = bench.code;
     let judge = |bench: &Bench<'_>, tuned: &ekf::Tuned| {
         let filter = crate::plant::kalman::filter_code(code, &tuned.constants);
         bench.judge("ekf_box", cost::of_ekf(&filter), &|run, _| {
             ekf::estimate_run(code, &tuned.constants, &tuned.constants.x0, run).expect("size checked by tune")
         })
     };
-    let (tuned, figures) = bench.box_filter(ekf::estimates, "observer.ekf", &design.filters.ekf, &judge)?;
+    let (tuned, figures) = bench.box_filter(ekf::estimates, FIXED, &judge)?;
     bench.from_observer_starts("ekf_box", &|x0, run| {
         ekf::estimate_run(code, &tuned.constants, x0, run).expect("size checked by tune")
     });
