@@ -80,8 +80,8 @@ pub fn project_table(all: &Measurements) -> Result<(String, Vec<(String, Measure
                     segments.join(", "),
                     (2 * n_z * targets.len()).to_string(),
                 ),
-                // The filters from the box centre read no window.
-                Kind::Of(ObserverKind::EkfBox | ObserverKind::UkfBox) => {
+                // The filters from the box centre (a kind whose constants are one filter's) read no window.
+                Kind::Of(k) if host::observers::kind::of(k).filter_code.is_some() => {
                     ("—".to_owned(), "—".to_owned(), "—".to_owned())
                 }
                 _ => (spec.map.horizon.to_string(), "—".to_owned(), "—".to_owned()),

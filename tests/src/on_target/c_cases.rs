@@ -121,9 +121,8 @@ macro_rules! c_case {
     }};
 }
 
-/// Every C observer of every shipped design: the map, the EKF and the UKF from the box centre, the
-/// observers the map starts or checks and the moving-horizon estimate, in the order of the on-target
-/// table.
+/// Every C observer of every shipped design (every kind `gen` wrote for it), in the order of the
+/// on-target table.
 pub fn shipped_cases() -> Vec<Case> {
     let mut cases = Vec::new();
     // Every kind `gen` listed for every design.

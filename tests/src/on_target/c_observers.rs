@@ -137,10 +137,10 @@ pub fn c_harness(
     )
 }
 
-/// Whether C kind `kind` counts its refused samples (`refused`, the filter kinds: each over one of
-/// the shared rules, `firmware::rules`); the harness then prints `REFUSED <count>` after the samples.
+/// Whether C kind `kind` counts its refused samples (`refused`: its registry entry says so, the kinds
+/// over the filters' shared rules); the harness then prints `REFUSED <count>` after the samples.
 pub fn counts_refusals(kind: &str) -> bool {
-    !matches!(kind, "map" | "mhe" | "fixed")
+    host::observers::kind::named(kind).is_some_and(|entry| entry.counts_refusals)
 }
 
 /// The lines of a harness's output that are samples (those [`c_harness`] prints first).

@@ -86,12 +86,12 @@ fn an_ekf_kind_over_budget_is_refused_before_the_fit_by_the_count_the_fit_record
         let mut design = host::generate::shipped_design(name).unwrap();
         let code = host::generate::model_code(&design).unwrap();
         for (kind, instructions) in predicted.iter().copied() {
-            let kind = match kind {
-                "ekf_box" => host::spec::ObserverKind::EkfBox,
-                "ukf_box" => host::spec::ObserverKind::UkfBox,
-                "ekf_map" => host::spec::ObserverKind::EkfMap,
-                "ekf_restart" => host::spec::ObserverKind::EkfRestart,
-                _ => continue,
+            // The kinds whose cost the model predicts before the fit.
+            let Some(kind) = host::observers::kind::named(kind)
+                .filter(|entry| entry.cost_before_fit.is_some())
+                .map(|entry| entry.kind)
+            else {
+                continue;
             };
             design.observer = kind;
             design.budget.instructions = Some(instructions.into());

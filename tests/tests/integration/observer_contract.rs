@@ -203,31 +203,38 @@ mod every_kind_through_the_trait {
         };
     }
 
-    /// `$name`'s float kinds (by type name) over its recorded sequence, and its integer map over
-    /// the raw one.
-    macro_rules! every_kind {
-        ($name:ident: $($ty:ident),*) => {
-            #[test]
-            fn $name() {
-                use generated::$name as d;
+    /// Every float kind of every design (each design's kinds as `gen` listed them,
+    /// `generated::for_each_observer!`) over the design's recorded sequence.
+    #[test]
+    fn every_kind_of_every_design() {
+        let mut checked = 0;
+        macro_rules! one {
+            ($design:ident, $kind:ident, $ty:ident) => {{
+                use generated::$design as d;
                 let samples: Vec<_> = d::RECORDED_Y.iter().copied().zip(d::RECORDED_U.iter().copied()).collect();
-                $(
-                    check(concat!(stringify!($name), "::", stringify!($ty)), d::$ty::new, &samples, concrete!(d::$ty));
-                )*
-                check(concat!(stringify!($name), "::observer()"), d::observer, &samples, concrete!(d::Observer));
-                let raw: Vec<_> = d::RECORDED_RAW_Y.iter().copied().zip(d::RECORDED_RAW_U.iter().copied()).collect();
-                check(concat!(stringify!($name), "::FixedObserver"), d::fixed_observer, &raw, concrete!(d::FixedObserver));
-            }
-        };
+                check(concat!(stringify!($design), "::", stringify!($ty)), d::$ty::new, &samples, concrete!(d::$ty));
+                checked += 1;
+            }};
+        }
+        generated::for_each_observer!(one);
+        // Seven kinds on each of the five Van der Pol and tank designs, four on each E. coli one.
+        assert!(checked >= 43, "{checked} observers checked");
     }
 
-    every_kind!(vanderpol: MapObserver, EkfBoxObserver, UkfBoxObserver, CorrectedObserver, EkfMapObserver, EkfRestartObserver, MheObserver);
-    every_kind!(vanderpol_searched: MapObserver, EkfBoxObserver, UkfBoxObserver, CorrectedObserver, EkfMapObserver, EkfRestartObserver, MheObserver);
-    every_kind!(vanderpol_sparse: MapObserver, EkfBoxObserver, UkfBoxObserver, CorrectedObserver, EkfMapObserver, EkfRestartObserver, MheObserver);
-    every_kind!(vanderpol_uncertain: MapObserver, EkfBoxObserver, UkfBoxObserver, CorrectedObserver, EkfMapObserver, EkfRestartObserver, MheObserver);
-    every_kind!(two_tanks: MapObserver, EkfBoxObserver, UkfBoxObserver, CorrectedObserver, EkfMapObserver, EkfRestartObserver, MheObserver);
-    every_kind!(ecoli_x0_0p5: MapObserver, EkfBoxObserver, UkfBoxObserver, MheObserver);
-    every_kind!(ecoli_x0_2: MapObserver, EkfBoxObserver, UkfBoxObserver, MheObserver);
+    /// Every design's `observer()` over its recorded sequence, and its integer map over the raw one.
+    #[test]
+    fn every_designs_chosen_observer_and_integer_map() {
+        macro_rules! one {
+            ($design:ident) => {{
+                use generated::$design as d;
+                let samples: Vec<_> = d::RECORDED_Y.iter().copied().zip(d::RECORDED_U.iter().copied()).collect();
+                check(concat!(stringify!($design), "::observer()"), d::observer, &samples, concrete!(d::Observer));
+                let raw: Vec<_> = d::RECORDED_RAW_Y.iter().copied().zip(d::RECORDED_RAW_U.iter().copied()).collect();
+                check(concat!(stringify!($design), "::FixedObserver"), d::fixed_observer, &raw, concrete!(d::FixedObserver));
+            }};
+        }
+        generated::for_each_design!(one);
+    }
 
     #[test]
     fn the_family() {

@@ -22,6 +22,7 @@ pub const KIND: Kind = Kind {
     cost_before_fit: None,
     missing_why: "",
     judged_in: crate::recording::Precision::F64,
+    counts_refusals: false,
     fixed: None,
     filter_code: None,
     rust: None,

@@ -64,6 +64,9 @@ pub struct Kind {
     /// runs part on a shipped design; `estimate --precision` in it gives the
     /// report's estimates to the bit.
     pub judged_in: Precision,
+    /// Whether it counts the samples it refuses (`refused()` on the chip, the C struct's `refused`):
+    /// the kinds over the filters' shared rules (`firmware::rules`).
+    pub counts_refusals: bool,
     /// The spec's section of fixed filter constants it reads, if any.
     pub fixed: Option<FixedSection>,
     /// The filter program its constants build, when they are one Kalman filter's (the box

@@ -30,6 +30,7 @@ pub const KIND: Kind = Kind {
     cost_before_fit: None,
     missing_why: "it needs every state as a target and a model the host can run",
     judged_in: crate::recording::Precision::F64,
+    counts_refusals: true,
     fixed: None,
     filter_code: None,
     rust: Some(emit::rust),

@@ -34,6 +34,7 @@ pub const KIND: Kind = Kind {
     cost_before_fit: Some(cost::ekf_before_fit),
     missing_why: "the model is beyond the sizes the host filters",
     judged_in: crate::recording::Precision::F64,
+    counts_refusals: true,
     fixed: Some(FIXED),
     filter_code: Some(crate::plant::kalman::filter_code),
     rust: None,

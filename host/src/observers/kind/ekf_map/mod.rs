@@ -29,6 +29,7 @@ pub const KIND: Kind = Kind {
     cost_before_fit: Some(cost::started_before_fit),
     missing_why: "it needs every state as a target and a model the host can filter",
     judged_in: crate::recording::Precision::F64,
+    counts_refusals: true,
     fixed: Some(FixedSection {
         own: false,
         ..super::ekf_box::FIXED

@@ -33,6 +33,7 @@ pub const KIND: Kind = Kind {
     cost_before_fit: Some(ekf_before_fit),
     missing_why: "its tables hold no restart threshold",
     judged_in: crate::recording::Precision::F64,
+    counts_refusals: true,
     fixed: Some(FixedSection {
         own: false,
         ..super::ekf_box::FIXED

@@ -35,6 +35,7 @@ pub const KIND: Kind = Kind {
     cost_before_fit: None,
     missing_why: "the model is beyond the sizes the host runs a moving-horizon estimate for",
     judged_in: crate::recording::Precision::F32,
+    counts_refusals: false,
     fixed: None,
     filter_code: None,
     rust: Some(emit::rust),

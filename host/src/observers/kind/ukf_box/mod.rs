@@ -38,6 +38,7 @@ pub const KIND: Kind = Kind {
     cost_before_fit: Some(cost::ukf_before_fit),
     missing_why: "the model is beyond the sizes the host filters",
     judged_in: crate::recording::Precision::F32,
+    counts_refusals: true,
     fixed: Some(FIXED),
     filter_code: Some(unscented_code),
     rust: Some(emit::rust),
