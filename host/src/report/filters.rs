@@ -27,10 +27,7 @@ fn one_against(report: &Report<'_>, filter: &Kind, peer: &Kind) -> String {
         return String::new();
     };
     let (name, peer_name) = (filter.short, peer.short);
-    let (Some(pooled), Some(tail)) = (
-        ratio(a, b, |f| f.rmse_validation),
-        ratio(a, b, |f| f.p95_validation),
-    ) else {
+    let (Some(pooled), Some(tail)) = (ratio(a, b, |f| f.rmse_validation), ratio(a, b, |f| f.p95_validation)) else {
         // Which one diverged decides which one is the choice.
         let finite = |o: &ObserverReport| {
             o.targets
@@ -38,8 +35,12 @@ fn one_against(report: &Report<'_>, filter: &Kind, peer: &Kind) -> String {
                 .all(|f| f.rmse_validation.is_some_and(f64::is_finite))
         };
         let choice = match (finite(a), finite(b)) {
-            (true, false) => format!("the {peer_name} gave no finite validation figure (it diverged): the {name} is the choice"),
-            (false, true) => format!("the {name} gave no finite validation figure (it diverged): the {peer_name} is the choice"),
+            (true, false) => {
+                format!("the {peer_name} gave no finite validation figure (it diverged): the {name} is the choice")
+            }
+            (false, true) => {
+                format!("the {name} gave no finite validation figure (it diverged): the {peer_name} is the choice")
+            }
             _ => "neither gave a finite validation figure on every target (both diverged somewhere)".to_owned(),
         };
         return format!("\n{name} against {peer_name}: {choice}.\n");
@@ -155,14 +156,18 @@ mod tests {
     #[test]
     fn the_filters_starts_are_the_specs_words() {
         let none: &[&str] = &[];
-        assert_eq!(starts(("EKF", none), ("PF", none)), "both from the box centre, tuned alike");
+        assert_eq!(
+            starts(("EKF", none), ("PF", none)),
+            "both from the box centre, tuned alike"
+        );
         // A filter with fixed constants is not "from the box centre, tuned alike".
         assert_eq!(
             starts(("EKF", none), ("PF", &["x0", "p0"])),
             "the EKF from the box centre, tuned; the PF from the spec's x̂(0), with the spec's P(0), the rest tuned; \
              the same search, score and runs for what is tuned"
         );
-        assert!(starts(("EKF", &["q", "p0"]), ("PF", none)).starts_with("the EKF from the box centre, with the spec's Q and P(0);"));
+        assert!(starts(("EKF", &["q", "p0"]), ("PF", none))
+            .starts_with("the EKF from the box centre, with the spec's Q and P(0);"));
     }
 
     #[test]

@@ -67,10 +67,14 @@ impl FixedFilters {
 
     /// The constants section `section` fixes, for a test or a tool that changes a design.
     pub fn of_mut(&mut self, section: &'static str) -> &mut FixedFilter {
-        let at = self.sections.iter().position(|(name, _)| *name == section).unwrap_or_else(|| {
-            self.sections.push((section, FixedFilter::default()));
-            self.sections.len() - 1
-        });
+        let at = self
+            .sections
+            .iter()
+            .position(|(name, _)| *name == section)
+            .unwrap_or_else(|| {
+                self.sections.push((section, FixedFilter::default()));
+                self.sections.len() - 1
+            });
         &mut self.sections[at].1
     }
 

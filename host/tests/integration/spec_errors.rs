@@ -642,7 +642,10 @@ fn a_filters_fixed_constants_are_read_in_state_order_and_a_start_outside_the_box
     assert_eq!(ekf.q, Some(Covariance::Diagonal(vec![1e-3, 2e-3])));
     assert_eq!(ekf.p0, Some(Covariance::Full(vec![vec![1.0, 0.3], vec![0.3, 4.0]])));
     assert_eq!(ekf.fixed(), ["x0", "q", "p0"]);
-    assert!(!design.filters.of("observer.ukf").any(), "the UKF's constants stay tuned");
+    assert!(
+        !design.filters.of("observer.ukf").any(),
+        "the UKF's constants stay tuned"
+    );
     // x1 = 3 is outside the learning box [−2, 2]; x2 = 0.7 inside [−5, 5]; the scenario's
     // `observer_x0` (1, 0.7) inside: one warning.
     let gates = host::report::gates::starts_outside_box(&design);

@@ -211,8 +211,17 @@ mod every_kind_through_the_trait {
         macro_rules! one {
             ($design:ident, $kind:ident, $ty:ident) => {{
                 use generated::$design as d;
-                let samples: Vec<_> = d::RECORDED_Y.iter().copied().zip(d::RECORDED_U.iter().copied()).collect();
-                check(concat!(stringify!($design), "::", stringify!($ty)), d::$ty::new, &samples, concrete!(d::$ty));
+                let samples: Vec<_> = d::RECORDED_Y
+                    .iter()
+                    .copied()
+                    .zip(d::RECORDED_U.iter().copied())
+                    .collect();
+                check(
+                    concat!(stringify!($design), "::", stringify!($ty)),
+                    d::$ty::new,
+                    &samples,
+                    concrete!(d::$ty),
+                );
                 checked += 1;
             }};
         }
@@ -227,10 +236,28 @@ mod every_kind_through_the_trait {
         macro_rules! one {
             ($design:ident) => {{
                 use generated::$design as d;
-                let samples: Vec<_> = d::RECORDED_Y.iter().copied().zip(d::RECORDED_U.iter().copied()).collect();
-                check(concat!(stringify!($design), "::observer()"), d::observer, &samples, concrete!(d::Observer));
-                let raw: Vec<_> = d::RECORDED_RAW_Y.iter().copied().zip(d::RECORDED_RAW_U.iter().copied()).collect();
-                check(concat!(stringify!($design), "::FixedObserver"), d::fixed_observer, &raw, concrete!(d::FixedObserver));
+                let samples: Vec<_> = d::RECORDED_Y
+                    .iter()
+                    .copied()
+                    .zip(d::RECORDED_U.iter().copied())
+                    .collect();
+                check(
+                    concat!(stringify!($design), "::observer()"),
+                    d::observer,
+                    &samples,
+                    concrete!(d::Observer),
+                );
+                let raw: Vec<_> = d::RECORDED_RAW_Y
+                    .iter()
+                    .copied()
+                    .zip(d::RECORDED_RAW_U.iter().copied())
+                    .collect();
+                check(
+                    concat!(stringify!($design), "::FixedObserver"),
+                    d::fixed_observer,
+                    &raw,
+                    concrete!(d::FixedObserver),
+                );
             }};
         }
         generated::for_each_design!(one);

@@ -5,10 +5,10 @@
 use askama::Template;
 
 use super::program::{calls, function, needs_math};
+use super::text::render;
 use crate::emit::model::observers::Observers;
 use crate::emit::EmitError;
 use crate::observers::kind::REGISTRY;
-use super::text::render;
 use crate::plant::{ModelCode, Program};
 use crate::spec::Design;
 

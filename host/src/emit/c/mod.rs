@@ -14,17 +14,17 @@
 //! Rust observer's `new`, `push` and `estimate`; `<name>_observer` names the design's chosen kind.
 
 pub(crate) mod box_filter;
-mod kinds;
 mod fixed;
+mod kinds;
 mod map;
 pub(crate) mod program;
 pub(crate) mod started;
 mod storage;
 pub(crate) mod text;
 
+pub use storage::{mark, sample_period, storage_bound, MARK_BYTES};
 pub use text::CPart;
 pub(crate) use text::{float, floats, render};
-pub use storage::{mark, sample_period, storage_bound, MARK_BYTES};
 
 use askama::Template;
 
@@ -100,7 +100,6 @@ pub struct CSource {
     /// `<name>.c`.
     pub source: String,
 }
-
 
 /// The C source of `design`: its map (tables in `result`) and, given its model's programs and the
 /// observers the Rust file has, every model-based kind.
@@ -183,7 +182,6 @@ pub fn c_source(
     });
     Ok(CSource { header, source })
 }
-
 
 /// `<name>.h`.
 #[derive(Template)]

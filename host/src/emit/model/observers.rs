@@ -54,4 +54,3 @@ impl<'a> Observers<'a> {
         self.constants.mhe()
     }
 }
-

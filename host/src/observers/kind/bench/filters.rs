@@ -6,8 +6,8 @@ use super::Bench;
 use crate::data::{DataSet, Rows, Run};
 use crate::observers::ekf;
 use crate::observers::figures::{Beside, FromObserverStart, ObserverFigures, TRANSIENT_TIME};
-use crate::observers::score::errors;
 use crate::observers::kind::FixedSection;
+use crate::observers::score::errors;
 use crate::spec::FixedFilter;
 
 impl Bench<'_> {

@@ -4,10 +4,10 @@
 
 use askama::Template;
 
-use crate::emit::c::text::{floats, CPart};
-use crate::emit::model::observers::Observers;
 use crate::emit::c::program::function;
 use crate::emit::c::started::{self, map_states, targets_of, Follower};
+use crate::emit::c::text::{floats, CPart};
+use crate::emit::model::observers::Observers;
 use crate::emit::EmitError;
 use crate::observers::kind::corrected::program::{correction_code, CorrectionCode, CorrectionConstants};
 use crate::plant::ModelCode;

@@ -4,8 +4,8 @@
 use askama::Template;
 
 use super::program::{self as correction, CorrectionConstants};
-use crate::emit::model::rust_text::{body, list};
 use crate::emit::model::observers::Observers;
+use crate::emit::model::rust_text::{body, list};
 use crate::emit::{f32_literal, EmitError};
 use crate::plant::ModelCode;
 use crate::spec::Design;

@@ -45,7 +45,9 @@ pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) ->
         "ekf_map",
         "The EKF started at the map's first estimate (kind ekf_map, the Rust EkfMapObserver).",
         true,
-        &format!("    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n    unsigned count;\n    int started;\n"),
+        &format!(
+            "    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n    unsigned count;\n    int started;\n"
+        ),
     );
     Ok(Some(CPart {
         header,

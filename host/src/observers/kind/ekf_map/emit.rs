@@ -3,8 +3,8 @@
 
 use askama::Template;
 
-use crate::emit::model::rust_text::{list, literal};
 use crate::emit::model::observers::Observers;
+use crate::emit::model::rust_text::{list, literal};
 use crate::emit::EmitError;
 use crate::plant::kalman;
 use crate::plant::ModelCode;

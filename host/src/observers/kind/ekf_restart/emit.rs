@@ -3,8 +3,8 @@
 
 use askama::Template;
 
-use crate::emit::model::rust_text::{f32_list, list, literal};
 use crate::emit::model::observers::Observers;
+use crate::emit::model::rust_text::{f32_list, list, literal};
 use crate::emit::EmitError;
 use crate::observers::kind::ekf_restart::run::RestartConstants;
 use crate::plant::kalman::{self, EkfConstants};

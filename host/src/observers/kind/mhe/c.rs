@@ -6,9 +6,9 @@
 
 use askama::Template;
 
+use crate::emit::c::program::function;
 use crate::emit::c::text::{floats, CPart};
 use crate::emit::model::observers::Observers;
-use crate::emit::c::program::function;
 use crate::emit::EmitError;
 use crate::observers::kind::mhe::run::ChipConstants;
 use crate::plant::ModelCode;

@@ -5,12 +5,12 @@
 
 use askama::Template;
 
-use crate::emit::model::rust_text::{list, literal};
 use crate::emit::model::observers::Observers;
+use crate::emit::model::rust_text::{list, literal};
 use crate::emit::EmitError;
+use crate::observers::kind::mhe::run::ChipConstants;
 use crate::plant::ModelCode;
 use crate::spec::Design;
-use crate::observers::kind::mhe::run::ChipConstants;
 
 /// Its part of the design file, when the design has it.
 pub(crate) fn rust(_: &Design, _: &ModelCode, observers: &Observers<'_>) -> Result<Option<String>, EmitError> {
