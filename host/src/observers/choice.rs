@@ -196,6 +196,7 @@ mod tests {
             targets: vec![figures.clone(), figures],
             scenario: crate::data::Rows::default(),
             mismatch_scenario: None,
+            lost: Default::default(),
         }
     }
 

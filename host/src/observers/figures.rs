@@ -3,6 +3,7 @@
 //! ([`super::compare`]) and how a kind is chosen from them ([`super::choice`]), since the report, the
 //! tables and the emitter read these structs alone.
 
+use super::lost::LostRuns;
 use crate::data::Rows;
 use crate::spec::ObserverKind;
 
@@ -76,8 +77,7 @@ pub const TRANSIENT_TIME: f64 = 2.0;
 /// One observer's figures, per target in spec order, and its estimates along the scenarios.
 #[derive(Clone, Debug)]
 pub struct ObserverFigures {
-    /// [`ObserverKind::name`]: `"map"`, `"ekf_box"` (from the box centre), `"corrected"`,
-    /// `"ekf_map"` (started by the map) or `"ekf_restart"` (from the box centre, restarted by the map).
+    /// Its kind's [`ObserverKind::name`] (a reference's own name for a reference).
     pub kind: &'static str,
     /// Predicted instructions per sample on the chip in steady state ([`crate::search::cost`]).
     pub instructions: f64,
@@ -87,6 +87,8 @@ pub struct ObserverFigures {
     pub scenario: Rows,
     /// The same along [`MismatchRuns::scenario`](crate::data::MismatchRuns::scenario), when parameters are uncertain.
     pub mismatch_scenario: Option<Rows>,
+    /// Its lost runs on each set ([`super::lost`]).
+    pub lost: LostRuns,
 }
 
 /// A filter started at a scenario's `observer_x0` (the observer's start the scenario names) instead

@@ -7,6 +7,7 @@ pub mod choice;
 pub mod ekf;
 pub mod figures;
 pub mod kind;
+pub mod lost;
 pub mod particles;
 pub mod recorded;
 pub mod references;

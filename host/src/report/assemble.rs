@@ -162,6 +162,7 @@ pub fn observer(design: &Design, o: &crate::observers::ObserverFigures) -> Obser
                 )
             })
             .collect(),
+        lost: o.lost,
         on_target: None,
     }
 }

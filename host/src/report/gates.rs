@@ -19,8 +19,8 @@
 //!   that more than [`OUTSIDE_FRACTION`] of the learning runs' samples leave: a converter holds those
 //!   samples at its range's ends, so the integer map reads values the signal does not have and is far
 //!   worse than the float map there.
-//! * [`Gate::StartOutsideBox`]: a filter's start the spec fixes (`[observer.ekf] x0`,
-//!   `[observer.<filter>] x0`) or a scenario's `observer_x0` lies outside the learning box: the filter
+//! * [`Gate::StartOutsideBox`]: a filter's start the spec fixes (`[observer.<filter>] x0`)
+//!   or a scenario's `observer_x0` lies outside the learning box: the filter
 //!   starts where no learning or validation run starts, which is allowed (a published filter's guess
 //!   may be poor on purpose) but is rarely what a user means.
 
@@ -514,6 +514,7 @@ mod tests {
             targets: rmse.map(figures).to_vec(),
             scenario: Rows::default(),
             mismatch_scenario: None,
+            lost: Default::default(),
         }
     }
 

@@ -8,6 +8,7 @@ pub mod fixed_filters;
 pub mod fixed_point;
 pub mod gates;
 pub mod html;
+mod lost;
 mod markdown;
 pub mod on_target;
 pub mod plots;

@@ -88,6 +88,9 @@ pub struct ObserverReport {
     pub predicted_instructions: f64,
     /// Per target name.
     pub targets: std::collections::BTreeMap<String, FiguresReport>,
+    /// Its lost runs per set ([`crate::observers::lost`]): `{lost, runs}`, `null` for a set the
+    /// design lacks or the observer is not run on.
+    pub lost: crate::observers::lost::LostRuns,
     /// Measured on the emulated Cortex-M4F by `cargo run -p integration-tests --bin on-target-report`
     /// ([`on_target`]); `null` until the generated source written is measured.
     pub on_target: Option<on_target::OnTarget>,

@@ -26,6 +26,26 @@ fn generated_files_match_a_fresh_generation() {
         // `gen --strict` on the shipped specs: every one passes the quality gates.
         let gates = host::report::gates::check(&first.design, &first.result, &first.comparison);
         assert!(gates.is_empty(), "{name} fails quality gates: {gates:?}");
+        // Lost runs on validation (`observers::lost`): none for any kind of a Van der Pol or tank
+        // design; on E. coli, `observer()` (the UKF) loses the counts docs/guide.md quotes.
+        let chosen = host::observers::kind::of(first.comparison.chosen.0).kind.name();
+        for o in &first.comparison.observers {
+            let validation = o.lost.validation;
+            assert_eq!(
+                validation.runs, first.design.validation.trajectories,
+                "{name} {}",
+                o.kind
+            );
+            let expected = match (name.as_str(), o.kind == chosen) {
+                ("ecoli_x0_0p5", true) => Some(2),
+                ("ecoli_x0_2", true) => Some(11),
+                (n, _) if n.starts_with("ecoli") => None,
+                _ => Some(0),
+            };
+            if let Some(expected) = expected {
+                assert_eq!(validation.lost, expected, "{name} {}: lost validation runs", o.kind);
+            }
+        }
         if let Some(second) = &second {
             assert_eq!(first.source, second.source, "generation of {name} is not deterministic");
             assert_eq!(first.c_source, second.c_source, "C of {name} is not deterministic");

@@ -13,6 +13,7 @@ use std::collections::BTreeMap;
 
 use super::corrected::run as corrected;
 use crate::observers::figures::{Beside, Drift, Figures, FromObserverStart, ObserverFigures};
+use crate::observers::lost::{self, LostRuns};
 use crate::observers::score::{self, errors};
 
 mod filters;
@@ -187,7 +188,7 @@ impl<'a> Bench<'a> {
                 }),
             long: on(&runs.long, &maps.long),
         };
-        self.figures(kind, instructions, estimates)
+        self.figures(kind, instructions, estimates, true)
     }
 
     /// A host-only reference's figures ([`super::super::references`]): `estimate(run, stream)` on the
@@ -250,11 +251,11 @@ impl<'a> Bench<'a> {
             }),
             long: skipped(&runs.long),
         };
-        self.figures(name, f64::NAN, estimates)
+        self.figures(name, f64::NAN, estimates, false)
     }
 
     /// The figures of one observer's estimates on every set.
-    fn figures(&self, kind: &'static str, instructions: f64, estimates: Estimates) -> ObserverFigures {
+    fn figures(&self, kind: &'static str, instructions: f64, estimates: Estimates, tuned: bool) -> ObserverFigures {
         let runs = &self.result.runs;
         let horizon = self.design.map.horizon;
         let windows = self.windows();
@@ -325,12 +326,30 @@ impl<'a> Bench<'a> {
                 }
             })
             .collect();
+        // Lost runs per set; a reference (`tuned` false) is not run on the tuning and long runs.
+        let lost = |runs: &[Run], estimates: &[Rows]| lost::count(runs, estimates, windows, &self.spreads);
+        let lost = LostRuns {
+            validation: lost(&runs.validation.runs, &validation),
+            tuning: tuned.then(|| lost(&runs.tuning.runs, &on_tuning)),
+            scenario_draws: runs
+                .scenario_draws
+                .as_ref()
+                .zip(on_draws.as_ref())
+                .map(|(d, on)| lost(&d.runs, on)),
+            mismatch: runs
+                .mismatch
+                .as_ref()
+                .zip(on_mismatch.as_ref())
+                .map(|(m, [on_corners, _, _])| lost(&m.corners_set.runs, on_corners)),
+            long: tuned.then(|| lost(&runs.long.runs, &on_long)),
+        };
         ObserverFigures {
             kind,
             instructions,
             targets,
             mismatch_scenario,
             scenario,
+            lost,
         }
     }
 }

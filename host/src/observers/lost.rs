@@ -1,0 +1,159 @@
+//! When an observer has lost a run: a defined event, counted per kind and per set.
+//!
+//! Over the samples a kind is judged on (`window`: from the map's first estimate, `k ≥ N − 1`), a
+//! run is **lost** when
+//!
+//! * an estimate of some target is not finite (the observer diverged), or
+//! * over the run's last part (the last [`LAST_PART`] of those samples), some target's RMSE exceeds
+//!   [`LOST_FRACTION`] times that target's spread (its standard deviation over the tuning windows:
+//!   the RMSE of the best constant estimate): at the end of the run the observer does worse than
+//!   one that knows nothing but the target's mean, whatever it did before.
+//!
+//! A filter that refuses every finite sample from some point on predicts alone from there, and its
+//! error grows into the second case. A pooled RMSE or a p95 over runs can hide one such run among
+//! many good ones; this count does not.
+
+use std::ops::Range;
+
+use serde::Serialize;
+
+use crate::data::{Rows, Run};
+
+/// The multiple of a target's spread above which an RMSE over a run's last part is lost track: 1,
+/// worse than the best constant estimate.
+pub const LOST_FRACTION: f64 = 1.0;
+
+/// The part of a run's judged samples, at its end, that decides whether it was lost.
+pub const LAST_PART: f64 = 0.25;
+
+/// Whether the observer whose estimates of `run` are `estimates` lost it (see the module docs),
+/// judged over samples `window` against each target's spread `spreads`.
+pub fn is_lost(run: &Run, estimates: &Rows, window: Range<usize>, spreads: &[f64]) -> bool {
+    let targets = spreads.len();
+    if window.is_empty() {
+        return false;
+    }
+    if window.clone().any(|k| estimates[k].iter().any(|v| !v.is_finite())) {
+        return true;
+    }
+    let last = ((window.len() as f64 * LAST_PART).ceil() as usize).clamp(1, window.len());
+    let part = window.end - last..window.end;
+    (0..targets).any(|t| {
+        let squared: f64 = part
+            .clone()
+            .map(|k| (estimates[k][t] - run.targets[k][t]).powi(2))
+            .sum();
+        (squared / last as f64).sqrt() > LOST_FRACTION * spreads[t]
+    })
+}
+
+/// The lost runs of one set.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Lost {
+    /// Runs lost.
+    pub lost: usize,
+    /// Runs in the set.
+    pub runs: usize,
+}
+
+/// [`is_lost`] over every run of a set, each over its samples `window(run)`.
+pub fn count(runs: &[Run], estimates: &[Rows], window: impl Fn(&Run) -> Range<usize>, spreads: &[f64]) -> Lost {
+    Lost {
+        lost: runs
+            .iter()
+            .zip(estimates)
+            .filter(|(run, rows)| is_lost(run, rows, window(run), spreads))
+            .count(),
+        runs: runs.len(),
+    }
+}
+
+/// An observer's lost runs on each set it is judged on; `None` where the design has no such set or
+/// the observer is not run on it (a reference on the tuning and long runs).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct LostRuns {
+    /// The validation runs.
+    pub validation: Lost,
+    /// The tuning runs.
+    pub tuning: Option<Lost>,
+    /// The scenario's noise draws.
+    pub scenario_draws: Option<Lost>,
+    /// The mismatch runs (plants at the corners of the uncertain parameters' box).
+    pub mismatch: Option<Lost>,
+    /// The long runs.
+    pub long: Option<Lost>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A one-target run whose truth is 0 at every sample, and estimates `values`.
+    fn run(values: &[f64]) -> (Run, Rows) {
+        let mut targets = Rows::new(1);
+        let mut estimates = Rows::new(1);
+        for &v in values {
+            targets.push(&[0.0]);
+            estimates.push(&[v]);
+        }
+        let empty = Rows::new(0);
+        let run = Run {
+            states: empty.clone(),
+            inputs: empty.clone(),
+            measurements: empty,
+            targets,
+            parameters: Vec::new(),
+        };
+        (run, estimates)
+    }
+
+    #[test]
+    fn a_run_is_lost_when_its_last_quarter_is_off_by_more_than_half_the_spread() {
+        // 12 judged samples: the last quarter is the last 3. Spread 1: lost above an RMSE of 1.
+        let mut values = vec![0.0; 12];
+        let (r, e) = run(&values);
+        assert!(!is_lost(&r, &e, 0..12, &[1.0]));
+        // Off by 5 early on, then back: not lost (the pooled RMSE would have counted it).
+        values[..9].fill(5.0);
+        let (r, e) = run(&values);
+        assert!(!is_lost(&r, &e, 0..12, &[1.0]));
+        // RMSE over the last 3 of sqrt((1.1² · 3) / 3) = 1.1 > 1: lost; 0.9 is not.
+        values[9..].fill(1.1);
+        let (r, e) = run(&values);
+        assert!(is_lost(&r, &e, 0..12, &[1.0]));
+        values[9..].fill(0.9);
+        let (r, e) = run(&values);
+        assert!(!is_lost(&r, &e, 0..12, &[1.0]));
+        // Two samples of 1.5 and one of 0: RMSE sqrt(4.5 / 3) = 1.22 > 1, though one sample is exact.
+        values[9..].copy_from_slice(&[1.5, 0.0, 1.5]);
+        let (r, e) = run(&values);
+        assert!(is_lost(&r, &e, 0..12, &[1.0]));
+    }
+
+    #[test]
+    fn a_non_finite_estimate_loses_the_run_but_only_inside_the_window() {
+        let mut values = vec![0.0; 10];
+        values[0] = f64::NAN;
+        let (r, e) = run(&values);
+        // Before the first judged sample (the map's window filling): not counted.
+        assert!(!is_lost(&r, &e, 1..10, &[1.0]));
+        assert!(is_lost(&r, &e, 0..10, &[1.0]));
+        values[0] = 0.0;
+        values[4] = f64::INFINITY;
+        let (r, e) = run(&values);
+        assert!(is_lost(&r, &e, 1..10, &[1.0]));
+    }
+
+    #[test]
+    fn a_set_counts_its_lost_runs() {
+        let (good, good_rows) = run(&[0.0; 8]);
+        let (off, off_rows) = run(&[3.0; 8]);
+        let lost = count(
+            &[good.clone(), off, good],
+            &[good_rows.clone(), off_rows, good_rows],
+            |r| 0..r.targets.len(),
+            &[1.0],
+        );
+        assert_eq!(lost, Lost { lost: 1, runs: 3 });
+    }
+}
