@@ -189,11 +189,11 @@ impl<'a> Setup<'a> {
         let (tables, constants) = (self.tables, &self.tables.constants);
         // `Setup::new` refused a kind whose constants the tables lack (`Tables::missing`).
         const CHECKED: &str = "Setup::new checked the kind's constants";
+        // A kind whose constants are one filter's runs that filter from its start.
+        if let (Some(own), Some(filter)) = (constants.filter(self.kind), &self.filter) {
+            return Follower::Box(ekf::BoxStep::new(filter, &own.x0, &own.p0, self.code));
+        }
         match (self.kind, &self.filter, &self.programs) {
-            (kind, Some(filter), _) if constants.filter(kind).is_some() => {
-                let constants = constants.filter(kind).expect(CHECKED);
-                Follower::Box(ekf::BoxStep::new(filter, &constants.x0, &constants.p0, self.code))
-            }
             (ObserverKind::EkfMap, Some(filter), _) => Follower::Started(ekf::StartedStep::new(
                 filter,
                 &constants.ekf_map().expect(CHECKED).p0,

@@ -1,5 +1,5 @@
-//! `[observer.<filter>]` (the sections are the spec's, `raw::RawObserver`): the constants of a filter that the spec fixes instead of
-//! leaving them to the tuning. A published filter is reproduced this way: its start `x̂(0)`, its
+//! `[observer.<filter>]` (the sections the spec may give: `raw::RawObserver`): the constants of a
+//! filter that the spec fixes instead of leaving them to the tuning. A published filter is reproduced this way: its start `x̂(0)`, its
 //! `Q` and its `P(0)`, each a diagonal or a full symmetric matrix, in the states' units.
 //!
 //! The constants the spec leaves out are tuned as before, by the same search over the rest
