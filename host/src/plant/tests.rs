@@ -200,3 +200,80 @@ fn many_points_at_once_are_bit_for_bit_one_at_a_time() {
         }
     }
 }
+
+/// A tank draining through an orifice, `dh/dt = u − c √h`, bounded at 0 and learnt on `h ∈ [0, 4]`.
+const TANK: &str = r#"
+name = "tank"
+[model]
+states = ["h"]
+inputs = ["u"]
+[model.bounds]
+h = { min = 0.0 }
+[model.parameters]
+c = 0.5
+[model.derivatives]
+h = "u - c*sqrt(h)"
+[[model.outputs]]
+name = "y"
+expr = "sqrt(h)"
+noise_variance = 0.01
+[sampling]
+tau = 0.1
+substeps = 1
+[learning]
+samples = 20
+seed = 1
+grid.h = { min = 0.0, max = 4.0, points = 2 }
+inputs.u = { min = 0.0, max = 1.0, hold = 5 }
+[validation]
+trajectories = 2
+samples = 20
+seed = 2
+[map]
+horizon = 3
+nm = 2
+beta = 1.0
+epsilon = 0.01
+[[targets]]
+name = "h"
+expr = "h"
+"#;
+
+#[test]
+fn jacobians_are_finite_at_a_bound_where_the_slope_is_not() {
+    let design = crate::spec::parse(Path::new("tank.toml"), TANK).unwrap();
+    let code = ModelCode::new(&design).unwrap();
+    let mut scratch = Vec::new();
+    // The closed forms: d(u − c√h)/dh = −c / (2√h), d√h/dh = 1 / (2√h), at h moved inside the bound
+    // by a thousandth of the learning range [0, 4].
+    let inside = JACOBIAN_INSIDE * 4.0;
+    for (h, at) in [(0.0, inside), (-1.0, inside), (inside / 2.0, inside), (2.25, 2.25)] {
+        let (f, jacobian) = code.derivative(&[h], &[0.3], &mut scratch);
+        let (y, dy) = code.output(&[h], &[0.3], &mut scratch);
+        // The values are the model's at the state itself (√ of a negative level is NaN, as written).
+        assert_eq!(f[0].to_bits(), (0.3 - 0.5 * h.sqrt()).to_bits(), "f at h = {h}");
+        assert_eq!(y[0].to_bits(), h.sqrt().to_bits(), "h(x) at h = {h}");
+        let slope = 1.0 / (2.0 * at.sqrt());
+        assert!(
+            (jacobian[0] + 0.5 * slope).abs() <= 1e-12 * slope,
+            "∂f/∂h at h = {h}: {}",
+            jacobian[0]
+        );
+        assert!((dy[0] - slope).abs() <= 1e-12 * slope, "∂h/∂h at h = {h}: {}", dy[0]);
+    }
+}
+
+#[test]
+fn a_model_with_finite_slopes_on_its_bounds_is_left_as_it_is() {
+    let linear = TANK
+        .replace("c*sqrt(h)", "c*h")
+        .replace("expr = \"sqrt(h)\"", "expr = \"h\"");
+    let unbounded = linear.replace("h = { min = 0.0 }", "");
+    let code = |text: &str| ModelCode::new(&crate::spec::parse(Path::new("tank.toml"), text).unwrap()).unwrap();
+    let (bounded, free) = (code(&linear), code(&unbounded));
+    assert_eq!(bounded.derivative.ops, free.derivative.ops);
+    assert_eq!(bounded.output.ops, free.output.ops);
+    // The tank's own square root is moved: its program differs from the unbounded one's.
+    let sqrt_free = code(&TANK.replace("h = { min = 0.0 }", ""));
+    assert_ne!(code(TANK).derivative.ops, sqrt_free.derivative.ops);
+}

@@ -227,6 +227,11 @@ impl<'a> Builder<'a> {
         self.push(Op::AtLeast(a, low))
     }
 
+    /// `a`, or `high` where `a` is above it ([`firmware::emitted::at_most`]: a select).
+    pub fn at_most(&mut self, a: usize, high: usize) -> usize {
+        self.push(Op::AtMost(a, high))
+    }
+
     /// `states` projected onto `bounds` (a select per bounded side, nothing for an unbounded one).
     pub fn project(&mut self, states: &mut [usize], bounds: &[crate::spec::Bounds]) {
         for (x, b) in states.iter_mut().zip(bounds) {
