@@ -24,9 +24,10 @@
 //! A sample with a NaN or infinite value is refused: the update is skipped, the prediction still runs
 //! (time advances with the given input if it is finite; a non-finite input skips the prediction too), so
 //! a refused sample costs the filter that sample's information and nothing else. A step whose result
-//! is not finite (the model overflowed, e.g. `exp` of a diverged estimate) is not taken either: the
-//! filter keeps its state and covariance and refuses the sample, so no NaN ever enters its state: the
-//! rule every filter kind follows, written once in [`crate::rules`].
+//! is not finite on finite values (the model overflowed, e.g. `exp` of a diverged estimate) is not
+//! taken: the filter restarts from `x̂(0)`, `P(0)` ([`crate::rules::Refused::Restarted`]), so no NaN
+//! ever enters its state and it never stays stuck: the rule every filter kind follows, written once
+//! in [`crate::rules`].
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(s > 0)` is deliberate: a NaN must count as no information.
 
@@ -55,6 +56,8 @@ pub struct Ekf<T, P, const NX: usize, const NY: usize, const NU: usize> {
     r: [T; NY],
     /// Lower and upper bounds of each state (`±∞` where unbounded), when the state is bounded.
     bounds: Option<([T; NX], [T; NX])>,
+    /// `x̂(0)` and `P(0)`: where a step that is not finite restarts the filter.
+    start: ([T; NX], [[T; NX]; NX]),
     plant: P,
 }
 
@@ -68,9 +71,11 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
             q,
             r,
             bounds: None,
+            start: (x0, p0),
             plant,
         };
         symmetrise(&mut filter.p);
+        filter.start.1 = filter.p;
         filter
     }
 
@@ -79,6 +84,7 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
     #[must_use]
     pub fn with_bounds(mut self, lower: [T; NX], upper: [T; NX]) -> Self {
         self.x = crate::bounds::project(&self.x, &lower, &upper);
+        self.start.0 = self.x;
         self.bounds = Some((lower, upper));
         self
     }
@@ -96,15 +102,17 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
     }
 
     /// Takes the sample `(y, u)`: the measurement update, then the prediction to the next sample.
-    /// Returns the updated estimate `x̂(k|k)`; a non-finite `y` is refused (see the module docs): the
-    /// rule every filter follows, [`crate::rules::filter_sample`].
-    pub fn push(&mut self, y: &[T; NY], u: &[T; NU]) -> Result<[T; NX], crate::RejectedSample> {
+    /// Returns the updated estimate `x̂(k|k)`; a non-finite `y` is refused, and a step whose result
+    /// is not finite restarts the filter from its start (see the module docs): the rule every filter
+    /// follows, [`crate::rules::filter_sample`].
+    pub fn push(&mut self, y: &[T; NY], u: &[T; NU]) -> Result<[T; NX], crate::rules::Refused> {
         let Ekf {
             x,
             p,
             q,
             r,
             bounds,
+            start,
             plant,
         } = self;
         let steps = Steps { q, r, bounds, plant };
@@ -125,6 +133,7 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
                 (x, p)
             },
             |(x, p)| x.iter().chain(p.iter().flatten()).all(|v| v.is_finite()),
+            || *start,
         );
         (*x, *p) = carried;
         result

@@ -56,6 +56,14 @@ pub trait Estimator {
 
     /// `true` once [`estimate`](Estimator::estimate) gives an estimate.
     fn is_ready(&self) -> bool;
+
+    /// How many times the observer restarted since it was made or reset: a sample with finite values
+    /// whose step was not finite restarts a filter (from its start, or from the map), and `push`
+    /// reports that sample as refused. Always 0 for the maps, which carry nothing from one sample to
+    /// the next. Read it after a refused `push` to tell a restart from a bad value.
+    fn restarts(&self) -> u32 {
+        0
+    }
 }
 
 // Each observer by its own methods (which take precedence over the trait's in method resolution).
@@ -112,6 +120,11 @@ where
     type Error = RejectedSample;
 
     by_own_methods!(Started<T, D, F, N, NX, NY, NU, NT>);
+
+    #[inline(always)]
+    fn restarts(&self) -> u32 {
+        <Started<T, D, F, N, NX, NY, NU, NT>>::restarts(self)
+    }
 }
 
 impl<T: Scalar, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
@@ -127,6 +140,11 @@ where
     type Error = RejectedSample;
 
     by_own_methods!(Restarted<T, D, F, N, NX, NY, NU, NT>);
+
+    #[inline(always)]
+    fn restarts(&self) -> u32 {
+        <Restarted<T, D, F, N, NX, NY, NU, NT>>::restarts(self)
+    }
 }
 
 impl<T: Scalar, F, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
@@ -141,6 +159,11 @@ where
     type Error = RejectedSample;
 
     by_own_methods!(FilterObserver<T, F, NX, NY, NU, NT>);
+
+    #[inline(always)]
+    fn restarts(&self) -> u32 {
+        <FilterObserver<T, F, NX, NY, NU, NT>>::restarts(self)
+    }
 }
 
 impl<T: Scalar, H, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
@@ -155,6 +178,11 @@ where
     type Error = RejectedSample;
 
     by_own_methods!(crate::mhe::Observer<T, H, N, NX, NY, NU, NT>);
+
+    #[inline(always)]
+    fn restarts(&self) -> u32 {
+        <crate::mhe::Observer<T, H, N, NX, NY, NU, NT>>::restarts(self)
+    }
 }
 
 impl<D, const N: usize, const NY: usize, const NU: usize, const NT: usize> Estimator

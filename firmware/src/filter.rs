@@ -1,7 +1,7 @@
 //! A Kalman filter that `gen` wrote out for a design (one of its Kalman filters, from the centre of the state
 //! box or the start the spec fixes) with the interface every observer has: [`FilterObserver`].
 
-use crate::rules::Refusals;
+use crate::rules::{Refusals, Refused};
 use crate::{Estimate, RejectedSample, Saturation, Scalar};
 
 /// A filter written out by `gen` (a generated design's `Ekf`, say): its state and covariance,
@@ -11,8 +11,9 @@ pub trait Filter<T, const NX: usize, const NY: usize, const NU: usize, const NT:
     const FRESH: Self;
 
     /// Takes the sample `(y, u)`: the estimate given it, `x̂(k|k)`, or the refusal of a sample that
-    /// is not finite or whose result is not (the filter then predicts, or keeps, its state).
-    fn push(&mut self, y: &[T; NY], u: &[T; NU]) -> Result<[T; NX], RejectedSample>;
+    /// is not finite (the filter then predicts, or keeps, its state), or the restart of a filter
+    /// whose result is not ([`crate::rules::filter_sample`]).
+    fn push(&mut self, y: &[T; NY], u: &[T; NU]) -> Result<[T; NX], Refused>;
 
     /// The targets at state `x` and input `u`.
     fn targets(x: &[T; NX], u: &[T; NU]) -> [T; NT];
@@ -21,7 +22,7 @@ pub trait Filter<T, const NX: usize, const NY: usize, const NU: usize, const NT:
 /// The filter `F` of a design with the observers' interface: `push` takes a sample, `estimate` gives
 /// the targets of the latest accepted one (each `Inside`: the filter does not saturate), `reset`
 /// starts again. It has an estimate from the first accepted sample on; a refused sample keeps the
-/// previous one. `NT` targets from `NY` outputs and `NU` inputs, `NX` states.
+/// previous one, and so does a sample on which the filter restarted ([`restarts`](Self::restarts)). `NT` targets from `NY` outputs and `NU` inputs, `NX` states.
 ///
 /// Generated designs name it per filter, after the filter's kind (`generated::for_each_observer!`
 /// lists each design's kinds and types).
@@ -80,10 +81,17 @@ where
         self.latest.is_some()
     }
 
-    /// Samples refused since the start (see [`crate::rules::Refusals`]).
+    /// Samples refused for a bad value since the start (see [`crate::rules::Refusals`]).
     #[must_use]
     pub fn refused(&self) -> u32 {
         self.refusals.get()
+    }
+
+    /// Restarts of the filter since the start: samples with finite values whose step was not finite
+    /// (see [`crate::rules::Refusals`]).
+    #[must_use]
+    pub fn restarts(&self) -> u32 {
+        self.refusals.restarts()
     }
 
     /// The filter as it is now (its state and covariance).

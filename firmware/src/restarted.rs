@@ -1,11 +1,12 @@
-//! A filter from the centre of the state box that checks the map once and restarts from it when the
-//! two disagree: the EKF's convergence from a good start, the map's guess-free start from a bad one.
+//! A filter from the centre of the state box that the map watches and restarts: the EKF's
+//! convergence from a good start, the map's guess-free estimate whenever the filter loses track.
 //!
 //! An EKF started at the box centre converges fast and far when the plant starts near it, and slowly
-//! (or to a wrong branch) from a corner; the map `F(Z)` needs no initial guess but forgets everything
-//! older than `N` samples. [`Restarted`] runs the filter from the first sample (estimates from the
-//! first accepted sample on) and, at the map's first estimate (the `N`-th accepted sample), compares
-//! the filter's prediction `x̂(k|k−1)`, with its covariance `P(k|k−1)`, to the map's states:
+//! (or to a wrong branch) from a corner, and a filter may lose track later on (a wrong branch, a
+//! bound); the map `F(Z)` needs no initial guess but forgets everything older than `N` samples.
+//! [`Restarted`] runs the filter from the first sample (estimates from the first accepted sample on)
+//! and, at every accepted sample from the map's first estimate (the `N`-th) on, compares the
+//! filter's prediction `x̂(k|k−1)`, with its covariance `P(k|k−1)`, to the map's states:
 //!
 //! ```text
 //! d = Σ_i (x̂_i − F_i)² / (P_ii + e_i²)        e_i²: the map's mean squared error of state i
@@ -14,19 +15,20 @@
 //! ```
 //!
 //! `d` is the χ²-like distance of two independent estimates of one state; the threshold `τ` is the
-//! host's, chosen on the tuning runs. The check runs once: afterwards the map is not read and the
-//! window not fed, so every later accepted sample runs the filter's instructions alone.
+//! host's, chosen on the tuning runs. The check runs at every sample, so every accepted sample from
+//! the `N`-th on runs the same instructions: the window, the map, the distance, the filter. A step
+//! whose result is not finite restarts the filter too, from the map where it has an estimate.
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(d <= τ)` is deliberate: a NaN distance restarts.
 
 use core::marker::PhantomData;
 
-use crate::rules::{Refusals, RestartedRule};
+use crate::rules::{Given, Refusals, Refused, RestartedRule};
 use crate::started::{states_of, targets_of};
 use crate::window::{Sample, Window};
 use crate::{Design, Estimate, Follower, RejectedSample, Scalar};
 
-/// A [`Follower`] that can also start without the map and check the map once.
+/// A [`Follower`] that can also start without the map and be checked against it.
 ///
 /// Its `follow` is called with `j = 1`, `start_up = false` and zeros for the map (it reads none of
 /// them: `START_UP` is 0 and `STEADY_READS_MAP` false); `start` is its restart from the map.
@@ -37,18 +39,19 @@ pub trait Restart<T: Scalar, const NX: usize, const NY: usize, const NU: usize, 
     /// constant, so that an observer can be a `static`'s initial value.
     const FRESH: Self::Carried;
 
-    /// Whether `carried` (the prediction to the map's first sample) and the map's states `map`
-    /// disagree so much that the filter restarts from the map; a NaN distance must say yes.
+    /// Whether `carried` (the prediction to the sample) and the map's states `map` disagree so much
+    /// that the filter restarts from the map; a NaN distance must say yes.
     fn disagrees(carried: &Self::Carried, map: &[T; NX]) -> bool;
 }
 
-/// The filter `F` from the box centre, checked once against the map of design `D` (see the module's
-/// docs): `NT` targets from `NY` outputs and `NU` inputs, `NX` states, the map over `N` samples.
+/// The filter `F` from the box centre, watched by the map of design `D` (see the module's docs):
+/// `NT` targets from `NY` outputs and `NU` inputs, `NX` states, the map over `N` samples.
 ///
 /// A sample with a NaN or infinite value is refused: no estimate from it, the window does not take
 /// it, and the filter takes one period of its model when the input is finite ([`Follower::predict`]).
-/// A sample whose result is not finite (the model overflowed) is refused too and changes nothing; a
-/// restart whose start is not finite is not taken (the filter goes on).
+/// A sample whose result is not finite (the model overflowed) restarts the filter, from the map's
+/// estimate where it has one, else from the box centre ([`restarts`](Self::restarts) counts them);
+/// a restart whose start is not finite is not taken.
 pub struct Restarted<
     T: Scalar,
     D,
@@ -62,8 +65,7 @@ pub struct Restarted<
     F: Restart<T, NX, NY, NU, NT>,
 {
     window: Window<T, N, NY, NU>,
-    /// What the filter carries and whether the map has been checked (the window is then no longer
-    /// fed): [`crate::rules::RestartedRule`].
+    /// What the filter carries: [`crate::rules::RestartedRule`].
     rule: RestartedRule<F::Carried>,
     latest: Option<[Estimate<T>; NT]>,
     refusals: Refusals,
@@ -90,8 +92,8 @@ where
     }
 
     /// Takes the sample of the current instant: refused if it is not finite (see the module docs);
-    /// else, before the first check, fed to the map's window and checked once the window is full;
-    /// then the filter's sample, unless the check restarted it.
+    /// else fed to the map's window, checked against the map once the window is full, and the
+    /// filter's sample unless the check restarted it.
     #[inline]
     pub fn push(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
         let result = self.sample(y, u);
@@ -101,44 +103,26 @@ where
     /// [`push`](Self::push) but for the count of refusals: the shared rule over this design's map
     /// and filter.
     #[inline(always)]
-    fn sample(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
+    fn sample(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), Refused> {
         if !D::accepts(&y, &u) {
             self.lost(&u);
-            return Err(RejectedSample);
+            return Err(Refused::Value);
         }
-        if !self.rule.checked && self.check(y, u) {
-            return Ok(());
-        }
-        let states = self
-            .rule
-            .follow(|carried| F::follow(carried, 1, false, &[T::ZERO; NX], &y, &u))?;
-        self.latest = Some(targets_of::<T, F, NX, NY, NU, NT>(&states, &u));
-        Ok(())
-    }
-
-    /// The one check (see the module docs): the sample fed to the window and, once it is full, the
-    /// map's states compared with the filter's prediction. `true` when the filter restarted from the
-    /// map (this sample's estimate is then the map's). Out of line and cold: it runs for the first
-    /// `N` accepted samples only.
-    #[cold]
-    #[inline(never)]
-    fn check(&mut self, y: [T; NY], u: [T; NU]) -> bool {
-        let window = &mut self.window;
-        let restarted = self.rule.check(
-            || {
-                window.push(Sample { y, u });
-                window.samples().map(D::estimate)
-            },
+        self.window.push(Sample { y, u });
+        let map = self.window.samples().map(D::estimate);
+        let given = self.rule.accepted(
+            map,
             |carried, all| F::disagrees(carried, &states_of::<T, F, NX, NY, NU, NT>(all)),
             |all| F::start(&states_of::<T, F, NX, NY, NU, NT>(all), &u),
-        );
-        match restarted {
-            Some(all) => {
-                self.latest = Some(all);
-                true
-            }
-            None => false,
-        }
+            |carried| F::follow(carried, 1, false, &[T::ZERO; NX], &y, &u),
+            || F::FRESH,
+        )?;
+        self.latest = Some(match given {
+            Given::Map(all) => all,
+            Given::Followed(states) => targets_of::<T, F, NX, NY, NU, NT>(&states, &u),
+            Given::Nothing => return Ok(()), // not given by this rule
+        });
+        Ok(())
     }
 
     /// Over a refused sample: the output is lost, not the time (see [`crate::Started`]). Out of line
@@ -150,10 +134,17 @@ where
             .lost(u.iter().all(|v| v.is_finite()), |carried| F::predict(carried, u));
     }
 
-    /// Samples refused since the start (see [`crate::rules::Refusals`]).
+    /// Samples refused for a bad value since the start (see [`crate::rules::Refusals`]).
     #[must_use]
     pub fn refused(&self) -> u32 {
         self.refusals.get()
+    }
+
+    /// Restarts of the filter since the start whose step was not finite (see
+    /// [`crate::rules::Refusals`]); restarts on the map's check are its usual work, not counted.
+    #[must_use]
+    pub fn restarts(&self) -> u32 {
+        self.refusals.restarts()
     }
 
     /// The latest estimate, one per target, or `None` before the first accepted sample.
@@ -172,12 +163,6 @@ where
     #[must_use]
     pub fn is_ready(&self) -> bool {
         self.latest.is_some()
-    }
-
-    /// Whether the map has been checked (`N` samples accepted).
-    #[must_use]
-    pub fn is_checked(&self) -> bool {
-        self.rule.checked
     }
 }
 
@@ -220,7 +205,6 @@ where
         f.debug_struct("Restarted")
             .field("design", &core::any::type_name::<D>())
             .field("filter", &core::any::type_name::<F>())
-            .field("checked", &self.rule.checked)
             .field("refused", &self.refusals)
             .field("latest", &self.latest)
             .finish()

@@ -19,7 +19,7 @@
 
 use core::marker::PhantomData;
 
-use crate::rules::{Given, Refusals, StartedRule};
+use crate::rules::{Given, Refusals, Refused, StartedRule};
 use crate::window::{Sample, Window};
 use crate::{Design, Estimate, RejectedSample, Saturation, Scalar};
 
@@ -139,8 +139,10 @@ fn select<V>(condition: bool, a: V, b: V) -> V {
 /// sample runs the same instructions. A sample with a NaN or infinite value is refused: it gives no
 /// estimate and the map's window does not take it, but once started, a refused sample whose input
 /// is finite still takes one period of the model ([`Follower::predict`]), so that what is carried
-/// stays in step with the plant. A sample whose follow-up is not finite (the model overflowed) is
-/// refused too, and only the map's window keeps it.
+/// stays in step with the plant. A sample with finite values whose start or follow-up is not finite
+/// (the model overflowed) restarts the observer: no estimate from it, the window emptied, and the
+/// map's next estimate starts the follower again ([`restarts`](Self::restarts) counts them; the
+/// latest estimate stays until then).
 pub struct Started<T: Scalar, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize>
 where
     F: Follower<T, NX, NY, NU, NT>,
@@ -182,10 +184,10 @@ where
     /// [`push`](Self::push) but for the count of refusals: the shared rule over this design's map
     /// and follower.
     #[inline(always)]
-    fn sample(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), RejectedSample> {
+    fn sample(&mut self, y: [T; NY], u: [T; NU]) -> Result<(), Refused> {
         if !D::accepts(&y, &u) {
             self.lost(&u);
-            return Err(RejectedSample);
+            return Err(Refused::Value);
         }
         let mut all = None;
         if self.rule.reads_map(F::START_UP, F::STEADY_READS_MAP) {
@@ -203,7 +205,16 @@ where
                 let map = all.map_or([T::ZERO; NX], states_of::<T, F, NX, NY, NU, NT>);
                 F::follow(carried, j, start_up, &map, &y, &u)
             },
-        )?;
+        );
+        let given = match given {
+            Ok(given) => given,
+            Err(refused) => {
+                // Restarted: the map's next estimate starts the follower again, from a window it
+                // fills afresh (in steady state it may not have been fed).
+                self.window = Window::new();
+                return Err(refused);
+            }
+        };
         match given {
             Given::Nothing => {}
             Given::Map(all) => self.latest = Some(all),
@@ -226,6 +237,14 @@ where
     #[must_use]
     pub fn refused(&self) -> u32 {
         self.refusals.get()
+    }
+
+    /// Restarts of the follower since the start: samples with finite values whose start or
+    /// follow-up was not finite; each waits for the map's next estimate (see
+    /// [`crate::rules::StartedRule::accepted`]).
+    #[must_use]
+    pub fn restarts(&self) -> u32 {
+        self.refusals.restarts()
     }
 
     /// The latest estimate, one per target, or `None` before `N` samples have arrived.

@@ -2001,10 +2001,10 @@ static int ekf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
+
 static void ekf_box_fresh(ecoli_x0_0p5_ekf_box *o) {
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static ecoli_x0_0p5_status ekf_box_sample(ecoli_x0_0p5_ekf_box *o, const float *y, const float *u) {
@@ -2018,7 +2018,8 @@ static ecoli_x0_0p5_status ekf_box_sample(ecoli_x0_0p5_ekf_box *o, const float *
         return ECOLI_X0_0P5_REFUSED;
     }
     if (!ekf_measure(o->x, o->p, y, u, estimate)) {
-        return ECOLI_X0_0P5_REFUSED;
+        ekf_box_fresh(o);
+        return ECOLI_X0_0P5_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < ECOLI_X0_0P5_TARGETS; ++i) {
@@ -2030,13 +2031,17 @@ static ecoli_x0_0p5_status ekf_box_sample(ecoli_x0_0p5_ekf_box *o, const float *
 
 void ecoli_x0_0p5_ekf_box_init(ecoli_x0_0p5_ekf_box *o) {
     ekf_box_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 ecoli_x0_0p5_status ecoli_x0_0p5_ekf_box_push(ecoli_x0_0p5_ekf_box *o, const float *y, const float *u) {
     const ecoli_x0_0p5_status status = ekf_box_sample(o, y, u);
     if (status == ECOLI_X0_0P5_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == ECOLI_X0_0P5_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -4418,10 +4423,10 @@ static int ukf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
+
 static void ukf_box_fresh(ecoli_x0_0p5_ukf_box *o) {
     memcpy(o->x, UKF_X0, sizeof o->x);
     memcpy(o->p, UKF_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static ecoli_x0_0p5_status ukf_box_sample(ecoli_x0_0p5_ukf_box *o, const float *y, const float *u) {
@@ -4435,7 +4440,8 @@ static ecoli_x0_0p5_status ukf_box_sample(ecoli_x0_0p5_ukf_box *o, const float *
         return ECOLI_X0_0P5_REFUSED;
     }
     if (!ukf_measure(o->x, o->p, y, u, estimate)) {
-        return ECOLI_X0_0P5_REFUSED;
+        ukf_box_fresh(o);
+        return ECOLI_X0_0P5_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < ECOLI_X0_0P5_TARGETS; ++i) {
@@ -4447,13 +4453,17 @@ static ecoli_x0_0p5_status ukf_box_sample(ecoli_x0_0p5_ukf_box *o, const float *
 
 void ecoli_x0_0p5_ukf_box_init(ecoli_x0_0p5_ukf_box *o) {
     ukf_box_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 ecoli_x0_0p5_status ecoli_x0_0p5_ukf_box_push(ecoli_x0_0p5_ukf_box *o, const float *y, const float *u) {
     const ecoli_x0_0p5_status status = ukf_box_sample(o, y, u);
     if (status == ECOLI_X0_0P5_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == ECOLI_X0_0P5_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -4870,6 +4880,7 @@ void ecoli_x0_0p5_mhe_init(ecoli_x0_0p5_mhe *o) {
     o->filled = 0u;
     o->has_solved = 0;
     o->ready = 0;
+    o->restarts = 0u;
 }
 
 ecoli_x0_0p5_status ecoli_x0_0p5_mhe_push(ecoli_x0_0p5_mhe *o, const float *y, const float *u) {
@@ -4899,15 +4910,17 @@ ecoli_x0_0p5_status ecoli_x0_0p5_mhe_push(ecoli_x0_0p5_mhe *o, const float *y, c
         return ECOLI_X0_0P5_OK;
     }
     mhe_solve_window(o, has_moved ? moved : MHE_START, has_moved, x, end);
-    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX)) {
-        return ECOLI_X0_0P5_REFUSED;
+    targets(end, u, values);
+    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX) || !all_finite(values, ECOLI_X0_0P5_TARGETS)) {
+        /* Restarted: the next window is solved from the start, not from this solution. */
+        o->has_solved = 0;
+        if (o->restarts != UINT32_MAX) {
+            ++o->restarts;
+        }
+        return ECOLI_X0_0P5_RESTARTED;
     }
     memcpy(o->solved, x, sizeof x);
     o->has_solved = 1;
-    targets(end, u, values);
-    if (!all_finite(values, ECOLI_X0_0P5_TARGETS)) {
-        return ECOLI_X0_0P5_REFUSED;
-    }
     memcpy(o->values, values, sizeof values);
     for (i = 0u; i < ECOLI_X0_0P5_TARGETS; ++i) {
         o->flags[i] = ECOLI_X0_0P5_INSIDE;

@@ -30,15 +30,18 @@ extern "C" {
  * values as the Rust static library's c/include/ecoli_x0_0p5.h). */
 typedef enum {
     ECOLI_X0_0P5_OK = 0,
-    /* The sample was refused: a NaN or infinite value (or a filter step whose result is not
-     * finite); the latest estimate is unchanged. */
+    /* The sample was refused: a NaN or infinite value; the latest estimate is unchanged. */
     ECOLI_X0_0P5_REFUSED = 1,
     /* No estimate yet (the map: fewer than ECOLI_X0_0P5_HORIZON accepted samples since init). */
     ECOLI_X0_0P5_NO_ESTIMATE_YET = 2,
     /* The storage calls only: a null pointer, or storage too small or misaligned; nothing done. */
     ECOLI_X0_0P5_BAD_ARGUMENT = 3,
     /* The storage calls only: the storage holds no observer of this design. */
-    ECOLI_X0_0P5_NOT_INITIALISED = 4
+    ECOLI_X0_0P5_NOT_INITIALISED = 4,
+    /* The sample's values were finite but the observer's step was not: it restarted (a filter from
+     * its start or from the map, the moving-horizon estimate from its start); the latest estimate is
+     * unchanged. Counted in the observer's `restarts`. */
+    ECOLI_X0_0P5_RESTARTED = 5
 } ecoli_x0_0p5_status;
 
 /* Where an estimate lies against its range: inside, or held at its low or high end (the same
@@ -109,8 +112,10 @@ typedef struct {
     float values[ECOLI_X0_0P5_TARGETS];
     ecoli_x0_0p5_saturation flags[ECOLI_X0_0P5_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } ecoli_x0_0p5_ekf_box;
 
 void ecoli_x0_0p5_ekf_box_init(ecoli_x0_0p5_ekf_box *observer);
@@ -126,8 +131,10 @@ typedef struct {
     float values[ECOLI_X0_0P5_TARGETS];
     ecoli_x0_0p5_saturation flags[ECOLI_X0_0P5_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } ecoli_x0_0p5_ukf_box;
 
 void ecoli_x0_0p5_ukf_box_init(ecoli_x0_0p5_ukf_box *observer);
@@ -147,6 +154,9 @@ typedef struct {
     float values[ECOLI_X0_0P5_TARGETS];
     ecoli_x0_0p5_saturation flags[ECOLI_X0_0P5_TARGETS];
     int ready;
+    /* Restarts since init: samples whose solution was not finite (the next window is then solved
+     * from the start); saturates. */
+    uint32_t restarts;
 } ecoli_x0_0p5_mhe;
 
 void ecoli_x0_0p5_mhe_init(ecoli_x0_0p5_mhe *observer);

@@ -2894,10 +2894,10 @@ static int ekf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
+
 static void ekf_box_fresh(ecoli_x0_2_ekf_box *o) {
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static ecoli_x0_2_status ekf_box_sample(ecoli_x0_2_ekf_box *o, const float *y, const float *u) {
@@ -2911,7 +2911,8 @@ static ecoli_x0_2_status ekf_box_sample(ecoli_x0_2_ekf_box *o, const float *y, c
         return ECOLI_X0_2_REFUSED;
     }
     if (!ekf_measure(o->x, o->p, y, u, estimate)) {
-        return ECOLI_X0_2_REFUSED;
+        ekf_box_fresh(o);
+        return ECOLI_X0_2_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < ECOLI_X0_2_TARGETS; ++i) {
@@ -2923,13 +2924,17 @@ static ecoli_x0_2_status ekf_box_sample(ecoli_x0_2_ekf_box *o, const float *y, c
 
 void ecoli_x0_2_ekf_box_init(ecoli_x0_2_ekf_box *o) {
     ekf_box_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 ecoli_x0_2_status ecoli_x0_2_ekf_box_push(ecoli_x0_2_ekf_box *o, const float *y, const float *u) {
     const ecoli_x0_2_status status = ekf_box_sample(o, y, u);
     if (status == ECOLI_X0_2_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == ECOLI_X0_2_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -5311,10 +5316,10 @@ static int ukf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
+
 static void ukf_box_fresh(ecoli_x0_2_ukf_box *o) {
     memcpy(o->x, UKF_X0, sizeof o->x);
     memcpy(o->p, UKF_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static ecoli_x0_2_status ukf_box_sample(ecoli_x0_2_ukf_box *o, const float *y, const float *u) {
@@ -5328,7 +5333,8 @@ static ecoli_x0_2_status ukf_box_sample(ecoli_x0_2_ukf_box *o, const float *y, c
         return ECOLI_X0_2_REFUSED;
     }
     if (!ukf_measure(o->x, o->p, y, u, estimate)) {
-        return ECOLI_X0_2_REFUSED;
+        ukf_box_fresh(o);
+        return ECOLI_X0_2_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < ECOLI_X0_2_TARGETS; ++i) {
@@ -5340,13 +5346,17 @@ static ecoli_x0_2_status ukf_box_sample(ecoli_x0_2_ukf_box *o, const float *y, c
 
 void ecoli_x0_2_ukf_box_init(ecoli_x0_2_ukf_box *o) {
     ukf_box_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 ecoli_x0_2_status ecoli_x0_2_ukf_box_push(ecoli_x0_2_ukf_box *o, const float *y, const float *u) {
     const ecoli_x0_2_status status = ukf_box_sample(o, y, u);
     if (status == ECOLI_X0_2_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == ECOLI_X0_2_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -5763,6 +5773,7 @@ void ecoli_x0_2_mhe_init(ecoli_x0_2_mhe *o) {
     o->filled = 0u;
     o->has_solved = 0;
     o->ready = 0;
+    o->restarts = 0u;
 }
 
 ecoli_x0_2_status ecoli_x0_2_mhe_push(ecoli_x0_2_mhe *o, const float *y, const float *u) {
@@ -5792,15 +5803,17 @@ ecoli_x0_2_status ecoli_x0_2_mhe_push(ecoli_x0_2_mhe *o, const float *y, const f
         return ECOLI_X0_2_OK;
     }
     mhe_solve_window(o, has_moved ? moved : MHE_START, has_moved, x, end);
-    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX)) {
-        return ECOLI_X0_2_REFUSED;
+    targets(end, u, values);
+    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX) || !all_finite(values, ECOLI_X0_2_TARGETS)) {
+        /* Restarted: the next window is solved from the start, not from this solution. */
+        o->has_solved = 0;
+        if (o->restarts != UINT32_MAX) {
+            ++o->restarts;
+        }
+        return ECOLI_X0_2_RESTARTED;
     }
     memcpy(o->solved, x, sizeof x);
     o->has_solved = 1;
-    targets(end, u, values);
-    if (!all_finite(values, ECOLI_X0_2_TARGETS)) {
-        return ECOLI_X0_2_REFUSED;
-    }
     memcpy(o->values, values, sizeof values);
     for (i = 0u; i < ECOLI_X0_2_TARGETS; ++i) {
         o->flags[i] = ECOLI_X0_2_INSIDE;

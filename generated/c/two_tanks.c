@@ -1684,10 +1684,10 @@ static int ekf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
+
 static void ekf_box_fresh(two_tanks_ekf_box *o) {
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static two_tanks_status ekf_box_sample(two_tanks_ekf_box *o, const float *y, const float *u) {
@@ -1701,7 +1701,8 @@ static two_tanks_status ekf_box_sample(two_tanks_ekf_box *o, const float *y, con
         return TWO_TANKS_REFUSED;
     }
     if (!ekf_measure(o->x, o->p, y, u, estimate)) {
-        return TWO_TANKS_REFUSED;
+        ekf_box_fresh(o);
+        return TWO_TANKS_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < TWO_TANKS_TARGETS; ++i) {
@@ -1713,13 +1714,17 @@ static two_tanks_status ekf_box_sample(two_tanks_ekf_box *o, const float *y, con
 
 void two_tanks_ekf_box_init(two_tanks_ekf_box *o) {
     ekf_box_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 two_tanks_status two_tanks_ekf_box_push(two_tanks_ekf_box *o, const float *y, const float *u) {
     const two_tanks_status status = ekf_box_sample(o, y, u);
     if (status == TWO_TANKS_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == TWO_TANKS_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2543,10 +2548,10 @@ static int ukf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
+
 static void ukf_box_fresh(two_tanks_ukf_box *o) {
     memcpy(o->x, UKF_X0, sizeof o->x);
     memcpy(o->p, UKF_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static two_tanks_status ukf_box_sample(two_tanks_ukf_box *o, const float *y, const float *u) {
@@ -2560,7 +2565,8 @@ static two_tanks_status ukf_box_sample(two_tanks_ukf_box *o, const float *y, con
         return TWO_TANKS_REFUSED;
     }
     if (!ukf_measure(o->x, o->p, y, u, estimate)) {
-        return TWO_TANKS_REFUSED;
+        ukf_box_fresh(o);
+        return TWO_TANKS_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < TWO_TANKS_TARGETS; ++i) {
@@ -2572,13 +2578,17 @@ static two_tanks_status ukf_box_sample(two_tanks_ukf_box *o, const float *y, con
 
 void two_tanks_ukf_box_init(two_tanks_ukf_box *o) {
     ukf_box_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 two_tanks_status two_tanks_ukf_box_push(two_tanks_ukf_box *o, const float *y, const float *u) {
     const two_tanks_status status = ukf_box_sample(o, y, u);
     if (status == TWO_TANKS_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == TWO_TANKS_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2887,12 +2897,12 @@ static void corrected_lost(float *x, const float *u) {
     (void)corrected_start(x, u, x);
 }
 
+
 static void corrected_fresh(two_tanks_corrected *o) {
     two_tanks_map_init(&o->window);
     memset(o->x, 0, sizeof o->x);
     o->count = 0u;
     o->started = 0;
-    o->ready = 0;
 }
 
 static two_tanks_status corrected_sample(two_tanks_corrected *o, const float *y, const float *u) {
@@ -2918,14 +2928,16 @@ static two_tanks_status corrected_sample(two_tanks_corrected *o, const float *y,
     }
     if (!o->started && estimated) {
         if (!corrected_start(map, u, o->x)) {
-            return TWO_TANKS_REFUSED;
+            corrected_fresh(o);
+            return TWO_TANKS_RESTARTED;
         }
         o->started = 1;
         memcpy(o->values, all, sizeof all);
         memcpy(o->flags, all_flags, sizeof all_flags);
     } else if (o->started) {
         if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
-            return TWO_TANKS_REFUSED;
+            corrected_fresh(o);
+            return TWO_TANKS_RESTARTED;
         }
         corrected_targets_of(states, state_flags, u, o->values, o->flags);
     } else {
@@ -2938,13 +2950,17 @@ static two_tanks_status corrected_sample(two_tanks_corrected *o, const float *y,
 
 void two_tanks_corrected_init(two_tanks_corrected *o) {
     corrected_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 two_tanks_status two_tanks_corrected_push(two_tanks_corrected *o, const float *y, const float *u) {
     const two_tanks_status status = corrected_sample(o, y, u);
     if (status == TWO_TANKS_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == TWO_TANKS_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -3004,13 +3020,13 @@ static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, cons
     return ekf_measure(x, p, y, u, states);
 }
 
+
 static void ekf_map_fresh(two_tanks_ekf_map *o) {
     two_tanks_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
     o->count = 0u;
     o->started = 0;
-    o->ready = 0;
 }
 
 static two_tanks_status ekf_map_sample(two_tanks_ekf_map *o, const float *y, const float *u) {
@@ -3036,14 +3052,16 @@ static two_tanks_status ekf_map_sample(two_tanks_ekf_map *o, const float *y, con
     }
     if (!o->started && estimated) {
         if (!started_ekf_start(map, u, o->x, o->p)) {
-            return TWO_TANKS_REFUSED;
+            ekf_map_fresh(o);
+            return TWO_TANKS_RESTARTED;
         }
         o->started = 1;
         memcpy(o->values, all, sizeof all);
         memcpy(o->flags, all_flags, sizeof all_flags);
     } else if (o->started) {
         if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
-            return TWO_TANKS_REFUSED;
+            ekf_map_fresh(o);
+            return TWO_TANKS_RESTARTED;
         }
         started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     } else {
@@ -3056,13 +3074,17 @@ static two_tanks_status ekf_map_sample(two_tanks_ekf_map *o, const float *y, con
 
 void two_tanks_ekf_map_init(two_tanks_ekf_map *o) {
     ekf_map_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 two_tanks_status two_tanks_ekf_map_push(two_tanks_ekf_map *o, const float *y, const float *u) {
     const two_tanks_status status = ekf_map_sample(o, y, u);
     if (status == TWO_TANKS_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == TWO_TANKS_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -3085,51 +3107,47 @@ static int restart_disagrees(const float *x, const float *p, const float *f) {
     d += e * e / (p[0] + 0.118711874f);
     e = x[1] - f[1];
     d += e * e / (p[2] + 0.010944762f);
-    return !(d <= 8.0f);
-}
-
-/* Restarted::check, at the map's first estimate: 1 when the filter restarted from the map. */
-static int restart_check(two_tanks_ekf_restart *o, const float *y, const float *u) {
-    float all[TWO_TANKS_TARGETS], map[TWO_TANKS_STATES];
-    two_tanks_saturation all_flags[TWO_TANKS_TARGETS];
-    (void)two_tanks_map_push(&o->window, y, u);
-    if (o->window.filled < TWO_TANKS_HORIZON) {
-        return 0;
-    }
-    o->checked = 1;
-    (void)two_tanks_map_estimate(&o->window, all, all_flags);
-    started_ekf_map_states(all, map);
-    if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
-        return 0;
-    }
-    memcpy(o->values, all, sizeof all);
-    memcpy(o->flags, all_flags, sizeof all_flags);
-    o->ready = 1;
-    return 1;
+    return !(d <= 4.0f);
 }
 
 static void ekf_restart_fresh(two_tanks_ekf_restart *o) {
     two_tanks_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
-    o->checked = 0;
-    o->ready = 0;
 }
 
+/* firmware::Restarted: the sample to the map's window; from its first estimate on, the map's states
+ * against the filter's prediction at every sample, restarted from the map when they disagree;
+ * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
+ * when its step is not finite. */
 static two_tanks_status ekf_restart_sample(two_tanks_ekf_restart *o, const float *y, const float *u) {
-    float states[TWO_TANKS_STATES];
-    two_tanks_saturation state_flags[TWO_TANKS_STATES];
+    float all[TWO_TANKS_TARGETS], map[TWO_TANKS_STATES], states[TWO_TANKS_STATES];
+    two_tanks_saturation all_flags[TWO_TANKS_TARGETS], state_flags[TWO_TANKS_STATES];
+    int mapped = 0;
     if (!accepts(y, u)) {
         if (inputs_finite(u)) {
             ekf_predict(o->x, o->p, u);
         }
         return TWO_TANKS_REFUSED;
     }
-    if (!o->checked && restart_check(o, y, u)) {
-        return TWO_TANKS_OK;
+    (void)two_tanks_map_push(&o->window, y, u);
+    if (o->window.filled >= TWO_TANKS_HORIZON) {
+        (void)two_tanks_map_estimate(&o->window, all, all_flags);
+        started_ekf_map_states(all, map);
+        mapped = 1;
+        if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p)) {
+            memcpy(o->values, all, sizeof all);
+            memcpy(o->flags, all_flags, sizeof all_flags);
+            o->ready = 1;
+            return TWO_TANKS_OK;
+        }
     }
     if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
-        return TWO_TANKS_REFUSED;
+        if (!(mapped && started_ekf_start(map, u, o->x, o->p))) {
+            memcpy(o->x, EKF_X0, sizeof o->x);
+            memcpy(o->p, EKF_P0, sizeof o->p);
+        }
+        return TWO_TANKS_RESTARTED;
     }
     started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     o->ready = 1;
@@ -3138,13 +3156,17 @@ static two_tanks_status ekf_restart_sample(two_tanks_ekf_restart *o, const float
 
 void two_tanks_ekf_restart_init(two_tanks_ekf_restart *o) {
     ekf_restart_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 two_tanks_status two_tanks_ekf_restart_push(two_tanks_ekf_restart *o, const float *y, const float *u) {
     const two_tanks_status status = ekf_restart_sample(o, y, u);
     if (status == TWO_TANKS_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == TWO_TANKS_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -3472,6 +3494,7 @@ void two_tanks_mhe_init(two_tanks_mhe *o) {
     o->filled = 0u;
     o->has_solved = 0;
     o->ready = 0;
+    o->restarts = 0u;
 }
 
 two_tanks_status two_tanks_mhe_push(two_tanks_mhe *o, const float *y, const float *u) {
@@ -3505,15 +3528,17 @@ two_tanks_status two_tanks_mhe_push(two_tanks_mhe *o, const float *y, const floa
         return TWO_TANKS_OK;
     }
     mhe_solve_window(o, has_moved ? moved : MHE_START, has_moved, x, end);
-    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX)) {
-        return TWO_TANKS_REFUSED;
+    targets(end, u, values);
+    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX) || !all_finite(values, TWO_TANKS_TARGETS)) {
+        /* Restarted: the next window is solved from the start, not from this solution. */
+        o->has_solved = 0;
+        if (o->restarts != UINT32_MAX) {
+            ++o->restarts;
+        }
+        return TWO_TANKS_RESTARTED;
     }
     memcpy(o->solved, x, sizeof x);
     o->has_solved = 1;
-    targets(end, u, values);
-    if (!all_finite(values, TWO_TANKS_TARGETS)) {
-        return TWO_TANKS_REFUSED;
-    }
     memcpy(o->values, values, sizeof values);
     for (i = 0u; i < TWO_TANKS_TARGETS; ++i) {
         o->flags[i] = TWO_TANKS_INSIDE;

@@ -30,15 +30,18 @@ extern "C" {
  * values as the Rust static library's c/include/two_tanks.h). */
 typedef enum {
     TWO_TANKS_OK = 0,
-    /* The sample was refused: a NaN or infinite value (or a filter step whose result is not
-     * finite); the latest estimate is unchanged. */
+    /* The sample was refused: a NaN or infinite value; the latest estimate is unchanged. */
     TWO_TANKS_REFUSED = 1,
     /* No estimate yet (the map: fewer than TWO_TANKS_HORIZON accepted samples since init). */
     TWO_TANKS_NO_ESTIMATE_YET = 2,
     /* The storage calls only: a null pointer, or storage too small or misaligned; nothing done. */
     TWO_TANKS_BAD_ARGUMENT = 3,
     /* The storage calls only: the storage holds no observer of this design. */
-    TWO_TANKS_NOT_INITIALISED = 4
+    TWO_TANKS_NOT_INITIALISED = 4,
+    /* The sample's values were finite but the observer's step was not: it restarted (a filter from
+     * its start or from the map, the moving-horizon estimate from its start); the latest estimate is
+     * unchanged. Counted in the observer's `restarts`. */
+    TWO_TANKS_RESTARTED = 5
 } two_tanks_status;
 
 /* Where an estimate lies against its range: inside, or held at its low or high end (the same
@@ -111,8 +114,10 @@ typedef struct {
     float values[TWO_TANKS_TARGETS];
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } two_tanks_ekf_box;
 
 void two_tanks_ekf_box_init(two_tanks_ekf_box *observer);
@@ -128,8 +133,10 @@ typedef struct {
     float values[TWO_TANKS_TARGETS];
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } two_tanks_ukf_box;
 
 void two_tanks_ukf_box_init(two_tanks_ukf_box *observer);
@@ -147,8 +154,10 @@ typedef struct {
     float values[TWO_TANKS_TARGETS];
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } two_tanks_corrected;
 
 void two_tanks_corrected_init(two_tanks_corrected *observer);
@@ -165,26 +174,29 @@ typedef struct {
     float values[TWO_TANKS_TARGETS];
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } two_tanks_ekf_map;
 
 void two_tanks_ekf_map_init(two_tanks_ekf_map *observer);
 two_tanks_status two_tanks_ekf_map_push(two_tanks_ekf_map *observer, const float *y, const float *u);
 two_tanks_status two_tanks_ekf_map_estimate(const two_tanks_ekf_map *observer, float *values, two_tanks_saturation *saturation);
 
-/* The EKF from the box centre that checks the map once, at its first estimate, and restarts
- * from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
+/* The EKF from the box centre that the map watches at every sample from its first estimate on,
+ * restarted from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
 typedef struct {
     two_tanks_map window;
     float x[TWO_TANKS_STATES];
     float p[TWO_TANKS_COVARIANCE];
-    int checked;
     float values[TWO_TANKS_TARGETS];
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } two_tanks_ekf_restart;
 
 void two_tanks_ekf_restart_init(two_tanks_ekf_restart *observer);
@@ -205,6 +217,9 @@ typedef struct {
     float values[TWO_TANKS_TARGETS];
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
     int ready;
+    /* Restarts since init: samples whose solution was not finite (the next window is then solved
+     * from the start); saturates. */
+    uint32_t restarts;
 } two_tanks_mhe;
 
 void two_tanks_mhe_init(two_tanks_mhe *observer);

@@ -940,10 +940,10 @@ static int ekf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
+
 static void ekf_box_fresh(vanderpol_ekf_box *o) {
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static vanderpol_status ekf_box_sample(vanderpol_ekf_box *o, const float *y, const float *u) {
@@ -957,7 +957,8 @@ static vanderpol_status ekf_box_sample(vanderpol_ekf_box *o, const float *y, con
         return VANDERPOL_REFUSED;
     }
     if (!ekf_measure(o->x, o->p, y, u, estimate)) {
-        return VANDERPOL_REFUSED;
+        ekf_box_fresh(o);
+        return VANDERPOL_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < VANDERPOL_TARGETS; ++i) {
@@ -969,13 +970,17 @@ static vanderpol_status ekf_box_sample(vanderpol_ekf_box *o, const float *y, con
 
 void vanderpol_ekf_box_init(vanderpol_ekf_box *o) {
     ekf_box_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_status vanderpol_ekf_box_push(vanderpol_ekf_box *o, const float *y, const float *u) {
     const vanderpol_status status = ekf_box_sample(o, y, u);
     if (status == VANDERPOL_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -1683,10 +1688,10 @@ static int ukf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
+
 static void ukf_box_fresh(vanderpol_ukf_box *o) {
     memcpy(o->x, UKF_X0, sizeof o->x);
     memcpy(o->p, UKF_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static vanderpol_status ukf_box_sample(vanderpol_ukf_box *o, const float *y, const float *u) {
@@ -1700,7 +1705,8 @@ static vanderpol_status ukf_box_sample(vanderpol_ukf_box *o, const float *y, con
         return VANDERPOL_REFUSED;
     }
     if (!ukf_measure(o->x, o->p, y, u, estimate)) {
-        return VANDERPOL_REFUSED;
+        ukf_box_fresh(o);
+        return VANDERPOL_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < VANDERPOL_TARGETS; ++i) {
@@ -1712,13 +1718,17 @@ static vanderpol_status ukf_box_sample(vanderpol_ukf_box *o, const float *y, con
 
 void vanderpol_ukf_box_init(vanderpol_ukf_box *o) {
     ukf_box_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_status vanderpol_ukf_box_push(vanderpol_ukf_box *o, const float *y, const float *u) {
     const vanderpol_status status = ukf_box_sample(o, y, u);
     if (status == VANDERPOL_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2001,12 +2011,12 @@ static void corrected_lost(float *x, const float *u) {
     (void)corrected_start(x, u, x);
 }
 
+
 static void corrected_fresh(vanderpol_corrected *o) {
     vanderpol_map_init(&o->window);
     memset(o->x, 0, sizeof o->x);
     o->count = 0u;
     o->started = 0;
-    o->ready = 0;
 }
 
 static vanderpol_status corrected_sample(vanderpol_corrected *o, const float *y, const float *u) {
@@ -2032,14 +2042,16 @@ static vanderpol_status corrected_sample(vanderpol_corrected *o, const float *y,
     }
     if (!o->started && estimated) {
         if (!corrected_start(map, u, o->x)) {
-            return VANDERPOL_REFUSED;
+            corrected_fresh(o);
+            return VANDERPOL_RESTARTED;
         }
         o->started = 1;
         memcpy(o->values, all, sizeof all);
         memcpy(o->flags, all_flags, sizeof all_flags);
     } else if (o->started) {
         if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
-            return VANDERPOL_REFUSED;
+            corrected_fresh(o);
+            return VANDERPOL_RESTARTED;
         }
         corrected_targets_of(states, state_flags, u, o->values, o->flags);
     } else {
@@ -2052,13 +2064,17 @@ static vanderpol_status corrected_sample(vanderpol_corrected *o, const float *y,
 
 void vanderpol_corrected_init(vanderpol_corrected *o) {
     corrected_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_status vanderpol_corrected_push(vanderpol_corrected *o, const float *y, const float *u) {
     const vanderpol_status status = corrected_sample(o, y, u);
     if (status == VANDERPOL_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2118,13 +2134,13 @@ static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, cons
     return ekf_measure(x, p, y, u, states);
 }
 
+
 static void ekf_map_fresh(vanderpol_ekf_map *o) {
     vanderpol_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
     o->count = 0u;
     o->started = 0;
-    o->ready = 0;
 }
 
 static vanderpol_status ekf_map_sample(vanderpol_ekf_map *o, const float *y, const float *u) {
@@ -2150,14 +2166,16 @@ static vanderpol_status ekf_map_sample(vanderpol_ekf_map *o, const float *y, con
     }
     if (!o->started && estimated) {
         if (!started_ekf_start(map, u, o->x, o->p)) {
-            return VANDERPOL_REFUSED;
+            ekf_map_fresh(o);
+            return VANDERPOL_RESTARTED;
         }
         o->started = 1;
         memcpy(o->values, all, sizeof all);
         memcpy(o->flags, all_flags, sizeof all_flags);
     } else if (o->started) {
         if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
-            return VANDERPOL_REFUSED;
+            ekf_map_fresh(o);
+            return VANDERPOL_RESTARTED;
         }
         started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     } else {
@@ -2170,13 +2188,17 @@ static vanderpol_status ekf_map_sample(vanderpol_ekf_map *o, const float *y, con
 
 void vanderpol_ekf_map_init(vanderpol_ekf_map *o) {
     ekf_map_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_status vanderpol_ekf_map_push(vanderpol_ekf_map *o, const float *y, const float *u) {
     const vanderpol_status status = ekf_map_sample(o, y, u);
     if (status == VANDERPOL_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2199,51 +2221,47 @@ static int restart_disagrees(const float *x, const float *p, const float *f) {
     d += e * e / (p[0] + 0.05544692f);
     e = x[1] - f[1];
     d += e * e / (p[2] + 0.07804465f);
-    return !(d <= 4.0f);
-}
-
-/* Restarted::check, at the map's first estimate: 1 when the filter restarted from the map. */
-static int restart_check(vanderpol_ekf_restart *o, const float *y, const float *u) {
-    float all[VANDERPOL_TARGETS], map[VANDERPOL_STATES];
-    vanderpol_saturation all_flags[VANDERPOL_TARGETS];
-    (void)vanderpol_map_push(&o->window, y, u);
-    if (o->window.filled < VANDERPOL_HORIZON) {
-        return 0;
-    }
-    o->checked = 1;
-    (void)vanderpol_map_estimate(&o->window, all, all_flags);
-    started_ekf_map_states(all, map);
-    if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
-        return 0;
-    }
-    memcpy(o->values, all, sizeof all);
-    memcpy(o->flags, all_flags, sizeof all_flags);
-    o->ready = 1;
-    return 1;
+    return !(d <= 16.0f);
 }
 
 static void ekf_restart_fresh(vanderpol_ekf_restart *o) {
     vanderpol_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
-    o->checked = 0;
-    o->ready = 0;
 }
 
+/* firmware::Restarted: the sample to the map's window; from its first estimate on, the map's states
+ * against the filter's prediction at every sample, restarted from the map when they disagree;
+ * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
+ * when its step is not finite. */
 static vanderpol_status ekf_restart_sample(vanderpol_ekf_restart *o, const float *y, const float *u) {
-    float states[VANDERPOL_STATES];
-    vanderpol_saturation state_flags[VANDERPOL_STATES];
+    float all[VANDERPOL_TARGETS], map[VANDERPOL_STATES], states[VANDERPOL_STATES];
+    vanderpol_saturation all_flags[VANDERPOL_TARGETS], state_flags[VANDERPOL_STATES];
+    int mapped = 0;
     if (!accepts(y, u)) {
         if (inputs_finite(u)) {
             ekf_predict(o->x, o->p, u);
         }
         return VANDERPOL_REFUSED;
     }
-    if (!o->checked && restart_check(o, y, u)) {
-        return VANDERPOL_OK;
+    (void)vanderpol_map_push(&o->window, y, u);
+    if (o->window.filled >= VANDERPOL_HORIZON) {
+        (void)vanderpol_map_estimate(&o->window, all, all_flags);
+        started_ekf_map_states(all, map);
+        mapped = 1;
+        if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p)) {
+            memcpy(o->values, all, sizeof all);
+            memcpy(o->flags, all_flags, sizeof all_flags);
+            o->ready = 1;
+            return VANDERPOL_OK;
+        }
     }
     if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
-        return VANDERPOL_REFUSED;
+        if (!(mapped && started_ekf_start(map, u, o->x, o->p))) {
+            memcpy(o->x, EKF_X0, sizeof o->x);
+            memcpy(o->p, EKF_P0, sizeof o->p);
+        }
+        return VANDERPOL_RESTARTED;
     }
     started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     o->ready = 1;
@@ -2252,13 +2270,17 @@ static vanderpol_status ekf_restart_sample(vanderpol_ekf_restart *o, const float
 
 void vanderpol_ekf_restart_init(vanderpol_ekf_restart *o) {
     ekf_restart_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_status vanderpol_ekf_restart_push(vanderpol_ekf_restart *o, const float *y, const float *u) {
     const vanderpol_status status = ekf_restart_sample(o, y, u);
     if (status == VANDERPOL_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2556,6 +2578,7 @@ void vanderpol_mhe_init(vanderpol_mhe *o) {
     o->filled = 0u;
     o->has_solved = 0;
     o->ready = 0;
+    o->restarts = 0u;
 }
 
 vanderpol_status vanderpol_mhe_push(vanderpol_mhe *o, const float *y, const float *u) {
@@ -2585,15 +2608,17 @@ vanderpol_status vanderpol_mhe_push(vanderpol_mhe *o, const float *y, const floa
         return VANDERPOL_OK;
     }
     mhe_solve_window(o, has_moved ? moved : MHE_START, has_moved, x, end);
-    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX)) {
-        return VANDERPOL_REFUSED;
+    targets(end, u, values);
+    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX) || !all_finite(values, VANDERPOL_TARGETS)) {
+        /* Restarted: the next window is solved from the start, not from this solution. */
+        o->has_solved = 0;
+        if (o->restarts != UINT32_MAX) {
+            ++o->restarts;
+        }
+        return VANDERPOL_RESTARTED;
     }
     memcpy(o->solved, x, sizeof x);
     o->has_solved = 1;
-    targets(end, u, values);
-    if (!all_finite(values, VANDERPOL_TARGETS)) {
-        return VANDERPOL_REFUSED;
-    }
     memcpy(o->values, values, sizeof values);
     for (i = 0u; i < VANDERPOL_TARGETS; ++i) {
         o->flags[i] = VANDERPOL_INSIDE;

@@ -30,15 +30,18 @@ extern "C" {
  * values as the Rust static library's c/include/vanderpol.h). */
 typedef enum {
     VANDERPOL_OK = 0,
-    /* The sample was refused: a NaN or infinite value (or a filter step whose result is not
-     * finite); the latest estimate is unchanged. */
+    /* The sample was refused: a NaN or infinite value; the latest estimate is unchanged. */
     VANDERPOL_REFUSED = 1,
     /* No estimate yet (the map: fewer than VANDERPOL_HORIZON accepted samples since init). */
     VANDERPOL_NO_ESTIMATE_YET = 2,
     /* The storage calls only: a null pointer, or storage too small or misaligned; nothing done. */
     VANDERPOL_BAD_ARGUMENT = 3,
     /* The storage calls only: the storage holds no observer of this design. */
-    VANDERPOL_NOT_INITIALISED = 4
+    VANDERPOL_NOT_INITIALISED = 4,
+    /* The sample's values were finite but the observer's step was not: it restarted (a filter from
+     * its start or from the map, the moving-horizon estimate from its start); the latest estimate is
+     * unchanged. Counted in the observer's `restarts`. */
+    VANDERPOL_RESTARTED = 5
 } vanderpol_status;
 
 /* Where an estimate lies against its range: inside, or held at its low or high end (the same
@@ -108,8 +111,10 @@ typedef struct {
     float values[VANDERPOL_TARGETS];
     vanderpol_saturation flags[VANDERPOL_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } vanderpol_ekf_box;
 
 void vanderpol_ekf_box_init(vanderpol_ekf_box *observer);
@@ -125,8 +130,10 @@ typedef struct {
     float values[VANDERPOL_TARGETS];
     vanderpol_saturation flags[VANDERPOL_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } vanderpol_ukf_box;
 
 void vanderpol_ukf_box_init(vanderpol_ukf_box *observer);
@@ -144,8 +151,10 @@ typedef struct {
     float values[VANDERPOL_TARGETS];
     vanderpol_saturation flags[VANDERPOL_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } vanderpol_corrected;
 
 void vanderpol_corrected_init(vanderpol_corrected *observer);
@@ -162,26 +171,29 @@ typedef struct {
     float values[VANDERPOL_TARGETS];
     vanderpol_saturation flags[VANDERPOL_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } vanderpol_ekf_map;
 
 void vanderpol_ekf_map_init(vanderpol_ekf_map *observer);
 vanderpol_status vanderpol_ekf_map_push(vanderpol_ekf_map *observer, const float *y, const float *u);
 vanderpol_status vanderpol_ekf_map_estimate(const vanderpol_ekf_map *observer, float *values, vanderpol_saturation *saturation);
 
-/* The EKF from the box centre that checks the map once, at its first estimate, and restarts
- * from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
+/* The EKF from the box centre that the map watches at every sample from its first estimate on,
+ * restarted from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
 typedef struct {
     vanderpol_map window;
     float x[VANDERPOL_STATES];
     float p[VANDERPOL_COVARIANCE];
-    int checked;
     float values[VANDERPOL_TARGETS];
     vanderpol_saturation flags[VANDERPOL_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } vanderpol_ekf_restart;
 
 void vanderpol_ekf_restart_init(vanderpol_ekf_restart *observer);
@@ -201,6 +213,9 @@ typedef struct {
     float values[VANDERPOL_TARGETS];
     vanderpol_saturation flags[VANDERPOL_TARGETS];
     int ready;
+    /* Restarts since init: samples whose solution was not finite (the next window is then solved
+     * from the start); saturates. */
+    uint32_t restarts;
 } vanderpol_mhe;
 
 void vanderpol_mhe_init(vanderpol_mhe *observer);

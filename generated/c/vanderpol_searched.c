@@ -788,10 +788,10 @@ static int ekf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
+
 static void ekf_box_fresh(vanderpol_searched_ekf_box *o) {
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static vanderpol_searched_status ekf_box_sample(vanderpol_searched_ekf_box *o, const float *y, const float *u) {
@@ -805,7 +805,8 @@ static vanderpol_searched_status ekf_box_sample(vanderpol_searched_ekf_box *o, c
         return VANDERPOL_SEARCHED_REFUSED;
     }
     if (!ekf_measure(o->x, o->p, y, u, estimate)) {
-        return VANDERPOL_SEARCHED_REFUSED;
+        ekf_box_fresh(o);
+        return VANDERPOL_SEARCHED_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < VANDERPOL_SEARCHED_TARGETS; ++i) {
@@ -817,13 +818,17 @@ static vanderpol_searched_status ekf_box_sample(vanderpol_searched_ekf_box *o, c
 
 void vanderpol_searched_ekf_box_init(vanderpol_searched_ekf_box *o) {
     ekf_box_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_searched_status vanderpol_searched_ekf_box_push(vanderpol_searched_ekf_box *o, const float *y, const float *u) {
     const vanderpol_searched_status status = ekf_box_sample(o, y, u);
     if (status == VANDERPOL_SEARCHED_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_SEARCHED_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -1531,10 +1536,10 @@ static int ukf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
+
 static void ukf_box_fresh(vanderpol_searched_ukf_box *o) {
     memcpy(o->x, UKF_X0, sizeof o->x);
     memcpy(o->p, UKF_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static vanderpol_searched_status ukf_box_sample(vanderpol_searched_ukf_box *o, const float *y, const float *u) {
@@ -1548,7 +1553,8 @@ static vanderpol_searched_status ukf_box_sample(vanderpol_searched_ukf_box *o, c
         return VANDERPOL_SEARCHED_REFUSED;
     }
     if (!ukf_measure(o->x, o->p, y, u, estimate)) {
-        return VANDERPOL_SEARCHED_REFUSED;
+        ukf_box_fresh(o);
+        return VANDERPOL_SEARCHED_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < VANDERPOL_SEARCHED_TARGETS; ++i) {
@@ -1560,13 +1566,17 @@ static vanderpol_searched_status ukf_box_sample(vanderpol_searched_ukf_box *o, c
 
 void vanderpol_searched_ukf_box_init(vanderpol_searched_ukf_box *o) {
     ukf_box_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_searched_status vanderpol_searched_ukf_box_push(vanderpol_searched_ukf_box *o, const float *y, const float *u) {
     const vanderpol_searched_status status = ukf_box_sample(o, y, u);
     if (status == VANDERPOL_SEARCHED_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_SEARCHED_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -1903,12 +1913,12 @@ static void corrected_lost(float *x, const float *u) {
     (void)corrected_start(x, u, x);
 }
 
+
 static void corrected_fresh(vanderpol_searched_corrected *o) {
     vanderpol_searched_map_init(&o->window);
     memset(o->x, 0, sizeof o->x);
     o->count = 0u;
     o->started = 0;
-    o->ready = 0;
 }
 
 static vanderpol_searched_status corrected_sample(vanderpol_searched_corrected *o, const float *y, const float *u) {
@@ -1934,14 +1944,16 @@ static vanderpol_searched_status corrected_sample(vanderpol_searched_corrected *
     }
     if (!o->started && estimated) {
         if (!corrected_start(map, u, o->x)) {
-            return VANDERPOL_SEARCHED_REFUSED;
+            corrected_fresh(o);
+            return VANDERPOL_SEARCHED_RESTARTED;
         }
         o->started = 1;
         memcpy(o->values, all, sizeof all);
         memcpy(o->flags, all_flags, sizeof all_flags);
     } else if (o->started) {
         if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
-            return VANDERPOL_SEARCHED_REFUSED;
+            corrected_fresh(o);
+            return VANDERPOL_SEARCHED_RESTARTED;
         }
         corrected_targets_of(states, state_flags, u, o->values, o->flags);
     } else {
@@ -1954,13 +1966,17 @@ static vanderpol_searched_status corrected_sample(vanderpol_searched_corrected *
 
 void vanderpol_searched_corrected_init(vanderpol_searched_corrected *o) {
     corrected_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_searched_status vanderpol_searched_corrected_push(vanderpol_searched_corrected *o, const float *y, const float *u) {
     const vanderpol_searched_status status = corrected_sample(o, y, u);
     if (status == VANDERPOL_SEARCHED_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_SEARCHED_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2020,13 +2036,13 @@ static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, cons
     return ekf_measure(x, p, y, u, states);
 }
 
+
 static void ekf_map_fresh(vanderpol_searched_ekf_map *o) {
     vanderpol_searched_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
     o->count = 0u;
     o->started = 0;
-    o->ready = 0;
 }
 
 static vanderpol_searched_status ekf_map_sample(vanderpol_searched_ekf_map *o, const float *y, const float *u) {
@@ -2052,14 +2068,16 @@ static vanderpol_searched_status ekf_map_sample(vanderpol_searched_ekf_map *o, c
     }
     if (!o->started && estimated) {
         if (!started_ekf_start(map, u, o->x, o->p)) {
-            return VANDERPOL_SEARCHED_REFUSED;
+            ekf_map_fresh(o);
+            return VANDERPOL_SEARCHED_RESTARTED;
         }
         o->started = 1;
         memcpy(o->values, all, sizeof all);
         memcpy(o->flags, all_flags, sizeof all_flags);
     } else if (o->started) {
         if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
-            return VANDERPOL_SEARCHED_REFUSED;
+            ekf_map_fresh(o);
+            return VANDERPOL_SEARCHED_RESTARTED;
         }
         started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     } else {
@@ -2072,13 +2090,17 @@ static vanderpol_searched_status ekf_map_sample(vanderpol_searched_ekf_map *o, c
 
 void vanderpol_searched_ekf_map_init(vanderpol_searched_ekf_map *o) {
     ekf_map_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_searched_status vanderpol_searched_ekf_map_push(vanderpol_searched_ekf_map *o, const float *y, const float *u) {
     const vanderpol_searched_status status = ekf_map_sample(o, y, u);
     if (status == VANDERPOL_SEARCHED_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_SEARCHED_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2101,51 +2123,47 @@ static int restart_disagrees(const float *x, const float *p, const float *f) {
     d += e * e / (p[0] + 0.013104776f);
     e = x[1] - f[1];
     d += e * e / (p[2] + 0.056179464f);
-    return !(d <= 8.0f);
-}
-
-/* Restarted::check, at the map's first estimate: 1 when the filter restarted from the map. */
-static int restart_check(vanderpol_searched_ekf_restart *o, const float *y, const float *u) {
-    float all[VANDERPOL_SEARCHED_TARGETS], map[VANDERPOL_SEARCHED_STATES];
-    vanderpol_searched_saturation all_flags[VANDERPOL_SEARCHED_TARGETS];
-    (void)vanderpol_searched_map_push(&o->window, y, u);
-    if (o->window.filled < VANDERPOL_SEARCHED_HORIZON) {
-        return 0;
-    }
-    o->checked = 1;
-    (void)vanderpol_searched_map_estimate(&o->window, all, all_flags);
-    started_ekf_map_states(all, map);
-    if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
-        return 0;
-    }
-    memcpy(o->values, all, sizeof all);
-    memcpy(o->flags, all_flags, sizeof all_flags);
-    o->ready = 1;
-    return 1;
+    return !(d <= 16.0f);
 }
 
 static void ekf_restart_fresh(vanderpol_searched_ekf_restart *o) {
     vanderpol_searched_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
-    o->checked = 0;
-    o->ready = 0;
 }
 
+/* firmware::Restarted: the sample to the map's window; from its first estimate on, the map's states
+ * against the filter's prediction at every sample, restarted from the map when they disagree;
+ * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
+ * when its step is not finite. */
 static vanderpol_searched_status ekf_restart_sample(vanderpol_searched_ekf_restart *o, const float *y, const float *u) {
-    float states[VANDERPOL_SEARCHED_STATES];
-    vanderpol_searched_saturation state_flags[VANDERPOL_SEARCHED_STATES];
+    float all[VANDERPOL_SEARCHED_TARGETS], map[VANDERPOL_SEARCHED_STATES], states[VANDERPOL_SEARCHED_STATES];
+    vanderpol_searched_saturation all_flags[VANDERPOL_SEARCHED_TARGETS], state_flags[VANDERPOL_SEARCHED_STATES];
+    int mapped = 0;
     if (!accepts(y, u)) {
         if (inputs_finite(u)) {
             ekf_predict(o->x, o->p, u);
         }
         return VANDERPOL_SEARCHED_REFUSED;
     }
-    if (!o->checked && restart_check(o, y, u)) {
-        return VANDERPOL_SEARCHED_OK;
+    (void)vanderpol_searched_map_push(&o->window, y, u);
+    if (o->window.filled >= VANDERPOL_SEARCHED_HORIZON) {
+        (void)vanderpol_searched_map_estimate(&o->window, all, all_flags);
+        started_ekf_map_states(all, map);
+        mapped = 1;
+        if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p)) {
+            memcpy(o->values, all, sizeof all);
+            memcpy(o->flags, all_flags, sizeof all_flags);
+            o->ready = 1;
+            return VANDERPOL_SEARCHED_OK;
+        }
     }
     if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
-        return VANDERPOL_SEARCHED_REFUSED;
+        if (!(mapped && started_ekf_start(map, u, o->x, o->p))) {
+            memcpy(o->x, EKF_X0, sizeof o->x);
+            memcpy(o->p, EKF_P0, sizeof o->p);
+        }
+        return VANDERPOL_SEARCHED_RESTARTED;
     }
     started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     o->ready = 1;
@@ -2154,13 +2172,17 @@ static vanderpol_searched_status ekf_restart_sample(vanderpol_searched_ekf_resta
 
 void vanderpol_searched_ekf_restart_init(vanderpol_searched_ekf_restart *o) {
     ekf_restart_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_searched_status vanderpol_searched_ekf_restart_push(vanderpol_searched_ekf_restart *o, const float *y, const float *u) {
     const vanderpol_searched_status status = ekf_restart_sample(o, y, u);
     if (status == VANDERPOL_SEARCHED_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_SEARCHED_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2458,6 +2480,7 @@ void vanderpol_searched_mhe_init(vanderpol_searched_mhe *o) {
     o->filled = 0u;
     o->has_solved = 0;
     o->ready = 0;
+    o->restarts = 0u;
 }
 
 vanderpol_searched_status vanderpol_searched_mhe_push(vanderpol_searched_mhe *o, const float *y, const float *u) {
@@ -2487,15 +2510,17 @@ vanderpol_searched_status vanderpol_searched_mhe_push(vanderpol_searched_mhe *o,
         return VANDERPOL_SEARCHED_OK;
     }
     mhe_solve_window(o, has_moved ? moved : MHE_START, has_moved, x, end);
-    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX)) {
-        return VANDERPOL_SEARCHED_REFUSED;
+    targets(end, u, values);
+    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX) || !all_finite(values, VANDERPOL_SEARCHED_TARGETS)) {
+        /* Restarted: the next window is solved from the start, not from this solution. */
+        o->has_solved = 0;
+        if (o->restarts != UINT32_MAX) {
+            ++o->restarts;
+        }
+        return VANDERPOL_SEARCHED_RESTARTED;
     }
     memcpy(o->solved, x, sizeof x);
     o->has_solved = 1;
-    targets(end, u, values);
-    if (!all_finite(values, VANDERPOL_SEARCHED_TARGETS)) {
-        return VANDERPOL_SEARCHED_REFUSED;
-    }
     memcpy(o->values, values, sizeof values);
     for (i = 0u; i < VANDERPOL_SEARCHED_TARGETS; ++i) {
         o->flags[i] = VANDERPOL_SEARCHED_INSIDE;

@@ -30,15 +30,18 @@ extern "C" {
  * values as the Rust static library's c/include/vanderpol_searched.h). */
 typedef enum {
     VANDERPOL_SEARCHED_OK = 0,
-    /* The sample was refused: a NaN or infinite value (or a filter step whose result is not
-     * finite); the latest estimate is unchanged. */
+    /* The sample was refused: a NaN or infinite value; the latest estimate is unchanged. */
     VANDERPOL_SEARCHED_REFUSED = 1,
     /* No estimate yet (the map: fewer than VANDERPOL_SEARCHED_HORIZON accepted samples since init). */
     VANDERPOL_SEARCHED_NO_ESTIMATE_YET = 2,
     /* The storage calls only: a null pointer, or storage too small or misaligned; nothing done. */
     VANDERPOL_SEARCHED_BAD_ARGUMENT = 3,
     /* The storage calls only: the storage holds no observer of this design. */
-    VANDERPOL_SEARCHED_NOT_INITIALISED = 4
+    VANDERPOL_SEARCHED_NOT_INITIALISED = 4,
+    /* The sample's values were finite but the observer's step was not: it restarted (a filter from
+     * its start or from the map, the moving-horizon estimate from its start); the latest estimate is
+     * unchanged. Counted in the observer's `restarts`. */
+    VANDERPOL_SEARCHED_RESTARTED = 5
 } vanderpol_searched_status;
 
 /* Where an estimate lies against its range: inside, or held at its low or high end (the same
@@ -108,8 +111,10 @@ typedef struct {
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } vanderpol_searched_ekf_box;
 
 void vanderpol_searched_ekf_box_init(vanderpol_searched_ekf_box *observer);
@@ -125,8 +130,10 @@ typedef struct {
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } vanderpol_searched_ukf_box;
 
 void vanderpol_searched_ukf_box_init(vanderpol_searched_ukf_box *observer);
@@ -144,8 +151,10 @@ typedef struct {
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } vanderpol_searched_corrected;
 
 void vanderpol_searched_corrected_init(vanderpol_searched_corrected *observer);
@@ -162,26 +171,29 @@ typedef struct {
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } vanderpol_searched_ekf_map;
 
 void vanderpol_searched_ekf_map_init(vanderpol_searched_ekf_map *observer);
 vanderpol_searched_status vanderpol_searched_ekf_map_push(vanderpol_searched_ekf_map *observer, const float *y, const float *u);
 vanderpol_searched_status vanderpol_searched_ekf_map_estimate(const vanderpol_searched_ekf_map *observer, float *values, vanderpol_searched_saturation *saturation);
 
-/* The EKF from the box centre that checks the map once, at its first estimate, and restarts
- * from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
+/* The EKF from the box centre that the map watches at every sample from its first estimate on,
+ * restarted from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
 typedef struct {
     vanderpol_searched_map window;
     float x[VANDERPOL_SEARCHED_STATES];
     float p[VANDERPOL_SEARCHED_COVARIANCE];
-    int checked;
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } vanderpol_searched_ekf_restart;
 
 void vanderpol_searched_ekf_restart_init(vanderpol_searched_ekf_restart *observer);
@@ -201,6 +213,9 @@ typedef struct {
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;
+    /* Restarts since init: samples whose solution was not finite (the next window is then solved
+     * from the start); saturates. */
+    uint32_t restarts;
 } vanderpol_searched_mhe;
 
 void vanderpol_searched_mhe_init(vanderpol_searched_mhe *observer);

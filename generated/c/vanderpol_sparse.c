@@ -738,10 +738,10 @@ static int ekf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
+
 static void ekf_box_fresh(vanderpol_sparse_ekf_box *o) {
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static vanderpol_sparse_status ekf_box_sample(vanderpol_sparse_ekf_box *o, const float *y, const float *u) {
@@ -755,7 +755,8 @@ static vanderpol_sparse_status ekf_box_sample(vanderpol_sparse_ekf_box *o, const
         return VANDERPOL_SPARSE_REFUSED;
     }
     if (!ekf_measure(o->x, o->p, y, u, estimate)) {
-        return VANDERPOL_SPARSE_REFUSED;
+        ekf_box_fresh(o);
+        return VANDERPOL_SPARSE_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < VANDERPOL_SPARSE_TARGETS; ++i) {
@@ -767,13 +768,17 @@ static vanderpol_sparse_status ekf_box_sample(vanderpol_sparse_ekf_box *o, const
 
 void vanderpol_sparse_ekf_box_init(vanderpol_sparse_ekf_box *o) {
     ekf_box_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_sparse_status vanderpol_sparse_ekf_box_push(vanderpol_sparse_ekf_box *o, const float *y, const float *u) {
     const vanderpol_sparse_status status = ekf_box_sample(o, y, u);
     if (status == VANDERPOL_SPARSE_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_SPARSE_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -1481,10 +1486,10 @@ static int ukf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
+
 static void ukf_box_fresh(vanderpol_sparse_ukf_box *o) {
     memcpy(o->x, UKF_X0, sizeof o->x);
     memcpy(o->p, UKF_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static vanderpol_sparse_status ukf_box_sample(vanderpol_sparse_ukf_box *o, const float *y, const float *u) {
@@ -1498,7 +1503,8 @@ static vanderpol_sparse_status ukf_box_sample(vanderpol_sparse_ukf_box *o, const
         return VANDERPOL_SPARSE_REFUSED;
     }
     if (!ukf_measure(o->x, o->p, y, u, estimate)) {
-        return VANDERPOL_SPARSE_REFUSED;
+        ukf_box_fresh(o);
+        return VANDERPOL_SPARSE_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < VANDERPOL_SPARSE_TARGETS; ++i) {
@@ -1510,13 +1516,17 @@ static vanderpol_sparse_status ukf_box_sample(vanderpol_sparse_ukf_box *o, const
 
 void vanderpol_sparse_ukf_box_init(vanderpol_sparse_ukf_box *o) {
     ukf_box_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_sparse_status vanderpol_sparse_ukf_box_push(vanderpol_sparse_ukf_box *o, const float *y, const float *u) {
     const vanderpol_sparse_status status = ukf_box_sample(o, y, u);
     if (status == VANDERPOL_SPARSE_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_SPARSE_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -1880,12 +1890,12 @@ static void corrected_lost(float *x, const float *u) {
     (void)corrected_start(x, u, x);
 }
 
+
 static void corrected_fresh(vanderpol_sparse_corrected *o) {
     vanderpol_sparse_map_init(&o->window);
     memset(o->x, 0, sizeof o->x);
     o->count = 0u;
     o->started = 0;
-    o->ready = 0;
 }
 
 static vanderpol_sparse_status corrected_sample(vanderpol_sparse_corrected *o, const float *y, const float *u) {
@@ -1911,14 +1921,16 @@ static vanderpol_sparse_status corrected_sample(vanderpol_sparse_corrected *o, c
     }
     if (!o->started && estimated) {
         if (!corrected_start(map, u, o->x)) {
-            return VANDERPOL_SPARSE_REFUSED;
+            corrected_fresh(o);
+            return VANDERPOL_SPARSE_RESTARTED;
         }
         o->started = 1;
         memcpy(o->values, all, sizeof all);
         memcpy(o->flags, all_flags, sizeof all_flags);
     } else if (o->started) {
         if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
-            return VANDERPOL_SPARSE_REFUSED;
+            corrected_fresh(o);
+            return VANDERPOL_SPARSE_RESTARTED;
         }
         corrected_targets_of(states, state_flags, u, o->values, o->flags);
     } else {
@@ -1931,13 +1943,17 @@ static vanderpol_sparse_status corrected_sample(vanderpol_sparse_corrected *o, c
 
 void vanderpol_sparse_corrected_init(vanderpol_sparse_corrected *o) {
     corrected_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_sparse_status vanderpol_sparse_corrected_push(vanderpol_sparse_corrected *o, const float *y, const float *u) {
     const vanderpol_sparse_status status = corrected_sample(o, y, u);
     if (status == VANDERPOL_SPARSE_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_SPARSE_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -1997,13 +2013,13 @@ static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, cons
     return ekf_measure(x, p, y, u, states);
 }
 
+
 static void ekf_map_fresh(vanderpol_sparse_ekf_map *o) {
     vanderpol_sparse_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
     o->count = 0u;
     o->started = 0;
-    o->ready = 0;
 }
 
 static vanderpol_sparse_status ekf_map_sample(vanderpol_sparse_ekf_map *o, const float *y, const float *u) {
@@ -2029,14 +2045,16 @@ static vanderpol_sparse_status ekf_map_sample(vanderpol_sparse_ekf_map *o, const
     }
     if (!o->started && estimated) {
         if (!started_ekf_start(map, u, o->x, o->p)) {
-            return VANDERPOL_SPARSE_REFUSED;
+            ekf_map_fresh(o);
+            return VANDERPOL_SPARSE_RESTARTED;
         }
         o->started = 1;
         memcpy(o->values, all, sizeof all);
         memcpy(o->flags, all_flags, sizeof all_flags);
     } else if (o->started) {
         if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
-            return VANDERPOL_SPARSE_REFUSED;
+            ekf_map_fresh(o);
+            return VANDERPOL_SPARSE_RESTARTED;
         }
         started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     } else {
@@ -2049,13 +2067,17 @@ static vanderpol_sparse_status ekf_map_sample(vanderpol_sparse_ekf_map *o, const
 
 void vanderpol_sparse_ekf_map_init(vanderpol_sparse_ekf_map *o) {
     ekf_map_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_sparse_status vanderpol_sparse_ekf_map_push(vanderpol_sparse_ekf_map *o, const float *y, const float *u) {
     const vanderpol_sparse_status status = ekf_map_sample(o, y, u);
     if (status == VANDERPOL_SPARSE_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_SPARSE_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2078,51 +2100,47 @@ static int restart_disagrees(const float *x, const float *p, const float *f) {
     d += e * e / (p[0] + 0.01723305f);
     e = x[1] - f[1];
     d += e * e / (p[2] + 0.063534014f);
-    return !(d <= 1.0f);
-}
-
-/* Restarted::check, at the map's first estimate: 1 when the filter restarted from the map. */
-static int restart_check(vanderpol_sparse_ekf_restart *o, const float *y, const float *u) {
-    float all[VANDERPOL_SPARSE_TARGETS], map[VANDERPOL_SPARSE_STATES];
-    vanderpol_sparse_saturation all_flags[VANDERPOL_SPARSE_TARGETS];
-    (void)vanderpol_sparse_map_push(&o->window, y, u);
-    if (o->window.filled < VANDERPOL_SPARSE_HORIZON) {
-        return 0;
-    }
-    o->checked = 1;
-    (void)vanderpol_sparse_map_estimate(&o->window, all, all_flags);
-    started_ekf_map_states(all, map);
-    if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
-        return 0;
-    }
-    memcpy(o->values, all, sizeof all);
-    memcpy(o->flags, all_flags, sizeof all_flags);
-    o->ready = 1;
-    return 1;
+    return !(d <= 32.0f);
 }
 
 static void ekf_restart_fresh(vanderpol_sparse_ekf_restart *o) {
     vanderpol_sparse_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
-    o->checked = 0;
-    o->ready = 0;
 }
 
+/* firmware::Restarted: the sample to the map's window; from its first estimate on, the map's states
+ * against the filter's prediction at every sample, restarted from the map when they disagree;
+ * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
+ * when its step is not finite. */
 static vanderpol_sparse_status ekf_restart_sample(vanderpol_sparse_ekf_restart *o, const float *y, const float *u) {
-    float states[VANDERPOL_SPARSE_STATES];
-    vanderpol_sparse_saturation state_flags[VANDERPOL_SPARSE_STATES];
+    float all[VANDERPOL_SPARSE_TARGETS], map[VANDERPOL_SPARSE_STATES], states[VANDERPOL_SPARSE_STATES];
+    vanderpol_sparse_saturation all_flags[VANDERPOL_SPARSE_TARGETS], state_flags[VANDERPOL_SPARSE_STATES];
+    int mapped = 0;
     if (!accepts(y, u)) {
         if (inputs_finite(u)) {
             ekf_predict(o->x, o->p, u);
         }
         return VANDERPOL_SPARSE_REFUSED;
     }
-    if (!o->checked && restart_check(o, y, u)) {
-        return VANDERPOL_SPARSE_OK;
+    (void)vanderpol_sparse_map_push(&o->window, y, u);
+    if (o->window.filled >= VANDERPOL_SPARSE_HORIZON) {
+        (void)vanderpol_sparse_map_estimate(&o->window, all, all_flags);
+        started_ekf_map_states(all, map);
+        mapped = 1;
+        if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p)) {
+            memcpy(o->values, all, sizeof all);
+            memcpy(o->flags, all_flags, sizeof all_flags);
+            o->ready = 1;
+            return VANDERPOL_SPARSE_OK;
+        }
     }
     if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
-        return VANDERPOL_SPARSE_REFUSED;
+        if (!(mapped && started_ekf_start(map, u, o->x, o->p))) {
+            memcpy(o->x, EKF_X0, sizeof o->x);
+            memcpy(o->p, EKF_P0, sizeof o->p);
+        }
+        return VANDERPOL_SPARSE_RESTARTED;
     }
     started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     o->ready = 1;
@@ -2131,13 +2149,17 @@ static vanderpol_sparse_status ekf_restart_sample(vanderpol_sparse_ekf_restart *
 
 void vanderpol_sparse_ekf_restart_init(vanderpol_sparse_ekf_restart *o) {
     ekf_restart_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_sparse_status vanderpol_sparse_ekf_restart_push(vanderpol_sparse_ekf_restart *o, const float *y, const float *u) {
     const vanderpol_sparse_status status = ekf_restart_sample(o, y, u);
     if (status == VANDERPOL_SPARSE_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_SPARSE_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2435,6 +2457,7 @@ void vanderpol_sparse_mhe_init(vanderpol_sparse_mhe *o) {
     o->filled = 0u;
     o->has_solved = 0;
     o->ready = 0;
+    o->restarts = 0u;
 }
 
 vanderpol_sparse_status vanderpol_sparse_mhe_push(vanderpol_sparse_mhe *o, const float *y, const float *u) {
@@ -2464,15 +2487,17 @@ vanderpol_sparse_status vanderpol_sparse_mhe_push(vanderpol_sparse_mhe *o, const
         return VANDERPOL_SPARSE_OK;
     }
     mhe_solve_window(o, has_moved ? moved : MHE_START, has_moved, x, end);
-    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX)) {
-        return VANDERPOL_SPARSE_REFUSED;
+    targets(end, u, values);
+    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX) || !all_finite(values, VANDERPOL_SPARSE_TARGETS)) {
+        /* Restarted: the next window is solved from the start, not from this solution. */
+        o->has_solved = 0;
+        if (o->restarts != UINT32_MAX) {
+            ++o->restarts;
+        }
+        return VANDERPOL_SPARSE_RESTARTED;
     }
     memcpy(o->solved, x, sizeof x);
     o->has_solved = 1;
-    targets(end, u, values);
-    if (!all_finite(values, VANDERPOL_SPARSE_TARGETS)) {
-        return VANDERPOL_SPARSE_REFUSED;
-    }
     memcpy(o->values, values, sizeof values);
     for (i = 0u; i < VANDERPOL_SPARSE_TARGETS; ++i) {
         o->flags[i] = VANDERPOL_SPARSE_INSIDE;

@@ -959,10 +959,10 @@ static int ekf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
+
 static void ekf_box_fresh(vanderpol_uncertain_ekf_box *o) {
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static vanderpol_uncertain_status ekf_box_sample(vanderpol_uncertain_ekf_box *o, const float *y, const float *u) {
@@ -976,7 +976,8 @@ static vanderpol_uncertain_status ekf_box_sample(vanderpol_uncertain_ekf_box *o,
         return VANDERPOL_UNCERTAIN_REFUSED;
     }
     if (!ekf_measure(o->x, o->p, y, u, estimate)) {
-        return VANDERPOL_UNCERTAIN_REFUSED;
+        ekf_box_fresh(o);
+        return VANDERPOL_UNCERTAIN_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < VANDERPOL_UNCERTAIN_TARGETS; ++i) {
@@ -988,13 +989,17 @@ static vanderpol_uncertain_status ekf_box_sample(vanderpol_uncertain_ekf_box *o,
 
 void vanderpol_uncertain_ekf_box_init(vanderpol_uncertain_ekf_box *o) {
     ekf_box_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_uncertain_status vanderpol_uncertain_ekf_box_push(vanderpol_uncertain_ekf_box *o, const float *y, const float *u) {
     const vanderpol_uncertain_status status = ekf_box_sample(o, y, u);
     if (status == VANDERPOL_UNCERTAIN_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_UNCERTAIN_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -1704,10 +1709,10 @@ static int ukf_measure(float *x, float *p, const float *y, const float *u, float
     return 1;
 }
 
+
 static void ukf_box_fresh(vanderpol_uncertain_ukf_box *o) {
     memcpy(o->x, UKF_X0, sizeof o->x);
     memcpy(o->p, UKF_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static vanderpol_uncertain_status ukf_box_sample(vanderpol_uncertain_ukf_box *o, const float *y, const float *u) {
@@ -1721,7 +1726,8 @@ static vanderpol_uncertain_status ukf_box_sample(vanderpol_uncertain_ukf_box *o,
         return VANDERPOL_UNCERTAIN_REFUSED;
     }
     if (!ukf_measure(o->x, o->p, y, u, estimate)) {
-        return VANDERPOL_UNCERTAIN_REFUSED;
+        ukf_box_fresh(o);
+        return VANDERPOL_UNCERTAIN_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < VANDERPOL_UNCERTAIN_TARGETS; ++i) {
@@ -1733,13 +1739,17 @@ static vanderpol_uncertain_status ukf_box_sample(vanderpol_uncertain_ukf_box *o,
 
 void vanderpol_uncertain_ukf_box_init(vanderpol_uncertain_ukf_box *o) {
     ukf_box_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_uncertain_status vanderpol_uncertain_ukf_box_push(vanderpol_uncertain_ukf_box *o, const float *y, const float *u) {
     const vanderpol_uncertain_status status = ukf_box_sample(o, y, u);
     if (status == VANDERPOL_UNCERTAIN_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_UNCERTAIN_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2022,12 +2032,12 @@ static void corrected_lost(float *x, const float *u) {
     (void)corrected_start(x, u, x);
 }
 
+
 static void corrected_fresh(vanderpol_uncertain_corrected *o) {
     vanderpol_uncertain_map_init(&o->window);
     memset(o->x, 0, sizeof o->x);
     o->count = 0u;
     o->started = 0;
-    o->ready = 0;
 }
 
 static vanderpol_uncertain_status corrected_sample(vanderpol_uncertain_corrected *o, const float *y, const float *u) {
@@ -2053,14 +2063,16 @@ static vanderpol_uncertain_status corrected_sample(vanderpol_uncertain_corrected
     }
     if (!o->started && estimated) {
         if (!corrected_start(map, u, o->x)) {
-            return VANDERPOL_UNCERTAIN_REFUSED;
+            corrected_fresh(o);
+            return VANDERPOL_UNCERTAIN_RESTARTED;
         }
         o->started = 1;
         memcpy(o->values, all, sizeof all);
         memcpy(o->flags, all_flags, sizeof all_flags);
     } else if (o->started) {
         if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
-            return VANDERPOL_UNCERTAIN_REFUSED;
+            corrected_fresh(o);
+            return VANDERPOL_UNCERTAIN_RESTARTED;
         }
         corrected_targets_of(states, state_flags, u, o->values, o->flags);
     } else {
@@ -2073,13 +2085,17 @@ static vanderpol_uncertain_status corrected_sample(vanderpol_uncertain_corrected
 
 void vanderpol_uncertain_corrected_init(vanderpol_uncertain_corrected *o) {
     corrected_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_uncertain_status vanderpol_uncertain_corrected_push(vanderpol_uncertain_corrected *o, const float *y, const float *u) {
     const vanderpol_uncertain_status status = corrected_sample(o, y, u);
     if (status == VANDERPOL_UNCERTAIN_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_UNCERTAIN_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2139,13 +2155,13 @@ static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, cons
     return ekf_measure(x, p, y, u, states);
 }
 
+
 static void ekf_map_fresh(vanderpol_uncertain_ekf_map *o) {
     vanderpol_uncertain_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
     o->count = 0u;
     o->started = 0;
-    o->ready = 0;
 }
 
 static vanderpol_uncertain_status ekf_map_sample(vanderpol_uncertain_ekf_map *o, const float *y, const float *u) {
@@ -2171,14 +2187,16 @@ static vanderpol_uncertain_status ekf_map_sample(vanderpol_uncertain_ekf_map *o,
     }
     if (!o->started && estimated) {
         if (!started_ekf_start(map, u, o->x, o->p)) {
-            return VANDERPOL_UNCERTAIN_REFUSED;
+            ekf_map_fresh(o);
+            return VANDERPOL_UNCERTAIN_RESTARTED;
         }
         o->started = 1;
         memcpy(o->values, all, sizeof all);
         memcpy(o->flags, all_flags, sizeof all_flags);
     } else if (o->started) {
         if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
-            return VANDERPOL_UNCERTAIN_REFUSED;
+            ekf_map_fresh(o);
+            return VANDERPOL_UNCERTAIN_RESTARTED;
         }
         started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     } else {
@@ -2191,13 +2209,17 @@ static vanderpol_uncertain_status ekf_map_sample(vanderpol_uncertain_ekf_map *o,
 
 void vanderpol_uncertain_ekf_map_init(vanderpol_uncertain_ekf_map *o) {
     ekf_map_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_uncertain_status vanderpol_uncertain_ekf_map_push(vanderpol_uncertain_ekf_map *o, const float *y, const float *u) {
     const vanderpol_uncertain_status status = ekf_map_sample(o, y, u);
     if (status == VANDERPOL_UNCERTAIN_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_UNCERTAIN_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2220,51 +2242,47 @@ static int restart_disagrees(const float *x, const float *p, const float *f) {
     d += e * e / (p[0] + 0.06279452f);
     e = x[1] - f[1];
     d += e * e / (p[2] + 0.08510294f);
-    return !(d <= 2.0f);
-}
-
-/* Restarted::check, at the map's first estimate: 1 when the filter restarted from the map. */
-static int restart_check(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
-    float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES];
-    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS];
-    (void)vanderpol_uncertain_map_push(&o->window, y, u);
-    if (o->window.filled < VANDERPOL_UNCERTAIN_HORIZON) {
-        return 0;
-    }
-    o->checked = 1;
-    (void)vanderpol_uncertain_map_estimate(&o->window, all, all_flags);
-    started_ekf_map_states(all, map);
-    if (!restart_disagrees(o->x, o->p, map) || !started_ekf_start(map, u, o->x, o->p)) {
-        return 0;
-    }
-    memcpy(o->values, all, sizeof all);
-    memcpy(o->flags, all_flags, sizeof all_flags);
-    o->ready = 1;
-    return 1;
+    return !(d <= 16.0f);
 }
 
 static void ekf_restart_fresh(vanderpol_uncertain_ekf_restart *o) {
     vanderpol_uncertain_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
-    o->checked = 0;
-    o->ready = 0;
 }
 
+/* firmware::Restarted: the sample to the map's window; from its first estimate on, the map's states
+ * against the filter's prediction at every sample, restarted from the map when they disagree;
+ * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
+ * when its step is not finite. */
 static vanderpol_uncertain_status ekf_restart_sample(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
-    float states[VANDERPOL_UNCERTAIN_STATES];
-    vanderpol_uncertain_saturation state_flags[VANDERPOL_UNCERTAIN_STATES];
+    float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES], states[VANDERPOL_UNCERTAIN_STATES];
+    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS], state_flags[VANDERPOL_UNCERTAIN_STATES];
+    int mapped = 0;
     if (!accepts(y, u)) {
         if (inputs_finite(u)) {
             ekf_predict(o->x, o->p, u);
         }
         return VANDERPOL_UNCERTAIN_REFUSED;
     }
-    if (!o->checked && restart_check(o, y, u)) {
-        return VANDERPOL_UNCERTAIN_OK;
+    (void)vanderpol_uncertain_map_push(&o->window, y, u);
+    if (o->window.filled >= VANDERPOL_UNCERTAIN_HORIZON) {
+        (void)vanderpol_uncertain_map_estimate(&o->window, all, all_flags);
+        started_ekf_map_states(all, map);
+        mapped = 1;
+        if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p)) {
+            memcpy(o->values, all, sizeof all);
+            memcpy(o->flags, all_flags, sizeof all_flags);
+            o->ready = 1;
+            return VANDERPOL_UNCERTAIN_OK;
+        }
     }
     if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
-        return VANDERPOL_UNCERTAIN_REFUSED;
+        if (!(mapped && started_ekf_start(map, u, o->x, o->p))) {
+            memcpy(o->x, EKF_X0, sizeof o->x);
+            memcpy(o->p, EKF_P0, sizeof o->p);
+        }
+        return VANDERPOL_UNCERTAIN_RESTARTED;
     }
     started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
     o->ready = 1;
@@ -2273,13 +2291,17 @@ static vanderpol_uncertain_status ekf_restart_sample(vanderpol_uncertain_ekf_res
 
 void vanderpol_uncertain_ekf_restart_init(vanderpol_uncertain_ekf_restart *o) {
     ekf_restart_fresh(o);
+    o->ready = 0;
     o->refused = 0u;
+    o->restarts = 0u;
 }
 
 vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_push(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
     const vanderpol_uncertain_status status = ekf_restart_sample(o, y, u);
     if (status == VANDERPOL_UNCERTAIN_REFUSED && o->refused != UINT32_MAX) {
         ++o->refused;
+    } else if (status == VANDERPOL_UNCERTAIN_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
     }
     return status;
 }
@@ -2577,6 +2599,7 @@ void vanderpol_uncertain_mhe_init(vanderpol_uncertain_mhe *o) {
     o->filled = 0u;
     o->has_solved = 0;
     o->ready = 0;
+    o->restarts = 0u;
 }
 
 vanderpol_uncertain_status vanderpol_uncertain_mhe_push(vanderpol_uncertain_mhe *o, const float *y, const float *u) {
@@ -2606,15 +2629,17 @@ vanderpol_uncertain_status vanderpol_uncertain_mhe_push(vanderpol_uncertain_mhe 
         return VANDERPOL_UNCERTAIN_OK;
     }
     mhe_solve_window(o, has_moved ? moved : MHE_START, has_moved, x, end);
-    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX)) {
-        return VANDERPOL_UNCERTAIN_REFUSED;
+    targets(end, u, values);
+    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX) || !all_finite(values, VANDERPOL_UNCERTAIN_TARGETS)) {
+        /* Restarted: the next window is solved from the start, not from this solution. */
+        o->has_solved = 0;
+        if (o->restarts != UINT32_MAX) {
+            ++o->restarts;
+        }
+        return VANDERPOL_UNCERTAIN_RESTARTED;
     }
     memcpy(o->solved, x, sizeof x);
     o->has_solved = 1;
-    targets(end, u, values);
-    if (!all_finite(values, VANDERPOL_UNCERTAIN_TARGETS)) {
-        return VANDERPOL_UNCERTAIN_REFUSED;
-    }
     memcpy(o->values, values, sizeof values);
     for (i = 0u; i < VANDERPOL_UNCERTAIN_TARGETS; ++i) {
         o->flags[i] = VANDERPOL_UNCERTAIN_INSIDE;

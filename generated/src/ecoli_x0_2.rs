@@ -1040,10 +1040,11 @@ impl<T: Scalar + Maths> Ekf<T> {
         [[self.p[0], self.p[1], self.p[2]], [self.p[1], self.p[3], self.p[4]], [self.p[2], self.p[4], self.p[5]]]
     }
 
-    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
-    /// type's docs): the rule every filter follows ([`firmware::rules::filter_sample`]) over this
-    /// filter's two written-out samples. The same operations run for every accepted sample.
-    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
+    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it, or restarts
+    /// from the start when its step is not finite (see the type's docs): the rule every filter follows
+    /// ([`firmware::rules::filter_sample`]) over this filter's two written-out samples. The same
+    /// operations run for every accepted sample.
+    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::rules::Refused> {
         firmware::rules::filter_sample(
             self,
             u.iter().all(|v| v.is_finite()),
@@ -1057,6 +1058,7 @@ impl<T: Scalar + Maths> Ekf<T> {
                 Ekf { x, p }
             },
             |filter| finite(&filter.x, &filter.p),
+            Self::new,
         )
     }
 }
@@ -1088,14 +1090,14 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 /// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
 /// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
 /// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
-/// refused sample keeps the previous one.
+/// refused sample keeps the previous one, and so does a sample on which the filter restarted.
 pub type EkfBoxObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
     const FRESH: Self = Ekf { x: [2.0, 2.5, 0.15], p: [1.6278049, 0.0, 0.0, 3.397246, 0.0, 0.031897947] };
 
     #[inline(always)]
-    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
+    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
         Ekf::push(self, y, u)
     }
 
@@ -2581,10 +2583,11 @@ impl<T: Scalar + Maths> Ukf<T> {
         [[self.p[0], self.p[1], self.p[2]], [self.p[1], self.p[3], self.p[4]], [self.p[2], self.p[4], self.p[5]]]
     }
 
-    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
-    /// type's docs): the rule every filter follows ([`firmware::rules::filter_sample`]) over this
-    /// filter's two written-out samples. The same operations run for every accepted sample.
-    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
+    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it, or restarts
+    /// from the start when its step is not finite (see the type's docs): the rule every filter follows
+    /// ([`firmware::rules::filter_sample`]) over this filter's two written-out samples. The same
+    /// operations run for every accepted sample.
+    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::rules::Refused> {
         firmware::rules::filter_sample(
             self,
             u.iter().all(|v| v.is_finite()),
@@ -2598,6 +2601,7 @@ impl<T: Scalar + Maths> Ukf<T> {
                 Ukf { x, p }
             },
             |filter| finite(&filter.x, &filter.p),
+            Self::new,
         )
     }
 }
@@ -2611,14 +2615,14 @@ pub fn ukf() -> Ukf {
 /// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
 /// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
 /// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
-/// refused sample keeps the previous one.
+/// refused sample keeps the previous one, and so does a sample on which the filter restarted.
 pub type UkfBoxObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
     const FRESH: Self = Ukf { x: [2.0, 2.5, 0.15], p: [0.16901448, 0.0, 0.0, 0.3230251, 0.0, 0.0024640344] };
 
     #[inline(always)]
-    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
+    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
         Ukf::push(self, y, u)
     }
 

@@ -523,10 +523,11 @@ impl<T: Scalar + Maths> Ekf<T> {
         [[self.p[0], self.p[1]], [self.p[1], self.p[2]]]
     }
 
-    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
-    /// type's docs): the rule every filter follows ([`firmware::rules::filter_sample`]) over this
-    /// filter's two written-out samples. The same operations run for every accepted sample.
-    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
+    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it, or restarts
+    /// from the start when its step is not finite (see the type's docs): the rule every filter follows
+    /// ([`firmware::rules::filter_sample`]) over this filter's two written-out samples. The same
+    /// operations run for every accepted sample.
+    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::rules::Refused> {
         firmware::rules::filter_sample(
             self,
             u.iter().all(|v| v.is_finite()),
@@ -540,6 +541,7 @@ impl<T: Scalar + Maths> Ekf<T> {
                 Ekf { x, p }
             },
             |filter| finite(&filter.x, &filter.p),
+            Self::new,
         )
     }
 }
@@ -570,14 +572,14 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 /// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
 /// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
 /// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
-/// refused sample keeps the previous one.
+/// refused sample keeps the previous one, and so does a sample on which the filter restarted.
 pub type EkfBoxObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
     const FRESH: Self = Ekf { x: [0.0, 0.0], p: [0.18155766, 0.0, 0.49253356] };
 
     #[inline(always)]
-    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
+    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
         Ekf::push(self, y, u)
     }
 
@@ -1033,10 +1035,11 @@ impl<T: Scalar + Maths> Ukf<T> {
         [[self.p[0], self.p[1]], [self.p[1], self.p[2]]]
     }
 
-    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
-    /// type's docs): the rule every filter follows ([`firmware::rules::filter_sample`]) over this
-    /// filter's two written-out samples. The same operations run for every accepted sample.
-    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
+    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it, or restarts
+    /// from the start when its step is not finite (see the type's docs): the rule every filter follows
+    /// ([`firmware::rules::filter_sample`]) over this filter's two written-out samples. The same
+    /// operations run for every accepted sample.
+    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::rules::Refused> {
         firmware::rules::filter_sample(
             self,
             u.iter().all(|v| v.is_finite()),
@@ -1050,6 +1053,7 @@ impl<T: Scalar + Maths> Ukf<T> {
                 Ukf { x, p }
             },
             |filter| finite(&filter.x, &filter.p),
+            Self::new,
         )
     }
 }
@@ -1063,14 +1067,14 @@ pub fn ukf() -> Ukf {
 /// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
 /// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
 /// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
-/// refused sample keeps the previous one.
+/// refused sample keeps the previous one, and so does a sample on which the filter restarted.
 pub type UkfBoxObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
     const FRESH: Self = Ukf { x: [0.0, 0.0], p: [2.0708659, 0.0, 26.300774] };
 
     #[inline(always)]
-    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
+    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
         Ukf::push(self, y, u)
     }
 
@@ -2032,13 +2036,14 @@ pub type EkfMapObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, ST
 
 /// The check of [`EkfRestartObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
 /// (no unit).
-pub const RESTART_THRESHOLD: f64 = 4.0;
+pub const RESTART_THRESHOLD: f64 = 16.0;
 /// See [`RESTART_THRESHOLD`]: each state's `e_i²`, the map's mean squared error on the tuning runs,
 /// in its unit squared ([`STATE_UNITS`]).
 pub const RESTART_VARIANCES: [f64; STATES] = [0.05544692043129042, 0.07804465402699438];
 
 /// Whether the filter's prediction `x` with covariance `p` and the map's states `f` disagree:
-/// `d = Σ_i (x_i − f_i)² / (P_ii + e_i²) > τ`, or `d` is NaN. Runs once, at the map's first estimate.
+/// `d = Σ_i (x_i − f_i)² / (P_ii + e_i²) > τ`, or `d` is NaN. Runs at every sample from the map's
+/// first estimate on.
 #[allow(clippy::neg_cmp_op_on_partial_ord)]
 #[inline(always)]
 fn restart_disagrees<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], f: &[T; STATES]) -> bool {
@@ -2049,7 +2054,7 @@ fn restart_disagrees<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], f:
         let e = x[i] - f[i];
         d += e * e / (p[DIAGONAL[i]] + variances[i]);
     }
-    !(d <= T::literal(4.0, 4.0))
+    !(d <= T::literal(16.0, 16.0))
 }
 
 impl firmware::emitted::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
@@ -2070,10 +2075,10 @@ impl firmware::emitted::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for Start
     }
 }
 
-/// The EKF from the centre of the state box ([`Ekf`]'s start and samples) that checks the map once,
-/// at its first estimate, and restarts from it as [`EkfMapObserver`] starts when the two disagree
-/// (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's guess-free start where the
-/// box centre is far from the plant.
+/// The EKF from the centre of the state box ([`Ekf`]'s start and samples) that the map watches at
+/// every sample from its first estimate on, restarted from it as [`EkfMapObserver`] starts when the
+/// two disagree (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's
+/// guess-free start where the box centre is far from the plant or the filter loses track.
 pub type EkfRestartObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
@@ -2130,7 +2135,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "353c2c2d6bd10d2c6a66bb41b3a81efadc237a030d8afb34887ae76e12fe339b";
+pub const TABLES_SHA256: &str = "ccf1b00bb1c9e84e21f16477bc62ec933151b0ae7336840a62ef4aca5187a3f0";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

@@ -444,10 +444,11 @@ impl<T: Scalar + Maths> Ekf<T> {
         [[self.p[0], self.p[1]], [self.p[1], self.p[2]]]
     }
 
-    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
-    /// type's docs): the rule every filter follows ([`firmware::rules::filter_sample`]) over this
-    /// filter's two written-out samples. The same operations run for every accepted sample.
-    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
+    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it, or restarts
+    /// from the start when its step is not finite (see the type's docs): the rule every filter follows
+    /// ([`firmware::rules::filter_sample`]) over this filter's two written-out samples. The same
+    /// operations run for every accepted sample.
+    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::rules::Refused> {
         firmware::rules::filter_sample(
             self,
             u.iter().all(|v| v.is_finite()),
@@ -461,6 +462,7 @@ impl<T: Scalar + Maths> Ekf<T> {
                 Ekf { x, p }
             },
             |filter| finite(&filter.x, &filter.p),
+            Self::new,
         )
     }
 }
@@ -491,14 +493,14 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 /// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
 /// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
 /// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
-/// refused sample keeps the previous one.
+/// refused sample keeps the previous one, and so does a sample on which the filter restarted.
 pub type EkfBoxObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
     const FRESH: Self = Ekf { x: [0.0, 0.0], p: [0.10246995, 0.0, 0.25946823] };
 
     #[inline(always)]
-    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
+    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
         Ekf::push(self, y, u)
     }
 
@@ -954,10 +956,11 @@ impl<T: Scalar + Maths> Ukf<T> {
         [[self.p[0], self.p[1]], [self.p[1], self.p[2]]]
     }
 
-    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
-    /// type's docs): the rule every filter follows ([`firmware::rules::filter_sample`]) over this
-    /// filter's two written-out samples. The same operations run for every accepted sample.
-    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
+    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it, or restarts
+    /// from the start when its step is not finite (see the type's docs): the rule every filter follows
+    /// ([`firmware::rules::filter_sample`]) over this filter's two written-out samples. The same
+    /// operations run for every accepted sample.
+    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::rules::Refused> {
         firmware::rules::filter_sample(
             self,
             u.iter().all(|v| v.is_finite()),
@@ -971,6 +974,7 @@ impl<T: Scalar + Maths> Ukf<T> {
                 Ukf { x, p }
             },
             |filter| finite(&filter.x, &filter.p),
+            Self::new,
         )
     }
 }
@@ -984,14 +988,14 @@ pub fn ukf() -> Ukf {
 /// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
 /// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
 /// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
-/// refused sample keeps the previous one.
+/// refused sample keeps the previous one, and so does a sample on which the filter restarted.
 pub type UkfBoxObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
     const FRESH: Self = Ukf { x: [0.0, 0.0], p: [2.1275058, 0.0, 160.73163] };
 
     #[inline(always)]
-    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
+    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
         Ukf::push(self, y, u)
     }
 
@@ -1980,13 +1984,14 @@ pub type EkfMapObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, ST
 
 /// The check of [`EkfRestartObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
 /// (no unit).
-pub const RESTART_THRESHOLD: f64 = 1.0;
+pub const RESTART_THRESHOLD: f64 = 32.0;
 /// See [`RESTART_THRESHOLD`]: each state's `e_i²`, the map's mean squared error on the tuning runs,
 /// in its unit squared ([`STATE_UNITS`]).
 pub const RESTART_VARIANCES: [f64; STATES] = [0.017233049617424518, 0.06353401637091491];
 
 /// Whether the filter's prediction `x` with covariance `p` and the map's states `f` disagree:
-/// `d = Σ_i (x_i − f_i)² / (P_ii + e_i²) > τ`, or `d` is NaN. Runs once, at the map's first estimate.
+/// `d = Σ_i (x_i − f_i)² / (P_ii + e_i²) > τ`, or `d` is NaN. Runs at every sample from the map's
+/// first estimate on.
 #[allow(clippy::neg_cmp_op_on_partial_ord)]
 #[inline(always)]
 fn restart_disagrees<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], f: &[T; STATES]) -> bool {
@@ -1997,7 +2002,7 @@ fn restart_disagrees<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], f:
         let e = x[i] - f[i];
         d += e * e / (p[DIAGONAL[i]] + variances[i]);
     }
-    !(d <= T::literal(1.0, 1.0))
+    !(d <= T::literal(32.0, 32.0))
 }
 
 impl firmware::emitted::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
@@ -2018,10 +2023,10 @@ impl firmware::emitted::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for Start
     }
 }
 
-/// The EKF from the centre of the state box ([`Ekf`]'s start and samples) that checks the map once,
-/// at its first estimate, and restarts from it as [`EkfMapObserver`] starts when the two disagree
-/// (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's guess-free start where the
-/// box centre is far from the plant.
+/// The EKF from the centre of the state box ([`Ekf`]'s start and samples) that the map watches at
+/// every sample from its first estimate on, restarted from it as [`EkfMapObserver`] starts when the
+/// two disagree (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's
+/// guess-free start where the box centre is far from the plant or the filter loses track.
 pub type EkfRestartObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
@@ -2078,7 +2083,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "b34a6b5e2894dc6af77c0191363f9d6643e3f7b44f33db926837d93553bc2903";
+pub const TABLES_SHA256: &str = "3b79edc87d377e4a9235ad3dd02754ec3100b6627b7bb845420617593c422599";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

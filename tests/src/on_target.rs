@@ -42,7 +42,7 @@ pub use c_cases::{
     c_table, compare, extended, inexact, run_shipped_on_board, shipped_cases, Case, INEXACT, LIBM_TOLERANCE,
 };
 pub use c_observers::{
-    c_harness, counts_refusals, run_c_observer, rust_lines, sample_lines, CBoardRun, CValue, STRICT_C_FLAGS,
+    c_harness, counts_refusals, run_c_observer, rust_lines, sample_lines, status, CBoardRun, CValue, STRICT_C_FLAGS,
 };
 pub use elf::{sizes, Program};
 pub use figures::{check_cycles, spread, Figures};

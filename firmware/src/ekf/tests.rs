@@ -126,7 +126,7 @@ fn a_non_finite_measurement_is_refused_and_only_the_prediction_runs() {
     let mut filter: Ekf<f64, Scalar1, 1, 1, 0> = Ekf::new(Scalar1, [3.0], [[2.0]], [[q]], [r]);
     for y in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
         let (x, p) = (filter.state()[0], filter.covariance()[0][0]);
-        assert_eq!(filter.push(&[y], &[]), Err(crate::RejectedSample));
+        assert_eq!(filter.push(&[y], &[]), Err(crate::rules::Refused::Value));
         assert_eq!(filter.state(), [A1 * x]);
         assert_eq!(filter.covariance(), [[A1 * p * A1 + q]]);
     }
@@ -144,7 +144,7 @@ fn a_non_finite_input_changes_nothing() {
         [0.3],
     );
     let before = filter;
-    assert_eq!(filter.push(&[0.2], &[f64::NAN]), Err(crate::RejectedSample));
+    assert_eq!(filter.push(&[0.2], &[f64::NAN]), Err(crate::rules::Refused::Value));
     assert_eq!(
         (filter.state(), filter.covariance()),
         (before.state(), before.covariance())

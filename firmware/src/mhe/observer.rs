@@ -30,7 +30,8 @@ pub trait Horizon<T: Scalar, const NX: usize, const NY: usize, const NU: usize, 
 /// newest sample. Memory is fixed (the window, the previous solution, the latest estimate); once the
 /// window is full every sample runs the same instructions. A sample with a non-finite measurement or
 /// input is refused and not stored, before the window is full as after (the firmware contract: nothing
-/// stored changes); a solution the model carries to a non-finite value is not kept. A refused sample
+/// stored changes); a solution the model carries to a non-finite value is not kept, and the next window is
+/// solved from the start (a restart) instead of from it. A refused sample
 /// leaves the latest estimate as it was. The estimate is a state inside the box, so its targets
 /// carry no saturation flag (each is `Inside`).
 pub struct Observer<T, H, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> {
@@ -38,6 +39,8 @@ pub struct Observer<T, H, const N: usize, const NX: usize, const NY: usize, cons
     /// The latest window's solution (its start), once there is one.
     solved: Option<[T; NX]>,
     latest: Option<[Estimate<T>; NT]>,
+    /// Restarts since the start (saturating).
+    restarts: u32,
     design: PhantomData<fn() -> H>,
 }
 
@@ -54,6 +57,7 @@ where
             window: Window::new(),
             solved: None,
             latest: None,
+            restarts: 0,
             design: PhantomData,
         }
     }
@@ -76,14 +80,14 @@ where
             return Ok(()); // fewer than N samples: no estimate yet
         };
         let (x, end) = solve_window(&plant, &s, samples, &moved.unwrap_or(s.start), moved.is_some());
-        if !x.iter().chain(&end).all(|v| v.is_finite()) {
+        let values = H::targets(&end, &u);
+        if !x.iter().chain(&end).chain(&values).all(|v| v.is_finite()) {
+            // Restarted: the next window is solved from the start, not from this solution.
+            self.solved = None;
+            self.restarts = self.restarts.saturating_add(1);
             return Err(RejectedSample);
         }
         self.solved = Some(x);
-        let values = H::targets(&end, &u);
-        if !values.iter().all(|v| v.is_finite()) {
-            return Err(RejectedSample);
-        }
         let mut latest = [Estimate {
             value: T::ZERO,
             saturation: Saturation::Inside,
@@ -118,6 +122,13 @@ where
     pub fn is_ready(&self) -> bool {
         self.latest.is_some()
     }
+
+    /// Restarts since the start: samples with finite values whose solution was not finite, after
+    /// which the next window is solved from the start.
+    #[must_use]
+    pub fn restarts(&self) -> u32 {
+        self.restarts
+    }
 }
 
 impl<T, H, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Default
@@ -139,6 +150,7 @@ impl<T: Scalar, H, const N: usize, const NX: usize, const NY: usize, const NU: u
             window: self.window.clone(),
             solved: self.solved,
             latest: self.latest,
+            restarts: self.restarts,
             design: PhantomData,
         }
     }

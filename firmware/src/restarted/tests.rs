@@ -91,24 +91,22 @@ fn close(got: &[f64], expected: &[f64]) {
 
 #[test]
 fn estimates_from_the_first_sample_and_keeps_the_filter_when_the_map_agrees() {
-    // y = 0.2, 0.2, 0.4: x̂ = 0.1; at the check F = 2, d = 1.9² / 2 = 1.805 ≤ 4, so x̂ = 0.15; then 0.275.
-    close(&values(&run(&[0.2, 0.2, 0.4])), &[0.1, 0.15, 0.275]);
+    // y = 0.2, 0.2, 0.2: x̂ = 0.1; at the check F = 2, d = 1.9² / 2 = 1.805 ≤ 4, so x̂ = 0.15; then
+    // d = 1.85² / 2 = 1.71 ≤ 4 again: 0.175.
+    close(&values(&run(&[0.2, 0.2, 0.2])), &[0.1, 0.15, 0.175]);
 }
 
 #[test]
-fn restarts_from_the_map_when_they_disagree_and_checks_only_once() {
-    // y = 0.6, 0.6: x̂ = 0.3; at the check F = 6, d = 5.7² / 2 = 16.245 > 4: the estimate is the map's
-    // (with its flag) and the filter goes on from (6, 0.5): 6 + (0.6 − 6) / 2 = 3.3, then 1.95, then
-    // 1.275: the filter's alone, the map not read again.
+fn restarts_from_the_map_whenever_they_disagree() {
+    // y = 0.6, 0.6: x̂ = 0.3; at the map's first estimate F = 6, d = 5.7² / 2 = 16.245 > 4: the
+    // estimate is the map's (with its flag) and the filter goes on from (6, 0.5): 6 + (0.6 − 6) / 2 =
+    // 3.3 (d = 0); then d = 2.7² / 1.5 = 4.86 > 4: the map's again, and so on: checked every sample.
     let got = run(&[0.6, 0.6, 0.6, 0.6, 0.6]);
-    close(&values(&got), &[0.3, 6.0, 3.3, 1.95, 1.275]);
+    close(&values(&got), &[0.3, 6.0, 3.3, 6.0, 3.3]);
     assert_eq!(got[1].unwrap().1, Saturation::Inside);
-    let mut observer = Observer::new();
-    for y in [0.6, 0.6] {
-        assert!(!observer.is_checked());
-        observer.push([y], []).unwrap();
-    }
-    assert!(observer.is_checked());
+    // y = 0.2, 0.2, 0.8, 0.8: the filter agrees with the map's F = 2 (d = 1.9² / 2 = 1.805), so 0.15;
+    // after the step F = 5 (d = 4.85² / 2 > 4): the map's; then F = 8 (d = 3² / 1.5 = 6 > 4): again.
+    close(&values(&run(&[0.2, 0.2, 0.8, 0.8])), &[0.1, 0.15, 5.0, 8.0]);
 }
 
 #[test]
@@ -125,9 +123,7 @@ fn a_refused_sample_is_not_in_the_window_and_the_check_waits_for_n_accepted_samp
     observer.push([0.6], []).unwrap();
     assert!(observer.push([f64::NAN], []).is_err());
     assert_eq!(observer.estimate().map(|[e]| e.value), Some(0.3));
-    assert!(!observer.is_checked());
     observer.push([0.6], []).unwrap();
-    assert!(observer.is_checked());
     close(&[observer.estimate().map_or(f64::NAN, |[e]| e.value)], &[6.0]);
 }
 
@@ -138,7 +134,7 @@ fn reset_starts_again() {
         observer.push([y], []).unwrap();
     }
     observer.reset();
-    assert!(!observer.is_ready() && !observer.is_checked());
+    assert!(!observer.is_ready());
     observer.push([0.2], []).unwrap();
     assert_eq!(observer.estimate().map(|[e]| e.value), Some(0.1));
 }

@@ -7,12 +7,13 @@
 //! map's states; then `follow` for every later sample with its count `j` (counted as the chip counts:
 //! only samples taken). A sample with a non-finite output or input is refused as the chip refuses it:
 //! its row is NaN (no estimate from that sample), and once started, when its input is finite, what
-//! is carried takes one period of the model (`lost`, `Follower::predict`). A start, follow-up or
-//! prediction that gives `None` (not finite) is refused too: nothing carried changes and the last
-//! estimate stays.
+//! is carried takes one period of the model (`lost`, `Follower::predict`). A prediction that gives
+//! `None` (not finite) is not taken; a start or follow-up that gives `None` restarts the rule as the
+//! chip does (the last estimate stays): the chip empties its window, so the map is read again only
+//! once `first + 1` samples have been accepted since.
 
-use firmware::rules::{Given, Refusals, StartedRule};
-use firmware::{RejectedSample, Scalar};
+use firmware::rules::{Given, Refusals, Refused, StartedRule};
+use firmware::Scalar;
 
 /// One sample at a time: `firmware::Started`'s rule ([`StartedRule`]) and the rows the host
 /// reads off it.
@@ -27,6 +28,8 @@ pub struct Shell<T, C> {
     refusals: Refusals,
     /// Samples seen.
     k: usize,
+    /// Samples accepted since the start or the last restart: the chip's window fill.
+    filled: usize,
     last: Vec<T>,
 }
 
@@ -50,6 +53,7 @@ impl<T: Scalar, C> Shell<T, C> {
             rule: StartedRule::START,
             refusals: Refusals::NONE,
             k: 0,
+            filled: 0,
         }
     }
 
@@ -73,22 +77,26 @@ impl<T: Scalar, C> Shell<T, C> {
         let inputs_finite = u.iter().all(|v| v.is_finite());
         if !(inputs_finite && y.iter().all(|v| v.is_finite())) {
             self.rule.lost(inputs_finite, |c| lost(c, &u));
-            let _ = self.refusals.count::<()>(Err(RejectedSample));
+            let _ = self.refusals.count::<()>(Err(Refused::Value));
             return self.nan.clone();
         }
+        self.filled += 1;
         let targets = &self.state_targets;
         let states = |row: &[T]| targets.iter().map(|&t| row[t]).collect::<Vec<T>>();
         let first = self.first;
         let read = self.rule.reads_map(self.start_up, self.steady_reads_map);
         let result = self.rule.accepted(
             self.start_up,
-            (read && k >= first && row.iter().all(|v| v.is_finite())).then_some(row),
+            (read && k >= first && self.filled > first && row.iter().all(|v| v.is_finite())).then_some(row),
             |row| start(&states(row), &u),
             |c, j, _, row| {
                 let map = row.map_or_else(|| vec![T::ZERO; targets.len()], |row| states(row));
                 follow(c, j, &map, &y, &u)
             },
         );
+        if result.is_err() {
+            self.filled = 0; // restarted: the chip empties its window
+        }
         match self.refusals.count(result) {
             Ok(Given::Nothing) => self.nan.clone(),
             Ok(Given::Map(row)) => {
@@ -99,13 +107,18 @@ impl<T: Scalar, C> Shell<T, C> {
                 self.last.clone_from(&targets);
                 targets
             }
-            Err(RejectedSample) => self.last.clone(),
+            Err(_) => self.last.clone(),
         }
     }
 
-    /// Samples refused so far, as the chip counts them ([`Refusals`]).
+    /// Samples refused so far for a bad value, as the chip counts them ([`Refusals`]).
     pub fn refused(&self) -> u32 {
         self.refusals.get()
+    }
+
+    /// Restarts so far, as the chip counts them ([`Refusals`]).
+    pub fn restarts(&self) -> u32 {
+        self.refusals.restarts()
     }
 }
 

@@ -4,7 +4,8 @@
 //! ```c
 //! static uint8_t storage[MY_DESIGN_STORAGE_SIZE] __attribute__((aligned(MY_DESIGN_STORAGE_ALIGN)));
 //! my_design_init(storage, sizeof storage);               // or to reset
-//! my_design_push(storage, y, u);                         // MY_DESIGN_REFUSED for a NaN/inf sample
+//! my_design_push(storage, y, u);                         // MY_DESIGN_REFUSED for a NaN/inf sample,
+//!                                                        // MY_DESIGN_RESTARTED where its filter restarted
 //! float x[MY_DESIGN_TARGETS];
 //! if (my_design_estimate(storage, x, NULL) == MY_DESIGN_OK) { /* use x */ }
 //! ```
@@ -174,6 +175,10 @@ pub enum {status} {{
     /// The storage holds no observer: `{name}_init` was never called on it, or refused it (or it
     /// holds another design's); nothing was done.
     {upper}_NOT_INITIALISED = 4,
+    /// The sample's values were finite but the observer's step was not: it restarted (a filter from
+    /// its start or from the map, the moving-horizon estimate from its start); the latest estimate is
+    /// unchanged.
+    {upper}_RESTARTED = 5,
 }}
 
 /// Where an estimate lies against its learning range: the C source's `{saturation}`, the same names
@@ -256,8 +261,12 @@ pub unsafe extern "C" fn {name}_push(storage: *mut c_void, y: *const f32, u: *co
         // SAFETY: `u` points to INPUTS floats.
         *value = unsafe {{ u.add(i).read_unaligned() }};
     }}
+    let restarts = <design::Observer as firmware::Estimator>::restarts(observer);
     match observer.push(outputs, inputs) {{
         Ok(()) => {status}::{upper}_OK,
+        Err(_) if <design::Observer as firmware::Estimator>::restarts(observer) != restarts => {{
+            {status}::{upper}_RESTARTED
+        }}
         Err(_) => {status}::{upper}_REFUSED,
     }}
 }}

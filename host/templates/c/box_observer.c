@@ -1,9 +1,9 @@
 {# A filter from the box centre: `push` of the filter, then the targets of
    its estimate, each inside. -#}
+{# `_fresh`: the filter at its start (at init, and where a step was not finite: a restart). #}
 static void {{ kind }}_fresh({{ name }}_{{ kind }} *o) {
     memcpy(o->x, {{ label }}_X0, sizeof o->x);
     memcpy(o->p, {{ label }}_P0, sizeof o->p);
-    o->ready = 0;
 }
 
 static {{ name }}_status {{ kind }}_sample({{ name }}_{{ kind }} *o, const float *y, const float *u) {
@@ -17,7 +17,8 @@ static {{ name }}_status {{ kind }}_sample({{ name }}_{{ kind }} *o, const float
         return {{ upper }}_REFUSED;
     }
     if (!{{ lower }}_measure(o->x, o->p, y, u, estimate)) {
-        return {{ upper }}_REFUSED;
+        {{ kind }}_fresh(o);
+        return {{ upper }}_RESTARTED;
     }
     targets(estimate, u, o->values);
     for (i = 0u; i < {{ upper }}_TARGETS; ++i) {

@@ -32,15 +32,18 @@ extern "C" {
  * values as the Rust static library's c/include/{{ name }}.h). */
 typedef enum {
     {{ upper }}_OK = 0,
-    /* The sample was refused: a NaN or infinite value (or a filter step whose result is not
-     * finite); the latest estimate is unchanged. */
+    /* The sample was refused: a NaN or infinite value; the latest estimate is unchanged. */
     {{ upper }}_REFUSED = 1,
     /* No estimate yet (the map: fewer than {{ upper }}_HORIZON accepted samples since init). */
     {{ upper }}_NO_ESTIMATE_YET = 2,
     /* The storage calls only: a null pointer, or storage too small or misaligned; nothing done. */
     {{ upper }}_BAD_ARGUMENT = 3,
     /* The storage calls only: the storage holds no observer of this design. */
-    {{ upper }}_NOT_INITIALISED = 4
+    {{ upper }}_NOT_INITIALISED = 4,
+    /* The sample's values were finite but the observer's step was not: it restarted (a filter from
+     * its start or from the map, the moving-horizon estimate from its start); the latest estimate is
+     * unchanged. Counted in the observer's `restarts`. */
+    {{ upper }}_RESTARTED = 5
 } {{ name }}_status;
 
 /* Where an estimate lies against its range: inside, or held at its low or high end (the same

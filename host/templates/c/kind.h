@@ -8,8 +8,10 @@ typedef struct {
 {{ fields }}    float values[{{ upper }}_TARGETS];
     {{ name }}_saturation flags[{{ upper }}_TARGETS];
     int ready;
-    /* Samples refused since init (a bad input, a lost output, a result not finite); saturates. */
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
     uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
 } {{ name }}_{{ kind }};
 
 void {{ name }}_{{ kind }}_init({{ name }}_{{ kind }} *observer);

@@ -1,10 +1,11 @@
 {# `<name>_<kind>_init`, `_push` and `_estimate` of a follower of the map as `firmware::Started` runs
    it; `init_carried` resets the carried state. -#}
+{# `_fresh`: the follower waiting for the map's first estimate (at init, and where a start or
+   follow-up was not finite: a restart). #}
 static void {{ kind }}_fresh({{ name }}_{{ kind }} *o) {
     {{ name }}_map_init(&o->window);
 {{ init_carried }}    o->count = 0u;
     o->started = 0;
-    o->ready = 0;
 }
 
 static {{ name }}_status {{ kind }}_sample({{ name }}_{{ kind }} *o, const float *y, const float *u) {
@@ -30,14 +31,16 @@ static {{ name }}_status {{ kind }}_sample({{ name }}_{{ kind }} *o, const float
     }
     if (!o->started && estimated) {
         if (!{{ prefix }}_start(map, u, {{ carried }})) {
-            return {{ upper }}_REFUSED;
+            {{ kind }}_fresh(o);
+            return {{ upper }}_RESTARTED;
         }
         o->started = 1;
         memcpy(o->values, all, sizeof all);
         memcpy(o->flags, all_flags, sizeof all_flags);
     } else if (o->started) {
         if (!{{ prefix }}_follow({{ carried }}, o->count, start_up, map, y, u, states, state_flags)) {
-            return {{ upper }}_REFUSED;
+            {{ kind }}_fresh(o);
+            return {{ upper }}_RESTARTED;
         }
         {{ prefix }}_targets_of(states, state_flags, u, o->values, o->flags);
     } else {

@@ -32,10 +32,11 @@ impl<T: Scalar + Maths> {{ name }}<T> {
         {{ covariance }}
     }
 
-    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it (see the
-    /// type's docs): the rule every filter follows ([`firmware::rules::filter_sample`]) over this
-    /// filter's two written-out samples. The same operations run for every accepted sample.
-    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::RejectedSample> {
+    /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it, or restarts
+    /// from the start when its step is not finite (see the type's docs): the rule every filter follows
+    /// ([`firmware::rules::filter_sample`]) over this filter's two written-out samples. The same
+    /// operations run for every accepted sample.
+    pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::rules::Refused> {
         firmware::rules::filter_sample(
             self,
             u.iter().all(|v| v.is_finite()),
@@ -49,6 +50,7 @@ impl<T: Scalar + Maths> {{ name }}<T> {
                 {{ name }} { x, p }
             },
             |filter| finite(&filter.x, &filter.p),
+            Self::new,
         )
     }
 }

@@ -3,14 +3,14 @@
 /// observers' interface ([`firmware::FilterObserver`], [`firmware::Estimator`]): `push` takes a
 /// sample, `estimate` gives the targets of the latest accepted one (each `Inside`: the filter does
 /// not saturate), `reset` starts again. It has an estimate from the first accepted sample on; a
-/// refused sample keeps the previous one.
+/// refused sample keeps the previous one, and so does a sample on which the filter restarted.
 pub type {{ observer }} = firmware::FilterObserver<f32, {{ name }}, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for {{ name }}<f32> {
     const FRESH: Self = {{ name }} { x: {{ x0 }}, p: {{ p0 }} };
 
     #[inline(always)]
-    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::RejectedSample> {
+    fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
         {{ name }}::push(self, y, u)
     }
 

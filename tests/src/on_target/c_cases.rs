@@ -101,7 +101,7 @@ macro_rules! c_case {
             &ys,
             &us,
             $observer,
-            |o, y, u| o.push(y.try_into().unwrap(), u.try_into().unwrap()).is_ok(),
+            |o, y, u| $crate::on_target::status(o, y, u),
             |o| {
                 o.estimate()
                     .map(|e| e.iter().map(|e| (e.value, e.saturation)).collect())
@@ -147,7 +147,7 @@ pub fn shipped_cases() -> Vec<Case> {
                 &ys,
                 &us,
                 d::fixed_observer(),
-                |o, y, u| o.push(y.try_into().unwrap(), u.try_into().unwrap()).is_ok(),
+                |o, y, u| super::status(o, y, u),
                 |o| {
                     o.estimate()
                         .map(|e| e.iter().map(|e| (e.value, e.saturation)).collect())

@@ -130,7 +130,8 @@ pub fn c_harness(
         u = rows(us, inputs),
         painted = PAINTED_WORDS,
         refused = if counts_refusals(kind) {
-            "    printf(\"REFUSED %lu\\n\", (unsigned long)observer.refused);\n"
+            "    printf(\"REFUSED %lu\\nRESTARTS %lu\\n\", (unsigned long)observer.refused, \
+             (unsigned long)observer.restarts);\n"
         } else {
             ""
         },
@@ -173,18 +174,34 @@ impl CValue for i32 {
     }
 }
 
+/// The C status of `observer`'s push of `(y, u)` (its `<name>_status`): 0 taken, 1 refused for a bad
+/// value, 5 restarted (its [`firmware::Estimator::restarts`] went up).
+pub fn status<O>(observer: &mut O, y: &[O::Scalar], u: &[O::Scalar]) -> u8
+where
+    O: firmware::Estimator,
+    O::Outputs: for<'a> TryFrom<&'a [O::Scalar], Error: core::fmt::Debug>,
+    O::Inputs: for<'a> TryFrom<&'a [O::Scalar], Error: core::fmt::Debug>,
+{
+    let before = observer.restarts();
+    match observer.push(y.try_into().unwrap(), u.try_into().unwrap()) {
+        Ok(()) => 0,
+        Err(_) if observer.restarts() != before => 5,
+        Err(_) => 1,
+    }
+}
+
 /// What a Rust observer gives over the same sequence, printed as [`c_harness`] prints it.
 pub fn rust_lines<O, V: CValue>(
     ys: &[Vec<V>],
     us: &[Vec<V>],
     mut observer: O,
-    push: impl Fn(&mut O, &[V], &[V]) -> bool,
+    push: impl Fn(&mut O, &[V], &[V]) -> u8,
     estimate: impl Fn(&O) -> Option<Vec<(V, firmware::Saturation)>>,
 ) -> Vec<String> {
     ys.iter()
         .zip(us)
         .map(|(y, u)| {
-            let pushed = if push(&mut observer, y, u) { 0 } else { 1 };
+            let pushed = push(&mut observer, y, u);
             match estimate(&observer) {
                 None => format!("{pushed} 2"),
                 Some(estimates) => {

@@ -59,11 +59,14 @@ fn compile_and_run(compiler: &str, dir: &Path, c: &Path, case: &Case) -> Option<
     assert!(run.status.success(), "{name} {kind} harness ({compiler}) failed");
     let text = String::from_utf8(run.stdout).unwrap();
     if counts_refusals(kind) {
-        // The C counter (one place, `counted.c`) against the Rust observer's refused samples.
+        // The C counters (one place, `counted.c`) against the Rust observer's refused samples and
+        // restarts (status 1 and 5 of its lines).
         let refused = case.expected.iter().filter(|l| l.starts_with("1 ")).count();
+        let restarts = case.expected.iter().filter(|l| l.starts_with("5 ")).count();
         assert!(
-            text.contains(&format!("\nREFUSED {refused}\n")),
-            "{name} {kind} ({compiler}): the Rust observer refused {refused} samples, the C counted otherwise"
+            text.contains(&format!("\nREFUSED {refused}\nRESTARTS {restarts}\n")),
+            "{name} {kind} ({compiler}): the Rust observer refused {refused} samples and restarted \
+             {restarts} times, the C counted otherwise"
         );
     }
     Some(sample_lines(&text))
@@ -648,6 +651,7 @@ fn one_status_one_saturation_one_period_and_every_literal_a_float() {
             "NO_ESTIMATE_YET = 2",
             "BAD_ARGUMENT = 3",
             "NOT_INITIALISED = 4",
+            "RESTARTED = 5",
         ] {
             assert!(text.contains(&format!("{upper}_{value}")), "{name}.h: {value}");
         }

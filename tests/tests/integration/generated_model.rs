@@ -123,7 +123,7 @@ macro_rules! check_filter {
                     }
                     let u = u.map(&exact);
                     let (a, b) = (written.push(&y, &u), library.push(&y, &u));
-                    let all = |e: Result<[T; d::STATES], firmware::RejectedSample>,
+                    let all = |e: Result<[T; d::STATES], firmware::rules::Refused>,
                                x: [T; d::STATES],
                                p: [[T; d::STATES]; d::STATES]| {
                         e.into_iter()

@@ -59,6 +59,7 @@ pub const C_SUFFIX_WORDS: &[&str] = &[
     "outputs",
     "push",
     "refused",
+    "restarted",
     "sample",
     "saturation",
     "states",

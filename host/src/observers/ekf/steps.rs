@@ -13,8 +13,8 @@ use firmware::rules::Refusals;
 
 /// The EKF from `constants.x0` (the box centre, or the spec's start) over `run`, in `T`, step for step the generated
 /// `Ekf::push` (the written-out programs `filter`): per sample the targets of `x̂(k|k)`, or `None`
-/// where the sample is refused (a non-finite output or input, or a step whose result is not finite,
-/// which is then not taken).
+/// where the sample is refused (a non-finite output or input) or the filter restarted (a step whose
+/// result is not finite, which is then not taken: the filter starts again from `constants.x0`).
 pub fn estimate_box<T: firmware::Scalar + firmware::emitted::Maths>(
     filter: &crate::plant::kalman::FilterCode,
     constants: &EkfConstants,
@@ -36,6 +36,8 @@ pub struct BoxStep<'a, T> {
     code: &'a ModelCode,
     /// `x` and the upper triangle of `P`.
     carried: (Vec<T>, Vec<T>),
+    /// Where a restart goes: the start.
+    fresh: (Vec<T>, Vec<T>),
     refusals: Refusals,
     scratch: RefCell<Vec<T>>,
 }
@@ -47,6 +49,7 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> BoxStep<'a, T> {
             filter,
             code,
             carried: (literals(x0), literals(&p0.upper())),
+            fresh: (literals(x0), literals(&p0.upper())),
             refusals: Refusals::NONE,
             scratch: RefCell::new(Vec::new()),
         }
@@ -55,7 +58,9 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> BoxStep<'a, T> {
     /// The targets after the sample with outputs `y` and inputs `u` (`None`: refused).
     pub fn step(&mut self, y: &[f64], u: &[f64]) -> Option<Vec<T>> {
         let (y, u) = (literals::<T>(y), literals::<T>(u));
-        let BoxStep { filter, scratch, .. } = self;
+        let BoxStep {
+            filter, scratch, fresh, ..
+        } = self;
         let result = firmware::rules::filter_sample(
             &mut self.carried,
             u.iter().all(|v| v.is_finite()),
@@ -69,14 +74,20 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> BoxStep<'a, T> {
                 (x, p)
             },
             |(x, p)| finite(x, p),
+            || fresh.clone(),
         );
         let estimate = self.refusals.count(result).ok()?;
         Some(self.code.targets(&estimate, &u, &mut self.scratch.borrow_mut()))
     }
 
-    /// Samples refused so far, as the chip counts them.
+    /// Samples refused so far for a bad value, as the chip counts them.
     pub fn refused(&self) -> u32 {
         self.refusals.get()
+    }
+
+    /// Restarts so far, as the chip counts them.
+    pub fn restarts(&self) -> u32 {
+        self.refusals.restarts()
     }
 }
 
@@ -166,8 +177,13 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> StartedStep<'a, T> {
         )
     }
 
-    /// Samples refused so far, as the chip counts them.
+    /// Samples refused so far for a bad value, as the chip counts them.
     pub fn refused(&self) -> u32 {
         self.shell.refused()
+    }
+
+    /// Restarts so far, as the chip counts them.
+    pub fn restarts(&self) -> u32 {
+        self.shell.restarts()
     }
 }

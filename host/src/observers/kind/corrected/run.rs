@@ -249,9 +249,14 @@ impl<'a, T: Scalar + Maths> CorrectedStep<'a, T> {
 }
 
 impl<T: Scalar> CorrectedStep<'_, T> {
-    /// Samples refused so far, as the chip counts them.
+    /// Samples refused so far for a bad value, as the chip counts them.
     pub fn refused(&self) -> u32 {
         self.shell.refused()
+    }
+
+    /// Restarts so far, as the chip counts them.
+    pub fn restarts(&self) -> u32 {
+        self.shell.restarts()
     }
 }
 

@@ -38,10 +38,10 @@ pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) ->
     let header = started::header(
         name,
         "ekf_restart",
-        "The EKF from the box centre that checks the map once, at its first estimate, and restarts\n \
-         * from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver).",
+        "The EKF from the box centre that the map watches at every sample from its first estimate on,\n \
+         * restarted from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver).",
         true,
-        &format!("    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n    int checked;\n"),
+        &format!("    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n"),
     );
     Ok(Some(CPart {
         header,

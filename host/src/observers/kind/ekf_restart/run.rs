@@ -1,10 +1,12 @@
-//! The EKF from the box centre, checked once against the map and restarted from it when the two
-//! disagree (kind `ekf_restart`; on the chip `firmware::Restarted` over the design's `StartedEkf`).
+//! The EKF from the box centre, checked against the map at every sample and restarted from it when
+//! the two disagree (kind `ekf_restart`; on the chip `firmware::Restarted` over the design's
+//! `StartedEkf`).
 //!
 //! The box-started EKF converges fast from starts near the box centre and slowly from its corners
 //! (Example 1's scenario, `x(0) = (2, 0.5)`: 0.27 / 0.40 against the map-started EKF's 0.04 / 0.05);
-//! the map-started one has no estimate for `N − 1` samples and starts from the map's error. Checked
-//! at the map's first estimate with
+//! the map-started one has no estimate for `N − 1` samples and starts from the map's error; and a
+//! filter may lose track later (a wrong branch, a bound). Checked at every sample from the map's
+//! first estimate on with
 //!
 //! ```text
 //! d = Σ_i (x̂_i(k|k−1) − F_i)² / (P_ii(k|k−1) + e_i²),     restart from F (as `ekf_map` starts) when d > τ,
@@ -17,8 +19,8 @@
 use std::cell::RefCell;
 
 use firmware::emitted::Maths;
-use firmware::rules::{Refusals, RestartedRule};
-use firmware::{RejectedSample, Scalar};
+use firmware::rules::{Given, Refusals, Refused, RestartedRule};
+use firmware::Scalar;
 
 use crate::data::Run;
 use crate::observers::ekf::steps::kept;
@@ -35,9 +37,10 @@ pub struct RestartConstants {
     pub variances: Vec<f64>,
 }
 
-/// The thresholds [`tune`] tries: powers of two from 0.5 to 64 (for two states the χ² quantiles of
-/// 0.22 … 1 − 10⁻¹⁴).
-pub const THRESHOLDS: [f64; 8] = [0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0];
+/// The thresholds [`tune`] tries: powers of two from 0.5 to 1024 (for two states the χ² quantiles of
+/// 0.22 … 1 − 10⁻¹⁴ up to 64; beyond, for maps whose errors have heavier tails than a Gaussian's,
+/// now that the check runs at every sample).
+pub const THRESHOLDS: [f64; 12] = [0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0, 128.0, 256.0, 512.0, 1024.0];
 
 /// Whether the prediction `x` with covariance `p` (upper triangle) and the map's states `map` disagree:
 /// `!(d ≤ τ)`, so that a NaN distance restarts. Summed in state order in `T`, as the emitted
@@ -57,10 +60,11 @@ pub fn disagrees<T: Scalar>(x: &[T], p: &[T], map: &[T], constants: &RestartCons
 
 /// The observer over `run` in `T`, step for step `firmware::Restarted` with the generated
 /// `StartedEkf`: per sample the targets, NaN where there is none (a refused sample's row). The filter
-/// `filter` starts at `constants.x0` with `P(0)` = `constants.p0`; at the first accepted sample whose
+/// `filter` starts at `constants.x0` with `P(0)` = `constants.p0`; at every accepted sample whose
 /// map row `map[k]` is finite it is checked ([`disagrees`]) and, if so, restarted from the map's states
 /// with `P` = `started_p0` on the diagonal, that sample's estimate the map's row. A step whose result is
-/// not finite is refused and changes nothing (the last estimate stays).
+/// not finite restarts it, from the map's row where it is finite, else from `constants.x0` (the last
+/// estimate stays).
 #[allow(clippy::too_many_arguments)]
 pub fn estimate<T: Scalar + Maths>(
     filter: &FilterCode,
@@ -91,7 +95,9 @@ pub struct RestartStep<'a, T> {
     state_targets: &'a [usize],
     /// `P` of a restart, its upper triangle.
     started: Vec<T>,
-    /// `x` and the upper triangle of `P`, and whether the map has been checked.
+    /// `x` and the upper triangle of `P` at the start.
+    fresh: (Vec<T>, Vec<T>),
+    /// `x` and the upper triangle of `P`.
     rule: RestartedRule<(Vec<T>, Vec<T>)>,
     refusals: Refusals,
     last: Vec<T>,
@@ -116,6 +122,7 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
             restart,
             state_targets,
             started: literals(&kalman::diagonal_upper(started_p0)),
+            fresh: (literals(&constants.x0), literals(&constants.p0.upper())),
             rule: RestartedRule::new((literals(&constants.x0), literals(&constants.p0.upper()))),
             refusals: Refusals::NONE,
             last: nan.clone(),
@@ -125,8 +132,8 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
     }
 
     /// The targets at the sample with outputs `y` and inputs `u`, the map's estimate there `row`
-    /// (NaN where it has none): NaN where the sample is refused, the latest estimate where a step
-    /// is not finite.
+    /// (NaN where it has none): NaN where the sample is refused, the latest estimate where the
+    /// filter restarted on a step that was not finite.
     pub fn step(&mut self, row: &[T], y: &[f64], u: &[f64]) -> Vec<T> {
         let (y, u) = (literals::<T>(y), literals::<T>(u));
         let RestartStep {
@@ -135,6 +142,7 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
             restart,
             state_targets,
             started,
+            fresh,
             rule,
             scratch,
             ..
@@ -144,36 +152,38 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
             rule.lost(inputs_finite, |(x, p)| {
                 kept(filter.run(x, p, None, &u, &mut scratch.borrow_mut()))
             });
-            let _ = self.refusals.count::<()>(Err(RejectedSample));
+            let _ = self.refusals.count::<()>(Err(Refused::Value));
             return self.nan.clone();
         }
         let states = |row: &[T]| state_targets.iter().map(|&t| row[t]).collect::<Vec<T>>();
-        if !rule.checked {
-            let restarted = rule.check(
-                || row.iter().all(|v| v.is_finite()).then_some(row),
-                |(x, p), row| disagrees(x, p, &states(row), restart),
-                |row| kept(filter.run(&states(row), started, None, &u, &mut scratch.borrow_mut())),
-            );
-            if let Some(row) = restarted {
-                self.last = row.to_vec();
-                return row.to_vec();
-            }
-        }
-        let result = rule.follow(|(x, p)| {
-            let (estimate, x, p) = filter.run(x, p, Some(&y), &u, &mut scratch.borrow_mut());
-            let estimate = estimate.expect("a measured sample has an estimate");
-            let (x, p) = kept((None, x, p))?;
-            Some(((x, p), code.targets(&estimate, &u, &mut scratch.borrow_mut())))
-        });
-        if let Ok(targets) = self.refusals.count(result) {
-            self.last = targets;
+        let result = rule.accepted(
+            row.iter().all(|v| v.is_finite()).then_some(row),
+            |(x, p), row| disagrees(x, p, &states(row), restart),
+            |row| kept(filter.run(&states(row), started, None, &u, &mut scratch.borrow_mut())),
+            |(x, p)| {
+                let (estimate, x, p) = filter.run(x, p, Some(&y), &u, &mut scratch.borrow_mut());
+                let estimate = estimate.expect("a measured sample has an estimate");
+                let (x, p) = kept((None, x, p))?;
+                Some(((x, p), code.targets(&estimate, &u, &mut scratch.borrow_mut())))
+            },
+            || fresh.clone(),
+        );
+        match self.refusals.count(result) {
+            Ok(Given::Map(row)) => self.last = row.to_vec(),
+            Ok(Given::Followed(targets)) => self.last = targets,
+            Ok(Given::Nothing) | Err(_) => {}
         }
         self.last.clone()
     }
 
-    /// Samples refused so far, as the chip counts them.
+    /// Samples refused so far for a bad value, as the chip counts them.
     pub fn refused(&self) -> u32 {
         self.refusals.get()
+    }
+
+    /// Restarts on a step that was not finite so far, as the chip counts them.
+    pub fn restarts(&self) -> u32 {
+        self.refusals.restarts()
     }
 }
 

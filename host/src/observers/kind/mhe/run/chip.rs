@@ -190,17 +190,19 @@ impl<T: firmware::Scalar + firmware::emitted::Maths, const NX: usize, const NY: 
         }
         let window = self.stored.make_contiguous();
         let (x, end) = solve_window(&self.plant, s, window, &moved.unwrap_or(s.start), moved.is_some());
-        if !x.iter().chain(&end).all(|v| v.is_finite()) {
-            return None;
-        }
-        self.solved = Some(x);
         let values: Vec<f64> = self
             .code
             .targets(&end, &sample.u, &mut self.scratch)
             .iter()
             .map(|v| v.to_subset().expect("a real"))
             .collect();
-        // Targets the model overflows in are refused.
-        values.iter().all(|v| v.is_finite()).then_some(values)
+        // A solution or targets the model overflows in: restarted, the next window solved from the
+        // start.
+        if !(x.iter().chain(&end).all(|v| v.is_finite()) && values.iter().all(|v| v.is_finite())) {
+            self.solved = None;
+            return None;
+        }
+        self.solved = Some(x);
+        Some(values)
     }
 }
