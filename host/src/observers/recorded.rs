@@ -232,8 +232,31 @@ impl<'a> Setup<'a> {
 }
 
 impl<T: firmware::Scalar + firmware::emitted::Maths + Into<f64>> Follower<'_, T> {
-    /// The observer's row for `sample`, the map's row there `map` (of `width` targets).
+    /// Restarts so far, as the chip counts them (0 for the map, which carries nothing).
+    fn restarts(&self) -> u32 {
+        match self {
+            Follower::Map => 0,
+            Follower::Box(observer) => observer.restarts(),
+            Follower::Started(observer) => observer.restarts(),
+            Follower::Corrected(observer, _) => observer.restarts(),
+            Follower::Restarted(observer) => observer.restarts(),
+            Follower::Mhe(observer) => observer.restarts(),
+        }
+    }
+
+    /// The observer's row for `sample`, the map's row there `map` (of `width` targets): `restarted`
+    /// where the sample restarted the observer.
     fn step(&mut self, map: EstimateRow, sample: &Row, width: usize) -> EstimateRow {
+        let before = self.restarts();
+        let row = self.row(map, sample, width);
+        if self.restarts() != before {
+            return EstimateRow::without(Status::Restarted);
+        }
+        row
+    }
+
+    /// [`step`](Self::step) but for the restarts.
+    fn row(&mut self, map: EstimateRow, sample: &Row, width: usize) -> EstimateRow {
         let (y, u) = (sample.y.as_slice(), sample.u.as_slice());
         // NaN where the map has no estimate; an f32 estimate converts back to itself exactly.
         let map_values = || -> Vec<T> {

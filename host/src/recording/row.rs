@@ -13,6 +13,9 @@ pub enum Status {
     Refused,
     /// Fewer than `N` accepted samples in this run (or, for an observer the map starts, no start yet).
     NoEstimateYet,
+    /// The sample's values were finite but the observer's step was not: it restarted (from its
+    /// start, or from the map), and gave no estimate at this sample.
+    Restarted,
 }
 
 impl Status {
@@ -22,6 +25,7 @@ impl Status {
             Status::Ok => "ok",
             Status::Refused => "refused",
             Status::NoEstimateYet => "no_estimate_yet",
+            Status::Restarted => "restarted",
         }
     }
 }

@@ -80,7 +80,7 @@ pub(super) fn figure(input: &Path, estimates: &Path, design: Option<&Design>) ->
         if row.status == Status::Refused {
             refused.put(column, t);
         }
-        if row.restart {
+        if row.restart || row.status == Status::Restarted {
             restarted.put(column, t);
         }
         for (i, target) in row.targets.iter().enumerate() {

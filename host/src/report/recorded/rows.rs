@@ -15,6 +15,8 @@ pub(super) enum Status {
     Ok,
     Refused,
     NoEstimateYet,
+    /// The observer restarted at this sample (a step that was not finite).
+    Restarted,
 }
 
 /// One target on one row: the estimate (NaN unless `ok`), the truth (NaN without), the saturation.
@@ -128,6 +130,7 @@ pub(super) fn scan(
             "ok" => Status::Ok,
             "refused" => Status::Refused,
             "no_estimate_yet" => Status::NoEstimateYet,
+            "restarted" => Status::Restarted,
             cell => {
                 return Err(RecordedPlotError::BadCell {
                     file: estimates.file.clone(),

@@ -103,6 +103,9 @@ pub trait ChipStep {
     /// Takes the sample `(y, u)`: the targets at it, or `None` where the chip gives no estimate yet
     /// or refuses the sample.
     fn step(&mut self, y: &[f64], u: &[f64]) -> Option<Vec<f64>>;
+
+    /// Restarts so far (samples whose solution was not finite), as the chip counts them.
+    fn restarts(&self) -> u32;
 }
 
 /// A fresh [`ChipStep`] in `T` of the model `code` with `constants` over windows of `horizon` samples.
@@ -131,6 +134,7 @@ struct Stepper<'a, T, const NX: usize, const NY: usize> {
     /// The samples stored, the newest last (the window: the last `horizon`).
     stored: std::collections::VecDeque<firmware::Sample<T, NY, MAX_INPUTS>>,
     solved: Option<[T; NX]>,
+    restarts: u32,
     scratch: Vec<T>,
 }
 
@@ -156,6 +160,7 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths, const NX: usize, const 
             },
             stored: std::collections::VecDeque::with_capacity(horizon + 1),
             solved: None,
+            restarts: 0,
             scratch: Vec::new(),
         }
     }
@@ -200,9 +205,14 @@ impl<T: firmware::Scalar + firmware::emitted::Maths, const NX: usize, const NY: 
         // start.
         if !(x.iter().chain(&end).all(|v| v.is_finite()) && values.iter().all(|v| v.is_finite())) {
             self.solved = None;
+            self.restarts = self.restarts.saturating_add(1);
             return None;
         }
         self.solved = Some(x);
         Some(values)
+    }
+
+    fn restarts(&self) -> u32 {
+        self.restarts
     }
 }
