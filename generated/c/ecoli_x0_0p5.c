@@ -1341,11 +1341,11 @@ static void ekf_measured(const float *x, const float *p, const float *y, const f
     const float t800 = t798 + t799;
     const float t801 = t772 * t727;
     const float t802 = t800 + t801;
-    const float t803 = 7.471859e-5f;
+    const float t803 = 0.00053441565f;
     const float t804 = t777 + t803;
-    const float t805 = 6.062207e-6f;
+    const float t805 = 0.00022407259f;
     const float t806 = t792 + t805;
-    const float t807 = 5.1754235e-8f;
+    const float t807 = 6.2443684e-7f;
     const float t808 = t802 + t807;
     const float t809 = select_float(!(t668 >= t11), t11, t668);
     const float t810 = select_float(!(t674 >= t11), t11, t674);
@@ -1948,11 +1948,11 @@ static void ekf_unmeasured(const float *x, const float *p, const float *u, float
     const float t578 = t576 + t577;
     const float t579 = t550 * t505;
     const float t580 = t578 + t579;
-    const float t581 = 7.471859e-5f;
+    const float t581 = 0.00053441565f;
     const float t582 = t555 + t581;
-    const float t583 = 6.062207e-6f;
+    const float t583 = 0.00022407259f;
     const float t584 = t570 + t583;
-    const float t585 = 5.1754235e-8f;
+    const float t585 = 6.2443684e-7f;
     const float t586 = t580 + t585;
     const float t587 = select_float(!(t446 >= t19), t19, t446);
     const float t588 = select_float(!(t452 >= t19), t19, t452);
@@ -1973,8 +1973,8 @@ static const float EKF_X0[ECOLI_X0_0P5_STATES] = {
     0.5f, 2.5f, 0.15f
 };
 static const float EKF_P0[ECOLI_X0_0P5_COVARIANCE] = {
-    0.0015244159f, 0.0f, 0.0f, 1.1085151f,
-    0.0f, 0.032774616f
+    0.005098792f, 0.0f, 0.0f, 0.4831565f,
+    0.0f, 0.0051940335f
 };
 
 /* The EKF's prediction alone (a lost output), taken when finite. */
@@ -3394,11 +3394,11 @@ static void ukf_measured(const float *x, const float *p, const float *y, const f
     const float t1333 = t1263 * t1263;
     const float t1334 = t1332 + t1333;
     const float t1335 = t124 * t1334;
-    const float t1336 = 6.6651405e-6f;
+    const float t1336 = 0.0010809527f;
     const float t1337 = t1275 + t1336;
-    const float t1338 = 1.2262941e-6f;
+    const float t1338 = 0.0022970699f;
     const float t1339 = t1311 + t1338;
-    const float t1340 = 3.7674024e-8f;
+    const float t1340 = 1.6450299e-8f;
     const float t1341 = t1335 + t1340;
     const float t1342 = select_float(!(t1233 >= t9), t9, t1233);
     const float t1343 = select_float(!(t1239 >= t9), t9, t1239);
@@ -4370,11 +4370,11 @@ static void ukf_unmeasured(const float *x, const float *p, const float *u, float
     const float t947 = t877 * t877;
     const float t948 = t946 + t947;
     const float t949 = t841 * t948;
-    const float t950 = 6.6651405e-6f;
+    const float t950 = 0.0010809527f;
     const float t951 = t889 + t950;
-    const float t952 = 1.2262941e-6f;
+    const float t952 = 0.0022970699f;
     const float t953 = t925 + t952;
-    const float t954 = 3.7674024e-8f;
+    const float t954 = 1.6450299e-8f;
     const float t955 = t949 + t954;
     const float t956 = select_float(!(t847 >= t9), t9, t847);
     const float t957 = select_float(!(t853 >= t9), t9, t853);
@@ -4395,8 +4395,8 @@ static const float UKF_X0[ECOLI_X0_0P5_STATES] = {
     0.5f, 2.5f, 0.15f
 };
 static const float UKF_P0[ECOLI_X0_0P5_COVARIANCE] = {
-    0.0004967157f, 0.0f, 0.0f, 1.4859407f,
-    0.0f, 0.055956807f
+    4.7611105e-5f, 0.0f, 0.0f, 1.174829f,
+    0.0f, 0.0013430597f
 };
 
 /* The UKF's prediction alone (a lost output), taken when finite. */
@@ -4642,7 +4642,7 @@ static const float MHE_WEIGHTS[ECOLI_X0_0P5_OUTPUTS] = {
     10.0f, 0.05f
 };
 static const float MHE_PRIOR[ECOLI_X0_0P5_STATES] = {
-    3.0290594f, 0.4f, 50.319195f
+    30.290594f, 4.0f, 503.19193f
 };
 static const float MHE_LOWER[ECOLI_X0_0P5_STATES] = {
     0.4385543f, 0.0f, 0.0f
@@ -4655,7 +4655,7 @@ static const float MHE_START[ECOLI_X0_0P5_STATES] = {
 };
 static const float MHE_DAMPING = 1e-6f;
 static const float MHE_H = 0.2f;
-#define MHE_ITERATIONS 4u
+#define MHE_ITERATIONS 6u
 #define MHE_SUBSTEPS 1u
 #define MHE_NX ECOLI_X0_0P5_STATES
 #define MHE_NY ECOLI_X0_0P5_OUTPUTS

@@ -141,7 +141,7 @@ void ecoli_x0_0p5_ukf_box_init(ecoli_x0_0p5_ukf_box *observer);
 ecoli_x0_0p5_status ecoli_x0_0p5_ukf_box_push(ecoli_x0_0p5_ukf_box *observer, const float *y, const float *u);
 ecoli_x0_0p5_status ecoli_x0_0p5_ukf_box_estimate(const ecoli_x0_0p5_ukf_box *observer, float *values, ecoli_x0_0p5_saturation *saturation);
 
-/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 4 Gauss-Newton
+/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 6 Gauss-Newton
  * step(s) over the last ECOLI_X0_0P5_HORIZON samples from the previous solution moved one sample on, each
  * solved by an L D L^T factorisation and projected onto the learning box. Thousands of instructions
  * per sample (docs/chip.md): the on-line estimate the map replaces. */

@@ -2234,11 +2234,11 @@ static void ekf_measured(const float *x, const float *p, const float *y, const f
     const float t800 = t798 + t799;
     const float t801 = t772 * t727;
     const float t802 = t800 + t801;
-    const float t803 = 1.935282e-7f;
+    const float t803 = 1.5369727e-5f;
     const float t804 = t777 + t803;
-    const float t805 = 1.840853e-7f;
+    const float t805 = 0.00025431477f;
     const float t806 = t792 + t805;
-    const float t807 = 1.17764065e-8f;
+    const float t807 = 5.28673e-7f;
     const float t808 = t802 + t807;
     const float t809 = select_float(!(t668 >= t11), t11, t668);
     const float t810 = select_float(!(t674 >= t11), t11, t674);
@@ -2841,11 +2841,11 @@ static void ekf_unmeasured(const float *x, const float *p, const float *u, float
     const float t578 = t576 + t577;
     const float t579 = t550 * t505;
     const float t580 = t578 + t579;
-    const float t581 = 1.935282e-7f;
+    const float t581 = 1.5369727e-5f;
     const float t582 = t555 + t581;
-    const float t583 = 1.840853e-7f;
+    const float t583 = 0.00025431477f;
     const float t584 = t570 + t583;
-    const float t585 = 1.17764065e-8f;
+    const float t585 = 5.28673e-7f;
     const float t586 = t580 + t585;
     const float t587 = select_float(!(t446 >= t19), t19, t446);
     const float t588 = select_float(!(t452 >= t19), t19, t452);
@@ -2866,8 +2866,8 @@ static const float EKF_X0[ECOLI_X0_2_STATES] = {
     2.0f, 2.5f, 0.15f
 };
 static const float EKF_P0[ECOLI_X0_2_COVARIANCE] = {
-    1.6278049f, 0.0f, 0.0f, 3.397246f,
-    0.0f, 0.031897947f
+    0.0110650165f, 0.0f, 0.0f, 0.024989702f,
+    0.0f, 0.00058474793f
 };
 
 /* The EKF's prediction alone (a lost output), taken when finite. */
@@ -4287,11 +4287,11 @@ static void ukf_measured(const float *x, const float *p, const float *y, const f
     const float t1333 = t1263 * t1263;
     const float t1334 = t1332 + t1333;
     const float t1335 = t124 * t1334;
-    const float t1336 = 2.103015e-6f;
+    const float t1336 = 1.697489e-6f;
     const float t1337 = t1275 + t1336;
-    const float t1338 = 4.006786e-6f;
+    const float t1338 = 4.9952423e-6f;
     const float t1339 = t1311 + t1338;
-    const float t1340 = 7.53586e-8f;
+    const float t1340 = 7.6796496e-8f;
     const float t1341 = t1335 + t1340;
     const float t1342 = select_float(!(t1233 >= t9), t9, t1233);
     const float t1343 = select_float(!(t1239 >= t9), t9, t1239);
@@ -5263,11 +5263,11 @@ static void ukf_unmeasured(const float *x, const float *p, const float *u, float
     const float t947 = t877 * t877;
     const float t948 = t946 + t947;
     const float t949 = t841 * t948;
-    const float t950 = 2.103015e-6f;
+    const float t950 = 1.697489e-6f;
     const float t951 = t889 + t950;
-    const float t952 = 4.006786e-6f;
+    const float t952 = 4.9952423e-6f;
     const float t953 = t925 + t952;
-    const float t954 = 7.53586e-8f;
+    const float t954 = 7.6796496e-8f;
     const float t955 = t949 + t954;
     const float t956 = select_float(!(t847 >= t9), t9, t847);
     const float t957 = select_float(!(t853 >= t9), t9, t853);
@@ -5288,8 +5288,8 @@ static const float UKF_X0[ECOLI_X0_2_STATES] = {
     2.0f, 2.5f, 0.15f
 };
 static const float UKF_P0[ECOLI_X0_2_COVARIANCE] = {
-    0.16901448f, 0.0f, 0.0f, 0.3230251f,
-    0.0f, 0.0024640344f
+    0.104794845f, 0.0f, 0.0f, 0.22625893f,
+    0.0f, 0.0037814663f
 };
 
 /* The UKF's prediction alone (a lost output), taken when finite. */
@@ -5535,7 +5535,7 @@ static const float MHE_WEIGHTS[ECOLI_X0_2_OUTPUTS] = {
     10.0f, 0.05f
 };
 static const float MHE_PRIOR[ECOLI_X0_2_STATES] = {
-    6.9391437f, 4.0f, 199.5936f
+    69.39143f, 40.0f, 1995.9359f
 };
 static const float MHE_LOWER[ECOLI_X0_2_STATES] = {
     1.7542171f, 0.0f, 0.0f

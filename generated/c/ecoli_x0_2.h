@@ -163,12 +163,12 @@ void ecoli_x0_2_mhe_init(ecoli_x0_2_mhe *observer);
 ecoli_x0_2_status ecoli_x0_2_mhe_push(ecoli_x0_2_mhe *observer, const float *y, const float *u);
 ecoli_x0_2_status ecoli_x0_2_mhe_estimate(const ecoli_x0_2_mhe *observer, float *values, ecoli_x0_2_saturation *saturation);
 
-/* This design's observer, of the kind `gen` chose or the spec named: ukf_box. */
-#define ECOLI_X0_2_KIND "ukf_box"
-typedef ecoli_x0_2_ukf_box ecoli_x0_2_observer;
-#define ecoli_x0_2_observer_init ecoli_x0_2_ukf_box_init
-#define ecoli_x0_2_observer_push ecoli_x0_2_ukf_box_push
-#define ecoli_x0_2_observer_estimate ecoli_x0_2_ukf_box_estimate
+/* This design's observer, of the kind `gen` chose or the spec named: ekf_box. */
+#define ECOLI_X0_2_KIND "ekf_box"
+typedef ecoli_x0_2_ekf_box ecoli_x0_2_observer;
+#define ecoli_x0_2_observer_init ecoli_x0_2_ekf_box_init
+#define ecoli_x0_2_observer_push ecoli_x0_2_ekf_box_push
+#define ecoli_x0_2_observer_estimate ecoli_x0_2_ekf_box_estimate
 
 /* The Rust static library's interface (c/include/ecoli_x0_2.h of a crate `mho gen --spec` writes) over
  * ecoli_x0_2_observer: the same calls, statuses (ecoli_x0_2_status) and flags (ecoli_x0_2_saturation), so

@@ -1421,9 +1421,9 @@ static void ekf_measured(const float *x, const float *p, const float *y, const f
     const float t232 = t224 * t213;
     const float t233 = t227 * t219;
     const float t234 = t232 + t233;
-    const float t235 = 0.067493826f;
+    const float t235 = 0.057887506f;
     const float t236 = t228 + t235;
-    const float t237 = 6.6152475e-6f;
+    const float t237 = 1.4054016e-5f;
     const float t238 = t234 + t237;
     out[0] = t14;
     out[1] = t16;
@@ -1641,9 +1641,9 @@ static void ekf_unmeasured(const float *x, const float *p, const float *u, float
     const float t202 = t194 * t183;
     const float t203 = t197 * t189;
     const float t204 = t202 + t203;
-    const float t205 = 0.067493826f;
+    const float t205 = 0.057887506f;
     const float t206 = t198 + t205;
-    const float t207 = 6.6152475e-6f;
+    const float t207 = 1.4054016e-5f;
     const float t208 = t204 + t207;
     out[0] = t166;
     out[1] = t172;
@@ -1657,7 +1657,7 @@ static const float EKF_X0[TWO_TANKS_STATES] = {
     15.0f, 15.0f
 };
 static const float EKF_P0[TWO_TANKS_COVARIANCE] = {
-    26.117428f, 0.0f, 729.1228f
+    37.50865f, 0.0f, 453.69177f
 };
 
 /* The EKF's prediction alone (a lost output), taken when finite. */
@@ -2157,9 +2157,9 @@ static void ukf_measured(const float *x, const float *p, const float *y, const f
     const float t414 = t393 * t393;
     const float t415 = t413 + t414;
     const float t416 = t36 * t415;
-    const float t417 = 0.05922887f;
+    const float t417 = 0.056878302f;
     const float t418 = t400 + t417;
-    const float t419 = 6.835007e-6f;
+    const float t419 = 1.4551619e-5f;
     const float t420 = t416 + t419;
     out[0] = t86;
     out[1] = t88;
@@ -2505,9 +2505,9 @@ static void ukf_unmeasured(const float *x, const float *p, const float *u, float
     const float t330 = t309 * t309;
     const float t331 = t329 + t330;
     const float t332 = t294 * t331;
-    const float t333 = 0.05922887f;
+    const float t333 = 0.056878302f;
     const float t334 = t316 + t333;
-    const float t335 = 6.835007e-6f;
+    const float t335 = 1.4551619e-5f;
     const float t336 = t332 + t335;
     out[0] = t298;
     out[1] = t302;
@@ -2521,7 +2521,7 @@ static const float UKF_X0[TWO_TANKS_STATES] = {
     15.0f, 15.0f
 };
 static const float UKF_P0[TWO_TANKS_COVARIANCE] = {
-    29.562452f, 0.0f, 674.7667f
+    6.996126f, 0.0f, 3716.8132f
 };
 
 /* The UKF's prediction alone (a lost output), taken when finite. */
@@ -2606,94 +2606,94 @@ two_tanks_status two_tanks_ukf_box_estimate(const two_tanks_ukf_box *o, float *v
  * outputs, row by row). */
 static const float CORRECTED_BLENDS[30][4] = {
 {
-    0.005700584f, 0.005700584f, 0.52523804f, 0.03538546f
+    0.04332547f, 0.04332547f, 0.5247536f, 0.037860144f
 },
 {
-    0.0028584395f, 0.0028584395f, 0.5254738f, 0.036577273f
+    0.0221424f, 0.0221424f, 0.53184146f, 0.039227553f
 },
 {
-    0.0019074437f, 0.0019074437f, 0.52555263f, 0.036976058f
+    0.014871363f, 0.014871363f, 0.53427434f, 0.039696913f
 },
 {
-    0.0014312653f, 0.0014312653f, 0.52559215f, 0.037175737f
+    0.011195144f, 0.011195144f, 0.5355044f, 0.039934218f
 },
 {
-    0.0011453402f, 0.0011453402f, 0.5256159f, 0.037295636f
+    0.008976213f, 0.008976213f, 0.5362469f, 0.040077455f
 },
 {
-    0.0009546323f, 0.0009546323f, 0.52563167f, 0.037375607f
+    0.0074913846f, 0.0074913846f, 0.5367437f, 0.040173303f
 },
 {
-    0.0008183679f, 0.0008183679f, 0.525643f, 0.03743275f
+    0.006428066f, 0.006428066f, 0.5370995f, 0.040241946f
 },
 {
-    0.00071614515f, 0.00071614515f, 0.52565145f, 0.037475616f
+    0.005629081f, 0.005629081f, 0.5373668f, 0.04029352f
 },
 {
-    0.0006366241f, 0.0006366241f, 0.5256581f, 0.03750896f
+    0.005006759f, 0.005006759f, 0.53757507f, 0.040333692f
 },
 {
-    0.0005729982f, 0.0005729982f, 0.5256633f, 0.03753564f
+    0.0045083403f, 0.0045083403f, 0.53774184f, 0.040365867f
 },
 {
-    0.0005209346f, 0.0005209346f, 0.52566767f, 0.03755747f
+    0.004100172f, 0.004100172f, 0.5378784f, 0.040392213f
 },
 {
-    0.0004775441f, 0.0004775441f, 0.52567124f, 0.03757567f
+    0.0037597753f, 0.0037597753f, 0.5379923f, 0.040414188f
 },
 {
-    0.00044082612f, 0.00044082612f, 0.5256743f, 0.037591066f
+    0.003471566f, 0.003471566f, 0.53808874f, 0.040432792f
 },
 {
-    0.00040935143f, 0.00040935143f, 0.5256769f, 0.037604265f
+    0.0032243964f, 0.0032243964f, 0.5381714f, 0.040448748f
 },
 {
-    0.00038207177f, 0.00038207177f, 0.5256792f, 0.0376157f
+    0.0030100837f, 0.0030100837f, 0.5382431f, 0.04046258f
 },
 {
-    0.00035820084f, 0.00035820084f, 0.52568114f, 0.03762571f
+    0.0028224846f, 0.0028224846f, 0.53830594f, 0.04047469f
 },
 {
-    0.00033713732f, 0.00033713732f, 0.52568287f, 0.037634544f
+    0.002656897f, 0.002656897f, 0.5383613f, 0.04048538f
 },
 {
-    0.00031841343f, 0.00031841343f, 0.5256845f, 0.037642397f
+    0.0025096622f, 0.0025096622f, 0.5384106f, 0.040494885f
 },
 {
-    0.00030165986f, 0.00030165986f, 0.52568585f, 0.037649423f
+    0.0023778887f, 0.0023778887f, 0.53845465f, 0.04050339f
 },
 {
-    0.0002865812f, 0.0002865812f, 0.5256871f, 0.037655745f
+    0.0022592628f, 0.0022592628f, 0.53849435f, 0.04051105f
 },
 {
-    0.0002729382f, 0.0002729382f, 0.52568823f, 0.037661467f
+    0.0021519104f, 0.0021519104f, 0.5385303f, 0.04051798f
 },
 {
-    0.00026053516f, 0.00026053516f, 0.52568924f, 0.037666667f
+    0.0020542974f, 0.0020542974f, 0.53856295f, 0.040524278f
 },
 {
-    0.00024921037f, 0.00024921037f, 0.5256902f, 0.037671417f
+    0.0019651556f, 0.0019651556f, 0.53859276f, 0.040530033f
 },
 {
-    0.00023882907f, 0.00023882907f, 0.52569103f, 0.037675768f
+    0.0018834283f, 0.0018834283f, 0.5386201f, 0.04053531f
 },
 {
-    0.0002292781f, 0.0002292781f, 0.52569187f, 0.037679777f
+    0.0018082274f, 0.0018082274f, 0.53864527f, 0.040540162f
 },
 {
-    0.00022046166f, 0.00022046166f, 0.5256926f, 0.037683472f
+    0.0017388011f, 0.0017388011f, 0.5386685f, 0.040544644f
 },
 {
-    0.00021229814f, 0.00021229814f, 0.52569324f, 0.037686896f
+    0.0016745089f, 0.0016745089f, 0.53869003f, 0.040548794f
 },
 {
-    0.00020471762f, 0.00020471762f, 0.5256939f, 0.037690073f
+    0.0016148016f, 0.0016148016f, 0.53871f, 0.04055265f
 },
 {
-    0.00019765979f, 0.00019765979f, 0.5256945f, 0.037693035f
+    0.0015592056f, 0.0015592056f, 0.5387286f, 0.040556237f
 },
 {
-    0.00019107238f, 0.00019107238f, 0.525695f, 0.037695795f
+    0.0015073104f, 0.0015073104f, 0.538746f, 0.04055959f
 }
 };
 static const float CORRECTED_NO_BLEND[4] = { 0.0f };
@@ -2832,10 +2832,10 @@ static void corrected_steady(const float *x, const float *y, const float *u, con
     const float t1 = x[1];
     const float t2 = y[0];
     const float t3 = t2 - t1;
-    const float t4 = 0.5257109f;
+    const float t4 = 0.5392503f;
     const float t5 = t4 * t3;
     const float t6 = t0 + t5;
-    const float t7 = 0.03777592f;
+    const float t7 = 0.040656887f;
     const float t8 = t7 * t3;
     const float t9 = t1 + t8;
     out[0] = t6;
@@ -2976,7 +2976,7 @@ two_tanks_status two_tanks_corrected_estimate(const two_tanks_corrected *o, floa
 
 /* P(N-1)'s upper triangle of the EKF the map starts. */
 static const float STARTED_P0[TWO_TANKS_COVARIANCE] = {
-    0.118711874f, 0.0f, 0.010944762f
+    0.12191126f, 0.0f, 0.010955491f
 };
 
 /* Each state's map estimate, from the map's targets. */
@@ -3104,10 +3104,10 @@ static int restart_disagrees(const float *x, const float *p, const float *f) {
     float d = 0.0f;
     float e;
     e = x[0] - f[0];
-    d += e * e / (p[0] + 0.118711874f);
+    d += e * e / (p[0] + 0.12191126f);
     e = x[1] - f[1];
-    d += e * e / (p[2] + 0.010944762f);
-    return !(d <= 4.0f);
+    d += e * e / (p[2] + 0.010955491f);
+    return !(d <= 8.0f);
 }
 
 static void ekf_restart_fresh(two_tanks_ekf_restart *o) {

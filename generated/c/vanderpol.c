@@ -723,9 +723,9 @@ static void ekf_measured(const float *x, const float *p, const float *y, const f
     const float t203 = t193 * t178;
     const float t204 = t196 * t184;
     const float t205 = t203 + t204;
-    const float t206 = 3.147554e-5f;
+    const float t206 = 0.00029761545f;
     const float t207 = t199 + t206;
-    const float t208 = 0.0020772703f;
+    const float t208 = 0.00083887536f;
     const float t209 = t205 + t208;
     out[0] = t18;
     out[1] = t20;
@@ -897,9 +897,9 @@ static void ekf_unmeasured(const float *x, const float *p, const float *u, float
     const float t155 = t145 * t130;
     const float t156 = t148 * t136;
     const float t157 = t155 + t156;
-    const float t158 = 3.147554e-5f;
+    const float t158 = 0.00029761545f;
     const float t159 = t151 + t158;
-    const float t160 = 0.0020772703f;
+    const float t160 = 0.00083887536f;
     const float t161 = t157 + t160;
     out[0] = t109;
     out[1] = t115;
@@ -913,7 +913,7 @@ static const float EKF_X0[VANDERPOL_STATES] = {
     0.0f, 0.0f
 };
 static const float EKF_P0[VANDERPOL_COVARIANCE] = {
-    0.18155766f, 0.0f, 0.49253356f
+    0.17828836f, 0.0f, 0.48597187f
 };
 
 /* The EKF's prediction alone (a lost output), taken when finite. */
@@ -1357,9 +1357,9 @@ static void ukf_measured(const float *x, const float *p, const float *y, const f
     const float t357 = t335 * t335;
     const float t358 = t356 + t357;
     const float t359 = t40 * t358;
-    const float t360 = 1.248606e-5f;
+    const float t360 = 3.4072511e-6f;
     const float t361 = t343 + t360;
-    const float t362 = 0.00022775533f;
+    const float t362 = 6.9451475e-5f;
     const float t363 = t359 + t362;
     out[0] = t90;
     out[1] = t92;
@@ -1645,9 +1645,9 @@ static void ukf_unmeasured(const float *x, const float *p, const float *u, float
     const float t269 = t247 * t247;
     const float t270 = t268 + t269;
     const float t271 = t231 * t270;
-    const float t272 = 1.248606e-5f;
+    const float t272 = 3.4072511e-6f;
     const float t273 = t255 + t272;
-    const float t274 = 0.00022775533f;
+    const float t274 = 6.9451475e-5f;
     const float t275 = t271 + t274;
     out[0] = t235;
     out[1] = t239;
@@ -1661,7 +1661,7 @@ static const float UKF_X0[VANDERPOL_STATES] = {
     0.0f, 0.0f
 };
 static const float UKF_P0[VANDERPOL_COVARIANCE] = {
-    2.0708659f, 0.0f, 26.300774f
+    1.9497964f, 0.0f, 16.523983f
 };
 
 /* The UKF's prediction alone (a lost output), taken when finite. */
@@ -1746,94 +1746,94 @@ vanderpol_status vanderpol_ukf_box_estimate(const vanderpol_ukf_box *o, float *v
  * outputs, row by row). */
 static const float CORRECTED_BLENDS[30][4] = {
 {
-    0.28637603f, 0.28637603f, 0.3247595f, 0.6700907f
+    0.3113645f, 0.3113645f, 0.38916543f, 0.6603901f
 },
 {
-    0.1671172f, 0.1671172f, 0.19193627f, 0.4106896f
+    0.18438822f, 0.18438822f, 0.23528704f, 0.41522315f
 },
 {
-    0.11798384f, 0.11798384f, 0.13721451f, 0.30381912f
+    0.1309756f, 0.1309756f, 0.17055805f, 0.31209356f
 },
 {
-    0.09117724f, 0.09117724f, 0.107358955f, 0.24551181f
+    0.101557076f, 0.101557076f, 0.13490671f, 0.255292f
 },
 {
-    0.07429662f, 0.07429662f, 0.088558346f, 0.20879462f
+    0.08293009f, 0.08293009f, 0.11233327f, 0.21932685f
 },
 {
-    0.06269013f, 0.06269013f, 0.07563174f, 0.18354923f
+    0.07007699f, 0.07007699f, 0.09675702f, 0.19450998f
 },
 {
-    0.05421998f, 0.05421998f, 0.0661982f, 0.1651257f
+    0.06067339f, 0.06067339f, 0.08536111f, 0.17635342f
 },
 {
-    0.047766216f, 0.047766216f, 0.05901039f, 0.15108806f
+    0.05349493f, 0.05349493f, 0.07666177f, 0.1624932f
 },
 {
-    0.04268541f, 0.04268541f, 0.053351693f, 0.14003673f
+    0.04783538f, 0.04783538f, 0.06980314f, 0.15156567f
 },
 {
-    0.038581554f, 0.038581554f, 0.048781067f, 0.1311104f
+    0.04325877f, 0.04325877f, 0.0642569f, 0.14272912f
 },
 {
-    0.03519759f, 0.03519759f, 0.045012217f, 0.12374991f
+    0.03948142f, 0.03948142f, 0.059679255f, 0.13543577f
 },
 {
-    0.032359373f, 0.032359373f, 0.04185118f, 0.11757648f
+    0.03631077f, 0.03631077f, 0.05583685f, 0.12931386f
 },
 {
-    0.029944729f, 0.029944729f, 0.0391619f, 0.11232436f
+    0.033611514f, 0.033611514f, 0.05256571f, 0.12410211f
 },
 {
-    0.027865421f, 0.027865421f, 0.03684609f, 0.10780164f
+    0.031285804f, 0.031285804f, 0.04974726f, 0.119611606f
 },
 {
-    0.026056131f, 0.026056131f, 0.034831014f, 0.10386623f
+    0.029261114f, 0.029261114f, 0.047293603f, 0.115702316f
 },
 {
-    0.024467468f, 0.024467468f, 0.033061657f, 0.100410715f
+    0.027482554f, 0.027482554f, 0.045138225f, 0.11226826f
 },
 {
-    0.023061397f, 0.023061397f, 0.03149566f, 0.097352356f
+    0.025907816f, 0.025907816f, 0.043229852f, 0.10922774f
 },
 {
-    0.021808147f, 0.021808147f, 0.030099869f, 0.0946264f
+    0.024503762f, 0.024503762f, 0.041528326f, 0.10651678f
 },
 {
-    0.020684091f, 0.020684091f, 0.028847963f, 0.09218145f
+    0.023244068f, 0.023244068f, 0.040001743f, 0.10408455f
 },
 {
-    0.019670231f, 0.019670231f, 0.027718786f, 0.08997619f
+    0.022107558f, 0.022107558f, 0.038624443f, 0.10189017f
 },
 {
-    0.018751116f, 0.018751116f, 0.026695132f, 0.08797702f
+    0.021077005f, 0.021077005f, 0.03737555f, 0.099900365f
 },
 {
-    0.017914062f, 0.017914062f, 0.02576287f, 0.08615633f
+    0.020138254f, 0.020138254f, 0.036237907f, 0.09808782f
 },
 {
-    0.017148545f, 0.017148545f, 0.024910286f, 0.08449125f
+    0.019279558f, 0.019279558f, 0.035197284f, 0.09642984f
 },
 {
-    0.016445775f, 0.016445775f, 0.024127582f, 0.08296265f
+    0.018491097f, 0.018491097f, 0.034241773f, 0.09490747f
 },
 {
-    0.015798336f, 0.015798336f, 0.023406504f, 0.0815544f
+    0.017764593f, 0.017764593f, 0.033361346f, 0.09350473f
 },
 {
-    0.015199943f, 0.015199943f, 0.022740051f, 0.080252826f
+    0.017093018f, 0.017093018f, 0.032547485f, 0.09220805f
 },
 {
-    0.014645227f, 0.014645227f, 0.022122242f, 0.07904626f
+    0.01647037f, 0.01647037f, 0.03179292f, 0.09100583f
 },
 {
-    0.0141295735f, 0.0141295735f, 0.02154794f, 0.077924654f
+    0.01589149f, 0.01589149f, 0.031091396f, 0.089888126f
 },
 {
-    0.013648997f, 0.013648997f, 0.021012701f, 0.076879345f
+    0.01535192f, 0.01535192f, 0.030437509f, 0.08884632f
 },
 {
-    0.013200036f, 0.013200036f, 0.020512676f, 0.07590281f
+    0.014847788f, 0.014847788f, 0.029826567f, 0.08787294f
 }
 };
 static const float CORRECTED_NO_BLEND[4] = { 0.0f };
@@ -1946,10 +1946,10 @@ static void corrected_steady(const float *x, const float *y, const float *u, con
     const float t2 = t0 + t1;
     const float t3 = y[0];
     const float t4 = t3 - t2;
-    const float t5 = 0.005811278f;
+    const float t5 = 0.01183302f;
     const float t6 = t5 * t4;
     const float t7 = t0 + t6;
-    const float t8 = 0.047191277f;
+    const float t8 = 0.059204694f;
     const float t9 = t8 * t4;
     const float t10 = t1 + t9;
     out[0] = t7;
@@ -2090,7 +2090,7 @@ vanderpol_status vanderpol_corrected_estimate(const vanderpol_corrected *o, floa
 
 /* P(N-1)'s upper triangle of the EKF the map starts. */
 static const float STARTED_P0[VANDERPOL_COVARIANCE] = {
-    0.05544692f, 0.0f, 0.07804465f
+    0.05719194f, 0.0f, 0.080293626f
 };
 
 /* Each state's map estimate, from the map's targets. */
@@ -2218,9 +2218,9 @@ static int restart_disagrees(const float *x, const float *p, const float *f) {
     float d = 0.0f;
     float e;
     e = x[0] - f[0];
-    d += e * e / (p[0] + 0.05544692f);
+    d += e * e / (p[0] + 0.05719194f);
     e = x[1] - f[1];
-    d += e * e / (p[2] + 0.07804465f);
+    d += e * e / (p[2] + 0.080293626f);
     return !(d <= 16.0f);
 }
 

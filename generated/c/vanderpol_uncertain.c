@@ -741,9 +741,9 @@ static void ekf_measured(const float *x, const float *p, const float *y, const f
     const float t204 = t194 * t179;
     const float t205 = t197 * t185;
     const float t206 = t204 + t205;
-    const float t207 = 0.00095958455f;
+    const float t207 = 0.0028291305f;
     const float t208 = t200 + t207;
-    const float t209 = 0.02396009f;
+    const float t209 = 0.033209372f;
     const float t210 = t206 + t209;
     out[0] = t18;
     out[1] = t20;
@@ -916,9 +916,9 @@ static void ekf_unmeasured(const float *x, const float *p, const float *u, float
     const float t156 = t146 * t131;
     const float t157 = t149 * t137;
     const float t158 = t156 + t157;
-    const float t159 = 0.00095958455f;
+    const float t159 = 0.0028291305f;
     const float t160 = t152 + t159;
-    const float t161 = 0.02396009f;
+    const float t161 = 0.033209372f;
     const float t162 = t158 + t161;
     out[0] = t110;
     out[1] = t116;
@@ -932,7 +932,7 @@ static const float EKF_X0[VANDERPOL_UNCERTAIN_STATES] = {
     0.0f, 0.0f
 };
 static const float EKF_P0[VANDERPOL_UNCERTAIN_COVARIANCE] = {
-    0.22153471f, 0.0f, 0.78878015f
+    1.5927348f, 0.0f, 19.371712f
 };
 
 /* The EKF's prediction alone (a lost output), taken when finite. */
@@ -1377,9 +1377,9 @@ static void ukf_measured(const float *x, const float *p, const float *y, const f
     const float t358 = t336 * t336;
     const float t359 = t357 + t358;
     const float t360 = t40 * t359;
-    const float t361 = 0.00026075653f;
+    const float t361 = 0.00011795237f;
     const float t362 = t344 + t361;
-    const float t363 = 0.033003677f;
+    const float t363 = 0.03254314f;
     const float t364 = t360 + t363;
     out[0] = t90;
     out[1] = t92;
@@ -1666,9 +1666,9 @@ static void ukf_unmeasured(const float *x, const float *p, const float *u, float
     const float t270 = t248 * t248;
     const float t271 = t269 + t270;
     const float t272 = t232 * t271;
-    const float t273 = 0.00026075653f;
+    const float t273 = 0.00011795237f;
     const float t274 = t256 + t273;
-    const float t275 = 0.033003677f;
+    const float t275 = 0.03254314f;
     const float t276 = t272 + t275;
     out[0] = t236;
     out[1] = t240;
@@ -1682,7 +1682,7 @@ static const float UKF_X0[VANDERPOL_UNCERTAIN_STATES] = {
     0.0f, 0.0f
 };
 static const float UKF_P0[VANDERPOL_UNCERTAIN_COVARIANCE] = {
-    1.6372418f, 0.0f, 633.39606f
+    1.8518863f, 0.0f, 22.292301f
 };
 
 /* The UKF's prediction alone (a lost output), taken when finite. */
@@ -1767,94 +1767,94 @@ vanderpol_uncertain_status vanderpol_uncertain_ukf_box_estimate(const vanderpol_
  * outputs, row by row). */
 static const float CORRECTED_BLENDS[30][4] = {
 {
-    0.27245793f, 0.27245793f, 0.08151674f, 0.3052261f
+    0.32640573f, 0.32640573f, 0.28828135f, 0.19353467f
 },
 {
-    0.15771422f, 0.15771422f, 0.07158352f, 0.3317225f
+    0.19503278f, 0.19503278f, 0.19058368f, 0.25196034f
 },
 {
-    0.11097703f, 0.11097703f, 0.06753753f, 0.34251496f
+    0.13906243f, 0.13906243f, 0.14896038f, 0.2768521f
 },
 {
-    0.0856079f, 0.0856079f, 0.06534135f, 0.34837314f
+    0.108053364f, 0.108053364f, 0.12589997f, 0.2906428f
 },
 {
-    0.06967934f, 0.06967934f, 0.06396244f, 0.35205135f
+    0.08835204f, 0.08835204f, 0.111248754f, 0.2994046f
 },
 {
-    0.058748376f, 0.058748376f, 0.06301616f, 0.3545755f
+    0.07472708f, 0.07472708f, 0.10111633f, 0.30546403f
 },
 {
-    0.050781943f, 0.050781943f, 0.062326513f, 0.3564151f
+    0.06474293f, 0.06474293f, 0.093691446f, 0.3099043f
 },
 {
-    0.04471806f, 0.04471806f, 0.06180157f, 0.35781536f
+    0.057112265f, 0.057112265f, 0.08801678f, 0.3132979f
 },
 {
-    0.039947875f, 0.039947875f, 0.06138862f, 0.35891688f
+    0.051090673f, 0.051090673f, 0.08353872f, 0.31597587f
 },
 {
-    0.036097288f, 0.036097288f, 0.06105528f, 0.35980606f
+    0.046217732f, 0.046217732f, 0.079914875f, 0.31814304f
 },
 {
-    0.032923758f, 0.032923758f, 0.06078055f, 0.3605389f
+    0.0421934f, 0.0421934f, 0.07692211f, 0.3199328f
 },
 {
-    0.030263143f, 0.030263143f, 0.060550224f, 0.36115327f
+    0.03881376f, 0.03881376f, 0.074408785f, 0.3214358f
 },
 {
-    0.028000392f, 0.028000392f, 0.06035434f, 0.36167577f
+    0.035935376f, 0.035935376f, 0.07226823f, 0.3227159f
 },
 {
-    0.02605247f, 0.02605247f, 0.06018571f, 0.3621256f
+    0.033454433f, 0.033454433f, 0.07042324f, 0.32381928f
 },
 {
-    0.024357943f, 0.024357943f, 0.060039017f, 0.36251688f
+    0.031293932f, 0.031293932f, 0.06881654f, 0.3247801f
 },
 {
-    0.02287039f, 0.02287039f, 0.05991024f, 0.36286038f
+    0.029395556f, 0.029395556f, 0.067404784f, 0.32562438f
 },
 {
-    0.02155407f, 0.02155407f, 0.05979629f, 0.36316437f
+    0.027714329f, 0.027714329f, 0.06615451f, 0.32637206f
 },
 {
-    0.020381026f, 0.020381026f, 0.05969474f, 0.36343524f
+    0.026215008f, 0.026215008f, 0.065039515f, 0.32703885f
 },
 {
-    0.019329075f, 0.019329075f, 0.059603676f, 0.36367816f
+    0.024869584f, 0.024869584f, 0.06403897f, 0.32763723f
 },
 {
-    0.018380385f, 0.018380385f, 0.05952155f, 0.3638972f
+    0.023655519f, 0.023655519f, 0.06313611f, 0.32817715f
 },
 {
-    0.017520463f, 0.017520463f, 0.059447106f, 0.36409578f
+    0.022554472f, 0.022554472f, 0.062317297f, 0.32866684f
 },
 {
-    0.016737407f, 0.016737407f, 0.059379317f, 0.36427662f
+    0.021551363f, 0.021551363f, 0.06157132f, 0.32911295f
 },
 {
-    0.016021354f, 0.016021354f, 0.059317328f, 0.36444196f
+    0.020633683f, 0.020633683f, 0.060888868f, 0.32952106f
 },
 {
-    0.015364054f, 0.015364054f, 0.059260428f, 0.36459374f
+    0.01979096f, 0.01979096f, 0.060262166f, 0.32989585f
 },
 {
-    0.014758562f, 0.014758562f, 0.05920801f, 0.36473358f
+    0.019014373f, 0.019014373f, 0.05968464f, 0.3302412f
 },
 {
-    0.014198984f, 0.014198984f, 0.05915957f, 0.36486277f
+    0.018296432f, 0.018296432f, 0.059150733f, 0.3305605f
 },
 {
-    0.01368029f, 0.01368029f, 0.059114665f, 0.36498255f
+    0.017630734f, 0.017630734f, 0.058655676f, 0.33085656f
 },
 {
-    0.013198157f, 0.013198157f, 0.05907293f, 0.3650939f
+    0.017011777f, 0.017011777f, 0.05819538f, 0.33113185f
 },
 {
-    0.0127488505f, 0.0127488505f, 0.059034035f, 0.36519763f
+    0.016434805f, 0.016434805f, 0.057766303f, 0.3313884f
 },
 {
-    0.012329128f, 0.012329128f, 0.058997698f, 0.36529458f
+    0.015895687f, 0.015895687f, 0.05736538f, 0.3316282f
 }
 };
 static const float CORRECTED_NO_BLEND[4] = { 0.0f };
@@ -1967,10 +1967,10 @@ static void corrected_steady(const float *x, const float *y, const float *u, con
     const float t2 = t0 + t1;
     const float t3 = y[0];
     const float t4 = t3 - t2;
-    const float t5 = 0.05793038f;
+    const float t5 = 0.045544285f;
     const float t6 = t5 * t4;
     const float t7 = t0 + t6;
-    const float t8 = 0.3681416f;
+    const float t8 = 0.3386975f;
     const float t9 = t8 * t4;
     const float t10 = t1 + t9;
     out[0] = t7;
@@ -2111,7 +2111,7 @@ vanderpol_uncertain_status vanderpol_uncertain_corrected_estimate(const vanderpo
 
 /* P(N-1)'s upper triangle of the EKF the map starts. */
 static const float STARTED_P0[VANDERPOL_UNCERTAIN_COVARIANCE] = {
-    0.01985737f, 0.0f, 0.02691191f
+    0.066589005f, 0.0f, 0.08897506f
 };
 
 /* Each state's map estimate, from the map's targets. */
@@ -2239,9 +2239,9 @@ static int restart_disagrees(const float *x, const float *p, const float *f) {
     float d = 0.0f;
     float e;
     e = x[0] - f[0];
-    d += e * e / (p[0] + 0.06279452f);
+    d += e * e / (p[0] + 0.066589005f);
     e = x[1] - f[1];
-    d += e * e / (p[2] + 0.08510294f);
+    d += e * e / (p[2] + 0.08897506f);
     return !(d <= 16.0f);
 }
 
@@ -2374,7 +2374,7 @@ static const float MHE_START[VANDERPOL_UNCERTAIN_STATES] = {
 };
 static const float MHE_DAMPING = 1e-6f;
 static const float MHE_H = 0.1f;
-#define MHE_ITERATIONS 1u
+#define MHE_ITERATIONS 2u
 #define MHE_SUBSTEPS 1u
 #define MHE_NX VANDERPOL_UNCERTAIN_STATES
 #define MHE_NY VANDERPOL_UNCERTAIN_OUTPUTS

@@ -70,7 +70,7 @@ pub const FAMILY: (&str, usize, f32) = ("ecoli", 0, 0.5);
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 4] = [("map", 105), ("ekf_box", 1286), ("ukf_box", 3884), ("mhe", 43051)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 4] = [("map", 105), ("ekf_box", 1286), ("ukf_box", 3884), ("mhe", 60272)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -550,7 +550,7 @@ pub const COVARIANCE: usize = 6;
 
 /// The EKF's `Q` diagonal as `gen` chose it (f64): each state's process-noise variance per sample
 /// period, in its unit squared ([`STATE_UNITS`]).
-pub const EKF_Q: [f64; STATES] = [7.471858978370539e-5, 6.06220688209056e-6, 5.175423470368401e-8];
+pub const EKF_Q: [f64; STATES] = [0.0005344156487427217, 0.00022407259021215223, 6.244368633662694e-7];
 
 /// This design's extended Kalman filter, written out for its size by `gen`: the library's
 /// [`firmware::Ekf`] over [`Discrete`] ([`reference_ekf`], same constants), with each sample as
@@ -580,7 +580,7 @@ impl<T: Scalar + Maths> Ekf<T> {
     pub fn new() -> Self {
         Ekf {
             x: [T::literal(0.5, 0.5), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-            p: [T::literal(0.0015244159, 0.0015244159540483404), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(1.1085151, 1.1085151102145452), T::literal(0.0, 0.0), T::literal(0.032774616, 0.03277461471220947)],
+            p: [T::literal(0.005098792, 0.005098791884532142), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.4831565, 0.4831565059891344), T::literal(0.0, 0.0), T::literal(0.0051940335, 0.005194033540152943)],
         }
     }
 
@@ -633,8 +633,8 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
     firmware::Ekf::new(
         firmware::Rk4::new(Plant, T::literal(0.2, 0.2)),
         [T::literal(0.5, 0.5), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-        [[T::literal(0.0015244159, 0.0015244159540483404), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(1.1085151, 1.1085151102145452), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.032774616, 0.03277461471220947)]],
-        [[T::literal(7.471859e-5, 7.471858978370539e-5), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(6.062207e-6, 6.06220688209056e-6), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(5.1754235e-8, 5.175423470368401e-8)]],
+        [[T::literal(0.005098792, 0.005098791884532142), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.4831565, 0.4831565059891344), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.0051940335, 0.005194033540152943)]],
+        [[T::literal(0.00053441565, 0.0005344156487427217), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.00022407259, 0.00022407259021215223), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(6.2443684e-7, 6.244368633662694e-7)]],
         [T::literal(0.1, 0.1), T::literal(20.0, 20.0)],
     )
     .with_bounds([T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(f32::INFINITY, f64::INFINITY), T::literal(f32::INFINITY, f64::INFINITY), T::literal(f32::INFINITY, f64::INFINITY)])
@@ -648,7 +648,7 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 pub type EkfBoxObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
-    const FRESH: Self = Ekf { x: [0.5, 2.5, 0.15], p: [0.0015244159, 0.0, 0.0, 1.1085151, 0.0, 0.032774616] };
+    const FRESH: Self = Ekf { x: [0.5, 2.5, 0.15], p: [0.005098792, 0.0, 0.0, 0.4831565, 0.0, 0.0051940335] };
 
     #[inline(always)]
     fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
@@ -1482,11 +1482,11 @@ fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t800: T = t798 + t799;
     let t801: T = t772 * t727;
     let t802: T = t800 + t801;
-    let t803: T = T::literal(7.471859e-5, 7.471858978370539e-5);
+    let t803: T = T::literal(0.00053441565, 0.0005344156487427217);
     let t804: T = t777 + t803;
-    let t805: T = T::literal(6.062207e-6, 6.06220688209056e-6);
+    let t805: T = T::literal(0.00022407259, 0.00022407259021215223);
     let t806: T = t792 + t805;
-    let t807: T = T::literal(5.1754235e-8, 5.175423470368401e-8);
+    let t807: T = T::literal(6.2443684e-7, 6.244368633662694e-7);
     let t808: T = t802 + t807;
     let t809: T = firmware::emitted::at_least(t668, t11);
     let t810: T = firmware::emitted::at_least(t674, t11);
@@ -2078,11 +2078,11 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t578: T = t576 + t577;
     let t579: T = t550 * t505;
     let t580: T = t578 + t579;
-    let t581: T = T::literal(7.471859e-5, 7.471858978370539e-5);
+    let t581: T = T::literal(0.00053441565, 0.0005344156487427217);
     let t582: T = t555 + t581;
-    let t583: T = T::literal(6.062207e-6, 6.06220688209056e-6);
+    let t583: T = T::literal(0.00022407259, 0.00022407259021215223);
     let t584: T = t570 + t583;
-    let t585: T = T::literal(5.1754235e-8, 5.175423470368401e-8);
+    let t585: T = T::literal(6.2443684e-7, 6.244368633662694e-7);
     let t586: T = t580 + t585;
     let t587: T = firmware::emitted::at_least(t446, t19);
     let t588: T = firmware::emitted::at_least(t452, t19);
@@ -2092,7 +2092,7 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
 
 /// The UKF's `Q` diagonal as `gen` chose it (f64), tuned on its own: each state's process-noise
 /// variance per sample period, in its unit squared ([`STATE_UNITS`]).
-pub const UKF_Q: [f64; STATES] = [6.665140678618172e-6, 1.2262940472506768e-6, 3.7674023876955234e-8];
+pub const UKF_Q: [f64; STATES] = [0.0010809527465794318, 0.002297069982436948, 1.645029946852267e-8];
 
 /// This design's unscented Kalman filter, written out for its size by `gen`: the scaled unscented
 /// transform (Wan & van der Merwe; α = 1.0, β = 0.0, κ = 0.0: the cubature rule, `2n`
@@ -2123,7 +2123,7 @@ impl<T: Scalar + Maths> Ukf<T> {
     pub fn new() -> Self {
         Ukf {
             x: [T::literal(0.5, 0.5), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-            p: [T::literal(0.0004967157, 0.0004967157170413049), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(1.4859407, 1.4859407040925872), T::literal(0.0, 0.0), T::literal(0.055956807, 0.05595680869851428)],
+            p: [T::literal(4.7611105e-5, 4.761110391083822e-5), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(1.174829, 1.174829052376148), T::literal(0.0, 0.0), T::literal(0.0013430597, 0.001343059703785467)],
         }
     }
 
@@ -2173,7 +2173,7 @@ pub fn ukf() -> Ukf {
 pub type UkfBoxObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
-    const FRESH: Self = Ukf { x: [0.5, 2.5, 0.15], p: [0.0004967157, 0.0, 0.0, 1.4859407, 0.0, 0.055956807] };
+    const FRESH: Self = Ukf { x: [0.5, 2.5, 0.15], p: [4.7611105e-5, 0.0, 0.0, 1.174829, 0.0, 0.0013430597] };
 
     #[inline(always)]
     fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
@@ -3540,11 +3540,11 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t1333: T = t1263 * t1263;
     let t1334: T = t1332 + t1333;
     let t1335: T = t124 * t1334;
-    let t1336: T = T::literal(6.6651405e-6, 6.665140678618172e-6);
+    let t1336: T = T::literal(0.0010809527, 0.0010809527465794318);
     let t1337: T = t1275 + t1336;
-    let t1338: T = T::literal(1.2262941e-6, 1.2262940472506768e-6);
+    let t1338: T = T::literal(0.0022970699, 0.002297069982436948);
     let t1339: T = t1311 + t1338;
-    let t1340: T = T::literal(3.7674024e-8, 3.7674023876955234e-8);
+    let t1340: T = T::literal(1.6450299e-8, 1.645029946852267e-8);
     let t1341: T = t1335 + t1340;
     let t1342: T = firmware::emitted::at_least(t1233, t9);
     let t1343: T = firmware::emitted::at_least(t1239, t9);
@@ -4505,11 +4505,11 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t947: T = t877 * t877;
     let t948: T = t946 + t947;
     let t949: T = t841 * t948;
-    let t950: T = T::literal(6.6651405e-6, 6.665140678618172e-6);
+    let t950: T = T::literal(0.0010809527, 0.0010809527465794318);
     let t951: T = t889 + t950;
-    let t952: T = T::literal(1.2262941e-6, 1.2262940472506768e-6);
+    let t952: T = T::literal(0.0022970699, 0.002297069982436948);
     let t953: T = t925 + t952;
-    let t954: T = T::literal(3.7674024e-8, 3.7674023876955234e-8);
+    let t954: T = T::literal(1.6450299e-8, 1.645029946852267e-8);
     let t955: T = t949 + t954;
     let t956: T = firmware::emitted::at_least(t847, t9);
     let t957: T = firmware::emitted::at_least(t853, t9);
@@ -4519,7 +4519,7 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
-/// learning runs cover, the first window's start, 4 Gauss–Newton step(s) per sample and
+/// learning runs cover, the first window's start, 6 Gauss–Newton step(s) per sample and
 /// Levenberg's damping.
 pub struct Mhe;
 
@@ -4535,11 +4535,11 @@ impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPU
     fn settings() -> firmware::emitted::mhe::Settings<T, STATES, OUTPUTS> {
         firmware::emitted::mhe::Settings {
             weights: [T::literal(10.0, 10.0), T::literal(0.05, 0.05)],
-            prior: [T::literal(3.0290594, 3.029059354372675), T::literal(0.4, 0.4), T::literal(50.319195, 50.31919346640422)],
+            prior: [T::literal(30.290594, 30.29059354372675), T::literal(4.0, 4.0), T::literal(503.19193, 503.1919346640422)],
             lower: [T::literal(0.4385543, 0.43855427854201756), T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
             upper: [T::literal(2.2555175, 2.2555173819551477), T::literal(5.0, 5.0), T::literal(0.4457929, 0.4457929173827226)],
             start: [T::literal(0.5, 0.5), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-            iterations: 4,
+            iterations: 6,
             damping: T::literal(1e-6, 1e-6),
         }
     }
@@ -4551,7 +4551,7 @@ impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPU
 }
 
 /// The moving-horizon estimate on the chip ([`firmware::mhe::Observer`] over [`Discrete`], kind
-/// `mhe`): at every sample, 4 Gauss–Newton step(s) over the last [`HORIZON`] samples from
+/// `mhe`): at every sample, 6 Gauss–Newton step(s) over the last [`HORIZON`] samples from
 /// the previous solution moved one sample on (also the prior's centre), each solved by a Cholesky
 /// factorisation (`L D Lᵀ`, no square root) and projected onto the box the learning runs cover;
 /// `estimate` gives the targets at the newest sample. The paper's on-line observer, which the map
@@ -4571,7 +4571,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "ffd7cfd97b596928a4af112337ca629380717724bed1efe8cfec8dfecd5e0976";
+pub const TABLES_SHA256: &str = "259251489ba8b1c04747515e82c3188a5ac45806c34dbdfa49a98f494df24ace";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

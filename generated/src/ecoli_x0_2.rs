@@ -996,7 +996,7 @@ pub const COVARIANCE: usize = 6;
 
 /// The EKF's `Q` diagonal as `gen` chose it (f64): each state's process-noise variance per sample
 /// period, in its unit squared ([`STATE_UNITS`]).
-pub const EKF_Q: [f64; STATES] = [1.9352819363904035e-7, 1.8408529706444755e-7, 1.1776406553548216e-8];
+pub const EKF_Q: [f64; STATES] = [1.5369727072753937e-5, 0.00025431477239480974, 5.286729884439871e-7];
 
 /// This design's extended Kalman filter, written out for its size by `gen`: the library's
 /// [`firmware::Ekf`] over [`Discrete`] ([`reference_ekf`], same constants), with each sample as
@@ -1026,7 +1026,7 @@ impl<T: Scalar + Maths> Ekf<T> {
     pub fn new() -> Self {
         Ekf {
             x: [T::literal(2.0, 2.0), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-            p: [T::literal(1.6278049, 1.6278048517735508), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(3.397246, 3.3972458625984308), T::literal(0.0, 0.0), T::literal(0.031897947, 0.031897947902242804)],
+            p: [T::literal(0.0110650165, 0.011065016510295747), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.024989702, 0.02498970243468832), T::literal(0.0, 0.0), T::literal(0.00058474793, 0.0005847479484277635)],
         }
     }
 
@@ -1079,8 +1079,8 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
     firmware::Ekf::new(
         firmware::Rk4::new(Plant, T::literal(0.2, 0.2)),
         [T::literal(2.0, 2.0), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-        [[T::literal(1.6278049, 1.6278048517735508), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(3.397246, 3.3972458625984308), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.031897947, 0.031897947902242804)]],
-        [[T::literal(1.935282e-7, 1.9352819363904035e-7), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(1.840853e-7, 1.8408529706444755e-7), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(1.17764065e-8, 1.1776406553548216e-8)]],
+        [[T::literal(0.0110650165, 0.011065016510295747), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.024989702, 0.02498970243468832), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.00058474793, 0.0005847479484277635)]],
+        [[T::literal(1.5369727e-5, 1.5369727072753937e-5), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.00025431477, 0.00025431477239480974), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(5.28673e-7, 5.286729884439871e-7)]],
         [T::literal(0.1, 0.1), T::literal(20.0, 20.0)],
     )
     .with_bounds([T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.0, 0.0)], [T::literal(f32::INFINITY, f64::INFINITY), T::literal(f32::INFINITY, f64::INFINITY), T::literal(f32::INFINITY, f64::INFINITY)])
@@ -1094,7 +1094,7 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 pub type EkfBoxObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
-    const FRESH: Self = Ekf { x: [2.0, 2.5, 0.15], p: [1.6278049, 0.0, 0.0, 3.397246, 0.0, 0.031897947] };
+    const FRESH: Self = Ekf { x: [2.0, 2.5, 0.15], p: [0.0110650165, 0.0, 0.0, 0.024989702, 0.0, 0.00058474793] };
 
     #[inline(always)]
     fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
@@ -1928,11 +1928,11 @@ fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t800: T = t798 + t799;
     let t801: T = t772 * t727;
     let t802: T = t800 + t801;
-    let t803: T = T::literal(1.935282e-7, 1.9352819363904035e-7);
+    let t803: T = T::literal(1.5369727e-5, 1.5369727072753937e-5);
     let t804: T = t777 + t803;
-    let t805: T = T::literal(1.840853e-7, 1.8408529706444755e-7);
+    let t805: T = T::literal(0.00025431477, 0.00025431477239480974);
     let t806: T = t792 + t805;
-    let t807: T = T::literal(1.17764065e-8, 1.1776406553548216e-8);
+    let t807: T = T::literal(5.28673e-7, 5.286729884439871e-7);
     let t808: T = t802 + t807;
     let t809: T = firmware::emitted::at_least(t668, t11);
     let t810: T = firmware::emitted::at_least(t674, t11);
@@ -2524,11 +2524,11 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t578: T = t576 + t577;
     let t579: T = t550 * t505;
     let t580: T = t578 + t579;
-    let t581: T = T::literal(1.935282e-7, 1.9352819363904035e-7);
+    let t581: T = T::literal(1.5369727e-5, 1.5369727072753937e-5);
     let t582: T = t555 + t581;
-    let t583: T = T::literal(1.840853e-7, 1.8408529706444755e-7);
+    let t583: T = T::literal(0.00025431477, 0.00025431477239480974);
     let t584: T = t570 + t583;
-    let t585: T = T::literal(1.17764065e-8, 1.1776406553548216e-8);
+    let t585: T = T::literal(5.28673e-7, 5.286729884439871e-7);
     let t586: T = t580 + t585;
     let t587: T = firmware::emitted::at_least(t446, t19);
     let t588: T = firmware::emitted::at_least(t452, t19);
@@ -2538,7 +2538,7 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
 
 /// The UKF's `Q` diagonal as `gen` chose it (f64), tuned on its own: each state's process-noise
 /// variance per sample period, in its unit squared ([`STATE_UNITS`]).
-pub const UKF_Q: [f64; STATES] = [2.1030150065034726e-6, 4.006786229309111e-6, 7.535860236313183e-8];
+pub const UKF_Q: [f64; STATES] = [1.6974889732745246e-6, 4.995242382344471e-6, 7.679649916887492e-8];
 
 /// This design's unscented Kalman filter, written out for its size by `gen`: the scaled unscented
 /// transform (Wan & van der Merwe; α = 1.0, β = 0.0, κ = 0.0: the cubature rule, `2n`
@@ -2569,7 +2569,7 @@ impl<T: Scalar + Maths> Ukf<T> {
     pub fn new() -> Self {
         Ukf {
             x: [T::literal(2.0, 2.0), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
-            p: [T::literal(0.16901448, 0.16901448154200333), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.3230251, 0.32302511917943033), T::literal(0.0, 0.0), T::literal(0.0024640344, 0.002464034368603428)],
+            p: [T::literal(0.104794845, 0.10479484784934369), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.22625893, 0.22625892791111263), T::literal(0.0, 0.0), T::literal(0.0037814663, 0.0037814663179941365)],
         }
     }
 
@@ -2619,7 +2619,7 @@ pub fn ukf() -> Ukf {
 pub type UkfBoxObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
-    const FRESH: Self = Ukf { x: [2.0, 2.5, 0.15], p: [0.16901448, 0.0, 0.0, 0.3230251, 0.0, 0.0024640344] };
+    const FRESH: Self = Ukf { x: [2.0, 2.5, 0.15], p: [0.104794845, 0.0, 0.0, 0.22625893, 0.0, 0.0037814663] };
 
     #[inline(always)]
     fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
@@ -3986,11 +3986,11 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t1333: T = t1263 * t1263;
     let t1334: T = t1332 + t1333;
     let t1335: T = t124 * t1334;
-    let t1336: T = T::literal(2.103015e-6, 2.1030150065034726e-6);
+    let t1336: T = T::literal(1.697489e-6, 1.6974889732745246e-6);
     let t1337: T = t1275 + t1336;
-    let t1338: T = T::literal(4.006786e-6, 4.006786229309111e-6);
+    let t1338: T = T::literal(4.9952423e-6, 4.995242382344471e-6);
     let t1339: T = t1311 + t1338;
-    let t1340: T = T::literal(7.53586e-8, 7.535860236313183e-8);
+    let t1340: T = T::literal(7.6796496e-8, 7.679649916887492e-8);
     let t1341: T = t1335 + t1340;
     let t1342: T = firmware::emitted::at_least(t1233, t9);
     let t1343: T = firmware::emitted::at_least(t1239, t9);
@@ -4951,11 +4951,11 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t947: T = t877 * t877;
     let t948: T = t946 + t947;
     let t949: T = t841 * t948;
-    let t950: T = T::literal(2.103015e-6, 2.1030150065034726e-6);
+    let t950: T = T::literal(1.697489e-6, 1.6974889732745246e-6);
     let t951: T = t889 + t950;
-    let t952: T = T::literal(4.006786e-6, 4.006786229309111e-6);
+    let t952: T = T::literal(4.9952423e-6, 4.995242382344471e-6);
     let t953: T = t925 + t952;
-    let t954: T = T::literal(7.53586e-8, 7.535860236313183e-8);
+    let t954: T = T::literal(7.6796496e-8, 7.679649916887492e-8);
     let t955: T = t949 + t954;
     let t956: T = firmware::emitted::at_least(t847, t9);
     let t957: T = firmware::emitted::at_least(t853, t9);
@@ -4981,7 +4981,7 @@ impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPU
     fn settings() -> firmware::emitted::mhe::Settings<T, STATES, OUTPUTS> {
         firmware::emitted::mhe::Settings {
             weights: [T::literal(10.0, 10.0), T::literal(0.05, 0.05)],
-            prior: [T::literal(6.9391437, 6.9391436561577455), T::literal(4.0, 4.0), T::literal(199.5936, 199.59359398085078)],
+            prior: [T::literal(69.39143, 69.39143656157746), T::literal(40.0, 40.0), T::literal(1995.9359, 1995.9359398085078)],
             lower: [T::literal(1.7542171, 1.7542171141680702), T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
             upper: [T::literal(5.5503993, 5.550399421582292), T::literal(5.0, 5.0), T::literal(0.7078263, 0.7078263090793144)],
             start: [T::literal(2.0, 2.0), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
@@ -5005,19 +5005,19 @@ impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPU
 pub type MheObserver = firmware::mhe::Observer<f32, Mhe, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 /// The kind of [`Observer`] (`[observer] kind` of the spec, or `gen`'s choice for `auto`).
-pub const KIND: &str = "ukf_box";
+pub const KIND: &str = "ekf_box";
 
-/// This design's observer: the unscented Kalman filter from the centre of the state box ([`UkfBoxObserver`]).
-pub type Observer = UkfBoxObserver;
+/// This design's observer: the EKF from the centre of the state box ([`EkfBoxObserver`]).
+pub type Observer = EkfBoxObserver;
 
 /// A fresh [`Observer`], holding no sample yet.
 pub const fn observer() -> Observer {
-    UkfBoxObserver::new()
+    EkfBoxObserver::new()
 }
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "2c0ae52efd6f4dd4a23f790b847dfcaa09ef9292843bdfee33b3990c7cb75a62";
+pub const TABLES_SHA256: &str = "9a06fb08df8e5478cb7fca6aae1d41e0b6d7bf3562fcea042d5344b0cc0a3473";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

@@ -66,7 +66,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["", ""];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 134), ("ekf_box", 241), ("ukf_box", 431), ("corrected", 149), ("ekf_map", 249), ("ekf_restart", 241), ("mhe", 22800)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 134), ("ekf_box", 241), ("ukf_box", 431), ("corrected", 149), ("ekf_map", 249), ("ekf_restart", 241), ("mhe", 34199)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -496,7 +496,7 @@ pub const COVARIANCE: usize = 3;
 
 /// The EKF's `Q` diagonal as `gen` chose it (f64): each state's process-noise variance per sample
 /// period, in its unit squared ([`STATE_UNITS`]).
-pub const EKF_Q: [f64; STATES] = [0.0009595845374379715, 0.023960088734499153];
+pub const EKF_Q: [f64; STATES] = [0.0028291305119613097, 0.03320937213198135];
 
 /// This design's extended Kalman filter, written out for its size by `gen`: the library's
 /// [`firmware::Ekf`] over [`Discrete`] ([`reference_ekf`], same constants), with each sample as
@@ -526,7 +526,7 @@ impl<T: Scalar + Maths> Ekf<T> {
     pub fn new() -> Self {
         Ekf {
             x: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
-            p: [T::literal(0.22153471, 0.22153471157177115), T::literal(0.0, 0.0), T::literal(0.78878015, 0.788780131119072)],
+            p: [T::literal(1.5927348, 1.5927347607655395), T::literal(0.0, 0.0), T::literal(19.371712, 19.371710942845038)],
         }
     }
 
@@ -579,8 +579,8 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
     firmware::Ekf::new(
         firmware::Rk4::new(Plant, T::literal(0.1, 0.1)),
         [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
-        [[T::literal(0.22153471, 0.22153471157177115), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.78878015, 0.788780131119072)]],
-        [[T::literal(0.00095958455, 0.0009595845374379715), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.02396009, 0.023960088734499153)]],
+        [[T::literal(1.5927348, 1.5927347607655395), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(19.371712, 19.371710942845038)]],
+        [[T::literal(0.0028291305, 0.0028291305119613097), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.033209372, 0.03320937213198135)]],
         [T::literal(0.2, 0.2)],
     )
 }
@@ -593,7 +593,7 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 pub type EkfBoxObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
-    const FRESH: Self = Ekf { x: [0.0, 0.0], p: [0.22153471, 0.0, 0.78878015] };
+    const FRESH: Self = Ekf { x: [0.0, 0.0], p: [1.5927348, 0.0, 19.371712] };
 
     #[inline(always)]
     fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
@@ -831,9 +831,9 @@ fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t204: T = t194 * t179;
     let t205: T = t197 * t185;
     let t206: T = t204 + t205;
-    let t207: T = T::literal(0.00095958455, 0.0009595845374379715);
+    let t207: T = T::literal(0.0028291305, 0.0028291305119613097);
     let t208: T = t200 + t207;
-    let t209: T = T::literal(0.02396009, 0.023960088734499153);
+    let t209: T = T::literal(0.033209372, 0.03320937213198135);
     let t210: T = t206 + t209;
     ([t18, t20], [t158, t164], [t208, t203, t210])
 }
@@ -1000,16 +1000,16 @@ fn ekf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t156: T = t146 * t131;
     let t157: T = t149 * t137;
     let t158: T = t156 + t157;
-    let t159: T = T::literal(0.00095958455, 0.0009595845374379715);
+    let t159: T = T::literal(0.0028291305, 0.0028291305119613097);
     let t160: T = t152 + t159;
-    let t161: T = T::literal(0.02396009, 0.023960088734499153);
+    let t161: T = T::literal(0.033209372, 0.03320937213198135);
     let t162: T = t158 + t161;
     ([t110, t116], [t160, t155, t162])
 }
 
 /// The UKF's `Q` diagonal as `gen` chose it (f64), tuned on its own: each state's process-noise
 /// variance per sample period, in its unit squared ([`STATE_UNITS`]).
-pub const UKF_Q: [f64; STATES] = [0.0002607565169397608, 0.0330036759804668];
+pub const UKF_Q: [f64; STATES] = [0.0001179523668624245, 0.03254314031724534];
 
 /// This design's unscented Kalman filter, written out for its size by `gen`: the scaled unscented
 /// transform (Wan & van der Merwe; α = 1.0, β = 0.0, κ = 0.0: the cubature rule, `2n`
@@ -1040,7 +1040,7 @@ impl<T: Scalar + Maths> Ukf<T> {
     pub fn new() -> Self {
         Ukf {
             x: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
-            p: [T::literal(1.6372418, 1.6372418641604407), T::literal(0.0, 0.0), T::literal(633.39606, 633.3960365975795)],
+            p: [T::literal(1.8518863, 1.8518863171015736), T::literal(0.0, 0.0), T::literal(22.292301, 22.292302128414953)],
         }
     }
 
@@ -1090,7 +1090,7 @@ pub fn ukf() -> Ukf {
 pub type UkfBoxObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
-    const FRESH: Self = Ukf { x: [0.0, 0.0], p: [1.6372418, 0.0, 633.39606] };
+    const FRESH: Self = Ukf { x: [0.0, 0.0], p: [1.8518863, 0.0, 22.292301] };
 
     #[inline(always)]
     fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
@@ -1482,9 +1482,9 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t358: T = t336 * t336;
     let t359: T = t357 + t358;
     let t360: T = t40 * t359;
-    let t361: T = T::literal(0.00026075653, 0.0002607565169397608);
+    let t361: T = T::literal(0.00011795237, 0.0001179523668624245);
     let t362: T = t344 + t361;
-    let t363: T = T::literal(0.033003677, 0.0330036759804668);
+    let t363: T = T::literal(0.03254314, 0.03254314031724534);
     let t364: T = t360 + t363;
     ([t90, t92], [t324, t328], [t362, t352, t364])
 }
@@ -1765,9 +1765,9 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t270: T = t248 * t248;
     let t271: T = t269 + t270;
     let t272: T = t232 * t271;
-    let t273: T = T::literal(0.00026075653, 0.0002607565169397608);
+    let t273: T = T::literal(0.00011795237, 0.0001179523668624245);
     let t274: T = t256 + t273;
-    let t275: T = T::literal(0.033003677, 0.0330036759804668);
+    let t275: T = T::literal(0.03254314, 0.03254314031724534);
     let t276: T = t272 + t275;
     ([t236, t240], [t274, t264, t276])
 }
@@ -1777,11 +1777,11 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
 /// state's clamp (in its unit); units in [`STATE_UNITS`] and [`OUTPUT_UNITS`].
 pub const CORRECTED_G: [f64; STATES] = [0.0, 0.0];
 /// See [`CORRECTED_G`].
-pub const CORRECTED_K: [f64; STATES * OUTPUTS] = [0.05793037976527959, 0.3681415834864128];
+pub const CORRECTED_K: [f64; STATES * OUTPUTS] = [0.04554428600749762, 0.3386974999150873];
 /// See [`CORRECTED_G`]: the start-up gain `K₀`.
-pub const CORRECTED_K_START: [f64; STATES * OUTPUTS] = [0.14449921392644532, 0.13722334169962497];
+pub const CORRECTED_K_START: [f64; STATES * OUTPUTS] = [0.7892109994977371, -0.10603375458113817];
 /// See [`CORRECTED_G`].
-pub const CORRECTED_SCHEDULE: f64 = 0.3744909824018537;
+pub const CORRECTED_SCHEDULE: f64 = 0.4845732088909755;
 /// See [`CORRECTED_G`].
 pub const CORRECTED_LOWER: [f64; STATES] = [-2.4087043495046134, -4.70173155108975];
 /// See [`CORRECTED_G`].
@@ -1795,42 +1795,42 @@ const SCHEDULED: usize = STATES + STATES * OUTPUTS;
 /// (states × outputs, row by row), each as `(f32, f64)`.
 #[rustfmt::skip]
 static CORRECTED_BLENDS: [[(f32, f64); SCHEDULED]; 30] = [
-    [(0.27245793, 0.2724579405733529), (0.27245793, 0.2724579405733529), (0.08151674, 0.08151674603866692), (0.3052261, 0.305226074888365)],
-    [(0.15771422, 0.15771421545810513), (0.15771422, 0.15771421545810513), (0.07158352, 0.07158351552813065), (0.3317225, 0.3317224941480445)],
-    [(0.11097703, 0.11097702864071757), (0.11097703, 0.11097702864071757), (0.06753753, 0.0675375317533768), (0.34251496, 0.3425149631539763)],
-    [(0.0856079, 0.08560789904663056), (0.0856079, 0.08560789904663056), (0.06534135, 0.06534135578073316), (0.34837314, 0.34837315795550405)],
-    [(0.06967934, 0.06967933961152431), (0.06967934, 0.06967933961152431), (0.06396244, 0.06396243896056918), (0.35205135, 0.3520513528944551)],
-    [(0.058748376, 0.058748374330705955), (0.058748376, 0.058748374330705955), (0.06301616, 0.06301615803995256), (0.3545755, 0.3545755121781341)],
-    [(0.050781943, 0.05078194322774572), (0.050781943, 0.05078194322774572), (0.062326513, 0.06232651338694404), (0.3564151, 0.3564151064417453)],
-    [(0.04471806, 0.04471805906637294), (0.04471806, 0.04471805906637294), (0.06180157, 0.06180157000460564), (0.35781536, 0.35781536791068824)],
-    [(0.039947875, 0.039947873767745064), (0.039947875, 0.039947873767745064), (0.06138862, 0.06138862062457069), (0.35891688, 0.35891689071284455)],
-    [(0.036097288, 0.03609728737892771), (0.036097288, 0.03609728737892771), (0.06105528, 0.06105527985005392), (0.35980606, 0.3598060613515984)],
-    [(0.032923758, 0.03292375746582865), (0.032923758, 0.03292375746582865), (0.06078055, 0.06078055106530135), (0.3605389, 0.360538887299389)],
-    [(0.030263143, 0.030263142373648248), (0.030263143, 0.030263142373648248), (0.060550224, 0.06055022471861969), (0.36115327, 0.3611532718585467)],
-    [(0.028000392, 0.02800039140888492), (0.028000392, 0.02800039140888492), (0.06035434, 0.06035434100560307), (0.36167577, 0.3616757823329312)],
-    [(0.02605247, 0.026052469117711984), (0.02605247, 0.026052469117711984), (0.06018571, 0.06018571164381969), (0.3621256, 0.36212559312354614)],
-    [(0.024357943, 0.02435794348121888), (0.024357943, 0.02435794348121888), (0.060039017, 0.06003901853501227), (0.36251688, 0.3625168900041878)],
-    [(0.02287039, 0.02287038924167659), (0.02287039, 0.02287038924167659), (0.05991024, 0.05991024269874359), (0.36286038, 0.3628603934137454)],
-    [(0.02155407, 0.021554069283593134), (0.02155407, 0.021554069283593134), (0.05979629, 0.05979629041458924), (0.36316437, 0.36316435570409483)],
-    [(0.020381026, 0.02038102621512193), (0.020381026, 0.02038102621512193), (0.05969474, 0.059694741443730846), (0.36343524, 0.3634352327470064)],
-    [(0.019329075, 0.019329074644696968), (0.019329075, 0.019329074644696968), (0.059603676, 0.05960367522268515), (0.36367816, 0.3636781475540938)],
-    [(0.018380385, 0.018380384703859075), (0.018380385, 0.018380384703859075), (0.05952155, 0.05952154824052639), (0.3638972, 0.3638972173672329)],
-    [(0.017520463, 0.017520463187178648), (0.017520463, 0.017520463187178648), (0.059447106, 0.05944710583735727), (0.36409578, 0.36409578893193933)],
-    [(0.016737407, 0.016737407912269426), (0.016737407, 0.016737407912269426), (0.059379317, 0.05937931765512462), (0.36427662, 0.3642766106792433)],
-    [(0.016021354, 0.01602135347819124), (0.016021354, 0.01602135347819124), (0.059317328, 0.05931732965757054), (0.36444196, 0.36444196071018425)],
-    [(0.015364054, 0.015364053455402722), (0.015364054, 0.015364053455402722), (0.059260428, 0.05926042796090363), (0.36459374, 0.364593743275773)],
-    [(0.014758562, 0.01475856137021929), (0.014758562, 0.01475856137021929), (0.05920801, 0.05920801121699549), (0.36473358, 0.36473356244349936)],
-    [(0.014198984, 0.014198984262927747), (0.014198984, 0.014198984262927747), (0.05915957, 0.05915956927919398), (0.36486277, 0.36486277900525926)],
-    [(0.01368029, 0.013680290261565097), (0.01368029, 0.013680290261565097), (0.059114665, 0.059114666544209625), (0.36498255, 0.36498255491207926)],
-    [(0.013198157, 0.01319815684567229), (0.013198157, 0.01319815684567229), (0.05907293, 0.05907292881648565), (0.3650939, 0.3650938883127839)],
-    [(0.0127488505, 0.012748850103520426), (0.0127488505, 0.012748850103520426), (0.059034035, 0.059034032855636805), (0.36519763, 0.36519764143570455)],
-    [(0.012329128, 0.012329127840161123), (0.012329128, 0.012329127840161123), (0.058997698, 0.05899769798862631), (0.36529458, 0.3652945629627983)],
+    [(0.32640573, 0.3264057346508142), (0.32640573, 0.3264057346508142), (0.28828135, 0.28828136595963577), (0.19353467, 0.1935346680690686)],
+    [(0.19503278, 0.1950327755112805), (0.19503278, 0.1950327755112805), (0.19058368, 0.19058366919485126), (0.25196034, 0.2519603289940748)],
+    [(0.13906243, 0.1390624274027519), (0.13906243, 0.1390624274027519), (0.14896038, 0.14896038436407716), (0.2768521, 0.2768520921229712)],
+    [(0.108053364, 0.10805336122739076), (0.108053364, 0.10805336122739076), (0.12589997, 0.12589997403304498), (0.2906428, 0.290642793023896)],
+    [(0.08835204, 0.08835203587134906), (0.08835204, 0.08835203587134906), (0.111248754, 0.11124875415411552), (0.2994046, 0.2994045881647267)],
+    [(0.07472708, 0.07472707814086807), (0.07472708, 0.07472707814086807), (0.10111633, 0.10111632661724529), (0.30546403, 0.30546403270866157)],
+    [(0.06474293, 0.0647429312756735), (0.06474293, 0.0647429312756735), (0.093691446, 0.09369144893100217), (0.3099043, 0.3099042948690941)],
+    [(0.057112265, 0.05711226681186411), (0.057112265, 0.05711226681186411), (0.08801678, 0.08801677776745429), (0.3132979, 0.3132978898487238)],
+    [(0.051090673, 0.051090670947294664), (0.051090673, 0.051090670947294664), (0.08353872, 0.0835387173608835), (0.31597587, 0.3159758817316431)],
+    [(0.046217732, 0.04621773335323318), (0.046217732, 0.04621773335323318), (0.079914875, 0.07991487587526477), (0.31814304, 0.31814302938093186)],
+    [(0.0421934, 0.04219340153762397), (0.0421934, 0.04219340153762397), (0.07692211, 0.07692211425995646), (0.3199328, 0.3199327755177968)],
+    [(0.03881376, 0.038813758450780146), (0.03881376, 0.038813758450780146), (0.074408785, 0.0744087861927933), (0.3214358, 0.32143580842755837)],
+    [(0.035935376, 0.035935376031884715), (0.035935376, 0.035935376031884715), (0.07226823, 0.07226822899916524), (0.3227159, 0.3227159150516336)],
+    [(0.033454433, 0.033454434721868986), (0.033454433, 0.033454434721868986), (0.07042324, 0.07042323552878368), (0.32381928, 0.32381926719276843)],
+    [(0.031293932, 0.031293933798107), (0.031293932, 0.031293933798107), (0.06881654, 0.06881654290731698), (0.3247801, 0.3247801094789333)],
+    [(0.029395556, 0.029395556848849463), (0.029395556, 0.029395556848849463), (0.067404784, 0.067404783160497), (0.32562438, 0.3256243770410834)],
+    [(0.027714329, 0.027714328688593214), (0.027714329, 0.027714328688593214), (0.06615451, 0.06615450973993199), (0.32637206, 0.3263720717498885)],
+    [(0.026215008, 0.026215006611994617), (0.026215008, 0.026215006611994617), (0.065039515, 0.06503951381876455), (0.32703885, 0.3270388671379081)],
+    [(0.024869584, 0.024869582910333424), (0.024869584, 0.024869582910333424), (0.06403897, 0.0640389669962983), (0.32763723, 0.32763721910857685)],
+    [(0.023655519, 0.02365551890925679), (0.023655519, 0.02365551890925679), (0.06313611, 0.06313610801065082), (0.32817715, 0.32817715131481434)],
+    [(0.022554472, 0.02255447218706882), (0.022554472, 0.02255447218706882), (0.062317297, 0.0623172962133621), (0.32866684, 0.3286668212048319)],
+    [(0.021551363, 0.021551363434346306), (0.021551363, 0.021551363434346306), (0.06157132, 0.061571317623951655), (0.32911295, 0.3291129350188264)],
+    [(0.020633683, 0.02063368171866636), (0.020633683, 0.02063368171866636), (0.060888868, 0.06088886827842187), (0.32952106, 0.32952105675946897)],
+    [(0.01979096, 0.019790959995782755), (0.01979096, 0.019790959995782755), (0.060262166, 0.060262164184378186), (0.32989585, 0.3298958414484782)],
+    [(0.019014373, 0.01901437410464144), (0.019014373, 0.01901437410464144), (0.05968464, 0.059684643106970234), (0.3302412, 0.33024121346606955)],
+    [(0.018296432, 0.018296432608863124), (0.018296432, 0.018296432608863124), (0.059150733, 0.05915073391432651), (0.3305605, 0.33056050448814195)],
+    [(0.017630734, 0.017630734347158103), (0.017630734, 0.017630734347158103), (0.058655676, 0.058655676275868165), (0.33085656, 0.33085656131118596)],
+    [(0.017011777, 0.017011777053402514), (0.017011777, 0.017011777053402514), (0.05819538, 0.058195378339430136), (0.33113185, 0.3311318309649175)],
+    [(0.016434805, 0.01643480492181091), (0.016434805, 0.01643480492181091), (0.057766303, 0.05776630337055395), (0.3313884, 0.3313884285048096)],
+    [(0.015895687, 0.015895686174463068), (0.015895687, 0.015895686174463068), (0.05736538, 0.0573653787035328), (0.3316282, 0.33162819146164)],
 ];
 
 /// The model-corrected map on the chip: `x̂(N−1) = F(Z)`, then
 /// `x̂ = clamp(x̄ + g_j ⊙ (F(Z) − x̄) + K_j (y − h(x̄, u)))` with `x̄` the model's prediction, as chosen
-/// by `gen` on the tuning runs: `G = [0.0, 0.0]`, `K = [0.05793037976527959, 0.3681415834864128]`, `K₀ = [0.14449921392644532, 0.13722334169962497]` (states × outputs, row by row),
-/// `T = 0.3744909824018537`, `J = 30`. The clamp is each state's learning range.
+/// by `gen` on the tuning runs: `G = [0.0, 0.0]`, `K = [0.04554428600749762, 0.3386974999150873]`, `K₀ = [0.7892109994977371, -0.10603375458113817]` (states × outputs, row by row),
+/// `T = 0.4845732088909755`, `J = 30`. The clamp is each state's learning range.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Corrector;
 
@@ -1992,10 +1992,10 @@ fn corrected_steady<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T
     let t2: T = x_x1 + x_x2;
     let y_y: T = y[0];
     let t4: T = y_y - t2;
-    let t5: T = T::literal(0.05793038, 0.05793037976527959);
+    let t5: T = T::literal(0.045544285, 0.04554428600749762);
     let t6: T = t5 * t4;
     let t7: T = x_x1 + t6;
-    let t8: T = T::literal(0.3681416, 0.3681415834864128);
+    let t8: T = T::literal(0.3386975, 0.3386974999150873);
     let t9: T = t8 * t4;
     let t10: T = x_x2 + t9;
     [t7, t10]
@@ -2003,7 +2003,7 @@ fn corrected_steady<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T
 
 /// `P(N−1)` diagonal of [`StartedEkf`] (f64), as `gen` chose it, in each state's unit squared
 /// ([`STATE_UNITS`]).
-pub const STARTED_P0: [f64; STATES] = [0.019857370145348316, 0.026911911065220503];
+pub const STARTED_P0: [f64; STATES] = [0.06658900599059674, 0.08897505580518363];
 
 /// The EKF started at the map's first estimate `x̂(N−1) = F(Z)` with `P(N−1)` diagonal, each variance
 /// the map's mean squared error on the tuning runs, then [`Ekf`]'s samples (same `Q` and `R`).
@@ -2018,7 +2018,7 @@ impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, 
 
     #[inline(always)]
     fn start(first: &[T; STATES], u: &[T; INPUTS]) -> Option<([T; STATES], [T; COVARIANCE])> {
-        let (x, p) = ekf_unmeasured(first, &[T::literal(0.01985737, 0.019857370145348316), T::literal(0.0, 0.0), T::literal(0.02691191, 0.026911911065220503)], u);
+        let (x, p) = ekf_unmeasured(first, &[T::literal(0.066589005, 0.06658900599059674), T::literal(0.0, 0.0), T::literal(0.08897506, 0.08897505580518363)], u);
         finite(&x, &p).then_some((x, p))
     }
 
@@ -2060,7 +2060,7 @@ pub type EkfMapObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, ST
 pub const RESTART_THRESHOLD: f64 = 16.0;
 /// See [`RESTART_THRESHOLD`]: each state's `e_i²`, the map's mean squared error on the tuning runs,
 /// in its unit squared ([`STATE_UNITS`]).
-pub const RESTART_VARIANCES: [f64; STATES] = [0.06279451800032951, 0.08510293515398502];
+pub const RESTART_VARIANCES: [f64; STATES] = [0.06658900599059674, 0.08897505580518363];
 
 /// Whether the filter's prediction `x` with covariance `p` and the map's states `f` disagree:
 /// `d = Σ_i (x_i − f_i)² / (P_ii + e_i²) > τ`, or `d` is NaN. Runs at every sample from the map's
@@ -2069,7 +2069,7 @@ pub const RESTART_VARIANCES: [f64; STATES] = [0.06279451800032951, 0.08510293515
 #[inline(always)]
 fn restart_disagrees<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], f: &[T; STATES]) -> bool {
     const DIAGONAL: [usize; STATES] = [0, 2];
-    let variances: [T; STATES] = [T::literal(0.06279452, 0.06279451800032951), T::literal(0.08510294, 0.08510293515398502)];
+    let variances: [T; STATES] = [T::literal(0.066589005, 0.06658900599059674), T::literal(0.08897506, 0.08897505580518363)];
     let mut d = T::ZERO;
     for i in 0..STATES {
         let e = x[i] - f[i];
@@ -2079,7 +2079,7 @@ fn restart_disagrees<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], f:
 }
 
 impl firmware::emitted::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
-    const FRESH: ([f32; STATES], [f32; COVARIANCE]) = ([0.0, 0.0], [0.22153471, 0.0, 0.78878015]);
+    const FRESH: ([f32; STATES], [f32; COVARIANCE]) = ([0.0, 0.0], [1.5927348, 0.0, 19.371712]);
 
     #[inline(always)]
     fn disagrees(carried: &([f32; STATES], [f32; COVARIANCE]), map: &[f32; STATES]) -> bool {
@@ -2088,7 +2088,7 @@ impl firmware::emitted::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Start
 }
 
 impl firmware::emitted::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
-    const FRESH: ([f64; STATES], [f64; COVARIANCE]) = ([0.0, 0.0], [0.22153471157177115, 0.0, 0.788780131119072]);
+    const FRESH: ([f64; STATES], [f64; COVARIANCE]) = ([0.0, 0.0], [1.5927347607655395, 0.0, 19.371710942845038]);
 
     #[inline(always)]
     fn disagrees(carried: &([f64; STATES], [f64; COVARIANCE]), map: &[f64; STATES]) -> bool {
@@ -2104,7 +2104,7 @@ pub type EkfRestartObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZ
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
-/// learning runs cover, the first window's start, 1 Gauss–Newton step(s) per sample and
+/// learning runs cover, the first window's start, 2 Gauss–Newton step(s) per sample and
 /// Levenberg's damping.
 pub struct Mhe;
 
@@ -2124,7 +2124,7 @@ impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPU
             lower: [T::literal(-2.5734026, -2.5734027581015964), T::literal(-6.151861, -6.151861022986871)],
             upper: [T::literal(2.5661693, 2.5661692136490704), T::literal(6.334768, 6.3347680430875855)],
             start: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
-            iterations: 1,
+            iterations: 2,
             damping: T::literal(1e-6, 1e-6),
         }
     }
@@ -2136,7 +2136,7 @@ impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPU
 }
 
 /// The moving-horizon estimate on the chip ([`firmware::mhe::Observer`] over [`Discrete`], kind
-/// `mhe`): at every sample, 1 Gauss–Newton step(s) over the last [`HORIZON`] samples from
+/// `mhe`): at every sample, 2 Gauss–Newton step(s) over the last [`HORIZON`] samples from
 /// the previous solution moved one sample on (also the prior's centre), each solved by a Cholesky
 /// factorisation (`L D Lᵀ`, no square root) and projected onto the box the learning runs cover;
 /// `estimate` gives the targets at the newest sample. The paper's on-line observer, which the map
@@ -2156,7 +2156,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "2c097cfa60cf90dc960c1372b3edbb2fa3827886f5be7edf8282e84995705853";
+pub const TABLES_SHA256: &str = "f0799cf6faf832d167676321c074b082826376e2e3c23b689bc5443f6bd6b555";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

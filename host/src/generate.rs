@@ -205,7 +205,7 @@ pub(crate) fn prepare_all(
     }
     let gated: Vec<&str> = prepared
         .iter()
-        .filter(|(_, p)| !p.warnings.is_empty())
+        .filter(|(_, p)| p.warnings.iter().any(reporting::gates::Gate::strict))
         .map(|(_, p)| p.emitted.design.name.as_str())
         .collect();
     if strict && !gated.is_empty() {

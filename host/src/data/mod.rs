@@ -169,11 +169,64 @@ pub fn scenario_draws(design: &Design) -> Result<Option<DataSet>, SpecError> {
 /// Runs from the scenario's initial state in the tuning set ([`tuning_set`]).
 pub const SCENARIO_TUNING_RUNS: usize = 16;
 
+/// Corners of the learning box among the tuning set's edge starts: all of them up to 4 states, else
+/// this many drawn ([`edge_starts`]).
+pub const MAX_CORNER_STARTS: usize = 16;
+
+/// The tuning set's starts on the learning box's boundary, where a filter from the box centre starts
+/// farthest from its guess and a state sits on its bound when the box reaches it: for each state
+/// with a range, one start at its minimum and one at its maximum (the other states drawn uniformly),
+/// then the box's corners (all `2ⁿ` of them up to [`MAX_CORNER_STARTS`], else that many drawn):
+/// `2 n + min(2ⁿ, 16)` starts for `n` states with a range, so rare failures grow with the state.
+pub fn edge_starts(design: &Design, rng: &mut ChaCha8Rng) -> Vec<Vec<f64>> {
+    let axes = &design.learning.axes;
+    let ranged: Vec<usize> = (0..axes.len())
+        .filter(|&i| matches!(axes[i], Axis::Range { .. }))
+        .collect();
+    let end = |i: usize, high: bool| match axes[i] {
+        Axis::Range { min, max, .. } => {
+            if high {
+                max
+            } else {
+                min
+            }
+        }
+        Axis::Fixed(value) => value,
+    };
+    let mut starts = Vec::new();
+    for &i in &ranged {
+        for high in [false, true] {
+            let mut x0 = random_state(design, rng);
+            x0[i] = end(i, high);
+            starts.push(x0);
+        }
+    }
+    let n = ranged.len();
+    let corners: Vec<u64> = if n <= 4 {
+        (0..1u64 << n).collect()
+    } else {
+        (0..MAX_CORNER_STARTS).map(|_| rng.random_range(0..u64::MAX)).collect()
+    };
+    for corner in corners {
+        let mut x0 = random_state(design, rng);
+        for (bit, &i) in ranged.iter().enumerate() {
+            x0[i] = end(i, corner >> (bit % 64) & 1 == 1);
+        }
+        starts.push(x0);
+    }
+    starts
+}
+
+/// The random stream of the tuning seed the edge starts read (the random runs read 0, scenario `i`
+/// reads `1 + i`).
+const EDGE_STREAM: u64 = 1 << 32;
+
 /// The tuning set: runs drawn as the validation set's, from `[tuning]`'s own seed; then, for every
 /// scenario the spec declares, [`SCENARIO_TUNING_RUNS`] more from its initial state (its samples,
 /// other inputs, noise and drawn plants than the reported scenario's, from stream `1 + i` of the
 /// tuning seed for scenario `i`), so that every tuning criterion and `auto` see the starts the spec
-/// names, where a filter from the box centre may converge slowly, and not only the random ones.
+/// names, where a filter from the box centre may converge slowly, and not only the random ones; then
+/// one run from each of the box's [`edge_starts`], where rare failures hide (stream `2³²`).
 pub fn tuning_set(design: &Design) -> Result<DataSet, SpecError> {
     let mut set = random_runs(design, &design.tuning, "tuning", None)?;
     for (i, scenario) in design.scenarios.iter().enumerate() {
@@ -191,6 +244,20 @@ pub fn tuning_set(design: &Design) -> Result<DataSet, SpecError> {
                 "tuning",
             )?);
         }
+    }
+    let mut rng = ChaCha8Rng::seed_from_u64(design.tuning.seed);
+    rng.set_stream(EDGE_STREAM);
+    for x0 in edge_starts(design, &mut rng) {
+        let drawn = uncertain::draw_plant(&design.model, &mut rng);
+        let plant = drawn.as_ref().unwrap_or(&design.model);
+        set.runs.push(simulate_plant(
+            design,
+            plant,
+            &x0,
+            design.tuning.samples,
+            &mut rng,
+            "tuning",
+        )?);
     }
     Ok(set)
 }
@@ -536,6 +603,25 @@ mod tests {
         }
     }
 
+    #[test]
+    fn the_edge_starts_cover_each_states_ends_and_every_corner() {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/vanderpol.toml");
+        let design = crate::spec::parse(&path, &std::fs::read_to_string(&path).unwrap()).unwrap();
+        let (x1, x2) = match (design.learning.axes[0], design.learning.axes[1]) {
+            (Axis::Range { min: a, max: b, .. }, Axis::Range { min: c, max: d, .. }) => ((a, b), (c, d)),
+            other => panic!("{other:?}"),
+        };
+        let starts = edge_starts(&design, &mut ChaCha8Rng::seed_from_u64(1));
+        // 2 n + 2ⁿ = 8 for two states: x1 at each end, x2 at each end, then the four corners.
+        assert_eq!(starts.len(), 8);
+        let inside = |v: f64, (lo, hi): (f64, f64)| lo <= v && v <= hi;
+        assert!(starts[0][0] == x1.0 && starts[1][0] == x1.1);
+        assert!(starts[2][1] == x2.0 && starts[3][1] == x2.1);
+        assert!(inside(starts[0][1], x2) && inside(starts[2][0], x1));
+        let corners: Vec<(f64, f64)> = starts[4..].iter().map(|x| (x[0], x[1])).collect();
+        assert_eq!(corners, [(x1.0, x2.0), (x1.1, x2.0), (x1.0, x2.1), (x1.1, x2.1)]);
+    }
+
     /// The data of designs without uncertain parameters, bit for bit: the fingerprints of the learning,
     /// validation and tuning sets (its runs from random starts) and of the scenario run (when there is
     /// one), recorded on commit 8afa2e3, before parameters could have ranges. A change of any number, or of the order in which
@@ -582,8 +668,17 @@ mod tests {
         for (name, text, expected) in specs {
             let design = crate::spec::parse(Path::new(name), text).unwrap();
             let mut tuning = tuning_set(&design).unwrap();
-            // The runs from the scenario's start, added since: new runs after the recorded ones.
-            let from_scenario = tuning.runs.split_off(design.tuning.trajectories);
+            // The runs from the scenario's start and from the box's edges, added since: new runs
+            // after the recorded ones.
+            let mut from_scenario = tuning.runs.split_off(design.tuning.trajectories);
+            let edges = from_scenario.split_off(design.scenarios.len() * SCENARIO_TUNING_RUNS);
+            let mut rng = ChaCha8Rng::seed_from_u64(design.tuning.seed);
+            rng.set_stream(EDGE_STREAM);
+            let starts = edge_starts(&design, &mut rng);
+            assert_eq!(edges.len(), starts.len(), "{name}");
+            for (run, x0) in edges.iter().zip(&starts) {
+                assert_eq!(run.states.iter().next().unwrap(), &x0[..], "{name}");
+            }
             let sets = [learning_set(&design).unwrap(), validation_set(&design).unwrap(), tuning];
             let mut prints: Vec<u64> = sets.iter().map(fingerprint).collect();
             assert_eq!(

@@ -9,11 +9,14 @@ use super::kind::corrected::run as corrected;
 use super::score::{self, CHEAPER_WITHIN};
 use super::{ekf, kind, ObserverFigures};
 
-/// A kind's [score](score::score) on the tuning runs.
-fn tuning_score(figures: &ObserverFigures, spreads: &[f64]) -> f64 {
+/// A kind's lost tuning runs and [score](score::score) on the tuning runs: compared in that order.
+fn tuning_score(figures: &ObserverFigures, spreads: &[f64]) -> (usize, f64) {
     let pooled: Vec<f64> = figures.targets.iter().map(|f| f.rmse_tuning).collect();
     let p95: Vec<f64> = figures.targets.iter().map(|f| f.p95_tuning).collect();
-    score::score(&pooled, &p95, spreads)
+    (
+        figures.lost.tuning.map_or(0, |l| l.lost),
+        score::score(&pooled, &p95, spreads),
+    )
 }
 
 /// What [`choose`] would refuse of the spec's `observer.kind` that is known before anything is fitted,
@@ -91,7 +94,7 @@ pub fn choose(
     observers: &[ObserverFigures],
     spreads: &[f64],
 ) -> Result<(ObserverKind, String), SpecError> {
-    let scored: Vec<(ObserverKind, &str, f64, f64)> = kind::REGISTRY
+    let scored: Vec<(ObserverKind, &str, (usize, f64), f64)> = kind::REGISTRY
         .iter()
         .map(|k| (k.kind, k.kind.name()))
         .filter_map(|(kind, name)| {
@@ -108,9 +111,12 @@ pub fn choose(
             Some(&(_, name, _, instructions)) if !within(instructions) => {
                 Err(over_budget(design, name, instructions, budget.unwrap_or_default()))
             }
-            Some(&(kind, name, score, instructions)) => Ok((
+            Some(&(kind, name, (lost, score), instructions)) => Ok((
                 kind,
-                format!("`{name}` as the spec asks (tuning score {score:.4}, ~{instructions:.0} instructions)"),
+                format!(
+                    "`{name}` as the spec asks (tuning score {score:.4}{}, ~{instructions:.0} instructions)",
+                    lost_words(lost)
+                ),
             )),
             None => Err(cannot_have(design)),
         };
@@ -119,11 +125,17 @@ pub fn choose(
     // budget that allows it.
     let offered =
         |kind: ObserverKind, instructions: f64| within(instructions) && (kind != ObserverKind::Mhe || budget.is_some());
-    let allowed: Vec<&(ObserverKind, &str, f64, f64)> = scored.iter().filter(|s| offered(s.0, s.3)).collect();
-    let best = allowed.iter().map(|s| s.2).fold(f64::INFINITY, f64::min);
+    let allowed: Vec<&(ObserverKind, &str, (usize, f64), f64)> = scored.iter().filter(|s| offered(s.0, s.3)).collect();
+    // The fewest lost tuning runs first; among those, the lowest score.
+    let fewest = allowed.iter().map(|s| s.2 .0).min().unwrap_or(0);
+    let best = allowed
+        .iter()
+        .filter(|s| s.2 .0 == fewest)
+        .map(|s| s.2 .1)
+        .fold(f64::INFINITY, f64::min);
     let Some(&&(kind, name, _, _)) = allowed
         .iter()
-        .filter(|s| s.2 <= best * (1.0 + CHEAPER_WITHIN))
+        .filter(|s| s.2 .0 == fewest && s.2 .1 <= best * (1.0 + CHEAPER_WITHIN))
         .min_by(|a, b| a.3.total_cmp(&b.3))
     else {
         return Err(design.error(
@@ -138,7 +150,7 @@ pub fn choose(
     };
     let all: Vec<String> = scored
         .iter()
-        .map(|&(k, n, s, i)| {
+        .map(|&(k, n, (lost, s), i)| {
             let over = if !within(i) {
                 ", over budget"
             } else if !offered(k, i) {
@@ -146,11 +158,20 @@ pub fn choose(
             } else {
                 ""
             };
-            format!("{n} {s:.4} at ~{i:.0} instructions{over}")
+            format!("{n} {s:.4}{} at ~{i:.0} instructions{over}", lost_words(lost))
         })
         .collect();
     let limit = budget.map_or(String::new(), |b| format!(" within `budget.instructions` = {b}"));
-    Ok((kind, format!("`{name}` by `auto`: the lowest tuning score (pooled RMSE + p95 over runs, per target over its spread; {}){limit}, a cheaper kind preferred within {:.0} %", all.join(", "), CHEAPER_WITHIN * 100.0)))
+    Ok((kind, format!("`{name}` by `auto`: the fewest lost tuning runs, then the lowest tuning score (pooled RMSE + p95 over runs, per target over its spread; {}){limit}, a cheaper kind preferred within {:.0} %", all.join(", "), CHEAPER_WITHIN * 100.0)))
+}
+
+/// ", 3 tuning runs lost" (nothing when none was).
+fn lost_words(lost: usize) -> String {
+    match lost {
+        0 => String::new(),
+        1 => ", 1 tuning run lost".to_owned(),
+        n => format!(", {n} tuning runs lost"),
+    }
 }
 
 #[cfg(test)]
@@ -204,6 +225,39 @@ mod tests {
 
     fn chosen(design: &Design, observers: &[ObserverFigures]) -> ObserverKind {
         choose(design, observers, &SPREADS).unwrap().0
+    }
+
+    /// [`kind`] with `lost` of 80 tuning runs lost.
+    fn losing(name: &'static str, rmse: f64, instructions: f64, lost: usize) -> ObserverFigures {
+        let mut figures = kind(name, rmse, rmse, instructions);
+        figures.lost.tuning = Some(crate::observers::lost::Lost { lost, runs: 80 });
+        figures
+    }
+
+    #[test]
+    fn a_kind_that_lost_a_tuning_run_is_not_chosen_over_one_that_lost_none() {
+        let design = design(ObserverKind::Auto, None);
+        // The two-tank case: ekf_box ties the UKF on the score (0.0216) and is cheaper, but it
+        // lost a tuning run: the UKF.
+        let observers = [
+            losing("ekf_box", 0.0108, 300.0, 1),
+            losing("ukf_box", 0.0108, 1000.0, 0),
+            losing("map", 0.5, 100.0, 0),
+        ];
+        assert_eq!(chosen(&design, &observers), ObserverKind::UkfBox);
+        // When every kind loses runs, the fewest lost wins before the score, and the 2 % preference for
+        // a cheaper kind applies among those alone.
+        let observers = [
+            losing("ekf_box", 0.01, 300.0, 3),
+            losing("ukf_box", 0.5, 1000.0, 2),
+            losing("map", 0.504, 100.0, 3),
+        ];
+        assert_eq!(chosen(&design, &observers), ObserverKind::UkfBox);
+        let (_, why) = choose(&design, &observers, &SPREADS).unwrap();
+        assert!(
+            why.contains("ukf_box 1.0000, 2 tuning runs lost at ~1000 instructions"),
+            "{why}"
+        );
     }
 
     #[test]
@@ -312,8 +366,8 @@ mod tests {
         let mut uneven = kind("corrected", 0.05, 0.05, 300.0);
         uneven.targets[1].rmse_tuning = 0.2;
         uneven.targets[1].p95_tuning = 0.2;
-        assert!((tuning_score(&even, &[1.0, 4.0]) - 0.125).abs() < 1e-12);
-        assert!((tuning_score(&uneven, &[1.0, 4.0]) - 0.1).abs() < 1e-12);
+        assert!((tuning_score(&even, &[1.0, 4.0]).1 - 0.125).abs() < 1e-12);
+        assert!((tuning_score(&uneven, &[1.0, 4.0]).1 - 0.1).abs() < 1e-12);
         let observers = [kind("map", 1.0, 1.0, 100.0), even, uneven];
         let auto = design(ObserverKind::Auto, None);
         assert_eq!(

@@ -84,6 +84,23 @@ pub struct LostRuns {
     pub long: Option<Lost>,
 }
 
+impl LostRuns {
+    /// The sets with a lost run, by the names the report gives them, with their counts: validation,
+    /// then the scenario's draws, the mismatch runs and the long runs (the tuning runs are where
+    /// constants were chosen, not where a kind is judged).
+    pub fn judged(&self) -> Vec<(&'static str, Lost)> {
+        [
+            ("validation", Some(self.validation)),
+            ("scenario draws", self.scenario_draws),
+            ("mismatch", self.mismatch),
+            ("long", self.long),
+        ]
+        .into_iter()
+        .filter_map(|(set, lost)| lost.filter(|l| l.lost > 0).map(|l| (set, l)))
+        .collect()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -155,5 +172,15 @@ mod tests {
             &[1.0],
         );
         assert_eq!(lost, Lost { lost: 1, runs: 3 });
+        let runs = LostRuns {
+            validation: lost,
+            long: Some(Lost { lost: 0, runs: 4 }),
+            mismatch: Some(Lost { lost: 2, runs: 8 }),
+            ..LostRuns::default()
+        };
+        assert_eq!(
+            runs.judged(),
+            [("validation", lost), ("mismatch", Lost { lost: 2, runs: 8 })]
+        );
     }
 }

@@ -12,11 +12,25 @@
 //! `RMSE_t` the RMSE over every window of every run, `P95_t` the 95th percentile over runs of each
 //! run's own RMSE ([`percentile_95`]). A run whose estimate diverged (NaN) makes the score infinite:
 //! the worst, never a NaN that a search cannot order.
+//!
+//! Neither figure sees one run lost among many good ones. A lost tuning run
+//! ([`crate::observers::lost`]) therefore counts before everything else ([`with_lost`]): a candidate
+//! that loses a run never beats one that loses none, whatever its pooled RMSE, and of two that lose
+//! runs the one that loses fewer wins.
 
 use crate::data::{Rows, Run};
 
 /// How much worse than the best a cheaper kind's score may be and still be chosen by `auto`.
 pub const CHEAPER_WITHIN: f64 = 0.02;
+
+/// What one lost tuning run adds to a score ([`with_lost`]): far above any score of runs that are not
+/// lost (each run's error at its end is below its targets' spreads, so scores are a few units at most).
+pub const LOST_RUN: f64 = 1e3;
+
+/// `score` with `lost` tuning runs counted first: `LOST_RUN · lost + score`.
+pub fn with_lost(score: f64, lost: usize) -> f64 {
+    LOST_RUN * lost as f64 + score
+}
 
 /// Each run's RMSE of target `target` over its samples `window(run)`.
 pub fn per_run_rmse(

@@ -23,6 +23,14 @@
 //!   or a scenario's `observer_x0` lies outside the learning box: the filter
 //!   starts where no learning or validation run starts, which is allowed (a published filter's guess
 //!   may be poor on purpose) but is rarely what a user means.
+//! * [`Gate::LostRuns`]: an observer lost runs of a set it is judged on (validation, the scenario's
+//!   draws, the mismatch or the long runs; [`crate::observers::lost`]). A warning for any kind;
+//!   `--strict` refuses it only for `observer()`, the kind that is flashed.
+//! * [`Gate::Drift`]: an observer's RMSE over the last window of the long runs is more than
+//!   [`DRIFT_RATIO`] times its RMSE over the first window after the start-up, on some target (on the
+//!   nominal plant or at the last corner of the uncertain parameters): it loses track slowly, which
+//!   the validation runs are too short to show. A warning for any kind; `--strict` refuses it only
+//!   for `observer()`.
 
 use std::fmt;
 
@@ -96,6 +104,34 @@ pub enum Gate {
         fraction: f64,
     },
     /// See the module docs.
+    Drift {
+        /// The observer's kind ([`crate::spec::ObserverKind::name`]).
+        kind: &'static str,
+        /// The target's name.
+        target: String,
+        /// The long runs (`""`) or those at the last corner of the uncertain parameters.
+        plant: &'static str,
+        /// RMSE over the first and the last window.
+        first: f64,
+        /// See `first`.
+        last: f64,
+        /// Whether it is `observer()`.
+        chosen: bool,
+    },
+    /// See the module docs.
+    LostRuns {
+        /// The observer's kind ([`crate::spec::ObserverKind::name`]).
+        kind: &'static str,
+        /// The set, as the report names it.
+        set: &'static str,
+        /// Runs lost.
+        lost: usize,
+        /// Runs in the set.
+        runs: usize,
+        /// Whether it is `observer()`.
+        chosen: bool,
+    },
+    /// See the module docs.
     StartOutsideBox {
         /// The spec's field (`observer.ekf.x0`).
         field: String,
@@ -167,6 +203,51 @@ impl fmt::Display for Gate {
                 seen.1,
                 fraction * 100.0
             ),
+            Gate::Drift {
+                kind: name,
+                target,
+                plant,
+                first,
+                last,
+                chosen,
+            } => {
+                let what = kind::named(name).map_or("the observer", |k| k.what);
+                let who = if *chosen {
+                    format!("`observer()`, {what} (`{name}`),")
+                } else {
+                    format!("{what} (`{name}`)")
+                };
+                write!(
+                    f,
+                    "{who} drifts on target `{target}` over the long runs{plant}: RMSE {last:.4} over the last window against \
+                     {first:.4} over the first ({:.2} times, more than {DRIFT_RATIO}; the report's drift table){}",
+                    last / first,
+                    if *chosen {
+                        "; choose a kind that does not drift (`[observer] kind`)"
+                    } else {
+                        ""
+                    }
+                )
+            }
+            Gate::LostRuns { kind: name, set, lost, runs, chosen } => {
+                let what = kind::named(name).map_or("the observer", |k| k.what);
+                let who = if *chosen {
+                    format!("`observer()`, {what} (`{name}`),")
+                } else {
+                    format!("{what} (`{name}`)")
+                };
+                write!(
+                    f,
+                    "{who} lost {lost} of {runs} {set} runs: at their end its RMSE on some target exceeded {} times the target's \
+                     spread (the best constant estimate's), or its estimate was not finite (the report's table of lost runs){}",
+                    crate::observers::lost::LOST_FRACTION,
+                    if *chosen {
+                        "; choose a kind that lost none (`[observer] kind`)"
+                    } else {
+                        ""
+                    }
+                )
+            }
             Gate::StartOutsideBox { field, state, value, range } => write!(
                 f,
                 "`{field}.{state}` = {value} lies outside the learning box [{}, {}] of `{state}`: the filter starts where no \
@@ -176,6 +257,67 @@ impl fmt::Display for Gate {
             ),
         }
     }
+}
+
+impl Gate {
+    /// Whether `gen --strict` refuses the design for it: every gate but a kind other than
+    /// `observer()` losing runs, which is a warning.
+    pub fn strict(&self) -> bool {
+        !matches!(
+            self,
+            Gate::LostRuns { chosen: false, .. } | Gate::Drift { chosen: false, .. }
+        )
+    }
+}
+
+/// How much larger an observer's RMSE over the last window of the long runs may be than over the
+/// first before [`Gate::Drift`].
+pub const DRIFT_RATIO: f64 = 2.0;
+
+/// Every observer's drift over the long runs above [`DRIFT_RATIO`] ([`Gate::Drift`]).
+pub fn drifts(design: &Design, comparison: &Comparison) -> Vec<Gate> {
+    let chosen = kind::of(comparison.chosen.0).kind.name();
+    let mut gates = Vec::new();
+    for o in &comparison.observers {
+        for (t, figures) in o.targets.iter().enumerate() {
+            let plants = [
+                ("", Some(figures.drift)),
+                (" at the last corner", figures.drift_mismatch),
+            ];
+            for (plant, drift) in plants {
+                let Some(drift) = drift else { continue };
+                if drift.last > DRIFT_RATIO * drift.first {
+                    gates.push(Gate::Drift {
+                        kind: o.kind,
+                        target: design.targets[t].name.clone(),
+                        plant,
+                        first: drift.first,
+                        last: drift.last,
+                        chosen: o.kind == chosen,
+                    });
+                }
+            }
+        }
+    }
+    gates
+}
+
+/// Every observer's lost runs on the sets it is judged on ([`Gate::LostRuns`]).
+pub fn lost_runs(comparison: &Comparison) -> Vec<Gate> {
+    let chosen = kind::of(comparison.chosen.0).kind.name();
+    comparison
+        .observers
+        .iter()
+        .flat_map(|o| {
+            o.lost.judged().into_iter().map(move |(set, l)| Gate::LostRuns {
+                kind: o.kind,
+                set,
+                lost: l.lost,
+                runs: l.runs,
+                chosen: o.kind == chosen,
+            })
+        })
+        .collect()
 }
 
 /// The starts the spec gives a filter outside the learning box ([`Gate::StartOutsideBox`]).
@@ -254,6 +396,8 @@ pub fn raw_ranges_short(design: &Design, learning: &crate::data::DataSet) -> Vec
 pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) -> Vec<Gate> {
     let mut failed = starts_outside_box(design);
     failed.extend(raw_ranges_short(design, &result.runs.learning));
+    failed.extend(lost_runs(comparison));
+    failed.extend(drifts(design, comparison));
     for t in &result.targets {
         let name = design.targets[t.index].name.clone();
         let v = &t.validation;
@@ -548,6 +692,74 @@ mod tests {
     #[test]
     fn a_clean_design_fails_no_gate() {
         assert_eq!(check(&design(), &clean_result(), &clean_comparison()), []);
+    }
+
+    #[test]
+    fn a_lost_run_warns_for_any_kind_and_is_strict_for_the_chosen_one() {
+        use crate::observers::lost::{Lost, LostRuns};
+        let mut comparison = clean_comparison();
+        comparison.observers[1].lost = LostRuns {
+            validation: Lost { lost: 1, runs: 64 },
+            long: Some(Lost { lost: 2, runs: 64 }),
+            tuning: Some(Lost { lost: 5, runs: 80 }), // where constants are chosen: not a gate
+            ..LostRuns::default()
+        };
+        let gates = check(&design(), &clean_result(), &comparison);
+        assert_eq!(gates.len(), 2, "{gates:?}");
+        assert!(matches!(
+            &gates[0],
+            Gate::LostRuns {
+                kind: "ekf_box",
+                set: "validation",
+                lost: 1,
+                runs: 64,
+                chosen: false
+            }
+        ));
+        assert!(matches!(
+            &gates[1],
+            Gate::LostRuns {
+                set: "long",
+                lost: 2,
+                ..
+            }
+        ));
+        assert!(gates.iter().all(|g| !g.strict()), "another kind's lost runs only warn");
+        assert!(
+            gates[0]
+                .to_string()
+                .contains("(`ekf_box`) lost 1 of 64 validation runs"),
+            "{}",
+            gates[0]
+        );
+        comparison.chosen.0 = ObserverKind::EkfBox;
+        let gates = check(&design(), &clean_result(), &comparison);
+        assert!(gates.iter().all(Gate::strict), "observer()'s lost runs fail --strict");
+        assert!(gates[0].to_string().starts_with("`observer()`, "), "{}", gates[0]);
+    }
+
+    #[test]
+    fn a_drift_over_twice_the_first_window_warns_and_is_strict_for_the_chosen_one() {
+        let mut comparison = clean_comparison();
+        // x1: 0.1 → 0.2, exactly twice: not a drift; x2: 0.1 → 0.2001: one.
+        comparison.observers[0].targets[0].drift = Drift { first: 0.1, last: 0.2 };
+        comparison.observers[0].targets[1].drift = Drift {
+            first: 0.1,
+            last: 0.2001,
+        };
+        let gates = check(&design(), &clean_result(), &comparison);
+        assert_eq!(gates.len(), 1, "{gates:?}");
+        let Gate::Drift {
+            kind, target, chosen, ..
+        } = &gates[0]
+        else {
+            panic!("{gates:?}")
+        };
+        assert_eq!((*kind, target.as_str(), *chosen), ("map", "x2", true));
+        assert!(gates[0].strict());
+        assert!(gates[0].to_string().contains("2.00 times"), "{}", gates[0]);
+        comparison.chosen.0 = ObserverKind::EkfBox;
+        assert!(!check(&design(), &clean_result(), &comparison)[0].strict());
     }
 
     #[test]

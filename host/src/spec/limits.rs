@@ -63,7 +63,14 @@ pub(super) fn check_budget(design: &Design) -> Result<(), SpecError> {
         p => 2f64.powi(p as i32),
     };
     let learning = learning_runs * design.learning.samples as f64;
-    let tuning = design.tuning.trajectories as f64 * design.tuning.samples as f64;
+    let ranged = design
+        .learning
+        .axes
+        .iter()
+        .filter(|a| matches!(a, crate::spec::Axis::Range { .. }))
+        .count();
+    let edges = 2 * ranged + (1usize << ranged.min(8)).min(crate::data::MAX_CORNER_STARTS);
+    let tuning = (design.tuning.trajectories + edges) as f64 * design.tuning.samples as f64;
     let samples = learning + validation + tuning + scenario + corners * validation;
     // The error names the section that asks for the most: where the fix has the most effect.
     let largest_scenario = design

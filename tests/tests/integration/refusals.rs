@@ -100,7 +100,10 @@ macro_rules! check_refusals {
             let box_filter = filter_code(&code, &fresh);
 
             let chip = counts(d::EkfBoxObserver::new(), &ys, &us, |o| o.refused());
-            assert!(chip.0 >= 2 && chip.1 >= 1, "bad values refused, overflows restarted: {chip:?}");
+            assert!(
+                chip.0 >= 2 && chip.1 >= 1,
+                "bad values refused, overflows restarted: {chip:?}"
+            );
             let mut host = ekf::BoxStep::<f32>::new(&box_filter, &fresh.x0, &fresh.p0, &code);
             samples().for_each(|(_, y, u)| drop(host.step(y, u)));
             assert_eq!((host.refused(), host.restarts()), chip, "ekf_box");

@@ -62,7 +62,9 @@ const ITERATIONS: u64 = 150;
 /// constants and this search.
 pub type Estimator = fn(&ModelCode, &EkfConstants, &[f64], &DataSet) -> Option<Vec<Rows>>;
 
-/// The score of the filter with `constants` from the box centre on `data` (windows `k ≥ N − 1`).
+/// The score of the filter with `constants` from the box centre on `data` (windows `k ≥ N − 1`), its
+/// lost runs counted first ([`crate::observers::score::with_lost`]): a candidate that loses a tuning
+/// run never beats one that loses none.
 fn score(
     estimator: Estimator,
     code: &ModelCode,
@@ -72,9 +74,12 @@ fn score(
     target_spreads: &[f64],
 ) -> f64 {
     let estimates = estimator(code, constants, centre, data).expect("size checked");
-    crate::observers::score::of_estimates(&data.runs, &estimates, target_spreads, |run| {
-        data.horizon.saturating_sub(1)..run.targets.len()
-    })
+    let window = |run: &crate::data::Run| data.horizon.saturating_sub(1)..run.targets.len();
+    let lost = crate::observers::lost::count(&data.runs, &estimates, window, target_spreads).lost;
+    crate::observers::score::with_lost(
+        crate::observers::score::of_estimates(&data.runs, &estimates, target_spreads, window),
+        lost,
+    )
 }
 
 /// The tuning criterion as `argmin` sees it: `θ` to the score.

@@ -138,9 +138,15 @@ impl<'a> Bench<'a> {
             .collect()
     }
 
-    /// The [score](score::of_estimates) of `estimates`, one per tuning run.
+    /// The [score](score::of_estimates) of `estimates`, one per tuning run, its lost runs counted
+    /// first ([`score::with_lost`]).
     pub fn tuning_score(&self, estimates: &[Rows]) -> f64 {
-        score::of_estimates(&self.result.runs.tuning.runs, estimates, &self.spreads, self.windows())
+        let runs = &self.result.runs.tuning.runs;
+        let lost = lost::count(runs, estimates, self.windows(), &self.spreads).lost;
+        score::with_lost(
+            score::of_estimates(runs, estimates, &self.spreads, self.windows()),
+            lost,
+        )
     }
 
     /// One kind's figures on every set: `estimate(run, map)` is its estimate of every target at every

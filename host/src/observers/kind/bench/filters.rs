@@ -11,11 +11,18 @@ use crate::observers::score::errors;
 use crate::spec::FixedFilter;
 
 impl Bench<'_> {
-    /// The tuning runs from random starts: what the box filters are tuned on.
+    /// The tuning runs from random starts and from the box's edges (not the scenarios'): what the box
+    /// filters are tuned on.
     pub fn random_tuning(&self) -> DataSet {
         let tuning = &self.result.runs.tuning;
+        let random = self.design.tuning.trajectories;
+        let scenarios = self.design.scenarios.len() * crate::data::SCENARIO_TUNING_RUNS;
         DataSet {
-            runs: tuning.runs[..self.design.tuning.trajectories].to_vec(),
+            runs: tuning.runs[..random]
+                .iter()
+                .chain(&tuning.runs[random + scenarios..])
+                .cloned()
+                .collect(),
             horizon: tuning.horizon,
         }
     }
