@@ -38,14 +38,23 @@ fn p_equal_zero_is_a_legitimate_state() {
             "at P = {p}: {f:?} {jacobian:?}"
         );
     }
-    // Without the max, the Jacobian at P = 0 is not finite: the change above is what makes it so.
+    // Without the max, the slope at P = 0 is 0·∞: `gen` finds it on the bound and evaluates the
+    // Jacobian with P a thousandth of its learning range [0, 0.3] inside (`host::plant::JACOBIAN_INSIDE`),
+    // where it is finite: the same Jacobian as at P = 3e-4 itself, and the value at P = 0 as written.
     let text = std::fs::read_to_string(integration_tests::workspace_root().join("host/specs/ecoli_x0_2.toml"))
         .unwrap()
         .replace("k_d*exp(-k_p/max(P, 0.001))", "k_d*exp(-k_p/P)");
     let unguarded = integration_tests::design("ecoli_x0_2", &text);
     let code = host::plant::ModelCode::new(&unguarded).unwrap();
-    let (_, jacobian) = code.derivative(&[2.0, 3.0, 0.0], &[], &mut Vec::new());
-    assert!(jacobian.iter().any(|v: &f64| !v.is_finite()), "{jacobian:?}");
+    let (f, jacobian) = code.derivative(&[2.0, 3.0, 0.0], &[], &mut Vec::new());
+    assert!(jacobian.iter().all(|v: &f64| v.is_finite()), "{jacobian:?}");
+    let inside = host::plant::JACOBIAN_INSIDE * 0.3;
+    let (_, at_inside) = code.derivative(&[2.0, 3.0, inside], &[], &mut Vec::new());
+    assert_eq!(jacobian, at_inside);
+    let (f_guarded, _) = host::plant::ModelCode::new(&design)
+        .unwrap()
+        .derivative(&[2.0, 3.0, 0.0], &[], &mut Vec::new());
+    assert_eq!(f, f_guarded, "the values at P = 0 are the model's (death → 0 either way)");
 }
 
 #[test]
