@@ -51,10 +51,14 @@ fn p_equal_zero_is_a_legitimate_state() {
     let inside = host::plant::JACOBIAN_INSIDE * 0.3;
     let (_, at_inside) = code.derivative(&[2.0, 3.0, inside], &[], &mut Vec::new());
     assert_eq!(jacobian, at_inside);
-    let (f_guarded, _) = host::plant::ModelCode::new(&design)
-        .unwrap()
-        .derivative(&[2.0, 3.0, 0.0], &[], &mut Vec::new());
-    assert_eq!(f, f_guarded, "the values at P = 0 are the model's (death → 0 either way)");
+    let (f_guarded, _) =
+        host::plant::ModelCode::new(&design)
+            .unwrap()
+            .derivative(&[2.0, 3.0, 0.0], &[], &mut Vec::new());
+    assert_eq!(
+        f, f_guarded,
+        "the values at P = 0 are the model's (death → 0 either way)"
+    );
 }
 
 #[test]

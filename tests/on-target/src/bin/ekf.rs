@@ -24,7 +24,7 @@ use core::panic::PanicInfo;
 
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprint, hprintln};
-use firmware::RejectedSample;
+use firmware::rules::Refused;
 use generated::firmware;
 
 include!(concat!(env!("OUT_DIR"), "/design.rs"));
@@ -48,7 +48,7 @@ pub extern "C" fn measure_end() {
 
 const PAINT: u32 = 0xA5A5_5A5A;
 
-type Targets = Result<[f32; d::TARGETS], RejectedSample>;
+type Targets = Result<[f32; d::TARGETS], Refused>;
 
 /// One sample: what a user's firmware does every period. Not inlined, and its results are returned
 /// and printed, so nothing of `push` and `targets` can be optimised away.
@@ -64,7 +64,7 @@ fn step(filter: &mut d::Ekf, y: &[f32; d::OUTPUTS], u: &[f32; d::INPUTS]) -> Tar
 fn main() -> ! {
     let mut filter = d::ekf();
     let mut results: [(Targets, [f32; d::STATES]); d::RECORDED_LEN] =
-        [(Err(RejectedSample), [0.0; d::STATES]); d::RECORDED_LEN];
+        [(Err(Refused::Value), [0.0; d::STATES]); d::RECORDED_LEN];
     let top = cortex_m::register::msp::read() as usize;
     for address in (top - EKF_PAINTED..top).step_by(4) {
         // SAFETY: below the stack pointer, inside RAM, not in use: nothing runs but this loop.

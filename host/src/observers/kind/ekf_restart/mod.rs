@@ -73,7 +73,8 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
         bench.tuning_score(&bench.on_tuning(|run, map| run_restarted(&constants, run, map)))
     });
     let constants = with(threshold);
-    let figures = bench.judge("ekf_restart", cost::of_restarted(&filter), &|run, map| {
+    let map_cost = bench.observers.first()?.instructions;
+    let figures = bench.judge("ekf_restart", cost::of_restarted(&filter, map_cost), &|run, map| {
         run_restarted(&constants, run, map)
     });
     bench.tuned.insert(Tuned::EkfRestart(constants));
