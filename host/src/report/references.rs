@@ -4,15 +4,120 @@
 
 use std::fmt::Write as _;
 
-use super::schema::{ChipReport, ParticlesReport, ReferenceFigures, ReferenceReport, Report, SolverReport};
+use super::schema::{
+    BeatenReport, ChipReport, FloorReport, ParticlesReport, ReferenceFigures, ReferenceReport, Report, SolverReport,
+};
 use crate::observers::kind::mhe::run::ChipTuned;
 use crate::observers::references::{Cost, Reference};
 use crate::observers::Comparison;
 use crate::spec::Design;
 
+/// An observer beats the particle filter on a target when its validation RMSE there is below
+/// `1 − BEATEN_BEYOND` times the filter's: beyond the filter's Monte Carlo error (its doubling check
+/// allows 5 %), the filter is then not the best estimate, so no floor.
+pub const BEATEN_BEYOND: f64 = 0.05;
+
+/// Whether a particle filter is a floor: `converged` by doubling, and no observer (kind, validation
+/// RMSE per target) below `1 −` [`BEATEN_BEYOND`] times its validation RMSE `floor` on any target
+/// (`targets`: their names, in the same order).
+pub fn floor_verdict(
+    converged: bool,
+    targets: &[String],
+    floor: &[f64],
+    observers: &[(&'static str, Vec<f64>)],
+) -> FloorReport {
+    let beaten_by: Vec<BeatenReport> = observers
+        .iter()
+        .flat_map(|(kind, rmse)| {
+            (targets.iter().zip(floor).zip(rmse))
+                .filter(|&((_, &floor), &rmse)| rmse < (1.0 - BEATEN_BEYOND) * floor)
+                .map(|((target, &floor), &rmse)| BeatenReport {
+                    kind,
+                    target: target.clone(),
+                    rmse_validation: rmse,
+                    floor_rmse_validation: floor,
+                })
+        })
+        .collect();
+    FloorReport {
+        converged,
+        is_floor: converged && beaten_by.is_empty() && floor.iter().all(|v| v.is_finite()),
+        beaten_by,
+    }
+}
+
+/// Why a particle filter is not a floor, in a clause; with each observer's RMSE against the filter's
+/// when `figures`.
+fn no_floor_reason(floor: &FloorReport, figures: bool) -> String {
+    let mut reasons = Vec::new();
+    if !floor.converged {
+        reasons.push(format!(
+            "the particle filter did not converge (at {} particles, the most the host runs, doubling still moved a target's validation RMSE by more than {:.0} %)",
+            crate::observers::references::MAX_PARTICLES,
+            100.0 * crate::observers::references::CONVERGED_WITHIN
+        ));
+    }
+    let mut kinds: Vec<&str> = floor.beaten_by.iter().map(|b| b.kind).collect();
+    kinds.dedup();
+    if !kinds.is_empty() {
+        let by: Vec<String> = kinds
+            .iter()
+            .map(|kind| {
+                let on: Vec<String> = (floor.beaten_by.iter().filter(|b| b.kind == *kind))
+                    .map(|b| {
+                        if figures {
+                            format!(
+                                "{} {:.4} against {:.4}",
+                                b.target, b.rmse_validation, b.floor_rmse_validation
+                            )
+                        } else {
+                            b.target.clone()
+                        }
+                    })
+                    .collect();
+                format!("`{kind}` ({})", on.join(", "))
+            })
+            .collect();
+        reasons.push(format!(
+            "observers beat the particle filter by more than {:.0} % on validation RMSE: {}",
+            100.0 * BEATEN_BEYOND,
+            by.join(", ")
+        ));
+    }
+    if reasons.is_empty() {
+        reasons.push("a target's validation RMSE is not finite".to_owned());
+    }
+    reasons.join("; and ")
+}
+
+/// The sentence on the observers (kind, validation RMSE per target) against the particle filter's
+/// validation RMSE `floor`: the best one's ratio when `verdict` says it is a floor, else why there is
+/// none, and no ratio.
+fn against_floor(verdict: &FloorReport, floor: &[f64], observers: &[(&str, Vec<f64>)]) -> String {
+    if !verdict.is_floor {
+        return format!(
+            "\nNo floor for this design: {}; no observer is placed against the particle filter.\n",
+            no_floor_reason(verdict, false)
+        );
+    }
+    let best = (observers.iter())
+        .map(|(kind, rmse)| (kind, mean_ratio(rmse, floor)))
+        .filter(|(_, r)| r.is_finite())
+        .min_by(|a, b| a.1.total_cmp(&b.1));
+    best.map_or(String::new(), |(kind, ratio)| {
+        format!(
+            "\nBest embeddable observer on the validation runs: `{kind}`, {ratio:.2}× the floor's RMSE (mean over targets).\n"
+        )
+    })
+}
+
 /// The references of `comparison` as the report holds them.
 pub fn assemble(design: &Design, comparison: &Comparison) -> Vec<ReferenceReport> {
     let finite = |v: f64| v.is_finite().then_some(v);
+    let targets: Vec<String> = design.targets.iter().map(|t| t.name.clone()).collect();
+    let observers: Vec<(&'static str, Vec<f64>)> = (comparison.observers.iter())
+        .map(|o| (o.kind, o.targets.iter().map(|f| f.rmse_validation).collect()))
+        .collect();
     comparison
         .references
         .iter()
@@ -65,6 +170,15 @@ pub fn assemble(design: &Design, comparison: &Comparison) -> Vec<ReferenceReport
                     checked: checked.clone(),
                     converged: *converged,
                 }),
+                _ => None,
+            },
+            floor: match &r.cost {
+                Cost::Particles { converged, .. } => Some(floor_verdict(
+                    *converged,
+                    &targets,
+                    &r.figures.targets.iter().map(|f| f.rmse_validation).collect::<Vec<_>>(),
+                    &observers,
+                )),
                 _ => None,
             },
         })
@@ -196,10 +310,17 @@ pub fn section(report: &Report<'_>) -> String {
                     )
                 } else {
                     format!(
-                        "the most the host runs: **doubling it still moved a target's validation RMSE by more than {within:.0} %, so on this design it is not a floor** (the likelihood is too narrow for particles drawn from the box)"
+                        "the most the host runs: doubling it still moved a target's validation RMSE by more than {within:.0} %"
                     )
                 },
                 checked.join("; ")
+            );
+        }
+        if let Some(floor) = r.floor.as_ref().filter(|f| !f.is_floor) {
+            let _ = writeln!(
+                s,
+                "- **No floor for this design**: {}; no observer is placed against the particle filter.",
+                no_floor_reason(floor, true)
             );
         }
     }
@@ -217,35 +338,20 @@ pub fn section(report: &Report<'_>) -> String {
     s
 }
 
-/// Where the observers stand: the best embeddable one against the floor, and the map against the
-/// MHE it replaces (validation RMSE, each target's ratio, averaged over targets).
+/// Where the observers stand: the best embeddable one against the floor (or why there is none), and
+/// the map against the MHE it replaces (validation RMSE, each target's ratio, averaged over targets).
 pub fn verdict(report: &Report<'_>) -> String {
     let mut s = String::new();
     let Some(floor) = validation(report, "floor") else {
         return s;
     };
-    let converged = report
-        .references
-        .iter()
-        .find_map(|r| r.particles.as_ref())
-        .is_some_and(|p| p.converged);
-    let floor_word = if converged {
-        "the floor's"
-    } else {
-        "the (unconverged) particle filter's"
+    let Some(verdict) = report.references.iter().find_map(|r| r.floor.as_ref()) else {
+        return s;
     };
-    let best = report
-        .observers
-        .iter()
-        .filter_map(|o| Some((o.kind, mean_ratio(&validation(report, o.kind)?, &floor))))
-        .filter(|(_, r)| r.is_finite())
-        .min_by(|a, b| a.1.total_cmp(&b.1));
-    if let Some((kind, ratio)) = best {
-        let _ = writeln!(
-            s,
-            "\nBest embeddable observer on the validation runs: `{kind}`, {ratio:.2}× {floor_word} RMSE (mean over targets)."
-        );
-    }
+    let observers: Vec<(&str, Vec<f64>)> = (report.observers.iter())
+        .filter_map(|o| Some((o.kind, validation(report, o.kind)?)))
+        .collect();
+    s.push_str(&against_floor(verdict, &floor, &observers));
     let map = validation(report, "map");
     for name in ["mhe_host", "mhe_host_prior"] {
         let (Some(map), Some(mhe)) = (&map, validation(report, name)) else {
@@ -253,18 +359,23 @@ pub fn verdict(report: &Report<'_>) -> String {
         };
         let to_mhe = mean_ratio(map, &mhe);
         let to_floor = mean_ratio(&mhe, &floor);
-        let place = if !converged {
-            "no floor to place it against on this design"
+        let worse = "worse than the map: without a prior the MHE is the maximum-likelihood start of N samples alone, and where they hardly tell the states apart it fits their noise (its largest errors reach the box's edge), while the map, fitted over the box's runs, returns what those N samples say on average over the learning runs";
+        let place = if !verdict.is_floor {
+            if to_mhe < 1.0 {
+                format!("; `{name}` is {worse}")
+            } else {
+                String::new()
+            }
         } else if to_mhe >= 1.0 && to_floor >= 1.0 {
-            "between the map and the floor"
+            format!("; `{name}` is {to_floor:.2}× the floor's, between the map and the floor")
         } else if to_mhe < 1.0 {
-            "worse than the map: without a prior the MHE is the maximum-likelihood start of N samples alone, and where they hardly tell the states apart it fits their noise (its largest errors reach the box's edge), while the map, fitted over the box's runs, returns what those N samples say on average over the learning runs"
+            format!("; `{name}` is {to_floor:.2}× the floor's, {worse}")
         } else {
-            "better than the floor: the floor's particle count falls short there"
+            format!("; `{name}` is {to_floor:.2}× the floor's, better than the floor: the floor's particle count falls short there")
         };
         let _ = writeln!(
             s,
-            "\nThe map against `{name}`, the on-line estimate it replaces: {to_mhe:.2}× its RMSE (mean over targets); `{name}` is {to_floor:.2}× {floor_word}, {place}."
+            "\nThe map against `{name}`, the on-line estimate it replaces: {to_mhe:.2}× its RMSE (mean over targets){place}."
         );
     }
     if let (Some(chip), Some(converged)) = (validation(report, "mhe"), validation(report, "mhe_host_prior")) {
@@ -287,4 +398,73 @@ pub fn verdict(report: &Report<'_>) -> String {
         );
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn targets() -> Vec<String> {
+        vec!["h1".to_owned(), "h2".to_owned()]
+    }
+
+    #[test]
+    fn an_unconverged_filter_is_no_floor_and_gets_no_ratio() {
+        let floor = [0.10, 0.20];
+        let observers = [("ukf_box", vec![0.12, 0.25])];
+        let verdict = floor_verdict(false, &targets(), &floor, &observers);
+        assert!(!verdict.is_floor && verdict.beaten_by.is_empty(), "{verdict:?}");
+        let sentence = against_floor(&verdict, &floor, &observers);
+        assert!(
+            sentence.contains("No floor for this design: the particle filter did not converge"),
+            "{sentence}"
+        );
+        assert!(!sentence.contains('×'), "{sentence}");
+    }
+
+    #[test]
+    fn a_filter_an_observer_beats_by_more_than_5_percent_is_no_floor() {
+        let floor = [0.10, 0.20];
+        // 0.094 < 0.95 × 0.10 on h1; 0.191 is within 5 % of 0.20 on h2.
+        let observers = [("map", vec![0.30, 0.40]), ("ukf_box", vec![0.094, 0.191])];
+        let verdict = floor_verdict(true, &targets(), &floor, &observers);
+        assert_eq!(
+            verdict.beaten_by,
+            vec![BeatenReport {
+                kind: "ukf_box",
+                target: "h1".to_owned(),
+                rmse_validation: 0.094,
+                floor_rmse_validation: 0.10,
+            }]
+        );
+        assert!(!verdict.is_floor);
+        let sentence = against_floor(&verdict, &floor, &observers);
+        assert!(
+            sentence.contains("No floor for this design") && sentence.contains("`ukf_box` (h1)"),
+            "{sentence}"
+        );
+        assert!(!sentence.contains('×'), "{sentence}");
+        assert!(no_floor_reason(&verdict, true).contains("h1 0.0940 against 0.1000"));
+    }
+
+    #[test]
+    fn a_converged_filter_no_observer_beats_by_5_percent_is_the_floor_with_the_best_ratio() {
+        let floor = [0.10, 0.20];
+        // 0.096 and 0.192: within 5 % below the filter (4 % each); the mean ratio 0.96.
+        let observers = [("map", vec![0.30, 0.40]), ("ukf_box", vec![0.096, 0.192])];
+        let verdict = floor_verdict(true, &targets(), &floor, &observers);
+        assert!(verdict.is_floor && verdict.beaten_by.is_empty(), "{verdict:?}");
+        let sentence = against_floor(&verdict, &floor, &observers);
+        assert!(sentence.contains("`ukf_box`, 0.96× the floor's RMSE"), "{sentence}");
+    }
+
+    #[test]
+    fn a_filter_both_unconverged_and_beaten_says_both() {
+        let verdict = floor_verdict(false, &targets(), &[0.10, 0.20], &[("ekf_box", vec![0.01, 0.02])]);
+        let reason = no_floor_reason(&verdict, false);
+        assert!(
+            reason.contains("did not converge") && reason.contains("`ekf_box` (h1, h2)"),
+            "{reason}"
+        );
+    }
 }

@@ -105,7 +105,7 @@ fn tuning_never_reads_the_validation_runs_or_the_scenario() {
     // Example 1's targets for issue 32, on the clean comparison: the floor's particle count is
     // checked (doubling it moves no RMSE by more than 5 %), and the MHE with its tuned prior lands
     // between the map and the floor on every target (measured: map 0.242 / 0.287, MHE with prior
-    // 0.064 / 0.118, floor 0.042 / 0.078).
+    // 0.064 / 0.118, floor 0.042 / 0.078 at 500 particles).
     let validation = |kind: &str| -> Vec<f64> {
         let figures = clean
             .observers
