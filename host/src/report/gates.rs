@@ -396,8 +396,6 @@ pub fn raw_ranges_short(design: &Design, learning: &crate::data::DataSet) -> Vec
 pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) -> Vec<Gate> {
     let mut failed = starts_outside_box(design);
     failed.extend(raw_ranges_short(design, &result.runs.learning));
-    failed.extend(lost_runs(comparison));
-    failed.extend(drifts(design, comparison));
     for t in &result.targets {
         let name = design.targets[t.index].name.clone();
         let v = &t.validation;
@@ -474,6 +472,9 @@ pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) ->
             }
         }
     }
+    // The kinds' own gates last: a target's gate often says why every kind lost runs.
+    failed.extend(lost_runs(comparison));
+    failed.extend(drifts(design, comparison));
     failed
 }
 

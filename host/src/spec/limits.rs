@@ -69,9 +69,12 @@ pub(super) fn check_budget(design: &Design) -> Result<(), SpecError> {
         .iter()
         .filter(|a| matches!(a, crate::spec::Axis::Range { .. }))
         .count();
+    // The tuning set's runs from the box's edges (`data::edge_starts`) count in the total, not in
+    // which section is named: the user sets the random runs' number, not theirs.
     let edges = 2 * ranged + (1usize << ranged.min(8)).min(crate::data::MAX_CORNER_STARTS);
-    let tuning = (design.tuning.trajectories + edges) as f64 * design.tuning.samples as f64;
-    let samples = learning + validation + tuning + scenario + corners * validation;
+    let tuning = design.tuning.trajectories as f64 * design.tuning.samples as f64;
+    let samples =
+        learning + validation + tuning + edges as f64 * design.tuning.samples as f64 + scenario + corners * validation;
     // The error names the section that asks for the most: where the fix has the most effect.
     let largest_scenario = design
         .scenarios
@@ -127,7 +130,7 @@ pub(super) fn check_budget(design: &Design) -> Result<(), SpecError> {
         return Err(design.error(
             field,
             format!(
-                "the runs take {steps:.2e} RK4 steps ({learning_runs:.0} learning runs of {} samples, {} validation runs of {}, {} tuning runs of {}{}{}, {} substeps), above the budget of {MAX_SIMULATION_STEPS:.0e}",
+                "the runs take {steps:.2e} RK4 steps ({learning_runs:.0} learning runs of {} samples, {} validation runs of {}, {} tuning runs of {} and {edges} from the box's edges{}{}, {} substeps), above the budget of {MAX_SIMULATION_STEPS:.0e}",
                 design.learning.samples,
                 design.validation.trajectories,
                 design.validation.samples,
