@@ -261,10 +261,10 @@ pub unsafe extern "C" fn {name}_push(storage: *mut c_void, y: *const f32, u: *co
         // SAFETY: `u` points to INPUTS floats.
         *value = unsafe {{ u.add(i).read_unaligned() }};
     }}
-    let restarts = <design::Observer as firmware::Estimator>::restarts(observer);
+    let restarts = <design::Observer as {library}::firmware::Estimator>::restarts(observer);
     match observer.push(outputs, inputs) {{
         Ok(()) => {status}::{upper}_OK,
-        Err(_) if <design::Observer as firmware::Estimator>::restarts(observer) != restarts => {{
+        Err(_) if <design::Observer as {library}::firmware::Estimator>::restarts(observer) != restarts => {{
             {status}::{upper}_RESTARTED
         }}
         Err(_) => {status}::{upper}_REFUSED,

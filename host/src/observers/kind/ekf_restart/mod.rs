@@ -10,7 +10,6 @@ pub mod run;
 use super::{Bench, FixedSection, Kind, Needs, Tuned};
 use crate::data::{Rows, Run};
 use crate::observers::ObserverFigures;
-use crate::search::cost::ekf_before_fit;
 use crate::spec::ObserverKind;
 use run as restart;
 use run::RestartConstants;
@@ -30,7 +29,8 @@ pub const KIND: Kind = Kind {
         filter: true,
         reads: &[ObserverKind::EkfBox, ObserverKind::EkfMap, ObserverKind::EkfRestart],
     },
-    cost_before_fit: Some(ekf_before_fit),
+    // Its cost reads the map's, known after the fit only (`cost::of_restarted`).
+    cost_before_fit: None,
     missing_why: "its tables hold no restart threshold",
     judged_in: crate::recording::Precision::F64,
     counts_refusals: true,
