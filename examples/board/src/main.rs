@@ -6,7 +6,7 @@
 //! 0 no estimate yet            before the first estimate (the map and the observers it starts:
 //!                              until HORIZON samples have arrived; the EKFs from the box centre
 //!                              estimate from the first sample)
-//! 9 x1=0.34601057 x2=4.015311  one name=value per target, (low) or (high) after a value clamped
+//! 9 x1=0.3654424 x2=3.9929113  one name=value per target, (low) or (high) after a value clamped
 //!                              to the design's learning range
 //! <k> refused                  a NaN or infinite sample: the observer is unchanged
 //! ```

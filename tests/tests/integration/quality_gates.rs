@@ -70,7 +70,7 @@ fn example_1_passes_every_gate_and_each_gate_bites() {
 /// budget no kind fits in, is an error naming the field.
 #[test]
 fn the_observer_kind_is_chosen_within_the_instruction_budget() {
-    use host::spec::ObserverKind::{Auto, Corrected, EkfMap, EkfRestart, Map, Mhe, UkfBox};
+    use host::spec::ObserverKind::{Auto, Corrected, EkfMap, Map, Mhe, UkfBox};
     let (mut design, result, comparison) = example_1();
     let spreads: Vec<f64> = result
         .targets
@@ -102,8 +102,8 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
     for (budget, kind) in [
         (None, UkfBox),
         (Some(440), UkfBox),
-        (Some(430), EkfRestart),
-        (Some(300), EkfRestart),
+        (Some(430), Corrected),
+        (Some(300), Corrected),
         (Some(240), Corrected),
         (Some(148), Map),
         (Some(126), Map),
