@@ -74,6 +74,8 @@ use rand_distr::StandardNormal;
 use crate::data::{Rows, Run};
 use crate::plant::{ModelCode, Program};
 use crate::spec::{Axis, Design};
+use stages::Stages;
+use weights::{effective, effective_tempered, normalised, spread, systematic, temper};
 
 /// The filter's seed (each run a stream of its own).
 pub const SEED: u64 = 0x5eed_f100;
@@ -394,10 +396,6 @@ impl<'a> Floor<'a> {
 }
 
 mod stages;
-mod weights;
-
-use stages::Stages;
-use weights::{effective, effective_tempered, normalised, spread, systematic, temper};
-
 #[cfg(test)]
 mod tests;
+mod weights;
