@@ -230,7 +230,11 @@ mod tests {
     /// [`kind`] with `lost` of 80 tuning runs lost.
     fn losing(name: &'static str, rmse: f64, instructions: f64, lost: usize) -> ObserverFigures {
         let mut figures = kind(name, rmse, rmse, instructions);
-        figures.lost.tuning = Some(crate::observers::lost::Lost { lost, runs: 80 });
+        figures.lost.tuning = Some(crate::observers::lost::Lost {
+            lost,
+            runs: 80,
+            ..Default::default()
+        });
         figures
     }
 

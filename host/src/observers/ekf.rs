@@ -13,6 +13,7 @@ pub use tuning::{tune, tune_started, tune_with, Estimator, Tuned, STARTS, START_
 use firmware::{Ekf, Plant, Rk4};
 
 use crate::data::{DataSet, Rows, Run};
+use crate::observers::lost::Track;
 use crate::plant::kalman::EkfConstants;
 use crate::plant::{Compiled, Covariance, ModelCode};
 use crate::spec::{Axis, Design, FixedFilter};
@@ -134,6 +135,11 @@ const _: () = assert!(MAX_STATES == 6 && MAX_OUTPUTS == 4, "host_sizes! lists th
 /// The targets estimated at every sample of `run` by the EKF with `constants` started at `x0`.
 /// `None` when the model is larger than the host's instantiations ([`supported`]).
 pub fn estimate_run(code: &ModelCode, constants: &EkfConstants, x0: &[f64], run: &Run) -> Option<Rows> {
+    track_run(code, constants, x0, run).map(|track| track.rows)
+}
+
+/// [`estimate_run`], with the restarts on the run.
+pub fn track_run(code: &ModelCode, constants: &EkfConstants, x0: &[f64], run: &Run) -> Option<Track> {
     macro_rules! sized {
         ($(($nx:literal, $ny:literal)),*) => {
             match (code.dimensions.states, code.dimensions.outputs) {
@@ -153,7 +159,7 @@ fn run_sized<const NX: usize, const NY: usize>(
     constants: &EkfConstants,
     x0: &[f64],
     run: &Run,
-) -> Rows {
+) -> Track {
     let plant = Stepped {
         step: Rk4::new(Compiled::new(code), constants.h),
         substeps: constants.substeps,
@@ -172,16 +178,23 @@ fn run_sized<const NX: usize, const NY: usize>(
     );
     let mut estimates = Rows::new(code.dimensions.targets);
     let mut scratch = Vec::new();
+    let mut restarts = 0;
     for (y, u) in run.measurements.iter().zip(run.inputs.iter()) {
         let mut padded = [0.0; MAX_INPUTS];
         padded[..u.len()].copy_from_slice(u);
         let x = match filter.push(&std::array::from_fn(|i| y[i]), &padded) {
             Ok(x) => x,
-            Err(_) => [f64::NAN; NX],
+            Err(refused) => {
+                restarts += u32::from(refused == firmware::rules::Refused::Restarted);
+                [f64::NAN; NX]
+            }
         };
         estimates.push(&code.targets(&x, u, &mut scratch));
     }
-    estimates
+    Track {
+        rows: estimates,
+        restarts,
+    }
 }
 
 /// The constants for `θ = (a, b)` (see [`tuning`]), each coordinate clamped to [`LOG_RANGE`].

@@ -12,6 +12,10 @@
 //! A filter that refuses every finite sample from some point on predicts alone from there, and its
 //! error grows into the second case. A pooled RMSE or a p95 over runs can hide one such run among
 //! many good ones; this count does not.
+//!
+//! Beside it, each set counts the runs on which the observer **restarted** (its state or step went
+//! non-finite, or `ekf_restart`'s map check fired: `firmware::rules`) and the most restarts on one
+//! run: a restarted run may end well, and the count says how often recovery was needed.
 
 use std::ops::Range;
 
@@ -25,6 +29,33 @@ pub const LOST_FRACTION: f64 = 1.0;
 
 /// The part of a run's judged samples, at its end, that decides whether it was lost.
 pub const LAST_PART: f64 = 0.25;
+
+/// One observer's estimates of one run (`R`: [`Rows`], or the rows of some scalar type), and the
+/// times it restarted on it.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Track<R = Rows> {
+    /// The estimate of every target at every sample.
+    pub rows: R,
+    /// Restarts on the run, as the chip counts them.
+    pub restarts: u32,
+}
+
+impl From<Rows> for Track {
+    /// The estimates of an observer that never restarts (the map, a reference).
+    fn from(rows: Rows) -> Self {
+        Track { rows, restarts: 0 }
+    }
+}
+
+impl From<Track<Vec<Vec<f64>>>> for Track {
+    /// Rows as [`Rows`].
+    fn from(track: Track<Vec<Vec<f64>>>) -> Self {
+        Track {
+            rows: Rows::from(track.rows),
+            restarts: track.restarts,
+        }
+    }
+}
 
 /// Whether the observer whose estimates of `run` are `estimates` lost it (see the module docs),
 /// judged over samples `window` against each target's spread `spreads`.
@@ -47,17 +78,28 @@ pub fn is_lost(run: &Run, estimates: &Rows, window: Range<usize>, spreads: &[f64
     })
 }
 
-/// The lost runs of one set.
+/// The lost and the restarted runs of one set.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 pub struct Lost {
     /// Runs lost.
     pub lost: usize,
     /// Runs in the set.
     pub runs: usize,
+    /// Runs on which the observer restarted at least once.
+    pub restarted: usize,
+    /// The most restarts on one run.
+    pub most_restarts: u32,
 }
 
-/// [`is_lost`] over every run of a set, each over its samples `window(run)`.
-pub fn count(runs: &[Run], estimates: &[Rows], window: impl Fn(&Run) -> Range<usize>, spreads: &[f64]) -> Lost {
+/// [`is_lost`] over every run of a set, each over its samples `window(run)`, with the restarts on
+/// each run (`restarts[i]` on `runs[i]`).
+pub fn count(
+    runs: &[Run],
+    estimates: &[Rows],
+    restarts: &[u32],
+    window: impl Fn(&Run) -> Range<usize>,
+    spreads: &[f64],
+) -> Lost {
     Lost {
         lost: runs
             .iter()
@@ -65,6 +107,8 @@ pub fn count(runs: &[Run], estimates: &[Rows], window: impl Fn(&Run) -> Range<us
             .filter(|(run, rows)| is_lost(run, rows, window(run), spreads))
             .count(),
         runs: runs.len(),
+        restarted: restarts.iter().filter(|&&r| r > 0).count(),
+        most_restarts: restarts.iter().copied().max().unwrap_or(0),
     }
 }
 
@@ -162,25 +206,35 @@ mod tests {
     }
 
     #[test]
-    fn a_set_counts_its_lost_runs() {
+    fn a_set_counts_its_lost_and_its_restarted_runs() {
         let (good, good_rows) = run(&[0.0; 8]);
         let (off, off_rows) = run(&[3.0; 8]);
+        // The first run restarted twice and ended well; the second was lost without a restart.
         let lost = count(
             &[good.clone(), off, good],
             &[good_rows.clone(), off_rows, good_rows],
+            &[2, 0, 1],
             |r| 0..r.targets.len(),
             &[1.0],
         );
-        assert_eq!(lost, Lost { lost: 1, runs: 3 });
+        let expected = Lost {
+            lost: 1,
+            runs: 3,
+            restarted: 2,
+            most_restarts: 2,
+        };
+        assert_eq!(lost, expected);
+        let counted = |lost, runs| Lost {
+            lost,
+            runs,
+            ..Lost::default()
+        };
         let runs = LostRuns {
             validation: lost,
-            long: Some(Lost { lost: 0, runs: 4 }),
-            mismatch: Some(Lost { lost: 2, runs: 8 }),
+            long: Some(counted(0, 4)),
+            mismatch: Some(counted(2, 8)),
             ..LostRuns::default()
         };
-        assert_eq!(
-            runs.judged(),
-            [("validation", lost), ("mismatch", Lost { lost: 2, runs: 8 })]
-        );
+        assert_eq!(runs.judged(), [("validation", lost), ("mismatch", counted(2, 8))]);
     }
 }

@@ -582,9 +582,21 @@ mod tests {
         use crate::observers::lost::{Lost, LostRuns};
         let mut comparison = clean_comparison();
         comparison.observers[1].lost = LostRuns {
-            validation: Lost { lost: 1, runs: 64 },
-            long: Some(Lost { lost: 2, runs: 64 }),
-            tuning: Some(Lost { lost: 5, runs: 80 }), // where constants are chosen: not a gate
+            validation: Lost {
+                lost: 1,
+                runs: 64,
+                ..Lost::default()
+            },
+            long: Some(Lost {
+                lost: 2,
+                runs: 64,
+                ..Lost::default()
+            }),
+            tuning: Some(Lost {
+                lost: 5,
+                runs: 80,
+                ..Lost::default()
+            }), // where constants are chosen: not a gate
             ..LostRuns::default()
         };
         let gates = check(&design(), &clean_result(), &comparison);

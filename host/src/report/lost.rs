@@ -1,5 +1,6 @@
-//! `report.md`'s table of lost runs: per observer and set, how many runs it lost
-//! ([`crate::observers::lost`]), which a pooled RMSE or a p95 over runs can hide.
+//! `report.md`'s tables of lost and restarted runs: per observer and set, how many runs it lost
+//! ([`crate::observers::lost`]), which a pooled RMSE or a p95 over runs can hide, and how many it
+//! restarted on, with the most restarts on one run.
 
 use std::fmt::Write;
 
@@ -27,6 +28,34 @@ pub fn table(report: &Report<'_>) -> String {
             show(l.mismatch),
             show(l.long)
         );
+    }
+    s.push_str(&restarts(report));
+    s
+}
+
+/// The restarts: a row per observer that restarted on some run, or a sentence saying none did.
+fn restarts(report: &Report<'_>) -> String {
+    let sets = |o: &super::schema::ObserverReport| {
+        let l = &o.lost;
+        [Some(l.validation), l.tuning, l.scenario_draws, l.mismatch, l.long]
+    };
+    let restarting: Vec<_> = (report.observers.iter())
+        .filter(|o| sets(o).iter().flatten().any(|l| l.restarted > 0))
+        .collect();
+    if restarting.is_empty() {
+        return "\nRestarts: no observer restarted on any run (a filter restarts when its state or step goes non-finite, `ekf_restart` also when the map disagrees).\n".to_owned();
+    }
+    let mut s = "\nRestarts: a filter restarts when its state or step goes non-finite, `ekf_restart` also when the map disagrees (runs with a restart / runs, the most restarts on one run; observers that never restarted are left out):\n\n\
+         | observer | validation | tuning | scenario draws | mismatch | long |\n|---|---|---|---|---|---|\n"
+        .to_owned();
+    let show = |lost: Option<Lost>| {
+        lost.map_or("—".to_owned(), |l| {
+            format!("{} / {}, ≤ {}", l.restarted, l.runs, l.most_restarts)
+        })
+    };
+    for o in restarting {
+        let cells: Vec<String> = sets(o).into_iter().map(show).collect();
+        let _ = writeln!(s, "| {} | {} |", o.kind, cells.join(" | "));
     }
     s
 }

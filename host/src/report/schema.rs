@@ -91,8 +91,8 @@ pub struct ObserverReport {
     pub predicted_instructions: f64,
     /// Per target name.
     pub targets: std::collections::BTreeMap<String, FiguresReport>,
-    /// Its lost runs per set ([`crate::observers::lost`]): `{lost, runs}`, `null` for a set the
-    /// design lacks or the observer is not run on.
+    /// Its lost and restarted runs per set ([`crate::observers::lost`]): `{lost, runs, restarted,
+    /// most_restarts}`, `null` for a set the design lacks or the observer is not run on.
     pub lost: crate::observers::lost::LostRuns,
     /// Measured on the emulated Cortex-M4F by `cargo run -p integration-tests --bin on-target-report`
     /// ([`on_target`]); `null` until the generated source written is measured.

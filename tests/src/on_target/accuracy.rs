@@ -150,6 +150,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
             };
             let _ = (&$targets, $first, &$maps);
             host::observers::kind::mhe::run::chip::chip_run::<f64>(&$code, $d::HORIZON, &constants, &$run)
+                .rows
                 .iter()
                 .map(<[f64]>::to_vec)
                 .collect::<Vec<Vec<f64>>>()
@@ -165,12 +166,12 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
                 lower: constants.lower.clone(),
                 upper: constants.upper.clone(),
             };
-            corrected::estimate_run::<f64>(&setting, &correction_code(&$code, &constants), &constants, &$maps, &$run)
+            corrected::estimate_run::<f64>(&setting, &correction_code(&$code, &constants), &constants, &$maps, &$run).rows
         }};
         (@ ekf_map, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
             let (_, ekf_constants) = crate::emitted_constants!($d, &$design);
             let filter = filter_code(&$code, &ekf_constants);
-            ekf::estimate_started::<f64>(&filter, &$d::STARTED_P0, &$targets, $first, &$maps, &$run, &$code)
+            ekf::estimate_started::<f64>(&filter, &$d::STARTED_P0, &$targets, $first, &$maps, &$run, &$code).rows
         }};
         (@ ekf_restart, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
             let (_, mut ekf_constants) = crate::emitted_constants!($d, &$design);
@@ -204,6 +205,7 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
                 &$run,
                 &$code,
             )
+            .rows
         }};
     }
     generated::for_each_observer!(mirror);

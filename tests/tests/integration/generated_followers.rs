@@ -109,7 +109,8 @@ macro_rules! check_followers {
                 &constants,
                 &maps,
                 &run,
-            );
+            )
+            .rows;
             let chip_corrected = chip::<d::Corrector>();
             assert_eq!(chip_corrected, bits(host));
             assert!(
@@ -121,7 +122,8 @@ macro_rules! check_followers {
             );
 
             let filter = filter_code(&code, &ekf_constants);
-            let host = ekf::estimate_started::<f32>(&filter, &d::STARTED_P0, &state_targets, first, &maps, &run, &code);
+            let host =
+                ekf::estimate_started::<f32>(&filter, &d::STARTED_P0, &state_targets, first, &maps, &run, &code).rows;
             assert_eq!(chip::<d::StartedEkf>(), bits(host));
         }
     };

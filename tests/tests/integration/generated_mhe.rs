@@ -89,7 +89,7 @@ macro_rules! check_mhe {
             for (k, (y, u)) in d::RECORDED_Y.iter().zip(&d::RECORDED_U).enumerate() {
                 // The recording refuses some samples (non-finite values): refused on both sides.
                 if chip.push(*y, *u).is_err() || chip.estimate().is_none() {
-                    assert!(host[k].iter().all(|v| v.is_nan()), "sample {k}");
+                    assert!(host.rows[k].iter().all(|v| v.is_nan()), "sample {k}");
                     continue;
                 }
                 let ours: Vec<u32> = chip
@@ -98,11 +98,16 @@ macro_rules! check_mhe {
                     .iter()
                     .map(|e| e.value.to_bits())
                     .collect();
-                let theirs: Vec<u32> = host[k].iter().map(|&v| (v as f32).to_bits()).collect();
+                let theirs: Vec<u32> = host.rows[k].iter().map(|&v| (v as f32).to_bits()).collect();
                 assert_eq!(ours, theirs, "sample {k}");
                 compared += 1;
             }
             assert!(compared > d::RECORDED_LEN / 2, "{compared} estimates compared");
+            assert_eq!(
+                chip.restarts(),
+                host.restarts,
+                "restarts on the recorded sequence"
+            );
         }
     };
 }

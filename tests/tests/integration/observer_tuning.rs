@@ -226,6 +226,7 @@ fn the_restarted_ekf_is_its_two_parents_and_beats_the_corrected_map_on_validatio
                 run,
                 code,
             )
+            .rows
         };
         let boxed: Vec<Vec<f64>> = ekf::estimate_run(code, &tuned.constants, &tuned.constants.x0, run)
             .unwrap()

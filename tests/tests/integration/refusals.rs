@@ -113,6 +113,10 @@ macro_rules! check_refusals {
             samples().for_each(|(row, y, u)| drop(host.step(row, y, u)));
             assert_eq!((host.refused(), host.restarts()), chip, "ekf_map");
             assert!(chip.1 >= 1, "ekf_map restarted on the overflows: {chip:?}");
+            // The run's track, as the report counts it.
+            let track =
+                ekf::estimate_started::<f32>(&filter, &d::STARTED_P0, &state_targets, first, &maps, &run, &code);
+            assert_eq!(track.restarts, chip.1, "ekf_map's track");
 
             let chip = counts(d::EkfRestartObserver::new(), &ys, &us, |o| o.refused());
             let restart = RestartConstants {
@@ -130,6 +134,17 @@ macro_rules! check_refusals {
             samples().for_each(|(row, y, u)| drop(host.step(row, y, u)));
             // (The map's check may restart it from the map before its step overflows: not counted.)
             assert_eq!((host.refused(), host.restarts()), chip, "ekf_restart");
+            let track = host::observers::kind::ekf_restart::run::estimate::<f32>(
+                &box_filter,
+                &fresh,
+                &d::STARTED_P0,
+                &restart,
+                &state_targets,
+                &maps,
+                &run,
+                &code,
+            );
+            assert_eq!(track.restarts, chip.1, "ekf_restart's track");
 
             let chip = counts(d::CorrectedObserver::new(), &ys, &us, |o| o.refused());
             let setting = corrected::Setting {
@@ -145,6 +160,8 @@ macro_rules! check_refusals {
             let mut host = corrected::CorrectedStep::<f32>::new(&setting, &programs, &constants);
             samples().for_each(|(row, y, u)| drop(host.step(row, y, u)));
             assert_eq!((host.refused(), host.restarts()), chip, "corrected");
+            let track = corrected::estimate_run::<f32>(&setting, &programs, &constants, &maps, &run);
+            assert_eq!(track.restarts, chip.1, "corrected's track");
         }
     };
 }

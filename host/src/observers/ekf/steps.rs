@@ -6,6 +6,7 @@
 use std::cell::RefCell;
 
 use crate::data::Run;
+use crate::observers::lost::Track;
 use crate::observers::started::{literals, Shell};
 use crate::plant::kalman::EkfConstants;
 use crate::plant::{Covariance, ModelCode};
@@ -104,7 +105,8 @@ pub fn kept<T: firmware::Scalar>((_, x, p): crate::plant::kalman::Sampled<T>) ->
 
 /// The EKF started by the map (the generated `StartedEkf` in `firmware::Started`, step for step,
 /// [`Shell`]) in `T`: at sample `first` the map's estimate, from which `(x, P)` is
-/// predicted with `P` = `p0` on the diagonal; then `filter`'s measured samples.
+/// predicted with `P` = `p0` on the diagonal; then `filter`'s measured samples. With the restarts on
+/// the run.
 pub fn estimate_started<T: firmware::Scalar + firmware::emitted::Maths>(
     filter: &crate::plant::kalman::FilterCode,
     p0: &[f64],
@@ -113,12 +115,17 @@ pub fn estimate_started<T: firmware::Scalar + firmware::emitted::Maths>(
     map: &[Vec<T>],
     run: &Run,
     code: &ModelCode,
-) -> Vec<Vec<T>> {
+) -> Track<Vec<Vec<T>>> {
     let mut observer = StartedStep::new(filter, p0, state_targets, first, code);
-    map.iter()
+    let rows = map
+        .iter()
         .zip(run.measurements.iter().zip(run.inputs.iter()))
         .map(|(row, (y, u))| observer.step(row, y, u))
-        .collect()
+        .collect();
+    Track {
+        rows,
+        restarts: observer.restarts(),
+    }
 }
 
 /// [`estimate_started`] one sample at a time: `firmware::Started`'s rule ([`Shell`]) over the

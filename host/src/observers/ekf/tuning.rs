@@ -75,7 +75,7 @@ fn score(
 ) -> f64 {
     let estimates = estimator(code, constants, centre, data).expect("size checked");
     let window = |run: &crate::data::Run| data.horizon.saturating_sub(1)..run.targets.len();
-    let lost = crate::observers::lost::count(&data.runs, &estimates, window, target_spreads).lost;
+    let lost = crate::observers::lost::count(&data.runs, &estimates, &[], window, target_spreads).lost;
     crate::observers::score::with_lost(
         crate::observers::score::of_estimates(&data.runs, &estimates, target_spreads, window),
         lost,

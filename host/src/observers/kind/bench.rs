@@ -13,7 +13,7 @@ use std::collections::BTreeMap;
 
 use super::corrected::run as corrected;
 use crate::observers::figures::{Beside, Drift, Figures, FromObserverStart, ObserverFigures};
-use crate::observers::lost::{self, LostRuns};
+use crate::observers::lost::{self, LostRuns, Track};
 use crate::observers::score::{self, errors};
 
 mod filters;
@@ -58,6 +58,24 @@ struct Estimates {
     /// On the corners, the nominal plant and the long runs at the last corner; the mismatch scenario.
     mismatch: Option<([Vec<Rows>; 3], Rows)>,
     long: Vec<Rows>,
+    /// The restarts on each run of the sets whose lost runs are counted.
+    restarts: Restarts,
+}
+
+/// The restarts on each run of a set, for the sets of [`LostRuns`] (empty where the observer never
+/// restarts or the set is not run).
+#[derive(Default)]
+struct Restarts {
+    validation: Vec<u32>,
+    tuning: Vec<u32>,
+    draws: Vec<u32>,
+    corners: Vec<u32>,
+    long: Vec<u32>,
+}
+
+/// Tracks as their rows and their restarts, run by run.
+fn split(tracks: Vec<Track>) -> (Vec<Rows>, Vec<u32>) {
+    tracks.into_iter().map(|t| (t.rows, t.restarts)).unzip()
 }
 
 /// The map's estimates on every run of [`crate::data::Runs`], set by set.
@@ -142,7 +160,7 @@ impl<'a> Bench<'a> {
     /// first ([`score::with_lost`]).
     pub fn tuning_score(&self, estimates: &[Rows]) -> f64 {
         let runs = &self.result.runs.tuning.runs;
-        let lost = lost::count(runs, estimates, self.windows(), &self.spreads).lost;
+        let lost = lost::count(runs, estimates, &[], self.windows(), &self.spreads).lost;
         score::with_lost(
             score::of_estimates(runs, estimates, &self.spreads, self.windows()),
             lost,
@@ -151,48 +169,62 @@ impl<'a> Bench<'a> {
 
     /// One kind's figures on every set: `estimate(run, map)` is its estimate of every target at every
     /// sample of `run` (`map`: the map's estimates on `run`), every run from where the kind starts on
-    /// the chip; the runs of a set in parallel.
+    /// the chip, with its restarts; the runs of a set in parallel.
     pub fn judge(
         &self,
         kind: &'static str,
         instructions: f64,
-        estimate: &(dyn Fn(&Run, &Rows) -> Rows + Sync),
+        estimate: &(dyn Fn(&Run, &Rows) -> Track + Sync),
     ) -> ObserverFigures {
         use rayon::prelude::*;
         let runs = &self.result.runs;
         let maps = &self.maps;
-        let on = |set: &DataSet, maps: &[Rows]| -> Vec<Rows> {
-            set.runs.par_iter().zip(maps).map(|(r, m)| estimate(r, m)).collect()
+        let on = |set: &DataSet, maps: &[Rows]| -> (Vec<Rows>, Vec<u32>) {
+            split(set.runs.par_iter().zip(maps).map(|(r, m)| estimate(r, m)).collect())
         };
-        let scenario = estimate(&runs.scenario, &maps.scenario);
+        let rows = |run: &Run, map: &Rows| estimate(run, map).rows;
+        let scenario = rows(&runs.scenario, &maps.scenario);
+        let (validation, on_validation) = on(&runs.validation, &maps.validation);
+        let (tuning, on_tuning) = on(&runs.tuning, &maps.tuning);
+        let (draws, on_draws) = match runs.scenario_draws.as_ref().zip(maps.draws.as_ref()) {
+            Some((d, m)) => {
+                let (rows, restarts) = on(d, m);
+                (Some(rows), restarts)
+            }
+            None => (None, Vec::new()),
+        };
+        let (long, on_long) = on(&runs.long, &maps.long);
+        let mut on_corners = Vec::new();
+        let mismatch = runs
+            .mismatch
+            .as_ref()
+            .zip(maps.mismatch.as_ref())
+            .map(|(m, (on_m, map))| {
+                let corners;
+                (corners, on_corners) = on(&m.corners_set, &on_m[0]);
+                (
+                    [corners, on(&m.nominal_set, &on_m[1]).0, on(&m.long, &on_m[2]).0],
+                    rows(&m.scenario, map),
+                )
+            });
         let estimates = Estimates {
-            validation: on(&runs.validation, &maps.validation),
+            validation,
             // The first scenario's run is the scenario's: its estimates are taken once.
             scenarios: (runs.scenarios.iter().zip(&maps.scenarios).enumerate())
-                .map(|(i, (r, m))| if i == 0 { scenario.clone() } else { estimate(r, m) })
+                .map(|(i, (r, m))| if i == 0 { scenario.clone() } else { rows(r, m) })
                 .collect(),
             scenario,
-            tuning: on(&runs.tuning, &maps.tuning),
-            draws: runs
-                .scenario_draws
-                .as_ref()
-                .zip(maps.draws.as_ref())
-                .map(|(d, m)| on(d, m)),
-            mismatch: runs
-                .mismatch
-                .as_ref()
-                .zip(maps.mismatch.as_ref())
-                .map(|(m, (on_m, map))| {
-                    (
-                        [
-                            on(&m.corners_set, &on_m[0]),
-                            on(&m.nominal_set, &on_m[1]),
-                            on(&m.long, &on_m[2]),
-                        ],
-                        estimate(&m.scenario, map),
-                    )
-                }),
-            long: on(&runs.long, &maps.long),
+            tuning,
+            draws,
+            mismatch,
+            long,
+            restarts: Restarts {
+                validation: on_validation,
+                tuning: on_tuning,
+                draws: on_draws,
+                corners: on_corners,
+                long: on_long,
+            },
         };
         self.figures(kind, instructions, estimates, true)
     }
@@ -256,6 +288,7 @@ impl<'a> Bench<'a> {
                 )
             }),
             long: skipped(&runs.long),
+            restarts: Restarts::default(),
         };
         self.figures(name, f64::NAN, estimates, false)
     }
@@ -273,6 +306,7 @@ impl<'a> Bench<'a> {
             draws: on_draws,
             mismatch,
             long: on_long,
+            restarts,
         } = estimates;
         let (on_mismatch, mismatch_scenario) = match mismatch {
             Some((sets, scenario)) => (Some(sets), Some(scenario)),
@@ -333,21 +367,23 @@ impl<'a> Bench<'a> {
             })
             .collect();
         // Lost runs per set; a reference (`tuned` false) is not run on the tuning and long runs.
-        let lost = |runs: &[Run], estimates: &[Rows]| lost::count(runs, estimates, windows, &self.spreads);
+        let lost = |runs: &[Run], estimates: &[Rows], restarts: &[u32]| {
+            lost::count(runs, estimates, restarts, windows, &self.spreads)
+        };
         let lost = LostRuns {
-            validation: lost(&runs.validation.runs, &validation),
-            tuning: tuned.then(|| lost(&runs.tuning.runs, &on_tuning)),
+            validation: lost(&runs.validation.runs, &validation, &restarts.validation),
+            tuning: tuned.then(|| lost(&runs.tuning.runs, &on_tuning, &restarts.tuning)),
             scenario_draws: runs
                 .scenario_draws
                 .as_ref()
                 .zip(on_draws.as_ref())
-                .map(|(d, on)| lost(&d.runs, on)),
+                .map(|(d, on)| lost(&d.runs, on, &restarts.draws)),
             mismatch: runs
                 .mismatch
                 .as_ref()
                 .zip(on_mismatch.as_ref())
-                .map(|(m, [on_corners, _, _])| lost(&m.corners_set.runs, on_corners)),
-            long: tuned.then(|| lost(&runs.long.runs, &on_long)),
+                .map(|(m, [on_corners, _, _])| lost(&m.corners_set.runs, on_corners, &restarts.corners)),
+            long: tuned.then(|| lost(&runs.long.runs, &on_long, &restarts.long)),
         };
         ObserverFigures {
             kind,

@@ -1,6 +1,7 @@
 //! `map`: the fitted map `F(Z)` alone, nothing tuned.
 
 use super::{Bench, Kind, Needs};
+use crate::observers::lost::Track;
 use crate::observers::ObserverFigures;
 use crate::spec::ObserverKind;
 
@@ -32,5 +33,5 @@ pub const KIND: Kind = Kind {
 
 /// Judges the map: its estimates are the bench's own.
 fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
-    Some(bench.judge("map", bench.map_cost.instructions, &|_, map| map.clone()))
+    Some(bench.judge("map", bench.map_cost.instructions, &|_, map| Track::from(map.clone())))
 }

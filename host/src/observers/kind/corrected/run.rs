@@ -30,6 +30,7 @@ use firmware::Scalar;
 
 use crate::data::{Rows, Run};
 use crate::observers::kind::corrected::program::{CorrectionCode, CorrectionConstants, Reading};
+use crate::observers::lost::Track;
 use crate::observers::started::literals;
 use crate::plant::ModelCode;
 use crate::spec::Design;
@@ -132,19 +133,24 @@ impl<'a> Setting<'a> {
 
 /// The targets estimated at every sample of `run` in `T` by the observer with `constants` (its
 /// programs `code`), given the map's estimates `map` (NaN before the first): `firmware::Started`
-/// step for step. NaN before the first estimate.
+/// step for step. NaN before the first estimate. With the restarts on the run.
 pub fn estimate_run<T: Scalar + Maths>(
     setting: &Setting<'_>,
     code: &CorrectionCode,
     constants: &CorrectionConstants,
     map: &[Vec<T>],
     run: &Run,
-) -> Vec<Vec<T>> {
+) -> Track<Vec<Vec<T>>> {
     let mut observer = CorrectedStep::new(setting, code, constants);
-    map.iter()
+    let rows = map
+        .iter()
         .zip(run.measurements.iter().zip(run.inputs.iter()))
         .map(|(row, (y, u))| observer.step(row, y, u))
-        .collect()
+        .collect();
+    Track {
+        rows,
+        restarts: observer.restarts(),
+    }
 }
 
 /// [`estimate_run`] one sample at a time.
@@ -267,9 +273,9 @@ pub fn estimate_rows(
     constants: &CorrectionConstants,
     map: &Rows,
     run: &Run,
-) -> Rows {
+) -> Track {
     let map: Vec<Vec<f64>> = map.iter().map(<[f64]>::to_vec).collect();
-    Rows::from(estimate_run(setting, code, constants, &map, run))
+    Track::from(estimate_run(setting, code, constants, &map, run))
 }
 
 #[cfg(test)]

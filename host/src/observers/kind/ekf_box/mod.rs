@@ -50,7 +50,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let judge = |bench: &Bench<'_>, tuned: &ekf::Tuned| {
         let filter = crate::plant::kalman::filter_code(code, &tuned.constants);
         bench.judge("ekf_box", cost::of_ekf(&filter), &|run, _| {
-            ekf::estimate_run(code, &tuned.constants, &tuned.constants.x0, run).expect("size checked by tune")
+            ekf::track_run(code, &tuned.constants, &tuned.constants.x0, run).expect("size checked by tune")
         })
     };
     let (tuned, figures) = bench.box_filter(ekf::estimates, FIXED, &judge)?;

@@ -7,6 +7,7 @@ pub mod emit;
 use super::corrected::run as corrected;
 use super::{Bench, FixedSection, Kind, Needs, Tuned};
 use crate::data::{Rows, Run};
+use crate::observers::lost::Track;
 use crate::observers::{ekf, ObserverFigures, Started};
 use crate::search::cost;
 use crate::spec::ObserverKind;
@@ -48,9 +49,9 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let squared = map_squared_errors(bench, &state_targets)?;
     let filter = crate::plant::kalman::filter_code(bench.code, &tuned.constants);
     let (code, first) = (bench.code, bench.design.map.horizon - 1);
-    let run_started = |p0: &[f64], run: &Run, map: &Rows| -> Rows {
+    let run_started = |p0: &[f64], run: &Run, map: &Rows| -> Track {
         let map: Vec<Vec<f64>> = map.iter().map(<[f64]>::to_vec).collect();
-        Rows::from(ekf::estimate_started(
+        Track::from(ekf::estimate_started(
             &filter,
             p0,
             &state_targets,
@@ -63,7 +64,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let scaled = |c: f64| -> Vec<f64> { squared.iter().map(|e| c * e).collect() };
     let (factor, _) = ekf::tune_started(|c| {
         let p0 = scaled(c);
-        bench.tuning_score(&bench.on_tuning(|run, map| run_started(&p0, run, map)))
+        bench.tuning_score(&bench.on_tuning(|run, map| run_started(&p0, run, map).rows))
     });
     let p0 = scaled(factor);
     let figures = bench.judge("ekf_map", cost::of_started(&filter), &|run, map| {

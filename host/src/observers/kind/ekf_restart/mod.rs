@@ -9,6 +9,7 @@ pub mod run;
 
 use super::{Bench, FixedSection, Kind, Needs, Tuned};
 use crate::data::{Rows, Run};
+use crate::observers::lost::Track;
 use crate::observers::ObserverFigures;
 use crate::spec::ObserverKind;
 use run as restart;
@@ -51,9 +52,9 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let squared = super::ekf_map::map_squared_errors(bench, &started.state_targets)?;
     let filter = crate::plant::kalman::filter_code(bench.code, &tuned.constants);
     let code = bench.code;
-    let run_restarted = |constants: &RestartConstants, run: &Run, map: &Rows| -> Rows {
+    let run_restarted = |constants: &RestartConstants, run: &Run, map: &Rows| -> Track {
         let map: Vec<Vec<f64>> = map.iter().map(<[f64]>::to_vec).collect();
-        Rows::from(restart::estimate(
+        Track::from(restart::estimate(
             &filter,
             &tuned.constants,
             &started.p0,
@@ -70,7 +71,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     };
     let (threshold, _) = restart::tune(|t| {
         let constants = with(t);
-        bench.tuning_score(&bench.on_tuning(|run, map| run_restarted(&constants, run, map)))
+        bench.tuning_score(&bench.on_tuning(|run, map| run_restarted(&constants, run, map).rows))
     });
     let constants = with(threshold);
     let map_cost = bench.observers.first()?.instructions;

@@ -24,6 +24,7 @@ use firmware::Scalar;
 
 use crate::data::Run;
 use crate::observers::ekf::steps::kept;
+use crate::observers::lost::Track;
 use crate::observers::started::literals;
 use crate::plant::kalman::{self, EkfConstants, FilterCode};
 use crate::plant::ModelCode;
@@ -64,7 +65,7 @@ pub fn disagrees<T: Scalar>(x: &[T], p: &[T], map: &[T], constants: &RestartCons
 /// map row `map[k]` is finite it is checked ([`disagrees`]) and, if so, restarted from the map's states
 /// with `P` = `started_p0` on the diagonal, that sample's estimate the map's row. A step whose result is
 /// not finite restarts it, from the map's row where it is finite, else from `constants.x0` (the last
-/// estimate stays).
+/// estimate stays). With the restarts on the run.
 #[allow(clippy::too_many_arguments)]
 pub fn estimate<T: Scalar + Maths>(
     filter: &FilterCode,
@@ -75,15 +76,20 @@ pub fn estimate<T: Scalar + Maths>(
     map: &[Vec<T>],
     run: &Run,
     code: &ModelCode,
-) -> Vec<Vec<T>> {
+) -> Track<Vec<Vec<T>>> {
     let mut observer = RestartStep::new(filter, constants, started_p0, restart, state_targets, code);
     let none = vec![T::literal(f32::NAN, f64::NAN); code.dimensions.targets];
-    run.measurements
+    let rows = run
+        .measurements
         .iter()
         .zip(run.inputs.iter())
         .enumerate()
         .map(|(k, (y, u))| observer.step(map.get(k).unwrap_or(&none), y, u))
-        .collect()
+        .collect();
+    Track {
+        rows,
+        restarts: observer.restarts(),
+    }
 }
 
 /// [`estimate`] one sample at a time: `firmware::Restarted`'s rule ([`RestartedRule`]) over the

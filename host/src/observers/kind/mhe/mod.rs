@@ -56,7 +56,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
         let constants = setup.chip_constants(prior.0, iterations);
         let rows: Vec<Rows> = tuning
             .par_iter()
-            .map(|run| setup.chip_run::<f32>(&constants, run))
+            .map(|run| setup.chip_run::<f32>(&constants, run).rows)
             .collect();
         let score = bench.tuning_score(&rows);
         scores.push((iterations, score));

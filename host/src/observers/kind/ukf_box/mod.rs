@@ -53,7 +53,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let judge = |bench: &Bench<'_>, tuned: &ekf::Tuned| {
         let filter = unscented_code(code, &tuned.constants);
         bench.judge("ukf_box", cost::of_ukf(&filter), &|run, _| {
-            ukf::estimate_run(code, &filter, &tuned.constants.x0, &tuned.constants.p0, run)
+            ukf::track_run(code, &filter, &tuned.constants.x0, &tuned.constants.p0, run)
         })
     };
     let (tuned, figures) = bench.box_filter(ukf::estimates, FIXED, &judge)?;

@@ -13,6 +13,7 @@
 
 use crate::data::{DataSet, Rows, Run};
 use crate::observers::kind::ukf_box::program::unscented_code;
+use crate::observers::lost::Track;
 use crate::plant::kalman::{EkfConstants, FilterCode};
 use crate::plant::{Covariance, ModelCode};
 use crate::spec::Design;
@@ -23,6 +24,11 @@ use super::ekf::{self, Tuned};
 /// with `P(0) = p0`, in `f32` as the chip runs it (step for step the generated `Ukf::push`,
 /// [`ekf::BoxStep`]): NaN where a sample gave no estimate.
 pub fn estimate_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], p0: &Covariance, run: &Run) -> Rows {
+    track_run(code, filter, x0, p0, run).rows
+}
+
+/// [`estimate_run`], with the restarts on the run.
+pub fn track_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], p0: &Covariance, run: &Run) -> Track {
     let mut filter = ekf::BoxStep::<f32>::new(filter, x0, p0, code);
     let mut estimates = Rows::new(code.dimensions.targets);
     for (y, u) in run.measurements.iter().zip(run.inputs.iter()) {
@@ -32,7 +38,10 @@ pub fn estimate_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], p0: &Cova
         };
         estimates.push(&row);
     }
-    estimates
+    Track {
+        restarts: filter.restarts(),
+        rows: estimates,
+    }
 }
 
 /// The UKF's estimates of every run of `data` with `constants`, started at `x0` (an

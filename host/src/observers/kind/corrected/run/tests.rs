@@ -38,7 +38,7 @@ fn constants(setting: &Setting<'_>, g: f64, k: [f64; 2], schedule: f64) -> Corre
 }
 
 fn run_with(setting: &Setting<'_>, constants: &CorrectionConstants, map: &Rows, run: &Run) -> Rows {
-    estimate_rows(setting, &correction_code(setting.code, constants), constants, map, run)
+    estimate_rows(setting, &correction_code(setting.code, constants), constants, map, run).rows
 }
 
 #[test]

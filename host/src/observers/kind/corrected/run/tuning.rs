@@ -60,7 +60,7 @@ impl Criterion<'_> {
             .runs
             .iter()
             .zip(self.maps)
-            .map(|(run, map)| estimate_rows(self.setting, &code, constants, map, run))
+            .map(|(run, map)| estimate_rows(self.setting, &code, constants, map, run).rows)
             .collect();
         let first = self.setting.first;
         let score = crate::observers::score::of_estimates(&self.data.runs, &estimates, self.target_spreads, |run| {

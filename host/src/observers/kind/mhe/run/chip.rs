@@ -8,6 +8,7 @@ use firmware::{Plant, Rk4};
 use super::Setup;
 use crate::data::{Rows, Run};
 use crate::observers::ekf::{Stepped, MAX_INPUTS};
+use crate::observers::lost::Track;
 use crate::plant::{Compiled, ModelCode};
 
 /// Gauss–Newton steps per sample the chip's estimator ([`firmware::mhe::Observer`]) may take:
@@ -74,7 +75,7 @@ impl Setup<'_> {
         &self,
         constants: &ChipConstants,
         run: &Run,
-    ) -> Rows {
+    ) -> Track {
         chip_run::<T>(self.code, self.horizon, constants, run)
     }
 }
@@ -82,20 +83,23 @@ impl Setup<'_> {
 /// The estimates of every target at every sample of `run` of the chip's moving-horizon observer of a
 /// model `code` (windows of `horizon` samples) with `constants`, in `T` exactly as
 /// [`firmware::mhe::Observer`] computes them ([`chip_stepper`]): NaN where it gives none or refuses the
-/// sample.
+/// sample. With the restarts on the run.
 pub fn chip_run<T: firmware::Scalar + firmware::emitted::Maths>(
     code: &ModelCode,
     horizon: usize,
     constants: &ChipConstants,
     run: &Run,
-) -> Rows {
+) -> Track {
     let mut stepper = chip_stepper::<T>(code, horizon, constants);
     let mut rows = Rows::new(code.dimensions.targets);
     let nan = vec![f64::NAN; code.dimensions.targets];
     for (y, u) in run.measurements.iter().zip(run.inputs.iter()) {
         rows.push(stepper.step(y, u).as_deref().unwrap_or(&nan));
     }
-    rows
+    Track {
+        rows,
+        restarts: stepper.restarts(),
+    }
 }
 
 /// The chip's moving-horizon observer on the host, one sample at a time ([`chip_stepper`]).
