@@ -27,7 +27,8 @@
 //! is not finite on finite values (the model overflowed, e.g. `exp` of a diverged estimate) is not
 //! taken: the filter restarts from `x̂(0)`, `P(0)` ([`crate::rules::Refused::Restarted`]), so no NaN
 //! ever enters its state and it never stays stuck: the rule every filter kind follows, written once
-//! in [`crate::rules`].
+//! in [`crate::rules`]. With a watch ([`Ekf::with_watch`], [`crate::watch`]), a filter whose normalised
+//! innovations stay implausible restarts the same way.
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // `!(s > 0)` is deliberate: a NaN must count as no information.
 
@@ -58,6 +59,10 @@ pub struct Ekf<T, P, const NX: usize, const NY: usize, const NU: usize> {
     bounds: Option<([T; NX], [T; NX])>,
     /// `x̂(0)` and `P(0)`: where a step that is not finite restarts the filter.
     start: ([T; NX], [[T; NX]; NX]),
+    /// The watched mean of the normalised innovations squared ([`crate::watch`]).
+    chi: T,
+    /// The watch's gain and limit, when the filter is watched.
+    watch: Option<(T, T)>,
     plant: P,
 }
 
@@ -72,6 +77,8 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
             r,
             bounds: None,
             start: (x0, p0),
+            chi: outputs::<T, NY>(),
+            watch: None,
             plant,
         };
         symmetrise(&mut filter.p);
@@ -86,6 +93,14 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
         self.x = crate::bounds::project(&self.x, &lower, &upper);
         self.start.0 = self.x;
         self.bounds = Some((lower, upper));
+        self
+    }
+
+    /// The same filter watched ([`crate::watch`]): it restarts from its start when the mean of its
+    /// normalised innovations squared, `c ← c + gain (ε − c)`, exceeds `limit`.
+    #[must_use]
+    pub fn with_watch(mut self, gain: T, limit: T) -> Self {
+        self.watch = Some((gain, limit));
         self
     }
 
@@ -113,29 +128,36 @@ impl<T: Scalar, P: Plant<T, NX, NY, NU>, const NX: usize, const NY: usize, const
             r,
             bounds,
             start,
+            chi,
+            watch,
             plant,
         } = self;
         let steps = Steps { q, r, bounds, plant };
-        let mut carried = (*x, *p);
+        let watch = *watch;
+        let mut carried = (*x, *p, *chi);
         let result = crate::rules::filter_sample(
             &mut carried,
             u.iter().all(|v| v.is_finite()),
             y.iter().all(|v| v.is_finite()),
-            |&(mut x, mut p)| {
-                steps.update(&mut x, &mut p, y, u);
+            |&(mut x, mut p, chi)| {
+                let nis = steps.update(&mut x, &mut p, y, u);
                 steps.project(&mut x);
                 let estimate = x;
                 steps.predict(&mut x, &mut p, u);
-                (estimate, (x, p))
+                let chi = watch.map_or(chi, |(gain, _)| crate::watch::watched(chi, nis, gain));
+                (estimate, (x, p, chi))
             },
-            |&(mut x, mut p)| {
+            |&(mut x, mut p, chi)| {
                 steps.predict(&mut x, &mut p, u);
-                (x, p)
+                (x, p, chi)
             },
-            |(x, p)| x.iter().chain(p.iter().flatten()).all(|v| v.is_finite()),
-            || *start,
+            |(x, p, chi)| {
+                x.iter().chain(p.iter().flatten()).all(|v| v.is_finite())
+                    && watch.is_none_or(|(_, limit)| crate::watch::plausible(*chi, limit))
+            },
+            || (start.0, start.1, outputs::<T, NY>()),
         );
-        (*x, *p) = carried;
+        (*x, *p, *chi) = carried;
         result
     }
 }
@@ -156,11 +178,13 @@ impl<T: Scalar, P, const NX: usize, const NY: usize> Steps<'_, T, P, NX, NY> {
         }
     }
 
-    /// Sequential scalar updates in Joseph form, one per output.
-    fn update<const NU: usize>(&self, x: &mut [T; NX], p: &mut [[T; NX]; NX], y: &[T; NY], u: &[T; NU])
+    /// Sequential scalar updates in Joseph form, one per output; the normalised innovation squared
+    /// `Σᵢ νᵢ² / sᵢ` over the outputs with noise (`rᵢ > 0`: a noiseless output's `sᵢ` may be 0).
+    fn update<const NU: usize>(&self, x: &mut [T; NX], p: &mut [[T; NX]; NX], y: &[T; NY], u: &[T; NU]) -> T
     where
         P: Plant<T, NX, NY, NU>,
     {
+        let mut nis = T::ZERO;
         for i in 0..NY {
             let (predicted, h) = self.plant.output(x, u);
             let row = h[i];
@@ -181,6 +205,9 @@ impl<T: Scalar, P, const NX: usize, const NY: usize> Steps<'_, T, P, NX, NY> {
             let inverse = T::one() / s;
             let gain = ph.map(|v| v * inverse);
             let innovation = y[i] - predicted[i];
+            if self.r[i] > T::ZERO {
+                nis += innovation * innovation * inverse;
+            }
             for (x, &k) in x.iter_mut().zip(&gain) {
                 *x += k * innovation;
             }
@@ -201,6 +228,7 @@ impl<T: Scalar, P, const NX: usize, const NY: usize> Steps<'_, T, P, NX, NY> {
             *p = next;
             symmetrise(p);
         }
+        nis
     }
 
     /// `x ← f(x, u)`, `P ← F P Fᵀ + Q`, then `x` projected onto the bounds.
@@ -220,6 +248,11 @@ impl<T: Scalar, P, const NX: usize, const NY: usize> Steps<'_, T, P, NX, NY> {
         symmetrise(p);
         self.project(x);
     }
+}
+
+/// `m`, the number of outputs: the watched mean's start, its value for a consistent filter.
+fn outputs<T: Scalar, const NY: usize>() -> T {
+    (0..NY).fold(T::ZERO, |m, _| m + T::one())
 }
 
 /// Copies the upper triangle of `p` onto the lower one.

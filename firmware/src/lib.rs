@@ -115,6 +115,7 @@ mod restarted;
 pub mod rules;
 mod scalar;
 mod started;
+pub mod watch;
 mod window;
 
 pub use ekf::{Ekf, Plant};

@@ -109,6 +109,7 @@ ecoli_x0_0p5_status ecoli_x0_0p5_fixed_estimate(const ecoli_x0_0p5_fixed *observ
 typedef struct {
     float x[ECOLI_X0_0P5_STATES];
     float p[ECOLI_X0_0P5_COVARIANCE];
+    float chi; /* the watched mean of the normalised innovations squared */
     float values[ECOLI_X0_0P5_TARGETS];
     ecoli_x0_0p5_saturation flags[ECOLI_X0_0P5_TARGETS];
     int ready;
@@ -128,6 +129,7 @@ ecoli_x0_0p5_status ecoli_x0_0p5_ekf_box_estimate(const ecoli_x0_0p5_ekf_box *ob
 typedef struct {
     float x[ECOLI_X0_0P5_STATES];
     float p[ECOLI_X0_0P5_COVARIANCE];
+    float chi; /* the watched mean of the normalised innovations squared */
     float values[ECOLI_X0_0P5_TARGETS];
     ecoli_x0_0p5_saturation flags[ECOLI_X0_0P5_TARGETS];
     int ready;

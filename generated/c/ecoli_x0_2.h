@@ -128,6 +128,7 @@ ecoli_x0_2_status ecoli_x0_2_ekf_box_estimate(const ecoli_x0_2_ekf_box *observer
 typedef struct {
     float x[ECOLI_X0_2_STATES];
     float p[ECOLI_X0_2_COVARIANCE];
+    float chi; /* the watched mean of the normalised innovations squared */
     float values[ECOLI_X0_2_TARGETS];
     ecoli_x0_2_saturation flags[ECOLI_X0_2_TARGETS];
     int ready;

@@ -111,6 +111,7 @@ two_tanks_status two_tanks_fixed_estimate(const two_tanks_fixed *observer, int32
 typedef struct {
     float x[TWO_TANKS_STATES];
     float p[TWO_TANKS_COVARIANCE];
+    float chi; /* the watched mean of the normalised innovations squared */
     float values[TWO_TANKS_TARGETS];
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
     int ready;
@@ -130,6 +131,7 @@ two_tanks_status two_tanks_ekf_box_estimate(const two_tanks_ekf_box *observer, f
 typedef struct {
     float x[TWO_TANKS_STATES];
     float p[TWO_TANKS_COVARIANCE];
+    float chi; /* the watched mean of the normalised innovations squared */
     float values[TWO_TANKS_TARGETS];
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
     int ready;

@@ -108,6 +108,7 @@ vanderpol_status vanderpol_fixed_estimate(const vanderpol_fixed *observer, int32
 typedef struct {
     float x[VANDERPOL_STATES];
     float p[VANDERPOL_COVARIANCE];
+    float chi; /* the watched mean of the normalised innovations squared */
     float values[VANDERPOL_TARGETS];
     vanderpol_saturation flags[VANDERPOL_TARGETS];
     int ready;
@@ -127,6 +128,7 @@ vanderpol_status vanderpol_ekf_box_estimate(const vanderpol_ekf_box *observer, f
 typedef struct {
     float x[VANDERPOL_STATES];
     float p[VANDERPOL_COVARIANCE];
+    float chi; /* the watched mean of the normalised innovations squared */
     float values[VANDERPOL_TARGETS];
     vanderpol_saturation flags[VANDERPOL_TARGETS];
     int ready;

@@ -108,6 +108,7 @@ vanderpol_searched_status vanderpol_searched_fixed_estimate(const vanderpol_sear
 typedef struct {
     float x[VANDERPOL_SEARCHED_STATES];
     float p[VANDERPOL_SEARCHED_COVARIANCE];
+    float chi; /* the watched mean of the normalised innovations squared */
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;
@@ -127,6 +128,7 @@ vanderpol_searched_status vanderpol_searched_ekf_box_estimate(const vanderpol_se
 typedef struct {
     float x[VANDERPOL_SEARCHED_STATES];
     float p[VANDERPOL_SEARCHED_COVARIANCE];
+    float chi; /* the watched mean of the normalised innovations squared */
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;

@@ -108,6 +108,7 @@ vanderpol_sparse_status vanderpol_sparse_fixed_estimate(const vanderpol_sparse_f
 typedef struct {
     float x[VANDERPOL_SPARSE_STATES];
     float p[VANDERPOL_SPARSE_COVARIANCE];
+    float chi; /* the watched mean of the normalised innovations squared */
     float values[VANDERPOL_SPARSE_TARGETS];
     vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
     int ready;
@@ -127,6 +128,7 @@ vanderpol_sparse_status vanderpol_sparse_ekf_box_estimate(const vanderpol_sparse
 typedef struct {
     float x[VANDERPOL_SPARSE_STATES];
     float p[VANDERPOL_SPARSE_COVARIANCE];
+    float chi; /* the watched mean of the normalised innovations squared */
     float values[VANDERPOL_SPARSE_TARGETS];
     vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
     int ready;

@@ -108,6 +108,7 @@ vanderpol_uncertain_status vanderpol_uncertain_fixed_estimate(const vanderpol_un
 typedef struct {
     float x[VANDERPOL_UNCERTAIN_STATES];
     float p[VANDERPOL_UNCERTAIN_COVARIANCE];
+    float chi; /* the watched mean of the normalised innovations squared */
     float values[VANDERPOL_UNCERTAIN_TARGETS];
     vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
     int ready;
@@ -127,6 +128,7 @@ vanderpol_uncertain_status vanderpol_uncertain_ekf_box_estimate(const vanderpol_
 typedef struct {
     float x[VANDERPOL_UNCERTAIN_STATES];
     float p[VANDERPOL_UNCERTAIN_COVARIANCE];
+    float chi; /* the watched mean of the normalised innovations squared */
     float values[VANDERPOL_UNCERTAIN_TARGETS];
     vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
     int ready;

@@ -66,7 +66,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["cm", "cm"];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 186), ("ekf_box", 416), ("ukf_box", 651), ("corrected", 220), ("ekf_map", 424), ("ekf_restart", 664), ("mhe", 27328)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 186), ("ekf_box", 418), ("ukf_box", 653), ("corrected", 220), ("ekf_map", 426), ("ekf_restart", 666), ("mhe", 27328)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -1167,12 +1167,16 @@ pub const EKF_Q: [f64; STATES] = [0.05788750532803056, 1.405401624638816e-5];
 /// Each sample: every output's scalar update in Joseph form, then the prediction over one sampling
 /// period. A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u`
 /// changes nothing; a sample whose result is not finite (the model overflowed) is not taken.
+/// Watched ([`firmware::watch`]): when the mean of its normalised innovations squared over about
+/// 10 samples exceeds 1024 times the number of outputs, it restarts from its start.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ekf<T = f32> {
     /// `x̂`: after a sample, the prediction to the next one.
     x: [T; STATES],
     /// The upper triangle of `P`.
     p: [T; COVARIANCE],
+    /// The watched mean of the normalised innovations squared ([`firmware::watch`]).
+    chi: T,
 }
 
 impl<T: Scalar + Maths> Default for Ekf<T> {
@@ -1187,6 +1191,7 @@ impl<T: Scalar + Maths> Ekf<T> {
         Ekf {
             x: [T::literal(15.0, 15.0), T::literal(15.0, 15.0)],
             p: [T::literal(37.50865, 37.50865110364741), T::literal(0.0, 0.0), T::literal(453.69177, 453.69176393383566)],
+            chi: T::literal(1.0, 1.0),
         }
     }
 
@@ -1201,7 +1206,7 @@ impl<T: Scalar + Maths> Ekf<T> {
     }
 
     /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it, or restarts
-    /// from the start when its step is not finite (see the type's docs): the rule every filter follows
+    /// from the start when its step is not finite or its innovations stay implausible (see the type's docs): the rule every filter follows
     /// ([`firmware::rules::filter_sample`]) over this filter's two written-out samples. The same
     /// operations run for every accepted sample.
     pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::rules::Refused> {
@@ -1210,18 +1215,26 @@ impl<T: Scalar + Maths> Ekf<T> {
             u.iter().all(|v| v.is_finite()),
             y.iter().all(|v| v.is_finite()),
             |filter| {
-                let (estimate, x, p) = ekf_measured(&filter.x, &filter.p, y, u);
-                (estimate, Ekf { x, p })
+                let (estimate, x, p, nis) = ekf_measured(&filter.x, &filter.p, y, u);
+                let chi = firmware::watch::watched(filter.chi, nis, T::literal(0.1, 0.1));
+                (estimate, Ekf { x, p, chi })
             },
             |filter| {
                 let (x, p) = ekf_unmeasured(&filter.x, &filter.p, u);
-                Ekf { x, p }
+                Ekf { x, p, chi: filter.chi }
             },
-            |filter| finite(&filter.x, &filter.p),
+            |filter| finite(&filter.x, &filter.p) && firmware::watch::plausible(filter.chi, T::literal(1024.0, 1024.0)),
             Self::new,
         )
     }
 }
+
+/// The EKF's χ² watch as `gen` chose it on the tuning runs ([`firmware::watch`]): the window `W`
+/// over which the mean of its normalised innovations squared is kept, in samples.
+pub const EKF_WATCH_WINDOW: usize = 10;
+/// See [`EKF_WATCH_WINDOW`]: the threshold `τ` (no unit) above which, times the number of
+/// outputs, the mean restarts the filter; `f64::INFINITY`: not watched.
+pub const EKF_WATCH_THRESHOLD: f64 = 1024.0;
 
 /// Whether every entry of a filter's state and covariance is finite.
 fn finite<T: Scalar>(x: &[T; STATES], p: &[T; COVARIANCE]) -> bool {
@@ -1243,6 +1256,7 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
         [[T::literal(0.057887506, 0.05788750532803056), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(1.4054016e-5, 1.405401624638816e-5)]],
         [T::literal(0.04, 0.04)],
     )
+    .with_watch(T::literal(0.1, 0.1), T::literal(1024.0, 1024.0))
 }
 
 /// The EKF from the centre of the state box ([`Ekf`], the same filter and constants) with the
@@ -1253,7 +1267,7 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 pub type EkfBoxObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
-    const FRESH: Self = Ekf { x: [15.0, 15.0], p: [37.50865, 0.0, 453.69177] };
+    const FRESH: Self = Ekf { x: [15.0, 15.0], p: [37.50865, 0.0, 453.69177], chi: 1.0 };
 
     #[inline(always)]
     fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
@@ -1281,9 +1295,10 @@ pub fn ekf_observer_estimate(observer: &EkfBoxObserver) -> Option<[Estimate<f32>
     observer.estimate()
 }
 
-/// One sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
+/// One sample with its measurement: `(x̂(k|k), x⁺, P⁺, ε)` from `(x, P)`, `ε` the normalised
+/// innovation squared ([`firmware::watch`]), written out by `gen`.
 #[allow(unused_variables, non_snake_case, clippy::type_complexity, clippy::approx_constant)]
-fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {
+fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE], T) {
     let x_h1: T = x[0];
     let x_h2: T = x[1];
     let cov0: T = p[0];
@@ -1301,229 +1316,231 @@ fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t14: T = x_h1 + t13;
     let t15: T = t10 * t12;
     let t16: T = x_h2 + t15;
-    let t17: T = -t9;
-    let t18: T = t5 - t10;
-    let t19: T = t17 * cov1;
-    let t20: T = cov0 + t19;
-    let t21: T = t17 * cov2;
-    let t22: T = cov1 + t21;
-    let t23: T = t18 * cov2;
-    let t24: T = t22 * t17;
-    let t25: T = t20 + t24;
-    let t26: T = t22 * t18;
-    let t27: T = t23 * t18;
-    let t28: T = t9 * t6;
-    let t29: T = t28 * t9;
-    let t30: T = t25 + t29;
-    let t31: T = t28 * t10;
-    let t32: T = t26 + t31;
-    let t33: T = t10 * t6;
-    let t34: T = t33 * t10;
-    let t35: T = t27 + t34;
-    let t36: T = T::literal(2.0, 2.0);
-    let t37: T = T::literal(6.0, 6.0);
-    let t38: T = t5 / t36;
-    let t39: T = t5 / t37;
+    let t17: T = t12 * t12;
+    let t18: T = t17 * t8;
+    let t19: T = -t9;
+    let t20: T = t5 - t10;
+    let t21: T = t19 * cov1;
+    let t22: T = cov0 + t21;
+    let t23: T = t19 * cov2;
+    let t24: T = cov1 + t23;
+    let t25: T = t20 * cov2;
+    let t26: T = t24 * t19;
+    let t27: T = t22 + t26;
+    let t28: T = t24 * t20;
+    let t29: T = t25 * t20;
+    let t30: T = t9 * t6;
+    let t31: T = t30 * t9;
+    let t32: T = t27 + t31;
+    let t33: T = t30 * t10;
+    let t34: T = t28 + t33;
+    let t35: T = t10 * t6;
+    let t36: T = t35 * t10;
+    let t37: T = t29 + t36;
+    let t38: T = T::literal(2.0, 2.0);
+    let t39: T = T::literal(6.0, 6.0);
+    let t40: T = t5 / t38;
+    let t41: T = t5 / t39;
     let p_a1: T = T::literal(parameters::a1.0, parameters::a1.1);
     let p_g: T = T::literal(parameters::g.0, parameters::g.1);
-    let t42: T = t36 * p_g;
-    let t43: T = Maths::abs(t14);
-    let t44: T = t42 * t43;
-    let t45: T = Maths::sqrt(t44);
-    let t46: T = p_a1 * t45;
-    let t47: T = T::literal(0.5, 0.5);
-    let t48: T = t47 / t45;
-    let t49: T = Maths::signum(t14);
-    let t50: T = t42 * t49;
-    let t51: T = t48 * t50;
-    let t52: T = p_a1 * t51;
+    let t44: T = t38 * p_g;
+    let t45: T = Maths::abs(t14);
+    let t46: T = t44 * t45;
+    let t47: T = Maths::sqrt(t46);
+    let t48: T = p_a1 * t47;
+    let t49: T = T::literal(0.5, 0.5);
+    let t50: T = t49 / t47;
+    let t51: T = Maths::signum(t14);
+    let t52: T = t44 * t51;
+    let t53: T = t50 * t52;
+    let t54: T = p_a1 * t53;
     let p_a2: T = T::literal(parameters::a2.0, parameters::a2.1);
-    let t54: T = Maths::abs(t16);
-    let t55: T = t42 * t54;
-    let t56: T = Maths::sqrt(t55);
-    let t57: T = p_a2 * t56;
-    let t58: T = t47 / t56;
-    let t59: T = Maths::signum(t16);
-    let t60: T = t42 * t59;
-    let t61: T = t58 * t60;
-    let t62: T = p_a2 * t61;
+    let t56: T = Maths::abs(t16);
+    let t57: T = t44 * t56;
+    let t58: T = Maths::sqrt(t57);
+    let t59: T = p_a2 * t58;
+    let t60: T = t49 / t58;
+    let t61: T = Maths::signum(t16);
+    let t62: T = t44 * t61;
+    let t63: T = t60 * t62;
+    let t64: T = p_a2 * t63;
     let p_k: T = T::literal(parameters::k.0, parameters::k.1);
     let u_u: T = u[0];
-    let t65: T = p_k * u_u;
-    let t66: T = t65 - t46;
+    let t67: T = p_k * u_u;
+    let t68: T = t67 - t48;
     let p_A1: T = T::literal(parameters::A1.0, parameters::A1.1);
-    let t68: T = t66 / p_A1;
-    let t69: T = T::literal(-1.0, -1.0);
-    let t70: T = t69 / p_A1;
-    let t71: T = t70 * t52;
-    let t72: T = t46 - t57;
+    let t70: T = t68 / p_A1;
+    let t71: T = T::literal(-1.0, -1.0);
+    let t72: T = t71 / p_A1;
+    let t73: T = t72 * t54;
+    let t74: T = t48 - t59;
     let p_A2: T = T::literal(parameters::A2.0, parameters::A2.1);
-    let t74: T = t72 / p_A2;
-    let t75: T = t5 / p_A2;
-    let t76: T = t75 * t52;
-    let t77: T = t69 / p_A2;
-    let t78: T = t77 * t62;
-    let t79: T = t38 * t68;
-    let t80: T = t14 + t79;
-    let t81: T = t38 * t74;
-    let t82: T = t16 + t81;
-    let t83: T = t38 * t71;
-    let t84: T = t5 + t83;
-    let t85: T = t38 * t76;
-    let t86: T = t38 * t78;
-    let t87: T = t5 + t86;
-    let t88: T = Maths::abs(t80);
-    let t89: T = t42 * t88;
-    let t90: T = Maths::sqrt(t89);
-    let t91: T = p_a1 * t90;
-    let t92: T = t47 / t90;
-    let t93: T = Maths::signum(t80);
-    let t94: T = t42 * t93;
-    let t95: T = t92 * t94;
-    let t96: T = p_a1 * t95;
-    let t97: T = Maths::abs(t82);
-    let t98: T = t42 * t97;
-    let t99: T = Maths::sqrt(t98);
-    let t100: T = p_a2 * t99;
-    let t101: T = t47 / t99;
-    let t102: T = Maths::signum(t82);
-    let t103: T = t42 * t102;
-    let t104: T = t101 * t103;
-    let t105: T = p_a2 * t104;
-    let t106: T = t65 - t91;
-    let t107: T = t106 / p_A1;
-    let t108: T = t70 * t96;
-    let t109: T = t91 - t100;
-    let t110: T = t109 / p_A2;
-    let t111: T = t75 * t96;
-    let t112: T = t77 * t105;
-    let t113: T = t108 * t84;
-    let t114: T = t111 * t84;
-    let t115: T = t112 * t85;
-    let t116: T = t114 + t115;
-    let t117: T = t112 * t87;
-    let t118: T = t38 * t107;
-    let t119: T = t14 + t118;
-    let t120: T = t38 * t110;
-    let t121: T = t16 + t120;
-    let t122: T = t38 * t113;
-    let t123: T = t5 + t122;
-    let t124: T = t38 * t116;
-    let t125: T = t38 * t117;
-    let t126: T = t5 + t125;
-    let t127: T = Maths::abs(t119);
-    let t128: T = t42 * t127;
-    let t129: T = Maths::sqrt(t128);
-    let t130: T = p_a1 * t129;
-    let t131: T = t47 / t129;
-    let t132: T = Maths::signum(t119);
-    let t133: T = t42 * t132;
-    let t134: T = t131 * t133;
-    let t135: T = p_a1 * t134;
-    let t136: T = Maths::abs(t121);
-    let t137: T = t42 * t136;
-    let t138: T = Maths::sqrt(t137);
-    let t139: T = p_a2 * t138;
-    let t140: T = t47 / t138;
-    let t141: T = Maths::signum(t121);
-    let t142: T = t42 * t141;
-    let t143: T = t140 * t142;
-    let t144: T = p_a2 * t143;
-    let t145: T = t65 - t130;
-    let t146: T = t145 / p_A1;
-    let t147: T = t70 * t135;
-    let t148: T = t130 - t139;
-    let t149: T = t148 / p_A2;
-    let t150: T = t75 * t135;
-    let t151: T = t77 * t144;
-    let t152: T = t147 * t123;
-    let t153: T = t150 * t123;
-    let t154: T = t151 * t124;
-    let t155: T = t153 + t154;
-    let t156: T = t151 * t126;
-    let t157: T = t14 + t146;
-    let t158: T = t16 + t149;
-    let t159: T = t5 + t152;
-    let t160: T = t5 + t156;
-    let t161: T = Maths::abs(t157);
-    let t162: T = t42 * t161;
-    let t163: T = Maths::sqrt(t162);
-    let t164: T = p_a1 * t163;
-    let t165: T = t47 / t163;
-    let t166: T = Maths::signum(t157);
-    let t167: T = t42 * t166;
-    let t168: T = t165 * t167;
-    let t169: T = p_a1 * t168;
-    let t170: T = Maths::abs(t158);
-    let t171: T = t42 * t170;
-    let t172: T = Maths::sqrt(t171);
-    let t173: T = p_a2 * t172;
-    let t174: T = t47 / t172;
-    let t175: T = Maths::signum(t158);
-    let t176: T = t42 * t175;
-    let t177: T = t174 * t176;
-    let t178: T = p_a2 * t177;
-    let t179: T = t65 - t164;
-    let t180: T = t179 / p_A1;
-    let t181: T = t70 * t169;
-    let t182: T = t164 - t173;
-    let t183: T = t182 / p_A2;
-    let t184: T = t75 * t169;
-    let t185: T = t77 * t178;
-    let t186: T = t181 * t159;
-    let t187: T = t184 * t159;
-    let t188: T = t185 * t155;
-    let t189: T = t187 + t188;
-    let t190: T = t185 * t160;
-    let t191: T = t107 + t146;
-    let t192: T = t36 * t191;
-    let t193: T = t68 + t192;
-    let t194: T = t193 + t180;
-    let t195: T = t39 * t194;
-    let t196: T = t14 + t195;
-    let t197: T = t110 + t149;
-    let t198: T = t36 * t197;
-    let t199: T = t74 + t198;
-    let t200: T = t199 + t183;
-    let t201: T = t39 * t200;
-    let t202: T = t16 + t201;
-    let t203: T = t113 + t152;
-    let t204: T = t36 * t203;
-    let t205: T = t71 + t204;
-    let t206: T = t205 + t186;
-    let t207: T = t39 * t206;
-    let t208: T = t5 + t207;
-    let t209: T = t116 + t155;
-    let t210: T = t36 * t209;
-    let t211: T = t76 + t210;
-    let t212: T = t211 + t189;
-    let t213: T = t39 * t212;
-    let t214: T = t117 + t156;
-    let t215: T = t36 * t214;
-    let t216: T = t78 + t215;
-    let t217: T = t216 + t190;
-    let t218: T = t39 * t217;
-    let t219: T = t5 + t218;
-    let t220: T = t208 * t30;
-    let t221: T = t208 * t32;
-    let t222: T = t213 * t30;
-    let t223: T = t219 * t32;
-    let t224: T = t222 + t223;
-    let t225: T = t213 * t32;
-    let t226: T = t219 * t35;
-    let t227: T = t225 + t226;
-    let t228: T = t220 * t208;
-    let t229: T = t220 * t213;
-    let t230: T = t221 * t219;
-    let t231: T = t229 + t230;
-    let t232: T = t224 * t213;
-    let t233: T = t227 * t219;
-    let t234: T = t232 + t233;
-    let t235: T = T::literal(0.057887506, 0.05788750532803056);
-    let t236: T = t228 + t235;
-    let t237: T = T::literal(1.4054016e-5, 1.405401624638816e-5);
-    let t238: T = t234 + t237;
-    ([t14, t16], [t196, t202], [t236, t231, t238])
+    let t76: T = t74 / p_A2;
+    let t77: T = t5 / p_A2;
+    let t78: T = t77 * t54;
+    let t79: T = t71 / p_A2;
+    let t80: T = t79 * t64;
+    let t81: T = t40 * t70;
+    let t82: T = t14 + t81;
+    let t83: T = t40 * t76;
+    let t84: T = t16 + t83;
+    let t85: T = t40 * t73;
+    let t86: T = t5 + t85;
+    let t87: T = t40 * t78;
+    let t88: T = t40 * t80;
+    let t89: T = t5 + t88;
+    let t90: T = Maths::abs(t82);
+    let t91: T = t44 * t90;
+    let t92: T = Maths::sqrt(t91);
+    let t93: T = p_a1 * t92;
+    let t94: T = t49 / t92;
+    let t95: T = Maths::signum(t82);
+    let t96: T = t44 * t95;
+    let t97: T = t94 * t96;
+    let t98: T = p_a1 * t97;
+    let t99: T = Maths::abs(t84);
+    let t100: T = t44 * t99;
+    let t101: T = Maths::sqrt(t100);
+    let t102: T = p_a2 * t101;
+    let t103: T = t49 / t101;
+    let t104: T = Maths::signum(t84);
+    let t105: T = t44 * t104;
+    let t106: T = t103 * t105;
+    let t107: T = p_a2 * t106;
+    let t108: T = t67 - t93;
+    let t109: T = t108 / p_A1;
+    let t110: T = t72 * t98;
+    let t111: T = t93 - t102;
+    let t112: T = t111 / p_A2;
+    let t113: T = t77 * t98;
+    let t114: T = t79 * t107;
+    let t115: T = t110 * t86;
+    let t116: T = t113 * t86;
+    let t117: T = t114 * t87;
+    let t118: T = t116 + t117;
+    let t119: T = t114 * t89;
+    let t120: T = t40 * t109;
+    let t121: T = t14 + t120;
+    let t122: T = t40 * t112;
+    let t123: T = t16 + t122;
+    let t124: T = t40 * t115;
+    let t125: T = t5 + t124;
+    let t126: T = t40 * t118;
+    let t127: T = t40 * t119;
+    let t128: T = t5 + t127;
+    let t129: T = Maths::abs(t121);
+    let t130: T = t44 * t129;
+    let t131: T = Maths::sqrt(t130);
+    let t132: T = p_a1 * t131;
+    let t133: T = t49 / t131;
+    let t134: T = Maths::signum(t121);
+    let t135: T = t44 * t134;
+    let t136: T = t133 * t135;
+    let t137: T = p_a1 * t136;
+    let t138: T = Maths::abs(t123);
+    let t139: T = t44 * t138;
+    let t140: T = Maths::sqrt(t139);
+    let t141: T = p_a2 * t140;
+    let t142: T = t49 / t140;
+    let t143: T = Maths::signum(t123);
+    let t144: T = t44 * t143;
+    let t145: T = t142 * t144;
+    let t146: T = p_a2 * t145;
+    let t147: T = t67 - t132;
+    let t148: T = t147 / p_A1;
+    let t149: T = t72 * t137;
+    let t150: T = t132 - t141;
+    let t151: T = t150 / p_A2;
+    let t152: T = t77 * t137;
+    let t153: T = t79 * t146;
+    let t154: T = t149 * t125;
+    let t155: T = t152 * t125;
+    let t156: T = t153 * t126;
+    let t157: T = t155 + t156;
+    let t158: T = t153 * t128;
+    let t159: T = t14 + t148;
+    let t160: T = t16 + t151;
+    let t161: T = t5 + t154;
+    let t162: T = t5 + t158;
+    let t163: T = Maths::abs(t159);
+    let t164: T = t44 * t163;
+    let t165: T = Maths::sqrt(t164);
+    let t166: T = p_a1 * t165;
+    let t167: T = t49 / t165;
+    let t168: T = Maths::signum(t159);
+    let t169: T = t44 * t168;
+    let t170: T = t167 * t169;
+    let t171: T = p_a1 * t170;
+    let t172: T = Maths::abs(t160);
+    let t173: T = t44 * t172;
+    let t174: T = Maths::sqrt(t173);
+    let t175: T = p_a2 * t174;
+    let t176: T = t49 / t174;
+    let t177: T = Maths::signum(t160);
+    let t178: T = t44 * t177;
+    let t179: T = t176 * t178;
+    let t180: T = p_a2 * t179;
+    let t181: T = t67 - t166;
+    let t182: T = t181 / p_A1;
+    let t183: T = t72 * t171;
+    let t184: T = t166 - t175;
+    let t185: T = t184 / p_A2;
+    let t186: T = t77 * t171;
+    let t187: T = t79 * t180;
+    let t188: T = t183 * t161;
+    let t189: T = t186 * t161;
+    let t190: T = t187 * t157;
+    let t191: T = t189 + t190;
+    let t192: T = t187 * t162;
+    let t193: T = t109 + t148;
+    let t194: T = t38 * t193;
+    let t195: T = t70 + t194;
+    let t196: T = t195 + t182;
+    let t197: T = t41 * t196;
+    let t198: T = t14 + t197;
+    let t199: T = t112 + t151;
+    let t200: T = t38 * t199;
+    let t201: T = t76 + t200;
+    let t202: T = t201 + t185;
+    let t203: T = t41 * t202;
+    let t204: T = t16 + t203;
+    let t205: T = t115 + t154;
+    let t206: T = t38 * t205;
+    let t207: T = t73 + t206;
+    let t208: T = t207 + t188;
+    let t209: T = t41 * t208;
+    let t210: T = t5 + t209;
+    let t211: T = t118 + t157;
+    let t212: T = t38 * t211;
+    let t213: T = t78 + t212;
+    let t214: T = t213 + t191;
+    let t215: T = t41 * t214;
+    let t216: T = t119 + t158;
+    let t217: T = t38 * t216;
+    let t218: T = t80 + t217;
+    let t219: T = t218 + t192;
+    let t220: T = t41 * t219;
+    let t221: T = t5 + t220;
+    let t222: T = t210 * t32;
+    let t223: T = t210 * t34;
+    let t224: T = t215 * t32;
+    let t225: T = t221 * t34;
+    let t226: T = t224 + t225;
+    let t227: T = t215 * t34;
+    let t228: T = t221 * t37;
+    let t229: T = t227 + t228;
+    let t230: T = t222 * t210;
+    let t231: T = t222 * t215;
+    let t232: T = t223 * t221;
+    let t233: T = t231 + t232;
+    let t234: T = t226 * t215;
+    let t235: T = t229 * t221;
+    let t236: T = t234 + t235;
+    let t237: T = T::literal(0.057887506, 0.05788750532803056);
+    let t238: T = t230 + t237;
+    let t239: T = T::literal(1.4054016e-5, 1.405401624638816e-5);
+    let t240: T = t236 + t239;
+    ([t14, t16], [t198, t204], [t238, t233, t240], t18)
 }
 
 /// One sample without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`.
@@ -1755,12 +1772,16 @@ pub const UKF_Q: [f64; STATES] = [0.056878303537693804, 1.4551618676799019e-5];
 ///
 /// A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u` changes
 /// nothing; a sample whose result is not finite is not taken.
+/// Watched ([`firmware::watch`]): when the mean of its normalised innovations squared over about
+/// 10 samples exceeds 1024 times the number of outputs, it restarts from its start.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ukf<T = f32> {
     /// `x̂`: after a sample, the prediction to the next one.
     x: [T; STATES],
     /// The upper triangle of `P`.
     p: [T; COVARIANCE],
+    /// The watched mean of the normalised innovations squared ([`firmware::watch`]).
+    chi: T,
 }
 
 impl<T: Scalar + Maths> Default for Ukf<T> {
@@ -1775,6 +1796,7 @@ impl<T: Scalar + Maths> Ukf<T> {
         Ukf {
             x: [T::literal(15.0, 15.0), T::literal(15.0, 15.0)],
             p: [T::literal(6.996126, 6.996126063919542), T::literal(0.0, 0.0), T::literal(3716.8132, 3716.8131578930775)],
+            chi: T::literal(1.0, 1.0),
         }
     }
 
@@ -1789,7 +1811,7 @@ impl<T: Scalar + Maths> Ukf<T> {
     }
 
     /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it, or restarts
-    /// from the start when its step is not finite (see the type's docs): the rule every filter follows
+    /// from the start when its step is not finite or its innovations stay implausible (see the type's docs): the rule every filter follows
     /// ([`firmware::rules::filter_sample`]) over this filter's two written-out samples. The same
     /// operations run for every accepted sample.
     pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::rules::Refused> {
@@ -1798,18 +1820,26 @@ impl<T: Scalar + Maths> Ukf<T> {
             u.iter().all(|v| v.is_finite()),
             y.iter().all(|v| v.is_finite()),
             |filter| {
-                let (estimate, x, p) = ukf_measured(&filter.x, &filter.p, y, u);
-                (estimate, Ukf { x, p })
+                let (estimate, x, p, nis) = ukf_measured(&filter.x, &filter.p, y, u);
+                let chi = firmware::watch::watched(filter.chi, nis, T::literal(0.1, 0.1));
+                (estimate, Ukf { x, p, chi })
             },
             |filter| {
                 let (x, p) = ukf_unmeasured(&filter.x, &filter.p, u);
-                Ukf { x, p }
+                Ukf { x, p, chi: filter.chi }
             },
-            |filter| finite(&filter.x, &filter.p),
+            |filter| finite(&filter.x, &filter.p) && firmware::watch::plausible(filter.chi, T::literal(1024.0, 1024.0)),
             Self::new,
         )
     }
 }
+
+/// The UKF's χ² watch as `gen` chose it on the tuning runs ([`firmware::watch`]): the window `W`
+/// over which the mean of its normalised innovations squared is kept, in samples.
+pub const UKF_WATCH_WINDOW: usize = 10;
+/// See [`UKF_WATCH_WINDOW`]: the threshold `τ` (no unit) above which, times the number of
+/// outputs, the mean restarts the filter; `f64::INFINITY`: not watched.
+pub const UKF_WATCH_THRESHOLD: f64 = 1024.0;
 
 /// A fresh UKF in `f32`, as the chip runs it.
 pub fn ukf() -> Ukf {
@@ -1824,7 +1854,7 @@ pub fn ukf() -> Ukf {
 pub type UkfBoxObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
-    const FRESH: Self = Ukf { x: [15.0, 15.0], p: [6.996126, 0.0, 3716.8132] };
+    const FRESH: Self = Ukf { x: [15.0, 15.0], p: [6.996126, 0.0, 3716.8132], chi: 1.0 };
 
     #[inline(always)]
     fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
@@ -1852,9 +1882,10 @@ pub fn ukf_observer_estimate(observer: &UkfBoxObserver) -> Option<[Estimate<f32>
     observer.estimate()
 }
 
-/// One UKF sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
+/// One UKF sample with its measurement: `(x̂(k|k), x⁺, P⁺, ε)` from `(x, P)`, `ε` the normalised
+/// innovation squared ([`firmware::watch`]), written out by `gen`.
 #[allow(unused_variables, non_snake_case, clippy::type_complexity, clippy::approx_constant)]
-fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {
+fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE], T) {
     let x_h1: T = x[0];
     let x_h2: T = x[1];
     let cov0: T = p[0];
@@ -1944,339 +1975,341 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t86: T = x_h1 + t85;
     let t87: T = t82 * t84;
     let t88: T = x_h2 + t87;
-    let t89: T = t64 * t80;
-    let t90: T = cov0 - t89;
-    let t91: T = t64 * t82;
-    let t92: T = cov1 - t91;
-    let t93: T = t72 * t82;
-    let t94: T = cov2 - t93;
-    let t95: T = Maths::abs(t90);
-    let t96: T = t6 * t95;
-    let t97: T = t96 + t9;
-    let t98: T = firmware::emitted::at_least(t90, t97);
-    let t99: T = Maths::sqrt(t98);
-    let t100: T = t5 / t99;
-    let t101: T = t92 * t100;
-    let t102: T = t101 * t101;
-    let t103: T = t94 - t102;
-    let t104: T = Maths::abs(t94);
-    let t105: T = t6 * t104;
-    let t106: T = t105 + t9;
-    let t107: T = firmware::emitted::at_least(t103, t106);
-    let t108: T = Maths::sqrt(t107);
-    let t109: T = t22 * t99;
-    let t110: T = t86 + t109;
+    let t89: T = t84 * t78;
+    let t90: T = t89 * t89;
+    let t91: T = t64 * t80;
+    let t92: T = cov0 - t91;
+    let t93: T = t64 * t82;
+    let t94: T = cov1 - t93;
+    let t95: T = t72 * t82;
+    let t96: T = cov2 - t95;
+    let t97: T = Maths::abs(t92);
+    let t98: T = t6 * t97;
+    let t99: T = t98 + t9;
+    let t100: T = firmware::emitted::at_least(t92, t99);
+    let t101: T = Maths::sqrt(t100);
+    let t102: T = t5 / t101;
+    let t103: T = t94 * t102;
+    let t104: T = t103 * t103;
+    let t105: T = t96 - t104;
+    let t106: T = Maths::abs(t96);
+    let t107: T = t6 * t106;
+    let t108: T = t107 + t9;
+    let t109: T = firmware::emitted::at_least(t105, t108);
+    let t110: T = Maths::sqrt(t109);
     let t111: T = t22 * t101;
-    let t112: T = t88 + t111;
-    let t113: T = t22 * t108;
+    let t112: T = t86 + t111;
+    let t113: T = t22 * t103;
     let t114: T = t88 + t113;
-    let t115: T = t29 * t99;
-    let t116: T = t86 + t115;
+    let t115: T = t22 * t110;
+    let t116: T = t88 + t115;
     let t117: T = t29 * t101;
-    let t118: T = t88 + t117;
-    let t119: T = t29 * t108;
+    let t118: T = t86 + t117;
+    let t119: T = t29 * t103;
     let t120: T = t88 + t119;
-    let t121: T = T::literal(2.0, 2.0);
-    let t122: T = T::literal(6.0, 6.0);
-    let t123: T = t5 / t121;
-    let t124: T = t5 / t122;
+    let t121: T = t29 * t110;
+    let t122: T = t88 + t121;
+    let t123: T = T::literal(2.0, 2.0);
+    let t124: T = T::literal(6.0, 6.0);
+    let t125: T = t5 / t123;
+    let t126: T = t5 / t124;
     let p_a1: T = T::literal(parameters::a1.0, parameters::a1.1);
     let p_g: T = T::literal(parameters::g.0, parameters::g.1);
-    let t127: T = t121 * p_g;
-    let t128: T = Maths::abs(t110);
-    let t129: T = t127 * t128;
-    let t130: T = Maths::sqrt(t129);
-    let t131: T = p_a1 * t130;
+    let t129: T = t123 * p_g;
+    let t130: T = Maths::abs(t112);
+    let t131: T = t129 * t130;
+    let t132: T = Maths::sqrt(t131);
+    let t133: T = p_a1 * t132;
     let p_a2: T = T::literal(parameters::a2.0, parameters::a2.1);
-    let t133: T = Maths::abs(t112);
-    let t134: T = t127 * t133;
-    let t135: T = Maths::sqrt(t134);
-    let t136: T = p_a2 * t135;
+    let t135: T = Maths::abs(t114);
+    let t136: T = t129 * t135;
+    let t137: T = Maths::sqrt(t136);
+    let t138: T = p_a2 * t137;
     let p_k: T = T::literal(parameters::k.0, parameters::k.1);
     let u_u: T = u[0];
-    let t139: T = p_k * u_u;
-    let t140: T = t139 - t131;
+    let t141: T = p_k * u_u;
+    let t142: T = t141 - t133;
     let p_A1: T = T::literal(parameters::A1.0, parameters::A1.1);
-    let t142: T = t140 / p_A1;
-    let t143: T = t131 - t136;
+    let t144: T = t142 / p_A1;
+    let t145: T = t133 - t138;
     let p_A2: T = T::literal(parameters::A2.0, parameters::A2.1);
-    let t145: T = t143 / p_A2;
-    let t146: T = t123 * t142;
-    let t147: T = t110 + t146;
-    let t148: T = t123 * t145;
+    let t147: T = t145 / p_A2;
+    let t148: T = t125 * t144;
     let t149: T = t112 + t148;
-    let t150: T = Maths::abs(t147);
-    let t151: T = t127 * t150;
-    let t152: T = Maths::sqrt(t151);
-    let t153: T = p_a1 * t152;
-    let t154: T = Maths::abs(t149);
-    let t155: T = t127 * t154;
-    let t156: T = Maths::sqrt(t155);
-    let t157: T = p_a2 * t156;
-    let t158: T = t139 - t153;
-    let t159: T = t158 / p_A1;
-    let t160: T = t153 - t157;
-    let t161: T = t160 / p_A2;
-    let t162: T = t123 * t159;
-    let t163: T = t110 + t162;
-    let t164: T = t123 * t161;
+    let t150: T = t125 * t147;
+    let t151: T = t114 + t150;
+    let t152: T = Maths::abs(t149);
+    let t153: T = t129 * t152;
+    let t154: T = Maths::sqrt(t153);
+    let t155: T = p_a1 * t154;
+    let t156: T = Maths::abs(t151);
+    let t157: T = t129 * t156;
+    let t158: T = Maths::sqrt(t157);
+    let t159: T = p_a2 * t158;
+    let t160: T = t141 - t155;
+    let t161: T = t160 / p_A1;
+    let t162: T = t155 - t159;
+    let t163: T = t162 / p_A2;
+    let t164: T = t125 * t161;
     let t165: T = t112 + t164;
-    let t166: T = Maths::abs(t163);
-    let t167: T = t127 * t166;
-    let t168: T = Maths::sqrt(t167);
-    let t169: T = p_a1 * t168;
-    let t170: T = Maths::abs(t165);
-    let t171: T = t127 * t170;
-    let t172: T = Maths::sqrt(t171);
-    let t173: T = p_a2 * t172;
-    let t174: T = t139 - t169;
-    let t175: T = t174 / p_A1;
-    let t176: T = t169 - t173;
-    let t177: T = t176 / p_A2;
-    let t178: T = t110 + t175;
-    let t179: T = t112 + t177;
-    let t180: T = Maths::abs(t178);
-    let t181: T = t127 * t180;
-    let t182: T = Maths::sqrt(t181);
-    let t183: T = p_a1 * t182;
-    let t184: T = Maths::abs(t179);
-    let t185: T = t127 * t184;
-    let t186: T = Maths::sqrt(t185);
-    let t187: T = p_a2 * t186;
-    let t188: T = t139 - t183;
-    let t189: T = t188 / p_A1;
-    let t190: T = t183 - t187;
-    let t191: T = t190 / p_A2;
-    let t192: T = t159 + t175;
-    let t193: T = t121 * t192;
-    let t194: T = t142 + t193;
-    let t195: T = t194 + t189;
-    let t196: T = t124 * t195;
-    let t197: T = t110 + t196;
-    let t198: T = t161 + t177;
-    let t199: T = t121 * t198;
-    let t200: T = t145 + t199;
-    let t201: T = t200 + t191;
-    let t202: T = t124 * t201;
-    let t203: T = t112 + t202;
-    let t204: T = Maths::abs(t86);
-    let t205: T = t127 * t204;
-    let t206: T = Maths::sqrt(t205);
-    let t207: T = p_a1 * t206;
-    let t208: T = Maths::abs(t114);
-    let t209: T = t127 * t208;
-    let t210: T = Maths::sqrt(t209);
-    let t211: T = p_a2 * t210;
-    let t212: T = t139 - t207;
-    let t213: T = t212 / p_A1;
-    let t214: T = t207 - t211;
-    let t215: T = t214 / p_A2;
-    let t216: T = t123 * t213;
-    let t217: T = t86 + t216;
-    let t218: T = t123 * t215;
-    let t219: T = t114 + t218;
-    let t220: T = Maths::abs(t217);
-    let t221: T = t127 * t220;
-    let t222: T = Maths::sqrt(t221);
-    let t223: T = p_a1 * t222;
-    let t224: T = Maths::abs(t219);
-    let t225: T = t127 * t224;
-    let t226: T = Maths::sqrt(t225);
-    let t227: T = p_a2 * t226;
-    let t228: T = t139 - t223;
-    let t229: T = t228 / p_A1;
-    let t230: T = t223 - t227;
-    let t231: T = t230 / p_A2;
-    let t232: T = t123 * t229;
-    let t233: T = t86 + t232;
-    let t234: T = t123 * t231;
-    let t235: T = t114 + t234;
-    let t236: T = Maths::abs(t233);
-    let t237: T = t127 * t236;
-    let t238: T = Maths::sqrt(t237);
-    let t239: T = p_a1 * t238;
-    let t240: T = Maths::abs(t235);
-    let t241: T = t127 * t240;
-    let t242: T = Maths::sqrt(t241);
-    let t243: T = p_a2 * t242;
-    let t244: T = t139 - t239;
-    let t245: T = t244 / p_A1;
-    let t246: T = t239 - t243;
-    let t247: T = t246 / p_A2;
-    let t248: T = t86 + t245;
-    let t249: T = t114 + t247;
-    let t250: T = Maths::abs(t248);
-    let t251: T = t127 * t250;
-    let t252: T = Maths::sqrt(t251);
-    let t253: T = p_a1 * t252;
-    let t254: T = Maths::abs(t249);
-    let t255: T = t127 * t254;
-    let t256: T = Maths::sqrt(t255);
-    let t257: T = p_a2 * t256;
-    let t258: T = t139 - t253;
-    let t259: T = t258 / p_A1;
-    let t260: T = t253 - t257;
-    let t261: T = t260 / p_A2;
-    let t262: T = t229 + t245;
-    let t263: T = t121 * t262;
-    let t264: T = t213 + t263;
-    let t265: T = t264 + t259;
-    let t266: T = t124 * t265;
-    let t267: T = t86 + t266;
-    let t268: T = t231 + t247;
-    let t269: T = t121 * t268;
-    let t270: T = t215 + t269;
-    let t271: T = t270 + t261;
-    let t272: T = t124 * t271;
-    let t273: T = t114 + t272;
-    let t274: T = Maths::abs(t116);
-    let t275: T = t127 * t274;
-    let t276: T = Maths::sqrt(t275);
-    let t277: T = p_a1 * t276;
-    let t278: T = Maths::abs(t118);
-    let t279: T = t127 * t278;
-    let t280: T = Maths::sqrt(t279);
-    let t281: T = p_a2 * t280;
-    let t282: T = t139 - t277;
-    let t283: T = t282 / p_A1;
-    let t284: T = t277 - t281;
-    let t285: T = t284 / p_A2;
-    let t286: T = t123 * t283;
-    let t287: T = t116 + t286;
-    let t288: T = t123 * t285;
+    let t166: T = t125 * t163;
+    let t167: T = t114 + t166;
+    let t168: T = Maths::abs(t165);
+    let t169: T = t129 * t168;
+    let t170: T = Maths::sqrt(t169);
+    let t171: T = p_a1 * t170;
+    let t172: T = Maths::abs(t167);
+    let t173: T = t129 * t172;
+    let t174: T = Maths::sqrt(t173);
+    let t175: T = p_a2 * t174;
+    let t176: T = t141 - t171;
+    let t177: T = t176 / p_A1;
+    let t178: T = t171 - t175;
+    let t179: T = t178 / p_A2;
+    let t180: T = t112 + t177;
+    let t181: T = t114 + t179;
+    let t182: T = Maths::abs(t180);
+    let t183: T = t129 * t182;
+    let t184: T = Maths::sqrt(t183);
+    let t185: T = p_a1 * t184;
+    let t186: T = Maths::abs(t181);
+    let t187: T = t129 * t186;
+    let t188: T = Maths::sqrt(t187);
+    let t189: T = p_a2 * t188;
+    let t190: T = t141 - t185;
+    let t191: T = t190 / p_A1;
+    let t192: T = t185 - t189;
+    let t193: T = t192 / p_A2;
+    let t194: T = t161 + t177;
+    let t195: T = t123 * t194;
+    let t196: T = t144 + t195;
+    let t197: T = t196 + t191;
+    let t198: T = t126 * t197;
+    let t199: T = t112 + t198;
+    let t200: T = t163 + t179;
+    let t201: T = t123 * t200;
+    let t202: T = t147 + t201;
+    let t203: T = t202 + t193;
+    let t204: T = t126 * t203;
+    let t205: T = t114 + t204;
+    let t206: T = Maths::abs(t86);
+    let t207: T = t129 * t206;
+    let t208: T = Maths::sqrt(t207);
+    let t209: T = p_a1 * t208;
+    let t210: T = Maths::abs(t116);
+    let t211: T = t129 * t210;
+    let t212: T = Maths::sqrt(t211);
+    let t213: T = p_a2 * t212;
+    let t214: T = t141 - t209;
+    let t215: T = t214 / p_A1;
+    let t216: T = t209 - t213;
+    let t217: T = t216 / p_A2;
+    let t218: T = t125 * t215;
+    let t219: T = t86 + t218;
+    let t220: T = t125 * t217;
+    let t221: T = t116 + t220;
+    let t222: T = Maths::abs(t219);
+    let t223: T = t129 * t222;
+    let t224: T = Maths::sqrt(t223);
+    let t225: T = p_a1 * t224;
+    let t226: T = Maths::abs(t221);
+    let t227: T = t129 * t226;
+    let t228: T = Maths::sqrt(t227);
+    let t229: T = p_a2 * t228;
+    let t230: T = t141 - t225;
+    let t231: T = t230 / p_A1;
+    let t232: T = t225 - t229;
+    let t233: T = t232 / p_A2;
+    let t234: T = t125 * t231;
+    let t235: T = t86 + t234;
+    let t236: T = t125 * t233;
+    let t237: T = t116 + t236;
+    let t238: T = Maths::abs(t235);
+    let t239: T = t129 * t238;
+    let t240: T = Maths::sqrt(t239);
+    let t241: T = p_a1 * t240;
+    let t242: T = Maths::abs(t237);
+    let t243: T = t129 * t242;
+    let t244: T = Maths::sqrt(t243);
+    let t245: T = p_a2 * t244;
+    let t246: T = t141 - t241;
+    let t247: T = t246 / p_A1;
+    let t248: T = t241 - t245;
+    let t249: T = t248 / p_A2;
+    let t250: T = t86 + t247;
+    let t251: T = t116 + t249;
+    let t252: T = Maths::abs(t250);
+    let t253: T = t129 * t252;
+    let t254: T = Maths::sqrt(t253);
+    let t255: T = p_a1 * t254;
+    let t256: T = Maths::abs(t251);
+    let t257: T = t129 * t256;
+    let t258: T = Maths::sqrt(t257);
+    let t259: T = p_a2 * t258;
+    let t260: T = t141 - t255;
+    let t261: T = t260 / p_A1;
+    let t262: T = t255 - t259;
+    let t263: T = t262 / p_A2;
+    let t264: T = t231 + t247;
+    let t265: T = t123 * t264;
+    let t266: T = t215 + t265;
+    let t267: T = t266 + t261;
+    let t268: T = t126 * t267;
+    let t269: T = t86 + t268;
+    let t270: T = t233 + t249;
+    let t271: T = t123 * t270;
+    let t272: T = t217 + t271;
+    let t273: T = t272 + t263;
+    let t274: T = t126 * t273;
+    let t275: T = t116 + t274;
+    let t276: T = Maths::abs(t118);
+    let t277: T = t129 * t276;
+    let t278: T = Maths::sqrt(t277);
+    let t279: T = p_a1 * t278;
+    let t280: T = Maths::abs(t120);
+    let t281: T = t129 * t280;
+    let t282: T = Maths::sqrt(t281);
+    let t283: T = p_a2 * t282;
+    let t284: T = t141 - t279;
+    let t285: T = t284 / p_A1;
+    let t286: T = t279 - t283;
+    let t287: T = t286 / p_A2;
+    let t288: T = t125 * t285;
     let t289: T = t118 + t288;
-    let t290: T = Maths::abs(t287);
-    let t291: T = t127 * t290;
-    let t292: T = Maths::sqrt(t291);
-    let t293: T = p_a1 * t292;
-    let t294: T = Maths::abs(t289);
-    let t295: T = t127 * t294;
-    let t296: T = Maths::sqrt(t295);
-    let t297: T = p_a2 * t296;
-    let t298: T = t139 - t293;
-    let t299: T = t298 / p_A1;
-    let t300: T = t293 - t297;
-    let t301: T = t300 / p_A2;
-    let t302: T = t123 * t299;
-    let t303: T = t116 + t302;
-    let t304: T = t123 * t301;
+    let t290: T = t125 * t287;
+    let t291: T = t120 + t290;
+    let t292: T = Maths::abs(t289);
+    let t293: T = t129 * t292;
+    let t294: T = Maths::sqrt(t293);
+    let t295: T = p_a1 * t294;
+    let t296: T = Maths::abs(t291);
+    let t297: T = t129 * t296;
+    let t298: T = Maths::sqrt(t297);
+    let t299: T = p_a2 * t298;
+    let t300: T = t141 - t295;
+    let t301: T = t300 / p_A1;
+    let t302: T = t295 - t299;
+    let t303: T = t302 / p_A2;
+    let t304: T = t125 * t301;
     let t305: T = t118 + t304;
-    let t306: T = Maths::abs(t303);
-    let t307: T = t127 * t306;
-    let t308: T = Maths::sqrt(t307);
-    let t309: T = p_a1 * t308;
-    let t310: T = Maths::abs(t305);
-    let t311: T = t127 * t310;
-    let t312: T = Maths::sqrt(t311);
-    let t313: T = p_a2 * t312;
-    let t314: T = t139 - t309;
-    let t315: T = t314 / p_A1;
-    let t316: T = t309 - t313;
-    let t317: T = t316 / p_A2;
-    let t318: T = t116 + t315;
-    let t319: T = t118 + t317;
-    let t320: T = Maths::abs(t318);
-    let t321: T = t127 * t320;
-    let t322: T = Maths::sqrt(t321);
-    let t323: T = p_a1 * t322;
-    let t324: T = Maths::abs(t319);
-    let t325: T = t127 * t324;
-    let t326: T = Maths::sqrt(t325);
-    let t327: T = p_a2 * t326;
-    let t328: T = t139 - t323;
-    let t329: T = t328 / p_A1;
-    let t330: T = t323 - t327;
-    let t331: T = t330 / p_A2;
-    let t332: T = t299 + t315;
-    let t333: T = t121 * t332;
-    let t334: T = t283 + t333;
-    let t335: T = t334 + t329;
-    let t336: T = t124 * t335;
-    let t337: T = t116 + t336;
-    let t338: T = t301 + t317;
-    let t339: T = t121 * t338;
-    let t340: T = t285 + t339;
-    let t341: T = t340 + t331;
-    let t342: T = t124 * t341;
-    let t343: T = t118 + t342;
-    let t344: T = Maths::abs(t120);
-    let t345: T = t127 * t344;
-    let t346: T = Maths::sqrt(t345);
-    let t347: T = p_a2 * t346;
-    let t348: T = t207 - t347;
-    let t349: T = t348 / p_A2;
-    let t350: T = t123 * t349;
-    let t351: T = t120 + t350;
-    let t352: T = Maths::abs(t351);
-    let t353: T = t127 * t352;
-    let t354: T = Maths::sqrt(t353);
-    let t355: T = p_a2 * t354;
-    let t356: T = t223 - t355;
-    let t357: T = t356 / p_A2;
-    let t358: T = t123 * t357;
-    let t359: T = t120 + t358;
-    let t360: T = Maths::abs(t359);
-    let t361: T = t127 * t360;
-    let t362: T = Maths::sqrt(t361);
-    let t363: T = p_a2 * t362;
-    let t364: T = t239 - t363;
-    let t365: T = t364 / p_A2;
-    let t366: T = t120 + t365;
-    let t367: T = Maths::abs(t366);
-    let t368: T = t127 * t367;
-    let t369: T = Maths::sqrt(t368);
-    let t370: T = p_a2 * t369;
-    let t371: T = t253 - t370;
-    let t372: T = t371 / p_A2;
-    let t373: T = t357 + t365;
-    let t374: T = t121 * t373;
-    let t375: T = t349 + t374;
-    let t376: T = t375 + t372;
-    let t377: T = t124 * t376;
-    let t378: T = t120 + t377;
-    let t379: T = t197 + t267;
-    let t380: T = t379 + t337;
-    let t381: T = t380 + t267;
-    let t382: T = t36 * t381;
-    let t383: T = t203 + t273;
-    let t384: T = t383 + t343;
-    let t385: T = t384 + t378;
-    let t386: T = t36 * t385;
-    let t387: T = t197 - t382;
-    let t388: T = t203 - t386;
-    let t389: T = t267 - t382;
-    let t390: T = t273 - t386;
-    let t391: T = t337 - t382;
-    let t392: T = t343 - t386;
-    let t393: T = t378 - t386;
-    let t394: T = t387 * t387;
-    let t395: T = t389 * t389;
-    let t396: T = t394 + t395;
+    let t306: T = t125 * t303;
+    let t307: T = t120 + t306;
+    let t308: T = Maths::abs(t305);
+    let t309: T = t129 * t308;
+    let t310: T = Maths::sqrt(t309);
+    let t311: T = p_a1 * t310;
+    let t312: T = Maths::abs(t307);
+    let t313: T = t129 * t312;
+    let t314: T = Maths::sqrt(t313);
+    let t315: T = p_a2 * t314;
+    let t316: T = t141 - t311;
+    let t317: T = t316 / p_A1;
+    let t318: T = t311 - t315;
+    let t319: T = t318 / p_A2;
+    let t320: T = t118 + t317;
+    let t321: T = t120 + t319;
+    let t322: T = Maths::abs(t320);
+    let t323: T = t129 * t322;
+    let t324: T = Maths::sqrt(t323);
+    let t325: T = p_a1 * t324;
+    let t326: T = Maths::abs(t321);
+    let t327: T = t129 * t326;
+    let t328: T = Maths::sqrt(t327);
+    let t329: T = p_a2 * t328;
+    let t330: T = t141 - t325;
+    let t331: T = t330 / p_A1;
+    let t332: T = t325 - t329;
+    let t333: T = t332 / p_A2;
+    let t334: T = t301 + t317;
+    let t335: T = t123 * t334;
+    let t336: T = t285 + t335;
+    let t337: T = t336 + t331;
+    let t338: T = t126 * t337;
+    let t339: T = t118 + t338;
+    let t340: T = t303 + t319;
+    let t341: T = t123 * t340;
+    let t342: T = t287 + t341;
+    let t343: T = t342 + t333;
+    let t344: T = t126 * t343;
+    let t345: T = t120 + t344;
+    let t346: T = Maths::abs(t122);
+    let t347: T = t129 * t346;
+    let t348: T = Maths::sqrt(t347);
+    let t349: T = p_a2 * t348;
+    let t350: T = t209 - t349;
+    let t351: T = t350 / p_A2;
+    let t352: T = t125 * t351;
+    let t353: T = t122 + t352;
+    let t354: T = Maths::abs(t353);
+    let t355: T = t129 * t354;
+    let t356: T = Maths::sqrt(t355);
+    let t357: T = p_a2 * t356;
+    let t358: T = t225 - t357;
+    let t359: T = t358 / p_A2;
+    let t360: T = t125 * t359;
+    let t361: T = t122 + t360;
+    let t362: T = Maths::abs(t361);
+    let t363: T = t129 * t362;
+    let t364: T = Maths::sqrt(t363);
+    let t365: T = p_a2 * t364;
+    let t366: T = t241 - t365;
+    let t367: T = t366 / p_A2;
+    let t368: T = t122 + t367;
+    let t369: T = Maths::abs(t368);
+    let t370: T = t129 * t369;
+    let t371: T = Maths::sqrt(t370);
+    let t372: T = p_a2 * t371;
+    let t373: T = t255 - t372;
+    let t374: T = t373 / p_A2;
+    let t375: T = t359 + t367;
+    let t376: T = t123 * t375;
+    let t377: T = t351 + t376;
+    let t378: T = t377 + t374;
+    let t379: T = t126 * t378;
+    let t380: T = t122 + t379;
+    let t381: T = t199 + t269;
+    let t382: T = t381 + t339;
+    let t383: T = t382 + t269;
+    let t384: T = t36 * t383;
+    let t385: T = t205 + t275;
+    let t386: T = t385 + t345;
+    let t387: T = t386 + t380;
+    let t388: T = t36 * t387;
+    let t389: T = t199 - t384;
+    let t390: T = t205 - t388;
+    let t391: T = t269 - t384;
+    let t392: T = t275 - t388;
+    let t393: T = t339 - t384;
+    let t394: T = t345 - t388;
+    let t395: T = t380 - t388;
+    let t396: T = t389 * t389;
     let t397: T = t391 * t391;
     let t398: T = t396 + t397;
-    let t399: T = t398 + t395;
-    let t400: T = t36 * t399;
-    let t401: T = t387 * t388;
-    let t402: T = t389 * t390;
-    let t403: T = t401 + t402;
+    let t399: T = t393 * t393;
+    let t400: T = t398 + t399;
+    let t401: T = t400 + t397;
+    let t402: T = t36 * t401;
+    let t403: T = t389 * t390;
     let t404: T = t391 * t392;
     let t405: T = t403 + t404;
-    let t406: T = t389 * t393;
+    let t406: T = t393 * t394;
     let t407: T = t405 + t406;
-    let t408: T = t36 * t407;
-    let t409: T = t388 * t388;
-    let t410: T = t390 * t390;
-    let t411: T = t409 + t410;
+    let t408: T = t391 * t395;
+    let t409: T = t407 + t408;
+    let t410: T = t36 * t409;
+    let t411: T = t390 * t390;
     let t412: T = t392 * t392;
     let t413: T = t411 + t412;
-    let t414: T = t393 * t393;
+    let t414: T = t394 * t394;
     let t415: T = t413 + t414;
-    let t416: T = t36 * t415;
-    let t417: T = T::literal(0.056878302, 0.056878303537693804);
-    let t418: T = t400 + t417;
-    let t419: T = T::literal(1.4551619e-5, 1.4551618676799019e-5);
-    let t420: T = t416 + t419;
-    ([t86, t88], [t382, t386], [t418, t408, t420])
+    let t416: T = t395 * t395;
+    let t417: T = t415 + t416;
+    let t418: T = t36 * t417;
+    let t419: T = T::literal(0.056878302, 0.056878303537693804);
+    let t420: T = t402 + t419;
+    let t421: T = T::literal(1.4551619e-5, 1.4551618676799019e-5);
+    let t422: T = t418 + t421;
+    ([t86, t88], [t384, t388], [t420, t410, t422], t90)
 }
 
 /// One UKF sample without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`.
@@ -2908,7 +2941,7 @@ impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, 
         y: &[T; OUTPUTS],
         u: &[T; INPUTS],
     ) -> Option<(([T; STATES], [T; COVARIANCE]), [Estimate<T>; STATES])> {
-        let (estimate, x, p) = ekf_measured(&carried.0, &carried.1, y, u);
+        let (estimate, x, p, _) = ekf_measured(&carried.0, &carried.1, y, u);
         let mut inside = [Estimate { value: T::ZERO, saturation: firmware::Saturation::Inside }; STATES];
         for (e, &value) in inside.iter_mut().zip(&estimate) {
             e.value = value;
@@ -3033,7 +3066,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "bcaf9a1e112eabb6461b8289e809170c2fef41fa1851823be47801c1ce7a9139";
+pub const TABLES_SHA256: &str = "8e926d8d7b4a2dec1150ddd3c3fa00dd823d6d01c9019438d392ae5fd461e25d";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

@@ -66,7 +66,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["", ""];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 149), ("ekf_box", 241), ("ukf_box", 431), ("corrected", 149), ("ekf_map", 249), ("ekf_restart", 452), ("mhe", 72959)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 149), ("ekf_box", 243), ("ukf_box", 433), ("corrected", 149), ("ekf_map", 251), ("ekf_restart", 454), ("mhe", 72959)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -423,12 +423,16 @@ pub const EKF_Q: [f64; STATES] = [2.3731465236141434e-5, 0.0019558464170250527];
 /// Each sample: every output's scalar update in Joseph form, then the prediction over one sampling
 /// period. A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u`
 /// changes nothing; a sample whose result is not finite (the model overflowed) is not taken.
+/// Watched ([`firmware::watch`]): when the mean of its normalised innovations squared over about
+/// 16 samples exceeds 1024 times the number of outputs, it restarts from its start.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ekf<T = f32> {
     /// `x̂`: after a sample, the prediction to the next one.
     x: [T; STATES],
     /// The upper triangle of `P`.
     p: [T; COVARIANCE],
+    /// The watched mean of the normalised innovations squared ([`firmware::watch`]).
+    chi: T,
 }
 
 impl<T: Scalar + Maths> Default for Ekf<T> {
@@ -443,6 +447,7 @@ impl<T: Scalar + Maths> Ekf<T> {
         Ekf {
             x: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
             p: [T::literal(0.13849701, 0.1384970099837168), T::literal(0.0, 0.0), T::literal(0.50769377, 0.5076937617238474)],
+            chi: T::literal(1.0, 1.0),
         }
     }
 
@@ -457,7 +462,7 @@ impl<T: Scalar + Maths> Ekf<T> {
     }
 
     /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it, or restarts
-    /// from the start when its step is not finite (see the type's docs): the rule every filter follows
+    /// from the start when its step is not finite or its innovations stay implausible (see the type's docs): the rule every filter follows
     /// ([`firmware::rules::filter_sample`]) over this filter's two written-out samples. The same
     /// operations run for every accepted sample.
     pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::rules::Refused> {
@@ -466,18 +471,26 @@ impl<T: Scalar + Maths> Ekf<T> {
             u.iter().all(|v| v.is_finite()),
             y.iter().all(|v| v.is_finite()),
             |filter| {
-                let (estimate, x, p) = ekf_measured(&filter.x, &filter.p, y, u);
-                (estimate, Ekf { x, p })
+                let (estimate, x, p, nis) = ekf_measured(&filter.x, &filter.p, y, u);
+                let chi = firmware::watch::watched(filter.chi, nis, T::literal(0.0625, 0.0625));
+                (estimate, Ekf { x, p, chi })
             },
             |filter| {
                 let (x, p) = ekf_unmeasured(&filter.x, &filter.p, u);
-                Ekf { x, p }
+                Ekf { x, p, chi: filter.chi }
             },
-            |filter| finite(&filter.x, &filter.p),
+            |filter| finite(&filter.x, &filter.p) && firmware::watch::plausible(filter.chi, T::literal(1024.0, 1024.0)),
             Self::new,
         )
     }
 }
+
+/// The EKF's χ² watch as `gen` chose it on the tuning runs ([`firmware::watch`]): the window `W`
+/// over which the mean of its normalised innovations squared is kept, in samples.
+pub const EKF_WATCH_WINDOW: usize = 16;
+/// See [`EKF_WATCH_WINDOW`]: the threshold `τ` (no unit) above which, times the number of
+/// outputs, the mean restarts the filter; `f64::INFINITY`: not watched.
+pub const EKF_WATCH_THRESHOLD: f64 = 1024.0;
 
 /// Whether every entry of a filter's state and covariance is finite.
 fn finite<T: Scalar>(x: &[T; STATES], p: &[T; COVARIANCE]) -> bool {
@@ -499,6 +512,7 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
         [[T::literal(2.3731465e-5, 2.3731465236141434e-5), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.0019558463, 0.0019558464170250527)]],
         [T::literal(0.2, 0.2)],
     )
+    .with_watch(T::literal(0.0625, 0.0625), T::literal(1024.0, 1024.0))
 }
 
 /// The EKF from the centre of the state box ([`Ekf`], the same filter and constants) with the
@@ -509,7 +523,7 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 pub type EkfBoxObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
-    const FRESH: Self = Ekf { x: [0.0, 0.0], p: [0.13849701, 0.0, 0.50769377] };
+    const FRESH: Self = Ekf { x: [0.0, 0.0], p: [0.13849701, 0.0, 0.50769377], chi: 1.0 };
 
     #[inline(always)]
     fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
@@ -537,9 +551,10 @@ pub fn ekf_observer_estimate(observer: &EkfBoxObserver) -> Option<[Estimate<f32>
     observer.estimate()
 }
 
-/// One sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
+/// One sample with its measurement: `(x̂(k|k), x⁺, P⁺, ε)` from `(x, P)`, `ε` the normalised
+/// innovation squared ([`firmware::watch`]), written out by `gen`.
 #[allow(unused_variables, non_snake_case, clippy::type_complexity, clippy::approx_constant)]
-fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {
+fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE], T) {
     let x_x1: T = x[0];
     let x_x2: T = x[1];
     let cov0: T = p[0];
@@ -561,196 +576,198 @@ fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t18: T = x_x1 + t17;
     let t19: T = t14 * t16;
     let t20: T = x_x2 + t19;
-    let t21: T = t6 - t13;
-    let t22: T = -t13;
-    let t23: T = -t14;
-    let t24: T = t6 - t14;
-    let t25: T = t21 * cov0;
-    let t26: T = t22 * cov1;
-    let t27: T = t25 + t26;
-    let t28: T = t21 * cov1;
-    let t29: T = t22 * cov2;
-    let t30: T = t28 + t29;
-    let t31: T = t23 * cov0;
-    let t32: T = t24 * cov1;
-    let t33: T = t31 + t32;
-    let t34: T = t23 * cov1;
-    let t35: T = t24 * cov2;
-    let t36: T = t34 + t35;
-    let t37: T = t27 * t21;
-    let t38: T = t30 * t22;
-    let t39: T = t37 + t38;
-    let t40: T = t27 * t23;
-    let t41: T = t30 * t24;
-    let t42: T = t40 + t41;
-    let t43: T = t33 * t23;
-    let t44: T = t36 * t24;
-    let t45: T = t43 + t44;
-    let t46: T = t13 * t9;
-    let t47: T = t46 * t13;
-    let t48: T = t39 + t47;
-    let t49: T = t46 * t14;
-    let t50: T = t42 + t49;
-    let t51: T = t14 * t9;
-    let t52: T = t51 * t14;
-    let t53: T = t45 + t52;
-    let t54: T = T::literal(0.1, 0.1);
-    let t55: T = T::literal(2.0, 2.0);
-    let t56: T = T::literal(6.0, 6.0);
-    let t57: T = t54 / t55;
-    let t58: T = t54 / t56;
-    let t59: T = -t20;
-    let t60: T = T::literal(-1.0, -1.0);
-    let t61: T = T::literal(4.0, 4.0);
-    let t62: T = t61 * t18;
-    let t63: T = t18 * t18;
-    let t64: T = t6 - t63;
-    let t65: T = t64 * t20;
-    let t66: T = t62 + t65;
-    let t67: T = t55 * t18;
-    let t68: T = -t67;
-    let t69: T = t68 * t20;
-    let t70: T = t61 + t69;
-    let t71: T = t57 * t59;
-    let t72: T = t18 + t71;
-    let t73: T = t57 * t66;
-    let t74: T = t20 + t73;
-    let t75: T = -t57;
-    let t76: T = t57 * t70;
-    let t77: T = t57 * t64;
-    let t78: T = t6 + t77;
-    let t79: T = -t74;
-    let t80: T = t61 * t72;
-    let t81: T = t72 * t72;
-    let t82: T = t6 - t81;
-    let t83: T = t82 * t74;
-    let t84: T = t80 + t83;
-    let t85: T = t55 * t72;
-    let t86: T = -t85;
-    let t87: T = t86 * t74;
-    let t88: T = t61 + t87;
-    let t89: T = -t76;
-    let t90: T = -t78;
-    let t91: T = t82 * t76;
-    let t92: T = t88 + t91;
-    let t93: T = t88 * t75;
-    let t94: T = t82 * t78;
-    let t95: T = t93 + t94;
-    let t96: T = t57 * t79;
-    let t97: T = t18 + t96;
-    let t98: T = t57 * t84;
-    let t99: T = t20 + t98;
-    let t100: T = t57 * t89;
-    let t101: T = t6 + t100;
-    let t102: T = t57 * t90;
-    let t103: T = t57 * t92;
-    let t104: T = t57 * t95;
-    let t105: T = t6 + t104;
-    let t106: T = -t99;
-    let t107: T = t61 * t97;
-    let t108: T = t97 * t97;
-    let t109: T = t6 - t108;
-    let t110: T = t109 * t99;
-    let t111: T = t107 + t110;
-    let t112: T = t55 * t97;
-    let t113: T = -t112;
-    let t114: T = t113 * t99;
-    let t115: T = t61 + t114;
-    let t116: T = -t103;
-    let t117: T = -t105;
-    let t118: T = t115 * t101;
-    let t119: T = t109 * t103;
-    let t120: T = t118 + t119;
-    let t121: T = t115 * t102;
-    let t122: T = t109 * t105;
-    let t123: T = t121 + t122;
-    let t124: T = t54 * t106;
-    let t125: T = t18 + t124;
-    let t126: T = t54 * t111;
-    let t127: T = t20 + t126;
-    let t128: T = t54 * t116;
-    let t129: T = t6 + t128;
-    let t130: T = t54 * t117;
-    let t131: T = t54 * t120;
-    let t132: T = t54 * t123;
-    let t133: T = t6 + t132;
-    let t134: T = -t127;
-    let t135: T = t61 * t125;
-    let t136: T = t125 * t125;
-    let t137: T = t6 - t136;
-    let t138: T = t137 * t127;
-    let t139: T = t135 + t138;
-    let t140: T = t55 * t125;
-    let t141: T = -t140;
-    let t142: T = t141 * t127;
-    let t143: T = t61 + t142;
-    let t144: T = -t131;
-    let t145: T = -t133;
-    let t146: T = t143 * t129;
-    let t147: T = t137 * t131;
-    let t148: T = t146 + t147;
-    let t149: T = t143 * t130;
-    let t150: T = t137 * t133;
-    let t151: T = t149 + t150;
-    let t152: T = t79 + t106;
-    let t153: T = t55 * t152;
-    let t154: T = t59 + t153;
-    let t155: T = t154 + t134;
-    let t156: T = t58 * t155;
-    let t157: T = t18 + t156;
-    let t158: T = t84 + t111;
-    let t159: T = t55 * t158;
-    let t160: T = t66 + t159;
-    let t161: T = t160 + t139;
-    let t162: T = t58 * t161;
-    let t163: T = t20 + t162;
-    let t164: T = t89 + t116;
-    let t165: T = t55 * t164;
-    let t166: T = t165 + t144;
-    let t167: T = t58 * t166;
-    let t168: T = t6 + t167;
-    let t169: T = t90 + t117;
-    let t170: T = t55 * t169;
-    let t171: T = t60 + t170;
-    let t172: T = t171 + t145;
-    let t173: T = t58 * t172;
-    let t174: T = t92 + t120;
-    let t175: T = t55 * t174;
-    let t176: T = t70 + t175;
-    let t177: T = t176 + t148;
-    let t178: T = t58 * t177;
-    let t179: T = t95 + t123;
-    let t180: T = t55 * t179;
-    let t181: T = t64 + t180;
-    let t182: T = t181 + t151;
-    let t183: T = t58 * t182;
-    let t184: T = t6 + t183;
-    let t185: T = t168 * t48;
-    let t186: T = t173 * t50;
-    let t187: T = t185 + t186;
-    let t188: T = t168 * t50;
-    let t189: T = t173 * t53;
-    let t190: T = t188 + t189;
-    let t191: T = t178 * t48;
-    let t192: T = t184 * t50;
-    let t193: T = t191 + t192;
-    let t194: T = t178 * t50;
-    let t195: T = t184 * t53;
-    let t196: T = t194 + t195;
-    let t197: T = t187 * t168;
-    let t198: T = t190 * t173;
-    let t199: T = t197 + t198;
-    let t200: T = t187 * t178;
-    let t201: T = t190 * t184;
-    let t202: T = t200 + t201;
-    let t203: T = t193 * t178;
-    let t204: T = t196 * t184;
-    let t205: T = t203 + t204;
-    let t206: T = T::literal(2.3731465e-5, 2.3731465236141434e-5);
-    let t207: T = t199 + t206;
-    let t208: T = T::literal(0.0019558463, 0.0019558464170250527);
-    let t209: T = t205 + t208;
-    ([t18, t20], [t157, t163], [t207, t202, t209])
+    let t21: T = t16 * t16;
+    let t22: T = t21 * t12;
+    let t23: T = t6 - t13;
+    let t24: T = -t13;
+    let t25: T = -t14;
+    let t26: T = t6 - t14;
+    let t27: T = t23 * cov0;
+    let t28: T = t24 * cov1;
+    let t29: T = t27 + t28;
+    let t30: T = t23 * cov1;
+    let t31: T = t24 * cov2;
+    let t32: T = t30 + t31;
+    let t33: T = t25 * cov0;
+    let t34: T = t26 * cov1;
+    let t35: T = t33 + t34;
+    let t36: T = t25 * cov1;
+    let t37: T = t26 * cov2;
+    let t38: T = t36 + t37;
+    let t39: T = t29 * t23;
+    let t40: T = t32 * t24;
+    let t41: T = t39 + t40;
+    let t42: T = t29 * t25;
+    let t43: T = t32 * t26;
+    let t44: T = t42 + t43;
+    let t45: T = t35 * t25;
+    let t46: T = t38 * t26;
+    let t47: T = t45 + t46;
+    let t48: T = t13 * t9;
+    let t49: T = t48 * t13;
+    let t50: T = t41 + t49;
+    let t51: T = t48 * t14;
+    let t52: T = t44 + t51;
+    let t53: T = t14 * t9;
+    let t54: T = t53 * t14;
+    let t55: T = t47 + t54;
+    let t56: T = T::literal(0.1, 0.1);
+    let t57: T = T::literal(2.0, 2.0);
+    let t58: T = T::literal(6.0, 6.0);
+    let t59: T = t56 / t57;
+    let t60: T = t56 / t58;
+    let t61: T = -t20;
+    let t62: T = T::literal(-1.0, -1.0);
+    let t63: T = T::literal(4.0, 4.0);
+    let t64: T = t63 * t18;
+    let t65: T = t18 * t18;
+    let t66: T = t6 - t65;
+    let t67: T = t66 * t20;
+    let t68: T = t64 + t67;
+    let t69: T = t57 * t18;
+    let t70: T = -t69;
+    let t71: T = t70 * t20;
+    let t72: T = t63 + t71;
+    let t73: T = t59 * t61;
+    let t74: T = t18 + t73;
+    let t75: T = t59 * t68;
+    let t76: T = t20 + t75;
+    let t77: T = -t59;
+    let t78: T = t59 * t72;
+    let t79: T = t59 * t66;
+    let t80: T = t6 + t79;
+    let t81: T = -t76;
+    let t82: T = t63 * t74;
+    let t83: T = t74 * t74;
+    let t84: T = t6 - t83;
+    let t85: T = t84 * t76;
+    let t86: T = t82 + t85;
+    let t87: T = t57 * t74;
+    let t88: T = -t87;
+    let t89: T = t88 * t76;
+    let t90: T = t63 + t89;
+    let t91: T = -t78;
+    let t92: T = -t80;
+    let t93: T = t84 * t78;
+    let t94: T = t90 + t93;
+    let t95: T = t90 * t77;
+    let t96: T = t84 * t80;
+    let t97: T = t95 + t96;
+    let t98: T = t59 * t81;
+    let t99: T = t18 + t98;
+    let t100: T = t59 * t86;
+    let t101: T = t20 + t100;
+    let t102: T = t59 * t91;
+    let t103: T = t6 + t102;
+    let t104: T = t59 * t92;
+    let t105: T = t59 * t94;
+    let t106: T = t59 * t97;
+    let t107: T = t6 + t106;
+    let t108: T = -t101;
+    let t109: T = t63 * t99;
+    let t110: T = t99 * t99;
+    let t111: T = t6 - t110;
+    let t112: T = t111 * t101;
+    let t113: T = t109 + t112;
+    let t114: T = t57 * t99;
+    let t115: T = -t114;
+    let t116: T = t115 * t101;
+    let t117: T = t63 + t116;
+    let t118: T = -t105;
+    let t119: T = -t107;
+    let t120: T = t117 * t103;
+    let t121: T = t111 * t105;
+    let t122: T = t120 + t121;
+    let t123: T = t117 * t104;
+    let t124: T = t111 * t107;
+    let t125: T = t123 + t124;
+    let t126: T = t56 * t108;
+    let t127: T = t18 + t126;
+    let t128: T = t56 * t113;
+    let t129: T = t20 + t128;
+    let t130: T = t56 * t118;
+    let t131: T = t6 + t130;
+    let t132: T = t56 * t119;
+    let t133: T = t56 * t122;
+    let t134: T = t56 * t125;
+    let t135: T = t6 + t134;
+    let t136: T = -t129;
+    let t137: T = t63 * t127;
+    let t138: T = t127 * t127;
+    let t139: T = t6 - t138;
+    let t140: T = t139 * t129;
+    let t141: T = t137 + t140;
+    let t142: T = t57 * t127;
+    let t143: T = -t142;
+    let t144: T = t143 * t129;
+    let t145: T = t63 + t144;
+    let t146: T = -t133;
+    let t147: T = -t135;
+    let t148: T = t145 * t131;
+    let t149: T = t139 * t133;
+    let t150: T = t148 + t149;
+    let t151: T = t145 * t132;
+    let t152: T = t139 * t135;
+    let t153: T = t151 + t152;
+    let t154: T = t81 + t108;
+    let t155: T = t57 * t154;
+    let t156: T = t61 + t155;
+    let t157: T = t156 + t136;
+    let t158: T = t60 * t157;
+    let t159: T = t18 + t158;
+    let t160: T = t86 + t113;
+    let t161: T = t57 * t160;
+    let t162: T = t68 + t161;
+    let t163: T = t162 + t141;
+    let t164: T = t60 * t163;
+    let t165: T = t20 + t164;
+    let t166: T = t91 + t118;
+    let t167: T = t57 * t166;
+    let t168: T = t167 + t146;
+    let t169: T = t60 * t168;
+    let t170: T = t6 + t169;
+    let t171: T = t92 + t119;
+    let t172: T = t57 * t171;
+    let t173: T = t62 + t172;
+    let t174: T = t173 + t147;
+    let t175: T = t60 * t174;
+    let t176: T = t94 + t122;
+    let t177: T = t57 * t176;
+    let t178: T = t72 + t177;
+    let t179: T = t178 + t150;
+    let t180: T = t60 * t179;
+    let t181: T = t97 + t125;
+    let t182: T = t57 * t181;
+    let t183: T = t66 + t182;
+    let t184: T = t183 + t153;
+    let t185: T = t60 * t184;
+    let t186: T = t6 + t185;
+    let t187: T = t170 * t50;
+    let t188: T = t175 * t52;
+    let t189: T = t187 + t188;
+    let t190: T = t170 * t52;
+    let t191: T = t175 * t55;
+    let t192: T = t190 + t191;
+    let t193: T = t180 * t50;
+    let t194: T = t186 * t52;
+    let t195: T = t193 + t194;
+    let t196: T = t180 * t52;
+    let t197: T = t186 * t55;
+    let t198: T = t196 + t197;
+    let t199: T = t189 * t170;
+    let t200: T = t192 * t175;
+    let t201: T = t199 + t200;
+    let t202: T = t189 * t180;
+    let t203: T = t192 * t186;
+    let t204: T = t202 + t203;
+    let t205: T = t195 * t180;
+    let t206: T = t198 * t186;
+    let t207: T = t205 + t206;
+    let t208: T = T::literal(2.3731465e-5, 2.3731465236141434e-5);
+    let t209: T = t201 + t208;
+    let t210: T = T::literal(0.0019558463, 0.0019558464170250527);
+    let t211: T = t207 + t210;
+    ([t18, t20], [t159, t165], [t209, t204, t211], t22)
 }
 
 /// One sample without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`.
@@ -935,12 +952,16 @@ pub const UKF_Q: [f64; STATES] = [4.758442833345225e-6, 0.0005048430735507813];
 ///
 /// A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u` changes
 /// nothing; a sample whose result is not finite is not taken.
+/// Watched ([`firmware::watch`]): when the mean of its normalised innovations squared over about
+/// 16 samples exceeds 1024 times the number of outputs, it restarts from its start.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ukf<T = f32> {
     /// `x̂`: after a sample, the prediction to the next one.
     x: [T; STATES],
     /// The upper triangle of `P`.
     p: [T; COVARIANCE],
+    /// The watched mean of the normalised innovations squared ([`firmware::watch`]).
+    chi: T,
 }
 
 impl<T: Scalar + Maths> Default for Ukf<T> {
@@ -955,6 +976,7 @@ impl<T: Scalar + Maths> Ukf<T> {
         Ukf {
             x: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
             p: [T::literal(2.1266088, 2.126608936263136), T::literal(0.0, 0.0), T::literal(58.561142, 58.56114062608544)],
+            chi: T::literal(1.0, 1.0),
         }
     }
 
@@ -969,7 +991,7 @@ impl<T: Scalar + Maths> Ukf<T> {
     }
 
     /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it, or restarts
-    /// from the start when its step is not finite (see the type's docs): the rule every filter follows
+    /// from the start when its step is not finite or its innovations stay implausible (see the type's docs): the rule every filter follows
     /// ([`firmware::rules::filter_sample`]) over this filter's two written-out samples. The same
     /// operations run for every accepted sample.
     pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::rules::Refused> {
@@ -978,18 +1000,26 @@ impl<T: Scalar + Maths> Ukf<T> {
             u.iter().all(|v| v.is_finite()),
             y.iter().all(|v| v.is_finite()),
             |filter| {
-                let (estimate, x, p) = ukf_measured(&filter.x, &filter.p, y, u);
-                (estimate, Ukf { x, p })
+                let (estimate, x, p, nis) = ukf_measured(&filter.x, &filter.p, y, u);
+                let chi = firmware::watch::watched(filter.chi, nis, T::literal(0.0625, 0.0625));
+                (estimate, Ukf { x, p, chi })
             },
             |filter| {
                 let (x, p) = ukf_unmeasured(&filter.x, &filter.p, u);
-                Ukf { x, p }
+                Ukf { x, p, chi: filter.chi }
             },
-            |filter| finite(&filter.x, &filter.p),
+            |filter| finite(&filter.x, &filter.p) && firmware::watch::plausible(filter.chi, T::literal(1024.0, 1024.0)),
             Self::new,
         )
     }
 }
+
+/// The UKF's χ² watch as `gen` chose it on the tuning runs ([`firmware::watch`]): the window `W`
+/// over which the mean of its normalised innovations squared is kept, in samples.
+pub const UKF_WATCH_WINDOW: usize = 16;
+/// See [`UKF_WATCH_WINDOW`]: the threshold `τ` (no unit) above which, times the number of
+/// outputs, the mean restarts the filter; `f64::INFINITY`: not watched.
+pub const UKF_WATCH_THRESHOLD: f64 = 1024.0;
 
 /// A fresh UKF in `f32`, as the chip runs it.
 pub fn ukf() -> Ukf {
@@ -1004,7 +1034,7 @@ pub fn ukf() -> Ukf {
 pub type UkfBoxObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
-    const FRESH: Self = Ukf { x: [0.0, 0.0], p: [2.1266088, 0.0, 58.561142] };
+    const FRESH: Self = Ukf { x: [0.0, 0.0], p: [2.1266088, 0.0, 58.561142], chi: 1.0 };
 
     #[inline(always)]
     fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
@@ -1032,9 +1062,10 @@ pub fn ukf_observer_estimate(observer: &UkfBoxObserver) -> Option<[Estimate<f32>
     observer.estimate()
 }
 
-/// One UKF sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
+/// One UKF sample with its measurement: `(x̂(k|k), x⁺, P⁺, ε)` from `(x, P)`, `ε` the normalised
+/// innovation squared ([`firmware::watch`]), written out by `gen`.
 #[allow(unused_variables, non_snake_case, clippy::type_complexity, clippy::approx_constant)]
-fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {
+fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE], T) {
     let x_x1: T = x[0];
     let x_x2: T = x[1];
     let cov0: T = p[0];
@@ -1128,278 +1159,280 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t90: T = x_x1 + t89;
     let t91: T = t86 * t88;
     let t92: T = x_x2 + t91;
-    let t93: T = t68 * t84;
-    let t94: T = cov0 - t93;
-    let t95: T = t68 * t86;
-    let t96: T = cov1 - t95;
-    let t97: T = t76 * t86;
-    let t98: T = cov2 - t97;
-    let t99: T = Maths::abs(t94);
-    let t100: T = t6 * t99;
-    let t101: T = t100 + t9;
-    let t102: T = firmware::emitted::at_least(t94, t101);
-    let t103: T = Maths::sqrt(t102);
-    let t104: T = t5 / t103;
-    let t105: T = t96 * t104;
-    let t106: T = t105 * t105;
-    let t107: T = t98 - t106;
-    let t108: T = Maths::abs(t98);
-    let t109: T = t6 * t108;
-    let t110: T = t109 + t9;
-    let t111: T = firmware::emitted::at_least(t107, t110);
-    let t112: T = Maths::sqrt(t111);
-    let t113: T = t22 * t103;
-    let t114: T = t90 + t113;
+    let t93: T = t88 * t82;
+    let t94: T = t93 * t93;
+    let t95: T = t68 * t84;
+    let t96: T = cov0 - t95;
+    let t97: T = t68 * t86;
+    let t98: T = cov1 - t97;
+    let t99: T = t76 * t86;
+    let t100: T = cov2 - t99;
+    let t101: T = Maths::abs(t96);
+    let t102: T = t6 * t101;
+    let t103: T = t102 + t9;
+    let t104: T = firmware::emitted::at_least(t96, t103);
+    let t105: T = Maths::sqrt(t104);
+    let t106: T = t5 / t105;
+    let t107: T = t98 * t106;
+    let t108: T = t107 * t107;
+    let t109: T = t100 - t108;
+    let t110: T = Maths::abs(t100);
+    let t111: T = t6 * t110;
+    let t112: T = t111 + t9;
+    let t113: T = firmware::emitted::at_least(t109, t112);
+    let t114: T = Maths::sqrt(t113);
     let t115: T = t22 * t105;
-    let t116: T = t92 + t115;
-    let t117: T = t22 * t112;
+    let t116: T = t90 + t115;
+    let t117: T = t22 * t107;
     let t118: T = t92 + t117;
-    let t119: T = t29 * t103;
-    let t120: T = t90 + t119;
+    let t119: T = t22 * t114;
+    let t120: T = t92 + t119;
     let t121: T = t29 * t105;
-    let t122: T = t92 + t121;
-    let t123: T = t29 * t112;
+    let t122: T = t90 + t121;
+    let t123: T = t29 * t107;
     let t124: T = t92 + t123;
-    let t125: T = T::literal(0.1, 0.1);
-    let t126: T = T::literal(2.0, 2.0);
-    let t127: T = T::literal(6.0, 6.0);
-    let t128: T = t125 / t126;
-    let t129: T = t125 / t127;
-    let t130: T = -t116;
-    let t131: T = T::literal(4.0, 4.0);
-    let t132: T = t131 * t114;
-    let t133: T = t114 * t114;
-    let t134: T = t5 - t133;
-    let t135: T = t134 * t116;
-    let t136: T = t132 + t135;
-    let t137: T = t128 * t130;
-    let t138: T = t114 + t137;
-    let t139: T = t128 * t136;
+    let t125: T = t29 * t114;
+    let t126: T = t92 + t125;
+    let t127: T = T::literal(0.1, 0.1);
+    let t128: T = T::literal(2.0, 2.0);
+    let t129: T = T::literal(6.0, 6.0);
+    let t130: T = t127 / t128;
+    let t131: T = t127 / t129;
+    let t132: T = -t118;
+    let t133: T = T::literal(4.0, 4.0);
+    let t134: T = t133 * t116;
+    let t135: T = t116 * t116;
+    let t136: T = t5 - t135;
+    let t137: T = t136 * t118;
+    let t138: T = t134 + t137;
+    let t139: T = t130 * t132;
     let t140: T = t116 + t139;
-    let t141: T = -t140;
-    let t142: T = t131 * t138;
-    let t143: T = t138 * t138;
-    let t144: T = t5 - t143;
-    let t145: T = t144 * t140;
-    let t146: T = t142 + t145;
-    let t147: T = t128 * t141;
-    let t148: T = t114 + t147;
-    let t149: T = t128 * t146;
+    let t141: T = t130 * t138;
+    let t142: T = t118 + t141;
+    let t143: T = -t142;
+    let t144: T = t133 * t140;
+    let t145: T = t140 * t140;
+    let t146: T = t5 - t145;
+    let t147: T = t146 * t142;
+    let t148: T = t144 + t147;
+    let t149: T = t130 * t143;
     let t150: T = t116 + t149;
-    let t151: T = -t150;
-    let t152: T = t131 * t148;
-    let t153: T = t148 * t148;
-    let t154: T = t5 - t153;
-    let t155: T = t154 * t150;
-    let t156: T = t152 + t155;
-    let t157: T = t125 * t151;
-    let t158: T = t114 + t157;
-    let t159: T = t125 * t156;
+    let t151: T = t130 * t148;
+    let t152: T = t118 + t151;
+    let t153: T = -t152;
+    let t154: T = t133 * t150;
+    let t155: T = t150 * t150;
+    let t156: T = t5 - t155;
+    let t157: T = t156 * t152;
+    let t158: T = t154 + t157;
+    let t159: T = t127 * t153;
     let t160: T = t116 + t159;
-    let t161: T = -t160;
-    let t162: T = t131 * t158;
-    let t163: T = t158 * t158;
-    let t164: T = t5 - t163;
-    let t165: T = t164 * t160;
-    let t166: T = t162 + t165;
-    let t167: T = t141 + t151;
-    let t168: T = t126 * t167;
-    let t169: T = t130 + t168;
-    let t170: T = t169 + t161;
-    let t171: T = t129 * t170;
-    let t172: T = t114 + t171;
-    let t173: T = t146 + t156;
-    let t174: T = t126 * t173;
-    let t175: T = t136 + t174;
-    let t176: T = t175 + t166;
-    let t177: T = t129 * t176;
-    let t178: T = t116 + t177;
-    let t179: T = -t118;
-    let t180: T = t131 * t90;
-    let t181: T = t90 * t90;
-    let t182: T = t5 - t181;
-    let t183: T = t182 * t118;
-    let t184: T = t180 + t183;
-    let t185: T = t128 * t179;
-    let t186: T = t90 + t185;
-    let t187: T = t128 * t184;
-    let t188: T = t118 + t187;
-    let t189: T = -t188;
-    let t190: T = t131 * t186;
-    let t191: T = t186 * t186;
-    let t192: T = t5 - t191;
-    let t193: T = t192 * t188;
-    let t194: T = t190 + t193;
-    let t195: T = t128 * t189;
-    let t196: T = t90 + t195;
-    let t197: T = t128 * t194;
-    let t198: T = t118 + t197;
-    let t199: T = -t198;
-    let t200: T = t131 * t196;
-    let t201: T = t196 * t196;
-    let t202: T = t5 - t201;
-    let t203: T = t202 * t198;
-    let t204: T = t200 + t203;
-    let t205: T = t125 * t199;
-    let t206: T = t90 + t205;
-    let t207: T = t125 * t204;
-    let t208: T = t118 + t207;
-    let t209: T = -t208;
-    let t210: T = t131 * t206;
-    let t211: T = t206 * t206;
-    let t212: T = t5 - t211;
-    let t213: T = t212 * t208;
-    let t214: T = t210 + t213;
-    let t215: T = t189 + t199;
-    let t216: T = t126 * t215;
-    let t217: T = t179 + t216;
-    let t218: T = t217 + t209;
-    let t219: T = t129 * t218;
-    let t220: T = t90 + t219;
-    let t221: T = t194 + t204;
-    let t222: T = t126 * t221;
-    let t223: T = t184 + t222;
-    let t224: T = t223 + t214;
-    let t225: T = t129 * t224;
-    let t226: T = t118 + t225;
-    let t227: T = -t122;
-    let t228: T = t131 * t120;
-    let t229: T = t120 * t120;
-    let t230: T = t5 - t229;
-    let t231: T = t230 * t122;
-    let t232: T = t228 + t231;
-    let t233: T = t128 * t227;
-    let t234: T = t120 + t233;
-    let t235: T = t128 * t232;
+    let t161: T = t127 * t158;
+    let t162: T = t118 + t161;
+    let t163: T = -t162;
+    let t164: T = t133 * t160;
+    let t165: T = t160 * t160;
+    let t166: T = t5 - t165;
+    let t167: T = t166 * t162;
+    let t168: T = t164 + t167;
+    let t169: T = t143 + t153;
+    let t170: T = t128 * t169;
+    let t171: T = t132 + t170;
+    let t172: T = t171 + t163;
+    let t173: T = t131 * t172;
+    let t174: T = t116 + t173;
+    let t175: T = t148 + t158;
+    let t176: T = t128 * t175;
+    let t177: T = t138 + t176;
+    let t178: T = t177 + t168;
+    let t179: T = t131 * t178;
+    let t180: T = t118 + t179;
+    let t181: T = -t120;
+    let t182: T = t133 * t90;
+    let t183: T = t90 * t90;
+    let t184: T = t5 - t183;
+    let t185: T = t184 * t120;
+    let t186: T = t182 + t185;
+    let t187: T = t130 * t181;
+    let t188: T = t90 + t187;
+    let t189: T = t130 * t186;
+    let t190: T = t120 + t189;
+    let t191: T = -t190;
+    let t192: T = t133 * t188;
+    let t193: T = t188 * t188;
+    let t194: T = t5 - t193;
+    let t195: T = t194 * t190;
+    let t196: T = t192 + t195;
+    let t197: T = t130 * t191;
+    let t198: T = t90 + t197;
+    let t199: T = t130 * t196;
+    let t200: T = t120 + t199;
+    let t201: T = -t200;
+    let t202: T = t133 * t198;
+    let t203: T = t198 * t198;
+    let t204: T = t5 - t203;
+    let t205: T = t204 * t200;
+    let t206: T = t202 + t205;
+    let t207: T = t127 * t201;
+    let t208: T = t90 + t207;
+    let t209: T = t127 * t206;
+    let t210: T = t120 + t209;
+    let t211: T = -t210;
+    let t212: T = t133 * t208;
+    let t213: T = t208 * t208;
+    let t214: T = t5 - t213;
+    let t215: T = t214 * t210;
+    let t216: T = t212 + t215;
+    let t217: T = t191 + t201;
+    let t218: T = t128 * t217;
+    let t219: T = t181 + t218;
+    let t220: T = t219 + t211;
+    let t221: T = t131 * t220;
+    let t222: T = t90 + t221;
+    let t223: T = t196 + t206;
+    let t224: T = t128 * t223;
+    let t225: T = t186 + t224;
+    let t226: T = t225 + t216;
+    let t227: T = t131 * t226;
+    let t228: T = t120 + t227;
+    let t229: T = -t124;
+    let t230: T = t133 * t122;
+    let t231: T = t122 * t122;
+    let t232: T = t5 - t231;
+    let t233: T = t232 * t124;
+    let t234: T = t230 + t233;
+    let t235: T = t130 * t229;
     let t236: T = t122 + t235;
-    let t237: T = -t236;
-    let t238: T = t131 * t234;
-    let t239: T = t234 * t234;
-    let t240: T = t5 - t239;
-    let t241: T = t240 * t236;
-    let t242: T = t238 + t241;
-    let t243: T = t128 * t237;
-    let t244: T = t120 + t243;
-    let t245: T = t128 * t242;
+    let t237: T = t130 * t234;
+    let t238: T = t124 + t237;
+    let t239: T = -t238;
+    let t240: T = t133 * t236;
+    let t241: T = t236 * t236;
+    let t242: T = t5 - t241;
+    let t243: T = t242 * t238;
+    let t244: T = t240 + t243;
+    let t245: T = t130 * t239;
     let t246: T = t122 + t245;
-    let t247: T = -t246;
-    let t248: T = t131 * t244;
-    let t249: T = t244 * t244;
-    let t250: T = t5 - t249;
-    let t251: T = t250 * t246;
-    let t252: T = t248 + t251;
-    let t253: T = t125 * t247;
-    let t254: T = t120 + t253;
-    let t255: T = t125 * t252;
+    let t247: T = t130 * t244;
+    let t248: T = t124 + t247;
+    let t249: T = -t248;
+    let t250: T = t133 * t246;
+    let t251: T = t246 * t246;
+    let t252: T = t5 - t251;
+    let t253: T = t252 * t248;
+    let t254: T = t250 + t253;
+    let t255: T = t127 * t249;
     let t256: T = t122 + t255;
-    let t257: T = -t256;
-    let t258: T = t131 * t254;
-    let t259: T = t254 * t254;
-    let t260: T = t5 - t259;
-    let t261: T = t260 * t256;
-    let t262: T = t258 + t261;
-    let t263: T = t237 + t247;
-    let t264: T = t126 * t263;
-    let t265: T = t227 + t264;
-    let t266: T = t265 + t257;
-    let t267: T = t129 * t266;
-    let t268: T = t120 + t267;
-    let t269: T = t242 + t252;
-    let t270: T = t126 * t269;
-    let t271: T = t232 + t270;
-    let t272: T = t271 + t262;
-    let t273: T = t129 * t272;
-    let t274: T = t122 + t273;
-    let t275: T = -t124;
-    let t276: T = t182 * t124;
-    let t277: T = t180 + t276;
-    let t278: T = t128 * t275;
-    let t279: T = t90 + t278;
-    let t280: T = t128 * t277;
-    let t281: T = t124 + t280;
-    let t282: T = -t281;
-    let t283: T = t131 * t279;
-    let t284: T = t279 * t279;
-    let t285: T = t5 - t284;
-    let t286: T = t285 * t281;
-    let t287: T = t283 + t286;
-    let t288: T = t128 * t282;
-    let t289: T = t90 + t288;
-    let t290: T = t128 * t287;
-    let t291: T = t124 + t290;
-    let t292: T = -t291;
-    let t293: T = t131 * t289;
-    let t294: T = t289 * t289;
-    let t295: T = t5 - t294;
-    let t296: T = t295 * t291;
-    let t297: T = t293 + t296;
-    let t298: T = t125 * t292;
-    let t299: T = t90 + t298;
-    let t300: T = t125 * t297;
-    let t301: T = t124 + t300;
-    let t302: T = -t301;
-    let t303: T = t131 * t299;
-    let t304: T = t299 * t299;
-    let t305: T = t5 - t304;
-    let t306: T = t305 * t301;
-    let t307: T = t303 + t306;
-    let t308: T = t282 + t292;
-    let t309: T = t126 * t308;
-    let t310: T = t275 + t309;
-    let t311: T = t310 + t302;
-    let t312: T = t129 * t311;
-    let t313: T = t90 + t312;
-    let t314: T = t287 + t297;
-    let t315: T = t126 * t314;
-    let t316: T = t277 + t315;
-    let t317: T = t316 + t307;
-    let t318: T = t129 * t317;
-    let t319: T = t124 + t318;
-    let t320: T = t172 + t220;
-    let t321: T = t320 + t268;
-    let t322: T = t321 + t313;
-    let t323: T = t40 * t322;
-    let t324: T = t178 + t226;
-    let t325: T = t324 + t274;
-    let t326: T = t325 + t319;
-    let t327: T = t40 * t326;
-    let t328: T = t172 - t323;
-    let t329: T = t178 - t327;
-    let t330: T = t220 - t323;
-    let t331: T = t226 - t327;
-    let t332: T = t268 - t323;
-    let t333: T = t274 - t327;
-    let t334: T = t313 - t323;
-    let t335: T = t319 - t327;
-    let t336: T = t328 * t328;
-    let t337: T = t330 * t330;
-    let t338: T = t336 + t337;
+    let t257: T = t127 * t254;
+    let t258: T = t124 + t257;
+    let t259: T = -t258;
+    let t260: T = t133 * t256;
+    let t261: T = t256 * t256;
+    let t262: T = t5 - t261;
+    let t263: T = t262 * t258;
+    let t264: T = t260 + t263;
+    let t265: T = t239 + t249;
+    let t266: T = t128 * t265;
+    let t267: T = t229 + t266;
+    let t268: T = t267 + t259;
+    let t269: T = t131 * t268;
+    let t270: T = t122 + t269;
+    let t271: T = t244 + t254;
+    let t272: T = t128 * t271;
+    let t273: T = t234 + t272;
+    let t274: T = t273 + t264;
+    let t275: T = t131 * t274;
+    let t276: T = t124 + t275;
+    let t277: T = -t126;
+    let t278: T = t184 * t126;
+    let t279: T = t182 + t278;
+    let t280: T = t130 * t277;
+    let t281: T = t90 + t280;
+    let t282: T = t130 * t279;
+    let t283: T = t126 + t282;
+    let t284: T = -t283;
+    let t285: T = t133 * t281;
+    let t286: T = t281 * t281;
+    let t287: T = t5 - t286;
+    let t288: T = t287 * t283;
+    let t289: T = t285 + t288;
+    let t290: T = t130 * t284;
+    let t291: T = t90 + t290;
+    let t292: T = t130 * t289;
+    let t293: T = t126 + t292;
+    let t294: T = -t293;
+    let t295: T = t133 * t291;
+    let t296: T = t291 * t291;
+    let t297: T = t5 - t296;
+    let t298: T = t297 * t293;
+    let t299: T = t295 + t298;
+    let t300: T = t127 * t294;
+    let t301: T = t90 + t300;
+    let t302: T = t127 * t299;
+    let t303: T = t126 + t302;
+    let t304: T = -t303;
+    let t305: T = t133 * t301;
+    let t306: T = t301 * t301;
+    let t307: T = t5 - t306;
+    let t308: T = t307 * t303;
+    let t309: T = t305 + t308;
+    let t310: T = t284 + t294;
+    let t311: T = t128 * t310;
+    let t312: T = t277 + t311;
+    let t313: T = t312 + t304;
+    let t314: T = t131 * t313;
+    let t315: T = t90 + t314;
+    let t316: T = t289 + t299;
+    let t317: T = t128 * t316;
+    let t318: T = t279 + t317;
+    let t319: T = t318 + t309;
+    let t320: T = t131 * t319;
+    let t321: T = t126 + t320;
+    let t322: T = t174 + t222;
+    let t323: T = t322 + t270;
+    let t324: T = t323 + t315;
+    let t325: T = t40 * t324;
+    let t326: T = t180 + t228;
+    let t327: T = t326 + t276;
+    let t328: T = t327 + t321;
+    let t329: T = t40 * t328;
+    let t330: T = t174 - t325;
+    let t331: T = t180 - t329;
+    let t332: T = t222 - t325;
+    let t333: T = t228 - t329;
+    let t334: T = t270 - t325;
+    let t335: T = t276 - t329;
+    let t336: T = t315 - t325;
+    let t337: T = t321 - t329;
+    let t338: T = t330 * t330;
     let t339: T = t332 * t332;
     let t340: T = t338 + t339;
     let t341: T = t334 * t334;
     let t342: T = t340 + t341;
-    let t343: T = t40 * t342;
-    let t344: T = t328 * t329;
-    let t345: T = t330 * t331;
-    let t346: T = t344 + t345;
+    let t343: T = t336 * t336;
+    let t344: T = t342 + t343;
+    let t345: T = t40 * t344;
+    let t346: T = t330 * t331;
     let t347: T = t332 * t333;
     let t348: T = t346 + t347;
     let t349: T = t334 * t335;
     let t350: T = t348 + t349;
-    let t351: T = t40 * t350;
-    let t352: T = t329 * t329;
-    let t353: T = t331 * t331;
-    let t354: T = t352 + t353;
+    let t351: T = t336 * t337;
+    let t352: T = t350 + t351;
+    let t353: T = t40 * t352;
+    let t354: T = t331 * t331;
     let t355: T = t333 * t333;
     let t356: T = t354 + t355;
     let t357: T = t335 * t335;
     let t358: T = t356 + t357;
-    let t359: T = t40 * t358;
-    let t360: T = T::literal(4.7584426e-6, 4.758442833345225e-6);
-    let t361: T = t343 + t360;
-    let t362: T = T::literal(0.0005048431, 0.0005048430735507813);
-    let t363: T = t359 + t362;
-    ([t90, t92], [t323, t327], [t361, t351, t363])
+    let t359: T = t337 * t337;
+    let t360: T = t358 + t359;
+    let t361: T = t40 * t360;
+    let t362: T = T::literal(4.7584426e-6, 4.758442833345225e-6);
+    let t363: T = t345 + t362;
+    let t364: T = T::literal(0.0005048431, 0.0005048430735507813);
+    let t365: T = t361 + t364;
+    ([t90, t92], [t325, t329], [t363, t353, t365], t94)
 }
 
 /// One UKF sample without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`.
@@ -1961,7 +1994,7 @@ impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, 
         y: &[T; OUTPUTS],
         u: &[T; INPUTS],
     ) -> Option<(([T; STATES], [T; COVARIANCE]), [Estimate<T>; STATES])> {
-        let (estimate, x, p) = ekf_measured(&carried.0, &carried.1, y, u);
+        let (estimate, x, p, _) = ekf_measured(&carried.0, &carried.1, y, u);
         let mut inside = [Estimate { value: T::ZERO, saturation: firmware::Saturation::Inside }; STATES];
         for (e, &value) in inside.iter_mut().zip(&estimate) {
             e.value = value;
@@ -2086,7 +2119,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "21b86f8f6a5ff7580076b47c7a4b667390ad2b25ca7cdbf80805d9e40b90dee9";
+pub const TABLES_SHA256: &str = "182d306ee23e7b1c255da26f16f889acca3a6fd35e6bcc55b1578215c22cf60f";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

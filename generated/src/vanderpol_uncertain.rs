@@ -66,7 +66,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["", ""];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 134), ("ekf_box", 241), ("ukf_box", 431), ("corrected", 149), ("ekf_map", 249), ("ekf_restart", 437), ("mhe", 34199)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 134), ("ekf_box", 243), ("ukf_box", 433), ("corrected", 149), ("ekf_map", 251), ("ekf_restart", 439), ("mhe", 34199)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -507,12 +507,16 @@ pub const EKF_Q: [f64; STATES] = [0.0028291305119613097, 0.03320937213198135];
 /// Each sample: every output's scalar update in Joseph form, then the prediction over one sampling
 /// period. A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u`
 /// changes nothing; a sample whose result is not finite (the model overflowed) is not taken.
+/// Watched ([`firmware::watch`]): when the mean of its normalised innovations squared over about
+/// 10 samples exceeds 1024 times the number of outputs, it restarts from its start.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ekf<T = f32> {
     /// `x̂`: after a sample, the prediction to the next one.
     x: [T; STATES],
     /// The upper triangle of `P`.
     p: [T; COVARIANCE],
+    /// The watched mean of the normalised innovations squared ([`firmware::watch`]).
+    chi: T,
 }
 
 impl<T: Scalar + Maths> Default for Ekf<T> {
@@ -527,6 +531,7 @@ impl<T: Scalar + Maths> Ekf<T> {
         Ekf {
             x: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
             p: [T::literal(1.5927348, 1.5927347607655395), T::literal(0.0, 0.0), T::literal(19.371712, 19.371710942845038)],
+            chi: T::literal(1.0, 1.0),
         }
     }
 
@@ -541,7 +546,7 @@ impl<T: Scalar + Maths> Ekf<T> {
     }
 
     /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it, or restarts
-    /// from the start when its step is not finite (see the type's docs): the rule every filter follows
+    /// from the start when its step is not finite or its innovations stay implausible (see the type's docs): the rule every filter follows
     /// ([`firmware::rules::filter_sample`]) over this filter's two written-out samples. The same
     /// operations run for every accepted sample.
     pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::rules::Refused> {
@@ -550,18 +555,26 @@ impl<T: Scalar + Maths> Ekf<T> {
             u.iter().all(|v| v.is_finite()),
             y.iter().all(|v| v.is_finite()),
             |filter| {
-                let (estimate, x, p) = ekf_measured(&filter.x, &filter.p, y, u);
-                (estimate, Ekf { x, p })
+                let (estimate, x, p, nis) = ekf_measured(&filter.x, &filter.p, y, u);
+                let chi = firmware::watch::watched(filter.chi, nis, T::literal(0.1, 0.1));
+                (estimate, Ekf { x, p, chi })
             },
             |filter| {
                 let (x, p) = ekf_unmeasured(&filter.x, &filter.p, u);
-                Ekf { x, p }
+                Ekf { x, p, chi: filter.chi }
             },
-            |filter| finite(&filter.x, &filter.p),
+            |filter| finite(&filter.x, &filter.p) && firmware::watch::plausible(filter.chi, T::literal(1024.0, 1024.0)),
             Self::new,
         )
     }
 }
+
+/// The EKF's χ² watch as `gen` chose it on the tuning runs ([`firmware::watch`]): the window `W`
+/// over which the mean of its normalised innovations squared is kept, in samples.
+pub const EKF_WATCH_WINDOW: usize = 10;
+/// See [`EKF_WATCH_WINDOW`]: the threshold `τ` (no unit) above which, times the number of
+/// outputs, the mean restarts the filter; `f64::INFINITY`: not watched.
+pub const EKF_WATCH_THRESHOLD: f64 = 1024.0;
 
 /// Whether every entry of a filter's state and covariance is finite.
 fn finite<T: Scalar>(x: &[T; STATES], p: &[T; COVARIANCE]) -> bool {
@@ -583,6 +596,7 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
         [[T::literal(0.0028291305, 0.0028291305119613097), T::literal(0.0, 0.0)], [T::literal(0.0, 0.0), T::literal(0.033209372, 0.03320937213198135)]],
         [T::literal(0.2, 0.2)],
     )
+    .with_watch(T::literal(0.1, 0.1), T::literal(1024.0, 1024.0))
 }
 
 /// The EKF from the centre of the state box ([`Ekf`], the same filter and constants) with the
@@ -593,7 +607,7 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
 pub type EkfBoxObserver = firmware::FilterObserver<f32, Ekf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ekf<f32> {
-    const FRESH: Self = Ekf { x: [0.0, 0.0], p: [1.5927348, 0.0, 19.371712] };
+    const FRESH: Self = Ekf { x: [0.0, 0.0], p: [1.5927348, 0.0, 19.371712], chi: 1.0 };
 
     #[inline(always)]
     fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
@@ -621,9 +635,10 @@ pub fn ekf_observer_estimate(observer: &EkfBoxObserver) -> Option<[Estimate<f32>
     observer.estimate()
 }
 
-/// One sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
+/// One sample with its measurement: `(x̂(k|k), x⁺, P⁺, ε)` from `(x, P)`, `ε` the normalised
+/// innovation squared ([`firmware::watch`]), written out by `gen`.
 #[allow(unused_variables, non_snake_case, clippy::type_complexity, clippy::approx_constant)]
-fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {
+fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE], T) {
     let x_x1: T = x[0];
     let x_x2: T = x[1];
     let cov0: T = p[0];
@@ -645,197 +660,199 @@ fn ekf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t18: T = x_x1 + t17;
     let t19: T = t14 * t16;
     let t20: T = x_x2 + t19;
-    let t21: T = t6 - t13;
-    let t22: T = -t13;
-    let t23: T = -t14;
-    let t24: T = t6 - t14;
-    let t25: T = t21 * cov0;
-    let t26: T = t22 * cov1;
-    let t27: T = t25 + t26;
-    let t28: T = t21 * cov1;
-    let t29: T = t22 * cov2;
-    let t30: T = t28 + t29;
-    let t31: T = t23 * cov0;
-    let t32: T = t24 * cov1;
-    let t33: T = t31 + t32;
-    let t34: T = t23 * cov1;
-    let t35: T = t24 * cov2;
-    let t36: T = t34 + t35;
-    let t37: T = t27 * t21;
-    let t38: T = t30 * t22;
-    let t39: T = t37 + t38;
-    let t40: T = t27 * t23;
-    let t41: T = t30 * t24;
-    let t42: T = t40 + t41;
-    let t43: T = t33 * t23;
-    let t44: T = t36 * t24;
-    let t45: T = t43 + t44;
-    let t46: T = t13 * t9;
-    let t47: T = t46 * t13;
-    let t48: T = t39 + t47;
-    let t49: T = t46 * t14;
-    let t50: T = t42 + t49;
-    let t51: T = t14 * t9;
-    let t52: T = t51 * t14;
-    let t53: T = t45 + t52;
-    let t54: T = T::literal(0.1, 0.1);
-    let t55: T = T::literal(2.0, 2.0);
-    let t56: T = T::literal(6.0, 6.0);
-    let t57: T = t54 / t55;
-    let t58: T = t54 / t56;
-    let t59: T = -t20;
-    let t60: T = T::literal(-1.0, -1.0);
+    let t21: T = t16 * t16;
+    let t22: T = t21 * t12;
+    let t23: T = t6 - t13;
+    let t24: T = -t13;
+    let t25: T = -t14;
+    let t26: T = t6 - t14;
+    let t27: T = t23 * cov0;
+    let t28: T = t24 * cov1;
+    let t29: T = t27 + t28;
+    let t30: T = t23 * cov1;
+    let t31: T = t24 * cov2;
+    let t32: T = t30 + t31;
+    let t33: T = t25 * cov0;
+    let t34: T = t26 * cov1;
+    let t35: T = t33 + t34;
+    let t36: T = t25 * cov1;
+    let t37: T = t26 * cov2;
+    let t38: T = t36 + t37;
+    let t39: T = t29 * t23;
+    let t40: T = t32 * t24;
+    let t41: T = t39 + t40;
+    let t42: T = t29 * t25;
+    let t43: T = t32 * t26;
+    let t44: T = t42 + t43;
+    let t45: T = t35 * t25;
+    let t46: T = t38 * t26;
+    let t47: T = t45 + t46;
+    let t48: T = t13 * t9;
+    let t49: T = t48 * t13;
+    let t50: T = t41 + t49;
+    let t51: T = t48 * t14;
+    let t52: T = t44 + t51;
+    let t53: T = t14 * t9;
+    let t54: T = t53 * t14;
+    let t55: T = t47 + t54;
+    let t56: T = T::literal(0.1, 0.1);
+    let t57: T = T::literal(2.0, 2.0);
+    let t58: T = T::literal(6.0, 6.0);
+    let t59: T = t56 / t57;
+    let t60: T = t56 / t58;
+    let t61: T = -t20;
+    let t62: T = T::literal(-1.0, -1.0);
     let p_a: T = T::literal(parameters::a.0, parameters::a.1);
-    let t62: T = p_a * t18;
+    let t64: T = p_a * t18;
     let p_b: T = T::literal(parameters::b.0, parameters::b.1);
-    let t64: T = t18 * t18;
-    let t65: T = p_b - t64;
-    let t66: T = t65 * t20;
-    let t67: T = t62 + t66;
-    let t68: T = t55 * t18;
-    let t69: T = -t68;
-    let t70: T = t69 * t20;
-    let t71: T = p_a + t70;
-    let t72: T = t57 * t59;
-    let t73: T = t18 + t72;
-    let t74: T = t57 * t67;
-    let t75: T = t20 + t74;
-    let t76: T = -t57;
-    let t77: T = t57 * t71;
-    let t78: T = t57 * t65;
-    let t79: T = t6 + t78;
-    let t80: T = -t75;
-    let t81: T = p_a * t73;
-    let t82: T = t73 * t73;
-    let t83: T = p_b - t82;
-    let t84: T = t83 * t75;
-    let t85: T = t81 + t84;
-    let t86: T = t55 * t73;
-    let t87: T = -t86;
-    let t88: T = t87 * t75;
-    let t89: T = p_a + t88;
-    let t90: T = -t77;
-    let t91: T = -t79;
-    let t92: T = t83 * t77;
-    let t93: T = t89 + t92;
-    let t94: T = t89 * t76;
-    let t95: T = t83 * t79;
-    let t96: T = t94 + t95;
-    let t97: T = t57 * t80;
-    let t98: T = t18 + t97;
-    let t99: T = t57 * t85;
-    let t100: T = t20 + t99;
-    let t101: T = t57 * t90;
-    let t102: T = t6 + t101;
-    let t103: T = t57 * t91;
-    let t104: T = t57 * t93;
-    let t105: T = t57 * t96;
-    let t106: T = t6 + t105;
-    let t107: T = -t100;
-    let t108: T = p_a * t98;
-    let t109: T = t98 * t98;
-    let t110: T = p_b - t109;
-    let t111: T = t110 * t100;
-    let t112: T = t108 + t111;
-    let t113: T = t55 * t98;
-    let t114: T = -t113;
-    let t115: T = t114 * t100;
-    let t116: T = p_a + t115;
-    let t117: T = -t104;
-    let t118: T = -t106;
-    let t119: T = t116 * t102;
-    let t120: T = t110 * t104;
-    let t121: T = t119 + t120;
-    let t122: T = t116 * t103;
-    let t123: T = t110 * t106;
-    let t124: T = t122 + t123;
-    let t125: T = t54 * t107;
-    let t126: T = t18 + t125;
-    let t127: T = t54 * t112;
-    let t128: T = t20 + t127;
-    let t129: T = t54 * t117;
-    let t130: T = t6 + t129;
-    let t131: T = t54 * t118;
-    let t132: T = t54 * t121;
-    let t133: T = t54 * t124;
-    let t134: T = t6 + t133;
-    let t135: T = -t128;
-    let t136: T = p_a * t126;
-    let t137: T = t126 * t126;
-    let t138: T = p_b - t137;
-    let t139: T = t138 * t128;
-    let t140: T = t136 + t139;
-    let t141: T = t55 * t126;
-    let t142: T = -t141;
-    let t143: T = t142 * t128;
-    let t144: T = p_a + t143;
-    let t145: T = -t132;
-    let t146: T = -t134;
-    let t147: T = t144 * t130;
-    let t148: T = t138 * t132;
-    let t149: T = t147 + t148;
-    let t150: T = t144 * t131;
-    let t151: T = t138 * t134;
-    let t152: T = t150 + t151;
-    let t153: T = t80 + t107;
-    let t154: T = t55 * t153;
-    let t155: T = t59 + t154;
-    let t156: T = t155 + t135;
-    let t157: T = t58 * t156;
-    let t158: T = t18 + t157;
-    let t159: T = t85 + t112;
-    let t160: T = t55 * t159;
-    let t161: T = t67 + t160;
-    let t162: T = t161 + t140;
-    let t163: T = t58 * t162;
-    let t164: T = t20 + t163;
-    let t165: T = t90 + t117;
-    let t166: T = t55 * t165;
-    let t167: T = t166 + t145;
-    let t168: T = t58 * t167;
-    let t169: T = t6 + t168;
-    let t170: T = t91 + t118;
-    let t171: T = t55 * t170;
-    let t172: T = t60 + t171;
-    let t173: T = t172 + t146;
-    let t174: T = t58 * t173;
-    let t175: T = t93 + t121;
-    let t176: T = t55 * t175;
-    let t177: T = t71 + t176;
-    let t178: T = t177 + t149;
-    let t179: T = t58 * t178;
-    let t180: T = t96 + t124;
-    let t181: T = t55 * t180;
-    let t182: T = t65 + t181;
-    let t183: T = t182 + t152;
-    let t184: T = t58 * t183;
-    let t185: T = t6 + t184;
-    let t186: T = t169 * t48;
-    let t187: T = t174 * t50;
-    let t188: T = t186 + t187;
-    let t189: T = t169 * t50;
-    let t190: T = t174 * t53;
-    let t191: T = t189 + t190;
-    let t192: T = t179 * t48;
-    let t193: T = t185 * t50;
-    let t194: T = t192 + t193;
-    let t195: T = t179 * t50;
-    let t196: T = t185 * t53;
-    let t197: T = t195 + t196;
-    let t198: T = t188 * t169;
-    let t199: T = t191 * t174;
-    let t200: T = t198 + t199;
-    let t201: T = t188 * t179;
-    let t202: T = t191 * t185;
-    let t203: T = t201 + t202;
-    let t204: T = t194 * t179;
-    let t205: T = t197 * t185;
-    let t206: T = t204 + t205;
-    let t207: T = T::literal(0.0028291305, 0.0028291305119613097);
-    let t208: T = t200 + t207;
-    let t209: T = T::literal(0.033209372, 0.03320937213198135);
-    let t210: T = t206 + t209;
-    ([t18, t20], [t158, t164], [t208, t203, t210])
+    let t66: T = t18 * t18;
+    let t67: T = p_b - t66;
+    let t68: T = t67 * t20;
+    let t69: T = t64 + t68;
+    let t70: T = t57 * t18;
+    let t71: T = -t70;
+    let t72: T = t71 * t20;
+    let t73: T = p_a + t72;
+    let t74: T = t59 * t61;
+    let t75: T = t18 + t74;
+    let t76: T = t59 * t69;
+    let t77: T = t20 + t76;
+    let t78: T = -t59;
+    let t79: T = t59 * t73;
+    let t80: T = t59 * t67;
+    let t81: T = t6 + t80;
+    let t82: T = -t77;
+    let t83: T = p_a * t75;
+    let t84: T = t75 * t75;
+    let t85: T = p_b - t84;
+    let t86: T = t85 * t77;
+    let t87: T = t83 + t86;
+    let t88: T = t57 * t75;
+    let t89: T = -t88;
+    let t90: T = t89 * t77;
+    let t91: T = p_a + t90;
+    let t92: T = -t79;
+    let t93: T = -t81;
+    let t94: T = t85 * t79;
+    let t95: T = t91 + t94;
+    let t96: T = t91 * t78;
+    let t97: T = t85 * t81;
+    let t98: T = t96 + t97;
+    let t99: T = t59 * t82;
+    let t100: T = t18 + t99;
+    let t101: T = t59 * t87;
+    let t102: T = t20 + t101;
+    let t103: T = t59 * t92;
+    let t104: T = t6 + t103;
+    let t105: T = t59 * t93;
+    let t106: T = t59 * t95;
+    let t107: T = t59 * t98;
+    let t108: T = t6 + t107;
+    let t109: T = -t102;
+    let t110: T = p_a * t100;
+    let t111: T = t100 * t100;
+    let t112: T = p_b - t111;
+    let t113: T = t112 * t102;
+    let t114: T = t110 + t113;
+    let t115: T = t57 * t100;
+    let t116: T = -t115;
+    let t117: T = t116 * t102;
+    let t118: T = p_a + t117;
+    let t119: T = -t106;
+    let t120: T = -t108;
+    let t121: T = t118 * t104;
+    let t122: T = t112 * t106;
+    let t123: T = t121 + t122;
+    let t124: T = t118 * t105;
+    let t125: T = t112 * t108;
+    let t126: T = t124 + t125;
+    let t127: T = t56 * t109;
+    let t128: T = t18 + t127;
+    let t129: T = t56 * t114;
+    let t130: T = t20 + t129;
+    let t131: T = t56 * t119;
+    let t132: T = t6 + t131;
+    let t133: T = t56 * t120;
+    let t134: T = t56 * t123;
+    let t135: T = t56 * t126;
+    let t136: T = t6 + t135;
+    let t137: T = -t130;
+    let t138: T = p_a * t128;
+    let t139: T = t128 * t128;
+    let t140: T = p_b - t139;
+    let t141: T = t140 * t130;
+    let t142: T = t138 + t141;
+    let t143: T = t57 * t128;
+    let t144: T = -t143;
+    let t145: T = t144 * t130;
+    let t146: T = p_a + t145;
+    let t147: T = -t134;
+    let t148: T = -t136;
+    let t149: T = t146 * t132;
+    let t150: T = t140 * t134;
+    let t151: T = t149 + t150;
+    let t152: T = t146 * t133;
+    let t153: T = t140 * t136;
+    let t154: T = t152 + t153;
+    let t155: T = t82 + t109;
+    let t156: T = t57 * t155;
+    let t157: T = t61 + t156;
+    let t158: T = t157 + t137;
+    let t159: T = t60 * t158;
+    let t160: T = t18 + t159;
+    let t161: T = t87 + t114;
+    let t162: T = t57 * t161;
+    let t163: T = t69 + t162;
+    let t164: T = t163 + t142;
+    let t165: T = t60 * t164;
+    let t166: T = t20 + t165;
+    let t167: T = t92 + t119;
+    let t168: T = t57 * t167;
+    let t169: T = t168 + t147;
+    let t170: T = t60 * t169;
+    let t171: T = t6 + t170;
+    let t172: T = t93 + t120;
+    let t173: T = t57 * t172;
+    let t174: T = t62 + t173;
+    let t175: T = t174 + t148;
+    let t176: T = t60 * t175;
+    let t177: T = t95 + t123;
+    let t178: T = t57 * t177;
+    let t179: T = t73 + t178;
+    let t180: T = t179 + t151;
+    let t181: T = t60 * t180;
+    let t182: T = t98 + t126;
+    let t183: T = t57 * t182;
+    let t184: T = t67 + t183;
+    let t185: T = t184 + t154;
+    let t186: T = t60 * t185;
+    let t187: T = t6 + t186;
+    let t188: T = t171 * t50;
+    let t189: T = t176 * t52;
+    let t190: T = t188 + t189;
+    let t191: T = t171 * t52;
+    let t192: T = t176 * t55;
+    let t193: T = t191 + t192;
+    let t194: T = t181 * t50;
+    let t195: T = t187 * t52;
+    let t196: T = t194 + t195;
+    let t197: T = t181 * t52;
+    let t198: T = t187 * t55;
+    let t199: T = t197 + t198;
+    let t200: T = t190 * t171;
+    let t201: T = t193 * t176;
+    let t202: T = t200 + t201;
+    let t203: T = t190 * t181;
+    let t204: T = t193 * t187;
+    let t205: T = t203 + t204;
+    let t206: T = t196 * t181;
+    let t207: T = t199 * t187;
+    let t208: T = t206 + t207;
+    let t209: T = T::literal(0.0028291305, 0.0028291305119613097);
+    let t210: T = t202 + t209;
+    let t211: T = T::literal(0.033209372, 0.03320937213198135);
+    let t212: T = t208 + t211;
+    ([t18, t20], [t160, t166], [t210, t205, t212], t22)
 }
 
 /// One sample without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`.
@@ -1021,12 +1038,16 @@ pub const UKF_Q: [f64; STATES] = [0.0001179523668624245, 0.03254314031724534];
 ///
 /// A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u` changes
 /// nothing; a sample whose result is not finite is not taken.
+/// Watched ([`firmware::watch`]): when the mean of its normalised innovations squared over about
+/// 10 samples exceeds 1024 times the number of outputs, it restarts from its start.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ukf<T = f32> {
     /// `x̂`: after a sample, the prediction to the next one.
     x: [T; STATES],
     /// The upper triangle of `P`.
     p: [T; COVARIANCE],
+    /// The watched mean of the normalised innovations squared ([`firmware::watch`]).
+    chi: T,
 }
 
 impl<T: Scalar + Maths> Default for Ukf<T> {
@@ -1041,6 +1062,7 @@ impl<T: Scalar + Maths> Ukf<T> {
         Ukf {
             x: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
             p: [T::literal(1.8518863, 1.8518863171015736), T::literal(0.0, 0.0), T::literal(22.292301, 22.292302128414953)],
+            chi: T::literal(1.0, 1.0),
         }
     }
 
@@ -1055,7 +1077,7 @@ impl<T: Scalar + Maths> Ukf<T> {
     }
 
     /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it, or restarts
-    /// from the start when its step is not finite (see the type's docs): the rule every filter follows
+    /// from the start when its step is not finite or its innovations stay implausible (see the type's docs): the rule every filter follows
     /// ([`firmware::rules::filter_sample`]) over this filter's two written-out samples. The same
     /// operations run for every accepted sample.
     pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::rules::Refused> {
@@ -1064,18 +1086,26 @@ impl<T: Scalar + Maths> Ukf<T> {
             u.iter().all(|v| v.is_finite()),
             y.iter().all(|v| v.is_finite()),
             |filter| {
-                let (estimate, x, p) = ukf_measured(&filter.x, &filter.p, y, u);
-                (estimate, Ukf { x, p })
+                let (estimate, x, p, nis) = ukf_measured(&filter.x, &filter.p, y, u);
+                let chi = firmware::watch::watched(filter.chi, nis, T::literal(0.1, 0.1));
+                (estimate, Ukf { x, p, chi })
             },
             |filter| {
                 let (x, p) = ukf_unmeasured(&filter.x, &filter.p, u);
-                Ukf { x, p }
+                Ukf { x, p, chi: filter.chi }
             },
-            |filter| finite(&filter.x, &filter.p),
+            |filter| finite(&filter.x, &filter.p) && firmware::watch::plausible(filter.chi, T::literal(1024.0, 1024.0)),
             Self::new,
         )
     }
 }
+
+/// The UKF's χ² watch as `gen` chose it on the tuning runs ([`firmware::watch`]): the window `W`
+/// over which the mean of its normalised innovations squared is kept, in samples.
+pub const UKF_WATCH_WINDOW: usize = 10;
+/// See [`UKF_WATCH_WINDOW`]: the threshold `τ` (no unit) above which, times the number of
+/// outputs, the mean restarts the filter; `f64::INFINITY`: not watched.
+pub const UKF_WATCH_THRESHOLD: f64 = 1024.0;
 
 /// A fresh UKF in `f32`, as the chip runs it.
 pub fn ukf() -> Ukf {
@@ -1090,7 +1120,7 @@ pub fn ukf() -> Ukf {
 pub type UkfBoxObserver = firmware::FilterObserver<f32, Ukf, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for Ukf<f32> {
-    const FRESH: Self = Ukf { x: [0.0, 0.0], p: [1.8518863, 0.0, 22.292301] };
+    const FRESH: Self = Ukf { x: [0.0, 0.0], p: [1.8518863, 0.0, 22.292301], chi: 1.0 };
 
     #[inline(always)]
     fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {
@@ -1118,9 +1148,10 @@ pub fn ukf_observer_estimate(observer: &UkfBoxObserver) -> Option<[Estimate<f32>
     observer.estimate()
 }
 
-/// One UKF sample with its measurement: `(x̂(k|k), x⁺, P⁺)` from `(x, P)`, written out by `gen`.
+/// One UKF sample with its measurement: `(x̂(k|k), x⁺, P⁺, ε)` from `(x, P)`, `ε` the normalised
+/// innovation squared ([`firmware::watch`]), written out by `gen`.
 #[allow(unused_variables, non_snake_case, clippy::type_complexity, clippy::approx_constant)]
-fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE]) {
+fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T; OUTPUTS], u: &[T; INPUTS]) -> ([T; STATES], [T; STATES], [T; COVARIANCE], T) {
     let x_x1: T = x[0];
     let x_x2: T = x[1];
     let cov0: T = p[0];
@@ -1214,279 +1245,281 @@ fn ukf_measured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], y: &[T;
     let t90: T = x_x1 + t89;
     let t91: T = t86 * t88;
     let t92: T = x_x2 + t91;
-    let t93: T = t68 * t84;
-    let t94: T = cov0 - t93;
-    let t95: T = t68 * t86;
-    let t96: T = cov1 - t95;
-    let t97: T = t76 * t86;
-    let t98: T = cov2 - t97;
-    let t99: T = Maths::abs(t94);
-    let t100: T = t6 * t99;
-    let t101: T = t100 + t9;
-    let t102: T = firmware::emitted::at_least(t94, t101);
-    let t103: T = Maths::sqrt(t102);
-    let t104: T = t5 / t103;
-    let t105: T = t96 * t104;
-    let t106: T = t105 * t105;
-    let t107: T = t98 - t106;
-    let t108: T = Maths::abs(t98);
-    let t109: T = t6 * t108;
-    let t110: T = t109 + t9;
-    let t111: T = firmware::emitted::at_least(t107, t110);
-    let t112: T = Maths::sqrt(t111);
-    let t113: T = t22 * t103;
-    let t114: T = t90 + t113;
+    let t93: T = t88 * t82;
+    let t94: T = t93 * t93;
+    let t95: T = t68 * t84;
+    let t96: T = cov0 - t95;
+    let t97: T = t68 * t86;
+    let t98: T = cov1 - t97;
+    let t99: T = t76 * t86;
+    let t100: T = cov2 - t99;
+    let t101: T = Maths::abs(t96);
+    let t102: T = t6 * t101;
+    let t103: T = t102 + t9;
+    let t104: T = firmware::emitted::at_least(t96, t103);
+    let t105: T = Maths::sqrt(t104);
+    let t106: T = t5 / t105;
+    let t107: T = t98 * t106;
+    let t108: T = t107 * t107;
+    let t109: T = t100 - t108;
+    let t110: T = Maths::abs(t100);
+    let t111: T = t6 * t110;
+    let t112: T = t111 + t9;
+    let t113: T = firmware::emitted::at_least(t109, t112);
+    let t114: T = Maths::sqrt(t113);
     let t115: T = t22 * t105;
-    let t116: T = t92 + t115;
-    let t117: T = t22 * t112;
+    let t116: T = t90 + t115;
+    let t117: T = t22 * t107;
     let t118: T = t92 + t117;
-    let t119: T = t29 * t103;
-    let t120: T = t90 + t119;
+    let t119: T = t22 * t114;
+    let t120: T = t92 + t119;
     let t121: T = t29 * t105;
-    let t122: T = t92 + t121;
-    let t123: T = t29 * t112;
+    let t122: T = t90 + t121;
+    let t123: T = t29 * t107;
     let t124: T = t92 + t123;
-    let t125: T = T::literal(0.1, 0.1);
-    let t126: T = T::literal(2.0, 2.0);
-    let t127: T = T::literal(6.0, 6.0);
-    let t128: T = t125 / t126;
-    let t129: T = t125 / t127;
-    let t130: T = -t116;
+    let t125: T = t29 * t114;
+    let t126: T = t92 + t125;
+    let t127: T = T::literal(0.1, 0.1);
+    let t128: T = T::literal(2.0, 2.0);
+    let t129: T = T::literal(6.0, 6.0);
+    let t130: T = t127 / t128;
+    let t131: T = t127 / t129;
+    let t132: T = -t118;
     let p_a: T = T::literal(parameters::a.0, parameters::a.1);
-    let t132: T = p_a * t114;
+    let t134: T = p_a * t116;
     let p_b: T = T::literal(parameters::b.0, parameters::b.1);
-    let t134: T = t114 * t114;
-    let t135: T = p_b - t134;
-    let t136: T = t135 * t116;
-    let t137: T = t132 + t136;
-    let t138: T = t128 * t130;
-    let t139: T = t114 + t138;
-    let t140: T = t128 * t137;
+    let t136: T = t116 * t116;
+    let t137: T = p_b - t136;
+    let t138: T = t137 * t118;
+    let t139: T = t134 + t138;
+    let t140: T = t130 * t132;
     let t141: T = t116 + t140;
-    let t142: T = -t141;
-    let t143: T = p_a * t139;
-    let t144: T = t139 * t139;
-    let t145: T = p_b - t144;
-    let t146: T = t145 * t141;
-    let t147: T = t143 + t146;
-    let t148: T = t128 * t142;
-    let t149: T = t114 + t148;
-    let t150: T = t128 * t147;
+    let t142: T = t130 * t139;
+    let t143: T = t118 + t142;
+    let t144: T = -t143;
+    let t145: T = p_a * t141;
+    let t146: T = t141 * t141;
+    let t147: T = p_b - t146;
+    let t148: T = t147 * t143;
+    let t149: T = t145 + t148;
+    let t150: T = t130 * t144;
     let t151: T = t116 + t150;
-    let t152: T = -t151;
-    let t153: T = p_a * t149;
-    let t154: T = t149 * t149;
-    let t155: T = p_b - t154;
-    let t156: T = t155 * t151;
-    let t157: T = t153 + t156;
-    let t158: T = t125 * t152;
-    let t159: T = t114 + t158;
-    let t160: T = t125 * t157;
+    let t152: T = t130 * t149;
+    let t153: T = t118 + t152;
+    let t154: T = -t153;
+    let t155: T = p_a * t151;
+    let t156: T = t151 * t151;
+    let t157: T = p_b - t156;
+    let t158: T = t157 * t153;
+    let t159: T = t155 + t158;
+    let t160: T = t127 * t154;
     let t161: T = t116 + t160;
-    let t162: T = -t161;
-    let t163: T = p_a * t159;
-    let t164: T = t159 * t159;
-    let t165: T = p_b - t164;
-    let t166: T = t165 * t161;
-    let t167: T = t163 + t166;
-    let t168: T = t142 + t152;
-    let t169: T = t126 * t168;
-    let t170: T = t130 + t169;
-    let t171: T = t170 + t162;
-    let t172: T = t129 * t171;
-    let t173: T = t114 + t172;
-    let t174: T = t147 + t157;
-    let t175: T = t126 * t174;
-    let t176: T = t137 + t175;
-    let t177: T = t176 + t167;
-    let t178: T = t129 * t177;
-    let t179: T = t116 + t178;
-    let t180: T = -t118;
-    let t181: T = p_a * t90;
-    let t182: T = t90 * t90;
-    let t183: T = p_b - t182;
-    let t184: T = t183 * t118;
-    let t185: T = t181 + t184;
-    let t186: T = t128 * t180;
-    let t187: T = t90 + t186;
-    let t188: T = t128 * t185;
-    let t189: T = t118 + t188;
-    let t190: T = -t189;
-    let t191: T = p_a * t187;
-    let t192: T = t187 * t187;
-    let t193: T = p_b - t192;
-    let t194: T = t193 * t189;
-    let t195: T = t191 + t194;
-    let t196: T = t128 * t190;
-    let t197: T = t90 + t196;
-    let t198: T = t128 * t195;
-    let t199: T = t118 + t198;
-    let t200: T = -t199;
-    let t201: T = p_a * t197;
-    let t202: T = t197 * t197;
-    let t203: T = p_b - t202;
-    let t204: T = t203 * t199;
-    let t205: T = t201 + t204;
-    let t206: T = t125 * t200;
-    let t207: T = t90 + t206;
-    let t208: T = t125 * t205;
-    let t209: T = t118 + t208;
-    let t210: T = -t209;
-    let t211: T = p_a * t207;
-    let t212: T = t207 * t207;
-    let t213: T = p_b - t212;
-    let t214: T = t213 * t209;
-    let t215: T = t211 + t214;
-    let t216: T = t190 + t200;
-    let t217: T = t126 * t216;
-    let t218: T = t180 + t217;
-    let t219: T = t218 + t210;
-    let t220: T = t129 * t219;
-    let t221: T = t90 + t220;
-    let t222: T = t195 + t205;
-    let t223: T = t126 * t222;
-    let t224: T = t185 + t223;
-    let t225: T = t224 + t215;
-    let t226: T = t129 * t225;
-    let t227: T = t118 + t226;
-    let t228: T = -t122;
-    let t229: T = p_a * t120;
-    let t230: T = t120 * t120;
-    let t231: T = p_b - t230;
-    let t232: T = t231 * t122;
-    let t233: T = t229 + t232;
-    let t234: T = t128 * t228;
-    let t235: T = t120 + t234;
-    let t236: T = t128 * t233;
+    let t162: T = t127 * t159;
+    let t163: T = t118 + t162;
+    let t164: T = -t163;
+    let t165: T = p_a * t161;
+    let t166: T = t161 * t161;
+    let t167: T = p_b - t166;
+    let t168: T = t167 * t163;
+    let t169: T = t165 + t168;
+    let t170: T = t144 + t154;
+    let t171: T = t128 * t170;
+    let t172: T = t132 + t171;
+    let t173: T = t172 + t164;
+    let t174: T = t131 * t173;
+    let t175: T = t116 + t174;
+    let t176: T = t149 + t159;
+    let t177: T = t128 * t176;
+    let t178: T = t139 + t177;
+    let t179: T = t178 + t169;
+    let t180: T = t131 * t179;
+    let t181: T = t118 + t180;
+    let t182: T = -t120;
+    let t183: T = p_a * t90;
+    let t184: T = t90 * t90;
+    let t185: T = p_b - t184;
+    let t186: T = t185 * t120;
+    let t187: T = t183 + t186;
+    let t188: T = t130 * t182;
+    let t189: T = t90 + t188;
+    let t190: T = t130 * t187;
+    let t191: T = t120 + t190;
+    let t192: T = -t191;
+    let t193: T = p_a * t189;
+    let t194: T = t189 * t189;
+    let t195: T = p_b - t194;
+    let t196: T = t195 * t191;
+    let t197: T = t193 + t196;
+    let t198: T = t130 * t192;
+    let t199: T = t90 + t198;
+    let t200: T = t130 * t197;
+    let t201: T = t120 + t200;
+    let t202: T = -t201;
+    let t203: T = p_a * t199;
+    let t204: T = t199 * t199;
+    let t205: T = p_b - t204;
+    let t206: T = t205 * t201;
+    let t207: T = t203 + t206;
+    let t208: T = t127 * t202;
+    let t209: T = t90 + t208;
+    let t210: T = t127 * t207;
+    let t211: T = t120 + t210;
+    let t212: T = -t211;
+    let t213: T = p_a * t209;
+    let t214: T = t209 * t209;
+    let t215: T = p_b - t214;
+    let t216: T = t215 * t211;
+    let t217: T = t213 + t216;
+    let t218: T = t192 + t202;
+    let t219: T = t128 * t218;
+    let t220: T = t182 + t219;
+    let t221: T = t220 + t212;
+    let t222: T = t131 * t221;
+    let t223: T = t90 + t222;
+    let t224: T = t197 + t207;
+    let t225: T = t128 * t224;
+    let t226: T = t187 + t225;
+    let t227: T = t226 + t217;
+    let t228: T = t131 * t227;
+    let t229: T = t120 + t228;
+    let t230: T = -t124;
+    let t231: T = p_a * t122;
+    let t232: T = t122 * t122;
+    let t233: T = p_b - t232;
+    let t234: T = t233 * t124;
+    let t235: T = t231 + t234;
+    let t236: T = t130 * t230;
     let t237: T = t122 + t236;
-    let t238: T = -t237;
-    let t239: T = p_a * t235;
-    let t240: T = t235 * t235;
-    let t241: T = p_b - t240;
-    let t242: T = t241 * t237;
-    let t243: T = t239 + t242;
-    let t244: T = t128 * t238;
-    let t245: T = t120 + t244;
-    let t246: T = t128 * t243;
+    let t238: T = t130 * t235;
+    let t239: T = t124 + t238;
+    let t240: T = -t239;
+    let t241: T = p_a * t237;
+    let t242: T = t237 * t237;
+    let t243: T = p_b - t242;
+    let t244: T = t243 * t239;
+    let t245: T = t241 + t244;
+    let t246: T = t130 * t240;
     let t247: T = t122 + t246;
-    let t248: T = -t247;
-    let t249: T = p_a * t245;
-    let t250: T = t245 * t245;
-    let t251: T = p_b - t250;
-    let t252: T = t251 * t247;
-    let t253: T = t249 + t252;
-    let t254: T = t125 * t248;
-    let t255: T = t120 + t254;
-    let t256: T = t125 * t253;
+    let t248: T = t130 * t245;
+    let t249: T = t124 + t248;
+    let t250: T = -t249;
+    let t251: T = p_a * t247;
+    let t252: T = t247 * t247;
+    let t253: T = p_b - t252;
+    let t254: T = t253 * t249;
+    let t255: T = t251 + t254;
+    let t256: T = t127 * t250;
     let t257: T = t122 + t256;
-    let t258: T = -t257;
-    let t259: T = p_a * t255;
-    let t260: T = t255 * t255;
-    let t261: T = p_b - t260;
-    let t262: T = t261 * t257;
-    let t263: T = t259 + t262;
-    let t264: T = t238 + t248;
-    let t265: T = t126 * t264;
-    let t266: T = t228 + t265;
-    let t267: T = t266 + t258;
-    let t268: T = t129 * t267;
-    let t269: T = t120 + t268;
-    let t270: T = t243 + t253;
-    let t271: T = t126 * t270;
-    let t272: T = t233 + t271;
-    let t273: T = t272 + t263;
-    let t274: T = t129 * t273;
-    let t275: T = t122 + t274;
-    let t276: T = -t124;
-    let t277: T = t183 * t124;
-    let t278: T = t181 + t277;
-    let t279: T = t128 * t276;
-    let t280: T = t90 + t279;
-    let t281: T = t128 * t278;
-    let t282: T = t124 + t281;
-    let t283: T = -t282;
-    let t284: T = p_a * t280;
-    let t285: T = t280 * t280;
-    let t286: T = p_b - t285;
-    let t287: T = t286 * t282;
-    let t288: T = t284 + t287;
-    let t289: T = t128 * t283;
-    let t290: T = t90 + t289;
-    let t291: T = t128 * t288;
-    let t292: T = t124 + t291;
-    let t293: T = -t292;
-    let t294: T = p_a * t290;
-    let t295: T = t290 * t290;
-    let t296: T = p_b - t295;
-    let t297: T = t296 * t292;
-    let t298: T = t294 + t297;
-    let t299: T = t125 * t293;
-    let t300: T = t90 + t299;
-    let t301: T = t125 * t298;
-    let t302: T = t124 + t301;
-    let t303: T = -t302;
-    let t304: T = p_a * t300;
-    let t305: T = t300 * t300;
-    let t306: T = p_b - t305;
-    let t307: T = t306 * t302;
-    let t308: T = t304 + t307;
-    let t309: T = t283 + t293;
-    let t310: T = t126 * t309;
-    let t311: T = t276 + t310;
-    let t312: T = t311 + t303;
-    let t313: T = t129 * t312;
-    let t314: T = t90 + t313;
-    let t315: T = t288 + t298;
-    let t316: T = t126 * t315;
-    let t317: T = t278 + t316;
-    let t318: T = t317 + t308;
-    let t319: T = t129 * t318;
-    let t320: T = t124 + t319;
-    let t321: T = t173 + t221;
-    let t322: T = t321 + t269;
-    let t323: T = t322 + t314;
-    let t324: T = t40 * t323;
-    let t325: T = t179 + t227;
-    let t326: T = t325 + t275;
-    let t327: T = t326 + t320;
-    let t328: T = t40 * t327;
-    let t329: T = t173 - t324;
-    let t330: T = t179 - t328;
-    let t331: T = t221 - t324;
-    let t332: T = t227 - t328;
-    let t333: T = t269 - t324;
-    let t334: T = t275 - t328;
-    let t335: T = t314 - t324;
-    let t336: T = t320 - t328;
-    let t337: T = t329 * t329;
-    let t338: T = t331 * t331;
-    let t339: T = t337 + t338;
+    let t258: T = t127 * t255;
+    let t259: T = t124 + t258;
+    let t260: T = -t259;
+    let t261: T = p_a * t257;
+    let t262: T = t257 * t257;
+    let t263: T = p_b - t262;
+    let t264: T = t263 * t259;
+    let t265: T = t261 + t264;
+    let t266: T = t240 + t250;
+    let t267: T = t128 * t266;
+    let t268: T = t230 + t267;
+    let t269: T = t268 + t260;
+    let t270: T = t131 * t269;
+    let t271: T = t122 + t270;
+    let t272: T = t245 + t255;
+    let t273: T = t128 * t272;
+    let t274: T = t235 + t273;
+    let t275: T = t274 + t265;
+    let t276: T = t131 * t275;
+    let t277: T = t124 + t276;
+    let t278: T = -t126;
+    let t279: T = t185 * t126;
+    let t280: T = t183 + t279;
+    let t281: T = t130 * t278;
+    let t282: T = t90 + t281;
+    let t283: T = t130 * t280;
+    let t284: T = t126 + t283;
+    let t285: T = -t284;
+    let t286: T = p_a * t282;
+    let t287: T = t282 * t282;
+    let t288: T = p_b - t287;
+    let t289: T = t288 * t284;
+    let t290: T = t286 + t289;
+    let t291: T = t130 * t285;
+    let t292: T = t90 + t291;
+    let t293: T = t130 * t290;
+    let t294: T = t126 + t293;
+    let t295: T = -t294;
+    let t296: T = p_a * t292;
+    let t297: T = t292 * t292;
+    let t298: T = p_b - t297;
+    let t299: T = t298 * t294;
+    let t300: T = t296 + t299;
+    let t301: T = t127 * t295;
+    let t302: T = t90 + t301;
+    let t303: T = t127 * t300;
+    let t304: T = t126 + t303;
+    let t305: T = -t304;
+    let t306: T = p_a * t302;
+    let t307: T = t302 * t302;
+    let t308: T = p_b - t307;
+    let t309: T = t308 * t304;
+    let t310: T = t306 + t309;
+    let t311: T = t285 + t295;
+    let t312: T = t128 * t311;
+    let t313: T = t278 + t312;
+    let t314: T = t313 + t305;
+    let t315: T = t131 * t314;
+    let t316: T = t90 + t315;
+    let t317: T = t290 + t300;
+    let t318: T = t128 * t317;
+    let t319: T = t280 + t318;
+    let t320: T = t319 + t310;
+    let t321: T = t131 * t320;
+    let t322: T = t126 + t321;
+    let t323: T = t175 + t223;
+    let t324: T = t323 + t271;
+    let t325: T = t324 + t316;
+    let t326: T = t40 * t325;
+    let t327: T = t181 + t229;
+    let t328: T = t327 + t277;
+    let t329: T = t328 + t322;
+    let t330: T = t40 * t329;
+    let t331: T = t175 - t326;
+    let t332: T = t181 - t330;
+    let t333: T = t223 - t326;
+    let t334: T = t229 - t330;
+    let t335: T = t271 - t326;
+    let t336: T = t277 - t330;
+    let t337: T = t316 - t326;
+    let t338: T = t322 - t330;
+    let t339: T = t331 * t331;
     let t340: T = t333 * t333;
     let t341: T = t339 + t340;
     let t342: T = t335 * t335;
     let t343: T = t341 + t342;
-    let t344: T = t40 * t343;
-    let t345: T = t329 * t330;
-    let t346: T = t331 * t332;
-    let t347: T = t345 + t346;
+    let t344: T = t337 * t337;
+    let t345: T = t343 + t344;
+    let t346: T = t40 * t345;
+    let t347: T = t331 * t332;
     let t348: T = t333 * t334;
     let t349: T = t347 + t348;
     let t350: T = t335 * t336;
     let t351: T = t349 + t350;
-    let t352: T = t40 * t351;
-    let t353: T = t330 * t330;
-    let t354: T = t332 * t332;
-    let t355: T = t353 + t354;
+    let t352: T = t337 * t338;
+    let t353: T = t351 + t352;
+    let t354: T = t40 * t353;
+    let t355: T = t332 * t332;
     let t356: T = t334 * t334;
     let t357: T = t355 + t356;
     let t358: T = t336 * t336;
     let t359: T = t357 + t358;
-    let t360: T = t40 * t359;
-    let t361: T = T::literal(0.00011795237, 0.0001179523668624245);
-    let t362: T = t344 + t361;
-    let t363: T = T::literal(0.03254314, 0.03254314031724534);
-    let t364: T = t360 + t363;
-    ([t90, t92], [t324, t328], [t362, t352, t364])
+    let t360: T = t338 * t338;
+    let t361: T = t359 + t360;
+    let t362: T = t40 * t361;
+    let t363: T = T::literal(0.00011795237, 0.0001179523668624245);
+    let t364: T = t346 + t363;
+    let t365: T = T::literal(0.03254314, 0.03254314031724534);
+    let t366: T = t362 + t365;
+    ([t90, t92], [t326, t330], [t364, t354, t366], t94)
 }
 
 /// One UKF sample without its measurement (refused): `(x⁺, P⁺)` from `(x, P)`, written out by `gen`.
@@ -2031,7 +2064,7 @@ impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, 
         y: &[T; OUTPUTS],
         u: &[T; INPUTS],
     ) -> Option<(([T; STATES], [T; COVARIANCE]), [Estimate<T>; STATES])> {
-        let (estimate, x, p) = ekf_measured(&carried.0, &carried.1, y, u);
+        let (estimate, x, p, _) = ekf_measured(&carried.0, &carried.1, y, u);
         let mut inside = [Estimate { value: T::ZERO, saturation: firmware::Saturation::Inside }; STATES];
         for (e, &value) in inside.iter_mut().zip(&estimate) {
             e.value = value;
@@ -2156,7 +2189,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "f0799cf6faf832d167676321c074b082826376e2e3c23b689bc5443f6bd6b555";
+pub const TABLES_SHA256: &str = "1da4b22266e2269f8a1b287e210c747e2d32ca151aa4297f34a76ec0c8f149c8";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

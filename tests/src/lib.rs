@@ -161,6 +161,10 @@ macro_rules! emitted_constants {
                 r: design.model.outputs.iter().map(|o| o.noise_variance).collect(),
                 substeps: design.chip_substeps,
                 h,
+                watch: host::plant::kalman::Watch {
+                    window: $d::EKF_WATCH_WINDOW,
+                    threshold: $d::EKF_WATCH_THRESHOLD,
+                },
             },
         )
     }};

@@ -14,7 +14,7 @@ use firmware::{Ekf, Plant, Rk4};
 
 use crate::data::{DataSet, Rows, Run};
 use crate::observers::lost::Track;
-use crate::plant::kalman::EkfConstants;
+use crate::plant::kalman::{EkfConstants, Watch};
 use crate::plant::{Compiled, Covariance, ModelCode};
 use crate::spec::{Axis, Design, FixedFilter};
 
@@ -176,6 +176,9 @@ fn run_sized<const NX: usize, const NY: usize>(
         std::array::from_fn(|i| code.bounds[i].lower()),
         std::array::from_fn(|i| code.bounds[i].upper()),
     );
+    if let Some((gain, limit)) = constants.watch.constants(NY) {
+        filter = filter.with_watch(gain, limit);
+    }
     let mut estimates = Rows::new(code.dimensions.targets);
     let mut scratch = Vec::new();
     let mut restarts = 0;
@@ -213,6 +216,10 @@ pub fn constants(design: &Design, centre: &[f64], spreads: &[f64], theta: &[f64]
         r: design.model.outputs.iter().map(|o| o.noise_variance).collect(),
         substeps: design.chip_substeps,
         h: design.tau / design.chip_substeps as f64,
+        watch: Watch {
+            window: design.map.horizon,
+            threshold: f64::INFINITY,
+        },
     }
 }
 

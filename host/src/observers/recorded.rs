@@ -191,7 +191,7 @@ impl<'a> Setup<'a> {
         const CHECKED: &str = "Setup::new checked the kind's constants";
         // A kind whose constants are one filter's runs that filter from its start.
         if let (Some(own), Some(filter)) = (constants.filter(self.kind), &self.filter) {
-            return Follower::Box(ekf::BoxStep::new(filter, &own.x0, &own.p0, self.code));
+            return Follower::Box(ekf::BoxStep::new(filter, &own.x0, own, self.code));
         }
         match (self.kind, &self.filter, &self.programs) {
             (ObserverKind::EkfMap, Some(filter), _) => Follower::Started(ekf::StartedStep::new(

@@ -41,12 +41,65 @@ pub struct EkfConstants {
     pub substeps: usize,
     /// Width of one substep, `τ / substeps`.
     pub h: f64,
+    /// The χ² watch on the normalised innovations (`firmware::watch`), for the filters from the box
+    /// centre.
+    #[serde(default)]
+    pub watch: Watch,
+}
+
+/// The χ² watch's constants (`firmware::watch`): the filter restarts when the mean of its normalised
+/// innovations squared over about `window` samples exceeds `threshold` times the number of outputs.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Watch {
+    /// `W`, in samples: the watched mean's gain is `1 / W`.
+    pub window: usize,
+    /// `τ`: `+∞` (`null` in JSON) where the filter is not watched.
+    #[serde(with = "infinite_as_null")]
+    pub threshold: f64,
+}
+
+impl Watch {
+    /// Not watched.
+    pub const OFF: Watch = Watch {
+        window: 1,
+        threshold: f64::INFINITY,
+    };
+
+    /// The gain `1 / W` and the limit `τ m` of a filter with `outputs` outputs; `None` where the
+    /// filter is not watched (`τ = ∞`: the emitted filter has no watch).
+    pub fn constants(&self, outputs: usize) -> Option<(f64, f64)> {
+        self.threshold
+            .is_finite()
+            .then(|| (1.0 / self.window as f64, self.threshold * outputs as f64))
+    }
+}
+
+impl Default for Watch {
+    fn default() -> Self {
+        Watch::OFF
+    }
+}
+
+/// `+∞` as JSON's `null` (JSON has no infinity), and back.
+mod infinite_as_null {
+    pub fn serialize<S: serde::Serializer>(value: &f64, serializer: S) -> Result<S::Ok, S::Error> {
+        match value.is_finite() {
+            true => serializer.serialize_some(value),
+            false => serializer.serialize_none(),
+        }
+    }
+
+    pub fn deserialize<'de, D: serde::Deserializer<'de>>(deserializer: D) -> Result<f64, D::Error> {
+        let value: Option<f64> = serde::Deserialize::deserialize(deserializer)?;
+        Ok(value.unwrap_or(f64::INFINITY))
+    }
 }
 
 /// The two programs of one sample.
 #[derive(Clone, Debug)]
 pub struct FilterCode {
-    /// Results: `x̂(k|k)` (states), `x⁺` (states), `P⁺` (upper triangle).
+    /// Results: `x̂(k|k)` (states), `x⁺` (states), `P⁺` (upper triangle), the normalised innovation
+    /// squared (`firmware::watch`).
     pub measured: Program,
     /// Results: `x⁺` (states), `P⁺` (upper triangle).
     pub unmeasured: Program,
@@ -71,6 +124,18 @@ impl FilterCode {
         u: &[T],
         scratch: &mut Vec<T>,
     ) -> Sampled<T> {
+        self.run_watched(x, p, y, u, scratch).0
+    }
+
+    /// [`FilterCode::run`], with the sample's normalised innovation squared when it is measured.
+    pub fn run_watched<T: Scalar + Maths>(
+        &self,
+        x: &[T],
+        p: &[T],
+        y: Option<&[T]>,
+        u: &[T],
+        scratch: &mut Vec<T>,
+    ) -> (Sampled<T>, Option<T>) {
         let program = if y.is_some() { &self.measured } else { &self.unmeasured };
         let mut results = program.eval_with(&self.parameters, scratch, |leaf| match leaf {
             Leaf::State(i) => x[i],
@@ -81,9 +146,10 @@ impl FilterCode {
             Leaf::Parameter(_) | Leaf::Map(_) | Leaf::Blend(_) => T::literal(f32::NAN, f64::NAN),
         });
         let n = self.states;
+        let nis = y.and_then(|_| results.pop());
         let estimate = y.map(|_| results.drain(..n).collect());
         let covariance = results.split_off(n);
-        (estimate, results, covariance)
+        ((estimate, results, covariance), nis)
     }
 }
 
@@ -112,21 +178,26 @@ pub fn filter_code(code: &ModelCode, constants: &EkfConstants) -> FilterCode {
     filter_programs(
         code,
         |b, x, p| {
+            let mut nis = b.number(0.0);
             for i in 0..code.dimensions.outputs {
-                update(b, code, constants.r[i], i, x, p);
+                if let Some(term) = update(b, code, constants.r[i], i, x, p) {
+                    nis = b.add(nis, term);
+                }
             }
+            nis
         },
         |b, x, p| predict(b, code, constants, x, p),
     )
 }
 
 /// The two programs of one sample of a filter of `code` (the EKF's here; other filters build theirs): the state and the
-/// covariance's upper triangle read as leaves; with a measurement, `update` and the projection onto
-/// the bounds, whose state is the first result; then `predict`, the projection, and `x⁺` and `P⁺`'s
-/// upper triangle as results.
+/// covariance's upper triangle read as leaves; with a measurement, `update` (which gives the
+/// normalised innovation squared) and the projection onto the bounds, whose state is the first
+/// result; then `predict`, the projection, `x⁺` and `P⁺`'s upper triangle as results, and with a
+/// measurement the normalised innovation squared last.
 pub(crate) fn filter_programs(
     code: &ModelCode,
-    update: impl Fn(&mut Builder<'_>, &mut Vec<usize>, &mut [Vec<usize>]),
+    update: impl Fn(&mut Builder<'_>, &mut Vec<usize>, &mut [Vec<usize>]) -> usize,
     predict: impl Fn(&mut Builder<'_>, &mut Vec<usize>, &mut [Vec<usize>]),
 ) -> FilterCode {
     let build = |measured: bool| {
@@ -140,8 +211,9 @@ pub(crate) fn filter_programs(
         let mut p: Vec<Vec<usize>> = (0..nx)
             .map(|r| (0..nx).map(|c| b.leaf(Leaf::Covariance(upper(nx, r, c)))).collect())
             .collect();
+        let mut nis = None;
         if measured {
-            update(&mut b, &mut x, &mut p);
+            nis = Some(update(&mut b, &mut x, &mut p));
             b.project(&mut x, &code.bounds);
             for &e in &x {
                 b.result(e);
@@ -157,6 +229,9 @@ pub(crate) fn filter_programs(
                 b.result(entry);
             }
         }
+        if let Some(nis) = nis {
+            b.result(nis);
+        }
         let mut program = b.finish();
         program.prune();
         program
@@ -169,8 +244,16 @@ pub(crate) fn filter_programs(
     }
 }
 
-/// Output `i`'s scalar update in Joseph form (`firmware::Ekf::update`).
-fn update(b: &mut Builder<'_>, code: &ModelCode, variance: f64, i: usize, x: &mut [usize], p: &mut [Vec<usize>]) {
+/// Output `i`'s scalar update in Joseph form (`firmware::Ekf::update`); its term of the normalised
+/// innovation squared, `νᵢ² / sᵢ`, where the output has noise (a noiseless output's `sᵢ` may be 0).
+fn update(
+    b: &mut Builder<'_>,
+    code: &ModelCode,
+    variance: f64,
+    i: usize,
+    x: &mut [usize],
+    p: &mut [Vec<usize>],
+) -> Option<usize> {
     let (nx, ny) = (x.len(), code.dimensions.outputs);
     let output = b.inline(&code.output, x);
     let h = &output[ny + i * nx..ny + (i + 1) * nx];
@@ -193,6 +276,10 @@ fn update(b: &mut Builder<'_>, code: &ModelCode, variance: f64, i: usize, x: &mu
         let step = b.mul(k, innovation);
         *e = b.add(*e, step);
     }
+    let term = (variance > 0.0).then(|| {
+        let squared = b.mul(innovation, innovation);
+        b.mul(squared, inverse)
+    });
     // A = I - K Hᵢ; P ← A P Aᵀ + K r Kᵀ, the upper triangle.
     let a: Vec<Vec<usize>> = (0..nx)
         .map(|row| {
@@ -216,6 +303,7 @@ fn update(b: &mut Builder<'_>, code: &ModelCode, variance: f64, i: usize, x: &mu
             p[c][row] = entry;
         }
     }
+    term
 }
 
 /// `x ← f(x, u)`, `P ← F P Fᵀ + Q` with `CHIP_SUBSTEPS` RK4 steps (`firmware::Rk4::step`).

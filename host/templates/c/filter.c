@@ -14,13 +14,14 @@ static void {{ lower }}_predict(float *x, float *p, const float *u) {
 }
 
 /* The {{ label }}'s sample with its measurement, taken when finite (1, the estimate x(k|k) in
- * `estimate`). */
-static int {{ lower }}_measure(float *x, float *p, const float *y, const float *u, float *estimate) {
-    float out[2u * {{ upper }}_STATES + {{ upper }}_COVARIANCE];
+ * `estimate`, its normalised innovation squared in `*nis`). */
+static int {{ lower }}_measure(float *x, float *p, const float *y, const float *u, float *estimate, float *nis) {
+    float out[2u * {{ upper }}_STATES + {{ upper }}_COVARIANCE + 1u];
     {{ lower }}_measured(x, p, y, u, out);
     if (!all_finite(out + {{ upper }}_STATES, {{ upper }}_STATES + {{ upper }}_COVARIANCE)) {
         return 0;
     }
+    *nis = out[2u * {{ upper }}_STATES + {{ upper }}_COVARIANCE];
     memcpy(estimate, out, {{ upper }}_STATES * sizeof *x);
     memcpy(x, out + {{ upper }}_STATES, {{ upper }}_STATES * sizeof *x);
     memcpy(p, out + 2u * {{ upper }}_STATES, {{ upper }}_COVARIANCE * sizeof *p);

@@ -11,7 +11,7 @@ pub const COVARIANCE: usize = {{ triangle }};
 ///
 /// Each sample: every output's scalar update in Joseph form, then the prediction over one sampling
 /// period. A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u`
-/// changes nothing; a sample whose result is not finite (the model overflowed) is not taken.
+/// changes nothing; a sample whose result is not finite (the model overflowed) is not taken.{{ watch_docs }}
 {{ filter }}/// Whether every entry of a filter's state and covariance is finite.
 fn finite<T: Scalar>(x: &[T; STATES], p: &[T; COVARIANCE]) -> bool {
     x.iter().chain(p).all(|v| v.is_finite())
@@ -31,6 +31,6 @@ pub fn reference_ekf<T: Scalar + Maths>() -> firmware::Ekf<T, Discrete<T>, STATE
         {{ p0 }},
         {{ q }},
         {{ r }},
-    ){{ bounds }}
+    ){{ bounds }}{{ watch }}
 }
 

@@ -5,6 +5,10 @@ pub struct {{ name }}<T = f32> {
     x: [T; STATES],
     /// The upper triangle of `P`.
     p: [T; COVARIANCE],
+{%- if let Some(w) = watch %}
+    /// The watched mean of the normalised innovations squared ([`firmware::watch`]).
+    chi: T,
+{%- endif %}
 }
 
 impl<T: Scalar + Maths> Default for {{ name }}<T> {
@@ -19,6 +23,9 @@ impl<T: Scalar + Maths> {{ name }}<T> {
         {{ name }} {
             x: {{ x0 }},
             p: {{ p0 }},
+{%- if let Some(w) = watch %}
+            chi: {{ w.start }},
+{%- endif %}
         }
     }
 
@@ -33,7 +40,7 @@ impl<T: Scalar + Maths> {{ name }}<T> {
     }
 
     /// Takes the sample `(y, u)`; returns the estimate given it, `x̂(k|k)`, or refuses it, or restarts
-    /// from the start when its step is not finite (see the type's docs): the rule every filter follows
+    /// from the start when its step is not finite{% if watch.is_some() %} or its innovations stay implausible{% endif %} (see the type's docs): the rule every filter follows
     /// ([`firmware::rules::filter_sample`]) over this filter's two written-out samples. The same
     /// operations run for every accepted sample.
     pub fn push(&mut self, y: &[T; OUTPUTS], u: &[T; INPUTS]) -> Result<[T; STATES], firmware::rules::Refused> {
@@ -41,8 +48,20 @@ impl<T: Scalar + Maths> {{ name }}<T> {
             self,
             u.iter().all(|v| v.is_finite()),
             y.iter().all(|v| v.is_finite()),
+{%- if let Some(w) = watch %}
             |filter| {
-                let (estimate, x, p) = {{ lower }}_measured(&filter.x, &filter.p, y, u);
+                let (estimate, x, p, nis) = {{ lower }}_measured(&filter.x, &filter.p, y, u);
+                let chi = firmware::watch::watched(filter.chi, nis, {{ w.gain }});
+                (estimate, {{ name }} { x, p, chi })
+            },
+            |filter| {
+                let (x, p) = {{ lower }}_unmeasured(&filter.x, &filter.p, u);
+                {{ name }} { x, p, chi: filter.chi }
+            },
+            |filter| finite(&filter.x, &filter.p) && firmware::watch::plausible(filter.chi, {{ w.limit }}),
+{%- else %}
+            |filter| {
+                let (estimate, x, p, _) = {{ lower }}_measured(&filter.x, &filter.p, y, u);
                 (estimate, {{ name }} { x, p })
             },
             |filter| {
@@ -50,6 +69,7 @@ impl<T: Scalar + Maths> {{ name }}<T> {
                 {{ name }} { x, p }
             },
             |filter| finite(&filter.x, &filter.p),
+{%- endif %}
             Self::new,
         )
     }

@@ -7,7 +7,7 @@
 pub type {{ observer }} = firmware::FilterObserver<f32, {{ name }}, STATES, OUTPUTS, INPUTS, TARGETS>;
 
 impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for {{ name }}<f32> {
-    const FRESH: Self = {{ name }} { x: {{ x0 }}, p: {{ p0 }} };
+    const FRESH: Self = {{ name }} { x: {{ x0 }}, p: {{ p0 }}{% if let Some(start) = chi %}, chi: {{ start }}{% endif %} };
 
     #[inline(always)]
     fn push(&mut self, y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> Result<[f32; STATES], firmware::rules::Refused> {

@@ -37,3 +37,4 @@ mod refusals;
 mod report_html;
 mod saved_tables;
 mod standalone;
+mod watch;

@@ -104,7 +104,7 @@ macro_rules! check_refusals {
                 chip.0 >= 2 && chip.1 >= 1,
                 "bad values refused, overflows restarted: {chip:?}"
             );
-            let mut host = ekf::BoxStep::<f32>::new(&box_filter, &fresh.x0, &fresh.p0, &code);
+            let mut host = ekf::BoxStep::<f32>::new(&box_filter, &fresh.x0, &fresh, &code);
             samples().for_each(|(_, y, u)| drop(host.step(y, u)));
             assert_eq!((host.refused(), host.restarts()), chip, "ekf_box");
 

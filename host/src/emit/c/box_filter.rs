@@ -6,7 +6,7 @@ use askama::Template;
 
 use super::program::function;
 use super::started;
-use super::text::{floats, CPart};
+use super::text::{float, floats, CPart};
 use crate::emit::EmitError;
 use crate::plant::kalman::{EkfConstants, FilterCode};
 use crate::plant::ModelCode;
@@ -32,15 +32,30 @@ pub(crate) fn box_part(
     what: &str,
 ) -> Result<CPart, EmitError> {
     let upper = name.to_uppercase();
+    let outputs = code.dimensions.outputs;
+    let watch = match constants.watch.constants(outputs) {
+        Some((gain, limit)) => Some(WatchC {
+            start: float("the watch's start", outputs as f64)?,
+            gain: float("the watch's gain", gain)?,
+            limit: float("the watch's limit", limit)?,
+        }),
+        None => None,
+    };
+    let chi = match watch {
+        Some(_) => "    float chi; /* the watched mean of the normalised innovations squared */\n",
+        None => "",
+    };
     Ok(CPart {
         header: started::header(
             name,
             filter.kind,
             what,
             false,
-            &format!("    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n"),
+            &format!("    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n{chi}"),
         ),
-        source: samples(filter, &programs, code)? + &common(name, filter, constants)? + &box_observer(name, filter),
+        source: samples(filter, &programs, code)?
+            + &common(name, filter, constants)?
+            + &box_observer(name, filter, watch),
         programs: vec![programs.measured, programs.unmeasured],
     })
 }
@@ -51,7 +66,7 @@ fn samples(filter: &Filter, programs: &FilterCode, code: &ModelCode) -> Result<S
     let (lower, label) = (filter.lower, filter.label);
     Ok(function(
         &format!("{lower}_measured"),
-        &format!("One {label} sample with its measurement: out = (x(k|k), x+, P+) from (x, P), as the Rust file's {lower}_measured."),
+        &format!("One {label} sample with its measurement: out = (x(k|k), x+, P+, nis) from (x, P), nis the normalised innovation squared, as the Rust file's {lower}_measured."),
         &["x", "p", "y", "u"],
         &programs.measured,
         code,
@@ -78,14 +93,23 @@ fn common(name: &str, filter: &Filter, constants: &EkfConstants) -> Result<Strin
 }
 
 /// The filter from the box centre: `push` of the filter, then the targets of its estimate, each inside.
-fn box_observer(name: &str, filter: &Filter) -> String {
+fn box_observer(name: &str, filter: &Filter, watch: Option<WatchC>) -> String {
     super::text::render(&BoxObserver {
         name,
         upper: &name.to_uppercase(),
         lower: filter.lower,
         label: filter.label,
         kind: filter.kind,
+        watch,
     })
+}
+
+/// A watched filter's constants as C `float` literals (`firmware::watch`): the mean's start `m`, its
+/// gain `1 / W` and the limit `τ m`.
+struct WatchC {
+    start: String,
+    gain: String,
+    limit: String,
 }
 
 /// A filter's start and sample (`x0`, `p0`: its start).
@@ -108,4 +132,5 @@ struct BoxObserver<'a> {
     lower: &'a str,
     label: &'a str,
     kind: &'a str,
+    watch: Option<WatchC>,
 }

@@ -7,6 +7,7 @@
 use askama::Template;
 
 use super::rust_text::{body, f32_list, list, literal, rows};
+use crate::emit::f32_literal;
 use crate::emit::EmitError;
 use crate::plant::kalman::{self, EkfConstants, FilterCode};
 use crate::plant::{Covariance, ModelCode};
@@ -23,21 +24,58 @@ pub(crate) struct Names {
     pub(crate) sample: &'static str,
 }
 
-/// The filter type `names.name` with its constants' start (`{X0}`, `{P0}`: `T` literals).
-pub(crate) fn filter_type(names: &Names, constants: &EkfConstants, nx: usize) -> Result<String, EmitError> {
+/// The filter type `names.name` with its constants' start (`{X0}`, `{P0}`: `T` literals) and its
+/// watch, if any (`outputs`: the filter's outputs).
+pub(crate) fn filter_type(
+    names: &Names,
+    constants: &EkfConstants,
+    nx: usize,
+    outputs: usize,
+) -> Result<String, EmitError> {
     let upper = constants.p0.upper();
+    let watch = match constants.watch.constants(outputs) {
+        Some((gain, limit)) => Some(WatchText {
+            start: literal("the watch's start", outputs as f64)?,
+            gain: literal("the watch's gain", gain)?,
+            limit: literal("the watch's limit", limit)?,
+        }),
+        None => None,
+    };
     let full: Vec<String> = (0..nx * nx)
         .map(|k| format!("self.p[{}]", kalman::upper(nx, k / nx, k % nx)))
         .collect();
     let label = names.name.to_uppercase();
-    Ok(FilterType {
+    let threshold = match constants.watch.threshold.is_finite() {
+        true => format!("{:?}", constants.watch.threshold),
+        false => "f64::INFINITY".to_owned(),
+    };
+    let watch_constants = format!(
+        "/// The {label}'s χ² watch as `gen` chose it on the tuning runs ([`firmware::watch`]): the window `W`\n\
+         /// over which the mean of its normalised innovations squared is kept, in samples.\n\
+         pub const {label}_WATCH_WINDOW: usize = {};\n\
+         /// See [`{label}_WATCH_WINDOW`]: the threshold `τ` (no unit) above which, times the number of\n\
+         /// outputs, the mean restarts the filter; `f64::INFINITY`: not watched.\n\
+         pub const {label}_WATCH_THRESHOLD: f64 = {threshold};\n\n",
+        constants.watch.window
+    );
+    let filter = FilterType {
         name: names.name,
         lower: names.lower,
         x0: &vector(&format!("{label} x0"), &constants.x0)?,
         p0: &vector(&format!("{label} P0"), &upper)?,
         covariance: &rows(&full, nx),
+        watch,
     }
-    .render()?)
+    .render()?;
+    Ok(filter + &watch_constants)
+}
+
+/// A watched filter's constants as `T` literals ([`firmware::watch`]): the mean's start `m`, its
+/// gain `1 / W` and the limit `τ m`.
+struct WatchText {
+    start: String,
+    gain: String,
+    limit: String,
 }
 
 /// The observer around the filter (`names.observer`), started where the filter starts (`fixed`: the
@@ -46,6 +84,7 @@ pub(crate) fn filter_observer(
     names: &Names,
     constants: &EkfConstants,
     fixed: &FixedFilter,
+    outputs: usize,
 ) -> Result<String, EmitError> {
     let label = names.name.to_uppercase();
     let upper = constants.p0.upper();
@@ -61,6 +100,10 @@ pub(crate) fn filter_observer(
         observer: names.observer,
         x0: &f32_list(&format!("{label} x0"), &constants.x0)?,
         p0: &f32_list(&format!("{label} P0"), &upper)?,
+        chi: match constants.watch.constants(outputs) {
+            Some(_) => Some(f32_literal("the watch's start", outputs as f64)?),
+            None => None,
+        },
     }
     .render()?)
 }
@@ -77,13 +120,33 @@ pub(crate) fn samples(
         sample: names.sample,
         lower: names.lower,
         measured: &body(&filter.measured, code, design, "    ", |r| {
-            format!("({}, {}, {})", list(&r[..nx]), list(&r[nx..2 * nx]), list(&r[2 * nx..]))
+            let last = r.len() - 1;
+            format!(
+                "({}, {}, {}, {})",
+                list(&r[..nx]),
+                list(&r[nx..2 * nx]),
+                list(&r[2 * nx..last]),
+                r[last]
+            )
         })?,
         unmeasured: &body(&filter.unmeasured, code, design, "    ", |r| {
             format!("({}, {})", list(&r[..nx]), list(&r[nx..]))
         })?,
     }
     .render()?)
+}
+
+/// The filter docs' sentence on its χ² watch: the window and the threshold `gen` chose, or that it
+/// has none.
+pub(crate) fn watch_docs(constants: &EkfConstants) -> String {
+    let watch = constants.watch;
+    match watch.threshold.is_finite() {
+        true => format!(
+            "\n/// Watched ([`firmware::watch`]): when the mean of its normalised innovations squared over about\n/// {} samples exceeds {} times the number of outputs, it restarts from its start.",
+            watch.window, watch.threshold
+        ),
+        false => "\n/// Not watched: on the tuning runs no χ² watch on its innovations did better ([`firmware::watch`]).".to_owned(),
+    }
 }
 
 /// `<LABEL>_Q` (`label`: `"EKF"`) with its docs: as tuned (`tuned`, the docs of the diagonal `gen`
@@ -158,6 +221,7 @@ struct FilterType<'a> {
     x0: &'a str,
     p0: &'a str,
     covariance: &'a str,
+    watch: Option<WatchText>,
 }
 
 /// The observer `observer` around the filter `name` (`x0`, `p0`: its start in `f32`).
@@ -170,4 +234,6 @@ struct FilterObserver<'a> {
     observer: &'a str,
     x0: &'a str,
     p0: &'a str,
+    /// The watched mean's start in `f32`, where the filter is watched.
+    chi: Option<String>,
 }

@@ -83,7 +83,7 @@ pub(super) fn model_and_ekf(
     let filter = kalman::filter_code(code, ekf);
     text.push_str(
         &EkfText {
-            filter: &filter_type(&EKF, ekf, nx)?,
+            filter: &filter_type(&EKF, ekf, nx, code.dimensions.outputs)?,
             triangle: kalman::triangle(nx),
             x0: &vector("EKF x0", &ekf.x0)?,
             h: &literal("EKF substep", ekf.h)?,
@@ -93,10 +93,19 @@ pub(super) fn model_and_ekf(
             constants: &constants_docs("ekf", fixed, EKF_TUNED),
             r: &vector("EKF R", &ekf.r)?,
             bounds: &bounds_call(&code.bounds)?,
+            watch: &match ekf.watch.constants(code.dimensions.outputs) {
+                Some((gain, limit)) => format!(
+                    "\n    .with_watch({}, {})",
+                    literal("the watch's gain", gain)?,
+                    literal("the watch's limit", limit)?
+                ),
+                None => String::new(),
+            },
+            watch_docs: &super::filter::watch_docs(ekf),
         }
         .render()?,
     );
-    text.push_str(&filter_observer(&EKF, ekf, fixed)?);
+    text.push_str(&filter_observer(&EKF, ekf, fixed, code.dimensions.outputs)?);
     text.push_str(&samples(&EKF, &filter, code, design)?);
     Ok(text)
 }
@@ -174,4 +183,6 @@ struct EkfText<'a> {
     constants: &'a str,
     r: &'a str,
     bounds: &'a str,
+    watch: &'a str,
+    watch_docs: &'a str,
 }

@@ -9,20 +9,21 @@ use crate::data::Run;
 use crate::observers::lost::Track;
 use crate::observers::started::{literals, Shell};
 use crate::plant::kalman::EkfConstants;
-use crate::plant::{Covariance, ModelCode};
+use crate::plant::ModelCode;
 use firmware::rules::Refusals;
 
 /// The EKF from `constants.x0` (the box centre, or the spec's start) over `run`, in `T`, step for step the generated
 /// `Ekf::push` (the written-out programs `filter`): per sample the targets of `x̂(k|k)`, or `None`
 /// where the sample is refused (a non-finite output or input) or the filter restarted (a step whose
-/// result is not finite, which is then not taken: the filter starts again from `constants.x0`).
+/// result is not finite, which is then not taken, or whose watch found its innovations implausible:
+/// the filter starts again from `constants.x0`).
 pub fn estimate_box<T: firmware::Scalar + firmware::emitted::Maths>(
     filter: &crate::plant::kalman::FilterCode,
     constants: &EkfConstants,
     run: &Run,
     code: &ModelCode,
 ) -> Vec<Option<Vec<T>>> {
-    let mut observer = BoxStep::new(filter, &constants.x0, &constants.p0, code);
+    let mut observer = BoxStep::new(filter, &constants.x0, constants, code);
     run.measurements
         .iter()
         .zip(run.inputs.iter())
@@ -35,22 +36,32 @@ pub fn estimate_box<T: firmware::Scalar + firmware::emitted::Maths>(
 pub struct BoxStep<'a, T> {
     filter: &'a crate::plant::kalman::FilterCode,
     code: &'a ModelCode,
-    /// `x` and the upper triangle of `P`.
-    carried: (Vec<T>, Vec<T>),
+    /// `x`, the upper triangle of `P` and the watched mean of the normalised innovations squared.
+    carried: (Vec<T>, Vec<T>, T),
     /// Where a restart goes: the start.
-    fresh: (Vec<T>, Vec<T>),
+    fresh: (Vec<T>, Vec<T>, T),
+    /// The watch's gain and limit (`firmware::watch`), where the filter is watched.
+    watch: Option<(T, T)>,
     refusals: Refusals,
     scratch: RefCell<Vec<T>>,
 }
 
 impl<'a, T: firmware::Scalar + firmware::emitted::Maths> BoxStep<'a, T> {
-    /// At `x0` with `P = p0`, before the first sample of a run.
-    pub fn new(filter: &'a crate::plant::kalman::FilterCode, x0: &[f64], p0: &Covariance, code: &'a ModelCode) -> Self {
+    /// At `x0` with `P = constants.p0` and `constants.watch`, before the first sample of a run.
+    pub fn new(
+        filter: &'a crate::plant::kalman::FilterCode,
+        x0: &[f64],
+        constants: &EkfConstants,
+        code: &'a ModelCode,
+    ) -> Self {
+        let outputs = code.dimensions.outputs;
+        let fresh = (literals(x0), literals(&constants.p0.upper()), literal(outputs as f64));
         BoxStep {
             filter,
             code,
-            carried: (literals(x0), literals(&p0.upper())),
-            fresh: (literals(x0), literals(&p0.upper())),
+            carried: fresh.clone(),
+            fresh,
+            watch: (constants.watch.constants(outputs)).map(|(gain, limit)| (literal(gain), literal(limit))),
             refusals: Refusals::NONE,
             scratch: RefCell::new(Vec::new()),
         }
@@ -60,21 +71,28 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> BoxStep<'a, T> {
     pub fn step(&mut self, y: &[f64], u: &[f64]) -> Option<Vec<T>> {
         let (y, u) = (literals::<T>(y), literals::<T>(u));
         let BoxStep {
-            filter, scratch, fresh, ..
+            filter,
+            scratch,
+            fresh,
+            watch,
+            ..
         } = self;
+        let watch = *watch;
         let result = firmware::rules::filter_sample(
             &mut self.carried,
             u.iter().all(|v| v.is_finite()),
             y.iter().all(|v| v.is_finite()),
-            |(x, p)| {
-                let (estimate, x, p) = filter.run(x, p, Some(&y), &u, &mut scratch.borrow_mut());
-                (estimate.expect("a measured sample has an estimate"), (x, p))
+            |(x, p, chi)| {
+                let ((estimate, x, p), nis) = filter.run_watched(x, p, Some(&y), &u, &mut scratch.borrow_mut());
+                let nis = nis.expect("a measured sample has one");
+                let chi = watch.map_or(*chi, |(gain, _)| firmware::watch::watched(*chi, nis, gain));
+                (estimate.expect("a measured sample has an estimate"), (x, p, chi))
             },
-            |(x, p)| {
+            |(x, p, chi)| {
                 let (_, x, p) = filter.run(x, p, None, &u, &mut scratch.borrow_mut());
-                (x, p)
+                (x, p, *chi)
             },
-            |(x, p)| finite(x, p),
+            |(x, p, chi)| finite(x, p) && watch.is_none_or(|(_, limit)| firmware::watch::plausible(*chi, limit)),
             || fresh.clone(),
         );
         let estimate = self.refusals.count(result).ok()?;
@@ -90,6 +108,11 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> BoxStep<'a, T> {
     pub fn restarts(&self) -> u32 {
         self.refusals.restarts()
     }
+}
+
+/// `value` in `T` as the emitted code spells it (`T::literal`).
+fn literal<T: firmware::Scalar>(value: f64) -> T {
+    T::literal(value as f32, value)
 }
 
 /// Whether every entry of `x` and `p` is finite (the generated `finite`).

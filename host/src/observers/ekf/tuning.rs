@@ -22,6 +22,11 @@
 //! 1e-4). Deterministic: a fixed grid, fixed starts and iterations, the best by cost and the first
 //! of equals. The map-started EKF shares `Q` (one filter
 //! on the chip) and scales its own start covariance ([`tune_started`]).
+//!
+//! Then the χ² watch's threshold `τ` (`firmware::watch`, over a window of `N` samples, the map's
+//! horizon) from [`WATCH_THRESHOLDS`] on the same runs, the constants above fixed: the lowest score,
+//! of equals the largest finite `τ` (where no restart fires on the tuning runs, the watch that
+//! interferes least), no watch (`τ = ∞`) only where it is strictly best.
 
 use crate::data::{DataSet, Rows};
 use crate::plant::kalman::EkfConstants;
@@ -50,6 +55,10 @@ pub struct Tuned {
     /// The tuning runs it was chosen on.
     pub runs: usize,
 }
+
+/// The watch thresholds [`tune_with`] tries, in the order that decides between equal scores: from
+/// the most tolerant down, then no watch.
+pub const WATCH_THRESHOLDS: [f64; 8] = [1024.0, 256.0, 64.0, 16.0, 8.0, 4.0, 2.0, f64::INFINITY];
 
 /// Grid points the search starts from.
 pub const STARTS: usize = 2;
@@ -267,13 +276,23 @@ pub fn tune_with(
             }
         })
         .collect();
-    let (theta, cost) = searched
+    let (theta, _) = searched
         .into_iter()
         .fold(scored[0].clone(), |best, c| if c.1 < best.1 { c } else { best });
     let theta: Vec<f64> = theta.iter().map(|a| a.clamp(LOG_RANGE.0, LOG_RANGE.1)).collect();
     let (log_q, log_p0) = halves(fixed, &spreads, &theta);
+    let mut constants = with_fixed(design, fixed, &centre, &spreads, &theta);
+    let watched = |threshold: f64| {
+        let mut constants = constants.clone();
+        constants.watch.threshold = threshold;
+        constants
+    };
+    let (threshold, cost) = crate::observers::score::lowest(&WATCH_THRESHOLDS, |t| {
+        score(estimator, code, &watched(t), &centre, tuning, target_spreads)
+    });
+    constants.watch.threshold = threshold;
     Some(Tuned {
-        constants: with_fixed(design, fixed, &centre, &spreads, &theta),
+        constants,
         log_q,
         log_p0,
         fixed: fixed.fixed(),

@@ -32,6 +32,7 @@ fn constants(code: &ModelCode, substeps: usize, r: &[f64], full_q: bool) -> EkfC
         r: r.to_vec(),
         substeps,
         h: 0.1 / substeps as f64,
+        watch: crate::plant::kalman::Watch::OFF,
     }
 }
 

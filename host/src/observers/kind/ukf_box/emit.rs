@@ -26,15 +26,16 @@ fn ukf(design: &Design, code: &ModelCode, ukf: &EkfConstants) -> Result<String, 
     let nx = code.dimensions.states;
     let fixed = super::FIXED.of(design);
     let mut text = UkfText {
-        filter: &filter_type(&UKF, ukf, nx)?,
+        filter: &filter_type(&UKF, ukf, nx, code.dimensions.outputs)?,
         alpha: &format!("{ALPHA:?}"),
         beta: &format!("{BETA:?}"),
         kappa: &format!("{:?}", kappa(nx)),
         q_constant: &q_constant("UKF", "ukf", &ukf.q, fixed, UKF_Q_TUNED),
         constants: &constants_docs("ukf", fixed, UKF_TUNED),
+        watch_docs: &crate::emit::model::filter::watch_docs(ukf),
     }
     .render()?;
-    text.push_str(&filter_observer(&UKF, ukf, fixed)?);
+    text.push_str(&filter_observer(&UKF, ukf, fixed, code.dimensions.outputs)?);
     text.push_str(&samples(&UKF, &unscented_code(code, ukf), code, design)?);
     Ok(text)
 }
@@ -67,4 +68,5 @@ struct UkfText<'a> {
     kappa: &'a str,
     q_constant: &'a str,
     constants: &'a str,
+    watch_docs: &'a str,
 }

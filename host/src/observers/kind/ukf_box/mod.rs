@@ -53,13 +53,13 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let judge = |bench: &Bench<'_>, tuned: &ekf::Tuned| {
         let filter = unscented_code(code, &tuned.constants);
         bench.judge("ukf_box", cost::of_ukf(&filter), &|run, _| {
-            ukf::track_run(code, &filter, &tuned.constants.x0, &tuned.constants.p0, run)
+            ukf::track_run(code, &filter, &tuned.constants.x0, &tuned.constants, run)
         })
     };
     let (tuned, figures) = bench.box_filter(ukf::estimates, FIXED, &judge)?;
     let filter = unscented_code(code, &tuned.constants);
     bench.from_observer_starts("ukf_box", &|x0, run| {
-        ukf::estimate_run(code, &filter, x0, &tuned.constants.p0, run)
+        ukf::estimate_run(code, &filter, x0, &tuned.constants, run)
     });
     bench.tuned.insert(Tuned::UkfBox(tuned));
     Some(figures)

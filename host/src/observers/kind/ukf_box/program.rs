@@ -193,7 +193,7 @@ fn deviations(b: &mut Builder<'_>, values: &[Vec<usize>], m: &[usize]) -> Vec<Ve
 }
 
 /// The measurement update from every output at once.
-fn update(b: &mut Builder<'_>, code: &ModelCode, r: &[f64], x: &mut [usize], p: &mut [Vec<usize>]) {
+fn update(b: &mut Builder<'_>, code: &ModelCode, r: &[f64], x: &mut [usize], p: &mut [Vec<usize>]) -> usize {
     let (nx, ny) = (x.len(), code.dimensions.outputs);
     let points = sigma_points(b, code, x, p);
     let outputs: Vec<Vec<usize>> = points
@@ -257,7 +257,17 @@ fn update(b: &mut Builder<'_>, code: &ModelCode, r: &[f64], x: &mut [usize], p: 
     for (e, k) in x.iter_mut().zip(&gain) {
         *e = b.dot(*e, k, &innovation);
     }
+    // The normalised innovation squared νᵀ S⁻¹ ν = |w|², L w = ν by forward substitution.
+    let mut w = vec![one; ny];
+    for i in 0..ny {
+        let known: Vec<usize> = (0..i).map(|j| factor[i][j]).collect();
+        let left = b.negate(innovation[i]);
+        let sum = b.dot(left, &known, &w[..i]);
+        let value = b.negate(sum);
+        w[i] = b.mul(value, inverse[i]);
+    }
     let zero = b.number(0.0);
+    let nis = b.dot(zero, &w, &w);
     for row in 0..nx {
         for col in row..nx {
             let taken = b.dot(zero, &c[row], &gain[col]);
@@ -266,6 +276,7 @@ fn update(b: &mut Builder<'_>, code: &ModelCode, r: &[f64], x: &mut [usize], p: 
             p[col][row] = entry;
         }
     }
+    nis
 }
 
 /// The prediction: every sigma point through the chip's RK4 substeps.

@@ -15,21 +15,21 @@ use crate::data::{DataSet, Rows, Run};
 use crate::observers::kind::ukf_box::program::unscented_code;
 use crate::observers::lost::Track;
 use crate::plant::kalman::{EkfConstants, FilterCode};
-use crate::plant::{Covariance, ModelCode};
+use crate::plant::ModelCode;
 use crate::spec::Design;
 
 use super::ekf::{self, Tuned};
 
 /// The targets estimated at every sample of `run` by the written-out UKF `filter` started at `x0`
-/// with `P(0) = p0`, in `f32` as the chip runs it (step for step the generated `Ukf::push`,
+/// with `P(0)` and the watch of `constants`, in `f32` as the chip runs it (step for step the generated `Ukf::push`,
 /// [`ekf::BoxStep`]): NaN where a sample gave no estimate.
-pub fn estimate_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], p0: &Covariance, run: &Run) -> Rows {
-    track_run(code, filter, x0, p0, run).rows
+pub fn estimate_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], constants: &EkfConstants, run: &Run) -> Rows {
+    track_run(code, filter, x0, constants, run).rows
 }
 
 /// [`estimate_run`], with the restarts on the run.
-pub fn track_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], p0: &Covariance, run: &Run) -> Track {
-    let mut filter = ekf::BoxStep::<f32>::new(filter, x0, p0, code);
+pub fn track_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], constants: &EkfConstants, run: &Run) -> Track {
+    let mut filter = ekf::BoxStep::<f32>::new(filter, x0, constants, code);
     let mut estimates = Rows::new(code.dimensions.targets);
     for (y, u) in run.measurements.iter().zip(run.inputs.iter()) {
         let row: Vec<f64> = match filter.step(y, u) {
@@ -54,7 +54,7 @@ pub fn estimates(code: &ModelCode, constants: &EkfConstants, x0: &[f64], data: &
     Some(
         data.runs
             .iter()
-            .map(|run| estimate_run(code, &filter, x0, &constants.p0, run))
+            .map(|run| estimate_run(code, &filter, x0, constants, run))
             .collect(),
     )
 }

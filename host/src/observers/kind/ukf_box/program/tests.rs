@@ -26,6 +26,7 @@ fn constants(substeps: usize) -> EkfConstants {
         r: vec![0.2],
         substeps,
         h: 0.1 / substeps as f64,
+        watch: crate::plant::kalman::Watch::OFF,
     }
 }
 

@@ -54,7 +54,7 @@ fn it_refuses_and_skips_the_samples_the_ekf_does() {
     let centre = box_centre(&design);
     let constants = ekf::constants(&design, &centre, &[1.0, 1.0], &[-3.0, -3.0, -1.0, -1.0]);
     let filter = unscented_code(&code, &constants);
-    let ukf = estimate_run(&code, &filter, &centre, &constants.p0, &run);
+    let ukf = estimate_run(&code, &filter, &centre, &constants, &run);
     let ekf = ekf::estimate_run(&code, &constants, &centre, &run).unwrap();
     let missing = |rows: &Rows| -> Vec<usize> {
         rows.iter()
@@ -142,6 +142,7 @@ fn with_bounds_the_update_uses_the_projected_points_spread() {
         r: vec![0.1, 20.0],
         substeps: 1,
         h: 0.2,
+        watch: crate::plant::kalman::Watch::OFF,
     };
     let filter = unscented_code(&code, &constants);
     let mut scratch = Vec::new();

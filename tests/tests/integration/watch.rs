@@ -1,0 +1,138 @@
+//! The χ² watch (`firmware::watch`) restarts a box filter that has lost track with every number
+//! finite: from half-way through the recorded sequence the output is off by 50 noise deviations, an
+//! output the filter's model and noise say is impossible. The generated EKF and UKF (the chip's
+//! code) restart and say so, and the host's interpreted programs (`ekf::BoxStep`, what `gen` tunes
+//! and judges) give the same estimates, bit for bit, and the same restarts. Without the watch the
+//! same filter restarts less on that sequence (only where its step overflows): the watch restarts it.
+
+use firmware::Estimator;
+use host::observers::ekf;
+use host::observers::kind::ukf_box::program::unscented_code;
+use host::plant::kalman::{filter_code, EkfConstants, FilterCode, Watch};
+use host::plant::{Covariance, ModelCode};
+use integration_tests::load_relative;
+
+/// The output offset, in noise standard deviations: 50, where the mean of the normalised innovations
+/// squared, about 50² = 2500, exceeds Example 1's tuned limit of 1024 and neither filter's step
+/// overflows at first (at 100 the UKF's does, and it restarts as often unwatched; below 32 the
+/// tuned watch does not fire).
+const OFFSET: f64 = 50.0;
+
+/// The recorded sequence with every output off by [`OFFSET`] deviations from half-way on.
+fn stepped(ys: &[[f32; 1]], sigma: f64) -> Vec<Vec<f32>> {
+    let half = ys.len() / 2;
+    (ys.iter().enumerate())
+        .map(|(k, y)| {
+            let offset = if k >= half { (OFFSET * sigma) as f32 } else { 0.0 };
+            y.iter().map(|v| v + offset).collect()
+        })
+        .collect()
+}
+
+/// The host's run over `(ys, us)` of the filter `filter` with `constants`: each sample's targets
+/// (`None`: refused or restarted) and the restarts.
+fn host_run(
+    filter: &FilterCode,
+    constants: &EkfConstants,
+    code: &ModelCode,
+    ys: &[Vec<f32>],
+    us: &[Vec<f32>],
+) -> (Vec<Option<Vec<u32>>>, u32) {
+    let wide = |v: &[f32]| v.iter().map(|&v| f64::from(v)).collect::<Vec<f64>>();
+    let mut step = ekf::BoxStep::<f32>::new(filter, &constants.x0, constants, code);
+    let rows = (ys.iter().zip(us))
+        .map(|(y, u)| {
+            step.step(&wide(y), &wide(u))
+                .map(|t| t.iter().map(|v| v.to_bits()).collect())
+        })
+        .collect();
+    (rows, step.restarts())
+}
+
+/// The chip's run over `(ys, us)`: each sample's targets (`None`: refused or restarted), restarts.
+fn chip_run<O>(mut observer: O, ys: &[Vec<f32>], us: &[Vec<f32>]) -> (Vec<Option<Vec<u32>>>, u32)
+where
+    O: Estimator<Scalar = f32>,
+    O::Outputs: for<'a> TryFrom<&'a [f32]>,
+    O::Inputs: for<'a> TryFrom<&'a [f32]>,
+{
+    let rows = (ys.iter().zip(us))
+        .map(|(y, u)| {
+            let (Ok(y), Ok(u)) = (O::Outputs::try_from(y), O::Inputs::try_from(u)) else {
+                panic!("a sample of the wrong width")
+            };
+            observer.push(y, u).ok()?;
+            let estimate = observer.estimate().expect("an accepted sample gives an estimate");
+            Some(estimate.as_ref().iter().map(|e| e.value.to_bits()).collect())
+        })
+        .collect();
+    (rows, observer.restarts())
+}
+
+#[test]
+fn a_filter_given_an_impossible_output_restarts_alike_on_chip_and_host() {
+    use generated::vanderpol as d;
+    let design = load_relative(d::SPEC);
+    let code = ModelCode::new(&design).unwrap();
+    let sigma = design.model.outputs[0].noise_variance.sqrt();
+    let ys = stepped(&d::RECORDED_Y, sigma);
+    let us: Vec<Vec<f32>> = d::RECORDED_U.iter().map(|u| u.to_vec()).collect();
+
+    // The filters' constants as emitted: the start and `P(0)` read back in f64, `Q` and the watch.
+    let (_, ekf_constants) = integration_tests::emitted_constants!(d, &design);
+    let emitted = |x0: [f64; d::STATES], p0: [[f64; d::STATES]; d::STATES], q: &[f64], watch: Watch| EkfConstants {
+        x0: x0.to_vec(),
+        p0: Covariance::Full(p0.iter().map(|row| row.to_vec()).collect()),
+        q: Covariance::Diagonal(q.to_vec()),
+        watch,
+        ..ekf_constants.clone()
+    };
+    let ekf = d::Ekf::<f64>::new();
+    let ekf_constants = emitted(ekf.state(), ekf.covariance(), &d::EKF_Q, ekf_constants.watch);
+    let ukf = d::Ukf::<f64>::new();
+    let ukf_watch = Watch {
+        window: d::UKF_WATCH_WINDOW,
+        threshold: d::UKF_WATCH_THRESHOLD,
+    };
+    let ukf_constants = emitted(ukf.state(), ukf.covariance(), &d::UKF_Q, ukf_watch);
+    assert!(ekf_constants.watch.threshold.is_finite() && ukf_watch.threshold.is_finite());
+
+    let cases: [(&str, FilterCode, &EkfConstants, (Vec<Option<Vec<u32>>>, u32)); 2] = [
+        (
+            "ekf_box",
+            filter_code(&code, &ekf_constants),
+            &ekf_constants,
+            chip_run(d::EkfBoxObserver::new(), &ys, &us),
+        ),
+        (
+            "ukf_box",
+            unscented_code(&code, &ukf_constants),
+            &ukf_constants,
+            chip_run(d::UkfBoxObserver::new(), &ys, &us),
+        ),
+    ];
+    for (kind, filter, constants, chip) in cases {
+        assert!(chip.1 >= 1, "{kind} restarts on the impossible output: {}", chip.1);
+        assert_eq!(
+            host_run(&filter, constants, &code, &ys, &us),
+            chip,
+            "{kind}: host against chip"
+        );
+        // Unwatched, the same filter restarts less there (only where its step overflows): the watch
+        // restarted it.
+        let unwatched = EkfConstants {
+            watch: Watch::OFF,
+            ..constants.clone()
+        };
+        let fewer = host_run(&filter, &unwatched, &code, &ys, &us).1;
+        println!("{kind}: {} restarts watched, {fewer} unwatched", chip.1);
+        assert!(fewer < chip.1, "{kind}: {fewer} restarts unwatched, {} watched", chip.1);
+        // Nor does the watched one on the sequence as recorded.
+        let recorded: Vec<Vec<f32>> = d::RECORDED_Y.iter().map(|y| y.to_vec()).collect();
+        assert_eq!(
+            host_run(&filter, constants, &code, &recorded, &us).1,
+            0,
+            "{kind} as recorded"
+        );
+    }
+}
