@@ -25,6 +25,9 @@ use crate::spec::ast::Binary;
 use super::program::{Builder, Leaf, Names, Program};
 use super::{Covariance, ModelCode};
 
+mod watch;
+pub use watch::Watch;
+
 /// A Kalman filter's constants (the EKF's, and every filter kind's that shares its frame), chosen on the tuning runs or fixed by the spec
 /// (`[observer.ekf]`).
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -45,54 +48,6 @@ pub struct EkfConstants {
     /// centre.
     #[serde(default)]
     pub watch: Watch,
-}
-
-/// The χ² watch's constants (`firmware::watch`): the filter restarts when the mean of its normalised
-/// innovations squared over about `window` samples exceeds `threshold` times the number of outputs.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct Watch {
-    /// `W`, in samples: the watched mean's gain is `1 / W`.
-    pub window: usize,
-    /// `τ`: `+∞` (`null` in JSON) where the filter is not watched.
-    #[serde(with = "infinite_as_null")]
-    pub threshold: f64,
-}
-
-impl Watch {
-    /// Not watched.
-    pub const OFF: Watch = Watch {
-        window: 1,
-        threshold: f64::INFINITY,
-    };
-
-    /// The gain `1 / W` and the limit `τ m` of a filter with `outputs` outputs; `None` where the
-    /// filter is not watched (`τ = ∞`: the emitted filter has no watch).
-    pub fn constants(&self, outputs: usize) -> Option<(f64, f64)> {
-        self.threshold
-            .is_finite()
-            .then(|| (1.0 / self.window as f64, self.threshold * outputs as f64))
-    }
-}
-
-impl Default for Watch {
-    fn default() -> Self {
-        Watch::OFF
-    }
-}
-
-/// `+∞` as JSON's `null` (JSON has no infinity), and back.
-mod infinite_as_null {
-    pub fn serialize<S: serde::Serializer>(value: &f64, serializer: S) -> Result<S::Ok, S::Error> {
-        match value.is_finite() {
-            true => serializer.serialize_some(value),
-            false => serializer.serialize_none(),
-        }
-    }
-
-    pub fn deserialize<'de, D: serde::Deserializer<'de>>(deserializer: D) -> Result<f64, D::Error> {
-        let value: Option<f64> = serde::Deserialize::deserialize(deserializer)?;
-        Ok(value.unwrap_or(f64::INFINITY))
-    }
 }
 
 /// The two programs of one sample.

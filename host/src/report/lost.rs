@@ -43,9 +43,9 @@ fn restarts(report: &Report<'_>) -> String {
         .filter(|o| sets(o).iter().flatten().any(|l| l.restarted > 0))
         .collect();
     if restarting.is_empty() {
-        return "\nRestarts: no observer restarted on any run (a filter restarts when its state or step goes non-finite, `ekf_restart` also when the map disagrees).\n".to_owned();
+        return "\nRestarts: no observer restarted on any run (a filter restarts when its state or step goes non-finite, a box filter also when its χ² watch finds its innovations implausible; `ekf_restart`'s restarts from the map on its check are its usual work, not counted).\n".to_owned();
     }
-    let mut s = "\nRestarts: a filter restarts when its state or step goes non-finite, `ekf_restart` also when the map disagrees (runs with a restart / runs, the most restarts on one run; observers that never restarted are left out):\n\n\
+    let mut s = "\nRestarts: a filter restarts when its state or step goes non-finite, a box filter also when its χ² watch finds its innovations implausible (runs with a restart / runs, the most restarts on one run; observers that never restarted are left out; `ekf_restart`'s restarts from the map on its check are its usual work, not counted):\n\n\
          | observer | validation | tuning | scenario draws | mismatch | long |\n|---|---|---|---|---|---|\n"
         .to_owned();
     let show = |lost: Option<Lost>| {

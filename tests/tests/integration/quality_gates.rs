@@ -57,7 +57,7 @@ fn example_1_passes_every_gate_and_each_gate_bites() {
     (map.r_min, map.r_max) = full;
 
     // An EKF the budget does not allow is no choice, so it does not count: Example 1's EKFs are
-    // predicted at ~241 (`ekf_box`, `ekf_restart`) and ~249 (`ekf_map`) instructions.
+    // predicted at ~257 (`ekf_box`, its χ² watch included) and ~251 (`ekf_map`) instructions.
     comparison.chosen.0 = host::spec::ObserverKind::Map;
     let mut budgeted = design.clone();
     budgeted.budget.instructions = Some(200);
@@ -85,8 +85,8 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
             .unwrap()
             .instructions
     };
-    // Map 126, corrected 149, map-started EKF 249, restarted EKF 429 (the EKF, the map and the check
-    // at every sample), UKF 431 (checked against the chip in `on_target`).
+    // Map 126, corrected 149, map-started EKF 251, restarted EKF 431 (the EKF, the map and the check
+    // at every sample), UKF 447 (its χ² watch included; checked against the chip in `on_target`).
     assert_eq!(
         [
             predicted("map"),
@@ -95,14 +95,14 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
             predicted("ekf_restart"),
             predicted("ukf_box").round()
         ],
-        [126.0, 149.0, 249.0, 429.0, 431.0]
+        [126.0, 149.0, 251.0, 431.0, 447.0]
     );
     let choose = |design: &host::spec::Design| host::observers::choose(design, &comparison.observers, &spreads);
     design.observer = Auto;
     for (budget, kind) in [
         (None, UkfBox),
-        (Some(440), UkfBox),
-        (Some(430), Corrected),
+        (Some(450), UkfBox),
+        (Some(440), Corrected),
         (Some(300), Corrected),
         (Some(240), Corrected),
         (Some(148), Map),
@@ -138,8 +138,8 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
     design.observer = EkfMap;
     design.budget.instructions = Some(200);
     let error = choose(&design).unwrap_err().to_string();
-    assert!(error.contains("observer.kind") && error.contains("~249"), "{error}");
-    design.budget.instructions = Some(250);
+    assert!(error.contains("observer.kind") && error.contains("~251"), "{error}");
+    design.budget.instructions = Some(252);
     assert_eq!(choose(&design).unwrap().0, EkfMap);
 }
 

@@ -29,15 +29,12 @@ fn stepped(ys: &[[f32; 1]], sigma: f64) -> Vec<Vec<f32>> {
         .collect()
 }
 
+/// A run's estimates, sample by sample, as bits (`None`: refused or restarted), and its restarts.
+type Bits = (Vec<Option<Vec<u32>>>, u32);
+
 /// The host's run over `(ys, us)` of the filter `filter` with `constants`: each sample's targets
 /// (`None`: refused or restarted) and the restarts.
-fn host_run(
-    filter: &FilterCode,
-    constants: &EkfConstants,
-    code: &ModelCode,
-    ys: &[Vec<f32>],
-    us: &[Vec<f32>],
-) -> (Vec<Option<Vec<u32>>>, u32) {
+fn host_run(filter: &FilterCode, constants: &EkfConstants, code: &ModelCode, ys: &[Vec<f32>], us: &[Vec<f32>]) -> Bits {
     let wide = |v: &[f32]| v.iter().map(|&v| f64::from(v)).collect::<Vec<f64>>();
     let mut step = ekf::BoxStep::<f32>::new(filter, &constants.x0, constants, code);
     let rows = (ys.iter().zip(us))
@@ -50,7 +47,7 @@ fn host_run(
 }
 
 /// The chip's run over `(ys, us)`: each sample's targets (`None`: refused or restarted), restarts.
-fn chip_run<O>(mut observer: O, ys: &[Vec<f32>], us: &[Vec<f32>]) -> (Vec<Option<Vec<u32>>>, u32)
+fn chip_run<O>(mut observer: O, ys: &[Vec<f32>], us: &[Vec<f32>]) -> Bits
 where
     O: Estimator<Scalar = f32>,
     O::Outputs: for<'a> TryFrom<&'a [f32]>,
@@ -97,7 +94,7 @@ fn a_filter_given_an_impossible_output_restarts_alike_on_chip_and_host() {
     let ukf_constants = emitted(ukf.state(), ukf.covariance(), &d::UKF_Q, ukf_watch);
     assert!(ekf_constants.watch.threshold.is_finite() && ukf_watch.threshold.is_finite());
 
-    let cases: [(&str, FilterCode, &EkfConstants, (Vec<Option<Vec<u32>>>, u32)); 2] = [
+    let cases: [(&str, FilterCode, &EkfConstants, Bits); 2] = [
         (
             "ekf_box",
             filter_code(&code, &ekf_constants),

@@ -49,7 +49,8 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let code = bench.code;
     let judge = |bench: &Bench<'_>, tuned: &ekf::Tuned| {
         let filter = crate::plant::kalman::filter_code(code, &tuned.constants);
-        bench.judge("ekf_box", cost::of_ekf(&filter), &|run, _| {
+        let cost = cost::of_ekf(&filter) + cost::of_watch(&tuned.constants.watch);
+        bench.judge("ekf_box", cost, &|run, _| {
             ekf::track_run(code, &tuned.constants, &tuned.constants.x0, run).expect("size checked by tune")
         })
     };

@@ -12,7 +12,7 @@ pub fn of_ukf(filter: &FilterCode) -> f64 {
 
 /// [`of_ukf`] before the fit (see [`crate::search::cost::ekf_before_fit`]).
 pub fn ukf_before_fit(code: &ModelCode, constants: &EkfConstants) -> f64 {
-    of_ukf(&super::program::unscented_code(code, constants))
+    of_ukf(&super::program::unscented_code(code, constants)) + crate::search::cost::WATCH
 }
 
 #[cfg(test)]

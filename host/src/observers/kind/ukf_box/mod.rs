@@ -52,7 +52,8 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let code = bench.code;
     let judge = |bench: &Bench<'_>, tuned: &ekf::Tuned| {
         let filter = unscented_code(code, &tuned.constants);
-        bench.judge("ukf_box", cost::of_ukf(&filter), &|run, _| {
+        let cost = cost::of_ukf(&filter) + crate::search::cost::of_watch(&tuned.constants.watch);
+        bench.judge("ukf_box", cost, &|run, _| {
             ukf::track_run(code, &filter, &tuned.constants.x0, &tuned.constants, run)
         })
     };
