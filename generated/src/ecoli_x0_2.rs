@@ -1007,7 +1007,7 @@ pub const EKF_Q: [f64; STATES] = [1.5369727072753937e-5, 0.00025431477239480974,
 /// Each sample: every output's scalar update in Joseph form, then the prediction over one sampling
 /// period. A sample with a non-finite `y` is refused and only predicted; one with a non-finite `u`
 /// changes nothing; a sample whose result is not finite (the model overflowed) is not taken.
-/// Not watched: on the tuning runs no χ² watch on its innovations did better ([`firmware::watch`]).
+/// Not watched: on the tuning runs every χ² watch on its innovations scored worse ([`firmware::watch`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ekf<T = f32> {
     /// `x̂`: after a sample, the prediction to the next one.

@@ -71,6 +71,7 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             p0_diagonal: t.constants.p0.diagonal(),
             x0: t.constants.x0.clone(),
             fixed: t.fixed.clone(),
+            watch: t.constants.watch,
         }),
         ekf_from_observer_x0: design.scenario().and_then(|s| s.observer_x0.clone()).and_then(|x0| {
             let from = comparison

@@ -49,8 +49,9 @@ fn restarts(report: &Report<'_>) -> String {
          | observer | validation | tuning | scenario draws | mismatch | long |\n|---|---|---|---|---|---|\n"
         .to_owned();
     let show = |lost: Option<Lost>| {
-        lost.map_or("—".to_owned(), |l| {
-            format!("{} / {}, ≤ {}", l.restarted, l.runs, l.most_restarts)
+        lost.map_or("—".to_owned(), |l| match l.restarted {
+            0 => format!("0 / {}", l.runs),
+            _ => format!("{} / {}, ≤ {}", l.restarted, l.runs, l.most_restarts),
         })
     };
     for o in restarting {

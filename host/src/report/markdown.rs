@@ -67,7 +67,7 @@ pub fn markdown(report: &Report<'_>) -> String {
             "\nEKF: the firmware's filter over the model emitted as Rust ({} RK4 step(s) per sample on the chip, {} in the learning simulation; \
              largest one-sample difference between the two over the validation states, relative to each state's spread: {}), \
              starting at {}; Q = diag({}), P(0) = diag({}), {} on the {} tuning runs from random starts, which no figure above but \
-             *RMSE tuning* and *p95 tuning* uses (score {:.4} at an isotropic grid's best point, {:.4} after Nelder–Mead; {} evaluations){}.",
+             *RMSE tuning* and *p95 tuning* uses (score {:.4} at an isotropic grid's best point, {:.4} after Nelder–Mead and the watch; {} evaluations); {}{}.",
             report.chip_model.chip_substeps,
             report.chip_model.simulation_substeps,
             report.chip_model.max_step_difference_relative.iter().map(|v| format!("{v:.1e}")).collect::<Vec<_>>().join(", "),
@@ -83,6 +83,13 @@ pub fn markdown(report: &Report<'_>) -> String {
             t.grid_cost,
             t.cost,
             t.evaluations,
+            match t.watch.threshold.is_finite() {
+                true => format!(
+                    "watched: it restarts when the mean of its normalised innovations squared over about {} samples exceeds {} times the outputs' number (τ chosen on the tuning runs, the largest of equal scores)",
+                    t.watch.window, t.watch.threshold
+                ),
+                false => "not watched (every χ² watch on its innovations scored worse on the tuning runs)".to_owned(),
+            },
             t.started_factor.map_or(String::new(), |c| format!(
                 "; the EKF started by the map shares Q and starts with P = {c:.3} × the map's mean squared error per state (tuned factor)"
             )),

@@ -195,6 +195,9 @@ pub struct EkfTuning {
     pub x0: Vec<f64>,
     /// The constants the spec fixes (`[observer.ekf]`): `"x0"`, `"q"`, `"p0"`.
     pub fixed: Vec<&'static str>,
+    /// Its χ² watch (`firmware::watch`), the threshold chosen on the tuning runs (`null`: not watched);
+    /// the UKF's is in `design.json` and its design file.
+    pub watch: crate::plant::kalman::Watch,
 }
 
 /// The model-corrected map's tuning ([`crate::observers::kind::corrected::run`]).

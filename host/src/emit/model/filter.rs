@@ -145,7 +145,7 @@ pub(crate) fn watch_docs(constants: &EkfConstants) -> String {
             "\n/// Watched ([`firmware::watch`]): when the mean of its normalised innovations squared over about\n/// {} samples exceeds {} times the number of outputs, it restarts from its start.",
             watch.window, watch.threshold
         ),
-        false => "\n/// Not watched: on the tuning runs no χ² watch on its innovations did better ([`firmware::watch`]).".to_owned(),
+        false => "\n/// Not watched: on the tuning runs every χ² watch on its innovations scored worse ([`firmware::watch`]).".to_owned(),
     }
 }
 
