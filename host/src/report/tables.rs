@@ -31,17 +31,21 @@ pub fn observers_table(report: &Report<'_>) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "| observer | target | RMSE validation | p95 validation | max error validation | RMSE scenario | RMSE transient | RMSE tuning | p95 tuning |"
+        "| observer | target | RMSE validation | p95 validation | lost validation | max error validation | RMSE scenario | RMSE transient | RMSE tuning | p95 tuning |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|");
+    // Lost runs are the kind's, over every target (`lost`): repeated on each of its rows.
+    let lost =
+        |l: Option<crate::observers::lost::Lost>| l.map_or("—".to_owned(), |l| format!("{} / {}", l.lost, l.runs));
     for o in &report.observers {
         for (name, f) in in_spec_order(report, o) {
             let _ = writeln!(
                 s,
-                "| {} | {name} | {} | {} | {} | {} | {} | {} | {} |",
+                "| {} | {name} | {} | {} | {} | {} | {} | {} | {} | {} |",
                 o.kind,
                 show(f.rmse_validation),
                 show(f.p95_validation),
+                lost(Some(o.lost.validation)),
                 show(f.max_error_validation),
                 show(f.rmse_scenario),
                 show(f.rmse_transient),
@@ -60,16 +64,17 @@ pub fn observers_table(report: &Report<'_>) -> String {
             "\nFrom the scenario's initial state, over {} noise draws of it (every observer from where it starts on the chip):\n",
             crate::data::SCENARIO_DRAWS
         );
-        let _ = writeln!(s, "| observer | target | RMSE | p95 |");
-        let _ = writeln!(s, "|---|---|---|---|");
+        let _ = writeln!(s, "| observer | target | RMSE | p95 | lost |");
+        let _ = writeln!(s, "|---|---|---|---|---|");
         for o in &report.observers {
             for (name, f) in in_spec_order(report, o) {
                 let _ = writeln!(
                     s,
-                    "| {} | {name} | {} | {} |",
+                    "| {} | {name} | {} | {} | {} |",
                     o.kind,
                     show(f.rmse_scenario_draws.flatten()),
-                    show(f.p95_scenario_draws.flatten())
+                    show(f.p95_scenario_draws.flatten()),
+                    lost(o.lost.scenario_draws)
                 );
             }
         }
