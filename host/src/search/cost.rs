@@ -123,7 +123,8 @@ pub fn of_watch(watch: &crate::plant::kalman::Watch) -> f64 {
 }
 
 /// [`of_ekf`] of the EKF of `code` with `constants` (any non-zero constants give the same count) and
-/// its watch (which tuning keeps on every shipped design): the box EKF's cost before the fit.
+/// its watch (which tuning keeps on every shipped filter but one; a filter left unwatched costs
+/// [`WATCH`] fewer after the fit): the box EKF's cost before the fit.
 pub fn ekf_before_fit(code: &crate::plant::ModelCode, constants: &crate::plant::kalman::EkfConstants) -> f64 {
     of_ekf(&crate::plant::kalman::filter_code(code, constants)) + WATCH
 }
