@@ -86,7 +86,9 @@ fn an_ekf_kind_over_budget_is_refused_before_the_fit_by_the_count_the_fit_record
             ]
         };
     }
-    let designs: [(&str, &[(&str, u32)], [(&str, f64); 2]); 3] = [
+    /// A design: its name, its recorded predictions and its box filters' watch thresholds.
+    type Recorded<'a> = (&'a str, &'a [(&'a str, u32)], [(&'a str, f64); 2]);
+    let designs: [Recorded<'_>; 3] = [
         (
             "vanderpol",
             &generated::vanderpol::PREDICTED_INSTRUCTIONS,
