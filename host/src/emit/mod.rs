@@ -127,6 +127,33 @@ pub fn f32_literal(what: &str, value: f64) -> Result<String, EmitError> {
     Ok(format!("{single:?}"))
 }
 
+/// A watched filter's constants as literals of the emitted language (`firmware::watch`): the mean's
+/// start `m`, its gain `1 / W` and its limit `τ m`.
+pub(crate) struct WatchLiterals {
+    pub(crate) start: String,
+    pub(crate) gain: String,
+    pub(crate) limit: String,
+}
+
+impl WatchLiterals {
+    /// Those of `watch` for a filter of `outputs` outputs, each written by `print` (a Rust `T` literal
+    /// or a C `float`); `None` where the filter is not watched.
+    pub(crate) fn of(
+        watch: &crate::plant::kalman::Watch,
+        outputs: usize,
+        print: impl Fn(&str, f64) -> Result<String, EmitError>,
+    ) -> Result<Option<Self>, EmitError> {
+        let Some((gain, limit)) = watch.constants(outputs) else {
+            return Ok(None);
+        };
+        Ok(Some(WatchLiterals {
+            start: print("the watch's start", outputs as f64)?,
+            gain: print("the watch's gain", gain)?,
+            limit: print("the watch's limit", limit)?,
+        }))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -14,6 +14,7 @@ use firmware::Saturation;
 
 use super::ekf;
 use super::kind::corrected::run as corrected;
+use super::started::literal;
 
 /// Why a kind cannot run on this design.
 #[derive(Debug, thiserror::Error)]
@@ -185,7 +186,6 @@ impl<'a> Setup<'a> {
         &'s self,
         setting: &'s corrected::Setting<'s>,
     ) -> Follower<'s, T> {
-        let literal = |v: f64| T::literal(v as f32, v);
         let (tables, constants) = (self.tables, &self.tables.constants);
         // `Setup::new` refused a kind whose constants the tables lack (`Tables::missing`).
         const CHECKED: &str = "Setup::new checked the kind's constants";
@@ -261,7 +261,7 @@ impl<T: firmware::Scalar + firmware::emitted::Maths + Into<f64>> Follower<'_, T>
         // NaN where the map has no estimate; an f32 estimate converts back to itself exactly.
         let map_values = || -> Vec<T> {
             match map.status {
-                Status::Ok => map.targets.iter().map(|&(v, _)| T::literal(v as f32, v)).collect(),
+                Status::Ok => map.targets.iter().map(|&(v, _)| literal(v)).collect(),
                 _ => vec![T::literal(f32::NAN, f64::NAN); width],
             }
         };

@@ -122,7 +122,12 @@ impl<T: Scalar, C> Shell<T, C> {
     }
 }
 
+/// `value` in `T`, as the chip receives it (the emitted `T::literal`).
+pub fn literal<T: Scalar>(value: f64) -> T {
+    T::literal(value as f32, value)
+}
+
 /// `values` in `T`, as the chip receives them.
 pub fn literals<T: Scalar>(values: &[f64]) -> Vec<T> {
-    values.iter().map(|&v| T::literal(v as f32, v)).collect()
+    values.iter().map(|&v| literal(v)).collect()
 }

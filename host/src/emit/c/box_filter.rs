@@ -7,7 +7,7 @@ use askama::Template;
 use super::program::function;
 use super::started;
 use super::text::{float, floats, CPart};
-use crate::emit::EmitError;
+use crate::emit::{EmitError, WatchLiterals};
 use crate::plant::kalman::{EkfConstants, FilterCode};
 use crate::plant::ModelCode;
 
@@ -33,14 +33,7 @@ pub(crate) fn box_part(
 ) -> Result<CPart, EmitError> {
     let upper = name.to_uppercase();
     let outputs = code.dimensions.outputs;
-    let watch = match constants.watch.constants(outputs) {
-        Some((gain, limit)) => Some(WatchC {
-            start: float("the watch's start", outputs as f64)?,
-            gain: float("the watch's gain", gain)?,
-            limit: float("the watch's limit", limit)?,
-        }),
-        None => None,
-    };
+    let watch = WatchLiterals::of(&constants.watch, outputs, float)?;
     let chi = match watch {
         Some(_) => "    float chi; /* the watched mean of the normalised innovations squared */\n",
         None => "",
@@ -93,7 +86,7 @@ fn common(name: &str, filter: &Filter, constants: &EkfConstants) -> Result<Strin
 }
 
 /// The filter from the box centre: `push` of the filter, then the targets of its estimate, each inside.
-fn box_observer(name: &str, filter: &Filter, watch: Option<WatchC>) -> String {
+fn box_observer(name: &str, filter: &Filter, watch: Option<WatchLiterals>) -> String {
     super::text::render(&BoxObserver {
         name,
         upper: &name.to_uppercase(),
@@ -102,14 +95,6 @@ fn box_observer(name: &str, filter: &Filter, watch: Option<WatchC>) -> String {
         kind: filter.kind,
         watch,
     })
-}
-
-/// A watched filter's constants as C `float` literals (`firmware::watch`): the mean's start `m`, its
-/// gain `1 / W` and the limit `τ m`.
-struct WatchC {
-    start: String,
-    gain: String,
-    limit: String,
 }
 
 /// A filter's start and sample (`x0`, `p0`: its start).
@@ -132,5 +117,5 @@ struct BoxObserver<'a> {
     lower: &'a str,
     label: &'a str,
     kind: &'a str,
-    watch: Option<WatchC>,
+    watch: Option<WatchLiterals>,
 }

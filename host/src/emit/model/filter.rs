@@ -7,8 +7,8 @@
 use askama::Template;
 
 use super::rust_text::{body, f32_list, list, literal, rows};
-use crate::emit::f32_literal;
 use crate::emit::EmitError;
+use crate::emit::{f32_literal, WatchLiterals};
 use crate::plant::kalman::{self, EkfConstants, FilterCode};
 use crate::plant::{Covariance, ModelCode};
 use crate::spec::{Design, FixedFilter};
@@ -33,14 +33,7 @@ pub(crate) fn filter_type(
     outputs: usize,
 ) -> Result<String, EmitError> {
     let upper = constants.p0.upper();
-    let watch = match constants.watch.constants(outputs) {
-        Some((gain, limit)) => Some(WatchText {
-            start: literal("the watch's start", outputs as f64)?,
-            gain: literal("the watch's gain", gain)?,
-            limit: literal("the watch's limit", limit)?,
-        }),
-        None => None,
-    };
+    let watch = WatchLiterals::of(&constants.watch, outputs, literal)?;
     let full: Vec<String> = (0..nx * nx)
         .map(|k| format!("self.p[{}]", kalman::upper(nx, k / nx, k % nx)))
         .collect();
@@ -70,14 +63,6 @@ pub(crate) fn filter_type(
     Ok(filter + &watch_constants)
 }
 
-/// A watched filter's constants as `T` literals ([`firmware::watch`]): the mean's start `m`, its
-/// gain `1 / W` and the limit `τ m`.
-struct WatchText {
-    start: String,
-    gain: String,
-    limit: String,
-}
-
 /// The observer around the filter (`names.observer`), started where the filter starts (`fixed`: the
 /// spec's constants of this filter).
 pub(crate) fn filter_observer(
@@ -100,10 +85,7 @@ pub(crate) fn filter_observer(
         observer: names.observer,
         x0: &f32_list(&format!("{label} x0"), &constants.x0)?,
         p0: &f32_list(&format!("{label} P0"), &upper)?,
-        chi: match constants.watch.constants(outputs) {
-            Some(_) => Some(f32_literal("the watch's start", outputs as f64)?),
-            None => None,
-        },
+        chi: WatchLiterals::of(&constants.watch, outputs, f32_literal)?.map(|w| w.start),
     }
     .render()?)
 }
@@ -221,7 +203,7 @@ struct FilterType<'a> {
     x0: &'a str,
     p0: &'a str,
     covariance: &'a str,
-    watch: Option<WatchText>,
+    watch: Option<WatchLiterals>,
 }
 
 /// The observer `observer` around the filter `name` (`x0`, `p0`: its start in `f32`).

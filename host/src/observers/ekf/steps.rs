@@ -7,7 +7,7 @@ use std::cell::RefCell;
 
 use crate::data::Run;
 use crate::observers::lost::Track;
-use crate::observers::started::{literals, Shell};
+use crate::observers::started::{literal, literals, Shell};
 use crate::plant::kalman::EkfConstants;
 use crate::plant::ModelCode;
 use firmware::rules::Refusals;
@@ -108,11 +108,6 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> BoxStep<'a, T> {
     pub fn restarts(&self) -> u32 {
         self.refusals.restarts()
     }
-}
-
-/// `value` in `T` as the emitted code spells it (`T::literal`).
-fn literal<T: firmware::Scalar>(value: f64) -> T {
-    T::literal(value as f32, value)
 }
 
 /// Whether every entry of `x` and `p` is finite (the generated `finite`).

@@ -25,7 +25,7 @@ use firmware::Scalar;
 use crate::data::Run;
 use crate::observers::ekf::steps::kept;
 use crate::observers::lost::Track;
-use crate::observers::started::literals;
+use crate::observers::started::{literal, literals};
 use crate::plant::kalman::{self, EkfConstants, FilterCode};
 use crate::plant::ModelCode;
 
@@ -48,7 +48,6 @@ pub const THRESHOLDS: [f64; 12] = [0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0, 12
 /// `restart_disagrees` sums it.
 pub fn disagrees<T: Scalar>(x: &[T], p: &[T], map: &[T], constants: &RestartConstants) -> bool {
     let n = x.len();
-    let literal = |v: f64| T::literal(v as f32, v);
     let mut d = T::ZERO;
     for i in 0..n {
         let e = x[i] - map[i];

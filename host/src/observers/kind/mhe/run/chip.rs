@@ -9,6 +9,7 @@ use super::Setup;
 use crate::data::{Rows, Run};
 use crate::observers::ekf::{Stepped, MAX_INPUTS};
 use crate::observers::lost::Track;
+use crate::observers::started::literal;
 use crate::plant::{Compiled, ModelCode};
 
 /// Gauss–Newton steps per sample the chip's estimator ([`firmware::mhe::Observer`]) may take:
@@ -144,7 +145,6 @@ struct Stepper<'a, T, const NX: usize, const NY: usize> {
 
 impl<'a, T: firmware::Scalar + firmware::emitted::Maths, const NX: usize, const NY: usize> Stepper<'a, T, NX, NY> {
     fn new(code: &'a ModelCode, horizon: usize, constants: &ChipConstants) -> Self {
-        let literal = |v: f64| T::literal(v as f32, v);
         let array = |v: &[f64]| -> [T; NX] { std::array::from_fn(|i| literal(v[i])) };
         Stepper {
             code,
@@ -177,7 +177,6 @@ impl<T: firmware::Scalar + firmware::emitted::Maths, const NX: usize, const NY: 
     /// the last `horizon` stored; the previous solution moves on under the dropped sample's input.
     fn step(&mut self, y: &[f64], u: &[f64]) -> Option<Vec<f64>> {
         use firmware::emitted::mhe::solve_window;
-        let literal = |v: f64| T::literal(v as f32, v);
         let sample = firmware::Sample {
             y: std::array::from_fn(|i| literal(y[i])),
             u: std::array::from_fn(|i| if i < u.len() { literal(u[i]) } else { T::ZERO }),
