@@ -49,9 +49,10 @@ pub trait Restart<T: Scalar, const NX: usize, const NY: usize, const NU: usize, 
 ///
 /// A sample with a NaN or infinite value is refused: no estimate from it, the window does not take
 /// it, and the filter takes one period of its model when the input is finite ([`Follower::predict`]).
-/// A sample whose result is not finite (the model overflowed) restarts the filter, from the map's
-/// estimate where it has one, else from the box centre ([`restarts`](Self::restarts) counts them);
-/// a restart whose start is not finite is not taken.
+/// A sample whose result is not finite (the model overflowed), or that the filter's χ² watch
+/// ([`crate::watch`]) finds implausible, restarts the filter, from the map's estimate where it has
+/// one, else from the box centre ([`restarts`](Self::restarts) counts them); a restart whose start is
+/// not finite is not taken.
 pub struct Restarted<
     T: Scalar,
     D,

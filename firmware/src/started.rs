@@ -40,7 +40,8 @@ pub trait Follower<T: Scalar, const NX: usize, const NY: usize, const NU: usize,
 
     /// Estimate `j ≥ 1` (`start_up` is `j ≤ START_UP`; `j` is not counted beyond `START_UP + 1`)
     /// from what was carried, the map's states (zeros when not read), `y(k)` and `u(k)`: what to
-    /// carry next and the states, or `None` when a result is not finite.
+    /// carry next and the states, or `None` when a result is not finite or the follower gives up
+    /// (an EKF whose χ² watch finds its innovations implausible: [`crate::watch`]).
     fn follow(
         carried: &Self::Carried,
         j: usize,
@@ -139,10 +140,11 @@ fn select<V>(condition: bool, a: V, b: V) -> V {
 /// sample runs the same instructions. A sample with a NaN or infinite value is refused: it gives no
 /// estimate and the map's window does not take it, but once started, a refused sample whose input
 /// is finite still takes one period of the model ([`Follower::predict`]), so that what is carried
-/// stays in step with the plant. A sample with finite values whose start or follow-up is not finite
-/// (the model overflowed) restarts the observer: no estimate from it, the window emptied, and the
-/// map's next estimate starts the follower again ([`restarts`](Self::restarts) counts them; the
-/// latest estimate stays until then).
+/// stays in step with the plant. A sample with finite values whose start or follow-up gives `None`
+/// (not finite: the model overflowed; or an EKF's χ² watch, [`crate::watch`], found its innovations
+/// implausible) restarts the observer: no estimate from it, the window emptied, and the map's next
+/// estimate starts the follower again ([`restarts`](Self::restarts) counts them; the latest estimate
+/// stays until then).
 pub struct Started<T: Scalar, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize>
 where
     F: Follower<T, NX, NY, NU, NT>,

@@ -109,6 +109,7 @@ ecoli_x0_2_status ecoli_x0_2_fixed_estimate(const ecoli_x0_2_fixed *observer, in
 typedef struct {
     float x[ECOLI_X0_2_STATES];
     float p[ECOLI_X0_2_COVARIANCE];
+    float chi; /* the watched mean of the normalised innovations squared */
     float values[ECOLI_X0_2_TARGETS];
     ecoli_x0_2_saturation flags[ECOLI_X0_2_TARGETS];
     int ready;
@@ -142,7 +143,7 @@ void ecoli_x0_2_ukf_box_init(ecoli_x0_2_ukf_box *observer);
 ecoli_x0_2_status ecoli_x0_2_ukf_box_push(ecoli_x0_2_ukf_box *observer, const float *y, const float *u);
 ecoli_x0_2_status ecoli_x0_2_ukf_box_estimate(const ecoli_x0_2_ukf_box *observer, float *values, ecoli_x0_2_saturation *saturation);
 
-/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 6 Gauss-Newton
+/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 3 Gauss-Newton
  * step(s) over the last ECOLI_X0_2_HORIZON samples from the previous solution moved one sample on, each
  * solved by an L D L^T factorisation and projected onto the learning box. Thousands of instructions
  * per sample (docs/chip.md): the on-line estimate the map replaces. */
@@ -164,12 +165,12 @@ void ecoli_x0_2_mhe_init(ecoli_x0_2_mhe *observer);
 ecoli_x0_2_status ecoli_x0_2_mhe_push(ecoli_x0_2_mhe *observer, const float *y, const float *u);
 ecoli_x0_2_status ecoli_x0_2_mhe_estimate(const ecoli_x0_2_mhe *observer, float *values, ecoli_x0_2_saturation *saturation);
 
-/* This design's observer, of the kind `gen` chose or the spec named: ekf_box. */
-#define ECOLI_X0_2_KIND "ekf_box"
-typedef ecoli_x0_2_ekf_box ecoli_x0_2_observer;
-#define ecoli_x0_2_observer_init ecoli_x0_2_ekf_box_init
-#define ecoli_x0_2_observer_push ecoli_x0_2_ekf_box_push
-#define ecoli_x0_2_observer_estimate ecoli_x0_2_ekf_box_estimate
+/* This design's observer, of the kind `gen` chose or the spec named: ukf_box. */
+#define ECOLI_X0_2_KIND "ukf_box"
+typedef ecoli_x0_2_ukf_box ecoli_x0_2_observer;
+#define ecoli_x0_2_observer_init ecoli_x0_2_ukf_box_init
+#define ecoli_x0_2_observer_push ecoli_x0_2_ukf_box_push
+#define ecoli_x0_2_observer_estimate ecoli_x0_2_ukf_box_estimate
 
 /* The Rust static library's interface (c/include/ecoli_x0_2.h of a crate `mho gen --spec` writes) over
  * ecoli_x0_2_observer: the same calls, statuses (ecoli_x0_2_status) and flags (ecoli_x0_2_saturation), so

@@ -3019,8 +3019,9 @@ static void started_ekf_targets_of(const float *states, const two_tanks_saturati
     flags[1] = state_flags[1];
 }
 
-/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite. */
-static int started_ekf_start(const float *first, const float *u, float *x, float *p) {
+/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite;
+ * the watched mean at its start. */
+static int started_ekf_start(const float *first, const float *u, float *x, float *p, float *chi) {
     float out[TWO_TANKS_STATES + TWO_TANKS_COVARIANCE];
     ekf_unmeasured(first, STARTED_P0, u, out);
     if (!all_finite(out, TWO_TANKS_STATES + TWO_TANKS_COVARIANCE)) {
@@ -3028,21 +3029,27 @@ static int started_ekf_start(const float *first, const float *u, float *x, float
     }
     memcpy(x, out, TWO_TANKS_STATES * sizeof *x);
     memcpy(p, out + TWO_TANKS_STATES, TWO_TANKS_COVARIANCE * sizeof *p);
+    *chi = 1.0f;
     return 1;
 }
 
-/* StartedEkf::follow: the EKF's sample, every state inside. */
-static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, const float *map, const float *y,
-                              const float *u, float *states, two_tanks_saturation *flags) {
+/* StartedEkf::follow: the EKF's sample, every state inside; not taken when the
+ * chi-squared watch (firmware::watch) finds the innovations implausible. */
+static int started_ekf_follow(float *x, float *p, float *chi, unsigned j, int start_up, const float *map,
+                              const float *y, const float *u, float *states, two_tanks_saturation *flags) {
     unsigned i;
-    float nis; /* the EKF's watch is the box filter's: not read here */
+    float nis;
     (void)j;
     (void)start_up;
     (void)map;
     for (i = 0u; i < TWO_TANKS_STATES; ++i) {
         flags[i] = TWO_TANKS_INSIDE;
     }
-    return ekf_measure(x, p, y, u, states, &nis);
+    if (!ekf_measure(x, p, y, u, states, &nis)) {
+        return 0;
+    }
+    *chi = *chi + 0.1f * (nis - *chi);
+    return *chi <= 1024.0f;
 }
 
 
@@ -3076,7 +3083,7 @@ static two_tanks_status ekf_map_sample(two_tanks_ekf_map *o, const float *y, con
         estimated = 1;
     }
     if (!o->started && estimated) {
-        if (!started_ekf_start(map, u, o->x, o->p)) {
+        if (!started_ekf_start(map, u, o->x, o->p, &o->chi)) {
             ekf_map_fresh(o);
             return TWO_TANKS_RESTARTED;
         }
@@ -3084,7 +3091,7 @@ static two_tanks_status ekf_map_sample(two_tanks_ekf_map *o, const float *y, con
         memcpy(o->values, all, sizeof all);
         memcpy(o->flags, all_flags, sizeof all_flags);
     } else if (o->started) {
-        if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
+        if (!started_ekf_follow(o->x, o->p, &o->chi, o->count, start_up, map, y, u, states, state_flags)) {
             ekf_map_fresh(o);
             return TWO_TANKS_RESTARTED;
         }
@@ -3139,12 +3146,13 @@ static void ekf_restart_fresh(two_tanks_ekf_restart *o) {
     two_tanks_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
+    o->chi = 1.0f;
 }
 
 /* firmware::Restarted: the sample to the map's window; from its first estimate on, the map's states
  * against the filter's prediction at every sample, restarted from the map when they disagree;
  * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
- * when its step is not finite. */
+ * when its step is not finite or its chi-squared watch finds the innovations implausible. */
 static two_tanks_status ekf_restart_sample(two_tanks_ekf_restart *o, const float *y, const float *u) {
     float all[TWO_TANKS_TARGETS], map[TWO_TANKS_STATES], states[TWO_TANKS_STATES];
     two_tanks_saturation all_flags[TWO_TANKS_TARGETS], state_flags[TWO_TANKS_STATES];
@@ -3160,17 +3168,18 @@ static two_tanks_status ekf_restart_sample(two_tanks_ekf_restart *o, const float
         (void)two_tanks_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         mapped = 1;
-        if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p)) {
+        if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p, &o->chi)) {
             memcpy(o->values, all, sizeof all);
             memcpy(o->flags, all_flags, sizeof all_flags);
             o->ready = 1;
             return TWO_TANKS_OK;
         }
     }
-    if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
-        if (!(mapped && started_ekf_start(map, u, o->x, o->p))) {
+    if (!started_ekf_follow(o->x, o->p, &o->chi, 1u, 0, NULL, y, u, states, state_flags)) {
+        if (!(mapped && started_ekf_start(map, u, o->x, o->p, &o->chi))) {
             memcpy(o->x, EKF_X0, sizeof o->x);
             memcpy(o->p, EKF_P0, sizeof o->p);
+            o->chi = 1.0f;
         }
         return TWO_TANKS_RESTARTED;
     }

@@ -171,6 +171,7 @@ typedef struct {
     two_tanks_map window;
     float x[TWO_TANKS_STATES];
     float p[TWO_TANKS_COVARIANCE];
+    float chi;
     unsigned count;
     int started;
     float values[TWO_TANKS_TARGETS];
@@ -192,6 +193,7 @@ typedef struct {
     two_tanks_map window;
     float x[TWO_TANKS_STATES];
     float p[TWO_TANKS_COVARIANCE];
+    float chi;
     float values[TWO_TANKS_TARGETS];
     two_tanks_saturation flags[TWO_TANKS_TARGETS];
     int ready;

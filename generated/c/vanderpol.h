@@ -168,6 +168,7 @@ typedef struct {
     vanderpol_map window;
     float x[VANDERPOL_STATES];
     float p[VANDERPOL_COVARIANCE];
+    float chi;
     unsigned count;
     int started;
     float values[VANDERPOL_TARGETS];
@@ -189,6 +190,7 @@ typedef struct {
     vanderpol_map window;
     float x[VANDERPOL_STATES];
     float p[VANDERPOL_COVARIANCE];
+    float chi;
     float values[VANDERPOL_TARGETS];
     vanderpol_saturation flags[VANDERPOL_TARGETS];
     int ready;

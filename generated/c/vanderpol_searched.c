@@ -2035,8 +2035,9 @@ static void started_ekf_targets_of(const float *states, const vanderpol_searched
     flags[1] = state_flags[1];
 }
 
-/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite. */
-static int started_ekf_start(const float *first, const float *u, float *x, float *p) {
+/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite;
+ * the watched mean at its start. */
+static int started_ekf_start(const float *first, const float *u, float *x, float *p, float *chi) {
     float out[VANDERPOL_SEARCHED_STATES + VANDERPOL_SEARCHED_COVARIANCE];
     ekf_unmeasured(first, STARTED_P0, u, out);
     if (!all_finite(out, VANDERPOL_SEARCHED_STATES + VANDERPOL_SEARCHED_COVARIANCE)) {
@@ -2044,21 +2045,27 @@ static int started_ekf_start(const float *first, const float *u, float *x, float
     }
     memcpy(x, out, VANDERPOL_SEARCHED_STATES * sizeof *x);
     memcpy(p, out + VANDERPOL_SEARCHED_STATES, VANDERPOL_SEARCHED_COVARIANCE * sizeof *p);
+    *chi = 1.0f;
     return 1;
 }
 
-/* StartedEkf::follow: the EKF's sample, every state inside. */
-static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, const float *map, const float *y,
-                              const float *u, float *states, vanderpol_searched_saturation *flags) {
+/* StartedEkf::follow: the EKF's sample, every state inside; not taken when the
+ * chi-squared watch (firmware::watch) finds the innovations implausible. */
+static int started_ekf_follow(float *x, float *p, float *chi, unsigned j, int start_up, const float *map,
+                              const float *y, const float *u, float *states, vanderpol_searched_saturation *flags) {
     unsigned i;
-    float nis; /* the EKF's watch is the box filter's: not read here */
+    float nis;
     (void)j;
     (void)start_up;
     (void)map;
     for (i = 0u; i < VANDERPOL_SEARCHED_STATES; ++i) {
         flags[i] = VANDERPOL_SEARCHED_INSIDE;
     }
-    return ekf_measure(x, p, y, u, states, &nis);
+    if (!ekf_measure(x, p, y, u, states, &nis)) {
+        return 0;
+    }
+    *chi = *chi + 0.0625f * (nis - *chi);
+    return *chi <= 1024.0f;
 }
 
 
@@ -2092,7 +2099,7 @@ static vanderpol_searched_status ekf_map_sample(vanderpol_searched_ekf_map *o, c
         estimated = 1;
     }
     if (!o->started && estimated) {
-        if (!started_ekf_start(map, u, o->x, o->p)) {
+        if (!started_ekf_start(map, u, o->x, o->p, &o->chi)) {
             ekf_map_fresh(o);
             return VANDERPOL_SEARCHED_RESTARTED;
         }
@@ -2100,7 +2107,7 @@ static vanderpol_searched_status ekf_map_sample(vanderpol_searched_ekf_map *o, c
         memcpy(o->values, all, sizeof all);
         memcpy(o->flags, all_flags, sizeof all_flags);
     } else if (o->started) {
-        if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
+        if (!started_ekf_follow(o->x, o->p, &o->chi, o->count, start_up, map, y, u, states, state_flags)) {
             ekf_map_fresh(o);
             return VANDERPOL_SEARCHED_RESTARTED;
         }
@@ -2155,12 +2162,13 @@ static void ekf_restart_fresh(vanderpol_searched_ekf_restart *o) {
     vanderpol_searched_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
+    o->chi = 1.0f;
 }
 
 /* firmware::Restarted: the sample to the map's window; from its first estimate on, the map's states
  * against the filter's prediction at every sample, restarted from the map when they disagree;
  * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
- * when its step is not finite. */
+ * when its step is not finite or its chi-squared watch finds the innovations implausible. */
 static vanderpol_searched_status ekf_restart_sample(vanderpol_searched_ekf_restart *o, const float *y, const float *u) {
     float all[VANDERPOL_SEARCHED_TARGETS], map[VANDERPOL_SEARCHED_STATES], states[VANDERPOL_SEARCHED_STATES];
     vanderpol_searched_saturation all_flags[VANDERPOL_SEARCHED_TARGETS], state_flags[VANDERPOL_SEARCHED_STATES];
@@ -2176,17 +2184,18 @@ static vanderpol_searched_status ekf_restart_sample(vanderpol_searched_ekf_resta
         (void)vanderpol_searched_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         mapped = 1;
-        if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p)) {
+        if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p, &o->chi)) {
             memcpy(o->values, all, sizeof all);
             memcpy(o->flags, all_flags, sizeof all_flags);
             o->ready = 1;
             return VANDERPOL_SEARCHED_OK;
         }
     }
-    if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
-        if (!(mapped && started_ekf_start(map, u, o->x, o->p))) {
+    if (!started_ekf_follow(o->x, o->p, &o->chi, 1u, 0, NULL, y, u, states, state_flags)) {
+        if (!(mapped && started_ekf_start(map, u, o->x, o->p, &o->chi))) {
             memcpy(o->x, EKF_X0, sizeof o->x);
             memcpy(o->p, EKF_P0, sizeof o->p);
+            o->chi = 1.0f;
         }
         return VANDERPOL_SEARCHED_RESTARTED;
     }

@@ -168,6 +168,7 @@ typedef struct {
     vanderpol_searched_map window;
     float x[VANDERPOL_SEARCHED_STATES];
     float p[VANDERPOL_SEARCHED_COVARIANCE];
+    float chi;
     unsigned count;
     int started;
     float values[VANDERPOL_SEARCHED_TARGETS];
@@ -189,6 +190,7 @@ typedef struct {
     vanderpol_searched_map window;
     float x[VANDERPOL_SEARCHED_STATES];
     float p[VANDERPOL_SEARCHED_COVARIANCE];
+    float chi;
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;

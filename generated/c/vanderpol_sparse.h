@@ -168,6 +168,7 @@ typedef struct {
     vanderpol_sparse_map window;
     float x[VANDERPOL_SPARSE_STATES];
     float p[VANDERPOL_SPARSE_COVARIANCE];
+    float chi;
     unsigned count;
     int started;
     float values[VANDERPOL_SPARSE_TARGETS];
@@ -189,6 +190,7 @@ typedef struct {
     vanderpol_sparse_map window;
     float x[VANDERPOL_SPARSE_STATES];
     float p[VANDERPOL_SPARSE_COVARIANCE];
+    float chi;
     float values[VANDERPOL_SPARSE_TARGETS];
     vanderpol_sparse_saturation flags[VANDERPOL_SPARSE_TARGETS];
     int ready;

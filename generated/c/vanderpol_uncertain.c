@@ -2154,8 +2154,9 @@ static void started_ekf_targets_of(const float *states, const vanderpol_uncertai
     flags[1] = state_flags[1];
 }
 
-/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite. */
-static int started_ekf_start(const float *first, const float *u, float *x, float *p) {
+/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite;
+ * the watched mean at its start. */
+static int started_ekf_start(const float *first, const float *u, float *x, float *p, float *chi) {
     float out[VANDERPOL_UNCERTAIN_STATES + VANDERPOL_UNCERTAIN_COVARIANCE];
     ekf_unmeasured(first, STARTED_P0, u, out);
     if (!all_finite(out, VANDERPOL_UNCERTAIN_STATES + VANDERPOL_UNCERTAIN_COVARIANCE)) {
@@ -2163,21 +2164,27 @@ static int started_ekf_start(const float *first, const float *u, float *x, float
     }
     memcpy(x, out, VANDERPOL_UNCERTAIN_STATES * sizeof *x);
     memcpy(p, out + VANDERPOL_UNCERTAIN_STATES, VANDERPOL_UNCERTAIN_COVARIANCE * sizeof *p);
+    *chi = 1.0f;
     return 1;
 }
 
-/* StartedEkf::follow: the EKF's sample, every state inside. */
-static int started_ekf_follow(float *x, float *p, unsigned j, int start_up, const float *map, const float *y,
-                              const float *u, float *states, vanderpol_uncertain_saturation *flags) {
+/* StartedEkf::follow: the EKF's sample, every state inside; not taken when the
+ * chi-squared watch (firmware::watch) finds the innovations implausible. */
+static int started_ekf_follow(float *x, float *p, float *chi, unsigned j, int start_up, const float *map,
+                              const float *y, const float *u, float *states, vanderpol_uncertain_saturation *flags) {
     unsigned i;
-    float nis; /* the EKF's watch is the box filter's: not read here */
+    float nis;
     (void)j;
     (void)start_up;
     (void)map;
     for (i = 0u; i < VANDERPOL_UNCERTAIN_STATES; ++i) {
         flags[i] = VANDERPOL_UNCERTAIN_INSIDE;
     }
-    return ekf_measure(x, p, y, u, states, &nis);
+    if (!ekf_measure(x, p, y, u, states, &nis)) {
+        return 0;
+    }
+    *chi = *chi + 0.1f * (nis - *chi);
+    return *chi <= 1024.0f;
 }
 
 
@@ -2211,7 +2218,7 @@ static vanderpol_uncertain_status ekf_map_sample(vanderpol_uncertain_ekf_map *o,
         estimated = 1;
     }
     if (!o->started && estimated) {
-        if (!started_ekf_start(map, u, o->x, o->p)) {
+        if (!started_ekf_start(map, u, o->x, o->p, &o->chi)) {
             ekf_map_fresh(o);
             return VANDERPOL_UNCERTAIN_RESTARTED;
         }
@@ -2219,7 +2226,7 @@ static vanderpol_uncertain_status ekf_map_sample(vanderpol_uncertain_ekf_map *o,
         memcpy(o->values, all, sizeof all);
         memcpy(o->flags, all_flags, sizeof all_flags);
     } else if (o->started) {
-        if (!started_ekf_follow(o->x, o->p, o->count, start_up, map, y, u, states, state_flags)) {
+        if (!started_ekf_follow(o->x, o->p, &o->chi, o->count, start_up, map, y, u, states, state_flags)) {
             ekf_map_fresh(o);
             return VANDERPOL_UNCERTAIN_RESTARTED;
         }
@@ -2274,12 +2281,13 @@ static void ekf_restart_fresh(vanderpol_uncertain_ekf_restart *o) {
     vanderpol_uncertain_map_init(&o->window);
     memcpy(o->x, EKF_X0, sizeof o->x);
     memcpy(o->p, EKF_P0, sizeof o->p);
+    o->chi = 1.0f;
 }
 
 /* firmware::Restarted: the sample to the map's window; from its first estimate on, the map's states
  * against the filter's prediction at every sample, restarted from the map when they disagree;
  * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
- * when its step is not finite. */
+ * when its step is not finite or its chi-squared watch finds the innovations implausible. */
 static vanderpol_uncertain_status ekf_restart_sample(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
     float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES], states[VANDERPOL_UNCERTAIN_STATES];
     vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS], state_flags[VANDERPOL_UNCERTAIN_STATES];
@@ -2295,17 +2303,18 @@ static vanderpol_uncertain_status ekf_restart_sample(vanderpol_uncertain_ekf_res
         (void)vanderpol_uncertain_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         mapped = 1;
-        if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p)) {
+        if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p, &o->chi)) {
             memcpy(o->values, all, sizeof all);
             memcpy(o->flags, all_flags, sizeof all_flags);
             o->ready = 1;
             return VANDERPOL_UNCERTAIN_OK;
         }
     }
-    if (!started_ekf_follow(o->x, o->p, 1u, 0, NULL, y, u, states, state_flags)) {
-        if (!(mapped && started_ekf_start(map, u, o->x, o->p))) {
+    if (!started_ekf_follow(o->x, o->p, &o->chi, 1u, 0, NULL, y, u, states, state_flags)) {
+        if (!(mapped && started_ekf_start(map, u, o->x, o->p, &o->chi))) {
             memcpy(o->x, EKF_X0, sizeof o->x);
             memcpy(o->p, EKF_P0, sizeof o->p);
+            o->chi = 1.0f;
         }
         return VANDERPOL_UNCERTAIN_RESTARTED;
     }

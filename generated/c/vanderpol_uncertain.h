@@ -168,6 +168,7 @@ typedef struct {
     vanderpol_uncertain_map window;
     float x[VANDERPOL_UNCERTAIN_STATES];
     float p[VANDERPOL_UNCERTAIN_COVARIANCE];
+    float chi;
     unsigned count;
     int started;
     float values[VANDERPOL_UNCERTAIN_TARGETS];
@@ -189,6 +190,7 @@ typedef struct {
     vanderpol_uncertain_map window;
     float x[VANDERPOL_UNCERTAIN_STATES];
     float p[VANDERPOL_UNCERTAIN_COVARIANCE];
+    float chi;
     float values[VANDERPOL_UNCERTAIN_TARGETS];
     vanderpol_uncertain_saturation flags[VANDERPOL_UNCERTAIN_TARGETS];
     int ready;

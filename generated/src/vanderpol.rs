@@ -66,7 +66,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["", ""];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 126), ("ekf_box", 257), ("ukf_box", 447), ("corrected", 149), ("ekf_map", 251), ("ekf_restart", 431), ("mhe", 34199)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 126), ("ekf_box", 257), ("ukf_box", 447), ("corrected", 149), ("ekf_map", 265), ("ekf_restart", 445), ("mhe", 34199)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -2018,44 +2018,47 @@ fn corrected_steady<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T
 pub const STARTED_P0: [f64; STATES] = [0.05719193813119149, 0.08029362722321096];
 
 /// The EKF started at the map's first estimate `x̂(N−1) = F(Z)` with `P(N−1)` diagonal, each variance
-/// the map's mean squared error on the tuning runs, then [`Ekf`]'s samples (same `Q` and `R`).
+/// the map's mean squared error on the tuning runs, then [`Ekf`]'s samples (same `Q` and `R`, and
+/// the same χ² watch: innovations that stay implausible end the filter, which the map starts again).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct StartedEkf;
 
 impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
-    type Carried = ([T; STATES], [T; COVARIANCE]);
+    /// `x̂`, the upper triangle of `P` and the watched mean of the normalised innovations squared.
+    type Carried = ([T; STATES], [T; COVARIANCE], T);
     const START_UP: usize = 0;
     const STEADY_READS_MAP: bool = false;
     const STATE_TARGETS: [usize; STATES] = [0, 1];
 
     #[inline(always)]
-    fn start(first: &[T; STATES], u: &[T; INPUTS]) -> Option<([T; STATES], [T; COVARIANCE])> {
+    fn start(first: &[T; STATES], u: &[T; INPUTS]) -> Option<Self::Carried> {
         let (x, p) = ekf_unmeasured(first, &[T::literal(0.05719194, 0.05719193813119149), T::literal(0.0, 0.0), T::literal(0.080293626, 0.08029362722321096)], u);
-        finite(&x, &p).then_some((x, p))
+        finite(&x, &p).then_some((x, p, T::literal(1.0, 1.0)))
     }
 
     #[inline(always)]
     fn follow(
-        carried: &([T; STATES], [T; COVARIANCE]),
+        carried: &Self::Carried,
         _: usize,
         _: bool,
         _: &[T; STATES],
         y: &[T; OUTPUTS],
         u: &[T; INPUTS],
-    ) -> Option<(([T; STATES], [T; COVARIANCE]), [Estimate<T>; STATES])> {
-        let (estimate, x, p, _) = ekf_measured(&carried.0, &carried.1, y, u);
+    ) -> Option<(Self::Carried, [Estimate<T>; STATES])> {
+        let (estimate, x, p, nis) = ekf_measured(&carried.0, &carried.1, y, u);
+        let chi = firmware::watch::watched(carried.2, nis, T::literal(0.1, 0.1));
         let mut inside = [Estimate { value: T::ZERO, saturation: firmware::Saturation::Inside }; STATES];
         for (e, &value) in inside.iter_mut().zip(&estimate) {
             e.value = value;
         }
-        finite(&x, &p).then_some(((x, p), inside))
+        (finite(&x, &p) && firmware::watch::plausible(chi, T::literal(1024.0, 1024.0))).then_some(((x, p, chi), inside))
     }
 
     /// A lost output: the filter's prediction alone, as [`Ekf::push`] runs it.
     #[inline(always)]
-    fn predict(carried: &([T; STATES], [T; COVARIANCE]), u: &[T; INPUTS]) -> Option<([T; STATES], [T; COVARIANCE])> {
+    fn predict(carried: &Self::Carried, u: &[T; INPUTS]) -> Option<Self::Carried> {
         let (x, p) = ekf_unmeasured(&carried.0, &carried.1, u);
-        finite(&x, &p).then_some((x, p))
+        finite(&x, &p).then_some((x, p, carried.2))
     }
 
     #[inline(always)]
@@ -2091,19 +2094,27 @@ fn restart_disagrees<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], f:
 }
 
 impl firmware::emitted::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
-    const FRESH: ([f32; STATES], [f32; COVARIANCE]) = ([0.0, 0.0], [0.17828836, 0.0, 0.48597187]);
+    const FRESH: <Self as firmware::emitted::Follower<f32, STATES, OUTPUTS, INPUTS, TARGETS>>::Carried =
+        ([0.0, 0.0], [0.17828836, 0.0, 0.48597187], 1.0);
 
     #[inline(always)]
-    fn disagrees(carried: &([f32; STATES], [f32; COVARIANCE]), map: &[f32; STATES]) -> bool {
+    fn disagrees(
+        carried: &<Self as firmware::emitted::Follower<f32, STATES, OUTPUTS, INPUTS, TARGETS>>::Carried,
+        map: &[f32; STATES],
+    ) -> bool {
         restart_disagrees(&carried.0, &carried.1, map)
     }
 }
 
 impl firmware::emitted::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
-    const FRESH: ([f64; STATES], [f64; COVARIANCE]) = ([0.0, 0.0], [0.17828835776679183, 0.0, 0.48597187610641795]);
+    const FRESH: <Self as firmware::emitted::Follower<f64, STATES, OUTPUTS, INPUTS, TARGETS>>::Carried =
+        ([0.0, 0.0], [0.17828835776679183, 0.0, 0.48597187610641795], 1.0);
 
     #[inline(always)]
-    fn disagrees(carried: &([f64; STATES], [f64; COVARIANCE]), map: &[f64; STATES]) -> bool {
+    fn disagrees(
+        carried: &<Self as firmware::emitted::Follower<f64, STATES, OUTPUTS, INPUTS, TARGETS>>::Carried,
+        map: &[f64; STATES],
+    ) -> bool {
         restart_disagrees(&carried.0, &carried.1, map)
     }
 }

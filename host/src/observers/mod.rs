@@ -73,23 +73,9 @@ pub fn compare(
     })
 }
 
-/// See [`Comparison::chip_model_error`].
+/// See [`Comparison::chip_model_error`]: over the validation runs' states, relative to each state's
+/// range over the learning runs.
 fn chip_model_error(design: &Design, result: &DesignResult) -> Vec<f64> {
-    use crate::data::simulate::Integrator;
-    let states = design.model.states.len();
-    let spreads = ekf::state_spreads(&result.runs.learning, states);
-    let mut fine = Integrator::new(&design.model, design.tau, design.substeps);
-    let mut coarse = Integrator::new(&design.model, design.tau, design.chip_substeps);
-    let mut worst = vec![0.0_f64; states];
-    for run in &result.runs.validation.runs {
-        for (x, u) in run.states.iter().zip(run.inputs.iter()) {
-            let (mut a, mut b) = (x.to_vec(), x.to_vec());
-            fine.advance(&mut a, u);
-            coarse.advance(&mut b, u);
-            for i in 0..states {
-                worst[i] = worst[i].max((a[i] - b[i]).abs() / spreads[i]);
-            }
-        }
-    }
-    worst
+    let spreads = ekf::state_spreads(&result.runs.learning, design.model.states.len());
+    crate::plant::discretisation::per_state(design, &result.runs.validation, &spreads, design.chip_substeps)
 }

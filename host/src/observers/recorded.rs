@@ -197,6 +197,7 @@ impl<'a> Setup<'a> {
             (ObserverKind::EkfMap, Some(filter), _) => Follower::Started(ekf::StartedStep::new(
                 filter,
                 &constants.ekf_map().expect(CHECKED).p0,
+                &constants.ekf_box().expect(CHECKED).watch,
                 &self.state_targets,
                 tables.horizon - 1,
                 self.code,

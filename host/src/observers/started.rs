@@ -8,9 +8,10 @@
 //! only samples taken). A sample with a non-finite output or input is refused as the chip refuses it:
 //! its row is NaN (no estimate from that sample), and once started, when its input is finite, what
 //! is carried takes one period of the model (`lost`, `Follower::predict`). A prediction that gives
-//! `None` (not finite) is not taken; a start or follow-up that gives `None` restarts the rule as the
-//! chip does (the last estimate stays): the chip empties its window, so the map is read again only
-//! once `first + 1` samples have been accepted since.
+//! `None` (not finite) is not taken; a start or follow-up that gives `None` (not finite, or an EKF's
+//! χ² watch ended it) restarts the rule as the chip does (the last estimate stays, the rows until the
+//! map's next estimate): the chip empties its window, so the map is read again only once `first + 1`
+//! samples have been accepted since.
 
 use firmware::rules::{Given, Refusals, Refused, StartedRule};
 use firmware::Scalar;
@@ -61,7 +62,8 @@ impl<T: Scalar, C> Shell<T, C> {
     /// (zeros where not read): `start(x, u)` gives what to carry from the map's states,
     /// `follow(carried, j, map_states, y, u)` what to carry next and the targets, `lost(carried, u)`
     /// what to carry over a refused sample with a finite input. NaN where the sample is refused or there is no
-    /// estimate yet, the latest estimate where a start or follow-up is not finite.
+    /// estimate yet; the latest estimate where a start or follow-up ends the follower and until the
+    /// map starts it again (what the chip's `estimate` returns).
     pub fn step(
         &mut self,
         row: &[T],
@@ -98,7 +100,9 @@ impl<T: Scalar, C> Shell<T, C> {
             self.filled = 0; // restarted: the chip empties its window
         }
         match self.refusals.count(result) {
-            Ok(Given::Nothing) => self.nan.clone(),
+            // No estimate from this sample: none yet (NaN), or the latest while the map's window
+            // refills after a restart, as the chip's `estimate` returns it.
+            Ok(Given::Nothing) => self.last.clone(),
             Ok(Given::Map(row)) => {
                 self.last = row.to_vec();
                 row.to_vec()

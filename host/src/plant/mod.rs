@@ -17,6 +17,7 @@
 //! [`firmware::Model`]: the EKF the report measures is the firmware's own code, in `f64`.
 
 pub mod covariance;
+pub mod discretisation;
 mod inside;
 pub mod kalman;
 pub mod program;

@@ -23,6 +23,10 @@
 //!   or a scenario's `observer_x0` lies outside the learning box: the filter
 //!   starts where no learning or validation run starts, which is allowed (a published filter's guess
 //!   may be poor on purpose) but is rarely what a user means.
+//! * [`Gate::CoarseChipModel`]: the chip's model, `sampling.chip_substeps` RK4 steps per period, is
+//!   more than [`crate::plant::discretisation::TOLERANCE`] of some state's range away from the
+//!   simulated plant after one period on the learning runs: every observer that carries the model
+//!   carries that error as the plant's ([`crate::plant::discretisation`]).
 //! * [`Gate::LostRuns`]: an observer lost runs of a set it is judged on (validation, the scenario's
 //!   draws, the mismatch or the long runs; [`crate::observers::lost`]). A warning for any kind;
 //!   `--strict` refuses it only for `observer()`, the kind that is flashed.
@@ -40,7 +44,7 @@ use crate::observers::{kind, Comparison};
 use crate::spec::Design;
 
 mod checks;
-pub use checks::{drifts, lost_runs, raw_ranges_short, starts_outside_box, DRIFT_RATIO};
+pub use checks::{coarse_chip_model, drifts, lost_runs, raw_ranges_short, starts_outside_box, DRIFT_RATIO};
 
 /// How much worse than the linear floor the map may be before [`Gate::BelowLinearFloor`].
 pub const LINEAR_FLOOR_SLACK: f64 = 0.02;
@@ -133,6 +137,17 @@ pub enum Gate {
         runs: usize,
         /// Whether it is `observer()`.
         chosen: bool,
+    },
+    /// See the module docs.
+    CoarseChipModel {
+        /// The chip's RK4 steps per period.
+        substeps: usize,
+        /// The state it is farthest on.
+        state: String,
+        /// Its one-period error over its range.
+        error: f64,
+        /// The fewest steps per period within the tolerance, where some are.
+        fewest: Option<usize>,
     },
     /// See the module docs.
     StartOutsideBox {
@@ -251,6 +266,24 @@ impl fmt::Display for Gate {
                     }
                 )
             }
+            Gate::CoarseChipModel {
+                substeps,
+                state,
+                error,
+                fewest,
+            } => write!(
+                f,
+                "`sampling.chip_substeps` = {substeps}: after one period from the learning runs' states, the chip's model is {:.1} % \
+                 of `{state}`'s range away from the simulated plant (more than {:.0} %): every observer that carries the model \
+                 (the filters, the map-started and corrected kinds, the MHE) carries that error as the plant's and may lose \
+                 track; {}",
+                error * 100.0,
+                crate::plant::discretisation::TOLERANCE * 100.0,
+                match fewest {
+                    Some(n) => format!("set `sampling.chip_substeps = {n}`, the fewest within it"),
+                    None => "raise `sampling.substeps` and `sampling.chip_substeps`, or sample faster (`sampling.tau`)".to_owned(),
+                }
+            ),
             Gate::StartOutsideBox { field, state, value, range } => write!(
                 f,
                 "`{field}.{state}` = {value} lies outside the learning box [{}, {}] of `{state}`: the filter starts where no \
@@ -273,10 +306,11 @@ impl Gate {
     }
 }
 
-/// Every failed gate of a design: the starts outside the box, the raw ranges the learning runs
-/// leave, then target by target, gate by gate.
+/// Every failed gate of a design: the starts outside the box, the chip's model's discretisation, the
+/// raw ranges the learning runs leave, then target by target, gate by gate.
 pub fn check(design: &Design, result: &DesignResult, comparison: &Comparison) -> Vec<Gate> {
     let mut failed = starts_outside_box(design);
+    failed.extend(coarse_chip_model(design, &result.runs.learning));
     failed.extend(raw_ranges_short(design, &result.runs.learning));
     for t in &result.targets {
         let name = design.targets[t.index].name.clone();

@@ -129,12 +129,12 @@ pub fn ekf_before_fit(code: &crate::plant::ModelCode, constants: &crate::plant::
     of_ekf(&crate::plant::kalman::filter_code(code, constants)) + WATCH
 }
 
-/// [`of_started`] before the fit (see [`ekf_before_fit`]).
+/// [`of_started`] before the fit with the box EKF's watch, which it carries (see [`ekf_before_fit`]).
 pub fn started_before_fit(code: &crate::plant::ModelCode, constants: &crate::plant::kalman::EkfConstants) -> f64 {
-    of_started(&crate::plant::kalman::filter_code(code, constants))
+    of_started(&crate::plant::kalman::filter_code(code, constants)) + WATCH
 }
 
-/// The map-started EKF's steady sample.
+/// The map-started EKF's steady sample, its watch ([`of_watch`]) apart.
 pub fn of_started(filter: &FilterCode) -> f64 {
     of_ekf(filter) + STARTED_EXTRA
 }

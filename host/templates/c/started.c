@@ -15,7 +15,7 @@ static {{ name }}_status {{ kind }}_sample({{ name }}_{{ kind }} *o, const float
     int estimated = 0;
     if (!accepts(y, u)) {
         if (o->started && inputs_finite(u)) {
-            {{ predict }}({{ carried }}, u);
+            {{ predict }}({{ predicted }}, u);
         }
         return {{ upper }}_REFUSED;
     }

@@ -171,18 +171,20 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
         (@ ekf_map, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
             let (_, ekf_constants) = crate::emitted_constants!($d, &$design);
             let filter = filter_code(&$code, &ekf_constants);
-            ekf::estimate_started::<f64>(&filter, &$d::STARTED_P0, &$targets, $first, &$maps, &$run, &$code).rows
+            ekf::estimate_started::<f64>(&filter, &$d::STARTED_P0, &ekf_constants.watch, &$targets, $first, &$maps, &$run, &$code).rows
         }};
         (@ ekf_restart, $d:ident, $design:ident, $code:ident, $targets:ident, $first:ident, $maps:ident, $run:ident) => {{
             let (_, mut ekf_constants) = crate::emitted_constants!($d, &$design);
             // The filter's start as emitted: its `x̂(0)` and `P(0)`, read from its upper triangle.
-            let (x0, upper) = <$d::StartedEkf as firmware::emitted::Restart<
+            // `(x, P)` of what is carried (a watched filter carries its mean too).
+            let fresh_carried = <$d::StartedEkf as firmware::emitted::Restart<
                 f64,
                 { $d::STATES },
                 { $d::OUTPUTS },
                 { $d::INPUTS },
                 { $d::TARGETS },
             >>::FRESH;
+            let (x0, upper) = (fresh_carried.0, fresh_carried.1);
             ekf_constants.x0 = x0.to_vec();
             let entry = |i: usize, j: usize| upper[host::plant::kalman::upper($d::STATES, i.min(j), i.max(j))];
             ekf_constants.p0 = host::plant::Covariance::Full(

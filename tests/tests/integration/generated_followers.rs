@@ -122,8 +122,17 @@ macro_rules! check_followers {
             );
 
             let filter = filter_code(&code, &ekf_constants);
-            let host =
-                ekf::estimate_started::<f32>(&filter, &d::STARTED_P0, &state_targets, first, &maps, &run, &code).rows;
+            let host = ekf::estimate_started::<f32>(
+                &filter,
+                &d::STARTED_P0,
+                &ekf_constants.watch,
+                &state_targets,
+                first,
+                &maps,
+                &run,
+                &code,
+            )
+            .rows;
             assert_eq!(chip::<d::StartedEkf>(), bits(host));
         }
     };

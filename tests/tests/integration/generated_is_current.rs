@@ -48,7 +48,7 @@ fn generated_files_match_a_fresh_generation() {
             );
             let expected = match (name.as_str(), o.kind == chosen) {
                 ("ecoli_x0_0p5", true) => Some(2),
-                ("ecoli_x0_2", true) => Some(4),
+                ("ecoli_x0_2", true) => Some(2),
                 (n, _) if n.starts_with("ecoli") => None,
                 _ => Some(0),
             };

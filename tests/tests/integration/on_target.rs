@@ -365,11 +365,13 @@ fn every_kinds_predicted_instructions_hold_on_the_chip() {
         println!("{name} {kind}: instructions predicted {prediction}, measured {measured}");
         // The UKF on E. coli runs fewer instructions than its program counts: at the sigma points
         // projected onto P = 0 the model's exp(−k_p / max(P, 0.001)) underflows, and libm's `expf`
-        // returns early there (measured 3452 against 3884 predicted). The prediction stays an upper
-        // bound, within twice the tolerance; everywhere else within the tolerance both ways.
+        // returns early there (`ecoli_x0_0p5`: measured 3467 against 3907 predicted; `ecoli_x0_2`, whose
+        // model takes four RK4 steps per sample and so four times the calls, 10804 against 13411). The
+        // prediction stays an upper bound, within three times the tolerance; everywhere else within the
+        // tolerance both ways.
         let tolerance = if kind == Kind::Of(ObserverKind::UkfBox).name() && name.starts_with("ecoli") {
             assert!(f64::from(prediction) >= measured, "{name} {kind}: under-predicted");
-            2.0 * host::search::cost::TOLERANCE
+            3.0 * host::search::cost::TOLERANCE
         } else {
             host::search::cost::TOLERANCE
         };

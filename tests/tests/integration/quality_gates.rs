@@ -85,8 +85,9 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
             .unwrap()
             .instructions
     };
-    // Map 126, corrected 149, map-started EKF 251, restarted EKF 431 (the EKF, the map and the check
-    // at every sample), UKF 447 (its χ² watch included; checked against the chip in `on_target`).
+    // Map 126, corrected 149, map-started EKF 265, restarted EKF 445 (the EKF, the map and the check
+    // at every sample), UKF 447 (the filters' χ² watch included; checked against the chip in
+    // `on_target`).
     assert_eq!(
         [
             predicted("map"),
@@ -95,7 +96,7 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
             predicted("ekf_restart"),
             predicted("ukf_box").round()
         ],
-        [126.0, 149.0, 251.0, 431.0, 447.0]
+        [126.0, 149.0, 265.0, 445.0, 447.0]
     );
     let choose = |design: &host::spec::Design| host::observers::choose(design, &comparison.observers, &spreads);
     design.observer = Auto;
@@ -138,8 +139,8 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
     design.observer = EkfMap;
     design.budget.instructions = Some(200);
     let error = choose(&design).unwrap_err().to_string();
-    assert!(error.contains("observer.kind") && error.contains("~251"), "{error}");
-    design.budget.instructions = Some(252);
+    assert!(error.contains("observer.kind") && error.contains("~265"), "{error}");
+    design.budget.instructions = Some(266);
     assert_eq!(choose(&design).unwrap().0, EkfMap);
 }
 

@@ -82,13 +82,15 @@ macro_rules! check_refusals {
             let samples = || (0..ys.len()).map(|k| (&maps[k], &run.measurements[k], &run.inputs[k]));
 
             // The box filter's start as emitted (`Restart::FRESH`, `P(0)` from its triangle).
-            let (x0, upper) = <d::StartedEkf as firmware::emitted::Restart<
+            // `(x, P)` of what is carried (a watched filter carries its mean too).
+            let fresh_carried = <d::StartedEkf as firmware::emitted::Restart<
                 f64,
                 { d::STATES },
                 { d::OUTPUTS },
                 { d::INPUTS },
                 { d::TARGETS },
             >>::FRESH;
+            let (x0, upper) = (fresh_carried.0, fresh_carried.1);
             let mut fresh = ekf_constants.clone();
             fresh.x0 = x0.to_vec();
             let entry = |i: usize, j: usize| upper[host::plant::kalman::upper(d::STATES, i.min(j), i.max(j))];
@@ -109,13 +111,28 @@ macro_rules! check_refusals {
             assert_eq!((host.refused(), host.restarts()), chip, "ekf_box");
 
             let chip = counts(d::EkfMapObserver::new(), &ys, &us, |o| o.refused());
-            let mut host = ekf::StartedStep::<f32>::new(&filter, &d::STARTED_P0, &state_targets, first, &code);
+            let mut host = ekf::StartedStep::<f32>::new(
+                &filter,
+                &d::STARTED_P0,
+                &fresh.watch,
+                &state_targets,
+                first,
+                &code,
+            );
             samples().for_each(|(row, y, u)| drop(host.step(row, y, u)));
             assert_eq!((host.refused(), host.restarts()), chip, "ekf_map");
             assert!(chip.1 >= 1, "ekf_map restarted on the overflows: {chip:?}");
             // The run's track, as the report counts it.
-            let track =
-                ekf::estimate_started::<f32>(&filter, &d::STARTED_P0, &state_targets, first, &maps, &run, &code);
+            let track = ekf::estimate_started::<f32>(
+                &filter,
+                &d::STARTED_P0,
+                &fresh.watch,
+                &state_targets,
+                first,
+                &maps,
+                &run,
+                &code,
+            );
             assert_eq!(track.restarts, chip.1, "ekf_map's track");
 
             let chip = counts(d::EkfRestartObserver::new(), &ys, &us, |o| o.refused());

@@ -4,9 +4,13 @@
 //! code) restart and say so, and the host's interpreted programs (`ekf::BoxStep`, what `gen` tunes
 //! and judges) give the same estimates, bit for bit, and the same restarts. Without the watch the
 //! same filter restarts less on that sequence (only where its step overflows): the watch restarts it.
+//! The EKF the map starts (`ekf_map`) and the one it checks (`ekf_restart`) carry the box EKF's
+//! watch: the same sequence restarts them, alike on chip and host.
 
 use firmware::Estimator;
 use host::observers::ekf;
+use host::observers::kind::corrected::run as corrected;
+use host::observers::kind::ekf_restart::run::{RestartConstants, RestartStep};
 use host::observers::kind::ukf_box::program::unscented_code;
 use host::plant::kalman::{filter_code, EkfConstants, FilterCode, Watch};
 use host::plant::{Covariance, ModelCode};
@@ -46,7 +50,8 @@ fn host_run(filter: &FilterCode, constants: &EkfConstants, code: &ModelCode, ys:
     (rows, step.restarts())
 }
 
-/// The chip's run over `(ys, us)`: each sample's targets (`None`: refused or restarted), restarts.
+/// The chip's run over `(ys, us)`: each sample's targets (`None`: refused or restarted, or no
+/// estimate yet), restarts.
 fn chip_run<O>(mut observer: O, ys: &[Vec<f32>], us: &[Vec<f32>]) -> Bits
 where
     O: Estimator<Scalar = f32>,
@@ -59,7 +64,7 @@ where
                 panic!("a sample of the wrong width")
             };
             observer.push(y, u).ok()?;
-            let estimate = observer.estimate().expect("an accepted sample gives an estimate");
+            let estimate = observer.estimate()?; // none before the map's first (`ekf_map`)
             Some(estimate.as_ref().iter().map(|e| e.value.to_bits()).collect())
         })
         .collect();
@@ -132,4 +137,108 @@ fn a_filter_given_an_impossible_output_restarts_alike_on_chip_and_host() {
             "{kind} as recorded"
         );
     }
+}
+
+#[test]
+fn the_filters_the_map_starts_or_checks_restart_on_an_impossible_output_alike_on_chip_and_host() {
+    use generated::vanderpol as d;
+    let design = load_relative(d::SPEC);
+    let code = ModelCode::new(&design).unwrap();
+    let sigma = design.model.outputs[0].noise_variance.sqrt();
+    let ys = stepped(&d::RECORDED_Y, sigma);
+    let us: Vec<Vec<f32>> = d::RECORDED_U.iter().map(|u| u.to_vec()).collect();
+    let wide = |v: &[f32]| v.iter().map(|&v| f64::from(v)).collect::<Vec<f64>>();
+    // The map's f32 estimates of the sequence as the chip computes them (NaN where it refuses).
+    let mut map = d::map_observer();
+    let rows: Vec<Vec<f32>> = (ys.iter().zip(&us))
+        .map(|(y, u)| {
+            match map.push(y[..].try_into().unwrap(), u[..].try_into().unwrap()) {
+                Ok(()) => map
+                    .estimate()
+                    .map_or(vec![f32::NAN; d::TARGETS], |e| e.iter().map(|e| e.value).collect()),
+                Err(_) => vec![f32::NAN; d::TARGETS], // the sequence's lost outputs
+            }
+        })
+        .collect();
+    let (_, ekf_constants) = integration_tests::emitted_constants!(d, &design);
+    assert!(ekf_constants.watch.threshold.is_finite(), "Example 1's EKF is watched");
+    let state_targets = corrected::state_targets(&design).unwrap();
+    let first = design.map.horizon - 1;
+    let filter = filter_code(&code, &ekf_constants);
+    let bits = |t: Vec<f32>| t.iter().map(|v| v.to_bits()).collect::<Vec<u32>>();
+
+    // `ekf_map`: where the chip's push refused or restarted (`None`), the host's row is the latest
+    // estimate (NaN before the first); compare where the chip took the sample.
+    let ekf_map = |watch: &Watch| {
+        let mut step = ekf::StartedStep::<f32>::new(&filter, &d::STARTED_P0, watch, &state_targets, first, &code);
+        let rows: Vec<Vec<u32>> = (rows.iter().zip(ys.iter().zip(&us)))
+            .map(|(row, (y, u))| bits(step.step(row, &wide(y), &wide(u))))
+            .collect();
+        (rows, step.restarts())
+    };
+    let chip = chip_run(d::EkfMapObserver::new(), &ys, &us);
+    let (host, restarts) = ekf_map(&ekf_constants.watch);
+    assert!(chip.1 >= 1, "ekf_map restarts on the impossible output: {}", chip.1);
+    assert_eq!(restarts, chip.1, "ekf_map: restarts, host against chip");
+    for (k, (chip, host)) in chip.0.iter().zip(&host).enumerate() {
+        if let Some(chip) = chip {
+            assert_eq!(chip, host, "ekf_map at sample {k}");
+        }
+    }
+    let fewer = ekf_map(&Watch::OFF).1;
+    println!("ekf_map: {} restarts watched, {fewer} unwatched", chip.1);
+    assert!(
+        fewer < chip.1,
+        "ekf_map: {fewer} restarts unwatched, {} watched",
+        chip.1
+    );
+
+    // `ekf_restart`: the box filter as emitted (`Restart::FRESH`), checked by the map.
+    let fresh = d::Ekf::<f64>::new();
+    let constants = EkfConstants {
+        x0: fresh.state().to_vec(),
+        p0: Covariance::Full(fresh.covariance().iter().map(|row| row.to_vec()).collect()),
+        ..ekf_constants.clone()
+    };
+    let box_filter = filter_code(&code, &constants);
+    let restart = RestartConstants {
+        threshold: d::RESTART_THRESHOLD,
+        variances: d::RESTART_VARIANCES.to_vec(),
+    };
+    let ekf_restart = |constants: &EkfConstants, restart: &RestartConstants| {
+        let mut step = RestartStep::<f32>::new(&box_filter, constants, &d::STARTED_P0, restart, &state_targets, &code);
+        let rows: Vec<Vec<u32>> = (rows.iter().zip(ys.iter().zip(&us)))
+            .map(|(row, (y, u))| bits(step.step(row, &wide(y), &wide(u))))
+            .collect();
+        (rows, step.restarts())
+    };
+    // On this sequence the map's check sees the filter and the map disagree first and restarts the
+    // filter from the map (its usual work, not counted), which also restarts the watch: the chip and
+    // the host agree bit for bit, restarts included.
+    let chip = chip_run(d::EkfRestartObserver::new(), &ys, &us);
+    let (host, restarts) = ekf_restart(&constants, &restart);
+    assert_eq!(restarts, chip.1, "ekf_restart: restarts, host against chip");
+    for (k, (chip, host)) in chip.0.iter().zip(&host).enumerate() {
+        if let Some(chip) = chip {
+            assert_eq!(chip, host, "ekf_restart at sample {k}");
+        }
+    }
+    // With the check off (`τ = ∞`, on the host), the watch is what restarts the filter.
+    let unchecked = RestartConstants {
+        threshold: f64::INFINITY,
+        ..restart.clone()
+    };
+    let unwatched = EkfConstants {
+        watch: Watch::OFF,
+        ..constants.clone()
+    };
+    let (watched, fewer) = (
+        ekf_restart(&constants, &unchecked).1,
+        ekf_restart(&unwatched, &unchecked).1,
+    );
+    println!("ekf_restart unchecked: {watched} restarts watched, {fewer} unwatched");
+    assert!(
+        fewer < watched,
+        "ekf_restart: {fewer} restarts unwatched, {watched} watched"
+    );
 }

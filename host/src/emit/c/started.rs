@@ -56,8 +56,10 @@ pub(crate) struct Follower<'a> {
     pub start_up: usize,
     /// `Follower::STEADY_READS_MAP`.
     pub steady_reads_map: bool,
-    /// The carried state's fields, as passed to `_start`, `_follow` and `_predict` (`o->x`, …).
+    /// The carried state's fields, as passed to `_start` and `_follow` (`o->x`, …).
     pub carried: &'a str,
+    /// Those of them `predict` reads and writes (a watched mean is not predicted).
+    pub predicted: &'a str,
 }
 
 /// `<name>_<kind>_init`, `_push` and `_estimate` of a follower as `firmware::Started` runs it: the
@@ -73,6 +75,7 @@ pub(crate) fn observer(f: &Follower<'_>, init_carried: &str) -> String {
         start_up,
         steady_reads_map,
         carried,
+        predicted,
     } = *f;
     super::text::render(&StartedC {
         name,
@@ -83,6 +86,7 @@ pub(crate) fn observer(f: &Follower<'_>, init_carried: &str) -> String {
         start_up,
         steady_reads_map,
         carried,
+        predicted,
         init_carried,
     })
 }
@@ -140,6 +144,7 @@ struct StartedC<'a> {
     start_up: usize,
     steady_reads_map: bool,
     carried: &'a str,
+    predicted: &'a str,
     init_carried: &'a str,
 }
 

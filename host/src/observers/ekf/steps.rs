@@ -8,7 +8,7 @@ use std::cell::RefCell;
 use crate::data::Run;
 use crate::observers::lost::Track;
 use crate::observers::started::{literal, literals, Shell};
-use crate::plant::kalman::EkfConstants;
+use crate::plant::kalman::{EkfConstants, Watch};
 use crate::plant::ModelCode;
 use firmware::rules::Refusals;
 
@@ -123,18 +123,21 @@ pub fn kept<T: firmware::Scalar>((_, x, p): crate::plant::kalman::Sampled<T>) ->
 
 /// The EKF started by the map (the generated `StartedEkf` in `firmware::Started`, step for step,
 /// [`Shell`]) in `T`: at sample `first` the map's estimate, from which `(x, P)` is
-/// predicted with `P` = `p0` on the diagonal; then `filter`'s measured samples. With the restarts on
-/// the run.
+/// predicted with `P` = `p0` on the diagonal; then `filter`'s measured samples, watched by `watch`
+/// (the box EKF's: a sample whose innovations leave it implausible ends the filter, which the map's
+/// next estimate starts again). With the restarts on the run.
+#[allow(clippy::too_many_arguments)]
 pub fn estimate_started<T: firmware::Scalar + firmware::emitted::Maths>(
     filter: &crate::plant::kalman::FilterCode,
     p0: &[f64],
+    watch: &Watch,
     state_targets: &[usize],
     first: usize,
     map: &[Vec<T>],
     run: &Run,
     code: &ModelCode,
 ) -> Track<Vec<Vec<T>>> {
-    let mut observer = StartedStep::new(filter, p0, state_targets, first, code);
+    let mut observer = StartedStep::new(filter, p0, watch, state_targets, first, code);
     let rows = map
         .iter()
         .zip(run.measurements.iter().zip(run.inputs.iter()))
@@ -153,8 +156,12 @@ pub struct StartedStep<'a, T> {
     code: &'a ModelCode,
     /// `P` at the start, its upper triangle.
     upper: Vec<T>,
+    /// The watched mean's start `m`, and the watch's gain and limit where the filter is watched.
+    chi: T,
+    watch: Option<(T, T)>,
     scratch: RefCell<Vec<T>>,
-    shell: Shell<T, (Vec<T>, Vec<T>)>,
+    /// `x`, the upper triangle of `P` and the watched mean (`m` where not watched: never read).
+    shell: Shell<T, (Vec<T>, Vec<T>, T)>,
 }
 
 impl<'a, T: firmware::Scalar + firmware::emitted::Maths> StartedStep<'a, T> {
@@ -162,14 +169,20 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> StartedStep<'a, T> {
     pub fn new(
         filter: &'a crate::plant::kalman::FilterCode,
         p0: &[f64],
+        watch: &Watch,
         state_targets: &[usize],
         first: usize,
         code: &'a ModelCode,
     ) -> Self {
+        let outputs = code.dimensions.outputs;
         StartedStep {
             filter,
             code,
             upper: literals(&crate::plant::kalman::diagonal_upper(p0)),
+            chi: literal(outputs as f64),
+            watch: watch
+                .constants(outputs)
+                .map(|(gain, limit)| (literal(gain), literal(limit))),
             scratch: RefCell::new(Vec::new()),
             // `StartedEkf`: no start-up, the map read at the start only.
             shell: Shell::new(first, state_targets, code.dimensions.targets, (0, false)),
@@ -182,23 +195,31 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> StartedStep<'a, T> {
             filter,
             code,
             upper,
+            chi: start,
+            watch,
             scratch,
             shell,
         } = self;
+        let (start, watch) = (*start, *watch);
         shell.step(
             row,
             y,
             u,
             // `StartedEkf::start`: `(x, P)` predicted from the map's states with `P` = `p0`.
-            &mut |x, u| kept(filter.run(x, upper, None, u, &mut scratch.borrow_mut())),
-            &mut |(x, p): &(Vec<T>, Vec<T>), _, _, y, u| {
-                let (estimate, x, p) = filter.run(x, p, Some(y), u, &mut scratch.borrow_mut());
+            &mut |x, u| kept(filter.run(x, upper, None, u, &mut scratch.borrow_mut())).map(|(x, p)| (x, p, start)),
+            &mut |(x, p, chi): &(Vec<T>, Vec<T>, T), _, _, y, u| {
+                let ((estimate, x, p), nis) = filter.run_watched(x, p, Some(y), u, &mut scratch.borrow_mut());
                 let estimate = estimate.expect("a measured sample has an estimate");
+                let nis = nis.expect("a measured sample has one");
+                let chi = watch.map_or(*chi, |(gain, _)| firmware::watch::watched(*chi, nis, gain));
                 let targets = code.targets(&estimate, u, &mut scratch.borrow_mut());
-                finite(&x, &p).then_some(((x, p), targets))
+                let plausible = watch.is_none_or(|(_, limit)| firmware::watch::plausible(chi, limit));
+                (finite(&x, &p) && plausible).then_some(((x, p, chi), targets))
             },
             // A lost output: the prediction alone (`StartedEkf::predict`).
-            &mut |(x, p): &(Vec<T>, Vec<T>), u| kept(filter.run(x, p, None, u, &mut scratch.borrow_mut())),
+            &mut |(x, p, chi): &(Vec<T>, Vec<T>, T), u| {
+                kept(filter.run(x, p, None, u, &mut scratch.borrow_mut())).map(|(x, p)| (x, p, *chi))
+            },
         )
     }
 

@@ -55,6 +55,17 @@ pub fn lost_runs(comparison: &Comparison) -> Vec<Gate> {
         .collect()
 }
 
+/// The chip's model too far from the simulated plant over one period ([`Gate::CoarseChipModel`]).
+pub fn coarse_chip_model(design: &Design, learning: &crate::data::DataSet) -> Option<Gate> {
+    let d = crate::plant::discretisation::check(design, learning);
+    (!d.passes()).then(|| Gate::CoarseChipModel {
+        substeps: d.substeps,
+        state: design.model.states[d.state].clone(),
+        error: d.error,
+        fewest: d.fewest,
+    })
+}
+
 /// The starts the spec gives a filter outside the learning box ([`Gate::StartOutsideBox`]).
 pub fn starts_outside_box(design: &Design) -> Vec<Gate> {
     let mut outside = Vec::new();

@@ -77,6 +77,7 @@ fn corrected(
         start_up: constants.start_up,
         steady_reads_map: programs.steady_reads_map,
         carried: "o->x",
+        predicted: "o->x",
     };
     let source = crate::emit::c::render(&CorrectedC {
         name,

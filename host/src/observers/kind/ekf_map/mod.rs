@@ -54,6 +54,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
         Track::from(ekf::estimate_started(
             &filter,
             p0,
+            &tuned.constants.watch,
             &state_targets,
             first,
             &map,
@@ -67,9 +68,8 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
         bench.tuning_score(&bench.on_tuning(|run, map| run_started(&p0, run, map).rows))
     });
     let p0 = scaled(factor);
-    let figures = bench.judge("ekf_map", cost::of_started(&filter), &|run, map| {
-        run_started(&p0, run, map)
-    });
+    let instructions = cost::of_started(&filter) + cost::of_watch(&tuned.constants.watch);
+    let figures = bench.judge("ekf_map", instructions, &|run, map| run_started(&p0, run, map));
     let started = Started {
         p0,
         factor,

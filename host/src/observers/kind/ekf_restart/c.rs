@@ -6,7 +6,7 @@ use askama::Template;
 use crate::emit::c::started;
 use crate::emit::c::text::{float, render, CPart};
 use crate::emit::model::observers::Observers;
-use crate::emit::EmitError;
+use crate::emit::{EmitError, WatchLiterals};
 use crate::plant::kalman;
 use crate::plant::ModelCode;
 use crate::spec::Design;
@@ -28,12 +28,26 @@ pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) ->
             ))
         })
         .collect::<Result<String, EmitError>>()?;
+    // The EKF's χ² watch: the carried mean passed with `x` and `P`, and reset with them.
+    let (chi_arg, chi_field, chi_reset, chi_reset_inner) =
+        match WatchLiterals::of(&observers.ekf().expect("matched").watch, code.dimensions.outputs, float)? {
+            Some(w) => (
+                ", &o->chi",
+                "    float chi;\n",
+                format!("    o->chi = {};\n", w.start),
+                format!("            o->chi = {};\n", w.start),
+            ),
+            None => ("", "", String::new(), String::new()),
+        };
     let source = render(&RestartedC {
         name,
         upper: &upper,
         kind: "ekf_restart",
         terms: &terms,
         threshold: &float("restart threshold", restart.threshold)?,
+        chi_arg,
+        chi_reset: &chi_reset,
+        chi_reset_inner: &chi_reset_inner,
     });
     let header = started::header(
         name,
@@ -41,7 +55,7 @@ pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) ->
         "The EKF from the box centre that the map watches at every sample from its first estimate on,\n \
          * restarted from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver).",
         true,
-        &format!("    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n"),
+        &format!("    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n{chi_field}"),
     );
     Ok(Some(CPart {
         header,
@@ -50,7 +64,8 @@ pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) ->
     }))
 }
 
-/// `ekf_restart`'s check and observer (`terms`: the check's sum).
+/// `ekf_restart`'s check and observer (`terms`: the check's sum; `chi_…`: the EKF's watched mean as
+/// an argument and its resets, empty where the EKF is not watched).
 #[derive(Template)]
 #[template(path = "ekf_restart/templates/restarted.c.askama", escape = "none")]
 struct RestartedC<'a> {
@@ -59,4 +74,7 @@ struct RestartedC<'a> {
     kind: &'a str,
     terms: &'a str,
     threshold: &'a str,
+    chi_arg: &'a str,
+    chi_reset: &'a str,
+    chi_reset_inner: &'a str,
 }

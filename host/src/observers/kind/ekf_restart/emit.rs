@@ -12,16 +12,17 @@ use crate::plant::ModelCode;
 use crate::spec::Design;
 
 /// Its part of the design file, when the design has it (and the EKFs it runs on).
-pub(crate) fn rust(_: &Design, _: &ModelCode, observers: &Observers<'_>) -> Result<Option<String>, EmitError> {
+pub(crate) fn rust(_: &Design, code: &ModelCode, observers: &Observers<'_>) -> Result<Option<String>, EmitError> {
     match (observers.ekf(), observers.started(), observers.restart()) {
-        (Some(ekf), Some(_), Some(restart)) => restarted(ekf, restart).map(Some),
+        (Some(ekf), Some(_), Some(restart)) => restarted(ekf, restart, code.dimensions.outputs).map(Some),
         _ => Ok(None),
     }
 }
 
 /// The box-started EKF checked by the map: `StartedEkf`'s `firmware::Restart` in `f32` and `f64`,
-/// the check, and `EkfRestartObserver`.
-fn restarted(ekf: &EkfConstants, restart: &RestartConstants) -> Result<String, EmitError> {
+/// the check, and `EkfRestartObserver` (`outputs`: the filter's, the watch's start where it is
+/// watched).
+fn restarted(ekf: &EkfConstants, restart: &RestartConstants, outputs: usize) -> Result<String, EmitError> {
     let nx = ekf.x0.len();
     let upper = ekf.p0.upper();
     let f64_list = |values: &[f64]| format!("{values:?}");
@@ -42,11 +43,17 @@ fn restarted(ekf: &EkfConstants, restart: &RestartConstants) -> Result<String, E
         p0_f32: &f32_list("EKF P0", &upper)?,
         x0_f64: &f64_list(&ekf.x0),
         p0_f64: &f64_list(&upper),
+        // `StartedEkf`'s carried watched mean, at its start `m` (a literal of either type).
+        chi: &match ekf.watch.constants(outputs) {
+            Some(_) => format!(", {outputs}.0"),
+            None => String::new(),
+        },
     }
     .render()?)
 }
 
-/// The restarted EKF (`…_f64`: f64 values, the others `T` or f32 literals).
+/// The restarted EKF (`…_f64`: f64 values, the others `T` or f32 literals; `chi`: the fresh
+/// watched mean after a comma, or nothing where the EKF is not watched).
 #[derive(Template)]
 #[template(path = "ekf_restart/templates/restarted.rs.askama", escape = "none")]
 struct RestartedText<'a> {
@@ -59,4 +66,5 @@ struct RestartedText<'a> {
     p0_f32: &'a str,
     x0_f64: &'a str,
     p0_f64: &'a str,
+    chi: &'a str,
 }

@@ -75,7 +75,8 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     });
     let constants = with(threshold);
     let map_cost = bench.observers.first()?.instructions;
-    let figures = bench.judge("ekf_restart", cost::of_restarted(&filter, map_cost), &|run, map| {
+    let instructions = cost::of_restarted(&filter, map_cost) + crate::search::cost::of_watch(&tuned.constants.watch);
+    let figures = bench.judge("ekf_restart", instructions, &|run, map| {
         run_restarted(&constants, run, map)
     });
     bench.tuned.insert(Tuned::EkfRestart(constants));

@@ -63,8 +63,9 @@ pub fn disagrees<T: Scalar>(x: &[T], p: &[T], map: &[T], constants: &RestartCons
 /// `filter` starts at `constants.x0` with `P(0)` = `constants.p0`; at every accepted sample whose
 /// map row `map[k]` is finite it is checked ([`disagrees`]) and, if so, restarted from the map's states
 /// with `P` = `started_p0` on the diagonal, that sample's estimate the map's row. A step whose result is
-/// not finite restarts it, from the map's row where it is finite, else from `constants.x0` (the last
-/// estimate stays). With the restarts on the run.
+/// not finite, or whose innovations leave the filter's watch (`constants.watch`) implausible, restarts
+/// it, from the map's row where it is finite, else from `constants.x0` (the last estimate stays). With
+/// the restarts on the run.
 #[allow(clippy::too_many_arguments)]
 pub fn estimate<T: Scalar + Maths>(
     filter: &FilterCode,
@@ -100,10 +101,12 @@ pub struct RestartStep<'a, T> {
     state_targets: &'a [usize],
     /// `P` of a restart, its upper triangle.
     started: Vec<T>,
-    /// `x` and the upper triangle of `P` at the start.
-    fresh: (Vec<T>, Vec<T>),
-    /// `x` and the upper triangle of `P`.
-    rule: RestartedRule<(Vec<T>, Vec<T>)>,
+    /// `x`, the upper triangle of `P` and the watched mean at the start.
+    fresh: (Vec<T>, Vec<T>, T),
+    /// The watch's gain and limit where the EKF is watched (`firmware::watch`).
+    watch: Option<(T, T)>,
+    /// `x`, the upper triangle of `P` and the watched mean (`m` where not watched: never read).
+    rule: RestartedRule<(Vec<T>, Vec<T>, T)>,
     refusals: Refusals,
     last: Vec<T>,
     nan: Vec<T>,
@@ -121,14 +124,21 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
         code: &'a ModelCode,
     ) -> Self {
         let nan = vec![T::literal(f32::NAN, f64::NAN); code.dimensions.targets];
+        let outputs = code.dimensions.outputs;
+        let fresh = (
+            literals(&constants.x0),
+            literals(&constants.p0.upper()),
+            literal(outputs as f64),
+        );
         RestartStep {
             filter,
             code,
             restart,
             state_targets,
             started: literals(&kalman::diagonal_upper(started_p0)),
-            fresh: (literals(&constants.x0), literals(&constants.p0.upper())),
-            rule: RestartedRule::new((literals(&constants.x0), literals(&constants.p0.upper()))),
+            watch: (constants.watch.constants(outputs)).map(|(gain, limit)| (literal(gain), literal(limit))),
+            rule: RestartedRule::new(fresh.clone()),
+            fresh,
             refusals: Refusals::NONE,
             last: nan.clone(),
             nan,
@@ -148,14 +158,16 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
             state_targets,
             started,
             fresh,
+            watch,
             rule,
             scratch,
             ..
         } = self;
+        let (watch, start) = (*watch, fresh.2);
         let inputs_finite = u.iter().all(|v| v.is_finite());
         if !(inputs_finite && y.iter().all(|v| v.is_finite())) {
-            rule.lost(inputs_finite, |(x, p)| {
-                kept(filter.run(x, p, None, &u, &mut scratch.borrow_mut()))
+            rule.lost(inputs_finite, |(x, p, chi)| {
+                kept(filter.run(x, p, None, &u, &mut scratch.borrow_mut())).map(|(x, p)| (x, p, *chi))
             });
             let _ = self.refusals.count::<()>(Err(Refused::Value));
             return self.nan.clone();
@@ -163,13 +175,20 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
         let states = |row: &[T]| state_targets.iter().map(|&t| row[t]).collect::<Vec<T>>();
         let result = rule.accepted(
             row.iter().all(|v| v.is_finite()).then_some(row),
-            |(x, p), row| disagrees(x, p, &states(row), restart),
-            |row| kept(filter.run(&states(row), started, None, &u, &mut scratch.borrow_mut())),
-            |(x, p)| {
-                let (estimate, x, p) = filter.run(x, p, Some(&y), &u, &mut scratch.borrow_mut());
+            |(x, p, _), row| disagrees(x, p, &states(row), restart),
+            |row| {
+                kept(filter.run(&states(row), started, None, &u, &mut scratch.borrow_mut())).map(|(x, p)| (x, p, start))
+            },
+            |(x, p, chi)| {
+                let ((estimate, x, p), nis) = filter.run_watched(x, p, Some(&y), &u, &mut scratch.borrow_mut());
                 let estimate = estimate.expect("a measured sample has an estimate");
+                let nis = nis.expect("a measured sample has one");
+                let chi = watch.map_or(*chi, |(gain, _)| firmware::watch::watched(*chi, nis, gain));
                 let (x, p) = kept((None, x, p))?;
-                Some(((x, p), code.targets(&estimate, &u, &mut scratch.borrow_mut())))
+                if !watch.is_none_or(|(_, limit)| firmware::watch::plausible(chi, limit)) {
+                    return None; // the watch: the innovations stay implausible
+                }
+                Some(((x, p, chi), code.targets(&estimate, &u, &mut scratch.borrow_mut())))
             },
             || fresh.clone(),
         );
