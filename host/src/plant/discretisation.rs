@@ -178,5 +178,20 @@ expr = "x"
         let (slow, learning) = decay(0.05, 1);
         let d = check(&slow, &learning);
         assert!(d.passes() && d.fewest == Some(1), "{d:?}");
+        assert_eq!(crate::report::gates::coarse_chip_model(&slow, &learning), None);
+    }
+
+    #[test]
+    fn the_gate_names_the_state_and_the_fewest_steps() {
+        // λτ = 1.5 by one step: RK4's 0.2734 against e^{−1.5} = 0.2231, 5 % of the range; by two,
+        // 0.2248: 0.17 %, within 1 %.
+        let (design, learning) = decay(1.5, 1);
+        let gate = crate::report::gates::coarse_chip_model(&design, &learning).expect("5 % is over 1 %");
+        let text = gate.to_string();
+        assert!(
+            text.contains("5.0 % of `x`'s range") && text.contains("set `sampling.chip_substeps = 2`"),
+            "{text}"
+        );
+        assert!(gate.strict(), "`gen --strict` refuses a design whose chip model is off");
     }
 }

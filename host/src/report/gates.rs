@@ -273,12 +273,21 @@ impl fmt::Display for Gate {
                 fewest,
             } => write!(
                 f,
-                "`sampling.chip_substeps` = {substeps}: after one period from the learning runs' states, the chip's model is {:.1} % \
-                 of `{state}`'s range away from the simulated plant (more than {:.0} %): every observer that carries the model \
-                 (the filters, the map-started and corrected kinds, the MHE) carries that error as the plant's and may lose \
-                 track; {}",
-                error * 100.0,
-                crate::plant::discretisation::TOLERANCE * 100.0,
+                "`sampling.chip_substeps` = {substeps}: {}: every observer that carries the model (the filters, the map-started \
+                 and corrected kinds, the MHE) carries that error as the plant's and may lose track; {}",
+                if error.is_finite() {
+                    format!(
+                        "after one period from the learning runs' states, the chip's model is {:.1} % of `{state}`'s range away \
+                         from the simulated plant (more than {:.0} %)",
+                        error * 100.0,
+                        crate::plant::discretisation::TOLERANCE * 100.0
+                    )
+                } else {
+                    format!(
+                        "after one period from some learning run's state, the chip's model is not finite in `{state}` where the \
+                         simulated plant is (its RK4 stages leave the model's domain, a `sqrt` of a negative value say)"
+                    )
+                },
                 match fewest {
                     Some(n) => format!("set `sampling.chip_substeps = {n}`, the fewest within it"),
                     None => "raise `sampling.substeps` and `sampling.chip_substeps`, or sample faster (`sampling.tau`)".to_owned(),
