@@ -8,7 +8,7 @@
 //!   true target outside the learning range `[r_min, r_max]`: the validation runs went where the
 //!   learning runs never did (a pendulum going over the top, say), so the map can only saturate there.
 //! * [`Gate::Weak`]: the map's validation RMSE is at least
-//!   [`WEAK_FRACTION`] of the target's spread: it barely beats
+//!   [`WEAK_FRACTION`](crate::fit::evaluate::WEAK_FRACTION) of the target's spread: it barely beats
 //!   predicting the mean, and the target may not be observable from these measurements over N.
 //! * [`Gate::EkfBetter`]: the chosen observer's validation RMSE is more than [`EKF_FACTOR`] times the
 //!   design's best other EKF's (`ekf_box`, `ekf_map` or `ekf_restart`, other than the chosen kind) on some
@@ -36,14 +36,12 @@
 //!   the validation runs are too short to show. A warning for any kind; `--strict` refuses it only
 //!   for `observer()`.
 
-use std::fmt;
-
-use crate::fit::evaluate::WEAK_FRACTION;
 use crate::fit::DesignResult;
 use crate::observers::{kind, Comparison};
 use crate::spec::Design;
 
 mod checks;
+mod sentence;
 pub use checks::{coarse_chip_model, drifts, lost_runs, raw_ranges_short, starts_outside_box, DRIFT_RATIO};
 
 /// How much worse than the linear floor the map may be before [`Gate::BelowLinearFloor`].
@@ -160,148 +158,6 @@ pub enum Gate {
         /// The learning box along that state.
         range: (f64, f64),
     },
-}
-
-impl fmt::Display for Gate {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Gate::BelowLinearFloor {
-                target,
-                ratio,
-                paper_normalisation,
-            } => write!(
-                f,
-                "target `{target}`: the map's validation RMSE is {ratio:.3} times the linear floor's (more than {:.0} % worse): \
-                 the map does not generalise from the learning runs; {}try another `map.beta` or `map.nm`, or learning runs \
-                 that cover the validation box (`learning.grid`, `learning.samples`)",
-                LINEAR_FLOOR_SLACK * 100.0,
-                if *paper_normalisation { "set `map.normalisation = \"intercept\"`, or " } else { "" }
-            ),
-            Gate::OutsideLearningRange { target, fraction, range, seen } => write!(
-                f,
-                "target `{target}`: {:.1} % of the validation windows have a true value outside the learning range [{:.4}, {:.4}] \
-                 (validation saw [{:.4}, {:.4}]): the validation runs go where no learning run went, and the map can only \
-                 saturate there; widen the learning grid (`learning.grid`, more points or a wider box) or lengthen the learning runs \
-                 (`learning.samples`) so that they cover it",
-                fraction * 100.0,
-                range.0,
-                range.1,
-                seen.0,
-                seen.1
-            ),
-            Gate::Weak { target, fraction, horizon } => write!(
-                f,
-                "target `{target}`: validation RMSE is {:.0} % of the target's spread: the map barely beats predicting the mean \
-                 (at least {:.0} %); the target may not be observable from these measurements over N = {horizon} samples: \
-                 measure another output, or lengthen `map.horizon`",
-                fraction * 100.0,
-                WEAK_FRACTION * 100.0
-            ),
-            Gate::EkfBetter { target, chosen, rmse, ekf, ekf_rmse } => {
-                // The peer in its kind's own words (another filter is not "the EKF").
-                let what = kind::REGISTRY
-                    .iter()
-                    .find(|k| k.kind.name() == *ekf)
-                    .map_or("another filter", |k| k.what);
-                write!(
-                    f,
-                    "target `{target}`: the chosen observer (`{chosen}`) has validation RMSE {rmse:.4}, more than {EKF_FACTOR} times \
-                     that of {what} (`{ekf}`: {ekf_rmse:.4}): `{ekf}` is the better choice for this system (`[observer] kind = \"{ekf}\"`)"
-                )
-            }
-            Gate::RawRangeShort { signal, covered, seen, fraction } => write!(
-                f,
-                "`chip.raw.{signal}`: the declared raw range stands for [{:.4}, {:.4}], but `{signal}` spans [{:.4}, {:.4}] in the \
-                 learning runs ({:.1} % of their samples outside): a converter holds those samples at its range's ends, so \
-                 the integer map reads values the signal does not have; declare the converter's real span (`min`, `max`, `scale`, `offset`), or scale \
-                 the signal into the converter's input range",
-                covered.0,
-                covered.1,
-                seen.0,
-                seen.1,
-                fraction * 100.0
-            ),
-            Gate::Drift {
-                kind: name,
-                target,
-                plant,
-                first,
-                last,
-                chosen,
-            } => {
-                let what = kind::named(name).map_or("the observer", |k| k.what);
-                let who = if *chosen {
-                    format!("`observer()`, {what} (`{name}`),")
-                } else {
-                    format!("{what} (`{name}`)")
-                };
-                write!(
-                    f,
-                    "{who} drifts on target `{target}` over the long runs{plant}: RMSE {last:.4} over the last window against \
-                     {first:.4} over the first ({:.2} times, more than {DRIFT_RATIO}; the report's drift table){}",
-                    last / first,
-                    if *chosen {
-                        "; choose a kind that does not drift (`[observer] kind`)"
-                    } else {
-                        ""
-                    }
-                )
-            }
-            Gate::LostRuns { kind: name, set, lost, runs, chosen } => {
-                let what = kind::named(name).map_or("the observer", |k| k.what);
-                let who = if *chosen {
-                    format!("`observer()`, {what} (`{name}`),")
-                } else {
-                    format!("{what} (`{name}`)")
-                };
-                write!(
-                    f,
-                    "{who} lost {lost} of {runs} {set} runs: at their end its RMSE on some target exceeded {} times the target's \
-                     spread (the best constant estimate's), or its estimate was not finite (the report's table of lost runs){}",
-                    crate::observers::lost::LOST_FRACTION,
-                    if *chosen {
-                        "; choose a kind that lost none (`[observer] kind`)"
-                    } else {
-                        ""
-                    }
-                )
-            }
-            Gate::CoarseChipModel {
-                substeps,
-                state,
-                error,
-                fewest,
-            } => write!(
-                f,
-                "`sampling.chip_substeps` = {substeps}: {}: every observer that carries the model (the filters, the map-started \
-                 and corrected kinds, the MHE) carries that error as the plant's and may lose track; {}",
-                if error.is_finite() {
-                    format!(
-                        "after one period from the learning runs' states, the chip's model is {:.1} % of `{state}`'s range away \
-                         from the simulated plant (more than {:.0} %)",
-                        error * 100.0,
-                        crate::plant::discretisation::TOLERANCE * 100.0
-                    )
-                } else {
-                    format!(
-                        "after one period from some learning run's state, the chip's model is not finite in `{state}` where the \
-                         simulated plant is (its RK4 stages leave the model's domain, a `sqrt` of a negative value say)"
-                    )
-                },
-                match fewest {
-                    Some(n) => format!("set `sampling.chip_substeps = {n}`, the fewest within it"),
-                    None => "raise `sampling.substeps` and `sampling.chip_substeps`, or sample faster (`sampling.tau`)".to_owned(),
-                }
-            ),
-            Gate::StartOutsideBox { field, state, value, range } => write!(
-                f,
-                "`{field}.{state}` = {value} lies outside the learning box [{}, {}] of `{state}`: the filter starts where no \
-                 learning or validation run starts; if that is meant (a published filter's guess), ignore this, else give a \
-                 start inside the box or widen `learning.grid.{state}`",
-                range.0, range.1
-            ),
-        }
-    }
 }
 
 impl Gate {
