@@ -17,16 +17,13 @@
 
 use crate::data::simulate::Integrator;
 use crate::data::DataSet;
-use crate::spec::Design;
+use crate::spec::{Design, MAX_CHIP_SUBSTEPS};
 
 /// The largest one-period error of the chip's model, over a state's range, that passes: 1 %.
 pub const TOLERANCE: f64 = 0.01;
 
-/// The most RK4 steps per period the chip may take (`sampling.chip_substeps`' limit).
-pub const MOST: usize = 64;
-
 /// The chip's one-period model error on a design's learning runs.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Discretisation {
     /// The chip's RK4 steps per period (`sampling.chip_substeps`).
     pub substeps: usize,
@@ -35,7 +32,7 @@ pub struct Discretisation {
     /// The state it is largest on.
     pub state: usize,
     /// The fewest steps per period whose error is within [`TOLERANCE`] (1, 2, 4, … and the
-    /// simulation's own `sampling.substeps`, up to [`MOST`]); `None` when none is.
+    /// simulation's own `sampling.substeps`, up to [`MAX_CHIP_SUBSTEPS`]); `None` when none is.
     pub fewest: Option<usize>,
 }
 
@@ -49,25 +46,19 @@ impl Discretisation {
 /// The chip's one-period model error of `design` over the samples of `learning` (see the module
 /// docs), and the fewest substeps that pass.
 pub fn check(design: &Design, learning: &DataSet) -> Discretisation {
-    let (error, state) = error(design, learning, design.chip_substeps);
-    let limit = design.substeps.min(MOST);
-    let candidates = (0..)
+    let (largest, state) = error(design, learning, design.chip_substeps);
+    let limit = design.substeps.min(MAX_CHIP_SUBSTEPS);
+    let fewest = (0..)
         .map(|p| 1usize << p)
         .take_while(|&s| s < limit)
-        .chain(std::iter::once(limit));
-    let fewest = candidates
-        .into_iter()
-        .find(|&s| s == design.substeps || error_of(design, learning, s) <= TOLERANCE);
+        .chain(std::iter::once(limit))
+        .find(|&s| s == design.substeps || error(design, learning, s).0 <= TOLERANCE);
     Discretisation {
         substeps: design.chip_substeps,
-        error,
+        error: largest,
         state,
         fewest,
     }
-}
-
-fn error_of(design: &Design, learning: &DataSet, substeps: usize) -> f64 {
-    error(design, learning, substeps).0
 }
 
 /// The largest `e_i` with `substeps` RK4 steps per period over the learning runs, and its state.

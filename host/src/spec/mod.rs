@@ -260,6 +260,9 @@ impl Bounds {
     }
 }
 
+/// The most RK4 steps per sample the chip's model may take (`sampling.chip_substeps`).
+pub const MAX_CHIP_SUBSTEPS: usize = 64;
+
 /// A validated design.
 #[derive(Clone, Debug)]
 pub struct Design {

@@ -58,7 +58,11 @@ impl Validator {
                 "set `sampling.chip_substeps` to 1 or more (1 is the default)",
             ));
         }
-        self.at_most("sampling.chip_substeps", raw.sampling.chip_substeps, 64)?;
+        self.at_most(
+            "sampling.chip_substeps",
+            raw.sampling.chip_substeps,
+            super::MAX_CHIP_SUBSTEPS,
+        )?;
         self.label("sampling.time_unit", &raw.sampling.time_unit)?;
         // The description is prose of any length; line breaks and tabs are kept (doc comments make
         // them spaces), other control characters are not text.

@@ -40,8 +40,7 @@ pub struct BoxStep<'a, T> {
     carried: (Vec<T>, Vec<T>, T),
     /// Where a restart goes: the start.
     fresh: (Vec<T>, Vec<T>, T),
-    /// The watch's gain and limit (`firmware::watch`), where the filter is watched.
-    watch: Option<(T, T)>,
+    watch: Watcher<T>,
     refusals: Refusals,
     scratch: RefCell<Vec<T>>,
 }
@@ -54,14 +53,14 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> BoxStep<'a, T> {
         constants: &EkfConstants,
         code: &'a ModelCode,
     ) -> Self {
-        let outputs = code.dimensions.outputs;
-        let fresh = (literals(x0), literals(&constants.p0.upper()), literal(outputs as f64));
+        let watch = Watcher::new(&constants.watch, code.dimensions.outputs);
+        let fresh = (literals(x0), literals(&constants.p0.upper()), watch.start());
         BoxStep {
             filter,
             code,
             carried: fresh.clone(),
             fresh,
-            watch: (constants.watch.constants(outputs)).map(|(gain, limit)| (literal(gain), literal(limit))),
+            watch,
             refusals: Refusals::NONE,
             scratch: RefCell::new(Vec::new()),
         }
@@ -85,14 +84,16 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> BoxStep<'a, T> {
             |(x, p, chi)| {
                 let ((estimate, x, p), nis) = filter.run_watched(x, p, Some(&y), &u, &mut scratch.borrow_mut());
                 let nis = nis.expect("a measured sample has one");
-                let chi = watch.map_or(*chi, |(gain, _)| firmware::watch::watched(*chi, nis, gain));
-                (estimate.expect("a measured sample has an estimate"), (x, p, chi))
+                (
+                    estimate.expect("a measured sample has an estimate"),
+                    (x, p, watch.watched(*chi, nis)),
+                )
             },
             |(x, p, chi)| {
                 let (_, x, p) = filter.run(x, p, None, &u, &mut scratch.borrow_mut());
                 (x, p, *chi)
             },
-            |(x, p, chi)| finite(x, p) && watch.is_none_or(|(_, limit)| firmware::watch::plausible(*chi, limit)),
+            |(x, p, chi)| finite(x, p) && watch.plausible(*chi),
             || fresh.clone(),
         );
         let estimate = self.refusals.count(result).ok()?;
@@ -107,6 +108,45 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> BoxStep<'a, T> {
     /// Restarts so far, as the chip counts them.
     pub fn restarts(&self) -> u32 {
         self.refusals.restarts()
+    }
+}
+
+/// A filter's χ² watch in `T` as the emitted code runs it (`firmware::watch`): the watched mean's
+/// start `m` (the outputs), and its gain and limit where the filter is watched. The host's filters
+/// (`BoxStep`, `StartedStep`, the restarted EKF's step) share it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Watcher<T> {
+    start: T,
+    constants: Option<(T, T)>,
+}
+
+impl<T: firmware::Scalar> Watcher<T> {
+    /// `watch` over a filter of `outputs` outputs.
+    pub(crate) fn new(watch: &Watch, outputs: usize) -> Self {
+        Watcher {
+            start: literal(outputs as f64),
+            constants: watch
+                .constants(outputs)
+                .map(|(gain, limit)| (literal(gain), literal(limit))),
+        }
+    }
+
+    /// The mean at the start and after a restart, `m`.
+    pub(crate) fn start(&self) -> T {
+        self.start
+    }
+
+    /// The mean `chi` after a measured sample of normalised innovation squared `nis` (unchanged where
+    /// the filter is not watched).
+    pub(crate) fn watched(&self, chi: T, nis: T) -> T {
+        self.constants
+            .map_or(chi, |(gain, _)| firmware::watch::watched(chi, nis, gain))
+    }
+
+    /// Whether `chi` is plausible (always, where the filter is not watched).
+    pub(crate) fn plausible(&self, chi: T) -> bool {
+        self.constants
+            .is_none_or(|(_, limit)| firmware::watch::plausible(chi, limit))
     }
 }
 
@@ -156,9 +196,7 @@ pub struct StartedStep<'a, T> {
     code: &'a ModelCode,
     /// `P` at the start, its upper triangle.
     upper: Vec<T>,
-    /// The watched mean's start `m`, and the watch's gain and limit where the filter is watched.
-    chi: T,
-    watch: Option<(T, T)>,
+    watch: Watcher<T>,
     scratch: RefCell<Vec<T>>,
     /// `x`, the upper triangle of `P` and the watched mean (`m` where not watched: never read).
     shell: Shell<T, (Vec<T>, Vec<T>, T)>,
@@ -174,15 +212,11 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> StartedStep<'a, T> {
         first: usize,
         code: &'a ModelCode,
     ) -> Self {
-        let outputs = code.dimensions.outputs;
         StartedStep {
             filter,
             code,
             upper: literals(&crate::plant::kalman::diagonal_upper(p0)),
-            chi: literal(outputs as f64),
-            watch: watch
-                .constants(outputs)
-                .map(|(gain, limit)| (literal(gain), literal(limit))),
+            watch: Watcher::new(watch, code.dimensions.outputs),
             scratch: RefCell::new(Vec::new()),
             // `StartedEkf`: no start-up, the map read at the start only.
             shell: Shell::new(first, state_targets, code.dimensions.targets, (0, false)),
@@ -195,26 +229,26 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> StartedStep<'a, T> {
             filter,
             code,
             upper,
-            chi: start,
             watch,
             scratch,
             shell,
         } = self;
-        let (start, watch) = (*start, *watch);
+        let watch = *watch;
         shell.step(
             row,
             y,
             u,
             // `StartedEkf::start`: `(x, P)` predicted from the map's states with `P` = `p0`.
-            &mut |x, u| kept(filter.run(x, upper, None, u, &mut scratch.borrow_mut())).map(|(x, p)| (x, p, start)),
+            &mut |x, u| {
+                kept(filter.run(x, upper, None, u, &mut scratch.borrow_mut())).map(|(x, p)| (x, p, watch.start()))
+            },
             &mut |(x, p, chi): &(Vec<T>, Vec<T>, T), _, _, y, u| {
                 let ((estimate, x, p), nis) = filter.run_watched(x, p, Some(y), u, &mut scratch.borrow_mut());
                 let estimate = estimate.expect("a measured sample has an estimate");
                 let nis = nis.expect("a measured sample has one");
-                let chi = watch.map_or(*chi, |(gain, _)| firmware::watch::watched(*chi, nis, gain));
+                let chi = watch.watched(*chi, nis);
                 let targets = code.targets(&estimate, u, &mut scratch.borrow_mut());
-                let plausible = watch.is_none_or(|(_, limit)| firmware::watch::plausible(chi, limit));
-                (finite(&x, &p) && plausible).then_some(((x, p, chi), targets))
+                (finite(&x, &p) && watch.plausible(chi)).then_some(((x, p, chi), targets))
             },
             // A lost output: the prediction alone (`StartedEkf::predict`).
             &mut |(x, p, chi): &(Vec<T>, Vec<T>, T), u| {

@@ -13,7 +13,7 @@ use crate::spec::Design;
 
 /// Its part of the design's C, when the design has it (and the EKFs it runs on).
 pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) -> Result<Option<CPart>, EmitError> {
-    let (Some(_), Some(_), Some(restart)) = (observers.ekf(), observers.started(), observers.restart()) else {
+    let (Some(ekf), Some(_), Some(restart)) = (observers.ekf(), observers.started(), observers.restart()) else {
         return Ok(None);
     };
     let name = design.name.as_str();
@@ -29,16 +29,11 @@ pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) ->
         })
         .collect::<Result<String, EmitError>>()?;
     // The EKF's χ² watch: the carried mean passed with `x` and `P`, and reset with them.
-    let (chi_arg, chi_field, chi_reset, chi_reset_inner) =
-        match WatchLiterals::of(&observers.ekf().expect("matched").watch, code.dimensions.outputs, float)? {
-            Some(w) => (
-                ", &o->chi",
-                "    float chi;\n",
-                format!("    o->chi = {};\n", w.start),
-                format!("            o->chi = {};\n", w.start),
-            ),
-            None => ("", "", String::new(), String::new()),
-        };
+    let chi_start = WatchLiterals::of(&ekf.watch, code.dimensions.outputs, float)?.map(|w| w.start);
+    let (chi_arg, chi_field) = match chi_start {
+        Some(_) => (", &o->chi", "    float chi;\n"),
+        None => ("", ""),
+    };
     let source = render(&RestartedC {
         name,
         upper: &upper,
@@ -46,8 +41,7 @@ pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) ->
         terms: &terms,
         threshold: &float("restart threshold", restart.threshold)?,
         chi_arg,
-        chi_reset: &chi_reset,
-        chi_reset_inner: &chi_reset_inner,
+        chi_start,
     });
     let header = started::header(
         name,
@@ -64,8 +58,8 @@ pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) ->
     }))
 }
 
-/// `ekf_restart`'s check and observer (`terms`: the check's sum; `chi_…`: the EKF's watched mean as
-/// an argument and its resets, empty where the EKF is not watched).
+/// `ekf_restart`'s check and observer (`terms`: the check's sum; `chi_arg`, `chi_start`: the EKF's
+/// watched mean as an argument and its start, empty and `None` where the EKF is not watched).
 #[derive(Template)]
 #[template(path = "ekf_restart/templates/restarted.c.askama", escape = "none")]
 struct RestartedC<'a> {
@@ -75,6 +69,5 @@ struct RestartedC<'a> {
     terms: &'a str,
     threshold: &'a str,
     chi_arg: &'a str,
-    chi_reset: &'a str,
-    chi_reset_inner: &'a str,
+    chi_start: Option<String>,
 }

@@ -23,7 +23,7 @@ use firmware::rules::{Given, Refusals, Refused, RestartedRule};
 use firmware::Scalar;
 
 use crate::data::Run;
-use crate::observers::ekf::steps::kept;
+use crate::observers::ekf::steps::{kept, Watcher};
 use crate::observers::lost::Track;
 use crate::observers::started::{literal, literals};
 use crate::plant::kalman::{self, EkfConstants, FilterCode};
@@ -103,8 +103,7 @@ pub struct RestartStep<'a, T> {
     started: Vec<T>,
     /// `x`, the upper triangle of `P` and the watched mean at the start.
     fresh: (Vec<T>, Vec<T>, T),
-    /// The watch's gain and limit where the EKF is watched (`firmware::watch`).
-    watch: Option<(T, T)>,
+    watch: Watcher<T>,
     /// `x`, the upper triangle of `P` and the watched mean (`m` where not watched: never read).
     rule: RestartedRule<(Vec<T>, Vec<T>, T)>,
     refusals: Refusals,
@@ -124,19 +123,15 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
         code: &'a ModelCode,
     ) -> Self {
         let nan = vec![T::literal(f32::NAN, f64::NAN); code.dimensions.targets];
-        let outputs = code.dimensions.outputs;
-        let fresh = (
-            literals(&constants.x0),
-            literals(&constants.p0.upper()),
-            literal(outputs as f64),
-        );
+        let watch = Watcher::new(&constants.watch, code.dimensions.outputs);
+        let fresh = (literals(&constants.x0), literals(&constants.p0.upper()), watch.start());
         RestartStep {
             filter,
             code,
             restart,
             state_targets,
             started: literals(&kalman::diagonal_upper(started_p0)),
-            watch: (constants.watch.constants(outputs)).map(|(gain, limit)| (literal(gain), literal(limit))),
+            watch,
             rule: RestartedRule::new(fresh.clone()),
             fresh,
             refusals: Refusals::NONE,
@@ -163,7 +158,7 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
             scratch,
             ..
         } = self;
-        let (watch, start) = (*watch, fresh.2);
+        let watch = *watch;
         let inputs_finite = u.iter().all(|v| v.is_finite());
         if !(inputs_finite && y.iter().all(|v| v.is_finite())) {
             rule.lost(inputs_finite, |(x, p, chi)| {
@@ -177,15 +172,16 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
             row.iter().all(|v| v.is_finite()).then_some(row),
             |(x, p, _), row| disagrees(x, p, &states(row), restart),
             |row| {
-                kept(filter.run(&states(row), started, None, &u, &mut scratch.borrow_mut())).map(|(x, p)| (x, p, start))
+                kept(filter.run(&states(row), started, None, &u, &mut scratch.borrow_mut()))
+                    .map(|(x, p)| (x, p, watch.start()))
             },
             |(x, p, chi)| {
                 let ((estimate, x, p), nis) = filter.run_watched(x, p, Some(&y), &u, &mut scratch.borrow_mut());
                 let estimate = estimate.expect("a measured sample has an estimate");
                 let nis = nis.expect("a measured sample has one");
-                let chi = watch.map_or(*chi, |(gain, _)| firmware::watch::watched(*chi, nis, gain));
+                let chi = watch.watched(*chi, nis);
                 let (x, p) = kept((None, x, p))?;
-                if !watch.is_none_or(|(_, limit)| firmware::watch::plausible(chi, limit)) {
+                if !watch.plausible(chi) {
                     return None; // the watch: the innovations stay implausible
                 }
                 Some(((x, p, chi), code.targets(&estimate, &u, &mut scratch.borrow_mut())))
