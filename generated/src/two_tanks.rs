@@ -2654,6 +2654,12 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t336: T = t332 + t335;
     ([t298, t302], [t334, t324, t336])
 }
+/// The targets at the UKF's state `x` and input `u`: the model's ([`targets`]), the UKF
+/// carrying the states as they are.
+pub fn ukf_targets<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {
+    targets(x, u)
+}
+
 
 /// The model-corrected map's constants as `gen` chose them (f64): `G` (no unit), `K` (states ×
 /// outputs, row by row, in state unit per output unit), the schedule `T` (in samples), and each

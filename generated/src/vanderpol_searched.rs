@@ -1716,6 +1716,12 @@ fn ukf_unmeasured<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], u: &[
     let t275: T = t271 + t274;
     ([t235, t239], [t273, t263, t275])
 }
+/// The targets at the UKF's state `x` and input `u`: the model's ([`targets`]), the UKF
+/// carrying the states as they are.
+pub fn ukf_targets<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {
+    targets(x, u)
+}
+
 
 /// The model-corrected map's constants as `gen` chose them (f64): `G` (no unit), `K` (states ×
 /// outputs, row by row, in state unit per output unit), the schedule `T` (in samples), and each

@@ -55,12 +55,17 @@ pub fn start(design: &Design, fixed: &FixedFilter) -> Vec<f64> {
 
 /// The range of each state over `data` (1 where it is constant).
 pub fn state_spreads(data: &DataSet, states: usize) -> Vec<f64> {
-    (0..states)
+    spreads_in(data, &crate::plant::Coordinates::plant(states))
+}
+
+/// The range of each coordinate of `coordinates` over the states of `data` (1 where it is constant).
+pub fn spreads_in(data: &DataSet, coordinates: &crate::plant::Coordinates) -> Vec<f64> {
+    (0..coordinates.0.len())
         .map(|i| {
             let (low, high) = data
                 .runs
                 .iter()
-                .flat_map(|run| run.states.iter().map(move |x| x[i]))
+                .flat_map(|run| run.states.iter().map(move |x| coordinates.to_filter(x)[i]))
                 .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| (l.min(v), h.max(v)));
             if high > low {
                 high - low
@@ -182,17 +187,18 @@ fn run_sized<const NX: usize, const NY: usize>(
     let mut estimates = Rows::new(code.dimensions.targets);
     let mut scratch = Vec::new();
     let mut restarts = 0;
+    let nan = vec![f64::NAN; code.dimensions.targets];
+    let mut latest = nan.clone();
     for (y, u) in run.measurements.iter().zip(run.inputs.iter()) {
         let mut padded = [0.0; MAX_INPUTS];
         padded[..u.len()].copy_from_slice(u);
-        let x = match filter.push(&std::array::from_fn(|i| y[i]), &padded) {
-            Ok(x) => x,
-            Err(refused) => {
-                restarts += u32::from(refused == firmware::rules::Refused::Restarted);
-                [f64::NAN; NX]
-            }
-        };
-        estimates.push(&code.targets(&x, u, &mut scratch));
+        match filter.push(&std::array::from_fn(|i| y[i]), &padded) {
+            Ok(x) => latest = code.targets(&x, u, &mut scratch),
+            // A restart keeps the latest estimate, as the chip's `estimate()` does; a refusal is NaN.
+            Err(firmware::rules::Refused::Restarted) => restarts += 1,
+            Err(_) => latest.clone_from(&nan),
+        }
+        estimates.push(&latest);
     }
     Track {
         rows: estimates,

@@ -58,6 +58,8 @@ pub struct FilterCode {
     pub measured: Program,
     /// Results: `x⁺` (states), `P⁺` (upper triangle).
     pub unmeasured: Program,
+    /// The targets of an estimate, in the filter's coordinates (the model's `targets`).
+    pub targets: Program,
     /// The model's parameters, as the programs read them.
     pub parameters: Vec<(String, f64)>,
     /// States.
@@ -194,6 +196,7 @@ pub(crate) fn filter_programs(
     FilterCode {
         measured: build(true),
         unmeasured: build(false),
+        targets: code.targets.clone(),
         parameters: code.parameters.clone(),
         states: code.dimensions.states,
     }

@@ -16,6 +16,7 @@
 //! The host evaluates these programs through [`Compiled`], which implements the firmware's
 //! [`firmware::Model`]: the EKF the report measures is the firmware's own code, in `f64`.
 
+pub mod coordinates;
 pub mod covariance;
 pub mod discretisation;
 mod inside;
@@ -27,6 +28,7 @@ use firmware::Scalar;
 
 use crate::spec::ast::{self, Node};
 use crate::spec::Design;
+pub use coordinates::Coordinates;
 pub use covariance::Covariance;
 use inside::jacobian_inside;
 pub use inside::JACOBIAN_INSIDE;
@@ -49,8 +51,14 @@ pub struct ModelCode {
     pub parameters: Vec<(String, f64)>,
     /// States, outputs, inputs, targets.
     pub dimensions: Dimensions,
-    /// Each state's physical bounds (`[model.bounds]`), which the filters project their state onto.
+    /// Each state's physical bounds (`[model.bounds]`), which the filters project their state onto,
+    /// in the programs' coordinates.
     pub bounds: Vec<crate::spec::Bounds>,
+    /// The coordinates the programs read and give ([`coordinates`]): the plant's, or a filter's.
+    pub coordinates: Coordinates,
+    /// The log coordinates of the design's states bounded below ([`Coordinates::logarithmic`]),
+    /// which the filters that carry them take ([`ModelCode::logarithmic`]).
+    pub log_coordinates: Coordinates,
 }
 
 /// How many of each.
@@ -226,7 +234,15 @@ impl ModelCode {
                 targets: design.targets.len(),
             },
             bounds: design.state_bounds.clone(),
+            coordinates: Coordinates::plant(states),
+            log_coordinates: Coordinates::logarithmic(design),
         })
+    }
+
+    /// The model in its log coordinates ([`ModelCode::log_coordinates`]; itself when it has none or
+    /// is in them already).
+    pub fn logarithmic(&self) -> ModelCode {
+        self.in_coordinates(&self.log_coordinates)
     }
 
     /// `f(x, u)` and `∂f/∂x` (row-major) in `T`, as the emitted code computes them.

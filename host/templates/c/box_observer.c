@@ -34,7 +34,7 @@ static {{ name }}_status {{ kind }}_sample({{ name }}_{{ kind }} *o, const float
 {%- else %}
     (void)nis;
 {%- endif %}
-    targets(estimate, u, o->values);
+    {{ targets }}(estimate, u, o->values);
     for (i = 0u; i < {{ upper }}_TARGETS; ++i) {
         o->flags[i] = {{ upper }}_INSIDE;
     }

@@ -16,7 +16,7 @@ impl firmware::emitted::Filter<f32, STATES, OUTPUTS, INPUTS, TARGETS> for {{ nam
 
     #[inline(always)]
     fn targets(x: &[f32; STATES], u: &[f32; INPUTS]) -> [f32; TARGETS] {
-        targets(x, u)
+        {{ targets }}(x, u)
     }
 }
 

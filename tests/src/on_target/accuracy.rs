@@ -235,7 +235,8 @@ pub fn compare_ukf_with_f64(name: &str, measured: &ObserverMeasurement) -> Resul
                             let pushed = filter.push(&y, &u);
                             let finite = y.iter().chain(u.iter()).all(|v| v.is_finite());
                             finite.then(|| match pushed {
-                                Ok(x) => d::targets(&x, &u).to_vec(),
+                                // The UKF's own targets: its state may be in log coordinates.
+                                Ok(x) => d::ukf_targets(&x, &u).to_vec(),
                                 Err(_) => vec![f64::NAN; d::TARGETS],
                             })
                         })

@@ -22,7 +22,8 @@ pub(crate) struct Filter {
 }
 
 /// The whole C of the filter from the box centre of `design`: its samples, its start, its observer
-/// (`what`: the header's comment on the observer's struct).
+/// (`what`: the header's comment on the observer's struct). `own_targets`: the filter carries the
+/// model's log coordinates, and its estimate's targets are its own function (`<lower>_targets`).
 pub(crate) fn box_part(
     name: &str,
     filter: &Filter,
@@ -30,6 +31,7 @@ pub(crate) fn box_part(
     programs: FilterCode,
     code: &ModelCode,
     what: &str,
+    own_targets: bool,
 ) -> Result<CPart, EmitError> {
     let upper = name.to_uppercase();
     let outputs = code.dimensions.outputs;
@@ -37,6 +39,23 @@ pub(crate) fn box_part(
     let chi = match watch {
         Some(_) => "    float chi; /* the watched mean of the normalised innovations squared */\n",
         None => "",
+    };
+    let (targets, targets_source) = match own_targets {
+        true => {
+            let targets = format!("{}_targets", filter.lower);
+            let source = function(
+                &targets,
+                &format!(
+                    "The targets at the {} state x (in its log coordinates) and input u.",
+                    filter.label
+                ),
+                &["x", "u"],
+                &programs.targets,
+                code,
+            )?;
+            (targets, source)
+        }
+        false => ("targets".to_owned(), String::new()),
     };
     Ok(CPart {
         header: started::header(
@@ -47,9 +66,10 @@ pub(crate) fn box_part(
             &format!("    float x[{upper}_STATES];\n    float p[{upper}_COVARIANCE];\n{chi}"),
         ),
         source: samples(filter, &programs, code)?
+            + &targets_source
             + &common(name, filter, constants)?
-            + &box_observer(name, filter, watch),
-        programs: vec![programs.measured, programs.unmeasured],
+            + &box_observer(name, filter, watch, &targets),
+        programs: vec![programs.measured, programs.unmeasured, programs.targets],
     })
 }
 
@@ -86,8 +106,9 @@ fn common(name: &str, filter: &Filter, constants: &EkfConstants) -> Result<Strin
 }
 
 /// The filter from the box centre: `push` of the filter, then the targets of its estimate, each inside.
-fn box_observer(name: &str, filter: &Filter, watch: Option<WatchLiterals>) -> String {
+fn box_observer(name: &str, filter: &Filter, watch: Option<WatchLiterals>, targets: &str) -> String {
     super::text::render(&BoxObserver {
+        targets,
         name,
         upper: &name.to_uppercase(),
         lower: filter.lower,
@@ -118,4 +139,6 @@ struct BoxObserver<'a> {
     label: &'a str,
     kind: &'a str,
     watch: Option<WatchLiterals>,
+    /// The function giving the targets of its estimate.
+    targets: &'a str,
 }

@@ -47,6 +47,7 @@ pub(super) fn kinds(design: &Design, code: &ModelCode, observers: &Observers<'_>
         inputs: code.dimensions.inputs > 0,
         signum: calls(&programs, "signum"),
         exp: calls(&programs, "exp"),
+        ln: calls(&programs, "ln"),
         fract: calls(&programs, "fract"),
     });
     kinds.source += &function(
@@ -72,5 +73,6 @@ struct KindsC<'a> {
     inputs: bool,
     signum: bool,
     exp: bool,
+    ln: bool,
     fract: bool,
 }

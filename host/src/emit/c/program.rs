@@ -18,7 +18,8 @@ use crate::spec::ast::Binary;
 fn c_function(name: &str) -> String {
     match name {
         "abs" => "fabsf".to_owned(),
-        "ln" => "logf".to_owned(),
+        // libm's own algorithm, written out (see `helpers`), as `exp` below.
+        "ln" => "libm_logf".to_owned(),
         // libm's own algorithm, written out (see `helpers`): C libraries' `expf` differ in the last bit.
         "exp" => "libm_expf".to_owned(),
         "signum" | "fract" => name.to_owned(),

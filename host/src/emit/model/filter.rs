@@ -64,12 +64,13 @@ pub(crate) fn filter_type(
 }
 
 /// The observer around the filter (`names.observer`), started where the filter starts (`fixed`: the
-/// spec's constants of this filter).
+/// spec's constants of this filter), its estimate's targets by the function `targets`.
 pub(crate) fn filter_observer(
     names: &Names,
     constants: &EkfConstants,
     fixed: &FixedFilter,
     outputs: usize,
+    targets: &str,
 ) -> Result<String, EmitError> {
     let label = names.name.to_uppercase();
     let upper = constants.p0.upper();
@@ -86,8 +87,50 @@ pub(crate) fn filter_observer(
         x0: &f32_list(&format!("{label} x0"), &constants.x0)?,
         p0: &f32_list(&format!("{label} P0"), &upper)?,
         chi: WatchLiterals::of(&constants.watch, outputs, f32_literal)?.map(|w| w.start),
+        targets,
     }
     .render()?)
+}
+
+/// The targets of the filter's state, `<lower>_targets`, and the function its observer calls for
+/// them: where it carries the model's log coordinates ([`ModelCode::logarithmic`]), written out from
+/// `filter.targets` and called; else the model's `targets` under the filter's name (for code that
+/// reads the filter's state generically), the observer calling `targets` itself.
+pub(crate) fn own_targets(
+    names: &Names,
+    filter: &FilterCode,
+    code: &ModelCode,
+    design: &Design,
+) -> Result<(String, String), EmitError> {
+    let name = format!("{}_targets", names.lower);
+    if code.log_coordinates.is_plant() {
+        let text = format!(
+            "/// The targets at the {what}'s state `x` and input `u`: the model's ([`targets`]), the {what}\n\
+             /// carrying the states as they are.\n\
+             pub fn {name}<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {{\n    targets(x, u)\n}}\n\n",
+            what = names.name.to_uppercase(),
+        );
+        return Ok((text, "targets".to_owned()));
+    }
+    let carried: Vec<String> = design
+        .model
+        .states
+        .iter()
+        .zip(&code.log_coordinates.0)
+        .filter_map(|(state, log)| {
+            log.map(|log| format!("`{state}` as `ln({state} - {:?} + {:?})`", log.min, log.offset))
+        })
+        .collect();
+    let body = body(&filter.targets, code, design, "    ", list)?;
+    let text = format!(
+        "/// The targets at the {what}'s state `x` and input `u`: it carries {carried} (log coordinates:\n\
+         /// inside the bound without a clamp), the other states as they are. Written out by `gen`.\n\
+         #[allow(unused_variables, non_snake_case, clippy::approx_constant)]\n\
+         pub fn {name}<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {{\n{body}}}\n\n",
+        what = names.name.to_uppercase(),
+        carried = carried.join(", "),
+    );
+    Ok((text, name))
 }
 
 /// The filter's two samples written out from its programs: `<lower>_measured` and `<lower>_unmeasured`.
@@ -218,4 +261,7 @@ struct FilterObserver<'a> {
     p0: &'a str,
     /// The watched mean's start in `f32`, where the filter is watched.
     chi: Option<String>,
+    /// The function giving the targets of its state: the model's `targets`, or the filter's own
+    /// where it carries other coordinates.
+    targets: &'a str,
 }

@@ -105,7 +105,7 @@ pub(super) fn model_and_ekf(
         }
         .render()?,
     );
-    text.push_str(&filter_observer(&EKF, ekf, fixed, code.dimensions.outputs)?);
+    text.push_str(&filter_observer(&EKF, ekf, fixed, code.dimensions.outputs, "targets")?);
     text.push_str(&samples(&EKF, &filter, code, design)?);
     Ok(text)
 }

@@ -35,7 +35,6 @@ pub fn estimate_box<T: firmware::Scalar + firmware::emitted::Maths>(
 /// over the written-out programs.
 pub struct BoxStep<'a, T> {
     filter: &'a crate::plant::kalman::FilterCode,
-    code: &'a ModelCode,
     /// `x`, the upper triangle of `P` and the watched mean of the normalised innovations squared.
     carried: (Vec<T>, Vec<T>, T),
     /// Where a restart goes: the start.
@@ -51,13 +50,12 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> BoxStep<'a, T> {
         filter: &'a crate::plant::kalman::FilterCode,
         x0: &[f64],
         constants: &EkfConstants,
-        code: &'a ModelCode,
+        code: &ModelCode,
     ) -> Self {
         let watch = Watcher::new(&constants.watch, code.dimensions.outputs);
         let fresh = (literals(x0), literals(&constants.p0.upper()), watch.start());
         BoxStep {
             filter,
-            code,
             carried: fresh.clone(),
             fresh,
             watch,
@@ -97,7 +95,12 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths> BoxStep<'a, T> {
             || fresh.clone(),
         );
         let estimate = self.refusals.count(result).ok()?;
-        Some(self.code.targets(&estimate, &u, &mut self.scratch.borrow_mut()))
+        let filter = self.filter;
+        Some(
+            filter
+                .targets
+                .eval(&filter.parameters, &estimate, &u, &mut self.scratch.borrow_mut()),
+        )
     }
 
     /// Samples refused so far for a bad value, as the chip counts them.

@@ -33,7 +33,7 @@ use crate::plant::kalman::EkfConstants;
 use crate::plant::ModelCode;
 use crate::spec::{Design, FixedFilter};
 
-use super::{constants, estimates, start, state_spreads, supported, LOG_RANGE};
+use super::{constants, estimates, spreads_in, start, supported, LOG_RANGE};
 
 /// The tuned filter and how it was chosen.
 #[derive(Clone, Debug)]
@@ -145,6 +145,7 @@ pub fn tune(
         design.filters.of("observer.ekf"),
         design,
         code,
+        &crate::plant::Coordinates::plant(code.dimensions.states),
         tuning,
         learning,
         target_spreads,
@@ -188,12 +189,15 @@ fn logs(covariance: &crate::plant::Covariance, spreads: &[f64]) -> Vec<f64> {
 }
 
 /// [`tune`] for the filter whose estimates `estimator` gives, with `fixed` its constants the spec
-/// fixes (the search runs over the others; with none left, the fixed filter is scored alone).
+/// fixes (the search runs over the others; with none left, the fixed filter is scored alone), its
+/// state in `coordinates` (the plant's, or the model's log coordinates: [`crate::plant::coordinates`]).
+#[allow(clippy::too_many_arguments)]
 pub fn tune_with(
     estimator: Estimator,
     fixed: &FixedFilter,
     design: &Design,
     code: &ModelCode,
+    coordinates: &crate::plant::Coordinates,
     tuning: &DataSet,
     learning: &DataSet,
     target_spreads: &[f64],
@@ -204,9 +208,17 @@ pub fn tune_with(
     if !supported(code) {
         return None;
     }
+    // The search runs in the filter's `coordinates`: its start, the spec's covariances (mapped by
+    // the slopes at the start) and the spreads that scale them.
     let nx = code.dimensions.states;
-    let centre = start(design, fixed);
-    let spreads = state_spreads(learning, nx);
+    let plant_start = start(design, fixed);
+    let centre = coordinates.to_filter(&plant_start);
+    let fixed = &FixedFilter {
+        x0: fixed.x0.as_ref().map(|_| centre.clone()),
+        q: fixed.q.as_ref().map(|q| coordinates.covariance(q, &plant_start)),
+        p0: fixed.p0.as_ref().map(|p0| coordinates.covariance(p0, &plant_start)),
+    };
+    let spreads = spreads_in(learning, coordinates);
     let count = std::sync::atomic::AtomicU64::new(0);
     let criterion = Criterion {
         estimator,

@@ -27,7 +27,8 @@ impl Bench<'_> {
         }
     }
 
-    /// A box filter (its estimates by `estimator`) tuned on [`Bench::random_tuning`] but for the
+    /// A box filter (its estimates by `estimator`, its state in `coordinates`) tuned on
+    /// [`Bench::random_tuning`] but for the
     /// constants the spec fixes in its `section`, and its figures by `judge`. Where the spec fixes any, the
     /// same filter with every constant tuned is judged too, into [`Bench::beside`].
     ///
@@ -36,6 +37,7 @@ impl Bench<'_> {
     pub fn box_filter(
         &mut self,
         estimator: ekf::Estimator,
+        coordinates: &crate::plant::Coordinates,
         section: FixedSection,
         judge: &dyn Fn(&Self, &ekf::Tuned) -> ObserverFigures,
     ) -> Option<(ekf::Tuned, ObserverFigures)> {
@@ -48,12 +50,20 @@ impl Bench<'_> {
                 fixed,
                 self.design,
                 self.code,
+                coordinates,
                 &random,
                 learning,
                 &self.spreads,
             )
         };
-        let Some(tuned) = tune(fixed) else {
+        // A fixed start outside the model's domain is refused as such: a filter that restarts there at
+        // every sample would hold its one estimate and score as merely lost.
+        let outside = fixed
+            .x0
+            .as_ref()
+            .is_some_and(|x0| !self.one_sample(x0, &random).iter().all(|v| v.is_finite()));
+        let tuned = if outside { None } else { tune(fixed) };
+        let Some(tuned) = tuned else {
             if fixed.any() && ekf::supported(self.code) && self.refused.is_none() {
                 self.refused = Some(self.cannot_run(section.section, fixed, &random));
             }
@@ -90,10 +100,7 @@ impl Bench<'_> {
             (None, None) => format!("{section}.p0"),
         };
         let start = ekf::start(design, fixed);
-        let mut x = start.clone();
-        let inputs = random.runs.first().and_then(|run| run.inputs.iter().next());
-        crate::data::simulate::Integrator::new(&design.model, design.tau, design.substeps)
-            .advance(&mut x, inputs.unwrap_or(&[]));
+        let x = self.one_sample(&start, random);
         let state = |values: &[f64]| {
             let pairs: Vec<String> = design
                 .model
@@ -124,6 +131,16 @@ impl Bench<'_> {
             ),
             "start it where the model is defined (inside the learning box), give a larger p0 or q, or leave the constants out to have them tuned",
         )
+    }
+
+    /// The plant's state one sample after `start`, with the first tuning run's first input.
+    fn one_sample(&self, start: &[f64], random: &DataSet) -> Vec<f64> {
+        let design = self.design;
+        let mut x = start.to_vec();
+        let inputs = random.runs.first().and_then(|run| run.inputs.iter().next());
+        crate::data::simulate::Integrator::new(&design.model, design.tau, design.substeps)
+            .advance(&mut x, inputs.unwrap_or(&[]));
+        x
     }
 
     /// [`Bench::scenario_errors`] along scenario `i`'s run (in the spec's order).

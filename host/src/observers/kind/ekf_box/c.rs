@@ -30,6 +30,7 @@ pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) ->
         code,
         "The EKF from the centre of the state box (kind ekf_box, the Rust EkfBoxObserver): an estimate\n \
          * from the first accepted sample; a sample with a non-finite output is refused and only predicted.",
+        false,
     )
     .map(Some)
 }

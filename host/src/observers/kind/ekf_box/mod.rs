@@ -54,7 +54,12 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
             ekf::track_run(code, &tuned.constants, &tuned.constants.x0, run).expect("size checked by tune")
         })
     };
-    let (tuned, figures) = bench.box_filter(ekf::estimates, FIXED, &judge)?;
+    let (tuned, figures) = bench.box_filter(
+        ekf::estimates,
+        &crate::plant::Coordinates::plant(code.dimensions.states),
+        FIXED,
+        &judge,
+    )?;
     bench.from_observer_starts("ekf_box", &|x0, run| {
         ekf::estimate_run(code, &tuned.constants, x0, run).expect("size checked by tune")
     });

@@ -63,6 +63,8 @@ mod tests {
                 targets: 2,
             },
             bounds: Vec::new(),
+            coordinates: crate::plant::Coordinates::plant(2),
+            log_coordinates: crate::plant::Coordinates::plant(2),
         };
         // horizon 10, 2 iterations, 3 substeps: (2 + 1)·10 = 30 steps of
         // 659 + 55.5·2³·3 + 0.902·(4·3·163 + 1) = 659 + 1332 + 0.902·1957 = 1991 + 1765.214 = 3756.214,

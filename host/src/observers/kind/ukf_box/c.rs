@@ -31,6 +31,7 @@ pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) ->
         "The unscented Kalman filter from the centre of the state box (kind ukf_box, the Rust\n \
          * UkfBoxObserver): an estimate from the first accepted sample; a sample with a non-finite output\n \
          * is refused and only predicted.",
+        !code.log_coordinates.is_plant(),
     )
     .map(Some)
 }

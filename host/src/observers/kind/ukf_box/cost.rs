@@ -25,6 +25,7 @@ mod tests {
         let filter = FilterCode {
             measured: program(),
             unmeasured: crate::plant::program::Program::default(),
+            targets: crate::plant::program::Program::default(),
             parameters: Vec::new(),
             states: 2,
         };

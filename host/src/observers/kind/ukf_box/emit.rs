@@ -5,7 +5,9 @@
 
 use askama::Template;
 
-use crate::emit::model::filter::{constants_docs, filter_observer, filter_type, q_constant, samples, Names};
+use crate::emit::model::filter::{
+    constants_docs, filter_observer, filter_type, own_targets, q_constant, samples, Names,
+};
 use crate::emit::model::observers::Observers;
 use crate::emit::EmitError;
 use crate::observers::kind::ukf_box::program::{kappa, unscented_code, ALPHA, BETA};
@@ -33,10 +35,14 @@ fn ukf(design: &Design, code: &ModelCode, ukf: &EkfConstants) -> Result<String, 
         q_constant: &q_constant("UKF", "ukf", &ukf.q, fixed, UKF_Q_TUNED),
         constants: &constants_docs("ukf", fixed, UKF_TUNED),
         watch_docs: &crate::emit::model::filter::watch_docs(ukf),
+        log: !code.log_coordinates.is_plant(),
     }
     .render()?;
-    text.push_str(&filter_observer(&UKF, ukf, fixed, code.dimensions.outputs)?);
-    text.push_str(&samples(&UKF, &unscented_code(code, ukf), code, design)?);
+    let filter = unscented_code(code, ukf);
+    let (targets_function, targets) = own_targets(&UKF, &filter, code, design)?;
+    text.push_str(&filter_observer(&UKF, ukf, fixed, code.dimensions.outputs, &targets)?);
+    text.push_str(&samples(&UKF, &filter, code, design)?);
+    text.push_str(&targets_function);
     Ok(text)
 }
 
@@ -69,4 +75,6 @@ struct UkfText<'a> {
     q_constant: &'a str,
     constants: &'a str,
     watch_docs: &'a str,
+    /// Whether it carries states in log coordinates.
+    log: bool,
 }

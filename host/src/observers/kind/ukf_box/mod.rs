@@ -49,6 +49,7 @@ pub const KIND: Kind = Kind {
 /// Tunes the UKF on the random tuning runs (as the box EKF, but the constants the spec fixes), then
 /// judges it from its start, and on each scenario from its `observer_x0`.
 fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
+    // Its state and constants are in the model's log coordinates ([`unscented_code`]).
     let code = bench.code;
     let judge = |bench: &Bench<'_>, tuned: &ekf::Tuned| {
         let filter = unscented_code(code, &tuned.constants);
@@ -57,10 +58,16 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
             ukf::track_run(code, &filter, &tuned.constants.x0, &tuned.constants, run)
         })
     };
-    let (tuned, figures) = bench.box_filter(ukf::estimates, FIXED, &judge)?;
+    let (tuned, figures) = bench.box_filter(ukf::estimates, &code.log_coordinates, FIXED, &judge)?;
     let filter = unscented_code(code, &tuned.constants);
     bench.from_observer_starts("ukf_box", &|x0, run| {
-        ukf::estimate_run(code, &filter, x0, &tuned.constants, run)
+        ukf::estimate_run(
+            code,
+            &filter,
+            &code.log_coordinates.to_filter(x0),
+            &tuned.constants,
+            run,
+        )
     });
     bench.tuned.insert(Tuned::UkfBox(tuned));
     Some(figures)

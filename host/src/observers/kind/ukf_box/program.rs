@@ -49,7 +49,7 @@ use crate::spec::ast::Binary;
 
 use crate::plant::kalman::{filter_programs, substep, EkfConstants, FilterCode};
 use crate::plant::program::{Builder, Leaf};
-use crate::plant::ModelCode;
+use crate::plant::{Coordinates, ModelCode};
 
 /// The scheme's α.
 pub const ALPHA: f64 = 1.0;
@@ -75,13 +75,18 @@ pub fn weights(n: usize) -> (f64, f64, f64, f64) {
     )
 }
 
-/// Writes one sample of the UKF of `code` with `constants` (the EKF's: `Q`, `R`, the RK4 substeps;
-/// `x0` and `p0` are the start, not part of a sample) as programs.
+/// Writes one sample of the UKF of `code` (the plant's model) with `constants` (the EKF's: `Q`, `R`,
+/// the RK4 substeps; `x0` and `p0` are the start, not part of a sample) as programs, its state in the
+/// model's log coordinates ([`ModelCode::logarithmic`]: every state bounded below carried by its
+/// logarithm, so that no sigma point crosses the bound), in which `constants` are. Each sigma point
+/// is stepped by the plant's RK4 in the plant's coordinates (one `exp` and one `ln` per log state and
+/// point, not an `exp` in every model evaluation) and read back.
 pub fn unscented_code(code: &ModelCode, constants: &EkfConstants) -> FilterCode {
+    let log = &code.logarithmic();
     filter_programs(
-        code,
-        |b, x, p| update(b, code, &constants.r, x, p),
-        |b, x, p| predict(b, code, constants, x, p),
+        log,
+        |b, x, p| update(b, log, &constants.r, x, p),
+        |b, x, p| predict(b, code, log, constants, x, p),
     )
 }
 
@@ -279,18 +284,26 @@ fn update(b: &mut Builder<'_>, code: &ModelCode, r: &[f64], x: &mut [usize], p: 
     nis
 }
 
-/// The prediction: every sigma point through the chip's RK4 substeps.
-fn predict(b: &mut Builder<'_>, code: &ModelCode, constants: &EkfConstants, x: &mut Vec<usize>, p: &mut [Vec<usize>]) {
+/// The prediction: every sigma point (of `log`'s coordinates) through the chip's RK4 substeps of the
+/// plant's model `plant`, in the plant's coordinates.
+fn predict(
+    b: &mut Builder<'_>,
+    plant: &ModelCode,
+    log: &ModelCode,
+    constants: &EkfConstants,
+    x: &mut Vec<usize>,
+    p: &mut [Vec<usize>],
+) {
     let nx = x.len();
-    let points = sigma_points(b, code, x, p);
+    let points = sigma_points(b, log, x, p);
     let moved: Vec<Vec<usize>> = points
         .iter()
         .map(|point| {
-            let mut next = point.clone();
+            let mut next = to_plant(b, &log.coordinates, point);
             for _ in 0..constants.substeps {
-                next = substep(b, code, constants.h, &next).0;
+                next = substep(b, plant, constants.h, &next).0;
             }
-            next
+            to_log(b, &log.coordinates, &next)
         })
         .collect();
     let next = mean(b, &moved);
@@ -305,6 +318,38 @@ fn predict(b: &mut Builder<'_>, code: &ModelCode, constants: &EkfConstants, x: &
         }
     }
     *x = next;
+}
+
+/// The plant's state of `z` (`eᶻ + (m − c)`, no lower than `m`, for a log coordinate).
+fn to_plant(b: &mut Builder<'_>, coordinates: &Coordinates, z: &[usize]) -> Vec<usize> {
+    z.iter()
+        .zip(&coordinates.0)
+        .map(|(&z, log)| match log {
+            Some(log) => {
+                let s = b.call("exp", z);
+                let (shift, min) = (b.number(log.shift()), b.number(log.min));
+                let x = b.add(s, shift);
+                b.at_least(x, min)
+            }
+            None => z,
+        })
+        .collect()
+}
+
+/// `z` of the plant's state `x` (`ln(x − m + c)`, read on the bound where a step left it below).
+fn to_log(b: &mut Builder<'_>, coordinates: &Coordinates, x: &[usize]) -> Vec<usize> {
+    x.iter()
+        .zip(&coordinates.0)
+        .map(|(&x, log)| match log {
+            Some(log) => {
+                let (shift, offset) = (b.number(log.shift()), b.number(log.offset));
+                let s = b.sub(x, shift);
+                let s = b.at_least(s, offset);
+                b.call("ln", s)
+            }
+            None => x,
+        })
+        .collect()
 }
 
 /// The lower Cholesky factor of the symmetric `m` (read from `r ≤ c`), each pivot at least

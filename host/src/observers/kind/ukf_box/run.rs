@@ -31,12 +31,17 @@ pub fn estimate_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], constants
 pub fn track_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], constants: &EkfConstants, run: &Run) -> Track {
     let mut filter = ekf::BoxStep::<f32>::new(filter, x0, constants, code);
     let mut estimates = Rows::new(code.dimensions.targets);
+    let nan = vec![f64::NAN; code.dimensions.targets];
+    let mut latest = nan.clone();
     for (y, u) in run.measurements.iter().zip(run.inputs.iter()) {
-        let row: Vec<f64> = match filter.step(y, u) {
-            Some(targets) => targets.into_iter().map(f64::from).collect(),
-            None => vec![f64::NAN; code.dimensions.targets],
-        };
-        estimates.push(&row);
+        let before = filter.restarts();
+        match filter.step(y, u) {
+            Some(targets) => latest = targets.into_iter().map(f64::from).collect(),
+            // A restart keeps the latest estimate, as the chip's `estimate()` does; a refusal is NaN.
+            None if filter.restarts() > before => {}
+            None => latest.clone_from(&nan),
+        }
+        estimates.push(&latest);
     }
     Track {
         restarts: filter.restarts(),
@@ -44,7 +49,8 @@ pub fn track_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], constants: &
     }
 }
 
-/// The UKF's estimates of every run of `data` with `constants`, started at `x0` (an
+/// The UKF's estimates of every run of `data` with `constants`, started at `x0` (both in the model's
+/// log coordinates, [`ModelCode::logarithmic`]; an
 /// [`ekf::Estimator`]); `None` for a model beyond the sizes the host filters ([`ekf::supported`]).
 pub fn estimates(code: &ModelCode, constants: &EkfConstants, x0: &[f64], data: &DataSet) -> Option<Vec<Rows>> {
     if !ekf::supported(code) {
@@ -60,7 +66,7 @@ pub fn estimates(code: &ModelCode, constants: &EkfConstants, x0: &[f64], data: &
 }
 
 /// Chooses the UKF's `Q` and `P(0)` on `tuning` as the EKF's are chosen ([`ekf::tune`]), those the
-/// spec does not fix (`[observer.ukf]`).
+/// spec does not fix (`[observer.ukf]`), in the model's log coordinates (its start too).
 pub fn tune(
     design: &Design,
     code: &ModelCode,
@@ -73,6 +79,7 @@ pub fn tune(
         super::FIXED.of(design),
         design,
         code,
+        &code.log_coordinates,
         tuning,
         learning,
         target_spreads,
