@@ -60,19 +60,16 @@ pub fn state_spreads(data: &DataSet, states: usize) -> Vec<f64> {
 
 /// The range of each coordinate of `coordinates` over the states of `data` (1 where it is constant).
 pub fn spreads_in(data: &DataSet, coordinates: &crate::plant::Coordinates) -> Vec<f64> {
-    (0..coordinates.0.len())
-        .map(|i| {
-            let (low, high) = data
-                .runs
-                .iter()
-                .flat_map(|run| run.states.iter().map(move |x| coordinates.to_filter(x)[i]))
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| (l.min(v), h.max(v)));
-            if high > low {
-                high - low
-            } else {
-                1.0
-            }
-        })
+    let n = coordinates.0.len();
+    let (mut low, mut high) = (vec![f64::INFINITY; n], vec![f64::NEG_INFINITY; n]);
+    for x in data.runs.iter().flat_map(|run| run.states.iter()) {
+        for (i, v) in coordinates.to_filter(x).into_iter().enumerate() {
+            (low[i], high[i]) = (low[i].min(v), high[i].max(v));
+        }
+    }
+    low.iter()
+        .zip(&high)
+        .map(|(low, high)| if high > low { high - low } else { 1.0 })
         .collect()
 }
 
