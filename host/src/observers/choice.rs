@@ -218,6 +218,7 @@ mod tests {
             scenario: crate::data::Rows::default(),
             mismatch_scenario: None,
             lost: Default::default(),
+            lost_which: Default::default(),
         }
     }
 

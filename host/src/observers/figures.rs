@@ -3,7 +3,7 @@
 //! ([`super::compare`]) and how a kind is chosen from them ([`super::choice`]), since the report, the
 //! tables and the emitter read these structs alone.
 
-use super::lost::LostRuns;
+use super::lost::{LostRuns, LostWhich};
 use crate::data::Rows;
 use crate::spec::ObserverKind;
 
@@ -89,6 +89,8 @@ pub struct ObserverFigures {
     pub mismatch_scenario: Option<Rows>,
     /// Its lost runs on each set ([`super::lost`]).
     pub lost: LostRuns,
+    /// Which runs it lost on the sets the floor is run on (to count those the floor lost too).
+    pub lost_which: LostWhich,
 }
 
 /// A filter started at a scenario's `observer_x0` (the observer's start the scenario names) instead

@@ -13,6 +13,14 @@
 //! error grows into the second case. A pooled RMSE or a p95 over runs can hide one such run among
 //! many good ones; this count does not.
 //!
+//! Some runs no observer can track: their samples do not determine a target (on E. coli, a batch
+//! whose substrate is nearly gone at the start shows no light, whatever its product). The posterior
+//! mean is then the prior's, and a truth near the prior's edge is more than a spread away from it.
+//! The particle floor ([`super::particles`]), the best estimate of the model and noise, loses such a
+//! run too; so on the sets the floor is run on (validation, the scenario's draws, the mismatch runs),
+//! each set also counts the runs lost that the floor lost as well ([`Lost::floor_lost`]): they are
+//! shown, and the gates count only the others.
+//!
 //! Beside it, each set counts the runs on which the observer **restarted** (its state or step went
 //! non-finite, or `ekf_restart`'s map check fired: `firmware::rules`) and the most restarts on one
 //! run: a restarted run may end well, and the count says how often recovery was needed.
@@ -89,6 +97,26 @@ pub struct Lost {
     pub restarted: usize,
     /// The most restarts on one run.
     pub most_restarts: u32,
+    /// Of the runs lost, those the particle floor lost too (see the module docs); 0 where the floor is
+    /// not run on the set.
+    pub floor_lost: usize,
+}
+
+impl Lost {
+    /// The runs lost that the floor did not lose: the observer's own failures.
+    #[must_use]
+    pub fn beyond_floor(&self) -> usize {
+        self.lost - self.floor_lost
+    }
+}
+
+/// The runs of a set for which [`is_lost`] holds (their indices, in order), each over its samples
+/// `window(run)`.
+pub fn which(runs: &[Run], estimates: &[Rows], window: impl Fn(&Run) -> Range<usize>, spreads: &[f64]) -> Vec<usize> {
+    (runs.iter().zip(estimates).enumerate())
+        .filter(|(_, (run, rows))| is_lost(run, rows, window(run), spreads))
+        .map(|(i, _)| i)
+        .collect()
 }
 
 /// [`is_lost`] over every run of a set, each over its samples `window(run)`, with the restarts on
@@ -101,14 +129,11 @@ pub fn count(
     spreads: &[f64],
 ) -> Lost {
     Lost {
-        lost: runs
-            .iter()
-            .zip(estimates)
-            .filter(|(run, rows)| is_lost(run, rows, window(run), spreads))
-            .count(),
+        lost: which(runs, estimates, window, spreads).len(),
         runs: runs.len(),
         restarted: restarts.iter().filter(|&&r| r > 0).count(),
         most_restarts: restarts.iter().copied().max().unwrap_or(0),
+        floor_lost: 0,
     }
 }
 
@@ -128,10 +153,34 @@ pub struct LostRuns {
     pub long: Option<Lost>,
 }
 
+/// Which runs an observer lost on the sets the floor is run on ([`which`]).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct LostWhich {
+    /// On the validation runs.
+    pub validation: Vec<usize>,
+    /// On the scenario's noise draws.
+    pub scenario_draws: Vec<usize>,
+    /// On the mismatch runs.
+    pub mismatch: Vec<usize>,
+}
+
 impl LostRuns {
-    /// The sets with a lost run, by the names the report gives them, with their counts: validation,
-    /// then the scenario's draws, the mismatch runs and the long runs (the tuning runs are where
-    /// constants were chosen, not where a kind is judged).
+    /// Sets [`Lost::floor_lost`] on the sets the floor is run on: how many of the runs `mine` (this
+    /// observer's lost runs) are among `floor`'s.
+    pub fn with_floor(&mut self, mine: &LostWhich, floor: &LostWhich) {
+        let shared = |a: &[usize], b: &[usize]| a.iter().filter(|i| b.contains(i)).count();
+        self.validation.floor_lost = shared(&mine.validation, &floor.validation);
+        if let Some(l) = self.scenario_draws.as_mut() {
+            l.floor_lost = shared(&mine.scenario_draws, &floor.scenario_draws);
+        }
+        if let Some(l) = self.mismatch.as_mut() {
+            l.floor_lost = shared(&mine.mismatch, &floor.mismatch);
+        }
+    }
+
+    /// The sets with a run lost beyond the floor ([`Lost::beyond_floor`]), by the names the report
+    /// gives them, with their counts: validation, then the scenario's draws, the mismatch runs and the
+    /// long runs (the tuning runs are where constants were chosen, not where a kind is judged).
     pub fn judged(&self) -> Vec<(&'static str, Lost)> {
         [
             ("validation", Some(self.validation)),
@@ -140,7 +189,7 @@ impl LostRuns {
             ("long", self.long),
         ]
         .into_iter()
-        .filter_map(|(set, lost)| lost.filter(|l| l.lost > 0).map(|l| (set, l)))
+        .filter_map(|(set, lost)| lost.filter(|l| l.beyond_floor() > 0).map(|l| (set, l)))
         .collect()
     }
 }
@@ -222,6 +271,7 @@ mod tests {
             runs: 3,
             restarted: 2,
             most_restarts: 2,
+            floor_lost: 0,
         };
         assert_eq!(lost, expected);
         let counted = |lost, runs| Lost {
@@ -236,5 +286,74 @@ mod tests {
             ..LostRuns::default()
         };
         assert_eq!(runs.judged(), [("validation", lost), ("mismatch", counted(2, 8))]);
+    }
+
+    #[test]
+    fn runs_the_floor_lost_too_are_shown_but_not_judged() {
+        // Runs 1 and 3 off by 3 (lost), run 2 by 0.5 (kept); the floor lost runs 3 and 4.
+        let (good, good_rows) = run(&[0.0; 8]);
+        let (off, off_rows) = run(&[3.0; 8]);
+        let (_, near_rows) = run(&[0.5; 8]);
+        let runs = [good.clone(), off.clone(), good.clone(), off.clone(), off];
+        let window = |r: &Run| 0..r.targets.len();
+        let mine = which(
+            &runs,
+            &[
+                good_rows.clone(),
+                off_rows.clone(),
+                near_rows,
+                off_rows.clone(),
+                good_rows.clone(),
+            ],
+            window,
+            &[1.0],
+        );
+        assert_eq!(mine, [1, 3]);
+        let floor = which(
+            &runs,
+            &[
+                good_rows.clone(),
+                good_rows.clone(),
+                good_rows.clone(),
+                off_rows.clone(),
+                off_rows,
+            ],
+            window,
+            &[1.0],
+        );
+        assert_eq!(floor, [3, 4]);
+        let counted = |lost| Lost {
+            lost,
+            runs: 5,
+            ..Lost::default()
+        };
+        let mut lost = LostRuns {
+            validation: counted(2),
+            scenario_draws: Some(counted(1)),
+            long: Some(counted(1)),
+            ..LostRuns::default()
+        };
+        lost.with_floor(
+            &LostWhich {
+                validation: mine.clone(),
+                scenario_draws: vec![3],
+                ..LostWhich::default()
+            },
+            &LostWhich {
+                validation: floor,
+                scenario_draws: vec![3],
+                ..LostWhich::default()
+            },
+        );
+        // Validation: 1 of its 2 lost runs shared with the floor, judged as 1; the draws' one run is the
+        // floor's too, not judged; the long runs have no floor.
+        assert_eq!((lost.validation.floor_lost, lost.validation.beyond_floor()), (1, 1));
+        assert_eq!(lost.scenario_draws.map(|l| l.beyond_floor()), Some(0));
+        let judged: Vec<_> = lost
+            .judged()
+            .into_iter()
+            .map(|(set, l)| (set, l.beyond_floor()))
+            .collect();
+        assert_eq!(judged, [("validation", 1), ("long", 1)]);
     }
 }

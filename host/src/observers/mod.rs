@@ -61,6 +61,13 @@ pub fn compare(
         design.name
     ));
     let references = references::measure(&bench);
+    // The runs the floor lost too are shown beside each observer's, and not judged (`lost`).
+    if let Some(floor) = references.iter().find(|r| r.figures.kind == "floor") {
+        let observers = (bench.observers.iter_mut()).chain(bench.beside.iter_mut().map(|b| &mut b.figures));
+        for o in observers {
+            o.lost.with_floor(&o.lost_which, &floor.figures.lost_which);
+        }
+    }
     Ok(Comparison {
         references,
         observers: bench.observers,

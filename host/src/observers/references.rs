@@ -10,6 +10,7 @@ use std::sync::Mutex;
 pub use super::figures::{Cost, Reference};
 use super::kind::mhe::run::{self as mhe, Prior};
 use super::kind::Bench;
+use super::lost;
 use super::particles::Floor;
 use super::score::errors;
 use crate::data::Rows;
@@ -77,14 +78,18 @@ pub fn measure(bench: &Bench<'_>) -> Vec<Reference> {
 }
 
 /// The particle filter's floor at the first count from [`FIRST_PARTICLES`] whose doubling changes no
-/// target's validation RMSE by more than [`CONVERGED_WITHIN`] (at most [`MAX_PARTICLES`]).
+/// target's validation RMSE by more than [`CONVERGED_WITHIN`] (at most [`MAX_PARTICLES`]). Its
+/// `lost_which.validation` holds the validation runs it lost at every count tried.
 fn floor(bench: &Bench<'_>) -> Reference {
     use rayon::prelude::*;
 
     let (design, code, runs) = (bench.design, bench.code, &bench.result.runs);
+    // The validation runs lost at every count tried: those the data do not determine (a run lost at
+    // one count alone may be the cloud's failure, not the data's).
+    let mut lost_at_every: Option<Vec<usize>> = None;
     // The validation runs' estimates at `count` (on the streams `judge_reference` gives them) and
     // each target's RMSE.
-    let validation = |count: usize| -> (Vec<Rows>, Vec<f64>) {
+    let mut validation = |count: usize| -> (Vec<Rows>, Vec<f64>) {
         let floor = Floor::new(design, code, count);
         let rows: Vec<Rows> = runs
             .validation
@@ -96,11 +101,17 @@ fn floor(bench: &Bench<'_>) -> Reference {
         let rmse = (0..design.targets.len())
             .map(|t| errors(&runs.validation.runs, &rows, t, bench.windows()).0)
             .collect();
+        let lost = lost::which(&runs.validation.runs, &rows, bench.windows(), &bench.spreads);
+        lost_at_every = Some(match lost_at_every.take() {
+            Some(before) => before.into_iter().filter(|i| lost.contains(i)).collect(),
+            None => lost,
+        });
         (rows, rmse)
     };
-    let (rows, doubling) = by_doubling(FIRST_PARTICLES, MAX_PARTICLES, validation);
+    let (rows, doubling) = by_doubling(FIRST_PARTICLES, MAX_PARTICLES, &mut validation);
     let floor = Floor::new(design, code, doubling.count);
-    let figures = bench.judge_reference("floor", Some(rows), &|run, stream| floor.estimate_run(run, stream));
+    let mut figures = bench.judge_reference("floor", Some(rows), &|run, stream| floor.estimate_run(run, stream));
+    figures.lost_which.validation = lost_at_every.unwrap_or_default();
     Reference {
         what: "particle filter, floor (not embeddable)",
         figures,

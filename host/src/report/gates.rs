@@ -129,8 +129,10 @@ pub enum Gate {
         kind: &'static str,
         /// The set, as the report names it.
         set: &'static str,
-        /// Runs lost.
+        /// Runs lost that the particle floor did not lose.
         lost: usize,
+        /// Runs lost that the floor lost too (not judged: the data do not determine a target there).
+        floor_lost: usize,
         /// Runs in the set.
         runs: usize,
         /// Whether it is `observer()`.
@@ -441,6 +443,7 @@ mod tests {
             scenario: Rows::default(),
             mismatch_scenario: None,
             lost: Default::default(),
+            lost_which: Default::default(),
         }
     }
 
@@ -481,11 +484,20 @@ mod tests {
         use crate::observers::lost::{Lost, LostRuns};
         let mut comparison = clean_comparison();
         comparison.observers[1].lost = LostRuns {
+            // 3 lost, 2 of them by the particle floor too: 1 judged.
             validation: Lost {
-                lost: 1,
+                lost: 3,
                 runs: 64,
+                floor_lost: 2,
                 ..Lost::default()
             },
+            // Only a run the floor lost too: not a gate.
+            scenario_draws: Some(Lost {
+                lost: 1,
+                runs: 50,
+                floor_lost: 1,
+                ..Lost::default()
+            }),
             long: Some(Lost {
                 lost: 2,
                 runs: 64,
@@ -506,6 +518,7 @@ mod tests {
                 kind: "ekf_box",
                 set: "validation",
                 lost: 1,
+                floor_lost: 2,
                 runs: 64,
                 chosen: false
             }
@@ -522,7 +535,7 @@ mod tests {
         assert!(
             gates[0]
                 .to_string()
-                .contains("(`ekf_box`) lost 1 of 64 validation runs"),
+                .contains("(`ekf_box`) lost 1 of 64 validation runs (besides 2 the particle floor lost too"),
             "{}",
             gates[0]
         );

@@ -10,18 +10,28 @@ use crate::observers::lost::{Lost, LAST_PART, LOST_FRACTION};
 /// The table, every observer in the report's order.
 pub fn table(report: &Report<'_>) -> String {
     let mut s = format!(
-        "\nLost runs: a run is lost when an estimate is not finite, or when over its last {:.0} % some target's RMSE exceeds {} times the target's spread, the RMSE of the best constant estimate (lost / runs; — where the set is not run):\n\n\
+        "\nLost runs: a run is lost when an estimate is not finite, or when over its last {:.0} % some target's RMSE exceeds {} times the target's spread, the RMSE of the best constant estimate (lost / runs; — where the set is not run; *k by the floor too*: k of those runs the particle floor lost at every particle count it tried, whose data do not determine a target: no gate counts them):\n\n\
          | observer | validation | tuning | scenario draws | mismatch | long |\n|---|---|---|---|---|---|\n",
         100.0 * LAST_PART,
         LOST_FRACTION,
     );
-    let show = |lost: Option<Lost>| lost.map_or("—".to_owned(), |l| format!("{} / {}", l.lost, l.runs));
-    for o in &report.observers {
-        let l = &o.lost;
+    let show = |lost: Option<Lost>| {
+        lost.map_or("—".to_owned(), |l| match l.floor_lost {
+            0 => format!("{} / {}", l.lost, l.runs),
+            k => format!("{} / {} ({k} by the floor too)", l.lost, l.runs),
+        })
+    };
+    let rows = (report.observers.iter().map(|o| (o.kind, &o.lost))).chain(
+        report
+            .references
+            .iter()
+            .filter(|r| r.name == "floor")
+            .map(|r| (r.name, &r.lost)),
+    );
+    for (name, l) in rows {
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {} | {} | {} |",
-            o.kind,
+            "| {name} | {} | {} | {} | {} | {} |",
             show(Some(l.validation)),
             show(l.tuning),
             show(l.scenario_draws),

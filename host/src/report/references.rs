@@ -45,6 +45,7 @@ pub fn assemble(design: &Design, comparison: &Comparison) -> Vec<ReferenceReport
                     )
                 })
                 .collect(),
+            lost: r.figures.lost,
             solver: match &r.cost {
                 Cost::Solver {
                     prior,

@@ -92,7 +92,7 @@ pub struct ObserverReport {
     /// Per target name.
     pub targets: std::collections::BTreeMap<String, FiguresReport>,
     /// Its lost and restarted runs per set ([`crate::observers::lost`]): `{lost, runs, restarted,
-    /// most_restarts}`, `null` for a set the design lacks or the observer is not run on.
+    /// most_restarts, floor_lost}`, `null` for a set the design lacks or the observer is not run on.
     pub lost: crate::observers::lost::LostRuns,
     /// Measured on the emulated Cortex-M4F by `cargo run -p integration-tests --bin on-target-report`
     /// ([`on_target`]); `null` until the generated source written is measured.
@@ -307,6 +307,9 @@ pub struct ReferenceReport {
     /// The moving-horizon estimate's solver, for `mhe_host` and `mhe_host_prior`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub solver: Option<SolverReport>,
+    /// Its lost runs per set, as an observer's (`null` for the tuning and long runs, which no
+    /// reference is run on).
+    pub lost: crate::observers::lost::LostRuns,
     /// The particle filter's count and its check, for `floor`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub particles: Option<ParticlesReport>,

@@ -47,7 +47,8 @@ pub fn lost_runs(comparison: &Comparison) -> Vec<Gate> {
             o.lost.judged().into_iter().map(move |(set, l)| Gate::LostRuns {
                 kind: o.kind,
                 set,
-                lost: l.lost,
+                lost: l.beyond_floor(),
+                floor_lost: l.floor_lost,
                 runs: l.runs,
                 chosen: o.kind == chosen,
             })

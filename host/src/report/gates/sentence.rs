@@ -92,17 +92,28 @@ impl fmt::Display for Gate {
                     }
                 )
             }
-            Gate::LostRuns { kind: name, set, lost, runs, chosen } => {
+            Gate::LostRuns {
+                kind: name,
+                set,
+                lost,
+                floor_lost,
+                runs,
+                chosen,
+            } => {
                 let what = kind::named(name).map_or("the observer", |k| k.what);
                 let who = if *chosen {
                     format!("`observer()`, {what} (`{name}`),")
                 } else {
                     format!("{what} (`{name}`)")
                 };
+                let besides = match floor_lost {
+                    0 => String::new(),
+                    n => format!(" (besides {n} the particle floor lost too, whose data do not determine a target)"),
+                };
                 write!(
                     f,
-                    "{who} lost {lost} of {runs} {set} runs: at their end its RMSE on some target exceeded {} times the target's \
-                     spread (the best constant estimate's), or its estimate was not finite (the report's table of lost runs){}",
+                    "{who} lost {lost} of {runs} {set} runs{besides}: at their end its RMSE on some target exceeded {} times the \
+                     target's spread (the best constant estimate's), or its estimate was not finite (the report's table of lost runs){}",
                     crate::observers::lost::LOST_FRACTION,
                     if *chosen {
                         "; choose a kind that lost none (`[observer] kind`)"

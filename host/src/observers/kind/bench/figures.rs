@@ -5,7 +5,7 @@ use super::{Bench, Estimates};
 use crate::data::{Rows, Run};
 use crate::observers::figures::{Drift, Figures, ObserverFigures};
 use crate::observers::kind::corrected::run as corrected;
-use crate::observers::lost::{self, LostRuns};
+use crate::observers::lost::{self, LostRuns, LostWhich};
 use crate::observers::score::{self, errors};
 
 impl Bench<'_> {
@@ -107,6 +107,16 @@ impl Bench<'_> {
                 .map(|(m, [on_corners, _, _])| lost(&m.corners_set.runs, on_corners, &restarts.corners)),
             long: tuned.then(|| lost(&runs.long.runs, &on_long, &restarts.long)),
         };
+        let which = |runs: &[Run], estimates: &[Rows]| lost::which(runs, estimates, windows, &self.spreads);
+        let lost_which = LostWhich {
+            validation: which(&runs.validation.runs, &validation),
+            scenario_draws: (runs.scenario_draws.as_ref().zip(on_draws.as_ref()))
+                .map_or_else(Vec::new, |(d, on)| which(&d.runs, on)),
+            mismatch: (runs.mismatch.as_ref().zip(on_mismatch.as_ref()))
+                .map_or_else(Vec::new, |(m, [on_corners, _, _])| {
+                    which(&m.corners_set.runs, on_corners)
+                }),
+        };
         ObserverFigures {
             kind,
             instructions,
@@ -114,6 +124,7 @@ impl Bench<'_> {
             mismatch_scenario,
             scenario,
             lost,
+            lost_which,
         }
     }
 }
