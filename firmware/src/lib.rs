@@ -167,6 +167,9 @@ pub mod emitted {
     /// The generator's part of [`crate::mhe`]: the design's constants and the solve's steps.
     pub mod mhe {
         pub use crate::mhe::observer::Horizon;
-        pub use crate::mhe::solver::{normal_equations, propagate, solve_cholesky, solve_window, Normal, Settings};
+        pub use crate::mhe::solver::{
+            normal_equations, propagate, solve_cholesky, solve_window, Normal, Settings, Solved,
+        };
+        pub use crate::watch::Watch;
     }
 }

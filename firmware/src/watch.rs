@@ -24,6 +24,35 @@
 
 use crate::Scalar;
 
+/// A watch's constants, where a kind keeps them as values (the moving-horizon estimate's settings):
+/// the mean's start, its gain `g` and its limit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Watch<T> {
+    /// `c` at the start and after a restart: the watched quantity's mean when the model is right.
+    pub start: T,
+    /// `g = 1 / W`.
+    pub gain: T,
+    /// `τ` times the mean.
+    pub limit: T,
+}
+
+impl<T: Scalar> Watch<T> {
+    /// What a kind that keeps its watch as values (`watch`, `None`: not watched) does with a new
+    /// `value` of the watched quantity: the mean after it (`chi`: the mean so far, `None` at the start
+    /// or after a restart) and whether it is plausible. Unwatched: `(None, true)`.
+    #[inline(always)]
+    #[must_use]
+    pub fn after(watch: Option<Self>, chi: Option<T>, value: T) -> (Option<T>, bool) {
+        match watch {
+            Some(w) => {
+                let chi = watched(chi.unwrap_or(w.start), value, w.gain);
+                (Some(chi), plausible(chi, w.limit))
+            }
+            None => (None, true),
+        }
+    }
+}
+
 /// `c` after a measured sample of normalised innovation squared `nis`: `c + g (ε − c)`, in this order
 /// (the emitted Rust and C compute the same operations).
 #[inline(always)]

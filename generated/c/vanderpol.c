@@ -2387,6 +2387,11 @@ static const float MHE_START[VANDERPOL_STATES] = {
 };
 static const float MHE_DAMPING = 1e-6f;
 static const float MHE_H = 0.1f;
+/* The chi-square watch over the windows' output costs (firmware::watch): the mean's start N m, its
+ * gain 1 / W and its limit tau N m. */
+static const float MHE_WATCH_START = 10.0f;
+static const float MHE_WATCH_GAIN = 0.1f;
+static const float MHE_WATCH_LIMIT = 10240.0f;
 #define MHE_ITERATIONS 2u
 #define MHE_SUBSTEPS 1u
 #define MHE_NX VANDERPOL_STATES
@@ -2482,11 +2487,12 @@ static void mhe_project(const float *x, float *out) {
 
 /* firmware::mhe::normal_equations over the window of o from x: J^T W J and J^T W r (a non-finite
  * residual weighs nothing). */
-static void mhe_normal(const vanderpol_mhe *o, const float *x, float (*matrix)[MHE_NX], float *gradient) {
+static void mhe_normal(const vanderpol_mhe *o, const float *x, float (*matrix)[MHE_NX], float *gradient, float *cost) {
     float state[MHE_NX];
     float sensitivity[MHE_NX][MHE_NX];
     unsigned k, i, a, b, c, m;
     memcpy(state, x, sizeof state);
+    *cost = 0.0f;
     for (a = 0u; a < MHE_NX; ++a) {
         gradient[a] = 0.0f;
         for (b = 0u; b < MHE_NX; ++b) {
@@ -2512,6 +2518,7 @@ static void mhe_normal(const vanderpol_mhe *o, const float *x, float (*matrix)[M
             const float residual = select_float(finite, raw, 0.0f);
             const float w = select_float(finite, MHE_WEIGHTS[i], 0.0f);
             float row[MHE_NX];
+            *cost += w * residual * residual;
             for (c = 0u; c < MHE_NX; ++c) {
                 row[c] = 0.0f;
                 for (m = 0u; m < MHE_NX; ++m) {
@@ -2572,15 +2579,17 @@ static int mhe_cholesky(float (*a)[MHE_NX], const float *b, float *x) {
 }
 
 /* firmware::mhe::solve_window: MHE_ITERATIONS damped Gauss-Newton steps from centre (with the prior
- * around it when `prior`), each projected; the solution x and the state at the newest sample. */
-static void mhe_solve_window(const vanderpol_mhe *o, const float *centre, int prior, float *solution, float *end) {
+ * around it when `prior`), each projected; the solution x, the state at the newest sample and the
+ * window's output cost at the last step's start. */
+static void mhe_solve_window(const vanderpol_mhe *o, const float *centre, int prior, float *solution, float *end, float *cost) {
     float x[MHE_NX], state[MHE_NX];
     unsigned n, i, k;
     memcpy(x, centre, sizeof x);
+    *cost = 0.0f;
     for (n = 0u; n < MHE_ITERATIONS; ++n) {
         float matrix[MHE_NX][MHE_NX];
         float gradient[MHE_NX], step[MHE_NX], next[MHE_NX];
-        mhe_normal(o, x, matrix, gradient);
+        mhe_normal(o, x, matrix, gradient, cost);
         for (i = 0u; i < MHE_NX; ++i) {
             if (prior) {
                 matrix[i][i] += MHE_PRIOR[i];
@@ -2613,12 +2622,15 @@ void vanderpol_mhe_init(vanderpol_mhe *o) {
     o->has_solved = 0;
     o->ready = 0;
     o->restarts = 0u;
+    o->chi = 0.0f;
+    o->has_chi = 0;
 }
 
 vanderpol_status vanderpol_mhe_push(vanderpol_mhe *o, const float *y, const float *u) {
-    float moved[MHE_NX], x[MHE_NX], end[MHE_NX], values[VANDERPOL_TARGETS];
+    float moved[MHE_NX], x[MHE_NX], end[MHE_NX], values[VANDERPOL_TARGETS], cost;
     int has_moved = 0;
     unsigned i, slot;
+    float chi;
     if (!all_finite(y, VANDERPOL_OUTPUTS) || !inputs_finite(u)) {
         return VANDERPOL_REFUSED;
     }
@@ -2641,10 +2653,15 @@ vanderpol_status vanderpol_mhe_push(vanderpol_mhe *o, const float *y, const floa
     if (o->filled < VANDERPOL_HORIZON) {
         return VANDERPOL_OK;
     }
-    mhe_solve_window(o, has_moved ? moved : MHE_START, has_moved, x, end);
+    mhe_solve_window(o, has_moved ? moved : MHE_START, has_moved, x, end, &cost);
     targets(end, u, values);
-    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX) || !all_finite(values, VANDERPOL_TARGETS)) {
+    /* firmware::watch: the windows' costs' mean, from its start after a (re)start. */
+    chi = o->has_chi ? o->chi : MHE_WATCH_START;
+    chi = chi + MHE_WATCH_GAIN * (cost - chi);
+    if (!all_finite(x, MHE_NX) || !all_finite(end, MHE_NX) || !all_finite(values, VANDERPOL_TARGETS)
+        || !(chi <= MHE_WATCH_LIMIT)) {
         /* Restarted: the next window is solved from the start, not from this solution. */
+        o->has_chi = 0;
         o->has_solved = 0;
         if (o->restarts != UINT32_MAX) {
             ++o->restarts;
@@ -2653,6 +2670,8 @@ vanderpol_status vanderpol_mhe_push(vanderpol_mhe *o, const float *y, const floa
     }
     memcpy(o->solved, x, sizeof x);
     o->has_solved = 1;
+    o->chi = chi;
+    o->has_chi = 1;
     memcpy(o->values, values, sizeof values);
     for (i = 0u; i < VANDERPOL_TARGETS; ++i) {
         o->flags[i] = VANDERPOL_INSIDE;

@@ -217,8 +217,12 @@ typedef struct {
     float values[VANDERPOL_SEARCHED_TARGETS];
     vanderpol_searched_saturation flags[VANDERPOL_SEARCHED_TARGETS];
     int ready;
-    /* Restarts since init: samples whose solution was not finite (the next window is then solved
-     * from the start); saturates. */
+    /* The watched mean of the windows' output costs (firmware::watch), once a window was solved
+     * since the last (re)start. */
+    float chi;
+    int has_chi;
+    /* Restarts since init: samples whose solution was not finite, or whose watch found the windows
+     * implausible (the next window is then solved from the start); saturates. */
     uint32_t restarts;
 } vanderpol_searched_mhe;
 

@@ -70,7 +70,7 @@ pub const FAMILY: (&str, usize, f32) = ("ecoli", 0, 2.0);
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 4] = [("map", 113), ("ekf_box", 4215), ("ukf_box", 17542), ("mhe", 113325)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 4] = [("map", 113), ("ekf_box", 4215), ("ukf_box", 17542), ("mhe", 113339)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -13048,8 +13048,8 @@ pub fn ukf_targets<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; T
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
-/// learning runs cover, the first window's start, 3 Gauss–Newton step(s) per sample and
-/// Levenberg's damping.
+/// learning runs cover, the first window's start, 3 Gauss–Newton step(s) per sample,
+/// Levenberg's damping and the χ² watch over the windows' costs (`None`: not watched).
 pub struct Mhe;
 
 impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {
@@ -13070,6 +13070,7 @@ impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPU
             start: [T::literal(2.0, 2.0), T::literal(2.5, 2.5), T::literal(0.15, 0.15)],
             iterations: 3,
             damping: T::literal(1e-6, 1e-6),
+            watch: Some(firmware::emitted::mhe::Watch { start: T::literal(6.0, 6.0), gain: T::literal(0.33333334, 0.3333333333333333), limit: T::literal(6144.0, 6144.0) }),
         }
     }
 
@@ -13100,7 +13101,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "98d244cf5f8aa5537f0652fecf06d23ccf0238c3c5a0d605418aef092872c768";
+pub const TABLES_SHA256: &str = "740a0550356e310fdd0ca1f4accf0136fcf7ca7430e5970eaec0ae3b012f3ca5";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

@@ -66,7 +66,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["cm", "cm"];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 186), ("ekf_box", 432), ("ukf_box", 667), ("corrected", 220), ("ekf_map", 440), ("ekf_restart", 680), ("mhe", 27328)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 186), ("ekf_box", 432), ("ukf_box", 667), ("corrected", 220), ("ekf_map", 440), ("ekf_restart", 680), ("mhe", 27342)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -3031,8 +3031,8 @@ pub type EkfRestartObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZ
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
-/// learning runs cover, the first window's start, 1 Gauss–Newton step(s) per sample and
-/// Levenberg's damping.
+/// learning runs cover, the first window's start, 1 Gauss–Newton step(s) per sample,
+/// Levenberg's damping and the χ² watch over the windows' costs (`None`: not watched).
 pub struct Mhe;
 
 impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {
@@ -3053,6 +3053,7 @@ impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPU
             start: [T::literal(15.0, 15.0), T::literal(15.0, 15.0)],
             iterations: 1,
             damping: T::literal(1e-6, 1e-6),
+            watch: Some(firmware::emitted::mhe::Watch { start: T::literal(10.0, 10.0), gain: T::literal(0.1, 0.1), limit: T::literal(10240.0, 10240.0) }),
         }
     }
 
@@ -3083,7 +3084,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "8e926d8d7b4a2dec1150ddd3c3fa00dd823d6d01c9019438d392ae5fd461e25d";
+pub const TABLES_SHA256: &str = "ce2cd140ff3a2999658b476518a1790c9ac16660a82ecafbed7c127b02790b25";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

@@ -66,7 +66,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["", ""];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 126), ("ekf_box", 257), ("ukf_box", 447), ("corrected", 149), ("ekf_map", 265), ("ekf_restart", 445), ("mhe", 34199)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 126), ("ekf_box", 257), ("ukf_box", 447), ("corrected", 149), ("ekf_map", 265), ("ekf_restart", 445), ("mhe", 34213)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -2133,8 +2133,8 @@ pub type EkfRestartObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZ
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
-/// learning runs cover, the first window's start, 2 Gauss–Newton step(s) per sample and
-/// Levenberg's damping.
+/// learning runs cover, the first window's start, 2 Gauss–Newton step(s) per sample,
+/// Levenberg's damping and the χ² watch over the windows' costs (`None`: not watched).
 pub struct Mhe;
 
 impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {
@@ -2155,6 +2155,7 @@ impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPU
             start: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
             iterations: 2,
             damping: T::literal(1e-6, 1e-6),
+            watch: Some(firmware::emitted::mhe::Watch { start: T::literal(10.0, 10.0), gain: T::literal(0.1, 0.1), limit: T::literal(10240.0, 10240.0) }),
         }
     }
 
@@ -2185,7 +2186,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "dc4fb2e1f31b671cd3e1356285d6fd6ca00a80df0b23a42bd720db4153c471f6";
+pub const TABLES_SHA256: &str = "9143f3ef62c51051ec6aa324e59478271f38a7e4c30e7973d06add0ef729e3b1";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

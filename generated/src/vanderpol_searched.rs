@@ -66,7 +66,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["", ""];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 149), ("ekf_box", 257), ("ukf_box", 447), ("corrected", 149), ("ekf_map", 265), ("ekf_restart", 468), ("mhe", 72959)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 149), ("ekf_box", 257), ("ukf_box", 447), ("corrected", 149), ("ekf_map", 265), ("ekf_restart", 468), ("mhe", 72973)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -2084,8 +2084,8 @@ pub type EkfRestartObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZ
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
-/// learning runs cover, the first window's start, 3 Gauss–Newton step(s) per sample and
-/// Levenberg's damping.
+/// learning runs cover, the first window's start, 3 Gauss–Newton step(s) per sample,
+/// Levenberg's damping and the χ² watch over the windows' costs (`None`: not watched).
 pub struct Mhe;
 
 impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {
@@ -2106,6 +2106,7 @@ impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPU
             start: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
             iterations: 3,
             damping: T::literal(1e-6, 1e-6),
+            watch: Some(firmware::emitted::mhe::Watch { start: T::literal(16.0, 16.0), gain: T::literal(0.0625, 0.0625), limit: T::literal(16384.0, 16384.0) }),
         }
     }
 
@@ -2136,7 +2137,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "182d306ee23e7b1c255da26f16f889acca3a6fd35e6bcc55b1578215c22cf60f";
+pub const TABLES_SHA256: &str = "515de3f0dff25ae61e0bf2881addb45a10a17086bd1f22e57d8a62d84b5c044e";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

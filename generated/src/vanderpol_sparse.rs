@@ -66,7 +66,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["", ""];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 97), ("ekf_box", 257), ("ukf_box", 447), ("corrected", 149), ("ekf_map", 265), ("ekf_restart", 416), ("mhe", 86639)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 97), ("ekf_box", 257), ("ukf_box", 447), ("corrected", 149), ("ekf_map", 265), ("ekf_restart", 416), ("mhe", 86653)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -2081,8 +2081,8 @@ pub type EkfRestartObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZ
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
-/// learning runs cover, the first window's start, 3 Gauss–Newton step(s) per sample and
-/// Levenberg's damping.
+/// learning runs cover, the first window's start, 3 Gauss–Newton step(s) per sample,
+/// Levenberg's damping and the χ² watch over the windows' costs (`None`: not watched).
 pub struct Mhe;
 
 impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {
@@ -2103,6 +2103,7 @@ impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPU
             start: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
             iterations: 3,
             damping: T::literal(1e-6, 1e-6),
+            watch: Some(firmware::emitted::mhe::Watch { start: T::literal(19.0, 19.0), gain: T::literal(0.05263158, 0.05263157894736842), limit: T::literal(19456.0, 19456.0) }),
         }
     }
 
@@ -2133,7 +2134,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "8466697f87f91952737c4f8fec49adcba7c9d7f0526907e0e1fe047672f7a03d";
+pub const TABLES_SHA256: &str = "f928ba62f91b9b7395288458280cb0f94e6a177018e314e46a6dc853b37c4cbc";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

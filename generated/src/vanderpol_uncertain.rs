@@ -66,7 +66,7 @@ pub const TARGET_UNITS: [&str; TARGETS] = ["", ""];
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 134), ("ekf_box", 257), ("ukf_box", 447), ("corrected", 149), ("ekf_map", 265), ("ekf_restart", 453), ("mhe", 34199)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 134), ("ekf_box", 257), ("ukf_box", 447), ("corrected", 149), ("ekf_map", 265), ("ekf_restart", 453), ("mhe", 34213)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -2154,8 +2154,8 @@ pub type EkfRestartObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZ
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
-/// learning runs cover, the first window's start, 2 Gauss–Newton step(s) per sample and
-/// Levenberg's damping.
+/// learning runs cover, the first window's start, 2 Gauss–Newton step(s) per sample,
+/// Levenberg's damping and the χ² watch over the windows' costs (`None`: not watched).
 pub struct Mhe;
 
 impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPUTS, TARGETS> for Mhe {
@@ -2176,6 +2176,7 @@ impl<T: Scalar + Maths> firmware::emitted::mhe::Horizon<T, STATES, OUTPUTS, INPU
             start: [T::literal(0.0, 0.0), T::literal(0.0, 0.0)],
             iterations: 2,
             damping: T::literal(1e-6, 1e-6),
+            watch: Some(firmware::emitted::mhe::Watch { start: T::literal(10.0, 10.0), gain: T::literal(0.1, 0.1), limit: T::literal(10240.0, 10240.0) }),
         }
     }
 
@@ -2206,7 +2207,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "1da4b22266e2269f8a1b287e210c747e2d32ca151aa4297f34a76ec0c8f149c8";
+pub const TABLES_SHA256: &str = "4c65033e0b15fd92a16671c411ce664c1c8b9d61c41f0513fdb0bd2e0e3e3eba";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

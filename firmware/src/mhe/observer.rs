@@ -7,6 +7,7 @@ use core::marker::PhantomData;
 
 use super::solver::{solve_window, Settings};
 use crate::bounds::project;
+use crate::watch::Watch;
 use crate::window::{Sample, Window};
 use crate::{Estimate, Plant, RejectedSample, Saturation, Scalar};
 
@@ -31,14 +32,19 @@ pub trait Horizon<T: Scalar, const NX: usize, const NY: usize, const NU: usize, 
 /// window is full every sample runs the same instructions. A sample with a non-finite measurement or
 /// input is refused and not stored, before the window is full as after (the firmware contract: nothing
 /// stored changes); a solution the model carries to a non-finite value is not kept, and the next window is
-/// solved from the start (a restart) instead of from it. A refused sample
-/// leaves the latest estimate as it was. The estimate is a state inside the box, so its targets
+/// solved from the start (a restart) instead of from it. With a watch (`settings().watch`), the
+/// windows' output costs are watched as a filter's normalised innovations are ([`crate::watch`]:
+/// their mean is `N m` when the model and the noise are right): a run of implausible windows, a
+/// solution stuck where the samples say otherwise, restarts the observer the same way. A refused
+/// sample, or a restart, leaves the latest estimate as it was. The estimate is a state inside the box, so its targets
 /// carry no saturation flag (each is `Inside`).
 pub struct Observer<T, H, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> {
     window: Window<T, N, NY, NU>,
     /// The latest window's solution (its start), once there is one.
     solved: Option<[T; NX]>,
     latest: Option<[Estimate<T>; NT]>,
+    /// The watched mean of the windows' costs since the last (re)start, once a window was solved.
+    chi: Option<T>,
     /// Restarts since the start (saturating).
     restarts: u32,
     design: PhantomData<fn() -> H>,
@@ -57,6 +63,7 @@ where
             window: Window::new(),
             solved: None,
             latest: None,
+            chi: None,
             restarts: 0,
             design: PhantomData,
         }
@@ -79,15 +86,19 @@ where
         let Some(samples) = self.window.samples() else {
             return Ok(()); // fewer than N samples: no estimate yet
         };
-        let (x, end) = solve_window(&plant, &s, samples, &moved.unwrap_or(s.start), moved.is_some());
+        let solved = solve_window(&plant, &s, samples, &moved.unwrap_or(s.start), moved.is_some());
+        let (x, end) = (solved.start, solved.end);
         let values = H::targets(&end, &u);
-        if !x.iter().chain(&end).chain(&values).all(|v| v.is_finite()) {
+        let (chi, watch_passes) = Watch::after(s.watch, self.chi, solved.cost);
+        if !(x.iter().chain(&end).chain(&values).all(|v| v.is_finite()) && watch_passes) {
             // Restarted: the next window is solved from the start, not from this solution.
             self.solved = None;
+            self.chi = None;
             self.restarts = self.restarts.saturating_add(1);
             return Err(RejectedSample);
         }
         self.solved = Some(x);
+        self.chi = chi;
         let mut latest = [Estimate {
             value: T::ZERO,
             saturation: Saturation::Inside,
@@ -123,8 +134,8 @@ where
         self.latest.is_some()
     }
 
-    /// Restarts since the start: samples with finite values whose solution was not finite, after
-    /// which the next window is solved from the start.
+    /// Restarts since the start: samples with finite values whose solution was not finite, or whose
+    /// watch found the windows implausible, after which the next window is solved from the start.
     #[must_use]
     pub fn restarts(&self) -> u32 {
         self.restarts
@@ -150,6 +161,7 @@ impl<T: Scalar, H, const N: usize, const NX: usize, const NY: usize, const NU: u
             window: self.window.clone(),
             solved: self.solved,
             latest: self.latest,
+            chi: self.chi,
             restarts: self.restarts,
             design: PhantomData,
         }

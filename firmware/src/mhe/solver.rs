@@ -4,6 +4,7 @@
 //! through `crate::emitted::mhe`.
 
 use crate::bounds::project;
+use crate::watch::Watch;
 use crate::window::Sample;
 use crate::{Plant, Scalar};
 
@@ -155,24 +156,38 @@ where
     state
 }
 
+/// One window's estimate as [`super::Observer`] computes it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Solved<T, const NX: usize> {
+    /// The state at the window's start.
+    pub start: [T; NX],
+    /// The state at the window's newest sample, projected onto the box.
+    pub end: [T; NX],
+    /// The window's output cost `Σ_j Σ_i w_i r_i(j)²` at the last Gauss–Newton step's start (what
+    /// the χ² watch reads: its mean is `N m` when the model and the noise are right).
+    pub cost: T,
+}
+
 /// One window's estimate as [`super::Observer`] computes it: `settings.iterations` projected
 /// Gauss–Newton steps from `centre` (the prior's centre too, when `prior`), then the solution carried
-/// to the window's end and projected; returns the start and the end.
+/// to the window's end and projected.
 pub fn solve_window<T, P, const NX: usize, const NY: usize, const NU: usize>(
     plant: &P,
     settings: &Settings<T, NX, NY>,
     samples: &[Sample<T, NY, NU>],
     centre: &[T; NX],
     prior: bool,
-) -> ([T; NX], [T; NX])
+) -> Solved<T, NX>
 where
     T: Scalar,
     P: Plant<T, NX, NY, NU>,
 {
     let s = settings;
     let mut x = *centre;
+    let mut cost = T::ZERO;
     for _ in 0..s.iterations {
         let mut normal = normal_equations(plant, &x, samples.iter().map(|s| (&s.y, &s.u)), &s.weights);
+        cost = normal.cost;
         for i in 0..NX {
             if prior {
                 normal.matrix[i][i] += s.prior[i];
@@ -190,7 +205,11 @@ where
         x = project(&next, &s.lower, &s.upper);
     }
     let end = propagate::<T, P, NX, NY, NU>(plant, &x, samples.iter().map(|s| &s.u));
-    (x, project(&end, &s.lower, &s.upper))
+    Solved {
+        start: x,
+        end: project(&end, &s.lower, &s.upper),
+        cost,
+    }
 }
 
 /// What [`super::Observer`] is tuned with.
@@ -211,4 +230,7 @@ pub struct Settings<T, const NX: usize, const NY: usize> {
     /// Levenberg's damping, relative to each diagonal entry: keeps the system positive definite where
     /// a state barely reaches the outputs.
     pub damping: T,
+    /// The χ² watch over the windows' output costs ([`crate::watch`]), where the observer is watched:
+    /// a run of implausible windows restarts it.
+    pub watch: Option<Watch<T>>,
 }

@@ -104,10 +104,11 @@ fn one_step_on_a_linear_plant_is_the_weighted_least_squares_solution() {
     assert_eq!(propagate::<f64, Linear, 2, 2, 1>(&Linear, &start, us.iter()), x);
 }
 
-/// The chip observer over [`Linear`] with `SETTINGS` (its targets: the state).
-struct OnLinear<const HEAVY: bool>;
+/// The chip observer over [`Linear`] with `SETTINGS` (its targets: the state); `WATCHED`: with a
+/// watch over windows of 8 samples (`m N = 16`, `τ = 4`, `W = 8`).
+struct OnLinear<const HEAVY: bool, const WATCHED: bool = false>;
 
-impl<const HEAVY: bool> Horizon<f64, 2, 2, 1, 2> for OnLinear<HEAVY> {
+impl<const HEAVY: bool, const WATCHED: bool> Horizon<f64, 2, 2, 1, 2> for OnLinear<HEAVY, WATCHED> {
     type Plant = Linear;
     fn plant() -> Linear {
         Linear
@@ -123,6 +124,11 @@ impl<const HEAVY: bool> Horizon<f64, 2, 2, 1, 2> for OnLinear<HEAVY> {
                 start: [0.0; 2],
                 iterations: 2,
                 damping: 0.0,
+                watch: WATCHED.then_some(crate::watch::Watch {
+                    start: 16.0,
+                    gain: 0.125,
+                    limit: 64.0,
+                }),
             }
         } else {
             // One Gauss–Newton step, no damping, no prior: exact on a linear plant whatever the start.
@@ -134,6 +140,7 @@ impl<const HEAVY: bool> Horizon<f64, 2, 2, 1, 2> for OnLinear<HEAVY> {
                 start: [0.0; 2],
                 iterations: 1,
                 damping: 0.0,
+                watch: None,
             }
         }
     }
@@ -228,6 +235,57 @@ fn a_heavy_prior_holds_the_chip_estimator_on_the_model_s_prediction() {
             );
         }
     }
+}
+
+/// Issue 50: a heavy prior holds the estimator on the model's prediction when the plant jumps where
+/// the model cannot go; the watch sees the windows' costs stay implausible and restarts it, and the
+/// next window, solved from the start without the prior, is that window's least-squares end. Unwatched,
+/// it never restarts.
+#[test]
+fn a_watched_estimator_held_where_the_samples_say_otherwise_restarts() {
+    // Samples of the model itself from (0.3, −0.2): every window's cost is 0 at the moved solution.
+    let us: Vec<[f64; 1]> = (0..30).map(|k| [(k as f64 * 0.5).cos()]).collect();
+    let mut x = [0.3, -0.2];
+    let mut ys = Vec::new();
+    for u in &us {
+        ys.push([x[0], x[0] + x[1]]);
+        x = Linear.step(&x, u).0;
+    }
+    // From sample 12 on, outputs the model cannot follow with a prior that heavy.
+    for y in &mut ys[12..] {
+        *y = [5.0, -5.0];
+    }
+    let mut watched: Observer<f64, OnLinear<true, true>, 8, 2, 2, 1, 2> = Observer::new();
+    let mut unwatched: Observer<f64, OnLinear<true, false>, 8, 2, 2, 1, 2> = Observer::new();
+    let mut first_restart = None;
+    for k in 0..30 {
+        assert!(unwatched.push(ys[k], us[k]).is_ok(), "unwatched: {k}");
+        let before = watched.estimate();
+        match watched.push(ys[k], us[k]) {
+            Ok(()) => {}
+            Err(RejectedSample) => {
+                // A restart keeps the latest estimate and counts.
+                assert_eq!(watched.estimate(), before, "{k}");
+                first_restart.get_or_insert(k);
+                // The next window is solved from the start without the prior: its least-squares end
+                // (one Gauss–Newton step is exact on a linear plant).
+                watched.push(ys[k + 1], us[k + 1]).unwrap();
+                let (start, _) = least_squares(&ys[k - 6..=k + 1], &us[k - 6..=k + 1], [1.0, 1.0], [0.0; 2]);
+                let end = propagate::<f64, Linear, 2, 2, 1>(&Linear, &start, us[k - 6..=k + 1].iter());
+                let estimate = values(watched.estimate()).unwrap();
+                for i in 0..2 {
+                    assert!((estimate[i] - end[i]).abs() < 1e-9, "{k}: {estimate:?} vs {end:?}");
+                }
+                break;
+            }
+        }
+    }
+    // No restart while the samples were the model's, nor at the first sample off (the watch needs a
+    // run of implausible windows: from c ≈ 16 · (7/8)⁵ ≈ 8 and costs growing by about 50 per bad
+    // sample, c passes 64 at the fifth); one within a few samples of the jump.
+    let first = first_restart.expect("the watch restarts the held estimator");
+    assert!((13..20).contains(&first), "first restart at {first}");
+    assert_eq!((watched.restarts(), unwatched.restarts()), (1, 0));
 }
 
 #[test]

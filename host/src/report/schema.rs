@@ -307,8 +307,7 @@ pub struct ReferenceReport {
     /// The moving-horizon estimate's solver, for `mhe_host` and `mhe_host_prior`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub solver: Option<SolverReport>,
-    /// Its lost runs per set, as an observer's (`null` for the tuning and long runs, which no
-    /// reference is run on).
+    /// Its lost runs per set as an observer's (`null` on the tuning and long runs: not run there).
     pub lost: crate::observers::lost::LostRuns,
     /// The particle filter's count and its check, for `floor`.
     #[serde(skip_serializing_if = "Option::is_none")]

@@ -147,6 +147,11 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
                 damping: settings.damping,
                 h: plant.h(),
                 substeps: $d::CHIP_SUBSTEPS,
+                // W = 1 / g and τ = limit / start, read back from the emitted watch.
+                watch: settings.watch.map_or(host::plant::kalman::Watch::OFF, |w| host::plant::kalman::Watch {
+                    window: (1.0 / w.gain).round() as usize,
+                    threshold: w.limit / w.start,
+                }),
             };
             let _ = (&$targets, $first, &$maps);
             host::observers::kind::mhe::run::chip::chip_run::<f64>(&$code, $d::HORIZON, &constants, &$run)

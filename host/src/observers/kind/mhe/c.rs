@@ -9,7 +9,7 @@ use askama::Template;
 use crate::emit::c::program::function;
 use crate::emit::c::text::{floats, CPart};
 use crate::emit::model::observers::Observers;
-use crate::emit::EmitError;
+use crate::emit::{EmitError, WatchLiterals};
 use crate::observers::kind::mhe::run::ChipConstants;
 use crate::plant::ModelCode;
 use crate::spec::Design;
@@ -19,7 +19,7 @@ pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) ->
     let Some(constants) = observers.mhe() else {
         return Ok(None);
     };
-    let (header, source) = mhe(&design.name, code, constants, design.chip_substeps)?;
+    let (header, source) = mhe(&design.name, code, constants, design.chip_substeps, design.map.horizon)?;
     Ok(Some(CPart {
         header,
         source,
@@ -33,6 +33,7 @@ fn mhe(
     code: &ModelCode,
     constants: &ChipConstants,
     substeps: usize,
+    horizon: usize,
 ) -> Result<(String, String), EmitError> {
     let upper = name.to_uppercase();
     let nu = code.dimensions.inputs;
@@ -69,12 +70,16 @@ fn mhe(
         h: &one("substep", constants.h)?,
         iterations: constants.iterations,
         substeps,
+        watch: WatchLiterals::of(&constants.watch, horizon * code.dimensions.outputs, |what, v| {
+            one(what, v)
+        })?,
     });
     let header = crate::emit::c::render(&MheH {
         name,
         upper: &upper,
         inputs: nu > 0,
         iterations: constants.iterations,
+        watched: constants.watch.threshold.is_finite(),
     });
     Ok((header, source + &crate::emit::c::started::estimate(name, "mhe")))
 }
@@ -87,6 +92,8 @@ struct MheH<'a> {
     upper: &'a str,
     inputs: bool,
     iterations: usize,
+    /// Whether the observer keeps a watched mean.
+    watched: bool,
 }
 
 /// The observer's constants and code (`NX` is the design's states).
@@ -105,4 +112,6 @@ struct MheC<'a> {
     h: &'a str,
     iterations: usize,
     substeps: usize,
+    /// The watch's constants over the windows' costs (`m N` outputs), where watched.
+    watch: Option<WatchLiterals>,
 }

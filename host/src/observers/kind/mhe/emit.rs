@@ -7,18 +7,22 @@ use askama::Template;
 
 use crate::emit::model::observers::Observers;
 use crate::emit::model::rust_text::{list, literal};
-use crate::emit::EmitError;
+use crate::emit::{EmitError, WatchLiterals};
 use crate::observers::kind::mhe::run::ChipConstants;
 use crate::plant::ModelCode;
 use crate::spec::Design;
 
 /// Its part of the design file, when the design has it.
-pub(crate) fn rust(_: &Design, _: &ModelCode, observers: &Observers<'_>) -> Result<Option<String>, EmitError> {
-    observers.mhe().map(mhe).transpose()
+pub(crate) fn rust(design: &Design, _: &ModelCode, observers: &Observers<'_>) -> Result<Option<String>, EmitError> {
+    let outputs = design.model.outputs.len();
+    (observers.mhe())
+        .map(|c| mhe(c, design.map.horizon, outputs))
+        .transpose()
 }
 
-/// The text of `Mhe` and `MheObserver` with `constants`.
-fn mhe(constants: &ChipConstants) -> Result<String, EmitError> {
+/// The text of `Mhe` and `MheObserver` with `constants`, over windows of `horizon` samples of
+/// `outputs` outputs.
+fn mhe(constants: &ChipConstants, horizon: usize, outputs: usize) -> Result<String, EmitError> {
     let values = |what: &str, values: &[f64]| -> Result<String, EmitError> {
         let items = values
             .iter()
@@ -36,6 +40,15 @@ fn mhe(constants: &ChipConstants) -> Result<String, EmitError> {
         upper: &values("upper", &constants.upper)?,
         start: &values("start", &constants.start)?,
         damping: &literal("chip MHE damping", constants.damping)?,
+        watch: &match WatchLiterals::of(&constants.watch, horizon * outputs, |what, v| {
+            literal(&format!("chip MHE {what}"), v)
+        })? {
+            None => "None".to_owned(),
+            Some(w) => format!(
+                "Some(firmware::emitted::mhe::Watch {{ start: {}, gain: {}, limit: {} }})",
+                w.start, w.gain, w.limit
+            ),
+        },
     }
     .render()?)
 }
@@ -52,4 +65,6 @@ struct MheText<'a> {
     upper: &'a str,
     start: &'a str,
     damping: &'a str,
+    /// `None`, or `Some(Watch { … })`.
+    watch: &'a str,
 }

@@ -2,7 +2,8 @@
 //! [`firmware::mhe::Observer`]): the prior's weight tuned on the tuning runs with the converged
 //! estimate ([`mhe::tune_prior`]), then the fewest Gauss–Newton steps per sample of
 //! [`mhe::CHIP_ITERATIONS`] whose tuning score is within [`mhe::CHIP_WITHIN`] of the converged
-//! estimate's; judged in `f32`, the chip's arithmetic. `auto` offers it only within
+//! estimate's, then the χ² watch's threshold over the windows' costs as the filters' is chosen
+//! ([`WATCH_THRESHOLDS`], over `N` windows); judged in `f32`, the chip's arithmetic. `auto` offers it only within
 //! `budget.instructions` ([`crate::observers::choose`]).
 
 pub mod c;
@@ -12,7 +13,10 @@ pub mod run;
 
 use super::{Bench, Kind, Needs, Tuned};
 use crate::data::Rows;
+use crate::observers::ekf::tuning::WATCH_THRESHOLDS;
+use crate::observers::score;
 use crate::observers::ObserverFigures;
+use crate::plant::kalman::Watch;
 use crate::spec::ObserverKind;
 use run as mhe;
 use run::ChipTuned;
@@ -65,11 +69,31 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
             break;
         }
     }
-    let constants = chosen.unwrap_or_else(|| {
+    let mut constants = chosen.unwrap_or_else(|| {
         let last = *mhe::CHIP_ITERATIONS.last().expect("counts to try");
         setup.chip_constants(prior.0, last)
     });
-    let instructions = cost::of_mhe(code, design.map.horizon, constants.iterations, constants.substeps);
+    // The watch's threshold as the filters' (`ekf::tuning`): over a window of N windows, the lowest
+    // score, of equals the largest finite τ, no watch only where strictly best.
+    let watched = |threshold: f64| {
+        let mut constants = constants.clone();
+        constants.watch = Watch {
+            window: design.map.horizon,
+            threshold,
+        };
+        constants
+    };
+    let (threshold, _) = score::lowest(&WATCH_THRESHOLDS, |t| {
+        let constants = watched(t);
+        let rows: Vec<Rows> = tuning
+            .iter()
+            .map(|run| setup.chip_run::<f32>(&constants, run).rows)
+            .collect();
+        bench.tuning_score(&rows)
+    });
+    constants = watched(threshold);
+    let instructions = cost::of_mhe(code, design.map.horizon, constants.iterations, constants.substeps)
+        + crate::search::cost::of_watch(&constants.watch);
     let figures = bench.judge("mhe", instructions, &|run, _| setup.chip_run::<f32>(&constants, run));
     bench.tuned.insert(Tuned::Mhe(ChipTuned {
         prior,

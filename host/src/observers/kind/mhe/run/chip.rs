@@ -10,6 +10,7 @@ use crate::data::{Rows, Run};
 use crate::observers::ekf::{Stepped, MAX_INPUTS};
 use crate::observers::lost::Track;
 use crate::observers::started::literal;
+use crate::plant::kalman::Watch;
 use crate::plant::{Compiled, ModelCode};
 
 /// Gauss–Newton steps per sample the chip's estimator ([`firmware::mhe::Observer`]) may take:
@@ -41,6 +42,19 @@ pub struct ChipConstants {
     pub h: f64,
     /// RK4 steps per sample (`chip_substeps`).
     pub substeps: usize,
+    /// The χ² watch over the windows' output costs (`firmware::watch`; `window`: its `W`, in samples;
+    /// not watched where the threshold is `+∞`).
+    #[serde(default)]
+    pub watch: Watch,
+}
+
+impl ChipConstants {
+    /// The watch's constants for windows of `horizon` samples and `outputs` outputs (the cost's mean
+    /// is `N m`): its start, gain and limit; `None` where not watched.
+    pub fn watch_constants(&self, horizon: usize, outputs: usize) -> Option<(f64, f64, f64)> {
+        let mean = (horizon * outputs) as f64;
+        (self.watch.constants(horizon * outputs)).map(|(gain, limit)| (mean, gain, limit))
+    }
 }
 
 /// The chip estimator as `gen` tuned it (the `mhe` kind, [`crate::observers::kind`]).
@@ -67,6 +81,7 @@ impl Setup<'_> {
             damping: CHIP_DAMPING,
             h: self.h,
             substeps: self.substeps,
+            watch: Watch::OFF,
         }
     }
 
@@ -106,7 +121,7 @@ pub fn chip_run<T: firmware::Scalar + firmware::emitted::Maths>(
 /// The chip's moving-horizon observer on the host, one sample at a time ([`chip_stepper`]).
 pub trait ChipStep {
     /// Takes the sample `(y, u)`: the targets at it, or `None` where the chip gives no estimate yet
-    /// or refuses the sample.
+    /// or refuses the sample; on a restart, the latest estimate (the chip's `estimate` keeps it).
     fn step(&mut self, y: &[f64], u: &[f64]) -> Option<Vec<f64>>;
 
     /// Restarts so far (samples whose solution was not finite), as the chip counts them.
@@ -139,6 +154,10 @@ struct Stepper<'a, T, const NX: usize, const NY: usize> {
     /// The samples stored, the newest last (the window: the last `horizon`).
     stored: std::collections::VecDeque<firmware::Sample<T, NY, MAX_INPUTS>>,
     solved: Option<[T; NX]>,
+    /// The watched mean of the windows' costs, once a window was solved since the last (re)start.
+    chi: Option<T>,
+    /// The latest estimate (what the chip's `estimate` returns after a restart).
+    latest: Option<Vec<f64>>,
     restarts: u32,
     scratch: Vec<T>,
 }
@@ -161,9 +180,18 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths, const NX: usize, const 
                 start: array(&constants.start),
                 iterations: constants.iterations,
                 damping: literal(constants.damping),
+                watch: (constants.watch_constants(horizon, NY)).map(|(start, gain, limit)| {
+                    firmware::emitted::mhe::Watch {
+                        start: literal(start),
+                        gain: literal(gain),
+                        limit: literal(limit),
+                    }
+                }),
             },
             stored: std::collections::VecDeque::with_capacity(horizon + 1),
             solved: None,
+            chi: None,
+            latest: None,
             restarts: 0,
             scratch: Vec::new(),
         }
@@ -197,21 +225,26 @@ impl<T: firmware::Scalar + firmware::emitted::Maths, const NX: usize, const NY: 
             return None;
         }
         let window = self.stored.make_contiguous();
-        let (x, end) = solve_window(&self.plant, s, window, &moved.unwrap_or(s.start), moved.is_some());
+        let solved = solve_window(&self.plant, s, window, &moved.unwrap_or(s.start), moved.is_some());
+        let (x, end) = (solved.start, solved.end);
         let values: Vec<f64> = self
             .code
             .targets(&end, &sample.u, &mut self.scratch)
             .iter()
             .map(|v| v.to_subset().expect("a real"))
             .collect();
-        // A solution or targets the model overflows in: restarted, the next window solved from the
-        // start.
-        if !(x.iter().chain(&end).all(|v| v.is_finite()) && values.iter().all(|v| v.is_finite())) {
+        let (chi, watch_passes) = firmware::emitted::mhe::Watch::after(s.watch, self.chi, solved.cost);
+        // A solution or targets the model overflows in, or windows the watch finds implausible:
+        // restarted, the next window solved from the start; the latest estimate stays.
+        if !(x.iter().chain(&end).all(|v| v.is_finite()) && values.iter().all(|v| v.is_finite()) && watch_passes) {
             self.solved = None;
+            self.chi = None;
             self.restarts = self.restarts.saturating_add(1);
-            return None;
+            return self.latest.clone();
         }
         self.solved = Some(x);
+        self.chi = chi;
+        self.latest = Some(values.clone());
         Some(values)
     }
 
