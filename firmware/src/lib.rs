@@ -44,7 +44,8 @@
 //! output, with Jacobians), in plain arrays with sequential scalar updates in Joseph form: the observer
 //! every design is compared with. [`Started`] runs a model-based follower from the map's first
 //! estimate (the model-corrected map, the map-started EKF); [`Restarted`] runs a filter from the
-//! first sample and checks the map once, restarting from it when the two disagree.
+//! first sample and checks it against the map at every sample from the map's first estimate on,
+//! restarting from the map when the two disagree.
 //!
 //! # The interface a firmware holds
 //!

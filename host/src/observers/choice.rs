@@ -6,17 +6,17 @@ use crate::plant::ModelCode;
 use crate::spec::{Design, ObserverKind, SpecError};
 
 use super::kind::corrected::run as corrected;
-use super::score::{self, CHEAPER_WITHIN};
+use super::score::{self, Score, CHEAPER_WITHIN};
 use super::{ekf, kind, ObserverFigures};
 
-/// A kind's lost tuning runs and [score](score::score) on the tuning runs: compared in that order.
-fn tuning_score(figures: &ObserverFigures, spreads: &[f64]) -> (usize, f64) {
+/// A kind's [score](score::score) on the tuning runs, with its lost tuning runs.
+fn tuning_score(figures: &ObserverFigures, spreads: &[f64]) -> Score {
     let pooled: Vec<f64> = figures.targets.iter().map(|f| f.rmse_tuning).collect();
     let p95: Vec<f64> = figures.targets.iter().map(|f| f.p95_tuning).collect();
-    (
-        figures.lost.tuning.map_or(0, |l| l.lost),
-        score::score(&pooled, &p95, spreads),
-    )
+    Score {
+        lost: figures.lost.tuning.map_or(0, |l| l.lost),
+        value: score::score(&pooled, &p95, spreads),
+    }
 }
 
 /// What [`choose`] would refuse of the spec's `observer.kind` that is known before anything is fitted,
@@ -94,7 +94,7 @@ pub fn choose(
     observers: &[ObserverFigures],
     spreads: &[f64],
 ) -> Result<(ObserverKind, String), SpecError> {
-    let scored: Vec<(ObserverKind, &str, (usize, f64), f64)> = kind::REGISTRY
+    let scored: Vec<(ObserverKind, &str, Score, f64)> = kind::REGISTRY
         .iter()
         .map(|k| (k.kind, k.kind.name()))
         .filter_map(|(kind, name)| {
@@ -111,7 +111,7 @@ pub fn choose(
             Some(&(_, name, _, instructions)) if !within(instructions) => {
                 Err(over_budget(design, name, instructions, budget.unwrap_or_default()))
             }
-            Some(&(kind, name, (lost, score), instructions)) => Ok((
+            Some(&(kind, name, Score { lost, value: score }, instructions)) => Ok((
                 kind,
                 format!(
                     "`{name}` as the spec asks (tuning score {score:.4}{}, ~{instructions:.0} instructions)",
@@ -125,17 +125,17 @@ pub fn choose(
     // budget that allows it.
     let offered =
         |kind: ObserverKind, instructions: f64| within(instructions) && (kind != ObserverKind::Mhe || budget.is_some());
-    let allowed: Vec<&(ObserverKind, &str, (usize, f64), f64)> = scored.iter().filter(|s| offered(s.0, s.3)).collect();
+    let allowed: Vec<&(ObserverKind, &str, Score, f64)> = scored.iter().filter(|s| offered(s.0, s.3)).collect();
     // The fewest lost tuning runs first; among those, the lowest score.
-    let fewest = allowed.iter().map(|s| s.2 .0).min().unwrap_or(0);
+    let fewest = allowed.iter().map(|s| s.2.lost).min().unwrap_or(0);
     let best = allowed
         .iter()
-        .filter(|s| s.2 .0 == fewest)
-        .map(|s| s.2 .1)
+        .filter(|s| s.2.lost == fewest)
+        .map(|s| s.2.value)
         .fold(f64::INFINITY, f64::min);
     let Some(&&(kind, name, _, _)) = allowed
         .iter()
-        .filter(|s| s.2 .0 == fewest && s.2 .1 <= best * (1.0 + CHEAPER_WITHIN))
+        .filter(|s| s.2.lost == fewest && s.2.value <= best * (1.0 + CHEAPER_WITHIN))
         .min_by(|a, b| a.3.total_cmp(&b.3))
     else {
         return Err(design.error(
@@ -150,7 +150,7 @@ pub fn choose(
     };
     let all: Vec<String> = scored
         .iter()
-        .map(|&(k, n, (lost, s), i)| {
+        .map(|&(k, n, Score { lost, value: s }, i)| {
             let over = if !within(i) {
                 ", over budget"
             } else if !offered(k, i) {
@@ -371,8 +371,8 @@ mod tests {
         let mut uneven = kind("corrected", 0.05, 0.05, 300.0);
         uneven.targets[1].rmse_tuning = 0.2;
         uneven.targets[1].p95_tuning = 0.2;
-        assert!((tuning_score(&even, &[1.0, 4.0]).1 - 0.125).abs() < 1e-12);
-        assert!((tuning_score(&uneven, &[1.0, 4.0]).1 - 0.1).abs() < 1e-12);
+        assert!((tuning_score(&even, &[1.0, 4.0]).value - 0.125).abs() < 1e-12);
+        assert!((tuning_score(&uneven, &[1.0, 4.0]).value - 0.1).abs() < 1e-12);
         let observers = [kind("map", 1.0, 1.0, 100.0), even, uneven];
         let auto = design(ObserverKind::Auto, None);
         assert_eq!(

@@ -13,7 +13,7 @@ pub use tuning::{tune, tune_started, tune_with, Estimator, Tuned, STARTS, START_
 use firmware::{Ekf, Plant, Rk4};
 
 use crate::data::{DataSet, Rows, Run};
-use crate::observers::lost::Track;
+use crate::observers::lost::{Track, Tracker};
 use crate::plant::kalman::{EkfConstants, Watch};
 use crate::plant::{Compiled, Covariance, ModelCode};
 use crate::spec::{Axis, Design, FixedFilter};
@@ -181,26 +181,18 @@ fn run_sized<const NX: usize, const NY: usize>(
     if let Some((gain, limit)) = constants.watch.constants(NY) {
         filter = filter.with_watch(gain, limit);
     }
-    let mut estimates = Rows::new(code.dimensions.targets);
+    let mut track = Tracker::new(code.dimensions.targets);
     let mut scratch = Vec::new();
-    let mut restarts = 0;
-    let nan = vec![f64::NAN; code.dimensions.targets];
-    let mut latest = nan.clone();
     for (y, u) in run.measurements.iter().zip(run.inputs.iter()) {
         let mut padded = [0.0; MAX_INPUTS];
         padded[..u.len()].copy_from_slice(u);
         match filter.push(&std::array::from_fn(|i| y[i]), &padded) {
-            Ok(x) => latest = code.targets(&x, u, &mut scratch),
-            // A restart keeps the latest estimate, as the chip's `estimate()` does; a refusal is NaN.
-            Err(firmware::rules::Refused::Restarted) => restarts += 1,
-            Err(_) => latest.clone_from(&nan),
+            Ok(x) => track.estimate(code.targets(&x, u, &mut scratch)),
+            Err(firmware::rules::Refused::Restarted) => track.restarted(),
+            Err(_) => track.refused(),
         }
-        estimates.push(&latest);
     }
-    Track {
-        rows: estimates,
-        restarts,
-    }
+    track.finish()
 }
 
 /// The constants for `θ = (a, b)` (see [`tuning`]), each coordinate clamped to [`LOG_RANGE`].

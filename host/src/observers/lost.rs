@@ -65,6 +65,51 @@ impl From<Track<Vec<Vec<f64>>>> for Track {
     }
 }
 
+/// A [`Track`] built sample by sample as the chip's `estimate()` reads a filter after each `push`:
+/// an estimate is the sample's, a restart keeps the latest estimate (and is counted), a refused
+/// sample gives none (NaN).
+pub struct Tracker {
+    track: Track,
+    latest: Vec<f64>,
+}
+
+impl Tracker {
+    /// Before the first sample of a run, for `targets` targets.
+    pub fn new(targets: usize) -> Self {
+        Tracker {
+            track: Track {
+                rows: Rows::new(targets),
+                restarts: 0,
+            },
+            latest: vec![f64::NAN; targets],
+        }
+    }
+
+    /// The sample gave `estimate`.
+    pub fn estimate(&mut self, estimate: impl IntoIterator<Item = f64>) {
+        self.latest.clear();
+        self.latest.extend(estimate);
+        self.track.rows.push(&self.latest);
+    }
+
+    /// The filter restarted at the sample: the latest estimate stays.
+    pub fn restarted(&mut self) {
+        self.track.restarts += 1;
+        self.track.rows.push(&self.latest);
+    }
+
+    /// The sample was refused: no estimate.
+    pub fn refused(&mut self) {
+        self.latest.fill(f64::NAN);
+        self.track.rows.push(&self.latest);
+    }
+
+    /// The run's track.
+    pub fn finish(self) -> Track {
+        self.track
+    }
+}
+
 /// Whether the observer whose estimates of `run` are `estimates` lost it (see the module docs),
 /// judged over samples `window` against each target's spread `spreads`.
 pub fn is_lost(run: &Run, estimates: &Rows, window: Range<usize>, spreads: &[f64]) -> bool {
@@ -238,6 +283,26 @@ mod tests {
         values[9..].copy_from_slice(&[1.5, 0.0, 1.5]);
         let (r, e) = run(&values);
         assert!(is_lost(&r, &e, 0..12, &[1.0]));
+    }
+
+    #[test]
+    fn a_tracker_keeps_the_latest_estimate_over_a_restart_and_none_over_a_refusal() {
+        let mut tracker = Tracker::new(2);
+        tracker.restarted(); // before any estimate: nothing to keep
+        tracker.estimate([1.0, 2.0]);
+        tracker.restarted();
+        tracker.refused();
+        tracker.restarted(); // after a refusal: still nothing
+        tracker.estimate([3.0, 4.0]);
+        let track = tracker.finish();
+        assert_eq!(track.restarts, 3);
+        let rows: Vec<Vec<f64>> = (0..track.rows.len()).map(|k| track.rows[k].to_vec()).collect();
+        let nan = |r: &Vec<f64>| r.iter().all(|v| v.is_nan());
+        assert!(nan(&rows[0]) && nan(&rows[3]) && nan(&rows[4]), "{rows:?}");
+        assert_eq!(
+            (&rows[1], &rows[2], &rows[5]),
+            (&vec![1.0, 2.0], &vec![1.0, 2.0], &vec![3.0, 4.0])
+        );
     }
 
     #[test]

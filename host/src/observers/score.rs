@@ -14,7 +14,7 @@
 //! the worst, never a NaN that a search cannot order.
 //!
 //! Neither figure sees one run lost among many good ones. A lost tuning run
-//! ([`crate::observers::lost`]) therefore counts before everything else ([`with_lost`]): a candidate
+//! ([`crate::observers::lost`]) therefore counts before everything else ([`Score`]): a candidate
 //! that loses a run never beats one that loses none, whatever its pooled RMSE, and of two that lose
 //! runs the one that loses fewer wins.
 
@@ -23,13 +23,41 @@ use crate::data::{Rows, Run};
 /// How much worse than the best a cheaper kind's score may be and still be chosen by `auto`.
 pub const CHEAPER_WITHIN: f64 = 0.02;
 
-/// What one lost tuning run adds to a score ([`with_lost`]): far above any score of runs that are not
-/// lost (each run's error at its end is below its targets' spreads, so scores are a few units at most).
+/// What one lost tuning run adds to a score as a search sees it ([`Score::objective`]): far above any
+/// score of runs that are not lost (each run's error at its end is below its targets' spreads, so
+/// scores are a few units at most).
 pub const LOST_RUN: f64 = 1e3;
 
-/// `score` with `lost` tuning runs counted first: `LOST_RUN · lost + score`.
-pub fn with_lost(score: f64, lost: usize) -> f64 {
-    LOST_RUN * lost as f64 + score
+/// A [`score`] with the runs lost on the same set: every tuning criterion and `auto` order candidates
+/// by the lost runs first, then by the value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Score {
+    /// Runs lost ([`crate::observers::lost`]).
+    pub lost: usize,
+    /// The [`score`] of the figures.
+    pub value: f64,
+}
+
+impl Score {
+    /// The score of `estimates` of `runs` over samples `window(run)` ([`of_estimates`]), with their
+    /// lost runs ([`crate::observers::lost::count`]).
+    pub fn of(
+        runs: &[Run],
+        estimates: &[Rows],
+        spreads: &[f64],
+        window: impl Fn(&Run) -> std::ops::Range<usize> + Copy,
+    ) -> Self {
+        Score {
+            lost: crate::observers::lost::count(runs, estimates, &[], window, spreads).lost,
+            value: of_estimates(runs, estimates, spreads, window),
+        }
+    }
+
+    /// One number a search minimises, ordered as the scores are while a value stays below
+    /// [`LOST_RUN`]: `LOST_RUN · lost + value`.
+    pub fn objective(self) -> f64 {
+        LOST_RUN * self.lost as f64 + self.value
+    }
 }
 
 /// Each run's RMSE of target `target` over its samples `window(run)`.
@@ -162,6 +190,14 @@ mod tests {
         assert_eq!(percentile_95(&[3.0]), 3.0);
         assert!(percentile_95(&[1.0, f64::NAN]).is_nan());
         assert!(percentile_95(&[]).is_nan());
+    }
+
+    #[test]
+    fn a_lost_run_ranks_before_any_value_in_the_objective() {
+        let (lost, clean) = (Score { lost: 1, value: 0.01 }, Score { lost: 0, value: 5.0 });
+        assert!(clean.objective() < lost.objective());
+        assert_eq!(lost.objective(), 1000.01);
+        assert!(Score { lost: 2, value: 0.3 }.objective() < Score { lost: 2, value: 0.4 }.objective());
     }
 
     #[test]

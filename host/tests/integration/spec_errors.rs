@@ -706,3 +706,25 @@ fn the_literature_example_fixes_the_published_filter_and_is_warned_of_its_start(
     assert!(gates[0].contains("`observer.ekf.x0.pB` = 4.5"), "{}", gates[0]);
     assert!(gates[1].contains("`scenario.observer_x0.pB` = 4.5"), "{}", gates[1]);
 }
+
+#[test]
+fn the_four_tank_example_loads_with_its_bounds_and_its_tuning_starts_on_the_box() {
+    // examples/specs/quadruple_tank.toml: Johansson's quadruple tank, the levels bounded below by 0,
+    // the box [4, 20]² × [0.2, 6]² (written by hand here from the file).
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/specs/quadruple_tank.toml");
+    let design = spec::load(&path).unwrap();
+    assert_eq!(design.state_bounds.len(), 4);
+    assert!(design
+        .state_bounds
+        .iter()
+        .all(|b| b.min == Some(0.0) && b.max.is_none()));
+    // 2 n + min(2ⁿ, 16) edge starts for n = 4 states with a range: 8 + 16, the upper tanks' lower
+    // edge 0.2 cm above their bound.
+    use rand::SeedableRng;
+    let starts = host::data::edge_starts(&design, &mut rand_chacha::ChaCha8Rng::seed_from_u64(1));
+    assert_eq!(starts.len(), 24);
+    assert!(
+        starts.iter().any(|x0| x0[2] == 0.2 && x0[3] == 0.2),
+        "a corner with both upper tanks at 0.2 cm"
+    );
+}

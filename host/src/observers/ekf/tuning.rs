@@ -72,8 +72,8 @@ const ITERATIONS: u64 = 150;
 pub type Estimator = fn(&ModelCode, &EkfConstants, &[f64], &DataSet) -> Option<Vec<Rows>>;
 
 /// The score of the filter with `constants` from the box centre on `data` (windows `k ≥ N − 1`), its
-/// lost runs counted first ([`crate::observers::score::with_lost`]): a candidate that loses a tuning
-/// run never beats one that loses none.
+/// lost runs counted first ([`crate::observers::score::Score::objective`]): a candidate that loses a
+/// tuning run never beats one that loses none.
 fn score(
     estimator: Estimator,
     code: &ModelCode,
@@ -84,11 +84,7 @@ fn score(
 ) -> f64 {
     let estimates = estimator(code, constants, centre, data).expect("size checked");
     let window = |run: &crate::data::Run| data.horizon.saturating_sub(1)..run.targets.len();
-    let lost = crate::observers::lost::count(&data.runs, &estimates, &[], window, target_spreads).lost;
-    crate::observers::score::with_lost(
-        crate::observers::score::of_estimates(&data.runs, &estimates, target_spreads, window),
-        lost,
-    )
+    crate::observers::score::Score::of(&data.runs, &estimates, target_spreads, window).objective()
 }
 
 /// The tuning criterion as `argmin` sees it: `θ` to the score.

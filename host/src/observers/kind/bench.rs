@@ -12,7 +12,7 @@ use super::tuned::TunedKinds;
 use std::collections::BTreeMap;
 
 use crate::observers::figures::{Beside, FromObserverStart, ObserverFigures};
-use crate::observers::lost::{self, Track};
+use crate::observers::lost::Track;
 use crate::observers::score;
 
 mod figures;
@@ -156,15 +156,10 @@ impl<'a> Bench<'a> {
             .collect()
     }
 
-    /// The [score](score::of_estimates) of `estimates`, one per tuning run, its lost runs counted
-    /// first ([`score::with_lost`]).
+    /// The [score](score::Score::objective) of `estimates`, one per tuning run, its lost runs counted
+    /// first.
     pub fn tuning_score(&self, estimates: &[Rows]) -> f64 {
-        let runs = &self.result.runs.tuning.runs;
-        let lost = lost::count(runs, estimates, &[], self.windows(), &self.spreads).lost;
-        score::with_lost(
-            score::of_estimates(runs, estimates, &self.spreads, self.windows()),
-            lost,
-        )
+        score::Score::of(&self.result.runs.tuning.runs, estimates, &self.spreads, self.windows()).objective()
     }
 
     /// One kind's figures on every set: `estimate(run, map)` is its estimate of every target at every

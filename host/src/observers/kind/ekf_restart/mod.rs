@@ -1,6 +1,6 @@
-//! `ekf_restart`: the EKF from the centre of the state box, checked once against the map's first
-//! estimate and restarted from it as `ekf_map` starts when the two disagree (a χ² threshold tuned on
-//! the tuning runs).
+//! `ekf_restart`: the EKF from the centre of the state box, checked against the map at every sample
+//! from the map's first estimate on and restarted from it as `ekf_map` starts when the two disagree
+//! (a χ² threshold tuned on the tuning runs).
 
 pub mod c;
 pub mod cost;

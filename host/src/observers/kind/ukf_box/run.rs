@@ -13,7 +13,7 @@
 
 use crate::data::{DataSet, Rows, Run};
 use crate::observers::kind::ukf_box::program::unscented_code;
-use crate::observers::lost::Track;
+use crate::observers::lost::{Track, Tracker};
 use crate::plant::kalman::{EkfConstants, FilterCode};
 use crate::plant::ModelCode;
 use crate::spec::Design;
@@ -30,23 +30,16 @@ pub fn estimate_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], constants
 /// [`estimate_run`], with the restarts on the run.
 pub fn track_run(code: &ModelCode, filter: &FilterCode, x0: &[f64], constants: &EkfConstants, run: &Run) -> Track {
     let mut filter = ekf::BoxStep::<f32>::new(filter, x0, constants, code);
-    let mut estimates = Rows::new(code.dimensions.targets);
-    let nan = vec![f64::NAN; code.dimensions.targets];
-    let mut latest = nan.clone();
+    let mut track = Tracker::new(code.dimensions.targets);
     for (y, u) in run.measurements.iter().zip(run.inputs.iter()) {
         let before = filter.restarts();
         match filter.step(y, u) {
-            Some(targets) => latest = targets.into_iter().map(f64::from).collect(),
-            // A restart keeps the latest estimate, as the chip's `estimate()` does; a refusal is NaN.
-            None if filter.restarts() > before => {}
-            None => latest.clone_from(&nan),
+            Some(targets) => track.estimate(targets.into_iter().map(f64::from)),
+            None if filter.restarts() > before => track.restarted(),
+            None => track.refused(),
         }
-        estimates.push(&latest);
     }
-    Track {
-        restarts: filter.restarts(),
-        rows: estimates,
-    }
+    track.finish()
 }
 
 /// The UKF's estimates of every run of `data` with `constants`, started at `x0` (both in the model's
