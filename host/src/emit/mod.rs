@@ -143,13 +143,13 @@ impl WatchLiterals {
         outputs: usize,
         print: impl Fn(&str, f64) -> Result<String, EmitError>,
     ) -> Result<Option<Self>, EmitError> {
-        let Some((gain, limit)) = watch.constants(outputs) else {
+        let Some(w) = watch.constants(outputs) else {
             return Ok(None);
         };
         Ok(Some(WatchLiterals {
-            start: print("the watch's start", outputs as f64)?,
-            gain: print("the watch's gain", gain)?,
-            limit: print("the watch's limit", limit)?,
+            start: print("the watch's start", w.start)?,
+            gain: print("the watch's gain", w.gain)?,
+            limit: print("the watch's limit", w.limit)?,
         }))
     }
 }

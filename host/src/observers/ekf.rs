@@ -178,8 +178,8 @@ fn run_sized<const NX: usize, const NY: usize>(
         std::array::from_fn(|i| code.bounds[i].lower()),
         std::array::from_fn(|i| code.bounds[i].upper()),
     );
-    if let Some((gain, limit)) = constants.watch.constants(NY) {
-        filter = filter.with_watch(gain, limit);
+    if let Some(w) = constants.watch.constants(NY) {
+        filter = filter.with_watch(w.gain, w.limit);
     }
     let mut track = Tracker::new(code.dimensions.targets);
     let mut scratch = Vec::new();

@@ -100,11 +100,12 @@ macro_rules! check_mhe {
                     iterations: constants.iterations,
                     damping: constants.damping as f32,
                     watch: constants
-                        .watch_constants(d::HORIZON, d::OUTPUTS)
-                        .map(|(start, gain, limit)| firmware::emitted::mhe::Watch {
-                            start: start as f32,
-                            gain: gain as f32,
-                            limit: limit as f32,
+                        .watch
+                        .constants(d::HORIZON * d::OUTPUTS)
+                        .map(|w| firmware::emitted::mhe::Watch {
+                            start: w.start as f32,
+                            gain: w.gain as f32,
+                            limit: w.limit as f32,
                         }),
                 };
                 SETTINGS.get_or_init(|| (settings, constants.h as f32));

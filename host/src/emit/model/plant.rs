@@ -94,10 +94,10 @@ pub(super) fn model_and_ekf(
             r: &vector("EKF R", &ekf.r)?,
             bounds: &bounds_call(&code.bounds)?,
             watch: &match ekf.watch.constants(code.dimensions.outputs) {
-                Some((gain, limit)) => format!(
+                Some(w) => format!(
                     "\n    .with_watch({}, {})",
-                    literal("the watch's gain", gain)?,
-                    literal("the watch's limit", limit)?
+                    literal("the watch's gain", w.gain)?,
+                    literal("the watch's limit", w.limit)?
                 ),
                 None => String::new(),
             },

@@ -128,9 +128,7 @@ impl<T: firmware::Scalar> Watcher<T> {
     pub(crate) fn new(watch: &Watch, outputs: usize) -> Self {
         Watcher {
             start: literal(outputs as f64),
-            constants: watch
-                .constants(outputs)
-                .map(|(gain, limit)| (literal(gain), literal(limit))),
+            constants: watch.constants(outputs).map(|w| (literal(w.gain), literal(w.limit))),
         }
     }
 

@@ -19,12 +19,16 @@ impl Watch {
         threshold: f64::INFINITY,
     };
 
-    /// The gain `1 / W` and the limit `τ m` of a filter with `outputs` outputs; `None` where the
-    /// filter is not watched (`τ = ∞`: the emitted filter has no watch).
-    pub fn constants(&self, outputs: usize) -> Option<(f64, f64)> {
-        self.threshold
-            .is_finite()
-            .then(|| (1.0 / self.window as f64, self.threshold * outputs as f64))
+    /// The firmware's constants of a watch whose quantity has mean `m` when the model is right (a
+    /// filter's NIS: its outputs; the moving-horizon estimate's window cost: `N` times its outputs):
+    /// the start `m`, the gain `1 / W` and the limit `τ m`; `None` where it is not watched (`τ = ∞`:
+    /// the emitted code has no watch). Every emitter and the host's runs read them here.
+    pub fn constants(&self, m: usize) -> Option<firmware::watch::Watch<f64>> {
+        self.threshold.is_finite().then(|| firmware::watch::Watch {
+            start: m as f64,
+            gain: 1.0 / self.window as f64,
+            limit: self.threshold * m as f64,
+        })
     }
 }
 
@@ -65,7 +69,14 @@ mod tests {
             window: 10,
             threshold: 16.0,
         };
-        assert_eq!(watched.constants(2), Some((0.1, 32.0)));
+        assert_eq!(
+            watched.constants(2),
+            Some(firmware::watch::Watch {
+                start: 2.0,
+                gain: 0.1,
+                limit: 32.0
+            })
+        );
         let back: Watch = serde_json::from_str(&serde_json::to_string(&watched).unwrap()).unwrap();
         assert_eq!(back, watched);
     }

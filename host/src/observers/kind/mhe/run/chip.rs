@@ -48,15 +48,6 @@ pub struct ChipConstants {
     pub watch: Watch,
 }
 
-impl ChipConstants {
-    /// The watch's constants for windows of `horizon` samples and `outputs` outputs (the cost's mean
-    /// is `N m`): its start, gain and limit; `None` where not watched.
-    pub fn watch_constants(&self, horizon: usize, outputs: usize) -> Option<(f64, f64, f64)> {
-        let mean = (horizon * outputs) as f64;
-        (self.watch.constants(horizon * outputs)).map(|(gain, limit)| (mean, gain, limit))
-    }
-}
-
 /// The chip estimator as `gen` tuned it (the `mhe` kind, [`crate::observers::kind`]).
 #[derive(Clone, Debug)]
 pub struct ChipTuned {
@@ -180,12 +171,11 @@ impl<'a, T: firmware::Scalar + firmware::emitted::Maths, const NX: usize, const 
                 start: array(&constants.start),
                 iterations: constants.iterations,
                 damping: literal(constants.damping),
-                watch: (constants.watch_constants(horizon, NY)).map(|(start, gain, limit)| {
-                    firmware::emitted::mhe::Watch {
-                        start: literal(start),
-                        gain: literal(gain),
-                        limit: literal(limit),
-                    }
+                // The window cost's mean is `N m`.
+                watch: (constants.watch.constants(horizon * NY)).map(|w| firmware::emitted::mhe::Watch {
+                    start: literal(w.start),
+                    gain: literal(w.gain),
+                    limit: literal(w.limit),
                 }),
             },
             stored: std::collections::VecDeque::with_capacity(horizon + 1),
