@@ -227,15 +227,21 @@ impl LostRuns {
     /// gives them, with their counts: validation, then the scenario's draws, the mismatch runs and the
     /// long runs (the tuning runs are where constants were chosen, not where a kind is judged).
     pub fn judged(&self) -> Vec<(&'static str, Lost)> {
+        self.judged_sets()
+            .into_iter()
+            .filter_map(|(set, lost)| lost.filter(|l| l.beyond_floor() > 0).map(|l| (set, l)))
+            .collect()
+    }
+
+    /// The sets a kind is judged on, by the names the report gives them, in [`Self::judged`]'s order:
+    /// `None` where the observer is not run on the set.
+    pub fn judged_sets(&self) -> [(&'static str, Option<Lost>); 4] {
         [
             ("validation", Some(self.validation)),
             ("scenario draws", self.scenario_draws),
             ("mismatch", self.mismatch),
             ("long", self.long),
         ]
-        .into_iter()
-        .filter_map(|(set, lost)| lost.filter(|l| l.beyond_floor() > 0).map(|l| (set, l)))
-        .collect()
     }
 }
 

@@ -137,6 +137,10 @@ pub enum Gate {
         runs: usize,
         /// Whether it is `observer()`.
         chosen: bool,
+        /// For `observer()`, of the other kinds judged on the set, those that lost none of its runs
+        /// (beyond the floor's): what its fix names; `None` for another kind, or where no other kind
+        /// is judged on the set.
+        lost_none: Option<Vec<&'static str>>,
     },
     /// See the module docs.
     CoarseChipModel {
@@ -520,7 +524,8 @@ mod tests {
                 lost: 1,
                 floor_lost: 2,
                 runs: 64,
-                chosen: false
+                chosen: false,
+                lost_none: None
             }
         ));
         assert!(matches!(
@@ -543,6 +548,42 @@ mod tests {
         let gates = check(&design(), &clean_result(), &comparison);
         assert!(gates.iter().all(Gate::strict), "observer()'s lost runs fail --strict");
         assert!(gates[0].to_string().starts_with("`observer()`, "), "{}", gates[0]);
+        // Its fix names the other kinds that lost none of the set's runs: the map, on validation; on
+        // the long runs, where the map is not judged here, none is named.
+        let fix = "; of the other kinds, `map` lost none of them (`[observer] kind`)";
+        assert!(gates[0].to_string().ends_with(fix), "{}", gates[0]);
+        assert!(
+            gates[1].to_string().ends_with("(the report's table of lost runs)"),
+            "{}",
+            gates[1]
+        );
+        // When the map loses a validation run too, no kind is offered, and the sentence says so.
+        comparison.observers[0].lost.validation = Lost {
+            lost: 1,
+            runs: 64,
+            ..Lost::default()
+        };
+        let gates = check(&design(), &clean_result(), &comparison);
+        let chosen = gates
+            .iter()
+            .find(|g| {
+                matches!(
+                    g,
+                    Gate::LostRuns {
+                        chosen: true,
+                        set: "validation",
+                        ..
+                    }
+                )
+            })
+            .expect("observer()'s validation gate");
+        assert!(
+            chosen.to_string().ends_with(
+                "; every other kind judged on them lost some of them too (the floor's row in that table says how many \
+                 the best estimate of the model lost)"
+            ),
+            "{chosen}"
+        );
     }
 
     #[test]

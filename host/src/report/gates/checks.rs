@@ -2,6 +2,7 @@
 //! (see the parent module's list).
 
 use super::{Gate, OUTSIDE_FRACTION};
+use crate::observers::lost::Lost;
 use crate::observers::{kind, Comparison};
 use crate::spec::Design;
 
@@ -37,9 +38,26 @@ pub fn drifts(design: &Design, comparison: &Comparison) -> Vec<Gate> {
     gates
 }
 
-/// Every observer's lost runs on the sets it is judged on ([`Gate::LostRuns`]).
+/// Every observer's lost runs on the sets it is judged on ([`Gate::LostRuns`]), with, for
+/// `observer()`'s, the other kinds that lost none of that set's runs.
 pub fn lost_runs(comparison: &Comparison) -> Vec<Gate> {
     let chosen = kind::of(comparison.chosen.0).kind.name();
+    // The other kinds judged on `set`, and of those the ones that lost none of its runs.
+    let lost_none = |set: &str| -> Option<Vec<&'static str>> {
+        let judged: Vec<(&'static str, Lost)> = (comparison.observers.iter())
+            .filter(|o| o.kind != chosen)
+            .filter_map(|o| {
+                let (_, lost) = o.lost.judged_sets().into_iter().find(|(s, _)| *s == set)?;
+                Some((o.kind, lost?))
+            })
+            .collect();
+        (!judged.is_empty()).then(|| {
+            (judged.into_iter())
+                .filter(|(_, l)| l.beyond_floor() == 0)
+                .map(|(kind, _)| kind)
+                .collect()
+        })
+    };
     comparison
         .observers
         .iter()
@@ -51,6 +69,7 @@ pub fn lost_runs(comparison: &Comparison) -> Vec<Gate> {
                 floor_lost: l.floor_lost,
                 runs: l.runs,
                 chosen: o.kind == chosen,
+                lost_none: if o.kind == chosen { lost_none(set) } else { None },
             })
         })
         .collect()

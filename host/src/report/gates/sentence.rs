@@ -99,12 +99,23 @@ impl fmt::Display for Gate {
                 floor_lost,
                 runs,
                 chosen,
+                lost_none,
             } => {
                 let what = kind::named(name).map_or("the observer", |k| k.what);
                 let who = if *chosen {
                     format!("`observer()`, {what} (`{name}`),")
                 } else {
                     format!("{what} (`{name}`)")
+                };
+                let fix = match lost_none.as_deref() {
+                    None => String::new(),
+                    Some([]) => "; every other kind judged on them lost some of them too (the floor's row in that \
+                                 table says how many the best estimate of the model lost)"
+                        .to_owned(),
+                    Some(kinds) => format!(
+                        "; of the other kinds, {} lost none of them (`[observer] kind`)",
+                        kinds.iter().map(|k| format!("`{k}`")).collect::<Vec<_>>().join(", ")
+                    ),
                 };
                 let besides = match floor_lost {
                     0 => String::new(),
@@ -115,11 +126,7 @@ impl fmt::Display for Gate {
                     "{who} lost {lost} of {runs} {set} runs{besides}: at their end its RMSE on some target exceeded {} times the \
                      target's spread (the best constant estimate's), or its estimate was not finite (the report's table of lost runs){}",
                     crate::observers::lost::LOST_FRACTION,
-                    if *chosen {
-                        "; choose a kind that lost none (`[observer] kind`)"
-                    } else {
-                        ""
-                    }
+                    fix
                 )
             }
             Gate::CoarseChipModel {
