@@ -13,8 +13,33 @@ use super::unavailable::{failed, require, require_tools, Unavailable};
 pub const BOARD_FLAGS: [&str; 4] = ["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard", "-mfpu=fpv4-sp-d16"];
 
 /// Builds `sources` (each compiled with `include` on the include path and `flags`, then linked with the
-/// board's start-up code) into `elf` for the emulated board and runs it: what it printed, and what
-/// each measured call executed.
+/// board's start-up code; an object, `.o`, is linked as it is) into `elf` for the emulated board and
+/// runs it: what it printed, and what each measured call executed.
+/// Compiles the C `source` (with `include` on the include path and `flags`) into `object` for the
+/// emulated board by `arm-none-eabi-gcc`.
+pub fn compile_for_board(source: &Path, include: &Path, flags: &[&str], object: &Path) -> Result<(), Unavailable> {
+    require("arm-none-eabi-gcc", "gcc-arm-none-eabi")?;
+    let built = Command::new("arm-none-eabi-gcc")
+        .args(BOARD_FLAGS)
+        .args(flags)
+        .arg("-I")
+        .arg(include)
+        .arg("-c")
+        .arg(source)
+        .arg("-o")
+        .arg(object)
+        .output()
+        .map_err(|e| failed(format!("arm-none-eabi-gcc: {e}")))?;
+    if built.status.success() {
+        Ok(())
+    } else {
+        Err(failed(format!(
+            "arm-none-eabi-gcc: {}",
+            String::from_utf8_lossy(&built.stderr)
+        )))
+    }
+}
+
 pub fn run_c_counted(
     sources: &[&Path],
     include: &Path,
@@ -38,16 +63,12 @@ pub fn run_c_counted(
     };
     let mut objects = Vec::new();
     for (i, source) in sources.iter().enumerate() {
+        if source.extension().is_some_and(|e| e == "o") {
+            objects.push(source.to_path_buf());
+            continue;
+        }
         let object = elf.with_extension(format!("{i}.o"));
-        gcc(Command::new("arm-none-eabi-gcc")
-            .args(BOARD_FLAGS)
-            .args(flags)
-            .arg("-I")
-            .arg(include)
-            .arg("-c")
-            .arg(source)
-            .arg("-o")
-            .arg(&object))?;
+        compile_for_board(source, include, flags, &object)?;
         objects.push(object);
     }
     // The start-up code is the board's, not the code under test: not held to `flags`. With `-flto`

@@ -3,9 +3,11 @@
 //! ([`rust_lines`]), and the run on the emulated board ([`run_c_observer`]) with its instructions per
 //! sample, flash, RAM and stack.
 
-use std::path::Path;
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 
-use super::c_build::run_c_counted;
+use super::c_build::{compile_for_board, run_c_counted};
 use super::elf::symbol_sizes;
 use super::unavailable::{failed, Unavailable};
 
@@ -242,6 +244,20 @@ pub struct CBoardRun {
     pub stack_bytes: u64,
 }
 
+/// The board object of `<c>/<name>.c` compiled with `flags` into `dir`, once per design and flag set
+/// for every kind's program (a design's C holds every kind: compiling it per kind took a fifth of the
+/// board check); the board checks' workers share it, so one compiles while the other waits.
+fn design_object(name: &str, c: &Path, dir: &Path, flags: &[&str], lto: bool) -> Result<PathBuf, Unavailable> {
+    static COMPILED: Mutex<BTreeSet<PathBuf>> = Mutex::new(BTreeSet::new());
+    let object = dir.join(format!("{name}{}.board.o", if lto { ".lto" } else { "" }));
+    let mut compiled = COMPILED.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    if !(compiled.contains(&object) && object.exists()) {
+        compile_for_board(&c.join(format!("{name}.c")), c, flags, &object)?;
+        compiled.insert(object.clone());
+    }
+    Ok(object)
+}
+
 /// Builds `<c>/<name>.c` with `harness` (the text of [`c_harness`]) in `dir` by `arm-none-eabi-gcc
 /// -Os` under [`STRICT_C_FLAGS`] for the Cortex-M4F (with `lto`, also `-flto`: the observer's
 /// functions then inlined into the caller's), and runs it on the emulated board.
@@ -255,12 +271,12 @@ pub fn run_c_observer(
 ) -> Result<CBoardRun, Unavailable> {
     let harness_path = dir.join(format!("{name}_{kind}_board.c"));
     std::fs::write(&harness_path, harness).map_err(|e| failed(format!("{}: {e}", harness_path.display())))?;
-    let observer = c.join(format!("{name}.c"));
     let mut flags: Vec<&str> = STRICT_C_FLAGS.to_vec();
     flags.extend(["-Os", "-ffunction-sections", "-fdata-sections"]);
     if lto {
         flags.push("-flto");
     }
+    let observer = design_object(name, c, dir, &flags, lto)?;
     let elf = dir.join(format!("{name}_{kind}.elf"));
     let (text, counts) = run_c_counted(&[observer.as_path(), harness_path.as_path()], c, &flags, &elf)?;
     let number = |key: &str| -> Result<u64, Unavailable> {
@@ -268,9 +284,8 @@ pub fn run_c_observer(
             .find_map(|l| l.strip_prefix(key)?.trim().parse().ok())
             .ok_or_else(|| failed(format!("{name}_{kind}: no `{key}` line in:\n{text}")))
     };
-    // The observer's object is the first compiled (`run_c_counted` names it `<elf>.0.o`): its symbols
-    // that the linker kept are the C observer's flash.
-    let ours = symbol_sizes(&elf.with_extension("0.o"))?;
+    // The observer's object's symbols that the linker kept are the C observer's flash.
+    let ours = symbol_sizes(&observer)?;
     let kept = symbol_sizes(&elf)?;
     let flash_bytes = kept
         .iter()

@@ -31,10 +31,38 @@ fn the_comparison_bites() {
     }
 }
 
-/// Compiles `case`'s harness with its design's C in `c` by `compiler` at `-O2`, and runs it; `None`
-/// when the compiler is not installed.
+/// The object of `name`'s C in `c`, compiled by `compiler` at `-O2` under the strict flags into
+/// `dir` once and linked with each of its kinds' harnesses after (a design's C holds every kind:
+/// compiling it per kind took most of this check's time); `None` when the compiler is not installed.
+fn design_object(compiler: &str, dir: &Path, c: &Path, name: &str) -> Option<PathBuf> {
+    let object = dir.join(format!("{name}-{compiler}.o"));
+    if object.exists() {
+        return Some(object);
+    }
+    let built = Command::new(compiler)
+        .args(STRICT_C_FLAGS)
+        .arg("-O2")
+        .arg("-I")
+        .arg(c)
+        .arg("-c")
+        .arg(c.join(format!("{name}.c")))
+        .arg("-o")
+        .arg(&object)
+        .output()
+        .ok()?;
+    assert!(
+        built.status.success(),
+        "{compiler} {name}: {}",
+        String::from_utf8_lossy(&built.stderr)
+    );
+    Some(object)
+}
+
+/// Compiles `case`'s harness by `compiler` at `-O2`, links it with its design's C in `c`
+/// ([`design_object`]) and runs it; `None` when the compiler is not installed.
 fn compile_and_run(compiler: &str, dir: &Path, c: &Path, case: &Case) -> Option<Vec<String>> {
     let (name, kind) = (case.name, case.kind);
+    let object = design_object(compiler, dir, c, name)?;
     let source = dir.join(format!("{name}_{kind}_harness.c"));
     std::fs::write(&source, case.harness()).unwrap();
     let exe = dir.join(format!("{name}_{kind}-{compiler}"));
@@ -43,7 +71,7 @@ fn compile_and_run(compiler: &str, dir: &Path, c: &Path, case: &Case) -> Option<
         .arg("-O2")
         .arg("-I")
         .arg(c)
-        .arg(c.join(format!("{name}.c")))
+        .arg(&object)
         .arg(&source)
         .arg("-lm")
         .arg("-o")
