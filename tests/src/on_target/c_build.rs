@@ -12,22 +12,9 @@ use super::unavailable::{failed, require, require_tools, Unavailable};
 /// The Cortex-M4F with its single-precision FPU, as the Rust target `thumbv7em-none-eabihf`.
 pub const BOARD_FLAGS: [&str; 4] = ["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard", "-mfpu=fpv4-sp-d16"];
 
-/// Builds `sources` (each compiled with `include` on the include path and `flags`, then linked with the
-/// board's start-up code; an object, `.o`, is linked as it is) into `elf` for the emulated board and
-/// runs it: what it printed, and what each measured call executed.
-/// Compiles the C `source` (with `include` on the include path and `flags`) into `object` for the
-/// emulated board by `arm-none-eabi-gcc`.
-pub fn compile_for_board(source: &Path, include: &Path, flags: &[&str], object: &Path) -> Result<(), Unavailable> {
-    require("arm-none-eabi-gcc", "gcc-arm-none-eabi")?;
-    let built = Command::new("arm-none-eabi-gcc")
-        .args(BOARD_FLAGS)
-        .args(flags)
-        .arg("-I")
-        .arg(include)
-        .arg("-c")
-        .arg(source)
-        .arg("-o")
-        .arg(object)
+/// Runs `arm-none-eabi-gcc` with `arguments`; its error output when it fails.
+fn gcc(arguments: &mut Command) -> Result<(), Unavailable> {
+    let built = arguments
         .output()
         .map_err(|e| failed(format!("arm-none-eabi-gcc: {e}")))?;
     if built.status.success() {
@@ -40,6 +27,24 @@ pub fn compile_for_board(source: &Path, include: &Path, flags: &[&str], object: 
     }
 }
 
+/// Compiles the C `source` (with `include` on the include path and `flags`) into `object` for the
+/// emulated board by `arm-none-eabi-gcc`.
+pub fn compile_for_board(source: &Path, include: &Path, flags: &[&str], object: &Path) -> Result<(), Unavailable> {
+    require("arm-none-eabi-gcc", "gcc-arm-none-eabi")?;
+    gcc(Command::new("arm-none-eabi-gcc")
+        .args(BOARD_FLAGS)
+        .args(flags)
+        .arg("-I")
+        .arg(include)
+        .arg("-c")
+        .arg(source)
+        .arg("-o")
+        .arg(object))
+}
+
+/// Builds `sources` (each compiled with `include` on the include path and `flags`, then linked with the
+/// board's start-up code; an object, `.o`, is linked as it is) into `elf` for the emulated board and
+/// runs it: what it printed, and what each measured call executed.
 pub fn run_c_counted(
     sources: &[&Path],
     include: &Path,
@@ -48,19 +53,6 @@ pub fn run_c_counted(
 ) -> Result<(String, Vec<Count>), Unavailable> {
     require_tools()?;
     require("arm-none-eabi-gcc", "gcc-arm-none-eabi")?;
-    let gcc = |arguments: &mut Command| -> Result<(), Unavailable> {
-        let built = arguments
-            .output()
-            .map_err(|e| failed(format!("arm-none-eabi-gcc: {e}")))?;
-        if built.status.success() {
-            Ok(())
-        } else {
-            Err(failed(format!(
-                "arm-none-eabi-gcc: {}",
-                String::from_utf8_lossy(&built.stderr)
-            )))
-        }
-    };
     let mut objects = Vec::new();
     for (i, source) in sources.iter().enumerate() {
         if source.extension().is_some_and(|e| e == "o") {
