@@ -247,8 +247,9 @@ pub struct CBoardRun {
 /// The board object of `<c>/<name>.c` compiled with `flags` into `dir`, once per design and flag set
 /// for every kind's program (a design's C holds every kind: compiling it per kind took a fifth of the
 /// board check); the board checks' workers share it, so one compiles while the other waits.
-fn design_object(name: &str, c: &Path, dir: &Path, flags: &[&str], lto: bool) -> Result<PathBuf, Unavailable> {
+fn design_object(name: &str, c: &Path, dir: &Path, flags: &[&str]) -> Result<PathBuf, Unavailable> {
     static COMPILED: Mutex<BTreeSet<PathBuf>> = Mutex::new(BTreeSet::new());
+    let lto = flags.contains(&"-flto");
     let object = dir.join(format!("{name}{}.board.o", if lto { ".lto" } else { "" }));
     let mut compiled = COMPILED.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
     if !(compiled.contains(&object) && object.exists()) {
@@ -276,7 +277,7 @@ pub fn run_c_observer(
     if lto {
         flags.push("-flto");
     }
-    let observer = design_object(name, c, dir, &flags, lto)?;
+    let observer = design_object(name, c, dir, &flags)?;
     let elf = dir.join(format!("{name}_{kind}.elf"));
     let (text, counts) = run_c_counted(&[observer.as_path(), harness_path.as_path()], c, &flags, &elf)?;
     let number = |key: &str| -> Result<u64, Unavailable> {
