@@ -121,6 +121,32 @@ pub fn build(design: &Design) -> Arc<DesignResult> {
     cell.get_or_init(|| Arc::new(build_fresh(design))).clone()
 }
 
+/// `gen`'s whole job on the spec at `path` (the fit, every kind tuned and judged, the references and
+/// the floor, the emitted Rust and C), in memory, once per spec and test binary: a comparison costs
+/// more than the fit, and `generated_is_current` (every shipped design), the gates, the tuning and
+/// the saved-tables tests read the same ones. The committed `generated/` files, written by another
+/// process, are what shows that the job is deterministic.
+pub fn emitted(path: &Path) -> Arc<host::generate::Emitted> {
+    type Cell = Arc<OnceLock<Arc<host::generate::Emitted>>>;
+    static EMITTED: OnceLock<Mutex<HashMap<PathBuf, Cell>>> = OnceLock::new();
+    let cell: Cell = {
+        let mut emitted = EMITTED
+            .get_or_init(Default::default)
+            .lock()
+            .expect("no test panicked holding it");
+        let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+        emitted.entry(key).or_default().clone()
+    };
+    cell.get_or_init(|| {
+        let design = spec::load(path).expect("valid spec");
+        Arc::new(
+            host::generate::emit_design(design, path, None, &indicatif::ProgressBar::hidden())
+                .expect("the design generates"),
+        )
+    })
+    .clone()
+}
+
 /// Builds a design without the cache (to show that a build is deterministic).
 pub fn build_fresh(design: &Design) -> DesignResult {
     host::generate::simulate_and_fit(design, &indicatif::ProgressBar::hidden()).expect("the design builds")

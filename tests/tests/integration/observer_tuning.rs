@@ -6,7 +6,11 @@
 use host::observers::references::Cost;
 use host::observers::{compare, Comparison};
 use host::plant::ModelCode;
-use integration_tests::{build, load_relative};
+
+/// Example 1 as `gen` builds it (fitted, its observers compared), once per test binary.
+fn example_1() -> std::sync::Arc<host::generate::Emitted> {
+    integration_tests::emitted(&integration_tests::workspace_root().join("host/specs/vanderpol.toml"))
+}
 
 /// Every measurement, state and target of `runs` set to NaN.
 fn poison(runs: &mut [host::data::Run]) {
@@ -57,12 +61,11 @@ fn chosen(c: &Comparison) -> String {
 
 #[test]
 fn tuning_never_reads_the_validation_runs_or_the_scenario() {
-    let design = load_relative("host/specs/vanderpol.toml");
-    let result = build(&design);
-    let code = ModelCode::new(&design).expect("Example 1's model is emittable");
-    let clean = compare(&design, &result, &code, &indicatif::ProgressBar::hidden()).expect("Example 1 compares");
+    let emitted = example_1();
+    let (design, result, clean) = (&emitted.design, &emitted.result, &emitted.comparison);
+    let code = ModelCode::new(design).expect("Example 1's model is emittable");
 
-    let mut poisoned = (*result).clone();
+    let mut poisoned = result.clone();
     // Every set but the learning and tuning runs (Example 1 has scenario draws; its parameters are
     // known, so it has no mismatch runs).
     let runs = &mut poisoned.runs;
@@ -74,10 +77,10 @@ fn tuning_never_reads_the_validation_runs_or_the_scenario() {
         target.validation.target_spread = f64::NAN;
         target.validation.map.rmse = f64::NAN;
     }
-    let dirty = compare(&design, &poisoned, &code, &indicatif::ProgressBar::hidden())
+    let dirty = compare(design, &poisoned, &code, &indicatif::ProgressBar::hidden())
         .expect("poisoned validation still compares");
 
-    assert_eq!(chosen(&clean), chosen(&dirty));
+    assert_eq!(chosen(clean), chosen(&dirty));
     // The poison reached what the validation figures read: every kind's validation RMSE is NaN
     // where it was finite, and its tuning RMSE is unchanged.
     for (c, d) in clean.observers.iter().zip(&dirty.observers) {
@@ -129,17 +132,11 @@ fn tuning_never_reads_the_validation_runs_or_the_scenario() {
 
 #[test]
 fn closed_loop_tuning_improves_on_its_start_and_the_ekf_matches_an_expert() {
-    let design = load_relative("host/specs/vanderpol.toml");
-    let result = build(&design);
-    let code = ModelCode::new(&design).expect("Example 1's model is emittable");
-    let comparison = compare(&design, &result, &code, &indicatif::ProgressBar::hidden()).expect("Example 1 compares");
-    ekf_matches_a_grid_tuned_expert(&design, &result, &code, &comparison);
-    the_restarted_ekf_is_its_two_parents_and_beats_the_corrected_map_on_validation(
-        &design,
-        &result,
-        &code,
-        &comparison,
-    );
+    let emitted = example_1();
+    let (design, result, comparison) = (&emitted.design, &emitted.result, &emitted.comparison);
+    let code = ModelCode::new(design).expect("Example 1's model is emittable");
+    ekf_matches_a_grid_tuned_expert(design, result, &code, comparison);
+    the_restarted_ekf_is_its_two_parents_and_beats_the_corrected_map_on_validation(design, result, &code, comparison);
     let tuned = comparison.tuned.corrected().expect("Example 1 has a corrected map");
     // Measured: 0.0620 at the best start, 0.0527 tuned. A tuning that did not move would leave them
     // equal; 5 % is far below what Nelder–Mead gains here and far above rounding.

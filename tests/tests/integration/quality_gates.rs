@@ -7,13 +7,14 @@ use host::plant::ModelCode;
 use host::report::gates::{check, Gate};
 use integration_tests::{build, load_relative};
 
-/// Example 1, built once per test binary, and its observers compared.
+/// Example 1 as `gen` builds it (fitted, its observers compared), once per test binary.
 fn example_1() -> (host::spec::Design, host::fit::DesignResult, host::observers::Comparison) {
-    let design = load_relative("host/specs/vanderpol.toml");
-    let result = (*build(&design)).clone();
-    let code = ModelCode::new(&design).expect("Example 1's model is emittable");
-    let comparison = compare(&design, &result, &code, &indicatif::ProgressBar::hidden()).expect("Example 1 compares");
-    (design, result, comparison)
+    let emitted = integration_tests::emitted(&integration_tests::workspace_root().join("host/specs/vanderpol.toml"));
+    (
+        emitted.design.clone(),
+        emitted.result.clone(),
+        emitted.comparison.clone(),
+    )
 }
 
 #[test]
