@@ -147,6 +147,11 @@ pub fn emitted(path: &Path) -> Arc<host::generate::Emitted> {
     .clone()
 }
 
+/// [`emitted`] of the shipped spec `name` (`host/specs/<name>.toml`).
+pub fn shipped(name: &str) -> Arc<host::generate::Emitted> {
+    emitted(&specs_folder().join(format!("{name}.toml")))
+}
+
 /// Builds a design without the cache (to show that a build is deterministic).
 pub fn build_fresh(design: &Design) -> DesignResult {
     host::generate::simulate_and_fit(design, &indicatif::ProgressBar::hidden()).expect("the design builds")

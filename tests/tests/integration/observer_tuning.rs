@@ -7,11 +7,6 @@ use host::observers::references::Cost;
 use host::observers::{compare, Comparison};
 use host::plant::ModelCode;
 
-/// Example 1 as `gen` builds it (fitted, its observers compared), once per test binary.
-fn example_1() -> std::sync::Arc<host::generate::Emitted> {
-    integration_tests::emitted(&integration_tests::workspace_root().join("host/specs/vanderpol.toml"))
-}
-
 /// Every measurement, state and target of `runs` set to NaN.
 fn poison(runs: &mut [host::data::Run]) {
     for run in runs {
@@ -61,7 +56,7 @@ fn chosen(c: &Comparison) -> String {
 
 #[test]
 fn tuning_never_reads_the_validation_runs_or_the_scenario() {
-    let emitted = example_1();
+    let emitted = integration_tests::shipped("vanderpol");
     let (design, result, clean) = (&emitted.design, &emitted.result, &emitted.comparison);
     let code = ModelCode::new(design).expect("Example 1's model is emittable");
 
@@ -132,7 +127,7 @@ fn tuning_never_reads_the_validation_runs_or_the_scenario() {
 
 #[test]
 fn closed_loop_tuning_improves_on_its_start_and_the_ekf_matches_an_expert() {
-    let emitted = example_1();
+    let emitted = integration_tests::shipped("vanderpol");
     let (design, result, comparison) = (&emitted.design, &emitted.result, &emitted.comparison);
     let code = ModelCode::new(design).expect("Example 1's model is emittable");
     ekf_matches_a_grid_tuned_expert(design, result, &code, comparison);

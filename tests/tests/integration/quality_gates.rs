@@ -9,7 +9,7 @@ use integration_tests::{build, load_relative};
 
 /// Example 1 as `gen` builds it (fitted, its observers compared), once per test binary.
 fn example_1() -> (host::spec::Design, host::fit::DesignResult, host::observers::Comparison) {
-    let emitted = integration_tests::emitted(&integration_tests::workspace_root().join("host/specs/vanderpol.toml"));
+    let emitted = integration_tests::shipped("vanderpol");
     (
         emitted.design.clone(),
         emitted.result.clone(),
