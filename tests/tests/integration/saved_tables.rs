@@ -45,7 +45,7 @@ fn saved() -> &'static Saved {
         let root = integration_tests::workspace_root();
         let spec = root.join("host/specs/vanderpol.toml");
         let design = host::spec::load(&spec).unwrap();
-        let emitted = integration_tests::emitted(&spec);
+        let emitted = integration_tests::shipped("vanderpol");
         let in_memory = Tables::of(&emitted.design, &emitted.result, &emitted.comparison, &emitted.source);
         let scratch = std::env::temp_dir().join(format!("saved-tables-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&scratch);
