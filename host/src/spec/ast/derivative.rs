@@ -170,7 +170,9 @@ fn call_node(function: &'static str, a: Node) -> Node {
 
 /// The derivative of `min(a, b)` or `max(a, b)`: that of the operand the operator picks, written
 /// without a comparison node as `(da + db)/2 ± (da - db)/2 · signum(b - a)` (the mean of both where
-/// `a = b`).
+/// `a = b`). Being a blend, it is NaN where the operand not picked has an infinite derivative (`max(1,
+/// sqrt(x))` at `x = 0`); on a declared bound the filters take their Jacobians inside it
+/// (`crate::plant::inside`), and elsewhere `sqrt(max(1, x))` says the same with a finite slope.
 fn select(op: Binary, a: Node, b: Node, da: Node, db: Node) -> Node {
     let half_difference = match op {
         Binary::Min => sub(da.clone(), db.clone()),
