@@ -95,6 +95,7 @@
 
 // The crate doc names the `reference` items without links: a link to an absent item fails `cargo doc`.
 #[cfg(any(test, feature = "reference"))]
+pub mod bank;
 pub mod basis;
 mod bounds;
 mod ekf;

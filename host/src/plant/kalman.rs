@@ -53,8 +53,9 @@ pub struct EkfConstants {
 /// The two programs of one sample.
 #[derive(Clone, Debug)]
 pub struct FilterCode {
-    /// Results: `x̂(k|k)` (states), `x⁺` (states), `P⁺` (upper triangle), the normalised innovation
-    /// squared (`firmware::watch`).
+    /// Results: `x̂(k|k)` (states), `x⁺` (states), `P⁺` (upper triangle), then `scalars` numbers: the
+    /// normalised innovation squared (`firmware::watch`) and, for a bank's member, the root of
+    /// `det S` (`ukf_bank`).
     pub measured: Program,
     /// Results: `x⁺` (states), `P⁺` (upper triangle).
     pub unmeasured: Program,
@@ -64,6 +65,9 @@ pub struct FilterCode {
     pub parameters: Vec<(String, f64)>,
     /// States.
     pub states: usize,
+    /// The numbers the measured program gives after `P⁺`: 1 (the normalised innovation squared), or 2
+    /// (and `√det S`, a bank member's).
+    pub scalars: usize,
 }
 
 /// What one sample gives: the updated estimate (`None` without a measurement), the predicted state
@@ -94,7 +98,7 @@ impl FilterCode {
         scratch: &mut Vec<T>,
     ) -> (Sampled<T>, Option<T>) {
         let program = if y.is_some() { &self.measured } else { &self.unmeasured };
-        let mut results = program.eval_with(&self.parameters, scratch, |leaf| match leaf {
+        let results = program.eval_with(&self.parameters, scratch, |leaf| match leaf {
             Leaf::State(i) => x[i],
             Leaf::Input(i) => u[i],
             Leaf::Covariance(k) => p[k],
@@ -102,11 +106,38 @@ impl FilterCode {
             // Parameters are the program's constants, read before this; a filter reads no map.
             Leaf::Parameter(_) | Leaf::Map(_) | Leaf::Blend(_) => T::literal(f32::NAN, f64::NAN),
         });
+        let (sampled, scalars) = self.split(results, y.is_some());
+        (sampled, scalars.map(|s| s[0]))
+    }
+
+    /// [`FilterCode::run`], with every number the measured program gives after `P⁺` ([`FilterCode::scalars`])
+    /// when the sample is measured.
+    pub fn run_scored<T: Scalar + Maths>(
+        &self,
+        x: &[T],
+        p: &[T],
+        y: &[T],
+        u: &[T],
+        scratch: &mut Vec<T>,
+    ) -> (Sampled<T>, Vec<T>) {
+        let results = self.measured.eval_with(&self.parameters, scratch, |leaf| match leaf {
+            Leaf::State(i) => x[i],
+            Leaf::Input(i) => u[i],
+            Leaf::Covariance(k) => p[k],
+            Leaf::Measurement(i) => y[i],
+            Leaf::Parameter(_) | Leaf::Map(_) | Leaf::Blend(_) => T::literal(f32::NAN, f64::NAN),
+        });
+        let (sampled, scalars) = self.split(results, true);
+        (sampled, scalars.unwrap_or_default())
+    }
+
+    /// A program's results as `(x̂(k|k), x⁺, P⁺)` and, measured, the scalars after them.
+    fn split<T>(&self, mut results: Vec<T>, measured: bool) -> (Sampled<T>, Option<Vec<T>>) {
         let n = self.states;
-        let nis = y.and_then(|_| results.pop());
-        let estimate = y.map(|_| results.drain(..n).collect());
+        let scalars = measured.then(|| results.split_off(results.len() - self.scalars));
+        let estimate = measured.then(|| results.drain(..n).collect());
         let covariance = results.split_off(n);
-        ((estimate, results, covariance), nis)
+        ((estimate, results, covariance), scalars)
     }
 }
 
@@ -141,7 +172,7 @@ pub fn filter_code(code: &ModelCode, constants: &EkfConstants) -> FilterCode {
                     nis = b.add(nis, term);
                 }
             }
-            nis
+            vec![nis]
         },
         |b, x, p| predict(b, code, constants, x, p),
     )
@@ -149,12 +180,12 @@ pub fn filter_code(code: &ModelCode, constants: &EkfConstants) -> FilterCode {
 
 /// The two programs of one sample of a filter of `code` (the EKF's here; other filters build theirs): the state and the
 /// covariance's upper triangle read as leaves; with a measurement, `update` (which gives the
-/// normalised innovation squared) and the projection onto the bounds, whose state is the first
-/// result; then `predict`, the projection, `x⁺` and `P⁺`'s upper triangle as results, and with a
-/// measurement the normalised innovation squared last.
+/// normalised innovation squared, and for a bank's member `√det S`) and the projection onto the
+/// bounds, whose state is the first result; then `predict`, the projection, `x⁺` and `P⁺`'s upper
+/// triangle as results, and with a measurement `update`'s numbers last.
 pub(crate) fn filter_programs(
     code: &ModelCode,
-    update: impl Fn(&mut Builder<'_>, &mut Vec<usize>, &mut [Vec<usize>]) -> usize,
+    update: impl Fn(&mut Builder<'_>, &mut Vec<usize>, &mut [Vec<usize>]) -> Vec<usize>,
     predict: impl Fn(&mut Builder<'_>, &mut Vec<usize>, &mut [Vec<usize>]),
 ) -> FilterCode {
     let build = |measured: bool| {
@@ -168,9 +199,9 @@ pub(crate) fn filter_programs(
         let mut p: Vec<Vec<usize>> = (0..nx)
             .map(|r| (0..nx).map(|c| b.leaf(Leaf::Covariance(upper(nx, r, c)))).collect())
             .collect();
-        let mut nis = None;
+        let mut scalars = Vec::new();
         if measured {
-            nis = Some(update(&mut b, &mut x, &mut p));
+            scalars = update(&mut b, &mut x, &mut p);
             b.project(&mut x, &code.bounds);
             for &e in &x {
                 b.result(e);
@@ -186,19 +217,21 @@ pub(crate) fn filter_programs(
                 b.result(entry);
             }
         }
-        if let Some(nis) = nis {
-            b.result(nis);
+        for &scalar in &scalars {
+            b.result(scalar);
         }
         let mut program = b.finish();
         program.prune();
-        program
+        (program, scalars.len())
     };
+    let (measured, scalars) = build(true);
     FilterCode {
-        measured: build(true),
-        unmeasured: build(false),
+        measured,
+        unmeasured: build(false).0,
         targets: code.targets.clone(),
         parameters: code.parameters.clone(),
         states: code.dimensions.states,
+        scalars,
     }
 }
 

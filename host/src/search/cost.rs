@@ -230,6 +230,7 @@ pub(crate) mod tests {
             targets: crate::plant::program::Program::default(),
             parameters: Vec::new(),
             states: 2,
+            scalars: 1,
         };
         // EKF: 46 + 163 = 209; the started one 8 more, 217 (the other kinds: their `cost.rs`).
         close(of_ekf(&filter), 209.0);

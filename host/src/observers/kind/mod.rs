@@ -16,6 +16,7 @@ mod ekf_map;
 pub mod ekf_restart;
 mod map;
 pub mod mhe;
+pub mod ukf_bank;
 pub mod ukf_box;
 
 pub use bench::{map_estimates, Bench};

@@ -27,6 +27,7 @@ mod tests {
             targets: crate::plant::program::Program::default(),
             parameters: Vec::new(),
             states: 2,
+            scalars: 1,
         };
         // The EKF's frame, 46, and the program, 163; the map's 124; the check, 2 × 31.
         close(of_restarted(&filter, 124.0), 209.0 + 124.0 + 62.0);

@@ -28,6 +28,7 @@ mod tests {
             targets: crate::plant::program::Program::default(),
             parameters: Vec::new(),
             states: 2,
+            scalars: 1,
         };
         // The EKF's frame, 46, and the program, 163.
         close(of_ukf(&filter), 209.0);

@@ -82,10 +82,23 @@ pub fn weights(n: usize) -> (f64, f64, f64, f64) {
 /// is stepped by the plant's RK4 in the plant's coordinates (one `exp` and one `ln` per log state and
 /// point, not an `exp` in every model evaluation) and read back.
 pub fn unscented_code(code: &ModelCode, constants: &EkfConstants) -> FilterCode {
+    unscented(code, constants, false)
+}
+
+/// [`unscented_code`] for a member of a bank of UKFs (`ukf_bank`): its measured program also gives
+/// `√det S = Π Lᵢᵢ` after the normalised innovation squared, `L` the Cholesky factor of the
+/// innovations' covariance `S`, so that the bank weighs the member by the likelihood of its
+/// innovation, `N(ν; 0, S) ∝ exp(−ε/2) / √det S`.
+pub fn member_code(code: &ModelCode, constants: &EkfConstants) -> FilterCode {
+    unscented(code, constants, true)
+}
+
+/// [`unscented_code`], with `√det S` when `root`.
+fn unscented(code: &ModelCode, constants: &EkfConstants, root: bool) -> FilterCode {
     let log = &code.logarithmic();
     filter_programs(
         log,
-        |b, x, p| update(b, log, &constants.r, x, p),
+        |b, x, p| update(b, log, &constants.r, x, p, root),
         |b, x, p| predict(b, code, log, constants, x, p),
     )
 }
@@ -197,8 +210,16 @@ fn deviations(b: &mut Builder<'_>, values: &[Vec<usize>], m: &[usize]) -> Vec<Ve
         .collect()
 }
 
-/// The measurement update from every output at once.
-fn update(b: &mut Builder<'_>, code: &ModelCode, r: &[f64], x: &mut [usize], p: &mut [Vec<usize>]) -> usize {
+/// The measurement update from every output at once: the normalised innovation squared, and with
+/// `root` the product of the diagonal of `S`'s Cholesky factor after it.
+fn update(
+    b: &mut Builder<'_>,
+    code: &ModelCode,
+    r: &[f64],
+    x: &mut [usize],
+    p: &mut [Vec<usize>],
+    root: bool,
+) -> Vec<usize> {
     let (nx, ny) = (x.len(), code.dimensions.outputs);
     let points = sigma_points(b, code, x, p);
     let outputs: Vec<Vec<usize>> = points
@@ -281,7 +302,12 @@ fn update(b: &mut Builder<'_>, code: &ModelCode, r: &[f64], x: &mut [usize], p: 
             p[col][row] = entry;
         }
     }
-    nis
+    let mut scalars = vec![nis];
+    if root {
+        let product = (1..ny).fold(factor[0][0], |product, i| b.mul(product, factor[i][i]));
+        scalars.push(product);
+    }
+    scalars
 }
 
 /// The prediction: every sigma point (of `log`'s coordinates) through the chip's RK4 substeps of the

@@ -226,3 +226,23 @@ fn in_single_precision_it_follows_the_double_precision_run() {
     assert!(worst < 1e-3, "f32 against f64: {worst:e}");
     println!("largest |f32 − f64| of the state over 100 samples: {worst:e}");
 }
+
+#[test]
+fn a_bank_members_sample_is_the_ukfs_with_the_root_of_det_s() {
+    // Example 1's output y = x1 + x2 from P = [[2, 0.5], [0.5, 1]]: on the sigma points (their spread
+    // is P's, exactly, for a linear output) S = H P Hᵀ + r = 2 + 1 + 1 + 0.2 = 4.2, one output: √det S
+    // = √4.2; the normalised innovation squared is (y − x1 − x2)² / 4.2.
+    let code = example_1();
+    let constants = constants(1);
+    let (ukf, member) = (unscented_code(&code, &constants), member_code(&code, &constants));
+    let (x, p, y) = ([0.5, -0.25], [2.0, 0.5, 1.0], [1.5]);
+    let (sampled, scalars) = member.run_scored(&x, &p, &y, &[], &mut Vec::new());
+    assert_eq!(member.scalars, 2);
+    assert!((scalars[1] - 4.2f64.sqrt()).abs() < 1e-12, "{scalars:?}");
+    assert!((scalars[0] - 1.25f64.powi(2) / 4.2).abs() < 1e-12, "{scalars:?}");
+    // Everything else is the UKF's sample, to the bit.
+    let ((estimate, next, covariance), nis) = ukf.run_watched(&x, &p, Some(&y), &[], &mut Vec::new());
+    assert_eq!(ukf.scalars, 1);
+    assert_eq!((sampled.0, sampled.1, sampled.2), (estimate, next, covariance));
+    assert_eq!(nis, Some(scalars[0]));
+}
