@@ -17,14 +17,12 @@
 //! lower entries would be copies. The filter's constants (`Q`, `R`, the substep `h`) are numbers of
 //! the programs, so the products they take part in fold where they can.
 
-use firmware::emitted::Maths;
-use firmware::Scalar;
-
 use crate::spec::ast::Binary;
 
 use super::program::{Builder, Leaf, Names, Program};
 use super::{Covariance, ModelCode};
 
+mod sample;
 mod watch;
 pub use watch::Watch;
 
@@ -73,73 +71,6 @@ pub struct FilterCode {
 /// What one sample gives: the updated estimate (`None` without a measurement), the predicted state
 /// and the predicted covariance's upper triangle.
 pub type Sampled<T> = (Option<Vec<T>>, Vec<T>, Vec<T>);
-
-impl FilterCode {
-    /// Runs one sample from `x` and `p` (upper triangle) in `T` exactly as the emitted code does:
-    /// with `y`, the update and the prediction; without, the prediction alone.
-    pub fn run<T: Scalar + Maths>(
-        &self,
-        x: &[T],
-        p: &[T],
-        y: Option<&[T]>,
-        u: &[T],
-        scratch: &mut Vec<T>,
-    ) -> Sampled<T> {
-        self.run_watched(x, p, y, u, scratch).0
-    }
-
-    /// [`FilterCode::run`], with the sample's normalised innovation squared when it is measured.
-    pub fn run_watched<T: Scalar + Maths>(
-        &self,
-        x: &[T],
-        p: &[T],
-        y: Option<&[T]>,
-        u: &[T],
-        scratch: &mut Vec<T>,
-    ) -> (Sampled<T>, Option<T>) {
-        let program = if y.is_some() { &self.measured } else { &self.unmeasured };
-        let results = program.eval_with(&self.parameters, scratch, |leaf| match leaf {
-            Leaf::State(i) => x[i],
-            Leaf::Input(i) => u[i],
-            Leaf::Covariance(k) => p[k],
-            Leaf::Measurement(i) => y.map_or(T::literal(f32::NAN, f64::NAN), |y| y[i]),
-            // Parameters are the program's constants, read before this; a filter reads no map.
-            Leaf::Parameter(_) | Leaf::Map(_) | Leaf::Blend(_) => T::literal(f32::NAN, f64::NAN),
-        });
-        let (sampled, scalars) = self.split(results, y.is_some());
-        (sampled, scalars.map(|s| s[0]))
-    }
-
-    /// [`FilterCode::run`], with every number the measured program gives after `P⁺` ([`FilterCode::scalars`])
-    /// when the sample is measured.
-    pub fn run_scored<T: Scalar + Maths>(
-        &self,
-        x: &[T],
-        p: &[T],
-        y: &[T],
-        u: &[T],
-        scratch: &mut Vec<T>,
-    ) -> (Sampled<T>, Vec<T>) {
-        let results = self.measured.eval_with(&self.parameters, scratch, |leaf| match leaf {
-            Leaf::State(i) => x[i],
-            Leaf::Input(i) => u[i],
-            Leaf::Covariance(k) => p[k],
-            Leaf::Measurement(i) => y[i],
-            Leaf::Parameter(_) | Leaf::Map(_) | Leaf::Blend(_) => T::literal(f32::NAN, f64::NAN),
-        });
-        let (sampled, scalars) = self.split(results, true);
-        (sampled, scalars.unwrap_or_default())
-    }
-
-    /// A program's results as `(x̂(k|k), x⁺, P⁺)` and, measured, the scalars after them.
-    fn split<T>(&self, mut results: Vec<T>, measured: bool) -> (Sampled<T>, Option<Vec<T>>) {
-        let n = self.states;
-        let scalars = measured.then(|| results.split_off(results.len() - self.scalars));
-        let estimate = measured.then(|| results.drain(..n).collect());
-        let covariance = results.split_off(n);
-        ((estimate, results, covariance), scalars)
-    }
-}
 
 /// The upper triangle, row by row, of the diagonal matrix `diag(values)`: how a filter's `P` starts.
 pub fn diagonal_upper(values: &[f64]) -> Vec<f64> {
