@@ -31,6 +31,33 @@ impl FilterCode {
         u: &[T],
         scratch: &mut Vec<T>,
     ) -> (Sampled<T>, Option<T>) {
+        let (sampled, scalars) = self.run_all(x, p, y, u, scratch);
+        (sampled, scalars.map(|s| s[0]))
+    }
+
+    /// [`FilterCode::run`] of a measured sample, with every number the measured program gives after
+    /// `P⁺` ([`FilterCode::scalars`]).
+    pub fn run_scored<T: Scalar + Maths>(
+        &self,
+        x: &[T],
+        p: &[T],
+        y: &[T],
+        u: &[T],
+        scratch: &mut Vec<T>,
+    ) -> (Sampled<T>, Vec<T>) {
+        let (sampled, scalars) = self.run_all(x, p, Some(y), u, scratch);
+        (sampled, scalars.unwrap_or_default())
+    }
+
+    /// One sample's results, split, with the scalars after `P⁺` when it is measured.
+    fn run_all<T: Scalar + Maths>(
+        &self,
+        x: &[T],
+        p: &[T],
+        y: Option<&[T]>,
+        u: &[T],
+        scratch: &mut Vec<T>,
+    ) -> (Sampled<T>, Option<Vec<T>>) {
         let program = if y.is_some() { &self.measured } else { &self.unmeasured };
         let results = program.eval_with(&self.parameters, scratch, |leaf| match leaf {
             Leaf::State(i) => x[i],
@@ -40,29 +67,7 @@ impl FilterCode {
             // Parameters are the program's constants, read before this; a filter reads no map.
             Leaf::Parameter(_) | Leaf::Map(_) | Leaf::Blend(_) => T::literal(f32::NAN, f64::NAN),
         });
-        let (sampled, scalars) = self.split(results, y.is_some());
-        (sampled, scalars.map(|s| s[0]))
-    }
-
-    /// [`FilterCode::run`], with every number the measured program gives after `P⁺` ([`FilterCode::scalars`])
-    /// when the sample is measured.
-    pub fn run_scored<T: Scalar + Maths>(
-        &self,
-        x: &[T],
-        p: &[T],
-        y: &[T],
-        u: &[T],
-        scratch: &mut Vec<T>,
-    ) -> (Sampled<T>, Vec<T>) {
-        let results = self.measured.eval_with(&self.parameters, scratch, |leaf| match leaf {
-            Leaf::State(i) => x[i],
-            Leaf::Input(i) => u[i],
-            Leaf::Covariance(k) => p[k],
-            Leaf::Measurement(i) => y[i],
-            Leaf::Parameter(_) | Leaf::Map(_) | Leaf::Blend(_) => T::literal(f32::NAN, f64::NAN),
-        });
-        let (sampled, scalars) = self.split(results, true);
-        (sampled, scalars.unwrap_or_default())
+        self.split(results, y.is_some())
     }
 
     /// A program's results as `(x̂(k|k), x⁺, P⁺)` and, measured, the scalars after them.
