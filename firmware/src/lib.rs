@@ -93,9 +93,9 @@
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod bank;
 // The crate doc names the `reference` items without links: a link to an absent item fails `cargo doc`.
 #[cfg(any(test, feature = "reference"))]
-pub mod bank;
 pub mod basis;
 mod bounds;
 mod ekf;

@@ -48,6 +48,16 @@ impl Logarithmic {
     pub fn shift(&self) -> f64 {
         self.min - self.offset
     }
+
+    /// `z` of the plant's `x` (`x` below the bound is read on it).
+    pub fn to_filter(&self, x: f64) -> f64 {
+        (x.max(self.min) - self.shift()).ln()
+    }
+
+    /// The plant's `x` of `z` (no lower than the bound).
+    pub fn to_plant(&self, z: f64) -> f64 {
+        (z.exp() + self.shift()).max(self.min)
+    }
 }
 
 /// Per state, `None` (the plant's coordinate) or its log coordinate.
@@ -93,7 +103,7 @@ impl Coordinates {
         x.iter()
             .zip(&self.0)
             .map(|(&x, log)| match log {
-                Some(log) => (x.max(log.min) - log.shift()).ln(),
+                Some(log) => log.to_filter(x),
                 None => x,
             })
             .collect()
@@ -104,7 +114,7 @@ impl Coordinates {
         z.iter()
             .zip(&self.0)
             .map(|(&z, log)| match log {
-                Some(log) => (z.exp() + log.shift()).max(log.min),
+                Some(log) => log.to_plant(z),
                 None => z,
             })
             .collect()

@@ -68,8 +68,8 @@ impl BankConstants {
             return None;
         }
         let log = coordinates.0[layout.axis];
-        let to_filter = |x: f64| log.map_or(x, |log| (x.max(log.min) - log.shift()).ln());
-        let to_plant = |z: f64| log.map_or(z, |log| (z.exp() + log.shift()).max(log.min));
+        let to_filter = |x: f64| log.map_or(x, |log| log.to_filter(x));
+        let to_plant = |z: f64| log.map_or(z, |log| log.to_plant(z));
         // The spacing's coordinate `s(x)` and back: the slices are equal in it, each member starts at
         // its slice's centre in it.
         let (to_spaced, from_spaced): (Map<'_>, Map<'_>) = match layout.spacing {
