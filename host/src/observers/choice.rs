@@ -10,12 +10,12 @@ use super::score::{self, Score, CHEAPER_WITHIN};
 use super::{ekf, kind, ObserverFigures};
 
 /// A kind's [score](score::score) on the tuning runs, with its lost tuning runs.
-fn tuning_score(figures: &ObserverFigures, spreads: &[f64]) -> Score {
+fn tuning_score(figures: &ObserverFigures, spreads: &[f64], weights: &[f64]) -> Score {
     let pooled: Vec<f64> = figures.targets.iter().map(|f| f.rmse_tuning).collect();
     let p95: Vec<f64> = figures.targets.iter().map(|f| f.p95_tuning).collect();
     Score {
         lost: figures.lost.tuning.map_or(0, |l| l.lost),
-        value: score::score(&pooled, &p95, spreads),
+        value: score::score(&pooled, &p95, spreads, weights),
     }
 }
 
@@ -94,6 +94,7 @@ pub fn choose(
     observers: &[ObserverFigures],
     spreads: &[f64],
 ) -> Result<(ObserverKind, String), SpecError> {
+    let weights = score::weights(design);
     let scored: Vec<(ObserverKind, &str, Score, f64)> = kind::REGISTRY
         .iter()
         .map(|k| (k.kind, k.kind.name()))
@@ -101,7 +102,7 @@ pub fn choose(
             observers
                 .iter()
                 .find(|o| o.kind == name)
-                .map(|o| (kind, name, tuning_score(o, spreads), o.instructions))
+                .map(|o| (kind, name, tuning_score(o, spreads, &weights), o.instructions))
         })
         .collect();
     let budget = design.budget.instructions.map(|b| b as f64);
@@ -371,8 +372,8 @@ mod tests {
         let mut uneven = kind("corrected", 0.05, 0.05, 300.0);
         uneven.targets[1].rmse_tuning = 0.2;
         uneven.targets[1].p95_tuning = 0.2;
-        assert!((tuning_score(&even, &[1.0, 4.0]).value - 0.125).abs() < 1e-12);
-        assert!((tuning_score(&uneven, &[1.0, 4.0]).value - 0.1).abs() < 1e-12);
+        assert!((tuning_score(&even, &[1.0, 4.0], &[1.0, 1.0]).value - 0.125).abs() < 1e-12);
+        assert!((tuning_score(&uneven, &[1.0, 4.0], &[1.0, 1.0]).value - 0.1).abs() < 1e-12);
         let observers = [kind("map", 1.0, 1.0, 100.0), even, uneven];
         let auto = design(ObserverKind::Auto, None);
         assert_eq!(
@@ -380,5 +381,34 @@ mod tests {
             ObserverKind::Corrected
         );
         assert_eq!(choose(&auto, &observers, &[1.0, 1.0]).unwrap().0, ObserverKind::EkfBox);
+    }
+
+    #[test]
+    fn auto_weighs_each_target_by_its_weight() {
+        // Spreads (1, 1). `even` has (rmse, p95) = (0.1, 0.1) on both targets: (0.2 w1 + 0.2 w2) /
+        // (w1 + w2) = 0.2 whatever the weights. `uneven` has (0.05, 0.05) on x1 and (0.2, 0.2) on x2:
+        // 0.25 with weights (1, 1) (even wins), 0.1 with (1, 0) (x2 left out: uneven wins), and
+        // (0.1 + 3 · 0.4) / 4 = 0.325 with (1, 3).
+        let even = kind("ekf_box", 0.1, 0.1, 300.0);
+        let mut uneven = kind("corrected", 0.05, 0.05, 300.0);
+        uneven.targets[1].rmse_tuning = 0.2;
+        uneven.targets[1].p95_tuning = 0.2;
+        assert!((tuning_score(&uneven, &SPREADS, &[1.0, 3.0]).value - 0.325).abs() < 1e-12);
+        assert!((tuning_score(&uneven, &SPREADS, &[1.0, 0.0]).value - 0.1).abs() < 1e-12);
+        assert!((tuning_score(&even, &SPREADS, &[1.0, 3.0]).value - 0.2).abs() < 1e-12);
+        let weighted = |w2: f64| {
+            let mut design = design(ObserverKind::Auto, None);
+            design.targets[1].weight = w2;
+            design
+        };
+        let observers = [kind("map", 1.0, 1.0, 100.0), even, uneven.clone()];
+        assert_eq!(chosen(&weighted(1.0), &observers), ObserverKind::EkfBox);
+        assert_eq!(chosen(&weighted(0.0), &observers), ObserverKind::Corrected);
+        assert_eq!(chosen(&weighted(3.0), &observers), ObserverKind::EkfBox);
+        // A target of weight 0 whose figures are not finite does not poison the others' score.
+        let mut broken = uneven;
+        broken.targets[1].rmse_tuning = f64::NAN;
+        assert!((tuning_score(&broken, &SPREADS, &[1.0, 0.0]).value - 0.1).abs() < 1e-12);
+        assert_eq!(tuning_score(&broken, &SPREADS, &[1.0, 1.0]).value, f64::INFINITY);
     }
 }

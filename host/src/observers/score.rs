@@ -6,12 +6,14 @@
 //! tail beside the pool. For each target `t` with spread `s_t` (its range over the tuning runs):
 //!
 //! ```text
-//! score = mean_t (RMSE_t + P95_t) / s_t,
+//! score = Σ_t w_t (RMSE_t + P95_t) / s_t  /  Σ_t w_t,
 //! ```
 //!
 //! `RMSE_t` the RMSE over every window of every run, `P95_t` the 95th percentile over runs of each
-//! run's own RMSE ([`percentile_95`]). A run whose estimate diverged (NaN) makes the score infinite:
-//! the worst, never a NaN that a search cannot order.
+//! run's own RMSE ([`percentile_95`]), `w_t` the target's `weight` (default 1: the plain mean over
+//! targets; a target of weight 0 is left out, its errors and its lost runs alike). A run whose
+//! estimate diverged (NaN) makes the score infinite: the worst, never a NaN that a search cannot
+//! order.
 //!
 //! Neither figure sees one run lost among many good ones. A lost tuning run
 //! ([`crate::observers::lost`]) therefore counts before everything else ([`Score`]): a candidate
@@ -19,6 +21,20 @@
 //! runs the one that loses fewer wins.
 
 use crate::data::{Rows, Run};
+use crate::spec::Design;
+
+/// The spreads a run's loss is judged against: a target of weight 0 is never lost on its error (its
+/// spread, as [`crate::observers::lost`] sees it, is ∞); a non-finite estimate of it still loses the run.
+pub fn counted(spreads: &[f64], weights: &[f64]) -> Vec<f64> {
+    (spreads.iter().zip(weights))
+        .map(|(&s, &w)| if w > 0.0 { s } else { f64::INFINITY })
+        .collect()
+}
+
+/// Each target's weight in the score (`[[targets]] weight`), in the spec's order.
+pub fn weights(design: &Design) -> Vec<f64> {
+    design.targets.iter().map(|t| t.weight).collect()
+}
 
 /// How much worse than the best a cheaper kind's score may be and still be chosen by `auto`.
 pub const CHEAPER_WITHIN: f64 = 0.02;
@@ -40,16 +56,18 @@ pub struct Score {
 
 impl Score {
     /// The score of `estimates` of `runs` over samples `window(run)` ([`of_estimates`]), with their
-    /// lost runs ([`crate::observers::lost::count`]).
+    /// lost runs ([`crate::observers::lost::count`]) on the targets of weight above 0 (a run whose
+    /// estimate of any target is not finite is lost still).
     pub fn of(
         runs: &[Run],
         estimates: &[Rows],
         spreads: &[f64],
+        weights: &[f64],
         window: impl Fn(&Run) -> std::ops::Range<usize> + Copy,
     ) -> Self {
         Score {
-            lost: crate::observers::lost::count(runs, estimates, &[], window, spreads).lost,
-            value: of_estimates(runs, estimates, spreads, window),
+            lost: crate::observers::lost::count(runs, estimates, &[], window, &counted(spreads, weights)).lost,
+            value: of_estimates(runs, estimates, spreads, weights, window),
         }
     }
 
@@ -97,15 +115,14 @@ pub fn percentile_95(values: &[f64]) -> f64 {
 }
 
 /// The score of per-target pooled RMSEs and 95th percentiles, each normalised by its target's spread
-/// (see the module docs); `f64::INFINITY` where it is not finite.
-pub fn score(pooled: &[f64], p95: &[f64], spreads: &[f64]) -> f64 {
-    let mean = pooled
-        .iter()
-        .zip(p95)
-        .zip(spreads)
-        .map(|((r, p), s)| (r + p) / s.max(f64::MIN_POSITIVE))
+/// and weighted by `weights` (see the module docs); `f64::INFINITY` where it is not finite.
+pub fn score(pooled: &[f64], p95: &[f64], spreads: &[f64], weights: &[f64]) -> f64 {
+    let weighed = || (pooled.iter().zip(p95).zip(spreads).zip(weights)).filter(|(_, &w)| w > 0.0);
+    let total: f64 = weighed().map(|(_, w)| w).sum();
+    let mean = weighed()
+        .map(|(((r, p), s), w)| w * ((r + p) / s.max(f64::MIN_POSITIVE)))
         .sum::<f64>()
-        / spreads.len().max(1) as f64;
+        / total;
     if mean.is_finite() {
         mean
     } else {
@@ -118,6 +135,7 @@ pub fn of_estimates(
     runs: &[Run],
     estimates: &[Rows],
     spreads: &[f64],
+    weights: &[f64],
     window: impl Fn(&Run) -> std::ops::Range<usize> + Copy,
 ) -> f64 {
     let (pooled, p95): (Vec<f64>, Vec<f64>) = (0..spreads.len())
@@ -128,7 +146,7 @@ pub fn of_estimates(
             )
         })
         .unzip();
-    score(&pooled, &p95, spreads)
+    score(&pooled, &p95, spreads, weights)
 }
 
 /// The candidate of lowest `score` (the first of equals, in `candidates`' order), scored in
@@ -204,11 +222,39 @@ mod tests {
     fn the_score_counts_the_tail() {
         // Two observers with the same pooled RMSE: the one whose error sits in one run scores worse.
         let spreads = [2.0];
-        let even = score(&[0.1], &[0.1], &spreads);
-        let tail = score(&[0.1], &[0.5], &spreads);
+        let even = score(&[0.1], &[0.1], &spreads, &[1.0]);
+        let tail = score(&[0.1], &[0.5], &spreads, &[1.0]);
         assert!((even - 0.1).abs() < 1e-15, "{even}");
         assert!((tail - 0.3).abs() < 1e-15, "{tail}");
-        assert_eq!(score(&[f64::NAN], &[0.1], &spreads), f64::INFINITY);
+        assert_eq!(score(&[f64::NAN], &[0.1], &spreads, &[1.0]), f64::INFINITY);
+    }
+
+    #[test]
+    fn a_target_of_weight_0_is_left_out_of_the_value_and_of_the_lost_runs() {
+        // Two targets of truth 0 over 8 samples, spreads (1, 1). The estimate is 0.5 on x1 and 3 on
+        // x2 (lost: 3 > 1 · its spread over the last samples). Weights (1, 1): value (1 + 6) / 2 = 3.5
+        // (each target's pooled RMSE equals its one run's, so RMSE + p95 = 2 · error), 1 run lost;
+        // weights (1, 0): value 1, none lost; but a NaN on x2 loses the run whatever its weight.
+        let rows = |values: [f64; 2]| {
+            let mut rows = Rows::new(2);
+            (0..8).for_each(|_| rows.push(&values));
+            rows
+        };
+        let run = Run {
+            states: rows([0.0; 2]),
+            inputs: Rows::new(0),
+            measurements: rows([0.0; 2]),
+            targets: rows([0.0; 2]),
+            parameters: Vec::new(),
+        };
+        let runs = [run];
+        let window = |_: &Run| 0..8;
+        let both = Score::of(&runs, &[rows([0.5, 3.0])], &[1.0, 1.0], &[1.0, 1.0], window);
+        assert_eq!((both.lost, both.value), (1, 3.5));
+        let first = Score::of(&runs, &[rows([0.5, 3.0])], &[1.0, 1.0], &[1.0, 0.0], window);
+        assert_eq!((first.lost, first.value), (0, 1.0));
+        let nan = Score::of(&runs, &[rows([0.5, f64::NAN])], &[1.0, 1.0], &[1.0, 0.0], window);
+        assert_eq!((nan.lost, nan.value), (1, 1.0));
     }
 
     #[test]

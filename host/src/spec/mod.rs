@@ -237,6 +237,9 @@ pub struct Target {
     pub unit: String,
     /// `g`, over the model's scope.
     pub expr: Expression,
+    /// Its weight in the score every constant and `auto` are chosen by (`weight`, default 1; 0: the
+    /// target is estimated and reported but nothing is chosen for it).
+    pub weight: f64,
 }
 
 /// A state's physical bounds, either side optional (`[model.bounds]`).

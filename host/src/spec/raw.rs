@@ -20,7 +20,7 @@ pub(super) struct RawSpec {
     pub(super) validation: RawValidation,
     pub(super) tuning: Option<RawTuning>,
     pub(super) map: RawMap,
-    pub(super) targets: Vec<RawNamedExpr>,
+    pub(super) targets: Vec<RawTarget>,
     pub(super) scenario: Option<RawScenarios>,
     pub(super) family: Option<RawFamily>,
     pub(super) observer: Option<RawObserver>,
@@ -202,8 +202,22 @@ impl<'de> Deserialize<'de> for RawParameter {
 pub(super) struct RawNamedExpr {
     pub(super) name: String,
     pub(super) expr: String,
+    /// A definition's unit: accepted for the spec's reader (as before targets had their own table),
+    /// read by nothing.
+    #[serde(default)]
+    #[allow(dead_code)]
+    pub(super) unit: String,
+}
+
+/// `[[targets]]`: a named expression with its unit and its weight in the score.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawTarget {
+    pub(super) name: String,
+    pub(super) expr: String,
     #[serde(default)]
     pub(super) unit: String,
+    pub(super) weight: Option<f64>,
 }
 
 #[derive(Deserialize)]

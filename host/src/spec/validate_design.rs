@@ -162,7 +162,7 @@ impl Validator {
         })
     }
 
-    fn targets(&self, raw: &[RawNamedExpr], model: &Model) -> Result<Vec<Target>, SpecError> {
+    fn targets(&self, raw: &[RawTarget], model: &Model) -> Result<Vec<Target>, SpecError> {
         if raw.is_empty() {
             return Err(self.err(
                 "targets",
@@ -184,11 +184,30 @@ impl Validator {
             self.label(format!("targets[{i}].unit"), &t.unit)?;
             let expr = Expression::compile(&t.expr, &scope)
                 .map_err(|e| self.err(format!("targets[{i}].expr"), e.to_string(), e.fix()))?;
+            let weight = t.weight.unwrap_or(1.0);
+            if !(weight.is_finite() && weight >= 0.0) {
+                return Err(self.err(
+                    format!("targets[{i}].weight"),
+                    format!(
+                        "target `{}` has weight {weight}: a weight is a finite number ≥ 0",
+                        t.name
+                    ),
+                    "give the target's share of the score (default 1; 0 to report it without choosing for it)",
+                ));
+            }
             targets.push(Target {
                 name: t.name.clone(),
                 unit: t.unit.clone(),
                 expr,
+                weight,
             });
+        }
+        if targets.iter().all(|t| t.weight == 0.0) {
+            return Err(self.err(
+                "targets[0].weight",
+                "every target has weight 0: nothing would be chosen for any of them",
+                "give at least one target a weight above 0 (leave `weight` out for 1)",
+            ));
         }
         Ok(targets)
     }

@@ -38,6 +38,9 @@
 //! Physical bounds (`[model.bounds]`) added 5 sites in `validate.rs` `bounds` (not a state, neither
 //! side, a side not finite, `min` not below `max`, the learning box outside), all in the table, and
 //! the unknown key of `raw.rs` `RawBounds` (through `parse`).
+//!
+//! Target weights (`[[targets]] weight`) added 2 sites in `validate_design.rs` `targets` (a weight
+//! negative or not finite; every weight 0), both in the table.
 
 use std::collections::HashSet;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -325,6 +328,8 @@ const CASES: &[Case] = &[
     ], Exact("targets"), "[[targets]]"),
     case("target_invalid_name", Vdp, &[Swap("name = \"x1\"\nexpr", "name = \"x 1\"\nexpr")], Exact("targets[0].name"), "letters, digits and `_`"),
     case("target_reserved_name", Vdp, &[Swap("name = \"x2\"\nexpr", "name = \"run\"\nexpr")], Exact("targets[1].name"), "reserved"),
+    case("target_weight_negative", Vdp, &[Swap("name = \"x2\"\nexpr = \"x2\"", "name = \"x2\"\nexpr = \"x2\"\nweight = -0.5")], Exact("targets[1].weight"), "default 1"),
+    case("target_weights_all_zero", Vdp, &[Swap("name = \"x1\"\nexpr = \"x1\"", "name = \"x1\"\nexpr = \"x1\"\nweight = 0"), Swap("name = \"x2\"\nexpr = \"x2\"", "name = \"x2\"\nexpr = \"x2\"\nweight = 0.0")], Exact("targets[0].weight"), "above 0"),
     case("target_declared_twice", Vdp, &[Swap("name = \"x2\"\nexpr", "name = \"x1\"\nexpr")], Exact("targets[1].name"), "its own name"),
     case("target_expr_syntax", Vdp, &[Swap("expr = \"x2\"", "expr = \"x2)\"")], Exact("targets[1].expr"), "exmex syntax"),
     case("target_expr_minus_before_power", Vdp, &[Swap("name = \"x1\"\nexpr = \"x1\"", "name = \"x1\"\nexpr = \"-x1^2\"")], Exact("targets[0].expr"), "-(x1^…)"),

@@ -81,10 +81,11 @@ fn score(
     centre: &[f64],
     data: &DataSet,
     target_spreads: &[f64],
+    weights: &[f64],
 ) -> f64 {
     let estimates = estimator(code, constants, centre, data).expect("size checked");
     let window = |run: &crate::data::Run| data.horizon.saturating_sub(1)..run.targets.len();
-    crate::observers::score::Score::of(&data.runs, &estimates, target_spreads, window).objective()
+    crate::observers::score::Score::of(&data.runs, &estimates, target_spreads, weights, window).objective()
 }
 
 /// The tuning criterion as `argmin` sees it: `θ` to the score.
@@ -98,6 +99,7 @@ struct Criterion<'a> {
     spreads: &'a [f64],
     data: &'a DataSet,
     target_spreads: &'a [f64],
+    weights: &'a [f64],
     count: &'a std::sync::atomic::AtomicU64,
 }
 
@@ -112,6 +114,7 @@ impl Criterion<'_> {
             self.centre,
             self.data,
             self.target_spreads,
+            self.weights,
         );
         // Nelder–Mead must be able to order a diverging candidate: the worst, not infinity.
         score.min(1e30)
@@ -216,6 +219,7 @@ pub fn tune_with(
     };
     let spreads = spreads_in(learning, coordinates);
     let count = std::sync::atomic::AtomicU64::new(0);
+    let weights = crate::observers::score::weights(design);
     let criterion = Criterion {
         estimator,
         design,
@@ -225,6 +229,7 @@ pub fn tune_with(
         spreads: &spreads,
         data: tuning,
         target_spreads,
+        weights: &weights,
         count: &count,
     };
     // The decades of each free half: `a` over −8…0 unless `Q` is fixed, `b` over −3…0 unless `P(0)` is.
@@ -296,7 +301,7 @@ pub fn tune_with(
         constants
     };
     let (threshold, cost) = crate::observers::score::lowest(&WATCH_THRESHOLDS, |t| {
-        score(estimator, code, &watched(t), &centre, tuning, target_spreads)
+        score(estimator, code, &watched(t), &centre, tuning, target_spreads, &weights)
     });
     constants.watch.threshold = threshold;
     Some(Tuned {

@@ -159,7 +159,21 @@ impl<'a> Bench<'a> {
     /// The [score](score::Score::objective) of `estimates`, one per tuning run, its lost runs counted
     /// first.
     pub fn tuning_score(&self, estimates: &[Rows]) -> f64 {
-        score::Score::of(&self.result.runs.tuning.runs, estimates, &self.spreads, self.windows()).objective()
+        let weights = score::weights(self.design);
+        score::Score::of(
+            &self.result.runs.tuning.runs,
+            estimates,
+            &self.spreads,
+            &weights,
+            self.windows(),
+        )
+        .objective()
+    }
+
+    /// The spreads a run's loss is judged against on every set ([`score::counted`]): the targets'
+    /// spreads, ∞ for a target of weight 0.
+    pub fn lost_spreads(&self) -> Vec<f64> {
+        score::counted(&self.spreads, &score::weights(self.design))
     }
 
     /// One kind's figures on every set: `estimate(run, map)` is its estimate of every target at every

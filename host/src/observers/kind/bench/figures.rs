@@ -88,9 +88,11 @@ impl Bench<'_> {
                 }
             })
             .collect();
-        // Lost runs per set; a reference (`tuned` false) is not run on the tuning and long runs.
+        // Lost runs per set, on the targets of weight above 0; a reference (`tuned` false) is not run
+        // on the tuning and long runs.
+        let counted = self.lost_spreads();
         let lost = |runs: &[Run], estimates: &[Rows], restarts: &[u32]| {
-            lost::count(runs, estimates, restarts, windows, &self.spreads)
+            lost::count(runs, estimates, restarts, windows, &counted)
         };
         let lost = LostRuns {
             validation: lost(&runs.validation.runs, &validation, &restarts.validation),
@@ -107,7 +109,7 @@ impl Bench<'_> {
                 .map(|(m, [on_corners, _, _])| lost(&m.corners_set.runs, on_corners, &restarts.corners)),
             long: tuned.then(|| lost(&runs.long.runs, &on_long, &restarts.long)),
         };
-        let which = |runs: &[Run], estimates: &[Rows]| lost::which(runs, estimates, windows, &self.spreads);
+        let which = |runs: &[Run], estimates: &[Rows]| lost::which(runs, estimates, windows, &counted);
         let lost_which = LostWhich {
             validation: which(&runs.validation.runs, &validation),
             scenario_draws: (runs.scenario_draws.as_ref().zip(on_draws.as_ref()))

@@ -59,9 +59,10 @@ pub fn choose(
     spreads: &[f64],
 ) -> Option<(Scored, (Scored, BankConstants))> {
     let member = crate::observers::kind::ukf_box::program::member_code(code, ukf);
+    let weights = crate::observers::score::weights(design);
     let score = |estimates: &[Rows]| -> Scored {
         let window = |run: &Run| tuning.horizon.saturating_sub(1)..run.targets.len();
-        let score = Score::of(&tuning.runs, estimates, spreads, window);
+        let score = Score::of(&tuning.runs, estimates, spreads, &weights, window);
         (score.lost, score.value)
     };
     let single = score(&crate::observers::kind::ukf_box::run::estimates(

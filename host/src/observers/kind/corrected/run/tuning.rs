@@ -46,6 +46,8 @@ struct Criterion<'a> {
     data: &'a DataSet,
     maps: &'a [Rows],
     target_spreads: &'a [f64],
+    /// Each target's weight in the score.
+    weights: &'a [f64],
     /// Whether `G = 0` is fixed (and left out of `θ`): the chip reads no map after the start-up.
     without_map: bool,
 }
@@ -63,9 +65,13 @@ impl Criterion<'_> {
             .map(|(run, map)| estimate_rows(self.setting, &code, constants, map, run).rows)
             .collect();
         let first = self.setting.first;
-        let score = crate::observers::score::of_estimates(&self.data.runs, &estimates, self.target_spreads, |run| {
-            first..run.targets.len()
-        });
+        let score = crate::observers::score::of_estimates(
+            &self.data.runs,
+            &estimates,
+            self.target_spreads,
+            self.weights,
+            |run| first..run.targets.len(),
+        );
         // A diverging candidate is the worst, not an infinity that Nelder–Mead cannot order.
         score.min(1e30)
     }
@@ -96,8 +102,9 @@ impl Criterion<'_> {
 /// Nelder–Mead iterations per start.
 const ITERATIONS: u64 = 500;
 
-/// Chooses the gains on `tuning` (its map estimates `maps`), see the module docs.
-pub fn tune(setting: &Setting<'_>, tuning: &DataSet, maps: &[Rows], target_spreads: &[f64]) -> Tuned {
+/// Chooses the gains on `tuning` (its map estimates `maps`), see the module docs, each target's
+/// error over its spread and weighted as the score weighs it.
+pub fn tune(setting: &Setting<'_>, tuning: &DataSet, maps: &[Rows], target_spreads: &[f64], weights: &[f64]) -> Tuned {
     use rayon::prelude::*;
     let (nx, ny) = (setting.code.dimensions.states, setting.code.dimensions.outputs);
     // Starts: the paper's blend at three strengths, and two constant-gain observers.
@@ -121,6 +128,7 @@ pub fn tune(setting: &Setting<'_>, tuning: &DataSet, maps: &[Rows], target_sprea
         data: tuning,
         maps,
         target_spreads,
+        weights,
         without_map,
     };
     let start_cost = starts
