@@ -10,6 +10,7 @@ pub mod limits;
 mod load;
 pub mod model;
 mod raw;
+mod raw_choice;
 mod raw_scenario;
 pub mod search;
 pub mod starts;
@@ -74,8 +75,7 @@ pub enum ObserverKind {
     EkfMap,
     /// The EKF started at the centre of the state box (`ekf_box`, the design's `ekf()`).
     EkfBox,
-    /// The unscented Kalman filter started at the centre of the state box (`ukf_box`, the design's
-    /// `ukf()`).
+    /// The unscented Kalman filter from the centre of the state box (`ukf_box`, `ukf()`).
     UkfBox,
     /// The EKF from the centre of the state box, restarted from the map's first estimate when the
     /// two disagree (`ekf_restart`, `firmware::Restarted`).
@@ -105,8 +105,7 @@ impl ObserverKind {
 /// Values of one state for the learning grid and the validation box.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Axis {
-    /// `points ≥ 2` evenly spaced values from `min` to `max` (both included); validation draws
-    /// uniformly in `[min, max]`.
+    /// `points ≥ 2` even values from `min` to `max` (both in); validation draws uniformly there.
     Range {
         /// Lower bound.
         min: f64,
@@ -205,9 +204,8 @@ pub struct Scenario {
     pub name: String,
     /// Initial state, in state order.
     pub x0: Vec<f64>,
-    /// The paper's initial guess `x̂(0)` (`observer_x0`), in state order: the report adds the EKF's
-    /// scenario figure from there, beside the one from the box centre where the chip's `ekf()`
-    /// starts.
+    /// The paper's initial guess `x̂(0)` (`observer_x0`), in state order: the report adds the box
+    /// filters' scenario figures from there, beside those from the box centre the chip starts at.
     pub observer_x0: Option<Vec<f64>>,
     /// Samples.
     pub samples: usize,
@@ -237,8 +235,7 @@ pub struct Target {
     pub unit: String,
     /// `g`, over the model's scope.
     pub expr: Expression,
-    /// Its weight in the score every constant and `auto` are chosen by (`weight`, default 1; 0: the
-    /// target is estimated and reported but nothing is chosen for it).
+    /// Its weight in the score (`weight`, default 1; 0: estimated and reported, chosen for never).
     pub weight: f64,
 }
 
