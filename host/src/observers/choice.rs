@@ -6,16 +6,15 @@ use crate::plant::ModelCode;
 use crate::spec::{Design, ObserverKind, SpecError};
 
 use super::kind::corrected::run as corrected;
-use super::score::{self, Score, CHEAPER_WITHIN};
+use super::score::{Score, Scoring, CHEAPER_WITHIN};
 use super::{ekf, kind, ObserverFigures};
 
-/// A kind's [score](score::score) on the tuning runs, with its lost tuning runs.
-fn tuning_score(figures: &ObserverFigures, spreads: &[f64], weights: &[f64]) -> Score {
-    let pooled: Vec<f64> = figures.targets.iter().map(|f| f.rmse_tuning).collect();
-    let p95: Vec<f64> = figures.targets.iter().map(|f| f.p95_tuning).collect();
+/// A kind's [score](score::regimes) on the tuning runs (the mean over the tuning set's regimes of
+/// its terms), with its lost tuning runs.
+fn tuning_score(figures: &ObserverFigures, scoring: &Scoring) -> Score {
     Score {
         lost: figures.lost.tuning.map_or(0, |l| l.lost),
-        value: score::score(&pooled, &p95, spreads, weights),
+        value: scoring.value(&figures.tuning_terms),
     }
 }
 
@@ -92,9 +91,8 @@ fn over_budget(design: &Design, name: &str, instructions: f64, budget: f64) -> S
 pub fn choose(
     design: &Design,
     observers: &[ObserverFigures],
-    spreads: &[f64],
+    scoring: &Scoring,
 ) -> Result<(ObserverKind, String), SpecError> {
-    let weights = score::weights(design);
     let scored: Vec<(ObserverKind, &str, Score, f64)> = kind::REGISTRY
         .iter()
         .map(|k| (k.kind, k.kind.name()))
@@ -102,7 +100,7 @@ pub fn choose(
             observers
                 .iter()
                 .find(|o| o.kind == name)
-                .map(|o| (kind, name, tuning_score(o, spreads, &weights), o.instructions))
+                .map(|o| (kind, name, tuning_score(o, scoring), o.instructions))
         })
         .collect();
     let budget = design.budget.instructions.map(|b| b as f64);
@@ -163,7 +161,17 @@ pub fn choose(
         })
         .collect();
     let limit = budget.map_or(String::new(), |b| format!(" within `budget.instructions` = {b}"));
-    Ok((kind, format!("`{name}` by `auto`: the fewest lost tuning runs, then the lowest tuning score (pooled RMSE + p95 over runs, per target over its spread; {}){limit}, a cheaper kind preferred within {:.0} %", all.join(", "), CHEAPER_WITHIN * 100.0)))
+    Ok((kind, format!("`{name}` by `auto`: the fewest lost tuning runs, then the lowest tuning score (the mean over {} of pooled RMSE + p95 over runs, per target over its spread; {}){limit}, a cheaper kind preferred within {:.0} %", regime_names(scoring), all.join(", "), CHEAPER_WITHIN * 100.0)))
+}
+
+/// "random starts, from scenario and start-up": the regimes the score averages over.
+fn regime_names(scoring: &Scoring) -> String {
+    let names: Vec<&str> = scoring.regimes.parts.iter().map(|r| r.name.as_str()).collect();
+    match names.split_last() {
+        Some((last, [])) => (*last).to_owned(),
+        Some((last, rest)) => format!("{} and {last}", rest.join(", ")),
+        None => String::new(),
+    }
 }
 
 /// ", 3 tuning runs lost" (nothing when none was).
@@ -183,6 +191,7 @@ mod tests {
 
     use super::*;
     use crate::observers::figures::{Drift, Figures};
+    use crate::observers::score::Term;
 
     /// Example 1's spec (two targets), with `observer.kind` and `budget.instructions` as given.
     fn design(kind: ObserverKind, budget: Option<u64>) -> Design {
@@ -193,8 +202,8 @@ mod tests {
         design
     }
 
-    /// A kind whose tuning RMSE is `rmse` and tuning p95 is `p95` on both targets: with spreads of 1,
-    /// its score is `rmse + p95`.
+    /// A kind whose tuning RMSE is `rmse` and tuning p95 is `p95` on both targets, in one regime: with
+    /// spreads of 1, its score is `rmse + p95`.
     fn kind(name: &'static str, rmse: f64, p95: f64, instructions: f64) -> ObserverFigures {
         let figures = Figures {
             rmse_validation: 0.0,
@@ -216,6 +225,10 @@ mod tests {
             kind: name,
             instructions,
             targets: vec![figures.clone(), figures],
+            tuning_terms: vec![Term {
+                regime: "every run".into(),
+                targets: vec![(rmse, p95); 2],
+            }],
             scenario: crate::data::Rows::default(),
             mismatch_scenario: None,
             lost: Default::default(),
@@ -225,8 +238,30 @@ mod tests {
 
     const SPREADS: [f64; 2] = [1.0, 1.0];
 
+    /// The scoring of `design`'s tuning set (88 runs: 64 random, 16 from the scenario, 8 edges) with
+    /// `spreads`.
+    fn scoring(design: &Design, spreads: &[f64]) -> Scoring {
+        Scoring::of_tuning(design, spreads, 88)
+    }
+
     fn chosen(design: &Design, observers: &[ObserverFigures]) -> ObserverKind {
-        choose(design, observers, &SPREADS).unwrap().0
+        choose(design, observers, &scoring(design, &SPREADS)).unwrap().0
+    }
+
+    /// `figures` with target `target`'s `(RMSE, p95)` set to `errors` in every term.
+    fn with_target(mut figures: ObserverFigures, target: usize, errors: (f64, f64)) -> ObserverFigures {
+        figures
+            .tuning_terms
+            .iter_mut()
+            .for_each(|term| term.targets[target] = errors);
+        figures
+    }
+
+    /// `weights` as the scoring of Example 1's spec reads them, spreads `spreads`.
+    fn weighted(spreads: &[f64], weights: &[f64]) -> Scoring {
+        let mut scoring = scoring(&design(ObserverKind::Auto, None), spreads);
+        scoring.weights = weights.to_vec();
+        scoring
     }
 
     /// [`kind`] with `lost` of 80 tuning runs lost.
@@ -259,7 +294,7 @@ mod tests {
             losing("map", 0.504, 100.0, 3),
         ];
         assert_eq!(chosen(&design, &observers), ObserverKind::UkfBox);
-        let (_, why) = choose(&design, &observers, &SPREADS).unwrap();
+        let (_, why) = choose(&design, &observers, &scoring(&design, &SPREADS)).unwrap();
         assert!(
             why.contains("ukf_box 1.0000, 2 tuning runs lost at ~1000 instructions"),
             "{why}"
@@ -315,7 +350,8 @@ mod tests {
             ObserverKind::EkfBox
         );
         // Nothing within 50: an error that says so.
-        let error = choose(&design(ObserverKind::Auto, Some(50)), &observers, &SPREADS).unwrap_err();
+        let tight = design(ObserverKind::Auto, Some(50));
+        let error = choose(&tight, &observers, &scoring(&tight, &SPREADS)).unwrap_err();
         assert_eq!(error.field, "budget.instructions");
         assert!(
             error.problem.contains("no observer kind fits in 50"),
@@ -352,9 +388,13 @@ mod tests {
             chosen(&design(ObserverKind::EkfBox, Some(300)), &observers),
             ObserverKind::EkfBox
         );
-        let over = choose(&design(ObserverKind::EkfBox, Some(299)), &observers, &SPREADS).unwrap_err();
+        let (over, missing) = (
+            design(ObserverKind::EkfBox, Some(299)),
+            design(ObserverKind::Corrected, None),
+        );
+        let over = choose(&over, &observers, &scoring(&over, &SPREADS)).unwrap_err();
         assert!(over.problem.contains("~300 instructions"), "{}", over.problem);
-        let missing = choose(&design(ObserverKind::Corrected, None), &observers, &SPREADS).unwrap_err();
+        let missing = choose(&missing, &observers, &scoring(&missing, &SPREADS)).unwrap_err();
         assert!(
             missing.problem.contains("cannot have a `corrected` observer"),
             "{}",
@@ -369,18 +409,16 @@ mod tests {
         // (0.2, 0.2) on x2 scores (0.1/1 + 0.4/4) / 2 = 0.1: the second wins there, and loses with
         // spreads (1, 1) (0.2 against 0.25).
         let even = kind("ekf_box", 0.1, 0.1, 300.0);
-        let mut uneven = kind("corrected", 0.05, 0.05, 300.0);
-        uneven.targets[1].rmse_tuning = 0.2;
-        uneven.targets[1].p95_tuning = 0.2;
-        assert!((tuning_score(&even, &[1.0, 4.0], &[1.0, 1.0]).value - 0.125).abs() < 1e-12);
-        assert!((tuning_score(&uneven, &[1.0, 4.0], &[1.0, 1.0]).value - 0.1).abs() < 1e-12);
+        let uneven = with_target(kind("corrected", 0.05, 0.05, 300.0), 1, (0.2, 0.2));
+        assert!((tuning_score(&even, &weighted(&[1.0, 4.0], &[1.0, 1.0])).value - 0.125).abs() < 1e-12);
+        assert!((tuning_score(&uneven, &weighted(&[1.0, 4.0], &[1.0, 1.0])).value - 0.1).abs() < 1e-12);
         let observers = [kind("map", 1.0, 1.0, 100.0), even, uneven];
         let auto = design(ObserverKind::Auto, None);
         assert_eq!(
-            choose(&auto, &observers, &[1.0, 4.0]).unwrap().0,
+            choose(&auto, &observers, &scoring(&auto, &[1.0, 4.0])).unwrap().0,
             ObserverKind::Corrected
         );
-        assert_eq!(choose(&auto, &observers, &[1.0, 1.0]).unwrap().0, ObserverKind::EkfBox);
+        assert_eq!(chosen(&auto, &observers), ObserverKind::EkfBox);
     }
 
     #[test]
@@ -390,25 +428,89 @@ mod tests {
         // 0.25 with weights (1, 1) (even wins), 0.1 with (1, 0) (x2 left out: uneven wins), and
         // (0.1 + 3 · 0.4) / 4 = 0.325 with (1, 3).
         let even = kind("ekf_box", 0.1, 0.1, 300.0);
-        let mut uneven = kind("corrected", 0.05, 0.05, 300.0);
-        uneven.targets[1].rmse_tuning = 0.2;
-        uneven.targets[1].p95_tuning = 0.2;
-        assert!((tuning_score(&uneven, &SPREADS, &[1.0, 3.0]).value - 0.325).abs() < 1e-12);
-        assert!((tuning_score(&uneven, &SPREADS, &[1.0, 0.0]).value - 0.1).abs() < 1e-12);
-        assert!((tuning_score(&even, &SPREADS, &[1.0, 3.0]).value - 0.2).abs() < 1e-12);
-        let weighted = |w2: f64| {
-            let mut design = design(ObserverKind::Auto, None);
-            design.targets[1].weight = w2;
-            design
-        };
+        let uneven = with_target(kind("corrected", 0.05, 0.05, 300.0), 1, (0.2, 0.2));
+        assert!((tuning_score(&uneven, &weighted(&SPREADS, &[1.0, 3.0])).value - 0.325).abs() < 1e-12);
+        assert!((tuning_score(&uneven, &weighted(&SPREADS, &[1.0, 0.0])).value - 0.1).abs() < 1e-12);
+        assert!((tuning_score(&even, &weighted(&SPREADS, &[1.0, 3.0])).value - 0.2).abs() < 1e-12);
         let observers = [kind("map", 1.0, 1.0, 100.0), even, uneven.clone()];
-        assert_eq!(chosen(&weighted(1.0), &observers), ObserverKind::EkfBox);
-        assert_eq!(chosen(&weighted(0.0), &observers), ObserverKind::Corrected);
-        assert_eq!(chosen(&weighted(3.0), &observers), ObserverKind::EkfBox);
+        let auto = design(ObserverKind::Auto, None);
+        let choice = |w2: f64| choose(&auto, &observers, &weighted(&SPREADS, &[1.0, w2])).unwrap().0;
+        assert_eq!(choice(1.0), ObserverKind::EkfBox);
+        assert_eq!(choice(0.0), ObserverKind::Corrected);
+        assert_eq!(choice(3.0), ObserverKind::EkfBox);
         // A target of weight 0 whose figures are not finite does not poison the others' score.
-        let mut broken = uneven;
-        broken.targets[1].rmse_tuning = f64::NAN;
-        assert!((tuning_score(&broken, &SPREADS, &[1.0, 0.0]).value - 0.1).abs() < 1e-12);
-        assert_eq!(tuning_score(&broken, &SPREADS, &[1.0, 1.0]).value, f64::INFINITY);
+        let broken = with_target(uneven, 1, (f64::NAN, 0.2));
+        assert!((tuning_score(&broken, &weighted(&SPREADS, &[1.0, 0.0])).value - 0.1).abs() < 1e-12);
+        assert_eq!(
+            tuning_score(&broken, &weighted(&SPREADS, &[1.0, 1.0])).value,
+            f64::INFINITY
+        );
+    }
+
+    /// A kind with `(RMSE, p95)` of `random`, `scenario` and `start_up` on both targets in the three
+    /// regimes of Example 1's tuning set: with spreads of 1, its score is the mean of the regimes' sums.
+    fn in_regimes(
+        name: &'static str,
+        [random, scenario, start_up]: [(f64, f64); 3],
+        instructions: f64,
+    ) -> ObserverFigures {
+        let mut figures = kind(name, random.0, random.1, instructions);
+        figures.tuning_terms = [
+            ("random starts", random),
+            ("from scenario", scenario),
+            ("start-up", start_up),
+        ]
+        .map(|(regime, errors)| Term {
+            regime: regime.into(),
+            targets: vec![errors; 2],
+        })
+        .to_vec();
+        figures
+    }
+
+    #[test]
+    fn auto_weighs_every_regime_and_not_the_pool_alone() {
+        let auto = design(ObserverKind::Auto, None);
+        // Example 1's tuning set has three regimes, in this order.
+        let names: Vec<String> = (scoring(&auto, &SPREADS).regimes.parts.iter())
+            .map(|r| r.name.clone())
+            .collect();
+        assert_eq!(names, ["random starts", "from scenario", "start-up"]);
+        // `pool` is best from random starts (0.08 against 0.10) and twice as bad from the scenario's
+        // start: (0.08 + 0.40 + 0.20) / 3 = 0.2267 against `both`'s (0.10 + 0.12 + 0.16) / 3 = 0.1267.
+        let pool = in_regimes("ukf_box", [(0.04, 0.04), (0.1, 0.3), (0.1, 0.1)], 1000.0);
+        let both = in_regimes("ekf_map", [(0.05, 0.05), (0.06, 0.06), (0.08, 0.08)], 400.0);
+        assert!((tuning_score(&pool, &scoring(&auto, &SPREADS)).value - 0.68 / 3.0).abs() < 1e-12);
+        assert!((tuning_score(&both, &scoring(&auto, &SPREADS)).value - 0.38 / 3.0).abs() < 1e-12);
+        let map = in_regimes("map", [(0.5, 0.5); 3], 100.0);
+        assert_eq!(
+            chosen(&auto, &[map.clone(), pool.clone(), both.clone()]),
+            ObserverKind::EkfMap
+        );
+        // A kind that wins every regime but lost a tuning run is not chosen.
+        let mut lost = in_regimes("ekf_restart", [(0.01, 0.01); 3], 500.0);
+        lost.lost.tuning = Some(crate::observers::lost::Lost {
+            lost: 1,
+            runs: 88,
+            ..Default::default()
+        });
+        assert_eq!(
+            chosen(&auto, &[map.clone(), pool.clone(), both.clone(), lost]),
+            ObserverKind::EkfMap
+        );
+        // On the random starts' term alone (the pool of old), `pool` wins.
+        let random_only = |f: &ObserverFigures| {
+            let mut f = f.clone();
+            f.tuning_terms.truncate(1);
+            f
+        };
+        let pooled = [random_only(&map), random_only(&pool), random_only(&both)];
+        assert_eq!(chosen(&auto, &pooled), ObserverKind::UkfBox);
+        // The reason names the regimes.
+        let (_, why) = choose(&auto, &[map, pool, both], &scoring(&auto, &SPREADS)).unwrap();
+        assert!(
+            why.contains("the mean over random starts, from scenario and start-up of"),
+            "{why}"
+        );
     }
 }

@@ -83,6 +83,9 @@ pub struct ObserverFigures {
     pub instructions: f64,
     /// Per target.
     pub targets: Vec<Figures>,
+    /// The score's terms on the tuning runs, one per regime ([`super::score::regimes`]): what `auto`
+    /// chooses on; empty for a reference (not run on the tuning runs).
+    pub tuning_terms: Vec<super::score::Term>,
     /// Its estimate of every target at every sample of the scenario (NaN before its first).
     pub scenario: Rows,
     /// The same along [`MismatchRuns::scenario`](crate::data::MismatchRuns::scenario), when parameters are uncertain.
@@ -133,6 +136,9 @@ pub struct Comparison {
     pub from_observer_start: Vec<FromObserverStart>,
     /// What `observer()` is, and why.
     pub chosen: (ObserverKind, String),
+    /// What the tuning runs were scored with: every kind's tuning and `auto` (the regimes the
+    /// report's score table shows).
+    pub scoring: super::score::Scoring,
     /// Largest one-sample difference between the chip's model (`chip_substeps`) and the learning
     /// simulation's (`substeps`) over the validation states, per state, relative to its spread.
     pub chip_model_error: Vec<f64>,

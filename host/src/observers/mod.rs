@@ -55,7 +55,7 @@ pub fn compare(
             return Err(refused);
         }
     }
-    let chosen = choose(design, &bench.observers, &bench.spreads)?;
+    let chosen = choose(design, &bench.observers, &bench.scoring)?;
     progress.set_message(format!(
         "{}: the host-only references (the on-line moving-horizon estimate, the particle floor)",
         design.name
@@ -74,6 +74,7 @@ pub fn compare(
         tuned: bench.tuned,
         unavailable: bench.unavailable,
         chosen,
+        scoring: bench.scoring,
         beside: bench.beside,
         from_observer_start: bench.from_observer_start,
         chip_model_error: chip_model_error(design, result),

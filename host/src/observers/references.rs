@@ -101,7 +101,12 @@ fn floor(bench: &Bench<'_>) -> Reference {
         let rmse = (0..design.targets.len())
             .map(|t| errors(&runs.validation.runs, &rows, t, bench.windows()).0)
             .collect();
-        let lost = lost::which(&runs.validation.runs, &rows, bench.windows(), &bench.lost_spreads());
+        let lost = lost::which(
+            &runs.validation.runs,
+            &rows,
+            bench.windows(),
+            &bench.scoring.lost_spreads(),
+        );
         lost_at_every = Some(match lost_at_every.take() {
             Some(before) => before.into_iter().filter(|i| lost.contains(i)).collect(),
             None => lost,

@@ -81,6 +81,7 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
             Some((x0, from.targets.iter().map(|(rmse, _)| *rmse).collect()))
         }),
         observer: comparison.chosen.clone(),
+        tuning_score: super::tuning_score::assemble(comparison),
         corrected_tuning: match comparison.tuned.corrected() {
             Some(t) => CorrectedTuning::Tuned {
                 g: t.constants.g.clone(),

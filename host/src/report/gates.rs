@@ -444,6 +444,7 @@ mod tests {
             kind: name,
             instructions,
             targets: rmse.map(figures).to_vec(),
+            tuning_terms: Vec::new(),
             scenario: Rows::default(),
             mismatch_scenario: None,
             lost: Default::default(),
@@ -460,6 +461,11 @@ mod tests {
             beside: Vec::new(),
             from_observer_start: Vec::new(),
             chosen: (chosen, String::new()),
+            scoring: crate::observers::score::Scoring {
+                spreads: vec![1.0; 2],
+                weights: vec![1.0; 2],
+                regimes: crate::observers::score::Regimes::whole(0, 0),
+            },
             chip_model_error: Vec::new(),
         }
     }

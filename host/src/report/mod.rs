@@ -17,7 +17,9 @@ pub mod references;
 pub mod runs;
 pub mod scenarios;
 mod schema;
+mod sensitivity;
 mod tables;
+pub mod tuning_score;
 
 use std::path::{Path, PathBuf};
 

@@ -53,15 +53,16 @@ pub struct Report<'a> {
     pub ekf_tuning: Option<EkfTuning>,
     /// How the moving-horizon observer on the chip (`mhe`) was tuned, when the host could run one.
     pub mhe_tuning: Option<ChipReport>,
-    /// The EKF from the box centre started instead at the scenario's `observer_x0` (the paper's
-    /// `x̂(0)`): that start, and its scenario RMSE per target in spec order.
+    /// The box EKF started at the scenario's `observer_x0`: that start, its scenario RMSE per target.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ekf_from_observer_x0: Option<(Vec<f64>, Vec<f64>)>,
     /// How the model-corrected map was tuned, or why the design has none.
     pub corrected_tuning: CorrectedTuning,
-    /// What the design's `observer()` is (`map`, `corrected` or `ekf`, the map-started EKF), and why.
+    /// What the design's `observer()` is, and why.
     pub observer: (crate::spec::ObserverKind, String),
-    /// The model on the chip against the learning simulation's.
+    /// Every kind's tuning score, term by term.
+    pub tuning_score: super::tuning_score::TuningScore,
+    /// The chip's model against the learning simulation's.
     pub chip_model: ChipModel,
     /// The quality gates the design fails ([`gates`](super::gates)), one sentence each; empty when it passes them all.
     pub quality_gates: Vec<String>,
@@ -243,8 +244,7 @@ pub struct ChipModel {
     pub chip_substeps: usize,
     /// RK4 steps per sample of the learning simulation.
     pub simulation_substeps: usize,
-    /// Per state: largest one-sample difference of the two over the validation states, relative to
-    /// the state's spread.
+    /// Per state, the largest one-sample difference over the validation states over its spread.
     pub max_step_difference_relative: Vec<f64>,
 }
 

@@ -84,6 +84,7 @@ pub fn observers_table(report: &Report<'_>) -> String {
     }
     s.push_str(&drift_table(report));
     s.push_str(&super::lost::table(report));
+    s.push_str(&super::tuning_score::table(report));
     let _ = writeln!(s, "\n`observer()` is {:?}: {}.", report.observer.0, report.observer.1);
     if let CorrectedTuning::Unavailable { unavailable } = &report.corrected_tuning {
         let _ = writeln!(s, "\nNo model-corrected map: {unavailable}.");
@@ -196,6 +197,7 @@ fn mismatch_table(report: &Report<'_>, m: &MismatchReport) -> String {
             );
         }
     }
+    s.push_str(&super::sensitivity::sentence(report, m));
     s
 }
 

@@ -14,9 +14,9 @@
 //! ```
 //!
 //! `θ` minimises the [score](crate::observers::score) (pooled RMSE and the 95th percentile over runs, per
-//! target, over its spread) on the tuning runs from random starts (the filter that starts at the
-//! box centre is tuned for starts anywhere in the box; `auto` judges it with the others on the runs
-//! from the scenario's start too): first on an isotropic decade grid (`a_i = a`,
+//! target, over its spread, averaged over the tuning set's regimes: random starts, each scenario's
+//! start, the start-up) on the tuning runs, the criterion every kind and `auto` share: first on an
+//! isotropic decade grid (`a_i = a`,
 //! `b_i = b`, `a ∈ {−8…0}`, `b ∈ {−3…0}`), then by Nelder–Mead (`argmin`) from the
 //! [`STARTS`] best grid points, each coordinate free (until the simplex's scores agree within
 //! 1e-4). Deterministic: a fixed grid, fixed starts and iterations, the best by cost and the first
@@ -29,6 +29,7 @@
 //! interferes least), no watch (`τ = ∞`) only where it is strictly best.
 
 use crate::data::{DataSet, Rows};
+use crate::observers::score::Scoring;
 use crate::plant::kalman::EkfConstants;
 use crate::plant::ModelCode;
 use crate::spec::{Design, FixedFilter};
@@ -80,12 +81,10 @@ fn score(
     constants: &EkfConstants,
     centre: &[f64],
     data: &DataSet,
-    target_spreads: &[f64],
-    weights: &[f64],
+    scoring: &Scoring,
 ) -> f64 {
     let estimates = estimator(code, constants, centre, data).expect("size checked");
-    let window = |run: &crate::data::Run| data.horizon.saturating_sub(1)..run.targets.len();
-    crate::observers::score::Score::of(&data.runs, &estimates, target_spreads, weights, window).objective()
+    scoring.score(&data.runs, &estimates).objective()
 }
 
 /// The tuning criterion as `argmin` sees it: `θ` to the score.
@@ -98,8 +97,7 @@ struct Criterion<'a> {
     centre: &'a [f64],
     spreads: &'a [f64],
     data: &'a DataSet,
-    target_spreads: &'a [f64],
-    weights: &'a [f64],
+    scoring: &'a Scoring,
     count: &'a std::sync::atomic::AtomicU64,
 }
 
@@ -113,8 +111,7 @@ impl Criterion<'_> {
             &constants,
             self.centre,
             self.data,
-            self.target_spreads,
-            self.weights,
+            self.scoring,
         );
         // Nelder–Mead must be able to order a diverging candidate: the worst, not infinity.
         score.min(1e30)
@@ -147,7 +144,7 @@ pub fn tune(
         &crate::plant::Coordinates::plant(code.dimensions.states),
         tuning,
         learning,
-        target_spreads,
+        &Scoring::of_tuning(design, target_spreads, tuning.runs.len()),
     )
 }
 
@@ -199,7 +196,7 @@ pub fn tune_with(
     coordinates: &crate::plant::Coordinates,
     tuning: &DataSet,
     learning: &DataSet,
-    target_spreads: &[f64],
+    scoring: &Scoring,
 ) -> Option<Tuned> {
     use argmin::core::{Executor, State};
     use argmin::solver::neldermead::NelderMead;
@@ -219,7 +216,6 @@ pub fn tune_with(
     };
     let spreads = spreads_in(learning, coordinates);
     let count = std::sync::atomic::AtomicU64::new(0);
-    let weights = crate::observers::score::weights(design);
     let criterion = Criterion {
         estimator,
         design,
@@ -228,8 +224,7 @@ pub fn tune_with(
         centre: &centre,
         spreads: &spreads,
         data: tuning,
-        target_spreads,
-        weights: &weights,
+        scoring,
         count: &count,
     };
     // The decades of each free half: `a` over −8…0 unless `Q` is fixed, `b` over −3…0 unless `P(0)` is.
@@ -301,7 +296,7 @@ pub fn tune_with(
         constants
     };
     let (threshold, cost) = crate::observers::score::lowest(&WATCH_THRESHOLDS, |t| {
-        score(estimator, code, &watched(t), &centre, tuning, target_spreads, &weights)
+        score(estimator, code, &watched(t), &centre, tuning, scoring)
     });
     constants.watch.threshold = threshold;
     Some(Tuned {

@@ -26,9 +26,10 @@ pub struct Bench<'a> {
     pub result: &'a DesignResult,
     /// Its model as programs.
     pub code: &'a ModelCode,
-    /// Each target's spread over the tuning runs: normalises every tuning criterion (the tuning runs
-    /// are the only data any constant is chosen on).
-    pub spreads: Vec<f64>,
+    /// What every tuning criterion and `auto` score the tuning runs with: each target's spread over
+    /// them (the tuning runs are the only data any constant is chosen on), its weight, and the
+    /// tuning set's regimes.
+    pub scoring: score::Scoring,
     /// The map's predicted cost.
     pub map_cost: Cost,
     /// The figures of the kinds judged so far, in registry order (the map's first).
@@ -114,7 +115,7 @@ impl<'a> Bench<'a> {
             }),
             long: on(&runs.long),
         };
-        let spreads = result
+        let spreads: Vec<f64> = result
             .targets
             .iter()
             .map(|t| crate::fit::evaluate::evaluate(&runs.tuning, t.index, &t.fit).target_spread)
@@ -124,7 +125,7 @@ impl<'a> Bench<'a> {
             design,
             result,
             code,
-            spreads,
+            scoring: score::Scoring::of_tuning(design, &spreads, runs.tuning.runs.len()),
             map_cost: cost::of_maps(&fitted, horizon, design.tau),
             observers: Vec::new(),
             tuned: TunedKinds::default(),
@@ -159,21 +160,7 @@ impl<'a> Bench<'a> {
     /// The [score](score::Score::objective) of `estimates`, one per tuning run, its lost runs counted
     /// first.
     pub fn tuning_score(&self, estimates: &[Rows]) -> f64 {
-        let weights = score::weights(self.design);
-        score::Score::of(
-            &self.result.runs.tuning.runs,
-            estimates,
-            &self.spreads,
-            &weights,
-            self.windows(),
-        )
-        .objective()
-    }
-
-    /// The spreads a run's loss is judged against on every set ([`score::counted`]): the targets'
-    /// spreads, ∞ for a target of weight 0.
-    pub fn lost_spreads(&self) -> Vec<f64> {
-        score::counted(&self.spreads, &score::weights(self.design))
+        self.scoring.score(&self.result.runs.tuning.runs, estimates).objective()
     }
 
     /// One kind's figures on every set: `estimate(run, map)` is its estimate of every target at every

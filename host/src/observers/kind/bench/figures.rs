@@ -90,7 +90,7 @@ impl Bench<'_> {
             .collect();
         // Lost runs per set, on the targets of weight above 0; a reference (`tuned` false) is not run
         // on the tuning and long runs.
-        let counted = self.lost_spreads();
+        let counted = self.scoring.lost_spreads();
         let lost = |runs: &[Run], estimates: &[Rows], restarts: &[u32]| {
             lost::count(runs, estimates, restarts, windows, &counted)
         };
@@ -119,10 +119,17 @@ impl Bench<'_> {
                     which(&m.corners_set.runs, on_corners)
                 }),
         };
+        // The score's terms on the tuning runs, regime by regime (a reference is not run on them).
+        let tuning_terms = if tuned {
+            self.scoring.terms(&runs.tuning.runs, &on_tuning)
+        } else {
+            Vec::new()
+        };
         ObserverFigures {
             kind,
             instructions,
             targets,
+            tuning_terms,
             mismatch_scenario,
             scenario,
             lost,

@@ -50,13 +50,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     };
     let (design, code) = (bench.design, bench.code);
     let setting = corrected::Setting::for_design(design, bench.result, code, &state_targets);
-    let tuned = corrected::tune(
-        &setting,
-        &bench.result.runs.tuning,
-        bench.tuning_maps(),
-        &bench.spreads,
-        &crate::observers::score::weights(bench.design),
-    );
+    let tuned = corrected::tune(&setting, &bench.result.runs.tuning, bench.tuning_maps(), &bench.scoring);
     let programs = crate::observers::kind::corrected::program::correction_code(code, &tuned.constants);
     let figures = bench.judge(
         "corrected",

@@ -2,8 +2,8 @@
 //! ([`crate::observers::score::Score`], lost runs first), over a few layouts ([`layouts`]).
 
 use super::run::{self, BankConstants, Layout, Spacing};
-use crate::data::{DataSet, Rows, Run};
-use crate::observers::score::Score;
+use crate::data::{DataSet, Rows};
+use crate::observers::score::Scoring;
 use crate::plant::kalman::EkfConstants;
 use crate::plant::ModelCode;
 use crate::spec::{Axis, Design};
@@ -59,10 +59,9 @@ pub fn choose(
     spreads: &[f64],
 ) -> Option<(Scored, (Scored, BankConstants))> {
     let member = crate::observers::kind::ukf_box::program::member_code(code, ukf);
-    let weights = crate::observers::score::weights(design);
+    let scoring = Scoring::of_tuning(design, spreads, tuning.runs.len());
     let score = |estimates: &[Rows]| -> Scored {
-        let window = |run: &Run| tuning.horizon.saturating_sub(1)..run.targets.len();
-        let score = Score::of(&tuning.runs, estimates, spreads, &weights, window);
+        let score = scoring.score(&tuning.runs, estimates);
         (score.lost, score.value)
     };
     let single = score(&crate::observers::kind::ukf_box::run::estimates(

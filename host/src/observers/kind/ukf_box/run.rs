@@ -75,7 +75,7 @@ pub fn tune(
         &code.log_coordinates,
         tuning,
         learning,
-        target_spreads,
+        &crate::observers::score::Scoring::of_tuning(design, target_spreads, tuning.runs.len()),
     )
 }
 

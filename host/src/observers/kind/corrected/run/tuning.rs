@@ -4,7 +4,8 @@
 //! # Tuning
 //!
 //! `(G, K, K₀, ln T)` minimises the [score](crate::observers::score) on the tuning runs (pooled RMSE and the
-//! 95th percentile over runs, per target over its spread), the same criterion as the EKF's, by
+//! 95th percentile over runs, per target over its spread, over the tuning set's regimes; a lost run
+//! first), the same criterion as the EKF's, by
 //! Nelder–Mead (`argmin`) from a few fixed starts (closed loop: the
 //! one-step least-squares criterion is not the closed-loop one), once with `G` free and once with
 //! `G = 0` (no map after the start-up: the chip's steady sample is then the model and `K` alone);
@@ -17,6 +18,7 @@ use argmin::solver::neldermead::NelderMead;
 
 use crate::data::{DataSet, Rows};
 use crate::observers::kind::corrected::program::{correction_code, CorrectionConstants};
+use crate::observers::score::Scoring;
 
 use super::{estimate_rows, Setting};
 
@@ -45,9 +47,8 @@ struct Criterion<'a> {
     setting: &'a Setting<'a>,
     data: &'a DataSet,
     maps: &'a [Rows],
-    target_spreads: &'a [f64],
-    /// Each target's weight in the score.
-    weights: &'a [f64],
+    /// What the tuning runs are scored with.
+    scoring: &'a Scoring,
     /// Whether `G = 0` is fixed (and left out of `θ`): the chip reads no map after the start-up.
     without_map: bool,
 }
@@ -64,14 +65,7 @@ impl Criterion<'_> {
             .zip(self.maps)
             .map(|(run, map)| estimate_rows(self.setting, &code, constants, map, run).rows)
             .collect();
-        let first = self.setting.first;
-        let score = crate::observers::score::of_estimates(
-            &self.data.runs,
-            &estimates,
-            self.target_spreads,
-            self.weights,
-            |run| first..run.targets.len(),
-        );
+        let score = self.scoring.score(&self.data.runs, &estimates).objective();
         // A diverging candidate is the worst, not an infinity that Nelder–Mead cannot order.
         score.min(1e30)
     }
@@ -102,9 +96,8 @@ impl Criterion<'_> {
 /// Nelder–Mead iterations per start.
 const ITERATIONS: u64 = 500;
 
-/// Chooses the gains on `tuning` (its map estimates `maps`), see the module docs, each target's
-/// error over its spread and weighted as the score weighs it.
-pub fn tune(setting: &Setting<'_>, tuning: &DataSet, maps: &[Rows], target_spreads: &[f64], weights: &[f64]) -> Tuned {
+/// Chooses the gains on `tuning` (its map estimates `maps`), see the module docs, scored by `scoring`.
+pub fn tune(setting: &Setting<'_>, tuning: &DataSet, maps: &[Rows], scoring: &Scoring) -> Tuned {
     use rayon::prelude::*;
     let (nx, ny) = (setting.code.dimensions.states, setting.code.dimensions.outputs);
     // Starts: the paper's blend at three strengths, and two constant-gain observers.
@@ -127,8 +120,7 @@ pub fn tune(setting: &Setting<'_>, tuning: &DataSet, maps: &[Rows], target_sprea
         setting,
         data: tuning,
         maps,
-        target_spreads,
-        weights,
+        scoring,
         without_map,
     };
     let start_cost = starts

@@ -3,11 +3,15 @@
 //!
 //! A pooled RMSE over runs from random starts is dominated by the many runs where every observer does
 //! well; a filter that converges slowly from a few starts hides there. The score therefore counts the
-//! tail beside the pool. For each target `t` with spread `s_t` (its range over the tuning runs):
+//! tail beside the pool. For each target `t` with spread `s_t` (its range over the tuning runs), on
+//! one regime of the tuning set ([`regimes`]: random starts, each scenario's start, the start-up):
 //!
 //! ```text
 //! score = Σ_t w_t (RMSE_t + P95_t) / s_t  /  Σ_t w_t,
 //! ```
+//!
+//! and a set's score is the mean of its regimes' ([`Scoring`]), so that no regime the user asks
+//! about is drowned by the others.
 //!
 //! `RMSE_t` the RMSE over every window of every run, `P95_t` the 95th percentile over runs of each
 //! run's own RMSE ([`percentile_95`]), `w_t` the target's `weight` (default 1: the plain mean over
@@ -22,6 +26,9 @@
 
 use crate::data::{Rows, Run};
 use crate::spec::Design;
+
+pub mod regimes;
+pub use regimes::{Regimes, Scoring, Term};
 
 /// The spreads a run's loss is judged against: a target of weight 0 is never lost on its error (its
 /// spread, as [`crate::observers::lost`] sees it, is ∞); a non-finite estimate of it still loses the run.
@@ -55,22 +62,6 @@ pub struct Score {
 }
 
 impl Score {
-    /// The score of `estimates` of `runs` over samples `window(run)` ([`of_estimates`]), with their
-    /// lost runs ([`crate::observers::lost::count`]) on the targets of weight above 0 (a run whose
-    /// estimate of any target is not finite is lost still).
-    pub fn of(
-        runs: &[Run],
-        estimates: &[Rows],
-        spreads: &[f64],
-        weights: &[f64],
-        window: impl Fn(&Run) -> std::ops::Range<usize> + Copy,
-    ) -> Self {
-        Score {
-            lost: crate::observers::lost::count(runs, estimates, &[], window, &counted(spreads, weights)).lost,
-            value: of_estimates(runs, estimates, spreads, weights, window),
-        }
-    }
-
     /// One number a search minimises, ordered as the scores are while a value stays below
     /// [`LOST_RUN`]: `LOST_RUN · lost + value`.
     pub fn objective(self) -> f64 {
@@ -128,25 +119,6 @@ pub fn score(pooled: &[f64], p95: &[f64], spreads: &[f64], weights: &[f64]) -> f
     } else {
         f64::INFINITY
     }
-}
-
-/// [`score`] of `estimates` of `runs` over samples `window(run)`.
-pub fn of_estimates(
-    runs: &[Run],
-    estimates: &[Rows],
-    spreads: &[f64],
-    weights: &[f64],
-    window: impl Fn(&Run) -> std::ops::Range<usize> + Copy,
-) -> f64 {
-    let (pooled, p95): (Vec<f64>, Vec<f64>) = (0..spreads.len())
-        .map(|t| {
-            (
-                errors(runs, estimates, t, window).0,
-                percentile_95(&per_run_rmse(runs, estimates, t, window)),
-            )
-        })
-        .unzip();
-    score(&pooled, &p95, spreads, weights)
 }
 
 /// The candidate of lowest `score` (the first of equals, in `candidates`' order), scored in
@@ -248,12 +220,16 @@ mod tests {
             parameters: Vec::new(),
         };
         let runs = [run];
-        let window = |_: &Run| 0..8;
-        let both = Score::of(&runs, &[rows([0.5, 3.0])], &[1.0, 1.0], &[1.0, 1.0], window);
+        let scoring = |weights: [f64; 2]| Scoring {
+            spreads: vec![1.0, 1.0],
+            weights: weights.to_vec(),
+            regimes: Regimes::whole(0, 1),
+        };
+        let both = scoring([1.0, 1.0]).score(&runs, &[rows([0.5, 3.0])]);
         assert_eq!((both.lost, both.value), (1, 3.5));
-        let first = Score::of(&runs, &[rows([0.5, 3.0])], &[1.0, 1.0], &[1.0, 0.0], window);
+        let first = scoring([1.0, 0.0]).score(&runs, &[rows([0.5, 3.0])]);
         assert_eq!((first.lost, first.value), (0, 1.0));
-        let nan = Score::of(&runs, &[rows([0.5, f64::NAN])], &[1.0, 1.0], &[1.0, 0.0], window);
+        let nan = scoring([1.0, 0.0]).score(&runs, &[rows([0.5, f64::NAN])]);
         assert_eq!((nan.lost, nan.value), (1, 1.0));
     }
 

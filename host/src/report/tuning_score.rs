@@ -1,0 +1,159 @@
+//! The tuning score term by term: per kind, each regime's score ([`crate::observers::score::regimes`])
+//! and their mean, the number `auto` chooses on, so that a user sees why a kind won and which kind
+//! wins which regime.
+
+use std::fmt::Write;
+
+use serde::Serialize;
+
+use super::schema::Report;
+use crate::observers::figures::Comparison;
+use crate::observers::score::regimes::Span;
+
+/// How far above the best of a regime a kind may score and still count as winning it too.
+pub const WINS_WITHIN: f64 = 0.10;
+
+/// The tuning score of every kind, regime by regime.
+#[derive(Serialize)]
+pub struct TuningScore {
+    /// Each target's spread over the tuning runs, in the spec's order of targets.
+    pub spreads: Vec<f64>,
+    /// Each target's weight.
+    pub weights: Vec<f64>,
+    /// The regimes, in the order of each kind's terms.
+    pub regimes: Vec<RegimeReport>,
+    /// Per kind, in the report's order of observers.
+    pub kinds: Vec<KindScore>,
+}
+
+/// One regime of the tuning set.
+#[derive(Serialize)]
+pub struct RegimeReport {
+    /// `random starts`, `from <scenario>` or `start-up`.
+    pub name: String,
+    /// Its runs.
+    pub runs: usize,
+    /// Its samples of each run from the first estimate; `null`: to the run's end.
+    pub samples: Option<usize>,
+}
+
+/// One kind's score on the tuning runs.
+#[derive(Serialize)]
+pub struct KindScore {
+    /// The kind.
+    pub kind: &'static str,
+    /// Each regime's score (`null` where it is not finite).
+    pub terms: Vec<Option<f64>>,
+    /// Per regime, per target in the spec's order: the pooled RMSE and the p95 over its runs.
+    pub figures: Vec<Vec<(Option<f64>, Option<f64>)>>,
+    /// Their mean: the tuning score.
+    pub score: Option<f64>,
+    /// Tuning runs lost (counted before the score).
+    pub lost: usize,
+}
+
+/// The table's data from the comparison.
+pub fn assemble(comparison: &Comparison) -> TuningScore {
+    let scoring = &comparison.scoring;
+    let finite = |v: f64| v.is_finite().then_some(v);
+    TuningScore {
+        spreads: scoring.spreads.clone(),
+        weights: scoring.weights.clone(),
+        regimes: (scoring.regimes.parts.iter())
+            .map(|r| RegimeReport {
+                name: r.name.clone(),
+                runs: r.runs.len(),
+                samples: match r.span {
+                    Span::Whole => None,
+                    Span::First(samples) => Some(samples),
+                },
+            })
+            .collect(),
+        kinds: (comparison.observers.iter())
+            .filter(|o| !o.tuning_terms.is_empty())
+            .map(|o| KindScore {
+                kind: o.kind,
+                terms: o.tuning_terms.iter().map(|t| finite(scoring.term_value(t))).collect(),
+                figures: (o.tuning_terms.iter())
+                    .map(|t| t.targets.iter().map(|&(r, p)| (finite(r), finite(p))).collect())
+                    .collect(),
+                score: finite(scoring.value(&o.tuning_terms)),
+                lost: o.lost.tuning.map_or(0, |l| l.lost),
+            })
+            .collect(),
+    }
+}
+
+/// `report.md`'s table: a row per kind, a column per regime, then the score and the lost runs; and
+/// which kind wins each regime (the lowest score there among the kinds that lost the fewest tuning
+/// runs), or the one kind within [`WINS_WITHIN`] of the best in every regime.
+pub fn table(report: &Report<'_>) -> String {
+    let score = &report.tuning_score;
+    if score.kinds.is_empty() {
+        return String::new();
+    }
+    let what: Vec<String> = (score.regimes.iter())
+        .map(|r| match r.samples {
+            None => format!("{} ({} runs, every sample from the first estimate)", r.name, r.runs),
+            Some(k) => format!(
+                "{} ({} runs, the first {k} samples = {} {} from the first estimate)",
+                r.name,
+                r.runs,
+                k as f64 * report.tau,
+                report.time_unit
+            ),
+        })
+        .collect();
+    let mut s = format!(
+        "\nThe tuning score, term by term: per regime of the tuning runs, Σ weight · (pooled RMSE + p95 over runs) / spread over the targets, / Σ weight; the score is the mean over the regimes, lost tuning runs counted first. Regimes: {}.\n\n| observer | {} | score | lost tuning |\n|---|{}---|---|\n",
+        what.join("; "),
+        (score.regimes.iter().map(|r| r.name.as_str())).collect::<Vec<_>>().join(" | "),
+        "---|".repeat(score.regimes.len()),
+    );
+    let show = |v: Option<f64>| v.map_or("diverged".to_owned(), |v| format!("{v:.4}"));
+    for k in &score.kinds {
+        let terms: Vec<String> = k.terms.iter().map(|&t| show(t)).collect();
+        let _ = writeln!(
+            s,
+            "| {} | {} | {} | {} |",
+            k.kind,
+            terms.join(" | "),
+            show(k.score),
+            k.lost
+        );
+    }
+    s.push_str(&winners(score));
+    s
+}
+
+/// Which kind wins which regime, or the one that is within [`WINS_WITHIN`] of the best in all.
+fn winners(score: &TuningScore) -> String {
+    let fewest = score.kinds.iter().map(|k| k.lost).min().unwrap_or(0);
+    let kinds: Vec<&KindScore> = score.kinds.iter().filter(|k| k.lost == fewest).collect();
+    let term = |k: &KindScore, r: usize| k.terms[r].unwrap_or(f64::INFINITY);
+    let best: Vec<f64> = (0..score.regimes.len())
+        .map(|r| kinds.iter().map(|k| term(k, r)).fold(f64::INFINITY, f64::min))
+        .collect();
+    let everywhere: Vec<&str> = (kinds.iter())
+        .filter(|k| (0..best.len()).all(|r| term(k, r) <= best[r] * (1.0 + WINS_WITHIN)))
+        .map(|k| k.kind)
+        .collect();
+    if !everywhere.is_empty() {
+        return format!(
+            "\nWithin {:.0} % of the best in every regime: `{}`.\n",
+            WINS_WITHIN * 100.0,
+            everywhere.join("`, `")
+        );
+    }
+    let each: Vec<String> = (score.regimes.iter().zip(&best).enumerate())
+        .map(|(r, (regime, &b))| {
+            let winner = kinds.iter().find(|k| term(k, r) == b).map_or("none", |k| k.kind);
+            format!("{}: `{winner}`", regime.name)
+        })
+        .collect();
+    format!(
+        "\nNo kind is within {:.0} % of the best in every regime; the best of each: {}.\n",
+        WINS_WITHIN * 100.0,
+        each.join(", ")
+    )
+}
