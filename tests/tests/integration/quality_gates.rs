@@ -72,12 +72,7 @@ fn example_1_passes_every_gate_and_each_gate_bites() {
 #[test]
 fn the_observer_kind_is_chosen_within_the_instruction_budget() {
     use host::spec::ObserverKind::{Auto, Corrected, EkfMap, Map, Mhe, UkfBox};
-    let (mut design, result, comparison) = example_1();
-    let spreads: Vec<f64> = result
-        .targets
-        .iter()
-        .map(|t| host::fit::evaluate::evaluate(&result.runs.tuning, t.index, &t.fit).target_spread)
-        .collect();
+    let (mut design, _, comparison) = example_1();
     let predicted = |kind: &str| {
         comparison
             .observers
@@ -99,7 +94,8 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
         ],
         [126.0, 149.0, 265.0, 445.0, 447.0]
     );
-    let choose = |design: &host::spec::Design| host::observers::choose(design, &comparison.observers, &spreads);
+    let choose =
+        |design: &host::spec::Design| host::observers::choose(design, &comparison.observers, &comparison.scoring);
     design.observer = Auto;
     for (budget, kind) in [
         (None, UkfBox),
@@ -122,10 +118,12 @@ fn the_observer_kind_is_chosen_within_the_instruction_budget() {
     // The on-line MHE (~34199 predicted) is offered to `auto` only within a budget the spec sets:
     // made the best on the tuning runs, it is chosen under a budget that allows it, never without one.
     let mut better = comparison.observers.clone();
-    for f in &mut better.iter_mut().find(|o| o.kind == "mhe").unwrap().targets {
-        (f.rmse_tuning, f.p95_tuning) = (0.5 * f.rmse_tuning, 0.5 * f.p95_tuning);
+    for term in &mut better.iter_mut().find(|o| o.kind == "mhe").unwrap().tuning_terms {
+        for (rmse, p95) in &mut term.targets {
+            (*rmse, *p95) = (0.5 * *rmse, 0.5 * *p95);
+        }
     }
-    let choose_better = |design: &host::spec::Design| host::observers::choose(design, &better, &spreads);
+    let choose_better = |design: &host::spec::Design| host::observers::choose(design, &better, &comparison.scoring);
     design.budget.instructions = None;
     let (kind, why) = choose_better(&design).unwrap();
     assert_eq!(kind, UkfBox);
