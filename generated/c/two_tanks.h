@@ -207,7 +207,7 @@ void two_tanks_ekf_restart_init(two_tanks_ekf_restart *observer);
 two_tanks_status two_tanks_ekf_restart_push(two_tanks_ekf_restart *observer, const float *y, const float *u);
 two_tanks_status two_tanks_ekf_restart_estimate(const two_tanks_ekf_restart *observer, float *values, two_tanks_saturation *saturation);
 
-/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 1 Gauss-Newton
+/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 2 Gauss-Newton
  * step(s) over the last TWO_TANKS_HORIZON samples from the previous solution moved one sample on, each
  * solved by an L D L^T factorisation and projected onto the learning box. Thousands of instructions
  * per sample (docs/chip.md): the on-line estimate the map replaces. */

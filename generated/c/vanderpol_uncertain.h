@@ -204,7 +204,7 @@ void vanderpol_uncertain_ekf_restart_init(vanderpol_uncertain_ekf_restart *obser
 vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_push(vanderpol_uncertain_ekf_restart *observer, const float *y, const float *u);
 vanderpol_uncertain_status vanderpol_uncertain_ekf_restart_estimate(const vanderpol_uncertain_ekf_restart *observer, float *values, vanderpol_uncertain_saturation *saturation);
 
-/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 1 Gauss-Newton
+/* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 2 Gauss-Newton
  * step(s) over the last VANDERPOL_UNCERTAIN_HORIZON samples from the previous solution moved one sample on, each
  * solved by an L D L^T factorisation and projected onto the learning box. Thousands of instructions
  * per sample (docs/chip.md): the on-line estimate the map replaces. */

@@ -9,7 +9,7 @@ use super::kind::corrected::run as corrected;
 use super::score::{Score, Scoring, CHEAPER_WITHIN};
 use super::{ekf, kind, ObserverFigures};
 
-/// A kind's [score](score::regimes) on the tuning runs (the mean over the tuning set's regimes of
+/// A kind's [score](super::score::regimes) on the tuning runs (the mean over the tuning set's regimes of
 /// its terms), with its lost tuning runs.
 fn tuning_score(figures: &ObserverFigures, scoring: &Scoring) -> Score {
     Score {
@@ -82,7 +82,7 @@ fn over_budget(design: &Design, name: &str, instructions: f64, budget: f64) -> S
     )
 }
 
-/// The kind `observer()` is: the spec's, or for `auto` the lowest [score](score::score) on the
+/// The kind `observer()` is: the spec's, or for `auto` the lowest [score](super::score::score) on the
 /// tuning runs among the kinds within `[budget] instructions` (as [`cost`](crate::search::cost) predicts them;
 /// the moving-horizon estimate only when that budget is set), except
 /// that the cheapest kind (fewest predicted instructions) within [`CHEAPER_WITHIN`] of the best is
@@ -229,6 +229,7 @@ mod tests {
                 regime: "every run".into(),
                 targets: vec![(rmse, p95); 2],
             }],
+            tuning_estimates: Vec::new(),
             scenario: crate::data::Rows::default(),
             mismatch_scenario: None,
             lost: Default::default(),

@@ -86,6 +86,9 @@ pub struct ObserverFigures {
     /// The score's terms on the tuning runs, one per regime ([`super::score::regimes`]): what `auto`
     /// chooses on; empty for a reference (not run on the tuning runs).
     pub tuning_terms: Vec<super::score::Term>,
+    /// Its estimates on the tuning runs, run by run (empty for a reference): kept so that the terms
+    /// can be taken again once the start-up is settled ([`super::kind::Bench::settle_start_up`]).
+    pub tuning_estimates: Vec<Rows>,
     /// Its estimate of every target at every sample of the scenario (NaN before its first).
     pub scenario: Rows,
     /// The same along [`MismatchRuns::scenario`](crate::data::MismatchRuns::scenario), when parameters are uncertain.

@@ -51,6 +51,10 @@ pub fn compare(
         if let Some(figures) = (kind.tune)(&mut bench) {
             bench.observers.push(figures);
         }
+        let last_box_filter = kind::REGISTRY.iter().rposition(|k| k.filter_code.is_some());
+        if Some(i) == last_box_filter {
+            bench.settle_start_up();
+        }
         if let Some(refused) = bench.refused.take() {
             return Err(refused);
         }

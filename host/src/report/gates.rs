@@ -445,6 +445,7 @@ mod tests {
             instructions,
             targets: rmse.map(figures).to_vec(),
             tuning_terms: Vec::new(),
+            tuning_estimates: Vec::new(),
             scenario: Rows::default(),
             mismatch_scenario: None,
             lost: Default::default(),
@@ -465,6 +466,7 @@ mod tests {
                 spreads: vec![1.0; 2],
                 weights: vec![1.0; 2],
                 regimes: crate::observers::score::Regimes::whole(0, 0),
+                start_up_by: crate::observers::score::StartUpBy::Horizons,
             },
             chip_model_error: Vec::new(),
         }

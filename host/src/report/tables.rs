@@ -87,7 +87,10 @@ pub fn observers_table(report: &Report<'_>) -> String {
     s.push_str(&super::tuning_score::table(report));
     let _ = writeln!(s, "\n`observer()` is {:?}: {}.", report.observer.0, report.observer.1);
     if let CorrectedTuning::Unavailable { unavailable } = &report.corrected_tuning {
-        let _ = writeln!(s, "\nNo model-corrected map: {unavailable}.");
+        let _ = writeln!(
+            s,
+            "\nNo model-corrected map, map-started or restarted EKF: {unavailable}."
+        );
     }
     if report.observers.len() < 2 {
         let _ = writeln!(s, "\nNo EKF: the model is beyond the sizes the host runs one for.");

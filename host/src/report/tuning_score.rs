@@ -8,7 +8,9 @@ use serde::Serialize;
 
 use super::schema::Report;
 use crate::observers::figures::Comparison;
-use crate::observers::score::regimes::Span;
+use crate::observers::score::regimes::{Span, START_UP};
+use crate::observers::score::settle::{OVER_RUNS, SETTLED_WITHIN};
+use crate::observers::score::StartUpBy;
 
 /// How far above the best of a regime a kind may score and still count as winning it too.
 pub const WINS_WITHIN: f64 = 0.10;
@@ -22,6 +24,8 @@ pub struct TuningScore {
     pub weights: Vec<f64>,
     /// The regimes, in the order of each kind's terms.
     pub regimes: Vec<RegimeReport>,
+    /// How the start-up regime's length was chosen, in words.
+    pub start_up_by: String,
     /// Per kind, in the report's order of observers.
     pub kinds: Vec<KindScore>,
 }
@@ -69,6 +73,18 @@ pub fn assemble(comparison: &Comparison) -> TuningScore {
                 },
             })
             .collect(),
+        start_up_by: match scoring.start_up_by {
+            StartUpBy::Spec => "as `tuning.start_up` sets it".to_owned(),
+            StartUpBy::Settled(kind, samples) => format!(
+                "{}: `{kind}`, the slowest box filter, settles in {samples} samples on the random starts (the error of {:.0} % of the runs within {SETTLED_WITHIN}× its steady level to the run's end)",
+                if let Some(n) = comparison.scoring.regimes.start_up().filter(|&n| n > samples) { format!("at least one horizon N = {n}") } else { "as long as a box filter takes to settle".to_owned() },
+                OVER_RUNS * 100.0
+            ),
+            StartUpBy::Horizons => format!(
+                "{} horizons N: no box filter to settle",
+                crate::observers::kind::corrected::run::START_UP_HORIZONS
+            ),
+        },
         kinds: (comparison.observers.iter())
             .filter(|o| !o.tuning_terms.is_empty())
             .map(|o| KindScore {
@@ -96,11 +112,16 @@ pub fn table(report: &Report<'_>) -> String {
         .map(|r| match r.samples {
             None => format!("{} ({} runs, every sample from the first estimate)", r.name, r.runs),
             Some(k) => format!(
-                "{} ({} runs, the first {k} samples = {} {} from the first estimate)",
+                "{} ({} runs, the first {k} samples = {} {} from the first estimate{})",
                 r.name,
                 r.runs,
-                k as f64 * report.tau,
-                report.time_unit
+                crate::output::number(k as f64 * report.tau),
+                report.time_unit,
+                if r.name == START_UP {
+                    format!(", {}", score.start_up_by)
+                } else {
+                    String::new()
+                }
             ),
         })
         .collect();

@@ -51,16 +51,14 @@ pub struct SpecError {
 #[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Normalisation {
-    /// A constant appended to `Z`; the scale of `Γ` is set by `dΓ/dη ≥ ε`. Invariant to a shift of the
-    /// target and to `ε` (default).
+    /// A constant appended to `Z`; `dΓ/dη ≥ ε` sets the scale of `Γ` (invariant to `ε`, a shift; default).
     #[default]
     Intercept,
     /// The paper's equality `[∫₀¹ B] μ = (r_min + r_max)/2`, no constant in `Z` (faithful reproduction).
     Paper,
 }
 
-/// Which observer a design's `observer()` is (`[observer] kind`); the report judges every kind the
-/// design can have either way.
+/// Which observer `observer()` is (`[observer] kind`); the report judges every kind either way.
 #[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ObserverKind {
@@ -294,6 +292,8 @@ pub struct Design {
     /// The tuning runs (`[tuning]`): what every tunable constant of an observer is chosen on, never
     /// what accuracy is reported on.
     pub tuning: Validation,
+    /// The score's start-up in samples (`tuning.start_up`); `None`: [`mod@crate::observers::score::settle`].
+    pub start_up: Option<usize>,
     /// RK4 steps per sample of the model on the chip (`sampling.chip_substeps`, default 1).
     pub chip_substeps: usize,
     /// The maps. With a [`Search`], until [`crate::search::settle`] puts the chosen values here: the

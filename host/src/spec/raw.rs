@@ -297,6 +297,7 @@ pub(super) struct RawTuning {
     pub(super) trajectories: Option<usize>,
     pub(super) samples: Option<usize>,
     pub(super) seed: Option<u64>,
+    pub(super) start_up: Option<f64>,
 }
 
 #[derive(Deserialize)]

@@ -51,6 +51,7 @@ impl Validator {
             raw.scenario.as_ref(),
             map.horizon,
         )?;
+        let start_up = self.start_up(raw.tuning.as_ref(), tau, &tuning, map.horizon)?;
         if raw.sampling.chip_substeps == 0 {
             return Err(self.err(
                 "sampling.chip_substeps",
@@ -112,6 +113,7 @@ impl Validator {
             learning,
             validation,
             tuning,
+            start_up,
             chip_substeps: raw.sampling.chip_substeps,
             map,
             search,

@@ -155,6 +155,33 @@ impl Validator {
         self.runs("tuning", &raw, horizon)
     }
 
+    /// `tuning.start_up` (in the spec's time unit) in samples after the first estimate: at least one,
+    /// and within a tuning run's estimates.
+    pub(super) fn start_up(
+        &self,
+        raw: Option<&RawTuning>,
+        tau: f64,
+        tuning: &Validation,
+        horizon: usize,
+    ) -> Result<Option<usize>, SpecError> {
+        let Some(time) = raw.and_then(|t| t.start_up) else {
+            return Ok(None);
+        };
+        let estimates = tuning.samples + 1 - horizon;
+        let samples = (time / tau).round();
+        if !(samples >= 1.0 && samples <= estimates as f64) {
+            return Err(self.err(
+                "tuning.start_up",
+                format!("a start-up of {time} is {samples} samples of {tau}; a tuning run holds {estimates} estimates"),
+                format!(
+                    "set `tuning.start_up` between {tau} and {} (the sample period times the estimates of a run), or leave it out (the box filters' settling time is used)",
+                    tau * estimates as f64
+                ),
+            ));
+        }
+        Ok(Some(samples as usize))
+    }
+
     /// The random runs of section `section` (`validation` or `tuning`).
     pub(super) fn runs(&self, section: &str, raw: &RawValidation, horizon: usize) -> Result<Validation, SpecError> {
         if raw.trajectories == 0 {

@@ -538,11 +538,12 @@ fn a_kind_the_design_cannot_have_is_refused_before_any_fit_and_nothing_is_writte
         let message = String::from_utf8_lossy(&out.stderr);
         assert!(
             message.contains(&format!("no `{kind}` observer"))
-                && message.contains("state `X` is not a target")
+                && message.contains("states `X` and `S` are not targets")
+                && message.contains("weight = 0")
                 && message.contains("--kind map"),
             "{message}"
         );
-        assert_eq!(message.matches("is not a target").count(), 1, "said once: {message}");
+        assert_eq!(message.matches("are not targets").count(), 1, "said once: {message}");
         assert!(!output.exists());
     }
 }

@@ -316,6 +316,9 @@ const CASES: &[Case] = &[
         Swap("trajectories = 64", "trajectories = 4000"),
     ], Exact("model.parameters"), "fewer parameters with a range"),
     // The tuning runs count too: 10⁹ samples of them alone, everything else as shipped.
+    // The score's start-up: at least one sample (0.01 / 0.1 rounds to 0), at most a tuning run's 91 estimates.
+    case("tuning_start_up_short", Vdp, &[Swap("[tuning]", "[tuning]\nstart_up = 0.01")], Exact("tuning.start_up"), "between 0.1 and 9.1"),
+    case("tuning_start_up_long", Vdp, &[Swap("[tuning]", "[tuning]\nstart_up = 9.2")], Exact("tuning.start_up"), "or leave it out (the box filters' settling time"),
     case("budget_tuning_runs", Vdp, &[Swap("[tuning]", "[tuning]\ntrajectories = 1000000\nsamples = 1000")], Exact("tuning"), "fewer validation or tuning runs"),
     // A long scenario is named as such (it used to be blamed on `learning`): 10⁷ samples, its 16
     // tuning runs and its noise draws hold 7·10⁸ samples.

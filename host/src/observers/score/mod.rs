@@ -28,7 +28,9 @@ use crate::data::{Rows, Run};
 use crate::spec::Design;
 
 pub mod regimes;
-pub use regimes::{Regimes, Scoring, Term};
+pub mod settle;
+pub use regimes::{Regimes, Scoring, StartUpBy, Term};
+pub use settle::settle;
 
 /// The spreads a run's loss is judged against: a target of weight 0 is never lost on its error (its
 /// spread, as [`crate::observers::lost`] sees it, is ∞); a non-finite estimate of it still loses the run.
@@ -79,14 +81,19 @@ pub fn per_run_rmse(
     runs.iter()
         .zip(estimates)
         .map(|(run, estimate)| {
-            let range = window(run);
-            let count = range.len().max(1) as f64;
-            let sum: f64 = range
-                .map(|k| (estimate[k][target] - run.targets[k][target]).powi(2))
-                .sum();
-            (sum / count).sqrt()
+            let (sum, count) = squared_errors(run, estimate, target, window(run));
+            (sum / count.max(1) as f64).sqrt()
         })
         .collect()
+}
+
+/// The sum of the squared errors of target `target` over samples `range` of `run`, and their count.
+pub fn squared_errors(run: &Run, estimate: &Rows, target: usize, range: std::ops::Range<usize>) -> (f64, usize) {
+    let count = range.len();
+    let sum = range
+        .map(|k| (estimate[k][target] - run.targets[k][target]).powi(2))
+        .sum();
+    (sum, count)
 }
 
 /// The 95th percentile of `values`, linearly interpolated between order statistics (position
@@ -224,6 +231,7 @@ mod tests {
             spreads: vec![1.0, 1.0],
             weights: weights.to_vec(),
             regimes: Regimes::whole(0, 1),
+            start_up_by: StartUpBy::Horizons,
         };
         let both = scoring([1.0, 1.0]).score(&runs, &[rows([0.5, 3.0])]);
         assert_eq!((both.lost, both.value), (1, 3.5));

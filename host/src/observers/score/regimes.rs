@@ -17,12 +17,15 @@
 //!   estimate (sample `N − 1`) to the end;
 //! - **each declared scenario**: its [`SCENARIO_TUNING_RUNS`] runs from its start, every sample from
 //!   the first estimate;
-//! - **start-up**: every run, the first [`start_up`] samples from the first estimate.
+//! - **start-up**: every run, the first samples from the first estimate: `tuning.start_up` where the
+//!   spec sets it, else as many as the slowest box filter takes to settle ([`mod@super::settle`]; at
+//!   least one horizon `N`), [`START_UP_HORIZONS`] `· N` for a design without a box filter.
 //!
 //! Lost runs are counted over every run, every sample from the first estimate ([`Scoring::score`]).
 
 use super::{counted, percentile_95, Score};
 use crate::data::{Rows, Run, SCENARIO_TUNING_RUNS};
+use crate::observers::kind::corrected::run::START_UP_HORIZONS;
 use crate::spec::Design;
 
 /// Which samples of a regime's runs are judged, from the first estimate.
@@ -33,6 +36,9 @@ pub enum Span {
     /// This many samples (fewer where the run ends before).
     First(usize),
 }
+
+/// The start-up regime's name.
+pub const START_UP: &str = "start-up";
 
 /// One regime: its name as the report shows it, its runs (indices into the set) and its samples.
 #[derive(Clone, Debug, PartialEq)]
@@ -54,10 +60,25 @@ pub struct Regimes {
     pub parts: Vec<Regime>,
 }
 
-/// The start-up regime's samples from the first estimate: `START_UP_HORIZONS · N`, the start-up
-/// the model-corrected map blends out over and the drift is measured after (3 s on Example 1).
-pub fn start_up(design: &Design) -> usize {
-    crate::observers::kind::corrected::run::START_UP_HORIZONS * design.map.horizon
+/// How the start-up regime's length was chosen (the report says it).
+#[derive(Clone, Debug, PartialEq)]
+pub enum StartUpBy {
+    /// `tuning.start_up`.
+    Spec,
+    /// As long as this box filter (the slowest) took to settle on the tuning runs' random starts, in
+    /// these samples (the start-up is at least one horizon `N` whatever they are).
+    Settled(&'static str, usize),
+    /// [`START_UP_HORIZONS`] `· N`: no box filter settled (or none was run yet).
+    Horizons,
+}
+
+/// The start-up regime's samples from the first estimate before any filter has settled:
+/// `tuning.start_up`, else [`START_UP_HORIZONS`] `· N`.
+pub fn start_up(design: &Design) -> (usize, StartUpBy) {
+    match design.start_up {
+        Some(samples) => (samples, StartUpBy::Spec),
+        None => (START_UP_HORIZONS * design.map.horizon, StartUpBy::Horizons),
+    }
 }
 
 impl Regimes {
@@ -80,9 +101,9 @@ impl Regimes {
             });
         }
         parts.push(Regime {
-            name: "start-up".into(),
+            name: START_UP.into(),
             runs: (0..runs).collect(),
-            span: Span::First(start_up(design)),
+            span: Span::First(start_up(design).0),
         });
         parts.retain(|p| !p.runs.is_empty());
         Regimes {
@@ -100,6 +121,24 @@ impl Regimes {
                 runs: (0..runs).collect(),
                 span: Span::Whole,
             }],
+        }
+    }
+
+    /// The start-up regime's samples, if there is one.
+    pub fn start_up(&self) -> Option<usize> {
+        self.parts
+            .iter()
+            .find(|p| p.name == START_UP)
+            .and_then(|p| match p.span {
+                Span::First(samples) => Some(samples),
+                Span::Whole => None,
+            })
+    }
+
+    /// Gives the start-up regime `samples` samples (none where there is no start-up regime).
+    pub fn set_start_up(&mut self, samples: usize) {
+        for part in self.parts.iter_mut().filter(|p| p.name == START_UP) {
+            part.span = Span::First(samples);
         }
     }
 
@@ -131,6 +170,8 @@ pub struct Scoring {
     pub weights: Vec<f64>,
     /// The set's regimes.
     pub regimes: Regimes,
+    /// How the start-up regime's length was chosen.
+    pub start_up_by: StartUpBy,
 }
 
 impl Scoring {
@@ -140,6 +181,7 @@ impl Scoring {
             spreads: spreads.to_vec(),
             weights: super::weights(design),
             regimes: Regimes::of_tuning(design, runs),
+            start_up_by: start_up(design).1,
         }
     }
 
@@ -155,10 +197,7 @@ impl Scoring {
                         let per_run: Vec<f64> = (regime.runs.iter())
                             .map(|&i| {
                                 let window = regimes.window(regime.span, runs[i].targets.len());
-                                let samples = window.len();
-                                let squares: f64 = window
-                                    .map(|k| (estimates[i][k][t] - runs[i].targets[k][t]).powi(2))
-                                    .sum();
+                                let (squares, samples) = super::squared_errors(&runs[i], &estimates[i], t, window);
                                 sum += squares;
                                 count += samples;
                                 (squares / samples.max(1) as f64).sqrt()
@@ -256,6 +295,18 @@ mod tests {
                 },
             ]
         );
+        // Before a filter settles: 3N = 30 samples; `tuning.start_up = 2.5` (s, τ = 0.1 s): 25.
+        assert_eq!(start_up(&design), (30, StartUpBy::Horizons));
+        let text = std::fs::read_to_string(&path)
+            .unwrap()
+            .replace("[tuning]", "[tuning]\nstart_up = 2.5");
+        let set = crate::spec::parse(&path, &text).unwrap();
+        assert_eq!(start_up(&set), (25, StartUpBy::Spec));
+        let mut regimes = Regimes::of_tuning(&set, 88);
+        assert_eq!(regimes.start_up(), Some(25));
+        regimes.set_start_up(41);
+        assert_eq!(regimes.parts[2].span, Span::First(41));
+        assert_eq!(Regimes::whole(9, 88).start_up(), None);
     }
 
     #[test]
@@ -298,6 +349,7 @@ mod tests {
                     regime("C", vec![1], Span::First(10)),
                 ],
             },
+            start_up_by: StartUpBy::Horizons,
         };
         let terms = scoring.terms(&runs, &estimates);
         let close = |a: f64, b: f64| (a - b).abs() < 1e-12;

@@ -130,6 +130,7 @@ impl Bench<'_> {
             instructions,
             targets,
             tuning_terms,
+            tuning_estimates: if tuned { on_tuning } else { Vec::new() },
             mismatch_scenario,
             scenario,
             lost,

@@ -11,6 +11,52 @@ use crate::observers::score::{self, errors};
 use crate::spec::FixedFilter;
 
 impl Bench<'_> {
+    /// Once the box filters are judged, and unless the spec sets `tuning.start_up`: the score's
+    /// start-up lasts as long as the slowest of them takes to settle on the tuning runs' random
+    /// starts ([`mod@score::settle`]), at least one horizon `N` and at most a run's estimates, and every
+    /// kind judged so far has its terms taken again with it. The kinds after them are tuned on it.
+    pub fn settle_start_up(&mut self) {
+        if self.design.start_up.is_some() {
+            return;
+        }
+        let runs = &self.result.runs.tuning.runs;
+        let scoring = &self.scoring;
+        let first = scoring.regimes.first;
+        let random = &scoring.regimes.parts[0].runs;
+        let picked = |all: &[Rows]| -> (Vec<Run>, Vec<Rows>) {
+            random.iter().map(|&i| (runs[i].clone(), all[i].clone())).unzip()
+        };
+        let box_filters = crate::observers::kind::REGISTRY
+            .iter()
+            .filter(|k| k.filter_code.is_some())
+            .map(|k| k.kind.name());
+        let slowest = (self.observers.iter())
+            .filter(|o| box_filters.clone().any(|name| name == o.kind) && !o.tuning_estimates.is_empty())
+            .filter_map(|o| {
+                let (runs, estimates) = picked(&o.tuning_estimates);
+                score::settle(&runs, &estimates, first, &scoring.spreads, &scoring.weights).map(|s| (s, o.kind))
+            })
+            .max_by_key(|&(samples, _)| samples);
+        let Some((samples, kind)) = slowest else {
+            return;
+        };
+        let estimates = runs
+            .iter()
+            .map(|r| r.targets.len())
+            .min()
+            .unwrap_or(0)
+            .saturating_sub(first);
+        self.scoring
+            .regimes
+            .set_start_up(samples.max(self.design.map.horizon).min(estimates));
+        self.scoring.start_up_by = score::StartUpBy::Settled(kind, samples);
+        let scoring = &self.scoring;
+        let judged = (self.observers.iter_mut()).chain(self.beside.iter_mut().map(|b| &mut b.figures));
+        for o in judged.filter(|o| !o.tuning_estimates.is_empty()) {
+            o.tuning_terms = scoring.terms(runs, &o.tuning_estimates);
+        }
+    }
+
     /// The tuning runs from random starts and from the box's edges (not the scenarios'): what the box
     /// filters' `Q` and `P(0)` are tuned on, by the score of that one regime (the random starts of
     /// [`crate::observers::score::regimes`]). Not the whole score: the box EKF's `Q` is also the

@@ -37,20 +37,19 @@ use crate::spec::Design;
 
 /// For every state, the target that is that state (`None` with the reason when one is missing).
 pub fn state_targets(design: &Design) -> Result<Vec<usize>, String> {
-    design
-        .model
-        .states
-        .iter()
-        .map(|state| {
-            design
-                .targets
-                .iter()
-                .position(|t| t.expr.text().trim() == state)
-                .ok_or_else(|| {
-                    format!("state `{state}` is not a target: a model correction needs the full state (add a target with expr = \"{state}\")")
-                })
-        })
-        .collect()
+    let position = |state: &String| design.targets.iter().position(|t| t.expr.text().trim() == state);
+    let missing: Vec<&String> = design.model.states.iter().filter(|s| position(s).is_none()).collect();
+    let quoted: Vec<String> = missing.iter().map(|s| format!("`{s}`")).collect();
+    let which = match quoted.split_last() {
+        None => return Ok(design.model.states.iter().filter_map(position).collect()),
+        Some((last, [])) => format!("state {last} is not a target"),
+        Some((last, rest)) => format!("states {} and {last} are not targets", rest.join(", ")),
+    };
+    let fix: Vec<String> = missing.iter().map(|s| format!("expr = \"{s}\"")).collect();
+    Err(format!(
+        "{which}: the model-corrected map and the map-started and restarted EKFs start from the map's estimate of every state (add a target per state, {}; with `weight = 0` it is estimated and reported without counting in the score)",
+        fix.join(", ")
+    ))
 }
 
 /// The start-up lasts this many horizons `N` of estimates: long enough for the tail of the blend
