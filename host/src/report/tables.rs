@@ -84,7 +84,11 @@ pub fn observers_table(report: &Report<'_>) -> String {
     }
     s.push_str(&drift_table(report));
     s.push_str(&super::lost::table(report));
-    s.push_str(&super::tuning_score::table(report));
+    s.push_str(&super::tuning_score::table(
+        &report.tuning_score,
+        report.tau,
+        report.time_unit,
+    ));
     let _ = writeln!(s, "\n`observer()` is {:?}: {}.", report.observer.0, report.observer.1);
     if let CorrectedTuning::Unavailable { unavailable } = &report.corrected_tuning {
         let _ = writeln!(

@@ -6,7 +6,6 @@ use std::fmt::Write;
 
 use serde::Serialize;
 
-use super::schema::Report;
 use crate::observers::figures::Comparison;
 use crate::observers::score::regimes::{Span, START_UP};
 use crate::observers::score::settle::{OVER_RUNS, SETTLED_WITHIN};
@@ -103,8 +102,8 @@ pub fn assemble(comparison: &Comparison) -> TuningScore {
 /// `report.md`'s table: a row per kind, a column per regime, then the score and the lost runs; and
 /// which kind wins each regime (the lowest score there among the kinds that lost the fewest tuning
 /// runs), or the one kind within [`WINS_WITHIN`] of the best in every regime.
-pub fn table(report: &Report<'_>) -> String {
-    let score = &report.tuning_score;
+/// `tau` and `time_unit`: the design's sample period and its unit, to state the start-up's length.
+pub fn table(score: &TuningScore, tau: f64, time_unit: &str) -> String {
     if score.kinds.is_empty() {
         return String::new();
     }
@@ -115,8 +114,8 @@ pub fn table(report: &Report<'_>) -> String {
                 "{} ({} runs, the first {k} samples = {} {} from the first estimate{})",
                 r.name,
                 r.runs,
-                crate::output::number(k as f64 * report.tau),
-                report.time_unit,
+                crate::output::number(k as f64 * tau),
+                time_unit,
                 if r.name == START_UP {
                     format!(", {}", score.start_up_by)
                 } else {
