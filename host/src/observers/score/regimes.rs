@@ -40,6 +40,9 @@ pub enum Span {
 /// The start-up regime's name.
 pub const START_UP: &str = "start-up";
 
+/// The random starts' regime's name.
+pub const RANDOM_STARTS: &str = "random starts";
+
 /// One regime: its name as the report shows it, its runs (indices into the set) and its samples.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Regime {
@@ -88,7 +91,7 @@ impl Regimes {
         let random = design.tuning.trajectories.min(runs);
         let scenarios_end = (random + design.scenarios.len() * SCENARIO_TUNING_RUNS).min(runs);
         let mut parts = vec![Regime {
-            name: "random starts".into(),
+            name: RANDOM_STARTS.into(),
             runs: (0..random).chain(scenarios_end..runs).collect(),
             span: Span::Whole,
         }];
@@ -122,6 +125,14 @@ impl Regimes {
                 span: Span::Whole,
             }],
         }
+    }
+
+    /// The random starts' runs, if the set has that regime.
+    pub fn random_starts(&self) -> Option<&[usize]> {
+        self.parts
+            .iter()
+            .find(|p| p.name == RANDOM_STARTS)
+            .map(|p| p.runs.as_slice())
     }
 
     /// The start-up regime's samples, if there is one.

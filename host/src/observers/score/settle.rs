@@ -18,11 +18,16 @@ pub const SETTLED_WITHIN: f64 = 2.0;
 /// The quantile over runs of the error that must settle: 9 runs in 10.
 pub const OVER_RUNS: f64 = 0.9;
 
-/// The samples after the first estimate (at sample `first`) that `estimates` of `runs` take to
-/// settle (see the module docs), judged against each target's `spread` and `weight`; `None` when
-/// there is no run or sample to judge.
-pub fn settle(runs: &[Run], estimates: &[Rows], first: usize, spreads: &[f64], weights: &[f64]) -> Option<usize> {
-    let len = runs.iter().map(|r| r.targets.len()).min()?;
+/// The samples after the first estimate (at sample `first`) that the estimates of `runs` (each run
+/// with its estimates) take to settle (see the module docs), judged against each target's `spread`
+/// and `weight`; `None` when there is no run or sample to judge.
+pub fn settle<'a>(
+    runs: impl Iterator<Item = (&'a Run, &'a Rows)> + Clone,
+    first: usize,
+    spreads: &[f64],
+    weights: &[f64],
+) -> Option<usize> {
+    let len = runs.clone().map(|(r, _)| r.targets.len()).min()?;
     let samples = len.checked_sub(first).filter(|&s| s > 0)?;
     let total: f64 = weights.iter().sum();
     let error = |run: &Run, rows: &Rows, k: usize| -> f64 {
@@ -38,7 +43,7 @@ pub fn settle(runs: &[Run], estimates: &[Rows], first: usize, spreads: &[f64], w
     };
     let typical: Vec<f64> = (0..samples)
         .map(|j| {
-            let each = runs.iter().zip(estimates).map(|(r, e)| error(r, e, first + j));
+            let each = runs.clone().map(|(r, e)| error(r, e, first + j));
             quantile(each.collect(), OVER_RUNS)
         })
         .collect();
@@ -81,13 +86,13 @@ mod tests {
         let (runs, estimates): (Vec<Run>, Vec<Rows>) = (0..3)
             .map(|_| run(104, |k| 1.0 + 63.0 * (-((k as f64) - 4.0) / 5.0).exp()))
             .unzip();
-        assert_eq!(settle(&runs, &estimates, 4, &[1.0], &[1.0]), Some(21));
+        assert_eq!(settle(runs.iter().zip(&estimates), 4, &[1.0], &[1.0]), Some(21));
         // The spread scales the error and its floor alike.
         let scaled: Vec<Rows> = estimates
             .iter()
             .map(|e| e.iter().map(|r| vec![10.0 * r[0]]).collect())
             .collect();
-        assert_eq!(settle(&runs, &scaled, 4, &[10.0], &[1.0]), Some(21));
+        assert_eq!(settle(runs.iter().zip(&scaled), 4, &[10.0], &[1.0]), Some(21));
     }
 
     #[test]
@@ -105,14 +110,14 @@ mod tests {
         };
         let lost: fn(usize) -> f64 = |k| if k >= 10 { f64::NAN } else { 1.0 };
         let (runs, estimates) = runs_of(lost, |_| 1.0);
-        assert_eq!(settle(&runs, &estimates, 0, &[1.0], &[1.0]), Some(0));
+        assert_eq!(settle(runs.iter().zip(&estimates), 0, &[1.0], &[1.0]), Some(0));
         // Two of ten lost: the 9th is lost from sample 10 on, never settled before the end.
         let (runs, estimates) = runs_of(lost, lost);
-        assert_eq!(settle(&runs, &estimates, 0, &[1.0], &[1.0]), Some(50));
+        assert_eq!(settle(runs.iter().zip(&estimates), 0, &[1.0], &[1.0]), Some(50));
         // One lost and one slow (error 5 until sample 20): the slow one is the 9th, settled at 20,
         // where the median was settled from the first estimate.
         let (runs, estimates) = runs_of(lost, |k| if k < 20 { 5.0 } else { 1.0 });
-        assert_eq!(settle(&runs, &estimates, 0, &[1.0], &[1.0]), Some(20));
+        assert_eq!(settle(runs.iter().zip(&estimates), 0, &[1.0], &[1.0]), Some(20));
     }
 
     #[test]
@@ -121,17 +126,23 @@ mod tests {
         // filter is settled from the first estimate.
         let len = 40;
         let zeros: Rows = vec![vec![0.0, 0.0]; len].into();
-        let runs = vec![Run {
+        let runs = [Run {
             states: zeros.clone(),
             inputs: Rows::new(0),
             measurements: zeros.clone(),
             targets: zeros,
             parameters: Vec::new(),
         }];
-        let estimates = vec![(0..len)
+        let estimates = [(0..len)
             .map(|k| vec![if k < 10 { 100.0 } else { 1.0 }, 1.0])
             .collect::<Rows>()];
-        assert_eq!(settle(&runs, &estimates, 0, &[1.0, 1.0], &[1.0, 1.0]), Some(10));
-        assert_eq!(settle(&runs, &estimates, 0, &[1.0, 1.0], &[0.0, 1.0]), Some(0));
+        assert_eq!(
+            settle(runs.iter().zip(&estimates), 0, &[1.0, 1.0], &[1.0, 1.0]),
+            Some(10)
+        );
+        assert_eq!(
+            settle(runs.iter().zip(&estimates), 0, &[1.0, 1.0], &[0.0, 1.0]),
+            Some(0)
+        );
     }
 }

@@ -22,9 +22,8 @@ impl Bench<'_> {
         let runs = &self.result.runs.tuning.runs;
         let scoring = &self.scoring;
         let first = scoring.regimes.first;
-        let random = &scoring.regimes.parts[0].runs;
-        let picked = |all: &[Rows]| -> (Vec<Run>, Vec<Rows>) {
-            random.iter().map(|&i| (runs[i].clone(), all[i].clone())).unzip()
+        let Some(random) = scoring.regimes.random_starts() else {
+            return;
         };
         let box_filters = crate::observers::kind::REGISTRY
             .iter()
@@ -33,8 +32,8 @@ impl Bench<'_> {
         let slowest = (self.observers.iter())
             .filter(|o| box_filters.clone().any(|name| name == o.kind) && !o.tuning_estimates.is_empty())
             .filter_map(|o| {
-                let (runs, estimates) = picked(&o.tuning_estimates);
-                score::settle(&runs, &estimates, first, &scoring.spreads, &scoring.weights).map(|s| (s, o.kind))
+                let picked = random.iter().map(|&i| (&runs[i], &o.tuning_estimates[i]));
+                score::settle(picked, first, &scoring.spreads, &scoring.weights).map(|s| (s, o.kind))
             })
             .max_by_key(|&(samples, _)| samples);
         let Some((samples, kind)) = slowest else {
