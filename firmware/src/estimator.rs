@@ -107,10 +107,19 @@ where
     by_own_methods!(Observer<T, D, N, NY, NU, NT>);
 }
 
-impl<T: Scalar, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
-    for Started<T, D, F, N, NX, NY, NU, NT>
+impl<
+        T: Scalar,
+        D,
+        F,
+        const N: usize,
+        const NX: usize,
+        const NY: usize,
+        const NU: usize,
+        const NM: usize,
+        const NT: usize,
+    > Estimator for Started<T, D, F, N, NX, NY, NU, NM, NT>
 where
-    D: Design<T, N, NY, NU, NT>,
+    D: Design<T, N, NY, NU, NM>,
     F: Follower<T, NX, NY, NU, NT>,
 {
     type Scalar = T;
@@ -119,18 +128,27 @@ where
     type Estimates = [Estimate<T>; NT];
     type Error = RejectedSample;
 
-    by_own_methods!(Started<T, D, F, N, NX, NY, NU, NT>);
+    by_own_methods!(Started<T, D, F, N, NX, NY, NU, NM, NT>);
 
     #[inline(always)]
     fn restarts(&self) -> u32 {
-        <Started<T, D, F, N, NX, NY, NU, NT>>::restarts(self)
+        <Started<T, D, F, N, NX, NY, NU, NM, NT>>::restarts(self)
     }
 }
 
-impl<T: Scalar, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Estimator
-    for Restarted<T, D, F, N, NX, NY, NU, NT>
+impl<
+        T: Scalar,
+        D,
+        F,
+        const N: usize,
+        const NX: usize,
+        const NY: usize,
+        const NU: usize,
+        const NM: usize,
+        const NT: usize,
+    > Estimator for Restarted<T, D, F, N, NX, NY, NU, NM, NT>
 where
-    D: Design<T, N, NY, NU, NT>,
+    D: Design<T, N, NY, NU, NM>,
     F: Restart<T, NX, NY, NU, NT>,
 {
     type Scalar = T;
@@ -139,11 +157,11 @@ where
     type Estimates = [Estimate<T>; NT];
     type Error = RejectedSample;
 
-    by_own_methods!(Restarted<T, D, F, N, NX, NY, NU, NT>);
+    by_own_methods!(Restarted<T, D, F, N, NX, NY, NU, NM, NT>);
 
     #[inline(always)]
     fn restarts(&self) -> u32 {
-        <Restarted<T, D, F, N, NX, NY, NU, NT>>::restarts(self)
+        <Restarted<T, D, F, N, NX, NY, NU, NM, NT>>::restarts(self)
     }
 }
 

@@ -24,7 +24,7 @@
 use core::marker::PhantomData;
 
 use crate::rules::{Given, Refusals, Refused, RestartedRule};
-use crate::started::{states_of, targets_of};
+use crate::started::{map_targets, states_of, targets_of};
 use crate::window::{Sample, Window};
 use crate::{Design, Estimate, Follower, RejectedSample, Scalar};
 
@@ -45,7 +45,8 @@ pub trait Restart<T: Scalar, const NX: usize, const NY: usize, const NU: usize, 
 }
 
 /// The filter `F` from the box centre, watched by the map of design `D` (see the module's docs):
-/// `NT` targets from `NY` outputs and `NU` inputs, `NX` states, the map over `N` samples.
+/// `NT` targets from `NY` outputs and `NU` inputs, `NX` states, the map's `NM` rows over `N` samples
+/// (the targets', then a helper map per state that no target is: [`Follower::STATE_TARGETS`]).
 ///
 /// A sample with a NaN or infinite value is refused: no estimate from it, the window does not take
 /// it, and the filter takes one period of its model when the input is finite ([`Follower::predict`]).
@@ -61,6 +62,7 @@ pub struct Restarted<
     const NX: usize,
     const NY: usize,
     const NU: usize,
+    const NM: usize,
     const NT: usize,
 > where
     F: Restart<T, NX, NY, NU, NT>,
@@ -73,11 +75,11 @@ pub struct Restarted<
     design: PhantomData<fn() -> D>,
 }
 
-impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize>
-    Restarted<T, D, F, N, NX, NY, NU, NT>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NM: usize, const NT: usize>
+    Restarted<T, D, F, N, NX, NY, NU, NM, NT>
 where
     T: Scalar,
-    D: Design<T, N, NY, NU, NT>,
+    D: Design<T, N, NY, NU, NM>,
     F: Restart<T, NX, NY, NU, NT>,
 {
     /// The filter at its start, holding no sample.
@@ -113,13 +115,13 @@ where
         let map = self.window.samples().map(D::estimate);
         let given = self.rule.accepted(
             map,
-            |carried, all| F::disagrees(carried, &states_of::<T, F, NX, NY, NU, NT>(all)),
-            |all| F::start(&states_of::<T, F, NX, NY, NU, NT>(all), &u),
+            |carried, all| F::disagrees(carried, &states_of::<T, F, NX, NY, NU, NM, NT>(all)),
+            |all| F::start(&states_of::<T, F, NX, NY, NU, NM, NT>(all), &u),
             |carried| F::follow(carried, 1, false, &[T::ZERO; NX], &y, &u),
             || F::FRESH,
         )?;
         self.latest = Some(match given {
-            Given::Map(all) => all,
+            Given::Map(all) => map_targets(&all),
             Given::Followed(states) => targets_of::<T, F, NX, NY, NU, NT>(&states, &u),
             Given::Nothing => return Ok(()), // not given by this rule
         });
@@ -167,11 +169,11 @@ where
     }
 }
 
-impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Default
-    for Restarted<T, D, F, N, NX, NY, NU, NT>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NM: usize, const NT: usize>
+    Default for Restarted<T, D, F, N, NX, NY, NU, NM, NT>
 where
     T: Scalar,
-    D: Design<T, N, NY, NU, NT>,
+    D: Design<T, N, NY, NU, NM>,
     F: Restart<T, NX, NY, NU, NT>,
 {
     fn default() -> Self {
@@ -179,8 +181,8 @@ where
     }
 }
 
-impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Clone
-    for Restarted<T, D, F, N, NX, NY, NU, NT>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NM: usize, const NT: usize> Clone
+    for Restarted<T, D, F, N, NX, NY, NU, NM, NT>
 where
     T: Scalar,
     F: Restart<T, NX, NY, NU, NT>,
@@ -196,8 +198,8 @@ where
     }
 }
 
-impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> core::fmt::Debug
-    for Restarted<T, D, F, N, NX, NY, NU, NT>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NM: usize, const NT: usize>
+    core::fmt::Debug for Restarted<T, D, F, N, NX, NY, NU, NM, NT>
 where
     T: Scalar,
     F: Restart<T, NX, NY, NU, NT>,

@@ -31,7 +31,8 @@ pub trait Follower<T: Scalar, const NX: usize, const NY: usize, const NU: usize,
     const START_UP: usize;
     /// Whether the estimates after the start-up read the map.
     const STEADY_READS_MAP: bool;
-    /// The target of each state: the map of target `STATE_TARGETS[i]` estimates state `i`.
+    /// The map row of each state: row `STATE_TARGETS[i]` of the design's map estimates state `i`
+    /// (a target's row below `NT`, else a helper map's: a state that no target is).
     const STATE_TARGETS: [usize; NX];
 
     /// From the first estimate `x̂(N−1)` (the map's) and `u(N−1)`: what to carry, or `None` when it is
@@ -112,10 +113,10 @@ where
     targets
 }
 
-/// The map's estimate of each state of the follower (target `STATE_TARGETS[i]` for state `i`).
+/// The map's estimate of each state of the follower (row `STATE_TARGETS[i]` for state `i`).
 #[inline(always)]
-pub(crate) fn states_of<T, F, const NX: usize, const NY: usize, const NU: usize, const NT: usize>(
-    all: &[Estimate<T>; NT],
+pub(crate) fn states_of<T, F, const NX: usize, const NY: usize, const NU: usize, const NM: usize, const NT: usize>(
+    all: &[Estimate<T>; NM],
 ) -> [T; NX]
 where
     T: Scalar,
@@ -128,12 +129,26 @@ where
     map
 }
 
+/// The targets' rows of the map's `NM` (its first `NT`: the helper maps' rows follow them).
+#[inline(always)]
+pub(crate) fn map_targets<T: Scalar, const NM: usize, const NT: usize>(all: &[Estimate<T>; NM]) -> [Estimate<T>; NT] {
+    let mut targets = [Estimate {
+        value: T::ZERO,
+        saturation: Saturation::Inside,
+    }; NT];
+    for (target, row) in targets.iter_mut().zip(all) {
+        *target = *row;
+    }
+    targets
+}
+
 fn select<V>(condition: bool, a: V, b: V) -> V {
     core::hint::select_unpredictable(condition, a, b)
 }
 
 /// The observer of map design `D` followed by `F`: `NT` targets from `NY` outputs and `NU` inputs,
-/// `NX` states, the map over the last `N` samples.
+/// `NX` states, the map's `NM` rows over the last `N` samples (the targets', then a helper map per
+/// state that no target is: [`Follower::STATE_TARGETS`]).
 ///
 /// `push` takes every sample and does the work; `estimate` returns the latest estimate. Memory is
 /// fixed (the window, what `F` carries, the latest estimate). After the start-up every accepted
@@ -145,8 +160,17 @@ fn select<V>(condition: bool, a: V, b: V) -> V {
 /// implausible) restarts the observer: no estimate from it, the window emptied, and the map's next
 /// estimate starts the follower again ([`restarts`](Self::restarts) counts them; the latest estimate
 /// stays until then).
-pub struct Started<T: Scalar, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize>
-where
+pub struct Started<
+    T: Scalar,
+    D,
+    F,
+    const N: usize,
+    const NX: usize,
+    const NY: usize,
+    const NU: usize,
+    const NM: usize,
+    const NT: usize,
+> where
     F: Follower<T, NX, NY, NU, NT>,
 {
     window: Window<T, N, NY, NU>,
@@ -157,11 +181,11 @@ where
     design: PhantomData<fn() -> D>,
 }
 
-impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize>
-    Started<T, D, F, N, NX, NY, NU, NT>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NM: usize, const NT: usize>
+    Started<T, D, F, N, NX, NY, NU, NM, NT>
 where
     T: Scalar,
-    D: Design<T, N, NY, NU, NT>,
+    D: Design<T, N, NY, NU, NM>,
     F: Follower<T, NX, NY, NU, NT>,
 {
     /// An observer holding no sample.
@@ -202,9 +226,9 @@ where
         let given = self.rule.accepted(
             F::START_UP,
             all,
-            |all| F::start(&states_of::<T, F, NX, NY, NU, NT>(all), &u),
+            |all| F::start(&states_of::<T, F, NX, NY, NU, NM, NT>(all), &u),
             |carried, j, start_up, all| {
-                let map = all.map_or([T::ZERO; NX], states_of::<T, F, NX, NY, NU, NT>);
+                let map = all.map_or([T::ZERO; NX], states_of::<T, F, NX, NY, NU, NM, NT>);
                 F::follow(carried, j, start_up, &map, &y, &u)
             },
         );
@@ -219,7 +243,7 @@ where
         };
         match given {
             Given::Nothing => {}
-            Given::Map(all) => self.latest = Some(all),
+            Given::Map(all) => self.latest = Some(map_targets(&all)),
             Given::Followed(states) => self.latest = Some(targets_of::<T, F, NX, NY, NU, NT>(&states, &u)),
         }
         Ok(())
@@ -268,11 +292,11 @@ where
     }
 }
 
-impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Default
-    for Started<T, D, F, N, NX, NY, NU, NT>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NM: usize, const NT: usize>
+    Default for Started<T, D, F, N, NX, NY, NU, NM, NT>
 where
     T: Scalar,
-    D: Design<T, N, NY, NU, NT>,
+    D: Design<T, N, NY, NU, NM>,
     F: Follower<T, NX, NY, NU, NT>,
 {
     fn default() -> Self {
@@ -280,8 +304,8 @@ where
     }
 }
 
-impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> Clone
-    for Started<T, D, F, N, NX, NY, NU, NT>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NM: usize, const NT: usize> Clone
+    for Started<T, D, F, N, NX, NY, NU, NM, NT>
 where
     T: Scalar,
     F: Follower<T, NX, NY, NU, NT>,
@@ -297,8 +321,8 @@ where
     }
 }
 
-impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> core::fmt::Debug
-    for Started<T, D, F, N, NX, NY, NU, NT>
+impl<T, D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NM: usize, const NT: usize>
+    core::fmt::Debug for Started<T, D, F, N, NX, NY, NU, NM, NT>
 where
     T: Scalar,
     F: Follower<T, NX, NY, NU, NT>,

@@ -70,7 +70,7 @@ static float select_float(int c, float a, float b) {
 }
 
 
-/* `P`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+/* target `P`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[6] = {
     -4.039889f, -0.34156004f, -4.308531f, 0.077934295f,
     -3.0881793f, 0.50124514f
@@ -166,13 +166,33 @@ static const float SEGMENTS_0[88][2] = {
     { 0.38684797f, 0.00066982885f }
 };
 
-/* `muX`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+/* target `muX`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_1[6] = {
     0.06840128f, 0.0055591087f, 0.070145f, 0.0003677032f,
     0.053549178f, -0.0047274753f
 };
 static const float SEGMENTS_1[1][2] = {
     { 0.0f, 0.43531778f }
+};
+
+/* helper map `X`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+static const float GAINS_2[6] = {
+    0.38688287f, 0.00011909063f, 0.42060104f, 2.1403303e-5f,
+    0.37400255f, 0.0022436865f
+};
+static const float SEGMENTS_2[3][2] = {
+    { 0.4385543f, 0.6056552f },
+    { 0.4385536f, 0.6056559f },
+    { 0.4385614f, 0.605652f }
+};
+
+/* helper map `S`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+static const float GAINS_3[6] = {
+    -0.046064626f, 0.008455554f, -0.055173066f, -0.0006070147f,
+    -0.06394423f, -0.0069448985f
+};
+static const float SEGMENTS_3[1][2] = {
+    { 0.0f, 4.949024f }
 };
 
 /* floor(t) for 0 <= t, at most count - 1: a uniform table's segment. Any other t (negative, NaN,
@@ -253,6 +273,51 @@ ecoli_x0_0p5_status ecoli_x0_0p5_map_estimate(const ecoli_x0_0p5_map *observer, 
     return ECOLI_X0_0P5_OK;
 }
 
+
+/* The map the map-started kinds read: the targets' rows, then a helper map per state that no
+ * target is. */
+#define ECOLI_X0_0P5_MAP_ROWS 4u
+static inline ecoli_x0_0p5_status start_map_estimate(const ecoli_x0_0p5_map *observer, float *values, ecoli_x0_0p5_saturation *saturation) {
+    const unsigned next = observer->next;
+    if (observer->filled < ECOLI_X0_0P5_HORIZON) {
+        return ECOLI_X0_0P5_NO_ESTIMATE_YET;
+    }
+    const float t_0 = 26.752401f
+        + GAINS_0[0] * observer->y[next + 2u][0]
+        + GAINS_0[1] * observer->y[next + 2u][1]
+        + GAINS_0[2] * observer->y[next + 1u][0]
+        + GAINS_0[3] * observer->y[next + 1u][1]
+        + GAINS_0[4] * observer->y[next + 0u][0]
+        + GAINS_0[5] * observer->y[next + 0u][1];
+    const float t_1 = 0.022176465f
+        + GAINS_1[0] * observer->y[next + 2u][0]
+        + GAINS_1[1] * observer->y[next + 2u][1]
+        + GAINS_1[2] * observer->y[next + 1u][0]
+        + GAINS_1[3] * observer->y[next + 1u][1]
+        + GAINS_1[4] * observer->y[next + 0u][0]
+        + GAINS_1[5] * observer->y[next + 0u][1];
+    const float t_2 = -0.43697193f
+        + GAINS_2[0] * observer->y[next + 2u][0]
+        + GAINS_2[1] * observer->y[next + 2u][1]
+        + GAINS_2[2] * observer->y[next + 1u][0]
+        + GAINS_2[3] * observer->y[next + 1u][1]
+        + GAINS_2[4] * observer->y[next + 0u][0]
+        + GAINS_2[5] * observer->y[next + 0u][1];
+    const float t_3 = 0.38749164f
+        + GAINS_3[0] * observer->y[next + 2u][0]
+        + GAINS_3[1] * observer->y[next + 2u][1]
+        + GAINS_3[2] * observer->y[next + 1u][0]
+        + GAINS_3[3] * observer->y[next + 1u][1]
+        + GAINS_3[4] * observer->y[next + 0u][0]
+        + GAINS_3[5] * observer->y[next + 0u][1];
+    const uint32_t k_0 = uniform_segment(t_0, 88u);
+    evaluate(t_0, SEGMENTS_0[k_0], 0.0f, 88.0f, 0.0f, 0.4457929f, &values[0], &saturation[0]);
+    evaluate(t_1, SEGMENTS_1[0], 0.0f, 1.0f, 0.0f, 0.43531778f, &values[1], &saturation[1]);
+    const uint32_t k_2 = uniform_segment(t_2, 3u);
+    evaluate(t_2, SEGMENTS_2[k_2], 0.0f, 3.0f, 0.4385543f, 2.2555175f, &values[2], &saturation[2]);
+    evaluate(t_3, SEGMENTS_3[0], 0.0f, 1.0f, 0.0f, 4.949024f, &values[3], &saturation[3]);
+    return ECOLI_X0_0P5_OK;
+}
 
 /* `P` in integers: gains in regressor order (2^-20 per count), then (A_k, B_k) in its LSB. */
 static const int32_t FIXED_GAINS_0[6] = { -1034, -11192, -1103, 2554, -791, 16425 };
@@ -4866,6 +4931,683 @@ ecoli_x0_0p5_status ecoli_x0_0p5_ukf_box_push(ecoli_x0_0p5_ukf_box *o, const flo
 }
 
 ecoli_x0_0p5_status ecoli_x0_0p5_ukf_box_estimate(const ecoli_x0_0p5_ukf_box *o, float *values, ecoli_x0_0p5_saturation *saturation) {
+    if (!o->ready) {
+        return ECOLI_X0_0P5_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return ECOLI_X0_0P5_OK;
+}
+
+/* The start-up schedule, j = 1 … 9: the blends g_j per state, then the gains K_j (states x
+ * outputs, row by row). */
+static const float CORRECTED_BLENDS[9][9] = {
+{
+    0.91009295f, 0.91009295f, 0.91009295f, 0.01579626f,
+    0.007345757f, 0.02186814f, -0.004741332f, 0.0047839326f,
+    0.00063607196f
+},
+{
+    0.8350189f, 0.8350189f, 0.8350189f, 0.016995262f,
+    0.0068494407f, 0.02044855f, -0.004209568f, 0.003932146f,
+    0.0005854047f
+},
+{
+    0.77138674f, 0.77138674f, 0.77138674f, 0.018011527f,
+    0.006428767f, 0.019245319f, -0.0037588486f, 0.0032101793f,
+    0.00054245954f
+},
+{
+    0.716766f, 0.716766f, 0.716766f, 0.018883869f,
+    0.0060676686f, 0.018212488f, -0.0033719593f, 0.0025904553f,
+    0.00050559617f
+},
+{
+    0.669369f, 0.669369f, 0.669369f, 0.019640842f,
+    0.0057543255f, 0.01731625f, -0.003036237f, 0.0020526915f,
+    0.0004736081f
+},
+{
+    0.62785155f, 0.62785155f, 0.62785155f, 0.020303914f,
+    0.005479853f, 0.01653119f, -0.0027421608f, 0.0015816368f,
+    0.00044558808f
+},
+{
+    0.59118354f, 0.59118354f, 0.59118354f, 0.020889536f,
+    0.00523744f, 0.015837828f, -0.0024824343f, 0.0011656036f,
+    0.00042084095f
+},
+{
+    0.5585622f, 0.5585622f, 0.5585622f, 0.021410529f,
+    0.00502178f, 0.015220986f, -0.0022513708f, 0.00079548365f,
+    0.0003988249f
+},
+{
+    0.52935266f, 0.52935266f, 0.52935266f, 0.021877032f,
+    0.0048286747f, 0.014668657f, -0.002044474f, 0.00046407388f,
+    0.00037911147f
+}
+};
+static const float CORRECTED_NO_BLEND[9] = { 0.0f };
+/* The clamp of each state: its map's learning range. */
+static const float CORRECTED_LOWER[ECOLI_X0_0P5_STATES] = {
+    0.4385543f, 0.0f, 0.0f
+};
+static const float CORRECTED_UPPER[ECOLI_X0_0P5_STATES] = {
+    2.2555175f, 4.949024f, 0.4457929f
+};
+
+/* One sampling period of the model from x, the value alone: out = x+ (corrected_predict). */
+static void corrected_predict(const float *x, const float *u, float *out) {
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = x[2];
+    const float t3 = 0.2f;
+    const float t4 = 2.0f;
+    const float t5 = 6.0f;
+    const float t6 = t3 / t4;
+    const float t7 = t3 / t5;
+    const float t8 = 0.2f /* mu_m */;
+    const float t9 = 0.1f /* k_s */;
+    const float t10 = t9 + t1;
+    const float t11 = t1 / t10;
+    const float t12 = t8 * t11;
+    const float t13 = 0.1f /* k_d */;
+    const float t14 = 0.5f /* k_p */;
+    const float t15 = -t14;
+    const float t16 = 0.001f;
+    const float t17 = fmaxf(t2, t16);
+    const float t18 = t15 / t17;
+    const float t19 = libm_expf(t18);
+    const float t20 = t13 * t19;
+    const float t21 = t12 * t0;
+    const float t22 = t20 * t0;
+    const float t23 = t21 - t22;
+    const float t24 = 1.0f /* y_s */;
+    const float t25 = t24 * t12;
+    const float t26 = t25 * t0;
+    const float t27 = -t26;
+    const float t28 = 0.05f /* k_m */;
+    const float t29 = t28 * t0;
+    const float t30 = 0.01f /* ks_m */;
+    const float t31 = t1 + t30;
+    const float t32 = t1 / t31;
+    const float t33 = t29 * t32;
+    const float t34 = t27 - t33;
+    const float t35 = 0.2f /* y_p */;
+    const float t36 = t35 * t12;
+    const float t37 = 1.0f /* I */;
+    const float t38 = 0.5f /* k_I */;
+    const float t39 = t37 + t38;
+    const float t40 = t37 / t39;
+    const float t41 = t36 * t40;
+    const float t42 = t41 * t0;
+    const float t43 = t20 * t2;
+    const float t44 = t42 - t43;
+    const float t45 = t6 * t23;
+    const float t46 = t0 + t45;
+    const float t47 = t6 * t34;
+    const float t48 = t1 + t47;
+    const float t49 = t6 * t44;
+    const float t50 = t2 + t49;
+    const float t51 = t9 + t48;
+    const float t52 = t48 / t51;
+    const float t53 = t8 * t52;
+    const float t54 = fmaxf(t50, t16);
+    const float t55 = t15 / t54;
+    const float t56 = libm_expf(t55);
+    const float t57 = t13 * t56;
+    const float t58 = t53 * t46;
+    const float t59 = t57 * t46;
+    const float t60 = t58 - t59;
+    const float t61 = t24 * t53;
+    const float t62 = t61 * t46;
+    const float t63 = -t62;
+    const float t64 = t28 * t46;
+    const float t65 = t48 + t30;
+    const float t66 = t48 / t65;
+    const float t67 = t64 * t66;
+    const float t68 = t63 - t67;
+    const float t69 = t35 * t53;
+    const float t70 = t69 * t40;
+    const float t71 = t70 * t46;
+    const float t72 = t57 * t50;
+    const float t73 = t71 - t72;
+    const float t74 = t6 * t60;
+    const float t75 = t0 + t74;
+    const float t76 = t6 * t68;
+    const float t77 = t1 + t76;
+    const float t78 = t6 * t73;
+    const float t79 = t2 + t78;
+    const float t80 = t9 + t77;
+    const float t81 = t77 / t80;
+    const float t82 = t8 * t81;
+    const float t83 = fmaxf(t79, t16);
+    const float t84 = t15 / t83;
+    const float t85 = libm_expf(t84);
+    const float t86 = t13 * t85;
+    const float t87 = t82 * t75;
+    const float t88 = t86 * t75;
+    const float t89 = t87 - t88;
+    const float t90 = t24 * t82;
+    const float t91 = t90 * t75;
+    const float t92 = -t91;
+    const float t93 = t28 * t75;
+    const float t94 = t77 + t30;
+    const float t95 = t77 / t94;
+    const float t96 = t93 * t95;
+    const float t97 = t92 - t96;
+    const float t98 = t35 * t82;
+    const float t99 = t98 * t40;
+    const float t100 = t99 * t75;
+    const float t101 = t86 * t79;
+    const float t102 = t100 - t101;
+    const float t103 = t3 * t89;
+    const float t104 = t0 + t103;
+    const float t105 = t3 * t97;
+    const float t106 = t1 + t105;
+    const float t107 = t3 * t102;
+    const float t108 = t2 + t107;
+    const float t109 = t9 + t106;
+    const float t110 = t106 / t109;
+    const float t111 = t8 * t110;
+    const float t112 = fmaxf(t108, t16);
+    const float t113 = t15 / t112;
+    const float t114 = libm_expf(t113);
+    const float t115 = t13 * t114;
+    const float t116 = t111 * t104;
+    const float t117 = t115 * t104;
+    const float t118 = t116 - t117;
+    const float t119 = t24 * t111;
+    const float t120 = t119 * t104;
+    const float t121 = -t120;
+    const float t122 = t28 * t104;
+    const float t123 = t106 + t30;
+    const float t124 = t106 / t123;
+    const float t125 = t122 * t124;
+    const float t126 = t121 - t125;
+    const float t127 = t35 * t111;
+    const float t128 = t127 * t40;
+    const float t129 = t128 * t104;
+    const float t130 = t115 * t108;
+    const float t131 = t129 - t130;
+    const float t132 = t60 + t89;
+    const float t133 = t4 * t132;
+    const float t134 = t23 + t133;
+    const float t135 = t134 + t118;
+    const float t136 = t7 * t135;
+    const float t137 = t0 + t136;
+    const float t138 = t68 + t97;
+    const float t139 = t4 * t138;
+    const float t140 = t34 + t139;
+    const float t141 = t140 + t126;
+    const float t142 = t7 * t141;
+    const float t143 = t1 + t142;
+    const float t144 = t73 + t102;
+    const float t145 = t4 * t144;
+    const float t146 = t44 + t145;
+    const float t147 = t146 + t131;
+    const float t148 = t7 * t147;
+    const float t149 = t2 + t148;
+    out[0] = t137;
+    out[1] = t143;
+    out[2] = t149;
+}
+
+/* The correction during the start-up, g = (blends g_j, gains K_j): x before its clamp. */
+static void corrected_start_up(const float *x, const float *y, const float *u, const float *f, const float *g, float *out) {
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = x[2];
+    const float t3 = 0.2f /* mu_m */;
+    const float t4 = 0.1f /* k_s */;
+    const float t5 = t4 + t1;
+    const float t6 = t1 / t5;
+    const float t7 = t3 * t6;
+    const float t8 = 5000.0f /* y_l */;
+    const float t9 = t8 * t7;
+    const float t10 = 1.0f /* I */;
+    const float t11 = 1.0f /* k_l */;
+    const float t12 = t10 + t11;
+    const float t13 = t10 / t12;
+    const float t14 = t9 * t13;
+    const float t15 = t14 * t0;
+    const float t16 = t15 * t2;
+    const float t17 = y[0];
+    const float t18 = t17 - t0;
+    const float t19 = y[1];
+    const float t20 = t19 - t16;
+    const float t21 = g[0];
+    const float t22 = f[0];
+    const float t23 = t22 - t0;
+    const float t24 = t21 * t23;
+    const float t25 = t0 + t24;
+    const float t26 = g[3];
+    const float t27 = g[4];
+    const float t28 = t26 * t18;
+    const float t29 = t25 + t28;
+    const float t30 = t27 * t20;
+    const float t31 = t29 + t30;
+    const float t32 = g[1];
+    const float t33 = f[1];
+    const float t34 = t33 - t1;
+    const float t35 = t32 * t34;
+    const float t36 = t1 + t35;
+    const float t37 = g[5];
+    const float t38 = g[6];
+    const float t39 = t37 * t18;
+    const float t40 = t36 + t39;
+    const float t41 = t38 * t20;
+    const float t42 = t40 + t41;
+    const float t43 = g[2];
+    const float t44 = f[2];
+    const float t45 = t44 - t2;
+    const float t46 = t43 * t45;
+    const float t47 = t2 + t46;
+    const float t48 = g[7];
+    const float t49 = g[8];
+    const float t50 = t48 * t18;
+    const float t51 = t47 + t50;
+    const float t52 = t49 * t20;
+    const float t53 = t51 + t52;
+    out[0] = t31;
+    out[1] = t42;
+    out[2] = t53;
+}
+
+/* The correction after the start-up: x before its clamp. */
+static void corrected_steady(const float *x, const float *y, const float *u, const float *f, float *out) {
+    (void)u;
+    (void)f;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = x[2];
+    const float t3 = 0.2f /* mu_m */;
+    const float t4 = 0.1f /* k_s */;
+    const float t5 = t4 + t1;
+    const float t6 = t1 / t5;
+    const float t7 = t3 * t6;
+    const float t8 = 5000.0f /* y_l */;
+    const float t9 = t8 * t7;
+    const float t10 = 1.0f /* I */;
+    const float t11 = 1.0f /* k_l */;
+    const float t12 = t10 + t11;
+    const float t13 = t10 / t12;
+    const float t14 = t9 * t13;
+    const float t15 = t14 * t0;
+    const float t16 = t15 * t2;
+    const float t17 = y[0];
+    const float t18 = t17 - t0;
+    const float t19 = y[1];
+    const float t20 = t19 - t16;
+    const float t21 = 0.030331278f;
+    const float t22 = 0.0013291131f;
+    const float t23 = t21 * t18;
+    const float t24 = t0 + t23;
+    const float t25 = t22 * t20;
+    const float t26 = t24 + t25;
+    const float t27 = 0.0046590413f;
+    const float t28 = 0.0017050348f;
+    const float t29 = t27 * t18;
+    const float t30 = t1 + t29;
+    const float t31 = t28 * t20;
+    const float t32 = t30 + t31;
+    const float t33 = -0.0055419323f;
+    const float t34 = 2.185293e-5f;
+    const float t35 = t33 * t18;
+    const float t36 = t2 + t35;
+    const float t37 = t34 * t20;
+    const float t38 = t36 + t37;
+    out[0] = t26;
+    out[1] = t32;
+    out[2] = t38;
+}
+
+/* Each state's map estimate, from the map's rows (a target's or a helper map's). */
+static void corrected_map_states(const float *all, float *map) {
+    map[0] = all[2];
+    map[1] = all[3];
+    map[2] = all[0];
+}
+
+/* The targets of a follower's states, flagged with their states' saturation. */
+static void corrected_targets_of(const float *states, const ecoli_x0_0p5_saturation *state_flags, const float *u,
+                                float *values, ecoli_x0_0p5_saturation *flags) {
+    targets(states, u, values);
+    flags[0] = ECOLI_X0_0P5_INSIDE;
+    flags[1] = ECOLI_X0_0P5_INSIDE;
+    flags[0] = state_flags[2];
+}
+
+/* Corrector::start: the model's period from the map's first estimate (or from the states after
+ * a correction), taken into x when finite. */
+static int corrected_start(const float *first, const float *u, float *x) {
+    float next[ECOLI_X0_0P5_STATES];
+    corrected_predict(first, u, next);
+    if (!all_finite(next, ECOLI_X0_0P5_STATES)) {
+        return 0;
+    }
+    memcpy(x, next, sizeof next);
+    return 1;
+}
+
+/* Corrector::follow: the correction of the prediction x (the start-up's blend and gain, or
+ * G's), clamped to the states' ranges by selects, then the model's period from it. */
+static int corrected_follow(float *x, unsigned j, int start_up, const float *f, const float *y, const float *u,
+                            float *states, ecoli_x0_0p5_saturation *flags) {
+    float raw[ECOLI_X0_0P5_STATES];
+    unsigned i;
+    if (start_up) {
+        corrected_start_up(x, y, u, f, (j >= 1u && j <= 9u) ? CORRECTED_BLENDS[j - 1u] : CORRECTED_NO_BLEND, raw);
+    } else {
+        corrected_steady(x, y, u, f, raw);
+    }
+    for (i = 0u; i < ECOLI_X0_0P5_STATES; ++i) {
+        const int low = !(raw[i] >= CORRECTED_LOWER[i]);
+        const int out = low | (raw[i] > CORRECTED_UPPER[i]);
+        const float edge = select_float(low, CORRECTED_LOWER[i], CORRECTED_UPPER[i]);
+        const uint32_t flag = select_bits(low, (uint32_t)ECOLI_X0_0P5_LOW, (uint32_t)ECOLI_X0_0P5_HIGH);
+        states[i] = select_float(out, edge, raw[i]);
+        flags[i] = (ecoli_x0_0p5_saturation)select_bits(out, flag, (uint32_t)ECOLI_X0_0P5_INSIDE);
+    }
+    return corrected_start(states, u, x);
+}
+
+/* Corrector::predict: a lost output, the model's period from x (no correction). */
+static void corrected_lost(float *x, const float *u) {
+    (void)corrected_start(x, u, x);
+}
+
+
+static void corrected_fresh(ecoli_x0_0p5_corrected *o) {
+    ecoli_x0_0p5_map_init(&o->window);
+    memset(o->x, 0, sizeof o->x);
+    o->count = 0u;
+    o->started = 0;
+}
+
+static ecoli_x0_0p5_status corrected_sample(ecoli_x0_0p5_corrected *o, const float *y, const float *u) {
+    const int start_up = o->count <= 9u;
+    float all[ECOLI_X0_0P5_MAP_ROWS], map[ECOLI_X0_0P5_STATES], states[ECOLI_X0_0P5_STATES];
+    ecoli_x0_0p5_saturation all_flags[ECOLI_X0_0P5_MAP_ROWS], state_flags[ECOLI_X0_0P5_STATES];
+    int estimated = 0;
+    if (!accepts(y, u)) {
+        if (o->started && inputs_finite(u)) {
+            corrected_lost(o->x, u);
+        }
+        return ECOLI_X0_0P5_REFUSED;
+    }
+    memset(map, 0, sizeof map);
+    if (start_up) {
+        (void)ecoli_x0_0p5_map_push(&o->window, y, u);
+        if (o->window.filled < ECOLI_X0_0P5_HORIZON) {
+            return ECOLI_X0_0P5_OK;
+        }
+        (void)start_map_estimate(&o->window, all, all_flags);
+        corrected_map_states(all, map);
+        estimated = 1;
+    }
+    if (!o->started && estimated) {
+        if (!corrected_start(map, u, o->x)) {
+            corrected_fresh(o);
+            return ECOLI_X0_0P5_RESTARTED;
+        }
+        o->started = 1;
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
+    } else if (o->started) {
+        if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
+            corrected_fresh(o);
+            return ECOLI_X0_0P5_RESTARTED;
+        }
+        corrected_targets_of(states, state_flags, u, o->values, o->flags);
+    } else {
+        return ECOLI_X0_0P5_OK;
+    }
+    o->ready = 1;
+    o->count = start_up ? o->count + 1u : o->count;
+    return ECOLI_X0_0P5_OK;
+}
+
+void ecoli_x0_0p5_corrected_init(ecoli_x0_0p5_corrected *o) {
+    corrected_fresh(o);
+    o->ready = 0;
+    o->refused = 0u;
+    o->restarts = 0u;
+}
+
+ecoli_x0_0p5_status ecoli_x0_0p5_corrected_push(ecoli_x0_0p5_corrected *o, const float *y, const float *u) {
+    const ecoli_x0_0p5_status status = corrected_sample(o, y, u);
+    if (status == ECOLI_X0_0P5_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    } else if (status == ECOLI_X0_0P5_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
+    }
+    return status;
+}
+
+ecoli_x0_0p5_status ecoli_x0_0p5_corrected_estimate(const ecoli_x0_0p5_corrected *o, float *values, ecoli_x0_0p5_saturation *saturation) {
+    if (!o->ready) {
+        return ECOLI_X0_0P5_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return ECOLI_X0_0P5_OK;
+}
+
+/* P(N-1)'s upper triangle of the EKF the map starts. */
+static const float STARTED_P0[ECOLI_X0_0P5_COVARIANCE] = {
+    0.00022294049f, 0.0f, 0.0f, 0.015391284f,
+    0.0f, 3.2587675e-5f
+};
+
+/* Each state's map estimate, from the map's rows (a target's or a helper map's). */
+static void started_ekf_map_states(const float *all, float *map) {
+    map[0] = all[2];
+    map[1] = all[3];
+    map[2] = all[0];
+}
+
+/* The targets of a follower's states, flagged with their states' saturation. */
+static void started_ekf_targets_of(const float *states, const ecoli_x0_0p5_saturation *state_flags, const float *u,
+                                float *values, ecoli_x0_0p5_saturation *flags) {
+    targets(states, u, values);
+    flags[0] = ECOLI_X0_0P5_INSIDE;
+    flags[1] = ECOLI_X0_0P5_INSIDE;
+    flags[0] = state_flags[2];
+}
+
+/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite;
+ * the watched mean at its start. */
+static int started_ekf_start(const float *first, const float *u, float *x, float *p, float *chi) {
+    float out[ECOLI_X0_0P5_STATES + ECOLI_X0_0P5_COVARIANCE];
+    ekf_unmeasured(first, STARTED_P0, u, out);
+    if (!all_finite(out, ECOLI_X0_0P5_STATES + ECOLI_X0_0P5_COVARIANCE)) {
+        return 0;
+    }
+    memcpy(x, out, ECOLI_X0_0P5_STATES * sizeof *x);
+    memcpy(p, out + ECOLI_X0_0P5_STATES, ECOLI_X0_0P5_COVARIANCE * sizeof *p);
+    *chi = 2.0f;
+    return 1;
+}
+
+/* StartedEkf::follow: the EKF's sample, every state inside; not taken when the
+ * chi-squared watch (firmware::watch) finds the innovations implausible. */
+static int started_ekf_follow(float *x, float *p, float *chi, unsigned j, int start_up, const float *map,
+                              const float *y, const float *u, float *states, ecoli_x0_0p5_saturation *flags) {
+    unsigned i;
+    float nis;
+    (void)j;
+    (void)start_up;
+    (void)map;
+    for (i = 0u; i < ECOLI_X0_0P5_STATES; ++i) {
+        flags[i] = ECOLI_X0_0P5_INSIDE;
+    }
+    if (!ekf_measure(x, p, y, u, states, &nis)) {
+        return 0;
+    }
+    *chi = *chi + 0.33333334f * (nis - *chi);
+    return *chi <= 2048.0f;
+}
+
+
+static void ekf_map_fresh(ecoli_x0_0p5_ekf_map *o) {
+    ecoli_x0_0p5_map_init(&o->window);
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->count = 0u;
+    o->started = 0;
+}
+
+static ecoli_x0_0p5_status ekf_map_sample(ecoli_x0_0p5_ekf_map *o, const float *y, const float *u) {
+    const int start_up = o->count <= 0u;
+    float all[ECOLI_X0_0P5_MAP_ROWS], map[ECOLI_X0_0P5_STATES], states[ECOLI_X0_0P5_STATES];
+    ecoli_x0_0p5_saturation all_flags[ECOLI_X0_0P5_MAP_ROWS], state_flags[ECOLI_X0_0P5_STATES];
+    int estimated = 0;
+    if (!accepts(y, u)) {
+        if (o->started && inputs_finite(u)) {
+            ekf_predict(o->x, o->p, u);
+        }
+        return ECOLI_X0_0P5_REFUSED;
+    }
+    memset(map, 0, sizeof map);
+    if (start_up) {
+        (void)ecoli_x0_0p5_map_push(&o->window, y, u);
+        if (o->window.filled < ECOLI_X0_0P5_HORIZON) {
+            return ECOLI_X0_0P5_OK;
+        }
+        (void)start_map_estimate(&o->window, all, all_flags);
+        started_ekf_map_states(all, map);
+        estimated = 1;
+    }
+    if (!o->started && estimated) {
+        if (!started_ekf_start(map, u, o->x, o->p, &o->chi)) {
+            ekf_map_fresh(o);
+            return ECOLI_X0_0P5_RESTARTED;
+        }
+        o->started = 1;
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
+    } else if (o->started) {
+        if (!started_ekf_follow(o->x, o->p, &o->chi, o->count, start_up, map, y, u, states, state_flags)) {
+            ekf_map_fresh(o);
+            return ECOLI_X0_0P5_RESTARTED;
+        }
+        started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
+    } else {
+        return ECOLI_X0_0P5_OK;
+    }
+    o->ready = 1;
+    o->count = start_up ? o->count + 1u : o->count;
+    return ECOLI_X0_0P5_OK;
+}
+
+void ecoli_x0_0p5_ekf_map_init(ecoli_x0_0p5_ekf_map *o) {
+    ekf_map_fresh(o);
+    o->ready = 0;
+    o->refused = 0u;
+    o->restarts = 0u;
+}
+
+ecoli_x0_0p5_status ecoli_x0_0p5_ekf_map_push(ecoli_x0_0p5_ekf_map *o, const float *y, const float *u) {
+    const ecoli_x0_0p5_status status = ekf_map_sample(o, y, u);
+    if (status == ECOLI_X0_0P5_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    } else if (status == ECOLI_X0_0P5_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
+    }
+    return status;
+}
+
+ecoli_x0_0p5_status ecoli_x0_0p5_ekf_map_estimate(const ecoli_x0_0p5_ekf_map *o, float *values, ecoli_x0_0p5_saturation *saturation) {
+    if (!o->ready) {
+        return ECOLI_X0_0P5_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return ECOLI_X0_0P5_OK;
+}
+
+/* Whether the filter's prediction x (covariance p) and the map's states f disagree:
+ * d = sum_i (x_i - f_i)^2 / (P_ii + e_i^2) > threshold, or d is NaN (restart_disagrees). */
+static int restart_disagrees(const float *x, const float *p, const float *f) {
+    float d = 0.0f;
+    float e;
+    e = x[0] - f[0];
+    d += e * e / (p[0] + 0.022294048f);
+    e = x[1] - f[1];
+    d += e * e / (p[3] + 1.5391283f);
+    e = x[2] - f[2];
+    d += e * e / (p[5] + 0.0032587678f);
+    return !(d <= 64.0f);
+}
+
+static void ekf_restart_fresh(ecoli_x0_0p5_ekf_restart *o) {
+    ecoli_x0_0p5_map_init(&o->window);
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->chi = 2.0f;
+}
+
+/* firmware::Restarted: the sample to the map's window; from its first estimate on, the map's states
+ * against the filter's prediction at every sample, restarted from the map when they disagree;
+ * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
+ * when its step is not finite or its chi-squared watch finds the innovations implausible. */
+static ecoli_x0_0p5_status ekf_restart_sample(ecoli_x0_0p5_ekf_restart *o, const float *y, const float *u) {
+    float all[ECOLI_X0_0P5_MAP_ROWS], map[ECOLI_X0_0P5_STATES], states[ECOLI_X0_0P5_STATES];
+    ecoli_x0_0p5_saturation all_flags[ECOLI_X0_0P5_MAP_ROWS], state_flags[ECOLI_X0_0P5_STATES];
+    int mapped = 0;
+    if (!accepts(y, u)) {
+        if (inputs_finite(u)) {
+            ekf_predict(o->x, o->p, u);
+        }
+        return ECOLI_X0_0P5_REFUSED;
+    }
+    (void)ecoli_x0_0p5_map_push(&o->window, y, u);
+    if (o->window.filled >= ECOLI_X0_0P5_HORIZON) {
+        (void)start_map_estimate(&o->window, all, all_flags);
+        started_ekf_map_states(all, map);
+        mapped = 1;
+        if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p, &o->chi)) {
+            memcpy(o->values, all, sizeof o->values);
+            memcpy(o->flags, all_flags, sizeof o->flags);
+            o->ready = 1;
+            return ECOLI_X0_0P5_OK;
+        }
+    }
+    if (!started_ekf_follow(o->x, o->p, &o->chi, 1u, 0, NULL, y, u, states, state_flags)) {
+        if (!(mapped && started_ekf_start(map, u, o->x, o->p, &o->chi))) {
+            memcpy(o->x, EKF_X0, sizeof o->x);
+            memcpy(o->p, EKF_P0, sizeof o->p);
+            o->chi = 2.0f;
+        }
+        return ECOLI_X0_0P5_RESTARTED;
+    }
+    started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
+    o->ready = 1;
+    return ECOLI_X0_0P5_OK;
+}
+
+void ecoli_x0_0p5_ekf_restart_init(ecoli_x0_0p5_ekf_restart *o) {
+    ekf_restart_fresh(o);
+    o->ready = 0;
+    o->refused = 0u;
+    o->restarts = 0u;
+}
+
+ecoli_x0_0p5_status ecoli_x0_0p5_ekf_restart_push(ecoli_x0_0p5_ekf_restart *o, const float *y, const float *u) {
+    const ecoli_x0_0p5_status status = ekf_restart_sample(o, y, u);
+    if (status == ECOLI_X0_0P5_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    } else if (status == ECOLI_X0_0P5_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
+    }
+    return status;
+}
+
+ecoli_x0_0p5_status ecoli_x0_0p5_ekf_restart_estimate(const ecoli_x0_0p5_ekf_restart *o, float *values, ecoli_x0_0p5_saturation *saturation) {
     if (!o->ready) {
         return ECOLI_X0_0P5_NO_ESTIMATE_YET;
     }

@@ -143,6 +143,68 @@ void ecoli_x0_0p5_ukf_box_init(ecoli_x0_0p5_ukf_box *observer);
 ecoli_x0_0p5_status ecoli_x0_0p5_ukf_box_push(ecoli_x0_0p5_ukf_box *observer, const float *y, const float *u);
 ecoli_x0_0p5_status ecoli_x0_0p5_ukf_box_estimate(const ecoli_x0_0p5_ukf_box *observer, float *values, ecoli_x0_0p5_saturation *saturation);
 
+/* The model-corrected map (kind corrected, the Rust CorrectedObserver): the map's first estimate,
+ * then the model's prediction corrected by the output and, during the start-up, blended with the
+ * map; each state clamped to its learning range (flagged LOW or HIGH). */
+typedef struct {
+    ecoli_x0_0p5_map window;
+    float x[ECOLI_X0_0P5_STATES];
+    unsigned count;
+    int started;
+    float values[ECOLI_X0_0P5_TARGETS];
+    ecoli_x0_0p5_saturation flags[ECOLI_X0_0P5_TARGETS];
+    int ready;
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
+    uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
+} ecoli_x0_0p5_corrected;
+
+void ecoli_x0_0p5_corrected_init(ecoli_x0_0p5_corrected *observer);
+ecoli_x0_0p5_status ecoli_x0_0p5_corrected_push(ecoli_x0_0p5_corrected *observer, const float *y, const float *u);
+ecoli_x0_0p5_status ecoli_x0_0p5_corrected_estimate(const ecoli_x0_0p5_corrected *observer, float *values, ecoli_x0_0p5_saturation *saturation);
+
+/* The EKF started at the map's first estimate (kind ekf_map, the Rust EkfMapObserver). */
+typedef struct {
+    ecoli_x0_0p5_map window;
+    float x[ECOLI_X0_0P5_STATES];
+    float p[ECOLI_X0_0P5_COVARIANCE];
+    float chi;
+    unsigned count;
+    int started;
+    float values[ECOLI_X0_0P5_TARGETS];
+    ecoli_x0_0p5_saturation flags[ECOLI_X0_0P5_TARGETS];
+    int ready;
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
+    uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
+} ecoli_x0_0p5_ekf_map;
+
+void ecoli_x0_0p5_ekf_map_init(ecoli_x0_0p5_ekf_map *observer);
+ecoli_x0_0p5_status ecoli_x0_0p5_ekf_map_push(ecoli_x0_0p5_ekf_map *observer, const float *y, const float *u);
+ecoli_x0_0p5_status ecoli_x0_0p5_ekf_map_estimate(const ecoli_x0_0p5_ekf_map *observer, float *values, ecoli_x0_0p5_saturation *saturation);
+
+/* The EKF from the box centre that the map watches at every sample from its first estimate on,
+ * restarted from it where the two disagree (kind ekf_restart, the Rust EkfRestartObserver). */
+typedef struct {
+    ecoli_x0_0p5_map window;
+    float x[ECOLI_X0_0P5_STATES];
+    float p[ECOLI_X0_0P5_COVARIANCE];
+    float chi;
+    float values[ECOLI_X0_0P5_TARGETS];
+    ecoli_x0_0p5_saturation flags[ECOLI_X0_0P5_TARGETS];
+    int ready;
+    /* Samples refused since init for a bad value (a NaN or infinite input or output); saturates. */
+    uint32_t refused;
+    /* Restarts since init: samples with finite values whose step was not finite; saturates. */
+    uint32_t restarts;
+} ecoli_x0_0p5_ekf_restart;
+
+void ecoli_x0_0p5_ekf_restart_init(ecoli_x0_0p5_ekf_restart *observer);
+ecoli_x0_0p5_status ecoli_x0_0p5_ekf_restart_push(ecoli_x0_0p5_ekf_restart *observer, const float *y, const float *u);
+ecoli_x0_0p5_status ecoli_x0_0p5_ekf_restart_estimate(const ecoli_x0_0p5_ekf_restart *observer, float *values, ecoli_x0_0p5_saturation *saturation);
+
 /* The moving-horizon estimate (kind mhe, the Rust MheObserver): at every sample, 6 Gauss-Newton
  * step(s) over the last ECOLI_X0_0P5_HORIZON samples from the previous solution moved one sample on, each
  * solved by an L D L^T factorisation and projected onto the learning box. Thousands of instructions

@@ -70,7 +70,7 @@ static float select_float(int c, float a, float b) {
 }
 
 
-/* `P`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+/* target `P`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[6] = {
     0.042238023f, 0.00018856669f, 0.09614201f, -0.00046791596f,
     0.14462192f, 0.0006646337f
@@ -80,7 +80,7 @@ static const float SEGMENTS_0[2][2] = {
     { 3.8391352e-7f, 0.35391295f }
 };
 
-/* `muX`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+/* target `muX`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_1[6] = {
     13.540255f, 0.5872118f, -2.907262f, -0.12915602f,
     -21.073f, -0.027709922f
@@ -621,6 +621,28 @@ static const float SEGMENTS_1[533][2] = {
     { -0.062099278f, 0.0018213446f }
 };
 
+/* helper map `X`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+static const float GAINS_2[6] = {
+    0.39368424f, 0.00017549269f, 0.4214259f, -0.0001406003f,
+    0.40563855f, 0.00024582935f
+};
+static const float SEGMENTS_2[5][2] = {
+    { 1.7542171f, 0.7592416f },
+    { 1.7542149f, 0.7592438f },
+    { 1.7542151f, 0.75924367f },
+    { 1.754216f, 0.7592434f },
+    { 1.7543503f, 0.7592098f }
+};
+
+/* helper map `S`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+static const float GAINS_3[6] = {
+    0.014765836f, 0.0010063765f, -0.026398854f, -0.00075133867f,
+    -0.06432162f, 0.00016934868f
+};
+static const float SEGMENTS_3[1][2] = {
+    { 0.0f, 4.7961736f }
+};
+
 /* floor(t) for 0 <= t, at most count - 1: a uniform table's segment. Any other t (negative, NaN,
  * infinite) gives some segment, whose value evaluate replaces by r_min or r_max. The clamp is an
  * unsigned minimum of the bits of |t|, which are ordered as the values: the conversion is always
@@ -700,6 +722,52 @@ ecoli_x0_2_status ecoli_x0_2_map_estimate(const ecoli_x0_2_map *observer, float 
     return ECOLI_X0_2_OK;
 }
 
+
+/* The map the map-started kinds read: the targets' rows, then a helper map per state that no
+ * target is. */
+#define ECOLI_X0_2_MAP_ROWS 4u
+static inline ecoli_x0_2_status start_map_estimate(const ecoli_x0_2_map *observer, float *values, ecoli_x0_2_saturation *saturation) {
+    const unsigned next = observer->next;
+    if (observer->filled < ECOLI_X0_2_HORIZON) {
+        return ECOLI_X0_2_NO_ESTIMATE_YET;
+    }
+    const float t_0 = -0.09303047f
+        + GAINS_0[0] * observer->y[next + 2u][0]
+        + GAINS_0[1] * observer->y[next + 2u][1]
+        + GAINS_0[2] * observer->y[next + 1u][0]
+        + GAINS_0[3] * observer->y[next + 1u][1]
+        + GAINS_0[4] * observer->y[next + 0u][0]
+        + GAINS_0[5] * observer->y[next + 0u][1];
+    const float t_1 = 63.175545f
+        + GAINS_1[0] * observer->y[next + 2u][0]
+        + GAINS_1[1] * observer->y[next + 2u][1]
+        + GAINS_1[2] * observer->y[next + 1u][0]
+        + GAINS_1[3] * observer->y[next + 1u][1]
+        + GAINS_1[4] * observer->y[next + 0u][0]
+        + GAINS_1[5] * observer->y[next + 0u][1];
+    const float t_2 = -2.0167382f
+        + GAINS_2[0] * observer->y[next + 2u][0]
+        + GAINS_2[1] * observer->y[next + 2u][1]
+        + GAINS_2[2] * observer->y[next + 1u][0]
+        + GAINS_2[3] * observer->y[next + 1u][1]
+        + GAINS_2[4] * observer->y[next + 0u][0]
+        + GAINS_2[5] * observer->y[next + 0u][1];
+    const float t_3 = 0.3122503f
+        + GAINS_3[0] * observer->y[next + 2u][0]
+        + GAINS_3[1] * observer->y[next + 2u][1]
+        + GAINS_3[2] * observer->y[next + 1u][0]
+        + GAINS_3[3] * observer->y[next + 1u][1]
+        + GAINS_3[4] * observer->y[next + 0u][0]
+        + GAINS_3[5] * observer->y[next + 0u][1];
+    const uint32_t k_0 = uniform_segment(t_0, 2u);
+    evaluate(t_0, SEGMENTS_0[k_0], 0.0f, 2.0f, 0.0f, 0.7078263f, &values[0], &saturation[0]);
+    const uint32_t k_1 = uniform_segment(t_1, 533u);
+    evaluate(t_1, SEGMENTS_1[k_1], 0.0f, 533.0f, 0.0f, 0.9086774f, &values[1], &saturation[1]);
+    const uint32_t k_2 = uniform_segment(t_2, 5u);
+    evaluate(t_2, SEGMENTS_2[k_2], 0.0f, 5.0f, 1.7542171f, 5.5503993f, &values[2], &saturation[2]);
+    evaluate(t_3, SEGMENTS_3[0], 0.0f, 1.0f, 0.0f, 4.7961736f, &values[3], &saturation[3]);
+    return ECOLI_X0_2_OK;
+}
 
 /* `P` in integers: gains in regressor order (2^-27 per count), then (A_k, B_k) in its LSB. */
 static const int32_t FIXED_GAINS_0[6] = { 2768, 3164, 6301, -7850, 9478, 11151 };
@@ -13475,6 +13543,1081 @@ ecoli_x0_2_status ecoli_x0_2_ukf_box_push(ecoli_x0_2_ukf_box *o, const float *y,
 }
 
 ecoli_x0_2_status ecoli_x0_2_ukf_box_estimate(const ecoli_x0_2_ukf_box *o, float *values, ecoli_x0_2_saturation *saturation) {
+    if (!o->ready) {
+        return ECOLI_X0_2_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return ECOLI_X0_2_OK;
+}
+
+/* The start-up schedule, j = 1 … 9: the blends g_j per state, then the gains K_j (states x
+ * outputs, row by row). */
+static const float CORRECTED_BLENDS[9][9] = {
+{
+    0.8670658f, 0.8754467f, 0.87721705f, 0.085988f,
+    -0.0049171173f, 0.023575846f, 0.0068425178f, -0.014318315f,
+    0.009200609f
+},
+{
+    0.76570547f, 0.7804766f, 0.7835969f, 0.079969354f,
+    -0.0036963674f, 0.0228294f, 0.006103988f, -0.012101023f,
+    0.008120939f
+},
+{
+    0.68586427f, 0.70566905f, 0.7098526f, 0.075228475f,
+    -0.002734786f, 0.022241427f, 0.0055222497f, -0.0103544695f,
+    0.0072704866f
+},
+{
+    0.6213469f, 0.6452192f, 0.65026194f, 0.07139751f,
+    -0.00195776f, 0.021766303f, 0.005052164f, -0.00894313f,
+    0.0065832604f
+},
+{
+    0.56812805f, 0.5953555f, 0.601107f, 0.068237446f,
+    -0.0013168094f, 0.021374384f, 0.004664402f, -0.007778949f,
+    0.006016384f
+},
+{
+    0.5234787f, 0.5535211f, 0.5598672f, 0.065586224f,
+    -0.00077906746f, 0.021045575f, 0.0043390784f, -0.006802229f,
+    0.005540788f
+},
+{
+    0.48548323f, 0.5179211f, 0.52477324f, 0.0633301f,
+    -0.0003214628f, 0.020765765f, 0.0040622363f, -0.005971066f,
+    0.005136068f
+},
+{
+    0.45275742f, 0.4872585f, 0.49454644f, 0.06138688f,
+    7.267607e-5f, 0.020524763f, 0.0038237902f, -0.0052551776f,
+    0.0047874795f
+},
+{
+    0.42427605f, 0.46057278f, 0.46824002f, 0.05969569f,
+    0.00041569615f, 0.020315018f, 0.0036162697f, -0.004632138f,
+    0.0044841017f
+}
+};
+static const float CORRECTED_NO_BLEND[9] = { 0.0f };
+/* The clamp of each state: its map's learning range. */
+static const float CORRECTED_LOWER[ECOLI_X0_2_STATES] = {
+    1.7542171f, 0.0f, 0.0f
+};
+static const float CORRECTED_UPPER[ECOLI_X0_2_STATES] = {
+    5.5503993f, 4.7961736f, 0.7078263f
+};
+
+/* One sampling period of the model from x, the value alone: out = x+ (corrected_predict). */
+static void corrected_predict(const float *x, const float *u, float *out) {
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = x[2];
+    const float t3 = 0.05f;
+    const float t4 = 2.0f;
+    const float t5 = 6.0f;
+    const float t6 = t3 / t4;
+    const float t7 = t3 / t5;
+    const float t8 = 0.2f /* mu_m */;
+    const float t9 = 0.1f /* k_s */;
+    const float t10 = t9 + t1;
+    const float t11 = t1 / t10;
+    const float t12 = t8 * t11;
+    const float t13 = 0.1f /* k_d */;
+    const float t14 = 0.5f /* k_p */;
+    const float t15 = -t14;
+    const float t16 = 0.001f;
+    const float t17 = fmaxf(t2, t16);
+    const float t18 = t15 / t17;
+    const float t19 = libm_expf(t18);
+    const float t20 = t13 * t19;
+    const float t21 = t12 * t0;
+    const float t22 = t20 * t0;
+    const float t23 = t21 - t22;
+    const float t24 = 1.0f /* y_s */;
+    const float t25 = t24 * t12;
+    const float t26 = t25 * t0;
+    const float t27 = -t26;
+    const float t28 = 0.05f /* k_m */;
+    const float t29 = t28 * t0;
+    const float t30 = 0.01f /* ks_m */;
+    const float t31 = t1 + t30;
+    const float t32 = t1 / t31;
+    const float t33 = t29 * t32;
+    const float t34 = t27 - t33;
+    const float t35 = 0.2f /* y_p */;
+    const float t36 = t35 * t12;
+    const float t37 = 1.0f /* I */;
+    const float t38 = 0.5f /* k_I */;
+    const float t39 = t37 + t38;
+    const float t40 = t37 / t39;
+    const float t41 = t36 * t40;
+    const float t42 = t41 * t0;
+    const float t43 = t20 * t2;
+    const float t44 = t42 - t43;
+    const float t45 = t6 * t23;
+    const float t46 = t0 + t45;
+    const float t47 = t6 * t34;
+    const float t48 = t1 + t47;
+    const float t49 = t6 * t44;
+    const float t50 = t2 + t49;
+    const float t51 = t9 + t48;
+    const float t52 = t48 / t51;
+    const float t53 = t8 * t52;
+    const float t54 = fmaxf(t50, t16);
+    const float t55 = t15 / t54;
+    const float t56 = libm_expf(t55);
+    const float t57 = t13 * t56;
+    const float t58 = t53 * t46;
+    const float t59 = t57 * t46;
+    const float t60 = t58 - t59;
+    const float t61 = t24 * t53;
+    const float t62 = t61 * t46;
+    const float t63 = -t62;
+    const float t64 = t28 * t46;
+    const float t65 = t48 + t30;
+    const float t66 = t48 / t65;
+    const float t67 = t64 * t66;
+    const float t68 = t63 - t67;
+    const float t69 = t35 * t53;
+    const float t70 = t69 * t40;
+    const float t71 = t70 * t46;
+    const float t72 = t57 * t50;
+    const float t73 = t71 - t72;
+    const float t74 = t6 * t60;
+    const float t75 = t0 + t74;
+    const float t76 = t6 * t68;
+    const float t77 = t1 + t76;
+    const float t78 = t6 * t73;
+    const float t79 = t2 + t78;
+    const float t80 = t9 + t77;
+    const float t81 = t77 / t80;
+    const float t82 = t8 * t81;
+    const float t83 = fmaxf(t79, t16);
+    const float t84 = t15 / t83;
+    const float t85 = libm_expf(t84);
+    const float t86 = t13 * t85;
+    const float t87 = t82 * t75;
+    const float t88 = t86 * t75;
+    const float t89 = t87 - t88;
+    const float t90 = t24 * t82;
+    const float t91 = t90 * t75;
+    const float t92 = -t91;
+    const float t93 = t28 * t75;
+    const float t94 = t77 + t30;
+    const float t95 = t77 / t94;
+    const float t96 = t93 * t95;
+    const float t97 = t92 - t96;
+    const float t98 = t35 * t82;
+    const float t99 = t98 * t40;
+    const float t100 = t99 * t75;
+    const float t101 = t86 * t79;
+    const float t102 = t100 - t101;
+    const float t103 = t3 * t89;
+    const float t104 = t0 + t103;
+    const float t105 = t3 * t97;
+    const float t106 = t1 + t105;
+    const float t107 = t3 * t102;
+    const float t108 = t2 + t107;
+    const float t109 = t9 + t106;
+    const float t110 = t106 / t109;
+    const float t111 = t8 * t110;
+    const float t112 = fmaxf(t108, t16);
+    const float t113 = t15 / t112;
+    const float t114 = libm_expf(t113);
+    const float t115 = t13 * t114;
+    const float t116 = t111 * t104;
+    const float t117 = t115 * t104;
+    const float t118 = t116 - t117;
+    const float t119 = t24 * t111;
+    const float t120 = t119 * t104;
+    const float t121 = -t120;
+    const float t122 = t28 * t104;
+    const float t123 = t106 + t30;
+    const float t124 = t106 / t123;
+    const float t125 = t122 * t124;
+    const float t126 = t121 - t125;
+    const float t127 = t35 * t111;
+    const float t128 = t127 * t40;
+    const float t129 = t128 * t104;
+    const float t130 = t115 * t108;
+    const float t131 = t129 - t130;
+    const float t132 = t60 + t89;
+    const float t133 = t4 * t132;
+    const float t134 = t23 + t133;
+    const float t135 = t134 + t118;
+    const float t136 = t7 * t135;
+    const float t137 = t0 + t136;
+    const float t138 = t68 + t97;
+    const float t139 = t4 * t138;
+    const float t140 = t34 + t139;
+    const float t141 = t140 + t126;
+    const float t142 = t7 * t141;
+    const float t143 = t1 + t142;
+    const float t144 = t73 + t102;
+    const float t145 = t4 * t144;
+    const float t146 = t44 + t145;
+    const float t147 = t146 + t131;
+    const float t148 = t7 * t147;
+    const float t149 = t2 + t148;
+    const float t150 = t9 + t143;
+    const float t151 = t143 / t150;
+    const float t152 = t8 * t151;
+    const float t153 = fmaxf(t149, t16);
+    const float t154 = t15 / t153;
+    const float t155 = libm_expf(t154);
+    const float t156 = t13 * t155;
+    const float t157 = t152 * t137;
+    const float t158 = t156 * t137;
+    const float t159 = t157 - t158;
+    const float t160 = t24 * t152;
+    const float t161 = t160 * t137;
+    const float t162 = -t161;
+    const float t163 = t28 * t137;
+    const float t164 = t143 + t30;
+    const float t165 = t143 / t164;
+    const float t166 = t163 * t165;
+    const float t167 = t162 - t166;
+    const float t168 = t35 * t152;
+    const float t169 = t168 * t40;
+    const float t170 = t169 * t137;
+    const float t171 = t156 * t149;
+    const float t172 = t170 - t171;
+    const float t173 = t6 * t159;
+    const float t174 = t137 + t173;
+    const float t175 = t6 * t167;
+    const float t176 = t143 + t175;
+    const float t177 = t6 * t172;
+    const float t178 = t149 + t177;
+    const float t179 = t9 + t176;
+    const float t180 = t176 / t179;
+    const float t181 = t8 * t180;
+    const float t182 = fmaxf(t178, t16);
+    const float t183 = t15 / t182;
+    const float t184 = libm_expf(t183);
+    const float t185 = t13 * t184;
+    const float t186 = t181 * t174;
+    const float t187 = t185 * t174;
+    const float t188 = t186 - t187;
+    const float t189 = t24 * t181;
+    const float t190 = t189 * t174;
+    const float t191 = -t190;
+    const float t192 = t28 * t174;
+    const float t193 = t176 + t30;
+    const float t194 = t176 / t193;
+    const float t195 = t192 * t194;
+    const float t196 = t191 - t195;
+    const float t197 = t35 * t181;
+    const float t198 = t197 * t40;
+    const float t199 = t198 * t174;
+    const float t200 = t185 * t178;
+    const float t201 = t199 - t200;
+    const float t202 = t6 * t188;
+    const float t203 = t137 + t202;
+    const float t204 = t6 * t196;
+    const float t205 = t143 + t204;
+    const float t206 = t6 * t201;
+    const float t207 = t149 + t206;
+    const float t208 = t9 + t205;
+    const float t209 = t205 / t208;
+    const float t210 = t8 * t209;
+    const float t211 = fmaxf(t207, t16);
+    const float t212 = t15 / t211;
+    const float t213 = libm_expf(t212);
+    const float t214 = t13 * t213;
+    const float t215 = t210 * t203;
+    const float t216 = t214 * t203;
+    const float t217 = t215 - t216;
+    const float t218 = t24 * t210;
+    const float t219 = t218 * t203;
+    const float t220 = -t219;
+    const float t221 = t28 * t203;
+    const float t222 = t205 + t30;
+    const float t223 = t205 / t222;
+    const float t224 = t221 * t223;
+    const float t225 = t220 - t224;
+    const float t226 = t35 * t210;
+    const float t227 = t226 * t40;
+    const float t228 = t227 * t203;
+    const float t229 = t214 * t207;
+    const float t230 = t228 - t229;
+    const float t231 = t3 * t217;
+    const float t232 = t137 + t231;
+    const float t233 = t3 * t225;
+    const float t234 = t143 + t233;
+    const float t235 = t3 * t230;
+    const float t236 = t149 + t235;
+    const float t237 = t9 + t234;
+    const float t238 = t234 / t237;
+    const float t239 = t8 * t238;
+    const float t240 = fmaxf(t236, t16);
+    const float t241 = t15 / t240;
+    const float t242 = libm_expf(t241);
+    const float t243 = t13 * t242;
+    const float t244 = t239 * t232;
+    const float t245 = t243 * t232;
+    const float t246 = t244 - t245;
+    const float t247 = t24 * t239;
+    const float t248 = t247 * t232;
+    const float t249 = -t248;
+    const float t250 = t28 * t232;
+    const float t251 = t234 + t30;
+    const float t252 = t234 / t251;
+    const float t253 = t250 * t252;
+    const float t254 = t249 - t253;
+    const float t255 = t35 * t239;
+    const float t256 = t255 * t40;
+    const float t257 = t256 * t232;
+    const float t258 = t243 * t236;
+    const float t259 = t257 - t258;
+    const float t260 = t188 + t217;
+    const float t261 = t4 * t260;
+    const float t262 = t159 + t261;
+    const float t263 = t262 + t246;
+    const float t264 = t7 * t263;
+    const float t265 = t137 + t264;
+    const float t266 = t196 + t225;
+    const float t267 = t4 * t266;
+    const float t268 = t167 + t267;
+    const float t269 = t268 + t254;
+    const float t270 = t7 * t269;
+    const float t271 = t143 + t270;
+    const float t272 = t201 + t230;
+    const float t273 = t4 * t272;
+    const float t274 = t172 + t273;
+    const float t275 = t274 + t259;
+    const float t276 = t7 * t275;
+    const float t277 = t149 + t276;
+    const float t278 = t9 + t271;
+    const float t279 = t271 / t278;
+    const float t280 = t8 * t279;
+    const float t281 = fmaxf(t277, t16);
+    const float t282 = t15 / t281;
+    const float t283 = libm_expf(t282);
+    const float t284 = t13 * t283;
+    const float t285 = t280 * t265;
+    const float t286 = t284 * t265;
+    const float t287 = t285 - t286;
+    const float t288 = t24 * t280;
+    const float t289 = t288 * t265;
+    const float t290 = -t289;
+    const float t291 = t28 * t265;
+    const float t292 = t271 + t30;
+    const float t293 = t271 / t292;
+    const float t294 = t291 * t293;
+    const float t295 = t290 - t294;
+    const float t296 = t35 * t280;
+    const float t297 = t296 * t40;
+    const float t298 = t297 * t265;
+    const float t299 = t284 * t277;
+    const float t300 = t298 - t299;
+    const float t301 = t6 * t287;
+    const float t302 = t265 + t301;
+    const float t303 = t6 * t295;
+    const float t304 = t271 + t303;
+    const float t305 = t6 * t300;
+    const float t306 = t277 + t305;
+    const float t307 = t9 + t304;
+    const float t308 = t304 / t307;
+    const float t309 = t8 * t308;
+    const float t310 = fmaxf(t306, t16);
+    const float t311 = t15 / t310;
+    const float t312 = libm_expf(t311);
+    const float t313 = t13 * t312;
+    const float t314 = t309 * t302;
+    const float t315 = t313 * t302;
+    const float t316 = t314 - t315;
+    const float t317 = t24 * t309;
+    const float t318 = t317 * t302;
+    const float t319 = -t318;
+    const float t320 = t28 * t302;
+    const float t321 = t304 + t30;
+    const float t322 = t304 / t321;
+    const float t323 = t320 * t322;
+    const float t324 = t319 - t323;
+    const float t325 = t35 * t309;
+    const float t326 = t325 * t40;
+    const float t327 = t326 * t302;
+    const float t328 = t313 * t306;
+    const float t329 = t327 - t328;
+    const float t330 = t6 * t316;
+    const float t331 = t265 + t330;
+    const float t332 = t6 * t324;
+    const float t333 = t271 + t332;
+    const float t334 = t6 * t329;
+    const float t335 = t277 + t334;
+    const float t336 = t9 + t333;
+    const float t337 = t333 / t336;
+    const float t338 = t8 * t337;
+    const float t339 = fmaxf(t335, t16);
+    const float t340 = t15 / t339;
+    const float t341 = libm_expf(t340);
+    const float t342 = t13 * t341;
+    const float t343 = t338 * t331;
+    const float t344 = t342 * t331;
+    const float t345 = t343 - t344;
+    const float t346 = t24 * t338;
+    const float t347 = t346 * t331;
+    const float t348 = -t347;
+    const float t349 = t28 * t331;
+    const float t350 = t333 + t30;
+    const float t351 = t333 / t350;
+    const float t352 = t349 * t351;
+    const float t353 = t348 - t352;
+    const float t354 = t35 * t338;
+    const float t355 = t354 * t40;
+    const float t356 = t355 * t331;
+    const float t357 = t342 * t335;
+    const float t358 = t356 - t357;
+    const float t359 = t3 * t345;
+    const float t360 = t265 + t359;
+    const float t361 = t3 * t353;
+    const float t362 = t271 + t361;
+    const float t363 = t3 * t358;
+    const float t364 = t277 + t363;
+    const float t365 = t9 + t362;
+    const float t366 = t362 / t365;
+    const float t367 = t8 * t366;
+    const float t368 = fmaxf(t364, t16);
+    const float t369 = t15 / t368;
+    const float t370 = libm_expf(t369);
+    const float t371 = t13 * t370;
+    const float t372 = t367 * t360;
+    const float t373 = t371 * t360;
+    const float t374 = t372 - t373;
+    const float t375 = t24 * t367;
+    const float t376 = t375 * t360;
+    const float t377 = -t376;
+    const float t378 = t28 * t360;
+    const float t379 = t362 + t30;
+    const float t380 = t362 / t379;
+    const float t381 = t378 * t380;
+    const float t382 = t377 - t381;
+    const float t383 = t35 * t367;
+    const float t384 = t383 * t40;
+    const float t385 = t384 * t360;
+    const float t386 = t371 * t364;
+    const float t387 = t385 - t386;
+    const float t388 = t316 + t345;
+    const float t389 = t4 * t388;
+    const float t390 = t287 + t389;
+    const float t391 = t390 + t374;
+    const float t392 = t7 * t391;
+    const float t393 = t265 + t392;
+    const float t394 = t324 + t353;
+    const float t395 = t4 * t394;
+    const float t396 = t295 + t395;
+    const float t397 = t396 + t382;
+    const float t398 = t7 * t397;
+    const float t399 = t271 + t398;
+    const float t400 = t329 + t358;
+    const float t401 = t4 * t400;
+    const float t402 = t300 + t401;
+    const float t403 = t402 + t387;
+    const float t404 = t7 * t403;
+    const float t405 = t277 + t404;
+    const float t406 = t9 + t399;
+    const float t407 = t399 / t406;
+    const float t408 = t8 * t407;
+    const float t409 = fmaxf(t405, t16);
+    const float t410 = t15 / t409;
+    const float t411 = libm_expf(t410);
+    const float t412 = t13 * t411;
+    const float t413 = t408 * t393;
+    const float t414 = t412 * t393;
+    const float t415 = t413 - t414;
+    const float t416 = t24 * t408;
+    const float t417 = t416 * t393;
+    const float t418 = -t417;
+    const float t419 = t28 * t393;
+    const float t420 = t399 + t30;
+    const float t421 = t399 / t420;
+    const float t422 = t419 * t421;
+    const float t423 = t418 - t422;
+    const float t424 = t35 * t408;
+    const float t425 = t424 * t40;
+    const float t426 = t425 * t393;
+    const float t427 = t412 * t405;
+    const float t428 = t426 - t427;
+    const float t429 = t6 * t415;
+    const float t430 = t393 + t429;
+    const float t431 = t6 * t423;
+    const float t432 = t399 + t431;
+    const float t433 = t6 * t428;
+    const float t434 = t405 + t433;
+    const float t435 = t9 + t432;
+    const float t436 = t432 / t435;
+    const float t437 = t8 * t436;
+    const float t438 = fmaxf(t434, t16);
+    const float t439 = t15 / t438;
+    const float t440 = libm_expf(t439);
+    const float t441 = t13 * t440;
+    const float t442 = t437 * t430;
+    const float t443 = t441 * t430;
+    const float t444 = t442 - t443;
+    const float t445 = t24 * t437;
+    const float t446 = t445 * t430;
+    const float t447 = -t446;
+    const float t448 = t28 * t430;
+    const float t449 = t432 + t30;
+    const float t450 = t432 / t449;
+    const float t451 = t448 * t450;
+    const float t452 = t447 - t451;
+    const float t453 = t35 * t437;
+    const float t454 = t453 * t40;
+    const float t455 = t454 * t430;
+    const float t456 = t441 * t434;
+    const float t457 = t455 - t456;
+    const float t458 = t6 * t444;
+    const float t459 = t393 + t458;
+    const float t460 = t6 * t452;
+    const float t461 = t399 + t460;
+    const float t462 = t6 * t457;
+    const float t463 = t405 + t462;
+    const float t464 = t9 + t461;
+    const float t465 = t461 / t464;
+    const float t466 = t8 * t465;
+    const float t467 = fmaxf(t463, t16);
+    const float t468 = t15 / t467;
+    const float t469 = libm_expf(t468);
+    const float t470 = t13 * t469;
+    const float t471 = t466 * t459;
+    const float t472 = t470 * t459;
+    const float t473 = t471 - t472;
+    const float t474 = t24 * t466;
+    const float t475 = t474 * t459;
+    const float t476 = -t475;
+    const float t477 = t28 * t459;
+    const float t478 = t461 + t30;
+    const float t479 = t461 / t478;
+    const float t480 = t477 * t479;
+    const float t481 = t476 - t480;
+    const float t482 = t35 * t466;
+    const float t483 = t482 * t40;
+    const float t484 = t483 * t459;
+    const float t485 = t470 * t463;
+    const float t486 = t484 - t485;
+    const float t487 = t3 * t473;
+    const float t488 = t393 + t487;
+    const float t489 = t3 * t481;
+    const float t490 = t399 + t489;
+    const float t491 = t3 * t486;
+    const float t492 = t405 + t491;
+    const float t493 = t9 + t490;
+    const float t494 = t490 / t493;
+    const float t495 = t8 * t494;
+    const float t496 = fmaxf(t492, t16);
+    const float t497 = t15 / t496;
+    const float t498 = libm_expf(t497);
+    const float t499 = t13 * t498;
+    const float t500 = t495 * t488;
+    const float t501 = t499 * t488;
+    const float t502 = t500 - t501;
+    const float t503 = t24 * t495;
+    const float t504 = t503 * t488;
+    const float t505 = -t504;
+    const float t506 = t28 * t488;
+    const float t507 = t490 + t30;
+    const float t508 = t490 / t507;
+    const float t509 = t506 * t508;
+    const float t510 = t505 - t509;
+    const float t511 = t35 * t495;
+    const float t512 = t511 * t40;
+    const float t513 = t512 * t488;
+    const float t514 = t499 * t492;
+    const float t515 = t513 - t514;
+    const float t516 = t444 + t473;
+    const float t517 = t4 * t516;
+    const float t518 = t415 + t517;
+    const float t519 = t518 + t502;
+    const float t520 = t7 * t519;
+    const float t521 = t393 + t520;
+    const float t522 = t452 + t481;
+    const float t523 = t4 * t522;
+    const float t524 = t423 + t523;
+    const float t525 = t524 + t510;
+    const float t526 = t7 * t525;
+    const float t527 = t399 + t526;
+    const float t528 = t457 + t486;
+    const float t529 = t4 * t528;
+    const float t530 = t428 + t529;
+    const float t531 = t530 + t515;
+    const float t532 = t7 * t531;
+    const float t533 = t405 + t532;
+    out[0] = t521;
+    out[1] = t527;
+    out[2] = t533;
+}
+
+/* The correction during the start-up, g = (blends g_j, gains K_j): x before its clamp. */
+static void corrected_start_up(const float *x, const float *y, const float *u, const float *f, const float *g, float *out) {
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = x[2];
+    const float t3 = 0.2f /* mu_m */;
+    const float t4 = 0.1f /* k_s */;
+    const float t5 = t4 + t1;
+    const float t6 = t1 / t5;
+    const float t7 = t3 * t6;
+    const float t8 = 5000.0f /* y_l */;
+    const float t9 = t8 * t7;
+    const float t10 = 1.0f /* I */;
+    const float t11 = 1.0f /* k_l */;
+    const float t12 = t10 + t11;
+    const float t13 = t10 / t12;
+    const float t14 = t9 * t13;
+    const float t15 = t14 * t0;
+    const float t16 = t15 * t2;
+    const float t17 = y[0];
+    const float t18 = t17 - t0;
+    const float t19 = y[1];
+    const float t20 = t19 - t16;
+    const float t21 = g[0];
+    const float t22 = f[0];
+    const float t23 = t22 - t0;
+    const float t24 = t21 * t23;
+    const float t25 = t0 + t24;
+    const float t26 = g[3];
+    const float t27 = g[4];
+    const float t28 = t26 * t18;
+    const float t29 = t25 + t28;
+    const float t30 = t27 * t20;
+    const float t31 = t29 + t30;
+    const float t32 = g[1];
+    const float t33 = f[1];
+    const float t34 = t33 - t1;
+    const float t35 = t32 * t34;
+    const float t36 = t1 + t35;
+    const float t37 = g[5];
+    const float t38 = g[6];
+    const float t39 = t37 * t18;
+    const float t40 = t36 + t39;
+    const float t41 = t38 * t20;
+    const float t42 = t40 + t41;
+    const float t43 = g[2];
+    const float t44 = f[2];
+    const float t45 = t44 - t2;
+    const float t46 = t43 * t45;
+    const float t47 = t2 + t46;
+    const float t48 = g[7];
+    const float t49 = g[8];
+    const float t50 = t48 * t18;
+    const float t51 = t47 + t50;
+    const float t52 = t49 * t20;
+    const float t53 = t51 + t52;
+    out[0] = t31;
+    out[1] = t42;
+    out[2] = t53;
+}
+
+/* The correction after the start-up: x before its clamp. */
+static void corrected_steady(const float *x, const float *y, const float *u, const float *f, float *out) {
+    (void)u;
+    const float t0 = x[0];
+    const float t1 = x[1];
+    const float t2 = x[2];
+    const float t3 = 0.2f /* mu_m */;
+    const float t4 = 0.1f /* k_s */;
+    const float t5 = t4 + t1;
+    const float t6 = t1 / t5;
+    const float t7 = t3 * t6;
+    const float t8 = 5000.0f /* y_l */;
+    const float t9 = t8 * t7;
+    const float t10 = 1.0f /* I */;
+    const float t11 = 1.0f /* k_l */;
+    const float t12 = t10 + t11;
+    const float t13 = t10 / t12;
+    const float t14 = t9 * t13;
+    const float t15 = t14 * t0;
+    const float t16 = t15 * t2;
+    const float t17 = y[0];
+    const float t18 = t17 - t0;
+    const float t19 = y[1];
+    const float t20 = t19 - t16;
+    const float t21 = 0.013560385f;
+    const float t22 = f[0];
+    const float t23 = t22 - t0;
+    const float t24 = t21 * t23;
+    const float t25 = t0 + t24;
+    const float t26 = 0.035307903f;
+    const float t27 = 0.0053622206f;
+    const float t28 = t26 * t18;
+    const float t29 = t25 + t28;
+    const float t30 = t27 * t20;
+    const float t31 = t29 + t30;
+    const float t32 = 0.0757508f;
+    const float t33 = f[1];
+    const float t34 = t33 - t1;
+    const float t35 = t32 * t34;
+    const float t36 = t1 + t35;
+    const float t37 = 0.017290393f;
+    const float t38 = 0.00062371924f;
+    const float t39 = t37 * t18;
+    const float t40 = t36 + t39;
+    const float t41 = t38 * t20;
+    const float t42 = t40 + t41;
+    const float t43 = 0.08888779f;
+    const float t44 = f[2];
+    const float t45 = t44 - t2;
+    const float t46 = t43 * t45;
+    const float t47 = t2 + t46;
+    const float t48 = 0.004352408f;
+    const float t49 = 0.00010924086f;
+    const float t50 = t48 * t18;
+    const float t51 = t47 + t50;
+    const float t52 = t49 * t20;
+    const float t53 = t51 + t52;
+    out[0] = t31;
+    out[1] = t42;
+    out[2] = t53;
+}
+
+/* Each state's map estimate, from the map's rows (a target's or a helper map's). */
+static void corrected_map_states(const float *all, float *map) {
+    map[0] = all[2];
+    map[1] = all[3];
+    map[2] = all[0];
+}
+
+/* The targets of a follower's states, flagged with their states' saturation. */
+static void corrected_targets_of(const float *states, const ecoli_x0_2_saturation *state_flags, const float *u,
+                                float *values, ecoli_x0_2_saturation *flags) {
+    targets(states, u, values);
+    flags[0] = ECOLI_X0_2_INSIDE;
+    flags[1] = ECOLI_X0_2_INSIDE;
+    flags[0] = state_flags[2];
+}
+
+/* Corrector::start: the model's period from the map's first estimate (or from the states after
+ * a correction), taken into x when finite. */
+static int corrected_start(const float *first, const float *u, float *x) {
+    float next[ECOLI_X0_2_STATES];
+    corrected_predict(first, u, next);
+    if (!all_finite(next, ECOLI_X0_2_STATES)) {
+        return 0;
+    }
+    memcpy(x, next, sizeof next);
+    return 1;
+}
+
+/* Corrector::follow: the correction of the prediction x (the start-up's blend and gain, or
+ * G's), clamped to the states' ranges by selects, then the model's period from it. */
+static int corrected_follow(float *x, unsigned j, int start_up, const float *f, const float *y, const float *u,
+                            float *states, ecoli_x0_2_saturation *flags) {
+    float raw[ECOLI_X0_2_STATES];
+    unsigned i;
+    if (start_up) {
+        corrected_start_up(x, y, u, f, (j >= 1u && j <= 9u) ? CORRECTED_BLENDS[j - 1u] : CORRECTED_NO_BLEND, raw);
+    } else {
+        corrected_steady(x, y, u, f, raw);
+    }
+    for (i = 0u; i < ECOLI_X0_2_STATES; ++i) {
+        const int low = !(raw[i] >= CORRECTED_LOWER[i]);
+        const int out = low | (raw[i] > CORRECTED_UPPER[i]);
+        const float edge = select_float(low, CORRECTED_LOWER[i], CORRECTED_UPPER[i]);
+        const uint32_t flag = select_bits(low, (uint32_t)ECOLI_X0_2_LOW, (uint32_t)ECOLI_X0_2_HIGH);
+        states[i] = select_float(out, edge, raw[i]);
+        flags[i] = (ecoli_x0_2_saturation)select_bits(out, flag, (uint32_t)ECOLI_X0_2_INSIDE);
+    }
+    return corrected_start(states, u, x);
+}
+
+/* Corrector::predict: a lost output, the model's period from x (no correction). */
+static void corrected_lost(float *x, const float *u) {
+    (void)corrected_start(x, u, x);
+}
+
+
+static void corrected_fresh(ecoli_x0_2_corrected *o) {
+    ecoli_x0_2_map_init(&o->window);
+    memset(o->x, 0, sizeof o->x);
+    o->count = 0u;
+    o->started = 0;
+}
+
+static ecoli_x0_2_status corrected_sample(ecoli_x0_2_corrected *o, const float *y, const float *u) {
+    const int start_up = o->count <= 9u;
+    float all[ECOLI_X0_2_MAP_ROWS], map[ECOLI_X0_2_STATES], states[ECOLI_X0_2_STATES];
+    ecoli_x0_2_saturation all_flags[ECOLI_X0_2_MAP_ROWS], state_flags[ECOLI_X0_2_STATES];
+    int estimated = 0;
+    if (!accepts(y, u)) {
+        if (o->started && inputs_finite(u)) {
+            corrected_lost(o->x, u);
+        }
+        return ECOLI_X0_2_REFUSED;
+    }
+    memset(map, 0, sizeof map);
+    if (start_up || 1) {
+        (void)ecoli_x0_2_map_push(&o->window, y, u);
+        if (o->window.filled < ECOLI_X0_2_HORIZON) {
+            return ECOLI_X0_2_OK;
+        }
+        (void)start_map_estimate(&o->window, all, all_flags);
+        corrected_map_states(all, map);
+        estimated = 1;
+    }
+    if (!o->started && estimated) {
+        if (!corrected_start(map, u, o->x)) {
+            corrected_fresh(o);
+            return ECOLI_X0_2_RESTARTED;
+        }
+        o->started = 1;
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
+    } else if (o->started) {
+        if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
+            corrected_fresh(o);
+            return ECOLI_X0_2_RESTARTED;
+        }
+        corrected_targets_of(states, state_flags, u, o->values, o->flags);
+    } else {
+        return ECOLI_X0_2_OK;
+    }
+    o->ready = 1;
+    o->count = start_up ? o->count + 1u : o->count;
+    return ECOLI_X0_2_OK;
+}
+
+void ecoli_x0_2_corrected_init(ecoli_x0_2_corrected *o) {
+    corrected_fresh(o);
+    o->ready = 0;
+    o->refused = 0u;
+    o->restarts = 0u;
+}
+
+ecoli_x0_2_status ecoli_x0_2_corrected_push(ecoli_x0_2_corrected *o, const float *y, const float *u) {
+    const ecoli_x0_2_status status = corrected_sample(o, y, u);
+    if (status == ECOLI_X0_2_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    } else if (status == ECOLI_X0_2_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
+    }
+    return status;
+}
+
+ecoli_x0_2_status ecoli_x0_2_corrected_estimate(const ecoli_x0_2_corrected *o, float *values, ecoli_x0_2_saturation *saturation) {
+    if (!o->ready) {
+        return ECOLI_X0_2_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return ECOLI_X0_2_OK;
+}
+
+/* P(N-1)'s upper triangle of the EKF the map starts. */
+static const float STARTED_P0[ECOLI_X0_2_COVARIANCE] = {
+    0.10011295f, 0.0f, 0.0f, 2.5384724f,
+    0.0f, 0.020560255f
+};
+
+/* Each state's map estimate, from the map's rows (a target's or a helper map's). */
+static void started_ekf_map_states(const float *all, float *map) {
+    map[0] = all[2];
+    map[1] = all[3];
+    map[2] = all[0];
+}
+
+/* The targets of a follower's states, flagged with their states' saturation. */
+static void started_ekf_targets_of(const float *states, const ecoli_x0_2_saturation *state_flags, const float *u,
+                                float *values, ecoli_x0_2_saturation *flags) {
+    targets(states, u, values);
+    flags[0] = ECOLI_X0_2_INSIDE;
+    flags[1] = ECOLI_X0_2_INSIDE;
+    flags[0] = state_flags[2];
+}
+
+/* StartedEkf::start: one prediction from the map's states with STARTED_P0, taken when finite;
+ * the watched mean at its start. */
+static int started_ekf_start(const float *first, const float *u, float *x, float *p, float *chi) {
+    float out[ECOLI_X0_2_STATES + ECOLI_X0_2_COVARIANCE];
+    ekf_unmeasured(first, STARTED_P0, u, out);
+    if (!all_finite(out, ECOLI_X0_2_STATES + ECOLI_X0_2_COVARIANCE)) {
+        return 0;
+    }
+    memcpy(x, out, ECOLI_X0_2_STATES * sizeof *x);
+    memcpy(p, out + ECOLI_X0_2_STATES, ECOLI_X0_2_COVARIANCE * sizeof *p);
+    *chi = 2.0f;
+    return 1;
+}
+
+/* StartedEkf::follow: the EKF's sample, every state inside; not taken when the
+ * chi-squared watch (firmware::watch) finds the innovations implausible. */
+static int started_ekf_follow(float *x, float *p, float *chi, unsigned j, int start_up, const float *map,
+                              const float *y, const float *u, float *states, ecoli_x0_2_saturation *flags) {
+    unsigned i;
+    float nis;
+    (void)j;
+    (void)start_up;
+    (void)map;
+    for (i = 0u; i < ECOLI_X0_2_STATES; ++i) {
+        flags[i] = ECOLI_X0_2_INSIDE;
+    }
+    if (!ekf_measure(x, p, y, u, states, &nis)) {
+        return 0;
+    }
+    *chi = *chi + 0.33333334f * (nis - *chi);
+    return *chi <= 2048.0f;
+}
+
+
+static void ekf_map_fresh(ecoli_x0_2_ekf_map *o) {
+    ecoli_x0_2_map_init(&o->window);
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->count = 0u;
+    o->started = 0;
+}
+
+static ecoli_x0_2_status ekf_map_sample(ecoli_x0_2_ekf_map *o, const float *y, const float *u) {
+    const int start_up = o->count <= 0u;
+    float all[ECOLI_X0_2_MAP_ROWS], map[ECOLI_X0_2_STATES], states[ECOLI_X0_2_STATES];
+    ecoli_x0_2_saturation all_flags[ECOLI_X0_2_MAP_ROWS], state_flags[ECOLI_X0_2_STATES];
+    int estimated = 0;
+    if (!accepts(y, u)) {
+        if (o->started && inputs_finite(u)) {
+            ekf_predict(o->x, o->p, u);
+        }
+        return ECOLI_X0_2_REFUSED;
+    }
+    memset(map, 0, sizeof map);
+    if (start_up) {
+        (void)ecoli_x0_2_map_push(&o->window, y, u);
+        if (o->window.filled < ECOLI_X0_2_HORIZON) {
+            return ECOLI_X0_2_OK;
+        }
+        (void)start_map_estimate(&o->window, all, all_flags);
+        started_ekf_map_states(all, map);
+        estimated = 1;
+    }
+    if (!o->started && estimated) {
+        if (!started_ekf_start(map, u, o->x, o->p, &o->chi)) {
+            ekf_map_fresh(o);
+            return ECOLI_X0_2_RESTARTED;
+        }
+        o->started = 1;
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
+    } else if (o->started) {
+        if (!started_ekf_follow(o->x, o->p, &o->chi, o->count, start_up, map, y, u, states, state_flags)) {
+            ekf_map_fresh(o);
+            return ECOLI_X0_2_RESTARTED;
+        }
+        started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
+    } else {
+        return ECOLI_X0_2_OK;
+    }
+    o->ready = 1;
+    o->count = start_up ? o->count + 1u : o->count;
+    return ECOLI_X0_2_OK;
+}
+
+void ecoli_x0_2_ekf_map_init(ecoli_x0_2_ekf_map *o) {
+    ekf_map_fresh(o);
+    o->ready = 0;
+    o->refused = 0u;
+    o->restarts = 0u;
+}
+
+ecoli_x0_2_status ecoli_x0_2_ekf_map_push(ecoli_x0_2_ekf_map *o, const float *y, const float *u) {
+    const ecoli_x0_2_status status = ekf_map_sample(o, y, u);
+    if (status == ECOLI_X0_2_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    } else if (status == ECOLI_X0_2_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
+    }
+    return status;
+}
+
+ecoli_x0_2_status ecoli_x0_2_ekf_map_estimate(const ecoli_x0_2_ekf_map *o, float *values, ecoli_x0_2_saturation *saturation) {
+    if (!o->ready) {
+        return ECOLI_X0_2_NO_ESTIMATE_YET;
+    }
+    memcpy(values, o->values, sizeof o->values);
+    memcpy(saturation, o->flags, sizeof o->flags);
+    return ECOLI_X0_2_OK;
+}
+
+/* Whether the filter's prediction x (covariance p) and the map's states f disagree:
+ * d = sum_i (x_i - f_i)^2 / (P_ii + e_i^2) > threshold, or d is NaN (restart_disagrees). */
+static int restart_disagrees(const float *x, const float *p, const float *f) {
+    float d = 0.0f;
+    float e;
+    e = x[0] - f[0];
+    d += e * e / (p[0] + 0.031658497f);
+    e = x[1] - f[1];
+    d += e * e / (p[3] + 0.8027355f);
+    e = x[2] - f[2];
+    d += e * e / (p[5] + 0.0065017235f);
+    return !(d <= 32.0f);
+}
+
+static void ekf_restart_fresh(ecoli_x0_2_ekf_restart *o) {
+    ecoli_x0_2_map_init(&o->window);
+    memcpy(o->x, EKF_X0, sizeof o->x);
+    memcpy(o->p, EKF_P0, sizeof o->p);
+    o->chi = 2.0f;
+}
+
+/* firmware::Restarted: the sample to the map's window; from its first estimate on, the map's states
+ * against the filter's prediction at every sample, restarted from the map when they disagree;
+ * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
+ * when its step is not finite or its chi-squared watch finds the innovations implausible. */
+static ecoli_x0_2_status ekf_restart_sample(ecoli_x0_2_ekf_restart *o, const float *y, const float *u) {
+    float all[ECOLI_X0_2_MAP_ROWS], map[ECOLI_X0_2_STATES], states[ECOLI_X0_2_STATES];
+    ecoli_x0_2_saturation all_flags[ECOLI_X0_2_MAP_ROWS], state_flags[ECOLI_X0_2_STATES];
+    int mapped = 0;
+    if (!accepts(y, u)) {
+        if (inputs_finite(u)) {
+            ekf_predict(o->x, o->p, u);
+        }
+        return ECOLI_X0_2_REFUSED;
+    }
+    (void)ecoli_x0_2_map_push(&o->window, y, u);
+    if (o->window.filled >= ECOLI_X0_2_HORIZON) {
+        (void)start_map_estimate(&o->window, all, all_flags);
+        started_ekf_map_states(all, map);
+        mapped = 1;
+        if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p, &o->chi)) {
+            memcpy(o->values, all, sizeof o->values);
+            memcpy(o->flags, all_flags, sizeof o->flags);
+            o->ready = 1;
+            return ECOLI_X0_2_OK;
+        }
+    }
+    if (!started_ekf_follow(o->x, o->p, &o->chi, 1u, 0, NULL, y, u, states, state_flags)) {
+        if (!(mapped && started_ekf_start(map, u, o->x, o->p, &o->chi))) {
+            memcpy(o->x, EKF_X0, sizeof o->x);
+            memcpy(o->p, EKF_P0, sizeof o->p);
+            o->chi = 2.0f;
+        }
+        return ECOLI_X0_2_RESTARTED;
+    }
+    started_ekf_targets_of(states, state_flags, u, o->values, o->flags);
+    o->ready = 1;
+    return ECOLI_X0_2_OK;
+}
+
+void ecoli_x0_2_ekf_restart_init(ecoli_x0_2_ekf_restart *o) {
+    ekf_restart_fresh(o);
+    o->ready = 0;
+    o->refused = 0u;
+    o->restarts = 0u;
+}
+
+ecoli_x0_2_status ecoli_x0_2_ekf_restart_push(ecoli_x0_2_ekf_restart *o, const float *y, const float *u) {
+    const ecoli_x0_2_status status = ekf_restart_sample(o, y, u);
+    if (status == ECOLI_X0_2_REFUSED && o->refused != UINT32_MAX) {
+        ++o->refused;
+    } else if (status == ECOLI_X0_2_RESTARTED && o->restarts != UINT32_MAX) {
+        ++o->restarts;
+    }
+    return status;
+}
+
+ecoli_x0_2_status ecoli_x0_2_ekf_restart_estimate(const ecoli_x0_2_ekf_restart *o, float *values, ecoli_x0_2_saturation *saturation) {
     if (!o->ready) {
         return ECOLI_X0_2_NO_ESTIMATE_YET;
     }

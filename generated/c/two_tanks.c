@@ -72,7 +72,7 @@ static float select_float(int c, float a, float b) {
 }
 
 
-/* `h1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+/* target `h1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[20] = {
     5.676462f, 4.547314f, 3.353178f, 2.1643755f,
     1.0956115f, -0.026377345f, -1.05504f, -2.0768101f,
@@ -277,7 +277,7 @@ static const float SEGMENTS_0[194][2] = {
     { 8.036455f, 0.09365962f }
 };
 
-/* `h2`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+/* target `h2`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_1[20] = {
     2.4817736f, 2.227527f, 1.8953944f, 1.5256011f,
     1.1762369f, 0.77073723f, 0.3714361f, -0.06182462f,
@@ -587,6 +587,9 @@ two_tanks_status two_tanks_map_estimate(const two_tanks_map *observer, float *va
     return TWO_TANKS_OK;
 }
 
+
+#define TWO_TANKS_MAP_ROWS TWO_TANKS_TARGETS
+#define start_map_estimate two_tanks_map_estimate
 
 /* `h1` in integers: gains in regressor order (2^-19 per count), then (A_k, B_k) in its LSB. */
 static const int32_t FIXED_GAINS_0[20] = { 5813, 4656, 3434, 2216, 1122, -27, -1080, -2127, -3196, -4260, -24, 964, 802, 659, 503, 383, 234, 130, 63, 9 };
@@ -2866,7 +2869,7 @@ static void corrected_steady(const float *x, const float *y, const float *u, con
     out[1] = t9;
 }
 
-/* Each state's map estimate, from the map's targets. */
+/* Each state's map estimate, from the map's rows (a target's or a helper map's). */
 static void corrected_map_states(const float *all, float *map) {
     map[0] = all[0];
     map[1] = all[1];
@@ -2931,8 +2934,8 @@ static void corrected_fresh(two_tanks_corrected *o) {
 
 static two_tanks_status corrected_sample(two_tanks_corrected *o, const float *y, const float *u) {
     const int start_up = o->count <= 30u;
-    float all[TWO_TANKS_TARGETS], map[TWO_TANKS_STATES], states[TWO_TANKS_STATES];
-    two_tanks_saturation all_flags[TWO_TANKS_TARGETS], state_flags[TWO_TANKS_STATES];
+    float all[TWO_TANKS_MAP_ROWS], map[TWO_TANKS_STATES], states[TWO_TANKS_STATES];
+    two_tanks_saturation all_flags[TWO_TANKS_MAP_ROWS], state_flags[TWO_TANKS_STATES];
     int estimated = 0;
     if (!accepts(y, u)) {
         if (o->started && inputs_finite(u)) {
@@ -2946,7 +2949,7 @@ static two_tanks_status corrected_sample(two_tanks_corrected *o, const float *y,
         if (o->window.filled < TWO_TANKS_HORIZON) {
             return TWO_TANKS_OK;
         }
-        (void)two_tanks_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         corrected_map_states(all, map);
         estimated = 1;
     }
@@ -2956,8 +2959,8 @@ static two_tanks_status corrected_sample(two_tanks_corrected *o, const float *y,
             return TWO_TANKS_RESTARTED;
         }
         o->started = 1;
-        memcpy(o->values, all, sizeof all);
-        memcpy(o->flags, all_flags, sizeof all_flags);
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
     } else if (o->started) {
         if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
             corrected_fresh(o);
@@ -3003,7 +3006,7 @@ static const float STARTED_P0[TWO_TANKS_COVARIANCE] = {
     0.38551724f, 0.0f, 0.034644302f
 };
 
-/* Each state's map estimate, from the map's targets. */
+/* Each state's map estimate, from the map's rows (a target's or a helper map's). */
 static void started_ekf_map_states(const float *all, float *map) {
     map[0] = all[0];
     map[1] = all[1];
@@ -3063,8 +3066,8 @@ static void ekf_map_fresh(two_tanks_ekf_map *o) {
 
 static two_tanks_status ekf_map_sample(two_tanks_ekf_map *o, const float *y, const float *u) {
     const int start_up = o->count <= 0u;
-    float all[TWO_TANKS_TARGETS], map[TWO_TANKS_STATES], states[TWO_TANKS_STATES];
-    two_tanks_saturation all_flags[TWO_TANKS_TARGETS], state_flags[TWO_TANKS_STATES];
+    float all[TWO_TANKS_MAP_ROWS], map[TWO_TANKS_STATES], states[TWO_TANKS_STATES];
+    two_tanks_saturation all_flags[TWO_TANKS_MAP_ROWS], state_flags[TWO_TANKS_STATES];
     int estimated = 0;
     if (!accepts(y, u)) {
         if (o->started && inputs_finite(u)) {
@@ -3078,7 +3081,7 @@ static two_tanks_status ekf_map_sample(two_tanks_ekf_map *o, const float *y, con
         if (o->window.filled < TWO_TANKS_HORIZON) {
             return TWO_TANKS_OK;
         }
-        (void)two_tanks_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         estimated = 1;
     }
@@ -3088,8 +3091,8 @@ static two_tanks_status ekf_map_sample(two_tanks_ekf_map *o, const float *y, con
             return TWO_TANKS_RESTARTED;
         }
         o->started = 1;
-        memcpy(o->values, all, sizeof all);
-        memcpy(o->flags, all_flags, sizeof all_flags);
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
     } else if (o->started) {
         if (!started_ekf_follow(o->x, o->p, &o->chi, o->count, start_up, map, y, u, states, state_flags)) {
             ekf_map_fresh(o);
@@ -3154,8 +3157,8 @@ static void ekf_restart_fresh(two_tanks_ekf_restart *o) {
  * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
  * when its step is not finite or its chi-squared watch finds the innovations implausible. */
 static two_tanks_status ekf_restart_sample(two_tanks_ekf_restart *o, const float *y, const float *u) {
-    float all[TWO_TANKS_TARGETS], map[TWO_TANKS_STATES], states[TWO_TANKS_STATES];
-    two_tanks_saturation all_flags[TWO_TANKS_TARGETS], state_flags[TWO_TANKS_STATES];
+    float all[TWO_TANKS_MAP_ROWS], map[TWO_TANKS_STATES], states[TWO_TANKS_STATES];
+    two_tanks_saturation all_flags[TWO_TANKS_MAP_ROWS], state_flags[TWO_TANKS_STATES];
     int mapped = 0;
     if (!accepts(y, u)) {
         if (inputs_finite(u)) {
@@ -3165,12 +3168,12 @@ static two_tanks_status ekf_restart_sample(two_tanks_ekf_restart *o, const float
     }
     (void)two_tanks_map_push(&o->window, y, u);
     if (o->window.filled >= TWO_TANKS_HORIZON) {
-        (void)two_tanks_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         mapped = 1;
         if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p, &o->chi)) {
-            memcpy(o->values, all, sizeof all);
-            memcpy(o->flags, all_flags, sizeof all_flags);
+            memcpy(o->values, all, sizeof o->values);
+            memcpy(o->flags, all_flags, sizeof o->flags);
             o->ready = 1;
             return TWO_TANKS_OK;
         }

@@ -70,7 +70,7 @@ static float select_float(int c, float a, float b) {
 }
 
 
-/* `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+/* target `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[10] = {
     4.0281353f, 0.68335295f, -0.87648195f, -1.1985004f,
     -1.0801039f, -0.37953317f, 0.18793039f, 0.40863973f,
@@ -171,7 +171,7 @@ static const float SEGMENTS_0[92][2] = {
     { 1.1005523f, 0.014250932f }
 };
 
-/* `x2`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+/* target `x2`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_1[10] = {
     0.03496939f, 0.032472618f, 0.020010445f, 0.008153512f,
     -0.00033767632f, -0.0037675358f, -0.0035363836f, 0.0008704437f,
@@ -267,6 +267,9 @@ vanderpol_status vanderpol_map_estimate(const vanderpol_map *observer, float *va
     return VANDERPOL_OK;
 }
 
+
+#define VANDERPOL_MAP_ROWS VANDERPOL_TARGETS
+#define start_map_estimate vanderpol_map_estimate
 
 /* `x1` in integers: gains in regressor order (2^-22 per count), then (A_k, B_k) in its LSB. */
 static const int32_t FIXED_GAINS_0[10] = { 84476, 14331, -18381, -25134, -22651, -7959, 3941, 8570, -12809, -75037 };
@@ -1980,7 +1983,7 @@ static void corrected_steady(const float *x, const float *y, const float *u, con
     out[1] = t10;
 }
 
-/* Each state's map estimate, from the map's targets. */
+/* Each state's map estimate, from the map's rows (a target's or a helper map's). */
 static void corrected_map_states(const float *all, float *map) {
     map[0] = all[0];
     map[1] = all[1];
@@ -2045,8 +2048,8 @@ static void corrected_fresh(vanderpol_corrected *o) {
 
 static vanderpol_status corrected_sample(vanderpol_corrected *o, const float *y, const float *u) {
     const int start_up = o->count <= 30u;
-    float all[VANDERPOL_TARGETS], map[VANDERPOL_STATES], states[VANDERPOL_STATES];
-    vanderpol_saturation all_flags[VANDERPOL_TARGETS], state_flags[VANDERPOL_STATES];
+    float all[VANDERPOL_MAP_ROWS], map[VANDERPOL_STATES], states[VANDERPOL_STATES];
+    vanderpol_saturation all_flags[VANDERPOL_MAP_ROWS], state_flags[VANDERPOL_STATES];
     int estimated = 0;
     if (!accepts(y, u)) {
         if (o->started && inputs_finite(u)) {
@@ -2060,7 +2063,7 @@ static vanderpol_status corrected_sample(vanderpol_corrected *o, const float *y,
         if (o->window.filled < VANDERPOL_HORIZON) {
             return VANDERPOL_OK;
         }
-        (void)vanderpol_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         corrected_map_states(all, map);
         estimated = 1;
     }
@@ -2070,8 +2073,8 @@ static vanderpol_status corrected_sample(vanderpol_corrected *o, const float *y,
             return VANDERPOL_RESTARTED;
         }
         o->started = 1;
-        memcpy(o->values, all, sizeof all);
-        memcpy(o->flags, all_flags, sizeof all_flags);
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
     } else if (o->started) {
         if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
             corrected_fresh(o);
@@ -2117,7 +2120,7 @@ static const float STARTED_P0[VANDERPOL_COVARIANCE] = {
     0.05719194f, 0.0f, 0.080293626f
 };
 
-/* Each state's map estimate, from the map's targets. */
+/* Each state's map estimate, from the map's rows (a target's or a helper map's). */
 static void started_ekf_map_states(const float *all, float *map) {
     map[0] = all[0];
     map[1] = all[1];
@@ -2177,8 +2180,8 @@ static void ekf_map_fresh(vanderpol_ekf_map *o) {
 
 static vanderpol_status ekf_map_sample(vanderpol_ekf_map *o, const float *y, const float *u) {
     const int start_up = o->count <= 0u;
-    float all[VANDERPOL_TARGETS], map[VANDERPOL_STATES], states[VANDERPOL_STATES];
-    vanderpol_saturation all_flags[VANDERPOL_TARGETS], state_flags[VANDERPOL_STATES];
+    float all[VANDERPOL_MAP_ROWS], map[VANDERPOL_STATES], states[VANDERPOL_STATES];
+    vanderpol_saturation all_flags[VANDERPOL_MAP_ROWS], state_flags[VANDERPOL_STATES];
     int estimated = 0;
     if (!accepts(y, u)) {
         if (o->started && inputs_finite(u)) {
@@ -2192,7 +2195,7 @@ static vanderpol_status ekf_map_sample(vanderpol_ekf_map *o, const float *y, con
         if (o->window.filled < VANDERPOL_HORIZON) {
             return VANDERPOL_OK;
         }
-        (void)vanderpol_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         estimated = 1;
     }
@@ -2202,8 +2205,8 @@ static vanderpol_status ekf_map_sample(vanderpol_ekf_map *o, const float *y, con
             return VANDERPOL_RESTARTED;
         }
         o->started = 1;
-        memcpy(o->values, all, sizeof all);
-        memcpy(o->flags, all_flags, sizeof all_flags);
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
     } else if (o->started) {
         if (!started_ekf_follow(o->x, o->p, &o->chi, o->count, start_up, map, y, u, states, state_flags)) {
             ekf_map_fresh(o);
@@ -2268,8 +2271,8 @@ static void ekf_restart_fresh(vanderpol_ekf_restart *o) {
  * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
  * when its step is not finite or its chi-squared watch finds the innovations implausible. */
 static vanderpol_status ekf_restart_sample(vanderpol_ekf_restart *o, const float *y, const float *u) {
-    float all[VANDERPOL_TARGETS], map[VANDERPOL_STATES], states[VANDERPOL_STATES];
-    vanderpol_saturation all_flags[VANDERPOL_TARGETS], state_flags[VANDERPOL_STATES];
+    float all[VANDERPOL_MAP_ROWS], map[VANDERPOL_STATES], states[VANDERPOL_STATES];
+    vanderpol_saturation all_flags[VANDERPOL_MAP_ROWS], state_flags[VANDERPOL_STATES];
     int mapped = 0;
     if (!accepts(y, u)) {
         if (inputs_finite(u)) {
@@ -2279,12 +2282,12 @@ static vanderpol_status ekf_restart_sample(vanderpol_ekf_restart *o, const float
     }
     (void)vanderpol_map_push(&o->window, y, u);
     if (o->window.filled >= VANDERPOL_HORIZON) {
-        (void)vanderpol_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         mapped = 1;
         if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p, &o->chi)) {
-            memcpy(o->values, all, sizeof all);
-            memcpy(o->flags, all_flags, sizeof all_flags);
+            memcpy(o->values, all, sizeof o->values);
+            memcpy(o->flags, all_flags, sizeof o->flags);
             o->ready = 1;
             return VANDERPOL_OK;
         }

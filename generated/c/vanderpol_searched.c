@@ -70,7 +70,7 @@ static float select_float(int c, float a, float b) {
 }
 
 
-/* `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+/* target `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[16] = {
     0.017425023f, 0.0037131133f, -0.004852354f, -0.0077679497f,
     -0.00902742f, -0.00846091f, -0.0072684176f, -0.0074997274f,
@@ -81,7 +81,7 @@ static const float SEGMENTS_0[1][2] = {
     { -2.0616221f, 4.1232443f }
 };
 
-/* `x2`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+/* target `x2`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_1[16] = {
     0.032474767f, 0.027363943f, 0.016799463f, 0.007769529f,
     0.0012106312f, -0.00082871964f, -0.00085571123f, 0.002111885f,
@@ -176,6 +176,9 @@ vanderpol_searched_status vanderpol_searched_map_estimate(const vanderpol_search
     return VANDERPOL_SEARCHED_OK;
 }
 
+
+#define VANDERPOL_SEARCHED_MAP_ROWS VANDERPOL_SEARCHED_TARGETS
+#define start_map_estimate vanderpol_searched_map_estimate
 
 /* `x1` in integers: gains in regressor order (2^-28 per count), then (A_k, B_k) in its LSB. */
 static const int32_t FIXED_GAINS_0[16] = { 2284, 487, -636, -1018, -1183, -1109, -953, -983, -935, -1292, -1628, -1823, -1820, -1961, -1517, -1009 };
@@ -1882,7 +1885,7 @@ static void corrected_steady(const float *x, const float *y, const float *u, con
     out[1] = t10;
 }
 
-/* Each state's map estimate, from the map's targets. */
+/* Each state's map estimate, from the map's rows (a target's or a helper map's). */
 static void corrected_map_states(const float *all, float *map) {
     map[0] = all[0];
     map[1] = all[1];
@@ -1947,8 +1950,8 @@ static void corrected_fresh(vanderpol_searched_corrected *o) {
 
 static vanderpol_searched_status corrected_sample(vanderpol_searched_corrected *o, const float *y, const float *u) {
     const int start_up = o->count <= 48u;
-    float all[VANDERPOL_SEARCHED_TARGETS], map[VANDERPOL_SEARCHED_STATES], states[VANDERPOL_SEARCHED_STATES];
-    vanderpol_searched_saturation all_flags[VANDERPOL_SEARCHED_TARGETS], state_flags[VANDERPOL_SEARCHED_STATES];
+    float all[VANDERPOL_SEARCHED_MAP_ROWS], map[VANDERPOL_SEARCHED_STATES], states[VANDERPOL_SEARCHED_STATES];
+    vanderpol_searched_saturation all_flags[VANDERPOL_SEARCHED_MAP_ROWS], state_flags[VANDERPOL_SEARCHED_STATES];
     int estimated = 0;
     if (!accepts(y, u)) {
         if (o->started && inputs_finite(u)) {
@@ -1962,7 +1965,7 @@ static vanderpol_searched_status corrected_sample(vanderpol_searched_corrected *
         if (o->window.filled < VANDERPOL_SEARCHED_HORIZON) {
             return VANDERPOL_SEARCHED_OK;
         }
-        (void)vanderpol_searched_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         corrected_map_states(all, map);
         estimated = 1;
     }
@@ -1972,8 +1975,8 @@ static vanderpol_searched_status corrected_sample(vanderpol_searched_corrected *
             return VANDERPOL_SEARCHED_RESTARTED;
         }
         o->started = 1;
-        memcpy(o->values, all, sizeof all);
-        memcpy(o->flags, all_flags, sizeof all_flags);
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
     } else if (o->started) {
         if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
             corrected_fresh(o);
@@ -2019,7 +2022,7 @@ static const float STARTED_P0[VANDERPOL_SEARCHED_COVARIANCE] = {
     0.042410802f, 0.0f, 0.18023792f
 };
 
-/* Each state's map estimate, from the map's targets. */
+/* Each state's map estimate, from the map's rows (a target's or a helper map's). */
 static void started_ekf_map_states(const float *all, float *map) {
     map[0] = all[0];
     map[1] = all[1];
@@ -2079,8 +2082,8 @@ static void ekf_map_fresh(vanderpol_searched_ekf_map *o) {
 
 static vanderpol_searched_status ekf_map_sample(vanderpol_searched_ekf_map *o, const float *y, const float *u) {
     const int start_up = o->count <= 0u;
-    float all[VANDERPOL_SEARCHED_TARGETS], map[VANDERPOL_SEARCHED_STATES], states[VANDERPOL_SEARCHED_STATES];
-    vanderpol_searched_saturation all_flags[VANDERPOL_SEARCHED_TARGETS], state_flags[VANDERPOL_SEARCHED_STATES];
+    float all[VANDERPOL_SEARCHED_MAP_ROWS], map[VANDERPOL_SEARCHED_STATES], states[VANDERPOL_SEARCHED_STATES];
+    vanderpol_searched_saturation all_flags[VANDERPOL_SEARCHED_MAP_ROWS], state_flags[VANDERPOL_SEARCHED_STATES];
     int estimated = 0;
     if (!accepts(y, u)) {
         if (o->started && inputs_finite(u)) {
@@ -2094,7 +2097,7 @@ static vanderpol_searched_status ekf_map_sample(vanderpol_searched_ekf_map *o, c
         if (o->window.filled < VANDERPOL_SEARCHED_HORIZON) {
             return VANDERPOL_SEARCHED_OK;
         }
-        (void)vanderpol_searched_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         estimated = 1;
     }
@@ -2104,8 +2107,8 @@ static vanderpol_searched_status ekf_map_sample(vanderpol_searched_ekf_map *o, c
             return VANDERPOL_SEARCHED_RESTARTED;
         }
         o->started = 1;
-        memcpy(o->values, all, sizeof all);
-        memcpy(o->flags, all_flags, sizeof all_flags);
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
     } else if (o->started) {
         if (!started_ekf_follow(o->x, o->p, &o->chi, o->count, start_up, map, y, u, states, state_flags)) {
             ekf_map_fresh(o);
@@ -2170,8 +2173,8 @@ static void ekf_restart_fresh(vanderpol_searched_ekf_restart *o) {
  * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
  * when its step is not finite or its chi-squared watch finds the innovations implausible. */
 static vanderpol_searched_status ekf_restart_sample(vanderpol_searched_ekf_restart *o, const float *y, const float *u) {
-    float all[VANDERPOL_SEARCHED_TARGETS], map[VANDERPOL_SEARCHED_STATES], states[VANDERPOL_SEARCHED_STATES];
-    vanderpol_searched_saturation all_flags[VANDERPOL_SEARCHED_TARGETS], state_flags[VANDERPOL_SEARCHED_STATES];
+    float all[VANDERPOL_SEARCHED_MAP_ROWS], map[VANDERPOL_SEARCHED_STATES], states[VANDERPOL_SEARCHED_STATES];
+    vanderpol_searched_saturation all_flags[VANDERPOL_SEARCHED_MAP_ROWS], state_flags[VANDERPOL_SEARCHED_STATES];
     int mapped = 0;
     if (!accepts(y, u)) {
         if (inputs_finite(u)) {
@@ -2181,12 +2184,12 @@ static vanderpol_searched_status ekf_restart_sample(vanderpol_searched_ekf_resta
     }
     (void)vanderpol_searched_map_push(&o->window, y, u);
     if (o->window.filled >= VANDERPOL_SEARCHED_HORIZON) {
-        (void)vanderpol_searched_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         mapped = 1;
         if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p, &o->chi)) {
-            memcpy(o->values, all, sizeof all);
-            memcpy(o->flags, all_flags, sizeof all_flags);
+            memcpy(o->values, all, sizeof o->values);
+            memcpy(o->flags, all_flags, sizeof o->flags);
             o->ready = 1;
             return VANDERPOL_SEARCHED_OK;
         }

@@ -70,7 +70,7 @@ static float select_float(int c, float a, float b) {
 }
 
 
-/* `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+/* target `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[19] = {
     0.0f, 0.0f, 0.0f, 0.0f,
     0.0f, -0.024965525f, 0.0f, 0.0f,
@@ -82,7 +82,7 @@ static const float SEGMENTS_0[1][2] = {
     { -2.0616221f, 4.1232443f }
 };
 
-/* `x2`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+/* target `x2`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_1[19] = {
     0.03106531f, 0.027483545f, 0.022598177f, 0.0f,
     0.0f, 0.0f, 0.0f, 0.0f,
@@ -158,6 +158,9 @@ vanderpol_sparse_status vanderpol_sparse_map_estimate(const vanderpol_sparse_map
     return VANDERPOL_SPARSE_OK;
 }
 
+
+#define VANDERPOL_SPARSE_MAP_ROWS VANDERPOL_SPARSE_TARGETS
+#define start_map_estimate vanderpol_sparse_map_estimate
 
 /* `x1` in integers: gains in regressor order (2^-29 per count), then (A_k, B_k) in its LSB. */
 static const int32_t FIXED_GAINS_0[19] = { 0, 0, 0, 0, 0, -6545, 0, 0, -6157, 0, -4700, 0, -5037, -5969, -6805, 0, 0, 0, 0 };
@@ -1859,7 +1862,7 @@ static void corrected_steady(const float *x, const float *y, const float *u, con
     out[1] = t10;
 }
 
-/* Each state's map estimate, from the map's targets. */
+/* Each state's map estimate, from the map's rows (a target's or a helper map's). */
 static void corrected_map_states(const float *all, float *map) {
     map[0] = all[0];
     map[1] = all[1];
@@ -1924,8 +1927,8 @@ static void corrected_fresh(vanderpol_sparse_corrected *o) {
 
 static vanderpol_sparse_status corrected_sample(vanderpol_sparse_corrected *o, const float *y, const float *u) {
     const int start_up = o->count <= 57u;
-    float all[VANDERPOL_SPARSE_TARGETS], map[VANDERPOL_SPARSE_STATES], states[VANDERPOL_SPARSE_STATES];
-    vanderpol_sparse_saturation all_flags[VANDERPOL_SPARSE_TARGETS], state_flags[VANDERPOL_SPARSE_STATES];
+    float all[VANDERPOL_SPARSE_MAP_ROWS], map[VANDERPOL_SPARSE_STATES], states[VANDERPOL_SPARSE_STATES];
+    vanderpol_sparse_saturation all_flags[VANDERPOL_SPARSE_MAP_ROWS], state_flags[VANDERPOL_SPARSE_STATES];
     int estimated = 0;
     if (!accepts(y, u)) {
         if (o->started && inputs_finite(u)) {
@@ -1939,7 +1942,7 @@ static vanderpol_sparse_status corrected_sample(vanderpol_sparse_corrected *o, c
         if (o->window.filled < VANDERPOL_SPARSE_HORIZON) {
             return VANDERPOL_SPARSE_OK;
         }
-        (void)vanderpol_sparse_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         corrected_map_states(all, map);
         estimated = 1;
     }
@@ -1949,8 +1952,8 @@ static vanderpol_sparse_status corrected_sample(vanderpol_sparse_corrected *o, c
             return VANDERPOL_SPARSE_RESTARTED;
         }
         o->started = 1;
-        memcpy(o->values, all, sizeof all);
-        memcpy(o->flags, all_flags, sizeof all_flags);
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
     } else if (o->started) {
         if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
             corrected_fresh(o);
@@ -1996,7 +1999,7 @@ static const float STARTED_P0[VANDERPOL_SPARSE_COVARIANCE] = {
     0.055246208f, 0.0f, 0.20179923f
 };
 
-/* Each state's map estimate, from the map's targets. */
+/* Each state's map estimate, from the map's rows (a target's or a helper map's). */
 static void started_ekf_map_states(const float *all, float *map) {
     map[0] = all[0];
     map[1] = all[1];
@@ -2056,8 +2059,8 @@ static void ekf_map_fresh(vanderpol_sparse_ekf_map *o) {
 
 static vanderpol_sparse_status ekf_map_sample(vanderpol_sparse_ekf_map *o, const float *y, const float *u) {
     const int start_up = o->count <= 0u;
-    float all[VANDERPOL_SPARSE_TARGETS], map[VANDERPOL_SPARSE_STATES], states[VANDERPOL_SPARSE_STATES];
-    vanderpol_sparse_saturation all_flags[VANDERPOL_SPARSE_TARGETS], state_flags[VANDERPOL_SPARSE_STATES];
+    float all[VANDERPOL_SPARSE_MAP_ROWS], map[VANDERPOL_SPARSE_STATES], states[VANDERPOL_SPARSE_STATES];
+    vanderpol_sparse_saturation all_flags[VANDERPOL_SPARSE_MAP_ROWS], state_flags[VANDERPOL_SPARSE_STATES];
     int estimated = 0;
     if (!accepts(y, u)) {
         if (o->started && inputs_finite(u)) {
@@ -2071,7 +2074,7 @@ static vanderpol_sparse_status ekf_map_sample(vanderpol_sparse_ekf_map *o, const
         if (o->window.filled < VANDERPOL_SPARSE_HORIZON) {
             return VANDERPOL_SPARSE_OK;
         }
-        (void)vanderpol_sparse_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         estimated = 1;
     }
@@ -2081,8 +2084,8 @@ static vanderpol_sparse_status ekf_map_sample(vanderpol_sparse_ekf_map *o, const
             return VANDERPOL_SPARSE_RESTARTED;
         }
         o->started = 1;
-        memcpy(o->values, all, sizeof all);
-        memcpy(o->flags, all_flags, sizeof all_flags);
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
     } else if (o->started) {
         if (!started_ekf_follow(o->x, o->p, &o->chi, o->count, start_up, map, y, u, states, state_flags)) {
             ekf_map_fresh(o);
@@ -2147,8 +2150,8 @@ static void ekf_restart_fresh(vanderpol_sparse_ekf_restart *o) {
  * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
  * when its step is not finite or its chi-squared watch finds the innovations implausible. */
 static vanderpol_sparse_status ekf_restart_sample(vanderpol_sparse_ekf_restart *o, const float *y, const float *u) {
-    float all[VANDERPOL_SPARSE_TARGETS], map[VANDERPOL_SPARSE_STATES], states[VANDERPOL_SPARSE_STATES];
-    vanderpol_sparse_saturation all_flags[VANDERPOL_SPARSE_TARGETS], state_flags[VANDERPOL_SPARSE_STATES];
+    float all[VANDERPOL_SPARSE_MAP_ROWS], map[VANDERPOL_SPARSE_STATES], states[VANDERPOL_SPARSE_STATES];
+    vanderpol_sparse_saturation all_flags[VANDERPOL_SPARSE_MAP_ROWS], state_flags[VANDERPOL_SPARSE_STATES];
     int mapped = 0;
     if (!accepts(y, u)) {
         if (inputs_finite(u)) {
@@ -2158,12 +2161,12 @@ static vanderpol_sparse_status ekf_restart_sample(vanderpol_sparse_ekf_restart *
     }
     (void)vanderpol_sparse_map_push(&o->window, y, u);
     if (o->window.filled >= VANDERPOL_SPARSE_HORIZON) {
-        (void)vanderpol_sparse_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         mapped = 1;
         if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p, &o->chi)) {
-            memcpy(o->values, all, sizeof all);
-            memcpy(o->flags, all_flags, sizeof all_flags);
+            memcpy(o->values, all, sizeof o->values);
+            memcpy(o->flags, all_flags, sizeof o->flags);
             o->ready = 1;
             return VANDERPOL_SPARSE_OK;
         }

@@ -70,7 +70,7 @@ static float select_float(int c, float a, float b) {
 }
 
 
-/* `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+/* target `x1`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_0[10] = {
     4.543185f, 0.7786889f, -1.0524274f, -1.3822162f,
     -1.2224729f, -0.1508291f, 0.2517326f, 0.33626536f,
@@ -178,7 +178,7 @@ static const float SEGMENTS_0[99][2] = {
     { 0.48740476f, 0.018857362f }
 };
 
-/* `x2`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
+/* target `x2`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */
 static const float GAINS_1[10] = {
     0.06632062f, 0.06250297f, 0.040498633f, 0.01797323f,
     0.00079974055f, -0.007791193f, -0.007125094f, -0.00076618337f,
@@ -276,6 +276,9 @@ vanderpol_uncertain_status vanderpol_uncertain_map_estimate(const vanderpol_unce
     return VANDERPOL_UNCERTAIN_OK;
 }
 
+
+#define VANDERPOL_UNCERTAIN_MAP_ROWS VANDERPOL_UNCERTAIN_TARGETS
+#define start_map_estimate vanderpol_uncertain_map_estimate
 
 /* `x1` in integers: gains in regressor order (2^-22 per count), then (A_k, B_k) in its LSB. */
 static const int32_t FIXED_GAINS_0[10] = { 9304, 1595, -2155, -2831, -2504, -309, 516, 689, -1452, -8169 };
@@ -2001,7 +2004,7 @@ static void corrected_steady(const float *x, const float *y, const float *u, con
     out[1] = t10;
 }
 
-/* Each state's map estimate, from the map's targets. */
+/* Each state's map estimate, from the map's rows (a target's or a helper map's). */
 static void corrected_map_states(const float *all, float *map) {
     map[0] = all[0];
     map[1] = all[1];
@@ -2066,8 +2069,8 @@ static void corrected_fresh(vanderpol_uncertain_corrected *o) {
 
 static vanderpol_uncertain_status corrected_sample(vanderpol_uncertain_corrected *o, const float *y, const float *u) {
     const int start_up = o->count <= 30u;
-    float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES], states[VANDERPOL_UNCERTAIN_STATES];
-    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS], state_flags[VANDERPOL_UNCERTAIN_STATES];
+    float all[VANDERPOL_UNCERTAIN_MAP_ROWS], map[VANDERPOL_UNCERTAIN_STATES], states[VANDERPOL_UNCERTAIN_STATES];
+    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_MAP_ROWS], state_flags[VANDERPOL_UNCERTAIN_STATES];
     int estimated = 0;
     if (!accepts(y, u)) {
         if (o->started && inputs_finite(u)) {
@@ -2081,7 +2084,7 @@ static vanderpol_uncertain_status corrected_sample(vanderpol_uncertain_corrected
         if (o->window.filled < VANDERPOL_UNCERTAIN_HORIZON) {
             return VANDERPOL_UNCERTAIN_OK;
         }
-        (void)vanderpol_uncertain_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         corrected_map_states(all, map);
         estimated = 1;
     }
@@ -2091,8 +2094,8 @@ static vanderpol_uncertain_status corrected_sample(vanderpol_uncertain_corrected
             return VANDERPOL_UNCERTAIN_RESTARTED;
         }
         o->started = 1;
-        memcpy(o->values, all, sizeof all);
-        memcpy(o->flags, all_flags, sizeof all_flags);
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
     } else if (o->started) {
         if (!corrected_follow(o->x, o->count, start_up, map, y, u, states, state_flags)) {
             corrected_fresh(o);
@@ -2138,7 +2141,7 @@ static const float STARTED_P0[VANDERPOL_UNCERTAIN_COVARIANCE] = {
     0.0066589005f, 0.0f, 0.008897506f
 };
 
-/* Each state's map estimate, from the map's targets. */
+/* Each state's map estimate, from the map's rows (a target's or a helper map's). */
 static void started_ekf_map_states(const float *all, float *map) {
     map[0] = all[0];
     map[1] = all[1];
@@ -2198,8 +2201,8 @@ static void ekf_map_fresh(vanderpol_uncertain_ekf_map *o) {
 
 static vanderpol_uncertain_status ekf_map_sample(vanderpol_uncertain_ekf_map *o, const float *y, const float *u) {
     const int start_up = o->count <= 0u;
-    float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES], states[VANDERPOL_UNCERTAIN_STATES];
-    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS], state_flags[VANDERPOL_UNCERTAIN_STATES];
+    float all[VANDERPOL_UNCERTAIN_MAP_ROWS], map[VANDERPOL_UNCERTAIN_STATES], states[VANDERPOL_UNCERTAIN_STATES];
+    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_MAP_ROWS], state_flags[VANDERPOL_UNCERTAIN_STATES];
     int estimated = 0;
     if (!accepts(y, u)) {
         if (o->started && inputs_finite(u)) {
@@ -2213,7 +2216,7 @@ static vanderpol_uncertain_status ekf_map_sample(vanderpol_uncertain_ekf_map *o,
         if (o->window.filled < VANDERPOL_UNCERTAIN_HORIZON) {
             return VANDERPOL_UNCERTAIN_OK;
         }
-        (void)vanderpol_uncertain_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         estimated = 1;
     }
@@ -2223,8 +2226,8 @@ static vanderpol_uncertain_status ekf_map_sample(vanderpol_uncertain_ekf_map *o,
             return VANDERPOL_UNCERTAIN_RESTARTED;
         }
         o->started = 1;
-        memcpy(o->values, all, sizeof all);
-        memcpy(o->flags, all_flags, sizeof all_flags);
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
     } else if (o->started) {
         if (!started_ekf_follow(o->x, o->p, &o->chi, o->count, start_up, map, y, u, states, state_flags)) {
             ekf_map_fresh(o);
@@ -2289,8 +2292,8 @@ static void ekf_restart_fresh(vanderpol_uncertain_ekf_restart *o) {
  * else the filter's sample, restarted (from the map where it has an estimate, else from the start)
  * when its step is not finite or its chi-squared watch finds the innovations implausible. */
 static vanderpol_uncertain_status ekf_restart_sample(vanderpol_uncertain_ekf_restart *o, const float *y, const float *u) {
-    float all[VANDERPOL_UNCERTAIN_TARGETS], map[VANDERPOL_UNCERTAIN_STATES], states[VANDERPOL_UNCERTAIN_STATES];
-    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_TARGETS], state_flags[VANDERPOL_UNCERTAIN_STATES];
+    float all[VANDERPOL_UNCERTAIN_MAP_ROWS], map[VANDERPOL_UNCERTAIN_STATES], states[VANDERPOL_UNCERTAIN_STATES];
+    vanderpol_uncertain_saturation all_flags[VANDERPOL_UNCERTAIN_MAP_ROWS], state_flags[VANDERPOL_UNCERTAIN_STATES];
     int mapped = 0;
     if (!accepts(y, u)) {
         if (inputs_finite(u)) {
@@ -2300,12 +2303,12 @@ static vanderpol_uncertain_status ekf_restart_sample(vanderpol_uncertain_ekf_res
     }
     (void)vanderpol_uncertain_map_push(&o->window, y, u);
     if (o->window.filled >= VANDERPOL_UNCERTAIN_HORIZON) {
-        (void)vanderpol_uncertain_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         started_ekf_map_states(all, map);
         mapped = 1;
         if (restart_disagrees(o->x, o->p, map) && started_ekf_start(map, u, o->x, o->p, &o->chi)) {
-            memcpy(o->values, all, sizeof all);
-            memcpy(o->flags, all_flags, sizeof all_flags);
+            memcpy(o->values, all, sizeof o->values);
+            memcpy(o->flags, all_flags, sizeof o->flags);
             o->ready = 1;
             return VANDERPOL_UNCERTAIN_OK;
         }

@@ -43,6 +43,9 @@ pub const OUTPUTS: usize = 2;
 pub const INPUTS: usize = 0;
 /// Estimated targets.
 pub const TARGETS: usize = 2;
+/// Rows of the map the map-started kinds read ([`StartDesign`]): the targets', then one helper map
+/// per state that no target is.
+pub const MAP_ROWS: usize = 4;
 /// Entries of the regressor `z`: `HORIZON · (OUTPUTS + INPUTS)`.
 pub const REGRESSOR_LEN: usize = 6;
 /// Output names, in `push` order (units: [`OUTPUT_UNITS`]).
@@ -70,7 +73,7 @@ pub const FAMILY: (&str, usize, f32) = ("ecoli", 0, 0.5);
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 4] = [("map", 105), ("ekf_box", 1305), ("ukf_box", 8038), ("mhe", 60286)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 105), ("ekf_box", 1305), ("ukf_box", 8038), ("corrected", 649), ("ekf_map", 1313), ("ekf_restart", 1566), ("mhe", 60286)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -233,6 +236,80 @@ pub const MAP_MUX: TargetMap<'static, f32> = TargetMap {
 
 const _: () = assert!(SEGMENTS_MUX.len() == 1 && MAP_MUX.inverse.t_max == SEGMENTS_MUX.len() as f32);
 
+/// Gains `g_i` of `X`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`, each
+/// in 1 / the unit of its regressor entry, so that `t` has no unit.
+const GAINS_HELPER_X: [f32; REGRESSOR_LEN] = [
+    0.38688287,
+    0.00011909063,
+    0.42060104,
+    2.1403303e-5,
+    0.37400255,
+    0.0022436865,
+];
+
+/// The 3 segments `(a_k, b_k)` of `X = a_k + b_k t` on `t ∈ [k, k + 1]`, in g/L.
+#[rustfmt::skip]
+const SEGMENTS_HELPER_X: [[f32; 2]; 3] = [
+    [0.4385543, 0.6056552],
+    [0.4385536, 0.6056559],
+    [0.4385614, 0.605652],
+];
+
+/// `X = X`, in g/L: validation RMSE 0.1464, max error 0.5323 (linear floor RMSE 0.1486).
+///
+/// `Γ⁻¹` is a table of 3 segments (4 knots uniform in `Lᵀ z`). Proven on the
+/// host from bounds of `Γ'` and `Γ''`: |table − Γ⁻¹| ≤ 1.79e-4 over the whole range
+/// [0.4385543, 2.2555175] (exact arithmetic); largest error on 10⁶ dense points: 2.61e-6.
+pub const MAP_HELPER_X: TargetMap<'static, f32> = TargetMap {
+    gains: &GAINS_HELPER_X,
+    offset: -0.43697193,
+    inverse: InverseTable {
+        knots: Knots::Uniform,
+        segments: &SEGMENTS_HELPER_X,
+        t_max: 3.0,
+        r_min: 0.4385543,
+        r_max: 2.2555175,
+    },
+};
+
+const _: () = assert!(SEGMENTS_HELPER_X.len() == 3 && MAP_HELPER_X.inverse.t_max == SEGMENTS_HELPER_X.len() as f32);
+
+/// Gains `g_i` of `S`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`, each
+/// in 1 / the unit of its regressor entry, so that `t` has no unit.
+const GAINS_HELPER_S: [f32; REGRESSOR_LEN] = [
+    -0.046064626,
+    0.008455554,
+    -0.055173066,
+    -0.0006070147,
+    -0.06394423,
+    -0.0069448985,
+];
+
+/// The 1 segments `(a_k, b_k)` of `S = a_k + b_k t` on `t ∈ [k, k + 1]`, in g/L.
+#[rustfmt::skip]
+const SEGMENTS_HELPER_S: [[f32; 2]; 1] = [
+    [0.0, 4.949024],
+];
+
+/// `S = S`, in g/L: validation RMSE 1.2513, max error 3.5035 (linear floor RMSE 1.2619).
+///
+/// `Γ⁻¹` is a table of 1 segments (2 knots uniform in `Lᵀ z`). Proven on the
+/// host from bounds of `Γ'` and `Γ''`: |table − Γ⁻¹| ≤ 1.80e-6 over the whole range
+/// [0.0, 4.949024] (exact arithmetic); largest error on 10⁶ dense points: 4.21e-9.
+pub const MAP_HELPER_S: TargetMap<'static, f32> = TargetMap {
+    gains: &GAINS_HELPER_S,
+    offset: 0.38749164,
+    inverse: InverseTable {
+        knots: Knots::Uniform,
+        segments: &SEGMENTS_HELPER_S,
+        t_max: 1.0,
+        r_min: 0.0,
+        r_max: 4.949024,
+    },
+};
+
+const _: () = assert!(SEGMENTS_HELPER_S.len() == 1 && MAP_HELPER_S.inverse.t_max == SEGMENTS_HELPER_S.len() as f32);
+
 /// Every target's map, in [`TARGET_NAMES`] order.
 pub static MAPS: [TargetMap<'static, f32>; TARGETS] = <Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::MAPS;
 
@@ -270,6 +347,60 @@ impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
                     + GAINS_MUX[3] * w[1].y[1]
                     + GAINS_MUX[4] * w[0].y[0]
                     + GAINS_MUX[5] * w[0].y[1],
+            ),
+        ]
+    }
+}
+/// The map the map-started kinds read: the targets' rows, then a helper map per state that no
+/// target is (`X`, `S`), which those kinds start from and no observer returns.
+pub struct StartDesign;
+
+impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, MAP_ROWS> for StartDesign {
+    const MAPS: [TargetMap<'static, f32>; MAP_ROWS] = [MAP_P, MAP_MUX, MAP_HELPER_X, MAP_HELPER_S];
+
+    #[inline(always)]
+    fn accepts(y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> bool {
+        <Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::accepts(y, u)
+    }
+
+    #[inline(always)]
+    fn estimate(w: &[Sample<f32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<f32>; MAP_ROWS] {
+        [
+            MAP_P.inverse.evaluate(
+                MAP_P.offset
+                    + GAINS_P[0] * w[2].y[0]
+                    + GAINS_P[1] * w[2].y[1]
+                    + GAINS_P[2] * w[1].y[0]
+                    + GAINS_P[3] * w[1].y[1]
+                    + GAINS_P[4] * w[0].y[0]
+                    + GAINS_P[5] * w[0].y[1],
+            ),
+            MAP_MUX.inverse.evaluate(
+                MAP_MUX.offset
+                    + GAINS_MUX[0] * w[2].y[0]
+                    + GAINS_MUX[1] * w[2].y[1]
+                    + GAINS_MUX[2] * w[1].y[0]
+                    + GAINS_MUX[3] * w[1].y[1]
+                    + GAINS_MUX[4] * w[0].y[0]
+                    + GAINS_MUX[5] * w[0].y[1],
+            ),
+            MAP_HELPER_X.inverse.evaluate(
+                MAP_HELPER_X.offset
+                    + GAINS_HELPER_X[0] * w[2].y[0]
+                    + GAINS_HELPER_X[1] * w[2].y[1]
+                    + GAINS_HELPER_X[2] * w[1].y[0]
+                    + GAINS_HELPER_X[3] * w[1].y[1]
+                    + GAINS_HELPER_X[4] * w[0].y[0]
+                    + GAINS_HELPER_X[5] * w[0].y[1],
+            ),
+            MAP_HELPER_S.inverse.evaluate(
+                MAP_HELPER_S.offset
+                    + GAINS_HELPER_S[0] * w[2].y[0]
+                    + GAINS_HELPER_S[1] * w[2].y[1]
+                    + GAINS_HELPER_S[2] * w[1].y[0]
+                    + GAINS_HELPER_S[3] * w[1].y[1]
+                    + GAINS_HELPER_S[4] * w[0].y[0]
+                    + GAINS_HELPER_S[5] * w[0].y[1],
             ),
         ]
     }
@@ -4884,6 +5015,480 @@ pub fn ukf_targets<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; T
 }
 
 
+/// The model-corrected map's constants as `gen` chose them (f64): `G` (no unit), `K` (states ×
+/// outputs, row by row, in state unit per output unit), the schedule `T` (in samples), and each
+/// state's clamp (in its unit); units in [`STATE_UNITS`] and [`OUTPUT_UNITS`].
+pub const CORRECTED_G: [f64; STATES] = [0.0, 0.0, 0.0];
+/// See [`CORRECTED_G`].
+pub const CORRECTED_K: [f64; STATES * OUTPUTS] = [0.03033127806405048, 0.001329113116833563, 0.004659041118444824, 0.0017050347686967987, -0.005541932511514533, 2.1852929841521437e-5];
+/// See [`CORRECTED_G`]: the start-up gain `K₀`.
+pub const CORRECTED_K_START: [f64; STATES * OUTPUTS] = [0.01436036368682438, 0.007940134371169182, 0.023568205870528897, -0.00537816135993705, 0.005804013002434603, 0.0006967499747498997];
+/// See [`CORRECTED_G`].
+pub const CORRECTED_SCHEDULE: f64 = 10.122598069390378;
+/// See [`CORRECTED_G`].
+pub const CORRECTED_LOWER: [f64; STATES] = [0.43855427854201756, 0.0, 0.0];
+/// See [`CORRECTED_G`].
+pub const CORRECTED_UPPER: [f64; STATES] = [2.2555173819551477, 4.949024369851258, 0.4457929173827226];
+
+/// Entries of one row of [`CORRECTED_BLENDS`]: a blend per state, then the gain.
+const SCHEDULED: usize = STATES + STATES * OUTPUTS;
+
+/// The model-corrected map's start-up schedule, `j = 1 … J`: the blends
+/// `g_j = G + (1 − G) / (1 + j / T)` per state, then the gains `K_j = K + (K₀ − K) / (1 + j / T)`
+/// (states × outputs, row by row), each as `(f32, f64)`.
+#[rustfmt::skip]
+static CORRECTED_BLENDS: [[(f32, f64); SCHEDULED]; 9] = [
+    [(0.91009295, 0.9100929482697013), (0.91009295, 0.9100929482697013), (0.91009295, 0.9100929482697013), (0.01579626, 0.01579626151191782), (0.007345757, 0.007345756941265526), (0.02186814, 0.021868138616986534), (-0.004741332, -0.004741332079184115), (0.0047839326, 0.004783932492182829), (0.00063607196, 0.0006360719712206964)],
+    [(0.8350189, 0.835018864062646), (0.8350189, 0.835018864062646), (0.8350189, 0.835018864062646), (0.016995262, 0.016995263282737358), (0.0068494407, 0.006849440574922901), (0.02044855, 0.020448550390103494), (-0.004209568, -0.004209567616567969), (0.003932146, 0.003932146023259949), (0.0005854047, 0.000585404693640152)],
+    [(0.77138674, 0.771386734232319), (0.77138674, 0.771386734232319), (0.77138674, 0.771386734232319), (0.018011527, 0.018011526579898046), (0.006428767, 0.006428767212155965), (0.019245319, 0.019245319963615837), (-0.0037588486, -0.00375884876089707), (0.0032101793, 0.003210179345268521), (0.00054245954, 0.0005424595572564381)],
+    [(0.716766, 0.716765995863772), (0.716766, 0.716765995863772), (0.716766, 0.716765995863772), (0.018883869, 0.01888386971560298), (0.0060676686, 0.006067668349873996), (0.018212488, 0.0182124874229245), (-0.0033719593, -0.0033719593583418556), (0.0025904553, 0.002590455423807316), (0.00050559617, 0.0005055961823407921)],
+    [(0.669369, 0.669368981635471), (0.669369, 0.669368981635471), (0.669369, 0.669368981635471), (0.019640842, 0.019640843371579342), (0.0057543255, 0.00575432568141865), (0.01731625, 0.017316249472124685), (-0.003036237, -0.003036237010651151), (0.0020526915, 0.0020526914828491406), (0.0004736081, 0.00047360807750063133)],
+    [(0.62785155, 0.6278515426498584), (0.62785155, 0.6278515426498584), (0.62785155, 0.6278515426498584), (0.020303914, 0.020303914834780272), (0.005479853, 0.005479853009859183), (0.01653119, 0.01653118937826114), (-0.0027421608, -0.0027421608475574678), (0.0015816368, 0.0015816368822396728), (0.00044558808, 0.0004455880806170775)],
+    [(0.59118354, 0.5911835358377232), (0.59118354, 0.5911835358377232), (0.59118354, 0.5911835358377232), (0.020889536, 0.020889536431960426), (0.00523744, 0.0052374400374700335), (0.015837828, 0.01583782799631993), (-0.0024824343, -0.0024824341636610326), (0.0011656036, 0.0011656036748440707), (0.00042084095, 0.00042084095117688716)],
+    [(0.5585622, 0.5585621901799916), (0.5585622, 0.5585621901799916), (0.5585622, 0.5585621901799916), (0.021410529, 0.021410529150329954), (0.00502178, 0.005021779627981742), (0.015220986, 0.015220985596843204), (-0.0022513708, -0.002251370774387361), (0.00079548365, 0.0007954836644197471), (0.0003988249, 0.0003988249013915494)],
+    [(0.52935266, 0.5293526555679514), (0.52935266, 0.5293526555679514), (0.52935266, 0.5293526555679514), (0.021877032, 0.02187703212661747), (0.0048286747, 0.0048286747738322915), (0.014668657, 0.014668657694532433), (-0.002044474, -0.0020444739119041618), (0.00046407388, 0.000464073876223727), (0.00037911147, 0.0003791114727987344)],
+];
+
+/// The model-corrected map on the chip: `x̂(N−1) = F(Z)`, then
+/// `x̂ = clamp(x̄ + g_j ⊙ (F(Z) − x̄) + K_j (y − h(x̄, u)))` with `x̄` the model's prediction, as chosen
+/// by `gen` on the tuning runs: `G = [0.0, 0.0, 0.0]`, `K = [0.03033127806405048, 0.001329113116833563, 0.004659041118444824, 0.0017050347686967987, -0.005541932511514533, 2.1852929841521437e-5]`, `K₀ = [0.01436036368682438, 0.007940134371169182, 0.023568205870528897, -0.00537816135993705, 0.005804013002434603, 0.0006967499747498997]` (states × outputs, row by row),
+/// `T = 10.122598069390378`, `J = 9`. The clamp is each state's learning range.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Corrector;
+
+impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for Corrector {
+    type Carried = [T; STATES];
+    const START_UP: usize = 9;
+    const STEADY_READS_MAP: bool = false;
+    const STATE_TARGETS: [usize; STATES] = [2, 3, 0];
+
+    #[inline(always)]
+    fn start(first: &[T; STATES], u: &[T; INPUTS]) -> Option<[T; STATES]> {
+        let next = corrected_predict(first, u);
+        next.iter().all(|v| v.is_finite()).then_some(next)
+    }
+
+    #[inline(always)]
+    fn follow(
+        x: &[T; STATES],
+        j: usize,
+        start_up: bool,
+        f: &[T; STATES],
+        y: &[T; OUTPUTS],
+        u: &[T; INPUTS],
+    ) -> Option<([T; STATES], [Estimate<T>; STATES])> {
+        // Loops rather than `array::map`, which the compiler turns into copies at `opt-level = "s"`.
+        fn pick<T: Scalar, const M: usize>(pairs: &[(f32, f64); M]) -> [T; M] {
+            let mut out = [T::ZERO; M];
+            for (out, &(single, double)) in out.iter_mut().zip(pairs) {
+                *out = T::literal(single, double);
+            }
+            out
+        }
+        let raw = if start_up {
+            let row = CORRECTED_BLENDS.get(j.wrapping_sub(1)).unwrap_or(&[(0.0, 0.0); SCHEDULED]);
+            corrected_start_up(x, y, u, f, row)
+        } else {
+            corrected_steady(x, y, u, f)
+        };
+        let states = firmware::emitted::clamp(&raw, &pick(&[(0.4385543, 0.43855427854201756), (0.0, 0.0), (0.0, 0.0)]), &pick(&[(2.2555175, 2.2555173819551477), (4.949024, 4.949024369851258), (0.4457929, 0.4457929173827226)]));
+        let mut estimate = [T::ZERO; STATES];
+        for (e, s) in estimate.iter_mut().zip(&states) {
+            *e = s.value;
+        }
+        let next = corrected_predict(&estimate, u);
+        next.iter().all(|v| v.is_finite()).then_some((next, states))
+    }
+
+    /// A lost output: the model's period from `x̄` (no correction; the next estimate is clamped).
+    #[inline(always)]
+    fn predict(x: &[T; STATES], u: &[T; INPUTS]) -> Option<[T; STATES]> {
+        let next = corrected_predict(x, u);
+        next.iter().all(|v| v.is_finite()).then_some(next)
+    }
+
+    #[inline(always)]
+    fn targets(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {
+        targets(x, u)
+    }
+}
+
+/// The model-corrected map over this design's map.
+pub type CorrectedObserver = firmware::Started<f32, StartDesign, Corrector, HORIZON, STATES, OUTPUTS, INPUTS, MAP_ROWS, TARGETS>;
+
+/// One sampling period of the model from `x`, the value alone: `x⁺`, written out by `gen`.
+#[allow(unused_variables, non_snake_case)]
+fn corrected_predict<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; STATES] {
+    let x_X: T = x[0];
+    let x_S: T = x[1];
+    let x_P: T = x[2];
+    let t3: T = T::literal(0.2, 0.2);
+    let t4: T = T::literal(2.0, 2.0);
+    let t5: T = T::literal(6.0, 6.0);
+    let t6: T = t3 / t4;
+    let t7: T = t3 / t5;
+    let p_mu_m: T = T::literal(parameters::mu_m.0, parameters::mu_m.1);
+    let p_k_s: T = T::literal(parameters::k_s.0, parameters::k_s.1);
+    let t10: T = p_k_s + x_S;
+    let t11: T = x_S / t10;
+    let t12: T = p_mu_m * t11;
+    let p_k_d: T = T::literal(parameters::k_d.0, parameters::k_d.1);
+    let p_k_p: T = T::literal(parameters::k_p.0, parameters::k_p.1);
+    let t15: T = -p_k_p;
+    let t16: T = T::literal(0.001, 0.001);
+    let t17: T = Maths::max(x_P, t16);
+    let t18: T = t15 / t17;
+    let t19: T = Maths::exp(t18);
+    let t20: T = p_k_d * t19;
+    let t21: T = t12 * x_X;
+    let t22: T = t20 * x_X;
+    let t23: T = t21 - t22;
+    let p_y_s: T = T::literal(parameters::y_s.0, parameters::y_s.1);
+    let t25: T = p_y_s * t12;
+    let t26: T = t25 * x_X;
+    let t27: T = -t26;
+    let p_k_m: T = T::literal(parameters::k_m.0, parameters::k_m.1);
+    let t29: T = p_k_m * x_X;
+    let p_ks_m: T = T::literal(parameters::ks_m.0, parameters::ks_m.1);
+    let t31: T = x_S + p_ks_m;
+    let t32: T = x_S / t31;
+    let t33: T = t29 * t32;
+    let t34: T = t27 - t33;
+    let p_y_p: T = T::literal(parameters::y_p.0, parameters::y_p.1);
+    let t36: T = p_y_p * t12;
+    let p_I: T = T::literal(parameters::I.0, parameters::I.1);
+    let p_k_I: T = T::literal(parameters::k_I.0, parameters::k_I.1);
+    let t39: T = p_I + p_k_I;
+    let t40: T = p_I / t39;
+    let t41: T = t36 * t40;
+    let t42: T = t41 * x_X;
+    let t43: T = t20 * x_P;
+    let t44: T = t42 - t43;
+    let t45: T = t6 * t23;
+    let t46: T = x_X + t45;
+    let t47: T = t6 * t34;
+    let t48: T = x_S + t47;
+    let t49: T = t6 * t44;
+    let t50: T = x_P + t49;
+    let t51: T = p_k_s + t48;
+    let t52: T = t48 / t51;
+    let t53: T = p_mu_m * t52;
+    let t54: T = Maths::max(t50, t16);
+    let t55: T = t15 / t54;
+    let t56: T = Maths::exp(t55);
+    let t57: T = p_k_d * t56;
+    let t58: T = t53 * t46;
+    let t59: T = t57 * t46;
+    let t60: T = t58 - t59;
+    let t61: T = p_y_s * t53;
+    let t62: T = t61 * t46;
+    let t63: T = -t62;
+    let t64: T = p_k_m * t46;
+    let t65: T = t48 + p_ks_m;
+    let t66: T = t48 / t65;
+    let t67: T = t64 * t66;
+    let t68: T = t63 - t67;
+    let t69: T = p_y_p * t53;
+    let t70: T = t69 * t40;
+    let t71: T = t70 * t46;
+    let t72: T = t57 * t50;
+    let t73: T = t71 - t72;
+    let t74: T = t6 * t60;
+    let t75: T = x_X + t74;
+    let t76: T = t6 * t68;
+    let t77: T = x_S + t76;
+    let t78: T = t6 * t73;
+    let t79: T = x_P + t78;
+    let t80: T = p_k_s + t77;
+    let t81: T = t77 / t80;
+    let t82: T = p_mu_m * t81;
+    let t83: T = Maths::max(t79, t16);
+    let t84: T = t15 / t83;
+    let t85: T = Maths::exp(t84);
+    let t86: T = p_k_d * t85;
+    let t87: T = t82 * t75;
+    let t88: T = t86 * t75;
+    let t89: T = t87 - t88;
+    let t90: T = p_y_s * t82;
+    let t91: T = t90 * t75;
+    let t92: T = -t91;
+    let t93: T = p_k_m * t75;
+    let t94: T = t77 + p_ks_m;
+    let t95: T = t77 / t94;
+    let t96: T = t93 * t95;
+    let t97: T = t92 - t96;
+    let t98: T = p_y_p * t82;
+    let t99: T = t98 * t40;
+    let t100: T = t99 * t75;
+    let t101: T = t86 * t79;
+    let t102: T = t100 - t101;
+    let t103: T = t3 * t89;
+    let t104: T = x_X + t103;
+    let t105: T = t3 * t97;
+    let t106: T = x_S + t105;
+    let t107: T = t3 * t102;
+    let t108: T = x_P + t107;
+    let t109: T = p_k_s + t106;
+    let t110: T = t106 / t109;
+    let t111: T = p_mu_m * t110;
+    let t112: T = Maths::max(t108, t16);
+    let t113: T = t15 / t112;
+    let t114: T = Maths::exp(t113);
+    let t115: T = p_k_d * t114;
+    let t116: T = t111 * t104;
+    let t117: T = t115 * t104;
+    let t118: T = t116 - t117;
+    let t119: T = p_y_s * t111;
+    let t120: T = t119 * t104;
+    let t121: T = -t120;
+    let t122: T = p_k_m * t104;
+    let t123: T = t106 + p_ks_m;
+    let t124: T = t106 / t123;
+    let t125: T = t122 * t124;
+    let t126: T = t121 - t125;
+    let t127: T = p_y_p * t111;
+    let t128: T = t127 * t40;
+    let t129: T = t128 * t104;
+    let t130: T = t115 * t108;
+    let t131: T = t129 - t130;
+    let t132: T = t60 + t89;
+    let t133: T = t4 * t132;
+    let t134: T = t23 + t133;
+    let t135: T = t134 + t118;
+    let t136: T = t7 * t135;
+    let t137: T = x_X + t136;
+    let t138: T = t68 + t97;
+    let t139: T = t4 * t138;
+    let t140: T = t34 + t139;
+    let t141: T = t140 + t126;
+    let t142: T = t7 * t141;
+    let t143: T = x_S + t142;
+    let t144: T = t73 + t102;
+    let t145: T = t4 * t144;
+    let t146: T = t44 + t145;
+    let t147: T = t146 + t131;
+    let t148: T = t7 * t147;
+    let t149: T = x_P + t148;
+    [t137, t143, t149]
+}
+
+/// The correction during the start-up, `g` = (blend `g_j`, gain `K_j`) given: `x̂` before its clamp, written out by `gen`.
+#[allow(unused_variables, non_snake_case)]
+fn corrected_start_up<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T; INPUTS], f: &[T; STATES], g: &[(f32, f64); SCHEDULED]) -> [T; STATES] {
+    let x_X: T = x[0];
+    let x_S: T = x[1];
+    let x_P: T = x[2];
+    let p_mu_m: T = T::literal(parameters::mu_m.0, parameters::mu_m.1);
+    let p_k_s: T = T::literal(parameters::k_s.0, parameters::k_s.1);
+    let t5: T = p_k_s + x_S;
+    let t6: T = x_S / t5;
+    let t7: T = p_mu_m * t6;
+    let p_y_l: T = T::literal(parameters::y_l.0, parameters::y_l.1);
+    let t9: T = p_y_l * t7;
+    let p_I: T = T::literal(parameters::I.0, parameters::I.1);
+    let p_k_l: T = T::literal(parameters::k_l.0, parameters::k_l.1);
+    let t12: T = p_I + p_k_l;
+    let t13: T = p_I / t12;
+    let t14: T = t9 * t13;
+    let t15: T = t14 * x_X;
+    let t16: T = t15 * x_P;
+    let y_X_meas: T = y[0];
+    let t18: T = y_X_meas - x_X;
+    let y_L: T = y[1];
+    let t20: T = y_L - t16;
+    let g_X: T = T::literal(g[0].0, g[0].1);
+    let f_X: T = f[0];
+    let t23: T = f_X - x_X;
+    let t24: T = g_X * t23;
+    let t25: T = x_X + t24;
+    let k0: T = T::literal(g[3].0, g[3].1);
+    let k1: T = T::literal(g[4].0, g[4].1);
+    let t28: T = k0 * t18;
+    let t29: T = t25 + t28;
+    let t30: T = k1 * t20;
+    let t31: T = t29 + t30;
+    let g_S: T = T::literal(g[1].0, g[1].1);
+    let f_S: T = f[1];
+    let t34: T = f_S - x_S;
+    let t35: T = g_S * t34;
+    let t36: T = x_S + t35;
+    let k2: T = T::literal(g[5].0, g[5].1);
+    let k3: T = T::literal(g[6].0, g[6].1);
+    let t39: T = k2 * t18;
+    let t40: T = t36 + t39;
+    let t41: T = k3 * t20;
+    let t42: T = t40 + t41;
+    let g_P: T = T::literal(g[2].0, g[2].1);
+    let f_P: T = f[2];
+    let t45: T = f_P - x_P;
+    let t46: T = g_P * t45;
+    let t47: T = x_P + t46;
+    let k4: T = T::literal(g[7].0, g[7].1);
+    let k5: T = T::literal(g[8].0, g[8].1);
+    let t50: T = k4 * t18;
+    let t51: T = t47 + t50;
+    let t52: T = k5 * t20;
+    let t53: T = t51 + t52;
+    [t31, t42, t53]
+}
+
+/// The correction after the start-up (`G` as numbers): `x̂` before its clamp, written out by `gen`.
+#[allow(unused_variables, non_snake_case)]
+fn corrected_steady<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T; INPUTS], f: &[T; STATES]) -> [T; STATES] {
+    let x_X: T = x[0];
+    let x_S: T = x[1];
+    let x_P: T = x[2];
+    let p_mu_m: T = T::literal(parameters::mu_m.0, parameters::mu_m.1);
+    let p_k_s: T = T::literal(parameters::k_s.0, parameters::k_s.1);
+    let t5: T = p_k_s + x_S;
+    let t6: T = x_S / t5;
+    let t7: T = p_mu_m * t6;
+    let p_y_l: T = T::literal(parameters::y_l.0, parameters::y_l.1);
+    let t9: T = p_y_l * t7;
+    let p_I: T = T::literal(parameters::I.0, parameters::I.1);
+    let p_k_l: T = T::literal(parameters::k_l.0, parameters::k_l.1);
+    let t12: T = p_I + p_k_l;
+    let t13: T = p_I / t12;
+    let t14: T = t9 * t13;
+    let t15: T = t14 * x_X;
+    let t16: T = t15 * x_P;
+    let y_X_meas: T = y[0];
+    let t18: T = y_X_meas - x_X;
+    let y_L: T = y[1];
+    let t20: T = y_L - t16;
+    let t21: T = T::literal(0.030331278, 0.03033127806405048);
+    let t22: T = T::literal(0.0013291131, 0.001329113116833563);
+    let t23: T = t21 * t18;
+    let t24: T = x_X + t23;
+    let t25: T = t22 * t20;
+    let t26: T = t24 + t25;
+    let t27: T = T::literal(0.0046590413, 0.004659041118444824);
+    let t28: T = T::literal(0.0017050348, 0.0017050347686967987);
+    let t29: T = t27 * t18;
+    let t30: T = x_S + t29;
+    let t31: T = t28 * t20;
+    let t32: T = t30 + t31;
+    let t33: T = T::literal(-0.0055419323, -0.005541932511514533);
+    let t34: T = T::literal(2.185293e-5, 2.1852929841521437e-5);
+    let t35: T = t33 * t18;
+    let t36: T = x_P + t35;
+    let t37: T = t34 * t20;
+    let t38: T = t36 + t37;
+    [t26, t32, t38]
+}
+
+/// `P(N−1)` diagonal of [`StartedEkf`] (f64), as `gen` chose it, in each state's unit squared
+/// ([`STATE_UNITS`]).
+pub const STARTED_P0: [f64; STATES] = [0.00022294048571793555, 0.015391283388582127, 3.2587677021496656e-5];
+
+/// The EKF started at the map's first estimate `x̂(N−1) = F(Z)` with `P(N−1)` diagonal, each variance
+/// the map's mean squared error on the tuning runs, then [`Ekf`]'s samples (same `Q` and `R`, and
+/// the same χ² watch: innovations that stay implausible end the filter, which the map starts again).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct StartedEkf;
+
+impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+    /// `x̂`, the upper triangle of `P` and the watched mean of the normalised innovations squared.
+    type Carried = ([T; STATES], [T; COVARIANCE], T);
+    const START_UP: usize = 0;
+    const STEADY_READS_MAP: bool = false;
+    const STATE_TARGETS: [usize; STATES] = [2, 3, 0];
+
+    #[inline(always)]
+    fn start(first: &[T; STATES], u: &[T; INPUTS]) -> Option<Self::Carried> {
+        let (x, p) = ekf_unmeasured(first, &[T::literal(0.00022294049, 0.00022294048571793555), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(0.015391284, 0.015391283388582127), T::literal(0.0, 0.0), T::literal(3.2587675e-5, 3.2587677021496656e-5)], u);
+        finite(&x, &p).then_some((x, p, T::literal(2.0, 2.0)))
+    }
+
+    #[inline(always)]
+    fn follow(
+        carried: &Self::Carried,
+        _: usize,
+        _: bool,
+        _: &[T; STATES],
+        y: &[T; OUTPUTS],
+        u: &[T; INPUTS],
+    ) -> Option<(Self::Carried, [Estimate<T>; STATES])> {
+        let (estimate, x, p, nis) = ekf_measured(&carried.0, &carried.1, y, u);
+        let chi = firmware::watch::watched(carried.2, nis, T::literal(0.33333334, 0.3333333333333333));
+        let mut inside = [Estimate { value: T::ZERO, saturation: firmware::Saturation::Inside }; STATES];
+        for (e, &value) in inside.iter_mut().zip(&estimate) {
+            e.value = value;
+        }
+        (finite(&x, &p) && firmware::watch::plausible(chi, T::literal(2048.0, 2048.0))).then_some(((x, p, chi), inside))
+    }
+
+    /// A lost output: the filter's prediction alone, as [`Ekf::push`] runs it.
+    #[inline(always)]
+    fn predict(carried: &Self::Carried, u: &[T; INPUTS]) -> Option<Self::Carried> {
+        let (x, p) = ekf_unmeasured(&carried.0, &carried.1, u);
+        finite(&x, &p).then_some((x, p, carried.2))
+    }
+
+    #[inline(always)]
+    fn targets(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {
+        targets(x, u)
+    }
+}
+
+/// The EKF started by this design's map.
+pub type EkfMapObserver = firmware::Started<f32, StartDesign, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, MAP_ROWS, TARGETS>;
+
+/// The check of [`EkfRestartObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
+/// (no unit).
+pub const RESTART_THRESHOLD: f64 = 64.0;
+/// See [`RESTART_THRESHOLD`]: each state's `e_i²`, the map's mean squared error on the tuning runs,
+/// in its unit squared ([`STATE_UNITS`]).
+pub const RESTART_VARIANCES: [f64; STATES] = [0.022294048571793554, 1.5391283388582127, 0.0032587677021496653];
+
+/// Whether the filter's prediction `x` with covariance `p` and the map's states `f` disagree:
+/// `d = Σ_i (x_i − f_i)² / (P_ii + e_i²) > τ`, or `d` is NaN. Runs at every sample from the map's
+/// first estimate on.
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
+#[inline(always)]
+fn restart_disagrees<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], f: &[T; STATES]) -> bool {
+    const DIAGONAL: [usize; STATES] = [0, 3, 5];
+    let variances: [T; STATES] = [T::literal(0.022294048, 0.022294048571793554), T::literal(1.5391283, 1.5391283388582127), T::literal(0.0032587678, 0.0032587677021496653)];
+    let mut d = T::ZERO;
+    for i in 0..STATES {
+        let e = x[i] - f[i];
+        d += e * e / (p[DIAGONAL[i]] + variances[i]);
+    }
+    !(d <= T::literal(64.0, 64.0))
+}
+
+impl firmware::emitted::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+    const FRESH: <Self as firmware::emitted::Follower<f32, STATES, OUTPUTS, INPUTS, TARGETS>>::Carried =
+        ([0.5, 2.5, 0.15], [0.005098792, 0.0, 0.0, 0.4831565, 0.0, 0.0051940335], 2.0);
+
+    #[inline(always)]
+    fn disagrees(
+        carried: &<Self as firmware::emitted::Follower<f32, STATES, OUTPUTS, INPUTS, TARGETS>>::Carried,
+        map: &[f32; STATES],
+    ) -> bool {
+        restart_disagrees(&carried.0, &carried.1, map)
+    }
+}
+
+impl firmware::emitted::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+    const FRESH: <Self as firmware::emitted::Follower<f64, STATES, OUTPUTS, INPUTS, TARGETS>>::Carried =
+        ([0.5, 2.5, 0.15], [0.005098791884532142, 0.0, 0.0, 0.4831565059891344, 0.0, 0.005194033540152943], 2.0);
+
+    #[inline(always)]
+    fn disagrees(
+        carried: &<Self as firmware::emitted::Follower<f64, STATES, OUTPUTS, INPUTS, TARGETS>>::Carried,
+        map: &[f64; STATES],
+    ) -> bool {
+        restart_disagrees(&carried.0, &carried.1, map)
+    }
+}
+
+/// The EKF from the centre of the state box ([`Ekf`]'s start and samples) that the map watches at
+/// every sample from its first estimate on, restarted from it as [`EkfMapObserver`] starts when the
+/// two disagree (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's
+/// guess-free start where the box centre is far from the plant or the filter loses track.
+pub type EkfRestartObserver = firmware::Restarted<f32, StartDesign, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, MAP_ROWS, TARGETS>;
+
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
 /// learning runs cover, the first window's start, 6 Gauss–Newton step(s) per sample,
@@ -4939,7 +5544,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "47956d8c868b02a5c27dffee1016e88d584caf36f12adb1f98d97f1ab9ddcec7";
+pub const TABLES_SHA256: &str = "852f702573adffd245989948fb0e088dbc2dc4245cab2f28501f061fa6111e11";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.
@@ -5276,6 +5881,9 @@ macro_rules! ecoli_x0_0p5_observers {
         $callback!(ecoli_x0_0p5, map, MapObserver);
         $callback!(ecoli_x0_0p5, ekf_box, EkfBoxObserver);
         $callback!(ecoli_x0_0p5, ukf_box, UkfBoxObserver);
+        $callback!(ecoli_x0_0p5, corrected, CorrectedObserver);
+        $callback!(ecoli_x0_0p5, ekf_map, EkfMapObserver);
+        $callback!(ecoli_x0_0p5, ekf_restart, EkfRestartObserver);
         $callback!(ecoli_x0_0p5, mhe, MheObserver);
     };
     (fixed $callback:ident) => {
@@ -5290,10 +5898,19 @@ macro_rules! ecoli_x0_0p5_observers {
     (new ukf_box) => {
         $crate::ecoli_x0_0p5::UkfBoxObserver::new()
     };
+    (new corrected) => {
+        $crate::ecoli_x0_0p5::CorrectedObserver::new()
+    };
+    (new ekf_map) => {
+        $crate::ecoli_x0_0p5::EkfMapObserver::new()
+    };
+    (new ekf_restart) => {
+        $crate::ecoli_x0_0p5::EkfRestartObserver::new()
+    };
     (new mhe) => {
         $crate::ecoli_x0_0p5::MheObserver::new()
     };
     (new $other:ident) => {
-        compile_error!(concat!("design `ecoli_x0_0p5` has no observer of kind `", stringify!($other), "`; its kinds: map, ekf_box, ukf_box, mhe"))
+        compile_error!(concat!("design `ecoli_x0_0p5` has no observer of kind `", stringify!($other), "`; its kinds: map, ekf_box, ukf_box, corrected, ekf_map, ekf_restart, mhe"))
     };
 }

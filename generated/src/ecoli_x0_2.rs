@@ -43,6 +43,9 @@ pub const OUTPUTS: usize = 2;
 pub const INPUTS: usize = 0;
 /// Estimated targets.
 pub const TARGETS: usize = 2;
+/// Rows of the map the map-started kinds read ([`StartDesign`]): the targets', then one helper map
+/// per state that no target is.
+pub const MAP_ROWS: usize = 4;
 /// Entries of the regressor `z`: `HORIZON · (OUTPUTS + INPUTS)`.
 pub const REGRESSOR_LEN: usize = 6;
 /// Output names, in `push` order (units: [`OUTPUT_UNITS`]).
@@ -70,7 +73,7 @@ pub const FAMILY: (&str, usize, f32) = ("ecoli", 0, 2.0);
 /// Instructions per sample in steady state (`push` + `estimate`) that the host's cost model
 /// (`host::search::cost`) predicts for each observer kind of this design; the on-target test holds
 /// them against the emulated Cortex-M4F.
-pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 4] = [("map", 113), ("ekf_box", 4215), ("ukf_box", 17542), ("mhe", 113339)];
+pub const PREDICTED_INSTRUCTIONS: [(&str, u32); 7] = [("map", 113), ("ekf_box", 4215), ("ukf_box", 17542), ("corrected", 2376), ("ekf_map", 4223), ("ekf_restart", 4484), ("mhe", 113339)];
 
 const _: () = assert!(REGRESSOR_LEN == HORIZON * (OUTPUTS + INPUTS));
 
@@ -679,6 +682,82 @@ pub const MAP_MUX: TargetMap<'static, f32> = TargetMap {
 
 const _: () = assert!(SEGMENTS_MUX.len() == 533 && MAP_MUX.inverse.t_max == SEGMENTS_MUX.len() as f32);
 
+/// Gains `g_i` of `X`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`, each
+/// in 1 / the unit of its regressor entry, so that `t` has no unit.
+const GAINS_HELPER_X: [f32; REGRESSOR_LEN] = [
+    0.39368424,
+    0.00017549269,
+    0.4214259,
+    -0.0001406003,
+    0.40563855,
+    0.00024582935,
+];
+
+/// The 5 segments `(a_k, b_k)` of `X = a_k + b_k t` on `t ∈ [k, k + 1]`, in g/L.
+#[rustfmt::skip]
+const SEGMENTS_HELPER_X: [[f32; 2]; 5] = [
+    [1.7542171, 0.7592416],
+    [1.7542149, 0.7592438],
+    [1.7542151, 0.75924367],
+    [1.754216, 0.7592434],
+    [1.7543503, 0.7592098],
+];
+
+/// `X = X`, in g/L: validation RMSE 0.1742, max error 0.7404 (linear floor RMSE 0.1746).
+///
+/// `Γ⁻¹` is a table of 5 segments (6 knots uniform in `Lᵀ z`). Proven on the
+/// host from bounds of `Γ'` and `Γ''`: |table − Γ⁻¹| ≤ 3.55e-4 over the whole range
+/// [1.7542171, 5.5503993] (exact arithmetic); largest error on 10⁶ dense points: 1.88e-5.
+pub const MAP_HELPER_X: TargetMap<'static, f32> = TargetMap {
+    gains: &GAINS_HELPER_X,
+    offset: -2.0167382,
+    inverse: InverseTable {
+        knots: Knots::Uniform,
+        segments: &SEGMENTS_HELPER_X,
+        t_max: 5.0,
+        r_min: 1.7542171,
+        r_max: 5.5503993,
+    },
+};
+
+const _: () = assert!(SEGMENTS_HELPER_X.len() == 5 && MAP_HELPER_X.inverse.t_max == SEGMENTS_HELPER_X.len() as f32);
+
+/// Gains `g_i` of `S`, in regressor order: the fitted `L` times `K / (Γ(1) - Γ(0))`, each
+/// in 1 / the unit of its regressor entry, so that `t` has no unit.
+const GAINS_HELPER_S: [f32; REGRESSOR_LEN] = [
+    0.014765836,
+    0.0010063765,
+    -0.026398854,
+    -0.00075133867,
+    -0.06432162,
+    0.00016934868,
+];
+
+/// The 1 segments `(a_k, b_k)` of `S = a_k + b_k t` on `t ∈ [k, k + 1]`, in g/L.
+#[rustfmt::skip]
+const SEGMENTS_HELPER_S: [[f32; 2]; 1] = [
+    [0.0, 4.7961736],
+];
+
+/// `S = S`, in g/L: validation RMSE 0.8782, max error 3.8562 (linear floor RMSE 0.8877).
+///
+/// `Γ⁻¹` is a table of 1 segments (2 knots uniform in `Lᵀ z`). Proven on the
+/// host from bounds of `Γ'` and `Γ''`: |table − Γ⁻¹| ≤ 2.47e-5 over the whole range
+/// [0.0, 4.7961736] (exact arithmetic); largest error on 10⁶ dense points: 6.83e-8.
+pub const MAP_HELPER_S: TargetMap<'static, f32> = TargetMap {
+    gains: &GAINS_HELPER_S,
+    offset: 0.3122503,
+    inverse: InverseTable {
+        knots: Knots::Uniform,
+        segments: &SEGMENTS_HELPER_S,
+        t_max: 1.0,
+        r_min: 0.0,
+        r_max: 4.7961736,
+    },
+};
+
+const _: () = assert!(SEGMENTS_HELPER_S.len() == 1 && MAP_HELPER_S.inverse.t_max == SEGMENTS_HELPER_S.len() as f32);
+
 /// Every target's map, in [`TARGET_NAMES`] order.
 pub static MAPS: [TargetMap<'static, f32>; TARGETS] = <Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::MAPS;
 
@@ -716,6 +795,60 @@ impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
                     + GAINS_MUX[3] * w[1].y[1]
                     + GAINS_MUX[4] * w[0].y[0]
                     + GAINS_MUX[5] * w[0].y[1],
+            ),
+        ]
+    }
+}
+/// The map the map-started kinds read: the targets' rows, then a helper map per state that no
+/// target is (`X`, `S`), which those kinds start from and no observer returns.
+pub struct StartDesign;
+
+impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, MAP_ROWS> for StartDesign {
+    const MAPS: [TargetMap<'static, f32>; MAP_ROWS] = [MAP_P, MAP_MUX, MAP_HELPER_X, MAP_HELPER_S];
+
+    #[inline(always)]
+    fn accepts(y: &[f32; OUTPUTS], u: &[f32; INPUTS]) -> bool {
+        <Design as firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS>>::accepts(y, u)
+    }
+
+    #[inline(always)]
+    fn estimate(w: &[Sample<f32, OUTPUTS, INPUTS>; HORIZON]) -> [Estimate<f32>; MAP_ROWS] {
+        [
+            MAP_P.inverse.evaluate(
+                MAP_P.offset
+                    + GAINS_P[0] * w[2].y[0]
+                    + GAINS_P[1] * w[2].y[1]
+                    + GAINS_P[2] * w[1].y[0]
+                    + GAINS_P[3] * w[1].y[1]
+                    + GAINS_P[4] * w[0].y[0]
+                    + GAINS_P[5] * w[0].y[1],
+            ),
+            MAP_MUX.inverse.evaluate(
+                MAP_MUX.offset
+                    + GAINS_MUX[0] * w[2].y[0]
+                    + GAINS_MUX[1] * w[2].y[1]
+                    + GAINS_MUX[2] * w[1].y[0]
+                    + GAINS_MUX[3] * w[1].y[1]
+                    + GAINS_MUX[4] * w[0].y[0]
+                    + GAINS_MUX[5] * w[0].y[1],
+            ),
+            MAP_HELPER_X.inverse.evaluate(
+                MAP_HELPER_X.offset
+                    + GAINS_HELPER_X[0] * w[2].y[0]
+                    + GAINS_HELPER_X[1] * w[2].y[1]
+                    + GAINS_HELPER_X[2] * w[1].y[0]
+                    + GAINS_HELPER_X[3] * w[1].y[1]
+                    + GAINS_HELPER_X[4] * w[0].y[0]
+                    + GAINS_HELPER_X[5] * w[0].y[1],
+            ),
+            MAP_HELPER_S.inverse.evaluate(
+                MAP_HELPER_S.offset
+                    + GAINS_HELPER_S[0] * w[2].y[0]
+                    + GAINS_HELPER_S[1] * w[2].y[1]
+                    + GAINS_HELPER_S[2] * w[1].y[0]
+                    + GAINS_HELPER_S[3] * w[1].y[1]
+                    + GAINS_HELPER_S[4] * w[0].y[0]
+                    + GAINS_HELPER_S[5] * w[0].y[1],
             ),
         ]
     }
@@ -13046,6 +13179,879 @@ pub fn ukf_targets<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; T
 }
 
 
+/// The model-corrected map's constants as `gen` chose them (f64): `G` (no unit), `K` (states ×
+/// outputs, row by row, in state unit per output unit), the schedule `T` (in samples), and each
+/// state's clamp (in its unit); units in [`STATE_UNITS`] and [`OUTPUT_UNITS`].
+pub const CORRECTED_G: [f64; STATES] = [0.013560385074330114, 0.0757507970680515, 0.08888779190116793];
+/// See [`CORRECTED_G`].
+pub const CORRECTED_K: [f64; STATES * OUTPUTS] = [0.035307901931228985, 0.005362220470532208, 0.017290392509064244, 0.0006237192167672535, 0.0043524077977383805, 0.00010924085479886834];
+/// See [`CORRECTED_G`]: the start-up gain `K₀`.
+pub const CORRECTED_K_START: [f64; STATES * OUTPUTS] = [0.09388146997226189, -0.00651813341564856, 0.024554811172116386, 0.007811101040131354, -0.017226296686517192, 0.010616597488522905];
+/// See [`CORRECTED_G`].
+pub const CORRECTED_SCHEDULE: f64 = 6.420509547502587;
+/// See [`CORRECTED_G`].
+pub const CORRECTED_LOWER: [f64; STATES] = [1.7542171141680702, 0.0, 0.0];
+/// See [`CORRECTED_G`].
+pub const CORRECTED_UPPER: [f64; STATES] = [5.550399421582292, 4.7961737248475895, 0.7078263090793144];
+
+/// Entries of one row of [`CORRECTED_BLENDS`]: a blend per state, then the gain.
+const SCHEDULED: usize = STATES + STATES * OUTPUTS;
+
+/// The model-corrected map's start-up schedule, `j = 1 … J`: the blends
+/// `g_j = G + (1 − G) / (1 + j / T)` per state, then the gains `K_j = K + (K₀ − K) / (1 + j / T)`
+/// (states × outputs, row by row), each as `(f32, f64)`.
+#[rustfmt::skip]
+static CORRECTED_BLENDS: [[(f32, f64); SCHEDULED]; 9] = [
+    [(0.8670658, 0.8670657845514583), (0.8754467, 0.8754466661601413), (0.87721705, 0.8772170290643354), (0.085988, 0.08598800016859509), (-0.0049171173, -0.00491711750021467), (0.023575846, 0.023575846234931308), (0.0068425178, 0.006842517713426646), (-0.014318315, -0.014318315186578553), (0.009200609, 0.009200608927837023)],
+    [(0.76570547, 0.7657054815125208), (0.7804766, 0.7804766569723638), (0.7835969, 0.7835968944731959), (0.079969354, 0.07996935035275382), (-0.0036963674, -0.003696367388507288), (0.0228294, 0.02282940046577578), (0.006103988, 0.00610398776324046), (-0.012101023, -0.012101023836335451), (0.008120939, 0.008120939339939633)],
+    [(0.68586427, 0.685864248652926), (0.70566905, 0.7056690410625495), (0.7098526, 0.7098525710829395), (0.075228475, 0.07522847639086025), (-0.002734786, -0.0027347858717791437), (0.022241427, 0.022241427179534593), (0.0055222497, 0.005522249745902954), (-0.0103544695, -0.010354469517685493), (0.0072704866, 0.007270486565093212)],
+    [(0.6213469, 0.6213468792753678), (0.6452192, 0.6452191905899815), (0.65026194, 0.6502619362535138), (0.07139751, 0.07139751454800115), (-0.00195776, -0.0019577599206583645), (0.021766303, 0.021766303132298638), (0.005052164, 0.005052164237434733), (-0.00894313, -0.00894312996193905), (0.0065832604, 0.006583260505978797)],
+    [(0.56812805, 0.5681280196725625), (0.5953555, 0.5953555316040775), (0.601107, 0.6011070240302578), (0.068237446, 0.06823744428435305), (-0.0013168094, -0.00131680950064919), (0.021374384, 0.021374384487634207), (0.004664402, 0.0046644017648193245), (-0.007778949, -0.007778949177852678), (0.006016384, 0.006016383903472418)],
+    [(0.5234787, 0.5234786731640901), (0.5535211, 0.5535211179233196), (0.5598672, 0.559867231880822), (0.065586224, 0.06558622114192204), (-0.00077906746, -0.0007790674743951738), (0.021045575, 0.02104557414672584), (0.0043390784, 0.004339078352555249), (-0.006802229, -0.006802229428216454), (0.005540788, 0.00554078803310321)],
+    [(0.48548323, 0.4854832240133051), (0.5179211, 0.5179211044391687), (0.52477324, 0.5247732260748131), (0.0633301, 0.06333009822024599), (-0.0003214628, -0.0003214627967791737), (0.020765765, 0.0207657649767111), (0.0040622363, 0.004062236469418302), (-0.005971066, -0.005971065962591517), (0.005136068, 0.005136068140830932)],
+    [(0.45275742, 0.45275741516553764), (0.4872585, 0.4872585050410985), (0.49454644, 0.4945464554646765), (0.06138688, 0.061386880042226054), (7.267607e-5, 7.267606832741472e-5), (0.020524763, 0.020524762919453786), (0.0038237902, 0.0038237901620028648), (-0.0052551776, -0.005255177683725686), (0.0047874795, 0.004787479398562622)],
+    [(0.42427605, 0.4242760586488629), (0.46057278, 0.46057276507216915), (0.46824002, 0.4682400184228988), (0.05969569, 0.05969569221015985), (0.00041569615, 0.000415696147262579), (0.020315018, 0.020315018202495757), (0.0036162697, 0.0036162697207763376), (-0.004632138, -0.0046321382535519885), (0.0044841017, 0.004484101709949121)],
+];
+
+/// The model-corrected map on the chip: `x̂(N−1) = F(Z)`, then
+/// `x̂ = clamp(x̄ + g_j ⊙ (F(Z) − x̄) + K_j (y − h(x̄, u)))` with `x̄` the model's prediction, as chosen
+/// by `gen` on the tuning runs: `G = [0.013560385074330114, 0.0757507970680515, 0.08888779190116793]`, `K = [0.035307901931228985, 0.005362220470532208, 0.017290392509064244, 0.0006237192167672535, 0.0043524077977383805, 0.00010924085479886834]`, `K₀ = [0.09388146997226189, -0.00651813341564856, 0.024554811172116386, 0.007811101040131354, -0.017226296686517192, 0.010616597488522905]` (states × outputs, row by row),
+/// `T = 6.420509547502587`, `J = 9`. The clamp is each state's learning range.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Corrector;
+
+impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for Corrector {
+    type Carried = [T; STATES];
+    const START_UP: usize = 9;
+    const STEADY_READS_MAP: bool = true;
+    const STATE_TARGETS: [usize; STATES] = [2, 3, 0];
+
+    #[inline(always)]
+    fn start(first: &[T; STATES], u: &[T; INPUTS]) -> Option<[T; STATES]> {
+        let next = corrected_predict(first, u);
+        next.iter().all(|v| v.is_finite()).then_some(next)
+    }
+
+    #[inline(always)]
+    fn follow(
+        x: &[T; STATES],
+        j: usize,
+        start_up: bool,
+        f: &[T; STATES],
+        y: &[T; OUTPUTS],
+        u: &[T; INPUTS],
+    ) -> Option<([T; STATES], [Estimate<T>; STATES])> {
+        // Loops rather than `array::map`, which the compiler turns into copies at `opt-level = "s"`.
+        fn pick<T: Scalar, const M: usize>(pairs: &[(f32, f64); M]) -> [T; M] {
+            let mut out = [T::ZERO; M];
+            for (out, &(single, double)) in out.iter_mut().zip(pairs) {
+                *out = T::literal(single, double);
+            }
+            out
+        }
+        let raw = if start_up {
+            let row = CORRECTED_BLENDS.get(j.wrapping_sub(1)).unwrap_or(&[(0.0, 0.0); SCHEDULED]);
+            corrected_start_up(x, y, u, f, row)
+        } else {
+            corrected_steady(x, y, u, f)
+        };
+        let states = firmware::emitted::clamp(&raw, &pick(&[(1.7542171, 1.7542171141680702), (0.0, 0.0), (0.0, 0.0)]), &pick(&[(5.5503993, 5.550399421582292), (4.7961736, 4.7961737248475895), (0.7078263, 0.7078263090793144)]));
+        let mut estimate = [T::ZERO; STATES];
+        for (e, s) in estimate.iter_mut().zip(&states) {
+            *e = s.value;
+        }
+        let next = corrected_predict(&estimate, u);
+        next.iter().all(|v| v.is_finite()).then_some((next, states))
+    }
+
+    /// A lost output: the model's period from `x̄` (no correction; the next estimate is clamped).
+    #[inline(always)]
+    fn predict(x: &[T; STATES], u: &[T; INPUTS]) -> Option<[T; STATES]> {
+        let next = corrected_predict(x, u);
+        next.iter().all(|v| v.is_finite()).then_some(next)
+    }
+
+    #[inline(always)]
+    fn targets(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {
+        targets(x, u)
+    }
+}
+
+/// The model-corrected map over this design's map.
+pub type CorrectedObserver = firmware::Started<f32, StartDesign, Corrector, HORIZON, STATES, OUTPUTS, INPUTS, MAP_ROWS, TARGETS>;
+
+/// One sampling period of the model from `x`, the value alone: `x⁺`, written out by `gen`.
+#[allow(unused_variables, non_snake_case)]
+fn corrected_predict<T: Scalar + Maths>(x: &[T; STATES], u: &[T; INPUTS]) -> [T; STATES] {
+    let x_X: T = x[0];
+    let x_S: T = x[1];
+    let x_P: T = x[2];
+    let t3: T = T::literal(0.05, 0.05);
+    let t4: T = T::literal(2.0, 2.0);
+    let t5: T = T::literal(6.0, 6.0);
+    let t6: T = t3 / t4;
+    let t7: T = t3 / t5;
+    let p_mu_m: T = T::literal(parameters::mu_m.0, parameters::mu_m.1);
+    let p_k_s: T = T::literal(parameters::k_s.0, parameters::k_s.1);
+    let t10: T = p_k_s + x_S;
+    let t11: T = x_S / t10;
+    let t12: T = p_mu_m * t11;
+    let p_k_d: T = T::literal(parameters::k_d.0, parameters::k_d.1);
+    let p_k_p: T = T::literal(parameters::k_p.0, parameters::k_p.1);
+    let t15: T = -p_k_p;
+    let t16: T = T::literal(0.001, 0.001);
+    let t17: T = Maths::max(x_P, t16);
+    let t18: T = t15 / t17;
+    let t19: T = Maths::exp(t18);
+    let t20: T = p_k_d * t19;
+    let t21: T = t12 * x_X;
+    let t22: T = t20 * x_X;
+    let t23: T = t21 - t22;
+    let p_y_s: T = T::literal(parameters::y_s.0, parameters::y_s.1);
+    let t25: T = p_y_s * t12;
+    let t26: T = t25 * x_X;
+    let t27: T = -t26;
+    let p_k_m: T = T::literal(parameters::k_m.0, parameters::k_m.1);
+    let t29: T = p_k_m * x_X;
+    let p_ks_m: T = T::literal(parameters::ks_m.0, parameters::ks_m.1);
+    let t31: T = x_S + p_ks_m;
+    let t32: T = x_S / t31;
+    let t33: T = t29 * t32;
+    let t34: T = t27 - t33;
+    let p_y_p: T = T::literal(parameters::y_p.0, parameters::y_p.1);
+    let t36: T = p_y_p * t12;
+    let p_I: T = T::literal(parameters::I.0, parameters::I.1);
+    let p_k_I: T = T::literal(parameters::k_I.0, parameters::k_I.1);
+    let t39: T = p_I + p_k_I;
+    let t40: T = p_I / t39;
+    let t41: T = t36 * t40;
+    let t42: T = t41 * x_X;
+    let t43: T = t20 * x_P;
+    let t44: T = t42 - t43;
+    let t45: T = t6 * t23;
+    let t46: T = x_X + t45;
+    let t47: T = t6 * t34;
+    let t48: T = x_S + t47;
+    let t49: T = t6 * t44;
+    let t50: T = x_P + t49;
+    let t51: T = p_k_s + t48;
+    let t52: T = t48 / t51;
+    let t53: T = p_mu_m * t52;
+    let t54: T = Maths::max(t50, t16);
+    let t55: T = t15 / t54;
+    let t56: T = Maths::exp(t55);
+    let t57: T = p_k_d * t56;
+    let t58: T = t53 * t46;
+    let t59: T = t57 * t46;
+    let t60: T = t58 - t59;
+    let t61: T = p_y_s * t53;
+    let t62: T = t61 * t46;
+    let t63: T = -t62;
+    let t64: T = p_k_m * t46;
+    let t65: T = t48 + p_ks_m;
+    let t66: T = t48 / t65;
+    let t67: T = t64 * t66;
+    let t68: T = t63 - t67;
+    let t69: T = p_y_p * t53;
+    let t70: T = t69 * t40;
+    let t71: T = t70 * t46;
+    let t72: T = t57 * t50;
+    let t73: T = t71 - t72;
+    let t74: T = t6 * t60;
+    let t75: T = x_X + t74;
+    let t76: T = t6 * t68;
+    let t77: T = x_S + t76;
+    let t78: T = t6 * t73;
+    let t79: T = x_P + t78;
+    let t80: T = p_k_s + t77;
+    let t81: T = t77 / t80;
+    let t82: T = p_mu_m * t81;
+    let t83: T = Maths::max(t79, t16);
+    let t84: T = t15 / t83;
+    let t85: T = Maths::exp(t84);
+    let t86: T = p_k_d * t85;
+    let t87: T = t82 * t75;
+    let t88: T = t86 * t75;
+    let t89: T = t87 - t88;
+    let t90: T = p_y_s * t82;
+    let t91: T = t90 * t75;
+    let t92: T = -t91;
+    let t93: T = p_k_m * t75;
+    let t94: T = t77 + p_ks_m;
+    let t95: T = t77 / t94;
+    let t96: T = t93 * t95;
+    let t97: T = t92 - t96;
+    let t98: T = p_y_p * t82;
+    let t99: T = t98 * t40;
+    let t100: T = t99 * t75;
+    let t101: T = t86 * t79;
+    let t102: T = t100 - t101;
+    let t103: T = t3 * t89;
+    let t104: T = x_X + t103;
+    let t105: T = t3 * t97;
+    let t106: T = x_S + t105;
+    let t107: T = t3 * t102;
+    let t108: T = x_P + t107;
+    let t109: T = p_k_s + t106;
+    let t110: T = t106 / t109;
+    let t111: T = p_mu_m * t110;
+    let t112: T = Maths::max(t108, t16);
+    let t113: T = t15 / t112;
+    let t114: T = Maths::exp(t113);
+    let t115: T = p_k_d * t114;
+    let t116: T = t111 * t104;
+    let t117: T = t115 * t104;
+    let t118: T = t116 - t117;
+    let t119: T = p_y_s * t111;
+    let t120: T = t119 * t104;
+    let t121: T = -t120;
+    let t122: T = p_k_m * t104;
+    let t123: T = t106 + p_ks_m;
+    let t124: T = t106 / t123;
+    let t125: T = t122 * t124;
+    let t126: T = t121 - t125;
+    let t127: T = p_y_p * t111;
+    let t128: T = t127 * t40;
+    let t129: T = t128 * t104;
+    let t130: T = t115 * t108;
+    let t131: T = t129 - t130;
+    let t132: T = t60 + t89;
+    let t133: T = t4 * t132;
+    let t134: T = t23 + t133;
+    let t135: T = t134 + t118;
+    let t136: T = t7 * t135;
+    let t137: T = x_X + t136;
+    let t138: T = t68 + t97;
+    let t139: T = t4 * t138;
+    let t140: T = t34 + t139;
+    let t141: T = t140 + t126;
+    let t142: T = t7 * t141;
+    let t143: T = x_S + t142;
+    let t144: T = t73 + t102;
+    let t145: T = t4 * t144;
+    let t146: T = t44 + t145;
+    let t147: T = t146 + t131;
+    let t148: T = t7 * t147;
+    let t149: T = x_P + t148;
+    let t150: T = p_k_s + t143;
+    let t151: T = t143 / t150;
+    let t152: T = p_mu_m * t151;
+    let t153: T = Maths::max(t149, t16);
+    let t154: T = t15 / t153;
+    let t155: T = Maths::exp(t154);
+    let t156: T = p_k_d * t155;
+    let t157: T = t152 * t137;
+    let t158: T = t156 * t137;
+    let t159: T = t157 - t158;
+    let t160: T = p_y_s * t152;
+    let t161: T = t160 * t137;
+    let t162: T = -t161;
+    let t163: T = p_k_m * t137;
+    let t164: T = t143 + p_ks_m;
+    let t165: T = t143 / t164;
+    let t166: T = t163 * t165;
+    let t167: T = t162 - t166;
+    let t168: T = p_y_p * t152;
+    let t169: T = t168 * t40;
+    let t170: T = t169 * t137;
+    let t171: T = t156 * t149;
+    let t172: T = t170 - t171;
+    let t173: T = t6 * t159;
+    let t174: T = t137 + t173;
+    let t175: T = t6 * t167;
+    let t176: T = t143 + t175;
+    let t177: T = t6 * t172;
+    let t178: T = t149 + t177;
+    let t179: T = p_k_s + t176;
+    let t180: T = t176 / t179;
+    let t181: T = p_mu_m * t180;
+    let t182: T = Maths::max(t178, t16);
+    let t183: T = t15 / t182;
+    let t184: T = Maths::exp(t183);
+    let t185: T = p_k_d * t184;
+    let t186: T = t181 * t174;
+    let t187: T = t185 * t174;
+    let t188: T = t186 - t187;
+    let t189: T = p_y_s * t181;
+    let t190: T = t189 * t174;
+    let t191: T = -t190;
+    let t192: T = p_k_m * t174;
+    let t193: T = t176 + p_ks_m;
+    let t194: T = t176 / t193;
+    let t195: T = t192 * t194;
+    let t196: T = t191 - t195;
+    let t197: T = p_y_p * t181;
+    let t198: T = t197 * t40;
+    let t199: T = t198 * t174;
+    let t200: T = t185 * t178;
+    let t201: T = t199 - t200;
+    let t202: T = t6 * t188;
+    let t203: T = t137 + t202;
+    let t204: T = t6 * t196;
+    let t205: T = t143 + t204;
+    let t206: T = t6 * t201;
+    let t207: T = t149 + t206;
+    let t208: T = p_k_s + t205;
+    let t209: T = t205 / t208;
+    let t210: T = p_mu_m * t209;
+    let t211: T = Maths::max(t207, t16);
+    let t212: T = t15 / t211;
+    let t213: T = Maths::exp(t212);
+    let t214: T = p_k_d * t213;
+    let t215: T = t210 * t203;
+    let t216: T = t214 * t203;
+    let t217: T = t215 - t216;
+    let t218: T = p_y_s * t210;
+    let t219: T = t218 * t203;
+    let t220: T = -t219;
+    let t221: T = p_k_m * t203;
+    let t222: T = t205 + p_ks_m;
+    let t223: T = t205 / t222;
+    let t224: T = t221 * t223;
+    let t225: T = t220 - t224;
+    let t226: T = p_y_p * t210;
+    let t227: T = t226 * t40;
+    let t228: T = t227 * t203;
+    let t229: T = t214 * t207;
+    let t230: T = t228 - t229;
+    let t231: T = t3 * t217;
+    let t232: T = t137 + t231;
+    let t233: T = t3 * t225;
+    let t234: T = t143 + t233;
+    let t235: T = t3 * t230;
+    let t236: T = t149 + t235;
+    let t237: T = p_k_s + t234;
+    let t238: T = t234 / t237;
+    let t239: T = p_mu_m * t238;
+    let t240: T = Maths::max(t236, t16);
+    let t241: T = t15 / t240;
+    let t242: T = Maths::exp(t241);
+    let t243: T = p_k_d * t242;
+    let t244: T = t239 * t232;
+    let t245: T = t243 * t232;
+    let t246: T = t244 - t245;
+    let t247: T = p_y_s * t239;
+    let t248: T = t247 * t232;
+    let t249: T = -t248;
+    let t250: T = p_k_m * t232;
+    let t251: T = t234 + p_ks_m;
+    let t252: T = t234 / t251;
+    let t253: T = t250 * t252;
+    let t254: T = t249 - t253;
+    let t255: T = p_y_p * t239;
+    let t256: T = t255 * t40;
+    let t257: T = t256 * t232;
+    let t258: T = t243 * t236;
+    let t259: T = t257 - t258;
+    let t260: T = t188 + t217;
+    let t261: T = t4 * t260;
+    let t262: T = t159 + t261;
+    let t263: T = t262 + t246;
+    let t264: T = t7 * t263;
+    let t265: T = t137 + t264;
+    let t266: T = t196 + t225;
+    let t267: T = t4 * t266;
+    let t268: T = t167 + t267;
+    let t269: T = t268 + t254;
+    let t270: T = t7 * t269;
+    let t271: T = t143 + t270;
+    let t272: T = t201 + t230;
+    let t273: T = t4 * t272;
+    let t274: T = t172 + t273;
+    let t275: T = t274 + t259;
+    let t276: T = t7 * t275;
+    let t277: T = t149 + t276;
+    let t278: T = p_k_s + t271;
+    let t279: T = t271 / t278;
+    let t280: T = p_mu_m * t279;
+    let t281: T = Maths::max(t277, t16);
+    let t282: T = t15 / t281;
+    let t283: T = Maths::exp(t282);
+    let t284: T = p_k_d * t283;
+    let t285: T = t280 * t265;
+    let t286: T = t284 * t265;
+    let t287: T = t285 - t286;
+    let t288: T = p_y_s * t280;
+    let t289: T = t288 * t265;
+    let t290: T = -t289;
+    let t291: T = p_k_m * t265;
+    let t292: T = t271 + p_ks_m;
+    let t293: T = t271 / t292;
+    let t294: T = t291 * t293;
+    let t295: T = t290 - t294;
+    let t296: T = p_y_p * t280;
+    let t297: T = t296 * t40;
+    let t298: T = t297 * t265;
+    let t299: T = t284 * t277;
+    let t300: T = t298 - t299;
+    let t301: T = t6 * t287;
+    let t302: T = t265 + t301;
+    let t303: T = t6 * t295;
+    let t304: T = t271 + t303;
+    let t305: T = t6 * t300;
+    let t306: T = t277 + t305;
+    let t307: T = p_k_s + t304;
+    let t308: T = t304 / t307;
+    let t309: T = p_mu_m * t308;
+    let t310: T = Maths::max(t306, t16);
+    let t311: T = t15 / t310;
+    let t312: T = Maths::exp(t311);
+    let t313: T = p_k_d * t312;
+    let t314: T = t309 * t302;
+    let t315: T = t313 * t302;
+    let t316: T = t314 - t315;
+    let t317: T = p_y_s * t309;
+    let t318: T = t317 * t302;
+    let t319: T = -t318;
+    let t320: T = p_k_m * t302;
+    let t321: T = t304 + p_ks_m;
+    let t322: T = t304 / t321;
+    let t323: T = t320 * t322;
+    let t324: T = t319 - t323;
+    let t325: T = p_y_p * t309;
+    let t326: T = t325 * t40;
+    let t327: T = t326 * t302;
+    let t328: T = t313 * t306;
+    let t329: T = t327 - t328;
+    let t330: T = t6 * t316;
+    let t331: T = t265 + t330;
+    let t332: T = t6 * t324;
+    let t333: T = t271 + t332;
+    let t334: T = t6 * t329;
+    let t335: T = t277 + t334;
+    let t336: T = p_k_s + t333;
+    let t337: T = t333 / t336;
+    let t338: T = p_mu_m * t337;
+    let t339: T = Maths::max(t335, t16);
+    let t340: T = t15 / t339;
+    let t341: T = Maths::exp(t340);
+    let t342: T = p_k_d * t341;
+    let t343: T = t338 * t331;
+    let t344: T = t342 * t331;
+    let t345: T = t343 - t344;
+    let t346: T = p_y_s * t338;
+    let t347: T = t346 * t331;
+    let t348: T = -t347;
+    let t349: T = p_k_m * t331;
+    let t350: T = t333 + p_ks_m;
+    let t351: T = t333 / t350;
+    let t352: T = t349 * t351;
+    let t353: T = t348 - t352;
+    let t354: T = p_y_p * t338;
+    let t355: T = t354 * t40;
+    let t356: T = t355 * t331;
+    let t357: T = t342 * t335;
+    let t358: T = t356 - t357;
+    let t359: T = t3 * t345;
+    let t360: T = t265 + t359;
+    let t361: T = t3 * t353;
+    let t362: T = t271 + t361;
+    let t363: T = t3 * t358;
+    let t364: T = t277 + t363;
+    let t365: T = p_k_s + t362;
+    let t366: T = t362 / t365;
+    let t367: T = p_mu_m * t366;
+    let t368: T = Maths::max(t364, t16);
+    let t369: T = t15 / t368;
+    let t370: T = Maths::exp(t369);
+    let t371: T = p_k_d * t370;
+    let t372: T = t367 * t360;
+    let t373: T = t371 * t360;
+    let t374: T = t372 - t373;
+    let t375: T = p_y_s * t367;
+    let t376: T = t375 * t360;
+    let t377: T = -t376;
+    let t378: T = p_k_m * t360;
+    let t379: T = t362 + p_ks_m;
+    let t380: T = t362 / t379;
+    let t381: T = t378 * t380;
+    let t382: T = t377 - t381;
+    let t383: T = p_y_p * t367;
+    let t384: T = t383 * t40;
+    let t385: T = t384 * t360;
+    let t386: T = t371 * t364;
+    let t387: T = t385 - t386;
+    let t388: T = t316 + t345;
+    let t389: T = t4 * t388;
+    let t390: T = t287 + t389;
+    let t391: T = t390 + t374;
+    let t392: T = t7 * t391;
+    let t393: T = t265 + t392;
+    let t394: T = t324 + t353;
+    let t395: T = t4 * t394;
+    let t396: T = t295 + t395;
+    let t397: T = t396 + t382;
+    let t398: T = t7 * t397;
+    let t399: T = t271 + t398;
+    let t400: T = t329 + t358;
+    let t401: T = t4 * t400;
+    let t402: T = t300 + t401;
+    let t403: T = t402 + t387;
+    let t404: T = t7 * t403;
+    let t405: T = t277 + t404;
+    let t406: T = p_k_s + t399;
+    let t407: T = t399 / t406;
+    let t408: T = p_mu_m * t407;
+    let t409: T = Maths::max(t405, t16);
+    let t410: T = t15 / t409;
+    let t411: T = Maths::exp(t410);
+    let t412: T = p_k_d * t411;
+    let t413: T = t408 * t393;
+    let t414: T = t412 * t393;
+    let t415: T = t413 - t414;
+    let t416: T = p_y_s * t408;
+    let t417: T = t416 * t393;
+    let t418: T = -t417;
+    let t419: T = p_k_m * t393;
+    let t420: T = t399 + p_ks_m;
+    let t421: T = t399 / t420;
+    let t422: T = t419 * t421;
+    let t423: T = t418 - t422;
+    let t424: T = p_y_p * t408;
+    let t425: T = t424 * t40;
+    let t426: T = t425 * t393;
+    let t427: T = t412 * t405;
+    let t428: T = t426 - t427;
+    let t429: T = t6 * t415;
+    let t430: T = t393 + t429;
+    let t431: T = t6 * t423;
+    let t432: T = t399 + t431;
+    let t433: T = t6 * t428;
+    let t434: T = t405 + t433;
+    let t435: T = p_k_s + t432;
+    let t436: T = t432 / t435;
+    let t437: T = p_mu_m * t436;
+    let t438: T = Maths::max(t434, t16);
+    let t439: T = t15 / t438;
+    let t440: T = Maths::exp(t439);
+    let t441: T = p_k_d * t440;
+    let t442: T = t437 * t430;
+    let t443: T = t441 * t430;
+    let t444: T = t442 - t443;
+    let t445: T = p_y_s * t437;
+    let t446: T = t445 * t430;
+    let t447: T = -t446;
+    let t448: T = p_k_m * t430;
+    let t449: T = t432 + p_ks_m;
+    let t450: T = t432 / t449;
+    let t451: T = t448 * t450;
+    let t452: T = t447 - t451;
+    let t453: T = p_y_p * t437;
+    let t454: T = t453 * t40;
+    let t455: T = t454 * t430;
+    let t456: T = t441 * t434;
+    let t457: T = t455 - t456;
+    let t458: T = t6 * t444;
+    let t459: T = t393 + t458;
+    let t460: T = t6 * t452;
+    let t461: T = t399 + t460;
+    let t462: T = t6 * t457;
+    let t463: T = t405 + t462;
+    let t464: T = p_k_s + t461;
+    let t465: T = t461 / t464;
+    let t466: T = p_mu_m * t465;
+    let t467: T = Maths::max(t463, t16);
+    let t468: T = t15 / t467;
+    let t469: T = Maths::exp(t468);
+    let t470: T = p_k_d * t469;
+    let t471: T = t466 * t459;
+    let t472: T = t470 * t459;
+    let t473: T = t471 - t472;
+    let t474: T = p_y_s * t466;
+    let t475: T = t474 * t459;
+    let t476: T = -t475;
+    let t477: T = p_k_m * t459;
+    let t478: T = t461 + p_ks_m;
+    let t479: T = t461 / t478;
+    let t480: T = t477 * t479;
+    let t481: T = t476 - t480;
+    let t482: T = p_y_p * t466;
+    let t483: T = t482 * t40;
+    let t484: T = t483 * t459;
+    let t485: T = t470 * t463;
+    let t486: T = t484 - t485;
+    let t487: T = t3 * t473;
+    let t488: T = t393 + t487;
+    let t489: T = t3 * t481;
+    let t490: T = t399 + t489;
+    let t491: T = t3 * t486;
+    let t492: T = t405 + t491;
+    let t493: T = p_k_s + t490;
+    let t494: T = t490 / t493;
+    let t495: T = p_mu_m * t494;
+    let t496: T = Maths::max(t492, t16);
+    let t497: T = t15 / t496;
+    let t498: T = Maths::exp(t497);
+    let t499: T = p_k_d * t498;
+    let t500: T = t495 * t488;
+    let t501: T = t499 * t488;
+    let t502: T = t500 - t501;
+    let t503: T = p_y_s * t495;
+    let t504: T = t503 * t488;
+    let t505: T = -t504;
+    let t506: T = p_k_m * t488;
+    let t507: T = t490 + p_ks_m;
+    let t508: T = t490 / t507;
+    let t509: T = t506 * t508;
+    let t510: T = t505 - t509;
+    let t511: T = p_y_p * t495;
+    let t512: T = t511 * t40;
+    let t513: T = t512 * t488;
+    let t514: T = t499 * t492;
+    let t515: T = t513 - t514;
+    let t516: T = t444 + t473;
+    let t517: T = t4 * t516;
+    let t518: T = t415 + t517;
+    let t519: T = t518 + t502;
+    let t520: T = t7 * t519;
+    let t521: T = t393 + t520;
+    let t522: T = t452 + t481;
+    let t523: T = t4 * t522;
+    let t524: T = t423 + t523;
+    let t525: T = t524 + t510;
+    let t526: T = t7 * t525;
+    let t527: T = t399 + t526;
+    let t528: T = t457 + t486;
+    let t529: T = t4 * t528;
+    let t530: T = t428 + t529;
+    let t531: T = t530 + t515;
+    let t532: T = t7 * t531;
+    let t533: T = t405 + t532;
+    [t521, t527, t533]
+}
+
+/// The correction during the start-up, `g` = (blend `g_j`, gain `K_j`) given: `x̂` before its clamp, written out by `gen`.
+#[allow(unused_variables, non_snake_case)]
+fn corrected_start_up<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T; INPUTS], f: &[T; STATES], g: &[(f32, f64); SCHEDULED]) -> [T; STATES] {
+    let x_X: T = x[0];
+    let x_S: T = x[1];
+    let x_P: T = x[2];
+    let p_mu_m: T = T::literal(parameters::mu_m.0, parameters::mu_m.1);
+    let p_k_s: T = T::literal(parameters::k_s.0, parameters::k_s.1);
+    let t5: T = p_k_s + x_S;
+    let t6: T = x_S / t5;
+    let t7: T = p_mu_m * t6;
+    let p_y_l: T = T::literal(parameters::y_l.0, parameters::y_l.1);
+    let t9: T = p_y_l * t7;
+    let p_I: T = T::literal(parameters::I.0, parameters::I.1);
+    let p_k_l: T = T::literal(parameters::k_l.0, parameters::k_l.1);
+    let t12: T = p_I + p_k_l;
+    let t13: T = p_I / t12;
+    let t14: T = t9 * t13;
+    let t15: T = t14 * x_X;
+    let t16: T = t15 * x_P;
+    let y_X_meas: T = y[0];
+    let t18: T = y_X_meas - x_X;
+    let y_L: T = y[1];
+    let t20: T = y_L - t16;
+    let g_X: T = T::literal(g[0].0, g[0].1);
+    let f_X: T = f[0];
+    let t23: T = f_X - x_X;
+    let t24: T = g_X * t23;
+    let t25: T = x_X + t24;
+    let k0: T = T::literal(g[3].0, g[3].1);
+    let k1: T = T::literal(g[4].0, g[4].1);
+    let t28: T = k0 * t18;
+    let t29: T = t25 + t28;
+    let t30: T = k1 * t20;
+    let t31: T = t29 + t30;
+    let g_S: T = T::literal(g[1].0, g[1].1);
+    let f_S: T = f[1];
+    let t34: T = f_S - x_S;
+    let t35: T = g_S * t34;
+    let t36: T = x_S + t35;
+    let k2: T = T::literal(g[5].0, g[5].1);
+    let k3: T = T::literal(g[6].0, g[6].1);
+    let t39: T = k2 * t18;
+    let t40: T = t36 + t39;
+    let t41: T = k3 * t20;
+    let t42: T = t40 + t41;
+    let g_P: T = T::literal(g[2].0, g[2].1);
+    let f_P: T = f[2];
+    let t45: T = f_P - x_P;
+    let t46: T = g_P * t45;
+    let t47: T = x_P + t46;
+    let k4: T = T::literal(g[7].0, g[7].1);
+    let k5: T = T::literal(g[8].0, g[8].1);
+    let t50: T = k4 * t18;
+    let t51: T = t47 + t50;
+    let t52: T = k5 * t20;
+    let t53: T = t51 + t52;
+    [t31, t42, t53]
+}
+
+/// The correction after the start-up (`G` as numbers): `x̂` before its clamp, written out by `gen`.
+#[allow(unused_variables, non_snake_case)]
+fn corrected_steady<T: Scalar + Maths>(x: &[T; STATES], y: &[T; OUTPUTS], u: &[T; INPUTS], f: &[T; STATES]) -> [T; STATES] {
+    let x_X: T = x[0];
+    let x_S: T = x[1];
+    let x_P: T = x[2];
+    let p_mu_m: T = T::literal(parameters::mu_m.0, parameters::mu_m.1);
+    let p_k_s: T = T::literal(parameters::k_s.0, parameters::k_s.1);
+    let t5: T = p_k_s + x_S;
+    let t6: T = x_S / t5;
+    let t7: T = p_mu_m * t6;
+    let p_y_l: T = T::literal(parameters::y_l.0, parameters::y_l.1);
+    let t9: T = p_y_l * t7;
+    let p_I: T = T::literal(parameters::I.0, parameters::I.1);
+    let p_k_l: T = T::literal(parameters::k_l.0, parameters::k_l.1);
+    let t12: T = p_I + p_k_l;
+    let t13: T = p_I / t12;
+    let t14: T = t9 * t13;
+    let t15: T = t14 * x_X;
+    let t16: T = t15 * x_P;
+    let y_X_meas: T = y[0];
+    let t18: T = y_X_meas - x_X;
+    let y_L: T = y[1];
+    let t20: T = y_L - t16;
+    let t21: T = T::literal(0.013560385, 0.013560385074330114);
+    let f_X: T = f[0];
+    let t23: T = f_X - x_X;
+    let t24: T = t21 * t23;
+    let t25: T = x_X + t24;
+    let t26: T = T::literal(0.035307903, 0.035307901931228985);
+    let t27: T = T::literal(0.0053622206, 0.005362220470532208);
+    let t28: T = t26 * t18;
+    let t29: T = t25 + t28;
+    let t30: T = t27 * t20;
+    let t31: T = t29 + t30;
+    let t32: T = T::literal(0.0757508, 0.0757507970680515);
+    let f_S: T = f[1];
+    let t34: T = f_S - x_S;
+    let t35: T = t32 * t34;
+    let t36: T = x_S + t35;
+    let t37: T = T::literal(0.017290393, 0.017290392509064244);
+    let t38: T = T::literal(0.00062371924, 0.0006237192167672535);
+    let t39: T = t37 * t18;
+    let t40: T = t36 + t39;
+    let t41: T = t38 * t20;
+    let t42: T = t40 + t41;
+    let t43: T = T::literal(0.08888779, 0.08888779190116793);
+    let f_P: T = f[2];
+    let t45: T = f_P - x_P;
+    let t46: T = t43 * t45;
+    let t47: T = x_P + t46;
+    let t48: T = T::literal(0.004352408, 0.0043524077977383805);
+    let t49: T = T::literal(0.00010924086, 0.00010924085479886834);
+    let t50: T = t48 * t18;
+    let t51: T = t47 + t50;
+    let t52: T = t49 * t20;
+    let t53: T = t51 + t52;
+    [t31, t42, t53]
+}
+
+/// `P(N−1)` diagonal of [`StartedEkf`] (f64), as `gen` chose it, in each state's unit squared
+/// ([`STATE_UNITS`]).
+pub const STARTED_P0: [f64; STATES] = [0.1001129527521705, 2.5384724695407237, 0.020560255305261264];
+
+/// The EKF started at the map's first estimate `x̂(N−1) = F(Z)` with `P(N−1)` diagonal, each variance
+/// the map's mean squared error on the tuning runs, then [`Ekf`]'s samples (same `Q` and `R`, and
+/// the same χ² watch: innovations that stay implausible end the filter, which the map starts again).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct StartedEkf;
+
+impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+    /// `x̂`, the upper triangle of `P` and the watched mean of the normalised innovations squared.
+    type Carried = ([T; STATES], [T; COVARIANCE], T);
+    const START_UP: usize = 0;
+    const STEADY_READS_MAP: bool = false;
+    const STATE_TARGETS: [usize; STATES] = [2, 3, 0];
+
+    #[inline(always)]
+    fn start(first: &[T; STATES], u: &[T; INPUTS]) -> Option<Self::Carried> {
+        let (x, p) = ekf_unmeasured(first, &[T::literal(0.10011295, 0.1001129527521705), T::literal(0.0, 0.0), T::literal(0.0, 0.0), T::literal(2.5384724, 2.5384724695407237), T::literal(0.0, 0.0), T::literal(0.020560255, 0.020560255305261264)], u);
+        finite(&x, &p).then_some((x, p, T::literal(2.0, 2.0)))
+    }
+
+    #[inline(always)]
+    fn follow(
+        carried: &Self::Carried,
+        _: usize,
+        _: bool,
+        _: &[T; STATES],
+        y: &[T; OUTPUTS],
+        u: &[T; INPUTS],
+    ) -> Option<(Self::Carried, [Estimate<T>; STATES])> {
+        let (estimate, x, p, nis) = ekf_measured(&carried.0, &carried.1, y, u);
+        let chi = firmware::watch::watched(carried.2, nis, T::literal(0.33333334, 0.3333333333333333));
+        let mut inside = [Estimate { value: T::ZERO, saturation: firmware::Saturation::Inside }; STATES];
+        for (e, &value) in inside.iter_mut().zip(&estimate) {
+            e.value = value;
+        }
+        (finite(&x, &p) && firmware::watch::plausible(chi, T::literal(2048.0, 2048.0))).then_some(((x, p, chi), inside))
+    }
+
+    /// A lost output: the filter's prediction alone, as [`Ekf::push`] runs it.
+    #[inline(always)]
+    fn predict(carried: &Self::Carried, u: &[T; INPUTS]) -> Option<Self::Carried> {
+        let (x, p) = ekf_unmeasured(&carried.0, &carried.1, u);
+        finite(&x, &p).then_some((x, p, carried.2))
+    }
+
+    #[inline(always)]
+    fn targets(x: &[T; STATES], u: &[T; INPUTS]) -> [T; TARGETS] {
+        targets(x, u)
+    }
+}
+
+/// The EKF started by this design's map.
+pub type EkfMapObserver = firmware::Started<f32, StartDesign, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, MAP_ROWS, TARGETS>;
+
+/// The check of [`EkfRestartObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
+/// (no unit).
+pub const RESTART_THRESHOLD: f64 = 32.0;
+/// See [`RESTART_THRESHOLD`]: each state's `e_i²`, the map's mean squared error on the tuning runs,
+/// in its unit squared ([`STATE_UNITS`]).
+pub const RESTART_VARIANCES: [f64; STATES] = [0.031658495398168125, 0.8027354781381087, 0.0065017236039186105];
+
+/// Whether the filter's prediction `x` with covariance `p` and the map's states `f` disagree:
+/// `d = Σ_i (x_i − f_i)² / (P_ii + e_i²) > τ`, or `d` is NaN. Runs at every sample from the map's
+/// first estimate on.
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
+#[inline(always)]
+fn restart_disagrees<T: Scalar + Maths>(x: &[T; STATES], p: &[T; COVARIANCE], f: &[T; STATES]) -> bool {
+    const DIAGONAL: [usize; STATES] = [0, 3, 5];
+    let variances: [T; STATES] = [T::literal(0.031658497, 0.031658495398168125), T::literal(0.8027355, 0.8027354781381087), T::literal(0.0065017235, 0.0065017236039186105)];
+    let mut d = T::ZERO;
+    for i in 0..STATES {
+        let e = x[i] - f[i];
+        d += e * e / (p[DIAGONAL[i]] + variances[i]);
+    }
+    !(d <= T::literal(32.0, 32.0))
+}
+
+impl firmware::emitted::Restart<f32, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+    const FRESH: <Self as firmware::emitted::Follower<f32, STATES, OUTPUTS, INPUTS, TARGETS>>::Carried =
+        ([2.0, 2.5, 0.15], [0.07910941, 0.0, 0.0, 0.7083266, 0.0, 0.09826757], 2.0);
+
+    #[inline(always)]
+    fn disagrees(
+        carried: &<Self as firmware::emitted::Follower<f32, STATES, OUTPUTS, INPUTS, TARGETS>>::Carried,
+        map: &[f32; STATES],
+    ) -> bool {
+        restart_disagrees(&carried.0, &carried.1, map)
+    }
+}
+
+impl firmware::emitted::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for StartedEkf {
+    const FRESH: <Self as firmware::emitted::Follower<f64, STATES, OUTPUTS, INPUTS, TARGETS>>::Carried =
+        ([2.0, 2.5, 0.15], [0.07910940998256163, 0.0, 0.0, 0.7083265608263868, 0.0, 0.09826757217140222], 2.0);
+
+    #[inline(always)]
+    fn disagrees(
+        carried: &<Self as firmware::emitted::Follower<f64, STATES, OUTPUTS, INPUTS, TARGETS>>::Carried,
+        map: &[f64; STATES],
+    ) -> bool {
+        restart_disagrees(&carried.0, &carried.1, map)
+    }
+}
+
+/// The EKF from the centre of the state box ([`Ekf`]'s start and samples) that the map watches at
+/// every sample from its first estimate on, restarted from it as [`EkfMapObserver`] starts when the
+/// two disagree (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's
+/// guess-free start where the box centre is far from the plant or the filter loses track.
+pub type EkfRestartObserver = firmware::Restarted<f32, StartDesign, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, MAP_ROWS, TARGETS>;
+
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
 /// learning runs cover, the first window's start, 3 Gauss–Newton step(s) per sample,
@@ -13101,7 +14107,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "740a0550356e310fdd0ca1f4accf0136fcf7ca7430e5970eaec0ae3b012f3ca5";
+pub const TABLES_SHA256: &str = "76d37d4e46c83d53d9ad8d4462816311ac9173893f99f89b70b43a28d1758a6f";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.
@@ -13884,6 +14890,9 @@ macro_rules! ecoli_x0_2_observers {
         $callback!(ecoli_x0_2, map, MapObserver);
         $callback!(ecoli_x0_2, ekf_box, EkfBoxObserver);
         $callback!(ecoli_x0_2, ukf_box, UkfBoxObserver);
+        $callback!(ecoli_x0_2, corrected, CorrectedObserver);
+        $callback!(ecoli_x0_2, ekf_map, EkfMapObserver);
+        $callback!(ecoli_x0_2, ekf_restart, EkfRestartObserver);
         $callback!(ecoli_x0_2, mhe, MheObserver);
     };
     (fixed $callback:ident) => {
@@ -13898,10 +14907,19 @@ macro_rules! ecoli_x0_2_observers {
     (new ukf_box) => {
         $crate::ecoli_x0_2::UkfBoxObserver::new()
     };
+    (new corrected) => {
+        $crate::ecoli_x0_2::CorrectedObserver::new()
+    };
+    (new ekf_map) => {
+        $crate::ecoli_x0_2::EkfMapObserver::new()
+    };
+    (new ekf_restart) => {
+        $crate::ecoli_x0_2::EkfRestartObserver::new()
+    };
     (new mhe) => {
         $crate::ecoli_x0_2::MheObserver::new()
     };
     (new $other:ident) => {
-        compile_error!(concat!("design `ecoli_x0_2` has no observer of kind `", stringify!($other), "`; its kinds: map, ekf_box, ukf_box, mhe"))
+        compile_error!(concat!("design `ecoli_x0_2` has no observer of kind `", stringify!($other), "`; its kinds: map, ekf_box, ukf_box, corrected, ekf_map, ekf_restart, mhe"))
     };
 }

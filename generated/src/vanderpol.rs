@@ -43,6 +43,9 @@ pub const OUTPUTS: usize = 1;
 pub const INPUTS: usize = 0;
 /// Estimated targets.
 pub const TARGETS: usize = 2;
+/// Rows of the map the map-started kinds read ([`StartDesign`]): the targets', then one helper map
+/// per state that no target is.
+pub const MAP_ROWS: usize = 2;
 /// Entries of the regressor `z`: `HORIZON · (OUTPUTS + INPUTS)`.
 pub const REGRESSOR_LEN: usize = 10;
 /// Output names, in `push` order (units: [`OUTPUT_UNITS`]).
@@ -290,6 +293,9 @@ impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
         ]
     }
 }
+/// The map the map-started kinds read: every state is a target, so it is [`Design`] (see
+/// [`MAP_ROWS`]).
+pub type StartDesign = Design;
 
 /// The map alone over this design: `F(Z)` from the last `HORIZON` samples.
 pub type MapObserver = firmware::Observer<f32, Design, HORIZON, OUTPUTS, INPUTS, TARGETS>;
@@ -1910,7 +1916,7 @@ impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, 
 }
 
 /// The model-corrected map over this design's map.
-pub type CorrectedObserver = firmware::Started<f32, Design, Corrector, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type CorrectedObserver = firmware::Started<f32, StartDesign, Corrector, HORIZON, STATES, OUTPUTS, INPUTS, MAP_ROWS, TARGETS>;
 
 /// One sampling period of the model from `x`, the value alone: `x⁺`, written out by `gen`.
 #[allow(unused_variables, non_snake_case)]
@@ -2074,7 +2080,7 @@ impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, 
 }
 
 /// The EKF started by this design's map.
-pub type EkfMapObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type EkfMapObserver = firmware::Started<f32, StartDesign, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, MAP_ROWS, TARGETS>;
 
 /// The check of [`EkfRestartObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
 /// (no unit).
@@ -2129,7 +2135,7 @@ impl firmware::emitted::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for Start
 /// every sample from its first estimate on, restarted from it as [`EkfMapObserver`] starts when the
 /// two disagree (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's
 /// guess-free start where the box centre is far from the plant or the filter loses track.
-pub type EkfRestartObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type EkfRestartObserver = firmware::Restarted<f32, StartDesign, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, MAP_ROWS, TARGETS>;
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
@@ -2186,7 +2192,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "990b2b6583b7de984f253c99cf7494a4b99df418115de617cd6060c3ea2cfdfd";
+pub const TABLES_SHA256: &str = "d311385417e3d67adee89ca5ede759d04773f926c5e129e7326a79ad675bb3ed";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

@@ -43,6 +43,9 @@ pub const OUTPUTS: usize = 1;
 pub const INPUTS: usize = 0;
 /// Estimated targets.
 pub const TARGETS: usize = 2;
+/// Rows of the map the map-started kinds read ([`StartDesign`]): the targets', then one helper map
+/// per state that no target is.
+pub const MAP_ROWS: usize = 2;
 /// Entries of the regressor `z`: `HORIZON · (OUTPUTS + INPUTS)`.
 pub const REGRESSOR_LEN: usize = 10;
 /// Output names, in `push` order (units: [`OUTPUT_UNITS`]).
@@ -298,6 +301,9 @@ impl firmware::Design<f32, HORIZON, OUTPUTS, INPUTS, TARGETS> for Design {
         ]
     }
 }
+/// The map the map-started kinds read: every state is a target, so it is [`Design`] (see
+/// [`MAP_ROWS`]).
+pub type StartDesign = Design;
 
 /// The map alone over this design: `F(Z)` from the last `HORIZON` samples.
 pub type MapObserver = firmware::Observer<f32, Design, HORIZON, OUTPUTS, INPUTS, TARGETS>;
@@ -1931,7 +1937,7 @@ impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, 
 }
 
 /// The model-corrected map over this design's map.
-pub type CorrectedObserver = firmware::Started<f32, Design, Corrector, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type CorrectedObserver = firmware::Started<f32, StartDesign, Corrector, HORIZON, STATES, OUTPUTS, INPUTS, MAP_ROWS, TARGETS>;
 
 /// One sampling period of the model from `x`, the value alone: `x⁺`, written out by `gen`.
 #[allow(unused_variables, non_snake_case)]
@@ -2095,7 +2101,7 @@ impl<T: Scalar + Maths> firmware::emitted::Follower<T, STATES, OUTPUTS, INPUTS, 
 }
 
 /// The EKF started by this design's map.
-pub type EkfMapObserver = firmware::Started<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type EkfMapObserver = firmware::Started<f32, StartDesign, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, MAP_ROWS, TARGETS>;
 
 /// The check of [`EkfRestartObserver`] as `gen` chose it on the tuning runs (f64): the threshold `τ`
 /// (no unit).
@@ -2150,7 +2156,7 @@ impl firmware::emitted::Restart<f64, STATES, OUTPUTS, INPUTS, TARGETS> for Start
 /// every sample from its first estimate on, restarted from it as [`EkfMapObserver`] starts when the
 /// two disagree (`d > τ`, [`RESTART_THRESHOLD`]): an estimate from the first sample, the map's
 /// guess-free start where the box centre is far from the plant or the filter loses track.
-pub type EkfRestartObserver = firmware::Restarted<f32, Design, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, TARGETS>;
+pub type EkfRestartObserver = firmware::Restarted<f32, StartDesign, StartedEkf, HORIZON, STATES, OUTPUTS, INPUTS, MAP_ROWS, TARGETS>;
 
 /// The moving-horizon estimate's constants as `gen` chose them ([`MheObserver`], kind `mhe`): the
 /// model ([`Discrete`]), the outputs' weights `1 / σ²`, the prior's weight per state, the box the
@@ -2207,7 +2213,7 @@ pub const fn observer() -> Observer {
 
 /// SHA-256 of the tables `gen` saved with this file (`design.json`'s `tables_sha256`): `estimate`
 /// uses saved tables only beside the observer file written with them.
-pub const TABLES_SHA256: &str = "9dae5b3d86c4044680efd396b6fa3f0fb42a18e1020ab93aa0d7c74297a0d0c8";
+pub const TABLES_SHA256: &str = "c56af67c6a06ebbda8020d62650ffb61bdf1b1b64ff7b6dda78ee5486f559733";
 
 // The map in integers (`[chip] arithmetic = "fixed"`), for chips without an FPU: see
 // [`firmware::fixed`] for the formula and `host::fixed_point` for the proof.

@@ -245,19 +245,6 @@ pub fn estimate(
         return Err(CommandError::NotAFile { path: input.to_owned() });
     }
     let mut rows = recording::RowReader::open(design, input)?;
-    // A started observer needs every state as a target: say so before fitting anything.
-    let needs_state_targets = kind != ObserverKind::Auto && crate::observers::kind::of(kind).needs.state_targets;
-    if let (true, Err(why)) = (
-        needs_state_targets,
-        crate::observers::kind::corrected::run::state_targets(design),
-    ) {
-        return Err(crate::observers::recorded::RecordedError::Unavailable {
-            design: design.name.clone(),
-            kind: kind.name(),
-            why,
-        }
-        .into());
-    }
     let (mut design, provenance, tables) = match saved_tables(design, tables)? {
         Some((tables, path)) => (design.clone(), Provenance::Saved(path), tables),
         None => {

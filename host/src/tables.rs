@@ -46,6 +46,10 @@ pub struct Tables {
     pub chosen: ObserverKind,
     /// Every target's map, in the spec's order.
     pub maps: Vec<FittedMap>,
+    /// The helper maps, one per state that no target is, in state order ([`crate::fit::helpers`]):
+    /// read by the map-started kinds only. Empty where every state is a target.
+    #[serde(default)]
+    pub helpers: Vec<FittedMap>,
     /// The tuned constants of every kind the design has, keyed by the kind's name.
     pub constants: TunedConstants,
 }
@@ -123,11 +127,17 @@ impl Tables {
             taps: design.map.taps,
             chosen: comparison.map_or(ObserverKind::Map, |c| c.chosen.0),
             maps: result.targets.iter().map(|t| t.fit.map.clone()).collect(),
+            helpers: result.helpers.iter().flatten().map(|t| t.fit.map.clone()).collect(),
             constants: comparison.map(|c| c.tuned.constants()).unwrap_or_default(),
             tables_sha256: String::new(),
         };
         tables.tables_sha256 = tables.content_sha256();
         tables
+    }
+
+    /// The maps the map-started kinds read, row by row: the targets', then the helpers'.
+    pub fn start_maps(&self) -> Vec<FittedMap> {
+        self.maps.iter().chain(&self.helpers).cloned().collect()
     }
 
     /// SHA-256 of the tables' JSON with both hashes left empty: what `tables_sha256` holds.
@@ -199,19 +209,37 @@ impl Tables {
             return bad("horizon".to_owned(), "is 0".to_owned());
         }
         length("maps", self.maps.len(), design.targets.len())?;
+        if !self.helpers.is_empty() {
+            length(
+                "helpers",
+                self.helpers.len(),
+                crate::fit::helpers::helper_states(design).len(),
+            )?;
+        }
         let regressor = self.horizon * (ny + nu);
-        for (t, map) in self.maps.iter().enumerate() {
-            length(&format!("maps[{t}].gains"), map.gains.len(), regressor)?;
+        let helpers = self
+            .helpers
+            .iter()
+            .enumerate()
+            .map(|(h, map)| (format!("helpers[{h}]"), map));
+        for (field, map) in self
+            .maps
+            .iter()
+            .enumerate()
+            .map(|(t, map)| (format!("maps[{t}]"), map))
+            .chain(helpers)
+        {
+            length(&format!("{field}.gains"), map.gains.len(), regressor)?;
             if map.r_min.partial_cmp(&map.r_max) != Some(std::cmp::Ordering::Less) {
-                return bad(format!("maps[{t}].r_min"), "is not below r_max".to_owned());
+                return bad(format!("{field}.r_min"), "is not below r_max".to_owned());
             }
             if let Some(table) = &map.table {
-                length(&format!("maps[{t}].table.gains"), table.gains.len(), regressor)?;
+                length(&format!("{field}.table.gains"), table.gains.len(), regressor)?;
                 if table.segments.is_empty() {
-                    return bad(format!("maps[{t}].table.segments"), "is empty".to_owned());
+                    return bad(format!("{field}.table.segments"), "is empty".to_owned());
                 }
                 if let Some(starts) = &table.starts {
-                    length(&format!("maps[{t}].table.starts"), starts.len(), table.segments.len())?;
+                    length(&format!("{field}.table.starts"), starts.len(), table.segments.len())?;
                 }
             }
         }
@@ -243,8 +271,12 @@ impl Tables {
                 KindConstants::EkfMap(s) => {
                     length(&name("p0"), s.p0.len(), nx)?;
                     length(&name("state_targets"), s.state_targets.len(), nx)?;
-                    if let Some(&t) = s.state_targets.iter().find(|&&t| t >= self.maps.len()) {
-                        return bad(name("state_targets"), format!("names target {t}, beyond the maps"));
+                    let rows = self.maps.len() + self.helpers.len();
+                    if let Some(&t) = s.state_targets.iter().find(|&&t| t >= rows) {
+                        return bad(
+                            name("state_targets"),
+                            format!("names map row {t}, beyond the maps and helpers"),
+                        );
                     }
                 }
                 KindConstants::EkfRestart(r) => length(&name("variances"), r.variances.len(), nx)?,

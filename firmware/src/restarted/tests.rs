@@ -65,7 +65,7 @@ impl Restart<f64, 1, 1, 0, 1> for Toy {
     }
 }
 
-type Observer = Restarted<f64, Mean, Toy, 2, 1, 1, 0, 1>;
+type Observer = Restarted<f64, Mean, Toy, 2, 1, 1, 0, 1, 1>;
 
 /// The estimates (value, saturation) after pushing `ys` (NaN refused).
 fn run(ys: &[f64]) -> Vec<Option<(f64, Saturation)>> {

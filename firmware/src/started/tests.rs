@@ -93,8 +93,8 @@ fn ys() -> Vec<f64> {
 fn follows_the_recursion_through_start_up_and_steady_state() {
     for (reads, g) in [(true, 0.5), (false, 0.0)] {
         let expected = by_hand(&ys(), g);
-        let mut with_map: Started<f64, Mean, Halving<true>, 2, 1, 1, 0, 1> = Started::new();
-        let mut without: Started<f64, Mean, Halving<false>, 2, 1, 1, 0, 1> = Started::new();
+        let mut with_map: Started<f64, Mean, Halving<true>, 2, 1, 1, 0, 1, 1> = Started::new();
+        let mut without: Started<f64, Mean, Halving<false>, 2, 1, 1, 0, 1, 1> = Started::new();
         for (k, y) in ys().into_iter().enumerate() {
             let got = if reads {
                 with_map.push([y], []).unwrap();
@@ -120,11 +120,11 @@ fn the_map_is_not_read_after_the_start_up_unless_the_steady_blend_needs_it() {
         let mut ys = ys();
         *ys.last_mut().unwrap() = last;
         if reads_map {
-            let mut o: Started<f64, Mean, Halving<true>, 2, 1, 1, 0, 1> = Started::new();
+            let mut o: Started<f64, Mean, Halving<true>, 2, 1, 1, 0, 1, 1> = Started::new();
             ys.iter().for_each(|&y| o.push([y], []).unwrap());
             o.estimate().unwrap()[0].value
         } else {
-            let mut o: Started<f64, Mean, Halving<false>, 2, 1, 1, 0, 1> = Started::new();
+            let mut o: Started<f64, Mean, Halving<false>, 2, 1, 1, 0, 1, 1> = Started::new();
             ys.iter().for_each(|&y| o.push([y], []).unwrap());
             o.estimate().unwrap()[0].value
         }
@@ -138,7 +138,7 @@ fn the_map_is_not_read_after_the_start_up_unless_the_steady_blend_needs_it() {
 
 #[test]
 fn refused_samples_give_no_estimate_but_the_model_keeps_time_and_clamps_are_flagged() {
-    let mut o: Started<f64, Mean, Halving<true>, 2, 1, 1, 0, 1> = Started::new();
+    let mut o: Started<f64, Mean, Halving<true>, 2, 1, 1, 0, 1, 1> = Started::new();
     // Before the start, a refused sample changes nothing: the first estimate below is the map's.
     assert_eq!(o.push([f64::NAN], []), Err(RejectedSample));
     o.push([0.4], []).unwrap();
@@ -180,4 +180,70 @@ fn clamp_sends_nan_to_the_lower_end() {
     assert_eq!((a.value, a.saturation), (0.0, Saturation::Low));
     assert_eq!((b.value, b.saturation), (0.5, Saturation::Inside));
     assert_eq!((c.value, c.saturation), (1.0, Saturation::High));
+}
+
+// A map of two rows over the same window: the target's (r = 10 mean, as `Mean`) and a helper
+// state's (x₂ = 4 mean on [0, 4]); the follower's target is x₁ + x₂.
+struct WithHelper;
+impl Design<f64, 2, 1, 0, 2> for WithHelper {
+    const MAPS: [TargetMap<'static, f64>; 2] = [
+        Mean::MAPS[0],
+        TargetMap {
+            gains: &[0.5, 0.5],
+            offset: 0.0,
+            inverse: InverseTable {
+                knots: Knots::Uniform,
+                segments: &[[0.0, 4.0]],
+                t_max: 1.0,
+                r_min: 0.0,
+                r_max: 4.0,
+            },
+        },
+    ];
+}
+
+// Carries the map's states as they are (a follower that always takes the map), target x₁ + x₂.
+struct Sum;
+impl Follower<f64, 2, 1, 0, 1> for Sum {
+    type Carried = [f64; 2];
+    const START_UP: usize = 0;
+    const STEADY_READS_MAP: bool = true;
+    const STATE_TARGETS: [usize; 2] = [0, 1];
+
+    fn start(first: &[f64; 2], _: &[f64; 0]) -> Option<[f64; 2]> {
+        Some(*first)
+    }
+
+    fn follow(
+        _: &[f64; 2],
+        _: usize,
+        _: bool,
+        map: &[f64; 2],
+        _: &[f64; 1],
+        _: &[f64; 0],
+    ) -> Option<([f64; 2], [Estimate<f64>; 2])> {
+        Some((*map, clamp(map, &[0.0, 0.0], &[10.0, 4.0])))
+    }
+
+    fn predict(carried: &[f64; 2], _: &[f64; 0]) -> Option<[f64; 2]> {
+        Some(*carried)
+    }
+
+    fn targets(x: &[f64; 2], _: &[f64; 0]) -> [f64; 1] {
+        [x[0] + x[1]]
+    }
+}
+
+#[test]
+fn a_helper_row_starts_a_state_that_is_no_target_and_is_not_returned() {
+    let mut o: Started<f64, WithHelper, Sum, 2, 2, 1, 0, 2, 1> = Started::new();
+    let ys = [0.2, 0.4, 0.6];
+    o.push([ys[0]], []).unwrap();
+    assert!(o.estimate().is_none());
+    // The first estimate is the target's own map row (10 · 0.3), not x₁ + x₂ of both rows.
+    o.push([ys[1]], []).unwrap();
+    assert!((o.estimate().unwrap()[0].value - 3.0).abs() < 1e-12);
+    // Then the follower's target from both rows' states: 10 · 0.5 + 4 · 0.5.
+    o.push([ys[2]], []).unwrap();
+    assert!((o.estimate().unwrap()[0].value - 7.0).abs() < 1e-12);
 }

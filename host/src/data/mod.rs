@@ -100,6 +100,31 @@ impl DataSet {
     pub fn target(&self, window: Window, target: usize) -> f64 {
         self.runs[window.run].targets[window.end][target]
     }
+
+    /// What `column` holds at the end of `window`.
+    pub fn value(&self, window: Window, column: Column) -> f64 {
+        match column {
+            Column::Target(t) => self.target(window, t),
+            Column::State(i) => self.runs[window.run].states[window.end][i],
+        }
+    }
+}
+
+/// What a map is fitted to: a target (its index in the spec) or a state of the model (its index),
+/// for a helper map (a state that the map-started kinds start from and no target is).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Column {
+    /// The target of this index.
+    Target(usize),
+    /// The state of this index.
+    State(usize),
+}
+
+impl From<usize> for Column {
+    /// A target's index.
+    fn from(target: usize) -> Self {
+        Column::Target(target)
+    }
 }
 
 /// The learning set: one run per point of the grid (the Cartesian product of the axes, the first

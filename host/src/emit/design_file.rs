@@ -117,6 +117,100 @@ fn search_steps(upper: &str, len: usize) -> String {
         .join("\n")
 }
 
+/// What the emitted docs and constants call a map: a target, or a helper map of a state.
+struct MapLabel<'a> {
+    /// "target" or "helper map", for error messages.
+    what: &'static str,
+    name: &'a str,
+    unit: &'a str,
+    expr: &'a str,
+    /// The constants' suffix (`MAP_<upper>`, `GAINS_<upper>`, …).
+    upper: String,
+}
+
+/// One map's tables as the template prints them, checked in f32 on the validation runs and the
+/// scenario.
+fn map_tables(
+    design: &Design,
+    result: &DesignResult,
+    label: &MapLabel<'_>,
+    t: &crate::fit::TargetResult,
+) -> Result<TargetTables, EmitError> {
+    let outputs = design.model.outputs.len();
+    let map = &t.fit.map;
+    let Some(table) = map.table.as_ref() else {
+        return Err(EmitError::NoTable {
+            target: label.name.to_owned(),
+        });
+    };
+    // Rounded once: these f32 values are checked against the f64 map, then printed.
+    let rounded = F32Tables::new(table);
+    for data in [
+        &result.runs.validation,
+        &DataSet {
+            runs: vec![result.runs.scenario.clone()],
+            horizon: design.map.horizon,
+        },
+    ] {
+        check_f32(table, &rounded, data).map_err(|mismatch| EmitError::NotReproducibleInF32 {
+            target: label.name.to_owned(),
+            mismatch,
+        })?;
+    }
+    let what = |field: &str| format!("{} `{}` {field}", label.what, label.name);
+    let upper = label.upper.clone();
+    let widen = |values: &[f32]| values.iter().map(|&v| f64::from(v)).collect::<Vec<f64>>();
+    let segments = rounded
+        .segments
+        .iter()
+        .enumerate()
+        .map(|(k, [a, b])| {
+            Ok(format!(
+                "    [{}, {}],",
+                f32_literal(&what(&format!("segments[{k}].a")), f64::from(*a))?,
+                f32_literal(&what(&format!("segments[{k}].b")), f64::from(*b))?
+            ))
+        })
+        .collect::<Result<Vec<_>, EmitError>>()?;
+    Ok(TargetTables {
+        name: label.name.to_owned(),
+        unit_phrase: if label.unit.is_empty() {
+            String::new()
+        } else {
+            format!(", in {}", doc_code(label.unit))
+        },
+        const_name: format!("MAP_{}", label.upper),
+        dot: dot_lines(
+            &upper,
+            &rounded.gains,
+            design.map.horizon,
+            outputs,
+            design.model.inputs.len(),
+        ),
+        search_steps: table.starts.as_ref().map(|starts| search_steps(&upper, starts.len())),
+        taps_note: taps_note(&rounded.gains),
+        upper,
+        expr: doc_code(label.expr),
+        rmse: format!("{:.4}", t.validation.map.rmse),
+        max_error: format!("{:.4}", t.validation.map.max_error),
+        linear_rmse: format!("{:.4}", t.validation.linear.rmse),
+        gains: literal_block(&what("gains"), &widen(&rounded.gains), 4)?,
+        offset: f32_literal(&what("offset"), f64::from(rounded.offset))?,
+        segments: segments.join("\n"),
+        segment_count: table.segments.len(),
+        knot_count: table.segments.len() + 1,
+        starts: match &rounded.starts {
+            None => None,
+            Some(starts) => Some(literal_block(&what("starts"), &widen(starts), 4)?),
+        },
+        t_max: f32_literal(&what("t_max"), f64::from(rounded.t_max))?,
+        r_min: f32_literal(&what("r_min"), f64::from(rounded.r_min))?,
+        r_max: f32_literal(&what("r_max"), f64::from(rounded.r_max))?,
+        proven_bound: format!("{:.2e}", table.proven_bound),
+        sampled_error: format!("{:.2e}", table.sampled_error),
+    })
+}
+
 #[derive(Template)]
 #[template(path = "design.rs", escape = "none")]
 struct DesignFile {
@@ -151,6 +245,8 @@ struct DesignFile {
     predicted: String,
     predicted_len: usize,
     targets: Vec<TargetTables>,
+    /// The helper maps ([`crate::fit::helpers`]): a `StartDesign` of the targets' and these rows.
+    helpers: Vec<TargetTables>,
     recorded_len: usize,
     recorded_y: String,
     recorded_u: String,
@@ -180,89 +276,42 @@ pub fn design_file(
     let outputs: Vec<String> = design.model.outputs.iter().map(|o| o.name.clone()).collect();
     within_f32(result)?;
     let mut targets: Vec<TargetTables> = Vec::new();
-    for t in &result.targets {
+    let labels = result.targets.iter().map(|t| {
         let target = &design.targets[t.index];
-        let map = &t.fit.map;
-        let const_name = format!("MAP_{}", target.name.to_uppercase());
-        if let Some(other) = targets.iter().find(|o| o.const_name == const_name) {
+        let label = MapLabel {
+            what: "target",
+            name: &target.name,
+            unit: &target.unit,
+            expr: target.expr.text(),
+            upper: target.name.to_uppercase(),
+        };
+        (label, t)
+    });
+    // A helper map's constants are `MAP_HELPER_<STATE>`: a target may share the state's name.
+    let helpers = result.helpers.iter().flatten().map(|t| {
+        let state = &design.model.states[t.index];
+        let label = MapLabel {
+            what: "helper map",
+            name: state,
+            unit: &design.state_units[t.index],
+            expr: state,
+            upper: format!("HELPER_{}", state.to_uppercase()),
+        };
+        (label, t)
+    });
+    let count = result.targets.len();
+    for (label, t) in labels.chain(helpers) {
+        let tables = map_tables(design, result, &label, t)?;
+        if let Some(other) = targets.iter().find(|o| o.const_name == tables.const_name) {
             return Err(EmitError::NameClash {
                 first: other.name.clone(),
-                second: target.name.clone(),
-                constant: const_name,
+                second: label.name.to_owned(),
+                constant: tables.const_name,
             });
         }
-        let Some(table) = map.table.as_ref() else {
-            return Err(EmitError::NoTable {
-                target: target.name.clone(),
-            });
-        };
-        // Rounded once: these f32 values are checked against the f64 map, then printed.
-        let rounded = F32Tables::new(table);
-        for data in [
-            &result.runs.validation,
-            &DataSet {
-                runs: vec![result.runs.scenario.clone()],
-                horizon: design.map.horizon,
-            },
-        ] {
-            check_f32(table, &rounded, data).map_err(|mismatch| EmitError::NotReproducibleInF32 {
-                target: target.name.clone(),
-                mismatch,
-            })?;
-        }
-        let what = |field: &str| format!("target `{}` {field}", target.name);
-        let upper = target.name.to_uppercase();
-        let widen = |values: &[f32]| values.iter().map(|&v| f64::from(v)).collect::<Vec<f64>>();
-        let segments = rounded
-            .segments
-            .iter()
-            .enumerate()
-            .map(|(k, [a, b])| {
-                Ok(format!(
-                    "    [{}, {}],",
-                    f32_literal(&what(&format!("segments[{k}].a")), f64::from(*a))?,
-                    f32_literal(&what(&format!("segments[{k}].b")), f64::from(*b))?
-                ))
-            })
-            .collect::<Result<Vec<_>, EmitError>>()?;
-        targets.push(TargetTables {
-            name: target.name.clone(),
-            unit_phrase: if target.unit.is_empty() {
-                String::new()
-            } else {
-                format!(", in {}", doc_code(&target.unit))
-            },
-            const_name,
-            dot: dot_lines(
-                &upper,
-                &rounded.gains,
-                design.map.horizon,
-                outputs.len(),
-                design.model.inputs.len(),
-            ),
-            search_steps: table.starts.as_ref().map(|starts| search_steps(&upper, starts.len())),
-            taps_note: taps_note(&rounded.gains),
-            upper,
-            expr: doc_code(target.expr.text()),
-            rmse: format!("{:.4}", t.validation.map.rmse),
-            max_error: format!("{:.4}", t.validation.map.max_error),
-            linear_rmse: format!("{:.4}", t.validation.linear.rmse),
-            gains: literal_block(&what("gains"), &widen(&rounded.gains), 4)?,
-            offset: f32_literal(&what("offset"), f64::from(rounded.offset))?,
-            segments: segments.join("\n"),
-            segment_count: table.segments.len(),
-            knot_count: table.segments.len() + 1,
-            starts: match &rounded.starts {
-                None => None,
-                Some(starts) => Some(literal_block(&what("starts"), &widen(starts), 4)?),
-            },
-            t_max: f32_literal(&what("t_max"), f64::from(rounded.t_max))?,
-            r_min: f32_literal(&what("r_min"), f64::from(rounded.r_min))?,
-            r_max: f32_literal(&what("r_max"), f64::from(rounded.r_max))?,
-            proven_bound: format!("{:.2e}", table.proven_bound),
-            sampled_error: format!("{:.2e}", table.sampled_error),
-        });
+        targets.push(tables);
     }
+    let helpers = targets.split_off(count);
     let file = DesignFile {
         name: design.name.clone(),
         description: doc_prose(&design.description),
@@ -291,6 +340,7 @@ pub fn design_file(
         regressor_len: design.map.horizon * (design.model.outputs.len() + design.model.inputs.len()),
         finite_check: finite_check(design.model.outputs.len(), design.model.inputs.len()),
         targets,
+        helpers,
         recorded_len: result.runs.scenario.measurements.len(),
         recorded_y: recorded_rows(
             "recorded y",

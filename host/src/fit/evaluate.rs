@@ -4,7 +4,7 @@
 
 use serde::Serialize;
 
-use crate::data::DataSet;
+use crate::data::{Column, DataSet};
 use crate::fit::identify::Fit;
 
 /// Errors of one estimator over every window of a data set.
@@ -44,7 +44,8 @@ impl Evaluation {
 }
 
 /// Evaluates `fit` for target `target` on every window of `data`.
-pub fn evaluate(data: &DataSet, target: usize, fit: &Fit) -> Evaluation {
+pub fn evaluate(data: &DataSet, target: impl Into<Column>, fit: &Fit) -> Evaluation {
+    let target = target.into();
     let mut z = Vec::new();
     let (mut map, mut linear) = (Sums::default(), Sums::default());
     let mut saturated = 0usize;
@@ -52,7 +53,7 @@ pub fn evaluate(data: &DataSet, target: usize, fit: &Fit) -> Evaluation {
     let (mut mean, mut deviations) = (0.0f64, 0.0f64);
     for window in data.windows() {
         data.regressor(window, &mut z);
-        let truth = data.target(window, target);
+        let truth = data.value(window, target);
         let delta = truth - mean;
         mean += delta / (map.count + 1) as f64;
         deviations += delta * (truth - mean);

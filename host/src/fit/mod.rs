@@ -1,6 +1,7 @@
 //! One design end to end: learning and validation data, a fit per target, its evaluation.
 
 pub mod evaluate;
+pub mod helpers;
 pub mod identify;
 pub mod inverse_table;
 pub mod maps;
@@ -16,10 +17,10 @@ use evaluate::{evaluate, Evaluation};
 use identify::{Fit, FitError};
 use qp::QpError;
 
-/// A fitted and judged target.
+/// A fitted and judged target (or helper map: [`helpers`]).
 #[derive(Clone, Debug)]
 pub struct TargetResult {
-    /// Index in `design.targets`.
+    /// Index in `design.targets` (of a helper map: the state's index in `design.model.states`).
     pub index: usize,
     /// The fit.
     pub fit: Fit,
@@ -36,6 +37,17 @@ pub struct DesignResult {
     pub runs: Runs,
     /// One result per target, in spec order.
     pub targets: Vec<TargetResult>,
+    /// One helper map per state that no target is ([`helpers::helper_states`]), in state order;
+    /// or why one could not be fitted (the map-started kinds are then left out, saying so).
+    pub helpers: Result<Vec<TargetResult>, String>,
+}
+
+impl DesignResult {
+    /// Every map the map-started kinds read, row by row ([`helpers::state_maps`]): the targets', then
+    /// the helpers' (none when a helper could not be fitted).
+    pub fn start_maps(&self) -> impl Iterator<Item = &TargetResult> + Clone {
+        self.targets.iter().chain(self.helpers.as_deref().unwrap_or(&[]))
+    }
 }
 
 /// Steps [`run`] reports to its progress bar.
@@ -61,7 +73,33 @@ pub fn run(design: &Design, runs: Runs, progress: &ProgressBar) -> Result<Design
         targets.push(result);
         progress.inc(1);
     }
-    Ok(DesignResult { runs, targets })
+    let helpers = fit_helpers(design, &runs, &odds_ratios, progress);
+    Ok(DesignResult { runs, targets, helpers })
+}
+
+/// A map for every state that no target is ([`helpers`]), fitted and judged as a target's.
+fn fit_helpers(
+    design: &Design,
+    runs: &Runs,
+    odds_ratios: &std::sync::Arc<[f64]>,
+    progress: &ProgressBar,
+) -> Result<Vec<TargetResult>, String> {
+    let mut fitted = Vec::new();
+    for index in helpers::helper_states(design) {
+        let name = &design.model.states[index];
+        progress.set_message(format!("{}: fitting helper map {name}", design.name));
+        let column = crate::data::Column::State(index);
+        let fit = identify::fit(&runs.learning, column, name, &design.map, odds_ratios).map_err(|e| {
+            format!("the helper map of state `{name}` (no target is it) could not be fitted: {e}; add a target `expr = \"{name}\"` to see why")
+        })?;
+        fitted.push(TargetResult {
+            index,
+            learning: evaluate(&runs.learning, column, &fit),
+            validation: evaluate(&runs.validation, column, &fit),
+            fit,
+        });
+    }
+    Ok(fitted)
 }
 
 /// Turns a fit failure on the learning data `learning` into a message about the spec field to change.

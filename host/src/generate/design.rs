@@ -181,7 +181,7 @@ pub fn design_source(
     emit::within_f32(result).map_err(emit_error)?;
     let fixed = fixed_point(design, result)?;
     let comparison = crate::observers::compare(design, result, &code, progress)?;
-    let state_targets = crate::observers::kind::corrected::run::state_targets(design).ok();
+    let state_targets = result.helpers.is_ok().then(|| crate::fit::helpers::state_maps(design));
     let instructions: Vec<(&'static str, f64)> =
         comparison.observers.iter().map(|o| (o.kind, o.instructions)).collect();
     let constants = comparison.tuned.constants();

@@ -5,7 +5,6 @@
 use crate::plant::ModelCode;
 use crate::spec::{Design, ObserverKind, SpecError};
 
-use super::kind::corrected::run as corrected;
 use super::score::{Score, Scoring, CHEAPER_WITHIN};
 use super::{ekf, kind, ObserverFigures};
 
@@ -29,9 +28,7 @@ pub fn check_before_fit(design: &Design, code: &ModelCode) -> Result<(), SpecErr
         return Ok(());
     }
     let entry = kind::of(design.observer);
-    if (entry.needs.state_targets && corrected::state_targets(design).is_err())
-        || (entry.needs.filter && !ekf::supported(code))
-    {
+    if entry.needs.filter && !ekf::supported(code) {
         return Err(cannot_have(design));
     }
     let (Some(budget), Some(cost)) = (design.budget.instructions, entry.cost_before_fit) else {
@@ -53,14 +50,7 @@ pub fn check_before_fit(design: &Design, code: &ModelCode) -> Result<(), SpecErr
 
 /// `observer.kind` names a kind the design cannot have.
 fn cannot_have(design: &Design) -> SpecError {
-    let (needs, fix) = if kind::of(design.observer).needs.state_targets {
-        (
-            "every state as a target and a model the host can filter",
-            "add a target per state (expr = the state's name), or set kind = \"map\" or \"auto\"",
-        )
-    } else {
-        ("a model the host can filter", "set kind = \"map\" or \"auto\"")
-    };
+    let (needs, fix) = ("a model the host can filter", "set kind = \"map\" or \"auto\"");
     design.error(
         "observer.kind",
         format!(
@@ -125,6 +115,14 @@ pub fn choose(
     let offered =
         |kind: ObserverKind, instructions: f64| within(instructions) && (kind != ObserverKind::Mhe || budget.is_some());
     let allowed: Vec<&(ObserverKind, &str, Score, f64)> = scored.iter().filter(|s| offered(s.0, s.3)).collect();
+    // A kind that does not beat the constant estimate explains nothing, however few runs it lost
+    // (unless none beats it).
+    let informative: Vec<_> = allowed
+        .iter()
+        .copied()
+        .filter(|s| s.2.value < scoring.constant)
+        .collect();
+    let allowed = if informative.is_empty() { allowed } else { informative };
     // The fewest lost tuning runs first; among those, the lowest score.
     let fewest = allowed.iter().map(|s| s.2.lost).min().unwrap_or(0);
     let best = allowed
@@ -161,7 +159,7 @@ pub fn choose(
         })
         .collect();
     let limit = budget.map_or(String::new(), |b| format!(" within `budget.instructions` = {b}"));
-    Ok((kind, format!("`{name}` by `auto`: the fewest lost tuning runs, then the lowest tuning score (the mean over {} of pooled RMSE + p95 over runs, per target over its spread; {}){limit}, a cheaper kind preferred within {:.0} %", regime_names(scoring), all.join(", "), CHEAPER_WITHIN * 100.0)))
+    Ok((kind, format!("`{name}` by `auto`: the fewest lost tuning runs among the kinds that beat the constant estimate, then the lowest tuning score (the mean over {} of pooled RMSE + p95 over runs, per target over its spread; {}){limit}, a cheaper kind preferred within {:.0} %", regime_names(scoring), all.join(", "), CHEAPER_WITHIN * 100.0)))
 }
 
 /// "random starts, from scenario and start-up": the regimes the score averages over.
@@ -274,6 +272,34 @@ mod tests {
             ..Default::default()
         });
         figures
+    }
+
+    #[test]
+    fn a_kind_that_does_not_beat_the_constant_estimate_is_not_chosen_for_losing_no_run() {
+        let design = design(ObserverKind::Auto, None);
+        // `ecoli_x0_2`'s case: every filter lost a tuning run, the corrected map none, at 9× the UKF's
+        // score and above the constant estimate's.
+        let observers = [
+            losing("ukf_box", 0.0733, 1000.0, 1),
+            losing("corrected", 0.66, 300.0, 0),
+            losing("map", 0.3, 100.0, 13),
+        ];
+        // Scores (RMSE + p95 per target, each 2 × rmse): ukf_box 0.1466, corrected 1.32, map 0.6.
+        let mut scoring = scoring(&design, &SPREADS);
+        assert_eq!(
+            choose(&design, &observers, &scoring).unwrap().0,
+            ObserverKind::Corrected
+        );
+        scoring.constant = 1.1;
+        let (kind, why) = choose(&design, &observers, &scoring).unwrap();
+        assert_eq!(kind, ObserverKind::UkfBox, "{why}");
+        assert!(why.contains("among the kinds that beat the constant estimate"), "{why}");
+        // None beats it: the rule is as without it.
+        scoring.constant = 0.1;
+        assert_eq!(
+            choose(&design, &observers, &scoring).unwrap().0,
+            ObserverKind::Corrected
+        );
     }
 
     #[test]

@@ -127,7 +127,7 @@ impl<'a> Setup<'a> {
         }
         let entry = super::kind::of(kind);
         let state_targets = if entry.needs.state_targets {
-            corrected::state_targets(design).map_err(|why| unavailable(&why))?
+            crate::fit::helpers::state_maps(design)
         } else {
             Vec::new()
         };
@@ -157,11 +157,13 @@ impl<'a> Setup<'a> {
         mut next: impl FnMut() -> Result<Option<Row>, E>,
         mut emit: impl FnMut(&Row, EstimateRow) -> Result<(), E>,
     ) -> Result<(), E> {
-        let maps = MapEvaluator::new(&self.tables.maps, precision).map_err(RecordedError::from)?;
+        // The targets' maps, then the helpers' (read by the map-started kinds only).
+        let start_maps = self.tables.start_maps();
+        let maps = MapEvaluator::new(&start_maps, precision).map_err(RecordedError::from)?;
         let setting = corrected::Setting::for_maps(
             self.design,
             self.tables.horizon,
-            &self.tables.maps,
+            &start_maps,
             self.code,
             &self.state_targets,
         );
@@ -175,7 +177,7 @@ impl<'a> Setup<'a> {
                 run = Some(row.run.clone());
             }
             let map = recording::map_row(&maps, window.push(&row));
-            let estimate = follower.step(map, &row, self.tables.maps.len());
+            let estimate = follower.step(map, &row, (start_maps.len(), self.tables.maps.len()));
             emit(&row, estimate)?;
         }
         Ok(())
@@ -247,9 +249,9 @@ impl<T: firmware::Scalar + firmware::emitted::Maths + Into<f64>> Follower<'_, T>
 
     /// The observer's row for `sample`, the map's row there `map` (of `width` targets): `restarted`
     /// where the sample restarted the observer.
-    fn step(&mut self, map: EstimateRow, sample: &Row, width: usize) -> EstimateRow {
+    fn step(&mut self, map: EstimateRow, sample: &Row, widths: (usize, usize)) -> EstimateRow {
         let before = self.restarts();
-        let row = self.row(map, sample, width);
+        let row = self.row(map, sample, widths);
         if self.restarts() != before {
             return EstimateRow::without(Status::Restarted);
         }
@@ -257,7 +259,8 @@ impl<T: firmware::Scalar + firmware::emitted::Maths + Into<f64>> Follower<'_, T>
     }
 
     /// [`step`](Self::step) but for the restarts.
-    fn row(&mut self, map: EstimateRow, sample: &Row, width: usize) -> EstimateRow {
+    /// `widths`: the map's rows (the targets', then the helpers') and the targets.
+    fn row(&mut self, map: EstimateRow, sample: &Row, (width, targets): (usize, usize)) -> EstimateRow {
         let (y, u) = (sample.y.as_slice(), sample.u.as_slice());
         // NaN where the map has no estimate; an f32 estimate converts back to itself exactly.
         let map_values = || -> Vec<T> {
@@ -266,8 +269,13 @@ impl<T: firmware::Scalar + firmware::emitted::Maths + Into<f64>> Follower<'_, T>
                 _ => vec![T::literal(f32::NAN, f64::NAN); width],
             }
         };
+        // The map's own estimate: its targets' rows.
+        let own = EstimateRow {
+            status: map.status,
+            targets: map.targets.iter().take(targets).copied().collect(),
+        };
         let (row, clamps): (Vec<T>, &[(usize, T, T)]) = match self {
-            Follower::Map => return map,
+            Follower::Map => return own,
             Follower::Box(observer) => {
                 return match observer.step(y, u) {
                     Some(values) => EstimateRow {
@@ -299,8 +307,8 @@ impl<T: firmware::Scalar + firmware::emitted::Maths + Into<f64>> Follower<'_, T>
         }
         let values: Vec<f64> = row.into_iter().map(Into::into).collect();
         // The first estimate is the map's, with its flags.
-        if map.status == Status::Ok && map.targets.iter().map(|t| t.0).eq(values.iter().copied()) {
-            return map;
+        if own.status == Status::Ok && own.targets.iter().map(|t| t.0).eq(values.iter().copied()) {
+            return own;
         }
         // Later, the corrected map's clamp sets a state exactly to an end of its box.
         let saturation = |t: usize| match clamps.iter().find(|&&(s, _, _)| s == t) {

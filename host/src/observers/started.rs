@@ -103,9 +103,10 @@ impl<T: Scalar, C> Shell<T, C> {
             // No estimate from this sample: none yet (NaN), or the latest while the map's window
             // refills after a restart, as the chip's `estimate` returns it.
             Ok(Given::Nothing) => self.last.clone(),
+            // The targets' rows of the map (the helpers' follow them), as `firmware::Started`.
             Ok(Given::Map(row)) => {
-                self.last = row.to_vec();
-                row.to_vec()
+                self.last = row[..self.nan.len()].to_vec();
+                self.last.clone()
             }
             Ok(Given::Followed(targets)) => {
                 self.last.clone_from(&targets);

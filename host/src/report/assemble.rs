@@ -82,6 +82,9 @@ pub fn report<'a>(design: &'a Design, result: &'a DesignResult, comparison: &'a 
         }),
         observer: comparison.chosen.clone(),
         tuning_score: super::tuning_score::assemble(comparison),
+        helpers: (result.helpers.iter().flatten())
+            .map(|h| (design.model.states[h.index].clone(), h.validation.map.rmse))
+            .collect(),
         corrected_tuning: match comparison.tuned.corrected() {
             Some(t) => CorrectedTuning::Tuned {
                 g: t.constants.g.clone(),

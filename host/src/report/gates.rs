@@ -404,6 +404,7 @@ mod tests {
         let set = |runs: Vec<Run>| DataSet { runs, horizon: 1 };
         let samples = y.len();
         DesignResult {
+            helpers: Ok(Vec::new()),
             runs: Runs {
                 learning: set(vec![run(vec![vec![0.0, 0.0]; samples], y)]),
                 validation: set(vec![run(validation.clone(), vec![0.0; validation.len()])]),
@@ -467,6 +468,7 @@ mod tests {
                 weights: vec![1.0; 2],
                 regimes: crate::observers::score::Regimes::whole(0, 0),
                 start_up_by: crate::observers::score::StartUpBy::Horizons,
+                constant: f64::INFINITY,
             },
             chip_model_error: Vec::new(),
         }

@@ -45,7 +45,6 @@ pub struct Report<'a> {
     /// Every observer on the same data: the map, then the EKF.
     pub observers: Vec<ObserverReport>,
     /// Each filter the spec fixes constants of, beside the same filter tuned in every constant.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
     pub fixed_filters: Vec<FixedFilterReport>,
     /// The host-only references: the on-line moving-horizon estimate and the particle floor.
     pub references: Vec<ReferenceReport>,
@@ -54,8 +53,9 @@ pub struct Report<'a> {
     /// How the moving-horizon observer on the chip (`mhe`) was tuned, when the host could run one.
     pub mhe_tuning: Option<ChipReport>,
     /// The box EKF started at the scenario's `observer_x0`: that start, its scenario RMSE per target.
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub ekf_from_observer_x0: Option<(Vec<f64>, Vec<f64>)>,
+    /// The helper maps (`fit::helpers`): per state that no target is, its validation RMSE.
+    pub helpers: Vec<(String, f64)>,
     /// How the model-corrected map was tuned, or why the design has none.
     pub corrected_tuning: CorrectedTuning,
     /// What the design's `observer()` is, and why.

@@ -90,6 +90,16 @@ pub fn observers_table(report: &Report<'_>) -> String {
         report.time_unit,
     ));
     let _ = writeln!(s, "\n`observer()` is {:?}: {}.", report.observer.0, report.observer.1);
+    if !report.helpers.is_empty() {
+        let each: Vec<String> = (report.helpers.iter())
+            .map(|(state, rmse)| format!("`{state}` (validation RMSE {rmse:.4})"))
+            .collect();
+        let _ = writeln!(
+            s,
+            "\nHelper maps, fitted for the model-corrected map and the map-started and restarted EKFs, which start from the map's estimate of every state (no observer returns them): {}.",
+            each.join(", ")
+        );
+    }
     if let CorrectedTuning::Unavailable { unavailable } = &report.corrected_tuning {
         let _ = writeln!(
             s,

@@ -27,6 +27,8 @@ pub struct TuningScore {
     pub start_up_by: String,
     /// Per kind, in the report's order of observers.
     pub kinds: Vec<KindScore>,
+    /// The constant estimate's score (each target's mean over the tuning runs); `null` if unmeasured.
+    pub constant: Option<f64>,
 }
 
 /// One regime of the tuning set.
@@ -60,6 +62,7 @@ pub fn assemble(comparison: &Comparison) -> TuningScore {
     let scoring = &comparison.scoring;
     let finite = |v: f64| v.is_finite().then_some(v);
     TuningScore {
+        constant: finite(scoring.constant),
         spreads: scoring.spreads.clone(),
         weights: scoring.weights.clone(),
         regimes: (scoring.regimes.parts.iter())
@@ -101,7 +104,7 @@ pub fn assemble(comparison: &Comparison) -> TuningScore {
 
 /// `report.md`'s table: a row per kind, a column per regime, then the score and the lost runs; and
 /// which kind wins each regime (the lowest score there among the kinds that lost the fewest tuning
-/// runs), or the one kind within [`WINS_WITHIN`] of the best in every regime.
+/// runs among those that beat the constant estimate), or the one kind within [`WINS_WITHIN`] of the best in every regime.
 /// `tau` and `time_unit`: the design's sample period and its unit, to state the start-up's length.
 pub fn table(score: &TuningScore, tau: f64, time_unit: &str) -> String {
     if score.kinds.is_empty() {
@@ -125,7 +128,8 @@ pub fn table(score: &TuningScore, tau: f64, time_unit: &str) -> String {
         })
         .collect();
     let mut s = format!(
-        "\nThe tuning score, term by term: per regime of the tuning runs, Σ weight · (pooled RMSE + p95 over runs) / spread over the targets, / Σ weight; the score is the mean over the regimes, lost tuning runs counted first. Regimes: {}.\n\n| observer | {} | score | lost tuning |\n|---|{}---|---|\n",
+        "\nThe tuning score, term by term: per regime of the tuning runs, Σ weight · (pooled RMSE + p95 over runs) / spread over the targets, / Σ weight; the score is the mean over the regimes, lost tuning runs counted first among the kinds that beat the constant estimate{}. Regimes: {}.\n\n| observer | {} | score | lost tuning |\n|---|{}---|---|\n",
+        score.constant.map_or(String::new(), |c| format!(" (each target's mean over the tuning runs, which scores {c:.4})")),
         what.join("; "),
         (score.regimes.iter().map(|r| r.name.as_str())).collect::<Vec<_>>().join(" | "),
         "---|".repeat(score.regimes.len()),
@@ -148,8 +152,16 @@ pub fn table(score: &TuningScore, tau: f64, time_unit: &str) -> String {
 
 /// Which kind wins which regime, or the one that is within [`WINS_WITHIN`] of the best in all.
 fn winners(score: &TuningScore) -> String {
-    let fewest = score.kinds.iter().map(|k| k.lost).min().unwrap_or(0);
-    let kinds: Vec<&KindScore> = score.kinds.iter().filter(|k| k.lost == fewest).collect();
+    // As `auto` chooses: among the kinds that beat the constant estimate (all, when none does).
+    let beats = |k: &&KindScore| k.score.is_some_and(|v| score.constant.is_none_or(|c| v < c));
+    let informative: Vec<&KindScore> = score.kinds.iter().filter(beats).collect();
+    let candidates = if informative.is_empty() {
+        score.kinds.iter().collect()
+    } else {
+        informative
+    };
+    let fewest = candidates.iter().map(|k| k.lost).min().unwrap_or(0);
+    let kinds: Vec<&KindScore> = candidates.into_iter().filter(|k| k.lost == fewest).collect();
     let term = |k: &KindScore, r: usize| k.terms[r].unwrap_or(f64::INFINITY);
     let best: Vec<f64> = (0..score.regimes.len())
         .map(|r| kinds.iter().map(|k| term(k, r)).fold(f64::INFINITY, f64::min))

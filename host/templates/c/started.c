@@ -10,8 +10,8 @@ static void {{ kind }}_fresh({{ name }}_{{ kind }} *o) {
 
 static {{ name }}_status {{ kind }}_sample({{ name }}_{{ kind }} *o, const float *y, const float *u) {
     const int start_up = o->count <= {{ start_up }}u;
-    float all[{{ upper }}_TARGETS], map[{{ upper }}_STATES], states[{{ upper }}_STATES];
-    {{ name }}_saturation all_flags[{{ upper }}_TARGETS], state_flags[{{ upper }}_STATES];
+    float all[{{ upper }}_MAP_ROWS], map[{{ upper }}_STATES], states[{{ upper }}_STATES];
+    {{ name }}_saturation all_flags[{{ upper }}_MAP_ROWS], state_flags[{{ upper }}_STATES];
     int estimated = 0;
     if (!accepts(y, u)) {
         if (o->started && inputs_finite(u)) {
@@ -25,7 +25,7 @@ static {{ name }}_status {{ kind }}_sample({{ name }}_{{ kind }} *o, const float
         if (o->window.filled < {{ upper }}_HORIZON) {
             return {{ upper }}_OK;
         }
-        (void){{ name }}_map_estimate(&o->window, all, all_flags);
+        (void)start_map_estimate(&o->window, all, all_flags);
         {{ prefix }}_map_states(all, map);
         estimated = 1;
     }
@@ -35,8 +35,8 @@ static {{ name }}_status {{ kind }}_sample({{ name }}_{{ kind }} *o, const float
             return {{ upper }}_RESTARTED;
         }
         o->started = 1;
-        memcpy(o->values, all, sizeof all);
-        memcpy(o->flags, all_flags, sizeof all_flags);
+        memcpy(o->values, all, sizeof o->values);
+        memcpy(o->flags, all_flags, sizeof o->flags);
     } else if (o->started) {
         if (!{{ prefix }}_follow({{ carried }}, o->count, start_up, map, y, u, states, state_flags)) {
             {{ kind }}_fresh(o);

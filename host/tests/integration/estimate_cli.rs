@@ -516,34 +516,3 @@ fn the_chosen_observer_on_the_recorded_scenario_is_the_reports() {
     // It is not the map: every estimate after the first differs from the map's.
     assert!(differs_from_map >= 2 * (table.len() - 11), "{differs_from_map}");
 }
-
-#[test]
-fn a_kind_the_design_cannot_have_is_refused_before_any_fit_and_nothing_is_written() {
-    let dir = scratch("no-kind");
-    let (input, output) = (dir.join("in.csv"), dir.join("out.csv"));
-    std::fs::write(&input, "X_meas,L\n0.5,10\n").unwrap();
-    for kind in ["corrected", "ekf_map"] {
-        let out = host(&[
-            "estimate",
-            "--design",
-            "ecoli_x0_2",
-            "--input",
-            s(&input),
-            "--output",
-            s(&output),
-            "--kind",
-            kind,
-        ]);
-        assert!(!out.status.success());
-        let message = String::from_utf8_lossy(&out.stderr);
-        assert!(
-            message.contains(&format!("no `{kind}` observer"))
-                && message.contains("states `X` and `S` are not targets")
-                && message.contains("weight = 0")
-                && message.contains("--kind map"),
-            "{message}"
-        );
-        assert_eq!(message.matches("are not targets").count(), 1, "said once: {message}");
-        assert!(!output.exists());
-    }
-}

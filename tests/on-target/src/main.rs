@@ -176,9 +176,9 @@ where
 }
 
 impl<D, F, const N: usize, const NX: usize> Observe
-    for firmware::Started<f32, D, F, N, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>
+    for firmware::Started<f32, D, F, N, NX, { d::OUTPUTS }, { d::INPUTS }, { d::MAP_ROWS }, { d::TARGETS }>
 where
-    D: Design<f32, N, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
+    D: Design<f32, N, { d::OUTPUTS }, { d::INPUTS }, { d::MAP_ROWS }>,
     F: Follower<f32, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
 {
     type Value = f32;
@@ -196,9 +196,9 @@ where
 }
 
 impl<D, F, const N: usize, const NX: usize> Observe
-    for firmware::Restarted<f32, D, F, N, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>
+    for firmware::Restarted<f32, D, F, N, NX, { d::OUTPUTS }, { d::INPUTS }, { d::MAP_ROWS }, { d::TARGETS }>
 where
-    D: Design<f32, N, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
+    D: Design<f32, N, { d::OUTPUTS }, { d::INPUTS }, { d::MAP_ROWS }>,
     F: Restart<f32, NX, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>,
 {
     type Value = f32;

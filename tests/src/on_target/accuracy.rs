@@ -74,10 +74,10 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
 
     let (design, result) = shipped_build(name)?;
     let code = ModelCode::new(&design).map_err(|e| e.to_string())?;
-    // The moving-horizon observer needs no state as a target.
+    // The map row of every state (a target's or a helper map's); the moving-horizon observer reads none.
     let state_targets = match measured.kind {
         Kind::Of(ObserverKind::Mhe) => Vec::new(),
-        _ => corrected::state_targets(&design)?,
+        _ => host::fit::helpers::state_maps(&design),
     };
     let first = design.map.horizon - 1;
     let widen = |values: &[f32]| values.iter().map(|&v| f64::from(v)).collect::<Vec<f64>>();
@@ -110,8 +110,8 @@ pub fn compare_started_with_f64(name: &str, measured: &ObserverMeasurement) -> R
                 let maps: Vec<Vec<f64>> = host::recording::regressors(design.map.horizon, &rows)
                     .iter()
                     .map(|z| match z {
-                        Some(z) => result.targets.iter().map(|t| t.fit.map.estimate(z).value).collect(),
-                        None => vec![f64::NAN; d::TARGETS],
+                        Some(z) => result.start_maps().map(|t| t.fit.map.estimate(z).value).collect(),
+                        None => vec![f64::NAN; d::MAP_ROWS],
                     })
                     .collect();
                 let run = Run {

@@ -123,16 +123,16 @@ trait StartUp {
     const START_UP: usize;
 }
 
-impl<D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> StartUp
-    for Started<f32, D, F, N, NX, NY, NU, NT>
+impl<D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NM: usize, const NT: usize> StartUp
+    for Started<f32, D, F, N, NX, NY, NU, NM, NT>
 where
     F: Follower<f32, NX, NY, NU, NT>,
 {
     const START_UP: usize = F::START_UP;
 }
 
-impl<D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NT: usize> StartUp
-    for firmware::Restarted<f32, D, F, N, NX, NY, NU, NT>
+impl<D, F, const N: usize, const NX: usize, const NY: usize, const NU: usize, const NM: usize, const NT: usize> StartUp
+    for firmware::Restarted<f32, D, F, N, NX, NY, NU, NM, NT>
 where
     F: firmware::emitted::Restart<f32, NX, NY, NU, NT>,
 {

@@ -51,27 +51,36 @@ macro_rules! check_followers {
                 targets: widen(vec![vec![0.0; d::TARGETS]; samples.len()]),
                 parameters: Vec::new(),
             };
-            // The map's f32 estimates, as the chip computes them (NaN where it refuses the sample).
-            let mut map = d::map_observer();
+            // The f32 estimates of the map the followers read (the targets', then the helpers'), as
+            // the chip computes them (NaN where it refuses the sample).
+            let mut map = firmware::Observer::<
+                f32,
+                d::StartDesign,
+                { d::HORIZON },
+                { d::OUTPUTS },
+                { d::INPUTS },
+                { d::MAP_ROWS },
+            >::new();
             let maps: Vec<Vec<f32>> = samples
                 .iter()
                 .map(|(y, u)| match map.push(*y, *u) {
-                    Ok(()) => map.estimate().map_or(vec![f32::NAN; d::TARGETS], |e| {
+                    Ok(()) => map.estimate().map_or(vec![f32::NAN; d::MAP_ROWS], |e| {
                         e.iter().map(|e| e.value).collect()
                     }),
-                    Err(_) => vec![f32::NAN; d::TARGETS],
+                    Err(_) => vec![f32::NAN; d::MAP_ROWS],
                 })
                 .collect();
             /// Runs a generated observer over the whole recorded sequence (refused samples included).
             fn chip<F: Follower<f32, { d::STATES }, { d::OUTPUTS }, { d::INPUTS }, { d::TARGETS }>>() -> Vec<Vec<u32>> {
                 let mut observer: Started<
                     f32,
-                    d::Design,
+                    d::StartDesign,
                     F,
                     { d::HORIZON },
                     { d::STATES },
                     { d::OUTPUTS },
                     { d::INPUTS },
+                    { d::MAP_ROWS },
                     { d::TARGETS },
                 > = Started::new();
                 let mut out = Vec::new();
@@ -90,7 +99,7 @@ macro_rules! check_followers {
                     .map(|r| r.iter().map(|v| v.to_bits()).collect())
                     .collect()
             };
-            let state_targets = corrected::state_targets(&design).unwrap();
+            let state_targets = host::fit::helpers::state_maps(&design);
             let first = design.map.horizon - 1;
 
             let (constants, ekf_constants) = integration_tests::emitted_constants!(d, &design);
@@ -118,7 +127,7 @@ macro_rules! check_followers {
                     .iter()
                     .filter(|r| f32::from_bits(r[0]).is_finite())
                     .count()
-                    > 50
+                    > d::RECORDED_LEN / 2
             );
 
             let filter = filter_code(&code, &ekf_constants);
@@ -140,3 +149,5 @@ macro_rules! check_followers {
 
 check_followers!(vanderpol_followers_are_the_hosts, vanderpol);
 check_followers!(two_tanks_followers_are_the_hosts, two_tanks);
+// Helper maps for X and S (targets P and muX): the followers read the map's four rows.
+check_followers!(ecoli_followers_are_the_hosts, ecoli_x0_0p5);

@@ -61,21 +61,29 @@ macro_rules! check_refusals {
                 targets: Rows::from(vec![vec![0.0; d::TARGETS]; ys.len()]),
                 parameters: Vec::new(),
             };
-            // The map's f32 estimates as the chip computes them (NaN where it refuses the sample).
-            let mut map = d::map_observer();
+            // The f32 estimates of the map the followers read (the targets', then the helpers'), as
+            // the chip computes them (NaN where it refuses the sample).
+            let mut map = firmware::Observer::<
+                f32,
+                d::StartDesign,
+                { d::HORIZON },
+                { d::OUTPUTS },
+                { d::INPUTS },
+                { d::MAP_ROWS },
+            >::new();
             let maps: Vec<Vec<f32>> = ys
                 .iter()
                 .zip(&us)
                 .map(
                     |(y, u)| match map.push(y[..].try_into().unwrap(), u[..].try_into().unwrap()) {
-                        Ok(()) => map.estimate().map_or(vec![f32::NAN; d::TARGETS], |e| {
+                        Ok(()) => map.estimate().map_or(vec![f32::NAN; d::MAP_ROWS], |e| {
                             e.iter().map(|e| e.value).collect()
                         }),
-                        Err(_) => vec![f32::NAN; d::TARGETS],
+                        Err(_) => vec![f32::NAN; d::MAP_ROWS],
                     },
                 )
                 .collect();
-            let state_targets = corrected::state_targets(&design).unwrap();
+            let state_targets = host::fit::helpers::state_maps(&design);
             let first = design.map.horizon - 1;
             let (constants, ekf_constants) = integration_tests::emitted_constants!(d, &design);
             let filter = filter_code(&code, &ekf_constants);

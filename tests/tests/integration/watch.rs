@@ -9,7 +9,6 @@
 
 use firmware::Estimator;
 use host::observers::ekf;
-use host::observers::kind::corrected::run as corrected;
 use host::observers::kind::ekf_restart::run::{RestartConstants, RestartStep};
 use host::observers::kind::ukf_box::program::unscented_code;
 use host::plant::kalman::{filter_code, EkfConstants, FilterCode, Watch};
@@ -162,7 +161,7 @@ fn the_filters_the_map_starts_or_checks_restart_on_an_impossible_output_alike_on
         .collect();
     let (_, ekf_constants) = integration_tests::emitted_constants!(d, &design);
     assert!(ekf_constants.watch.threshold.is_finite(), "Example 1's EKF is watched");
-    let state_targets = corrected::state_targets(&design).unwrap();
+    let state_targets = host::fit::helpers::state_maps(&design);
     let first = design.map.horizon - 1;
     let filter = filter_code(&code, &ekf_constants);
     let bits = |t: Vec<f32>| t.iter().map(|v| v.to_bits()).collect::<Vec<u32>>();

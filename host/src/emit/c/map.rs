@@ -37,15 +37,27 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
     );
     let mut tables = String::new();
     // Every projection first, then every table: the window is read once (a store to `values` could
-    // alias it, which makes the compiler read it again for each target).
-    let (mut projections, mut estimates) = (String::new(), String::new());
-    for (t, target) in result.targets.iter().enumerate() {
-        let label = &design.targets[target.index].name;
+    // alias it, which makes the compiler read it again for each target). Row by row: the targets',
+    // then the helper maps' ([`crate::fit::helpers`]), which only `start_map_estimate` computes.
+    let mut rows: Vec<(String, String)> = Vec::new();
+    let labels = (result
+        .targets
+        .iter()
+        .map(|t| (format!("target `{}`", design.targets[t.index].name), t)))
+    .chain(
+        result
+            .helpers
+            .iter()
+            .flatten()
+            .map(|t| (format!("helper map `{}`", design.model.states[t.index]), t)),
+    );
+    for (t, (label, target)) in labels.enumerate() {
+        let label = &label;
         let Some(table) = target.fit.map.table.as_ref() else {
             return Err(EmitError::NoTable { target: label.clone() });
         };
         let rounded = F32Tables::new(table);
-        let what = |field: &str| format!("target `{label}` {field}");
+        let what = |field: &str| format!("{label} {field}");
         let segments = rounded
             .segments
             .iter()
@@ -59,7 +71,7 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
             })
             .collect::<Result<Vec<_>, EmitError>>()?;
         tables += &format!(
-            "\n/* `{label}`: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */\n\
+            "\n/* {label}: gains in regressor order, then the Γ⁻¹ table's segments (a, b). */\n\
              static const float GAINS_{t}[{}] = {};\n\
              static const float SEGMENTS_{t}[{}][2] = {{\n{}\n}};\n",
             rounded.gains.len(),
@@ -111,17 +123,40 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
                 )
             }
         };
-        projections += &format!(
+        let projection = format!(
             "    const float t_{t} = {offset}{terms};\n",
             offset = float(&what("offset"), f64::from(rounded.offset))?
         );
-        estimates += &format!(
+        let estimate = format!(
             "{search}    evaluate(t_{t}, {segment}, {start}, {t_max}, {r_min}, {r_max}, &values[{t}], &saturation[{t}]);\n",
             t_max = float(&what("t_max"), f64::from(rounded.t_max))?,
             r_min = float(&what("r_min"), f64::from(rounded.r_min))?,
             r_max = float(&what("r_max"), f64::from(rounded.r_max))?,
         );
+        rows.push((projection, estimate));
     }
+    let nt = result.targets.len();
+    let text = |rows: &[(String, String)]| -> (String, String) {
+        (
+            rows.iter().map(|r| r.0.as_str()).collect(),
+            rows.iter().map(|r| r.1.as_str()).collect(),
+        )
+    };
+    let (projections, estimates) = text(&rows[..nt]);
+    let start = if rows.len() == nt {
+        format!("\n#define {upper}_MAP_ROWS {upper}_TARGETS\n#define start_map_estimate {name}_map_estimate\n")
+    } else {
+        let (projections, estimates) = text(&rows);
+        format!(
+            "\n/* The map the map-started kinds read: the targets' rows, then a helper map per state that no\n \
+             * target is. */\n#define {upper}_MAP_ROWS {rows}u\n\
+             static inline {name}_status start_map_estimate(const {name}_map *observer, float *values, {name}_saturation *saturation) {{\n    \
+             const unsigned next = observer->next;\n    \
+             if (observer->filled < {upper}_HORIZON) {{\n        return {upper}_NO_ESTIMATE_YET;\n    }}\n\
+             {projections}{estimates}    return {upper}_OK;\n}}\n",
+            rows = rows.len()
+        )
+    };
     let header = super::text::render(&MapH {
         name,
         upper: &upper,
@@ -134,10 +169,10 @@ pub(super) fn map(design: &Design, result: &DesignResult) -> Result<MapC, EmitEr
         tables: &tables,
         // Only where a table of more than one segment is uniform: an unused static function is a
         // warning.
-        uniform: estimates.contains("uniform_segment("),
+        uniform: rows.iter().any(|r| r.1.contains("uniform_segment(")),
         projections: &projections,
         estimates: &estimates,
-    });
+    }) + &start;
     Ok(MapC { header, source })
 }
 

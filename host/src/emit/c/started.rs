@@ -4,18 +4,12 @@
 use askama::Template;
 
 /// `static void <prefix>_map_states(const float *all, float *map)`: each state's estimate from the
-/// map's targets (`Follower::STATE_TARGETS`; 0 for a state that is no target).
-pub(crate) fn map_states(prefix: &str, state_targets: &[usize], targets: usize) -> String {
+/// map's rows (`Follower::STATE_TARGETS`: a target's, or a helper map's).
+pub(crate) fn map_states(prefix: &str, state_targets: &[usize]) -> String {
     let lines: String = state_targets
         .iter()
         .enumerate()
-        .map(|(i, &t)| {
-            if t < targets {
-                format!("    map[{i}] = all[{t}];\n")
-            } else {
-                format!("    map[{i}] = 0.0f;\n")
-            }
-        })
+        .map(|(i, &t)| format!("    map[{i}] = all[{t}];\n"))
         .collect();
     super::text::render(&MapStates { prefix, lines: &lines })
 }

@@ -8,7 +8,7 @@ use std::sync::Arc;
 use super::reduce::{accumulate, linear_floor, solve_upper, Columns, Reduced, TargetRange};
 use super::solve::solve_refined;
 use super::{Certificate, Diagnostics, Fit, FitError};
-use crate::data::DataSet;
+use crate::data::{Column, DataSet};
 use crate::fit::maps::{FittedMap, LinearMap, Tabulation};
 use crate::fit::monotonicity::{check_grid, check_strictly_increasing};
 use crate::spec::{MapSettings, Normalisation};
@@ -33,7 +33,7 @@ impl<'a> Learning<'a> {
     /// Pass 1 and 2 over the learning windows, and the linear floor.
     pub(crate) fn gather(
         data: &DataSet,
-        target: usize,
+        target: Column,
         settings: &'a MapSettings,
         odds_ratios: &'a Arc<[f64]>,
     ) -> Result<Self, FitError> {

@@ -51,7 +51,7 @@ use std::sync::Arc;
 
 use serde::Serialize;
 
-use crate::data::DataSet;
+use crate::data::{Column, DataSet};
 use crate::fit::maps::{FittedMap, LinearMap, Tabulation};
 use crate::fit::monotonicity::NotMonotone;
 use crate::fit::qp::QpError;
@@ -168,7 +168,7 @@ pub fn basis_of(settings: &MapSettings) -> Arc<[f64]> {
 /// certified table of `Γ⁻¹`.
 pub fn fit(
     data: &DataSet,
-    target: usize,
+    target: impl Into<Column>,
     target_name: &str,
     settings: &MapSettings,
     odds_ratios: &Arc<[f64]>,
@@ -180,13 +180,13 @@ pub fn fit(
 /// `settings.taps` below the regressor's length, `L` is pruned to that many taps ([`prune`]).
 pub fn fit_tabulated(
     data: &DataSet,
-    target: usize,
+    target: impl Into<Column>,
     target_name: &str,
     settings: &MapSettings,
     odds_ratios: &Arc<[f64]>,
     tabulation: Tabulation,
 ) -> Result<Fit, FitError> {
-    let learning = Learning::gather(data, target, settings, odds_ratios)?;
+    let learning = Learning::gather(data, target.into(), settings, odds_ratios)?;
     match settings.taps.filter(|&taps| taps < learning.regressor_len()) {
         None => learning.fit(&learning.dense(), target_name, tabulation),
         Some(taps) => {
@@ -200,14 +200,14 @@ pub fn fit_tabulated(
 /// `settings.taps` is ignored.
 pub fn fit_counts(
     data: &DataSet,
-    target: usize,
+    target: impl Into<Column>,
     target_name: &str,
     settings: &MapSettings,
     odds_ratios: &Arc<[f64]>,
     counts: &[usize],
     tabulation: Tabulation,
 ) -> Result<Vec<Fit>, FitError> {
-    let learning = Learning::gather(data, target, settings, odds_ratios)?;
+    let learning = Learning::gather(data, target.into(), settings, odds_ratios)?;
     prune::fit_path(&learning, counts, target_name, tabulation)
 }
 

@@ -125,7 +125,7 @@ pub(super) fn deletion_costs(
 mod tests {
     use super::super::tests::{pairs, settings, synthetic};
     use super::*;
-    use crate::data::{DataSet, Window};
+    use crate::data::{Column, DataSet, Window};
     use crate::fit::identify::basis_of;
     use crate::spec::{MapSettings, Normalisation};
     use firmware::basis;
@@ -161,7 +161,7 @@ mod tests {
         for normalisation in [Normalisation::Intercept, Normalisation::Paper] {
             let settings = settings(normalisation, 3, 1.0, 0.01);
             let odds_ratios = basis_of(&settings);
-            let learning = Learning::gather(&data, 0, &settings, &odds_ratios).unwrap();
+            let learning = Learning::gather(&data, Column::Target(0), &settings, &odds_ratios).unwrap();
             let dense = learning.fit(&learning.dense(), "r", Tabulation::Sketched).unwrap();
             let mu = DVector::from_column_slice(&dense.certificate.mu);
             let support = [0, 1, 3, 4];
@@ -257,7 +257,7 @@ mod tests {
         let data = padded(8, 300);
         let settings = settings(Normalisation::Intercept, 3, 1.0, 0.01);
         let odds_ratios = basis_of(&settings);
-        let learning = Learning::gather(&data, 0, &settings, &odds_ratios).unwrap();
+        let learning = Learning::gather(&data, Column::Target(0), &settings, &odds_ratios).unwrap();
         let alone = fit_path(&learning, &[2], "r", Tabulation::Sketched).unwrap();
         let together = fit_path(&learning, &[5, 4, 2], "r", Tabulation::Sketched).unwrap();
         assert_eq!(alone[0].map.gains, together[2].map.gains);

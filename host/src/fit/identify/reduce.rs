@@ -5,7 +5,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::{FitError, WHITENING_FLOOR};
-use crate::data::DataSet;
+use crate::data::{Column, DataSet};
 use crate::fit::maps::LinearMap;
 use crate::fit::streaming_qr::StreamingQr;
 use firmware::basis;
@@ -21,14 +21,14 @@ pub(super) struct TargetRange {
 }
 
 impl TargetRange {
-    pub(super) fn gather(data: &DataSet, target: usize) -> Result<Self, FitError> {
+    pub(super) fn gather(data: &DataSet, target: Column) -> Result<Self, FitError> {
         let n_z = data.regressor_len();
         let (mut min, mut max) = (f64::INFINITY, f64::NEG_INFINITY);
         let mut sum_squares = vec![0.0; n_z];
         let mut z = Vec::with_capacity(n_z);
         let mut windows = 0usize;
         for window in data.windows() {
-            let r = data.target(window, target);
+            let r = data.value(window, target);
             data.regressor(window, &mut z);
             if !r.is_finite() || z.iter().any(|v| !v.is_finite()) {
                 return Err(FitError::NonFinite);
@@ -57,14 +57,14 @@ impl TargetRange {
 }
 
 /// `R` of `[Z̃ | 1 | B(η; c_j) | r]` over every learning window (pass 2).
-pub(super) fn accumulate(data: &DataSet, target: usize, range: &TargetRange, odds_ratios: &[f64]) -> DMatrix<f64> {
+pub(super) fn accumulate(data: &DataSet, target: Column, range: &TargetRange, odds_ratios: &[f64]) -> DMatrix<f64> {
     let n_z = range.scales.len();
     let columns = n_z + 1 + odds_ratios.len() + 1;
     let mut qr = StreamingQr::new(columns);
     let mut row = vec![0.0; columns];
     let mut z = Vec::with_capacity(n_z);
     for window in data.windows() {
-        let r = data.target(window, target);
+        let r = data.value(window, target);
         data.regressor(window, &mut z);
         let eta = (r - range.min) / (range.max - range.min);
         for (c, (v, s)) in z.iter().zip(&range.scales).enumerate() {

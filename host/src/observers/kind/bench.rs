@@ -32,6 +32,9 @@ pub struct Bench<'a> {
     pub scoring: score::Scoring,
     /// The map's predicted cost.
     pub map_cost: Cost,
+    /// The predicted cost of the map the map-started kinds read: the targets' and the helpers' rows
+    /// ([`crate::fit::helpers`]); the map's own where every state is a target.
+    pub start_map_cost: Cost,
     /// The figures of the kinds judged so far, in registry order (the map's first).
     pub observers: Vec<ObserverFigures>,
     /// What tuning gave each kind tuned so far (a kind reads the constants of those before it).
@@ -45,7 +48,7 @@ pub struct Bench<'a> {
     /// Why a filter cannot run with the constants the spec fixes ([`Bench::box_filter`]): `gen`
     /// stops with it rather than leave the filter's kinds out.
     pub refused: Option<crate::spec::SpecError>,
-    /// The map's estimates on every run.
+    /// The map's estimates on every run: the targets', then the helpers' ([`DesignResult::start_maps`]).
     maps: MapRows,
 }
 
@@ -121,12 +124,16 @@ impl<'a> Bench<'a> {
             .map(|t| crate::fit::evaluate::evaluate(&runs.tuning, t.index, &t.fit).target_spread)
             .collect();
         let fitted: Vec<&crate::fit::maps::FittedMap> = result.targets.iter().map(|t| &t.fit.map).collect();
+        let start_maps: Vec<&crate::fit::maps::FittedMap> = result.start_maps().map(|t| &t.fit.map).collect();
+        let mut scoring = score::Scoring::of_tuning(design, &spreads, runs.tuning.runs.len());
+        scoring.constant = constant_score(&scoring, &runs.tuning.runs, horizon - 1);
         Bench {
             design,
             result,
             code,
-            scoring: score::Scoring::of_tuning(design, &spreads, runs.tuning.runs.len()),
+            scoring,
             map_cost: cost::of_maps(&fitted, horizon, design.tau),
+            start_map_cost: cost::of_maps(&start_maps, horizon, design.tau),
             observers: Vec::new(),
             tuned: TunedKinds::default(),
             unavailable: BTreeMap::new(),
@@ -141,6 +148,28 @@ impl<'a> Bench<'a> {
     pub fn windows(&self) -> impl Fn(&Run) -> std::ops::Range<usize> + Copy {
         let first = self.design.map.horizon - 1;
         move |run: &Run| first..run.targets.len()
+    }
+
+    /// The map row of every state ([`crate::fit::helpers::state_maps`]), or `None` where a helper map
+    /// could not be fitted (the corrected kind records why).
+    pub fn state_maps(&self) -> Option<Vec<usize>> {
+        self.result
+            .helpers
+            .is_ok()
+            .then(|| crate::fit::helpers::state_maps(self.design))
+    }
+
+    /// The mean squared error over the tuning runs' windows of map row `row` as an estimate of state
+    /// `state` (a helper map's: a target's is among the map's figures).
+    pub fn helper_mean_squared_error(&self, state: usize, row: usize) -> f64 {
+        let (mut sum, mut count) = (0.0, 0usize);
+        for (run, map) in self.result.runs.tuning.runs.iter().zip(&self.maps.tuning) {
+            for k in self.windows()(run) {
+                sum += (map[k][row] - run.states[k][state]).powi(2);
+                count += 1;
+            }
+        }
+        sum / count.max(1) as f64
     }
 
     /// The tuning runs' map estimates, run by run.
@@ -290,21 +319,52 @@ impl<'a> Bench<'a> {
     }
 }
 
-/// The map's estimate of every target at every sample of `run` (NaN before the window is full).
+/// The map's estimate of every target, then of every helper state ([`DesignResult::start_maps`]),
+/// at every sample of `run` (NaN before the window is full).
 pub fn map_estimates(result: &DesignResult, horizon: usize, run: &Run) -> Rows {
     let data = DataSet {
         runs: vec![run.clone()],
         horizon,
     };
-    let mut rows = Rows::new(result.targets.len());
+    let width = result.start_maps().count();
+    let mut rows = Rows::new(width);
     let mut z = Vec::new();
     for _ in 0..horizon.saturating_sub(1).min(run.targets.len()) {
-        rows.push(&vec![f64::NAN; result.targets.len()]);
+        rows.push(&vec![f64::NAN; width]);
     }
     for window in data.windows() {
         data.regressor(window, &mut z);
-        let values: Vec<f64> = result.targets.iter().map(|t| t.fit.map.estimate(&z).value).collect();
+        let values: Vec<f64> = result.start_maps().map(|t| t.fit.map.estimate(&z).value).collect();
         rows.push(&values);
     }
     rows
+}
+
+/// The tuning score of the constant estimate: each target's mean over the tuning runs' windows (from
+/// sample `first`), at every sample: what a kind must beat to explain anything.
+fn constant_score(scoring: &score::Scoring, runs: &[Run], first: usize) -> f64 {
+    let width = scoring.spreads.len();
+    let (mut sums, mut count) = (vec![0.0; width], 0usize);
+    for run in runs {
+        for k in first..run.targets.len() {
+            sums.iter_mut().zip(&run.targets[k]).for_each(|(s, v)| *s += v);
+            count += 1;
+        }
+    }
+    let means: Vec<f64> = sums.iter().map(|s| s / count.max(1) as f64).collect();
+    let estimates: Vec<Rows> = (runs.iter())
+        .map(|run| {
+            let mut rows = Rows::new(width);
+            (0..run.targets.len()).for_each(|_| rows.push(&means));
+            rows
+        })
+        .collect();
+    scoring.score(runs, &estimates).value
+}
+
+/// The first `width` entries of every row of `rows` (the map's targets of its rows with helpers).
+pub fn first_columns(rows: &Rows, width: usize) -> Rows {
+    let mut out = Rows::new(width);
+    rows.iter().for_each(|row| out.push(&row[..width]));
+    out
 }

@@ -232,6 +232,7 @@ mod tests {
             weights: weights.to_vec(),
             regimes: Regimes::whole(0, 1),
             start_up_by: StartUpBy::Horizons,
+            constant: f64::INFINITY,
         };
         let both = scoring([1.0, 1.0]).score(&runs, &[rows([0.5, 3.0])]);
         assert_eq!((both.lost, both.value), (1, 3.5));

@@ -183,6 +183,9 @@ pub struct Scoring {
     pub regimes: Regimes,
     /// How the start-up regime's length was chosen.
     pub start_up_by: StartUpBy,
+    /// The score of the constant estimate (each target's mean over the tuning runs), scored alike:
+    /// `auto` offers no kind that does not beat it. Infinite until the bench measures it.
+    pub constant: f64,
 }
 
 impl Scoring {
@@ -193,6 +196,7 @@ impl Scoring {
             weights: super::weights(design),
             regimes: Regimes::of_tuning(design, runs),
             start_up_by: start_up(design).1,
+            constant: f64::INFINITY,
         }
     }
 
@@ -361,6 +365,7 @@ mod tests {
                 ],
             },
             start_up_by: StartUpBy::Horizons,
+            constant: f64::INFINITY,
         };
         let terms = scoring.terms(&runs, &estimates);
         let close = |a: f64, b: f64| (a - b).abs() < 1e-12;

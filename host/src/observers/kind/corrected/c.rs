@@ -88,7 +88,7 @@ fn corrected(
         lower: &lower,
         upper_bounds: &upper_bounds,
         functions: &functions,
-        map_states: &map_states("corrected", state_targets, nt),
+        map_states: &map_states("corrected", state_targets),
         targets_of: &targets_of(name, "corrected", state_targets, nt),
         observer: &started::observer(&follower, "    memset(o->x, 0, sizeof o->x);\n"),
     });

@@ -38,13 +38,13 @@ pub const KIND: Kind = Kind {
     tune,
 };
 
-/// Tunes the gains on the tuning runs and judges the corrected map; without every state as a
-/// target, records why the design has none.
+/// Tunes the gains on the tuning runs and judges the corrected map; where a helper map could not
+/// be fitted, records why the design has none.
 fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
-    let state_targets = match corrected::state_targets(bench.design) {
-        Ok(state_targets) => state_targets,
+    let state_targets = match &bench.result.helpers {
+        Ok(_) => crate::fit::helpers::state_maps(bench.design),
         Err(why) => {
-            bench.unavailable.insert(ObserverKind::Corrected, why);
+            bench.unavailable.insert(ObserverKind::Corrected, why.clone());
             return None;
         }
     };
@@ -54,7 +54,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let programs = crate::observers::kind::corrected::program::correction_code(code, &tuned.constants);
     let figures = bench.judge(
         "corrected",
-        cost::of_corrected(&programs, &bench.map_cost),
+        cost::of_corrected(&programs, &bench.start_map_cost),
         &|run, map| corrected::estimate_rows(&setting, &programs, &tuned.constants, map, run),
     );
     bench.tuned.insert(Tuned::Corrected(tuned));

@@ -15,8 +15,8 @@
 //! with time constant `T`; it is cut to `G` after `J = 3N` estimates ([`START_UP_HORIZONS`]), from
 //! when on the chip does not evaluate the map at all where `G = 0`. The clamp is each state's learning range, so the estimate is bounded as the
 //! map's. `K = 0` is the paper's blend; `G = 0` is a constant-gain observer started by the map. It
-//! needs the full state: it is offered when every state is a target (its expression is the state's
-//! name), see [`state_targets`]. [`estimate_run`] is `firmware::Started` over the emitted programs
+//! starts from the map's estimate of every state: a state that no target is has a helper map
+//! ([`crate::fit::helpers`]). [`estimate_run`] is `firmware::Started` over the emitted programs
 //! ([`crate::observers::kind::corrected::program`]), step for step.
 //!
 //! Its gains are chosen in closed loop on the tuning runs: [`tuning`] says how.
@@ -35,23 +35,6 @@ use crate::observers::started::literals;
 use crate::plant::ModelCode;
 use crate::spec::Design;
 
-/// For every state, the target that is that state (`None` with the reason when one is missing).
-pub fn state_targets(design: &Design) -> Result<Vec<usize>, String> {
-    let position = |state: &String| design.targets.iter().position(|t| t.expr.text().trim() == state);
-    let missing: Vec<&String> = design.model.states.iter().filter(|s| position(s).is_none()).collect();
-    let quoted: Vec<String> = missing.iter().map(|s| format!("`{s}`")).collect();
-    let which = match quoted.split_last() {
-        None => return Ok(design.model.states.iter().filter_map(position).collect()),
-        Some((last, [])) => format!("state {last} is not a target"),
-        Some((last, rest)) => format!("states {} and {last} are not targets", rest.join(", ")),
-    };
-    let fix: Vec<String> = missing.iter().map(|s| format!("expr = \"{s}\"")).collect();
-    Err(format!(
-        "{which}: the model-corrected map and the map-started and restarted EKFs start from the map's estimate of every state (add a target per state, {}; with `weight = 0` it is estimated and reported without counting in the score)",
-        fix.join(", ")
-    ))
-}
-
 /// The start-up lasts this many horizons `N` of estimates: long enough for the tail of the blend
 /// (`(1 − G)/(1 + 3N/T)`, below 0.02 for `N = 10` and the `T ≈ 0.5` Example 1 tunes to), short
 /// enough that a table of it is small.
@@ -65,7 +48,7 @@ pub struct Setting<'a> {
     pub h: f64,
     /// Substeps per sample.
     pub substeps: usize,
-    /// [`state_targets`].
+    /// The map row of every state ([`crate::fit::helpers::state_maps`]).
     pub state_targets: &'a [usize],
     /// The map's first estimate comes at this sample (`N − 1`).
     pub first: usize,
@@ -84,11 +67,12 @@ impl<'a> Setting<'a> {
         code: &'a ModelCode,
         state_targets: &'a [usize],
     ) -> Self {
-        let maps: Vec<crate::fit::maps::FittedMap> = result.targets.iter().map(|t| t.fit.map.clone()).collect();
+        let maps: Vec<crate::fit::maps::FittedMap> = result.start_maps().map(|t| t.fit.map.clone()).collect();
         Self::for_maps(design, design.map.horizon, &maps, code, state_targets)
     }
 
-    /// [`Setting::for_design`] from the fitted maps alone (one per target) and the horizon `N`.
+    /// [`Setting::for_design`] from the fitted maps alone (the targets', then the helpers') and the
+    /// horizon `N`.
     pub fn for_maps(
         design: &Design,
         horizon: usize,

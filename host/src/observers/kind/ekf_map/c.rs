@@ -39,7 +39,7 @@ pub(crate) fn c(design: &Design, code: &ModelCode, observers: &Observers<'_>) ->
         name,
         upper: &upper,
         p0: &floats("map-started EKF P0", &kalman::diagonal_upper(p0))?,
-        map_states: &map_states("started_ekf", state_targets, targets),
+        map_states: &map_states("started_ekf", state_targets),
         targets_of: &targets_of(name, "started_ekf", state_targets, targets),
         watch,
         observer: &started::observer(

@@ -4,7 +4,6 @@
 pub mod c;
 pub mod emit;
 
-use super::corrected::run as corrected;
 use super::{Bench, FixedSection, Kind, Needs, Tuned};
 use crate::data::{Rows, Run};
 use crate::observers::lost::Track;
@@ -45,7 +44,7 @@ pub const KIND: Kind = Kind {
 /// ([`ekf::tune_started`]); then judged.
 fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
     let tuned = bench.tuned.ekf_box()?;
-    let state_targets = corrected::state_targets(bench.design).ok()?;
+    let state_targets = bench.state_maps()?;
     let squared = map_squared_errors(bench, &state_targets)?;
     let filter = crate::plant::kalman::filter_code(bench.code, &tuned.constants);
     let (code, first) = (bench.code, bench.design.map.horizon - 1);
@@ -80,8 +79,18 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
 }
 
 /// The map's mean squared error on the tuning runs of each state (`state_targets`: each state's
-/// target): `P(N−1)`'s diagonal before its factor, and the restart's variances.
+/// map row, [`crate::fit::helpers::state_maps`]): `P(N−1)`'s diagonal before its factor, and the
+/// restart's variances. A target's is the map's figure; a helper's is measured here alike.
 pub(super) fn map_squared_errors(bench: &Bench<'_>, state_targets: &[usize]) -> Option<Vec<f64>> {
     let map = &bench.observers.first()?.targets;
-    Some(state_targets.iter().map(|&t| map[t].rmse_tuning.powi(2)).collect())
+    Some(
+        state_targets
+            .iter()
+            .enumerate()
+            .map(|(i, &t)| match map.get(t) {
+                Some(figures) => figures.rmse_tuning.powi(2),
+                None => bench.helper_mean_squared_error(i, t),
+            })
+            .collect(),
+    )
 }

@@ -74,7 +74,7 @@ fn tune(bench: &mut Bench<'_>) -> Option<ObserverFigures> {
         bench.tuning_score(&bench.on_tuning(|run, map| run_restarted(&constants, run, map).rows))
     });
     let constants = with(threshold);
-    let map_cost = bench.observers.first()?.instructions;
+    let map_cost = bench.start_map_cost.instructions;
     let instructions = cost::of_restarted(&filter, map_cost) + crate::search::cost::of_watch(&tuned.constants.watch);
     let figures = bench.judge("ekf_restart", instructions, &|run, map| {
         run_restarted(&constants, run, map)

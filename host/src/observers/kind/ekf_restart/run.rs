@@ -189,7 +189,8 @@ impl<'a, T: Scalar + Maths> RestartStep<'a, T> {
             || fresh.clone(),
         );
         match self.refusals.count(result) {
-            Ok(Given::Map(row)) => self.last = row.to_vec(),
+            // The targets' rows of the map (the helpers' follow them), as `firmware::Restarted`.
+            Ok(Given::Map(row)) => self.last = row[..self.nan.len()].to_vec(),
             Ok(Given::Followed(targets)) => self.last = targets,
             Ok(Given::Nothing) | Err(_) => {}
         }

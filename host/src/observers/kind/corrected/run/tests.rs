@@ -215,33 +215,3 @@ fn the_clamp_bounds_the_estimate_to_the_maps_range() {
     }
     assert!(clamped > 0, "the case reaches the clamp");
 }
-
-#[test]
-fn a_design_without_every_state_as_a_target_has_no_correction() {
-    let mut design = crate::spec::load(std::path::Path::new("specs/vanderpol.toml")).unwrap();
-    design.targets.truncate(1);
-    let why = state_targets(&design).unwrap_err();
-    assert!(why.contains("`x2`"), "{why}");
-}
-
-#[test]
-fn every_state_missing_from_the_targets_is_named_with_its_fix() {
-    // Example 1's targets are x1 and x2 in order; E. coli's are P and muX of states X, S, P.
-    let vanderpol = crate::spec::load(std::path::Path::new("specs/vanderpol.toml")).unwrap();
-    assert_eq!(state_targets(&vanderpol), Ok(vec![0, 1]));
-    let ecoli = crate::spec::load(std::path::Path::new("specs/ecoli_x0_2.toml")).unwrap();
-    let why = state_targets(&ecoli).unwrap_err();
-    assert!(why.starts_with("states `X` and `S` are not targets:"), "{why}");
-    assert!(
-        why.contains("expr = \"X\", expr = \"S\"") && why.contains("`weight = 0`"),
-        "{why}"
-    );
-    // With X a target (weight 0), S alone.
-    let path = std::path::Path::new("specs/ecoli_x0_2.toml");
-    let text = std::fs::read_to_string(path).unwrap() + "\n[[targets]]\nname = \"X\"\nexpr = \"X\"\nweight = 0.0\n";
-    let why = state_targets(&crate::spec::parse(path, &text).unwrap()).unwrap_err();
-    assert!(
-        why.starts_with("state `S` is not a target:") && why.contains("(add a target per state, expr = \"S\";"),
-        "{why}"
-    );
-}
